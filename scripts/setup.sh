@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Installs what luxbox needs on a fresh Debian machine with Node 20 + npm,
+# skipping whatever is already present. Safe to run again.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+need_pkgs=()
+command -v chromium >/dev/null 2>&1 || need_pkgs+=(chromium)
+command -v xvfb-run >/dev/null 2>&1 || need_pkgs+=(xvfb xauth)
+# headless-gl's native binding is compiled with node-gyp against these.
+for p in build-essential python3 pkg-config libxi-dev libglu1-mesa-dev libglew-dev libgl1-mesa-dri fonts-dejavu-core; do
+  dpkg -s "$p" >/dev/null 2>&1 || need_pkgs+=("$p")
+done
+if [ ${#need_pkgs[@]} -gt 0 ]; then
+  echo "setup: installing ${need_pkgs[*]}"
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y "${need_pkgs[@]}"
+fi
+
+# npm ci only when the installed tree does not match the lock file.
+if [ ! -f node_modules/.package-lock.json ] || ! cmp -s package-lock.json node_modules/.luxbox-lock-stamp; then
+  npm ci
+  cp package-lock.json node_modules/.luxbox-lock-stamp
+fi
+# headless-gl must have its native binding (npm >= 11 only runs approved install scripts).
+if [ ! -f node_modules/gl/build/Release/webgl.node ]; then
+  npm rebuild gl
+fi

@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# The whole test suite: lint, types, unit + headless-gl tests, build, e2e in Chromium.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+echo "== lint";       npx eslint .
+echo "== typecheck";  npx tsc --noEmit
+echo "== unit + headless WebGL (vitest under xvfb)"
+xvfb-run -a npx vitest run
+echo "== build";      npx vite build
+echo "== e2e (Playwright, Debian chromium)"
+npx playwright test

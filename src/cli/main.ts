@@ -1,0 +1,37 @@
+import { InputError } from '../inputError';
+
+/** A subcommand: receives the arguments after its name, returns the exit code. */
+export type Command = (args: string[]) => Promise<number>;
+
+// Each command lives in its own module, loaded only when called, so `ies info`
+// never pays for WebGL. Add new commands here.
+const commands: Record<string, () => Promise<{ run: Command }>> = {
+  ies: () => import('./iesCommand'),
+};
+
+const usage = `usage: luxbox <command> [...]
+commands:
+  ies info <file.ies|file.ldt> [--json]   describe a photometric file`;
+
+export async function main(argv: string[]): Promise<number> {
+  const [name, ...rest] = argv;
+  if (!name || name === '--help' || name === '-h' || name === 'help') {
+    process.stdout.write(usage + '\n');
+    return name ? 0 : 2;
+  }
+  const load = commands[name];
+  if (!load) {
+    process.stderr.write(`luxbox: unknown command "${name}"\n${usage}\n`);
+    return 2;
+  }
+  try {
+    const { run } = await load();
+    return await run(rest);
+  } catch (error) {
+    if (error instanceof InputError) {
+      process.stderr.write(`luxbox ${name}: ${error.message.split('\n')[0]}\n`);
+      return 1;
+    }
+    throw error;
+  }
+}

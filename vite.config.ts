@@ -1,0 +1,19 @@
+/// <reference types="vitest/config" />
+import { defineConfig } from 'vite';
+import react from '@vitejs/plugin-react';
+
+// One config for the app build and for Vitest (unit + headless-gl tests).
+export default defineConfig({
+  plugins: [react()],
+  server: { port: 5173, strictPort: false, host: true },
+  preview: { port: 4173, strictPort: true },
+  build: { outDir: 'dist', sourcemap: true, chunkSizeWarningLimit: 1200 },
+  test: {
+    include: ['tests/**/*.test.ts', 'tests/**/*.test.tsx'],
+    environment: 'node',
+    // headless-gl contexts are per process; forks keep native state isolated.
+    pool: 'forks',
+    testTimeout: 120_000,
+    hookTimeout: 120_000,
+  },
+});
