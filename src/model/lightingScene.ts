@@ -1,0 +1,45 @@
+/**
+ * Lighting scene, version 1: the contract between the configurator, the baker
+ * and the command line (DESIGN.md, "Command-line contract"). Extend, never break.
+ */
+export type Rgb = [number, number, number];
+export type Vec3 = [number, number, number];
+
+export const SURFACE_NAMES = ['floor', 'ceiling', 'north', 'south', 'west', 'east'] as const;
+export type SurfaceName = (typeof SURFACE_NAMES)[number];
+
+/** A reflectance is a number (grey) or linear RGB, each component in [0, 1). */
+export type Reflectance = number | Rgb;
+
+export interface LightingRoom {
+  /** x extent, metres */
+  width: number;
+  /** y extent (floor to ceiling), metres */
+  height: number;
+  /** z extent, metres */
+  depth: number;
+  reflectance: Record<SurfaceName, Reflectance>;
+}
+
+export interface LightingLuminaire {
+  /** Path of an IES or LDT file, relative to the scene file (or a URL in the browser). */
+  photometry: string;
+  /** World position of the photometric centre, metres. */
+  position: Vec3;
+  /** Degrees; world = Ry(yaw) · Rx(pitch) · Ry(roll) · local (DESIGN.md). */
+  yaw: number;
+  pitch: number;
+  roll: number;
+  /** 0..1 multiplier on intensity; default 1. */
+  dimming?: number;
+  /** Linear RGB multiplier (e.g. from a CCT); default [1, 1, 1]. */
+  color?: Rgb;
+  /** Optional stable identifier (the configurator sets it to the module id). */
+  id?: string;
+}
+
+export interface LightingScene {
+  version: 1;
+  room: LightingRoom;
+  luminaires: LightingLuminaire[];
+}
