@@ -1,0 +1,46 @@
+import type { CSSProperties, ReactNode } from 'react';
+
+export interface ActionButtonProps {
+  /** Accessible name (also the visible label when no icon is given). */
+  label: string;
+  /** null when the action may run; otherwise the model's reason it may not. */
+  disabledReason: string | null;
+  onPress: () => void;
+  /** Called instead of onPress when disabled, so touch users (no hover) can learn why. */
+  onDisabledPress?: (reason: string) => void;
+  children?: ReactNode;
+  className?: string;
+  style?: CSSProperties;
+  pressed?: boolean;
+  testId?: string;
+}
+
+/**
+ * A button whose disabled state comes only from the model's `isEnabled`. It stays focusable
+ * and clickable when disabled (aria-disabled, not the `disabled` attribute) so the reason is
+ * both a tooltip (title) and, on a tap, a status message: no hover-only information.
+ */
+export function ActionButton(props: ActionButtonProps) {
+  const { label, disabledReason, onPress, onDisabledPress, children, className, style, pressed, testId } = props;
+  const disabled = disabledReason !== null;
+  return (
+    <button
+      type="button"
+      className={`action-button${className ? ` ${className}` : ''}`}
+      style={style}
+      aria-label={label}
+      aria-disabled={disabled || undefined}
+      aria-pressed={pressed}
+      title={disabled ? `${label}: ${disabledReason}` : label}
+      data-testid={testId}
+      onPointerDown={(e) => e.stopPropagation()}
+      onClick={(e) => {
+        e.stopPropagation();
+        if (disabled) onDisabledPress?.(disabledReason);
+        else onPress();
+      }}
+    >
+      {children ?? label}
+    </button>
+  );
+}
