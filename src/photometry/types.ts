@@ -46,12 +46,36 @@ export interface Photometry {
   /** Input watts as stated, or null. */
   inputWatts: number | null;
   /**
-   * Luminous opening in metres (converted from feet where needed), in the
-   * luminaire frame: width along local x (C0), length along local z (C90),
-   * height along y. `shape` follows LM-63-2002 sign conventions (negative
-   * width = circular/… ) decoded into a name.
+   * Luminous opening in metres (converted from feet where needed), magnitudes,
+   * in the luminaire frame. LM-63-2002 §5.10 and EULUMDAT agree: length runs
+   * along the C0–C180 axis (local x), width along the C90–C270 axis (local z),
+   * height along y. `shape` follows LM-63-2002 Table 1 sign conventions
+   * (negative width = circular/…) decoded into a name.
    */
   luminousOpening: { width: number; length: number; height: number; shape: 'point' | 'rectangular' | 'circular' | 'elliptical' | 'cylindrical' | 'spherical' | 'other' };
   /** Non-fatal problems found while reading (cap applied, lumens mismatch, …). */
   warnings: string[];
+  /** Where statedLumens came from, in words (header lamp lumens, a keyword, LDT lamp flux × LOR). */
+  statedLumensSource?: string | null;
+  /**
+   * IES TILT table (TILT=INCLUDE or a supplied TILT=<file>), or null. The grid
+   * already carries the factor for tilt 0; see tiltFactorAt for others.
+   */
+  tilt?: TiltTable | null;
+  /** Angle counts and ranges exactly as the file stores them, before expansion. */
+  fileGrid?: {
+    verticalCount: number;
+    horizontalCount: number;
+    verticalRange: [number, number];
+    horizontalRange: [number, number];
+  };
+  /** Factor applied to the file's raw values to get cd (multiplier × ballast factor …, or LDT lamp flux / 1000). */
+  candelaScale?: number;
+}
+
+/** LM-63 TILT data: lamp-to-luminaire geometry (1–3), tilt angles (deg) and multiplying factors. */
+export interface TiltTable {
+  lampToLuminaireGeometry: 1 | 2 | 3;
+  angles: number[];
+  factors: number[];
 }

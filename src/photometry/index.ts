@@ -1,0 +1,10 @@
+// Public API of the photometry module: parsing IES LM-63 / EULUMDAT into one
+// expanded type-C model, lookups, flux, beam figures and colour helpers.
+export type { Photometry, TiltTable } from './types';
+export { PhotometryParseError } from './PhotometryParseError';
+export { parsePhotometry, type ParsePhotometryOptions } from './parsePhotometry';
+export { parseIes } from './parseIes';
+export { parseLdt } from './parseLdt';
+export { intensity } from './intensity';
+export { integrateFlux } from './flux';
+export { tiltFactorAt } from './tilt';
