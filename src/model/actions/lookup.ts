@@ -1,0 +1,79 @@
+/**
+ * Finding and replacing parts of an immutable configuration by id. Unknown ids
+ * throw InputError (the caller passed a stale or foreign id).
+ */
+import { InputError } from '../../inputError';
+import type { Enablement } from '../action';
+import { refuse } from '../action';
+import type { Catalog } from '../catalogSchema';
+import type { Configuration, LightSystem, ModuleInstance, Rail } from '../configuration';
+import { systemProblems } from '../validate';
+
+export interface RailRef {
+  readonly systemIndex: number;
+  readonly railIndex: number;
+  readonly system: LightSystem;
+  readonly rail: Rail;
+}
+
+export interface ModuleRef extends RailRef {
+  readonly moduleIndex: number;
+  readonly module: ModuleInstance;
+}
+
+export function systemIndex(config: Configuration, systemId: string): number {
+  const i = config.systems.findIndex((s) => s.id === systemId);
+  if (i < 0) throw new InputError(`no system with id '${systemId}'`);
+  return i;
+}
+
+export function findRail(config: Configuration, railId: string): RailRef {
+  for (let s = 0; s < config.systems.length; s++) {
+    const system = config.systems[s];
+    const r = system.rails.findIndex((x) => x.id === railId);
+    if (r >= 0) return { systemIndex: s, railIndex: r, system, rail: system.rails[r] };
+  }
+  throw new InputError(`no rail with id '${railId}'`);
+}
+
+export function findModule(config: Configuration, moduleId: string): ModuleRef {
+  for (let s = 0; s < config.systems.length; s++) {
+    const system = config.systems[s];
+    for (let r = 0; r < system.rails.length; r++) {
+      const rail = system.rails[r];
+      const m = rail.modules.findIndex((x) => x.id === moduleId);
+      if (m >= 0) return { systemIndex: s, railIndex: r, system, rail, moduleIndex: m, module: rail.modules[m] };
+    }
+  }
+  throw new InputError(`no module with id '${moduleId}'`);
+}
+
+/** Runs `fn` and turns an InputError (unknown id, unknown catalog entry) into a refusal. */
+export function guard(fn: () => Enablement): Enablement {
+  try {
+    return fn();
+  } catch (e) {
+    if (e instanceof InputError) return refuse(e.message);
+    throw e;
+  }
+}
+
+export function replaceSystem(config: Configuration, index: number, system: LightSystem): Configuration {
+  return { ...config, systems: config.systems.map((s, i) => (i === index ? system : s)) };
+}
+
+export function replaceRail(config: Configuration, ref: { systemIndex: number; railIndex: number }, rail: Rail): Configuration {
+  const system = config.systems[ref.systemIndex];
+  return replaceSystem(config, ref.systemIndex, { ...system, rails: system.rails.map((r, i) => (i === ref.railIndex ? rail : r)) });
+}
+
+/** The first problem of a system in a candidate state as a refusal, or true. */
+export function systemFits(candidate: Configuration, index: number, catalog: Catalog): Enablement {
+  const p = systemProblems(candidate, index, catalog);
+  return p.length === 0 ? true : refuse(p[0].message);
+}
+
+/** A fresh id with the given one-letter prefix and the configuration with its counter advanced. */
+export function takeId(config: Configuration, prefix: 's' | 'r' | 'm'): [string, Configuration] {
+  return [`${prefix}${config.nextId}`, { ...config, nextId: config.nextId + 1 }];
+}
