@@ -1,0 +1,457 @@
+import { SURFACE_NAMES, type Rgb, type SurfaceName, type Vec3 } from '../model/lightingScene';
+import type { Photometry } from '../photometry/types';
+import { blurFragment, combineFragment } from '../../shaders/passes.glsl';
+import { LUMINANCE_WEIGHTS, type BakedMaps } from './bakedMaps';
+import { toRgb, type BakeScene } from './bakeScene';
+import { resolveBakeSettings, type BakeSettings } from './bakeSettings';
+import { generateDirectShader, type DirectLamp } from './generateDirectShader';
+import { generateGatherShader } from './generateGatherShader';
+import {
+  bindTexture,
+  clearTarget,
+  createDataTexture,
+  createFloatTarget,
+  deleteTarget,
+  drawInto,
+  getProgram,
+  readRgb,
+  requireFloatTargets,
+  uploadRgb,
+  type FloatTarget,
+} from './glResources';
+import { lampReachesSurface } from './lampReach';
+import { applyMat3, luminaireRotation } from './luminaireRotation';
+import { pointSources } from './pointSources';
+import { buildProfileTable, DATA_TEXTURE_WIDTH } from './profileTable';
+import { surfaceLayouts, texelArea, type SurfaceLayout } from './surfaceLayout';
+
+export interface BakeProgress {
+  /** Bounces finished. */
+  bounce: number;
+  bounces: number;
+  /** Samples gathered so far in the bounce under way. */
+  samplesDone: number;
+  samplesPerBounce: number;
+  done: boolean;
+}
+
+export interface BakeReport {
+  settings: BakeSettings;
+  texels: Record<SurfaceName, [number, number]>;
+  totalTexels: number;
+  luminaires: number;
+  pointSources: number;
+  /** Surfaces no luminaire can reach: their direct pass was skipped. */
+  directSkipped: SurfaceName[];
+  indirectEnabled: boolean;
+  samplesPerTexelPerBounce: number;
+  bouncesComputed: number;
+  /** Flux (lm, photometric Y) arriving on all surfaces: [direct, bounce 1, bounce 2, ...]. */
+  bounceFlux: number[];
+  /** Flux-weighted reflectance of the last computed bounce per channel, and the tail factor r/(1−r) applied. */
+  tailRatio: Rgb;
+  tailFactor: Rgb;
+  linearFiltering: boolean;
+  shaders: { pass: string; surface: SurfaceName | null; bytes: number; cached: boolean }[];
+  timings_ms: { compile: number; direct: number; indirect: number; blur: number; blend: number; readback: number; total: number };
+}
+
+/** A bake in progress: direct maps ready, indirect refined by `step` (for the browser, a few samples per frame). */
+export interface BakeJob {
+  readonly layouts: SurfaceLayout[];
+  readonly progress: BakeProgress;
+  /** Gather up to `samples` more indirect samples per texel (default: settings.samplesPerDraw). */
+  step(samples?: number): BakeProgress;
+  /** Step until every bounce is done, then finalize. */
+  run(): void;
+  /** Build indirect (blurred, with the tail estimate) and total maps from the current state. */
+  finalize(): void;
+  /** Current maps on the GPU (valid until dispose), e.g. for the viewer. Call finalize first. */
+  textures(): Record<SurfaceName, { direct: WebGLTexture; indirect: WebGLTexture; total: WebGLTexture }>;
+  /** Maps read back as RGB lux floats (finalizes if needed). */
+  readMaps(): BakedMaps;
+  report(): BakeReport;
+  dispose(): void;
+}
+
+export interface Baker {
+  /** Start a bake: runs the direct pass now, returns the job for the indirect passes. */
+  start(scene: BakeScene, settings?: Partial<BakeSettings>): BakeJob;
+  /**
+   * Start an indirect-only solve from given per-surface "direct" maps (RGB,
+   * 3 floats per texel, layouts as `surfaceLayouts` gives for these settings):
+   * e.g. uniform self-emission for the grey-furnace check, or an external
+   * direct solution.
+   */
+  startFromDirect(room: BakeScene['room'], direct: Record<SurfaceName, Float32Array>, settings?: Partial<BakeSettings>): BakeJob;
+  /** start + run + readMaps + report. */
+  bake(scene: BakeScene, settings?: Partial<BakeSettings>): { maps: BakedMaps; report: BakeReport };
+}
+
+function mixSeed(...values: number[]): number {
+  let h = 0x811c9dc5;
+  for (const v of values) {
+    h = Math.imul(h ^ (v >>> 0), 0x01000193) >>> 0;
+    h ^= h >>> 15;
+    h = Math.imul(h, 0x2c1b3c6d) >>> 0;
+  }
+  return h >>> 0;
+}
+
+/** Create a baker on any WebGL2 context (browser canvas or headless-gl). */
+export function createBaker(gl: WebGL2RenderingContext): Baker {
+  const { linear } = requireFloatTargets(gl);
+  const start = (scene: BakeScene, partial: Partial<BakeSettings> | undefined, direct: Record<SurfaceName, Float32Array> | null) =>
+    startJob(gl, linear, scene, resolveBakeSettings(partial), direct);
+  return {
+    start: (scene, settings) => start(scene, settings, null),
+    startFromDirect: (room, direct, settings) => start({ room, luminaires: [] }, settings, direct),
+    bake(scene, settings) {
+      const job = start(scene, settings, null);
+      try {
+        job.run();
+        return { maps: job.readMaps(), report: job.report() };
+      } finally {
+        job.dispose();
+      }
+    },
+  };
+}
+
+interface SurfaceState {
+  layout: SurfaceLayout;
+  direct: FloatTarget;
+  sum: [FloatTarget, FloatTarget];
+  sumCurrent: number;
+  acc: [FloatTarget, FloatTarget, FloatTarget];
+  /** Index in acc of the previous bounce (gather input), or -1 for the direct map. */
+  input: number;
+  read: number;
+  write: number;
+  raw: FloatTarget;
+  blurTemp: FloatTarget;
+  indirect: FloatTarget;
+  total: FloatTarget;
+  gather: WebGLProgram | null;
+}
+
+function startJob(
+  gl: WebGL2RenderingContext,
+  linear: boolean,
+  scene: BakeScene,
+  settings: BakeSettings,
+  directOverride: Record<SurfaceName, Float32Array> | null,
+): BakeJob {
+  const t0 = performance.now();
+  const timings = { compile: 0, direct: 0, indirect: 0, blur: 0, blend: 0, readback: 0, total: 0 };
+  const shaders: BakeReport['shaders'] = [];
+  const { room } = scene;
+  const roomSize: Vec3 = [room.width, room.height, room.depth];
+  const reflectance = SURFACE_NAMES.map((n) => toRgb(room.reflectance[n]));
+  const layouts = surfaceLayouts(room, settings.texelSize, settings.maxTextureSize);
+  const timed = <T>(key: keyof typeof timings, f: () => T): T => {
+    const s = performance.now();
+    const r = f();
+    gl.finish();
+    timings[key] += performance.now() - s;
+    return r;
+  };
+  const program = (source: string, pass: string, surface: SurfaceName | null): WebGLProgram => {
+    const s = performance.now();
+    const info = getProgram(gl, source);
+    timings.compile += performance.now() - s;
+    shaders.push({ pass, surface, bytes: source.length, cached: !info.compiled });
+    return info.program;
+  };
+
+  // Profiles: each distinct Photometry object once in the table.
+  const distinct: Photometry[] = [];
+  const profileIndex = new Map<Photometry, number>();
+  for (const l of scene.luminaires) {
+    if (!profileIndex.has(l.photometry)) {
+      profileIndex.set(l.photometry, distinct.length);
+      distinct.push(l.photometry);
+    }
+  }
+  const table = buildProfileTable(distinct);
+  const dataTexture = distinct.length > 0 ? createDataTexture(gl, table.data, DATA_TEXTURE_WIDTH, table.rows) : null;
+
+  let pointSourceCount = 0;
+  const lamps = scene.luminaires.flatMap((l) => {
+    const profile = table.layouts[profileIndex.get(l.photometry)!];
+    const dimming = l.dimming ?? 1;
+    const color = l.color ?? [1, 1, 1];
+    if (profile.peakCandela <= 0 || dimming <= 0 || color.every((c) => c <= 0)) return [];
+    const rotation = luminaireRotation(l.yaw, l.pitch, l.roll);
+    const local = pointSources(l.photometry, settings.sourceSpacing, settings.maxSourcesPerAxis);
+    const sources = local.map((p): Vec3 => {
+      const w = applyMat3(rotation, p);
+      // Keep split sources inside the room (an opening flush with a wall).
+      return [0, 1, 2].map((a) => Math.min(roomSize[a], Math.max(0, l.position[a] + w[a]))) as Vec3;
+    });
+    pointSourceCount += sources.length;
+    const weight: Rgb = [0, 1, 2].map((c) => (color[c] * dimming) / sources.length) as Rgb;
+    return [{ profile, rotation, sources, weight } satisfies DirectLamp];
+  });
+
+  const target = (layout: SurfaceLayout) => createFloatTarget(gl, layout.width, layout.height, linear);
+  const directSkipped: SurfaceName[] = [];
+  const states: SurfaceState[] = layouts.map((layout) => ({
+    layout,
+    direct: target(layout),
+    sum: [target(layout), target(layout)],
+    sumCurrent: 0,
+    acc: [target(layout), target(layout), target(layout)],
+    input: -1,
+    read: 0,
+    write: 1,
+    raw: target(layout),
+    blurTemp: target(layout),
+    indirect: target(layout),
+    total: target(layout),
+    gather: null,
+  }));
+
+  // Direct pass.
+  timed('direct', () => {
+    for (const st of states) {
+      if (directOverride) {
+        uploadRgb(gl, st.direct, directOverride[st.layout.name]);
+        continue;
+      }
+      const reaching = lamps.filter((l) => lampReachesSurface(l.sources, l.rotation, l.profile.gammaMin, l.profile.gammaMax, st.layout));
+      if (reaching.length === 0) {
+        directSkipped.push(st.layout.name);
+        continue;
+      }
+      const prog = program(generateDirectShader(st.layout, reaching), 'direct', st.layout.name);
+      drawInto(gl, st.direct, prog, () => bindTexture(gl, prog, 'uProfiles', 0, dataTexture!));
+    }
+  });
+
+  // Flux per channel and flux-weighted reflectance of a set of maps (for the tail).
+  const fluxStats = (maps: Float32Array[], scale: number): { flux: Rgb; reflected: Rgb } => {
+    const flux: Rgb = [0, 0, 0];
+    const reflected: Rgb = [0, 0, 0];
+    maps.forEach((rgb, s) => {
+      const a = texelArea(layouts[s]) * scale;
+      for (let i = 0; i < rgb.length; i++) {
+        const c = i % 3;
+        flux[c] += rgb[i] * a;
+        reflected[c] += rgb[i] * a * reflectance[s][c];
+      }
+    });
+    return { flux, reflected };
+  };
+  const yFlux = (f: Rgb) => LUMINANCE_WEIGHTS[0] * f[0] + LUMINANCE_WEIGHTS[1] * f[1] + LUMINANCE_WEIGHTS[2] * f[2];
+  const maxRho = Math.max(...reflectance.flat());
+  const ratioOf = (st: { flux: Rgb; reflected: Rgb }): Rgb =>
+    [0, 1, 2].map((c) => (st.flux[c] > 0 ? Math.min(st.reflected[c] / st.flux[c], maxRho, 0.9999) : 0)) as Rgb;
+
+  const directStats = timed('readback', () => fluxStats(states.map((st) => readRgb(gl, st.direct)), 1));
+  const bounceFlux = [yFlux(directStats.flux)];
+  let lastRatio = ratioOf(directStats);
+
+  const indirectEnabled = settings.bounces > 0 && maxRho > 0 && directStats.flux.some((f) => f > 0);
+  const combine = program(combineFragment, 'combine', null);
+  const blur = indirectEnabled && settings.blurRadius > 0 ? program(blurFragment, 'blur', null) : null;
+  if (indirectEnabled) {
+    for (const st of states) st.gather = program(generateGatherShader(st.layout, roomSize, reflectance), 'gather', st.layout.name);
+  }
+
+  let bounce = 0;
+  let samplesDone = 0;
+  let finalized = false;
+  const progress = (): BakeProgress => ({
+    bounce,
+    bounces: indirectEnabled ? settings.bounces : 0,
+    samplesDone,
+    samplesPerBounce: settings.samples,
+    done: !indirectEnabled || bounce >= settings.bounces,
+  });
+
+  const runCombine = (out: FloatTarget, a: FloatTarget, b: FloatTarget, scaleA: Rgb, scaleB: Rgb) => {
+    drawInto(gl, out, combine, () => {
+      bindTexture(gl, combine, 'uA', 0, a.texture);
+      bindTexture(gl, combine, 'uB', 1, b.texture);
+      gl.uniform3fv(gl.getUniformLocation(combine, 'uScaleA'), scaleA);
+      gl.uniform3fv(gl.getUniformLocation(combine, 'uScaleB'), scaleB);
+    });
+  };
+
+  const gatherDraw = (st: SurfaceState, first: number, count: number) => {
+    const prog = st.gather!;
+    drawInto(gl, st.acc[st.write], prog, () => {
+      states.forEach((src, s) => {
+        const tex = src.input < 0 ? src.direct : src.acc[src.input];
+        bindTexture(gl, prog, `uSource${s}`, s, tex.texture);
+      });
+      bindTexture(gl, prog, 'uAccumulated', 6, st.acc[st.read].texture);
+      gl.uniform1ui(gl.getUniformLocation(prog, 'uFirstSample'), first);
+      gl.uniform1i(gl.getUniformLocation(prog, 'uSampleCount'), count);
+      // The previous bounce is stored as the sum of its S samples: read it as lux.
+      gl.uniform1f(gl.getUniformLocation(prog, 'uInputScale'), st.input < 0 ? 1 : 1 / settings.samples);
+      gl.uniform1ui(gl.getUniformLocation(prog, 'uSeed'), mixSeed(settings.seed, st.layout.index, bounce));
+    });
+    [st.read, st.write] = [st.write, st.read];
+  };
+
+  // A finished bounce k: acc holds S·E_k. Add E_k to the running sum, measure its
+  // flux and flux-weighted reflectance (for the tail), make it the next input.
+  const finishBounce = () => {
+    const inv = 1 / settings.samples;
+    timed('blend', () => {
+      for (const st of states) {
+        const next = 1 - st.sumCurrent;
+        runCombine(st.sum[next], st.sum[st.sumCurrent], st.acc[st.read], [1, 1, 1], [inv, inv, inv]);
+        st.sumCurrent = next;
+      }
+    });
+    const stats = timed('readback', () => fluxStats(states.map((st) => readRgb(gl, st.acc[st.read])), inv));
+    bounceFlux.push(yFlux(stats.flux));
+    lastRatio = ratioOf(stats);
+    bounce++;
+    for (const st of states) {
+      const finished = st.read;
+      const free = [0, 1, 2].filter((i) => i !== finished);
+      st.input = finished;
+      st.read = free[0];
+      st.write = free[1];
+      clearTarget(gl, st.acc[st.read]);
+    }
+    samplesDone = 0;
+  };
+
+  const step = (maxSamples = settings.samplesPerDraw): BakeProgress => {
+    if (!indirectEnabled) return progress();
+    let remaining = maxSamples;
+    timed('indirect', () => {
+      while (remaining > 0 && bounce < settings.bounces) {
+        const n = Math.min(remaining, settings.samplesPerDraw, settings.samples - samplesDone);
+        for (const st of states) gatherDraw(st, samplesDone, n);
+        samplesDone += n;
+        remaining -= n;
+        finalized = false;
+        if (samplesDone >= settings.samples) finishBounce();
+      }
+    });
+    return progress();
+  };
+
+  /**
+   * Tail of the bounce series (ρ → 1). In a closed box every reflected lumen
+   * lands on some surface, so the flux of bounce k+1 is exactly the reflected
+   * flux of bounce k: Φ_{k+1} = Σ ρ·E_k·A. The ratio r = Φ_{k+1}/Φ_k is the
+   * flux-weighted reflectance of bounce k, and as k grows the bounce shape
+   * converges (power iteration) so r becomes constant: the remaining series is
+   * geometric, Σ_{j>B} E_j ≈ E_B · r/(1−r). This is the "ambient term" of
+   * progressive radiosity (Cohen, Chen, Wallace, Greenberg, SIGGRAPH 1988),
+   * applied per channel with E_B's own distribution as the shape.
+   */
+  const tailFactor = (): Rgb => (settings.tail ? (lastRatio.map((r) => r / (1 - r)) as Rgb) : [0, 0, 0]);
+
+  const finalize = () => {
+    if (indirectEnabled) {
+      const f = tailFactor();
+      timed('blend', () => {
+        for (const st of states) {
+          const sum = st.sum[st.sumCurrent];
+          if (samplesDone > 0) {
+            // Bounce under way: its partial mean stands in for itself and the rest of the series.
+            runCombine(st.raw, sum, st.acc[st.read], [1, 1, 1], f.map((x) => (1 + x) / samplesDone) as Rgb);
+          } else if (bounce > 0) {
+            runCombine(st.raw, sum, st.acc[st.input], [1, 1, 1], f.map((x) => x / settings.samples) as Rgb);
+          } else {
+            runCombine(st.raw, sum, sum, [1, 1, 1], [0, 0, 0]);
+          }
+        }
+      });
+      if (blur) {
+        const radius = settings.blurRadius;
+        const sigma = radius / 2;
+        timed('blur', () => {
+          for (const st of states) {
+            const passes: [FloatTarget, FloatTarget, number, number][] = [
+              [st.raw, st.blurTemp, 1, 0],
+              [st.blurTemp, st.indirect, 0, 1],
+            ];
+            for (const [src, dst, dx, dy] of passes) {
+              drawInto(gl, dst, blur, () => {
+                bindTexture(gl, blur, 'uSource', 0, src.texture);
+                gl.uniform2i(gl.getUniformLocation(blur, 'uDirection'), dx, dy);
+                gl.uniform1i(gl.getUniformLocation(blur, 'uRadius'), radius);
+                gl.uniform1f(gl.getUniformLocation(blur, 'uInvTwoSigma2'), 1 / (2 * sigma * sigma));
+              });
+            }
+          }
+        });
+      } else {
+        timed('blend', () => {
+          for (const st of states) runCombine(st.indirect, st.raw, st.raw, [1, 1, 1], [0, 0, 0]);
+        });
+      }
+    } else {
+      for (const st of states) clearTarget(gl, st.indirect);
+    }
+    timed('blend', () => {
+      for (const st of states) runCombine(st.total, st.direct, st.indirect, [1, 1, 1], [1, 1, 1]);
+    });
+    finalized = true;
+  };
+
+  let disposed = false;
+  const job: BakeJob = {
+    layouts,
+    get progress() {
+      return progress();
+    },
+    step,
+    run() {
+      while (!progress().done) step(settings.samples);
+      finalize();
+    },
+    finalize,
+    textures() {
+      return Object.fromEntries(
+        states.map((st) => [st.layout.name, { direct: st.direct.texture, indirect: st.indirect.texture, total: st.total.texture }]),
+      ) as ReturnType<BakeJob['textures']>;
+    },
+    readMaps() {
+      if (!finalized) finalize();
+      return timed('readback', () =>
+        Object.fromEntries(
+          states.map((st) => [st.layout.name, { layout: st.layout, direct: readRgb(gl, st.direct), indirect: readRgb(gl, st.indirect), total: readRgb(gl, st.total) }]),
+        ) as BakedMaps,
+      );
+    },
+    report() {
+      timings.total = performance.now() - t0;
+      return {
+        settings,
+        texels: Object.fromEntries(layouts.map((l) => [l.name, [l.width, l.height]])) as BakeReport['texels'],
+        totalTexels: layouts.reduce((n, l) => n + l.width * l.height, 0),
+        luminaires: scene.luminaires.length,
+        pointSources: pointSourceCount,
+        directSkipped,
+        indirectEnabled,
+        samplesPerTexelPerBounce: indirectEnabled ? settings.samples : 0,
+        bouncesComputed: bounce,
+        bounceFlux,
+        tailRatio: lastRatio,
+        tailFactor: indirectEnabled ? tailFactor() : [0, 0, 0],
+        linearFiltering: linear,
+        shaders,
+        timings_ms: { ...timings },
+      };
+    },
+    dispose() {
+      if (disposed) return;
+      disposed = true;
+      for (const st of states) {
+        for (const t of [st.direct, ...st.sum, ...st.acc, st.raw, st.blurTemp, st.indirect, st.total]) deleteTarget(gl, t);
+      }
+      if (dataTexture) gl.deleteTexture(dataTexture);
+    },
+  };
+  return job;
+}
