@@ -8,3 +8,5 @@ export { parseLdt } from './parseLdt';
 export { intensity } from './intensity';
 export { integrateFlux } from './flux';
 export { tiltFactorAt } from './tilt';
+export { beamAndField, peakIntensity, type BeamField } from './beam';
+export { cctToLinearRgb, planckianXyz, ColorTemperatureError, CCT_MIN_K, CCT_MAX_K } from './cct';
