@@ -1,0 +1,41 @@
+/**
+ * The configuration as the baker's input (LightingScene v1, DESIGN.md): one
+ * luminaire per module, at its photometric centre (plan centre of the module,
+ * y = ceiling − suspension), turned so C0 runs along its rail (yaw = rail
+ * heading) plus the optic's roll from the catalog, coloured by its CCT.
+ */
+import { cctToLinearRgb } from '../photometry/cct';
+import { findBeam, findModuleType, type Catalog } from './catalogSchema';
+import type { Configuration } from './configuration';
+import { modulePlacements } from './geometry';
+import type { LightingLuminaire, LightingScene, Rgb } from './lightingScene';
+
+export interface ToLightingSceneOptions {
+  /** Prefix for the catalog's photometry paths (e.g. '../public/' when the scene file lives elsewhere). Default ''. */
+  readonly photometryBase?: string;
+}
+
+export function toLightingScene(config: Configuration, catalog: Catalog, options: ToLightingSceneOptions = {}): LightingScene {
+  const base = options.photometryBase ?? '';
+  const luminaires: LightingLuminaire[] = [];
+  for (const system of config.systems) {
+    const y = config.room.height - system.suspension;
+    const byId = new Map(system.rails.flatMap((r) => r.modules).map((m) => [m.id, m]));
+    for (const p of modulePlacements(system, catalog)) {
+      const m = byId.get(p.moduleId)!;
+      const beam = findBeam(findModuleType(catalog, m.type), m.beam);
+      luminaires.push({
+        id: m.id,
+        photometry: base + beam.photometry,
+        position: [p.centre[0], y, p.centre[1]],
+        yaw: p.heading,
+        pitch: 0,
+        roll: beam.roll,
+        dimming: m.dimming,
+        color: cctToLinearRgb(m.cct) as Rgb,
+      });
+    }
+  }
+  const { width, depth, height, reflectance } = config.room;
+  return { version: 1, room: { width, height, depth, reflectance: { ...reflectance } }, luminaires };
+}
