@@ -7,11 +7,15 @@ export type Command = (args: string[]) => Promise<number>;
 // never pays for WebGL. Add new commands here.
 const commands: Record<string, () => Promise<{ run: Command }>> = {
   ies: () => import('./iesCommand'),
+  bake: () => import('./bakeCommand'),
+  probe: () => import('./probeCommand'),
 };
 
 const usage = `usage: luxbox <command> [...]
 commands:
-  ies info <file.ies|file.ldt> [--json]   describe a photometric file`;
+  ies info <file.ies|file.ldt> [--json]   describe a photometric file
+  bake <scene.json> --out <dir> [--samples N --bounces N --texel m]   bake light maps (docs/baker.md)
+  probe <scene.json> <points.json> [--samples N --bounces N --texel m]   lux at surface points`;
 
 export async function main(argv: string[]): Promise<number> {
   const [name, ...rest] = argv;

@@ -1,0 +1,67 @@
+import { type SurfaceName, type Vec3 } from '../model/lightingScene';
+import { LUMINANCE_WEIGHTS, type BakedMaps } from './bakedMaps';
+import type { SurfaceLayout } from './surfaceLayout';
+
+/** The surface nearest to a point and the distance to its plane (∞ outside the room's footprint on that plane). */
+export function nearestSurface(room: { width: number; height: number; depth: number }, p: Vec3): { surface: SurfaceName; distance: number } {
+  const dims = [room.width, room.height, room.depth];
+  let best: { surface: SurfaceName; distance: number } = { surface: 'floor', distance: Infinity };
+  const planes: [SurfaceName, number, number][] = [
+    ['floor', 1, 0],
+    ['ceiling', 1, room.height],
+    ['north', 2, 0],
+    ['south', 2, room.depth],
+    ['west', 0, 0],
+    ['east', 0, room.width],
+  ];
+  for (const [surface, axis, at] of planes) {
+    // Distance to the surface rectangle (not just its plane): outside the rectangle counts too.
+    let d2 = (p[axis] - at) ** 2;
+    for (let a = 0; a < 3; a++) {
+      if (a === axis) continue;
+      const over = Math.max(0, -p[a], p[a] - dims[a]);
+      d2 += over * over;
+    }
+    const distance = Math.sqrt(d2);
+    if (distance < best.distance) best = { surface, distance };
+  }
+  return best;
+}
+
+/** Bilinear lookup between texel centres (clamped at the borders) of an RGB map; returns lux (Y). */
+export function bilinearLux(layout: SurfaceLayout, rgb: Float32Array, u: number, v: number): number {
+  const fx = Math.min(layout.width - 1, Math.max(0, (u / layout.lengthU) * layout.width - 0.5));
+  const fy = Math.min(layout.height - 1, Math.max(0, (v / layout.lengthV) * layout.height - 0.5));
+  const x0 = Math.floor(fx);
+  const y0 = Math.floor(fy);
+  const x1 = Math.min(layout.width - 1, x0 + 1);
+  const y1 = Math.min(layout.height - 1, y0 + 1);
+  const tx = fx - x0;
+  const ty = fy - y0;
+  const lux = (x: number, y: number) => {
+    const o = (y * layout.width + x) * 3;
+    return LUMINANCE_WEIGHTS[0] * rgb[o] + LUMINANCE_WEIGHTS[1] * rgb[o + 1] + LUMINANCE_WEIGHTS[2] * rgb[o + 2];
+  };
+  return (lux(x0, y0) * (1 - tx) + lux(x1, y0) * tx) * (1 - ty) + (lux(x0, y1) * (1 - tx) + lux(x1, y1) * tx) * ty;
+}
+
+export interface ProbeValue {
+  surface: SurfaceName;
+  direct: number;
+  indirect: number;
+  total: number;
+}
+
+/** Illuminance (lux) at a point on a surface of the baked room: nearest surface, bilinear in its maps. */
+export function probeMaps(maps: BakedMaps, room: { width: number; height: number; depth: number }, point: Vec3): ProbeValue {
+  const { surface } = nearestSurface(room, point);
+  const m = maps[surface];
+  const u = point[m.layout.uAxisIndex];
+  const v = point[m.layout.vAxisIndex];
+  return {
+    surface,
+    direct: bilinearLux(m.layout, m.direct, u, v),
+    indirect: bilinearLux(m.layout, m.indirect, u, v),
+    total: bilinearLux(m.layout, m.total, u, v),
+  };
+}

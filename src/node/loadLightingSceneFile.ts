@@ -1,0 +1,70 @@
+import { readFileSync } from 'node:fs';
+import { basename, dirname, resolve } from 'node:path';
+import type { BakeScene } from '../bake/bakeScene';
+import { LightingSceneError, parseLightingScene } from '../model/parseLightingScene';
+import type { LightingScene } from '../model/lightingScene';
+import { parsePhotometry } from '../photometry/parsePhotometry';
+import type { Photometry } from '../photometry/types';
+
+export interface LoadedLightingScene {
+  scene: LightingScene;
+  /** Parsed photometry per resolved path (each file read once, however many luminaires share it). */
+  photometries: Map<string, Photometry>;
+  /** Ready for the baker: photometry parsed, defaults filled in. */
+  bakeScene: BakeScene;
+}
+
+/** Line and column of a character offset, for JSON syntax errors. */
+function lineColumn(text: string, offset: number): string {
+  const before = text.slice(0, offset).split('\n');
+  return `line ${before.length}, column ${before[before.length - 1].length + 1}`;
+}
+
+/** Parse JSON text, reporting syntax errors as `file: line L, column C: message`. */
+export function parseJsonText(text: string, source: string): unknown {
+  try {
+    return JSON.parse(text);
+  } catch (error) {
+    const message = (error as Error).message;
+    const position = /position (\d+)/.exec(message);
+    const where = position ? `${lineColumn(text, Number(position[1]))}: ` : '';
+    throw new LightingSceneError(`${source}: ${where}invalid JSON (${message.replace(/ in JSON at position \d+.*$/, '')})`);
+  }
+}
+
+function readText(path: string, what: string): string {
+  try {
+    return readFileSync(path, 'utf8');
+  } catch (error) {
+    const code = (error as NodeJS.ErrnoException).code ?? 'read error';
+    throw new LightingSceneError(`${what}: cannot read ${path} (${code === 'ENOENT' ? 'no such file' : code})`);
+  }
+}
+
+/**
+ * Read a lighting scene file and every photometric file it names. Photometry
+ * paths are relative to the scene file's folder (absolute paths are kept).
+ */
+export function loadLightingSceneFile(path: string): LoadedLightingScene {
+  const source = basename(path);
+  const scene = parseLightingScene(parseJsonText(readText(path, source), source), source);
+  const folder = dirname(resolve(path));
+  const photometries = new Map<string, Photometry>();
+  const luminaires = scene.luminaires.map((l, i) => {
+    const file = resolve(folder, l.photometry);
+    let photometry = photometries.get(file);
+    if (!photometry) {
+      let data: Uint8Array;
+      try {
+        data = readFileSync(file);
+      } catch (error) {
+        const code = (error as NodeJS.ErrnoException).code;
+        throw new LightingSceneError(`${source}: luminaires[${i}].photometry: cannot read "${l.photometry}" (${code === 'ENOENT' ? 'no such file' : code ?? 'read error'})`);
+      }
+      photometry = parsePhotometry(data, file);
+      photometries.set(file, photometry);
+    }
+    return { photometry, position: l.position, yaw: l.yaw, pitch: l.pitch, roll: l.roll, dimming: l.dimming ?? 1, color: l.color ?? [1, 1, 1] };
+  });
+  return { scene, photometries, bakeScene: { room: scene.room, luminaires } as BakeScene };
+}
