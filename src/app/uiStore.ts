@@ -1,0 +1,38 @@
+import { createStore, type StoreApi } from 'zustand/vanilla';
+
+/**
+ * UI state that is not part of the configuration (so undo/redo never touch it): which screen
+ * is shown, panels, the message banner and the transient status line. A plain vanilla store so
+ * the embedding API can drive it (setConfig leaves the room-setup screen) without React.
+ */
+export interface UiState {
+  phase: 'setup' | 'planner';
+  /** 2D plan or the 3D view. */
+  mode: '2d' | '3d';
+  optionsOpen: boolean;
+  /** The side panel on narrow screens (always shown on wide ones). */
+  panelOpen: boolean;
+  /** A persistent message (e.g. a broken share link) until dismissed. */
+  banner: { text: string; canRestore: boolean } | null;
+  /** A short message (why a control is disabled); `seq` lets a repeated message re-trigger. */
+  status: { text: string; seq: number } | null;
+}
+
+export type UiStore = StoreApi<UiState>;
+
+export function createUiStore(initial: Partial<UiState> = {}): UiStore {
+  return createStore<UiState>()(() => ({
+    phase: 'setup',
+    mode: '2d',
+    optionsOpen: false,
+    panelOpen: false,
+    banner: null,
+    status: null,
+    ...initial,
+  }));
+}
+
+export function showStatus(ui: UiStore, text: string): void {
+  const seq = (ui.getState().status?.seq ?? 0) + 1;
+  ui.setState({ status: { text, seq } });
+}
