@@ -84,6 +84,9 @@ export function convertTypeAB(
     }),
   );
 
+  // C = 360 is the C = 0 plane; copy it so the seam is exact, not just close.
+  out[nC - 1] = out[0].slice();
+
   const symmetry: Photometry['symmetry'] =
     hMirror && vMirror ? 'quadrant' : hMirror ? 'bilateral-c90' : vMirror ? 'bilateral-c0' : 'none';
   return { verticalAngles, horizontalAngles, candela: out, symmetry };

@@ -28,7 +28,7 @@ export function readAngles(
       throw new PhotometryParseError(
         fileName,
         reader.lastLine,
-        `${plural} must ascend: ${value} follows ${angles[i - 1]} (angle ${i + 1} of ${count}; does the count in the header match the data?)`,
+        `expected ${count} ${plural}, found ${i} before ${value}, which does not ascend after ${angles[i - 1]} (the count in the header does not match the data, or the angles are out of order)`,
       );
     }
     angles.push(value);
