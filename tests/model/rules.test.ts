@@ -10,7 +10,7 @@ function expectRefusedAndInvalid(state: Configuration, name: string, params: unk
   const a = bindAction(name, params, catalog);
   const e = a.isEnabled(state);
   expect(e).toEqual({ ok: false, reason: expect.stringMatching(reason) });
-  let next: Configuration | null = null;
+  let next: Configuration;
   try {
     next = a.perform(state);
   } catch {

@@ -4,6 +4,7 @@
  * distribution, so "fits" is the one test: layoutModules() is not null.
  */
 import { z } from 'zod';
+import { InputError } from '../../inputError';
 import { refuse, type ActionDefinition } from '../action';
 import { findBeam, findModuleType, type Catalog } from '../catalogSchema';
 import type { ModuleInstance, Rail } from '../configuration';
@@ -41,6 +42,7 @@ export const addModule: ActionDefinition<z.infer<typeof addParams>> = {
     const ref = findRail(state, p.railId);
     const [id, next] = takeId(state, 'm');
     const mods = [...ref.rail.modules];
+    if (p.index !== undefined && p.index > mods.length) throw new InputError(`index ${p.index} is beyond the ${mods.length} modules of the rail`);
     mods.splice(p.index ?? mods.length, 0, newModule(catalog, id, p.type));
     return replaceRail(next, ref, { ...ref.rail, modules: mods });
   },
