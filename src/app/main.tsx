@@ -1,11 +1,14 @@
-import { StrictMode } from 'react';
-import { createRoot } from 'react-dom/client';
-import { App } from './App';
+import { mountLuxbox } from '../embed/mountLuxbox';
+import type { LuxboxInstance } from '../embed/types';
+
+declare global {
+  interface Window {
+    /** The running configurator's API (docs/embedding.md); e2e tests drive the app through it. */
+    luxbox?: LuxboxInstance;
+  }
+}
 
 const root = document.getElementById('root');
 if (!root) throw new Error('index.html lacks #root');
-createRoot(root).render(
-  <StrictMode>
-    <App />
-  </StrictMode>,
-);
+// The standalone app: autosave in localStorage and share links in the URL hash.
+window.luxbox = mountLuxbox(root, { storageKey: 'luxbox.autosave.v1', shareLinks: true });

@@ -16,6 +16,8 @@ export interface UiState {
   banner: { text: string; canRestore: boolean } | null;
   /** A short message (why a control is disabled); `seq` lets a repeated message re-trigger. */
   status: { text: string; seq: number } | null;
+  /** The last share link created, shown so it can be copied by hand. */
+  shareLink: string | null;
 }
 
 export type UiStore = StoreApi<UiState>;
@@ -28,6 +30,7 @@ export function createUiStore(initial: Partial<UiState> = {}): UiStore {
     panelOpen: false,
     banner: null,
     status: null,
+    shareLink: null,
     ...initial,
   }));
 }

@@ -26,12 +26,20 @@ const points = (r: PlanRect) => {
 /** Module symbols are drawn wider than the rail profile so they read as separate parts. */
 const MODULE_WIDTH_FACTOR = 1.8;
 
-function SystemShape({ system, catalog, selected, selectedRailId, selectedModuleId }: { system: LightSystem; catalog: Catalog; selected: boolean; selectedRailId?: string; selectedModuleId?: string }) {
+/** Rails are a few centimetres wide: invisible hit strips keep them easy to tap (44 px across). */
+const HIT_HALF_WIDTH_PX = 22;
+
+function SystemShape({ system, catalog, scale, selected, selectedRailId, selectedModuleId }: { system: LightSystem; catalog: Catalog; scale: number; selected: boolean; selectedRailId?: string; selectedModuleId?: string }) {
   const elements = systemElements(system, catalog);
   const modules = modulePlacements(system, catalog);
   const railIds = system.rails.map((r) => r.id);
   return (
     <g data-system-id={system.id} className="plan-system" style={{ cursor: 'move' }}>
+      {elements.map((rects, i) =>
+        rects.map((r, k) => (
+          <polygon key={`hit-${i}-${k}`} points={points({ ...r, halfWidth: Math.max(r.halfWidth, HIT_HALF_WIDTH_PX / scale) })} data-rail-id={i % 2 === 0 ? railIds[i / 2] : undefined} fill="transparent" />
+        )),
+      )}
       {elements.map((rects, i) => {
         // Elements alternate rail, connector, rail, ... (systemElements' contract).
         const isRail = i % 2 === 0;
@@ -132,6 +140,7 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
               <SystemShape
                 system={s}
                 catalog={catalog}
+                scale={view.scale}
                 selected={selection.systemId === s.id}
                 selectedRailId={selection.systemId === s.id ? selection.railId : undefined}
                 selectedModuleId={selection.systemId === s.id ? selection.moduleId : undefined}

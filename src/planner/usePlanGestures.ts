@@ -8,16 +8,23 @@ export interface PlanGestureHandlers {
   onSystemDrag: (systemId: string, delta: PlanPoint) => void;
   /** The drag ended: commit the offset as one undoable action. */
   onSystemDrop: (systemId: string, delta: PlanPoint) => void;
-  /** A tap (no drag) on a system, or on empty plan (null). */
-  onTap: (systemId: string | null) => void;
+  /** A tap (no drag): what was under the pointer (all undefined on empty plan). */
+  onTap: (hit: PlanHit) => void;
 }
 
-type DragMemo = { mode: 'pan'; last: [number, number] } | { mode: 'system'; id: string; startView: PlanView } | { mode: 'none' };
+export interface PlanHit {
+  systemId?: string;
+  railId?: string;
+  moduleId?: string;
+}
 
-/** Which system, if any, an event started on (elements carry data-system-id). */
-function systemIdAt(target: EventTarget | null): string | null {
-  const el = target instanceof Element ? target.closest('[data-system-id]') : null;
-  return el?.getAttribute('data-system-id') ?? null;
+type DragMemo = { mode: 'pan'; last: [number, number] } | { mode: 'system'; id: string; startView: PlanView; hit: PlanHit } | { mode: 'none' };
+
+/** What an event started on: plan elements carry data-system-id / data-rail-id / data-module-id. */
+function hitAt(target: EventTarget | null): PlanHit {
+  if (!(target instanceof Element)) return {};
+  const attr = (name: string) => target.closest(`[${name}]`)?.getAttribute(name) ?? undefined;
+  return { systemId: attr('data-system-id'), railId: attr('data-rail-id'), moduleId: attr('data-module-id') };
 }
 
 function isControl(target: EventTarget | null): boolean {
@@ -48,12 +55,12 @@ export function usePlanGestures(target: RefObject<HTMLElement | null>, plan: Pla
         if (first || !memo) {
           if (isControl(event.target)) memo = { mode: 'none' };
           else {
-            const id = systemIdAt(event.target);
-            memo = id ? { mode: 'system', id, startView: plan.targetRef.current } : { mode: 'pan', last: xy };
+            const hit = hitAt(event.target);
+            memo = hit.systemId ? { mode: 'system', id: hit.systemId, startView: plan.targetRef.current, hit } : { mode: 'pan', last: xy };
           }
         }
         if (tap) {
-          if (memo.mode !== 'none') handlers.onTap(memo.mode === 'system' ? memo.id : null);
+          if (memo.mode !== 'none') handlers.onTap(memo.mode === 'system' ? memo.hit : {});
           return memo;
         }
         if (memo.mode === 'pan') {
