@@ -2,6 +2,7 @@ import { useStore } from 'zustand';
 import { createConfiguration } from '../model/configuration';
 import type { ConfiguratorStore } from '../store/createConfiguratorStore';
 import { Planner } from '../planner/Planner';
+import type { FootprintSource } from '../planner/footprintSource';
 import { RoomSetup } from './RoomSetup';
 import type { UiStore } from './uiStore';
 import './app.css';
@@ -14,10 +15,11 @@ export interface ConfiguratorProps {
   onRestoreSaved: () => void;
   /** The share link of the current configuration. */
   shareLink: () => string;
+  footprints: FootprintSource;
 }
 
 /** The configurator's top-level component: room setup first, then the planner (paper §3.2). */
-export function Configurator({ store, ui, locale, onRestoreSaved, shareLink }: ConfiguratorProps) {
+export function Configurator({ store, ui, locale, onRestoreSaved, shareLink, footprints }: ConfiguratorProps) {
   const phase = useStore(ui, (s) => s.phase);
   const banner = useStore(ui, (s) => s.banner);
   const room = useStore(store, (s) => s.config.room);
@@ -79,6 +81,7 @@ export function Configurator({ store, ui, locale, onRestoreSaved, shareLink }: C
           locale={locale}
           onNewRoom={() => ui.setState({ phase: 'setup', optionsOpen: false, panelOpen: false })}
           onShare={share}
+          footprints={footprints}
         />
       )}
     </div>

@@ -13,6 +13,7 @@ import { Configurator } from '../app/Configurator';
 import { readLocal, writeLocal } from '../app/localStore';
 import { SHARE_HASH_PREFIX, resolveStartup } from '../app/startup';
 import { createUiStore } from '../app/uiStore';
+import { createFootprintSource } from '../planner/footprintSource';
 import type { LuxboxInstance, LuxboxOptions } from './types';
 
 /** Bad mount options (catalog, room, currency): the message names the option. */
@@ -89,10 +90,11 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
     return `${base}${SHARE_HASH_PREFIX}${encodeShareString(store.getState().config, catalog)}`;
   };
 
+  const footprints = createFootprintSource(options.assetBase ?? import.meta.env.BASE_URL);
   const root = createRoot(element);
   root.render(
     <StrictMode>
-      <Configurator store={store} ui={ui} locale={options.locale} onRestoreSaved={restoreSaved} shareLink={shareLink} />
+      <Configurator store={store} ui={ui} locale={options.locale} onRestoreSaved={restoreSaved} shareLink={shareLink} footprints={footprints} />
     </StrictMode>,
   );
 

@@ -1,8 +1,9 @@
-import { memo, useId } from 'react';
+import { memo, useId, useSyncExternalStore } from 'react';
 import type { Catalog } from '../model/catalogSchema';
 import type { Configuration, LightSystem } from '../model/configuration';
 import { modulePlacements, rectCorners, systemElements, type PlanRect } from '../model/geometry';
-import { moduleFootprint } from './moduleFootprint';
+import { moduleFootprint, modulePhotometryPath } from './moduleFootprint';
+import type { FootprintSource } from './footprintSource';
 import { cctTint } from './cctTint';
 import { gridStep } from './detailLevel';
 import type { PlanPoint, PlanView } from './viewTransform';
@@ -15,6 +16,8 @@ export interface PlanSvgProps {
   selection: SelectionPath;
   /** A system being dragged is drawn offset by this much (metres) until it is dropped. */
   drag: { systemId: string; delta: PlanPoint } | null;
+  /** Measured floor footprints per photometric file. */
+  footprints: FootprintSource;
 }
 
 const points = (r: PlanRect) => {
@@ -80,8 +83,10 @@ function SystemShape({ system, catalog, scale, selected, selectedRailId, selecte
  * metres inside one group whose transform is the view, with non-scaling strokes, so lines keep
  * their on-screen width at every zoom; the constant-size controls live in PlanControls.
  */
-export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection, drag }: PlanSvgProps) {
+export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection, drag, footprints }: PlanSvgProps) {
   const clipId = useId();
+  // Re-render when a photometric file arrives.
+  useSyncExternalStore(footprints.subscribe, footprints.version);
   const { width, depth, height } = config.room;
   const step = gridStep(view.scale);
   const gridLines: { x1: number; z1: number; x2: number; z2: number; major: boolean }[] = [];
@@ -109,22 +114,29 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
                 {modulePlacements(s, catalog).map((m) => {
                   const module = s.rails.flatMap((r) => r.modules).find((x) => x.id === m.moduleId);
                   if (!module) return null;
-                  const f = moduleFootprint(m, module, catalog, h);
+                  const path = modulePhotometryPath(module, catalog);
+                  const f = moduleFootprint(m, module, catalog, h, path ? footprints.get(path) : null);
+                  if (!f) return null;
+                  const paint = {
+                    fill: cctTint(module.cct),
+                    fillOpacity: 0.3,
+                    stroke: '#c98a1c',
+                    strokeOpacity: 0.7,
+                    strokeWidth: 1,
+                    vectorEffect: 'non-scaling-stroke' as const,
+                    'data-footprint-for': m.moduleId,
+                  };
+                  if (f.kind === 'polygon') return <polygon key={m.moduleId} points={f.points.map((p) => `${p.x},${p.z}`).join(' ')} {...paint} />;
+                  const e = f.ellipse;
                   return (
                     <ellipse
                       key={m.moduleId}
-                      cx={f.center.x}
-                      cy={f.center.z}
-                      rx={Math.max(f.rx, 1e-3)}
-                      ry={Math.max(f.ry, 1e-3)}
-                      transform={`rotate(${f.rotationDeg} ${f.center.x} ${f.center.z})`}
-                      fill={cctTint(module.cct)}
-                      fillOpacity={0.28}
-                      stroke="#d9a441"
-                      strokeOpacity={0.6}
-                      strokeWidth={1}
-                      vectorEffect="non-scaling-stroke"
-                      data-footprint-for={m.moduleId}
+                      cx={e.center.x}
+                      cy={e.center.z}
+                      rx={Math.max(e.rx, 1e-3)}
+                      ry={Math.max(e.ry, 1e-3)}
+                      transform={`rotate(${e.rotationDeg} ${e.center.x} ${e.center.z})`}
+                      {...paint}
                     />
                   );
                 })}

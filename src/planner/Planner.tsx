@@ -18,6 +18,8 @@ import { usePlanGestures } from './usePlanGestures';
 import { usePlanView } from './usePlanView';
 import { type PlanPoint, type Viewport, fitRoom } from './viewTransform';
 import { BottomBar } from './BottomBar';
+import type { FootprintSource } from './footprintSource';
+import { requestFootprints } from './moduleFootprint';
 import { usePlannerKeys } from './usePlannerKeys';
 
 export interface PlannerProps {
@@ -28,12 +30,13 @@ export interface PlannerProps {
   onNewRoom: () => void;
   /** Copies a share link; returns the message to show. */
   onShare: () => string;
+  footprints: FootprintSource;
 }
 
 const ZOOM_STEP = 1.5;
 
 /** The main screen (paper figure 6): the plan, side panel with presets and price, bottom bar. */
-export function Planner({ store, ui, locale, onNewRoom, onShare }: PlannerProps) {
+export function Planner({ store, ui, locale, onNewRoom, onShare, footprints }: PlannerProps) {
   const config = useStore(store, (s) => s.config);
   const catalog = useStore(store, (s) => s.catalog);
   const selection = useStore(store, (s) => s.selection);
@@ -87,6 +90,10 @@ export function Planner({ store, ui, locale, onNewRoom, onShare }: PlannerProps)
     fittedFor.current = key;
     jumpTo(fitRoom(config.room, viewport));
   }, [roomKey, viewport, config.room, jumpTo]);
+
+  useEffect(() => {
+    requestFootprints(footprints, config.systems.flatMap((s) => s.rails.flatMap((r) => r.modules)), catalog);
+  }, [footprints, config, catalog]);
 
   // Status messages disappear after a few seconds (they explain, they do not block).
   useEffect(() => {
@@ -154,7 +161,7 @@ export function Planner({ store, ui, locale, onNewRoom, onShare }: PlannerProps)
         <div className="stage">
           {mode === '2d' ? (
             <div className="plan-wrap" ref={wrapRef} data-testid="plan" data-scale={plan.view.scale.toFixed(3)} data-level={level}>
-              <PlanSvg config={config} catalog={catalog} view={plan.view} selection={path} drag={drag} />
+              <PlanSvg config={config} catalog={catalog} view={plan.view} selection={path} drag={drag} footprints={footprints} />
               <PlanControls
                 config={config}
                 catalog={catalog}
