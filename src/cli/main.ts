@@ -9,13 +9,15 @@ const commands: Record<string, () => Promise<{ run: Command }>> = {
   ies: () => import('./iesCommand'),
   bake: () => import('./bakeCommand'),
   probe: () => import('./probeCommand'),
+  render: () => import('./renderCommand'),
 };
 
 const usage = `usage: luxbox <command> [...]
 commands:
   ies info <file.ies|file.ldt> [--json]   describe a photometric file
   bake <scene.json> --out <dir> [--samples N --bounces N --texel m]   bake light maps (docs/baker.md)
-  probe <scene.json> <points.json> [--samples N --bounces N --texel m]   lux at surface points`;
+  probe <scene.json> <points.json> [--samples N --bounces N --texel m]   lux at surface points
+  render <config-or-scene.json> --out image.png [--camera eye|top|corner|json --width --height --exposure EV --mode light|lux]   3D image (docs/viewer.md)`;
 
 export async function main(argv: string[]): Promise<number> {
   const [name, ...rest] = argv;

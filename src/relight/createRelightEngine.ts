@@ -1,0 +1,206 @@
+import type { BakeScene } from '../bake/bakeScene';
+import type { BakeSettings } from '../bake/bakeSettings';
+import { resolveBakeSettings } from '../bake/bakeSettings';
+import { createBaker, type BakeJob } from '../bake/createBaker';
+import { surfaceLayouts } from '../bake/surfaceLayout';
+import { SURFACE_NAMES, type Rgb } from '../model/lightingScene';
+import { groupLuminaires, groupWeight, roomKey, type LuminaireGroup } from './luminaireGroups';
+import { emptyLitMaps, relightMaps, type BasisMaps, type LitMaps } from './relightMaps';
+
+/** Quality of the viewer's basis bakes: coarser than the CLI default, as each module gets its own bake. */
+export const VIEWER_BAKE_SETTINGS: Partial<BakeSettings> = { texelSize: 0.05, maxTextureSize: 256, samples: 64, bounces: 3, samplesPerDraw: 8, blurRadius: 5 };
+
+export interface EngineProgress {
+  /** Groups whose basis is final. */
+  groupsDone: number;
+  groups: number;
+  /** 0..1 over all pending indirect work. */
+  fraction: number;
+  /** Every group's basis is final. */
+  done: boolean;
+}
+
+export interface EngineCounters {
+  /** Group bakes started (direct passes run), since the engine was made. */
+  groupBakes: number;
+  /** Scene updates that needed no bake at all (dimming, colour, on/off only). */
+  relightsOnly: number;
+  /** Weighted sums computed. */
+  relights: number;
+}
+
+export interface SetSceneResult {
+  /** Groups that will be (re)baked. */
+  bake: number;
+  /** Groups whose basis was kept. */
+  reused: number;
+}
+
+interface GroupState {
+  group: LuminaireGroup;
+  basis: BasisMaps | null;
+  final: boolean;
+}
+
+/**
+ * Bakes each luminaire group of a scene into basis maps (once), then relights
+ * by weighted sums: a scene change that only touches dimming or colour costs a
+ * relight; a moved or added luminaire bakes only its group; a room change
+ * bakes everything. Bakes are progressive: `step` advances the one bake under
+ * way by a few samples (callers slice it over frames), and every group first
+ * gets its direct-only basis, so light appears at once and refines.
+ */
+export interface RelightEngine {
+  setScene(scene: BakeScene): SetSceneResult;
+  /** Advance pending bakes by up to `samples` indirect samples per texel; returns the progress. */
+  step(samples?: number): EngineProgress;
+  /** Finish every pending bake now (for the CLI and tests). */
+  finish(): void;
+  readonly progress: EngineProgress;
+  /** The relit maps for the current scene's weights (recomputed only when something changed). */
+  maps(): LitMaps;
+  /** Monotonic: bumps whenever `maps()` would return new values. */
+  readonly version: number;
+  readonly counters: EngineCounters;
+  readonly settings: BakeSettings;
+  dispose(): void;
+}
+
+export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial<BakeSettings> = VIEWER_BAKE_SETTINGS): RelightEngine {
+  const settings = resolveBakeSettings(partial);
+  const baker = createBaker(gl);
+  let scene: BakeScene | null = null;
+  let room = '';
+  let states = new Map<string, GroupState>();
+  let order: GroupState[] = [];
+  let job: { state: GroupState; job: BakeJob; steps: number } | null = null;
+  let out: LitMaps | null = null;
+  let version = 0;
+  let composedVersion = -1;
+  const counters: EngineCounters = { groupBakes: 0, relightsOnly: 0, relights: 0 };
+  const totalWork = () => Math.max(1, settings.bounces) * settings.samples;
+
+  const readBasis = (j: BakeJob): BasisMaps => {
+    const m = j.readMaps();
+    return Object.fromEntries(SURFACE_NAMES.map((n) => [n, { direct: m[n].direct, total: m[n].total }])) as BasisMaps;
+  };
+
+  // Direct-only bases for every new group first: light shows up before any indirect work.
+  const bakeDirectOnly = () => {
+    for (const st of order) {
+      if (st.basis) continue;
+      const j = baker.start({ room: scene!.room, luminaires: st.group.basis }, settings);
+      try {
+        j.finalize();
+        st.basis = readBasis(j);
+      } finally {
+        j.dispose();
+      }
+      version++;
+    }
+  };
+
+  const progress = (): EngineProgress => {
+    const done = order.filter((s) => s.final).length;
+    let fraction = order.length === 0 ? 1 : done / order.length;
+    if (job && order.length > 0) {
+      const p = job.job.progress;
+      const within = p.done ? 1 : (p.bounce * settings.samples + p.samplesDone) / totalWork();
+      fraction += within / order.length;
+    }
+    return { groupsDone: done, groups: order.length, fraction: Math.min(1, fraction), done: done === order.length };
+  };
+
+  const finishJob = () => {
+    if (!job) return;
+    job.state.basis = readBasis(job.job);
+    job.state.final = true;
+    job.job.dispose();
+    job = null;
+    version++;
+  };
+
+  const step = (samples = settings.samplesPerDraw): EngineProgress => {
+    if (!scene) return progress();
+    bakeDirectOnly();
+    if (!job) {
+      const next = order.find((s) => !s.final);
+      if (!next) return progress();
+      counters.groupBakes++;
+      job = { state: next, job: baker.start({ room: scene.room, luminaires: next.group.basis }, settings), steps: 0 };
+    }
+    const p = job.job.step(samples);
+    job.steps++;
+    if (p.done) finishJob();
+    else if (job.steps % 4 === 0) {
+      // A preview of the partial indirect solution every few slices: the image converges while the user looks.
+      job.state.basis = readBasis(job.job);
+      version++;
+    }
+    return progress();
+  };
+
+  const engine: RelightEngine = {
+    setScene(next) {
+      const nextRoom = roomKey(next.room);
+      if (nextRoom !== room) {
+        job?.job.dispose();
+        job = null;
+        states = new Map();
+        room = nextRoom;
+        const layouts = surfaceLayouts(next.room, settings.texelSize, settings.maxTextureSize);
+        out = emptyLitMaps(layouts);
+      }
+      scene = next;
+      const groups = groupLuminaires(next.luminaires);
+      const kept = new Map<string, GroupState>();
+      let bake = 0;
+      for (const g of groups) {
+        const old = states.get(g.key);
+        if (old) kept.set(g.key, { ...old, group: g });
+        else {
+          kept.set(g.key, { group: g, basis: null, final: false });
+          bake++;
+        }
+      }
+      if (job && !kept.has(job.state.group.key)) {
+        job.job.dispose();
+        job = null;
+      } else if (job) job.state = kept.get(job.state.group.key)!;
+      states = kept;
+      order = groups.map((g) => kept.get(g.key)!);
+      if (bake === 0) counters.relightsOnly++;
+      version++;
+      return { bake, reused: groups.length - bake };
+    },
+    step,
+    finish() {
+      while (!progress().done) step(settings.samples);
+    },
+    get progress() {
+      return progress();
+    },
+    maps() {
+      if (!out) out = emptyLitMaps(surfaceLayouts({ width: 1, height: 1, depth: 1 }, settings.texelSize, settings.maxTextureSize));
+      if (composedVersion === version || !scene) return out;
+      const lums = scene.luminaires;
+      const parts = order.filter((s) => s.basis).map((s) => ({ basis: s.basis!, weight: groupWeight(s.group, lums) as Rgb }));
+      relightMaps(parts, out);
+      counters.relights++;
+      composedVersion = version;
+      return out;
+    },
+    get version() {
+      return version;
+    },
+    counters,
+    settings,
+    dispose() {
+      job?.job.dispose();
+      job = null;
+      states.clear();
+      order = [];
+    },
+  };
+  return engine;
+}

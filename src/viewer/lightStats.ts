@@ -1,0 +1,117 @@
+import type { BakeScene } from '../bake/bakeScene';
+import { LUMINANCE_WEIGHTS } from '../bake/bakedMaps';
+import type { SurfaceLayout } from '../bake/surfaceLayout';
+import type { LightingScene, Rgb, Vec3 } from '../model/lightingScene';
+import type { Photometry } from '../photometry/types';
+import { directIlluminanceAt } from '../reference/directIlluminance';
+import { referencePointSources } from '../reference/pointSources';
+import type { LitMaps } from '../relight/relightMaps';
+
+/** The numbers a lighting planner asks for first (EN 12464-1 vocabulary): lux and uniformity U0 = Emin/Ē. */
+export interface IlluminanceStats {
+  avg: number;
+  min: number;
+  max: number;
+  /** Emin / Ē (0 when Ē is 0). */
+  u0: number;
+  /** Grid points the numbers are taken over. */
+  points: number;
+}
+
+const Y = (r: number, g: number, b: number) => LUMINANCE_WEIGHTS[0] * r + LUMINANCE_WEIGHTS[1] * g + LUMINANCE_WEIGHTS[2] * b;
+
+/** Statistics of illuminance values (lux) on an equal-area grid. */
+export function statsOf(values: ArrayLike<number>): IlluminanceStats {
+  let sum = 0;
+  let min = Infinity;
+  let max = -Infinity;
+  for (let i = 0; i < values.length; i++) {
+    const v = values[i];
+    sum += v;
+    if (v < min) min = v;
+    if (v > max) max = v;
+  }
+  const n = values.length;
+  if (n === 0) return { avg: 0, min: 0, max: 0, u0: 0, points: 0 };
+  const avg = sum / n;
+  return { avg, min, max, u0: avg > 0 ? min / avg : 0, points: n };
+}
+
+/** Floor statistics from the relit floor map: texel centres are an equal-area grid. */
+export function floorStats(lit: LitMaps): IlluminanceStats {
+  const rgb = lit.maps.floor.total;
+  const lux = new Float32Array(rgb.length / 3);
+  for (let i = 0; i < lux.length; i++) lux[i] = Y(rgb[i * 3], rgb[i * 3 + 1], rgb[i * 3 + 2]);
+  return statsOf(lux);
+}
+
+/** Bilinear lookup of an RGB map at plan (u, v) in metres (texel centres as in surfaceLayout.ts). */
+function sampleMap(layout: SurfaceLayout, rgb: Float32Array, u: number, v: number): Rgb {
+  const fx = Math.min(layout.width - 1, Math.max(0, (u / layout.lengthU) * layout.width - 0.5));
+  const fy = Math.min(layout.height - 1, Math.max(0, (v / layout.lengthV) * layout.height - 0.5));
+  const x0 = Math.floor(fx);
+  const y0 = Math.floor(fy);
+  const x1 = Math.min(layout.width - 1, x0 + 1);
+  const y1 = Math.min(layout.height - 1, y0 + 1);
+  const tx = fx - x0;
+  const ty = fy - y0;
+  const out: Rgb = [0, 0, 0];
+  for (let c = 0; c < 3; c++) {
+    const a = rgb[(y0 * layout.width + x0) * 3 + c] * (1 - tx) + rgb[(y0 * layout.width + x1) * 3 + c] * tx;
+    const b = rgb[(y1 * layout.width + x0) * 3 + c] * (1 - tx) + rgb[(y1 * layout.width + x1) * 3 + c] * tx;
+    out[c] = a * (1 - ty) + b * ty;
+  }
+  return out;
+}
+
+/**
+ * Illuminance on a horizontal work plane at `height` metres, on a grid of
+ * `spacing` metres (cell centres) over the room.
+ *
+ * Method (docs/viewer.md): direct light exactly, E = Σ I(γ,C)·cosθ/d² from the
+ * same point sources the baker uses (src/reference, CIE 171:2006 §5.2);
+ * indirect light estimated by the floor's indirect illuminance at the same
+ * plan point (the up-facing plane sees the ceiling and the walls above it, the
+ * floor the same plus the wall band below the plane: nearly the same view of
+ * the bright surfaces, so the estimate errs low by the band's small share).
+ * Luminaires below the plane light it from underneath and are skipped by the
+ * cosine test, as they should be.
+ */
+export function workPlaneStats(scene: BakeScene, lit: LitMaps, height: number, spacing = 0.1): IlluminanceStats & { values: Float32Array; nx: number; nz: number } {
+  const { width, depth } = scene.room;
+  const names = new Map<Photometry, string>();
+  const photometries = new Map<string, Photometry>();
+  const lightingScene: LightingScene = {
+    version: 1,
+    room: scene.room,
+    luminaires: scene.luminaires.map((l) => {
+      let name = names.get(l.photometry);
+      if (!name) {
+        name = `p${names.size}`;
+        names.set(l.photometry, name);
+        photometries.set(name, l.photometry);
+      }
+      return { photometry: name, position: l.position, yaw: l.yaw, pitch: l.pitch, roll: l.roll, dimming: l.dimming ?? 1, color: l.color ?? [1, 1, 1] };
+    }),
+  };
+  const sources = referencePointSources(lightingScene, photometries);
+  const nx = Math.max(1, Math.round(width / spacing));
+  const nz = Math.max(1, Math.round(depth / spacing));
+  const values = new Float32Array(nx * nz);
+  const floor = lit.layouts.floor;
+  const direct = lit.maps.floor.direct;
+  const total = lit.maps.floor.total;
+  const up: Vec3 = [0, 1, 0];
+  const e: Rgb = [0, 0, 0];
+  for (let k = 0; k < nz; k++) {
+    for (let i = 0; i < nx; i++) {
+      const x = ((i + 0.5) / nx) * width;
+      const z = ((k + 0.5) / nz) * depth;
+      directIlluminanceAt(sources, [x, height, z], up, e);
+      const t = sampleMap(floor, total, x, z);
+      const d = sampleMap(floor, direct, x, z);
+      values[k * nx + i] = Y(e[0], e[1], e[2]) + Math.max(0, Y(t[0] - d[0], t[1] - d[1], t[2] - d[2]));
+    }
+  }
+  return { ...statsOf(values), values, nx, nz };
+}
