@@ -14,6 +14,8 @@ export const chromiumArgs = [
 
 export default defineConfig({
   testDir: 'e2e',
+  // Golden images live in the repo, one per test and size, independent of the OS suffix.
+  snapshotPathTemplate: '{testDir}/__screenshots__/{testFilePath}/{arg}{ext}',
   timeout: 120_000,
   expect: { timeout: 30_000 },
   fullyParallel: false,

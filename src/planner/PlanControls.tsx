@@ -26,6 +26,8 @@ export interface PlanControlsProps {
 /** Distance of on-plan controls from a rail's centre line, in screen pixels (constant while zooming). */
 const NEAR_PX = 34;
 const FAR_PX = 92;
+/** Rails shorter than this on screen get no length field at system level. */
+const MIN_RAIL_PX_FOR_FIELD = 96;
 
 export const DISTRIBUTION_LABELS: Record<Distribution, { short: string; long: string }> = {
   start: { short: '▮▮··', long: 'Start: packed from the rail start' },
@@ -113,7 +115,8 @@ function SystemLevelControls({ system, catalog, view, viewport, gate }: { system
         const mid = worldToScreen(view, { x: (r.start[0] + r.end[0]) / 2, z: (r.start[1] + r.end[1]) / 2 });
         const nn = upNormal(view, r.start, r.end);
         const pos = { sx: mid.sx + nn.nx * NEAR_PX, sy: mid.sy + nn.ny * NEAR_PX };
-        if (!visible(pos, viewport)) return null;
+        // A field longer than its rail on screen would cover its neighbours: zoom in to edit it.
+        if (!visible(pos, viewport) || r.length * view.scale < MIN_RAIL_PX_FOR_FIELD) return null;
         return (
           <Positioned key={r.railId} at={pos} className="length-field" testId={`length-${r.railId}`}>
             <CommitField

@@ -87,6 +87,13 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
   const clipId = useId();
   // Re-render when a photometric file arrives.
   useSyncExternalStore(footprints.subscribe, footprints.version);
+  // Every optic in use has its measured footprint (or failed to load): tests wait for this.
+  const footprintsReady = config.systems.every((s) =>
+    s.rails.every((r) => r.modules.every((m) => {
+      const p = modulePhotometryPath(m, catalog);
+      return p === null || footprints.get(p) !== undefined;
+    })),
+  );
   const { width, depth, height } = config.room;
   const step = gridStep(view.scale);
   const gridLines: { x1: number; z1: number; x2: number; z2: number; major: boolean }[] = [];
@@ -94,7 +101,7 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
   for (let i = 1; i * step < depth - 1e-9; i++) gridLines.push({ x1: 0, z1: i * step, x2: width, z2: i * step, major: Math.abs(i * step - Math.round(i * step)) < 1e-9 });
 
   return (
-    <svg className="plan-svg" role="img" aria-label={`Room plan, ${width} by ${depth} m, ${config.systems.length} lighting systems`} data-testid="plan-svg">
+    <svg className="plan-svg" role="img" aria-label={`Room plan, ${width} by ${depth} m, ${config.systems.length} lighting systems`} data-testid="plan-svg" data-footprints={footprintsReady ? 'ready' : 'loading'}>
       <defs>
         <clipPath id={clipId}>
           <rect x={0} y={0} width={width} height={depth} />

@@ -16,7 +16,8 @@ import { formatMoney } from './formatMoney';
 import { selectionPath } from './selection';
 import { usePlanGestures } from './usePlanGestures';
 import { usePlanView } from './usePlanView';
-import { type PlanPoint, type Viewport, fitRoom } from './viewTransform';
+import { type PlanPoint, type Viewport, fitRoom, worldToScreen } from './viewTransform';
+import { systemBounds } from '../model/geometry';
 import { BottomBar } from './BottomBar';
 import type { FootprintSource } from './footprintSource';
 import { requestFootprints } from './moduleFootprint';
@@ -130,7 +131,21 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, footprints }: P
     },
   });
 
-  const zoomButtons = (factor: number) => plan.zoomBy(factor, { sx: viewport.width / 2, sy: viewport.height / 2 });
+  // Buttons and keys zoom about the selected system when it is on screen (so zooming in on it
+  // reaches the module level without panning), else about the middle of the plan.
+  const selectedSystem = config.systems.find((s) => s.id === path.systemId);
+  const zoomButtons = useCallback(
+    (factor: number) => {
+      let anchor = { sx: viewport.width / 2, sy: viewport.height / 2 };
+      if (selectedSystem) {
+        const b = systemBounds(selectedSystem, catalog);
+        const c = worldToScreen(plan.targetRef.current, { x: (b.minX + b.maxX) / 2, z: (b.minZ + b.maxZ) / 2 });
+        if (c.sx >= 0 && c.sy >= 0 && c.sx <= viewport.width && c.sy <= viewport.height) anchor = c;
+      }
+      plan.zoomBy(factor, anchor);
+    },
+    [viewport, selectedSystem, catalog, plan],
+  );
   const level = detailLevel(plan.view.scale);
 
   usePlannerKeys({ store, ui, run, explain, zoom: zoomButtons, enabled: mode === '2d' });

@@ -14,8 +14,6 @@ export interface FootprintSource {
   subscribe(listener: () => void): () => void;
   /** Increases whenever a file finished (for useSyncExternalStore snapshots). */
   version(): number;
-  /** True when every requested file has finished (loaded or failed). */
-  settled(): boolean;
 }
 
 export function createFootprintSource(baseUrl: string, fetchFn: typeof fetch = (...a) => fetch(...a)): FootprintSource {
@@ -53,6 +51,5 @@ export function createFootprintSource(baseUrl: string, fetchFn: typeof fetch = (
       return () => listeners.delete(listener);
     },
     version: () => version,
-    settled: () => pending.size === 0,
   };
 }

@@ -73,9 +73,9 @@ export function usePlannerKeys({ store, ui, run, explain, zoom, enabled }: Plann
         e.preventDefault();
         if (!system) return explain('select a system first');
         const step = e.shiftKey ? KEY_MOVE_STEP / 10 : KEY_MOVE_STEP;
-        // Round to the centimetre so repeated steps do not accumulate float noise.
-        const x = Math.round((system.x + dir[0] * step) * 1000) / 1000;
-        const z = Math.round((system.z + dir[1] * step) * 1000) / 1000;
+        // Round to the millimetre so repeated steps do not accumulate float noise.
+        const x = dir[0] ? Math.round((system.x + dir[0] * step) * 1000) / 1000 : system.x;
+        const z = dir[1] ? Math.round((system.z + dir[1] * step) * 1000) / 1000 : system.z;
         run('moveSystem', { systemId: system.id, x, z });
       }
     };

@@ -63,11 +63,16 @@ export function pixelsToMetres(view: PlanView, pixels: number): number {
   return pixels / view.scale;
 }
 
+/** Free space around a fitted room: 6 % of the short side, 16–48 px (a phone keeps its plan large). */
+export function fitMargin(viewport: Viewport): number {
+  return Math.round(Math.min(48, Math.max(16, Math.min(viewport.width, viewport.height) * 0.06)));
+}
+
 /**
  * The view that shows the whole room (width × depth metres) centred in the viewport with
  * `marginPx` free on every side, so the walls and the controls drawn outside them stay visible.
  */
-export function fitRoom(room: { width: number; depth: number }, viewport: Viewport, marginPx = 48): PlanView {
+export function fitRoom(room: { width: number; depth: number }, viewport: Viewport, marginPx = fitMargin(viewport)): PlanView {
   const availW = Math.max(1, viewport.width - 2 * marginPx);
   const availH = Math.max(1, viewport.height - 2 * marginPx);
   const scale = clampScale(Math.min(availW / room.width, availH / room.depth));

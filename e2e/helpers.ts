@@ -1,0 +1,26 @@
+import { expect, type Page } from '@playwright/test';
+
+/** The running app's embedding API (window.luxbox), called in the page. */
+export async function sceneFile(page: Page): Promise<{ configuration: { room: { width: number; depth: number; height: number }; systems: { id: string; x: number; z: number; rotation: number; rails: { id: string; modules: { id: string; type: string; cct: number }[] }[] }[] } }> {
+  return JSON.parse(await page.evaluate(() => window.luxbox!.getConfig()));
+}
+
+export async function moduleCount(page: Page): Promise<number> {
+  const f = await sceneFile(page);
+  return f.configuration.systems.flatMap((s) => s.rails.flatMap((r) => r.modules)).length;
+}
+
+/** Waits until every module's measured footprint is drawn, so screenshots are stable. */
+export async function footprintsReady(page: Page): Promise<void> {
+  await expect(page.getByTestId('plan-svg')).toHaveAttribute('data-footprints', 'ready');
+}
+
+/** Clicks zoom-in until the plan shows the module level (at most 8 clicks). */
+export async function zoomToModuleLevel(page: Page): Promise<void> {
+  const plan = page.getByTestId('plan');
+  for (let i = 0; i < 8; i++) {
+    if ((await plan.getAttribute('data-level')) === 'module') return;
+    await page.getByTestId('zoom-in').click();
+  }
+  await expect(plan).toHaveAttribute('data-level', 'module');
+}

@@ -1,0 +1,143 @@
+import { expect, test } from '@playwright/test';
+import { footprintsReady, moduleCount, sceneFile, zoomToModuleLevel } from './helpers';
+
+// Springs are skipped under prefers-reduced-motion, so every zoom lands at once.
+test.use({ reducedMotion: 'reduce', viewport: { width: 1440, height: 900 } });
+
+const total = async (page: import('@playwright/test').Page) => (await page.getByTestId('header-total').textContent())?.trim();
+
+test('set up a room, place a preset, fill a rail, change a module, reload, undo', async ({ page }) => {
+  await page.goto('/');
+  await expect(page.getByRole('heading', { name: 'luxbox' })).toBeVisible();
+
+  // Room setup with validation.
+  const width = page.getByLabel('Width (m)');
+  await width.fill('45');
+  await expect(page.getByText('The width must be between 1 and 30 m.')).toBeVisible();
+  // Always valid: the form cannot be submitted with a bad dimension.
+  await expect(page.getByRole('button', { name: 'Start planning' })).toBeDisabled();
+  await width.fill('6');
+  await page.getByLabel('Depth (m)').fill('4,5');
+  await page.getByLabel('Height (m)').fill('3');
+  await page.getByRole('button', { name: 'Start planning' }).click();
+  await expect(page.getByTestId('plan')).toBeVisible();
+  expect((await sceneFile(page)).configuration.room).toMatchObject({ width: 6, depth: 4.5, height: 3 });
+
+  // Place a preset; the price appears.
+  await page.getByTestId('preset-single').click();
+  await expect(page.getByTestId('bom')).toContainText('LX-SPOT-N12');
+  expect(await moduleCount(page)).toBe(3);
+  const priceWithThree = await total(page);
+  await footprintsReady(page);
+
+  // Zoom in to the module level: plus buttons appear above the rail.
+  await zoomToModuleLevel(page);
+  const plus = page.locator('[data-testid^="plus-"] button');
+  await expect(plus).toHaveCount(1);
+
+  // Add modules until the plus button disables (1.5 m rail, 0.15 m spots: 10 fit).
+  for (let i = 0; i < 20 && (await plus.getAttribute('aria-disabled')) !== 'true'; i++) await plus.click();
+  await expect(plus).toHaveAttribute('aria-disabled', 'true');
+  expect(await moduleCount(page)).toBe(10);
+  await expect(plus).toHaveAttribute('title', /no room for another Spot/);
+  const priceFull = await total(page);
+  expect(priceFull).not.toBe(priceWithThree);
+
+  // A disabled control does nothing but say why.
+  await plus.click({ force: true });
+  await expect(page.getByRole('status')).toContainText('no room for another Spot');
+  expect(await moduleCount(page)).toBe(10);
+
+  // Open a module's settings: switching to the 0.6 m linear diffuser is disabled on a full rail.
+  const firstModule = (await sceneFile(page)).configuration.systems[0].rails[0].modules[0];
+  await page.getByTestId(`module-${firstModule.id}`).getByRole('button').click();
+  const options = page.getByTestId('options-panel');
+  await expect(options).toBeVisible();
+  const linear = options.getByTestId('type-linear');
+  await expect(linear).toHaveAttribute('aria-disabled', 'true');
+  await linear.click({ force: true });
+  await expect(page.getByRole('status')).toContainText('Linear diffuser');
+  expect((await sceneFile(page)).configuration.systems[0].rails[0].modules[0].type).toBe('spot');
+
+  // Change its colour temperature.
+  await options.getByTestId('cct-4000').click();
+  await expect(options.getByTestId('cct-4000')).toHaveAttribute('aria-pressed', 'true');
+  expect((await sceneFile(page)).configuration.systems[0].rails[0].modules[0].cct).toBe(4000);
+  await expect(page.getByTestId('bom')).toContainText('LX-SPOT-N12');
+
+  // Reload: the autosave restores the same configuration.
+  const before = await sceneFile(page);
+  await page.reload();
+  await expect(page.getByTestId('plan')).toBeVisible();
+  expect(await sceneFile(page)).toEqual(before);
+  expect(await total(page)).toBe(priceFull);
+
+  // Undo: a change after the reload is undone by the button, and redo brings it back.
+  await page.getByTestId('preset-corner-l').click();
+  expect((await sceneFile(page)).configuration.systems).toHaveLength(2);
+  await page.getByTestId('tool-undo').click();
+  expect(await sceneFile(page)).toEqual(before);
+  await page.getByTestId('tool-redo').click();
+  expect((await sceneFile(page)).configuration.systems).toHaveLength(2);
+});
+
+test('keyboard: arrows move, R rotates, Delete removes, Ctrl+Z / Ctrl+Shift+Z', async ({ page }) => {
+  await page.goto('/');
+  await page.getByRole('button', { name: 'Try the demo' }).click();
+  await expect(page.getByTestId('plan')).toBeVisible();
+  const s0 = (await sceneFile(page)).configuration.systems[0];
+
+  await page.keyboard.press('ArrowLeft');
+  const s1 = (await sceneFile(page)).configuration.systems[0];
+  // Moves are rounded to the millimetre.
+  expect(Math.abs(s1.x - (s0.x - 0.1))).toBeLessThanOrEqual(0.0005 + 1e-12);
+  expect(s1.z).toBeCloseTo(s0.z, 9);
+
+  await page.keyboard.press('r');
+  expect((await sceneFile(page)).configuration.systems[0].rotation).toBe((s0.rotation + 90) % 360);
+
+  await page.keyboard.press('Delete');
+  expect((await sceneFile(page)).configuration.systems).toHaveLength(0);
+  await page.keyboard.press('Control+z');
+  expect((await sceneFile(page)).configuration.systems).toHaveLength(1);
+  await page.keyboard.press('Control+Shift+z');
+  expect((await sceneFile(page)).configuration.systems).toHaveLength(0);
+});
+
+test('the 2D/3D toggle opens a view that says the 3D view is coming, and back', async ({ page }) => {
+  await page.goto('/');
+  await page.getByRole('button', { name: 'Try the demo' }).click();
+  await page.getByTestId('tool-3d').click();
+  await expect(page.getByTestId('view3d-placeholder')).toContainText('3D view coming soon');
+  await expect(page.locator('canvas')).toHaveCount(0);
+  await page.getByRole('button', { name: 'Back to 2D plan' }).click();
+  await expect(page.getByTestId('plan')).toBeVisible();
+});
+
+test('dragging a system moves it; dragging the background pans; the wheel zooms', async ({ page }) => {
+  await page.goto('/');
+  await page.getByRole('button', { name: 'Try the demo' }).click();
+  await footprintsReady(page);
+  const before = (await sceneFile(page)).configuration.systems[0];
+  const railId = before.rails[0].id;
+  const rail = page.locator(`polygon[data-rail-id="${railId}"]`).last();
+  const box = (await rail.boundingBox())!;
+  const scale = Number(await page.getByTestId('plan').getAttribute('data-scale'));
+  const start = { x: box.x + box.width / 2, y: box.y + box.height / 2 };
+  await page.mouse.move(start.x, start.y);
+  await page.mouse.down();
+  await page.mouse.move(start.x - 20, start.y - 10, { steps: 5 });
+  await page.mouse.move(start.x - scale * 0.5, start.y - scale * 0.25, { steps: 5 });
+  await page.mouse.up();
+  const after = (await sceneFile(page)).configuration.systems[0];
+  // Moved by (−0.5, −0.25) m, snapped to centimetres.
+  expect(after.x).toBeCloseTo(before.x - 0.5, 1);
+  expect(after.z).toBeCloseTo(before.z - 0.25, 1);
+
+  // Wheel zoom about the pointer keeps the point under it fixed.
+  const plan = page.getByTestId('plan');
+  const pb = (await plan.boundingBox())!;
+  await page.mouse.move(pb.x + 200, pb.y + 150);
+  await page.mouse.wheel(0, -240);
+  await expect.poll(async () => Number(await plan.getAttribute('data-scale'))).toBeGreaterThan(scale * 1.5);
+});
