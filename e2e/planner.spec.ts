@@ -104,13 +104,13 @@ test('keyboard: arrows move, R rotates, Delete removes, Ctrl+Z / Ctrl+Shift+Z', 
   expect((await sceneFile(page)).configuration.systems).toHaveLength(0);
 });
 
-test('the 2D/3D toggle opens a view that says the 3D view is coming, and back', async ({ page }) => {
+test('the 2D/3D toggle leaves the plan for the 3D view and comes back', async ({ page }) => {
   await page.goto('/');
   await page.getByRole('button', { name: 'Try the demo' }).click();
   await page.getByTestId('tool-3d').click();
-  await expect(page.getByTestId('view3d-placeholder')).toContainText('3D view coming soon');
-  await expect(page.locator('canvas')).toHaveCount(0);
-  await page.getByRole('button', { name: 'Back to 2D plan' }).click();
+  await expect(page.getByTestId('plan')).toHaveCount(0);
+  await expect(page.getByRole('region', { name: /3D/ })).toBeVisible();
+  await page.getByTestId('tool-3d').click();
   await expect(page.getByTestId('plan')).toBeVisible();
 });
 

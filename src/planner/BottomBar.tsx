@@ -43,7 +43,7 @@ export function BottomBar({ store, ui, config, path, gate, canUndo, canRedo, mod
   return (
     <nav className="bottom-bar" aria-label="Tools">
       <ActionButton label="Delete" disabledReason={delReason} onPress={() => !('reason' in del) && gate.run(del.name, del.params as never)} onDisabledPress={gate.explain} testId="tool-delete">
-        <span className="icon" aria-hidden>🗑</span>
+        <span className="icon" aria-hidden>✕</span>
         Delete
       </ActionButton>
       <ActionButton label="Select next system" disabledReason={systems.length === 0 ? 'place a preset first' : null} onPress={selectNext} onDisabledPress={gate.explain} testId="tool-select">

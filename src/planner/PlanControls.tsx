@@ -27,7 +27,13 @@ export interface PlanControlsProps {
 const NEAR_PX = 34;
 const FAR_PX = 92;
 /** Rails shorter than this on screen get no length field at system level. */
-const MIN_RAIL_PX_FOR_FIELD = 96;
+const MIN_RAIL_PX_FOR_FIELD = 110;
+/** Approximate on-screen sizes of the fields, for keeping them from covering each other. */
+const MOVE_FIELD_BOX = { w: 170, h: 50 };
+const LENGTH_FIELD_BOX = { w: 104, h: 50 };
+
+type Box = { sx: number; sy: number; w: number; h: number };
+const overlaps = (a: Box, b: Box) => Math.abs(a.sx - b.sx) * 2 < a.w + b.w && Math.abs(a.sy - b.sy) * 2 < a.h + b.h;
 
 export const DISTRIBUTION_LABELS: Record<Distribution, { short: string; long: string }> = {
   start: { short: '▮▮··', long: 'Start: packed from the rail start' },
@@ -83,6 +89,7 @@ function SystemLevelControls({ system, catalog, view, viewport, gate }: { system
   const n = first ? upNormal(view, first.start, first.end) : { nx: 0, ny: -1 };
   // Put the move fields on the side opposite the length fields, just off the system's start.
   const movePos = { sx: anchor.sx - n.nx * 44, sy: anchor.sy - n.ny * 44 };
+  const placed: Box[] = [{ ...movePos, ...MOVE_FIELD_BOX }];
   return (
     <>
       {visible(movePos, viewport) && (
@@ -115,8 +122,12 @@ function SystemLevelControls({ system, catalog, view, viewport, gate }: { system
         const mid = worldToScreen(view, { x: (r.start[0] + r.end[0]) / 2, z: (r.start[1] + r.end[1]) / 2 });
         const nn = upNormal(view, r.start, r.end);
         const pos = { sx: mid.sx + nn.nx * NEAR_PX, sy: mid.sy + nn.ny * NEAR_PX };
-        // A field longer than its rail on screen would cover its neighbours: zoom in to edit it.
+        // A field longer than its rail on screen, or one that would cover another field, is left
+        // out until the user zooms in far enough for it to have room.
         if (!visible(pos, viewport) || r.length * view.scale < MIN_RAIL_PX_FOR_FIELD) return null;
+        const box = { ...pos, ...LENGTH_FIELD_BOX };
+        if (placed.some((b) => overlaps(b, box))) return null;
+        placed.push(box);
         return (
           <Positioned key={r.railId} at={pos} className="length-field" testId={`length-${r.railId}`}>
             <CommitField

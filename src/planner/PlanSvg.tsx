@@ -126,7 +126,7 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
                   if (!f) return null;
                   const paint = {
                     fill: cctTint(module.cct),
-                    fillOpacity: 0.3,
+                    fillOpacity: 0.2,
                     stroke: '#c98a1c',
                     strokeOpacity: 0.7,
                     strokeWidth: 1,
