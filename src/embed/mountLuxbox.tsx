@@ -15,6 +15,7 @@ import { SHARE_HASH_PREFIX, resolveStartup } from '../app/startup';
 import { createUiStore } from '../app/uiStore';
 import { createFootprintSource } from '../planner/footprintSource';
 import type { LuxboxInstance, LuxboxOptions } from './types';
+import { getViewerStatus } from '../viewer/viewerStatus';
 
 /** Bad mount options (catalog, room, currency): the message names the option. */
 export class EmbedOptionsError extends InputError {
@@ -153,6 +154,10 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
     getLightingScene() {
       alive();
       return toLightingScene(store.getState().config, catalog);
+    },
+    view3d() {
+      alive();
+      return getViewerStatus(store);
     },
     destroy() {
       if (destroyed) return;

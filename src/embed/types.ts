@@ -1,5 +1,6 @@
 import type { ActionName } from '../model/actionDefinitions';
 import type { BillOfMaterials } from '../model/billOfMaterials';
+import type { ViewerStatus } from '../viewer/viewerStatus';
 
 /** Options of mountLuxbox (docs/embedding.md). */
 export interface LuxboxOptions {
@@ -50,6 +51,8 @@ export interface LuxboxInstance {
   getShareLink(): string;
   /** The lighting scene (version 1) the baker takes, for the current configuration. */
   getLightingScene(): unknown;
+  /** State of the 3D view (docs/viewer.md): bake progress, counters (group bakes vs relights), floor lux; `open: false` in 2D. */
+  view3d(): ViewerStatus;
   /** Unmounts and releases everything; the instance must not be used afterwards. */
   destroy(): void;
 }

@@ -9,7 +9,7 @@ import { OptionsPanel } from './OptionsPanel';
 import { PlanControls } from './PlanControls';
 import { PlanSvg } from './PlanSvg';
 import { PresetPanel } from './PresetPanel';
-import { View3DPlaceholder } from './View3DPlaceholder';
+import { LazyView3D } from '../viewer/LazyView3D';
 import { createActionGate } from './actionGate';
 import { detailLevel } from './detailLevel';
 import { formatMoney } from './formatMoney';
@@ -206,7 +206,7 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, footprints }: P
               )}
             </div>
           ) : (
-            <View3DPlaceholder luminaireCount={bom.lines.filter((l) => l.kind === 'module').reduce((a, l) => a + l.count, 0)} onBack={() => ui.setState({ mode: '2d' })} />
+            <LazyView3D store={store} onBack={() => ui.setState({ mode: '2d' })} />
           )}
           <BottomBar store={store} ui={ui} config={config} path={path} gate={gate} canUndo={canUndo} canRedo={canRedo} mode={mode} />
         </div>

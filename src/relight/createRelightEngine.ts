@@ -18,10 +18,12 @@ export interface EngineProgress {
   fraction: number;
   /** Every group's basis is final. */
   done: boolean;
+  /** Every group has at least its direct-only basis: the image shows all the light. */
+  lit: boolean;
 }
 
 export interface EngineCounters {
-  /** Group bakes started (direct passes run), since the engine was made. */
+  /** Groups baked (a new or moved group counts once), since the engine was made. */
   groupBakes: number;
   /** Scene updates that needed no bake at all (dimming, colour, on/off only). */
   relightsOnly: number;
@@ -85,30 +87,34 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
     return Object.fromEntries(SURFACE_NAMES.map((n) => [n, { direct: m[n].direct, total: m[n].total }])) as BasisMaps;
   };
 
-  // Direct-only bases for every new group first: light shows up before any indirect work.
-  const bakeDirectOnly = () => {
-    for (const st of order) {
-      if (st.basis) continue;
-      const j = baker.start({ room: scene!.room, luminaires: st.group.basis }, settings);
-      try {
-        j.finalize();
-        st.basis = readBasis(j);
-      } finally {
-        j.dispose();
-      }
-      version++;
+  // Direct-only bases for every new group first (one group per call, so a caller slicing the
+  // work over frames stays responsive): light shows up before any indirect work.
+  const bakeDirectOnly = (): boolean => {
+    const st = order.find((s) => !s.basis);
+    if (!st) return false;
+    counters.groupBakes++;
+    const j = baker.start({ room: scene!.room, luminaires: st.group.basis }, settings);
+    try {
+      j.finalize();
+      st.basis = readBasis(j);
+    } finally {
+      j.dispose();
     }
+    version++;
+    return true;
   };
 
   const progress = (): EngineProgress => {
     const done = order.filter((s) => s.final).length;
-    let fraction = order.length === 0 ? 1 : done / order.length;
+    // Direct-only previews count as a small first share of each group's work.
+    const previews = order.filter((s) => s.basis && !s.final).length;
+    let fraction = order.length === 0 ? 1 : (done + 0.05 * previews) / order.length;
     if (job && order.length > 0) {
       const p = job.job.progress;
       const within = p.done ? 1 : (p.bounce * settings.samples + p.samplesDone) / totalWork();
-      fraction += within / order.length;
+      fraction += (0.95 * within) / order.length;
     }
-    return { groupsDone: done, groups: order.length, fraction: Math.min(1, fraction), done: done === order.length };
+    return { groupsDone: done, groups: order.length, fraction: Math.min(1, fraction), done: done === order.length, lit: order.every((s) => s.basis) };
   };
 
   const finishJob = () => {
@@ -121,12 +127,10 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
   };
 
   const step = (samples = settings.samplesPerDraw): EngineProgress => {
-    if (!scene) return progress();
-    bakeDirectOnly();
+    if (!scene || bakeDirectOnly()) return progress();
     if (!job) {
       const next = order.find((s) => !s.final);
       if (!next) return progress();
-      counters.groupBakes++;
       job = { state: next, job: baker.start({ room: scene.room, luminaires: next.group.basis }, settings), steps: 0 };
     }
     const p = job.job.step(samples);

@@ -31,8 +31,9 @@ export function cameraPreset(name: CameraPresetName, room: { width: number; heig
     case 'eye':
       return { position: [W / 2, Math.min(EYE_HEIGHT, H * 0.8), D - Math.min(0.25, D * 0.1)], target: [W / 2, Math.min(EYE_HEIGHT, H * 0.8) * 0.6, D * 0.3], fov: 75 };
     case 'top': {
-      const fov = 50;
-      const extent = Math.max(W, D) * 0.62;
+      // Narrow field: little parallax between the hardware and the floor, close to a plan.
+      const fov = 30;
+      const extent = Math.max(W, D) * 0.6;
       const distance = extent / Math.tan(((fov / 2) * Math.PI) / 180);
       // A hair off the vertical so the view's "up" (−z, north) is well defined.
       return { position: [W / 2, H + distance, D / 2 + 1e-3], target: [W / 2, 0, D / 2], fov };

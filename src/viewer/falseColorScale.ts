@@ -5,16 +5,16 @@ export const MAX_LEVELS = 10;
 
 /**
  * Legend levels for a false-colour lux view: a 1–2–5 series per decade (the
- * steps lighting plans use, e.g. 100, 200, 500 lx) from about 1/50 of the top
+ * steps lighting plans use, e.g. 100, 200, 500 lx) from about 1/100 of the top
  * value up to the first step at or above it, thinned to at most MAX_LEVELS.
  */
 export function luxLevels(maxLux: number): number[] {
   const top = Number.isFinite(maxLux) && maxLux > 0 ? maxLux : 1;
   const series: number[] = [];
-  for (let e = Math.floor(Math.log10(top / 50)) - 1; series.length === 0 || series[series.length - 1] < top; e++) {
+  for (let e = Math.floor(Math.log10(top / 100)) - 1; series.length === 0 || series[series.length - 1] < top; e++) {
     for (const m of [1, 2, 5]) series.push(m * 10 ** e);
   }
-  let levels = series.filter((v) => v >= top / 60);
+  let levels = series.filter((v) => v >= top / 120);
   const last = levels.findIndex((v) => v >= top);
   levels = levels.slice(0, last + 1);
   while (levels.length > MAX_LEVELS) levels = levels.filter((_, i) => i % 2 === (levels.length - 1) % 2);

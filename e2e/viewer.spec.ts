@@ -1,0 +1,104 @@
+import { expect, test, type Page } from '@playwright/test';
+import { PNG } from 'pngjs';
+
+test.use({ reducedMotion: 'reduce', viewport: { width: 1280, height: 800 } });
+
+interface Status {
+  open: boolean;
+  lit: boolean;
+  done: boolean;
+  groupBakes: number;
+  relightsOnly: number;
+  frames: number;
+  firstLitMs: number | null;
+  lastRelightMs: number | null;
+  contextLosses: number;
+  floor: { avg: number; min: number; max: number; u0: number } | null;
+}
+
+const status = (page: Page): Promise<Status> => page.evaluate(() => window.luxbox!.view3d() as Status);
+
+/** Mean sRGB value (0..255) of a PNG screenshot. */
+function meanLevel(png: Buffer): number {
+  const img = PNG.sync.read(png);
+  let sum = 0;
+  for (let i = 0; i < img.data.length; i += 4) sum += (img.data[i] + img.data[i + 1] + img.data[i + 2]) / 3;
+  return sum / (img.width * img.height);
+}
+
+async function openCornerL(page: Page): Promise<void> {
+  await page.goto('/');
+  const placed = await page.evaluate(() => window.luxbox!.runAction('placePreset', { presetId: 'corner-l' }));
+  expect(placed).toEqual({ ok: true });
+  await page.getByTestId('tool-3d').click();
+  await expect(page.getByTestId('view3d-canvas')).toBeVisible();
+  await expect.poll(async () => (await status(page)).done, { timeout: 90_000, intervals: [250] }).toBe(true);
+}
+
+test('2D preset → 3D bake → golden; dim relights without a rebake; back to 2D unchanged', async ({ page }) => {
+  await openCornerL(page);
+  const canvas = page.getByTestId('view3d-canvas');
+  const baked = await status(page);
+  expect(baked.lit).toBe(true);
+  expect(baked.groupBakes).toBe(6); // one basis per module of the corner-l preset
+  expect(baked.floor!.avg).toBeGreaterThan(50);
+
+  const first = await canvas.screenshot();
+  expect(meanLevel(first)).toBeGreaterThan(25); // not black
+  // Golden: SwiftShader is deterministic; 1 % of pixels may differ by more than the per-pixel threshold.
+  await expect(canvas).toHaveScreenshot('viewer-corner-l.png', { maxDiffPixelRatio: 0.01, threshold: 0.15 });
+
+  // Render on demand: nothing is drawn while idle.
+  const framesIdle = (await status(page)).frames;
+  await page.waitForTimeout(600);
+  expect((await status(page)).frames).toBe(framesIdle);
+
+  // Dim the first module through the 3D view's dimmer: a relight, no bake.
+  const before = JSON.parse(await page.evaluate(() => window.luxbox!.getConfig()));
+  const moduleId: string = before.configuration.systems[0].rails[0].modules[0].id;
+  await page.getByText(/Dimming \(6 modules\)/).click();
+  const dimmer = page.getByTestId(`dim-${moduleId}`);
+  await dimmer.focus();
+  for (let i = 0; i < 20; i++) await page.keyboard.press('ArrowLeft'); // to 0 % in 5 % steps, committed on key up
+  await expect.poll(async () => JSON.parse(await page.evaluate(() => window.luxbox!.getConfig())).configuration.systems[0].rails[0].modules[0].dimming).toBe(0);
+  // Switching one of six modules off lowers the floor's average; the relit maps arrive without any new group bake.
+  await expect.poll(async () => (await status(page)).floor!.avg, { timeout: 10_000 }).toBeLessThan(baked.floor!.avg * 0.97);
+  const dimmed = await status(page);
+  expect(dimmed.relightsOnly).toBeGreaterThan(baked.relightsOnly);
+  expect(dimmed.groupBakes).toBe(baked.groupBakes);
+  await expect.poll(async () => (await status(page)).frames).toBeGreaterThan(framesIdle);
+  const second = await canvas.screenshot();
+  expect(second.equals(first)).toBe(false);
+
+  const afterDim = await page.evaluate(() => window.luxbox!.getConfig());
+  expect(JSON.parse(afterDim).configuration.systems[0].rails[0].modules[0].dimming).toBe(0);
+
+  // Back to 2D: the configuration is exactly what it was in 3D.
+  await page.getByTestId('tool-3d').click();
+  await expect(page.getByTestId('plan')).toBeVisible();
+  expect(await page.evaluate(() => window.luxbox!.getConfig())).toBe(afterDim);
+  expect((await status(page)).open).toBe(false);
+});
+
+test('lux mode shows a legend and floor statistics; context loss recovers without touching the configuration', async ({ page }) => {
+  await openCornerL(page);
+  await page.getByTestId('mode-lux').click();
+  await expect(page.getByTestId('view3d-legend')).toBeVisible();
+  await expect(page.getByTestId('stats-floor')).toContainText(/\d/);
+  await page.getByTestId('camera-top').click();
+  await expect(page.getByTestId('view3d-canvas')).toHaveScreenshot('viewer-corner-l-lux-top.png', { maxDiffPixelRatio: 0.01, threshold: 0.15 });
+
+  const config = await page.evaluate(() => window.luxbox!.getConfig());
+  const frames = (await status(page)).frames;
+  await page.evaluate(() => {
+    const c = document.querySelector('[data-testid="view3d-canvas"]') as HTMLCanvasElement;
+    const ext = c.getContext('webgl2')!.getExtension('WEBGL_lose_context')!;
+    ext.loseContext();
+    setTimeout(() => ext.restoreContext(), 200);
+  });
+  await expect.poll(async () => (await status(page)).contextLosses).toBe(1);
+  await expect.poll(async () => (await status(page)).frames, { timeout: 20_000 }).toBeGreaterThan(frames);
+  const shot = await page.getByTestId('view3d-canvas').screenshot();
+  expect(meanLevel(shot)).toBeGreaterThan(25);
+  expect(await page.evaluate(() => window.luxbox!.getConfig())).toBe(config);
+});

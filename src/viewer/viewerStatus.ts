@@ -1,0 +1,46 @@
+/**
+ * What the 3D view reports about itself, readable without loading three.js
+ * (window.luxbox.view3d() in the app; the e2e tests wait on it). Keyed by the
+ * configurator store, so several embedded configurators keep separate status.
+ */
+export interface ViewerStatus {
+  /** The 3D view is mounted. */
+  open: boolean;
+  /** A first lit frame has been drawn for the current scene. */
+  lit: boolean;
+  /** Every group's basis is final (progressive refinement finished). */
+  done: boolean;
+  /** 0..1 of the bake work for the current scene. */
+  progress: number;
+  /** Group bakes started since the view opened (a relight-only change leaves it unchanged). */
+  groupBakes: number;
+  /** Scene changes served by a relight alone. */
+  relightsOnly: number;
+  /** Frames drawn (render on demand: stays still while idle). */
+  frames: number;
+  /** Milliseconds from mounting the view to the first lit frame (null until then). */
+  firstLitMs: number | null;
+  /** Milliseconds of the last relight (weighted sum + texture upload). */
+  lastRelightMs: number | null;
+  /** WebGL contexts lost and recovered. */
+  contextLosses: number;
+  /** Why 3D is unavailable, or null. */
+  error: string | null;
+  /** Floor statistics in lux (null until lit). */
+  floor: { avg: number; min: number; max: number; u0: number } | null;
+}
+
+const statuses = new WeakMap<object, ViewerStatus>();
+
+export const CLOSED_STATUS: ViewerStatus = {
+  open: false, lit: false, done: false, progress: 0, groupBakes: 0, relightsOnly: 0, frames: 0,
+  firstLitMs: null, lastRelightMs: null, contextLosses: 0, error: null, floor: null,
+};
+
+export function setViewerStatus(owner: object, status: ViewerStatus): void {
+  statuses.set(owner, status);
+}
+
+export function getViewerStatus(owner: object): ViewerStatus {
+  return { ...(statuses.get(owner) ?? CLOSED_STATUS) };
+}
