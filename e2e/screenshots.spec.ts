@@ -54,15 +54,13 @@ test('module level with options open at desktop size', async ({ page }) => {
 test('module level at phone size with the presets panel open', async ({ page }) => {
   await page.setViewportSize(SIZES.phone);
   await openDemo(page);
-  await zoomToModuleLevel(page);
-  // Drag the plan up so the rails near the bottom of the room come into view (two-finger or
-  // mouse pan; the drag starts on empty floor).
-  const plan = (await page.getByTestId('plan').boundingBox())!;
-  await page.mouse.move(plan.x + 40, plan.y + 200);
-  await page.mouse.down();
-  await page.mouse.move(plan.x + 40, plan.y + 100, { steps: 4 });
-  await page.mouse.move(plan.x + 40, plan.y + 20, { steps: 4 });
-  await page.mouse.up();
+  // Zoom with the wheel about the middle of the first rail, which stays under the pointer.
+  const config = JSON.parse(await page.evaluate(() => window.luxbox!.getConfig()));
+  const rail = (await page.locator(`polygon[data-rail-id="${config.configuration.systems[0].rails[0].id}"]`).last().boundingBox())!;
+  await page.mouse.move(rail.x + rail.width / 2, rail.y + rail.height / 2);
+  await page.mouse.wheel(0, -300);
+  await page.mouse.wheel(0, -300);
+  await expect(page.getByTestId('plan')).toHaveAttribute('data-level', 'module');
   await expect(page).toHaveScreenshot('module-level-phone.png', shot);
   await page.getByRole('button', { name: 'Presets' }).click();
   await expect(page.getByRole('complementary', { name: 'Presets and price' })).toBeVisible();
