@@ -8,6 +8,7 @@ import { createRelightEngine, VIEWER_BAKE_SETTINGS } from '../relight/createReli
 import { autoExposure } from '../viewer/autoExposure';
 import type { CameraPose } from '../viewer/cameraPresets';
 import { luxLevels } from '../viewer/falseColorScale';
+import { luxScaleTop } from '../viewer/luxScaleTop';
 import { floorStats, type IlluminanceStats } from '../viewer/lightStats';
 import { createRoomView, type ViewMode } from '../viewer/roomView';
 import { NoWebGLError } from './createHeadlessGL';
@@ -64,12 +65,7 @@ export function renderImage(input: RenderInput, options: RenderOptions): RenderR
     const exposure = autoExposure(lit, reflectance) * 2 ** options.exposureEv;
     view.setExposure(exposure);
     const floor = floorStats(lit);
-    let maxLux = 0;
-    for (const n of SURFACE_NAMES) {
-      const m = lit.maps[n].total;
-      for (let i = 0; i < m.length; i += 3) maxLux = Math.max(maxLux, 0.2126 * m[i] + 0.7152 * m[i + 1] + 0.0722 * m[i + 2]);
-    }
-    view.setMode(options.mode, luxLevels(maxLux));
+    view.setMode(options.mode, luxLevels(luxScaleTop(lit)));
     view.setFixtures(input.fixtures);
     view.setCamera(options.camera, width / height);
     view.render(renderer);

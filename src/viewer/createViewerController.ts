@@ -7,6 +7,7 @@ import type { LitMaps } from '../relight/relightMaps';
 import { autoExposure } from './autoExposure';
 import { cameraPreset, type CameraPresetName } from './cameraPresets';
 import { luxLevels } from './falseColorScale';
+import { luxScaleTop } from './luxScaleTop';
 import type { Fixtures } from './fixtures';
 import { createRoomView, type RoomView, type ViewMode } from './roomView';
 
@@ -113,14 +114,7 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
   };
   controls.addEventListener('change', requestRender);
 
-  const levelsFor = (lit: LitMaps) => {
-    let max = 0;
-    for (const n of SURFACE_NAMES) {
-      const m = lit.maps[n].total;
-      for (let i = 0; i < m.length; i += 3) max = Math.max(max, 0.2126 * m[i] + 0.7152 * m[i + 1] + 0.0722 * m[i + 2]);
-    }
-    return luxLevels(max);
-  };
+  const levelsFor = (lit: LitMaps) => luxLevels(luxScaleTop(lit));
 
   const showMaps = () => {
     if (!engine || !reflectance) return;

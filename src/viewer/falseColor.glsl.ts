@@ -39,6 +39,8 @@ vec3 luxFalseColor(float lux) {
     if (i >= uLevelCount) break;
     line = max(line, 1.0 - smoothstep(0.5, 1.5, abs(l - log(uLevels[i])) / w));
   }
+  // Where lux changes by a large factor per pixel (grazing views of a wall), lines would merge into smears: fade them.
+  line *= 1.0 - smoothstep(0.15, 0.4, w);
   return mix(color, vec3(0.05), line * 0.85);
 }
 `;

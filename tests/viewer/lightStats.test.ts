@@ -5,6 +5,7 @@ import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../src/model/light
 import { emptyLitMaps } from '../../src/relight/relightMaps';
 import { AUTO_EXPOSURE_KEY, autoExposure } from '../../src/viewer/autoExposure';
 import { floorStats, statsOf, workPlaneStats } from '../../src/viewer/lightStats';
+import { luxScaleTop } from '../../src/viewer/luxScaleTop';
 import { isotropic, uniformRoom } from '../bake/bakeTestKit';
 
 describe('illuminance statistics', () => {
@@ -80,5 +81,20 @@ describe('automatic exposure', () => {
     const lit = emptyLitMaps(surfaceLayouts({ width: 2, height: 2, depth: 2 }, 0.5, 64));
     const rho = Object.fromEntries(SURFACE_NAMES.map((n) => [n, [0.5, 0.5, 0.5]])) as Record<SurfaceName, Rgb>;
     expect(autoExposure(lit, rho)).toBe(1);
+  });
+});
+
+describe('false-colour scale top', () => {
+  it('is the 99th percentile (one 1/16-decade bin above it), not a tiny hot spot', () => {
+    const lit = emptyLitMaps(surfaceLayouts({ width: 2, height: 2, depth: 2 }, 0.1, 64));
+    let n = 0;
+    for (const name of SURFACE_NAMES) {
+      const m = lit.maps[name].total;
+      for (let i = 0; i < m.length; i += 3) m.fill(n++ % 200 === 0 ? 1e5 : 300, i, i + 3); // 0.5 % hot texels
+    }
+    const top = luxScaleTop(lit);
+    expect(top).toBeGreaterThanOrEqual(300);
+    expect(top).toBeLessThan(300 * 10 ** (1 / 16) * 1.0001);
+    expect(luxScaleTop(emptyLitMaps(surfaceLayouts({ width: 1, height: 1, depth: 1 }, 0.5, 8)))).toBeLessThan(0.01);
   });
 });
