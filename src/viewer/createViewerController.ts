@@ -180,6 +180,12 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
     if (!scene) return;
     if (fromPreset) {
       const p = cameraPreset(preset, scene.room);
+      const aspect = size.width / size.height;
+      if (preset !== 'eye' && aspect < 1) {
+        // Presets frame the room for a landscape view; on a portrait screen step back so its width still fits.
+        const k = 1 / aspect;
+        p.position = p.position.map((v, i) => p.target[i] + (v - p.target[i]) * k) as typeof p.position;
+      }
       pose = { position: new THREE.Vector3(...p.position), target: new THREE.Vector3(...p.target) };
       view.setCamera(p, size.width / size.height);
     } else {
