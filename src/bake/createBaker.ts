@@ -287,11 +287,11 @@ function startJob(
         bindTexture(gl, prog, `uSource${s}`, s, tex.texture);
       });
       bindTexture(gl, prog, 'uAccumulated', 6, st.acc[st.read].texture);
-      gl.uniform1ui(gl.getUniformLocation(prog, 'uFirstSample'), first);
+      gl.uniform1i(gl.getUniformLocation(prog, 'uFirstSample'), first);
       gl.uniform1i(gl.getUniformLocation(prog, 'uSampleCount'), count);
       // The previous bounce is stored as the sum of its S samples: read it as lux.
       gl.uniform1f(gl.getUniformLocation(prog, 'uInputScale'), st.input < 0 ? 1 : 1 / settings.samples);
-      gl.uniform1ui(gl.getUniformLocation(prog, 'uSeed'), mixSeed(settings.seed, st.layout.index, bounce));
+      gl.uniform1i(gl.getUniformLocation(prog, 'uSeed'), mixSeed(settings.seed, st.layout.index, bounce) | 0);
     });
     [st.read, st.write] = [st.write, st.read];
   };

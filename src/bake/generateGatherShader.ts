@@ -61,10 +61,12 @@ const vec3 BITANGENT = ${glslVec3(bitangent)};
 const vec2 RESOLUTION = vec2(${glslFloat(surface.width)}, ${glslFloat(surface.height)});
 ${samplers}
 uniform sampler2D uAccumulated;
-uniform uint uFirstSample;
+// Integers passed as int: headless-gl 9 silently ignores uniform1ui (measured), and
+// uint(int) keeps the bit pattern, so seeds above 2^31 survive.
+uniform int uFirstSample;
 uniform int uSampleCount;
 uniform float uInputScale;
-uniform uint uSeed;
+uniform int uSeed;
 ${sampling}
 ${rayBox}
 vec3 exitance(vec3 origin, vec3 dir) {
@@ -79,11 +81,11 @@ void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy);
   vec2 uv = gl_FragCoord.xy / RESOLUTION;
   vec3 p = ORIGIN + U_AXIS * uv.x + V_AXIS * uv.y;
-  uint h = hash32(uint(texel.x) ^ hash32(uint(texel.y) ^ hash32(uSeed)));
+  uint h = hash32(uint(texel.x) ^ hash32(uint(texel.y) ^ hash32(uint(uSeed))));
   uvec2 rotation = uvec2(h, hash32(h + 0x9e3779b9u));
   vec3 sum = vec3(0.0);
   for (int k = 0; k < uSampleCount; k++) {
-    vec3 dir = cosineDirection(r2Sample(uFirstSample + uint(k), rotation), NORMAL, TANGENT, BITANGENT);
+    vec3 dir = cosineDirection(r2Sample(uint(uFirstSample + k), rotation), NORMAL, TANGENT, BITANGENT);
     sum += exitance(p, dir);
   }
   outColor = vec4(texelFetch(uAccumulated, texel, 0).rgb + sum * uInputScale, 1.0);
