@@ -14,8 +14,8 @@ export interface PlanSvgProps {
   catalog: Catalog;
   view: PlanView;
   selection: SelectionPath;
-  /** A system being dragged is drawn offset by this much (metres) until it is dropped. */
-  drag: { systemId: string; delta: PlanPoint } | null;
+  /** A system being dragged is drawn offset by this much (metres) until it is dropped; faded where it may not be dropped. */
+  drag: { systemId: string; delta: PlanPoint; invalid: boolean } | null;
   /** Measured floor footprints per photometric file. */
   footprints: FootprintSource;
 }
@@ -154,8 +154,9 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
         <rect x={0} y={0} width={width} height={depth} fill="none" stroke="#1d2330" strokeWidth={3} vectorEffect="non-scaling-stroke" />
         {config.systems.map((s) => {
           const d = drag?.systemId === s.id ? drag.delta : { x: 0, z: 0 };
+          const refused = drag?.systemId === s.id && drag.invalid;
           return (
-            <g key={s.id} transform={`translate(${d.x} ${d.z})`}>
+            <g key={s.id} transform={`translate(${d.x} ${d.z})`} opacity={refused ? 0.4 : 1} data-drop-refused={refused || undefined}>
               <SystemShape
                 system={s}
                 catalog={catalog}

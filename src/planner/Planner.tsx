@@ -52,7 +52,7 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, footprints }: P
   const wrapRef = useRef<HTMLDivElement>(null);
   const [viewport, setViewport] = useState<Viewport>({ width: 800, height: 600 });
   const plan = usePlanView(fitRoom(config.room, viewport));
-  const [drag, setDrag] = useState<{ systemId: string; delta: PlanPoint } | null>(null);
+  const [drag, setDrag] = useState<{ systemId: string; delta: PlanPoint; invalid: boolean } | null>(null);
 
   const explain = useCallback((reason: string) => showStatus(ui, reason), [ui]);
   const run = useCallback(
@@ -106,7 +106,10 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, footprints }: P
   usePlanGestures(wrapRef, plan, {
     onSystemDrag: (systemId, delta) => {
       if (store.getState().selection?.id !== systemId) select({ kind: 'system', id: systemId });
-      setDrag({ systemId, delta });
+      // Preview whether dropping here would be accepted (the model's isEnabled, live).
+      const s = store.getState().config.systems.find((x) => x.id === systemId);
+      const invalid = !s || store.getState().isEnabled('moveSystem', { systemId, x: s.x + delta.x, z: s.z + delta.z }) !== true;
+      setDrag({ systemId, delta, invalid });
     },
     onSystemDrop: (systemId, delta) => {
       setDrag(null);
