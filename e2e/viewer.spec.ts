@@ -102,3 +102,37 @@ test('lux mode shows a legend and floor statistics; context loss recovers withou
   expect(meanLevel(shot)).toBeGreaterThan(25);
   expect(await page.evaluate(() => window.luxbox!.getConfig())).toBe(config);
 });
+
+test('losing the bake context rebakes every group after the restore; the configuration is untouched', async ({ page }) => {
+  // Keep a handle on canvases the page creates (the baker's is never attached to the document).
+  await page.addInitScript(() => {
+    const created: HTMLCanvasElement[] = [];
+    (window as unknown as { __canvases: HTMLCanvasElement[] }).__canvases = created;
+    const original = document.createElement.bind(document);
+    document.createElement = ((tag: string, options?: ElementCreationOptions) => {
+      const el = original(tag, options);
+      if (tag.toLowerCase() === 'canvas') created.push(el as HTMLCanvasElement);
+      return el;
+    }) as typeof document.createElement;
+  });
+  await openCornerL(page);
+  const config = await page.evaluate(() => window.luxbox!.getConfig());
+  const before = await status(page);
+  const lost = await page.evaluate(() => {
+    const canvases = (window as unknown as { __canvases: HTMLCanvasElement[] }).__canvases;
+    const bake = canvases.filter((c) => !c.isConnected && c.getContext('webgl2') && !c.getContext('webgl2')!.isContextLost()).pop();
+    if (!bake) return false;
+    const ext = bake.getContext('webgl2')!.getExtension('WEBGL_lose_context')!;
+    ext.loseContext();
+    setTimeout(() => ext.restoreContext(), 200);
+    return true;
+  });
+  expect(lost).toBe(true);
+  await expect.poll(async () => (await status(page)).contextLosses).toBe(before.contextLosses + 1);
+  // Rebaked from scratch: six more group bakes, and the bake runs to completion again.
+  await expect.poll(async () => (await status(page)).groupBakes, { timeout: 30_000 }).toBe(before.groupBakes + 6);
+  await expect.poll(async () => (await status(page)).done, { timeout: 90_000, intervals: [250] }).toBe(true);
+  const after = await status(page);
+  expect(after.floor!.avg).toBeCloseTo(before.floor!.avg, 0);
+  expect(await page.evaluate(() => window.luxbox!.getConfig())).toBe(config);
+});

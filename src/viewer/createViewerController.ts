@@ -41,6 +41,7 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
   controls.screenSpacePanning = true;
 
   let bakeCanvas = document.createElement('canvas');
+  const carried = { groupBakes: 0, relightsOnly: 0 };
   let engine: RelightEngine | null = null;
   let scene: BakeScene | null = null;
   let fixtures: Fixtures | null = null;
@@ -77,6 +78,11 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
   const onBakeLost = (e: Event) => {
     e.preventDefault();
     bakeLost = true;
+    if (engine) {
+      // Counters run on across engines, so hosts see the rebake as more group bakes.
+      carried.groupBakes += engine.counters.groupBakes;
+      carried.relightsOnly += engine.counters.relightsOnly;
+    }
     engine = null; // its GPU objects are gone; the CPU basis maps go with it, and we rebake
     events.onContext('lost');
   };
@@ -144,7 +150,7 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
     }
     if (engine.version !== shownVersion && (p.lit || p.done)) showMaps();
     const c = engine.counters;
-    events.onProgress({ fraction: p.fraction, done: p.done, lit: p.lit, groupBakes: c.groupBakes, relightsOnly: c.relightsOnly });
+    events.onProgress({ fraction: p.fraction, done: p.done, lit: p.lit, groupBakes: carried.groupBakes + c.groupBakes, relightsOnly: carried.relightsOnly + c.relightsOnly });
     if (!p.done) queueWork();
   };
   // setTimeout, not requestAnimationFrame: baking continues in a background tab's budget too, and frames stay free for input.
