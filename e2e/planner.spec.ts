@@ -81,6 +81,13 @@ test('set up a room, place a preset, fill a rail, change a module, reload, undo'
   expect((await sceneFile(page)).configuration.systems).toHaveLength(2);
 });
 
+test('?demo opens the demo scene directly (as the dev server does)', async ({ page }) => {
+  await page.goto('/?demo');
+  await expect(page.getByTestId('plan')).toBeVisible();
+  await expect(page.getByRole('heading', { name: 'luxbox' })).toBeVisible();
+  expect((await sceneFile(page)).configuration.systems).toHaveLength(1);
+});
+
 test('keyboard: arrows move, R rotates, Delete removes, Ctrl+Z / Ctrl+Shift+Z', async ({ page }) => {
   await page.goto('/');
   await page.getByRole('button', { name: 'Try the demo' }).click();

@@ -1,5 +1,6 @@
 import { useStore } from 'zustand';
 import { createConfiguration } from '../model/configuration';
+import { demoConfiguration } from './demoConfiguration';
 import type { ConfiguratorStore } from '../store/createConfiguratorStore';
 import { Planner } from '../planner/Planner';
 import type { FootprintSource } from '../planner/footprintSource';
@@ -27,12 +28,9 @@ export function Configurator({ store, ui, locale, onRestoreSaved, shareLink, foo
 
   const startDemo = () => {
     const st = store.getState();
-    st.load(createConfiguration());
-    const demo = catalog.presets.find((p) => p.id === 'corner-l') ?? catalog.presets[0];
-    if (demo && store.getState().dispatch('placePreset', { presetId: demo.id }).ok) {
-      const systems = store.getState().config.systems;
-      store.getState().select({ kind: 'system', id: systems[systems.length - 1].id });
-    }
+    st.load(demoConfiguration(catalog));
+    const systems = store.getState().config.systems;
+    if (systems.length > 0) store.getState().select({ kind: 'system', id: systems[systems.length - 1].id });
     ui.setState({ phase: 'planner' });
   };
 

@@ -11,4 +11,7 @@ declare global {
 const root = document.getElementById('root');
 if (!root) throw new Error('index.html lacks #root');
 // The standalone app: autosave in localStorage and share links in the URL hash.
-window.luxbox = mountLuxbox(root, { storageKey: 'luxbox.autosave.v1', shareLinks: true });
+// The dev server (scripts/start.sh) and `?demo` open on the demo scene when nothing is saved;
+// the built app starts with the room setup.
+const demo = import.meta.env.DEV || new URLSearchParams(location.search).has('demo');
+window.luxbox = mountLuxbox(root, { storageKey: 'luxbox.autosave.v1', shareLinks: true, demo });

@@ -2,6 +2,7 @@ import type { Catalog } from '../model/catalogSchema';
 import { createConfiguration, type Configuration } from '../model/configuration';
 import { decodeShareString, deserializeConfiguration } from '../model/sceneFile';
 import { InputError } from '../inputError';
+import { demoConfiguration } from './demoConfiguration';
 
 /** The URL hash prefix of a share link: `#c=<base64url scene file>` (src/model/sceneFile.ts). */
 export const SHARE_HASH_PREFIX = '#c=';
@@ -14,6 +15,8 @@ export interface StartupInput {
   saved: string | null;
   /** A room the host page asked for (embedding option). */
   room?: { width: number; depth: number; height: number };
+  /** Open the demo instead of the room setup when nothing else applies (dev server, `?demo`). */
+  demo?: boolean;
 }
 
 export interface Startup {
@@ -33,11 +36,11 @@ function message(e: unknown): string {
 
 /**
  * Decides what the configurator opens with, in order: a share link in the URL hash, the local
- * autosave, the host's room, else the room-setup screen. A broken or foreign link opens an
+ * autosave, the host's room, the demo when asked for, else the room-setup screen. A broken or foreign link opens an
  * empty valid room with a message and never touches the autosave (saveNow false, and nothing
  * is saved until the user changes something), so the user's own work survives a bad link.
  */
-export function resolveStartup({ catalog, hash, saved, room }: StartupInput): Startup {
+export function resolveStartup({ catalog, hash, saved, room, demo }: StartupInput): Startup {
   let savedConfig: Configuration | null = null;
   let savedError: string | null = null;
   if (saved) {
@@ -75,5 +78,6 @@ export function resolveStartup({ catalog, hash, saved, room }: StartupInput): St
   if (savedConfig) return { config: savedConfig, phase: 'planner', banner: null, saveNow: false, clearHash: false };
   const banner = savedError ? { text: `Your saved configuration could not be read (${savedError}).`, canRestore: false } : null;
   if (room) return { config: createConfiguration(room), phase: 'planner', banner, saveNow: false, clearHash: false };
+  if (demo) return { config: demoConfiguration(catalog), phase: 'planner', banner, saveNow: false, clearHash: false };
   return { config: createConfiguration(), phase: 'setup', banner, saveNow: false, clearHash: false };
 }

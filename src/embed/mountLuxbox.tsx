@@ -43,7 +43,7 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
   const catalog = resolveCatalog(options);
   const storageKey = options.storageKey || null;
   const saved = storageKey ? readLocal(storageKey) : null;
-  const start = resolveStartup({ catalog, hash: options.shareLinks ? currentHash() : '', saved, room: options.room });
+  const start = resolveStartup({ catalog, hash: options.shareLinks ? currentHash() : '', saved, room: options.room, demo: options.demo });
   let store;
   try {
     store = createConfiguratorStore({ catalog, initial: start.config });

@@ -16,6 +16,8 @@ export interface LuxboxOptions {
   onChange?: (sceneFileJson: string) => void;
   /** localStorage key for autosave; omitted or false: no autosave. The standalone app uses 'luxbox.autosave.v1'. */
   storageKey?: string | false;
+  /** With nothing saved and no link or room, open the demo room with a preset instead of the room setup. */
+  demo?: boolean;
   /** URL prefix under which the catalog's photometry paths ('ies/...') are served; default: the app's base URL. */
   assetBase?: string;
   /** Read a share link from location.hash at start (`#c=...`); default false. The standalone app turns it on. */

@@ -61,6 +61,21 @@ describe('resolveStartup', () => {
   });
 });
 
+describe('demo startup', () => {
+  it('opens the demo room with the L corner placed when asked and nothing else applies', () => {
+    const s = resolveStartup({ catalog, hash: '', saved: null, demo: true });
+    expect(s.phase).toBe('planner');
+    expect(s.config.room).toMatchObject({ width: 5, depth: 4, height: 2.8 });
+    expect(s.config.systems.map((x) => x.presetId)).toEqual(['corner-l']);
+    expect(validate(s.config, catalog)).toEqual([]);
+    expect(s.saveNow).toBe(false);
+  });
+
+  it('never replaces saved work with the demo', () => {
+    expect(resolveStartup({ catalog, hash: '', saved, demo: true }).config).toEqual(withPreset);
+  });
+});
+
 describe('roomFieldError', () => {
   it('accepts the model limits, decimal commas, and names the problem otherwise', () => {
     expect(roomFieldError('height', '2,8')).toBeNull();
