@@ -1,11 +1,9 @@
 import { StrictMode } from 'react';
 import { createRoot } from 'react-dom/client';
 import { Globals } from '@react-spring/web';
-import { defaultCatalog } from '../catalog/defaultCatalog';
 import { InputError } from '../inputError';
 import { isActionName } from '../model/actionDefinitions';
 import { billOfMaterials } from '../model/billOfMaterials';
-import { parseCatalog, type Catalog } from '../model/catalogSchema';
 import { configurationFromData, deserializeConfiguration, encodeShareString, serializeConfiguration } from '../model/sceneFile';
 import { toLightingScene } from '../model/toLightingScene';
 import { createConfiguratorStore } from '../store/createConfiguratorStore';
@@ -15,20 +13,10 @@ import { SHARE_HASH_PREFIX, resolveStartup } from '../app/startup';
 import { createUiStore } from '../app/uiStore';
 import { createFootprintSource } from '../planner/footprintSource';
 import type { LuxboxInstance, LuxboxOptions } from './types';
+import { EmbedOptionsError, resolveCatalog } from './resolveCatalog';
+
+export { EmbedOptionsError };
 import { getViewerStatus } from '../viewer/viewerStatus';
-
-/** Bad mount options (catalog, room, currency): the message names the option. */
-export class EmbedOptionsError extends InputError {
-  override name = 'EmbedOptionsError';
-}
-
-function resolveCatalog(options: LuxboxOptions): Catalog {
-  const catalog = options.catalog === undefined ? defaultCatalog : parseCatalog(options.catalog, 'options.catalog');
-  if (options.currency !== undefined && options.currency !== catalog.currency) {
-    throw new EmbedOptionsError(`options.currency is ${options.currency} but the catalog's prices are in ${catalog.currency}; pass a catalog priced in ${options.currency}`);
-  }
-  return catalog;
-}
 
 function currentHash(): string {
   return typeof location === 'undefined' ? '' : location.hash;
@@ -39,7 +27,7 @@ function currentHash(): string {
  * InputError subclass for bad options before touching the element.
  */
 export function mountLuxbox(element: Element, options: LuxboxOptions = {}): LuxboxInstance {
-  if (!(element instanceof Element)) throw new EmbedOptionsError('mountLuxbox needs a DOM element to mount into');
+  if (typeof Element === 'undefined' || !(element instanceof Element)) throw new EmbedOptionsError('mountLuxbox needs a DOM element to mount into');
   const catalog = resolveCatalog(options);
   const storageKey = options.storageKey || null;
   const saved = storageKey ? readLocal(storageKey) : null;
