@@ -67,8 +67,10 @@ describe('GPU bake vs CPU radiosity reference (real IES files)', () => {
     const r = compare(scene, files, PATCH);
     console.info(`reference comparison: direct ${JSON.stringify(r.direct)}, indirect ${JSON.stringify(r.indirect)}, total ${JSON.stringify(r.total)}`);
     expect(r.direct.max).toBeLessThan(0.01);
-    expect(r.indirect.rms).toBeLessThan(0.05);
-    expect(r.total.rms).toBeLessThan(0.03);
+    // Measured: indirect RMS 1.1 % / 0.7 %, total RMS 0.9 % / 0.6 %, worst texel 6 % (near corners).
+    expect(r.indirect.rms).toBeLessThan(0.03);
+    expect(r.total.rms).toBeLessThan(0.02);
+    expect(r.total.max).toBeLessThan(0.1);
   });
 
   it('corridor with two high-bays (361 vertical angles), one tilted', () => {
@@ -85,7 +87,9 @@ describe('GPU bake vs CPU radiosity reference (real IES files)', () => {
     const r = compare(scene, files, PATCH);
     console.info(`reference comparison: direct ${JSON.stringify(r.direct)}, indirect ${JSON.stringify(r.indirect)}, total ${JSON.stringify(r.total)}`);
     expect(r.direct.max).toBeLessThan(0.01);
-    expect(r.indirect.rms).toBeLessThan(0.05);
-    expect(r.total.rms).toBeLessThan(0.03);
+    // Measured: indirect RMS 1.1 % / 0.7 %, total RMS 0.9 % / 0.6 %, worst texel 6 % (near corners).
+    expect(r.indirect.rms).toBeLessThan(0.03);
+    expect(r.total.rms).toBeLessThan(0.02);
+    expect(r.total.max).toBeLessThan(0.1);
   });
 });
