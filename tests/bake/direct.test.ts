@@ -74,6 +74,7 @@ describe('direct pass = I·cosθ/d² at texel centres', () => {
     const lamp: Lamp = { photometry: isotropic(1000), position: [1.3, 2.1, 3.7], yaw: 0, pitch: 0, roll: 0 };
     const { maps } = baker.bake({ room: uniformRoom(4, 3, 5, 0), luminaires: [lamp] }, { ...pointOnly, texelSize: 0.1 });
     const { worst, compared } = worstError(maps, [lamp], 0);
+    console.info(`isotropic: worst relative error ${(100 * worst).toFixed(5)} %`);
     expect(compared).toBe(2 * (40 * 50 + 40 * 30 + 50 * 30));
     expect(worst).toBeLessThan(1e-3);
   });
@@ -91,6 +92,7 @@ describe('direct pass = I·cosθ/d² at texel centres', () => {
       const lamp: Lamp = { photometry: loadIes(file), position: [2.2, 2.4, 1.7], yaw: 0, pitch: 0, roll: 0, ...angles };
       const { maps } = baker.bake({ room: uniformRoom(4.5, 3, 3.5, 0), luminaires: [lamp] }, { ...pointOnly, texelSize: 0.05 });
       const { worst, compared } = worstError(maps, [lamp]);
+      console.info(`${file}: worst relative error ${(100 * worst).toFixed(4)} % over ${compared} texels`);
       expect(compared).toBeGreaterThan(500);
       expect(worst).toBeLessThan(0.01);
     });
