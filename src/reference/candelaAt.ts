@@ -18,7 +18,7 @@ function bracket(a: readonly number[], x: number): number {
  * Intensity in cd at (γ, C) by bilinear interpolation in the expanded candela grid
  * (src/photometry/types.ts: symmetry unfolded, multipliers applied, C either [0] or
  * spanning 0..360). Bilinear in the angles is what LM-63 consumers conventionally
- * use (IES LM-63-2019 Annex: "linear interpolation between the given angles").
+ * use and what src/photometry's intensity() does too.
  * Independent of src/photometry's lookup on purpose, so the reference checks it.
  */
 export function candelaAt(ph: Photometry, gammaDeg: number, cDeg: number): number {
@@ -29,11 +29,12 @@ export function candelaAt(ph: Photometry, gammaDeg: number, cDeg: number): numbe
   const v0 = va[iv];
   const v1 = va[Math.min(iv + 1, va.length - 1)];
   const tv = v1 > v0 ? (g - v0) / (v1 - v0) : 0;
-  const row = (h: number): number => {
-    const r = ph.candela[h];
-    return r[iv] + (r[Math.min(iv + 1, r.length - 1)] - r[iv]) * tv;
-  };
-  if (ha.length === 1) return row(0);
+  const iv1 = Math.min(iv + 1, va.length - 1);
+  // No inner closures here: this is the innermost call of the reference, and
+  // transpilers wrap every closure creation in a naming helper.
+  const r0 = ph.candela[0];
+  const a = r0[iv] + (r0[iv1] - r0[iv]) * tv;
+  if (ha.length === 1) return a;
   let c = cDeg % 360;
   if (c < 0) c += 360;
   c = Math.min(Math.max(c, ha[0]), ha[ha.length - 1]);
@@ -41,5 +42,9 @@ export function candelaAt(ph: Photometry, gammaDeg: number, cDeg: number): numbe
   const h0 = ha[ih];
   const h1 = ha[ih + 1];
   const th = h1 > h0 ? (c - h0) / (h1 - h0) : 0;
-  return row(ih) + (row(ih + 1) - row(ih)) * th;
+  const p0 = ph.candela[ih];
+  const p1 = ph.candela[ih + 1];
+  const b0 = p0[iv] + (p0[iv1] - p0[iv]) * tv;
+  const b1 = p1[iv] + (p1[iv1] - p1[iv]) * tv;
+  return b0 + (b1 - b0) * th;
 }

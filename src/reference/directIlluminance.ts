@@ -1,7 +1,8 @@
 import type { Rgb, Vec3 } from '../model/lightingScene';
 import { candelaAt } from './candelaAt';
-import { apply, photometricAngles } from './luminaireRotation';
 import type { ReferencePointSource } from './pointSources';
+
+const RAD_TO_DEG = 180 / Math.PI;
 
 /**
  * Direct illuminance (lux, per RGB channel) at surface point q with unit normal n:
@@ -23,9 +24,16 @@ export function directIlluminanceAt(sources: readonly ReferencePointSource[], q:
     // cos of incidence: the direction from q to the lamp against the surface normal.
     const cos = -(dx * n[0] + dy * n[1] + dz * n[2]) / d;
     if (!(cos > 0)) continue;
-    const angles = photometricAngles(apply(s.toLocal, [dx, dy, dz]));
-    if (!angles) continue;
-    const e = (candelaAt(s.photometry, angles.gammaDeg, angles.cDeg) * cos) / d2;
+    // Direction lamp → q in the luminaire frame (s.toLocal · d), then its type C angles
+    // (photometricAngles in luminaireRotation.ts, inlined: this is the hot loop).
+    const m = s.toLocal;
+    const lx = m[0] * dx + m[1] * dy + m[2] * dz;
+    const ly = m[3] * dx + m[4] * dy + m[5] * dz;
+    const lz = m[6] * dx + m[7] * dy + m[8] * dz;
+    const gammaDeg = Math.atan2(Math.sqrt(lx * lx + lz * lz), -ly) * RAD_TO_DEG;
+    let cDeg = Math.atan2(-lz, lx) * RAD_TO_DEG;
+    if (cDeg < 0) cDeg += 360;
+    const e = (candelaAt(s.photometry, gammaDeg, cDeg) * cos) / d2;
     out[0] += e * s.scale[0];
     out[1] += e * s.scale[1];
     out[2] += e * s.scale[2];
@@ -65,6 +73,9 @@ function gaussMean(sources: readonly ReferencePointSource[], f: RectOnFace, u0: 
   }
   return acc;
 }
+
+/** The cell-angle rule refines at most this deep (a cell of 1/16 of the patch edge); the error rule may go deeper. */
+const ANGLE_DEPTH = 4;
 
 export interface PatchAverageOptions {
   /** Relative tolerance of the adaptive rule. */
@@ -108,7 +119,7 @@ export function patchMeanDirect(
     for (let c = 0; c < 3; c++) {
       if (Math.abs(fine[c] - whole[c]) > opt.relTol * Math.abs(fine[c]) + opt.absTol) converged = false;
     }
-    if (converged) converged = !tooCoarse(sources, f, a0, a1, b0, b1, opt.maxCellAngle);
+    if (converged && depth < ANGLE_DEPTH) converged = !tooCoarse(sources, f, a0, a1, b0, b1, opt.maxCellAngle);
     const share = ((a1 - a0) * (b1 - b0)) / ((u1 - u0) * (v1 - v0));
     if (converged || depth >= opt.maxDepth) {
       for (let c = 0; c < 3; c++) out[c] += share * fine[c];

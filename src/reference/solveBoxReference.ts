@@ -18,7 +18,7 @@ export interface ReferenceOptions extends PointSourceOptions {
   tolerance?: number;
   /** Give up (with an error) after this many Gauss–Seidel sweeps (default 20 000). */
   maxSweeps?: number;
-  /** Relative tolerance of the adaptive patch quadrature of direct light (default 1e-5). */
+  /** Relative tolerance of the adaptive patch quadrature of direct light (default 1e-3; absolute floor 1e-4 of the mean direct illuminance). */
   directRelTol?: number;
 }
 
@@ -91,14 +91,43 @@ function choosePatchSize(extent: Vec3, options: ReferenceOptions): number {
   return Math.sqrt((2 * (w * h + w * d + h * d)) / target);
 }
 
-/** Largest angle a quadrature cell may subtend: twice the finest vertical step of any photometry in use, within [0.25°, 5°]. */
-function maxCellAngle(sources: readonly ReferencePointSource[]): number {
-  let step = 2.5;
-  for (const s of new Set(sources.map((x) => x.photometry))) {
-    const va = s.verticalAngles;
-    for (let i = 1; i < va.length; i++) step = Math.min(step, va[i] - va[i - 1]);
+/**
+ * Flux of a candela grid, lm, by the midpoint rule over its cells: only a scale
+ * for quadrature tolerances (the tests compare against src/photometry's exact
+ * integral instead).
+ */
+function gridFlux(ph: Photometry): number {
+  const va = ph.verticalAngles;
+  const ha = ph.horizontalAngles;
+  const d = Math.PI / 180;
+  let flux = 0;
+  for (let h = 0; h < Math.max(1, ha.length - 1); h++) {
+    const dc = ha.length === 1 ? 2 * Math.PI : (ha[h + 1] - ha[h]) * d;
+    const r0 = ph.candela[h];
+    const r1 = ph.candela[ha.length === 1 ? h : h + 1];
+    for (let v = 0; v + 1 < va.length; v++) {
+      const mean = 0.25 * (r0[v] + r0[v + 1] + r1[v] + r1[v + 1]);
+      flux += mean * (Math.cos(va[v] * d) - Math.cos(va[v + 1] * d)) * dc;
+    }
   }
-  return (Math.min(Math.max(2 * step, 0.25), 5) * Math.PI) / 180;
+  return flux;
+}
+
+/**
+ * Largest angle a quadrature cell may subtend: four times the typical (median)
+ * vertical step of the photometries in use, within [0.5°, 8°] (the 3×3 rule then
+ * has a node at least every ~1.5 steps). The median, not
+ * the minimum: parsers append a zero row a hair beyond a 0–90° grid, and that
+ * sliver must not drive the refinement everywhere.
+ */
+function maxCellAngle(sources: readonly ReferencePointSource[]): number {
+  let step = 2;
+  for (const ph of new Set(sources.map((x) => x.photometry))) {
+    const va = ph.verticalAngles;
+    const steps = va.slice(1).map((v, i) => v - va[i]).sort((a, b) => a - b);
+    if (steps.length > 0) step = Math.min(step, steps[steps.length >> 1]);
+  }
+  return (Math.min(Math.max(4 * step, 0.5), 8) * Math.PI) / 180;
 }
 
 /**
@@ -130,20 +159,15 @@ export function solveBoxReference(
   const tolerance = options.tolerance ?? 1e-6;
   const maxSweeps = options.maxSweeps ?? 20_000;
 
-  // Direct light: patch means. The absolute quadrature tolerance is a tiny
-  // fraction of an upper bound of the room's mean illuminance.
+  // Direct light: patch means. Quadrature errors are judged against the room's
+  // mean direct illuminance Φ/S, so dark patches are not refined for nothing.
   let t0 = performance.now();
   const area = 2 * (extent[0] * extent[1] + extent[0] * extent[2] + extent[1] * extent[2]);
-  let bound = 0;
-  for (const s of sources) {
-    let peak = 0;
-    for (const row of s.photometry.candela) for (const v of row) peak = Math.max(peak, v);
-    bound += (4 * Math.PI * peak * Math.max(...s.scale)) / area;
-  }
+  const meanDirect = sources.reduce((sum, s) => sum + gridFlux(s.photometry) * Math.max(...s.scale), 0) / area;
   const quadrature: PatchAverageOptions = {
-    relTol: options.directRelTol ?? 1e-5,
-    absTol: 1e-7 * bound,
-    maxDepth: 7,
+    relTol: options.directRelTol ?? 1e-3,
+    absTol: 1e-4 * meanDirect,
+    maxDepth: 6,
     maxCellAngle: maxCellAngle(sources),
   };
   const direct = BOX_FACES.map((f, fi) => {
