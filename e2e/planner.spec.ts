@@ -64,6 +64,8 @@ test('set up a room, place a preset, fill a rail, change a module, reload, undo'
   await expect(options.getByTestId('cct-4000')).toHaveAttribute('aria-pressed', 'true');
   expect((await sceneFile(page)).configuration.systems[0].rails[0].modules[0].cct).toBe(4000);
   await expect(page.getByTestId('bom')).toContainText('LX-SPOT-N12');
+  await options.getByTestId('dimming-50').click();
+  expect((await sceneFile(page)).configuration.systems[0].rails[0].modules[0]).toMatchObject({ cct: 4000, dimming: 0.5 });
 
   // Reload: the autosave restores the same configuration.
   const before = await sceneFile(page);

@@ -14,6 +14,9 @@ export interface OptionsPanelProps {
   onClose: () => void;
 }
 
+/** Dimming levels offered as touch-sized choices (the 3D view relights instantly on a change). */
+export const DIMMING_STEPS = [0.25, 0.5, 0.75, 1] as const;
+
 function Chips({ title, children }: { title: string; children: React.ReactNode }) {
   return (
     <div className="field" role="group" aria-label={title}>
@@ -86,6 +89,19 @@ export function OptionsPanel({ config, catalog, path, gate, onClose }: OptionsPa
             ))}
           </Chips>
         )}
+        <Chips title="Dimming">
+          {DIMMING_STEPS.map((d) => (
+            <ActionButton
+              key={d}
+              label={`${Math.round(d * 100)} %`}
+              pressed={Math.abs(module.dimming - d) < 1e-9}
+              disabledReason={gate.reason('setModuleDimming', { moduleId: module.id, dimming: d })}
+              onPress={() => Math.abs(module.dimming - d) >= 1e-9 && gate.run('setModuleDimming', { moduleId: module.id, dimming: d })}
+              onDisabledPress={gate.explain}
+              testId={`dimming-${Math.round(d * 100)}`}
+            />
+          ))}
+        </Chips>
         <ActionButton
           label="Remove module"
           disabledReason={gate.reason('removeModule', { moduleId: module.id })}
