@@ -10,6 +10,9 @@ import { emptyLitMaps, relightMaps, type BasisMaps, type LitMaps } from './relig
 /** Quality of the viewer's basis bakes: coarser than the CLI default, as each module gets its own bake. */
 export const VIEWER_BAKE_SETTINGS: Partial<BakeSettings> = { texelSize: 0.05, maxTextureSize: 256, samples: 64, bounces: 3, samplesPerDraw: 8, blurRadius: 5 };
 
+/** Least time between two previews of a bake under way (each costs a finalize and a read-back). */
+export const PREVIEW_MS = 300;
+
 export interface EngineProgress {
   /** Groups whose basis is final. */
   groupsDone: number;
@@ -54,8 +57,11 @@ interface GroupState {
  */
 export interface RelightEngine {
   setScene(scene: BakeScene): SetSceneResult;
-  /** Advance pending bakes by up to `samples` indirect samples per texel; returns the progress. */
-  step(samples?: number): EngineProgress;
+  /**
+   * Advance pending bakes by up to `samples` indirect samples per texel; returns the progress.
+   * With `preview` (default) the partial solution is read back at most every PREVIEW_MS.
+   */
+  step(samples?: number, preview?: boolean): EngineProgress;
   /** Finish every pending bake now (for the CLI and tests). */
   finish(): void;
   readonly progress: EngineProgress;
@@ -75,7 +81,7 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
   let room = '';
   let states = new Map<string, GroupState>();
   let order: GroupState[] = [];
-  let job: { state: GroupState; job: BakeJob; steps: number } | null = null;
+  let job: { state: GroupState; job: BakeJob; lastPreview: number } | null = null;
   let out: LitMaps | null = null;
   let version = 0;
   let composedVersion = -1;
@@ -126,19 +132,19 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
     version++;
   };
 
-  const step = (samples = settings.samplesPerDraw): EngineProgress => {
+  const step = (samples = settings.samplesPerDraw, preview = true): EngineProgress => {
     if (!scene || bakeDirectOnly()) return progress();
     if (!job) {
       const next = order.find((s) => !s.final);
       if (!next) return progress();
-      job = { state: next, job: baker.start({ room: scene.room, luminaires: next.group.basis }, settings), steps: 0 };
+      job = { state: next, job: baker.start({ room: scene.room, luminaires: next.group.basis }, settings), lastPreview: performance.now() };
     }
     const p = job.job.step(samples);
-    job.steps++;
     if (p.done) finishJob();
-    else if (job.steps % 4 === 0) {
-      // A preview of the partial indirect solution every few slices: the image converges while the user looks.
+    else if (preview && performance.now() - job.lastPreview > PREVIEW_MS) {
+      // A preview of the partial indirect solution a few times a second: the image converges while the user looks.
       job.state.basis = readBasis(job.job);
+      job.lastPreview = performance.now();
       version++;
     }
     return progress();
@@ -179,7 +185,7 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
     },
     step,
     finish() {
-      while (!progress().done) step(settings.samples);
+      while (!progress().done) step(settings.samples, false);
     },
     get progress() {
       return progress();

@@ -23,6 +23,8 @@ export interface ViewerEvents {
 
 /** Milliseconds of bake work per slice: keeps a 60 Hz frame for interaction in between. */
 const SLICE_MS = 12;
+/** Starting guess of the cost of one indirect sample per texel (all six maps), refined as it runs. */
+const FIRST_MS_PER_SAMPLE = 1.5;
 
 /**
  * The imperative core of the 3D view (three.js, no React): renders on demand
@@ -60,6 +62,7 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
   let lastLit: LitMaps | null = null;
   let size = { width: 1, height: 1 };
   let preset: CameraPresetName = 'corner';
+  let msPerSample = FIRST_MS_PER_SAMPLE;
 
   const makeEngine = (): RelightEngine | null => {
     const gl = bakeCanvas.getContext('webgl2');
@@ -143,7 +146,13 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
     const start = performance.now();
     let p = engine.progress;
     try {
-      while (!p.done && performance.now() - start < SLICE_MS) p = engine.step(engine.settings.samplesPerDraw);
+      while (!p.done && performance.now() - start < SLICE_MS) {
+        // As many samples as fit the slice on this device (measured), so a slow GPU still yields to input.
+        const n = Math.max(1, Math.min(engine.settings.samplesPerDraw, Math.floor(SLICE_MS / msPerSample)));
+        const t = performance.now();
+        p = engine.step(n);
+        msPerSample = 0.7 * msPerSample + (0.3 * (performance.now() - t)) / n;
+      }
     } catch (e) {
       events.onError(`Baking failed: ${(e as Error).message}`);
       return;
