@@ -1,0 +1,222 @@
+import { join } from 'node:path';
+import { createBaker, type Baker } from '../bake/createBaker';
+import { probeMaps } from '../bake/probeMaps';
+import { SURFACE_NAMES, type SurfaceName, type Vec3 } from '../model/lightingScene';
+import type { Photometry } from '../photometry/types';
+import { createHeadlessGL } from '../node/createHeadlessGL';
+import { loadLightingSceneFile, type LoadedLightingScene } from '../node/loadLightingSceneFile';
+import { sampleReference } from '../reference/sampleReference';
+import { solveBoxReference } from '../reference/solveBoxReference';
+import {
+  BENCH_SCENES,
+  QUALITY_LADDER,
+  QUICK_LADDER,
+  QUICK_SCENES,
+  SCALING_LUMINAIRES,
+  SCALING_QUALITY,
+  SCALING_TEXELS,
+  type BenchQuality,
+  type BenchScene,
+} from './benchScenes';
+import { relativeErrors } from './errorStats';
+import { machineInfo, type MachineInfo } from './machineInfo';
+
+export interface BenchRow {
+  scene: string;
+  quality: BenchQuality;
+  texels: number;
+  /** Wall-clock time of baker.bake (all passes and the read-back), ms; compile part separately. */
+  bakeMs: number;
+  compileMs: number;
+  /** Relative errors of total, direct and indirect illuminance at the comparison points. */
+  total: { rms: number; max: number };
+  direct: { rms: number; max: number };
+  indirect: { rms: number; max: number };
+  /** Mean total illuminance over the points: bake and reference, lux. */
+  meanBake: number;
+  meanReference: number;
+}
+
+export interface BenchSceneInfo {
+  scene: BenchScene;
+  luminaires: number;
+  points: number;
+  referencePatches: number;
+  referenceSweeps: number;
+  referenceMs: number;
+}
+
+export interface ScalingRow {
+  study: 'luminaires' | 'texels';
+  luminaires: number;
+  pointSources: number;
+  texelSize: number;
+  texels: number;
+  bakeMs: number;
+  compileMs: number;
+}
+
+export interface BenchResult {
+  quick: boolean;
+  machine: MachineInfo;
+  scenes: BenchSceneInfo[];
+  rows: BenchRow[];
+  scaling: ScalingRow[];
+  scalingScene: string;
+  scalingQuality: Omit<BenchQuality, 'texelSize'>;
+  totalMs: number;
+}
+
+export interface BenchOptions {
+  quick: boolean;
+  /** Repository root (scene files are found relative to it). */
+  root: string;
+  log: (line: string) => void;
+}
+
+/** Comparison points: a regular grid of cell centres on every surface, about `spacing` apart. */
+export function samplePoints(room: { width: number; height: number; depth: number }, spacing: number): { surface: SurfaceName; point: Vec3 }[] {
+  const ext = [room.width, room.height, room.depth];
+  // (u axis, v axis, normal axis, on the far side) as in docs/baker.md.
+  const frames: Record<SurfaceName, [number, number, number, boolean]> = {
+    floor: [0, 2, 1, false],
+    ceiling: [0, 2, 1, true],
+    north: [0, 1, 2, false],
+    south: [0, 1, 2, true],
+    west: [2, 1, 0, false],
+    east: [2, 1, 0, true],
+  };
+  const out: { surface: SurfaceName; point: Vec3 }[] = [];
+  for (const surface of SURFACE_NAMES) {
+    const [u, v, n, far] = frames[surface];
+    const nu = Math.max(2, Math.round(ext[u] / spacing));
+    const nv = Math.max(2, Math.round(ext[v] / spacing));
+    for (let j = 0; j < nv; j++) {
+      for (let i = 0; i < nu; i++) {
+        const p: Vec3 = [0, 0, 0];
+        p[n] = far ? ext[n] : 0;
+        p[u] = ((i + 0.5) / nu) * ext[u];
+        p[v] = ((j + 0.5) / nv) * ext[v];
+        out.push({ surface, point: p });
+      }
+    }
+  }
+  return out;
+}
+
+/** The reference's photometry map: the scene's own `photometry` strings → the parsed files the loader already read. */
+function photometryMap(loaded: LoadedLightingScene): Map<string, Photometry> {
+  const map = new Map<string, Photometry>();
+  loaded.scene.luminaires.forEach((l, i) => map.set(l.photometry, loaded.bakeScene.luminaires[i].photometry));
+  return map;
+}
+
+/**
+ * One bake, timed after an untimed warm-up bake with the same texel size and
+ * luminaires: the generated programs depend on both, and ANGLE finishes
+ * compiling lazily at first draw, which would otherwise land in the timing.
+ */
+function timedBake(baker: Baker, loaded: LoadedLightingScene, quality: BenchQuality, luminaires = loaded.bakeScene.luminaires) {
+  baker.bake({ ...loaded.bakeScene, luminaires }, { ...quality, samples: Math.min(quality.samples, 16), bounces: Math.min(quality.bounces, 1) });
+  const started = performance.now();
+  const { maps, report } = baker.bake({ ...loaded.bakeScene, luminaires }, { ...quality });
+  return { maps, report, ms: performance.now() - started };
+}
+
+/**
+ * `luxbox bench`: bakes the named scenes at each rung of the quality ladder and
+ * measures the error against the converged CPU reference, then how bake time
+ * grows with the number of luminaires and with the texel count.
+ */
+export function runBench(options: BenchOptions): BenchResult {
+  const started = performance.now();
+  const scenes = options.quick ? QUICK_SCENES : BENCH_SCENES;
+  const ladder = options.quick ? QUICK_LADDER : QUALITY_LADDER;
+  const gl = createHeadlessGL();
+  try {
+    const baker = createBaker(gl);
+    const machine = machineInfo(gl);
+    options.log(`machine: ${machine.cpuModel}, ${machine.cores} cores; GL: ${machine.glRenderer}`);
+    const infos: BenchSceneInfo[] = [];
+    const rows: BenchRow[] = [];
+    for (const scene of scenes) {
+      const loaded = loadLightingSceneFile(join(options.root, scene.file));
+      const t0 = performance.now();
+      const reference = solveBoxReference(loaded.scene, photometryMap(loaded), { patchSize: scene.referencePatch });
+      const points = samplePoints(loaded.scene.room, scene.sampleSpacing);
+      const ref = points.map(({ surface, point }) => sampleReference(reference, point, surface));
+      const referenceMs = performance.now() - t0;
+      infos.push({
+        scene,
+        luminaires: loaded.scene.luminaires.length,
+        points: points.length,
+        referencePatches: reference.patches,
+        referenceSweeps: reference.sweeps,
+        referenceMs,
+      });
+      options.log(`${scene.name}: reference ${reference.patches} patches, ${reference.sweeps} sweeps, ${Math.round(referenceMs)} ms; ${points.length} points`);
+      for (const quality of ladder) {
+        const { maps, report, ms } = timedBake(baker, loaded, quality);
+        const probes = points.map(({ point }) => probeMaps(maps, loaded.scene.room, point));
+        const pick = (kind: 'total' | 'direct' | 'indirect') => ({
+          bake: probes.map((p) => p[kind]),
+          reference: ref.map((r) => r[kind]),
+        });
+        const peak = Math.max(...ref.map((r) => r.total));
+        const errors = (kind: 'total' | 'direct' | 'indirect', floor: number) => {
+          const { bake, reference: r } = pick(kind);
+          const e = relativeErrors(bake, r, floor);
+          return { rms: e.rms, max: e.max };
+        };
+        const row: BenchRow = {
+          scene: scene.name,
+          quality,
+          texels: report.totalTexels,
+          bakeMs: ms,
+          compileMs: report.timings_ms.compile,
+          total: errors('total', 0),
+          // Direct light is zero in places (behind a lamp); judge it where it matters.
+          direct: errors('direct', 0.01 * peak),
+          indirect: errors('indirect', 0),
+          meanBake: probes.reduce((s, p) => s + p.total, 0) / probes.length,
+          meanReference: ref.reduce((s, r) => s + r.total, 0) / ref.length,
+        };
+        rows.push(row);
+        options.log(
+          `  texel ${quality.texelSize} m, ${quality.samples} samples, ${quality.bounces} bounces: ${Math.round(ms)} ms, total RMS ${(100 * row.total.rms).toFixed(2)} %, max ${(100 * row.total.max).toFixed(1)} %`,
+        );
+      }
+    }
+
+    // Scaling: luminaire count and texel count, on the living room (quick: the cube).
+    const scalingScene = options.quick ? QUICK_SCENES[0] : BENCH_SCENES[1];
+    const loaded = loadLightingSceneFile(join(options.root, scalingScene.file));
+    const all = loaded.bakeScene.luminaires;
+    const scaling: ScalingRow[] = [];
+    const counts = options.quick ? [1] : SCALING_LUMINAIRES.filter((n) => n <= all.length);
+    const texels = options.quick ? [0.25, 0.2] : SCALING_TEXELS;
+    for (const n of counts) {
+      const quality = { ...SCALING_QUALITY, texelSize: texels[1] };
+      const { report, ms } = timedBake(baker, loaded, quality, all.slice(0, n));
+      scaling.push({ study: 'luminaires', luminaires: n, pointSources: report.pointSources, texelSize: quality.texelSize, texels: report.totalTexels, bakeMs: ms, compileMs: report.timings_ms.compile });
+      options.log(`scaling: ${n} luminaires (${report.pointSources} point sources): ${Math.round(ms)} ms`);
+    }
+    for (const texelSize of texels) {
+      const { report, ms } = timedBake(baker, loaded, { ...SCALING_QUALITY, texelSize });
+      scaling.push({ study: 'texels', luminaires: all.length, pointSources: report.pointSources, texelSize, texels: report.totalTexels, bakeMs: ms, compileMs: report.timings_ms.compile });
+      options.log(`scaling: texel ${texelSize} m (${report.totalTexels} texels): ${Math.round(ms)} ms`);
+    }
+    return {
+      quick: options.quick,
+      machine,
+      scenes: infos,
+      rows,
+      scaling,
+      scalingScene: scalingScene.name,
+      scalingQuality: SCALING_QUALITY,
+      totalMs: performance.now() - started,
+    };
+  } finally {
+    gl.destroy();
+  }
+}

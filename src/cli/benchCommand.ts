@@ -1,0 +1,54 @@
+import { mkdirSync, writeFileSync } from 'node:fs';
+import { join, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { benchTables } from '../bench/benchMarkdown';
+import { BENCH_DOC_INTRO, BENCH_DOC_OUTRO } from '../bench/benchDocText';
+import { errorTimeSvg } from '../bench/errorTimeSvg';
+import { runBench } from '../bench/runBench';
+import { InputError } from '../inputError';
+import { ensureDisplay } from '../node/ensureDisplay';
+
+const usage = 'bench [--quick] [--out <dir>]';
+const SVG = 'benchmarks-error-vs-time.svg';
+
+/**
+ * `luxbox bench`: error against run time of the GPU baker on the named scenes,
+ * and bake time against luminaires and texels. The full run writes
+ * docs/benchmarks.md, the SVG plot and the raw JSON (or into --out); `--quick`
+ * is a smoke run that prints its tables and writes files only with --out.
+ */
+export async function run(args: string[]): Promise<number> {
+  let quick = false;
+  let out: string | null = null;
+  for (let i = 0; i < args.length; i++) {
+    const a = args[i];
+    if (a === '--quick') quick = true;
+    else if (a === '--out') {
+      out = args[++i] ?? null;
+      if (!out) throw new InputError(`--out needs a folder (usage: luxbox ${usage})`);
+    } else throw new InputError(`unknown argument "${a}" (usage: luxbox ${usage})`);
+  }
+  const reexit = ensureDisplay();
+  if (reexit !== null) return reexit;
+  const root = resolve(fileURLToPath(new URL('../..', import.meta.url)));
+  if (!quick && out === null) out = join(root, 'docs');
+  const result = runBench({ quick, root, log: (line) => process.stderr.write(line + '\n') });
+  const tables = benchTables(result, out ? SVG : null);
+  if (out) {
+    mkdirSync(out, { recursive: true });
+    const series = [...new Set(result.rows.map((r) => r.scene))].map((scene) => {
+      const rows = result.rows.filter((r) => r.scene === scene);
+      return {
+        label: scene,
+        rms: rows.map((r) => [r.bakeMs / 1000, r.total.rms] as [number, number]),
+        max: rows.map((r) => [r.bakeMs / 1000, r.total.max] as [number, number]),
+      };
+    });
+    writeFileSync(join(out, SVG), errorTimeSvg(series, `GPU bake vs converged reference (${result.machine.date.slice(0, 10)})`));
+    writeFileSync(join(out, 'benchmarks.md'), `${BENCH_DOC_INTRO}\n${tables}\n${BENCH_DOC_OUTRO}`);
+    writeFileSync(join(out, 'benchmarks.json'), JSON.stringify(result, null, 2) + '\n');
+    process.stderr.write(`wrote ${join(out, 'benchmarks.md')}, ${SVG}, benchmarks.json\n`);
+  }
+  process.stdout.write(tables + '\n');
+  return 0;
+}
