@@ -10,6 +10,7 @@ const commands: Record<string, () => Promise<{ run: Command }>> = {
   bake: () => import('./bakeCommand'),
   probe: () => import('./probeCommand'),
   render: () => import('./renderCommand'),
+  bench: () => import('./benchCommand'),
 };
 
 const usage = `usage: luxbox <command> [...]
@@ -17,7 +18,8 @@ commands:
   ies info <file.ies|file.ldt> [--json]   describe a photometric file
   bake <scene.json> --out <dir> [--samples N --bounces N --texel m]   bake light maps (docs/baker.md)
   probe <scene.json> <points.json> [--samples N --bounces N --texel m]   lux at surface points
-  render <config-or-scene.json> --out image.png [--camera eye|top|corner|json --width --height --exposure EV --mode light|lux]   3D image (docs/viewer.md)`;
+  render <config-or-scene.json> --out image.png [--camera eye|top|corner|json --width --height --exposure EV --mode light|lux]   3D image (docs/viewer.md)
+  bench [--quick] [--out <dir>]   bake error vs time against the CPU reference (docs/benchmarks.md)`;
 
 export async function main(argv: string[]): Promise<number> {
   const [name, ...rest] = argv;
