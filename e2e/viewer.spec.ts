@@ -27,9 +27,11 @@ function meanLevel(png: Buffer): number {
 }
 
 async function openCornerL(page: Page): Promise<void> {
+  // Configure in 2D through the UI: default room, then the L-corner preset from the side panel.
   await page.goto('/');
-  const placed = await page.evaluate(() => window.luxbox!.runAction('placePreset', { presetId: 'corner-l' }));
-  expect(placed).toEqual({ ok: true });
+  await page.getByRole('button', { name: 'Start planning' }).click();
+  await page.getByTestId('preset-corner-l').click();
+  await expect.poll(async () => JSON.parse(await page.evaluate(() => window.luxbox!.getConfig())).configuration.systems.length).toBe(1);
   await page.getByTestId('tool-3d').click();
   await expect(page.getByTestId('view3d-canvas')).toBeVisible();
   await expect.poll(async () => (await status(page)).done, { timeout: 90_000, intervals: [250] }).toBe(true);
