@@ -12,7 +12,7 @@ export function benchTables(r: BenchResult, svgName: string | null): string {
   lines.push(`Machine: ${m.cpuModel}, ${m.cores} logical cores, ${m.memoryGiB} GiB; ${m.os}; Node ${m.node}.`);
   lines.push(`GL: ${m.glVersion}; renderer ${m.glRenderer}.`);
   lines.push('');
-  lines.push('### Scenes and references');
+  lines.push('#### Scenes and references');
   lines.push('');
   lines.push('| scene | luminaires | comparison points | reference patches | Gauss–Seidel sweeps | reference time |');
   lines.push('|---|---|---|---|---|---|');
@@ -20,7 +20,7 @@ export function benchTables(r: BenchResult, svgName: string | null): string {
     lines.push(`| ${s.scene.name}: ${s.scene.description} | ${s.luminaires} | ${s.points} (every ${s.scene.sampleSpacing} m) | ${s.referencePatches} (${s.scene.referencePatch} m) | ${s.referenceSweeps} | ${ms(s.referenceMs)} |`);
   }
   lines.push('');
-  lines.push('### Error against run time');
+  lines.push('#### Error against run time');
   lines.push('');
   lines.push('Relative error of the baked maps (bilinear lookup, as `luxbox probe`) against the reference at the comparison points. Bake time is wall clock for `baker.bake` (all passes and the read-back; each timed bake follows an untimed warm-up bake with the same texel size and luminaires, so program compilation is excluded; the compile column shows what was left).');
   lines.push('');
@@ -37,7 +37,7 @@ export function benchTables(r: BenchResult, svgName: string | null): string {
     lines.push(`![error versus bake time](${svgName})`);
     lines.push('');
   }
-  lines.push(`### Bake time against luminaires and texels (${r.scalingScene}, ${r.scalingQuality.samples} samples, ${r.scalingQuality.bounces} bounces)`);
+  lines.push(`#### Bake time against luminaires and texels (${r.scalingScene}, ${r.scalingQuality.samples} samples, ${r.scalingQuality.bounces} bounces)`);
   lines.push('');
   lines.push('| study | luminaires | point sources | texel | texels | bake time | of which compile | µs per texel |');
   lines.push('|---|---|---|---|---|---|---|---|');
@@ -46,4 +46,16 @@ export function benchTables(r: BenchResult, svgName: string | null): string {
   }
   lines.push('');
   return lines.join('\n');
+}
+
+/**
+ * `doc` with the bench's section replaced by `section` (between the markers),
+ * or with it appended when the markers are absent; the rest is kept as is.
+ */
+export function spliceSection(doc: string, section: string, markers: readonly [string, string]): string {
+  const block = `${markers[0]}\n${section.trim()}\n${markers[1]}\n`;
+  const start = doc.indexOf(markers[0]);
+  const end = doc.indexOf(markers[1]);
+  if (start >= 0 && end > start) return doc.slice(0, start) + block + doc.slice(end + markers[1].length).replace(/^\n/, '');
+  return (doc.trim() ? doc.replace(/\s*$/, '\n\n') : '# Benchmarks\n\n') + block;
 }

@@ -1,8 +1,8 @@
-import { mkdirSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { benchTables } from '../bench/benchMarkdown';
-import { BENCH_DOC_INTRO, BENCH_DOC_OUTRO } from '../bench/benchDocText';
+import { benchTables, spliceSection } from '../bench/benchMarkdown';
+import { BENCH_DOC_INTRO, BENCH_DOC_OUTRO, BENCH_MARKERS } from '../bench/benchDocText';
 import { errorTimeSvg } from '../bench/errorTimeSvg';
 import { runBench } from '../bench/runBench';
 import { InputError } from '../inputError';
@@ -13,8 +13,8 @@ const SVG = 'benchmarks-error-vs-time.svg';
 
 /**
  * `luxbox bench`: error against run time of the GPU baker on the named scenes,
- * and bake time against luminaires and texels. The full run writes
- * docs/benchmarks.md, the SVG plot and the raw JSON (or into --out); `--quick`
+ * and bake time against luminaires and texels. The full run writes its section
+ * of docs/benchmarks.md, the SVG plot and the raw JSON (or into --out); `--quick`
  * is a smoke run that prints its tables and writes files only with --out.
  */
 export async function run(args: string[]): Promise<number> {
@@ -45,7 +45,10 @@ export async function run(args: string[]): Promise<number> {
       };
     });
     writeFileSync(join(out, SVG), errorTimeSvg(series, `GPU bake vs converged reference (${result.machine.date.slice(0, 10)})`));
-    writeFileSync(join(out, 'benchmarks.md'), `${BENCH_DOC_INTRO}\n${tables}\n${BENCH_DOC_OUTRO}`);
+    // docs/benchmarks.md has other sections (viewer): replace only ours.
+    const docPath = join(out, 'benchmarks.md');
+    const doc = existsSync(docPath) ? readFileSync(docPath, 'utf8') : '';
+    writeFileSync(docPath, spliceSection(doc, `${BENCH_DOC_INTRO}\n${tables}\n${BENCH_DOC_OUTRO}`, BENCH_MARKERS));
     writeFileSync(join(out, 'benchmarks.json'), JSON.stringify(result, null, 2) + '\n');
     process.stderr.write(`wrote ${join(out, 'benchmarks.md')}, ${SVG}, benchmarks.json\n`);
   }
