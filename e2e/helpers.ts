@@ -20,7 +20,10 @@ export async function zoomToModuleLevel(page: Page): Promise<void> {
   const plan = page.getByTestId('plan');
   for (let i = 0; i < 8; i++) {
     if ((await plan.getAttribute('data-level')) === 'module') return;
+    const before = await plan.getAttribute('data-scale');
     await page.getByTestId('zoom-in').click();
+    // The spring applies the new view on its next frame: wait for it before deciding again.
+    await expect(plan).not.toHaveAttribute('data-scale', before ?? '');
   }
   await expect(plan).toHaveAttribute('data-level', 'module');
 }
