@@ -24,12 +24,13 @@ export function benchTables(r: BenchResult, svgName: string | null): string {
   lines.push('');
   lines.push('Relative error of the baked maps (bilinear lookup, as `luxbox probe`) against the reference at the comparison points. Bake time is wall clock for `baker.bake` (all passes and the read-back; each timed bake follows an untimed warm-up bake with the same texel size and luminaires, so program compilation is excluded; the compile column shows what was left).');
   lines.push('');
-  lines.push('| scene | texel | samples | bounces | texels | bake time | of which compile | total RMS | total max | direct RMS | indirect RMS | mean total bake / ref (lx) |');
-  lines.push('|---|---|---|---|---|---|---|---|---|---|---|---|');
+  lines.push('| scene | rung | texel | samples | bounces | texels | bake time | of which compile | total RMS | total max | direct RMS | indirect RMS | mean total bake / ref (lx) |');
+  lines.push('|---|---|---|---|---|---|---|---|---|---|---|---|---|');
   for (const row of r.rows) {
     const q = row.quality;
+    const rung = r.rows.filter((x) => x.scene === row.scene).indexOf(row) + 1;
     lines.push(
-      `| ${row.scene} | ${q.texelSize} m | ${q.samples} | ${q.bounces} | ${row.texels} | ${ms(row.bakeMs)} | ${ms(row.compileMs)} | ${pct(row.total.rms)} % | ${pct(row.total.max)} % | ${pct(row.direct.rms)} % | ${pct(row.indirect.rms)} % | ${row.meanBake.toFixed(1)} / ${row.meanReference.toFixed(1)} |`,
+      `| ${row.scene} | ${rung} | ${q.texelSize} m | ${q.samples} | ${q.bounces} | ${row.texels} | ${ms(row.bakeMs)} | ${ms(row.compileMs)} | ${pct(row.total.rms)} % | ${pct(row.total.max)} % | ${pct(row.direct.rms)} % | ${pct(row.indirect.rms)} % | ${row.meanBake.toFixed(1)} / ${row.meanReference.toFixed(1)} |`,
     );
   }
   lines.push('');

@@ -25,7 +25,8 @@ function format(v: number): string {
 
 /**
  * Log–log plot of relative error of total illuminance against bake time: solid
- * lines and filled dots for RMS, dashed lines and rings for the largest error.
+ * lines and filled dots (numbered by ladder rung) for RMS, dashed lines and
+ * rings for the largest error.
  * Plain SVG, no dependencies, so docs/benchmarks.md can embed it.
  */
 export function errorTimeSvg(series: PlotSeries[], title: string): string {
@@ -55,13 +56,18 @@ export function errorTimeSvg(series: PlotSeries[], title: string): string {
   parts.push(`<text transform="translate(16 ${M.top + ph / 2}) rotate(-90)" text-anchor="middle">relative error of total lux (log)</text>`);
   series.forEach((s, i) => {
     const c = COLORS[i % COLORS.length];
+    // Lines join the settings in order of bake time; numbers name the ladder rung.
     const line = (pts: [number, number][], dash: string): void => {
-      const ok = pts.filter(([t, e]) => t > 0 && e > 0);
+      const ok = pts.filter(([t, e]) => t > 0 && e > 0).sort((a, b) => a[0] - b[0]);
       if (ok.length > 1) parts.push(`<polyline fill="none" stroke="${c}" stroke-width="1.5"${dash} points="${ok.map(([t, e]) => `${x(t).toFixed(1)},${y(e).toFixed(1)}`).join(' ')}"/>`);
     };
     line(s.rms, '');
     line(s.max, ' stroke-dasharray="5 4"');
-    for (const [t, e] of s.rms) if (t > 0 && e > 0) parts.push(`<circle cx="${x(t).toFixed(1)}" cy="${y(e).toFixed(1)}" r="3.5" fill="${c}"/>`);
+    s.rms.forEach(([t, e], k) => {
+      if (!(t > 0 && e > 0)) return;
+      parts.push(`<circle cx="${x(t).toFixed(1)}" cy="${y(e).toFixed(1)}" r="3.5" fill="${c}"/>`);
+      parts.push(`<text x="${(x(t) + 5).toFixed(1)}" y="${(y(e) + 13).toFixed(1)}" font-size="10" fill="${c}">${k + 1}</text>`);
+    });
     for (const [t, e] of s.max) if (t > 0 && e > 0) parts.push(`<circle cx="${x(t).toFixed(1)}" cy="${y(e).toFixed(1)}" r="3.5" fill="white" stroke="${c}"/>`);
     const ly = M.top + 14 + i * 20;
     parts.push(`<line x1="${W - M.right + 12}" y1="${ly}" x2="${W - M.right + 36}" y2="${ly}" stroke="${c}" stroke-width="2"/>`);

@@ -14,7 +14,7 @@ const SVG = 'benchmarks-error-vs-time.svg';
 /**
  * `luxbox bench`: error against run time of the GPU baker on the named scenes,
  * and bake time against luminaires and texels. The full run writes its section
- * of docs/benchmarks.md, the SVG plot and the raw JSON (or into --out); `--quick`
+ * of docs/benchmarks.md and the SVG plot (or into --out); `--quick`
  * is a smoke run that prints its tables and writes files only with --out.
  */
 export async function run(args: string[]): Promise<number> {
@@ -49,8 +49,7 @@ export async function run(args: string[]): Promise<number> {
     const docPath = join(out, 'benchmarks.md');
     const doc = existsSync(docPath) ? readFileSync(docPath, 'utf8') : '';
     writeFileSync(docPath, spliceSection(doc, `${BENCH_DOC_INTRO}\n${tables}\n${BENCH_DOC_OUTRO}`, BENCH_MARKERS));
-    writeFileSync(join(out, 'benchmarks.json'), JSON.stringify(result, null, 2) + '\n');
-    process.stderr.write(`wrote ${join(out, 'benchmarks.md')}, ${SVG}, benchmarks.json\n`);
+    process.stderr.write(`wrote ${docPath} and ${join(out, SVG)}\n`);
   }
   process.stdout.write(tables + '\n');
   return 0;
