@@ -40,6 +40,9 @@ export const BENCH_DOC_OUTRO = `### Reading the numbers
 - The largest errors sit where the bilinear lookup between texel centres meets a steep gradient
   (the edge of a spot's beam, the foot of a lamp touching a wall) and in room corners; RMS is the
   figure to compare settings by.
+- The scaling table separates the two costs: the direct pass grows with the number of point
+  sources (luminaires, and the cells of split luminous openings), the gather with
+  texels × samples × bounces, and the gather dominates.
 - Indirect noise falls like 1/√samples; the bias of few explicit bounces is mostly removed by the
   tail estimate (docs/baker.md, "Tail for ρ → 1").
 `;
