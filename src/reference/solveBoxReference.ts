@@ -70,6 +70,7 @@ function toRgb(r: Reflectance, where: string): Rgb {
 }
 
 function validateRoom(scene: LightingScene): Vec3 {
+  if (typeof scene?.room !== 'object' || scene.room === null) throw new ReferenceInputError('room: expected an object with width, height, depth and reflectance');
   const { width, height, depth } = scene.room;
   const extent: Vec3 = [width, height, depth];
   (['width', 'height', 'depth'] as const).forEach((k, a) => {
@@ -146,8 +147,9 @@ export function solveBoxReference(
   options: ReferenceOptions = {},
 ): ReferenceResult {
   const extent = validateRoom(scene);
+  if (typeof scene.room.reflectance !== 'object' || scene.room.reflectance === null) throw new ReferenceInputError('room.reflectance: expected an object with one entry per surface');
   const reflectance = {} as Record<SurfaceName, Rgb>;
-  for (const name of SURFACE_NAMES) reflectance[name] = toRgb(scene.room.reflectance?.[name], `room.reflectance.${name}`);
+  for (const name of SURFACE_NAMES) reflectance[name] = toRgb(scene.room.reflectance[name], `room.reflectance.${name}`);
   if (!Array.isArray(scene.luminaires)) throw new ReferenceInputError('luminaires: expected an array');
   const sources = referencePointSources(scene, photometries, options);
   const grid = makePatchGrid(extent, choosePatchSize(extent, options));
@@ -158,6 +160,10 @@ export function solveBoxReference(
   }
   const tolerance = options.tolerance ?? 1e-6;
   const maxSweeps = options.maxSweeps ?? 20_000;
+  if (!(tolerance > 0 && tolerance < 1)) throw new ReferenceInputError(`reference options: tolerance must be in (0, 1), got ${tolerance}`);
+  if (!Number.isInteger(maxSweeps) || maxSweeps < 1) throw new ReferenceInputError(`reference options: maxSweeps must be an integer ≥ 1, got ${maxSweeps}`);
+  const relTol = options.directRelTol ?? 1e-3;
+  if (!(relTol > 0 && relTol < 1)) throw new ReferenceInputError(`reference options: directRelTol must be in (0, 1), got ${relTol}`);
 
   // Direct light: patch means. Quadrature errors are judged against the room's
   // mean direct illuminance Φ/S, so dark patches are not refined for nothing.
@@ -165,7 +171,7 @@ export function solveBoxReference(
   const area = 2 * (extent[0] * extent[1] + extent[0] * extent[2] + extent[1] * extent[2]);
   const meanDirect = sources.reduce((sum, s) => sum + gridFlux(s.photometry) * Math.max(...s.scale), 0) / area;
   const quadrature: PatchAverageOptions = {
-    relTol: options.directRelTol ?? 1e-3,
+    relTol,
     absTol: 1e-4 * meanDirect,
     maxDepth: 6,
     maxCellAngle: maxCellAngle(sources),

@@ -216,6 +216,9 @@ describe('bad input and extremes', () => {
     expect(() => solveBoxReference({ version: 1, room: room(3, -1, 3, 0.5), luminaires: [] }, iso)).toThrow(/room\.height/);
     expect(() => solveBoxReference({ version: 1, room: room(3, 2, 3, 0.5), luminaires: [] }, iso, { patchSize: 0 })).toThrow(/patchSize/);
     expect(() => solveBoxReference({ version: 1, room: room(100, 10, 100, 0.5), luminaires: [] }, iso, { patchSize: 0.05 })).toThrow(/patches exceed/);
+    expect(() => solveBoxReference({ version: 1, room: room(3, 2, 3, 0.5), luminaires: [] }, iso, { tolerance: 0 })).toThrow(/tolerance/);
+    expect(() => solveBoxReference({ version: 1 } as LightingScene, iso)).toThrow(ReferenceInputError);
+    expect(() => solveBoxReference({ version: 1, room: room(3, 2.5, 3, 0.5), luminaires: [lum('iso', [1, 1, 1], { dimming: NaN })] }, iso)).toThrow(/luminaires\[0\]\.dimming/);
   });
   it('rejects sample points off the surfaces', () => {
     const r = solveBoxReference({ version: 1, room: room(3, 2.5, 3, 0.5), luminaires: [] }, iso, { patchSize: 1 });
