@@ -8,12 +8,14 @@ import type { Catalog } from './catalogSchema';
 import { formatPath } from './catalogSchema';
 import type { Configuration } from './configuration';
 import { setRoom } from './actions/roomActions';
+import { setReflectance } from './actions/surfaceActions';
 import { deleteSystem, moveSystem, placePreset, rotateSystem, setSuspension } from './actions/systemActions';
 import { addRail, removeRail, setDistribution, setRailLength } from './actions/railActions';
 import { addModule, removeModule, setModuleBeam, setModuleCct, setModuleDimming, setModuleType } from './actions/moduleActions';
 
 export const actionDefinitions = {
   setRoom,
+  setReflectance,
   placePreset,
   deleteSystem,
   moveSystem,

@@ -8,8 +8,9 @@
 import { z } from 'zod';
 import { InputError } from '../inputError';
 import { DISTRIBUTIONS, formatPath, type Catalog } from './catalogSchema';
-import type { Configuration } from './configuration';
-import { SURFACE_NAMES } from './lightingScene';
+import { DEFAULT_REFLECTANCE, type Configuration } from './configuration';
+import { SURFACE_NAMES, type Reflectance, type SurfaceName } from './lightingScene';
+import { capReflectance } from './reflectance';
 import { validate } from './validate';
 
 export const SCENE_FILE_FORMAT = 'luxbox-configuration';
@@ -21,6 +22,11 @@ export class SceneFileError extends InputError {
   override name = 'SceneFileError';
 }
 
+/**
+ * Read side of a reflectance: [0, 1) as version 1 files have always allowed. Channels above
+ * MAX_REFLECTANCE (0.95, src/model/reflectance.ts) in files written before that cap are lowered
+ * to it on load (normaliseRoom), so old files keep loading; new files never hold them.
+ */
 const reflectance = z.union([z.number().min(0).lt(1), z.tuple([z.number().min(0).lt(1), z.number().min(0).lt(1), z.number().min(0).lt(1)])]);
 const id = z.string().regex(/^[A-Za-z0-9_-]{1,64}$/, 'must be 1-64 letters, digits, _ or -');
 
@@ -29,7 +35,10 @@ const configurationSchema = z.object({
     width: z.number(),
     depth: z.number(),
     height: z.number(),
-    reflectance: z.object(Object.fromEntries(SURFACE_NAMES.map((s) => [s, reflectance])) as Record<(typeof SURFACE_NAMES)[number], typeof reflectance>),
+    // Optional per surface and as a whole: a hand-written file may leave out the finishes, which then default.
+    reflectance: z
+      .object(Object.fromEntries(SURFACE_NAMES.map((s) => [s, reflectance.optional()])) as Record<(typeof SURFACE_NAMES)[number], z.ZodOptional<typeof reflectance>>)
+      .optional(),
   }),
   systems: z.array(
     z.object({
@@ -115,10 +124,17 @@ export function configurationFromData(data: unknown, catalog: Catalog, source = 
     throw new SceneFileError(`${source}: ${formatPath(issue.path)}: ${issue.message}`);
   }
   if (r.data.catalog !== catalog.id) throw new SceneFileError(`${source} was made for catalog '${r.data.catalog}', but this configurator uses '${catalog.id}'`);
-  const config = r.data.configuration as Configuration;
+  const config = normaliseRoom(r.data.configuration);
   const problems = validate(config, catalog);
   if (problems.length > 0) throw new SceneFileError(`${source}: configuration.${problems[0].path}: ${problems[0].message}`);
   return config;
+}
+
+/** Fills left-out reflectances with DEFAULT_REFLECTANCE and caps legacy values above MAX_REFLECTANCE. */
+function normaliseRoom(data: SceneFile['configuration']): Configuration {
+  const given: Partial<Record<SurfaceName, Reflectance>> = data.room.reflectance ?? {};
+  const reflectance = Object.fromEntries(SURFACE_NAMES.map((s) => [s, capReflectance(given[s] ?? DEFAULT_REFLECTANCE[s])])) as Record<SurfaceName, Reflectance>;
+  return { ...data, room: { ...data.room, reflectance } } as Configuration;
 }
 
 /** base64url (RFC 4648 §5, no padding) of the compact scene-file JSON, for share links. */

@@ -6,6 +6,8 @@
  */
 import { onGrid, type Catalog } from './catalogSchema';
 import { ROOM_LIMITS, type Configuration, type LightSystem } from './configuration';
+import { SURFACE_NAMES } from './lightingScene';
+import { reflectanceProblem } from './reflectance';
 import { rectCorners, rectsOverlap, systemElements, railModuleOffsets } from './geometry';
 
 export interface Problem {
@@ -34,6 +36,11 @@ export function roomProblems(config: Configuration): Problem[] {
     if (!Number.isFinite(v) || v < min || v > max) {
       out.push({ code: 'room-dimension', path: `room.${key}`, message: `room ${key} must be between ${min} and ${max} m (got ${v})` });
     }
+  }
+  const reflectance = (config.room.reflectance ?? {}) as Record<string, unknown>;
+  for (const surface of SURFACE_NAMES) {
+    const problem = reflectanceProblem(reflectance[surface]);
+    if (problem) out.push({ code: 'reflectance', path: `room.reflectance.${surface}`, message: problem });
   }
   return out;
 }

@@ -10,6 +10,7 @@ import { bindAction } from '../../src/model/actionDefinitions';
 import { billOfMaterials } from '../../src/model/billOfMaterials';
 import { createConfiguration, type Configuration } from '../../src/model/configuration';
 import { DISTRIBUTIONS } from '../../src/model/catalogSchema';
+import { MAX_REFLECTANCE, SURFACE_TARGETS, reflectanceRgb } from '../../src/model/reflectance';
 import { toLightingScene } from '../../src/model/toLightingScene';
 import { validate } from '../../src/model/validate';
 import { catalog } from './helpers';
@@ -24,7 +25,7 @@ interface Step {
 }
 
 const unit = fc.double({ min: 0, max: 1, noNaN: true });
-const step = fc.record({ kind: fc.nat(21), i: fc.nat(50), j: fc.nat(50), a: unit, b: unit, c: unit });
+const step = fc.record({ kind: fc.nat(22), i: fc.nat(50), j: fc.nat(50), a: unit, b: unit, c: unit });
 
 const pick = <T>(xs: readonly T[], i: number, fallback: T): T => (xs.length ? xs[i % xs.length] : fallback);
 
@@ -80,6 +81,10 @@ function toAction(s: Configuration, st: Step): [string, unknown] {
       return ['setModuleBeam', { moduleId: mod, beam: pick(catalog.moduleTypes.flatMap((t) => t.beams.map((b) => b.id)), st.j, 'x') }];
     case 20:
       return ['setModuleDimming', { moduleId: mod, dimming: -0.2 + 1.4 * st.a }];
+    case 21:
+      // Grey or RGB finishes from the integer fields (the unit doubles cluster at their ends);
+      // some step past the 0.95 cap or below 0.
+      return ['setReflectance', { surface: SURFACE_TARGETS[st.j % SURFACE_TARGETS.length], value: st.c < 0.5 ? 0.02 * st.i - 0.04 : [(st.i % 20) / 20, 0.02 * st.j, st.i % 3 === 0 ? 0.97 : 0.3] }];
     default:
       return ['setRailLength', { railId: rail, length: 0.5 + 0.1 * (st.j % 26) }];
   }
@@ -88,6 +93,7 @@ function toAction(s: Configuration, st: Step): [string, unknown] {
 describe('always-valid property', () => {
   it('enabled actions keep validate() empty; refused ones would break it', () => {
     const counts = { enabled: 0, refused: 0 };
+    const finishes = { enabled: 0, refused: 0 };
     fc.assert(
       fc.property(unit, unit, unit, fc.array(step, { minLength: 5, maxLength: 30 }), (a, b, c, steps) => {
         let s = createConfiguration({ width: 2 + a * 8, depth: 2 + b * 8, height: 2.4 + c * 2 });
@@ -96,6 +102,7 @@ describe('always-valid property', () => {
           const [name, params] = toAction(s, st);
           const action = bindAction(name, params, catalog);
           const e = action.isEnabled(s);
+          if (name === 'setReflectance') finishes[e === true ? 'enabled' : 'refused']++;
           if (e === true) {
             counts.enabled++;
             s = action.perform(s);
@@ -114,7 +121,9 @@ describe('always-valid property', () => {
           }
         }
         // derived outputs of any reachable state are finite
-        for (const l of toLightingScene(s, catalog).luminaires) expect([...l.position, l.yaw, l.roll].every(Number.isFinite)).toBe(true);
+        const scene = toLightingScene(s, catalog);
+        for (const l of scene.luminaires) expect([...l.position, l.yaw, l.roll].every(Number.isFinite)).toBe(true);
+        for (const r of Object.values(scene.room.reflectance)) expect(reflectanceRgb(r).every((v) => v >= 0 && v <= MAX_REFLECTANCE)).toBe(true);
         expect(Number.isFinite(billOfMaterials(s, catalog).total)).toBe(true);
       }),
       { seed: 20240917, numRuns: 2000 },
@@ -122,5 +131,7 @@ describe('always-valid property', () => {
     // both branches were exercised in bulk
     expect(counts.enabled).toBeGreaterThan(6000);
     expect(counts.refused).toBeGreaterThan(6000);
+    expect(finishes.enabled).toBeGreaterThan(500);
+    expect(finishes.refused).toBeGreaterThan(40);
   }, 120_000);
 });

@@ -1,0 +1,32 @@
+/**
+ * The room's surface finishes: one reflectance for a surface, or the same for
+ * all four walls at once. Refused only for values outside [0, MAX_REFLECTANCE]
+ * per channel, so any finish from the list (or any sane custom value) is
+ * always accepted; geometry is never affected.
+ */
+import { z } from 'zod';
+import { refuse, type ActionDefinition } from '../action';
+import type { Reflectance, SurfaceName } from '../lightingScene';
+import { SURFACE_TARGETS, reflectanceProblem, targetSurfaces } from '../reflectance';
+
+const setReflectanceParams = z.object({
+  surface: z.enum(SURFACE_TARGETS),
+  /** Grey (one number) or linear RGB, each channel in [0, 0.95]. */
+  value: z.union([z.number(), z.tuple([z.number(), z.number(), z.number()])]),
+});
+
+export const setReflectance: ActionDefinition<z.infer<typeof setReflectanceParams>> = {
+  name: 'setReflectance',
+  label: 'Surface finish',
+  params: setReflectanceParams,
+  isEnabled(_state, p) {
+    const problem = reflectanceProblem(p.value);
+    return problem === null ? true : refuse(`${p.surface}: ${problem}`);
+  },
+  perform(state, p) {
+    const reflectance: Record<SurfaceName, Reflectance> = { ...state.room.reflectance };
+    // Copy RGB arrays so the configuration never shares a mutable array with the caller.
+    for (const s of targetSurfaces(p.surface)) reflectance[s] = typeof p.value === 'number' ? p.value : [p.value[0], p.value[1], p.value[2]];
+    return { ...state, room: { ...state.room, reflectance } };
+  },
+};
