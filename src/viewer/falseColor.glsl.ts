@@ -4,9 +4,22 @@ const vec = (k: number[]) => `vec3(${k.slice(0, 3).join(', ')}), vec3(${k.slice(
 
 /**
  * False-colour illuminance with isolines (see falseColorScale.ts for the scale
- * and legend, which this mirrors). Isolines: where log(E) crosses a level,
- * within one pixel, measured with screen-space derivatives so lines keep a
- * constant width whatever the distance.
+ * and legend, which this mirrors).
+ *
+ * Isolines are drawn where log(E) crosses a level, within about one pixel,
+ * measured with screen-space derivatives (fwidth) so lines keep a constant
+ * width whatever the distance. A line is only drawn where its position is
+ * well-conditioned; it fades out
+ * - where the surface is seen at a grazing angle (|cos| of the view angle
+ *   below ~0.3): a wall seen edge-on compresses metres of gradient into a few
+ *   pixels, and its lines collapse into a smear along the room outline;
+ * - where neighbouring levels would be less than ~3 pixels apart (log E
+ *   changes by more than log(2)/3 per pixel; log(2) is the smallest ratio of
+ *   two 1–2–5 levels): lines that close merge into dark bands.
+ * The caller passes the illuminance for the lines separately from the one
+ * for the colour, so it can smooth it: a level crossing in a nearly flat
+ * field moves with every percent of Monte-Carlo noise (roomView.ts averages
+ * the neighbouring texels).
  */
 export const falseColorGlsl = /* glsl */ `
 #define LUX_MAX_LEVELS ${MAX_LEVELS}
@@ -30,17 +43,20 @@ float luxLegendPosition(float lux) {
   }
   return 1.0;
 }
-vec3 luxFalseColor(float lux) {
-  vec3 color = luxTurbo(luxLegendPosition(lux));
-  float l = log(max(lux, 1e-6));
-  float w = max(fwidth(l), 1e-5);
+// Opacity 0..1 of the isolines at log-illuminance l; w = fwidth(l) (change per pixel); facing = |cos| of the view angle.
+float luxIsolineAlpha(float l, float w, float facing) {
+  float width = max(w, 1e-5);
   float line = 0.0;
   for (int i = 0; i < LUX_MAX_LEVELS; i++) {
     if (i >= uLevelCount) break;
-    line = max(line, 1.0 - smoothstep(0.5, 1.5, abs(l - log(uLevels[i])) / w));
+    line = max(line, 1.0 - smoothstep(0.5, 1.5, abs(l - log(uLevels[i])) / width));
   }
-  // Where lux changes by a large factor per pixel (grazing views of a wall), lines would merge into smears: fade them.
-  line *= 1.0 - smoothstep(0.15, 0.4, w);
-  return mix(color, vec3(0.05), line * 0.85);
+  float spacingPx = 0.6931 / width;
+  return line * smoothstep(2.0, 3.5, spacingPx) * smoothstep(0.12, 0.3, facing);
+}
+vec3 luxFalseColor(float lux, float lineLux, float facing) {
+  vec3 color = luxTurbo(luxLegendPosition(lux));
+  float l = log(max(lineLux, 1e-6));
+  return mix(color, vec3(0.05), luxIsolineAlpha(l, fwidth(l), facing) * 0.85);
 }
 `;

@@ -12,17 +12,27 @@ export type ViewMode = 'light' | 'lux';
 
 const surfaceVertex = /* glsl */ `
 out vec2 vUv;
+out vec3 vWorld;
 void main() {
   vUv = uv;
+  vWorld = (modelMatrix * vec4(position, 1.0)).xyz;
   gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
 }
 `;
 
-/** Surface: stored illuminance E (RGB lux) → luminance ρE/π → display, or false-colour lux. */
+/**
+ * Surface: stored illuminance E (RGB lux) → luminance ρE/π → display, or
+ * false-colour lux. In lux mode the isolines follow E averaged over the 4×4
+ * texels around the point (four bilinear taps one texel off diagonally): the
+ * fill keeps every texel's value, the lines do not wiggle with the noise of
+ * the indirect light (falseColor.glsl.ts).
+ */
 const surfaceFragment = /* glsl */ `
 precision highp float;
 in vec2 vUv;
+in vec3 vWorld;
 uniform sampler2D uIlluminance;
+uniform vec3 uNormal;
 uniform vec3 uReflectance;
 uniform float uExposure;
 uniform int uMode;
@@ -32,8 +42,12 @@ ${falseColorGlsl}
 void main() {
   vec3 E = max(texture(uIlluminance, vUv).rgb, 0.0);
   if (uMode == 1) {
-    float lux = dot(E, vec3(0.2126, 0.7152, 0.0722));
-    fragColor = vec4(luxFalseColor(lux), 1.0);
+    const vec3 Y = vec3(0.2126, 0.7152, 0.0722);
+    vec2 t = 1.0 / vec2(textureSize(uIlluminance, 0));
+    vec3 Es = texture(uIlluminance, vUv + vec2(t.x, t.y)).rgb + texture(uIlluminance, vUv + vec2(-t.x, t.y)).rgb
+            + texture(uIlluminance, vUv + vec2(t.x, -t.y)).rgb + texture(uIlluminance, vUv - t).rgb;
+    float facing = abs(dot(uNormal, normalize(cameraPosition - vWorld)));
+    fragColor = vec4(luxFalseColor(dot(E, Y), max(dot(Es, Y), 0.0) * 0.25, facing), 1.0);
   } else {
     vec3 L = uReflectance * E / 3.14159265358979;
     fragColor = vec4(luxDisplay(L, uExposure), 1.0);
@@ -142,6 +156,7 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
       fragmentShader: surfaceFragment,
       uniforms: {
         uIlluminance: { value: null },
+        uNormal: { value: new THREE.Vector3(...layout.normal) },
         uReflectance: { value: new THREE.Vector3(0.5, 0.5, 0.5) },
         uExposure: exposure,
         uMode: mode,

@@ -111,9 +111,9 @@ describe('false colour', () => {
     const padded = [...levels, ...new Array(MAX_LEVELS - levels.length).fill(1)];
     const uniforms = { uLevels: { value: padded }, uLevelCount: { value: levels.length } };
     // Constant input over the quad: no screen-space variation, so only an exact level crossing draws a line.
-    const onLevel = runShader(new Array(N).fill(levels[3]), falseColorGlsl, 'c = luxFalseColor(x);', uniforms)[N >> 1];
+    const onLevel = runShader(new Array(N).fill(levels[3]), falseColorGlsl, 'c = luxFalseColor(x, x, 1.0);', uniforms)[N >> 1];
     const between = Math.sqrt(levels[3] * levels[4]);
-    const offLevel = runShader(new Array(N).fill(between), falseColorGlsl, 'c = luxFalseColor(x);', uniforms)[N >> 1];
+    const offLevel = runShader(new Array(N).fill(between), falseColorGlsl, 'c = luxFalseColor(x, x, 1.0);', uniforms)[N >> 1];
     const swatch = turbo(legendPosition(between, levels)).map((v) => v * 255);
     const line = turbo(legendPosition(levels[3], levels)).map((v) => (v * 0.15 + 0.05 * 0.85) * 255);
     for (let k = 0; k < 3; k++) {
@@ -121,5 +121,32 @@ describe('false colour', () => {
       expect(Math.abs(onLevel[k] - line[k])).toBeLessThanOrEqual(1.01);
     }
     expect(Math.max(...onLevel)).toBeLessThan(60);
+  });
+
+  it('isolines fade out where they are ill-conditioned: grazing views, lines under ~2 px apart; and follow the line illuminance, not the fill', () => {
+    const levels = luxLevels(3000);
+    const padded = [...levels, ...new Array(MAX_LEVELS - levels.length).fill(1)];
+    const uniforms = { uLevels: { value: padded }, uLevelCount: { value: levels.length } };
+    const between = Math.sqrt(levels[3] * levels[4]);
+    const swatch = turbo(legendPosition(levels[3], levels)).map((v) => v * 255);
+    const near = (a: number[], b: number[]) => a.every((v, k) => Math.abs(v - b[k]) <= 1.01);
+    // At a level, seen at 80° from the normal (|cos| 0.17 < 0.3): no line, the fill colour.
+    const grazing = runShader(new Array(N).fill(levels[3]), falseColorGlsl, 'c = luxFalseColor(x, x, 0.05);', uniforms)[N >> 1];
+    expect(near(grazing, swatch)).toBe(true);
+    // At |cos| 0.3 and above the line is fully drawn (same as head-on).
+    const head = runShader(new Array(N).fill(levels[3]), falseColorGlsl, 'c = luxFalseColor(x, x, 1.0);', uniforms)[N >> 1];
+    const at30 = runShader(new Array(N).fill(levels[3]), falseColorGlsl, 'c = luxFalseColor(x, x, 0.3);', uniforms)[N >> 1];
+    expect(near(at30, head)).toBe(true);
+    // The line follows the second argument: fill between levels, line illuminance on a level → dark.
+    const lineOnly = runShader(new Array(N).fill(between), falseColorGlsl, `c = luxFalseColor(x, ${levels[3].toFixed(6)}, 1.0);`, uniforms)[N >> 1];
+    expect(Math.max(...lineOnly)).toBeLessThan(60);
+    // Alpha as a function of the per-pixel change w of log E: exactly on a level, w = log(2)/1.5 (levels 1.5 px apart) → 0;
+    // w = log(2)/4 (4 px apart) → 1; w = log(2)/2.75 (midway in the fade) → between.
+    const alpha = (w: number) => runShader(new Array(N).fill(levels[3]), falseColorGlsl, `c = vec3(luxIsolineAlpha(log(x), ${w.toFixed(6)}, 1.0));`, uniforms)[N >> 1][0] / 255;
+    expect(alpha(Math.LN2 / 1.5)).toBeLessThanOrEqual(1 / 255);
+    expect(alpha(Math.LN2 / 4)).toBeGreaterThanOrEqual(254 / 255);
+    const mid = alpha(Math.LN2 / 2.75);
+    expect(mid).toBeGreaterThan(0.2);
+    expect(mid).toBeLessThan(0.8);
   });
 });
