@@ -13,7 +13,7 @@ export interface LazyView3DProps {
 
 function Message({ text, onBack, testId }: { text: string; onBack: () => void; testId: string }) {
   return (
-    <section className="view3d-placeholder" role="alert" data-testid={testId}>
+    <section className="view3d-message" role="alert" data-testid={testId}>
       <div>
         <p>{text}</p>
         <button type="button" className="btn btn-primary" onClick={onBack}>
