@@ -1,5 +1,9 @@
 import { useId, useState } from 'react';
-import { DEFAULT_ROOM, ROOM_LIMITS } from '../model/configuration';
+import { defaultSurfaceFinishes } from '../catalog/surfaceFinishes';
+import { DEFAULT_REFLECTANCE, DEFAULT_ROOM, ROOM_LIMITS } from '../model/configuration';
+import type { Reflectance, SurfaceName } from '../model/lightingScene';
+import { WALL_NAMES, sameReflectance, targetSurfaces, type SurfaceTarget } from '../model/reflectance';
+import { FinishSelect } from '../planner/FinishSelect';
 
 export interface RoomDimensions {
   width: number;
@@ -30,9 +34,14 @@ export function roomFieldError(key: Field, raw: string): string | null {
   return null;
 }
 
+/** What the first page produces: the dimensions and the finishes of the user's room. */
+export interface RoomSetupResult extends RoomDimensions {
+  reflectance: Record<SurfaceName, Reflectance>;
+}
+
 export interface RoomSetupProps {
-  initial?: Partial<RoomDimensions>;
-  onSubmit: (room: RoomDimensions) => void;
+  initial?: Partial<RoomSetupResult>;
+  onSubmit: (room: RoomSetupResult) => void;
   onDemo: () => void;
   /** Present when a saved configuration exists. */
   onResume?: () => void;
@@ -46,6 +55,10 @@ export function RoomSetup({ initial, onSubmit, onDemo, onResume }: RoomSetupProp
     depth: String(initial?.depth ?? DEFAULT_ROOM.depth),
     height: String(initial?.height ?? DEFAULT_ROOM.height),
   });
+  const [reflectance, setReflectance] = useState<Record<SurfaceName, Reflectance>>({ ...DEFAULT_REFLECTANCE, ...initial?.reflectance });
+  const wallsAlike = WALL_NAMES.every((w) => sameReflectance(reflectance[w], reflectance.north));
+  const chooseFinish = (target: SurfaceTarget) => (f: { reflectance: Reflectance }) =>
+    setReflectance((r) => ({ ...r, ...Object.fromEntries(targetSurfaces(target).map((s) => [s, f.reflectance])) }));
   const [touched, setTouched] = useState<Record<Field, boolean>>({ width: false, depth: false, height: false });
   const errors: Record<Field, string | null> = {
     width: roomFieldError('width', values.width),
@@ -65,11 +78,11 @@ export function RoomSetup({ initial, onSubmit, onDemo, onResume }: RoomSetupProp
           setTouched({ width: true, depth: true, height: true });
           if (!valid) return;
           const num = (k: Field) => Number(values[k].trim().replace(',', '.'));
-          onSubmit({ width: num('width'), depth: num('depth'), height: num('height') });
+          onSubmit({ width: num('width'), depth: num('depth'), height: num('height'), reflectance });
         }}
       >
         <h2 id={`${id}-title`}>Your room</h2>
-        <p>Enter the inside dimensions of the room in metres. You can place lighting systems in the next step.</p>
+        <p>Enter the inside dimensions of the room in metres and pick its finishes. You can place lighting systems in the next step.</p>
         <div className="setup-fields">
           {FIELDS.map(({ key, label, hint }) => {
             const err = touched[key] ? errors[key] : null;
@@ -99,6 +112,14 @@ export function RoomSetup({ initial, onSubmit, onDemo, onResume }: RoomSetupProp
             );
           })}
         </div>
+        <fieldset className="setup-finishes">
+          <legend>Surfaces</legend>
+          <div className="finish-list">
+            <FinishSelect id={`${id}-floor`} label="Floor" use="floor" value={reflectance.floor} finishes={defaultSurfaceFinishes} onChoose={chooseFinish('floor')} testId="setup-finish-floor" />
+            <FinishSelect id={`${id}-walls`} label="Walls" use="walls" value={wallsAlike ? reflectance.north : null} finishes={defaultSurfaceFinishes} onChoose={chooseFinish('walls')} testId="setup-finish-walls" />
+            <FinishSelect id={`${id}-ceiling`} label="Ceiling" use="ceiling" value={reflectance.ceiling} finishes={defaultSurfaceFinishes} onChoose={chooseFinish('ceiling')} testId="setup-finish-ceiling" />
+          </div>
+        </fieldset>
         <div className="setup-actions">
           <button type="submit" className="btn btn-primary" aria-disabled={!valid || undefined}>
             Start planning

@@ -5,6 +5,8 @@ import { modulePlacements, rectCorners, systemElements, type PlanRect } from '..
 import { moduleFootprint, modulePhotometryPath } from './moduleFootprint';
 import type { FootprintSource } from './footprintSource';
 import { cctTint } from './cctTint';
+import { floorTint } from './finishColour';
+import { defaultSurfaceFinishes } from '../catalog/surfaceFinishes';
 import { gridStep } from './detailLevel';
 import type { PlanPoint, PlanView } from './viewTransform';
 import type { SelectionPath } from './selection';
@@ -108,7 +110,7 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
         </clipPath>
       </defs>
       <g transform={`matrix(${view.scale} 0 0 ${view.scale} ${view.offsetX} ${view.offsetY})`}>
-        <rect x={0} y={0} width={width} height={depth} fill="#ffffff" />
+        <rect x={0} y={0} width={width} height={depth} fill={floorTint(config.room.reflectance.floor, defaultSurfaceFinishes)} data-testid="plan-floor" />
         {gridLines.map((l, i) => (
           <line key={i} x1={l.x1} y1={l.z1} x2={l.x2} y2={l.z2} stroke={l.major ? '#d3d8e0' : '#eceff3'} strokeWidth={1} vectorEffect="non-scaling-stroke" />
         ))}

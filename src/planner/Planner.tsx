@@ -9,6 +9,8 @@ import { OptionsPanel } from './OptionsPanel';
 import { PlanControls } from './PlanControls';
 import { PlanSvg } from './PlanSvg';
 import { PresetPanel } from './PresetPanel';
+import { SurfacesPanel } from './SurfacesPanel';
+import { defaultSurfaceFinishes } from '../catalog/surfaceFinishes';
 import { LazyView3D } from '../viewer/LazyView3D';
 import { createActionGate } from './actionGate';
 import { detailLevel } from './detailLevel';
@@ -216,6 +218,7 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, footprints }: P
         <aside className={`side-panel${panelOpen ? ' open' : ''}`} aria-label="Presets and price">
           {optionsOpen && <OptionsPanel config={config} catalog={catalog} path={path} gate={gate} onClose={() => ui.setState({ optionsOpen: false })} />}
           <PresetPanel catalog={catalog} gate={gate} onPlaced={placedNew} />
+          <SurfacesPanel room={config.room} finishes={defaultSurfaceFinishes} gate={gate} />
           <BomPanel bom={bom} locale={locale} />
           <section className="panel-section">
             <div className="setup-actions">
