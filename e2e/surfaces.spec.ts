@@ -26,7 +26,7 @@ test('choose finishes on setup and in the Surfaces panel; undo, redo, reload kee
   const floor = page.getByTestId('finish-floor');
   await floor.selectOption('dark-slate');
   await expect.poll(async () => (await bakedReflectance(page)).floor).toEqual(SLATE);
-  await expect(page.getByTestId('plan-floor')).toHaveAttribute('fill', '#cccdd0');
+  await expect(page.getByTestId('plan-floor')).toHaveAttribute('fill', '#e5e6e7');
   await expect(page.getByTestId('finish-walls')).toHaveValue('sage-green');
 
   await page.getByTestId('tool-undo').click();

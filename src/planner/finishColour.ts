@@ -27,7 +27,7 @@ export function finishColour(value: Reflectance, finishes: readonly SurfaceFinis
  * The plan's floor fill: the floor colour mixed with white (in sRGB bytes, `amount` of the
  * colour), light enough that grid lines, rails and light footprints stay readable on a dark floor.
  */
-export function floorTint(value: Reflectance, finishes: readonly SurfaceFinish[], amount = 0.3): string {
+export function floorTint(value: Reflectance, finishes: readonly SurfaceFinish[], amount = 0.15): string {
   const c = finishColour(value, finishes);
   const bytes = [1, 3, 5].map((i) => parseInt(c.slice(i, i + 2), 16));
   return hex(bytes.map((b) => Math.round(255 + (b - 255) * amount)));

@@ -33,9 +33,9 @@ describe('finish colours', () => {
     // the linear toe ends at 0.0031308: 12.92·0.0031308 = 0.04045 → 10 = 0x0a
     expect(finishColour([0, 0.0031308, 1], finishes)).toBe('#000aff');
   });
-  it('the plan tint mixes 30 % of the floor colour into white', () => {
-    // slate #545961: 255 + (84 − 255)·0.3 = 203.7 → cc; 89 → 205.2 → cd; 97 → 207.6 → d0
-    expect(floorTint(slate.reflectance, finishes)).toBe('#cccdd0');
+  it('the plan tint mixes 15 % of the floor colour into white', () => {
+    // slate #545961: 255 + (84 − 255)·0.15 = 229.35 → e5; 89 → 230.1 → e6; 97 → 231.3 → e7
+    expect(floorTint(slate.reflectance, finishes)).toBe('#e5e6e7');
     expect(floorTint(0.8, finishes, 1)).toBe('#e7e7e7');
     expect(floorTint(0.8, finishes, 0)).toBe('#ffffff');
   });
