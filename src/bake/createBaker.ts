@@ -1,5 +1,6 @@
 import { SURFACE_NAMES, type Rgb, type SurfaceName, type Vec3 } from '../model/lightingScene';
 import type { Photometry } from '../photometry/types';
+import { tiltMultiplier } from '../photometry/tilt';
 import { blurFragment, combineFragment } from '../../shaders/passes.glsl';
 import { LUMINANCE_WEIGHTS, type BakedMaps } from './bakedMaps';
 import { toRgb, type BakeScene } from './bakeScene';
@@ -179,7 +180,8 @@ function startJob(
   let pointSourceCount = 0;
   const lamps = scene.luminaires.flatMap((l) => {
     const profile = table.layouts[profileIndex.get(l.photometry)!];
-    const dimming = l.dimming ?? 1;
+    // TILT data (LM-63 TILT=INCLUDE/<file>) scales the whole grid for a pitched lamp.
+    const dimming = (l.dimming ?? 1) * tiltMultiplier(l.photometry, l.pitch);
     const color = l.color ?? [1, 1, 1];
     if (profile.peakCandela <= 0 || dimming <= 0 || color.every((c) => c <= 0)) return [];
     const rotation = luminaireRotation(l.yaw, l.pitch, l.roll);

@@ -7,6 +7,6 @@ export { parseIes } from './parseIes';
 export { parseLdt } from './parseLdt';
 export { intensity } from './intensity';
 export { integrateFlux } from './flux';
-export { tiltFactorAt } from './tilt';
+export { tiltFactorAt, tiltMultiplier } from './tilt';
 export { beamAndField, peakIntensity, type BeamField } from './beam';
 export { cctToLinearRgb, planckianXyz, ColorTemperatureError, CCT_MIN_K, CCT_MAX_K } from './cct';

@@ -1,5 +1,6 @@
 import type { LightingScene, Rgb, Vec3 } from '../model/lightingScene';
 import type { Photometry } from '../photometry/types';
+import { tiltMultiplier } from '../photometry/tilt';
 import { apply, luminaireToWorld, worldToLuminaire, type Mat3 } from './luminaireRotation';
 import { ReferenceInputError } from './referenceInputError';
 
@@ -104,7 +105,8 @@ export function referencePointSources(
       }
     }
     if (offsets.length === 0) offsets.push([0, 0, 0]);
-    const share = dimming / offsets.length;
+    // TILT data scales the grid for a pitched lamp (LM-63-2002 §5.11; see tiltMultiplier).
+    const share = (dimming * tiltMultiplier(ph, lum.pitch)) / offsets.length;
     for (const off of offsets) {
       const o = apply(toWorld, off);
       // Cells of an opening touching a wall could poke through it; keep them inside.
