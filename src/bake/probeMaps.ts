@@ -1,4 +1,4 @@
-import { type SurfaceName, type Vec3 } from '../model/lightingScene';
+import { type Rgb, type SurfaceName, type Vec3 } from '../model/lightingScene';
 import { LUMINANCE_WEIGHTS, type BakedMaps } from './bakedMaps';
 import type { SurfaceLayout } from './surfaceLayout';
 
@@ -28,8 +28,8 @@ export function nearestSurface(room: { width: number; height: number; depth: num
   return best;
 }
 
-/** Bilinear lookup between texel centres (clamped at the borders) of an RGB map; returns lux (Y). */
-export function bilinearLux(layout: SurfaceLayout, rgb: Float32Array, u: number, v: number): number {
+/** Bilinear lookup between texel centres (clamped at the borders) of an RGB map at surface coordinates (u, v) in metres. */
+export function bilinearRgb(layout: SurfaceLayout, rgb: Float32Array, u: number, v: number): Rgb {
   const fx = Math.min(layout.width - 1, Math.max(0, (u / layout.lengthU) * layout.width - 0.5));
   const fy = Math.min(layout.height - 1, Math.max(0, (v / layout.lengthV) * layout.height - 0.5));
   const x0 = Math.floor(fx);
@@ -38,11 +38,19 @@ export function bilinearLux(layout: SurfaceLayout, rgb: Float32Array, u: number,
   const y1 = Math.min(layout.height - 1, y0 + 1);
   const tx = fx - x0;
   const ty = fy - y0;
-  const lux = (x: number, y: number) => {
-    const o = (y * layout.width + x) * 3;
-    return LUMINANCE_WEIGHTS[0] * rgb[o] + LUMINANCE_WEIGHTS[1] * rgb[o + 1] + LUMINANCE_WEIGHTS[2] * rgb[o + 2];
-  };
-  return (lux(x0, y0) * (1 - tx) + lux(x1, y0) * tx) * (1 - ty) + (lux(x0, y1) * (1 - tx) + lux(x1, y1) * tx) * ty;
+  const out: Rgb = [0, 0, 0];
+  for (let c = 0; c < 3; c++) {
+    const a = rgb[(y0 * layout.width + x0) * 3 + c] * (1 - tx) + rgb[(y0 * layout.width + x1) * 3 + c] * tx;
+    const b = rgb[(y1 * layout.width + x0) * 3 + c] * (1 - tx) + rgb[(y1 * layout.width + x1) * 3 + c] * tx;
+    out[c] = a * (1 - ty) + b * ty;
+  }
+  return out;
+}
+
+/** Bilinear lookup of an RGB map, as lux (photometric Y; Y is linear in RGB, so interpolating first is exact). */
+export function bilinearLux(layout: SurfaceLayout, rgb: Float32Array, u: number, v: number): number {
+  const [r, g, b] = bilinearRgb(layout, rgb, u, v);
+  return LUMINANCE_WEIGHTS[0] * r + LUMINANCE_WEIGHTS[1] * g + LUMINANCE_WEIGHTS[2] * b;
 }
 
 export interface ProbeValue {

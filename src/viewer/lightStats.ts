@@ -1,6 +1,6 @@
 import type { BakeScene } from '../bake/bakeScene';
 import { LUMINANCE_WEIGHTS } from '../bake/bakedMaps';
-import type { SurfaceLayout } from '../bake/surfaceLayout';
+import { bilinearRgb } from '../bake/probeMaps';
 import type { LightingScene, Rgb, Vec3 } from '../model/lightingScene';
 import type { Photometry } from '../photometry/types';
 import { directIlluminanceAt } from '../reference/directIlluminance';
@@ -45,24 +45,6 @@ export function floorStats(lit: LitMaps): IlluminanceStats {
   return statsOf(lux);
 }
 
-/** Bilinear lookup of an RGB map at plan (u, v) in metres (texel centres as in surfaceLayout.ts). */
-function sampleMap(layout: SurfaceLayout, rgb: Float32Array, u: number, v: number): Rgb {
-  const fx = Math.min(layout.width - 1, Math.max(0, (u / layout.lengthU) * layout.width - 0.5));
-  const fy = Math.min(layout.height - 1, Math.max(0, (v / layout.lengthV) * layout.height - 0.5));
-  const x0 = Math.floor(fx);
-  const y0 = Math.floor(fy);
-  const x1 = Math.min(layout.width - 1, x0 + 1);
-  const y1 = Math.min(layout.height - 1, y0 + 1);
-  const tx = fx - x0;
-  const ty = fy - y0;
-  const out: Rgb = [0, 0, 0];
-  for (let c = 0; c < 3; c++) {
-    const a = rgb[(y0 * layout.width + x0) * 3 + c] * (1 - tx) + rgb[(y0 * layout.width + x1) * 3 + c] * tx;
-    const b = rgb[(y1 * layout.width + x0) * 3 + c] * (1 - tx) + rgb[(y1 * layout.width + x1) * 3 + c] * tx;
-    out[c] = a * (1 - ty) + b * ty;
-  }
-  return out;
-}
 
 /**
  * Illuminance on a horizontal work plane at `height` metres, on a grid of
@@ -108,8 +90,8 @@ export function workPlaneStats(scene: BakeScene, lit: LitMaps, height: number, s
       const x = ((i + 0.5) / nx) * width;
       const z = ((k + 0.5) / nz) * depth;
       directIlluminanceAt(sources, [x, height, z], up, e);
-      const t = sampleMap(floor, total, x, z);
-      const d = sampleMap(floor, direct, x, z);
+      const t = bilinearRgb(floor, total, x, z);
+      const d = bilinearRgb(floor, direct, x, z);
       values[k * nx + i] = Y(e[0], e[1], e[2]) + Math.max(0, Y(t[0] - d[0], t[1] - d[1], t[2] - d[2]));
     }
   }
