@@ -7,7 +7,13 @@ export default defineConfig({
   plugins: [react()],
   server: { port: 5173, strictPort: false, host: true },
   preview: { port: 4173, strictPort: true },
-  build: { outDir: 'dist', sourcemap: true, chunkSizeWarningLimit: 1200 },
+  build: {
+    outDir: 'dist',
+    sourcemap: true,
+    chunkSizeWarningLimit: 1200,
+    // Two pages: the app at / and the shop-page embedding example at /embed.html (docs/embedding.md).
+    rolldownOptions: { input: { main: 'index.html', embed: 'embed.html' } },
+  },
   test: {
     include: ['tests/**/*.test.ts', 'tests/**/*.test.tsx'],
     environment: 'node',

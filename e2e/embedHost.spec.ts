@@ -1,0 +1,184 @@
+import { expect, test, type Page } from '@playwright/test';
+
+// The shop page of embed.html (src/embedDemo) mounts luxbox with its own room, locale, catalog and
+// autosave key, and reads everything through the public API (docs/embedding.md). These tests
+// drive that page like a shopper and like the host's own script (window.shopDemo.instance).
+
+/** Intl puts no-break spaces (U+00A0, U+202F) into prices; compare with plain spaces. */
+const plain = (s: string | null) => (s ?? '').replace(/[\u00a0\u202f]/g, ' ').trim();
+
+async function text(page: Page, testId: string): Promise<string> {
+  return plain(await page.getByTestId(testId).textContent());
+}
+
+const errors: string[] = [];
+test.beforeEach(({ page }) => {
+  errors.length = 0;
+  page.on('console', (m) => {
+    if (m.type() === 'error') errors.push(m.text());
+  });
+  page.on('pageerror', (e) => errors.push(e.message));
+});
+test.afterEach(() => {
+  expect(errors, 'console errors on the shop page').toEqual([]);
+});
+
+async function bomTotal(page: Page): Promise<number> {
+  return page.evaluate(() => window.shopDemo!.instance!.getBillOfMaterials().total);
+}
+
+test('mounts with the host room and locale; the host total follows actions run by name', async ({ page }) => {
+  await page.goto('/embed.html');
+  // The room passed as an option, not the configurator's default and not its room-setup page.
+  await expect(page.getByTestId('plan')).toBeVisible();
+  await expect(page.locator('.room-label')).toHaveText('Room 5.5 × 4.2 × 2.7 m');
+  await expect(page.getByTestId('plan-svg')).toHaveAttribute('aria-label', /^Room plan, 5\.5 by 4\.2 m/);
+  expect(plain(await page.getByTestId('header-total').textContent())).toBe('0,00 €');
+  expect(await text(page, 'host-total')).toBe('0,00 €');
+
+  // Disabled action, reported with the model's reason: the 6 m line does not fit a 5.5 m room.
+  const longLine = page.getByTestId('host-action-long-line');
+  await expect(longLine).toBeDisabled();
+  await expect(page.getByTestId('host-action-note-long-line')).toHaveText("no free space for 'Long line' in this room");
+  const listed = await page.evaluate(() => window.shopDemo!.instance!.listActions({ placePreset: { presetId: 'long-line' } }).find((a) => a.name === 'placePreset'));
+  expect(listed).toEqual({ name: 'placePreset', label: expect.any(String), enabled: false, reason: "no free space for 'Long line' in this room" });
+  expect(await page.evaluate(() => window.shopDemo!.instance!.runAction('placePreset', { presetId: 'long-line' }))).toEqual({ ok: false, reason: "no free space for 'Long line' in this room" });
+
+  // A host button runs placePreset by name. Expected: 1.5 m rail 40 + 60·1.5 = 130, 2 suspension
+  // kits 2·18, 1 power feed 65, 3 narrow spots 3·189 (catalog prices) = 798 EUR, in de-DE format.
+  await expect(page.getByTestId('host-action-single')).toBeEnabled();
+  await page.getByTestId('host-action-single').click();
+  await expect(page.getByTestId('host-total')).toHaveText(/^798,00\s€$/);
+  expect(plain(await page.getByTestId('header-total').textContent())).toBe('798,00 €');
+  expect(await page.evaluate(() => window.shopDemo!.changes)).toBe(1);
+  await expect(page.getByTestId('host-bom').locator('tr')).toHaveCount(4);
+
+  // An action run from the host's script: onChange alone brings the host's total up to date.
+  const run = await page.evaluate(() => window.shopDemo!.instance!.runAction('placePreset', { presetId: 'corner-l' }));
+  expect(run).toEqual({ ok: true });
+  const total = await bomTotal(page);
+  expect(total).toBeGreaterThan(1000);
+  const expected = new Intl.NumberFormat('de-DE', { style: 'currency', currency: 'EUR' }).format(total);
+  await expect(page.getByTestId('host-total')).toHaveText(expected);
+  // German grouping and decimal comma, e.g. "1.234,50 €".
+  expect(await text(page, 'host-total')).toMatch(/^\d{1,3}(\.\d{3})+,\d{2} €$/);
+  expect(plain(await page.getByTestId('header-total').textContent())).toBe(plain(expected));
+  expect(await page.evaluate(() => window.shopDemo!.changes)).toBe(2);
+
+  // Undo from the host page goes back to the single rail.
+  await page.getByTestId('host-undo').click();
+  await expect(page.getByTestId('host-total')).toHaveText(/^798,00\s€$/);
+
+  // The shop's autosave key is used; the standalone app's is never touched.
+  const keys = await page.evaluate(() => Object.keys(localStorage).sort());
+  expect(keys).toEqual(['lichtwerk.luxbox.de.v1']);
+});
+
+test('add to cart copies the bill of materials into the host cart', async ({ page }) => {
+  await page.goto('/embed.html');
+  await expect(page.getByTestId('add-to-cart')).toBeDisabled();
+  await page.getByTestId('host-action-single').click();
+  await page.getByTestId('add-to-cart').click();
+  const bom = await page.evaluate(() => window.shopDemo!.instance!.getBillOfMaterials());
+  const cart = page.getByTestId('cart').locator('li');
+  await expect(cart).toHaveCount(bom.lines.length);
+  for (const [i, line] of bom.lines.entries()) {
+    await expect(cart.nth(i).locator('.cart-article')).toHaveText(line.article);
+    await expect(cart.nth(i).locator('.cart-name')).toHaveText(`${line.count}× ${line.name}`);
+  }
+  expect(await text(page, 'cart-total')).toBe('798,00 €');
+  // Adding the same configuration again adds to the counts (same articles), not new lines.
+  await page.getByTestId('add-to-cart').click();
+  await expect(cart).toHaveCount(bom.lines.length);
+  await expect(cart.first().locator('.cart-name')).toHaveText(`${2 * bom.lines[0].count}× ${bom.lines[0].name}`);
+  expect(await text(page, 'cart-total')).toBe('1.596,00 €');
+});
+
+test('destroy() unmounts cleanly and a re-mount works and restores the autosave', async ({ page }) => {
+  await page.goto('/embed.html');
+  await page.getByTestId('host-action-single').click();
+  await expect(page.getByTestId('host-total')).toHaveText(/^798,00\s€$/);
+  const before = await page.evaluate(() => window.shopDemo!.instance!.getConfig());
+
+  // Keep the old handle to check it refuses use after destroy().
+  await page.evaluate(() => {
+    (window as unknown as { oldInstance: unknown }).oldInstance = window.shopDemo!.instance;
+  });
+  await page.getByTestId('toggle-configurator').click();
+  expect(await page.evaluate(() => window.shopDemo!.instance)).toBeNull();
+  expect(await page.getByTestId('configurator-host').evaluate((el) => el.childElementCount)).toBe(0);
+  await expect(page.getByTestId('plan')).toHaveCount(0);
+  await expect(page.getByTestId('host-action-single')).toBeDisabled();
+  const afterDestroy = await page.evaluate(() => {
+    try {
+      (window as unknown as { oldInstance: { getConfig(): string } }).oldInstance.getConfig();
+      return 'no error';
+    } catch (e) {
+      return (e as Error).message;
+    }
+  });
+  expect(afterDestroy).toBe('this luxbox instance was destroyed');
+
+  await page.getByTestId('toggle-configurator').click();
+  await expect(page.getByTestId('plan')).toBeVisible();
+  await expect(page.getByTestId('plan')).toHaveCount(1);
+  expect(await page.evaluate(() => window.shopDemo!.instance!.getConfig())).toBe(before);
+  await expect(page.getByTestId('host-total')).toHaveText(/^798,00\s€$/);
+  // The new instance is live: its actions and onChange work.
+  await page.getByTestId('host-action-corner-l').click();
+  await expect(page.getByTestId('host-total')).not.toHaveText(/^798,00\s€$/);
+  expect(await page.evaluate(() => JSON.parse(window.shopDemo!.instance!.getConfig()).configuration.systems.length)).toBe(2);
+});
+
+test('setConfig with a corrupt scene file throws a clear InputError and changes nothing', async ({ page }) => {
+  await page.goto('/embed.html');
+  await page.getByTestId('host-action-single').click();
+  await expect(page.getByTestId('host-total')).toHaveText(/^798,00\s€$/);
+  const result = await page.evaluate(() => {
+    const lx = window.shopDemo!.instance!;
+    const before = lx.getConfig();
+    const changesBefore = window.shopDemo!.changes;
+    const attempt = (input: string) => {
+      try {
+        lx.setConfig(input);
+        return null;
+      } catch (e) {
+        return { name: (e as Error).name, message: (e as Error).message };
+      }
+    };
+    const truncated = attempt(before.slice(0, before.length / 2));
+    const badRoom = attempt(before.replace(/"width":\s*5\.5/, '"width": -3'));
+    return { truncated, badRoom, unchanged: lx.getConfig() === before, changes: window.shopDemo!.changes - changesBefore };
+  });
+  expect(result.truncated?.name).toBe('SceneFileError');
+  expect(result.truncated?.message).toMatch(/^setConfig is not valid JSON/);
+  expect(result.badRoom?.name).toBe('SceneFileError');
+  expect(result.badRoom?.message).toMatch(/^setConfig: .*room.*width/);
+  expect(result.unchanged).toBe(true);
+  expect(result.changes).toBe(0);
+  expect(await text(page, 'host-total')).toBe('798,00 €');
+  await expect(page.locator('.room-label')).toHaveText('Room 5.5 × 4.2 × 2.7 m');
+});
+
+test("a shop's own catalog priced in CHF changes the prices shown (de-CH)", async ({ page }) => {
+  await page.goto('/embed.html?shop=ch');
+  await page.getByTestId('host-action-single').click();
+  // The Swiss price list is the EUR one × 0.95, rounded to 5 rappen: rail base 38 + 57·1.5 = 123.50,
+  // suspension 17.10 (×2), feed 61.75, narrow spot 179.55 (×3); sum 758.10 CHF (the EUR page shows 798,00 €).
+  const bom = await page.evaluate(() => window.shopDemo!.instance!.getBillOfMaterials());
+  expect(bom.currency).toBe('CHF');
+  expect(bom.lines.map((l) => [l.article, l.count, l.unitPrice])).toEqual([
+    ['LX-RAIL-1500', 1, 123.5],
+    ['LX-SUSP', 2, 17.1],
+    ['LX-FEED', 1, 61.75],
+    ['LX-SPOT-N12-3000', 3, 179.55],
+  ]);
+  expect(bom.total).toBe(758.1);
+  await expect(page.getByTestId('host-total')).toHaveText(/^CHF\s758\.10$/);
+  expect(plain(await page.getByTestId('header-total').textContent())).toBe('CHF 758.10');
+  expect(plain(await page.getByTestId('bom-total').textContent())).toBe('CHF 758.10');
+  // Swiss grouping (right single quote) once the total passes 1000.
+  await page.getByTestId('host-action-corner-l').click();
+  await expect(page.getByTestId('host-total')).toHaveText(/^CHF\s\d{1,3}(’\d{3})+\.\d{2}$/);
+  expect(await page.evaluate(() => Object.keys(localStorage))).toEqual(['lichtwerk.luxbox.ch.v1']);
+});
