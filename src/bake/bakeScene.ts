@@ -1,20 +1,12 @@
-import type { Rgb, SurfaceName, Vec3 } from '../model/lightingScene';
+import type { LightingLuminaire, Rgb, SurfaceName } from '../model/lightingScene';
 import type { Photometry } from '../photometry/types';
 
-/** One luminaire with its photometry already parsed (the baker reads no files). */
-export interface BakeLuminaire {
-  photometry: Photometry;
-  /** World position of the photometric centre, metres. */
-  position: Vec3;
-  /** Degrees; world = Ry(yaw) · Rx(pitch) · Ry(roll) · local (DESIGN.md). */
-  yaw: number;
-  pitch: number;
-  roll: number;
-  /** Intensity multiplier, default 1. */
-  dimming?: number;
-  /** Linear RGB multiplier, default [1, 1, 1]. */
-  color?: Rgb;
-}
+/**
+ * One luminaire with its photometry already parsed (the baker reads no files):
+ * a lighting-scene luminaire (position, yaw/pitch/roll, dimming, colour) whose
+ * `photometry` is the parsed model instead of a path.
+ */
+export type BakeLuminaire = Omit<LightingLuminaire, 'photometry' | 'id'> & { photometry: Photometry };
 
 /**
  * What the baker needs: the room and its luminaires. A reflectance is grey or

@@ -28,7 +28,7 @@ export interface SurfaceLayout {
 }
 
 /** (u axis, v axis, normal axis, sits on the max side of the normal axis) per surface, as in docs/baker.md. */
-const FRAMES: Record<SurfaceName, [0 | 1 | 2, 0 | 1 | 2, 0 | 1 | 2, boolean]> = {
+export const SURFACE_FRAMES: Record<SurfaceName, [0 | 1 | 2, 0 | 1 | 2, 0 | 1 | 2, boolean]> = {
   floor: [0, 2, 1, false],
   ceiling: [0, 2, 1, true],
   north: [0, 1, 2, false],
@@ -50,7 +50,7 @@ export function surfaceLayouts(
 ): SurfaceLayout[] {
   const dims = [room.width, room.height, room.depth];
   return SURFACE_NAMES.map((name, index) => {
-    const [u, v, n, onMax] = FRAMES[name];
+    const [u, v, n, onMax] = SURFACE_FRAMES[name];
     const origin: Vec3 = [0, 0, 0];
     origin[n] = onMax ? dims[n] : 0;
     const normal: Vec3 = [0, 0, 0];

@@ -1,6 +1,7 @@
 import { join } from 'node:path';
 import { createBaker, type Baker } from '../bake/createBaker';
 import { probeMaps } from '../bake/probeMaps';
+import { SURFACE_FRAMES } from '../bake/surfaceLayout';
 import { SURFACE_NAMES, type SurfaceName, type Vec3 } from '../model/lightingScene';
 import type { Photometry } from '../photometry/types';
 import { createHeadlessGL } from '../node/createHeadlessGL';
@@ -77,18 +78,9 @@ export interface BenchOptions {
 /** Comparison points: a regular grid of cell centres on every surface, about `spacing` apart. */
 export function samplePoints(room: { width: number; height: number; depth: number }, spacing: number): { surface: SurfaceName; point: Vec3 }[] {
   const ext = [room.width, room.height, room.depth];
-  // (u axis, v axis, normal axis, on the far side) as in docs/baker.md.
-  const frames: Record<SurfaceName, [number, number, number, boolean]> = {
-    floor: [0, 2, 1, false],
-    ceiling: [0, 2, 1, true],
-    north: [0, 1, 2, false],
-    south: [0, 1, 2, true],
-    west: [2, 1, 0, false],
-    east: [2, 1, 0, true],
-  };
   const out: { surface: SurfaceName; point: Vec3 }[] = [];
   for (const surface of SURFACE_NAMES) {
-    const [u, v, n, far] = frames[surface];
+    const [u, v, n, far] = SURFACE_FRAMES[surface];
     const nu = Math.max(2, Math.round(ext[u] / spacing));
     const nv = Math.max(2, Math.round(ext[v] / spacing));
     for (let j = 0; j < nv; j++) {

@@ -3,6 +3,7 @@ import type { Configuration } from '../model/configuration';
 import { ActionButton } from './ActionButton';
 import { CommitField } from './CommitField';
 import { DISTRIBUTION_LABELS } from './PlanControls';
+import { RailLengthField } from './RailLengthField';
 import type { ActionGate } from './actionGate';
 import type { SelectionPath } from './selection';
 
@@ -117,16 +118,7 @@ export function OptionsPanel({ config, catalog, path, gate, onClose }: OptionsPa
       <>
         <div className="field">
           <h3>Length (m)</h3>
-          <CommitField
-            label={`Rail ${railIndex + 1} length (m)`}
-            value={rail.length}
-            onCommit={(length) => {
-              const r = gate.reason('setRailLength', { railId: rail.id, length });
-              if (!r) gate.run('setRailLength', { railId: rail.id, length });
-              return r;
-            }}
-            onRefused={gate.explain}
-          />
+          <RailLengthField railId={rail.id} railNumber={railIndex + 1} length={rail.length} gate={gate} />
           <span className="empty-note">
             {catalog.rail.minLength}–{catalog.rail.maxLength} m in steps of {catalog.rail.step} m
           </span>

@@ -3,6 +3,7 @@ import { DISTRIBUTIONS, type Catalog, type Distribution } from '../model/catalog
 import type { Configuration, LightSystem } from '../model/configuration';
 import { modulePlacements, railPlacements, type PlanVec } from '../model/geometry';
 import { ActionButton } from './ActionButton';
+import { RailLengthField } from './RailLengthField';
 import { CommitField } from './CommitField';
 import type { ActionGate } from './actionGate';
 import type { DetailLevel } from './detailLevel';
@@ -130,16 +131,7 @@ function SystemLevelControls({ system, catalog, view, viewport, gate }: { system
         placed.push(box);
         return (
           <Positioned key={r.railId} at={pos} className="length-field" testId={`length-${r.railId}`}>
-            <CommitField
-              label={`Rail ${i + 1} length (m)`}
-              value={r.length}
-              onCommit={(length) => {
-                const reason = gate.reason('setRailLength', { railId: r.railId, length });
-                if (!reason) gate.run('setRailLength', { railId: r.railId, length });
-                return reason;
-              }}
-              onRefused={gate.explain}
-            />
+            <RailLengthField railId={r.railId} railNumber={i + 1} length={r.length} gate={gate} />
             <span aria-hidden>m</span>
           </Positioned>
         );
