@@ -7,8 +7,9 @@ cd "$(dirname "$0")/.."
 need_pkgs=()
 command -v chromium >/dev/null 2>&1 || need_pkgs+=(chromium)
 command -v xvfb-run >/dev/null 2>&1 || need_pkgs+=(xvfb xauth)
-# headless-gl's native binding is compiled with node-gyp against these.
-for p in build-essential python3 pkg-config libxi-dev libglu1-mesa-dev libglew-dev libgl1-mesa-dri fonts-dejavu-core; do
+# headless-gl's native binding is compiled with node-gyp against these; the fonts are
+# listed so screenshot goldens see the same glyphs on every machine.
+for p in build-essential python3 pkg-config libxi-dev libglu1-mesa-dev libglew-dev libgl1-mesa-dri fonts-dejavu-core fonts-dejavu-extra fonts-liberation; do
   dpkg -s "$p" >/dev/null 2>&1 || need_pkgs+=("$p")
 done
 if [ ${#need_pkgs[@]} -gt 0 ]; then
