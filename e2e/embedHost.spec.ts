@@ -99,6 +99,10 @@ test('destroy() unmounts cleanly and a re-mount works and restores the autosave'
   await page.getByTestId('host-action-single').click();
   await expect(page.getByTestId('host-total')).toHaveText(/^798,00\s€$/);
   const before = await page.evaluate(() => window.shopDemo!.instance!.getConfig());
+  // Destroy while the 3D view is open and still refining: its WebGL work must stop without errors.
+  await page.getByTestId('tool-3d').click();
+  await expect(page.getByTestId('view3d-canvas')).toBeVisible();
+  await expect.poll(() => page.evaluate(() => window.shopDemo!.instance!.view3d().lit), { timeout: 90_000, intervals: [250] }).toBe(true);
 
   // Keep the old handle to check it refuses use after destroy().
   await page.evaluate(() => {
@@ -108,6 +112,7 @@ test('destroy() unmounts cleanly and a re-mount works and restores the autosave'
   expect(await page.evaluate(() => window.shopDemo!.instance)).toBeNull();
   expect(await page.getByTestId('configurator-host').evaluate((el) => el.childElementCount)).toBe(0);
   await expect(page.getByTestId('plan')).toHaveCount(0);
+  await expect(page.getByTestId('view3d-canvas')).toHaveCount(0);
   await expect(page.getByTestId('host-action-single')).toBeDisabled();
   const afterDestroy = await page.evaluate(() => {
     try {
