@@ -6,7 +6,7 @@
  * Run: xvfb-run -a npx tsx scripts/benchViewer.ts
  */
 import { spawn } from 'node:child_process';
-import { readdirSync, readFileSync } from 'node:fs';
+import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { gzipSync } from 'node:zlib';
 import { chromium } from 'playwright-core';
@@ -61,13 +61,37 @@ function relightVsRebake(presetId: string) {
   }
 }
 
+interface ManifestChunk {
+  file: string;
+  isEntry?: boolean;
+  src?: string;
+  imports?: string[];
+  css?: string[];
+}
+
+/**
+ * What the browser downloads: the app page's entry with every chunk it
+ * statically imports (preloaded) and their CSS; the 3D view is everything the
+ * lazy View3D chunk adds on top. Sizes are gzip -9 per file, summed, as a
+ * server would send them. Read from Vite's manifest (build.manifest).
+ */
 function bundleSizes() {
-  const html = readFileSync('dist/index.html', 'utf8');
-  const entry = /src="\/?(assets\/[^"]+\.js)"/.exec(html)?.[1];
-  if (!entry) throw new Error('dist/index.html has no entry script: run npx vite build');
+  const manifest = JSON.parse(readFileSync('dist/.vite/manifest.json', 'utf8')) as Record<string, ManifestChunk>;
+  const closure = (key: string, seen = new Set<string>()): Set<string> => {
+    if (seen.has(key)) return seen;
+    seen.add(key);
+    for (const dep of manifest[key]?.imports ?? []) closure(dep, seen);
+    return seen;
+  };
+  const files = (keys: Iterable<string>) => new Set([...keys].flatMap((k) => [manifest[k].file, ...(manifest[k].css ?? [])]));
   const gz = (f: string) => gzipSync(readFileSync(join('dist', f)), { level: 9 }).length;
-  const chunk = readdirSync('dist/assets').find((f) => /^View3D-.*\.js$/.test(f));
-  return { entry: gz(entry), entryRaw: readFileSync(join('dist', entry)).length, view3d: chunk ? gz(`assets/${chunk}`) : NaN, view3dRaw: chunk ? readFileSync(join('dist/assets', chunk)).length : NaN };
+  const raw = (f: string) => readFileSync(join('dist', f)).length;
+  const sum = (set: Set<string>, size: (f: string) => number) => [...set].reduce((t, f) => t + size(f), 0);
+  const initial = files(closure('index.html'));
+  const viewKey = Object.keys(manifest).find((k) => /View3D\.tsx$/.test(k));
+  if (!viewKey) throw new Error('no View3D chunk in dist/.vite/manifest.json: run npx vite build');
+  const view = new Set([...files(closure(viewKey))].filter((f) => !initial.has(f)));
+  return { entry: sum(initial, gz), entryRaw: sum(initial, raw), view3d: sum(view, gz), view3dRaw: sum(view, raw) };
 }
 
 async function toggleToFirstLit(): Promise<{ firstLit: number; done: number }[]> {
