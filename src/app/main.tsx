@@ -1,5 +1,6 @@
 import { mountLuxbox } from '../embed/mountLuxbox';
 import type { LuxboxInstance } from '../embed/types';
+import './page.css';
 
 declare global {
   interface Window {

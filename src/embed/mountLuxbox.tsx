@@ -18,6 +18,9 @@ import { EmbedOptionsError, resolveCatalog } from './resolveCatalog';
 export { EmbedOptionsError };
 import { getViewerStatus } from '../viewer/viewerStatus';
 
+/** Class on the element luxbox renders into: the scope of its stylesheet and its size container. */
+const ROOT_CLASS = 'luxbox';
+
 function currentHash(): string {
   return typeof location === 'undefined' ? '' : location.hash;
 }
@@ -80,6 +83,10 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
   };
 
   const footprints = createFootprintSource(options.assetBase ?? import.meta.env.BASE_URL);
+  // The class scopes every luxbox style rule to this element and makes it the container whose
+  // width the layout's breakpoints query (app.css); a class the host put there itself stays on destroy.
+  const hadRootClass = element.classList.contains(ROOT_CLASS);
+  element.classList.add(ROOT_CLASS);
   const root = createRoot(element);
   root.render(
     <StrictMode>
@@ -153,6 +160,7 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
       unsubscribeStore();
       listeners.clear();
       root.unmount();
+      if (!hadRootClass) element.classList.remove(ROOT_CLASS);
     },
   };
 }
