@@ -187,3 +187,91 @@ test("a shop's own catalog priced in CHF changes the prices shown (de-CH)", asyn
   await expect(page.getByTestId('host-total')).toHaveText(/^CHF\s\d{1,3}(['’]\d{3})+\.\d{2}$/);
   expect(await page.evaluate(() => Object.keys(localStorage))).toEqual(['lichtwerk.luxbox.ch.v1']);
 });
+
+test("luxbox's styles stay inside its root: the shop page keeps its own fonts, margins and box model", async ({ page }) => {
+  await page.goto('/embed.html');
+  await expect(page.getByTestId('plan')).toBeVisible();
+  // Open the 3D view so that its lazily loaded stylesheet is on the page too.
+  await page.getByTestId('tool-3d').click();
+  await expect(page.getByTestId('view3d-canvas')).toBeVisible();
+  const r = await page.evaluate(() => {
+    const root = document.getElementById('configurator')!;
+    const rules: CSSStyleRule[] = [];
+    const collect = (list: CSSRuleList) => {
+      for (const rule of Array.from(list)) {
+        if (rule instanceof CSSStyleRule) rules.push(rule);
+        else if ('cssRules' in rule) collect((rule as CSSGroupingRule).cssRules); // @container, @media
+      }
+    };
+    for (const sheet of Array.from(document.styleSheets)) collect(sheet.cssRules);
+    const all = Array.from(document.querySelectorAll('*'));
+    const outside = all.filter((el) => !root.contains(el)); // html, body and the shop's own elements
+    const inside = all.filter((el) => root.contains(el));
+    const matchesAny = (els: Element[], selector: string) => els.some((el) => el.matches(selector));
+    const foreign = rules.filter((rule) => !rule.selectorText.startsWith('body.shop'));
+    const shopBody = rules.find((rule) => rule.selectorText === 'body.shop')!.style;
+    const style = (el: Element) => {
+      const s = getComputedStyle(el);
+      return { fontFamily: s.fontFamily, fontSize: s.fontSize, color: s.color, backgroundColor: s.backgroundColor, lineHeight: s.lineHeight, boxSizing: s.boxSizing, margin: [s.marginTop, s.marginRight, s.marginBottom, s.marginLeft] };
+    };
+    return {
+      foreignRules: foreign.length,
+      foreignRulesStylingInside: foreign.filter((rule) => matchesAny(inside, rule.selectorText)).length,
+      leaks: foreign.filter((rule) => matchesAny(outside, rule.selectorText)).map((rule) => rule.selectorText),
+      declared: { fontFamily: shopBody.fontFamily, fontSize: shopBody.fontSize, color: shopBody.color, backgroundColor: shopBody.backgroundColor, margin: [shopBody.marginTop, shopBody.marginRight, shopBody.marginBottom, shopBody.marginLeft] },
+      body: style(document.body),
+      html: style(document.documentElement),
+      buyBox: style(document.querySelector('.buy-box')!),
+      hostBoxSizing: getComputedStyle(root).boxSizing,
+      appFont: getComputedStyle(root.querySelector('.app')!).fontFamily,
+    };
+  });
+  // The detector sees luxbox's rules at work inside its root (else the leak check below proves nothing)...
+  expect(r.foreignRules).toBeGreaterThan(100);
+  expect(r.foreignRulesStylingInside).toBeGreaterThan(50);
+  // ...and no rule other than the shop's own matches html, body or any shop element.
+  expect(r.leaks).toEqual([]);
+  // The body's computed style is exactly what the shop's CSS declares (Georgia, 15 px, margin 0, its colours)...
+  expect(r.declared.fontFamily).toMatch(/^Georgia/);
+  expect({ fontFamily: r.body.fontFamily, fontSize: r.body.fontSize, color: r.body.color, backgroundColor: r.body.backgroundColor, margin: r.body.margin }).toEqual(r.declared);
+  // ...and what it leaves unset keeps the browser's defaults (luxbox used to set 1.4 and border-box on them).
+  for (const s of [r.html, r.body, r.buyBox]) {
+    expect(s.lineHeight).toBe('normal');
+    expect(s.boxSizing).toBe('content-box');
+  }
+  expect(r.html.margin).toEqual(['0px', '0px', '0px', '0px']);
+  // The box the shop sized keeps the shop's box model; luxbox brings its own font inside it.
+  expect(r.hostBoxSizing).toBe('content-box');
+  expect(r.appFont).toMatch(/^system-ui/);
+});
+
+test('in the 860 px box on a 1440 px window the layout follows the box: side panel as a drawer, 3D view as wide as the box', async ({ page }) => {
+  await page.setViewportSize({ width: 1440, height: 900 });
+  await page.goto('/embed.html');
+  await expect(page.getByTestId('plan')).toBeVisible();
+  const host = page.getByTestId('configurator-host');
+  expect(await host.evaluate((el) => el.clientWidth)).toBe(860);
+  // Narrow layout (the one the standalone app has in a window this wide): the panel is a drawer
+  // behind the header's Presets button, and it opens inside the box.
+  const toggle = page.locator('.panel-toggle'); // reads 'Presets', then 'Close' while the drawer is open
+  const panel = page.getByRole('complementary', { name: 'Presets and price' });
+  await expect(toggle).toBeVisible();
+  await expect(toggle).toHaveText('Presets');
+  await expect(panel).toBeHidden();
+  await toggle.click();
+  await expect(panel).toBeVisible();
+  await expect(toggle).toHaveText('Close');
+  const [pb, hb] = [(await panel.boundingBox())!, (await host.boundingBox())!];
+  expect(pb.x).toBeGreaterThanOrEqual(hb.x);
+  expect(pb.x + pb.width).toBeLessThanOrEqual(hb.x + hb.width + 0.5);
+  expect(pb.width).toBe(340);
+  await toggle.click();
+  await expect(panel).toBeHidden();
+  // The 3D image takes the box's width (the viewer's panel goes below it), not 860 − 320 − 240 = 300 px.
+  await page.getByTestId('tool-3d').click();
+  const canvas = page.getByTestId('view3d-canvas');
+  await expect(canvas).toBeVisible();
+  const width = (await canvas.boundingBox())!.width;
+  expect(width).toBeGreaterThan(500);
+  expect(Math.abs(width - 860)).toBeLessThanOrEqual(1);
+});
