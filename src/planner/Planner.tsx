@@ -9,6 +9,7 @@ import { OptionsPanel } from './OptionsPanel';
 import { PlanControls } from './PlanControls';
 import { PlanSvg } from './PlanSvg';
 import { PresetPanel } from './PresetPanel';
+import { FilePanel } from './FilePanel';
 import { SurfacesPanel } from './SurfacesPanel';
 import { defaultSurfaceFinishes } from '../catalog/surfaceFinishes';
 import { LazyView3D } from '../viewer/LazyView3D';
@@ -229,6 +230,7 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, footprints }: P
                 New room
               </button>
             </div>
+            <FilePanel store={store} ui={ui} />
             {shareLink && (
               <div className="field" style={{ marginTop: 8 }}>
                 <label htmlFor="share-link">Link to this configuration</label>
