@@ -1,8 +1,8 @@
-import { DISTRIBUTIONS, type Catalog } from '../model/catalogSchema';
+import type { Catalog } from '../model/catalogSchema';
 import type { Configuration } from '../model/configuration';
 import { ActionButton } from './ActionButton';
 import { CommitField } from './CommitField';
-import { DISTRIBUTION_LABELS } from './PlanControls';
+import { DistributionButtons } from './DistributionButtons';
 import { RailLengthField } from './RailLengthField';
 import type { ActionGate } from './actionGate';
 import type { SelectionPath } from './selection';
@@ -124,18 +124,7 @@ export function OptionsPanel({ config, catalog, path, gate, onClose }: OptionsPa
           </span>
         </div>
         <Chips title="Module distribution">
-          {DISTRIBUTIONS.map((d) => (
-            <ActionButton
-              key={d}
-              label={DISTRIBUTION_LABELS[d].long}
-              pressed={rail.distribution === d}
-              disabledReason={rail.distribution === d ? null : gate.reason('setDistribution', { railId: rail.id, distribution: d })}
-              onPress={() => rail.distribution !== d && gate.run('setDistribution', { railId: rail.id, distribution: d })}
-              onDisabledPress={gate.explain}
-            >
-              {d}
-            </ActionButton>
-          ))}
+          <DistributionButtons railId={rail.id} current={rail.distribution} gate={gate} />
         </Chips>
         <Chips title="Add a module">
           {catalog.moduleTypes.map((t) => (

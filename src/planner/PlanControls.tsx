@@ -1,8 +1,9 @@
 import type { CSSProperties, ReactNode } from 'react';
-import { DISTRIBUTIONS, type Catalog, type Distribution } from '../model/catalogSchema';
+import type { Catalog } from '../model/catalogSchema';
 import type { Configuration, LightSystem } from '../model/configuration';
 import { modulePlacements, railPlacements, type PlanVec } from '../model/geometry';
 import { ActionButton } from './ActionButton';
+import { DistributionButtons } from './DistributionButtons';
 import { RailLengthField } from './RailLengthField';
 import { CommitField } from './CommitField';
 import type { ActionGate } from './actionGate';
@@ -35,13 +36,6 @@ const LENGTH_FIELD_BOX = { w: 104, h: 50 };
 
 type Box = { sx: number; sy: number; w: number; h: number };
 const overlaps = (a: Box, b: Box) => Math.abs(a.sx - b.sx) * 2 < a.w + b.w && Math.abs(a.sy - b.sy) * 2 < a.h + b.h;
-
-export const DISTRIBUTION_LABELS: Record<Distribution, { short: string; long: string }> = {
-  start: { short: '▮▮··', long: 'Start: packed from the rail start' },
-  'inside-centred': { short: '·▮·▮·', long: 'Inside-centred: each module centred in an equal share of the rail' },
-  'outside-centred': { short: '▮··▮', long: 'Outside-centred: outer modules at the ends, even spacing' },
-  end: { short: '··▮▮', long: 'End: packed against the rail end' },
-};
 
 /** Short label for a module type's switch button (its first word). */
 export function typeShortName(name: string): string {
@@ -175,19 +169,7 @@ function ModuleLevelControls({ system, catalog, view, viewport, selection, gate,
       if (visible(distPos, viewport)) {
         out.push(
           <Positioned key={`dist-${rail.id}`} at={distPos} className="chip-row" testId={`distribution-${rail.id}`}>
-            {DISTRIBUTIONS.map((d) => (
-              <ActionButton
-                key={d}
-                label={DISTRIBUTION_LABELS[d].long}
-                pressed={rail.distribution === d}
-                disabledReason={rail.distribution === d ? null : gate.reason('setDistribution', { railId: rail.id, distribution: d })}
-                onPress={() => rail.distribution !== d && gate.run('setDistribution', { railId: rail.id, distribution: d })}
-                onDisabledPress={gate.explain}
-                testId={`distribution-${rail.id}-${d}`}
-              >
-                <span aria-hidden>{DISTRIBUTION_LABELS[d].short}</span>
-              </ActionButton>
-            ))}
+            <DistributionButtons railId={rail.id} current={rail.distribution} gate={gate} compact />
           </Positioned>,
         );
       }
