@@ -1,20 +1,8 @@
 import { expect, test, type Page } from '@playwright/test';
 import { PNG } from 'pngjs';
+import type { ViewerStatus as Status } from '../src/viewer/viewerStatus';
 
 test.use({ reducedMotion: 'reduce', viewport: { width: 1280, height: 800 } });
-
-interface Status {
-  open: boolean;
-  lit: boolean;
-  done: boolean;
-  groupBakes: number;
-  relightsOnly: number;
-  frames: number;
-  firstLitMs: number | null;
-  lastRelightMs: number | null;
-  contextLosses: number;
-  floor: { avg: number; min: number; max: number; u0: number } | null;
-}
 
 const status = (page: Page): Promise<Status> => page.evaluate(() => window.luxbox!.view3d() as Status);
 
