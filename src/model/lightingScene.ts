@@ -1,5 +1,5 @@
 /**
- * Lighting scene, version 1: the contract between the configurator, the baker
+ * Lighting scene, versions 1 and 2: the contract between the configurator, the baker
  * and the command line (DESIGN.md, "Command-line contract"). Extend, never break.
  */
 export type Rgb = [number, number, number];
@@ -38,8 +38,20 @@ export interface LightingLuminaire {
   id?: string;
 }
 
+/**
+ * How a luminaire's light leaves it (version 2): 'split' (default) turns a luminous opening
+ * larger than 5 cm into a grid of point sources; 'point' uses one point source per luminaire
+ * (Radiance's ies2rad point model). DESIGN.md, "Version 2 of the lighting scene".
+ */
+export const NEAR_FIELD_MODELS = ['split', 'point'] as const;
+export type NearField = (typeof NEAR_FIELD_MODELS)[number];
+export const DEFAULT_NEAR_FIELD: NearField = 'split';
+
 export interface LightingScene {
-  version: 1;
+  /** 1, or 2 when the scene uses a version-2 field (nearField). */
+  version: 1 | 2;
+  /** Version 2 only; absent means DEFAULT_NEAR_FIELD ('split'). */
+  nearField?: NearField;
   room: LightingRoom;
   luminaires: LightingLuminaire[];
 }

@@ -1,8 +1,9 @@
-import { readFileSync } from 'node:fs';
+import { readFileSync, statSync } from 'node:fs';
 import { basename, dirname, resolve } from 'node:path';
 import type { BakeScene } from '../bake/bakeScene';
 import { LightingSceneError, parseLightingScene } from '../model/parseLightingScene';
 import type { LightingScene } from '../model/lightingScene';
+import { INPUT_LIMITS, parseUntrustedJson } from '../model/untrustedJson';
 import { parsePhotometry } from '../photometry/parsePhotometry';
 import type { Photometry } from '../photometry/types';
 
@@ -14,28 +15,25 @@ export interface LoadedLightingScene {
   bakeScene: BakeScene;
 }
 
-/** Line and column of a character offset, for JSON syntax errors. */
-function lineColumn(text: string, offset: number): string {
-  const before = text.slice(0, offset).split('\n');
-  return `line ${before.length}, column ${before[before.length - 1].length + 1}`;
-}
-
-/** Parse JSON text, reporting syntax errors as `file: line L, column C: message`. */
+/**
+ * Parse JSON text under the shared input limits (size, syntax with line and
+ * column, duplicate keys, nesting depth, array length), reporting problems as
+ * one line `file: where: problem`.
+ */
 export function parseJsonText(text: string, source: string): unknown {
-  try {
-    return JSON.parse(text);
-  } catch (error) {
-    const message = (error as Error).message;
-    const position = /position (\d+)/.exec(message);
-    const where = position ? `${lineColumn(text, Number(position[1]))}: ` : '';
-    throw new LightingSceneError(`${source}: ${where}invalid JSON (${message.replace(/ in JSON at position \d+.*$/, '')})`);
-  }
+  return parseUntrustedJson(text, source, (message) => new LightingSceneError(message));
 }
 
 function readText(path: string, what: string): string {
   try {
+    // Refuse a huge file before reading it (a mistaken argument: a video, a disk image).
+    const size = statSync(path).size;
+    if (size > INPUT_LIMITS.maxTextLength) {
+      throw new LightingSceneError(`${what}: file is too large (${(size / 1e6).toFixed(1)} MB; at most ${INPUT_LIMITS.maxTextLength / 1e6} MB)`);
+    }
     return readFileSync(path, 'utf8');
   } catch (error) {
+    if (error instanceof LightingSceneError) throw error;
     const code = (error as NodeJS.ErrnoException).code ?? 'read error';
     throw new LightingSceneError(`${what}: cannot read ${path} (${code === 'ENOENT' ? 'no such file' : code})`);
   }
