@@ -24,6 +24,8 @@ export interface BakeReport {
   /** Surfaces no luminaire can reach: their direct pass was skipped. */
   directSkipped: SurfaceName[];
   indirectEnabled: boolean;
+  /** Bright patches gathered exactly in bounce 1 (docs/baker.md) and the peakedness S·ΣM²A/(ΣMA)² of the exitance before and after taking them out. */
+  brightPatches?: { count: number; peakedness: number; residualPeakedness: number };
   samplesPerTexelPerBounce: number;
   bouncesComputed: number;
   /** Flux (lm, photometric Y) arriving on all surfaces: [direct, bounce 1, bounce 2, ...]. */
@@ -34,6 +36,8 @@ export interface BakeReport {
   linearFiltering: boolean;
   shaders: { pass: string; surface: SurfaceName | null; bytes: number; cached: boolean }[];
   timings_ms: { compile: number; direct: number; indirect: number; blur: number; blend: number; readback: number; total: number };
+  /** GPU → CPU read-backs this job made (readPixels calls) and the bytes they moved: 0 until the caller reads maps or this report. */
+  readbacks: { count: number; bytes: number };
 }
 
 /** A bake in progress: direct maps ready, indirect refined by `step` (for the browser, a few samples per frame). */

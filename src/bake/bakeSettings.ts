@@ -22,6 +22,19 @@ export interface BakeSettings {
   sourceSpacing: number;
   /** At most this many point sources along each side of an opening. */
   maxSourcesPerAxis: number;
+  /**
+   * Near field of a luminaire (docs/baker.md, "Luminous openings"): 'split' turns a
+   * luminous opening larger than sourceSpacing into a grid of point sources, 'point'
+   * keeps one point source per luminaire (Radiance ies2rad's point model). Unset:
+   * the scene's own `nearField` (BakeScene), else 'split'.
+   */
+  nearField?: 'split' | 'point';
+  /** At most this many bright tiles of the direct maps gathered exactly in bounce 1 (0 = pure Monte Carlo; docs/baker.md, "Bright patches"). */
+  brightPatches: number;
+  /** Direct light as the mean over each texel: at most this many sub-samples per texel edge near sources (1 = texel centre only). */
+  texelSupersampling: number;
+  /** Wait for the GPU after each pass so timings_ms attributes time to passes (profiling; costs a pipeline stall per pass). */
+  syncTimings: boolean;
 }
 
 export const DEFAULT_BAKE_SETTINGS: BakeSettings = {
@@ -35,6 +48,9 @@ export const DEFAULT_BAKE_SETTINGS: BakeSettings = {
   seed: 1,
   sourceSpacing: 0.05,
   maxSourcesPerAxis: 8,
+  brightPatches: 64,
+  texelSupersampling: 8,
+  syncTimings: false,
 };
 
 function check(ok: boolean, message: string): void {
@@ -52,6 +68,9 @@ export function resolveBakeSettings(partial: Partial<BakeSettings> = {}): BakeSe
   check(Number.isInteger(s.blurRadius) && s.blurRadius >= 0 && s.blurRadius <= 64, `blurRadius ${s.blurRadius} is not an integer in 0..64`);
   check(Number.isInteger(s.seed) && s.seed >= 0, `seed ${s.seed} is not a non-negative integer`);
   check(Number.isFinite(s.sourceSpacing) && s.sourceSpacing >= 0, `sourceSpacing ${s.sourceSpacing} must be ≥ 0`);
+  check(s.nearField === undefined || s.nearField === 'split' || s.nearField === 'point', `nearField "${String(s.nearField)}" is not split or point`);
+  check(Number.isInteger(s.brightPatches) && s.brightPatches >= 0 && s.brightPatches <= 1024, `brightPatches ${s.brightPatches} is not an integer in 0..1024`);
+  check(Number.isInteger(s.texelSupersampling) && s.texelSupersampling >= 1 && s.texelSupersampling <= 32, `texelSupersampling ${s.texelSupersampling} is not an integer in 1..32`);
   check(Number.isInteger(s.maxSourcesPerAxis) && s.maxSourcesPerAxis >= 1 && s.maxSourcesPerAxis <= 64, `maxSourcesPerAxis ${s.maxSourcesPerAxis} is not an integer in 1..64`);
   return s;
 }

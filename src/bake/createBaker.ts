@@ -2,11 +2,14 @@ import { SURFACE_NAMES, type Rgb, type SurfaceName, type Vec3 } from '../model/l
 import type { Photometry } from '../photometry/types';
 import { tiltMultiplier } from '../photometry/tilt';
 import { blurFragment, combineFragment } from '../../shaders/passes.glsl';
-import { LUMINANCE_WEIGHTS, type BakedMaps } from './bakedMaps';
+import { combineTailFragment } from '../../shaders/fluxReduce.glsl';
+import type { BakedMaps } from './bakedMaps';
 import { toRgb, type BakeScene } from './bakeScene';
 import { resolveBakeSettings, type BakeSettings } from './bakeSettings';
 import { generateDirectShader, type DirectLamp } from './generateDirectShader';
 import { generateGatherShader } from './generateGatherShader';
+import { brightPatchOptions, brightPatchReport, runBrightPatchPass } from './brightPatches';
+import { createFluxStatistics, type FluxRecord } from './fluxStatistics';
 import {
   bindTexture,
   clearTarget,
@@ -24,7 +27,7 @@ import { lampReachesSurface } from './lampReach';
 import { applyMat3, luminaireRotation } from './luminaireRotation';
 import { pointSources } from './pointSources';
 import { buildProfileTable, DATA_TEXTURE_WIDTH } from './profileTable';
-import { surfaceLayouts, texelArea, type SurfaceLayout } from './surfaceLayout';
+import { surfaceLayouts, type SurfaceLayout } from './surfaceLayout';
 import type { BakeJob, BakeProgress, BakeReport, Baker } from './bakeJob';
 
 export type { BakeJob, BakeProgress, BakeReport, Baker } from './bakeJob';
@@ -90,12 +93,20 @@ function startJob(
   const roomSize: Vec3 = [room.width, room.height, room.depth];
   const reflectance = SURFACE_NAMES.map((n) => toRgb(room.reflectance[n]));
   const layouts = surfaceLayouts(room, settings.texelSize, settings.maxTextureSize);
+  // Without syncTimings no pass waits for the GPU (a finish per pass is a full
+  // pipeline stall); the timings then measure submission, and the first
+  // read-back pays for the queued work.
   const timed = <T>(key: keyof typeof timings, f: () => T): T => {
     const s = performance.now();
     const r = f();
-    gl.finish();
+    if (settings.syncTimings) gl.finish();
     timings[key] += performance.now() - s;
     return r;
+  };
+  const readbacks = { count: 0, bytes: 0 };
+  const countRead = (bytes: number) => {
+    readbacks.count++;
+    readbacks.bytes += bytes;
   };
   const program = (source: string, pass: string, surface: SurfaceName | null): WebGLProgram => {
     const s = performance.now();
@@ -171,35 +182,29 @@ function startJob(
     }
   });
 
-  // Flux per channel and flux-weighted reflectance of a set of maps (for the tail).
-  const fluxStats = (maps: Float32Array[], scale: number): { flux: Rgb; reflected: Rgb } => {
-    const flux: Rgb = [0, 0, 0];
-    const reflected: Rgb = [0, 0, 0];
-    maps.forEach((rgb, s) => {
-      const a = texelArea(layouts[s]) * scale;
-      for (let i = 0; i < rgb.length; i++) {
-        const c = i % 3;
-        flux[c] += rgb[i] * a;
-        reflected[c] += rgb[i] * a * reflectance[s][c];
-      }
-    });
-    return { flux, reflected };
-  };
-  const yFlux = (f: Rgb) => LUMINANCE_WEIGHTS[0] * f[0] + LUMINANCE_WEIGHTS[1] * f[1] + LUMINANCE_WEIGHTS[2] * f[2];
+  // Flux statistics per bounce (for the tail and the report) stay on the GPU:
+  // record 0 is the direct light, record k bounce k.
   const maxRho = Math.max(...reflectance.flat());
-  const ratioOf = (st: { flux: Rgb; reflected: Rgb }): Rgb =>
-    [0, 1, 2].map((c) => (st.flux[c] > 0 ? Math.min(st.reflected[c] / st.flux[c], maxRho, 0.9999) : 0)) as Rgb;
+  const statistics = createFluxStatistics(gl, layouts, reflectance, settings.bounces + 1, countRead);
+  timed('blend', () => statistics.record(0, states.map((st) => st.direct), 1));
+  // Whether any light was emitted is known on the CPU: no read-back needed.
+  const anyDirect = directOverride
+    ? Object.values(directOverride).some((rgb) => rgb.some((v) => v > 0))
+    : lamps.length > 0 && directSkipped.length < states.length;
 
-  const directStats = timed('readback', () => fluxStats(states.map((st) => readRgb(gl, st.direct)), 1));
-  const bounceFlux = [yFlux(directStats.flux)];
-  let lastRatio = ratioOf(directStats);
-
-  const indirectEnabled = settings.bounces > 0 && maxRho > 0 && directStats.flux.some((f) => f > 0);
+  const indirectEnabled = settings.bounces > 0 && maxRho > 0 && anyDirect;
+  const combineTail = indirectEnabled ? program(combineTailFragment, 'combine', null) : null;
   const combine = program(combineFragment, 'combine', null);
   const blur = indirectEnabled && settings.blurRadius > 0 ? program(blurFragment, 'blur', null) : null;
   if (indirectEnabled) {
     for (const st of states) st.gather = program(generateGatherShader(st.layout, roomSize, reflectance), 'gather', st.layout.name);
   }
+  // Bounce 1 from the brightest tiles of the direct maps, exactly (brightPatches.ts).
+  const brightPass = indirectEnabled
+    ? timed('direct', () =>
+        runBrightPatchPass(gl, linear, layouts, reflectance, states.map((st) => st.direct), brightPatchOptions(settings), (source, pass) => program(source, pass, null)),
+      )
+    : null;
 
   let bounce = 0;
   let samplesDone = 0;
@@ -225,10 +230,13 @@ function startJob(
     const prog = st.gather!;
     drawInto(gl, st.acc[st.write], prog, () => {
       states.forEach((src, s) => {
-        const tex = src.input < 0 ? src.direct : src.acc[src.input];
+        const tex = src.input < 0 ? (brightPass?.residual[s] ?? src.direct) : src.acc[src.input];
         bindTexture(gl, prog, `uSource${s}`, s, tex.texture);
       });
       bindTexture(gl, prog, 'uAccumulated', 6, st.acc[st.read].texture);
+      const bright = st.input < 0 ? brightPass?.bright[st.layout.index] : null;
+      bindTexture(gl, prog, 'uBright', 7, (bright ?? st.acc[st.read]).texture);
+      gl.uniform1f(gl.getUniformLocation(prog, 'uBrightWeight'), bright ? 1 : 0);
       gl.uniform1i(gl.getUniformLocation(prog, 'uFirstSample'), first);
       gl.uniform1i(gl.getUniformLocation(prog, 'uSampleCount'), count);
       // The previous bounce is stored as the sum of its S samples: read it as lux.
@@ -249,9 +257,7 @@ function startJob(
         st.sumCurrent = next;
       }
     });
-    const stats = timed('readback', () => fluxStats(states.map((st) => readRgb(gl, st.acc[st.read])), inv));
-    bounceFlux.push(yFlux(stats.flux));
-    lastRatio = ratioOf(stats);
+    timed('blend', () => statistics.record(bounce + 1, states.map((st) => st.acc[st.read]), inv));
     bounce++;
     for (const st of states) {
       const finished = st.read;
@@ -290,19 +296,32 @@ function startJob(
    * progressive radiosity (Cohen, Chen, Wallace, Greenberg, SIGGRAPH 1988),
    * applied per channel with E_B's own distribution as the shape.
    */
-  const tailFactor = (): Rgb => (settings.tail ? (lastRatio.map((r) => r / (1 - r)) as Rgb) : [0, 0, 0]);
+  const runTail = (out: FloatTarget, sum: FloatTarget, part: FloatTarget, offset: number, tailScale: number) => {
+    const prog = combineTail!;
+    drawInto(gl, out, prog, () => {
+      bindTexture(gl, prog, 'uA', 0, sum.texture);
+      bindTexture(gl, prog, 'uB', 1, part.texture);
+      bindTexture(gl, prog, 'uStats', 2, statistics.stats.texture);
+      gl.uniform1i(gl.getUniformLocation(prog, 'uStatsIndex'), bounce);
+      gl.uniform3fv(gl.getUniformLocation(prog, 'uScaleA'), [1, 1, 1]);
+      gl.uniform3fv(gl.getUniformLocation(prog, 'uOffsetB'), [offset, offset, offset]);
+      const t = settings.tail ? tailScale : 0;
+      gl.uniform3fv(gl.getUniformLocation(prog, 'uTailB'), [t, t, t]);
+    });
+  };
 
   const finalize = () => {
     if (indirectEnabled) {
-      const f = tailFactor();
+      // The tail factor f = r/(1−r) of the last finished bounce is applied on
+      // the GPU from the stats row (fluxStatistics.ts).
       timed('blend', () => {
         for (const st of states) {
           const sum = st.sum[st.sumCurrent];
           if (samplesDone > 0) {
             // Bounce under way: its partial mean stands in for itself and the rest of the series.
-            runCombine(st.raw, sum, st.acc[st.read], [1, 1, 1], f.map((x) => (1 + x) / samplesDone) as Rgb);
+            runTail(st.raw, sum, st.acc[st.read], 1 / samplesDone, 1 / samplesDone);
           } else if (bounce > 0) {
-            runCombine(st.raw, sum, st.acc[st.input], [1, 1, 1], f.map((x) => x / settings.samples) as Rgb);
+            runTail(st.raw, sum, st.acc[st.input], 0, 1 / settings.samples);
           } else {
             runCombine(st.raw, sum, sum, [1, 1, 1], [0, 0, 0]);
           }
@@ -342,6 +361,7 @@ function startJob(
   };
 
   let disposed = false;
+  let records: FluxRecord[] | null = null;
   const job: BakeJob = {
     layouts,
     get progress() {
@@ -360,13 +380,21 @@ function startJob(
     },
     readMaps() {
       if (!finalized) finalize();
+      const read = (t: FloatTarget) => {
+        countRead(t.width * t.height * 16);
+        return readRgb(gl, t);
+      };
       return timed('readback', () =>
         Object.fromEntries(
-          states.map((st) => [st.layout.name, { layout: st.layout, direct: readRgb(gl, st.direct), indirect: readRgb(gl, st.indirect), total: readRgb(gl, st.total) }]),
+          states.map((st) => [st.layout.name, { layout: st.layout, direct: read(st.direct), indirect: read(st.indirect), total: read(st.total) }]),
         ) as BakedMaps,
       );
     },
     report() {
+      // One read-back of the stats row, only now (never between bounces).
+      if (!records || records.length !== bounce + 1) records = timed('readback', () => statistics.read(bounce + 1));
+      const lastRatio = records[bounce].ratio;
+      const tailFactor: Rgb = indirectEnabled && settings.tail ? (lastRatio.map((r) => r / (1 - r)) as Rgb) : [0, 0, 0];
       timings.total = performance.now() - t0;
       return {
         settings,
@@ -376,14 +404,16 @@ function startJob(
         pointSources: pointSourceCount,
         directSkipped,
         indirectEnabled,
+        brightPatches: brightPass ? brightPatchReport(brightPass.selection) : { count: 0, peakedness: 1, residualPeakedness: 1 },
         samplesPerTexelPerBounce: indirectEnabled ? settings.samples : 0,
         bouncesComputed: bounce,
-        bounceFlux,
+        bounceFlux: records.map((r) => r.fluxY),
         tailRatio: lastRatio,
-        tailFactor: indirectEnabled ? tailFactor() : [0, 0, 0],
+        tailFactor,
         linearFiltering: linear,
         shaders,
         timings_ms: { ...timings },
+        readbacks: { ...readbacks },
       };
     },
     dispose() {
@@ -392,7 +422,9 @@ function startJob(
       for (const st of states) {
         for (const t of [st.direct, ...st.sum, ...st.acc, st.raw, st.blurTemp, st.indirect, st.total]) deleteTarget(gl, t);
       }
+      statistics.dispose();
       if (dataTexture) gl.deleteTexture(dataTexture);
+      brightPass?.dispose();
     },
   };
   return job;

@@ -120,11 +120,17 @@ export function uploadRgb(gl: WebGL2RenderingContext, target: FloatTarget, rgb: 
   gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, target.width, target.height, gl.RGBA, gl.FLOAT, rgba);
 }
 
-/** Read a target back as RGB floats (3 per texel), row j = 0 first. */
-export function readRgb(gl: WebGL2RenderingContext, target: FloatTarget): Float32Array {
+/** Read a target back as RGBA floats (4 per texel), row j = 0 first: one readPixels, a full pipeline wait. */
+export function readRgba(gl: WebGL2RenderingContext, target: FloatTarget): Float32Array {
   const rgba = new Float32Array(target.width * target.height * 4);
   gl.bindFramebuffer(gl.FRAMEBUFFER, target.framebuffer);
   gl.readPixels(0, 0, target.width, target.height, gl.RGBA, gl.FLOAT, rgba);
+  return rgba;
+}
+
+/** Read a target back as RGB floats (3 per texel), row j = 0 first. */
+export function readRgb(gl: WebGL2RenderingContext, target: FloatTarget): Float32Array {
+  const rgba = readRgba(gl, target);
   const rgb = new Float32Array(target.width * target.height * 3);
   for (let i = 0; i < target.width * target.height; i++) {
     rgb[i * 3] = rgba[i * 4];
