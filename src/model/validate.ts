@@ -8,7 +8,7 @@ import { onGrid, type Catalog } from './catalogSchema';
 import { ROOM_LIMITS, type Configuration, type LightSystem } from './configuration';
 import { SURFACE_NAMES } from './lightingScene';
 import { reflectanceProblem } from './reflectance';
-import { rectCorners, rectsOverlap, systemElements, railModuleOffsets } from './geometry';
+import { rectCorners, rectsOverlap, systemElements, railModuleOffsets, type PlanRect } from './geometry';
 
 export interface Problem {
   /** Stable machine-readable code, e.g. 'outside-room'. */
@@ -22,10 +22,165 @@ export interface Problem {
 /** Float noise allowed at walls and grids (a nanometre). */
 const EPS = 1e-9;
 
-export function validate(config: Configuration, catalog: Catalog): Problem[] {
-  const problems: Problem[] = [...roomProblems(config), ...idProblems(config)];
-  config.systems.forEach((_, i) => problems.push(...systemProblems(config, i, catalog)));
+export interface ValidateOptions {
+  /**
+   * Stop at the first stage that finds a problem (room, ids, each system's own
+   * rules, room bounds, self-crossing, overlaps between systems) and, in the
+   * pair stages, at the first clash: what readers of untrusted files need (they
+   * report one problem), so a cheap problem is never hidden behind pair checks.
+   */
+  firstOnly?: boolean;
+  /** Counts the exact (separating-axis) rectangle tests, for tests of the broad phase. */
+  stats?: { pairTests: number };
+}
+
+/**
+ * All problems of a configuration, in a stable order: room, ids, then per
+ * system its own rules or else its geometry (outside, self-overlap, clashes
+ * with other systems). Pair checks use a uniform grid over the plan, so a hall
+ * with hundreds of rails costs O(n) exact rectangle tests, not O(n²).
+ */
+export function validate(config: Configuration, catalog: Catalog, options: ValidateOptions = {}): Problem[] {
+  const first = options.firstOnly === true;
+  const stats = options.stats ?? { pairTests: 0 };
+  const problems: Problem[] = roomProblems(config);
+  if (first && problems.length > 0) return problems;
+  problems.push(...idProblems(config));
+  if (first && problems.length > 0) return problems;
+  const n = config.systems.length;
+  const own = config.systems.map((s, i) => ownProblems(s, `systems[${i}]`, config.room.height, catalog));
+  if (first) {
+    const bad = own.find((p) => p.length > 0);
+    if (bad) return [...problems, ...bad];
+  }
+  // Geometry only for systems whose own rules hold (it needs sound references and numbers).
+  const elements = config.systems.map((s, i) => (own[i].length === 0 ? systemElements(s, catalog) : null));
+  const outside = config.systems.map((s, i) => {
+    const el = elements[i];
+    return el !== null && outsideRoom(el, config.room.width, config.room.depth) ? outsideProblem(s, i, config.room) : null;
+  });
+  if (first) {
+    const out = outside.find((p) => p !== null);
+    if (out) return [...problems, out];
+  }
+  // One grid over every element of every sound system: self-crossings (same
+  // system, chain elements more than one apart) and clashes between systems.
+  const rects: PlanRect[] = [];
+  const owner: number[] = [];
+  const chainIndex: number[] = [];
+  elements.forEach((el, i) => el?.forEach((group, a) => group.forEach((r) => (rects.push(r), owner.push(i), chainIndex.push(a)))));
+  const selfCrossing = new Set<number>();
+  const clashes = Array.from({ length: n }, () => new Set<number>());
+  forEachOverlap(rects, stats, (p, q) => {
+    const [i, j] = [owner[p], owner[q]];
+    if (i === j) {
+      if (Math.abs(chainIndex[p] - chainIndex[q]) < 3 || selfCrossing.has(i)) return 'skip';
+      selfCrossing.add(i);
+    } else {
+      if (clashes[i].has(j)) return 'skip';
+      clashes[i].add(j);
+      clashes[j].add(i);
+    }
+    return first ? 'stop' : 'continue';
+  }, (p, q) => {
+    // Cheap pre-filter: pairs whose answer is already known need no exact test.
+    const [i, j] = [owner[p], owner[q]];
+    return i === j ? Math.abs(chainIndex[p] - chainIndex[q]) >= 3 && !selfCrossing.has(i) : !clashes[i].has(j);
+  });
+  config.systems.forEach((s, i) => {
+    if (own[i].length > 0) return problems.push(...own[i]);
+    const at = `systems[${i}]`;
+    if (outside[i]) problems.push(outside[i]);
+    if (selfCrossing.has(i)) problems.push({ code: 'self-overlap', path: at, message: `system ${s.id} runs into itself` });
+    [...clashes[i]].sort((a, b) => a - b).forEach((j) => problems.push({ code: 'system-overlap', path: at, message: `system ${s.id} overlaps system ${config.systems[j].id}` }));
+  });
   return problems;
+}
+
+function outsideRoom(elements: PlanRect[][], width: number, depth: number): boolean {
+  return elements.flat().flatMap(rectCorners).some(([x, z]) => x < -EPS || x > width + EPS || z < -EPS || z > depth + EPS);
+}
+
+function outsideProblem(s: LightSystem, index: number, room: Configuration['room']): Problem {
+  return { code: 'outside-room', path: `systems[${index}]`, message: `system ${s.id} reaches outside the ${room.width} × ${room.depth} m room` };
+}
+
+interface Box {
+  minX: number;
+  minZ: number;
+  maxX: number;
+  maxZ: number;
+}
+
+function boxOf(r: PlanRect): Box {
+  const c = rectCorners(r);
+  const xs = c.map((p) => p[0]);
+  const zs = c.map((p) => p[1]);
+  return { minX: Math.min(...xs), minZ: Math.min(...zs), maxX: Math.max(...xs), maxZ: Math.max(...zs) };
+}
+
+/** Grid cell edge, metres: about a rail's length, so an element covers a few cells. */
+const CELL = 1;
+/** Elements spanning more cells than this per axis (a hostile catalog's 1 km rail) are tested against all. */
+const MAX_CELLS_PER_AXIS = 64;
+
+/**
+ * Calls `found(p, q)` for every pair of rectangles that overlap (rectsOverlap),
+ * each pair once, after `wanted(p, q)` says the pair still matters. Broad phase:
+ * a uniform grid of CELL-metre cells; a pair is examined only in the first
+ * cell both boxes share. Boxes that merely touch are never candidates, which is
+ * exact: touching or separated boxes mean separated or touching rectangles,
+ * and rectsOverlap calls touching rectangles disjoint.
+ */
+export function forEachOverlap(
+  rects: readonly PlanRect[],
+  stats: { pairTests: number },
+  found: (p: number, q: number) => 'continue' | 'skip' | 'stop',
+  wanted: (p: number, q: number) => boolean = () => true,
+): void {
+  const boxes = rects.map(boxOf);
+  const cells = new Map<string, number[]>();
+  const oversize: number[] = [];
+  const range = (b: Box) => [Math.floor(b.minX / CELL), Math.floor(b.maxX / CELL), Math.floor(b.minZ / CELL), Math.floor(b.maxZ / CELL)];
+  boxes.forEach((b, p) => {
+    const [x0, x1, z0, z1] = range(b);
+    if (!(x1 - x0 <= MAX_CELLS_PER_AXIS && z1 - z0 <= MAX_CELLS_PER_AXIS)) return oversize.push(p);
+    for (let x = x0; x <= x1; x++) {
+      for (let z = z0; z <= z1; z++) {
+        const key = `${x},${z}`;
+        const list = cells.get(key);
+        if (list) list.push(p);
+        else cells.set(key, [p]);
+      }
+    }
+  });
+  const test = (p: number, q: number): boolean => {
+    const a = boxes[p];
+    const b = boxes[q];
+    if (a.minX >= b.maxX || b.minX >= a.maxX || a.minZ >= b.maxZ || b.minZ >= a.maxZ) return true;
+    const [lo, hi] = p < q ? [p, q] : [q, p];
+    if (!wanted(lo, hi)) return true;
+    stats.pairTests++;
+    return !rectsOverlap(rects[lo], rects[hi]) || found(lo, hi) !== 'stop';
+  };
+  for (const [key, list] of cells) {
+    const [cx, cz] = key.split(',').map(Number);
+    for (let u = 0; u < list.length; u++) {
+      for (let v = u + 1; v < list.length; v++) {
+        const [a, b] = [boxes[list[u]], boxes[list[v]]];
+        // Examine the pair only in the first cell both boxes cover.
+        if (Math.max(Math.floor(a.minX / CELL), Math.floor(b.minX / CELL)) !== cx || Math.max(Math.floor(a.minZ / CELL), Math.floor(b.minZ / CELL)) !== cz) continue;
+        if (!test(list[u], list[v])) return;
+      }
+    }
+  }
+  const isOversize = new Set(oversize);
+  for (const p of oversize) {
+    for (let q = 0; q < rects.length; q++) {
+      if (q === p || (isOversize.has(q) && q < p)) continue;
+      if (!test(p, q)) return;
+    }
+  }
 }
 
 export function roomProblems(config: Configuration): Problem[] {
@@ -73,25 +228,29 @@ export function systemProblems(config: Configuration, index: number, catalog: Ca
   const at = `systems[${index}]`;
   const out = ownProblems(s, at, config.room.height, catalog);
   if (out.length > 0) return out; // geometry needs sound references and numbers
-  const { width, depth } = config.room;
   const elements = systemElements(s, catalog);
-  const outside = elements.flat().flatMap(rectCorners).some(([x, z]) => x < -EPS || x > width + EPS || z < -EPS || z > depth + EPS);
-  if (outside) out.push({ code: 'outside-room', path: at, message: `system ${s.id} reaches outside the ${width} × ${depth} m room` });
-  for (let a = 0; a < elements.length; a++) {
-    // Neighbours in the chain touch by design; anything further apart must not overlap.
-    for (let b = a + 3; b < elements.length; b++) {
-      if (elements[a].some((ra) => elements[b].some((rb) => rectsOverlap(ra, rb)))) {
-        out.push({ code: 'self-overlap', path: at, message: `system ${s.id} runs into itself` });
-        a = elements.length;
-        break;
-      }
-    }
-  }
-  const mine = elements.flat();
+  if (outsideRoom(elements, config.room.width, config.room.depth)) out.push(outsideProblem(s, index, config.room));
+  const stats = { pairTests: 0 };
+  // Neighbours in the chain touch by design; anything further apart must not overlap.
+  const rects = elements.flat();
+  const chainIndex = elements.flatMap((group, a) => group.map(() => a));
+  let crosses = false;
+  forEachOverlap(rects, stats, () => ((crosses = true), 'stop'), (p, q) => Math.abs(chainIndex[p] - chainIndex[q]) >= 3);
+  if (crosses) out.push({ code: 'self-overlap', path: at, message: `system ${s.id} runs into itself` });
+  const mine = rects.map(boxOf);
+  const box = mine.reduce((u, b) => ({ minX: Math.min(u.minX, b.minX), minZ: Math.min(u.minZ, b.minZ), maxX: Math.max(u.maxX, b.maxX), maxZ: Math.max(u.maxZ, b.maxZ) }), { minX: Infinity, minZ: Infinity, maxX: -Infinity, maxZ: -Infinity });
   config.systems.forEach((other, j) => {
     if (j === index || ownProblems(other, '', config.room.height, catalog).length > 0) return;
-    const theirs = systemElements(other, catalog).flat();
-    if (mine.some((ra) => theirs.some((rb) => rectsOverlap(ra, rb)))) {
+    const theirs = systemElements(other, catalog).flat().filter((rb) => {
+      const b = boxOf(rb);
+      return b.minX < box.maxX && box.minX < b.maxX && b.minZ < box.maxZ && box.minZ < b.maxZ;
+    });
+    if (theirs.length === 0) return;
+    if (rects.some((ra, p) => theirs.some((rb) => {
+      const b = boxOf(rb);
+      const a = mine[p];
+      return a.minX < b.maxX && b.minX < a.maxX && a.minZ < b.maxZ && b.minZ < a.maxZ && rectsOverlap(ra, rb);
+    }))) {
       out.push({ code: 'system-overlap', path: at, message: `system ${s.id} overlaps system ${other.id}` });
     }
   });

@@ -26,3 +26,21 @@ export function only(config: Configuration): LightSystem {
   if (config.systems.length !== 1) throw new Error('expected one system');
   return config.systems[0];
 }
+
+/** `systems` rows of `railsPer` 1 m rails joined straight, one row per metre: a 30 × 30 m hall. */
+export function hall(systems: number, railsPer: number, gap = 1): Configuration {
+  let next = 1;
+  const list: LightSystem[] = [];
+  for (let k = 0; k < systems; k++) {
+    list.push({
+      id: `s${next++}`,
+      x: 0.5,
+      z: 0.5 + k * gap,
+      rotation: 0,
+      suspension: catalog.suspension.default,
+      rails: Array.from({ length: railsPer }, () => ({ id: `r${next++}`, length: 1, distribution: 'start' as const, modules: [] })),
+      joints: Array.from({ length: railsPer - 1 }, () => ({ connector: 'straight', turn: 0 })),
+    });
+  }
+  return { ...createConfiguration({ width: 30, depth: 30, height: 3 }), systems: list, nextId: next };
+}
