@@ -68,9 +68,10 @@ function horizontalRule(first: number, last: number, count: number): HorizontalR
 /**
  * Unfolds a type-C grid into the form types.ts promises: horizontal angles
  * either [0] or 0..360 inclusive, vertical angles 0..180 with zero rows padded
- * just beyond a partial measured range.
+ * just beyond a partial measured range. Non-fatal findings (a 360° plane that
+ * is not the 0° plane) are pushed onto `warnings`.
  */
-export function expandTypeC(fileName: string, grid: TypeCGrid, line: number | null): ExpandedGrid {
+export function expandTypeC(fileName: string, grid: TypeCGrid, line: number | null, warnings: string[] = []): ExpandedGrid {
   const { verticalAngles: v, horizontalAngles: h, candela } = grid;
   const rule = horizontalRule(h[0], h[h.length - 1], h.length);
   if (!rule) {
@@ -79,6 +80,10 @@ export function expandTypeC(fileName: string, grid: TypeCGrid, line: number | nu
       line,
       `unsupported horizontal angle range ${h[0]}..${h[h.length - 1]} (LM-63 type C allows 0, 0..90, 0..180, 0..360, 90..180 or 90..270)`,
     );
+  }
+  if (rule.symmetry === 'none' && near(h[h.length - 1], 360)) {
+    const warning = seamWarning(candela[0], candela[h.length - 1], v);
+    if (warning) warnings.push(warning);
   }
 
   // Horizontal: the set of all images of the measured planes, 0 and 360 both present.
@@ -122,6 +127,29 @@ export function expandTypeC(fileName: string, grid: TypeCGrid, line: number | nu
   const zerosAfter = after.map(() => 0);
   const expanded = rows.map((row) => [...zerosBefore, ...row, ...zerosAfter]);
   return { verticalAngles, horizontalAngles: planes, candela: expanded, symmetry: rule.symmetry };
+}
+
+/**
+ * C = 360 is the same half-plane as C = 0, so a file's 360° plane should repeat
+ * its 0° plane. The model keeps one (the 0° plane, as most readers do); when
+ * the file's two differ by more than 0.1 % of their peak that choice changes
+ * the light, so it is said (issue 18).
+ */
+function seamWarning(at0: number[], at360: number[], vertical: number[]): string | null {
+  let peak = 0;
+  let diff = 0;
+  let where = 0;
+  for (let i = 0; i < at0.length; i++) {
+    peak = Math.max(peak, at0[i], at360[i]);
+    const d = Math.abs(at0[i] - at360[i]);
+    if (d > diff) {
+      diff = d;
+      where = i;
+    }
+  }
+  if (!(diff > 1e-3 * peak)) return null;
+  const pct = Number(((diff / peak) * 100).toPrecision(3));
+  return `the 360° plane differs from the 0° plane (by up to ${Number(diff.toPrecision(4))} cd, ${pct} % of their peak, at γ ${vertical[where]}°); the 0° plane is used for both`;
 }
 
 /** Index of the angle in the ascending list closest to `x`. */

@@ -2,6 +2,8 @@
 // expanded type-C model, lookups, flux, beam figures and colour helpers.
 export type { Photometry, TiltTable } from './types';
 export { PhotometryParseError } from './PhotometryParseError';
+export { photometryWarnings } from './checks';
+export { MAX_PHOTOMETRY_BYTES } from './limits';
 export { parsePhotometry, type ParsePhotometryOptions } from './parsePhotometry';
 export { parseIes } from './parseIes';
 export { parseLdt } from './parseLdt';

@@ -1,13 +1,27 @@
+import { checkInputSize, checkRange, finishPhotometry } from './checks';
+import { MAX_NUMERAL_LENGTH, readDecimal } from './decimal';
 import { splitLines } from './decodeText';
 import { expandTypeC } from './expandTypeC';
-import { MAX_CANDELA_VALUES, MAX_HORIZONTAL_ANGLES, MAX_LAMP_SETS, MAX_VERTICAL_ANGLES } from './limits';
+import {
+  LDT_CONVERSION_FACTOR_RANGE,
+  MAX_CANDELA_VALUES,
+  MAX_DIMENSION_M,
+  MAX_HORIZONTAL_ANGLES,
+  MAX_LAMP_SETS,
+  MAX_LUMENS,
+  MAX_VERTICAL_ANGLES,
+  MAX_WATTS,
+  MIN_LUMENS,
+  SCALE_RANGE,
+} from './limits';
 import { NumberReader } from './numberReader';
 import { luminousOpening } from './parseIes';
-import { PhotometryParseError } from './PhotometryParseError';
+import { excerpt, PhotometryParseError } from './PhotometryParseError';
 import { checkLeftovers, readAngles, readCandela } from './readGrid';
 import type { Photometry } from './types';
 
-const NUMBER = /^[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?$/;
+/** Largest |dimension| in mm (luminaire and luminous area sizes). */
+const MAX_DIMENSION_MM = MAX_DIMENSION_M * 1000;
 
 /**
  * Parses EULUMDAT (.ldt) text. The format is line-oriented: lines 1–26 are
@@ -21,8 +35,16 @@ const NUMBER = /^[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?$/;
  * (EULUMDAT format description, Stockmar 1990; the plane ranges Mc1..Mc2 per
  * Isym given there.) Intensities in cd = value × Σ lamp flux / 1000 × line 24's
  * conversion factor.
+ *
+ * The header, the lamp sets and the ten direct ratios are read line by line,
+ * as the format defines them: an empty line is a field "not given" (real
+ * manufacturer files leave the direct ratios, CCT, CRI, … empty), never a line
+ * to skip (issue 18: skipping them took the first C-plane angles for direct
+ * ratios). Angles and intensities, whose counts are known, are then read as a
+ * number stream that tolerates several values per line.
  */
 export function parseLdt(text: string, fileName: string): Photometry {
+  checkInputSize(fileName, text.length);
   // A decimal comma ("0,5") is used by some German exporters: with one value
   // per line it is unambiguous.
   const lines = splitLines(text).map((l) => (/^\s*[+-]?\d*,\d+\s*$/.test(l) ? l.replace(',', '.') : l));
@@ -31,19 +53,27 @@ export function parseLdt(text: string, fileName: string): Photometry {
 
   const stringField = (what: string): string => {
     if (index >= lines.length) throw new PhotometryParseError(fileName, lines.length, `unexpected end of file: expected ${what}`);
-    return lines[index++].trim().replace(/^"(.*)"$/, '$1');
+    const t = lines[index++].trim();
+    return t.length >= 2 && t.startsWith('"') && t.endsWith('"') ? t.slice(1, -1) : t;
   };
-  const numberField = (what: string): number => {
+  /** A numeric line; empty → null when `optional` (the field is not given). */
+  const optionalNumber = (what: string, optional: boolean): number | null => {
     const line = index + 1;
     const raw = stringField(what);
-    if (!NUMBER.test(raw)) {
-      const shown = raw.length > 24 ? raw.slice(0, 24) + '…' : raw;
-      throw new PhotometryParseError(fileName, line, `expected ${what} (a number), found "${shown}"`);
-    }
-    const value = Number(raw);
-    if (!Number.isFinite(value)) throw new PhotometryParseError(fileName, line, `${what} "${raw}" is out of range`);
-    return value;
+    if (raw === '' && optional) return null;
+    const read = readDecimal(raw);
+    if (read.ok) return read.value;
+    const problem =
+      read.problem === 'not a number'
+        ? `expected ${what} (a number${optional ? ' or an empty line' : ''}), found "${excerpt(raw)}"`
+        : read.problem === 'too long'
+          ? `${what}: a numeral of ${raw.length} characters is too long (limit ${MAX_NUMERAL_LENGTH})`
+          : `${what} "${excerpt(raw)}" is out of range`;
+    throw new PhotometryParseError(fileName, line, problem);
   };
+  const numberField = (what: string): number => optionalNumber(what, false) as number;
+  /** An optional numeric field: empty means "not given" (0 where a value is needed). */
+  const optionalField = (what: string): number | null => optionalNumber(what, true);
   const intField = (what: string, min: number, max: number): number => {
     const line = index + 1;
     const value = numberField(what);
@@ -64,10 +94,10 @@ export function parseLdt(text: string, fileName: string): Photometry {
   if (![0, 1, 2, 3].includes(ityp)) warnings.push(`type indicator Ityp is ${ityp} (expected 0..3); ignored`);
   const mcLine = index + 1;
   const mc = intField('the number of C-planes Mc', 1, MAX_HORIZONTAL_ANGLES);
-  numberField('the C-plane distance Dc');
+  optionalField('the C-plane distance Dc');
   const ngLine = index + 1;
   const ng = intField('the number of γ angles Ng', 2, MAX_VERTICAL_ANGLES);
-  numberField('the γ distance Dg');
+  optionalField('the γ distance Dg');
   if (mc * ng > MAX_CANDELA_VALUES) {
     throw new PhotometryParseError(fileName, ngLine, `${mc} × ${ng} intensities exceed the limit of ${MAX_CANDELA_VALUES}`);
   }
@@ -82,16 +112,22 @@ export function parseLdt(text: string, fileName: string): Photometry {
   const luminaireNumber = stringField('the luminaire number');
   const sourceFileName = stringField('the file name');
   const dateUser = stringField('the date/user');
-  const dims = ['length', 'width', 'height'].map((d) => numberField(`the luminaire ${d} (mm)`));
-  const lumLength = numberField('the luminous area length/diameter (mm)');
-  const lumWidth = numberField('the luminous area width (mm)');
-  const heights = ['C0', 'C90', 'C180', 'C270'].map((c) => numberField(`the luminous area height at ${c} (mm)`));
-  const dff = numberField('the downward flux fraction DFF (%)');
+  const dimension = (what: string): number => {
+    const line = index + 1;
+    const value = optionalField(what) ?? 0;
+    checkRange(fileName, line, what, value, -MAX_DIMENSION_MM, MAX_DIMENSION_MM);
+    return value;
+  };
+  const dims = ['length', 'width', 'height'].map((d) => dimension(`the luminaire ${d} (mm)`));
+  const lumLength = dimension('the luminous area length/diameter (mm)');
+  const lumWidth = dimension('the luminous area width (mm)');
+  const heights = ['C0', 'C90', 'C180', 'C270'].map((c) => dimension(`the luminous area height at ${c} (mm)`));
+  const dff = optionalField('the downward flux fraction DFF (%)');
   const lorlLine = index + 1;
-  const lorl = numberField('the light output ratio LORL (%)');
+  const lorl = optionalField('the light output ratio LORL (%)');
   const cfliLine = index + 1;
-  const cfli = numberField('the intensity conversion factor');
-  const tiltAngle = numberField('the tilt angle during measurement');
+  const cfliGiven = optionalField('the intensity conversion factor');
+  const tiltAngle = optionalField('the tilt angle during measurement');
   const n = intField('the number of lamp sets', 1, MAX_LAMP_SETS);
 
   let totalFlux = 0;
@@ -99,24 +135,59 @@ export function parseLdt(text: string, fileName: string): Photometry {
   const lampTypes: string[] = [];
   const fluxLines: number[] = [];
   for (let s = 0; s < n; s++) {
-    numberField(`the number of lamps (set ${s + 1})`);
+    optionalField(`the number of lamps (set ${s + 1})`);
     lampTypes.push(stringField(`the lamp type (set ${s + 1})`));
     fluxLines.push(index + 1);
-    totalFlux += Math.abs(numberField(`the lamp flux (set ${s + 1})`));
+    const flux = Math.abs(numberField(`the lamp flux (set ${s + 1})`));
+    if (flux > 0) checkRange(fileName, index, `lamp flux (set ${s + 1}, lm)`, flux, MIN_LUMENS, MAX_LUMENS);
+    totalFlux += flux;
     stringField(`the colour temperature (set ${s + 1})`);
     stringField(`the colour rendering index (set ${s + 1})`);
-    watts += numberField(`the wattage (set ${s + 1})`);
+    watts += optionalField(`the wattage (set ${s + 1})`) ?? 0;
   }
   if (!(totalFlux > 0)) throw new PhotometryParseError(fileName, fluxLines[0], 'total lamp flux must be positive, found 0');
+  checkRange(fileName, fluxLines[0], 'total lamp flux (lm)', totalFlux, MIN_LUMENS, MAX_LUMENS);
+  if (cfliGiven === null) warnings.push(`line ${cfliLine}: the intensity conversion factor is not given; 1 is used`);
+  const cfli = cfliGiven ?? 1;
   if (!(cfli > 0)) throw new PhotometryParseError(fileName, cfliLine, `intensity conversion factor must be positive, found ${cfli}`);
-  if (!(lorl > 0 && lorl <= 100.5)) warnings.push(`light output ratio LORL is ${lorl} % (expected 0..100)`);
-  if (lorl < 0) throw new PhotometryParseError(fileName, lorlLine, `light output ratio LORL must not be negative, found ${lorl}`);
+  checkRange(fileName, cfliLine, 'intensity conversion factor', cfli, ...LDT_CONVERSION_FACTOR_RANGE);
+  if (lorl === null) warnings.push(`line ${lorlLine}: the light output ratio LORL is not given; no stated lumens`);
+  else if (!(lorl > 0 && lorl <= 100.5)) warnings.push(`light output ratio LORL is ${lorl} % (expected 0..100)`);
+  if (lorl !== null && lorl < 0) throw new PhotometryParseError(fileName, lorlLine, `light output ratio LORL must not be negative, found ${lorl}`);
+  const statedLumens = lorl !== null && lorl > 0 ? (totalFlux * lorl) / 100 : null;
+  if (statedLumens !== null) {
+    checkRange(fileName, lorlLine, 'stated lumens (lamp flux × LORL)', statedLumens, MIN_LUMENS, MAX_LUMENS);
+  }
+  if (!(watts <= MAX_WATTS)) warnings.push(`total wattage ${watts} W exceeds ${MAX_WATTS} W; ignored`);
 
-  // From here on: numbers, tolerated several per line.
+  // Ten direct ratios (DR for room indices k = 0.6 … 5), one line each; an
+  // empty line is a ratio not given. A line holding several numbers counts as
+  // that many ratios (tolerated; never more than ten).
+  let ratios = 0;
+  while (ratios < 10) {
+    const line = index + 1;
+    const raw = stringField(`direct ratio ${ratios + 1} of 10`);
+    if (raw === '') {
+      ratios++;
+      continue;
+    }
+    const parts = raw.split(/[\s;]+/);
+    if (ratios + parts.length > 10) {
+      throw new PhotometryParseError(fileName, line, `expected ${10 - ratios} more direct ratio(s) (10 in all), found ${parts.length} values on this line`);
+    }
+    for (const part of parts) {
+      const read = readDecimal(part);
+      if (!read.ok) {
+        throw new PhotometryParseError(fileName, line, `expected direct ratio ${ratios + 1} of 10 (a number or an empty line), found "${excerpt(part)}"`);
+      }
+      ratios++;
+    }
+  }
+
+  // From here on: numbers with known counts, tolerated several per line.
   const reader = new NumberReader(fileName, lines.slice(index), index + 1);
-  for (let k = 0; k < 10; k++) reader.next(`direct ratio ${k + 1} of 10`);
-  const cAngles = readAngles(reader, fileName, mc, 'C-plane angles', 0, 360);
-  const gammas = readAngles(reader, fileName, ng, 'γ angles', 0, 180);
+  const cAngles = readAngles(reader, fileName, mc, 'C-plane angles', 0, 360).angles;
+  const gammas = readAngles(reader, fileName, ng, 'γ angles', 0, 180).angles;
   const anglesLine = reader.lastLine;
 
   // Which stored planes, at which C angles (see the comment at the top).
@@ -127,6 +198,7 @@ export function parseLdt(text: string, fileName: string): Photometry {
   else if (isym === 3) stored = [...range((3 * mc) / 4, mc - 1), ...range(0, mc / 4)];
   else stored = range(0, mc / 4);
   const scale = (totalFlux / 1000) * cfli;
+  checkRange(fileName, cfliLine, 'candela scale (lamp flux / 1000 × conversion factor)', scale, ...SCALE_RANGE);
   const planes = readCandela(
     reader,
     fileName,
@@ -169,7 +241,7 @@ export function parseLdt(text: string, fileName: string): Photometry {
     horizontalAngles = stored.map((i) => cAngles[i]);
     candela = planes;
   }
-  const grid = expandTypeC(fileName, { verticalAngles: gammas, horizontalAngles, candela }, anglesLine);
+  const grid = expandTypeC(fileName, { verticalAngles: gammas, horizontalAngles, candela }, anglesLine, warnings);
 
   const keywords: Record<string, string> = {
     COMPANY: company,
@@ -181,9 +253,9 @@ export function parseLdt(text: string, fileName: string): Photometry {
     FILENAME: sourceFileName,
     DATE: dateUser,
     LUMINAIRE_DIMENSIONS_MM: dims.join(' × '),
-    DFF: String(dff),
-    LORL: String(lorl),
-    TILT: String(tiltAngle),
+    DFF: dff === null ? '' : String(dff),
+    LORL: lorl === null ? '' : String(lorl),
+    TILT: tiltAngle === null ? '' : String(tiltAngle),
     LAMP: lampTypes.join('; '),
     LAMP_FLUX: String(totalFlux),
   };
@@ -194,7 +266,7 @@ export function parseLdt(text: string, fileName: string): Photometry {
     lumWidth > 0
       ? luminousOpening(lumWidth * mm, lumLength * mm, lumHeight)
       : luminousOpening(-lumLength * mm, -lumLength * mm, lumHeight);
-  return {
+  const ph: Photometry = {
     format: 'LDT',
     version: 'EULUMDAT',
     manufacturer: company,
@@ -206,10 +278,10 @@ export function parseLdt(text: string, fileName: string): Photometry {
     verticalAngles: grid.verticalAngles,
     horizontalAngles: grid.horizontalAngles,
     candela: grid.candela,
-    statedLumens: (totalFlux * lorl) / 100,
-    statedLumensSource: 'lamp flux × LORL',
+    statedLumens,
+    statedLumensSource: statedLumens === null ? null : 'lamp flux × LORL',
     absolute: false,
-    inputWatts: watts > 0 ? watts : null,
+    inputWatts: watts > 0 && watts <= MAX_WATTS ? watts : null,
     luminousOpening: opening,
     warnings,
     tilt: null,
@@ -221,6 +293,7 @@ export function parseLdt(text: string, fileName: string): Photometry {
     },
     candelaScale: scale,
   };
+  return finishPhotometry(ph, fileName, 'luminaire');
 }
 
 function range(from: number, to: number): number[] {

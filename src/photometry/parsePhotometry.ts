@@ -1,4 +1,5 @@
-import { decodeText } from './decodeText';
+import { checkInputSize } from './checks';
+import { decodeText, splitLines } from './decodeText';
 import { parseIes, type ParseIesOptions } from './parseIes';
 import { parseLdt } from './parseLdt';
 import type { Photometry } from './types';
@@ -10,13 +11,16 @@ export type ParsePhotometryOptions = ParseIesOptions;
  * The format comes from the extension (.ies / .ldt, any case); without one, a
  * file whose first lines contain "TILT=" or an "IES" version line is IES, else
  * EULUMDAT. Bytes are decoded as UTF-8, falling back to Latin-1.
- * Throws PhotometryParseError (an InputError) for anything unreadable.
+ * Throws PhotometryParseError (an InputError) for anything unreadable,
+ * including input over MAX_PHOTOMETRY_BYTES (checked before decoding).
+ * Non-fatal findings are in `warnings` (see photometryWarnings).
  */
 export function parsePhotometry(
   data: string | Uint8Array,
   fileName: string,
   options: ParsePhotometryOptions = {},
 ): Photometry {
+  checkInputSize(fileName, typeof data === 'string' ? data.length : data.byteLength);
   const text = decodeText(data);
   const ext = /\.([a-z0-9]+)$/i.exec(fileName)?.[1]?.toLowerCase();
   if (ext === 'ies') return parseIes(text, fileName, options);
@@ -26,5 +30,7 @@ export function parsePhotometry(
 
 function looksLikeIes(text: string): boolean {
   const head = text.slice(0, 20_000);
-  return /^\s*IES/i.test(head) || /^\s*TILT\s*=/im.test(head);
+  // Line by line: a multiline /^\s*TILT/m backtracks quadratically over a run
+  // of blank lines (\s* crosses line breaks from every line start).
+  return /^\s*IES/i.test(head) || splitLines(head).some((line) => /^\s*TILT\s*=/i.test(line));
 }

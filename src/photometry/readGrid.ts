@@ -1,10 +1,20 @@
+import { MAX_CANDELA } from './limits';
 import type { NumberReader } from './numberReader';
-import { PhotometryParseError } from './PhotometryParseError';
+import { excerpt, PhotometryParseError } from './PhotometryParseError';
+
+/** Angles read from a file, ascending; `reversed` when the file listed them descending. */
+export interface AngleList {
+  angles: number[];
+  reversed: boolean;
+}
 
 /**
- * Reads `count` strictly ascending angles within [min, max]. A value that does
+ * Reads `count` strictly monotonic angles within [min, max]. A value that does
  * not ascend usually means the count in the header is wrong (the next list has
- * started), so the message says both.
+ * started), so the message says both. With `allowDescending`, a list that is
+ * strictly descending from its first two values to its end (an exporter that
+ * writes 180 … 0) is returned reversed with `reversed: true`: the caller
+ * reverses the data with it and warns. Anything else out of order is refused.
  */
 export function readAngles(
   reader: NumberReader,
@@ -13,32 +23,46 @@ export function readAngles(
   plural: string,
   min: number,
   max: number,
-): number[] {
+  allowDescending = false,
+): AngleList {
+  const singular = plural.replace(/s$/, '');
   const angles: number[] = [];
+  let descending = false;
   for (let i = 0; i < count; i++) {
-    const value = reader.next(`a number (${plural.replace(/s$/, '')} ${i + 1} of ${count})`, {
+    const value = reader.next(`a number (${singular} ${i + 1} of ${count})`, {
       expected: count,
       found: i,
       plural,
     });
     if (value < min - 1e-6 || value > max + 1e-6) {
-      throw new PhotometryParseError(fileName, reader.lastLine, `${plural.replace(/s$/, '')} ${value} is outside ${min}..${max}`);
+      throw new PhotometryParseError(fileName, reader.lastLine, `${singular} ${value} is outside ${min}..${max}`);
     }
-    if (i > 0 && value <= angles[i - 1]) {
+    if (i === 1 && allowDescending && value < angles[0]) descending = true;
+    if (i > 0 && !descending && value <= angles[i - 1]) {
       throw new PhotometryParseError(
         fileName,
         reader.lastLine,
         `expected ${count} ${plural}, found ${i} before ${value}, which does not ascend after ${angles[i - 1]} (the count in the header does not match the data, or the angles are out of order)`,
       );
     }
+    if (i > 0 && descending && value >= angles[i - 1]) {
+      throw new PhotometryParseError(
+        fileName,
+        reader.lastLine,
+        `expected ${count} ${plural}, found ${i} before ${value}, which breaks the descending order after ${angles[i - 1]} (the count in the header does not match the data, or the angles are out of order)`,
+      );
+    }
     angles.push(value);
   }
-  return angles;
+  if (descending) angles.reverse();
+  return { angles, reversed: descending };
 }
 
 /**
  * Reads planes × perPlane candela values (plane by plane, as LM-63 and
- * EULUMDAT store them), each finite and ≥ 0, scaled by `scale`.
+ * EULUMDAT store them), each finite and ≥ 0, scaled by `scale`. The range is
+ * checked on the scaled value (issue 18: a valid value × a huge multiplier is
+ * Infinity), so every stored value is in [0, MAX_CANDELA].
  */
 export function readCandela(
   reader: NumberReader,
@@ -62,7 +86,15 @@ export function readCandela(
           `negative candela value ${value} at ${planeName(p)}, ${angleName(i)}`,
         );
       }
-      row.push(value * scale);
+      const cd = value * scale;
+      if (!(cd <= MAX_CANDELA)) {
+        throw new PhotometryParseError(
+          fileName,
+          reader.lastLine,
+          `candela value ${value} × scale ${scale} at ${planeName(p)}, ${angleName(i)} exceeds ${MAX_CANDELA} cd`,
+        );
+      }
+      row.push(cd);
     }
     grid.push(row);
   }
@@ -75,19 +107,15 @@ export function readCandela(
  * counts are too small for the data, which would silently drop measurements.
  */
 export function checkLeftovers(reader: NumberReader, fileName: string, perPlane: number, warnings: string[]): void {
-  const rest = reader.rest();
-  if (rest.length === 0) return;
-  const numeric = rest.filter((t) => /^[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?$/.test(t.text)).length;
-  if (numeric >= Math.max(perPlane, 2) && numeric === rest.length) {
+  const { count, numeric, first } = reader.leftovers();
+  if (count === 0) return;
+  if (numeric >= Math.max(perPlane, 2) && numeric === count) {
     throw new PhotometryParseError(
       fileName,
-      rest[0].line,
+      first[0].line,
       `${numeric} numbers follow the candela table: the angle counts in the header do not match the data`,
     );
   }
-  const shown = rest
-    .slice(0, 3)
-    .map((t) => (t.text.length > 16 ? t.text.slice(0, 16) + '…' : t.text))
-    .join(' ');
-  warnings.push(`ignored ${rest.length} trailing item(s) after the data from line ${rest[0].line} ("${shown}")`);
+  const shown = first.map((t) => excerpt(t.text, 16)).join(' ');
+  warnings.push(`ignored ${count} trailing item(s) after the data from line ${first[0].line} ("${shown}")`);
 }
