@@ -5,6 +5,7 @@
  */
 import { z } from 'zod';
 import { InputError } from '../inputError';
+import { describeIssues, formatPath as formatFieldPath, jsonShapeProblem, oneLine, schemaFieldNames } from './untrustedJson';
 
 /** Module distributions along a rail; defined precisely in docs/model.md and src/model/distribution.ts. */
 export const DISTRIBUTIONS = ['start', 'end', 'inside-centred', 'outside-centred'] as const;
@@ -14,7 +15,7 @@ const positive = z.number().finite().positive();
 const price = z.number().finite().nonnegative();
 const nonEmpty = z.string().min(1);
 
-const beamSchema = z.object({
+const beamSchema = z.strictObject({
   id: nonEmpty,
   label: nonEmpty,
   /** Full beam angle (degrees) where the optic has one; omitted for diffusers and washers. */
@@ -33,7 +34,7 @@ const beamSchema = z.object({
 });
 
 const moduleTypeSchema = z
-  .object({
+  .strictObject({
     id: nonEmpty,
     name: nonEmpty,
     /** Length of rail the module occupies, metres. */
@@ -49,25 +50,25 @@ const moduleTypeSchema = z
     if (new Set(t.beams.map((b) => b.id)).size !== t.beams.length) ctx.addIssue({ code: 'custom', path: ['beams'], message: 'beam ids must be unique' });
   });
 
-const presetModuleSchema = z.object({ type: nonEmpty, beam: nonEmpty.optional(), cct: z.number().int().optional() });
-const presetSchema = z.object({
+const presetModuleSchema = z.strictObject({ type: nonEmpty, beam: nonEmpty.optional(), cct: z.number().int().optional() });
+const presetSchema = z.strictObject({
   id: nonEmpty,
   name: nonEmpty,
   description: z.string(),
   rails: z
-    .array(z.object({ length: positive, distribution: z.enum(DISTRIBUTIONS), modules: z.array(presetModuleSchema) }))
+    .array(z.strictObject({ length: positive, distribution: z.enum(DISTRIBUTIONS), modules: z.array(presetModuleSchema) }))
     .min(1),
-  joints: z.array(z.object({ connector: nonEmpty, turn: z.number().finite() })),
+  joints: z.array(z.strictObject({ connector: nonEmpty, turn: z.number().finite() })),
 });
 
 export const catalogSchema = z
-  .object({
+  .strictObject({
     formatVersion: z.literal(1),
     id: nonEmpty,
     name: nonEmpty,
     /** ISO 4217 code; every price in the catalog is in this currency. */
     currency: z.string().regex(/^[A-Z]{3}$/, 'must be an ISO 4217 code such as EUR'),
-    rail: z.object({
+    rail: z.strictObject({
       article: nonEmpty,
       name: nonEmpty,
       minLength: positive,
@@ -77,11 +78,11 @@ export const catalogSchema = z
       /** Profile width in plan, metres (for footprints and clash tests). */
       width: positive,
       /** Unit price of a rail of length L: base + perMetre·L, rounded to cents. */
-      price: z.object({ base: price, perMetre: price }),
+      price: z.strictObject({ base: price, perMetre: price }),
     }),
     connectors: z
       .array(
-        z.object({
+        z.strictObject({
           id: nonEmpty,
           article: nonEmpty,
           name: nonEmpty,
@@ -93,7 +94,7 @@ export const catalogSchema = z
         }),
       )
       .min(1),
-    suspension: z.object({
+    suspension: z.strictObject({
       article: nonEmpty,
       name: nonEmpty,
       /** Ceiling to photometric centre, metres. */
@@ -104,7 +105,7 @@ export const catalogSchema = z
       minHeightAboveFloor: positive,
       price,
     }),
-    powerFeed: z.object({ article: nonEmpty, name: nonEmpty, price }),
+    powerFeed: z.strictObject({ article: nonEmpty, name: nonEmpty, price }),
     moduleTypes: z.array(moduleTypeSchema).min(1),
     presets: z.array(presetSchema),
   })
@@ -152,23 +153,40 @@ export type PresetSpec = Catalog['presets'][number];
 /** A catalog that does not match the format: the message names the field. */
 export class CatalogError extends InputError {
   override name = 'CatalogError';
+  constructor(message: string) {
+    super(oneLine(message));
+  }
 }
 
-/** Validates unknown data (parsed JSON) as a catalog; throws CatalogError naming the first bad field. */
+/** Newest catalog format this program reads. */
+export const CATALOG_FORMAT_VERSION = 1;
+const CATALOG_FIELDS = schemaFieldNames(catalogSchema);
+
+/**
+ * The checks every versioned data file gets before its schema: depth and array
+ * length (nothing may recurse into a hostile value), then the format version,
+ * so a newer file is told apart from a broken one. Returns `path: problem` or null.
+ */
+export function versionedDataProblem(data: unknown, field: string, newest: number): string | null {
+  const shape = jsonShapeProblem(data);
+  if (shape) return shape;
+  const v = typeof data === 'object' && data !== null ? (data as Record<string, unknown>)[field] : undefined;
+  if (typeof v === 'number' && Number.isInteger(v) && v > newest) return `${field}: made by a newer luxbox (version ${v}; this one reads up to ${newest})`;
+  return null;
+}
+
+/** Validates unknown data (parsed JSON) as a catalog; throws CatalogError naming the first bad field (unknown fields included). */
 export function parseCatalog(data: unknown, source = 'catalog'): Catalog {
+  const problem = versionedDataProblem(data, 'formatVersion', CATALOG_FORMAT_VERSION);
+  if (problem) throw new CatalogError(`${source}: ${problem}`);
   const r = catalogSchema.safeParse(data);
-  if (!r.success) {
-    const issue = r.error.issues[0];
-    throw new CatalogError(`${source}: ${formatPath(issue.path)}: ${issue.message}`);
-  }
+  if (!r.success) throw new CatalogError(`${source}: ${describeIssues(r.error.issues, CATALOG_FIELDS)}`);
   return r.data;
 }
 
-/** 'presets[2].rails[0].length' style path for messages. */
+/** 'presets[2].rails[0].length' style path for messages; '(root)' for the root. */
 export function formatPath(path: readonly PropertyKey[]): string {
-  let out = '';
-  for (const p of path) out += typeof p === 'number' ? `[${p}]` : `${out ? '.' : ''}${String(p)}`;
-  return out || '(root)';
+  return formatFieldPath(path) || '(root)';
 }
 
 /** True when x is an integer multiple of step, to within float noise (1e-6 of a step). */

@@ -6,9 +6,10 @@
  */
 import { z } from 'zod';
 import { InputError } from '../inputError';
-import { formatPath } from './catalogSchema';
+import { versionedDataProblem } from './catalogSchema';
 import type { Reflectance, SurfaceName } from './lightingScene';
 import { reflectanceProblem, sameReflectance } from './reflectance';
+import { describeIssues, oneLine, schemaFieldNames } from './untrustedJson';
 
 /** Which picker a finish is offered in: floor, ceiling, or the walls. */
 export const FINISH_USES = ['floor', 'ceiling', 'walls'] as const;
@@ -19,7 +20,7 @@ const reflectanceValue = z.union([z.number(), z.tuple([z.number(), z.number(), z
   if (problem) ctx.addIssue({ code: 'custom', message: problem });
 });
 
-const finishSchema = z.object({
+const finishSchema = z.strictObject({
   id: z.string().regex(/^[a-z0-9-]{1,40}$/, 'must be 1-40 lower-case letters, digits or -'),
   name: z.string().min(1),
   uses: z.array(z.enum(FINISH_USES)).min(1),
@@ -32,7 +33,7 @@ const finishSchema = z.object({
 });
 
 const finishListSchema = z
-  .object({ formatVersion: z.literal(1), finishes: z.array(finishSchema).min(1) })
+  .strictObject({ formatVersion: z.literal(1), finishes: z.array(finishSchema).min(1) })
   .superRefine((list, ctx) => {
     const seen = new Set<string>();
     list.finishes.forEach((f, i) => {
@@ -48,15 +49,19 @@ export type SurfaceFinish = z.infer<typeof finishSchema>;
 
 export class SurfaceFinishError extends InputError {
   override name = 'SurfaceFinishError';
+  constructor(message: string) {
+    super(oneLine(message));
+  }
 }
+
+const FINISH_FIELDS = schemaFieldNames(finishListSchema);
 
 /** Validates a finish list (JSON data); throws SurfaceFinishError naming the field. */
 export function parseSurfaceFinishes(data: unknown, source = 'surface finishes'): SurfaceFinish[] {
+  const problem = versionedDataProblem(data, 'formatVersion', 1);
+  if (problem) throw new SurfaceFinishError(`${source}: ${problem}`);
   const r = finishListSchema.safeParse(data);
-  if (!r.success) {
-    const issue = r.error.issues[0];
-    throw new SurfaceFinishError(`${source}: ${formatPath(issue.path)}: ${issue.message}`);
-  }
+  if (!r.success) throw new SurfaceFinishError(`${source}: ${describeIssues(r.error.issues, FINISH_FIELDS)}`);
   return r.data.finishes;
 }
 

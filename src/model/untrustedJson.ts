@@ -234,16 +234,25 @@ export function duplicateKey(text: string): { offset: number; key: string } | nu
   return null;
 }
 
+/** How a format words its size and syntax refusals (the defaults read `source: problem`). */
+export interface JsonMessages {
+  /** `size` is e.g. '1.4 MB'. */
+  tooLarge?: (size: string) => string;
+  /** `where` is 'line L, column C: ' or ''. */
+  invalidJson?: (where: string, reason: string) => string;
+}
+
 /**
  * Parse untrusted JSON text: length limit, syntax (with line and column; the
- * parser's own excerpt dropped), duplicate keys, then depth and array length.
- * Returns the value, or throws `makeError(message)` with a one-line message
- * prefixed by `source`.
+ * parser's own excerpt of the text dropped), duplicate keys, then depth and
+ * array length. Returns the value, or throws `makeError(message)` with a
+ * one-line message naming `source`.
  */
-export function parseUntrustedJson(text: string, source: string, makeError: (message: string) => Error, what = 'file'): unknown {
-  const fail = (problem: string) => makeError(oneLine(`${source}: ${problem}`));
+export function parseUntrustedJson(text: string, source: string, makeError: (message: string) => Error, messages: JsonMessages = {}): unknown {
+  const fail = (message: string) => makeError(oneLine(message));
   if (text.length > INPUT_LIMITS.maxTextLength) {
-    throw fail(`${what} is too large (${(text.length / 1e6).toFixed(1)} MB; at most ${INPUT_LIMITS.maxTextLength / 1e6} MB)`);
+    const size = `${(text.length / 1e6).toFixed(1)} MB`;
+    throw fail(messages.tooLarge?.(size) ?? `${source}: file is too large (${size}; at most ${INPUT_LIMITS.maxTextLength / 1e6} MB)`);
   }
   let value: unknown;
   try {
@@ -252,13 +261,14 @@ export function parseUntrustedJson(text: string, source: string, makeError: (mes
     const message = (error as Error).message;
     const position = /position (\d+)/.exec(message);
     const where = position ? `${lineColumn(text, Number(position[1]))}: ` : '';
-    // V8 appends a quoted excerpt of the text ('..."abc"... is not valid JSON'); keep only the reason.
-    const reason = message.replace(/ in JSON at position \d+.*$/s, '').replace(/, ".*" is not valid JSON$/s, '');
-    throw fail(`${where}invalid JSON (${reason.length > 80 ? `${reason.slice(0, 80)}…` : reason})`);
+    // V8 appends a quoted excerpt of the text ('Unexpected token 'x', "xyz..." is not valid JSON'); keep only the reason.
+    const full = message.replace(/ in JSON at position \d+.*$/s, '').replace(/, ".*"(?:\.\.\.)? is not valid JSON$/s, '');
+    const reason = full.length > 80 ? `${full.slice(0, 80)}…` : full;
+    throw fail(messages.invalidJson?.(where, reason) ?? `${source}: ${where}invalid JSON (${reason})`);
   }
   const dup = duplicateKey(text);
-  if (dup) throw fail(`${lineColumn(text, dup.offset)}: field ${excerpt(dup.key).replace(/^"|"$/g, "'")} appears twice in one object`);
+  if (dup) throw fail(`${source}: ${lineColumn(text, dup.offset)}: field ${excerpt(dup.key).replace(/^"|"$/g, "'")} appears twice in one object`);
   const shape = jsonShapeProblem(value);
-  if (shape) throw fail(shape);
+  if (shape) throw fail(`${source}: ${shape}`);
   return value;
 }

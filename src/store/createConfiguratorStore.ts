@@ -61,7 +61,7 @@ function selectionExists(config: Configuration, sel: Selection): boolean {
 export function createConfiguratorStore(options: ConfiguratorStoreOptions): ConfiguratorStore {
   const { catalog } = options;
   const initial = options.initial ?? createConfiguration();
-  const problems = validate(initial, catalog);
+  const problems = validate(initial, catalog, { firstOnly: true });
   if (problems.length > 0) throw new InputError(`initial configuration is invalid: ${problems[0].path}: ${problems[0].message}`);
 
   return createStore<ConfiguratorState>()((set, get) => {
@@ -118,7 +118,7 @@ export function createConfiguratorStore(options: ConfiguratorStoreOptions): Conf
         set({ selection: selectionExists(get().config, selection) ? selection : null });
       },
       load(config) {
-        const p = validate(config, catalog);
+        const p = validate(config, catalog, { firstOnly: true });
         if (p.length > 0) return refuse(`${p[0].path}: ${p[0].message}`);
         commit(pushHistory(get().history, config));
         return { ok: true };
