@@ -1,4 +1,5 @@
 import { InputError } from '../inputError';
+import { oneLine } from '../model/untrustedJson';
 
 /** A subcommand: receives the arguments after its name, returns the exit code. */
 export type Command = (args: string[]) => Promise<number>;
@@ -37,7 +38,13 @@ export async function main(argv: string[]): Promise<number> {
     return await run(rest);
   } catch (error) {
     if (error instanceof InputError) {
-      process.stderr.write(`luxbox ${name}: ${error.message.split('\n')[0]}\n`);
+      process.stderr.write(`luxbox ${name}: ${oneLine(error.message)}\n`);
+      return 1;
+    }
+    // Input too deep or too large for some reader that lacks a limit (the formats check depth and size
+    // first, docs/scene-format.md): still one line, exit 1, not a stack trace. Other errors are bugs.
+    if (error instanceof RangeError && /call stack|Invalid (array|string) length/i.test(error.message)) {
+      process.stderr.write(`luxbox ${name}: input too deeply nested or too large to process (${oneLine(error.message, 80)})\n`);
       return 1;
     }
     throw error;
