@@ -1,4 +1,4 @@
-import type { LightingLuminaire, Rgb, SurfaceName } from '../model/lightingScene';
+import type { LightingLuminaire, NearField, Rgb, SurfaceName } from '../model/lightingScene';
 import type { Photometry } from '../photometry/types';
 
 /**
@@ -21,6 +21,8 @@ export interface BakeScene {
     reflectance: Record<SurfaceName, number | Rgb>;
   };
   luminaires: BakeLuminaire[];
+  /** Near-field model of the luminaires (scene file v2 `nearField`; absent = 'split'); the bake setting `nearField` overrides it. */
+  nearField?: NearField;
 }
 
 export function toRgb(value: number | Rgb): Rgb {

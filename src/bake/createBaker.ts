@@ -1,6 +1,5 @@
 import { SURFACE_NAMES, type Rgb, type SurfaceName, type Vec3 } from '../model/lightingScene';
 import type { Photometry } from '../photometry/types';
-import { tiltMultiplier } from '../photometry/tilt';
 import { blurFragment, combineFragment } from '../../shaders/passes.glsl';
 import { combineTailFragment } from '../../shaders/fluxReduce.glsl';
 import type { BakedMaps } from './bakedMaps';
@@ -24,8 +23,7 @@ import {
   type FloatTarget,
 } from './glResources';
 import { lampReachesSurface } from './lampReach';
-import { applyMat3, luminaireRotation } from './luminaireRotation';
-import { pointSources } from './pointSources';
+import { scenePointSources } from './scenePointSources';
 import { buildProfileTable, DATA_TEXTURE_WIDTH } from './profileTable';
 import { surfaceLayouts, type SurfaceLayout } from './surfaceLayout';
 import type { BakeJob, BakeProgress, BakeReport, Baker } from './bakeJob';
@@ -128,23 +126,13 @@ function startJob(
   const table = buildProfileTable(distinct);
   const dataTexture = distinct.length > 0 ? createDataTexture(gl, table.data, DATA_TEXTURE_WIDTH, table.rows) : null;
 
+  // Point sources (near-field model, TILT, dimming, colour): shared with the CPU directAtPoint.
   let pointSourceCount = 0;
-  const lamps = scene.luminaires.flatMap((l) => {
+  const lamps = scenePointSources(scene, settings).flatMap((l) => {
     const profile = table.layouts[profileIndex.get(l.photometry)!];
-    // TILT data (LM-63 TILT=INCLUDE/<file>) scales the whole grid for a pitched lamp.
-    const dimming = (l.dimming ?? 1) * tiltMultiplier(l.photometry, l.pitch);
-    const color = l.color ?? [1, 1, 1];
-    if (profile.peakCandela <= 0 || dimming <= 0 || color.every((c) => c <= 0)) return [];
-    const rotation = luminaireRotation(l.yaw, l.pitch, l.roll);
-    const local = pointSources(l.photometry, settings.sourceSpacing, settings.maxSourcesPerAxis);
-    const sources = local.map((p): Vec3 => {
-      const w = applyMat3(rotation, p);
-      // Keep split sources inside the room (an opening flush with a wall).
-      return [0, 1, 2].map((a) => Math.min(roomSize[a], Math.max(0, l.position[a] + w[a]))) as Vec3;
-    });
-    pointSourceCount += sources.length;
-    const weight: Rgb = [0, 1, 2].map((c) => (color[c] * dimming) / sources.length) as Rgb;
-    return [{ profile, rotation, sources, weight } satisfies DirectLamp];
+    if (profile.peakCandela <= 0) return [];
+    pointSourceCount += l.sources.length;
+    return [{ profile, rotation: l.rotation, sources: l.sources, weight: l.weight } satisfies DirectLamp];
   });
 
   const target = (layout: SurfaceLayout) => createFloatTarget(gl, layout.width, layout.height, linear);
@@ -177,7 +165,7 @@ function startJob(
         directSkipped.push(st.layout.name);
         continue;
       }
-      const prog = program(generateDirectShader(st.layout, reaching), 'direct', st.layout.name);
+      const prog = program(generateDirectShader(st.layout, reaching, settings.texelSupersampling), 'direct', st.layout.name);
       drawInto(gl, st.direct, prog, () => bindTexture(gl, prog, 'uProfiles', 0, dataTexture!));
     }
   });

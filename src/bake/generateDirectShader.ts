@@ -56,44 +56,80 @@ export function profileFunction(p: ProfileLayout): string {
 `;
 }
 
+/** Largest angle (radians) a direct-pass sub-sample cell may subtend from a luminaire: ≈ 2°, finer than the steep flanks of a narrow spot's grid. */
+export const SUBSAMPLE_ANGLE = 0.035;
+
 /**
- * The direct pass for one surface: E = Σ I(γ, C)·cos(incidence)/d² at each
- * texel centre (CIE 171:2006 §5.2, the inverse-square cosine law), summed
- * over the point sources of the luminaires that can reach this surface.
- * Everything scene-specific is a compile-time constant.
+ * The direct pass for one surface: E = Σ I(γ, C)·cos(incidence)/d² (CIE 171:2006
+ * §5.2, the inverse-square cosine law), summed over the point sources of the
+ * luminaires that can reach this surface. Everything scene-specific is a
+ * compile-time constant.
+ *
+ * A texel stores the mean illuminance over its area, not the value at its
+ * centre: where a luminaire is close (the texel subtends more than
+ * SUBSAMPLE_ANGLE from it), each luminaire's sum is taken over an n×n grid of
+ * cell centres in the texel (midpoint rule), n = ⌈texel diagonal / (distance ·
+ * SUBSAMPLE_ANGLE)⌉ ≤ `supersampling`. So the flux that bounces (Σ E·A) and the
+ * averages shown stay right at any texel size, even for a hot spot smaller than
+ * a texel. `supersampling` = 1 gives the centre value everywhere.
  */
-export function generateDirectShader(surface: SurfaceLayout, lamps: DirectLamp[]): string {
+export function generateDirectShader(surface: SurfaceLayout, lamps: DirectLamp[], supersampling = 1): string {
   const uAxis: Vec3 = [0, 0, 0];
   uAxis[surface.uAxisIndex] = surface.lengthU;
   const vAxis: Vec3 = [0, 0, 0];
   vAxis[surface.vAxisIndex] = surface.lengthV;
+  const texelU: Vec3 = [0, 0, 0];
+  texelU[surface.uAxisIndex] = surface.lengthU / surface.width;
+  const texelV: Vec3 = [0, 0, 0];
+  texelV[surface.vAxisIndex] = surface.lengthV / surface.height;
+  const texelDiagonal = Math.hypot(surface.lengthU / surface.width, surface.lengthV / surface.height);
+  const sub = Math.max(1, Math.floor(supersampling));
   const profiles = [...new Map(lamps.map((l) => [l.profile.id, l.profile])).values()];
   const lampCode = lamps
     .map((lamp, k) => {
       const n = lamp.sources.length;
+      const centre = [0, 1, 2].map((a) => lamp.sources.reduce((acc, p) => acc + p[a], 0) / n) as Vec3;
+      const radius = Math.max(...lamp.sources.map((p) => Math.hypot(p[0] - centre[0], p[1] - centre[1], p[2] - centre[2])));
       return `const vec3 LAMP${k}_SOURCES[${n}] = vec3[${n}](${lamp.sources.map(glslVec3).join(', ')});
 const mat3 LAMP${k}_TO_LOCAL = ${glslMat3Transposed(lamp.rotation)};
 const vec3 LAMP${k}_WEIGHT = ${glslVec3(lamp.weight)};
-`;
+${sub > 1 ? `const vec3 LAMP${k}_CENTRE = ${glslVec3(centre)};
+const float LAMP${k}_RADIUS = ${glslFloat(radius)};
+` : ''}`;
     })
     .join('');
-  const sums = lamps
-    .map(
-      (lamp, k) => `  {
-    float e = 0.0;
-    for (int s = 0; s < ${lamp.sources.length}; s++) {
-      vec3 d = p - LAMP${k}_SOURCES[s];
+  const sourceLoop = (k: number, count: number, point: string) => `for (int s = 0; s < ${count}; s++) {
+      vec3 d = ${point} - LAMP${k}_SOURCES[s];
       float d2 = max(dot(d, d), 1e-12);
       float invD = inversesqrt(d2);
       float cosIncidence = -dot(d, NORMAL) * invD;
-      if (cosIncidence > 0.0) e += intensity${lamp.profile.id}(LAMP${k}_TO_LOCAL * (d * invD)) * cosIncidence / d2;
+      if (cosIncidence > 0.0) e += intensity${lamps[k].profile.id}(LAMP${k}_TO_LOCAL * (d * invD)) * cosIncidence / d2;
+    }`;
+  const sums = lamps
+    .map((lamp, k) =>
+      sub > 1
+        ? `  {
+    float e = 0.0;
+    float near = max(distance(p, LAMP${k}_CENTRE) - LAMP${k}_RADIUS, 1e-6);
+    int n = int(clamp(ceil(TEXEL_DIAGONAL / (near * ${glslFloat(SUBSAMPLE_ANGLE)})), 1.0, ${glslFloat(sub)}));
+    float inv = 1.0 / float(n);
+    for (int sj = 0; sj < n; sj++) {
+      for (int si = 0; si < n; si++) {
+        vec3 q = p + TEXEL_U * ((float(si) + 0.5) * inv - 0.5) + TEXEL_V * ((float(sj) + 0.5) * inv - 0.5);
+        ${sourceLoop(k, lamp.sources.length, 'q')}
+      }
     }
+    lux += LAMP${k}_WEIGHT * (e * inv * inv);
+  }`
+        : `  {
+    float e = 0.0;
+    ${sourceLoop(k, lamp.sources.length, 'p')}
     lux += LAMP${k}_WEIGHT * e;
   }`,
     )
     .join('\n');
   return `${fragmentHeader}
-// direct pass, surface ${surface.name}, ${lamps.length} luminaire(s)
+// direct pass, surface ${surface.name}, ${lamps.length} luminaire(s)${sub > 1 ? `, texel means (≤ ${sub}² sub-samples)` : ''}
 #define DATA_WIDTH ${DATA_TEXTURE_WIDTH}
 ${profileLookup}
 const vec3 ORIGIN = ${glslVec3(surface.origin)};
@@ -101,7 +137,10 @@ const vec3 U_AXIS = ${glslVec3(uAxis)};
 const vec3 V_AXIS = ${glslVec3(vAxis)};
 const vec3 NORMAL = ${glslVec3(surface.normal)};
 const vec2 RESOLUTION = vec2(${glslFloat(surface.width)}, ${glslFloat(surface.height)});
-${profiles.map(profileFunction).join('')}
+${sub > 1 ? `const vec3 TEXEL_U = ${glslVec3(texelU)};
+const vec3 TEXEL_V = ${glslVec3(texelV)};
+const float TEXEL_DIAGONAL = ${glslFloat(texelDiagonal)};
+` : ''}${profiles.map(profileFunction).join('')}
 ${lampCode}
 out vec4 outColor;
 void main() {

@@ -18,6 +18,8 @@ import type { SurfaceLayout } from './surfaceLayout';
  * itself is never (a ray leaving a plane cannot return to it). Samples add to
  * an accumulation map, so a bounce can be spread over many frames; the
  * previous bounce's accumulation (S samples) is read with uInputScale = 1/S.
+ * For bounce 1 the sampled maps may be residual direct maps with the bright
+ * patches cut out; their light is added exactly from uBright (brightPatches.ts).
  */
 export function generateGatherShader(
   surface: SurfaceLayout,
@@ -67,6 +69,9 @@ uniform int uFirstSample;
 uniform int uSampleCount;
 uniform float uInputScale;
 uniform int uSeed;
+// Bounce 1 only: the exact illuminance from the bright patches (brightPatches.ts), once per sample.
+uniform sampler2D uBright;
+uniform float uBrightWeight;
 ${sampling}
 ${rayBox}
 vec3 exitance(vec3 origin, vec3 dir) {
@@ -88,7 +93,8 @@ void main() {
     vec3 dir = cosineDirection(r2Sample(uint(uFirstSample + k), rotation), NORMAL, TANGENT, BITANGENT);
     sum += exitance(p, dir);
   }
-  outColor = vec4(texelFetch(uAccumulated, texel, 0).rgb + sum * uInputScale, 1.0);
+  vec3 bright = uBrightWeight > 0.0 ? uBrightWeight * float(uSampleCount) * texelFetch(uBright, texel, 0).rgb : vec3(0.0);
+  outColor = vec4(texelFetch(uAccumulated, texel, 0).rgb + sum * uInputScale + bright, 1.0);
 }
 `;
 }

@@ -1,6 +1,8 @@
 import { type Rgb, type SurfaceName, type Vec3 } from '../model/lightingScene';
 import { LUMINANCE_WEIGHTS, type BakedMaps } from './bakedMaps';
 import type { SurfaceLayout } from './surfaceLayout';
+import { directAtPoint } from './directAtPoint';
+import type { LampSources } from './scenePointSources';
 
 /** The surface nearest to a point and the distance to its plane (∞ outside the room's footprint on that plane). */
 export function nearestSurface(room: { width: number; height: number; depth: number }, p: Vec3): { surface: SurfaceName; distance: number } {
@@ -72,4 +74,33 @@ export function probeMaps(maps: BakedMaps, room: { width: number; height: number
     indirect: bilinearLux(m.layout, m.indirect, u, v),
     total: bilinearLux(m.layout, m.total, u, v),
   };
+}
+
+/**
+ * Illuminance at a point on a surface with the direct part evaluated exactly at
+ * the point (directAtPoint: the same point sources as the bake, on the CPU) and
+ * only the indirect part read from the maps (bilinear). What `luxbox probe`
+ * prints: near a hot spot direct light varies by orders of magnitude within a
+ * texel, so a map lookup of it is wrong at any texel size; the indirect light is
+ * smooth there.
+ */
+export function probeExact(
+  maps: BakedMaps,
+  lamps: readonly LampSources[],
+  room: { width: number; height: number; depth: number },
+  point: Vec3,
+): ProbeValue {
+  const { surface } = nearestSurface(room, point);
+  const m = maps[surface];
+  const u = point[m.layout.uAxisIndex];
+  const v = point[m.layout.vAxisIndex];
+  // On the surface's plane (probe points may lie up to 1 cm off it).
+  const p: Vec3 = [point[0], point[1], point[2]];
+  p[m.layout.normalAxisIndex] = m.layout.origin[m.layout.normalAxisIndex];
+  p[m.layout.uAxisIndex] = Math.min(m.layout.lengthU, Math.max(0, u));
+  p[m.layout.vAxisIndex] = Math.min(m.layout.lengthV, Math.max(0, v));
+  const d = directAtPoint(lamps, p, m.layout.normal);
+  const direct = LUMINANCE_WEIGHTS[0] * d[0] + LUMINANCE_WEIGHTS[1] * d[1] + LUMINANCE_WEIGHTS[2] * d[2];
+  const indirect = bilinearLux(m.layout, m.indirect, u, v);
+  return { surface, direct, indirect, total: direct + indirect };
 }

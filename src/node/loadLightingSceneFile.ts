@@ -64,5 +64,6 @@ export function loadLightingSceneFile(path: string): LoadedLightingScene {
     }
     return { photometry, position: l.position, yaw: l.yaw, pitch: l.pitch, roll: l.roll, dimming: l.dimming ?? 1, color: l.color ?? [1, 1, 1] };
   });
-  return { scene, photometries, bakeScene: { room: scene.room, luminaires } as BakeScene };
+  const bakeScene: BakeScene = { room: scene.room, luminaires, ...(scene.nearField ? { nearField: scene.nearField } : {}) };
+  return { scene, photometries, bakeScene };
 }

@@ -3,7 +3,8 @@
  * (CIE 171:2006 §5.2): E = I(γ, C)·cosθ/d², the reference computed here in
  * float64 with the photometry module's own interpolation (intensity()) and
  * rotations written independently of the baker. And CIE 171 §5.4: in a black
- * room, Σ E·A over the six surfaces equals the source flux.
+ * room, Σ E·A over the six surfaces equals the source flux (with the default
+ * texel means).
  */
 import { describe, expect, it } from 'vitest';
 import { SURFACE_NAMES, type Vec3 } from '../../src/model/lightingScene';
@@ -19,7 +20,9 @@ import { withHeadlessGL } from './withHeadlessGL';
 const gl = withHeadlessGL();
 const baker = createBaker(gl);
 // Point sources only here: the law is for a point; openings are tested separately.
-const pointOnly = { sourceSpacing: 0, bounces: 0 } as const;
+// Texel centres, not texel means (texelSupersampling 1): the law is checked point by point;
+// the means are checked in stiff.test.ts.
+const pointOnly = { sourceSpacing: 0, bounces: 0, texelSupersampling: 1 } as const;
 
 interface Lamp {
   photometry: Photometry;
