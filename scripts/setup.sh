@@ -8,8 +8,9 @@ need_pkgs=()
 command -v chromium >/dev/null 2>&1 || need_pkgs+=(chromium)
 command -v xvfb-run >/dev/null 2>&1 || need_pkgs+=(xvfb xauth)
 # headless-gl's native binding is compiled with node-gyp against these; the fonts are
-# listed so screenshot goldens see the same glyphs on every machine.
-for p in build-essential python3 pkg-config libxi-dev libglu1-mesa-dev libglew-dev libgl1-mesa-dri fonts-dejavu-core fonts-dejavu-extra fonts-liberation; do
+# listed so screenshot goldens see the same glyphs on every machine. libvulkan1 +
+# mesa-vulkan-drivers give ANGLE's Vulkan back end (no X display; docs/gpu-server.md).
+for p in build-essential python3 pkg-config libxi-dev libglu1-mesa-dev libglew-dev libgl1-mesa-dri libvulkan1 mesa-vulkan-drivers fonts-dejavu-core fonts-dejavu-extra fonts-liberation; do
   dpkg -s "$p" >/dev/null 2>&1 || need_pkgs+=("$p")
 done
 if [ ${#need_pkgs[@]} -gt 0 ]; then
@@ -29,3 +30,6 @@ fi
 if [ ! -f node_modules/gl/build/Release/webgl.node ]; then
   npm rebuild gl
 fi
+# ANGLE loads libvulkan.so.1 from its own folder: link the system loader there
+# (npm ci's postinstall does the same; this covers an existing node_modules).
+node scripts/linkVulkanLoader.mjs

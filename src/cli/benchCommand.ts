@@ -6,9 +6,9 @@ import { BENCH_DOC_INTRO, BENCH_DOC_OUTRO, BENCH_MARKERS } from '../bench/benchD
 import { errorTimeSvg } from '../bench/errorTimeSvg';
 import { runBench } from '../bench/runBench';
 import { InputError } from '../inputError';
-import { ensureDisplay } from '../node/ensureDisplay';
+import { prepareGl } from '../node/prepareGl';
 
-const usage = 'bench [--quick] [--out <dir>]';
+const usage = 'bench [--quick] [--out <dir>] [--gl vulkan|glx|auto]';
 const SVG = 'benchmarks-error-vs-time.svg';
 
 /**
@@ -20,16 +20,20 @@ const SVG = 'benchmarks-error-vs-time.svg';
 export async function run(args: string[]): Promise<number> {
   let quick = false;
   let out: string | null = null;
+  let gl: string | undefined;
   for (let i = 0; i < args.length; i++) {
     const a = args[i];
     if (a === '--quick') quick = true;
     else if (a === '--out') {
       out = args[++i] ?? null;
       if (!out) throw new InputError(`--out needs a folder (usage: luxbox ${usage})`);
+    } else if (a === '--gl') {
+      gl = args[++i];
+      if (!gl) throw new InputError(`--gl needs vulkan, glx or auto (usage: luxbox ${usage})`);
     } else throw new InputError(`unknown argument "${a}" (usage: luxbox ${usage})`);
   }
-  const reexit = ensureDisplay();
-  if (reexit !== null) return reexit;
+  const { exit } = prepareGl(gl);
+  if (exit !== null) return exit;
   const root = resolve(fileURLToPath(new URL('../..', import.meta.url)));
   if (!quick && out === null) out = join(root, 'docs');
   const result = runBench({ quick, root, log: (line) => process.stderr.write(line + '\n') });

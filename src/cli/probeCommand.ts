@@ -3,14 +3,14 @@ import { basename } from 'node:path';
 import { z } from 'zod';
 import { InputError } from '../inputError';
 import type { Vec3 } from '../model/lightingScene';
-import { nearestSurface, probeMaps } from '../bake/probeMaps';
+import { nearestSurface, probeScene } from '../bake/probeMaps';
 import { parseBakeCli } from '../node/bakeCliOptions';
 import { bakeLoadedScene } from '../node/bakeSceneFile';
 import { resolveBakeSettings } from '../bake/bakeSettings';
-import { ensureDisplay } from '../node/ensureDisplay';
+import { prepareGl } from '../node/prepareGl';
 import { loadLightingSceneFile, parseJsonText } from '../node/loadLightingSceneFile';
 
-export const probeUsage = 'probe <scene.json> <points.json> [--samples N --bounces N --texel m]';
+export const probeUsage = 'probe <scene.json> <points.json> [--samples N --bounces N --texel m --gl vulkan|glx|auto]';
 
 /** Probe points must lie on a surface, within this distance (metres). */
 export const PROBE_TOLERANCE = 0.01;
@@ -21,7 +21,7 @@ const pointsSchema = z.object({
 
 /** `luxbox probe`: bake, then print {total, direct, indirect} lux at the given surface points. */
 export async function run(args: string[]): Promise<number> {
-  const { positional, settings } = parseBakeCli('probe', args, []);
+  const { positional, settings, options } = parseBakeCli('probe', args, ['--gl']);
   if (positional.length !== 2) throw new InputError(`expected a scene file and a points file (usage: luxbox ${probeUsage})`);
   const [scenePath, pointsPath] = positional;
   const source = basename(pointsPath);
@@ -49,10 +49,11 @@ export async function run(args: string[]): Promise<number> {
       );
     }
   });
-  const reexit = ensureDisplay();
-  if (reexit !== null) return reexit;
+  const { exit } = prepareGl(options['--gl']);
+  if (exit !== null) return exit;
   const { maps } = bakeLoadedScene(loaded, settings);
-  const values = points.map((p) => probeMaps(maps, room, p));
+  // Direct light exactly at each point (CPU), indirect from the maps.
+  const values = probeScene(loaded.bakeScene, maps, settings, points);
   const result = { total: values.map((v) => v.total), direct: values.map((v) => v.direct), indirect: values.map((v) => v.indirect) };
   process.stdout.write(JSON.stringify(result) + '\n');
   return 0;

@@ -9,7 +9,12 @@ const NUMERIC_FLAGS: Record<string, keyof BakeSettings> = {
   '--max-texture': 'maxTextureSize',
   '--blur': 'blurRadius',
   '--seed': 'seed',
+  '--bright-patches': 'brightPatches',
+  '--supersample': 'texelSupersampling',
 };
+
+/** `--near-field split|point`: overrides the scene file's `nearField` (docs/baker.md, "Luminous openings"). */
+const NEAR_FIELD_FLAG = '--near-field';
 
 export interface ParsedCli {
   positional: string[];
@@ -19,8 +24,9 @@ export interface ParsedCli {
 
 /**
  * Split arguments into positionals, quality settings and other `--name value`
- * options (`valueFlags`). `--no-tail` switches the ρ→1 tail estimate off.
- * Unknown flags and non-numbers are input errors.
+ * options (`valueFlags`). `--no-tail` switches the ρ→1 tail estimate off;
+ * `--near-field split|point` picks the near-field model. Unknown flags, bad
+ * near-field names and non-numbers are input errors.
  */
 export function parseBakeCli(command: string, args: string[], valueFlags: string[]): ParsedCli {
   const positional: string[] = [];
@@ -38,12 +44,15 @@ export function parseBakeCli(command: string, args: string[], valueFlags: string
       continue;
     }
     const key = NUMERIC_FLAGS[name];
-    if (!key && !valueFlags.includes(name)) {
-      throw new InputError(`${command}: unknown option ${name} (options: ${[...Object.keys(NUMERIC_FLAGS), ...valueFlags, '--no-tail'].join(', ')})`);
+    if (!key && name !== NEAR_FIELD_FLAG && !valueFlags.includes(name)) {
+      throw new InputError(`${command}: unknown option ${name} (options: ${[...Object.keys(NUMERIC_FLAGS), NEAR_FIELD_FLAG, ...valueFlags, '--no-tail'].join(', ')})`);
     }
     const value = inline ?? args[++i];
     if (value === undefined) throw new InputError(`${command}: ${name} needs a value`);
-    if (key) {
+    if (name === NEAR_FIELD_FLAG) {
+      if (value !== 'split' && value !== 'point') throw new InputError(`${command}: ${NEAR_FIELD_FLAG} must be split or point, got "${value}"`);
+      settings.nearField = value;
+    } else if (key) {
       const n = Number(value);
       if (value.trim() === '' || !Number.isFinite(n)) throw new InputError(`${command}: ${name} must be a number, got "${value}"`);
       (settings as Record<string, number>)[key] = n;

@@ -2,8 +2,35 @@ import type { BakedMaps } from '../bake/bakedMaps';
 import type { BakeSettings } from '../bake/bakeSettings';
 import { resolveBakeSettings } from '../bake/bakeSettings';
 import { createBaker, type BakeReport } from '../bake/createBaker';
+import { cachedProgramCount } from '../bake/glResources';
 import { createHeadlessGL } from './createHeadlessGL';
 import { loadLightingSceneFile, type LoadedLightingScene } from './loadLightingSceneFile';
+
+export interface SceneBaker {
+  /** Bake a loaded scene; programs compiled by earlier bakes of this SceneBaker are reused. */
+  bake(loaded: LoadedLightingScene, settings: Partial<BakeSettings>): { loaded: LoadedLightingScene; maps: BakedMaps; report: BakeReport };
+  /** Programs compiled so far on this context (a batch compiles each distinct shader once). */
+  programCount(): number;
+  destroy(): void;
+}
+
+/**
+ * One headless-gl context and baker for many bakes: the program cache lives
+ * as long as the context, so a batch (`luxbox bake a.json b.json …`) pays each
+ * shader compile once.
+ */
+export function createSceneBaker(): SceneBaker {
+  const gl = createHeadlessGL();
+  const baker = createBaker(gl);
+  return {
+    bake(loaded, settings) {
+      const { maps, report } = baker.bake(loaded.bakeScene, resolveBakeSettings(settings));
+      return { loaded, maps, report };
+    },
+    programCount: () => cachedProgramCount(gl),
+    destroy: () => gl.destroy(),
+  };
+}
 
 /** Load a scene file and bake it on a fresh headless-gl context (shared by `bake` and `probe`). */
 export function bakeSceneFile(path: string, settings: Partial<BakeSettings>): { loaded: LoadedLightingScene; maps: BakedMaps; report: BakeReport } {
@@ -13,12 +40,10 @@ export function bakeSceneFile(path: string, settings: Partial<BakeSettings>): { 
 
 /** Bake an already loaded scene on a fresh headless-gl context. */
 export function bakeLoadedScene(loaded: LoadedLightingScene, settings: Partial<BakeSettings>): { loaded: LoadedLightingScene; maps: BakedMaps; report: BakeReport } {
-  const resolved = resolveBakeSettings(settings);
-  const gl = createHeadlessGL();
+  const sceneBaker = createSceneBaker();
   try {
-    const { maps, report } = createBaker(gl).bake(loaded.bakeScene, resolved);
-    return { loaded, maps, report };
+    return sceneBaker.bake(loaded, settings);
   } finally {
-    gl.destroy();
+    sceneBaker.destroy();
   }
 }
