@@ -1,7 +1,16 @@
 import { readFileSync, statSync } from 'node:fs';
 import { basename, dirname, join } from 'node:path';
 import { InputError } from '../inputError';
-import { beamAndField, integrateFlux, parsePhotometry, peakIntensity, type Photometry } from '../photometry';
+import {
+  beamAndField,
+  integrateFlux,
+  MAX_PHOTOMETRY_BYTES,
+  parsePhotometry,
+  peakIntensity,
+  photometryWarnings,
+  PhotometryParseError,
+  type Photometry,
+} from '../photometry';
 
 /** A command-line usage problem (missing file argument, unknown option, unreadable file). */
 export class IesCommandError extends InputError {
@@ -52,7 +61,12 @@ export interface IesInfo {
 
 function readFile(path: string): Uint8Array {
   try {
-    if (!statSync(path).isFile()) throw new IesCommandError(`${path}: not a file`);
+    const stat = statSync(path);
+    if (!stat.isFile()) throw new IesCommandError(`${path}: not a file`);
+    // Refused before reading: a multi-gigabyte file must not be loaded to find out.
+    if (stat.size > MAX_PHOTOMETRY_BYTES) {
+      throw new PhotometryParseError(basename(path), null, `the file is ${Math.round(stat.size / 104857.6) / 10} MB, over the ${MAX_PHOTOMETRY_BYTES / 1048576} MB limit for photometric files`);
+    }
     return readFileSync(path);
   } catch (error) {
     if (error instanceof InputError) throw error;
@@ -105,7 +119,8 @@ export function describe(path: string): IesInfo {
     field: { c0: r2(bf.c0.field), c90: r2(bf.c90.field) },
     inputWatts: ph.inputWatts,
     luminousOpening: ph.luminousOpening,
-    warnings: ph.warnings,
+    // Non-fatal findings (360° ≠ 0° plane, stated vs integrated lumens, sorted angles, …).
+    warnings: photometryWarnings(ph),
   };
 }
 

@@ -260,7 +260,8 @@ function lumensFromText(text: string | undefined, beforeLm: boolean): number | n
   if (text === undefined) return null;
   if (!beforeLm) {
     const read = readDecimal(text.trim());
-    return read.ok && read.value > 0 ? read.value : null;
+    if (!read.ok) return read.problem === 'not a number' ? null : Infinity;
+    return read.value > 0 ? read.value : null;
   }
   // Each "lm" not followed by a letter/digit: the numeral just before it (spaces allowed).
   const lower = text.toLowerCase();

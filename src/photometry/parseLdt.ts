@@ -154,6 +154,7 @@ export function parseLdt(text: string, fileName: string): Photometry {
   if (lorl === null) warnings.push(`line ${lorlLine}: the light output ratio LORL is not given; no stated lumens`);
   else if (!(lorl > 0 && lorl <= 100.5)) warnings.push(`light output ratio LORL is ${lorl} % (expected 0..100)`);
   if (lorl !== null && lorl < 0) throw new PhotometryParseError(fileName, lorlLine, `light output ratio LORL must not be negative, found ${lorl}`);
+  if (lorl !== null) checkRange(fileName, lorlLine, 'light output ratio LORL (%)', lorl, 0, 1000);
   const statedLumens = lorl !== null && lorl > 0 ? (totalFlux * lorl) / 100 : null;
   if (statedLumens !== null) {
     checkRange(fileName, lorlLine, 'stated lumens (lamp flux × LORL)', statedLumens, MIN_LUMENS, MAX_LUMENS);
