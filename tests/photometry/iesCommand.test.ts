@@ -41,6 +41,25 @@ describe('luxbox ies info', () => {
     expect(text.stdout).toContain('beam (50 %):');
   });
 
+  it('warnings appear in the text output and in --json', () => {
+    const warning =
+      'stated lumens 34 lm and integrated flux 2047 lm differ by 5921 % (ratio 60.21); the integrated flux of the candela data is used';
+    const json = luxbox('ies', 'info', 'tests/fixtures/photometry/lumens_mismatch_60x.ies', '--json');
+    expect(json.status).toBe(0);
+    expect(JSON.parse(json.stdout).warnings).toEqual([warning]);
+    const text = luxbox('ies', 'info', 'tests/fixtures/photometry/c_full_360_seam_differs.ies');
+    expect(text.status).toBe(0);
+    expect(text.stdout).toContain('warnings:          the 360° plane differs from the 0° plane');
+  });
+
+  it('hostile input: one short stderr line, exit 1, no echo of a 40 000-digit numeral', () => {
+    const r = luxbox('ies', 'info', 'tests/fixtures/photometry/fuzz-regressions/long_message_ldt_header_numeral_40k_digits.ldt');
+    expect(r.status).toBe(1);
+    expect(r.stderr.trim().split('\n')).toHaveLength(1);
+    expect(r.stderr.length).toBeLessThan(250);
+    expect(r.stderr).toContain('line 5: the C-plane distance Dc: a numeral of 40001 characters is too long (limit 100)');
+  });
+
   it('missing and malformed files: one stderr line, exit 1', () => {
     const missing = luxbox('ies', 'info', 'public/ies/nope.ies');
     expect(missing.status).toBe(1);
