@@ -51,7 +51,7 @@ export interface SurfaceTileSums {
 
 export interface BrightSelection {
   patches: BrightPatch[];
-  /** Peakedness S·Σ M²A / (Σ M A)² of all exitance (1 = uniform), and of what the Monte Carlo gather still samples. */
+  /** Peakedness S·Σ M²A / (Σ M A)² of all exitance (1 = uniform), and the same with Σ M²A over only what the Monte Carlo gather still samples. */
   peakedness: number;
   residualPeakedness: number;
 }
@@ -62,7 +62,8 @@ const yOf = (c: Rgb | number[]): number => LUMINANCE_WEIGHTS[0] * c[0] + LUMINAN
  * Which tiles to gather deterministically. The variance of the cosine-sampled
  * gather of bounce 1 is, up to geometry, Σ M²·A over what it samples; for a
  * uniform exitance of the same flux it would be (Σ M·A)²/S. Tiles are taken in
- * decreasing Σ M²·A until the remaining "peakedness" S·Σ M²A/(Σ MA)² is below
+ * decreasing Σ M²·A until the "peakedness" S·Σ M²A/(Σ MA)² of what the gather
+ * still samples (Σ M²A over the residual, Σ MA over all exitance) is below
  * `targetPeakedness`, at most `maxPatches`, and only tiles whose mean exitance is
  * above `minContrast` × the room mean (a smooth room selects nothing and pays
  * nothing).
@@ -94,16 +95,16 @@ export function selectBrightPatches(
       candidates.push({ s, k, score, flux, y });
     }
   }
-  const peak = (score: number, y: number) => (y > 0 ? (area * score) / (y * y) : 1);
-  const peakedness = peak(scoreAll, yAll);
+  // Relative to all of the exitance: the residual's noise against the whole signal.
+  const peak = (score: number) => (yAll > 0 ? (area * score) / (yAll * yAll) : 1);
+  const peakedness = peak(scoreAll);
   const patches: BrightPatch[] = [];
   if (!(yAll > 0) || options.maxPatches <= 0) return { patches, peakedness, residualPeakedness: peakedness };
   candidates.sort((a, b) => b.score - a.score);
   const meanExitance = yAll / area;
   let score = scoreAll;
-  let y = yAll;
   for (const c of candidates) {
-    if (patches.length >= options.maxPatches || peak(score, y) <= options.targetPeakedness) break;
+    if (patches.length >= options.maxPatches || peak(score) <= options.targetPeakedness) break;
     const { layout, tile } = c.s;
     const du = layout.lengthU / layout.width;
     const dv = layout.lengthV / layout.height;
@@ -141,9 +142,8 @@ export function selectBrightPatches(
       exitance: c.flux.map((f) => f / rectArea) as Rgb,
     });
     score -= c.score;
-    y -= c.y;
   }
-  return { patches, peakedness, residualPeakedness: peak(Math.max(0, score), y) };
+  return { patches, peakedness, residualPeakedness: peak(Math.max(0, score)) };
 }
 
 /** Texels per tile edge for a target tile size (metres). */

@@ -2,7 +2,9 @@ import { type Rgb, type SurfaceName, type Vec3 } from '../model/lightingScene';
 import { LUMINANCE_WEIGHTS, type BakedMaps } from './bakedMaps';
 import type { SurfaceLayout } from './surfaceLayout';
 import { directAtPoint } from './directAtPoint';
-import type { LampSources } from './scenePointSources';
+import { scenePointSources, type LampSources } from './scenePointSources';
+import type { BakeScene } from './bakeScene';
+import { resolveBakeSettings, type BakeSettings } from './bakeSettings';
 
 /** The surface nearest to a point and the distance to its plane (∞ outside the room's footprint on that plane). */
 export function nearestSurface(room: { width: number; height: number; depth: number }, p: Vec3): { surface: SurfaceName; distance: number } {
@@ -103,4 +105,10 @@ export function probeExact(
   const direct = LUMINANCE_WEIGHTS[0] * d[0] + LUMINANCE_WEIGHTS[1] * d[1] + LUMINANCE_WEIGHTS[2] * d[2];
   const indirect = bilinearLux(m.layout, m.indirect, u, v);
   return { surface, direct, indirect, total: direct + indirect };
+}
+
+/** probeExact at many points of a baked scene (the point sources follow the same settings as the bake). */
+export function probeScene(scene: BakeScene, maps: BakedMaps, settings: Partial<BakeSettings>, points: readonly Vec3[]): ProbeValue[] {
+  const lamps = scenePointSources(scene, resolveBakeSettings(settings));
+  return points.map((p) => probeExact(maps, lamps, scene.room, p));
 }
