@@ -5,7 +5,7 @@
  */
 import { z } from 'zod';
 import { InputError } from '../inputError';
-import { describeIssues, formatPath as formatFieldPath, jsonShapeProblem, oneLine, schemaFieldNames } from './untrustedJson';
+import { describeIssues, formatPath as formatFieldPath, jsonShapeProblem, oneLine, parseUntrustedJson, schemaFieldNames } from './untrustedJson';
 
 /** Module distributions along a rail; defined precisely in docs/model.md and src/model/distribution.ts. */
 export const DISTRIBUTIONS = ['start', 'end', 'inside-centred', 'outside-centred'] as const;
@@ -182,6 +182,11 @@ export function parseCatalog(data: unknown, source = 'catalog'): Catalog {
   const r = catalogSchema.safeParse(data);
   if (!r.success) throw new CatalogError(`${source}: ${describeIssues(r.error.issues, CATALOG_FIELDS)}`);
   return r.data;
+}
+
+/** Reads a catalog file's text (size, syntax, duplicate keys, depth limits first); throws CatalogError, one line. */
+export function parseCatalogText(text: string, source = 'catalog'): Catalog {
+  return parseCatalog(parseUntrustedJson(text, source, (m) => new CatalogError(m)), source);
 }
 
 /** 'presets[2].rails[0].length' style path for messages; '(root)' for the root. */

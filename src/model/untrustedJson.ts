@@ -262,7 +262,7 @@ export function parseUntrustedJson(text: string, source: string, makeError: (mes
     const position = /position (\d+)/.exec(message);
     const where = position ? `${lineColumn(text, Number(position[1]))}: ` : '';
     // V8 appends a quoted excerpt of the text ('Unexpected token 'x', "xyz..." is not valid JSON'); keep only the reason.
-    const full = message.replace(/ in JSON at position \d+.*$/s, '').replace(/, ".*"(?:\.\.\.)? is not valid JSON$/s, '');
+    const full = message.replace(/ in JSON at position \d+.*$/s, '').replace(/, (?:\.\.\.)?".*"(?:\.\.\.)? is not valid JSON$/s, '');
     const reason = full.length > 80 ? `${full.slice(0, 80)}…` : full;
     throw fail(messages.invalidJson?.(where, reason) ?? `${source}: ${where}invalid JSON (${reason})`);
   }
