@@ -172,7 +172,7 @@ export function parseLdt(text: string, fileName: string): Photometry {
       ratios++;
       continue;
     }
-    const parts = raw.split(/[\s;]+/);
+    const parts = raw.split(/[\s,;]+/);
     if (ratios + parts.length > 10) {
       throw new PhotometryParseError(fileName, line, `expected ${10 - ratios} more direct ratio(s) (10 in all), found ${parts.length} values on this line`);
     }

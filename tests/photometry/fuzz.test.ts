@@ -1,4 +1,6 @@
+import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
+import { parsePhotometry } from '../../src/photometry';
 import { photometryFuzzTarget, photometryRegressions, PHOTOMETRY_RANGES } from '../fuzz/photometryTarget';
 import { rng } from './helpers';
 import { mutate } from './mutate';
@@ -11,8 +13,11 @@ import { mutate } from './mutate';
  * takes more than a second. A failing input is written nowhere by this test:
  * copy it into tests/fixtures/photometry/fuzz-regressions/ when fixing it.
  */
-const MUTATIONS_PER_SEED = 40;
+const MUTATIONS_PER_SEED = 45;
+/** Type A/B seeds are resampled onto a 361 × 361 grid (~50–150 ms a parse): fewer of them. */
+const MUTATIONS_PER_TYPE_AB_SEED = 12;
 const SLOW_MS = 1000;
+const TILT = readFileSync('tests/fixtures/photometry/lamp_tilt.tlt', 'latin1');
 
 interface Failure {
   seed: string;
@@ -54,13 +59,18 @@ describe('photometry fuzz (seeded, bounded)', () => {
     expect(counts.accepted).toBe(seeds.length);
   });
 
-  it(`${MUTATIONS_PER_SEED} mutations of each seed: no crash, hang, non-finite value or bad message`, () => {
+  it(`${MUTATIONS_PER_SEED} mutations of each seed (${MUTATIONS_PER_TYPE_AB_SEED} of type A/B): no crash, hang, non-finite value or bad message`, () => {
     const failures: Failure[] = [];
     const counts = { accepted: 0, refused: 0 };
+    let total = 0;
     seeds.forEach((s, k) => {
       const next = rng(0x18 * 1_000_003 + k * 7919);
-      for (let i = 0; i < MUTATIONS_PER_SEED; i++) check(s.name, i, mutate(s.bytes, next), failures, counts);
+      const typeC = parsePhotometry(s.bytes, s.name, { resolveTilt: () => TILT }).photometricType === 'C';
+      const n = typeC ? MUTATIONS_PER_SEED : MUTATIONS_PER_TYPE_AB_SEED;
+      for (let i = 0; i < n; i++) check(s.name, i, mutate(s.bytes, next), failures, counts);
+      total += n;
     });
+    expect(total).toBeGreaterThan(2000);
     expect(failures.slice(0, 10)).toEqual([]);
     // Both outcomes occur: the mutations are neither all fatal nor all harmless.
     expect(counts.accepted).toBeGreaterThan(seeds.length);
