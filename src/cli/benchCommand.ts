@@ -4,11 +4,12 @@ import { fileURLToPath } from 'node:url';
 import { benchTables, spliceSection } from '../bench/benchMarkdown';
 import { BENCH_DOC_INTRO, BENCH_DOC_OUTRO, BENCH_MARKERS } from '../bench/benchDocText';
 import { errorTimeSvg } from '../bench/errorTimeSvg';
+import { gpuBenchTable, runGpuBench } from '../bench/gpuBench';
 import { runBench } from '../bench/runBench';
 import { InputError } from '../inputError';
 import { prepareGl } from '../node/prepareGl';
 
-const usage = 'bench [--quick] [--out <dir>] [--gl vulkan|glx|auto]';
+const usage = 'bench [--quick] [--out <dir>] [--gl vulkan|glx|auto] | bench --gpu [--repeats N] [--gl …]';
 const SVG = 'benchmarks-error-vs-time.svg';
 
 /**
@@ -21,9 +22,16 @@ export async function run(args: string[]): Promise<number> {
   let quick = false;
   let out: string | null = null;
   let gl: string | undefined;
+  let gpu = false;
+  let repeats = 10;
   for (let i = 0; i < args.length; i++) {
     const a = args[i];
     if (a === '--quick') quick = true;
+    else if (a === '--gpu') gpu = true;
+    else if (a === '--repeats') {
+      repeats = Number(args[++i]);
+      if (!Number.isInteger(repeats) || repeats < 1 || repeats > 1000) throw new InputError(`--repeats must be an integer in 1..1000 (usage: luxbox ${usage})`);
+    }
     else if (a === '--out') {
       out = args[++i] ?? null;
       if (!out) throw new InputError(`--out needs a folder (usage: luxbox ${usage})`);
@@ -32,8 +40,14 @@ export async function run(args: string[]): Promise<number> {
       if (!gl) throw new InputError(`--gl needs vulkan, glx or auto (usage: luxbox ${usage})`);
     } else throw new InputError(`unknown argument "${a}" (usage: luxbox ${usage})`);
   }
-  const { exit } = prepareGl(gl);
+  const { exit, backend } = prepareGl(gl);
   if (exit !== null) return exit;
+  if (gpu) {
+    // Bundled (docs/gpu-server.md) the module URL is the bundle's: scenes are read from the working folder.
+    const rows = runGpuBench(process.cwd(), repeats, (line) => process.stderr.write(line + '\n'));
+    process.stdout.write(`GL back end: ${backend}\n\n${gpuBenchTable(rows)}\n`);
+    return 0;
+  }
   const root = resolve(fileURLToPath(new URL('../..', import.meta.url)));
   if (!quick && out === null) out = join(root, 'docs');
   const result = runBench({ quick, root, log: (line) => process.stderr.write(line + '\n') });

@@ -1,0 +1,115 @@
+/**
+ * `luxbox bench --gpu`: the numbers issue 17 asks for on a GPU server
+ * (docs/gpu-server.md, docs/benchmarks.md "GPU"): warm and cold bakes of a
+ * living-room-class scene, a direct-only stress bake, and the share of a bake
+ * spent reading maps back. Every timing includes the GPU wait (gl.finish or a
+ * read-back), so queued work is never mistaken for done work.
+ */
+import { join } from 'node:path';
+import type { BakeScene } from '../bake/bakeScene';
+import type { BakeSettings } from '../bake/bakeSettings';
+import { createBaker } from '../bake/createBaker';
+import { SURFACE_NAMES, type SurfaceName } from '../model/lightingScene';
+import { createHeadlessGL } from '../node/createHeadlessGL';
+import { loadLightingSceneFile } from '../node/loadLightingSceneFile';
+
+export interface GpuBenchRow {
+  case: string;
+  description: string;
+  /** First bake on a fresh context: shader compiles included. */
+  coldMs: number;
+  /** Median and spread of the warm repeats. */
+  warmMedianMs: number;
+  warmMinMs: number;
+  warmMaxMs: number;
+  repeats: number;
+  /** Warm bake whose maps are then read back (what the CLI does), median. */
+  withReadbackMs: number | null;
+  readbackShare: number | null;
+  texels: number;
+  pointSources: number;
+}
+
+function median(xs: number[]): number {
+  const s = [...xs].sort((a, b) => a - b);
+  return s.length % 2 ? s[(s.length - 1) / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
+}
+
+/** Six lamps of the bench living room (four downlights, the pendant, a track spot): the "hidden-room class" of the issue. */
+function livingRoomSix(root: string): BakeScene {
+  const loaded = loadLightingSceneFile(join(root, 'tests/fixtures/bench/living-room.json'));
+  return { ...loaded.bakeScene, luminaires: loaded.bakeScene.luminaires.slice(0, 6) };
+}
+
+/** A 12.8 m cube at 0.05 m texels: every surface 256², lit by 20 real lamps (ceiling grid, mixed photometry). */
+function directStress(root: string): BakeScene {
+  const loaded = loadLightingSceneFile(join(root, 'tests/fixtures/bench/living-room.json'));
+  const kinds = loaded.bakeScene.luminaires;
+  const luminaires = Array.from({ length: 20 }, (_, i) => {
+    const k = kinds[i % kinds.length];
+    const x = 1.6 + (i % 5) * 2.4;
+    const z = 2 + Math.floor(i / 5) * 2.9;
+    return { ...k, position: [x, 12.0, z] as [number, number, number] };
+  });
+  return { room: { width: 12.8, height: 12.8, depth: 12.8, reflectance: Object.fromEntries(SURFACE_NAMES.map((s) => [s, 0.5])) as Record<SurfaceName, number> }, luminaires };
+}
+
+export function runGpuBench(root: string, repeats: number, log: (line: string) => void): GpuBenchRow[] {
+  const cases: { name: string; description: string; scene: BakeScene; settings: Partial<BakeSettings>; readback: boolean }[] = [
+    { name: 'living-6', description: 'living room 5 × 4 × 2.7 m, 6 real lamps, 0.05 m, 256 samples, 4 bounces', scene: livingRoomSix(root), settings: { texelSize: 0.05, samples: 256, bounces: 4, samplesPerDraw: 256 }, readback: true },
+    { name: 'direct-20', description: '6 × 256² texels, 20 real lamps, direct only', scene: directStress(root), settings: { texelSize: 0.05, bounces: 0, maxTextureSize: 256 }, readback: true },
+    { name: 'living-6-default', description: 'living room, 6 lamps, default settings (0.025 m, 64 samples, 4 bounces)', scene: livingRoomSix(root), settings: {}, readback: true },
+  ];
+  const rows: GpuBenchRow[] = [];
+  for (const c of cases) {
+    // A fresh context per case, so "cold" really compiles.
+    const gl = createHeadlessGL();
+    try {
+      const baker = createBaker(gl);
+      const once = (read: boolean) => {
+        const t0 = performance.now();
+        const job = baker.start(c.scene, c.settings);
+        job.run();
+        if (read) job.readMaps();
+        else gl.finish();
+        const ms = performance.now() - t0;
+        const report = job.report();
+        job.dispose();
+        return { ms, report };
+      };
+      const cold = once(false);
+      const warm = Array.from({ length: repeats }, () => once(false).ms);
+      const read = c.readback ? Array.from({ length: Math.max(3, Math.ceil(repeats / 2)) }, () => once(true).ms) : [];
+      const row: GpuBenchRow = {
+        case: c.name,
+        description: c.description,
+        coldMs: cold.ms,
+        warmMedianMs: median(warm),
+        warmMinMs: Math.min(...warm),
+        warmMaxMs: Math.max(...warm),
+        repeats,
+        withReadbackMs: read.length ? median(read) : null,
+        readbackShare: read.length ? Math.max(0, (median(read) - median(warm)) / median(read)) : null,
+        texels: cold.report.totalTexels,
+        pointSources: cold.report.pointSources,
+      };
+      log(`${c.name}: cold ${row.coldMs.toFixed(1)} ms, warm median ${row.warmMedianMs.toFixed(2)} ms, with read-back ${row.withReadbackMs?.toFixed(2)} ms`);
+      rows.push(row);
+    } finally {
+      gl.destroy();
+    }
+  }
+  return rows;
+}
+
+export function gpuBenchTable(rows: GpuBenchRow[]): string {
+  const f = (x: number | null, d = 1) => (x === null ? '–' : x.toFixed(d));
+  return [
+    '| case | texels | point sources | cold ms | warm ms (median, min–max, n) | warm + read maps ms | read-back share |',
+    '|---|---:|---:|---:|---|---:|---:|',
+    ...rows.map(
+      (r) =>
+        `| ${r.case}: ${r.description} | ${r.texels} | ${r.pointSources} | ${f(r.coldMs)} | ${f(r.warmMedianMs, 2)} (${f(r.warmMinMs, 2)}–${f(r.warmMaxMs, 2)}, ${r.repeats}) | ${f(r.withReadbackMs, 2)} | ${r.readbackShare === null ? '–' : `${(r.readbackShare * 100).toFixed(0)} %`} |`,
+    ),
+  ].join('\n');
+}
