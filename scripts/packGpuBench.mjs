@@ -18,7 +18,6 @@ import { dirname, join, resolve } from 'node:path';
 
 const root = resolve(dirname(new URL(import.meta.url).pathname), '..');
 const out = resolve(root, process.argv[2] ?? 'gpu-pack');
-const require = createRequire(join(root, 'package.json'));
 const sh = (cmd, args, opts = {}) => execFileSync(cmd, args, { stdio: ['ignore', 'pipe', 'inherit'], ...opts });
 
 rmSync(out, { recursive: true, force: true });
