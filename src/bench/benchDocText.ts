@@ -15,17 +15,25 @@ What is measured:
 
 - **Scenes** (lighting scene files in \`tests/fixtures/bench/\`, photometry from \`public/ies/\`): the
   CIE 171:2006 §5.8 cube, an empty living room with ten real IES/LDT modules, a 20 m corridor with
-  a row of linear luminaires.
+  a row of linear luminaires; and the stiff scenes of issue #8 (light concentrated in small, very
+  bright regions near a surface: a spot 25 cm from a wall aimed at it, up-lights 3–8 cm under a
+  ceiling, a corridor of luminaires with an up-light part 5 cm under the ceiling, wall washers 30 cm
+  from a ρ = 0.95 wall). Stiff scenes run both methods side by side: today's bright-patch method and
+  the Monte Carlo-only method it replaced (also with 4× the samples); smooth scenes run the old
+  method at the default rung for comparison.
 - **Reference**: the independent CPU solver (\`src/reference\`, docs/reference-solver.md): exact
   point-source direct light at each comparison point, converged piecewise-constant radiosity with
   exact rectangle-to-rectangle form factors (residual < 10⁻⁶), and a final gather at the point.
   Luminous openings are split into ≤ 5 cm cells (≤ 8 per side) exactly as the baker does, so both
   solve the same physical model. Its own discretisation error at the patch sizes used is ≲ 0.3 %
-  away from room edges and ≲ 2 % within a few cm of a corner (measured in tests/reference).
+  away from room edges and ≲ 2 % within a few cm of a corner (measured in tests/reference). For
+  the stiff scenes it is also solved at twice the patch size: the difference between the two (last
+  column of the scene table) bounds how far it is from converged.
 - **Bake**: \`createBaker(gl).bake()\` on headless-gl (the same code as the browser), at a ladder of
   quality settings (texel size, indirect samples per texel per bounce, explicit bounces; the tail
-  estimate of the remaining bounces and the 2-texel blur are on, as by default). Maps are read at
-  the comparison points by bilinear lookup, as \`luxbox probe\` does.
+  estimate of the remaining bounces and the 2-texel blur are on, as by default). Read at the
+  comparison points as \`luxbox probe\` does: direct light evaluated exactly at the point, indirect by
+  bilinear lookup in the maps (the old method read both from the maps).
 - **Errors**: relative error of total illuminance |E_bake − E_ref| / E_ref over all comparison
   points (regular grid of cell centres on all six surfaces): RMS and maximum. Direct errors are
   counted only where the reference direct light exceeds 1 % of the scene's peak.

@@ -1,6 +1,6 @@
 import { join } from 'node:path';
 import { createBaker, type Baker } from '../bake/createBaker';
-import { probeMaps } from '../bake/probeMaps';
+import { probeMaps, probeScene } from '../bake/probeMaps';
 import { SURFACE_FRAMES } from '../bake/surfaceLayout';
 import { SURFACE_NAMES, type SurfaceName, type Vec3 } from '../model/lightingScene';
 import type { Photometry } from '../photometry/types';
@@ -10,12 +10,18 @@ import { sampleReference } from '../reference/sampleReference';
 import { solveBoxReference } from '../reference/solveBoxReference';
 import {
   BENCH_SCENES,
+  DEFAULT_QUALITY,
+  METHOD_SETTINGS,
   QUALITY_LADDER,
   QUICK_LADDER,
   QUICK_SCENES,
   SCALING_LUMINAIRES,
   SCALING_QUALITY,
   SCALING_TEXELS,
+  STIFF_EXTRA_OLD,
+  STIFF_LADDER,
+  STIFF_SCENES,
+  type BenchMethod,
   type BenchQuality,
   type BenchScene,
 } from './benchScenes';
@@ -23,7 +29,9 @@ import { relativeErrors } from './errorStats';
 import { machineInfo, type MachineInfo } from './machineInfo';
 
 export interface BenchRow {
+  /** Scene name; rows of the old method carry " (Monte Carlo only)" so each method is its own series. */
   scene: string;
+  method: BenchMethod;
   quality: BenchQuality;
   texels: number;
   /** Wall-clock time of baker.bake (all passes and the read-back), ms; compile part separately. */
@@ -45,6 +53,8 @@ export interface BenchSceneInfo {
   referencePatches: number;
   referenceSweeps: number;
   referenceMs: number;
+  /** Total illuminance of the reference at a 2× coarser patch size against the one used, at the comparison points (convergence of the reference). */
+  referenceChange: { patch: number; rms: number; max: number } | null;
 }
 
 export interface ScalingRow {
@@ -108,10 +118,11 @@ function photometryMap(loaded: LoadedLightingScene): Map<string, Photometry> {
  * luminaires: the generated programs depend on both, and ANGLE finishes
  * compiling lazily at first draw, which would otherwise land in the timing.
  */
-function timedBake(baker: Baker, loaded: LoadedLightingScene, quality: BenchQuality, luminaires = loaded.bakeScene.luminaires) {
-  baker.bake({ ...loaded.bakeScene, luminaires }, { ...quality, samples: Math.min(quality.samples, 16), bounces: Math.min(quality.bounces, 1) });
+function timedBake(baker: Baker, loaded: LoadedLightingScene, quality: BenchQuality, luminaires = loaded.bakeScene.luminaires, method: BenchMethod = 'bright-patches') {
+  const extra = METHOD_SETTINGS[method];
+  baker.bake({ ...loaded.bakeScene, luminaires }, { ...quality, ...extra, samples: Math.min(quality.samples, 16), bounces: Math.min(quality.bounces, 1) });
   const started = performance.now();
-  const { maps, report } = baker.bake({ ...loaded.bakeScene, luminaires }, { ...quality });
+  const { maps, report } = baker.bake({ ...loaded.bakeScene, luminaires }, { ...quality, ...extra });
   return { maps, report, ms: performance.now() - started };
 }
 
@@ -122,7 +133,7 @@ function timedBake(baker: Baker, loaded: LoadedLightingScene, quality: BenchQual
  */
 export function runBench(options: BenchOptions): BenchResult {
   const started = performance.now();
-  const scenes = options.quick ? QUICK_SCENES : BENCH_SCENES;
+  const scenes = options.quick ? QUICK_SCENES : [...BENCH_SCENES, ...STIFF_SCENES];
   const ladder = options.quick ? QUICK_LADDER : QUALITY_LADDER;
   const gl = createHeadlessGL();
   try {
@@ -138,6 +149,16 @@ export function runBench(options: BenchOptions): BenchResult {
       const points = samplePoints(loaded.scene.room, scene.sampleSpacing);
       const ref = points.map(({ surface, point }) => sampleReference(reference, point, surface));
       const referenceMs = performance.now() - t0;
+      let referenceChange: BenchSceneInfo['referenceChange'] = null;
+      if (scene.referenceCheckPatch) {
+        const coarse = solveBoxReference(loaded.scene, photometryMap(loaded), { patchSize: scene.referenceCheckPatch });
+        const e = relativeErrors(
+          points.map(({ surface, point }) => sampleReference(coarse, point, surface).total),
+          ref.map((r) => r.total),
+        );
+        referenceChange = { patch: scene.referenceCheckPatch, rms: e.rms, max: e.max };
+        options.log(`${scene.name}: reference at ${scene.referenceCheckPatch} m vs ${scene.referencePatch} m patches: RMS ${(100 * e.rms).toFixed(2)} %, max ${(100 * e.max).toFixed(1)} %`);
+      }
       infos.push({
         scene,
         luminaires: loaded.scene.luminaires.length,
@@ -145,11 +166,23 @@ export function runBench(options: BenchOptions): BenchResult {
         referencePatches: reference.patches,
         referenceSweeps: reference.sweeps,
         referenceMs,
+        referenceChange,
       });
       options.log(`${scene.name}: reference ${reference.patches} patches, ${reference.sweeps} sweeps, ${Math.round(referenceMs)} ms; ${points.length} points`);
-      for (const quality of ladder) {
-        const { maps, report, ms } = timedBake(baker, loaded, quality);
-        const probes = points.map(({ point }) => probeMaps(maps, loaded.scene.room, point));
+      // Today's method over the ladder; the old one (issue #8) beside it: over the stiff
+      // ladder and with 4× samples on stiff scenes, at the default rung on smooth ones.
+      const runs: [BenchMethod, BenchQuality][] = options.quick
+        ? ladder.flatMap((q): [BenchMethod, BenchQuality][] => [['bright-patches', q], ['monte-carlo', q]])
+        : scene.stiff
+          ? [...STIFF_LADDER.map((q): [BenchMethod, BenchQuality] => ['bright-patches', q]), ...[...STIFF_LADDER, ...STIFF_EXTRA_OLD].map((q): [BenchMethod, BenchQuality] => ['monte-carlo', q])]
+          : [...ladder.map((q): [BenchMethod, BenchQuality] => ['bright-patches', q]), ['monte-carlo', DEFAULT_QUALITY]];
+      for (const [method, quality] of runs) {
+        const { maps, report, ms } = timedBake(baker, loaded, quality, loaded.bakeScene.luminaires, method);
+        // The old probe read direct light from the maps; today's evaluates it at the point.
+        const probes =
+          method === 'monte-carlo'
+            ? points.map(({ point }) => probeMaps(maps, loaded.scene.room, point))
+            : probeScene(loaded.bakeScene, maps, { ...quality }, points.map((p) => p.point));
         const pick = (kind: 'total' | 'direct' | 'indirect') => ({
           bake: probes.map((p) => p[kind]),
           reference: ref.map((r) => r[kind]),
@@ -161,7 +194,8 @@ export function runBench(options: BenchOptions): BenchResult {
           return { rms: e.rms, max: e.max };
         };
         const row: BenchRow = {
-          scene: scene.name,
+          scene: method === 'monte-carlo' ? `${scene.name} (Monte Carlo only)` : scene.name,
+          method,
           quality,
           texels: report.totalTexels,
           bakeMs: ms,
@@ -175,7 +209,7 @@ export function runBench(options: BenchOptions): BenchResult {
         };
         rows.push(row);
         options.log(
-          `  texel ${quality.texelSize} m, ${quality.samples} samples, ${quality.bounces} bounces: ${Math.round(ms)} ms, total RMS ${(100 * row.total.rms).toFixed(2)} %, max ${(100 * row.total.max).toFixed(1)} %`,
+          `  ${method}, texel ${quality.texelSize} m, ${quality.samples} samples, ${quality.bounces} bounces: ${Math.round(ms)} ms, total RMS ${(100 * row.total.rms).toFixed(2)} %, max ${(100 * row.total.max).toFixed(1)} %`,
         );
       }
     }
