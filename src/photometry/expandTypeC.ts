@@ -72,7 +72,12 @@ function horizontalRule(first: number, last: number, count: number): HorizontalR
  * is not the 0° plane) are pushed onto `warnings`.
  */
 export function expandTypeC(fileName: string, grid: TypeCGrid, line: number | null, warnings: string[] = []): ExpandedGrid {
-  const { verticalAngles: v, horizontalAngles: h, candela } = grid;
+  const { horizontalAngles: h, candela } = grid;
+  // Ends within EPS of the poles are the poles (found by fuzzing: a first
+  // angle of 5e-324 was kept, so the grid did not start at exactly 0).
+  const v = grid.verticalAngles.slice();
+  if (v[0] <= EPS) v[0] = 0;
+  if (v[v.length - 1] >= 180 - EPS) v[v.length - 1] = 180;
   const rule = horizontalRule(h[0], h[h.length - 1], h.length);
   if (!rule) {
     throw new PhotometryParseError(
