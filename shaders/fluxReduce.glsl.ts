@@ -7,38 +7,40 @@
  */
 import { fragmentHeader } from './fullscreen.glsl';
 
-/** Edge of the block one reduction texel sums (a 256² map reaches 1×1 in four passes). */
-export const REDUCE_FACTOR = 4;
-
 /**
- * out(p) = Σ source texels of the REDUCE_FACTOR² block at p (clipped to the
- * source): a plain sum, so the last level holds Σ E over the whole map.
+ * Largest edge of the first reduction level: a map is summed in blocks of
+ * ⌈max(w, h)/REDUCE_GRID⌉² texels to at most REDUCE_GRID² partial sums, and
+ * the fused final pass adds those up for all six surfaces. Two passes per
+ * record (6 + 1 draws) instead of a log₄ chain: per-draw overhead, not
+ * arithmetic, dominates these tiny passes on a GPU (docs/benchmarks.md).
  */
+export const REDUCE_GRID = 16;
+
+/** out(p) = Σ source texels of the uBlock² block at p (clipped to the source). */
 export const reduceSumFragment = /* glsl */ `${fragmentHeader}
 uniform sampler2D uSource;
+uniform int uBlock;
 out vec4 outColor;
 void main() {
   ivec2 size = textureSize(uSource, 0);
-  ivec2 base = ivec2(gl_FragCoord.xy) * ${REDUCE_FACTOR};
+  ivec2 base = ivec2(gl_FragCoord.xy) * uBlock;
+  ivec2 end = min(base + ivec2(uBlock), size);
   vec3 sum = vec3(0.0);
-  for (int j = 0; j < ${REDUCE_FACTOR}; j++) {
-    for (int i = 0; i < ${REDUCE_FACTOR}; i++) {
-      ivec2 q = base + ivec2(i, j);
-      if (q.x < size.x && q.y < size.y) sum += texelFetch(uSource, q, 0).rgb;
-    }
+  for (int j = base.y; j < end.y; j++) {
+    for (int i = base.x; i < end.x; i++) sum += texelFetch(uSource, ivec2(i, j), 0).rgb;
   }
   outColor = vec4(sum, 1.0);
 }
 `;
 
 /**
- * From the six per-surface sums Σ E (1×1 textures), per channel c:
+ * From the six first-level partial sums (at most REDUCE_GRID² texels each),
+ * per channel c:
  *   Φ_c = Σ_s A_s·ΣE_s,c  (flux, lm, with A_s the texel area × input scale)
  *   r_c = Σ_s ρ_s,c·A_s·ΣE_s,c / Φ_c, clamped to [0, min(max ρ, 0.9999)]
  * written as (r_R, r_G, r_B, Φ_Y) into one texel of the stats row (the
- * draw's viewport picks which). Same formula as the CPU reference of
- * fluxStatistics.ts; r is the flux-weighted reflectance that the tail
- * r/(1−r) uses.
+ * draw's viewport picks which). r is the flux-weighted reflectance that the
+ * tail r/(1−r) uses (createBaker.ts).
  */
 export const fluxRatioFragment = /* glsl */ `${fragmentHeader}
 uniform sampler2D uSum0;
@@ -52,14 +54,22 @@ uniform vec3 uRho[6];
 uniform float uMaxRatio;
 uniform vec3 uLuminance;
 out vec4 outColor;
+vec3 total(sampler2D partial) {
+  ivec2 size = textureSize(partial, 0);
+  vec3 sum = vec3(0.0);
+  for (int j = 0; j < size.y; j++) {
+    for (int i = 0; i < size.x; i++) sum += texelFetch(partial, ivec2(i, j), 0).rgb;
+  }
+  return sum;
+}
 void main() {
   vec3 e[6];
-  e[0] = texelFetch(uSum0, ivec2(0), 0).rgb;
-  e[1] = texelFetch(uSum1, ivec2(0), 0).rgb;
-  e[2] = texelFetch(uSum2, ivec2(0), 0).rgb;
-  e[3] = texelFetch(uSum3, ivec2(0), 0).rgb;
-  e[4] = texelFetch(uSum4, ivec2(0), 0).rgb;
-  e[5] = texelFetch(uSum5, ivec2(0), 0).rgb;
+  e[0] = total(uSum0);
+  e[1] = total(uSum1);
+  e[2] = total(uSum2);
+  e[3] = total(uSum3);
+  e[4] = total(uSum4);
+  e[5] = total(uSum5);
   vec3 flux = vec3(0.0);
   vec3 reflected = vec3(0.0);
   for (int s = 0; s < 6; s++) {

@@ -1,7 +1,7 @@
 import type { Rgb } from '../model/lightingScene';
-import { fluxRatioFragment, reduceSumFragment, REDUCE_FACTOR } from '../../shaders/fluxReduce.glsl';
+import { fluxRatioFragment, reduceSumFragment, REDUCE_GRID } from '../../shaders/fluxReduce.glsl';
 import { LUMINANCE_WEIGHTS } from './bakedMaps';
-import { bindTexture, createFloatTarget, deleteTarget, getProgram, readRgba, type FloatTarget } from './glResources';
+import { bindTexture, createFloatTarget, deleteTarget, getProgram, readRgba, uniformLocation, type FloatTarget } from './glResources';
 import { texelArea, type SurfaceLayout } from './surfaceLayout';
 
 /** Per recorded map set: flux-weighted reflectance per channel and the photometric flux (lm). */
@@ -13,7 +13,8 @@ export interface FluxRecord {
 /**
  * Flux statistics of the bounce maps, kept on the GPU (issue: no CPU–GPU
  * round trip inside a bake). `record(index, maps, scale)` reduces the six maps
- * to Σ E per surface (REDUCE_FACTOR² blocks per pass) and writes
+ * to at most REDUCE_GRID² partial sums per surface, and one fused pass adds
+ * them up and writes
  * (r_R, r_G, r_B, Φ_Y) into texel `index` of a stats row; the tail combine
  * samples that row directly. `read()` fetches the whole row in one read-back
  * (report time only).
@@ -35,16 +36,10 @@ export function createFluxStatistics(
   onRead: (bytes: number) => void,
 ): FluxStatistics {
   const maxRatio = Math.min(Math.max(...reflectance.flat()), 0.9999);
-  // Reduction chain per surface: w×h → ⌈w/4⌉×⌈h/4⌉ → … → 1×1 (at least one level).
-  const chains: FloatTarget[][] = layouts.map((l) => {
-    const chain: FloatTarget[] = [];
-    let [w, h] = [l.width, l.height];
-    do {
-      w = Math.ceil(w / REDUCE_FACTOR);
-      h = Math.ceil(h / REDUCE_FACTOR);
-      chain.push(createFloatTarget(gl, w, h, false));
-    } while (w > 1 || h > 1);
-    return chain;
+  // First level per surface: blocks of block² texels, at most REDUCE_GRID² of them.
+  const levels = layouts.map((l) => {
+    const block = Math.max(1, Math.ceil(Math.max(l.width, l.height) / REDUCE_GRID));
+    return { block, target: createFloatTarget(gl, Math.ceil(l.width / block), Math.ceil(l.height / block), false) };
   });
   const stats = createFloatTarget(gl, Math.max(1, capacity), 1, false);
   const reduce = getProgram(gl, reduceSumFragment).program;
@@ -65,23 +60,21 @@ export function createFluxStatistics(
     record(index, maps, scale) {
       if (index < 0 || index >= capacity) throw new Error(`flux statistics: record ${index} outside 0..${capacity - 1}`);
       maps.forEach((map, s) => {
-        let source = map;
-        for (const level of chains[s]) {
-          gl.bindFramebuffer(gl.FRAMEBUFFER, level.framebuffer);
-          gl.viewport(0, 0, level.width, level.height);
-          gl.useProgram(reduce);
-          bindTexture(gl, reduce, 'uSource', 0, source.texture);
-          gl.drawArrays(gl.TRIANGLES, 0, 3);
-          source = level;
-        }
+        const { block, target } = levels[s];
+        gl.bindFramebuffer(gl.FRAMEBUFFER, target.framebuffer);
+        gl.viewport(0, 0, target.width, target.height);
+        gl.useProgram(reduce);
+        bindTexture(gl, reduce, 'uSource', 0, map.texture);
+        gl.uniform1i(uniformLocation(gl, reduce, 'uBlock'), block);
+        gl.drawArrays(gl.TRIANGLES, 0, 3);
       });
       drawTexel(stats, index, ratio, () => {
-        chains.forEach((chain, s) => bindTexture(gl, ratio, `uSum${s}`, s, chain[chain.length - 1].texture));
+        levels.forEach((level, s) => bindTexture(gl, ratio, `uSum${s}`, s, level.target.texture));
         // Array uniforms by their first element's name: headless-gl 9 rc returns null for the bare name.
-        gl.uniform1fv(gl.getUniformLocation(ratio, 'uArea[0]'), areas.map((a) => a * scale));
-        gl.uniform3fv(gl.getUniformLocation(ratio, 'uRho[0]'), rho);
-        gl.uniform1f(gl.getUniformLocation(ratio, 'uMaxRatio'), maxRatio);
-        gl.uniform3fv(gl.getUniformLocation(ratio, 'uLuminance'), LUMINANCE_WEIGHTS);
+        gl.uniform1fv(uniformLocation(gl, ratio, 'uArea[0]'), areas.map((a) => a * scale));
+        gl.uniform3fv(uniformLocation(gl, ratio, 'uRho[0]'), rho);
+        gl.uniform1f(uniformLocation(gl, ratio, 'uMaxRatio'), maxRatio);
+        gl.uniform3fv(uniformLocation(gl, ratio, 'uLuminance'), LUMINANCE_WEIGHTS);
       });
     },
     read(count) {
@@ -93,7 +86,7 @@ export function createFluxStatistics(
       }));
     },
     dispose() {
-      for (const t of [...chains.flat(), stats]) deleteTarget(gl, t);
+      for (const t of [...levels.map((l) => l.target), stats]) deleteTarget(gl, t);
     },
   };
 }

@@ -149,10 +149,25 @@ export function drawInto(gl: WebGL2RenderingContext, target: FloatTarget, progra
   gl.drawArrays(gl.TRIANGLES, 0, 3);
 }
 
+const locationCaches = new WeakMap<WebGLProgram, Map<string, WebGLUniformLocation | null>>();
+
+/**
+ * gl.getUniformLocation, remembered per program: a bake makes hundreds of
+ * small draws and the lookup (a string crossing into the driver, and in
+ * headless-gl through JS validation) is a measurable part of each.
+ */
+export function uniformLocation(gl: WebGL2RenderingContext, program: WebGLProgram, name: string): WebGLUniformLocation | null {
+  let cache = locationCaches.get(program);
+  if (!cache) locationCaches.set(program, (cache = new Map()));
+  let loc = cache.get(name);
+  if (loc === undefined) cache.set(name, (loc = gl.getUniformLocation(program, name)));
+  return loc;
+}
+
 /** Bind a texture to a unit and point a sampler uniform at it (missing uniforms are fine: optimised away). */
 export function bindTexture(gl: WebGL2RenderingContext, program: WebGLProgram, name: string, unit: number, texture: WebGLTexture): void {
   gl.activeTexture(gl.TEXTURE0 + unit);
   gl.bindTexture(gl.TEXTURE_2D, texture);
-  const loc = gl.getUniformLocation(program, name);
+  const loc = uniformLocation(gl, program, name);
   if (loc) gl.uniform1i(loc, unit);
 }

@@ -28,6 +28,8 @@ export interface GpuBenchRow {
   readbackShare: number | null;
   texels: number;
   pointSources: number;
+  /** One warm bake with syncTimings (a finish after every pass), ms per pass; "other" = allocation, uploads, JS. */
+  breakdown: Record<string, number>;
 }
 
 function median(xs: number[]): number {
@@ -79,6 +81,16 @@ export function runGpuBench(root: string, repeats: number, log: (line: string) =
       };
       const cold = once(false);
       const warm = Array.from({ length: repeats }, () => once(false).ms);
+      const sync = (() => {
+        const job = baker.start(c.scene, { ...c.settings, syncTimings: true });
+        job.run();
+        gl.finish();
+        const t = job.report().timings_ms;
+        job.dispose();
+        const parts = { compile: t.compile, direct: t.direct, indirect: t.indirect, blur: t.blur, blend: t.blend, readback: t.readback };
+        const other = t.total - Object.values(parts).reduce((a, b) => a + b, 0);
+        return { ...parts, other, total: t.total };
+      })();
       const read = c.readback ? Array.from({ length: Math.max(3, Math.ceil(repeats / 2)) }, () => once(true).ms) : [];
       const row: GpuBenchRow = {
         case: c.name,
@@ -92,6 +104,7 @@ export function runGpuBench(root: string, repeats: number, log: (line: string) =
         readbackShare: read.length ? Math.max(0, (median(read) - median(warm)) / median(read)) : null,
         texels: cold.report.totalTexels,
         pointSources: cold.report.pointSources,
+        breakdown: sync,
       };
       log(`${c.name}: cold ${row.coldMs.toFixed(1)} ms, warm median ${row.warmMedianMs.toFixed(2)} ms, with read-back ${row.withReadbackMs?.toFixed(2)} ms`);
       rows.push(row);
@@ -111,5 +124,11 @@ export function gpuBenchTable(rows: GpuBenchRow[]): string {
       (r) =>
         `| ${r.case}: ${r.description} | ${r.texels} | ${r.pointSources} | ${f(r.coldMs)} | ${f(r.warmMedianMs, 2)} (${f(r.warmMinMs, 2)}–${f(r.warmMaxMs, 2)}, ${r.repeats}) | ${f(r.withReadbackMs, 2)} | ${r.readbackShare === null ? '–' : `${(r.readbackShare * 100).toFixed(0)} %`} |`,
     ),
+    '',
+    'Per pass, one warm bake with a GPU wait after every pass (ms):',
+    '',
+    '| case | ' + Object.keys(rows[0]?.breakdown ?? {}).join(' | ') + ' |',
+    '|---|' + Object.keys(rows[0]?.breakdown ?? {}).map(() => '---:').join('|') + '|',
+    ...rows.map((r) => `| ${r.case} | ${Object.values(r.breakdown).map((v) => v.toFixed(2)).join(' | ')} |`),
   ].join('\n');
 }
