@@ -3,7 +3,7 @@ import { basename, dirname, resolve } from 'node:path';
 import type { BakeScene } from '../bake/bakeScene';
 import { LightingSceneError, parseLightingScene } from '../model/parseLightingScene';
 import type { LightingScene } from '../model/lightingScene';
-import { INPUT_LIMITS, parseUntrustedJson } from '../model/untrustedJson';
+import { excerpt, INPUT_LIMITS, parseUntrustedJson } from '../model/untrustedJson';
 import { parsePhotometry } from '../photometry/parsePhotometry';
 import type { Photometry } from '../photometry/types';
 
@@ -57,7 +57,7 @@ export function loadLightingSceneFile(path: string): LoadedLightingScene {
         data = readFileSync(file);
       } catch (error) {
         const code = (error as NodeJS.ErrnoException).code;
-        throw new LightingSceneError(`${source}: luminaires[${i}].photometry: cannot read "${l.photometry}" (${code === 'ENOENT' ? 'no such file' : code ?? 'read error'})`);
+        throw new LightingSceneError(`${source}: luminaires[${i}].photometry: cannot read ${excerpt(l.photometry)} (${code === 'ENOENT' ? 'no such file' : code ?? 'read error'})`);
       }
       photometry = parsePhotometry(data, file);
       photometries.set(file, photometry);
