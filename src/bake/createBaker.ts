@@ -132,7 +132,7 @@ function startJob(
     const profile = table.layouts[profileIndex.get(l.photometry)!];
     if (profile.peakCandela <= 0) return [];
     pointSourceCount += l.sources.length;
-    return [{ profile, rotation: l.rotation, sources: l.sources, weight: l.weight } satisfies DirectLamp];
+    return [{ profile, rotation: l.rotation, sources: l.sources, sides: l.sides, weight: l.weight } satisfies DirectLamp];
   });
 
   const target = (layout: SurfaceLayout) => createFloatTarget(gl, layout.width, layout.height, linear);

@@ -16,14 +16,18 @@ export function directAtPoint(lamps: readonly LampSources[], p: Vec3, n: Vec3): 
   for (const lamp of lamps) {
     const toLocal = transpose(lamp.rotation);
     let e = 0;
-    for (const s of lamp.sources) {
+    for (let k = 0; k < lamp.sources.length; k++) {
+      const s = lamp.sources[k];
       const d: Vec3 = [p[0] - s[0], p[1] - s[1], p[2] - s[2]];
       const d2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
       if (!(d2 > 1e-24)) continue;
       const dist = Math.sqrt(d2);
       const cos = -(d[0] * n[0] + d[1] * n[1] + d[2] * n[2]) / dist;
       if (!(cos > 0)) continue;
-      const [g, c] = photometricAngles(applyMat3(toLocal, d));
+      const local = applyMat3(toLocal, d);
+      // A face of a tall opening emits only its own hemisphere (openingSources).
+      if (lamp.sides[k] * local[1] < 0) continue;
+      const [g, c] = photometricAngles(local);
       e += (Math.max(0, intensity(lamp.photometry, g, c)) * cos) / d2;
     }
     for (let c = 0; c < 3; c++) out[c] += lamp.weight[c] * e;

@@ -12,8 +12,10 @@ export interface DirectLamp {
   rotation: Mat3;
   /** World positions of its point sources. */
   sources: Vec3[];
-  /** colour · dimming / number of sources. */
+  /** colour · dimming / number of sources per grid. */
   weight: Rgb;
+  /** Per source: −1 only the downward hemisphere (local y < 0), +1 only the upward one, 0 all; absent = all 0. */
+  sides?: (-1 | 0 | 1)[];
 }
 
 function locateCall(axis: AxisLayout, angle: string, out: string): string {
@@ -56,8 +58,18 @@ export function profileFunction(p: ProfileLayout): string {
 `;
 }
 
-/** Largest angle (radians) a direct-pass sub-sample cell may subtend from a luminaire: ≈ 2°, finer than the steep flanks of a narrow spot's grid. */
-export const SUBSAMPLE_ANGLE = 0.035;
+const hasSides = (lamp: DirectLamp): boolean => !!lamp.sides && lamp.sides.some((x) => x !== 0);
+
+/**
+ * Largest angle (radians) a direct-pass sub-sample cell may subtend from a
+ * luminaire: 0.1 rad for smooth distributions (the midpoint rule on I·cosθ/d²
+ * is then good to a fraction of a per cent), a quarter of the profile's feature
+ * angle for steep ones (a narrow spot's flank), at least 0.5°.
+ */
+export function subsampleAngle(profile: ProfileLayout): number {
+  const feature = (profile.featureAngle * Math.PI) / 180 / 4;
+  return Math.max((0.5 * Math.PI) / 180, Math.min(0.1, Number.isFinite(feature) ? feature : 0.1));
+}
 
 /**
  * The direct pass for one surface: E = Σ I(γ, C)·cos(incidence)/d² (CIE 171:2006
@@ -67,9 +79,9 @@ export const SUBSAMPLE_ANGLE = 0.035;
  *
  * A texel stores the mean illuminance over its area, not the value at its
  * centre: where a luminaire is close (the texel subtends more than
- * SUBSAMPLE_ANGLE from it), each luminaire's sum is taken over an n×n grid of
+ * subsampleAngle from it), each luminaire's sum is taken over an n×n grid of
  * cell centres in the texel (midpoint rule), n = ⌈texel diagonal / (distance ·
- * SUBSAMPLE_ANGLE)⌉ ≤ `supersampling`. So the flux that bounces (Σ E·A) and the
+ * subsampleAngle)⌉ ≤ `supersampling`. So the flux that bounces (Σ E·A) and the
  * averages shown stay right at any texel size, even for a hot spot smaller than
  * a texel. `supersampling` = 1 gives the centre value everywhere.
  */
@@ -93,7 +105,7 @@ export function generateDirectShader(surface: SurfaceLayout, lamps: DirectLamp[]
       return `const vec3 LAMP${k}_SOURCES[${n}] = vec3[${n}](${lamp.sources.map(glslVec3).join(', ')});
 const mat3 LAMP${k}_TO_LOCAL = ${glslMat3Transposed(lamp.rotation)};
 const vec3 LAMP${k}_WEIGHT = ${glslVec3(lamp.weight)};
-${sub > 1 ? `const vec3 LAMP${k}_CENTRE = ${glslVec3(centre)};
+${hasSides(lamp) ? `const float LAMP${k}_SIDE[${n}] = float[${n}](${lamp.sides!.map(glslFloat).join(', ')});\n` : ''}${sub > 1 ? `const vec3 LAMP${k}_CENTRE = ${glslVec3(centre)};
 const float LAMP${k}_RADIUS = ${glslFloat(radius)};
 ` : ''}`;
     })
@@ -103,7 +115,13 @@ const float LAMP${k}_RADIUS = ${glslFloat(radius)};
       float d2 = max(dot(d, d), 1e-12);
       float invD = inversesqrt(d2);
       float cosIncidence = -dot(d, NORMAL) * invD;
-      if (cosIncidence > 0.0) e += intensity${lamps[k].profile.id}(LAMP${k}_TO_LOCAL * (d * invD)) * cosIncidence / d2;
+      ${
+        hasSides(lamps[k])
+          ? `vec3 l = LAMP${k}_TO_LOCAL * (d * invD);
+      // A face of a tall opening emits only its own hemisphere.
+      if (cosIncidence > 0.0 && LAMP${k}_SIDE[s] * l.y >= 0.0) e += intensity${lamps[k].profile.id}(l) * cosIncidence / d2;`
+          : `if (cosIncidence > 0.0) e += intensity${lamps[k].profile.id}(LAMP${k}_TO_LOCAL * (d * invD)) * cosIncidence / d2;`
+      }
     }`;
   const sums = lamps
     .map((lamp, k) =>
@@ -111,7 +129,7 @@ const float LAMP${k}_RADIUS = ${glslFloat(radius)};
         ? `  {
     float e = 0.0;
     float near = max(distance(p, LAMP${k}_CENTRE) - LAMP${k}_RADIUS, 1e-6);
-    int n = int(clamp(ceil(TEXEL_DIAGONAL / (near * ${glslFloat(SUBSAMPLE_ANGLE)})), 1.0, ${glslFloat(sub)}));
+    int n = int(clamp(ceil(TEXEL_DIAGONAL / (near * ${glslFloat(subsampleAngle(lamp.profile))})), 1.0, ${glslFloat(sub)}));
     float inv = 1.0 / float(n);
     for (int sj = 0; sj < n; sj++) {
       for (int si = 0; si < n; si++) {

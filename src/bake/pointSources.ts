@@ -31,3 +31,37 @@ export function pointSources(photometry: Photometry, spacing: number, maxPerAxis
   }
   return points.length > 0 ? points : [[0, 0, 0]];
 }
+
+/** A point source of a luminous opening, in the luminaire frame, and the half of the sphere it emits into. */
+export interface OpeningSource {
+  position: Vec3;
+  /**
+   * −1: only directions with local y < 0 (the downward hemisphere, from the bottom face);
+   * +1: only local y > 0 (upward, from the top face); 0: all directions.
+   */
+  side: -1 | 0 | 1;
+}
+
+/**
+ * The point sources of a luminous opening with its vertical extent
+ * (docs/baker.md, "Luminous openings"). An opening taller than `spacing`
+ * (a cylinder or box that emits from its sides and top, e.g. a 13 cm ceiling
+ * luminaire with an up-light part) gets its grid twice: at the bottom face
+ * (local y = −h/2) for the downward hemisphere and at the top face (y = +h/2)
+ * for the upward one; each direction is emitted by exactly one grid, so the
+ * flux and the far field are unchanged and the weight per source is 1 / (grid
+ * size). A flat opening (or one no taller than `spacing`) keeps one grid in
+ * the plane through the photometric centre.
+ */
+export function openingSources(photometry: Photometry, spacing: number, maxPerAxis: number): { sources: OpeningSource[]; perGrid: number } {
+  const grid = pointSources(photometry, spacing, maxPerAxis);
+  const h = Math.abs(photometry.luminousOpening.height);
+  if (!(spacing > 0) || !(h > spacing)) return { sources: grid.map((position) => ({ position, side: 0 })), perGrid: grid.length };
+  return {
+    sources: [
+      ...grid.map((p): OpeningSource => ({ position: [p[0], -h / 2, p[2]], side: -1 })),
+      ...grid.map((p): OpeningSource => ({ position: [p[0], h / 2, p[2]], side: 1 })),
+    ],
+    perGrid: grid.length,
+  };
+}

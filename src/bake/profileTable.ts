@@ -42,6 +42,12 @@ export interface ProfileLayout {
   gammaMax: number;
   gammaMin: number;
   peakCandela: number;
+  /**
+   * Angular scale of the distribution, degrees: peak candela / steepest change
+   * per degree along γ (∞ for a constant one). The direct pass sub-samples a
+   * texel finely enough to resolve a few such scales (generateDirectShader.ts).
+   */
+  featureAngle: number;
 }
 
 export interface ProfileTable {
@@ -117,7 +123,17 @@ export function buildProfileTable(profiles: Photometry[]): ProfileTable {
     // Interpolation reaches zero only at the neighbouring grid angle.
     const gammaMax = lastNonZero < 0 ? 0 : vAngles[Math.min(vAngles.length - 1, lastNonZero + 1)];
     const gammaMin = lastNonZero < 0 ? 180 : vAngles[Math.max(0, firstNonZero - 1)];
-    layouts.push({ id, vertical, horizontal, candelaOffset, gammaMax: lastNonZero === vAngles.length - 1 ? 180 : gammaMax, gammaMin: firstNonZero === 0 ? 0 : gammaMin, peakCandela: peak });
+    let steepest = 0;
+    for (const row of usedPlanes) {
+      for (let v = 1; v < row.length; v++) {
+        const step = vAngles[v] - vAngles[v - 1];
+        const a = Number.isFinite(row[v]) && row[v] > 0 ? row[v] : 0;
+        const b = Number.isFinite(row[v - 1]) && row[v - 1] > 0 ? row[v - 1] : 0;
+        if (step > 0) steepest = Math.max(steepest, Math.abs(a - b) / step);
+      }
+    }
+    const featureAngle = steepest > 0 ? peak / steepest : Infinity;
+    layouts.push({ id, vertical, horizontal, candelaOffset, gammaMax: lastNonZero === vAngles.length - 1 ? 180 : gammaMax, gammaMin: firstNonZero === 0 ? 0 : gammaMin, peakCandela: peak, featureAngle });
   });
 
   const rows = Math.max(1, Math.ceil(values.length / DATA_TEXTURE_WIDTH));

@@ -3,7 +3,7 @@ import type { Photometry } from '../photometry/types';
 import { tiltMultiplier } from '../photometry/tilt';
 import type { BakeScene } from './bakeScene';
 import { applyMat3, luminaireRotation, type Mat3 } from './luminaireRotation';
-import { pointSources } from './pointSources';
+import { openingSources } from './pointSources';
 
 /** One luminaire as point sources in the world: what the direct pass (GPU) and directAtPoint (CPU) both evaluate. */
 export interface LampSources {
@@ -14,6 +14,8 @@ export interface LampSources {
   rotation: Mat3;
   /** World positions of its point sources. */
   sources: Vec3[];
+  /** Per source: −1 emits only the luminaire's downward hemisphere (local y < 0), +1 only the upward one, 0 all (pointSources.ts, openingSources). */
+  sides: (-1 | 0 | 1)[];
   /** colour · dimming · TILT / number of sources, per channel. */
   weight: Rgb;
 }
@@ -26,7 +28,8 @@ export function nearFieldOf(scene: BakeScene, settings: { nearField?: NearField 
 /**
  * The scene's luminaires as point sources (docs/baker.md, "Luminous openings"):
  * with nearField 'split' an opening larger than `sourceSpacing` becomes a grid,
- * with 'point' each luminaire is one source at its photometric centre. Lamps that
+ * at the bottom and top faces of a tall opening (openingSources), with 'point'
+ * each luminaire is one source at its photometric centre. Lamps that
  * emit nothing (zero dimming, black colour, all-zero candela) are dropped.
  */
 export function scenePointSources(
@@ -43,13 +46,16 @@ export function scenePointSources(
     const emits = l.photometry.candela.some((row) => row.some((cd) => Number.isFinite(cd) && cd > 0));
     if (!emits || !(dimming > 0) || color.every((c) => !(c > 0))) return [];
     const rotation = luminaireRotation(l.yaw, l.pitch, l.roll);
-    const local: Vec3[] = split ? pointSources(l.photometry, settings.sourceSpacing, settings.maxSourcesPerAxis) : [[0, 0, 0]];
-    const sources = local.map((p): Vec3 => {
-      const w = applyMat3(rotation, p);
+    const { sources: local, perGrid } = split
+      ? openingSources(l.photometry, settings.sourceSpacing, settings.maxSourcesPerAxis)
+      : { sources: [{ position: [0, 0, 0] as Vec3, side: 0 as const }], perGrid: 1 };
+    const sources = local.map(({ position }): Vec3 => {
+      const w = applyMat3(rotation, position);
       // Keep split sources inside the room (an opening flush with a wall).
       return [0, 1, 2].map((a) => Math.min(roomSize[a], Math.max(0, l.position[a] + w[a]))) as Vec3;
     });
-    const weight = [0, 1, 2].map((c) => (color[c] * dimming) / sources.length) as Rgb;
-    return [{ luminaire, photometry: l.photometry, rotation, sources, weight }];
+    // Each direction is emitted by one grid: 1/(grid size) of the distribution per source.
+    const weight = [0, 1, 2].map((c) => (color[c] * dimming) / perGrid) as Rgb;
+    return [{ luminaire, photometry: l.photometry, rotation, sources, sides: local.map((s) => s.side), weight }];
   });
 }

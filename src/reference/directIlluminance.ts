@@ -30,6 +30,8 @@ export function directIlluminanceAt(sources: readonly ReferencePointSource[], q:
     const lx = m[0] * dx + m[1] * dy + m[2] * dz;
     const ly = m[3] * dx + m[4] * dy + m[5] * dz;
     const lz = m[6] * dx + m[7] * dy + m[8] * dz;
+    // A face of a tall opening lights only its own hemisphere (pointSources.ts).
+    if (s.hemisphere * ly < 0) continue;
     const gammaDeg = Math.atan2(Math.sqrt(lx * lx + lz * lz), -ly) * RAD_TO_DEG;
     let cDeg = Math.atan2(-lz, lx) * RAD_TO_DEG;
     if (cDeg < 0) cDeg += 360;

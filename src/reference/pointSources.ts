@@ -14,6 +14,12 @@ export interface ReferencePointSource {
   scale: Rgb;
   /** Index of the luminaire in the scene. */
   luminaire: number;
+  /**
+   * Which directions this source emits, by the sign of their luminaire-local y:
+   * −1 downward only (bottom face of a tall opening), +1 upward only (top face),
+   * 0 all. See `openingCell`.
+   */
+  hemisphere: -1 | 0 | 1;
 }
 
 export interface PointSourceOptions {
@@ -22,7 +28,11 @@ export interface PointSourceOptions {
    * (Photometry.luminousOpening width along local x, length along local z) exceeds
    * it is split into a grid of equal cells, each a point source at its centre with
    * 1/n of the intensity: the far-field distribution applied to each part, as the
-   * seed paper and commercial tools do for near-field effects. 0 disables it.
+   * seed paper and commercial tools do for near-field effects. An opening taller
+   * than a cell (cylinders, boxes: they emit from sides and top) has the grid at its
+   * bottom face (local y = −height/2) for the downward hemisphere and at its top
+   * face (+height/2) for the upward one, each with the full distribution of its
+   * hemisphere. 0 disables it.
    * Default 0.05 m, the baker's default too (docs/baker.md), so both solve the
    * same physical model.
    */
@@ -107,11 +117,17 @@ export function referencePointSources(
     if (offsets.length === 0) offsets.push([0, 0, 0]);
     // TILT data scales the grid for a pitched lamp (LM-63-2002 §5.11; see tiltMultiplier).
     const share = (dimming * tiltMultiplier(ph, lum.pitch)) / offsets.length;
-    for (const off of offsets) {
-      const o = apply(toWorld, off);
-      // Cells of an opening touching a wall could poke through it; keep them inside.
-      const position = lum.position.map((c, a) => Math.min(Math.max(c + o[a], 0), extent[a])) as Vec3;
-      sources.push({ position, toLocal, photometry: ph, scale: [share * color[0], share * color[1], share * color[2]], luminaire: index });
+    // A tall opening: the grid at the bottom face for light going down, at the top face for light going up.
+    const tall = cell > 0 && Math.abs(open?.height ?? 0) > cell;
+    const half = 0.5 * Math.abs(open?.height ?? 0);
+    const faces: [number, -1 | 0 | 1][] = tall ? [[-half, -1], [half, 1]] : [[0, 0]];
+    for (const [y, hemisphere] of faces) {
+      for (const off of offsets) {
+        const o = apply(toWorld, [off[0], y, off[2]]);
+        // Cells of an opening touching a wall could poke through it; keep them inside.
+        const position = lum.position.map((c, a) => Math.min(Math.max(c + o[a], 0), extent[a])) as Vec3;
+        sources.push({ position, toLocal, photometry: ph, scale: [share * color[0], share * color[1], share * color[2]], luminaire: index, hemisphere });
+      }
     }
   });
   return sources;

@@ -19,7 +19,8 @@ import { solveBoxReference } from '../../src/reference/solveBoxReference';
 import { sampleReference } from '../../src/reference/sampleReference';
 import { samplePoints } from '../../src/bench/runBench';
 import { relativeErrors } from '../../src/bench/errorStats';
-import { allFiniteNonNegative, averageLux, isotropic, loadIes, uniformRoom } from './bakeTestKit';
+import { allFiniteNonNegative, averageLux, isotropic, loadIes, totalFlux, uniformRoom } from './bakeTestKit';
+import { integrateFlux } from '../../src/photometry/flux';
 import { withHeadlessGL } from './withHeadlessGL';
 
 const gl = withHeadlessGL();
@@ -140,6 +141,24 @@ describe('near field', () => {
     expect(point.pointSources).toBe(1);
     expect(split.pointSources).toBeGreaterThan(1);
     expect(overridden.pointSources).toBe(split.pointSources);
+  });
+
+  it('a tall opening (13 cm cylinder) emits down from its bottom face and up from its top face: flux kept, same as the reference', () => {
+    const tall = loadIes('cooper_shaper_ceiling_one_value_per_line.ies');
+    const s: LightingScene = { version: 1, room: uniformRoom(3, 2.6, 3, 0), luminaires: [{ photometry: 't', position: [1.5, 2.45, 1.5], yaw: 0, pitch: 0, roll: 0 }] };
+    const bakeScene = bakeSceneOf(s, { t: tall });
+    const { maps, report } = baker.bake(bakeScene, { texelSize: 0.05, bounces: 0 });
+    // 3 cells across the 10.06 cm width (≤ 5 cm each; length 0 → one row), once per face.
+    expect(report.pointSources).toBe(6);
+    expect(Math.abs(totalFlux(maps, 'direct') / integrateFlux(tall) - 1)).toBeLessThan(0.01);
+    const reference = solveBoxReference(s, { t: tall }, { patchSize: 0.5 });
+    const points = samplePoints(s.room, 0.3);
+    const ref = points.map(({ surface, point }) => sampleReference(reference, point, surface));
+    const probe = probeScene(bakeScene, maps, { texelSize: 0.05 }, points.map((p) => p.point));
+    expect(relativeErrors(probe.map((p) => p.direct), ref.map((r) => r.direct), 1e-9).max).toBeLessThan(1e-6);
+    // The top face sits 6.7 cm above the centre: the ceiling right above gets I(180°)/(0.15 − 0.067)².
+    const above = probeScene(bakeScene, maps, {}, [[1.5, 2.6, 1.5]])[0].direct;
+    expect(above / (tall.candela[0][tall.candela[0].length - 1] / (2.6 - 2.45 - 0.067) ** 2)).toBeCloseTo(1, 1);
   });
 
   it("'point' equals the reference's unsplit model at every probe point (direct exact, total within 3 % RMS)", () => {
