@@ -68,6 +68,8 @@ export interface Baker {
    * direct solution.
    */
   startFromDirect(room: BakeScene['room'], direct: Record<SurfaceName, Float32Array>, settings?: Partial<BakeSettings>): BakeJob;
+  /** Free the render targets kept for the next bake (jobs still running keep theirs until disposed). */
+  dispose(): void;
   /** start + run + readMaps + report. */
   bake(scene: BakeScene, settings?: Partial<BakeSettings>): { maps: BakedMaps; report: BakeReport };
 }

@@ -9,6 +9,7 @@ import { generateDirectShader, type DirectLamp } from './generateDirectShader';
 import { generateGatherShader } from './generateGatherShader';
 import { brightPatchOptions, brightPatchReport, runBrightPatchPass } from './brightPatches';
 import { createFluxStatistics, type FluxRecord } from './fluxStatistics';
+import { createTargetPool, type TargetPool } from './targetPool';
 import {
   bindTexture,
   clearTarget,
@@ -43,9 +44,12 @@ function mixSeed(...values: number[]): number {
 /** Create a baker on any WebGL2 context (browser canvas or headless-gl). */
 export function createBaker(gl: WebGL2RenderingContext): Baker {
   const { linear } = requireFloatTargets(gl);
+  // Render targets outlive a job: the next bake of the same room reuses them (targetPool.ts).
+  const pool = createTargetPool(gl, linear);
   const start = (scene: BakeScene, partial: Partial<BakeSettings> | undefined, direct: Record<SurfaceName, Float32Array> | null) =>
-    startJob(gl, linear, scene, resolveBakeSettings(partial), direct);
+    startJob(gl, linear, pool, scene, resolveBakeSettings(partial), direct);
   return {
+    dispose: () => pool.dispose(),
     start: (scene, settings) => start(scene, settings, null),
     startFromDirect: (room, direct, settings) => start({ room, luminaires: [] }, settings, direct),
     bake(scene, settings) {
@@ -80,6 +84,7 @@ interface SurfaceState {
 function startJob(
   gl: WebGL2RenderingContext,
   linear: boolean,
+  pool: TargetPool,
   scene: BakeScene,
   settings: BakeSettings,
   directOverride: Record<SurfaceName, Float32Array> | null,
@@ -135,7 +140,8 @@ function startJob(
     return [{ profile, rotation: l.rotation, sources: l.sources, sides: l.sides, weight: l.weight } satisfies DirectLamp];
   });
 
-  const target = (layout: SurfaceLayout) => createFloatTarget(gl, layout.width, layout.height, linear);
+  pool.nextJob();
+  const target = (layout: SurfaceLayout) => pool.acquire(layout.width, layout.height);
   const directSkipped: SurfaceName[] = [];
   const states: SurfaceState[] = layouts.map((layout) => ({
     layout,
@@ -173,7 +179,7 @@ function startJob(
   // Flux statistics per bounce (for the tail and the report) stay on the GPU:
   // record 0 is the direct light, record k bounce k.
   const maxRho = Math.max(...reflectance.flat());
-  const statistics = createFluxStatistics(gl, layouts, reflectance, settings.bounces + 1, countRead);
+  const statistics = createFluxStatistics(gl, pool, layouts, reflectance, settings.bounces + 1, countRead);
   timed('blend', () => statistics.record(0, states.map((st) => st.direct), 1));
   // Whether any light was emitted is known on the CPU: no read-back needed.
   const anyDirect = directOverride
@@ -408,7 +414,7 @@ function startJob(
       if (disposed) return;
       disposed = true;
       for (const st of states) {
-        for (const t of [st.direct, ...st.sum, ...st.acc, st.raw, st.blurTemp, st.indirect, st.total]) deleteTarget(gl, t);
+        for (const t of [st.direct, ...st.sum, ...st.acc, st.raw, st.blurTemp, st.indirect, st.total]) pool.release(t);
       }
       statistics.dispose();
       if (dataTexture) gl.deleteTexture(dataTexture);

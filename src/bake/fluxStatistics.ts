@@ -1,7 +1,8 @@
 import type { Rgb } from '../model/lightingScene';
 import { fluxRatioFragment, reduceSumFragment, REDUCE_GRID } from '../../shaders/fluxReduce.glsl';
 import { LUMINANCE_WEIGHTS } from './bakedMaps';
-import { bindTexture, createFloatTarget, deleteTarget, getProgram, readRgba, uniformLocation, type FloatTarget } from './glResources';
+import { bindTexture, getProgram, readRgba, uniformLocation, type FloatTarget } from './glResources';
+import type { TargetPool } from './targetPool';
 import { texelArea, type SurfaceLayout } from './surfaceLayout';
 
 /** Per recorded map set: flux-weighted reflectance per channel and the photometric flux (lm). */
@@ -30,6 +31,7 @@ export interface FluxStatistics {
 
 export function createFluxStatistics(
   gl: WebGL2RenderingContext,
+  pool: TargetPool,
   layouts: SurfaceLayout[],
   reflectance: Rgb[],
   capacity: number,
@@ -39,9 +41,9 @@ export function createFluxStatistics(
   // First level per surface: blocks of block² texels, at most REDUCE_GRID² of them.
   const levels = layouts.map((l) => {
     const block = Math.max(1, Math.ceil(Math.max(l.width, l.height) / REDUCE_GRID));
-    return { block, target: createFloatTarget(gl, Math.ceil(l.width / block), Math.ceil(l.height / block), false) };
+    return { block, target: pool.acquire(Math.ceil(l.width / block), Math.ceil(l.height / block)) };
   });
-  const stats = createFloatTarget(gl, Math.max(1, capacity), 1, false);
+  const stats = pool.acquire(Math.max(1, capacity), 1);
   const reduce = getProgram(gl, reduceSumFragment).program;
   const ratio = getProgram(gl, fluxRatioFragment).program;
   const areas = new Float32Array(layouts.map(texelArea));
@@ -86,7 +88,7 @@ export function createFluxStatistics(
       }));
     },
     dispose() {
-      for (const t of [...levels.map((l) => l.target), stats]) deleteTarget(gl, t);
+      for (const t of [...levels.map((l) => l.target), stats]) pool.release(t);
     },
   };
 }

@@ -218,6 +218,7 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
       job = null;
       states.clear();
       order = [];
+      baker.dispose();
     },
   };
   return engine;

@@ -9,6 +9,7 @@ import { describe, expect, it } from 'vitest';
 import { createBaker } from '../../src/bake/createBaker';
 import { createFloatTarget, requireFloatTargets, uploadRgb } from '../../src/bake/glResources';
 import { createFluxStatistics } from '../../src/bake/fluxStatistics';
+import { createTargetPool } from '../../src/bake/targetPool';
 import { LUMINANCE_WEIGHTS } from '../../src/bake/bakedMaps';
 import { surfaceLayouts, texelArea } from '../../src/bake/surfaceLayout';
 import { SURFACE_NAMES, type Rgb } from '../../src/model/lightingScene';
@@ -43,7 +44,7 @@ describe('GPU flux reduction', () => {
       return t;
     });
     let reads = 0;
-    const stats = createFluxStatistics(gl, layouts, rho, 3, () => reads++);
+    const stats = createFluxStatistics(gl, createTargetPool(gl, false), layouts, rho, 3, () => reads++);
     stats.record(0, targets, 1);
     stats.record(2, targets, 0.25);
     expect(reads).toBe(0);
@@ -95,5 +96,44 @@ describe('read-backs of a bake', () => {
   it('the report of a bake states the read-backs it made: bake() = maps + one stats row', () => {
     const { report } = createBaker(gl).bake({ room: scene.room, luminaires: [{ ...scene.luminaires[0], photometry: isotropic(100) }] }, settings);
     expect(report.readbacks.count).toBe(19);
+  });
+});
+
+describe('render targets kept between bakes', () => {
+  it('a second bake of the same room reuses every target and gives the same maps bit for bit; a new room frees the old sizes', () => {
+    const room = { width: 2, height: 2.5, depth: 3, reflectance: Object.fromEntries(SURFACE_NAMES.map((s) => [s, 0.7])) as Record<(typeof SURFACE_NAMES)[number], number> };
+    const scene = { room, luminaires: [{ photometry: spot(5000, 10, 5, 1), position: [1, 2.45, 0.2] as [number, number, number], yaw: 0, pitch: 60, roll: 0 }] };
+    const settings = { texelSize: 0.1, samples: 8, bounces: 2 };
+    const baker = createBaker(gl);
+    const first = baker.bake(scene, settings).maps;
+    const second = baker.bake(scene, settings).maps;
+    for (const n of SURFACE_NAMES) {
+      for (const kind of ['direct', 'indirect', 'total'] as const) expect(Buffer.from(second[n][kind].buffer).equals(Buffer.from(first[n][kind].buffer))).toBe(true);
+    }
+    // A different room after a bake with targets still dirty from the first: no light carried over.
+    const other = baker.bake({ room: { ...room, width: 2.2 }, luminaires: [] }, settings).maps;
+    for (const n of SURFACE_NAMES) expect(other[n].total.every((v) => v === 0)).toBe(true);
+    baker.dispose();
+  });
+
+  it('the pool hands back a released target cleared, and drops sizes not used by the last job', () => {
+    const pool = createTargetPool(gl, false);
+    pool.nextJob();
+    const a = pool.acquire(4, 3);
+    uploadRgb(gl, a, new Float32Array(36).fill(7));
+    pool.release(a);
+    expect(pool.free).toBe(1);
+    pool.nextJob();
+    const b = pool.acquire(4, 3);
+    expect(b).toBe(a);
+    const rgba = new Float32Array(48);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, b.framebuffer);
+    gl.readPixels(0, 0, 4, 3, gl.RGBA, gl.FLOAT, rgba);
+    expect(rgba.every((v) => v === 0)).toBe(true);
+    pool.release(b);
+    pool.nextJob();
+    pool.nextJob();
+    expect(pool.free).toBe(0);
+    pool.dispose();
   });
 });
