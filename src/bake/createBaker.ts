@@ -14,8 +14,6 @@ import {
   bindTexture,
   clearTarget,
   createDataTexture,
-  createFloatTarget,
-  deleteTarget,
   drawInto,
   getProgram,
   readRgb,
