@@ -19,6 +19,7 @@ import {
   readRgb,
   requireFloatTargets,
   uploadRgb,
+  uniformLocation,
   type FloatTarget,
 } from './glResources';
 import { lampReachesSurface } from './lampReach';
@@ -213,8 +214,8 @@ function startJob(
     drawInto(gl, out, combine, () => {
       bindTexture(gl, combine, 'uA', 0, a.texture);
       bindTexture(gl, combine, 'uB', 1, b.texture);
-      gl.uniform3fv(gl.getUniformLocation(combine, 'uScaleA'), scaleA);
-      gl.uniform3fv(gl.getUniformLocation(combine, 'uScaleB'), scaleB);
+      gl.uniform3fv(uniformLocation(gl, combine, 'uScaleA'), scaleA);
+      gl.uniform3fv(uniformLocation(gl, combine, 'uScaleB'), scaleB);
     });
   };
 
@@ -228,12 +229,12 @@ function startJob(
       bindTexture(gl, prog, 'uAccumulated', 6, st.acc[st.read].texture);
       const bright = st.input < 0 ? brightPass?.bright[st.layout.index] : null;
       bindTexture(gl, prog, 'uBright', 7, (bright ?? st.acc[st.read]).texture);
-      gl.uniform1f(gl.getUniformLocation(prog, 'uBrightWeight'), bright ? 1 : 0);
-      gl.uniform1i(gl.getUniformLocation(prog, 'uFirstSample'), first);
-      gl.uniform1i(gl.getUniformLocation(prog, 'uSampleCount'), count);
+      gl.uniform1f(uniformLocation(gl, prog, 'uBrightWeight'), bright ? 1 : 0);
+      gl.uniform1i(uniformLocation(gl, prog, 'uFirstSample'), first);
+      gl.uniform1i(uniformLocation(gl, prog, 'uSampleCount'), count);
       // The previous bounce is stored as the sum of its S samples: read it as lux.
-      gl.uniform1f(gl.getUniformLocation(prog, 'uInputScale'), st.input < 0 ? 1 : 1 / settings.samples);
-      gl.uniform1i(gl.getUniformLocation(prog, 'uSeed'), mixSeed(settings.seed, st.layout.index, bounce) | 0);
+      gl.uniform1f(uniformLocation(gl, prog, 'uInputScale'), st.input < 0 ? 1 : 1 / settings.samples);
+      gl.uniform1i(uniformLocation(gl, prog, 'uSeed'), mixSeed(settings.seed, st.layout.index, bounce) | 0);
     });
     [st.read, st.write] = [st.write, st.read];
   };
@@ -294,11 +295,11 @@ function startJob(
       bindTexture(gl, prog, 'uA', 0, sum.texture);
       bindTexture(gl, prog, 'uB', 1, part.texture);
       bindTexture(gl, prog, 'uStats', 2, statistics.stats.texture);
-      gl.uniform1i(gl.getUniformLocation(prog, 'uStatsIndex'), bounce);
-      gl.uniform3fv(gl.getUniformLocation(prog, 'uScaleA'), [1, 1, 1]);
-      gl.uniform3fv(gl.getUniformLocation(prog, 'uOffsetB'), [offset, offset, offset]);
+      gl.uniform1i(uniformLocation(gl, prog, 'uStatsIndex'), bounce);
+      gl.uniform3fv(uniformLocation(gl, prog, 'uScaleA'), [1, 1, 1]);
+      gl.uniform3fv(uniformLocation(gl, prog, 'uOffsetB'), [offset, offset, offset]);
       const t = settings.tail ? tailScale : 0;
-      gl.uniform3fv(gl.getUniformLocation(prog, 'uTailB'), [t, t, t]);
+      gl.uniform3fv(uniformLocation(gl, prog, 'uTailB'), [t, t, t]);
     });
   };
 
@@ -331,9 +332,9 @@ function startJob(
             for (const [src, dst, dx, dy] of passes) {
               drawInto(gl, dst, blur, () => {
                 bindTexture(gl, blur, 'uSource', 0, src.texture);
-                gl.uniform2i(gl.getUniformLocation(blur, 'uDirection'), dx, dy);
-                gl.uniform1i(gl.getUniformLocation(blur, 'uRadius'), radius);
-                gl.uniform1f(gl.getUniformLocation(blur, 'uInvTwoSigma2'), 1 / (2 * sigma * sigma));
+                gl.uniform2i(uniformLocation(gl, blur, 'uDirection'), dx, dy);
+                gl.uniform1i(uniformLocation(gl, blur, 'uRadius'), radius);
+                gl.uniform1f(uniformLocation(gl, blur, 'uInvTwoSigma2'), 1 / (2 * sigma * sigma));
               });
             }
           }
