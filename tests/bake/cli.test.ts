@@ -11,6 +11,9 @@ import { describe, expect, it } from 'vitest';
 import { PNG } from 'pngjs';
 import { SURFACE_NAMES } from '../../src/model/lightingScene';
 import { decodePfm } from '../../src/node/writePfm';
+import { loadLightingSceneFile } from '../../src/node/loadLightingSceneFile';
+import { referencePointSources } from '../../src/reference/pointSources';
+import { directIlluminanceAt } from '../../src/reference/directIlluminance';
 
 const root = join(__dirname, '../..');
 const scene = join(root, 'tests/fixtures/scenes/small-room.json');
@@ -65,12 +68,35 @@ describe('luxbox bake / probe', () => {
     values.total.forEach((t: number, i: number) => expect(Math.abs(t - values.direct[i] - values.indirect[i])).toBeLessThan(1e-5 * t));
     // Point 1 is the ceiling above a pure downlight with almost no uplight: little direct.
     expect(values.direct[1]).toBeLessThan(0.01 * values.direct[0]);
-    // Point 0 [1.5, 0, 1.0] is a texel corner of the 0.1 m floor map: bilinear lookup there is
-    // the mean of the four texels around it (lux = Y of the RGB PFM).
-    const floor = decodePfm(readFileSync(join(out, 'floor.direct.pfm')));
+    // Direct light is evaluated exactly at each point (not read from the maps): the same
+    // I·cosθ/d² as the independent CPU reference's point sources, at every probe point.
+    const loaded = loadLightingSceneFile(scene);
+    const photometries = new Map(loaded.scene.luminaires.map((l, i) => [l.photometry, loaded.bakeScene.luminaires[i].photometry]));
+    const sources = referencePointSources(loaded.scene, photometries);
+    const pts = JSON.parse(readFileSync(points, 'utf8')).points as [number, number, number][];
+    const normals: [number, number, number][] = [[0, 1, 0], [0, -1, 0], [1, 0, 0], [-1, 0, 0], [0, 0, 1]];
+    pts.forEach((p, i) => {
+      const onPlane: [number, number, number] = [p[0], p[1], i === 4 ? 0 : p[2]];
+      const [r, g, b] = directIlluminanceAt(sources, onPlane, normals[i]);
+      const y = 0.2126 * r + 0.7152 * g + 0.0722 * b;
+      expect(Math.abs(values.direct[i] - y)).toBeLessThanOrEqual(1e-9 + 1e-9 * y);
+    });
+    // The indirect part is the bilinear lookup of the indirect map: point 0 [1.5, 0, 1.0] is a
+    // texel corner of the 0.1 m floor map, so it is the mean of the four texels around it.
+    const floor = decodePfm(readFileSync(join(out, 'floor.indirect.pfm')));
     const at = (i: number, j: number) => { const o = (j * floor.width + i) * 3; return 0.2126 * floor.rgb[o] + 0.7152 * floor.rgb[o + 1] + 0.0722 * floor.rgb[o + 2]; };
     const avg4 = (at(14, 9) + at(15, 9) + at(14, 10) + at(15, 10)) / 4;
-    expect(Math.abs(values.direct[0] - avg4)).toBeLessThan(1e-5 * avg4);
+    expect(Math.abs(values.indirect[0] - avg4)).toBeLessThan(1e-5 * avg4);
+  });
+
+  it('--near-field point makes one source per luminaire; a bad value is one line, exit 1', () => {
+    const dirOut = mkdtempSync(join(tmpdir(), 'luxbox-near-'));
+    const r = luxbox(['bake', scene, '--out', dirOut, ...quick, '--bounces', '0', '--near-field', 'point']);
+    expect(r.status).toBe(0);
+    expect(JSON.parse(readFileSync(join(dirOut, 'report.json'), 'utf8')).bake.pointSources).toBe(2);
+    const bad = luxbox(['bake', scene, '--out', dirOut, '--near-field', 'far']);
+    expect(bad.status).toBe(1);
+    expect(bad.stderr).toMatch(/^luxbox bake: bake: --near-field must be split or point, got "far"\n$/);
   });
 
   const dir = mkdtempSync(join(tmpdir(), 'luxbox-bad-'));
