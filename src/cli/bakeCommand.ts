@@ -5,6 +5,7 @@ import { batchFolderNames } from '../node/batchFolderNames';
 import { createSceneBaker } from '../node/bakeSceneFile';
 import { loadLightingSceneFile } from '../node/loadLightingSceneFile';
 import { prepareGl } from '../node/prepareGl';
+import { sceneWarnings } from '../node/sceneWarnings';
 import { writeBakeOutput } from '../node/writeBakeOutput';
 import { resolveBakeSettings } from '../bake/bakeSettings';
 
@@ -27,6 +28,10 @@ export async function run(args: string[]): Promise<number> {
   if (exit !== null) return exit;
 
   const loaded = positional.map((p) => loadLightingSceneFile(p));
+  // Suspicious-but-readable photometry (docs/photometry.md, "Warnings"): in each
+  // report.json, and once per line on stderr (nothing on stderr when there are none).
+  const warnings = loaded.map((scene, i) => sceneWarnings(scene, positional[i]));
+  for (const line of new Set(warnings.flat())) process.stderr.write(`luxbox bake: warning: ${line}\n`);
   const folders = positional.length === 1 ? [out] : batchFolderNames(positional).map((name) => join(out, name));
   const started = performance.now();
   const sceneBaker = createSceneBaker();
@@ -35,7 +40,11 @@ export async function run(args: string[]): Promise<number> {
       const before = sceneBaker.programCount();
       const { maps, report } = sceneBaker.bake(scene, settings);
       const compiled = sceneBaker.programCount() - before;
-      writeBakeOutput(folders[i], positional[i], maps, report, { gl: backend, batch: { index: i, of: positional.length, programsCompiled: compiled } });
+      writeBakeOutput(folders[i], positional[i], maps, report, {
+        gl: backend,
+        batch: { index: i, of: positional.length, programsCompiled: compiled },
+        warnings: warnings[i],
+      });
       process.stdout.write(
         `baked ${positional[i]} → ${folders[i]} (${report.totalTexels} texels, ${report.bouncesComputed} bounces, ${Math.round(report.timings_ms.total)} ms, ${compiled} programs compiled, gl ${backend})\n`,
       );
