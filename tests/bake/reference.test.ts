@@ -24,7 +24,9 @@ function compare(scene: LightingScene, files: Record<string, Photometry>, patchS
     room: scene.room,
     luminaires: scene.luminaires.map((l) => ({ ...l, photometry: files[l.photometry] })),
   };
-  const { maps } = baker.bake(bakeScene, { texelSize: 0.1, samples: 128, bounces: 5, sourceSpacing: 0.05 });
+  // Texel centres (texelSupersampling 1), so the direct maps compare point by point with the
+  // reference's exact point values; texel means are checked in stiff.test.ts.
+  const { maps } = baker.bake(bakeScene, { texelSize: 0.1, samples: 128, bounces: 5, sourceSpacing: 0.05, texelSupersampling: 1 });
   const reference = solveBoxReference(scene, files, { patchSize, openingCell: 0.05, directRelTol: 1e-4 });
   const rows: { surface: SurfaceName; direct: [number, number]; indirect: [number, number]; total: [number, number] }[] = [];
   let peak = 0;

@@ -6,6 +6,7 @@
 import { describe, expect, it } from 'vitest';
 import { SURFACE_NAMES, type Rgb } from '../../src/model/lightingScene';
 import { blurFragment, combineFragment } from '../../shaders/passes.glsl';
+import { brightGatherFragment, residualFragment, tileSumFragment } from '../../shaders/brightPatch.glsl';
 import { cachedProgramCount, getProgram } from '../../src/bake/glResources';
 import { generateDirectShader, type DirectLamp } from '../../src/bake/generateDirectShader';
 import { generateGatherShader } from '../../src/bake/generateGatherShader';
@@ -72,8 +73,23 @@ describe('generated shaders compile', () => {
     });
   }
 
+  it('direct: texel means (sub-sampling) and a tall opening (faces emitting one hemisphere each)', () => {
+    const lamp: DirectLamp = {
+      profile: table.layouts[1],
+      rotation: luminaireRotation(0, 10, 0),
+      sources: [[1, 2.2, 2], [1, 2.4, 2]],
+      sides: [-1, 1],
+      weight: [1, 1, 1],
+    };
+    for (const layout of layouts) compiles(generateDirectShader(layout, [lamp, { ...lamp, sides: undefined }], 8));
+  });
+
   it('fixed passes: combine and blur', () => {
     compiles(combineFragment);
+    // Bright-patch passes (brightPatches.ts).
+    compiles(tileSumFragment);
+    compiles(residualFragment);
+    compiles(brightGatherFragment);
     compiles(blurFragment);
   });
 
