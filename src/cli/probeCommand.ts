@@ -9,13 +9,15 @@ import { bakeLoadedScene } from '../node/bakeSceneFile';
 import { resolveBakeSettings } from '../bake/bakeSettings';
 import { prepareGl } from '../node/prepareGl';
 import { loadLightingSceneFile, parseJsonText } from '../node/loadLightingSceneFile';
+import { describeIssues } from '../model/untrustedJson';
 
 export const probeUsage = 'probe <scene.json> <points.json> [--samples N --bounces N --texel m --gl vulkan|glx|auto]';
 
 /** Probe points must lie on a surface, within this distance (metres). */
 export const PROBE_TOLERANCE = 0.01;
 
-const pointsSchema = z.object({
+// Strict (issue 18): an unknown or misspelt field is refused, not ignored.
+const pointsSchema = z.strictObject({
   points: z.array(z.tuple([z.number(), z.number(), z.number()]).refine((p) => p.every(Number.isFinite), 'must be finite numbers')),
 });
 
@@ -34,6 +36,8 @@ export async function run(args: string[]): Promise<number> {
   const parsed = pointsSchema.safeParse(parseJsonText(text, source));
   if (!parsed.success) {
     const issue = parsed.error.issues[0];
+    // `points.json: pointz: unknown field 'pointz' (did you mean 'points'?)`, before any "points is missing".
+    if (parsed.error.issues.some((i) => i.code === 'unrecognized_keys')) throw new InputError(`${source}: ${describeIssues(parsed.error.issues, ['points'])}`);
     const path = issue.path.map((k) => (typeof k === 'number' ? `[${k}]` : `.${String(k)}`)).join('').replace(/^\./, '');
     throw new InputError(`${source}: ${path ? `${path}: ` : ''}${issue.path.length ? issue.message : 'expected { "points": [[x, y, z], ...] }'}`);
   }

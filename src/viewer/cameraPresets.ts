@@ -1,5 +1,6 @@
 import { InputError } from '../inputError';
 import type { Vec3 } from '../model/lightingScene';
+import { unknownFieldMessage } from '../model/untrustedJson';
 
 export interface CameraPose {
   position: Vec3;
@@ -45,6 +46,8 @@ export function cameraPreset(name: CameraPresetName, room: { width: number; heig
   }
 }
 
+const CAMERA_FIELDS = ['position', 'target', 'fov'] as const;
+
 const isVec3 = (v: unknown): v is Vec3 => Array.isArray(v) && v.length === 3 && v.every((x) => typeof x === 'number' && Number.isFinite(x));
 
 /** `--camera eye|top|corner` or a JSON object `{"position":[x,y,z],"target":[x,y,z],"fov":deg}`. */
@@ -58,6 +61,9 @@ export function parseCameraSpec(spec: string, room: { width: number; height: num
   }
   if (typeof data !== 'object' || data === null) throw new CameraSpecError('--camera: JSON must be an object with position, target and fov');
   const o = data as Record<string, unknown>;
+  // Strict, as every other JSON input (issue 18): a misspelt "fov" must not silently become 60°.
+  const unknown = Array.isArray(o) ? undefined : Object.keys(o).find((k) => !(CAMERA_FIELDS as readonly string[]).includes(k));
+  if (unknown !== undefined) throw new CameraSpecError(`--camera: ${unknownFieldMessage(unknown, CAMERA_FIELDS)}; expected position, target and fov`);
   if (!isVec3(o.position)) throw new CameraSpecError('--camera: position must be three finite numbers [x, y, z] in metres');
   if (!isVec3(o.target)) throw new CameraSpecError('--camera: target must be three finite numbers [x, y, z] in metres');
   const fov = o.fov ?? 60;

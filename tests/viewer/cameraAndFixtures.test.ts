@@ -43,6 +43,10 @@ describe('camera presets and --camera', () => {
       ['{"position":[1,2,3],"target":[0,0,0],"fov":500}', /fov must be/],
       ['{"position":[1,2,3],"target":[1,2,3]}', /must differ/],
       ['[1,2,3]', /position must be three/],
+      // Unknown fields are refused (issue 18), with a suggestion for a misspelling.
+      ['{"position":[1,2,3],"target":[0,0,0],"fovy":50}', /^--camera: unknown field 'fovy' \(did you mean 'fov'\?\); expected position, target and fov$/],
+      ['{"postion":[1,2,3],"target":[0,0,0]}', /^--camera: unknown field 'postion' \(did you mean 'position'\?\)/],
+      ['{"position":[1,2,3],"target":[0,0,0],"up":[0,1,0]}', /^--camera: unknown field 'up'; expected position, target and fov$/],
     ];
     for (const [spec, message] of bad) {
       expect(() => parseCameraSpec(spec, room)).toThrow(InputError);
