@@ -98,12 +98,21 @@ function startJob(
   // Without syncTimings no pass waits for the GPU (a finish per pass is a full
   // pipeline stall); the timings then measure submission, and the first
   // read-back pays for the queued work.
+  // Nested sections (a bounce's blend inside a step's indirect) count once:
+  // a section's own time excludes its children's.
+  const open: number[] = [];
   const timed = <T>(key: keyof typeof timings, f: () => T): T => {
     const s = performance.now();
-    const r = f();
-    if (settings.syncTimings) gl.finish();
-    timings[key] += performance.now() - s;
-    return r;
+    open.push(0);
+    try {
+      const r = f();
+      if (settings.syncTimings) gl.finish();
+      return r;
+    } finally {
+      const elapsed = performance.now() - s;
+      timings[key] += elapsed - open.pop()!;
+      if (open.length) open[open.length - 1] += elapsed;
+    }
   };
   const readbacks = { count: 0, bytes: 0 };
   const countRead = (bytes: number) => {
