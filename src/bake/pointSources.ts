@@ -32,6 +32,9 @@ export function pointSources(photometry: Photometry, spacing: number, maxPerAxis
   return points.length > 0 ? points : [[0, 0, 0]];
 }
 
+/** The faces of a tall opening stay at least this far inside the room (metres). */
+export const FACE_MARGIN = 0.01;
+
 /** A point source of a luminous opening, in the luminaire frame, and the half of the sphere it emits into. */
 export interface OpeningSource {
   position: Vec3;
@@ -51,16 +54,27 @@ export interface OpeningSource {
  * for the upward one; each direction is emitted by exactly one grid, so the
  * flux and the far field are unchanged and the weight per source is 1 / (grid
  * size). A flat opening (or one no taller than `spacing`) keeps one grid in
- * the plane through the photometric centre.
+ * the plane through the photometric centre. `room` (the luminaire's room
+ * distances along its local −y and +y) keeps each face at least FACE_MARGIN
+ * inside the room: a luminaire mounted closer to the ceiling than half its
+ * height has its top face between its centre and the ceiling, not on or
+ * beyond it (where its up-light would leave the room and be lost).
  */
-export function openingSources(photometry: Photometry, spacing: number, maxPerAxis: number): { sources: OpeningSource[]; perGrid: number } {
+export function openingSources(
+  photometry: Photometry,
+  spacing: number,
+  maxPerAxis: number,
+  room: { down: number; up: number } = { down: Infinity, up: Infinity },
+): { sources: OpeningSource[]; perGrid: number } {
   const grid = pointSources(photometry, spacing, maxPerAxis);
   const h = Math.abs(photometry.luminousOpening.height);
   if (!(spacing > 0) || !(h > spacing)) return { sources: grid.map((position) => ({ position, side: 0 })), perGrid: grid.length };
+  const down = Math.min(h / 2, Math.max(0, room.down - FACE_MARGIN));
+  const up = Math.min(h / 2, Math.max(0, room.up - FACE_MARGIN));
   return {
     sources: [
-      ...grid.map((p): OpeningSource => ({ position: [p[0], -h / 2, p[2]], side: -1 })),
-      ...grid.map((p): OpeningSource => ({ position: [p[0], h / 2, p[2]], side: 1 })),
+      ...grid.map((p): OpeningSource => ({ position: [p[0], -down, p[2]], side: -1 })),
+      ...grid.map((p): OpeningSource => ({ position: [p[0], up, p[2]], side: 1 })),
     ],
     perGrid: grid.length,
   };

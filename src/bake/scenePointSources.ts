@@ -46,8 +46,12 @@ export function scenePointSources(
     const emits = l.photometry.candela.some((row) => row.some((cd) => Number.isFinite(cd) && cd > 0));
     if (!emits || !(dimming > 0) || color.every((c) => !(c > 0))) return [];
     const rotation = luminaireRotation(l.yaw, l.pitch, l.roll);
+    // Room left along the luminaire's local −y and +y (for the faces of a tall opening).
+    const up = applyMat3(rotation, [0, 1, 0]);
+    const exit = (sign: number) =>
+      Math.min(...[0, 1, 2].map((a) => (sign * up[a] > 1e-12 ? (roomSize[a] - l.position[a]) / (sign * up[a]) : sign * up[a] < -1e-12 ? -l.position[a] / (sign * up[a]) : Infinity)));
     const { sources: local, perGrid } = split
-      ? openingSources(l.photometry, settings.sourceSpacing, settings.maxSourcesPerAxis)
+      ? openingSources(l.photometry, settings.sourceSpacing, settings.maxSourcesPerAxis, { down: exit(-1), up: exit(1) })
       : { sources: [{ position: [0, 0, 0] as Vec3, side: 0 as const }], perGrid: 1 };
     const sources = local.map(({ position }): Vec3 => {
       const w = applyMat3(rotation, position);

@@ -32,7 +32,8 @@ export interface PointSourceOptions {
    * than a cell (cylinders, boxes: they emit from sides and top) has the grid at its
    * bottom face (local y = −height/2) for the downward hemisphere and at its top
    * face (+height/2) for the upward one, each with the full distribution of its
-   * hemisphere. 0 disables it.
+   * hemisphere; a face is kept at least 1 cm inside the room (a luminaire mounted
+   * closer to a wall than half its height). 0 disables it.
    * Default 0.05 m, the baker's default too (docs/baker.md), so both solve the
    * same physical model.
    */
@@ -120,7 +121,18 @@ export function referencePointSources(
     // A tall opening: the grid at the bottom face for light going down, at the top face for light going up.
     const tall = cell > 0 && Math.abs(open?.height ?? 0) > cell;
     const half = 0.5 * Math.abs(open?.height ?? 0);
-    const faces: [number, -1 | 0 | 1][] = tall ? [[-half, -1], [half, 1]] : [[0, 0]];
+    // Each face stays ≥ 1 cm inside the room: the distance to the box along the luminaire's ±y axis.
+    const axisY = apply(toWorld, [0, 1, 0]);
+    const room = (dir: number): number => {
+      let t = Infinity;
+      for (let a = 0; a < 3; a++) {
+        const v = dir * axisY[a];
+        if (v > 1e-12) t = Math.min(t, (extent[a] - lum.position[a]) / v);
+        else if (v < -1e-12) t = Math.min(t, lum.position[a] / -v);
+      }
+      return Math.min(half, Math.max(0, t - 0.01));
+    };
+    const faces: [number, -1 | 0 | 1][] = tall ? [[-room(-1), -1], [room(1), 1]] : [[0, 0]];
     for (const [y, hemisphere] of faces) {
       for (const off of offsets) {
         const o = apply(toWorld, [off[0], y, off[2]]);

@@ -161,6 +161,24 @@ describe('near field', () => {
     expect(above / (tall.candela[0][tall.candela[0].length - 1] / (2.6 - 2.45 - 0.067) ** 2)).toBeCloseTo(1, 1);
   });
 
+  it('a tall luminaire 5 cm under the ceiling (top face would be above it): the top face stays 1 cm inside, no flux lost', () => {
+    const tall = loadIes('cooper_shaper_ceiling_one_value_per_line.ies');
+    const s: LightingScene = { version: 1, room: uniformRoom(3, 2.6, 3, 0), luminaires: [{ photometry: 't', position: [1.5, 2.55, 1.5], yaw: 0, pitch: 0, roll: 0 }] };
+    const bakeScene = bakeSceneOf(s, { t: tall });
+    const { maps } = baker.bake(bakeScene, { texelSize: 0.05, bounces: 0 });
+    expect(Math.abs(totalFlux(maps, 'direct') / integrateFlux(tall) - 1)).toBeLessThan(0.02);
+    // Right above: a third of I(180°) from the middle cell 1 cm away (the two outer cells sit 3.4 cm aside):
+    // the hot spot of a source 1 cm under the ceiling, not 5 cm (which would give 1/25 of it).
+    const above = probeScene(bakeScene, maps, {}, [[1.5, 2.6, 1.5]])[0].direct;
+    expect(above / (tall.candela[0][tall.candela[0].length - 1] / 3 / 0.01 ** 2)).toBeGreaterThan(1);
+    expect(above / (tall.candela[0][tall.candela[0].length - 1] / 3 / 0.01 ** 2)).toBeLessThan(1.1);
+    const reference = solveBoxReference(s, { t: tall }, { patchSize: 0.5 });
+    const points = samplePoints(s.room, 0.3);
+    const probe = probeScene(bakeScene, maps, {}, points.map((p) => p.point));
+    const ref = points.map(({ surface, point }) => sampleReference(reference, point, surface));
+    expect(relativeErrors(probe.map((p) => p.direct), ref.map((r) => r.direct), 1e-9).max).toBeLessThan(1e-6);
+  });
+
   it("'point' equals the reference's unsplit model at every probe point (direct exact, total within 3 % RMS)", () => {
     const s = scene('point');
     const bakeScene = bakeSceneOf(s, { p: pendant });
