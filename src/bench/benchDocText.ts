@@ -53,4 +53,16 @@ export const BENCH_DOC_OUTRO = `### Reading the numbers
   texels × samples × bounces, and the gather dominates.
 - Indirect noise falls like 1/√samples; the bias of few explicit bounces is mostly removed by the
   tail estimate (docs/baker.md, "Tail for ρ → 1").
+- Stiff scenes (issue #8): the Monte Carlo-only gather fails there because bounce 1 is a heavy-tailed
+  estimator — a few samples per texel hit a patch 10³–10⁴ times brighter than the rest of the room —
+  and 4× the samples only halves its error; at coarse texels its probe also interpolated direct light
+  between texel centres. The bright-patch method takes those patches out of the sampled maps and
+  gathers them exactly (docs/baker.md, "Stiff scenes: bright patches"), so what is left is the error
+  of a smooth room: noise of the rest, room corners, and the tail estimate's shape — the wall
+  washer's worst points sit in the corner between its ρ = 0.95 wall and the ρ = 0.9 ceiling, where
+  4 explicit bounces plus the tail are not yet converged (docs/baker.md, "Known limits").
+- The "time new / old" column includes what the new method adds: the tile sums and their one
+  read-back, the bright-patch gather (K form factors per texel, once per bake), and texel means near
+  luminaires in the direct pass. Rows are single timed bakes on a shared machine: ratios scatter by
+  ±20 %.
 `;
