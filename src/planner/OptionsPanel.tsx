@@ -1,8 +1,12 @@
+import { useSyncExternalStore } from 'react';
 import type { Catalog } from '../model/catalogSchema';
 import type { Configuration } from '../model/configuration';
 import { ActionButton } from './ActionButton';
 import { CommitField } from './CommitField';
 import { DistributionButtons } from './DistributionButtons';
+import type { FootprintSource } from './footprintSource';
+import { modulePhotometryPath } from './moduleFootprint';
+import { PhotometryWarnings } from './PhotometryWarnings';
 import { RailLengthField } from './RailLengthField';
 import type { ActionGate } from './actionGate';
 import type { SelectionPath } from './selection';
@@ -13,6 +17,8 @@ export interface OptionsPanelProps {
   path: SelectionPath;
   gate: ActionGate;
   onClose: () => void;
+  /** The plan's photometry loader: a selected module's file warnings are shown from it. */
+  footprints?: FootprintSource;
 }
 
 /** Dimming levels offered as touch-sized choices (the 3D view relights instantly on a change). */
@@ -29,12 +35,18 @@ function Chips({ title, children }: { title: string; children: React.ReactNode }
   );
 }
 
+/** The warnings of a module's photometric file, once the plan has loaded it (re-renders when it arrives). */
+function ModulePhotometryNote({ source, path }: { source: FootprintSource; path: string }) {
+  useSyncExternalStore(source.subscribe, source.version, source.version);
+  return <PhotometryWarnings notes={[{ file: path, warnings: source.warnings(path) }]} testId="module-photometry-warnings" />;
+}
+
 /**
  * Settings of the selected part (paper figures 10, 11): module type, beam and colour
  * temperature; rail length, distribution and modules; system suspension, rotation and rails;
  * with nothing selected, the room. Every choice is an ActionButton gated by the model.
  */
-export function OptionsPanel({ config, catalog, path, gate, onClose }: OptionsPanelProps) {
+export function OptionsPanel({ config, catalog, path, gate, onClose, footprints }: OptionsPanelProps) {
   const system = config.systems.find((s) => s.id === path.systemId);
   const rail = system?.rails.find((r) => r.id === path.railId);
   const railIndex = system && rail ? system.rails.indexOf(rail) : -1;
@@ -45,6 +57,7 @@ export function OptionsPanel({ config, catalog, path, gate, onClose }: OptionsPa
   if (module) {
     const type = catalog.moduleTypes.find((t) => t.id === module.type);
     title = `Module: ${type?.name ?? module.type}`;
+    const photometryPath = modulePhotometryPath(module, catalog);
     body = (
       <>
         <Chips title="Module type">
@@ -75,6 +88,7 @@ export function OptionsPanel({ config, catalog, path, gate, onClose }: OptionsPa
             ))}
           </Chips>
         )}
+        {footprints && photometryPath && <ModulePhotometryNote source={footprints} path={photometryPath} />}
         {type && (
           <Chips title="Colour temperature">
             {type.ccts.map((k) => (

@@ -217,7 +217,7 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, footprints }: P
           <BottomBar store={store} ui={ui} config={config} path={path} gate={gate} canUndo={canUndo} canRedo={canRedo} mode={mode} />
         </div>
         <aside className={`side-panel${panelOpen ? ' open' : ''}`} aria-label="Presets and price">
-          {optionsOpen && <OptionsPanel config={config} catalog={catalog} path={path} gate={gate} onClose={() => ui.setState({ optionsOpen: false })} />}
+          {optionsOpen && <OptionsPanel config={config} catalog={catalog} path={path} gate={gate} onClose={() => ui.setState({ optionsOpen: false })} footprints={footprints} />}
           <PresetPanel catalog={catalog} gate={gate} onPlaced={placedNew} />
           <SurfacesPanel room={config.room} finishes={defaultSurfaceFinishes} gate={gate} />
           <BomPanel bom={bom} locale={locale} />

@@ -1,3 +1,4 @@
+import { photometryWarnings } from '../photometry/checks';
 import { parsePhotometry } from '../photometry/parsePhotometry';
 import { floorFootprint, type FloorFootprint } from './floorFootprint';
 
@@ -9,6 +10,12 @@ import { floorFootprint, type FloorFootprint } from './floorFootprint';
 export interface FootprintSource {
   /** The footprint for a catalog photometry path: undefined while loading, null if unavailable. */
   get(path: string): FloorFootprint | null | undefined;
+  /**
+   * The file's non-fatal findings (photometryWarnings: 360° plane ≠ 0° plane, stated vs
+   * integrated lumens, …), one line each without the file name; empty while loading or
+   * when the file could not be read.
+   */
+  warnings(path: string): readonly string[];
   /** Starts loading paths not seen before. */
   request(paths: readonly string[]): void;
   subscribe(listener: () => void): () => void;
@@ -18,6 +25,7 @@ export interface FootprintSource {
 
 export function createFootprintSource(baseUrl: string, fetchFn: typeof fetch = (...a) => fetch(...a)): FootprintSource {
   const results = new Map<string, FloorFootprint | null>();
+  const warnings = new Map<string, readonly string[]>();
   const pending = new Set<string>();
   const listeners = new Set<() => void>();
   let version = 0;
@@ -29,6 +37,7 @@ export function createFootprintSource(baseUrl: string, fetchFn: typeof fetch = (
   };
   return {
     get: (path) => results.get(path),
+    warnings: (path) => warnings.get(path) ?? [],
     request(paths) {
       for (const path of paths) {
         if (results.has(path) || pending.has(path)) continue;
@@ -38,7 +47,11 @@ export function createFootprintSource(baseUrl: string, fetchFn: typeof fetch = (
             if (!r.ok) throw new Error(`${path}: HTTP ${r.status}`);
             return r.arrayBuffer();
           })
-          .then((buf) => done(path, floorFootprint(parsePhotometry(new Uint8Array(buf), path))))
+          .then((buf) => {
+            const ph = parsePhotometry(new Uint8Array(buf), path);
+            warnings.set(path, photometryWarnings(ph));
+            done(path, floorFootprint(ph));
+          })
           .catch((e: unknown) => {
             // The cone from the catalog's beam angle stands in; the 3D view reports file problems.
             console.warn('luxbox: no measured footprint for', path, e);

@@ -2,6 +2,8 @@ import { useEffect, useMemo, useRef, useState } from 'react';
 import { useStore } from 'zustand';
 import type { BakeScene } from '../bake/bakeScene';
 import { toLightingScene } from '../model/toLightingScene';
+import { photometryWarnings } from '../photometry/checks';
+import { PhotometryWarnings, type PhotometryNote } from '../planner/PhotometryWarnings';
 import type { ConfiguratorStore } from '../store/createConfiguratorStore';
 import { CAMERA_PRESETS, type CameraPresetName } from './cameraPresets';
 import { createViewerController, type ViewerController } from './createViewerController';
@@ -53,6 +55,7 @@ export default function View3D({ store, onBack }: View3DProps) {
   const [plane, setPlane] = useState<{ on: boolean; height: number }>({ on: false, height: 0.75 });
   const [planeStats, setPlaneStats] = useState<IlluminanceStats | null>(null);
   const [lost, setLost] = useState(false);
+  const [photometryNotes, setPhotometryNotes] = useState<PhotometryNote[]>([]);
   const litRef = useRef<Parameters<Parameters<typeof createViewerController>[1]['onMaps']>[0] | null>(null);
   const [mapsVersion, setMapsVersion] = useState(0);
 
@@ -134,6 +137,12 @@ export default function View3D({ store, onBack }: View3DProps) {
         };
         sceneRef.current = bakeScene;
         ctrl.current.setScene(bakeScene, fixturesFromConfiguration(config, catalog));
+        // Each file in use once, with its warnings (docs/photometry.md, "Warnings").
+        const files = new Map<string, PhotometryNote>();
+        scene.luminaires.forEach((l, i) => {
+          if (!files.has(l.photometry)) files.set(l.photometry, { file: l.photometry, warnings: photometryWarnings(photometries[i]) });
+        });
+        setPhotometryNotes([...files.values()]);
       })
       .catch((e: Error) => {
         if (!cancelled) setError(`Could not load the photometric data: ${e.message}`);
@@ -235,6 +244,7 @@ export default function View3D({ store, onBack }: View3DProps) {
           <input type="checkbox" checked={plane.on} onChange={(e) => setPlane({ ...plane, on: e.target.checked })} data-testid="plane-on" /> Work plane at
           <input type="number" min={0.1} max={maxPlane} step={0.05} value={plane.height} onChange={(e) => { const h = Number(e.target.value); if (Number.isFinite(h) && h >= 0.1 && h <= maxPlane) setPlane({ ...plane, height: h }); }} aria-label="Work plane height in metres" /> m
         </label>
+        <PhotometryWarnings notes={photometryNotes} testId="view3d-photometry-warnings" />
         {modules.length > 0 && (
           <details className="viewer3d-modules">
             <summary>Dimming ({modules.length} modules)</summary>

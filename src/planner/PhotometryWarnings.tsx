@@ -1,0 +1,36 @@
+/** A photometric file and its warnings (photometryWarnings: one line each, without the file name). */
+export interface PhotometryNote {
+  /** The file as the catalog names it (a path such as `ies/x.ies`; its last part is shown). */
+  file: string;
+  warnings: readonly string[];
+}
+
+/** The file name shown for a catalog photometry path: its last part. */
+export const photometryFileName = (path: string): string => path.slice(path.lastIndexOf('/') + 1);
+
+/**
+ * Suspicious-but-readable photometric data (docs/photometry.md, "Warnings"), shown where the
+ * file's light is shown: the module options and the 3D view. A small note, not an alert (the
+ * light is still drawn, from the data as read); nothing at all when no file has a warning.
+ */
+export function PhotometryWarnings({ notes, testId = 'photometry-warnings' }: { notes: readonly PhotometryNote[]; testId?: string }) {
+  const shown = notes.filter((n) => n.warnings.length > 0);
+  if (shown.length === 0) return null;
+  return (
+    <div className="photometry-warnings" role="note" aria-label="Photometric data warnings" data-testid={testId}>
+      {shown.map((n) => (
+        <div key={n.file} className="photometry-warnings-file">
+          <p className="photometry-warnings-title">
+            <span aria-hidden="true">⚠ </span>
+            {photometryFileName(n.file)}
+          </p>
+          <ul>
+            {n.warnings.map((w) => (
+              <li key={w}>{w}</li>
+            ))}
+          </ul>
+        </div>
+      ))}
+    </div>
+  );
+}
