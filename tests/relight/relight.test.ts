@@ -33,8 +33,17 @@ describe('luminaire groups', () => {
 });
 
 describe('relighting = weighted sum of basis maps (light is linear)', () => {
-  it('matches a full bake of the dimmed, coloured scene: direct to 1e-5, total to 2e-4 of the peak', () => {
-    const engine = createRelightEngine(gl, SETTINGS);
+  // With a fixed seed the pure Monte Carlo gather (brightPatches 0) is a linear operator of the direct
+  // maps: group bakes add up to the full bake but for the tail estimate (2e-4 of the peak). The default
+  // bright-patch bounce 1 picks its exactly gathered tiles from each bake's own maps, so groups and the
+  // full bake split the light differently: they agree to the Monte Carlo noise of these coarse
+  // settings (16 samples), not bit for bit.
+  for (const [label, extra, totalTolerance] of [
+    ['pure Monte Carlo', { brightPatches: 0 }, 2e-4],
+    ['default bright patches', {}, 5e-3],
+  ] as const) it(`matches a full bake of the dimmed, coloured scene (${label}): direct to 1e-5, total to ${totalTolerance} of the peak`, () => {
+    const settings = { ...SETTINGS, ...extra };
+    const engine = createRelightEngine(gl, settings);
     const weights: [number, Rgb][] = [
       [0.3, [1, 0.8, 0.6]],
       [0.9, [0.7, 0.9, 1]],
@@ -43,7 +52,7 @@ describe('relighting = weighted sum of basis maps (light is linear)', () => {
     engine.setScene(scene);
     engine.finish();
     const lit = engine.maps();
-    const reference = createBaker(gl).bake(scene, SETTINGS).maps;
+    const reference = createBaker(gl).bake(scene, settings).maps;
     let peak = 0;
     let worstDirect = 0;
     let worstTotal = 0;
@@ -57,7 +66,7 @@ describe('relighting = weighted sum of basis maps (light is linear)', () => {
     }
     expect(peak).toBeGreaterThan(100);
     expect(worstDirect / peak).toBeLessThan(1e-5);
-    expect(worstTotal / peak).toBeLessThan(2e-4);
+    expect(worstTotal / peak).toBeLessThan(totalTolerance);
     engine.dispose();
   });
 
