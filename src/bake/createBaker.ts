@@ -19,6 +19,7 @@ import {
   readRgb,
   requireFloatTargets,
   uploadRgb,
+  startPrograms,
   uniformLocation,
   type FloatTarget,
 } from './glResources';
@@ -167,39 +168,53 @@ function startJob(
     gather: null,
   }));
 
+  // The programs this bake will use, known before any is needed: their
+  // compiles are started together (glResources.startPrograms).
+  const directSources = states.map((st) => {
+    if (directOverride) return null;
+    const reaching = lamps.filter((l) => lampReachesSurface(l.sources, l.rotation, l.profile.gammaMin, l.profile.gammaMax, st.layout));
+    return reaching.length > 0 ? generateDirectShader(st.layout, reaching, settings.texelSupersampling) : null;
+  });
+  const maxRho = Math.max(...reflectance.flat());
+  // Whether any light was emitted is known on the CPU: no read-back needed.
+  const anyDirect = directOverride
+    ? Object.values(directOverride).some((rgb) => rgb.some((v) => v > 0))
+    : directSources.some((source) => source !== null);
+  const indirectEnabled = settings.bounces > 0 && maxRho > 0 && anyDirect;
+  const gatherSources = indirectEnabled ? states.map((st) => generateGatherShader(st.layout, roomSize, reflectance)) : [];
+  startPrograms(gl, [
+    ...directSources.filter((source): source is string => source !== null),
+    combineFragment,
+    ...(indirectEnabled ? [combineTailFragment, ...gatherSources] : []),
+    ...(indirectEnabled && settings.blurRadius > 0 ? [blurFragment] : []),
+  ]);
+
   // Direct pass.
   timed('direct', () => {
-    for (const st of states) {
+    states.forEach((st, s) => {
       if (directOverride) {
         uploadRgb(gl, st.direct, directOverride[st.layout.name]);
-        continue;
+        return;
       }
-      const reaching = lamps.filter((l) => lampReachesSurface(l.sources, l.rotation, l.profile.gammaMin, l.profile.gammaMax, st.layout));
-      if (reaching.length === 0) {
+      const source = directSources[s];
+      if (source === null) {
         directSkipped.push(st.layout.name);
-        continue;
+        return;
       }
-      const prog = program(generateDirectShader(st.layout, reaching, settings.texelSupersampling), 'direct', st.layout.name);
+      const prog = program(source, 'direct', st.layout.name);
       drawInto(gl, st.direct, prog, () => bindTexture(gl, prog, 'uProfiles', 0, dataTexture!));
-    }
+    });
   });
 
   // Flux statistics per bounce (for the tail and the report) stay on the GPU:
   // record 0 is the direct light, record k bounce k.
-  const maxRho = Math.max(...reflectance.flat());
   const statistics = createFluxStatistics(gl, pool, layouts, reflectance, settings.bounces + 1, countRead);
   timed('blend', () => statistics.record(0, states.map((st) => st.direct), 1));
-  // Whether any light was emitted is known on the CPU: no read-back needed.
-  const anyDirect = directOverride
-    ? Object.values(directOverride).some((rgb) => rgb.some((v) => v > 0))
-    : lamps.length > 0 && directSkipped.length < states.length;
-
-  const indirectEnabled = settings.bounces > 0 && maxRho > 0 && anyDirect;
   const combineTail = indirectEnabled ? program(combineTailFragment, 'combine', null) : null;
   const combine = program(combineFragment, 'combine', null);
   const blur = indirectEnabled && settings.blurRadius > 0 ? program(blurFragment, 'blur', null) : null;
   if (indirectEnabled) {
-    for (const st of states) st.gather = program(generateGatherShader(st.layout, roomSize, reflectance), 'gather', st.layout.name);
+    states.forEach((st, s) => (st.gather = program(gatherSources[s], 'gather', st.layout.name)));
   }
   // Bounce 1 from the brightest tiles of the direct maps, exactly (brightPatches.ts).
   const brightPass = indirectEnabled

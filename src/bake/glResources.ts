@@ -1,48 +1,95 @@
 import { fullscreenVertex } from '../../shaders/fullscreen.glsl';
 
-/** Compiled programs per context, keyed by fragment source: identical scenes never recompile. */
-const programCaches = new WeakMap<WebGL2RenderingContext, Map<string, WebGLProgram>>();
+/**
+ * Programs per context, keyed by fragment source: identical scenes never
+ * recompile. An entry is pending while its compile and link may still run
+ * (startPrograms): the driver is free to compile those in parallel (ANGLE
+ * has a worker pool), and nothing waits until getProgram asks for the result.
+ */
+interface CacheEntry {
+  program: WebGLProgram;
+  pending: { vs: WebGLShader; fs: WebGLShader; source: string } | null;
+}
+const programCaches = new WeakMap<WebGL2RenderingContext, Map<string, CacheEntry>>();
 
 export interface ProgramInfo {
   program: WebGLProgram;
-  /** True when this call compiled it (false: taken from the cache). */
+  /** True when this call (or the startPrograms before it) compiled it; false: taken from the cache. */
   compiled: boolean;
 }
 
-function compile(gl: WebGL2RenderingContext, type: number, source: string): WebGLShader {
-  const shader = gl.createShader(type);
-  if (!shader) throw new Error('WebGL: createShader failed (context lost?)');
-  gl.shaderSource(shader, source);
-  gl.compileShader(shader);
-  if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) {
-    const log = gl.getShaderInfoLog(shader) ?? '';
-    gl.deleteShader(shader);
-    const numbered = source.split('\n').map((line, i) => `${i + 1}: ${line}`).join('\n');
-    throw new Error(`GLSL compile error: ${log}\n${numbered}`);
+function cacheOf(gl: WebGL2RenderingContext): Map<string, CacheEntry> {
+  let cache = programCaches.get(gl);
+  if (!cache) programCaches.set(gl, (cache = new Map()));
+  return cache;
+}
+
+function shader(gl: WebGL2RenderingContext, type: number, source: string): WebGLShader {
+  const s = gl.createShader(type);
+  if (!s) throw new Error('WebGL: createShader failed (context lost?)');
+  gl.shaderSource(s, source);
+  gl.compileShader(s);
+  return s;
+}
+
+/** Issue compile + link of a fragment shader without asking for the result (no wait). */
+function begin(gl: WebGL2RenderingContext, fragmentSource: string): CacheEntry {
+  const program = gl.createProgram();
+  if (!program) throw new Error('WebGL: createProgram failed (context lost?)');
+  const vs = shader(gl, gl.VERTEX_SHADER, fullscreenVertex);
+  const fs = shader(gl, gl.FRAGMENT_SHADER, fragmentSource);
+  gl.attachShader(program, vs);
+  gl.attachShader(program, fs);
+  gl.linkProgram(program);
+  return { program, pending: { vs, fs, source: fragmentSource } };
+}
+
+/** Wait for a pending entry and turn a failure into an error with the numbered source. */
+function settle(gl: WebGL2RenderingContext, entry: CacheEntry): void {
+  const p = entry.pending;
+  if (!p) return;
+  entry.pending = null;
+  const linked = gl.getProgramParameter(entry.program, gl.LINK_STATUS);
+  try {
+    if (!linked) {
+      for (const s of [p.vs, p.fs]) {
+        if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) {
+          const numbered = (s === p.vs ? fullscreenVertex : p.source).split('\n').map((line, i) => `${i + 1}: ${line}`).join('\n');
+          throw new Error(`GLSL compile error: ${gl.getShaderInfoLog(s) ?? ''}\n${numbered}`);
+        }
+      }
+      throw new Error(`GLSL link error: ${gl.getProgramInfoLog(entry.program) ?? ''}`);
+    }
+  } finally {
+    gl.deleteShader(p.vs);
+    gl.deleteShader(p.fs);
   }
-  return shader;
+}
+
+/**
+ * Start compiling every program a bake will need before the first is used,
+ * so the driver can compile them side by side instead of one after another
+ * (measured: docs/benchmarks.md "GPU"). Already cached sources cost nothing.
+ */
+export function startPrograms(gl: WebGL2RenderingContext, fragmentSources: readonly string[]): void {
+  const cache = cacheOf(gl);
+  for (const source of fragmentSources) if (!cache.has(source)) cache.set(source, begin(gl, source));
 }
 
 /** The program for a fragment shader (with the shared full-screen vertex shader), cached by source. */
 export function getProgram(gl: WebGL2RenderingContext, fragmentSource: string): ProgramInfo {
-  let cache = programCaches.get(gl);
-  if (!cache) programCaches.set(gl, (cache = new Map()));
-  const cached = cache.get(fragmentSource);
-  if (cached) return { program: cached, compiled: false };
-  const program = gl.createProgram();
-  if (!program) throw new Error('WebGL: createProgram failed (context lost?)');
-  const vs = compile(gl, gl.VERTEX_SHADER, fullscreenVertex);
-  const fs = compile(gl, gl.FRAGMENT_SHADER, fragmentSource);
-  gl.attachShader(program, vs);
-  gl.attachShader(program, fs);
-  gl.linkProgram(program);
-  gl.deleteShader(vs);
-  gl.deleteShader(fs);
-  if (!gl.getProgramParameter(program, gl.LINK_STATUS)) {
-    throw new Error(`GLSL link error: ${gl.getProgramInfoLog(program) ?? ''}`);
+  const cache = cacheOf(gl);
+  let entry = cache.get(fragmentSource);
+  const compiled = !entry || entry.pending !== null;
+  if (!entry) cache.set(fragmentSource, (entry = begin(gl, fragmentSource)));
+  try {
+    settle(gl, entry);
+  } catch (error) {
+    cache.delete(fragmentSource);
+    gl.deleteProgram(entry.program);
+    throw error;
   }
-  cache.set(fragmentSource, program);
-  return { program, compiled: true };
+  return { program: entry.program, compiled };
 }
 
 /** Number of programs cached for this context (tests check reuse). */

@@ -11,6 +11,8 @@ import type { BakeSettings } from '../bake/bakeSettings';
 import { createBaker } from '../bake/createBaker';
 import { SURFACE_NAMES, type SurfaceName } from '../model/lightingScene';
 import { createHeadlessGL } from '../node/createHeadlessGL';
+import { combineFragment } from '../../shaders/passes.glsl';
+import { bindTexture, createFloatTarget, drawInto, getProgram, requireFloatTargets, uniformLocation, type FloatTarget } from '../bake/glResources';
 import { loadLightingSceneFile } from '../node/loadLightingSceneFile';
 
 export interface GpuBenchRow {
@@ -60,6 +62,7 @@ export function runGpuBench(root: string, repeats: number, log: (line: string) =
   const cases: { name: string; description: string; scene: BakeScene; settings: Partial<BakeSettings>; readback: boolean }[] = [
     { name: 'living-6', description: 'living room 5 × 4 × 2.7 m, 6 real lamps, 0.05 m, 256 samples, 4 bounces', scene: livingRoomSix(root), settings: { texelSize: 0.05, samples: 256, bounces: 4, samplesPerDraw: 256 }, readback: true },
     { name: 'direct-20', description: '6 × 256² texels, 20 real lamps, direct only', scene: directStress(root), settings: { texelSize: 0.05, bounces: 0, maxTextureSize: 256 }, readback: true },
+    { name: 'direct-20-centre', description: 'as direct-20, texel centres only (texelSupersampling 1)', scene: directStress(root), settings: { texelSize: 0.05, bounces: 0, maxTextureSize: 256, texelSupersampling: 1 }, readback: false },
     { name: 'living-6-default', description: 'living room, 6 lamps, default settings (0.025 m, 64 samples, 4 bounces)', scene: livingRoomSix(root), settings: {}, readback: true },
   ];
   const rows: GpuBenchRow[] = [];
@@ -113,6 +116,37 @@ export function runGpuBench(root: string, repeats: number, log: (line: string) =
     }
   }
   return rows;
+}
+
+/**
+ * Cost of one small draw (a 256² combine pass) when nothing else happens:
+ * 200 draws then one finish. Separates per-draw overhead (driver, ANGLE,
+ * headless-gl's JS validation) from arithmetic in the bake timings.
+ */
+export function drawOverheadMs(): number {
+  const gl = createHeadlessGL();
+  try {
+    requireFloatTargets(gl);
+    const a = createFloatTarget(gl, 256, 256, false);
+    const b = createFloatTarget(gl, 256, 256, false);
+    const prog = getProgram(gl, combineFragment).program;
+    const draw = (out: FloatTarget, src: FloatTarget) =>
+      drawInto(gl, out, prog, () => {
+        bindTexture(gl, prog, 'uA', 0, src.texture);
+        bindTexture(gl, prog, 'uB', 1, src.texture);
+        gl.uniform3fv(uniformLocation(gl, prog, 'uScaleA'), [1, 1, 1]);
+        gl.uniform3fv(uniformLocation(gl, prog, 'uScaleB'), [0, 0, 0]);
+      });
+    for (let i = 0; i < 20; i++) draw(i % 2 ? a : b, i % 2 ? b : a);
+    gl.finish();
+    const n = 200;
+    const t0 = performance.now();
+    for (let i = 0; i < n; i++) draw(i % 2 ? a : b, i % 2 ? b : a);
+    gl.finish();
+    return (performance.now() - t0) / n;
+  } finally {
+    gl.destroy();
+  }
 }
 
 export function gpuBenchTable(rows: GpuBenchRow[]): string {
