@@ -150,14 +150,16 @@ function startJob(
   });
 
   pool.nextJob();
-  const target = (layout: SurfaceLayout) => pool.acquire(layout.width, layout.height);
+  // Only what is read before it is written must start at zero: the first
+  // running sum and the first accumulator (a skipped direct map is cleared below).
+  const target = (layout: SurfaceLayout, zero = false) => pool.acquire(layout.width, layout.height, zero);
   const directSkipped: SurfaceName[] = [];
   const states: SurfaceState[] = layouts.map((layout) => ({
     layout,
     direct: target(layout),
-    sum: [target(layout), target(layout)],
+    sum: [target(layout, true), target(layout)],
     sumCurrent: 0,
-    acc: [target(layout), target(layout), target(layout)],
+    acc: [target(layout, true), target(layout), target(layout)],
     input: -1,
     read: 0,
     write: 1,
@@ -199,6 +201,7 @@ function startJob(
       const source = directSources[s];
       if (source === null) {
         directSkipped.push(st.layout.name);
+        clearTarget(gl, st.direct);
         return;
       }
       const prog = program(source, 'direct', st.layout.name);

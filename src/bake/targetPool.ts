@@ -5,10 +5,11 @@ import { clearTarget, createFloatTarget, deleteTarget, type FloatTarget } from '
  * dozen RGBA32F targets per surface; creating them anew each time (texture
  * storage, framebuffer, ANGLE's image and render-pass objects) was a large
  * part of a warm bake on a GPU (docs/benchmarks.md "GPU"). Acquired targets
- * are cleared to zero, as new ones are.
+ * are zero (as new ones are) unless the caller says it overwrites every texel
+ * before reading any (`zero` false): each clear is a render pass of its own.
  */
 export interface TargetPool {
-  acquire(width: number, height: number): FloatTarget;
+  acquire(width: number, height: number, zero?: boolean): FloatTarget;
   release(target: FloatTarget): void;
   /**
    * A new job starts: free targets that were not used by this job's
@@ -27,12 +28,12 @@ export function createTargetPool(gl: WebGL2RenderingContext, linear: boolean): T
   let count = 0;
   let job = 0;
   return {
-    acquire(width, height) {
+    acquire(width, height, zero = true) {
       const list = free.get(key(width, height));
       const reused = list?.pop();
       if (reused) {
         count--;
-        clearTarget(gl, reused.target);
+        if (zero) clearTarget(gl, reused.target);
         return reused.target;
       }
       return createFloatTarget(gl, width, height, linear);
