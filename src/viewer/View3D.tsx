@@ -244,7 +244,7 @@ export default function View3D({ store, onBack }: View3DProps) {
           <input type="checkbox" checked={plane.on} onChange={(e) => setPlane({ ...plane, on: e.target.checked })} data-testid="plane-on" /> Work plane at
           <input type="number" min={0.1} max={maxPlane} step={0.05} value={plane.height} onChange={(e) => { const h = Number(e.target.value); if (Number.isFinite(h) && h >= 0.1 && h <= maxPlane) setPlane({ ...plane, height: h }); }} aria-label="Work plane height in metres" /> m
         </label>
-        <PhotometryWarnings notes={photometryNotes} testId="view3d-photometry-warnings" />
+        <PhotometryWarnings notes={photometryNotes} testId="view3d-photometry-warnings" collapsed />
         {modules.length > 0 && (
           <details className="viewer3d-modules">
             <summary>Dimming ({modules.length} modules)</summary>

@@ -5,7 +5,7 @@
  */
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { renderToStaticMarkup } from 'react-dom/server';
+import { renderToStaticMarkup as render } from 'react-dom/server';
 import { describe, expect, it } from 'vitest';
 import { defaultCatalog } from '../../src/catalog/defaultCatalog';
 import type { Catalog } from '../../src/model/catalogSchema';
@@ -18,6 +18,9 @@ import { PhotometryWarnings } from '../../src/planner/PhotometryWarnings';
 import { createConfiguratorStore } from '../../src/store/createConfiguratorStore';
 
 const root = join(__dirname, '../..');
+
+/** Static markup without the <wbr> that let file names wrap after _ . - (asserted once below). */
+const renderToStaticMarkup = (node: React.ReactElement) => render(node).replaceAll('<wbr/>', '');
 const MISMATCH = 'stated lumens 34 lm and integrated flux 2047 lm differ by 5921 % (ratio 60.21); the integrated flux of the candela data is used';
 
 /** Serves `odd/<fixture>` from tests/fixtures/photometry and everything else from public/. */
@@ -68,6 +71,8 @@ describe('PhotometryWarnings', () => {
     expect(html).toContain('<li>a &amp; b</li><li>c</li>');
     expect(html).not.toContain('fine.ies');
     expect(renderToStaticMarkup(<PhotometryWarnings notes={[{ file: 'ies/fine.ies', warnings: [] }]} />)).toBe('');
+    // Long names wrap at their own separators in a narrow column.
+    expect(render(<PhotometryWarnings notes={[{ file: 'ies/a_b-c.ies', warnings: ['w'] }]} />)).toContain('</span>a_<wbr/>b-<wbr/>c.<wbr/>ies</p>');
   });
 });
 
@@ -98,5 +103,18 @@ describe('module options: the module\'s photometric file', () => {
     expect(source.warnings(photometry)).toEqual([]);
     const html = renderToStaticMarkup(<OptionsPanel config={config} catalog={defaultCatalog} path={path} gate={gate} onClose={() => {}} footprints={source} />);
     expect(html).not.toContain('photometry-warnings');
+  });
+});
+
+describe('PhotometryWarnings collapsed (the 3D view)', () => {
+  it('one summary line counting the warnings, the text inside a closed <details>', () => {
+    const html = renderToStaticMarkup(
+      <PhotometryWarnings collapsed testId="view3d-photometry-warnings" notes={[{ file: 'ies/a.ies', warnings: ['x', 'y'] }, { file: 'ies/b.ldt', warnings: ['z'] }]} />,
+    );
+    expect(html).toMatch(/^<div class="photometry-warnings" role="note" aria-label="Photometric data warnings" data-testid="view3d-photometry-warnings"><details><summary>/);
+    expect(html).toContain('Photometric data: 3 warnings</summary>');
+    expect(html).not.toContain('<details open');
+    expect(html).toContain('a.ies</p><ul><li>x</li><li>y</li></ul>');
+    expect(html).toContain('b.ldt</p><ul><li>z</li></ul>');
   });
 });
