@@ -83,7 +83,11 @@ export function runGpuBench(root: string, repeats: number, log: (line: string) =
         return { ms, report };
       };
       const cold = once(false);
+      const cpu0 = process.cpuUsage();
+      const wall0 = performance.now();
       const warm = Array.from({ length: repeats }, () => once(false).ms);
+      const cpu = process.cpuUsage(cpu0);
+      const cpuShare = (cpu.user + cpu.system) / 1000 / (performance.now() - wall0);
       const sync = (() => {
         const job = baker.start(c.scene, { ...c.settings, syncTimings: true });
         job.run();
@@ -109,6 +113,7 @@ export function runGpuBench(root: string, repeats: number, log: (line: string) =
         pointSources: cold.report.pointSources,
         breakdown: sync,
       };
+      log(`${c.name}: CPU time / wall time over the warm repeats ${cpuShare.toFixed(2)} (1 = CPU-bound, driver threads included)`);
       log(`${c.name}: cold ${row.coldMs.toFixed(1)} ms, warm median ${row.warmMedianMs.toFixed(2)} ms, with read-back ${row.withReadbackMs?.toFixed(2)} ms`);
       rows.push(row);
     } finally {
