@@ -301,7 +301,7 @@ export const BRIGHT_TILE_SIZE = 0.1;
 
 /** The pass's options for given bake settings. */
 export function brightPatchOptions(settings: { brightPatches: number }): { maxPatches: number; tileSize: number; targetPeakedness: number; minContrast: number } {
-  return { maxPatches: settings.brightPatches, tileSize: BRIGHT_TILE_SIZE, targetPeakedness: 3, minContrast: 3 };
+  return { maxPatches: settings.brightPatches, tileSize: BRIGHT_TILE_SIZE, targetPeakedness: 1, minContrast: 3 };
 }
 
 /** Summary for the bake report. */
