@@ -6,10 +6,11 @@ export interface PlotSeries {
   max: [number, number][];
 }
 
-const COLORS = ['#1f77b4', '#d62728', '#2ca02c', '#9467bd', '#ff7f0e'];
-const W = 720;
+// Distinct colours for up to 14 series (each scene, and the stiff scenes' old method beside them).
+const COLORS = ['#1f77b4', '#d62728', '#2ca02c', '#9467bd', '#ff7f0e', '#8c564b', '#e377c2', '#7f7f7f', '#bcbd22', '#17becf', '#393b79', '#637939', '#8c6d31', '#843c39'];
+const W = 900;
 const H = 440;
-const M = { left: 70, right: 190, top: 30, bottom: 55 };
+const M = { left: 70, right: 270, top: 30, bottom: 55 };
 
 const esc = (s: string): string => s.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;');
 
