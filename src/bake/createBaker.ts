@@ -103,6 +103,8 @@ function startJob(
   // a section's own time excludes its children's.
   const open: number[] = [];
   const timed = <T>(key: keyof typeof timings, f: () => T): T => {
+    // Profiling: work the enclosing section queued is its own, not this one's.
+    if (settings.syncTimings && open.length > 0) gl.finish();
     const s = performance.now();
     open.push(0);
     try {

@@ -4,7 +4,7 @@ import { fileURLToPath } from 'node:url';
 import { benchTables, spliceSection } from '../bench/benchMarkdown';
 import { BENCH_DOC_INTRO, BENCH_DOC_OUTRO, BENCH_MARKERS } from '../bench/benchDocText';
 import { errorTimeSvg } from '../bench/errorTimeSvg';
-import { drawOverheadMs, gpuBenchTable, runGpuBench } from '../bench/gpuBench';
+import { drawOverheadMs, gpuBenchTable, runGpuBench, statsRecordMs } from '../bench/gpuBench';
 import { runBench } from '../bench/runBench';
 import { InputError } from '../inputError';
 import { prepareGl } from '../node/prepareGl';
@@ -46,7 +46,7 @@ export async function run(args: string[]): Promise<number> {
     // Bundled (docs/gpu-server.md) the module URL is the bundle's: scenes are read from the working folder.
     const rows = runGpuBench(process.cwd(), repeats, (line) => process.stderr.write(line + '\n'));
     const perDraw = drawOverheadMs();
-    process.stdout.write(`GL back end: ${backend}\n\n${gpuBenchTable(rows)}\n\nOne 256² combine draw in a stream of 200 (per-draw cost): ${perDraw.toFixed(3)} ms\n`);
+    process.stdout.write(`GL back end: ${backend}\n\n${gpuBenchTable(rows)}\n\nOne 256² combine draw in a stream of 200 (per-draw cost): ${perDraw.toFixed(3)} ms\nOne flux-statistics record (living room, 0.05 m): ${statsRecordMs().toFixed(3)} ms\n`);
     return 0;
   }
   const root = resolve(fileURLToPath(new URL('../..', import.meta.url)));
