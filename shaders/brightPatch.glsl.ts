@@ -13,16 +13,18 @@ import { fragmentHeader } from './fullscreen.glsl';
  * mode 0 → (Σ E_r·a, Σ E_g·a, Σ E_b·a, Σ y²·a);
  * mode 1 → (Σ y·a·u, Σ y·a·v, Σ y·a·u², Σ y·a·v²), u, v the texel centre
  * relative to the tile's corner, metres (small numbers keep float32 exact enough).
+ * Drawn into a viewport of an atlas whose corner is uOffset.
  */
 export const tileSumFragment = /* glsl */ `${fragmentHeader}
 uniform sampler2D uMap;
+uniform ivec2 uOffset;
 uniform int uTile;
 uniform int uMode;
 uniform vec2 uTexel;
 uniform vec3 uRho;
 out vec4 outColor;
 void main() {
-  ivec2 tile = ivec2(gl_FragCoord.xy);
+  ivec2 tile = ivec2(gl_FragCoord.xy) - uOffset;
   ivec2 size = textureSize(uMap, 0);
   float area = uTexel.x * uTexel.y;
   vec4 sum = vec4(0.0);

@@ -183,7 +183,9 @@ function readRgba(gl: WebGL2RenderingContext, target: FloatTarget): Float32Array
 /**
  * Run the tile pass on the direct maps, select the bright patches, and build
  * the residual maps and the bright-patch illuminance per surface. `program`
- * compiles (or takes from the cache) a fragment shader.
+ * compiles (or takes from the cache) a fragment shader; `countRead` is told
+ * about the one read-back (the tile sums of all surfaces, a few kB: the
+ * selection is made on the CPU).
  */
 export function runBrightPatchPass(
   gl: WebGL2RenderingContext,
@@ -193,6 +195,7 @@ export function runBrightPatchPass(
   direct: FloatTarget[],
   options: { maxPatches: number; tileSize: number; targetPeakedness: number; minContrast: number },
   program: (source: string, pass: string) => WebGLProgram,
+  countRead: (bytes: number) => void = () => {},
 ): BrightPatchPass {
   const none: BrightPatchPass = {
     selection: { patches: [], peakedness: 1, residualPeakedness: 1 },
@@ -204,25 +207,46 @@ export function runBrightPatchPass(
   const reflecting = layouts.filter((l) => reflectance[l.index].some((r) => r > 0));
   if (reflecting.length === 0) return none;
   const tileProg = program(tileSumFragment, 'bright tiles');
-  const sums: SurfaceTileSums[] = reflecting.map((layout) => {
+  // Every surface's tile sums (mode 0) and moments (mode 1) side by side in one
+  // atlas target, so the whole selection costs one read-back.
+  const grids = reflecting.map((layout) => {
     const tile = tileTexels(layout, options.tileSize);
-    const tilesU = Math.ceil(layout.width / tile);
-    const tilesV = Math.ceil(layout.height / tile);
-    const t = createFloatTarget(gl, tilesU, tilesV, false);
-    const read = (mode: number) => {
-      drawInto(gl, t, tileProg, () => {
-        bindTexture(gl, tileProg, 'uMap', 0, direct[layout.index].texture);
-        gl.uniform1i(gl.getUniformLocation(tileProg, 'uTile'), tile);
-        gl.uniform1i(gl.getUniformLocation(tileProg, 'uMode'), mode);
-        gl.uniform2f(gl.getUniformLocation(tileProg, 'uTexel'), layout.lengthU / layout.width, layout.lengthV / layout.height);
-        gl.uniform3fv(gl.getUniformLocation(tileProg, 'uRho'), reflectance[layout.index]);
-      });
-      return readRgba(gl, t);
+    return { layout, tile, tilesU: Math.ceil(layout.width / tile), tilesV: Math.ceil(layout.height / tile) };
+  });
+  const atlasWidth = grids.reduce((w, g) => w + g.tilesU, 0);
+  const rowsPerMode = Math.max(...grids.map((g) => g.tilesV));
+  const atlas = createFloatTarget(gl, atlasWidth, 2 * rowsPerMode, false);
+  let x0 = 0;
+  const offsets = grids.map((g) => {
+    const x = x0;
+    x0 += g.tilesU;
+    for (const mode of [0, 1]) {
+      gl.bindFramebuffer(gl.FRAMEBUFFER, atlas.framebuffer);
+      gl.viewport(x, mode * rowsPerMode, g.tilesU, g.tilesV);
+      gl.useProgram(tileProg);
+      bindTexture(gl, tileProg, 'uMap', 0, direct[g.layout.index].texture);
+      gl.uniform2i(gl.getUniformLocation(tileProg, 'uOffset'), x, mode * rowsPerMode);
+      gl.uniform1i(gl.getUniformLocation(tileProg, 'uTile'), g.tile);
+      gl.uniform1i(gl.getUniformLocation(tileProg, 'uMode'), mode);
+      gl.uniform2f(gl.getUniformLocation(tileProg, 'uTexel'), g.layout.lengthU / g.layout.width, g.layout.lengthV / g.layout.height);
+      gl.uniform3fv(gl.getUniformLocation(tileProg, 'uRho'), reflectance[g.layout.index]);
+      gl.drawArrays(gl.TRIANGLES, 0, 3);
+    }
+    return x;
+  });
+  const all = readRgba(gl, atlas);
+  countRead(all.byteLength);
+  deleteTarget(gl, atlas);
+  const sums: SurfaceTileSums[] = grids.map((g, k) => {
+    const cut = (mode: number) => {
+      const out = new Float32Array(g.tilesU * g.tilesV * 4);
+      for (let j = 0; j < g.tilesV; j++) {
+        const from = ((mode * rowsPerMode + j) * atlasWidth + offsets[k]) * 4;
+        out.set(all.subarray(from, from + g.tilesU * 4), j * g.tilesU * 4);
+      }
+      return out;
     };
-    const s = read(0);
-    const m = read(1);
-    deleteTarget(gl, t);
-    return { layout, reflectance: reflectance[layout.index], tile, tilesU, tilesV, sums: s, moments: m };
+    return { ...g, reflectance: reflectance[g.layout.index], sums: cut(0), moments: cut(1) };
   });
   const selection = selectBrightPatches(sums, options);
   if (selection.patches.length === 0) return { ...none, selection };

@@ -77,7 +77,9 @@ describe('read-backs of a bake', () => {
     room: { width: 3, height: 2.5, depth: 4, reflectance: Object.fromEntries(SURFACE_NAMES.map((s) => [s, 0.6])) as Record<(typeof SURFACE_NAMES)[number], number> },
     luminaires: [{ photometry: spot(20000, 8, 4, 1), position: [1.5, 2.4, 2] as [number, number, number], yaw: 0, pitch: 30, roll: 0 }],
   };
-  const settings = { texelSize: 0.1, samples: 16, bounces: 4 };
+  // brightPatches 0: the bright-patch pass (brightPatches.ts) adds one read-back of its tile sums
+  // before the first bounce; counted separately below.
+  const settings = { texelSize: 0.1, samples: 16, bounces: 4, brightPatches: 0 };
 
   it('none between bounces: a run makes 0 read-backs; the report 1 (stats row); maps 18 (6 surfaces × direct/indirect/total)', () => {
     const job = createBaker(gl).start(scene, settings);
@@ -96,6 +98,14 @@ describe('read-backs of a bake', () => {
   it('the report of a bake states the read-backs it made: bake() = maps + one stats row', () => {
     const { report } = createBaker(gl).bake({ room: scene.room, luminaires: [{ ...scene.luminaires[0], photometry: isotropic(100) }] }, settings);
     expect(report.readbacks.count).toBe(19);
+  });
+
+  it('the bright-patch pass adds exactly one read-back (its tile sums, before the first bounce), still none between bounces', () => {
+    const job = createBaker(gl).start(scene, { ...settings, brightPatches: 64 });
+    job.run();
+    // Tile sums + the report's stats row.
+    expect(job.report().readbacks.count).toBe(1 + 1);
+    job.dispose();
   });
 });
 
