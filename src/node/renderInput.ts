@@ -1,5 +1,5 @@
-import { readFileSync } from 'node:fs';
-import { basename } from 'node:path';
+import { existsSync, readFileSync } from 'node:fs';
+import { basename, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import type { BakeScene } from '../bake/bakeScene';
 import { defaultCatalog } from '../catalog/defaultCatalog';
@@ -20,8 +20,19 @@ export interface RenderInput {
   kind: 'configuration' | 'lighting-scene';
 }
 
-/** The app's public folder: the catalog's photometry paths ('ies/…') are relative to it. */
-export const PUBLIC_DIR = fileURLToPath(new URL('../../public/', import.meta.url));
+/**
+ * The app's public folder: the catalog's photometry paths ('ies/…') are
+ * relative to it. $LUXBOX_PUBLIC_DIR wins; else public/ of the repository
+ * this module is in (src/node/ from source, one level down when bundled into
+ * gpu-pack/luxbox.mjs), else public/ of the working folder.
+ */
+export const PUBLIC_DIR = resolvePublicDir();
+
+function resolvePublicDir(): string {
+  if (process.env.LUXBOX_PUBLIC_DIR) return join(process.env.LUXBOX_PUBLIC_DIR, '/');
+  const candidates = [fileURLToPath(new URL('../../public/', import.meta.url)), fileURLToPath(new URL('../public/', import.meta.url)), join(process.cwd(), 'public/')];
+  return candidates.find((dir) => existsSync(join(dir, 'ies'))) ?? candidates[0];
+}
 
 /**
  * Read a configurator scene file (format "luxbox-configuration", default
