@@ -56,8 +56,6 @@ export interface BrightSelection {
   residualPeakedness: number;
 }
 
-const yOf = (c: Rgb | number[]): number => LUMINANCE_WEIGHTS[0] * c[0] + LUMINANCE_WEIGHTS[1] * c[1] + LUMINANCE_WEIGHTS[2] * c[2];
-
 /**
  * Which tiles to gather deterministically. The variance of the cosine-sampled
  * gather of bounce 1 is, up to geometry, Σ M²·A over what it samples; for a
@@ -79,19 +77,39 @@ export function selectBrightPatches(
     flux: Rgb;
     y: number;
   }
-  const candidates: Candidate[] = [];
+  // Totals first (no allocation per tile: a 20 m corridor has ~25 000 tiles), then
+  // only the tiles bright enough to qualify become candidates and are sorted.
   let area = 0;
   let scoreAll = 0;
   let yAll = 0;
+  const yOfTile = (s: SurfaceTileSums, k: number) =>
+    LUMINANCE_WEIGHTS[0] * Math.max(0, s.sums[4 * k]) * s.reflectance[0] +
+    LUMINANCE_WEIGHTS[1] * Math.max(0, s.sums[4 * k + 1]) * s.reflectance[1] +
+    LUMINANCE_WEIGHTS[2] * Math.max(0, s.sums[4 * k + 2]) * s.reflectance[2];
   for (const s of surfaces) {
     area += s.layout.lengthU * s.layout.lengthV;
     for (let k = 0; k < s.tilesU * s.tilesV; k++) {
-      const flux: Rgb = [0, 1, 2].map((c) => Math.max(0, s.sums[4 * k + c]) * s.reflectance[c]) as Rgb;
-      const y = yOf(flux);
+      const y = yOfTile(s, k);
       const score = Math.max(0, s.sums[4 * k + 3]);
       if (!(y > 0) || !Number.isFinite(y) || !Number.isFinite(score)) continue;
       scoreAll += score;
       yAll += y;
+    }
+  }
+  const candidates: Candidate[] = [];
+  const meanExitance = yAll / area;
+  for (const s of surfaces) {
+    const du = s.layout.lengthU / s.layout.width;
+    const dv = s.layout.lengthV / s.layout.height;
+    for (let k = 0; k < s.tilesU * s.tilesV; k++) {
+      const y = yOfTile(s, k);
+      const score = Math.max(0, s.sums[4 * k + 3]);
+      // The tile's own area (the last row and column may be partial).
+      const iu = k % s.tilesU;
+      const iv = Math.floor(k / s.tilesU);
+      const tileArea = (Math.min(s.layout.width, (iu + 1) * s.tile) - iu * s.tile) * du * (Math.min(s.layout.height, (iv + 1) * s.tile) - iv * s.tile) * dv;
+      if (!(y >= options.minContrast * meanExitance * tileArea) || !Number.isFinite(y) || !Number.isFinite(score)) continue;
+      const flux = [0, 1, 2].map((c) => Math.max(0, s.sums[4 * k + c]) * s.reflectance[c]) as Rgb;
       candidates.push({ s, k, score, flux, y });
     }
   }
@@ -101,7 +119,6 @@ export function selectBrightPatches(
   const patches: BrightPatch[] = [];
   if (!(yAll > 0) || options.maxPatches <= 0) return { patches, peakedness, residualPeakedness: peakedness };
   candidates.sort((a, b) => b.score - a.score);
-  const meanExitance = yAll / area;
   let score = scoreAll;
   for (const c of candidates) {
     if (patches.length >= options.maxPatches || peak(score) <= options.targetPeakedness) break;
@@ -196,6 +213,11 @@ export function runBrightPatchPass(
   options: { maxPatches: number; tileSize: number; targetPeakedness: number; minContrast: number },
   program: (source: string, pass: string) => WebGLProgram,
   countRead: (bytes: number) => void = () => {},
+  // Render targets: the baker's pool (targetPool.ts: allocating RGBA32F targets per bake is slow on a GPU); by default new ones.
+  targets: { acquire(width: number, height: number, zero?: boolean): FloatTarget; release(target: FloatTarget): void } = {
+    acquire: (width, height) => createFloatTarget(gl, width, height, linear),
+    release: (target) => deleteTarget(gl, target),
+  },
 ): BrightPatchPass {
   const none: BrightPatchPass = {
     selection: { patches: [], peakedness: 1, residualPeakedness: 1 },
@@ -215,7 +237,8 @@ export function runBrightPatchPass(
   });
   const atlasWidth = grids.reduce((w, g) => w + g.tilesU, 0);
   const rowsPerMode = Math.max(...grids.map((g) => g.tilesV));
-  const atlas = createFloatTarget(gl, atlasWidth, 2 * rowsPerMode, false);
+  // Every texel that is read back below is written first: no clear needed.
+  const atlas = targets.acquire(atlasWidth, 2 * rowsPerMode, false);
   let x0 = 0;
   const offsets = grids.map((g) => {
     const x = x0;
@@ -236,7 +259,7 @@ export function runBrightPatchPass(
   });
   const all = readRgba(gl, atlas);
   countRead(all.byteLength);
-  deleteTarget(gl, atlas);
+  targets.release(atlas);
   const sums: SurfaceTileSums[] = grids.map((g, k) => {
     const cut = (mode: number) => {
       const out = new Float32Array(g.tilesU * g.tilesV * 4);
@@ -263,7 +286,7 @@ export function runBrightPatchPass(
     data.set([...p.centre, p.surface, ...hu, 0, ...hv, 0, ...p.exitance, 0], 16 * k);
   });
   const patchTexture = rgbaTexture(gl, data, 4, n);
-  const targets: FloatTarget[] = [];
+  const made: FloatTarget[] = [];
   const textures: WebGLTexture[] = [patchTexture];
 
   // Residual maps: the bright tiles cut out of the direct maps they lie on.
@@ -276,8 +299,8 @@ export function runBrightPatchPass(
     const maskTexture = rgbaTexture(gl, mask, s.tilesU, s.tilesV);
     textures.push(maskTexture);
     const prog = program(residualFragment, 'bright residual');
-    const out = createFloatTarget(gl, layout.width, layout.height, linear);
-    targets.push(out);
+    const out = targets.acquire(layout.width, layout.height, false);
+    made.push(out);
     drawInto(gl, out, prog, () => {
       bindTexture(gl, prog, 'uMap', 0, direct[layout.index].texture);
       bindTexture(gl, prog, 'uMask', 1, maskTexture);
@@ -290,8 +313,8 @@ export function runBrightPatchPass(
   const gatherProg = program(brightGatherFragment, 'bright gather');
   const bright = layouts.map((layout): FloatTarget | null => {
     if (selection.patches.every((p) => p.surface === layout.index)) return null;
-    const out = createFloatTarget(gl, layout.width, layout.height, linear);
-    targets.push(out);
+    const out = targets.acquire(layout.width, layout.height, false);
+    made.push(out);
     const axisU: Vec3 = [0, 0, 0];
     axisU[layout.uAxisIndex] = layout.lengthU;
     const axisV: Vec3 = [0, 0, 0];
@@ -314,7 +337,7 @@ export function runBrightPatchPass(
     residual,
     bright,
     dispose() {
-      for (const t of targets) deleteTarget(gl, t);
+      for (const t of made) targets.release(t);
       for (const t of textures) gl.deleteTexture(t);
     },
   };

@@ -224,7 +224,7 @@ function startJob(
   // Bounce 1 from the brightest tiles of the direct maps, exactly (brightPatches.ts).
   const brightPass = indirectEnabled
     ? timed('direct', () =>
-        runBrightPatchPass(gl, linear, layouts, reflectance, states.map((st) => st.direct), brightPatchOptions(settings), (source, pass) => program(source, pass, null), countRead),
+        runBrightPatchPass(gl, linear, layouts, reflectance, states.map((st) => st.direct), brightPatchOptions(settings), (source, pass) => program(source, pass, null), countRead, pool),
       )
     : null;
 
