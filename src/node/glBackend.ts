@@ -10,9 +10,12 @@ import { InputError } from '../inputError';
  * - `glx`: ANGLE on desktop OpenGL through GLX. Needs an X display (the CLI
  *   re-runs itself under `xvfb-run -a`); on a CPU-only box that is Mesa llvmpipe.
  * - `auto`: Vulkan when a hardware Vulkan device is present; otherwise GLX
- *   when an X display is already set, or Vulkan (software) when not —
- *   measured on the 2-core CI machine, docs/benchmarks.md "GL back ends":
- *   starting Xvfb costs more than Vulkan's slower warm passes in one CLI run.
+ *   (under xvfb-run when no display is set), and software Vulkan only when
+ *   neither an X display nor xvfb-run is there. Measured on the 2-core CI
+ *   machine (docs/benchmarks.md, "Command line: GL back ends and batches"):
+ *   lavapipe compiles the large generated shaders far more slowly than
+ *   llvmpipe (a 10-lamp living room: 64.7 s against 3.5 s for the whole
+ *   process, Xvfb start included), and its warm passes are slower too.
  */
 export type GlBackend = 'vulkan' | 'glx';
 export type GlBackendChoice = GlBackend | 'auto';
@@ -153,8 +156,8 @@ export function selectGlBackend(choice: GlBackendChoice): BackendSelection {
   const loader = ensureVulkanLoader() !== null;
   if (loader && drivers.hardwareManifests.length > 0 && drivers.deviceNode) return { backend: 'vulkan', reason: 'hardware Vulkan device' };
   if (process.env.DISPLAY) return { backend: 'glx', reason: 'X display set, no hardware Vulkan' };
-  if (loader && drivers.manifests.length > 0) return { backend: 'vulkan', reason: 'no X display; software Vulkan' };
-  if (onPath('xvfb-run')) return { backend: 'glx', reason: 'no Vulkan driver; xvfb-run' };
+  if (onPath('xvfb-run')) return { backend: 'glx', reason: 'no hardware Vulkan; GLX under xvfb-run' };
+  if (loader && drivers.manifests.length > 0) return { backend: 'vulkan', reason: 'no X display and no xvfb-run; software Vulkan' };
   throw new InputError(
     'no graphics back end: no Vulkan driver (apt-get install mesa-vulkan-drivers libvulkan1) and no X display (set DISPLAY or apt-get install xvfb)',
   );

@@ -7,7 +7,7 @@
  * llvmpipe), which setup.sh installs.
  */
 import { spawnSync } from 'node:child_process';
-import { mkdirSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, readFileSync, symlinkSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { PNG } from 'pngjs';
@@ -22,9 +22,13 @@ const scene = join(root, 'tests/fixtures/scenes/small-room.json');
 const quick = ['--texel', '0.1', '--samples', '16', '--bounces', '2'];
 const out = mkdtempSync(join(tmpdir(), 'luxbox-gl-'));
 
-/** The CLI with no DISPLAY at all and no xvfb-run reachable (PATH holds only node's folder). */
+/** A PATH with nothing on it but node (no xvfb-run, whatever folder node lives in). */
+const bareBin = mkdtempSync(join(tmpdir(), 'luxbox-bin-'));
+symlinkSync(process.execPath, join(bareBin, 'node'));
+
+/** The CLI with no DISPLAY at all and no xvfb-run reachable. */
 function luxboxNoX(args: string[]) {
-  const env: NodeJS.ProcessEnv = { ...process.env, PATH: join(process.execPath, '..') };
+  const env: NodeJS.ProcessEnv = { ...process.env, PATH: bareBin };
   delete env.DISPLAY;
   delete env.LUXBOX_GL;
   const r = spawnSync(process.execPath, [join(root, 'bin/luxbox.js'), ...args], { cwd: root, env, encoding: 'utf8', timeout: 180_000 });
@@ -65,16 +69,20 @@ describe('GL back ends', () => {
     expect(report.gl).toBe('vulkan');
   });
 
-  it('auto picks Vulkan when there is no display and GLX when there is one (no hardware Vulkan here)', () => {
-    const saved = process.env.DISPLAY;
+  it('auto without hardware Vulkan: GLX with a display or xvfb-run, software Vulkan only when neither is there', () => {
+    const saved = { DISPLAY: process.env.DISPLAY, PATH: process.env.PATH };
+    const hardware = vulkanDrivers().hardwareManifests.length > 0 && vulkanDrivers().deviceNode;
     try {
-      delete process.env.DISPLAY;
-      if (vulkanDrivers().manifests.length > 0 && ensureVulkanLoader()) expect(selectGlBackend('auto').backend).toBe('vulkan');
       process.env.DISPLAY = ':99';
-      if (vulkanDrivers().hardwareManifests.length === 0 || !vulkanDrivers().deviceNode) expect(selectGlBackend('auto').backend).toBe('glx');
+      if (!hardware) expect(selectGlBackend('auto').backend).toBe('glx');
+      delete process.env.DISPLAY;
+      process.env.PATH = bareBin;
+      if (!hardware && vulkanDrivers().manifests.length > 0 && ensureVulkanLoader()) expect(selectGlBackend('auto').backend).toBe('vulkan');
     } finally {
-      if (saved === undefined) delete process.env.DISPLAY;
-      else process.env.DISPLAY = saved;
+      for (const [k, v] of Object.entries(saved)) {
+        if (v === undefined) delete process.env[k];
+        else process.env[k] = v;
+      }
     }
   });
 
