@@ -1,7 +1,7 @@
 import type { Rgb, Vec3 } from '../model/lightingScene';
 import { brightGatherFragment, residualFragment, tileSumFragment } from '../../shaders/brightPatch.glsl';
 import { LUMINANCE_WEIGHTS } from './bakedMaps';
-import { bindTexture, createFloatTarget, deleteTarget, drawInto, type FloatTarget } from './glResources';
+import { bindTexture, createFloatTarget, deleteTarget, drawInto, readRgba, type FloatTarget } from './glResources';
 import type { SurfaceLayout } from './surfaceLayout';
 
 /**
@@ -188,13 +188,6 @@ function rgbaTexture(gl: WebGL2RenderingContext, data: Float32Array, width: numb
   gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
   gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
   return texture;
-}
-
-function readRgba(gl: WebGL2RenderingContext, target: FloatTarget): Float32Array {
-  const out = new Float32Array(target.width * target.height * 4);
-  gl.bindFramebuffer(gl.FRAMEBUFFER, target.framebuffer);
-  gl.readPixels(0, 0, target.width, target.height, gl.RGBA, gl.FLOAT, out);
-  return out;
 }
 
 /**
