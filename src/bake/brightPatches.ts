@@ -1,7 +1,7 @@
 import type { Rgb, Vec3 } from '../model/lightingScene';
 import { brightGatherFragment, residualFragment, tileSumFragment } from '../../shaders/brightPatch.glsl';
 import { LUMINANCE_WEIGHTS } from './bakedMaps';
-import { bindTexture, createFloatTarget, deleteTarget, drawInto, readRgba, type FloatTarget } from './glResources';
+import { bindTexture, createDataTexture, createFloatTarget, deleteTarget, drawInto, readRgba, type FloatTarget } from './glResources';
 import type { SurfaceLayout } from './surfaceLayout';
 
 /**
@@ -179,17 +179,6 @@ export interface BrightPatchPass {
   dispose(): void;
 }
 
-function rgbaTexture(gl: WebGL2RenderingContext, data: Float32Array, width: number, height: number): WebGLTexture {
-  const texture = gl.createTexture();
-  if (!texture) throw new Error('WebGL: out of resources creating a data texture');
-  gl.bindTexture(gl.TEXTURE_2D, texture);
-  gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
-  gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, width, height, 0, gl.RGBA, gl.FLOAT, data);
-  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
-  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
-  return texture;
-}
-
 /**
  * Run the tile pass on the direct maps, select the bright patches, and build
  * the residual maps and the bright-patch illuminance per surface. `program`
@@ -278,7 +267,7 @@ export function runBrightPatchPass(
     hv[layout.vAxisIndex] = p.halfV;
     data.set([...p.centre, p.surface, ...hu, 0, ...hv, 0, ...p.exitance, 0], 16 * k);
   });
-  const patchTexture = rgbaTexture(gl, data, 4, n);
+  const patchTexture = createDataTexture(gl, data, 4, n, 4);
   const made: FloatTarget[] = [];
   const textures: WebGLTexture[] = [patchTexture];
 
@@ -289,7 +278,7 @@ export function runBrightPatchPass(
     const s = sums.find((x) => x.layout.index === layout.index)!;
     const mask = new Float32Array(s.tilesU * s.tilesV * 4);
     for (const p of own) mask[4 * (p.tileV * s.tilesU + p.tileU)] = 1;
-    const maskTexture = rgbaTexture(gl, mask, s.tilesU, s.tilesV);
+    const maskTexture = createDataTexture(gl, mask, s.tilesU, s.tilesV, 4);
     textures.push(maskTexture);
     const prog = program(residualFragment, 'bright residual');
     const out = targets.acquire(layout.width, layout.height, false);
