@@ -15,7 +15,12 @@ import { createFluxStatistics } from '../bake/fluxStatistics';
 import { surfaceLayouts } from '../bake/surfaceLayout';
 import { createTargetPool } from '../bake/targetPool';
 import { combineFragment } from '../../shaders/passes.glsl';
-import { bindTexture, createFloatTarget, drawInto, getProgram, requireFloatTargets, uniformLocation, type FloatTarget } from '../bake/glResources';
+import { bindTexture, createDataTexture, createFloatTarget, drawInto, getProgram, readRgba, requireFloatTargets, uniformLocation, type FloatTarget } from '../bake/glResources';
+import { resolveBakeSettings } from '../bake/bakeSettings';
+import { buildProfileTable, DATA_TEXTURE_WIDTH } from '../bake/profileTable';
+import { generateDirectShader, type DirectLamp } from '../bake/generateDirectShader';
+import { lampReachesSurface } from '../bake/lampReach';
+import { scenePointSources } from '../bake/scenePointSources';
 import { loadLightingSceneFile } from '../node/loadLightingSceneFile';
 
 export interface GpuBenchRow {
@@ -176,6 +181,64 @@ export function statsRecordMs(): number {
     stats.dispose();
     pool.dispose();
     return ms;
+  } finally {
+    gl.destroy();
+  }
+}
+
+/**
+ * Experiment behind the direct pass's cost: the 20-lamp direct-only scene's
+ * six direct draws (texel centres), as generated (source positions in const
+ * arrays) and with the positions moved to uniform arrays (a constant buffer
+ * every thread reads at the same index). Median of `repeats`, ms per six draws.
+ */
+export function directSourcesExperiment(root: string, repeats: number): { constArrays: number; uniformArrays: number; maxError: number } {
+  const gl = createHeadlessGL();
+  try {
+    const { linear } = requireFloatTargets(gl);
+    const scene = directStress(root);
+    const settings = resolveBakeSettings({ texelSize: 0.05, maxTextureSize: 256, texelSupersampling: 1 });
+    const photometries = [...new Set(scene.luminaires.map((l) => l.photometry))];
+    const table = buildProfileTable(photometries);
+    const data = createDataTexture(gl, table.data, DATA_TEXTURE_WIDTH, table.rows);
+    const lamps: DirectLamp[] = scenePointSources(scene, settings).map((l) => ({ profile: table.layouts[photometries.indexOf(l.photometry)], rotation: l.rotation, sources: l.sources, sides: l.sides, weight: l.weight }));
+    const layouts = surfaceLayouts(scene.room, settings.texelSize, settings.maxTextureSize);
+    const variants = layouts.map((layout) => {
+      const reaching = lamps.filter((l) => lampReachesSurface(l.sources, l.rotation, l.profile.gammaMin, l.profile.gammaMax, layout));
+      const source = generateDirectShader(layout, reaching, 1);
+      const values: Float32Array[] = [];
+      const uniformSource = source.replace(/const vec3 (LAMP\d+_SOURCES)\[(\d+)\] = vec3\[\d+\]\(([^;]*)\);/g, (_m, name: string, n: string, list: string) => {
+        values.push(new Float32Array((list.replace(/vec3/g, '').match(/-?[\d.]+(?:e[-+]?\d+)?/g) ?? []).map(Number)));
+        return `uniform vec3 ${name}[${n}];`;
+      });
+      const names = [...source.matchAll(/const vec3 (LAMP\d+_SOURCES)\[/g)].map((m) => m[1]);
+      return { layout, source, uniformSource, values, names, target: createFloatTarget(gl, layout.width, layout.height, linear) };
+    });
+    const run = (uniform: boolean) => {
+      for (const v of variants) {
+        const prog = getProgram(gl, uniform ? v.uniformSource : v.source).program;
+        drawInto(gl, v.target, prog, () => {
+          bindTexture(gl, prog, 'uProfiles', 0, data);
+          if (uniform) v.names.forEach((name, i) => gl.uniform3fv(uniformLocation(gl, prog, `${name}[0]`), v.values[i]));
+        });
+      }
+      gl.finish();
+    };
+    const time = (uniform: boolean) => {
+      run(uniform);
+      return median(Array.from({ length: repeats }, () => {
+        const t0 = performance.now();
+        run(uniform);
+        return performance.now() - t0;
+      }));
+    };
+    const constArrays = time(false);
+    const a = variants.map((v) => readRgba(gl, v.target));
+    const uniformArrays = time(true);
+    const b = variants.map((v) => readRgba(gl, v.target));
+    let maxError = 0;
+    a.forEach((x, i) => x.forEach((value, j) => (maxError = Math.max(maxError, Math.abs(value - b[i][j]) / Math.max(Math.abs(value), 1e-6)))));
+    return { constArrays, uniformArrays, maxError };
   } finally {
     gl.destroy();
   }
