@@ -9,7 +9,7 @@ import { falseColorPng } from './falseColorPng';
 import { writePfm } from './writePfm';
 
 /**
- * What `luxbox bake` writes for one scene (DESIGN.md contract): report.json,
+ * What `luxbox bake` writes for one scene (docs/scene-format.md, "Command-line contract"): report.json,
  * per surface <name>.direct/.indirect/.total.pfm (RGB lux) and <name>.png
  * (false colour of total lux, one scale for all six).
  */
