@@ -1,5 +1,5 @@
 /**
- * Plan geometry of placed systems (DESIGN.md frames: world y up, plan x = world x,
+ * Plan geometry of placed systems (docs/scene-format.md "Units and frames": world y up, plan x = world x,
  * plan "down" = world z). Headings are degrees counterclockwise seen from above,
  * so a heading h points along (cos h, 0, −sin h) = Ry(h)·(+x): the same rotation
  * as the luminaire yaw, which makes C0 run along the rail.

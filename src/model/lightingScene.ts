@@ -1,6 +1,6 @@
 /**
  * Lighting scene, versions 1 and 2: the contract between the configurator, the baker
- * and the command line (DESIGN.md, "Command-line contract"). Extend, never break.
+ * and the command line (docs/scene-format.md). Extend, never break.
  */
 export type Rgb = [number, number, number];
 export type Vec3 = [number, number, number];
@@ -26,7 +26,7 @@ export interface LightingLuminaire {
   photometry: string;
   /** World position of the photometric centre, metres. */
   position: Vec3;
-  /** Degrees; world = Ry(yaw) · Rx(pitch) · Ry(roll) · local (DESIGN.md). */
+  /** Degrees; world = Ry(yaw) · Rx(pitch) · Ry(roll) · local (docs/scene-format.md, "Units and frames"). */
   yaw: number;
   pitch: number;
   roll: number;
@@ -41,7 +41,7 @@ export interface LightingLuminaire {
 /**
  * How a luminaire's light leaves it (version 2): 'split' (default) turns a luminous opening
  * larger than 5 cm into a grid of point sources; 'point' uses one point source per luminaire
- * (Radiance's ies2rad point model). DESIGN.md, "Version 2 of the lighting scene".
+ * (Radiance's ies2rad point model). docs/scene-format.md, "Version 2".
  */
 export const NEAR_FIELD_MODELS = ['split', 'point'] as const;
 export type NearField = (typeof NEAR_FIELD_MODELS)[number];

@@ -1,6 +1,6 @@
 /**
- * Reading a lighting scene (versions 1 and 2, DESIGN.md "Command-line
- * contract") from untrusted JSON: size and shape limits (untrustedJson.ts),
+ * Reading a lighting scene (versions 1 and 2, docs/scene-format.md) from
+ * untrusted JSON: size and shape limits (untrustedJson.ts),
  * the version, structure and types with zod (strict: an unknown field is
  * refused, naming it, with a suggestion for a misspelling), then the physical
  * checks zod cannot express (a lamp inside the room). Every error is one line

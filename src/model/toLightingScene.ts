@@ -1,5 +1,5 @@
 /**
- * The configuration as the baker's input (LightingScene v1, DESIGN.md): one
+ * The configuration as the baker's input (LightingScene v1, docs/scene-format.md): one
  * luminaire per module, at its photometric centre (plan centre of the module,
  * y = ceiling − suspension), turned so C0 runs along its rail (yaw = rail
  * heading) plus the optic's roll from the catalog, coloured by its CCT.

@@ -1,7 +1,7 @@
 import { InputError } from '../inputError';
 import type { BakeSettings } from '../bake/bakeSettings';
 
-/** Flags shared by `bake` and `probe` (DESIGN.md: --samples, --bounces, --texel) plus a few extras. */
+/** Flags shared by `bake` and `probe` (docs/baker.md "Command line": --samples, --bounces, --texel) plus a few extras. */
 const NUMERIC_FLAGS: Record<string, keyof BakeSettings> = {
   '--samples': 'samples',
   '--bounces': 'bounces',

@@ -15,7 +15,7 @@ export interface SurfaceSummary {
   texels: [number, number];
 }
 
-/** Per-surface statistics as report.json carries them (DESIGN.md contract). */
+/** Per-surface statistics as report.json carries them (docs/scene-format.md, "Command-line contract"). */
 export function summarizeSurfaces(maps: BakedMaps): Record<SurfaceName, SurfaceSummary> {
   const out = {} as Record<SurfaceName, SurfaceSummary>;
   for (const name of SURFACE_NAMES) {
