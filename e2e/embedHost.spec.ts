@@ -1,6 +1,6 @@
 import { expect, test, type Page } from '@playwright/test';
 
-// The shop page of embed.html (src/embedDemo) mounts luxbox with its own room, locale, catalog and
+// The shop page of embed.html (src/hosts/embedDemo) mounts luxbox with its own room, locale, catalog and
 // autosave key, and reads everything through the public API (docs/embedding.md). These tests
 // drive that page like a shopper and like the host's own script (window.shopDemo.instance).
 

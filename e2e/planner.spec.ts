@@ -170,7 +170,7 @@ test('dragging a system moves it; dragging the background pans; the wheel zooms'
   expect(Math.abs(railAfter.y - railBefore.y - 60)).toBeLessThan(6);
   expect((await sceneFile(page)).configuration.systems[0]).toEqual(after);
 
-  // The wheel zooms about the pointer (the anchoring itself is unit-tested in tests/planner/viewTransform).
+  // The wheel zooms about the pointer (the anchoring itself is unit-tested in tests/ui/planner/viewTransform).
   const plan = page.getByTestId('plan');
   const pb = (await plan.boundingBox())!;
   await page.mouse.move(pb.x + 200, pb.y + 150);

@@ -9,7 +9,7 @@ async function bakedReflectance(page: Page): Promise<Reflectances> {
   return page.evaluate(() => (window.luxbox!.getLightingScene() as { room: { reflectance: Reflectances } }).room.reflectance);
 }
 
-// Values from src/catalog/surface-finishes.json.
+// Values from src/core/catalog/surface-finishes.json.
 const SAGE = [0.402, 0.476, 0.335];
 const SLATE = [0.089, 0.101, 0.12];
 

@@ -1,6 +1,6 @@
 import { expect, test, type Page } from '@playwright/test';
 import { PNG } from 'pngjs';
-import type { ViewerStatus as Status } from '../src/viewer/viewerStatus';
+import type { ViewerStatus as Status } from '../src/ui/viewer/viewerStatus';
 
 test.use({ reducedMotion: 'reduce', viewport: { width: 1280, height: 800 } });
 

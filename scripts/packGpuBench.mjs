@@ -25,7 +25,7 @@ mkdirSync(join(out, 'node_modules'), { recursive: true });
 
 // 1. The CLI in one file.
 sh(join(root, 'node_modules/.bin/esbuild'), [
-  join(root, 'src/cli/bundleEntry.ts'),
+  join(root, 'src/hosts/cli/bundleEntry.ts'),
   '--bundle', '--platform=node', '--format=esm', '--target=node20', '--external:gl',
   `--outfile=${join(out, 'luxbox.mjs')}`,
   // Bundled CommonJS dependencies call require(): give the ES module one.

@@ -1,5 +1,5 @@
 /**
- * Fixed passes of the "bright patch" first bounce (src/bake/brightPatches.ts,
+ * Fixed passes of the "bright patch" first bounce (src/engines/bake/brightPatches.ts,
  * docs/baker.md "Bright patches"): tile sums of a direct map, the residual map
  * the Monte Carlo gather reads, and the deterministic gather from the bright
  * patches with exact point-to-rectangle form factors. Scene data come in as

@@ -1,5 +1,5 @@
 /**
- * Candela lookup in the packed profile table (src/bake/profileTable.ts).
+ * Candela lookup in the packed profile table (src/engines/bake/profileTable.ts).
  * Needs DATA_WIDTH defined and a sampler uProfiles. Interpolation is done
  * here in full float precision instead of by the texture unit, whose
  * bilinear weights have only ~8 fractional bits on many GPUs (too coarse

@@ -1,4 +1,4 @@
-import type { SurfaceName, Vec3 } from '../model/lightingScene';
+import type { SurfaceName, Vec3 } from '../core/model/lightingScene';
 
 /** World axis index: 0 = x, 1 = y (up), 2 = z. */
 export type Axis = 0 | 1 | 2;
@@ -24,7 +24,7 @@ export interface BoxFace {
   normal: Vec3;
 }
 
-// DESIGN.md "Units and frames": floor y=0, ceiling y=H, north z=0, south z=D,
+// docs/scene-format.md "Units and frames": floor y=0, ceiling y=H, north z=0, south z=D,
 // west x=0, east x=W. u/v follow the plan view for horizontal faces (x, z) and
 // put v upward (world y) on the walls.
 export const BOX_FACES: readonly BoxFace[] = [

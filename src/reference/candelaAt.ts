@@ -1,4 +1,4 @@
-import type { Photometry } from '../photometry/types';
+import type { Photometry } from '../core/photometry/types';
 
 /** Index i with a[i] ≤ x ≤ a[i+1] for ascending a (clamped to the ends), by bisection. */
 function bracket(a: readonly number[], x: number): number {
@@ -16,10 +16,10 @@ function bracket(a: readonly number[], x: number): number {
 
 /**
  * Intensity in cd at (γ, C) by bilinear interpolation in the expanded candela grid
- * (src/photometry/types.ts: symmetry unfolded, multipliers applied, C either [0] or
+ * (src/core/photometry/types.ts: symmetry unfolded, multipliers applied, C either [0] or
  * spanning 0..360). Bilinear in the angles is what LM-63 consumers conventionally
- * use and what src/photometry's intensity() does too.
- * Independent of src/photometry's lookup on purpose, so the reference checks it.
+ * use and what src/core/photometry's intensity() does too.
+ * Independent of src/core/photometry's lookup on purpose, so the reference checks it.
  */
 export function candelaAt(ph: Photometry, gammaDeg: number, cDeg: number): number {
   const va = ph.verticalAngles;

@@ -1,4 +1,4 @@
-import type { Rgb, Vec3 } from '../model/lightingScene';
+import type { Rgb, Vec3 } from '../core/model/lightingScene';
 import { candelaAt } from './candelaAt';
 import type { ReferencePointSource } from './pointSources';
 

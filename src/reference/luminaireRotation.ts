@@ -1,11 +1,11 @@
-import type { Vec3 } from '../model/lightingScene';
+import type { Vec3 } from '../core/model/lightingScene';
 
 /** Row-major 3×3 matrix. */
 export type Mat3 = [number, number, number, number, number, number, number, number, number];
 
 const DEG = Math.PI / 180;
 
-// Right-handed rotations by t about the y and x axes (DESIGN.md: Ry is
+// Right-handed rotations by t about the y and x axes (docs/scene-format.md: Ry is
 // counterclockwise seen from above, Rx(+90°) turns −y into −z). Written here on
 // purpose instead of reusing the baker's or three.js's, so that a sign error in
 // either shows up as a disagreement with this reference.
@@ -43,7 +43,7 @@ export function apply(m: Mat3, v: Vec3): Vec3 {
   ];
 }
 
-/** local → world: Ry(yaw) · Rx(pitch) · Ry(roll) (DESIGN.md "Units and frames"). */
+/** local → world: Ry(yaw) · Rx(pitch) · Ry(roll) (docs/scene-format.md "Units and frames"). */
 export function luminaireToWorld(yaw: number, pitch: number, roll: number): Mat3 {
   return multiply(rotY(yaw), multiply(rotX(pitch), rotY(roll)));
 }

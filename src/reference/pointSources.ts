@@ -1,6 +1,6 @@
-import type { LightingScene, Rgb, Vec3 } from '../model/lightingScene';
-import type { Photometry } from '../photometry/types';
-import { tiltMultiplier } from '../photometry/tilt';
+import type { LightingScene, Rgb, Vec3 } from '../core/model/lightingScene';
+import type { Photometry } from '../core/photometry/types';
+import { tiltMultiplier } from '../core/photometry/tilt';
 import { apply, luminaireToWorld, worldToLuminaire, type Mat3 } from './luminaireRotation';
 import { ReferenceInputError } from './referenceInputError';
 
@@ -28,7 +28,7 @@ export interface PointSourceOptions {
    * (Photometry.luminousOpening width along local x, length along local z) exceeds
    * it is split into a grid of equal cells, each a point source at its centre with
    * 1/n of the intensity: the far-field distribution applied to each part, as the
-   * seed paper and commercial tools do for near-field effects. An opening taller
+   * configurator paper and commercial tools do for near-field effects. An opening taller
    * than a cell (cylinders, boxes: they emit from sides and top) has the grid at its
    * bottom face (local y = −height/2) for the downward hemisphere and at its top
    * face (+height/2) for the upward one, each with the full distribution of its

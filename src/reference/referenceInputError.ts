@@ -1,4 +1,4 @@
-import { InputError } from '../inputError';
+import { InputError } from '../core/inputError';
 
 /** Bad input to the CPU reference solver (a malformed scene, a missing photometry, impossible options). */
 export class ReferenceInputError extends InputError {

@@ -1,4 +1,4 @@
-import type { Rgb, SurfaceName, Vec3 } from '../model/lightingScene';
+import type { Rgb, SurfaceName, Vec3 } from '../core/model/lightingScene';
 import { BOX_FACES, facePoint, type BoxFace } from './boxGeometry';
 import { directIlluminanceAt } from './directIlluminance';
 import { pointToPolygonFormFactor } from './pointToPolygonFormFactor';
@@ -16,7 +16,7 @@ export interface ReferenceSample {
   totalRgb: Rgb;
 }
 
-/** How far a point may lie from a surface to count as on it, metres (DESIGN.md probe contract: 1 cm). */
+/** How far a point may lie from a surface to count as on it, metres (docs/scene-format.md probe contract: 1 cm). */
 export const SURFACE_TOLERANCE = 0.01;
 
 const y = (c: Rgb): number => LUMINANCE_WEIGHTS[0] * c[0] + LUMINANCE_WEIGHTS[1] * c[1] + LUMINANCE_WEIGHTS[2] * c[2];

@@ -1,5 +1,5 @@
-import { SURFACE_NAMES, type LightingScene, type Reflectance, type Rgb, type SurfaceName, type Vec3 } from '../model/lightingScene';
-import type { Photometry } from '../photometry/types';
+import { SURFACE_NAMES, type LightingScene, type Reflectance, type Rgb, type SurfaceName, type Vec3 } from '../core/model/lightingScene';
+import type { Photometry } from '../core/photometry/types';
 import { BOX_FACES, makePatchGrid, type Axis, type BoxFace, type PatchGrid } from './boxGeometry';
 import { patchMeanDirect, type PatchAverageOptions } from './directIlluminance';
 import { buildFaceKernels, type FaceKernel } from './formFactorKernels';
@@ -94,7 +94,7 @@ function choosePatchSize(extent: Vec3, options: ReferenceOptions): number {
 
 /**
  * Flux of a candela grid, lm, by the midpoint rule over its cells: only a scale
- * for quadrature tolerances (the tests compare against src/photometry's exact
+ * for quadrature tolerances (the tests compare against src/core/photometry's exact
  * integral instead).
  */
 function gridFlux(ph: Photometry): number {
@@ -139,7 +139,7 @@ function maxCellAngle(sources: readonly ReferencePointSource[]): number {
  *   E_ind,i = Σ_j F_ij · ρ_j (E_dir,j + E_ind,j)      per RGB channel,
  *
  * where E_dir,i is the patch mean of the point-source direct illuminance (adaptive
- * quadrature). Shares no code with src/bake or the shaders, by design.
+ * quadrature). Shares no code with src/engines/bake or the shaders, by design.
  */
 export function solveBoxReference(
   scene: LightingScene,

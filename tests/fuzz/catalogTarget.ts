@@ -3,7 +3,7 @@
  * through parseCatalogText. Seed: the demo catalog.
  */
 import { readFileSync } from 'node:fs';
-import { CatalogError, parseCatalogText, type Catalog } from '../../src/model/catalogSchema';
+import { CatalogError, parseCatalogText, type Catalog } from '../../src/core/model/catalogSchema';
 import { jsonAcceptedProblems } from './checks';
 import type { FuzzOutcome, FuzzSeed, FuzzTarget } from './fuzzTarget';
 
@@ -11,7 +11,7 @@ const decoder = new TextDecoder('utf-8');
 
 export const catalogFuzzTarget: FuzzTarget = {
   name: 'catalog',
-  seeds: (): FuzzSeed[] => [{ name: 'default-catalog.json', bytes: new Uint8Array(readFileSync('src/catalog/default-catalog.json')) }],
+  seeds: (): FuzzSeed[] => [{ name: 'default-catalog.json', bytes: new Uint8Array(readFileSync('src/core/catalog/default-catalog.json')) }],
   run(input: Uint8Array): FuzzOutcome {
     const text = decoder.decode(input);
     let catalog: Catalog;

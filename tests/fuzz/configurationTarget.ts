@@ -5,11 +5,11 @@
  * fixture and the demo configuration as the app saves it.
  */
 import { readFileSync } from 'node:fs';
-import { demoConfiguration } from '../../src/app/demoConfiguration';
-import { defaultCatalog } from '../../src/catalog/defaultCatalog';
-import type { Configuration } from '../../src/model/configuration';
-import { SceneFileError, deserializeConfiguration, serializeConfiguration, toSceneFile } from '../../src/model/sceneFile';
-import { validate } from '../../src/model/validate';
+import { demoConfiguration } from '../../src/core/catalog/demoConfiguration';
+import { defaultCatalog } from '../../src/core/catalog/defaultCatalog';
+import type { Configuration } from '../../src/core/model/configuration';
+import { SceneFileError, deserializeConfiguration, serializeConfiguration, toSceneFile } from '../../src/core/model/sceneFile';
+import { validate } from '../../src/core/model/validate';
 import { jsonAcceptedProblems } from './checks';
 import type { FuzzOutcome, FuzzSeed, FuzzTarget } from './fuzzTarget';
 
@@ -18,7 +18,7 @@ const encoder = new TextEncoder();
 
 export function configurationSeeds(): FuzzSeed[] {
   return [
-    { name: 'corner-l.luxbox.json', bytes: new Uint8Array(readFileSync('tests/viewer/fixtures/corner-l.luxbox.json')) },
+    { name: 'corner-l.luxbox.json', bytes: new Uint8Array(readFileSync('tests/fixtures/configurations/corner-l.luxbox.json')) },
     { name: 'demo (serializeConfiguration)', bytes: encoder.encode(serializeConfiguration(demoConfiguration(defaultCatalog), defaultCatalog)) },
   ];
 }

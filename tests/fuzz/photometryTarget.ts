@@ -9,7 +9,7 @@ import {
   PhotometryParseError,
   photometryWarnings,
   type Photometry,
-} from '../../src/photometry';
+} from '../../src/core/photometry';
 import type { FuzzOutcome, FuzzSeed, FuzzTarget } from './fuzzTarget';
 
 /**

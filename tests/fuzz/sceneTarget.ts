@@ -5,9 +5,9 @@
  * mutated path must not make the fuzzer read).
  */
 import { readFileSync } from 'node:fs';
-import { LightingSceneError, parseLightingScene } from '../../src/model/parseLightingScene';
-import { SURFACE_NAMES, type LightingScene } from '../../src/model/lightingScene';
-import { parseJsonText } from '../../src/node/loadLightingSceneFile';
+import { LightingSceneError, parseLightingScene } from '../../src/core/model/parseLightingScene';
+import { SURFACE_NAMES, type LightingScene } from '../../src/core/model/lightingScene';
+import { parseJsonText } from '../../src/hosts/node/loadLightingSceneFile';
 import { jsonAcceptedProblems } from './checks';
 import type { FuzzOutcome, FuzzSeed, FuzzTarget } from './fuzzTarget';
 

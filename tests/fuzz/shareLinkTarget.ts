@@ -5,10 +5,10 @@
  * decoder's checks rather than stopping at base64url; raw link bytes are
  * mutated too.
  */
-import { demoConfiguration } from '../../src/app/demoConfiguration';
-import { defaultCatalog } from '../../src/catalog/defaultCatalog';
-import type { Configuration } from '../../src/model/configuration';
-import { SceneFileError, decodeShareString, deserializeConfiguration, encodeShareString, serializeConfiguration } from '../../src/model/sceneFile';
+import { demoConfiguration } from '../../src/core/catalog/demoConfiguration';
+import { defaultCatalog } from '../../src/core/catalog/defaultCatalog';
+import type { Configuration } from '../../src/core/model/configuration';
+import { SceneFileError, decodeShareString, deserializeConfiguration, encodeShareString, serializeConfiguration } from '../../src/core/model/sceneFile';
 import { configurationProblems, configurationSeeds } from './configurationTarget';
 import type { FuzzOutcome, FuzzSeed, FuzzTarget } from './fuzzTarget';
 

@@ -1,12 +1,12 @@
 import { describe, expect, it } from 'vitest';
 import { readdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
-import { intensity } from '../../src/photometry/intensity';
+import { intensity } from '../../src/core/photometry/intensity';
 import { candelaAt } from '../../src/reference/candelaAt';
 import { realPhotometry } from './photometryFixtures';
 
 describe('reference candela lookup', () => {
-  it('agrees with src/photometry intensity() on every real file (two independent bilinear lookups)', () => {
+  it('agrees with src/core/photometry intensity() on every real file (two independent bilinear lookups)', () => {
     const dir = fileURLToPath(new URL('../../public/ies/', import.meta.url));
     const files = readdirSync(dir).filter((f) => /\.(ies|ldt)$/i.test(f));
     expect(files.length).toBeGreaterThanOrEqual(30);

@@ -1,14 +1,14 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { Euler, Matrix4, Vector3 } from 'three';
-import type { Vec3 } from '../../src/model/lightingScene';
+import type { Vec3 } from '../../src/core/model/lightingScene';
 import { apply, luminaireToWorld, photometricAngles, worldToLuminaire } from '../../src/reference/luminaireRotation';
 
 const close = (a: Vec3, b: Vec3, tol = 1e-12): void => {
   for (let i = 0; i < 3; i++) expect(Math.abs(a[i] - b[i])).toBeLessThan(tol);
 };
 
-describe('luminaire frame (DESIGN.md "Units and frames")', () => {
+describe('luminaire frame (docs/scene-format.md "Units and frames")', () => {
   it('all angles zero: nadir along −y, C0 along +x, C90 along −z', () => {
     const m = luminaireToWorld(0, 0, 0);
     close(apply(m, [0, -1, 0]), [0, -1, 0]);

@@ -1,7 +1,7 @@
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
-import { parsePhotometry } from '../../src/photometry/parsePhotometry';
-import type { Photometry } from '../../src/photometry/types';
+import { parsePhotometry } from '../../src/core/photometry/parsePhotometry';
+import type { Photometry } from '../../src/core/photometry/types';
 
 /** An isotropic point source of the given flux (I = Φ/4π), as a Photometry literal. */
 export function isotropic(lumens: number): Photometry {
@@ -26,7 +26,7 @@ export function isotropic(lumens: number): Photometry {
   };
 }
 
-/** A real file from public/ies, parsed by src/photometry. */
+/** A real file from public/ies, parsed by src/core/photometry. */
 export function realPhotometry(fileName: string): Photometry {
   const path = fileURLToPath(new URL(`../../public/ies/${fileName}`, import.meta.url));
   return parsePhotometry(readFileSync(path), fileName);

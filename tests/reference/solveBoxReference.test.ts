@@ -1,9 +1,9 @@
 import { describe, expect, it } from 'vitest';
 import { Matrix4, Vector3 } from 'three';
-import type { LightingLuminaire, LightingScene, Reflectance, Vec3 } from '../../src/model/lightingScene';
-import { integrateFlux } from '../../src/photometry/flux';
-import { intensity } from '../../src/photometry/intensity';
-import type { Photometry } from '../../src/photometry/types';
+import type { LightingLuminaire, LightingScene, Reflectance, Vec3 } from '../../src/core/model/lightingScene';
+import { integrateFlux } from '../../src/core/photometry/flux';
+import { intensity } from '../../src/core/photometry/intensity';
+import type { Photometry } from '../../src/core/photometry/types';
 import { ReferenceInputError } from '../../src/reference/referenceInputError';
 import { sampleReference } from '../../src/reference/sampleReference';
 import { solveBoxReference, type ReferenceResult } from '../../src/reference/solveBoxReference';
@@ -66,7 +66,7 @@ describe('CIE 171:2006 5.2 — point source: E = I(θ)·cosθ/d²', () => {
     }
   });
 
-  it('real asymmetric IES, tilted and turned: matches a hand computation with three.js rotations and src/photometry lookup', () => {
+  it('real asymmetric IES, tilted and turned: matches a hand computation with three.js rotations and src/core/photometry lookup', () => {
     const ph = realPhotometry('aec_italo_streetlight_full360.ies');
     const pos: Vec3 = [2.2, 2.6, 1.7];
     const [yaw, pitch, roll] = [35, 20, -50];

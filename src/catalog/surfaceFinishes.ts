@@ -1,8 +1,0 @@
-/**
- * The finishes the app offers for floor, ceiling and walls: the JSON next to
- * this file, validated at load (format: docs/catalog-format.md).
- */
-import data from './surface-finishes.json';
-import { parseSurfaceFinishes, type SurfaceFinish } from '../model/surfaceFinish';
-
-export const defaultSurfaceFinishes: readonly SurfaceFinish[] = parseSurfaceFinishes(data, 'src/catalog/surface-finishes.json');

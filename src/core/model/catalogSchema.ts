@@ -1,0 +1,228 @@
+/**
+ * The product catalog as data: what a manufacturer replaces to put its own
+ * rail system into the configurator (docs/catalog-format.md). Validated with
+ * zod so a broken catalog fails loudly at load time, naming the field.
+ */
+import { z } from 'zod';
+import { InputError } from '../inputError';
+import { describeIssues, formatPath as formatFieldPath, jsonShapeProblem, oneLine, parseUntrustedJson, schemaFieldNames } from './untrustedJson';
+
+/** Module distributions along a rail; defined precisely in docs/model.md and src/core/model/distribution.ts. */
+export const DISTRIBUTIONS = ['start', 'end', 'inside-centred', 'outside-centred'] as const;
+export type Distribution = (typeof DISTRIBUTIONS)[number];
+
+const positive = z.number().finite().positive();
+const price = z.number().finite().nonnegative();
+const nonEmpty = z.string().min(1);
+
+const beamSchema = z.strictObject({
+  id: nonEmpty,
+  label: nonEmpty,
+  /** Full beam angle (degrees) where the optic has one; omitted for diffusers and washers. */
+  beamAngle: positive.optional(),
+  article: nonEmpty,
+  /** Photometric file, relative to the web root (public/), e.g. 'ies/bega_84693_narrow_spot.ies'. */
+  photometry: z.string().regex(/^[\w./-]+\.(ies|IES|ldt|LDT)$/, 'must be a relative path to an .ies or .ldt file'),
+  /** Luminaire lumens and input watts as the photometric file states them. */
+  lumens: positive,
+  watts: positive,
+  /** Roll (degrees) that turns the file's frame so the optic sits as intended on the rail (C0 along the rail when 0). */
+  roll: z.number().finite().min(-180).max(180),
+  price,
+  /** Where lumens and watts come from (free text). */
+  source: z.string().optional(),
+});
+
+const moduleTypeSchema = z
+  .strictObject({
+    id: nonEmpty,
+    name: nonEmpty,
+    /** Length of rail the module occupies, metres. */
+    length: positive,
+    ccts: z.array(z.number().int().min(1000).max(20000)).min(1),
+    defaultCct: z.number().int(),
+    beams: z.array(beamSchema).min(1),
+    defaultBeam: nonEmpty,
+  })
+  .superRefine((t, ctx) => {
+    if (!t.ccts.includes(t.defaultCct)) ctx.addIssue({ code: 'custom', path: ['defaultCct'], message: `${t.defaultCct} K is not one of ccts` });
+    if (!t.beams.some((b) => b.id === t.defaultBeam)) ctx.addIssue({ code: 'custom', path: ['defaultBeam'], message: `'${t.defaultBeam}' is not a beam id` });
+    if (new Set(t.beams.map((b) => b.id)).size !== t.beams.length) ctx.addIssue({ code: 'custom', path: ['beams'], message: 'beam ids must be unique' });
+  });
+
+const presetModuleSchema = z.strictObject({ type: nonEmpty, beam: nonEmpty.optional(), cct: z.number().int().optional() });
+const presetSchema = z.strictObject({
+  id: nonEmpty,
+  name: nonEmpty,
+  description: z.string(),
+  rails: z
+    .array(z.strictObject({ length: positive, distribution: z.enum(DISTRIBUTIONS), modules: z.array(presetModuleSchema) }))
+    .min(1),
+  joints: z.array(z.strictObject({ connector: nonEmpty, turn: z.number().finite() })),
+});
+
+export const catalogSchema = z
+  .strictObject({
+    formatVersion: z.literal(1),
+    id: nonEmpty,
+    name: nonEmpty,
+    /** ISO 4217 code; every price in the catalog is in this currency. */
+    currency: z.string().regex(/^[A-Z]{3}$/, 'must be an ISO 4217 code such as EUR'),
+    rail: z.strictObject({
+      article: nonEmpty,
+      name: nonEmpty,
+      minLength: positive,
+      maxLength: positive,
+      step: positive,
+      defaultLength: positive,
+      /** Profile width in plan, metres (for footprints and clash tests). */
+      width: positive,
+      /** Unit price of a rail of length L: base + perMetre·L, rounded to cents. */
+      price: z.strictObject({ base: price, perMetre: price }),
+    }),
+    connectors: z
+      .array(
+        z.strictObject({
+          id: nonEmpty,
+          article: nonEmpty,
+          name: nonEmpty,
+          /** 0 for a straight connector, otherwise the corner angle in degrees (used turning left or right). */
+          angle: z.number().finite().min(0).lt(180),
+          /** Straight: gap between the joined rail ends. Corner: distance from each rail end to the corner point. Metres. */
+          arm: z.number().finite().nonnegative(),
+          price,
+        }),
+      )
+      .min(1),
+    suspension: z.strictObject({
+      article: nonEmpty,
+      name: nonEmpty,
+      /** Ceiling to photometric centre, metres. */
+      min: positive,
+      max: positive,
+      default: positive,
+      /** The photometric centre must stay at least this high above the floor (head room), metres. */
+      minHeightAboveFloor: positive,
+      price,
+    }),
+    powerFeed: z.strictObject({ article: nonEmpty, name: nonEmpty, price }),
+    moduleTypes: z.array(moduleTypeSchema).min(1),
+    presets: z.array(presetSchema),
+  })
+  .superRefine((c, ctx) => {
+    const r = c.rail;
+    if (r.minLength > r.maxLength) ctx.addIssue({ code: 'custom', path: ['rail', 'minLength'], message: 'must not exceed maxLength' });
+    for (const key of ['minLength', 'maxLength', 'defaultLength'] as const) {
+      if (!onGrid(r[key], r.step)) ctx.addIssue({ code: 'custom', path: ['rail', key], message: `must be a multiple of step ${r.step}` });
+    }
+    if (r.defaultLength < r.minLength || r.defaultLength > r.maxLength) ctx.addIssue({ code: 'custom', path: ['rail', 'defaultLength'], message: 'must lie within minLength..maxLength' });
+    const s = c.suspension;
+    if (s.min > s.max) ctx.addIssue({ code: 'custom', path: ['suspension', 'min'], message: 'must not exceed max' });
+    if (s.default < s.min || s.default > s.max) ctx.addIssue({ code: 'custom', path: ['suspension', 'default'], message: 'must lie within min..max' });
+    uniqueIds(c.connectors, ['connectors'], ctx);
+    uniqueIds(c.moduleTypes, ['moduleTypes'], ctx);
+    uniqueIds(c.presets, ['presets'], ctx);
+    c.presets.forEach((p, i) => {
+      if (p.joints.length !== p.rails.length - 1) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints'], message: `needs ${p.rails.length - 1} joints for ${p.rails.length} rails` });
+      p.joints.forEach((j, k) => {
+        const con = c.connectors.find((x) => x.id === j.connector);
+        if (!con) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints', k, 'connector'], message: `unknown connector '${j.connector}'` });
+        else if (Math.abs(j.turn) !== con.angle) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints', k, 'turn'], message: `must be ±${con.angle} for connector '${con.id}'` });
+      });
+      p.rails.forEach((rail, k) =>
+        rail.modules.forEach((m, n) => {
+          const t = c.moduleTypes.find((x) => x.id === m.type);
+          const at = ['presets', i, 'rails', k, 'modules', n];
+          if (!t) ctx.addIssue({ code: 'custom', path: [...at, 'type'], message: `unknown module type '${m.type}'` });
+          else {
+            if (m.beam !== undefined && !t.beams.some((b) => b.id === m.beam)) ctx.addIssue({ code: 'custom', path: [...at, 'beam'], message: `unknown beam '${m.beam}'` });
+            if (m.cct !== undefined && !t.ccts.includes(m.cct)) ctx.addIssue({ code: 'custom', path: [...at, 'cct'], message: `${m.cct} K not offered` });
+          }
+        }),
+      );
+    });
+  });
+
+export type Catalog = z.infer<typeof catalogSchema>;
+export type RailSpec = Catalog['rail'];
+export type ConnectorSpec = Catalog['connectors'][number];
+export type ModuleTypeSpec = Catalog['moduleTypes'][number];
+export type BeamSpec = ModuleTypeSpec['beams'][number];
+export type PresetSpec = Catalog['presets'][number];
+
+/** A catalog that does not match the format: the message names the field. */
+export class CatalogError extends InputError {
+  override name = 'CatalogError';
+  constructor(message: string) {
+    super(oneLine(message));
+  }
+}
+
+/** Newest catalog format this program reads. */
+export const CATALOG_FORMAT_VERSION = 1;
+const CATALOG_FIELDS = schemaFieldNames(catalogSchema);
+
+/**
+ * The checks every versioned data file gets before its schema: depth and array
+ * length (nothing may recurse into a hostile value), then the format version,
+ * so a newer file is told apart from a broken one. Returns `path: problem` or null.
+ */
+export function versionedDataProblem(data: unknown, field: string, newest: number): string | null {
+  const shape = jsonShapeProblem(data);
+  if (shape) return shape;
+  const v = typeof data === 'object' && data !== null ? (data as Record<string, unknown>)[field] : undefined;
+  if (typeof v === 'number' && Number.isInteger(v) && v > newest) return `${field}: made by a newer luxbox (version ${v}; this one reads up to ${newest})`;
+  return null;
+}
+
+/** Validates unknown data (parsed JSON) as a catalog; throws CatalogError naming the first bad field (unknown fields included). */
+export function parseCatalog(data: unknown, source = 'catalog'): Catalog {
+  const problem = versionedDataProblem(data, 'formatVersion', CATALOG_FORMAT_VERSION);
+  if (problem) throw new CatalogError(`${source}: ${problem}`);
+  const r = catalogSchema.safeParse(data);
+  if (!r.success) throw new CatalogError(`${source}: ${describeIssues(r.error.issues, CATALOG_FIELDS)}`);
+  return r.data;
+}
+
+/** Reads a catalog file's text (size, syntax, duplicate keys, depth limits first); throws CatalogError, one line. */
+export function parseCatalogText(text: string, source = 'catalog'): Catalog {
+  return parseCatalog(parseUntrustedJson(text, source, (m) => new CatalogError(m)), source);
+}
+
+/** 'presets[2].rails[0].length' style path for messages; '(root)' for the root. */
+export function formatPath(path: readonly PropertyKey[]): string {
+  return formatFieldPath(path) || '(root)';
+}
+
+/** True when x is an integer multiple of step, to within float noise (1e-6 of a step). */
+export function onGrid(x: number, step: number): boolean {
+  const k = x / step;
+  return Math.abs(k - Math.round(k)) < 1e-6;
+}
+
+function uniqueIds(items: readonly { id: string }[], path: PropertyKey[], ctx: z.RefinementCtx): void {
+  const seen = new Set<string>();
+  items.forEach((it, i) => {
+    if (seen.has(it.id)) ctx.addIssue({ code: 'custom', path: [...path, i, 'id'], message: `duplicate id '${it.id}'` });
+    seen.add(it.id);
+  });
+}
+
+/** Lookups that throw InputError with a clear message instead of returning undefined. */
+export function findModuleType(catalog: Catalog, id: string): ModuleTypeSpec {
+  const t = catalog.moduleTypes.find((x) => x.id === id);
+  if (!t) throw new InputError(`unknown module type '${id}' (catalog ${catalog.id})`);
+  return t;
+}
+
+export function findBeam(type: ModuleTypeSpec, id: string): BeamSpec {
+  const b = type.beams.find((x) => x.id === id);
+  if (!b) throw new InputError(`module type '${type.id}' has no beam '${id}'`);
+  return b;
+}
+
+export function findConnector(catalog: Catalog, id: string): ConnectorSpec {
+  const c = catalog.connectors.find((x) => x.id === id);
+  if (!c) throw new InputError(`unknown connector '${id}' (catalog ${catalog.id})`);
+  return c;
+}

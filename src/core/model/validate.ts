@@ -1,0 +1,306 @@
+/**
+ * Validity of a configuration, defined on the state alone (independent of the
+ * actions that produced it). The always-valid guarantee is: validate() of any
+ * state reachable through enabled actions is empty; the property test in
+ * tests/core/model checks it.
+ */
+import { onGrid, type Catalog } from './catalogSchema';
+import { ROOM_LIMITS, type Configuration, type LightSystem } from './configuration';
+import { SURFACE_NAMES } from './lightingScene';
+import { reflectanceProblem } from './reflectance';
+import { rectCorners, rectsOverlap, systemElements, railModuleOffsets, type PlanRect } from './geometry';
+
+export interface Problem {
+  /** Stable machine-readable code, e.g. 'outside-room'. */
+  readonly code: string;
+  /** One sentence for people. */
+  readonly message: string;
+  /** Where: e.g. 'systems[1].rails[0].modules[2].cct'. */
+  readonly path: string;
+}
+
+/** Float noise allowed at walls and grids (a nanometre). */
+const EPS = 1e-9;
+
+export interface ValidateOptions {
+  /**
+   * Stop at the first stage that finds a problem (room, ids, each system's own
+   * rules, room bounds, self-crossing, overlaps between systems) and, in the
+   * pair stages, at the first clash: what readers of untrusted files need (they
+   * report one problem), so a cheap problem is never hidden behind pair checks.
+   */
+  firstOnly?: boolean;
+  /** Counts the exact (separating-axis) rectangle tests, for tests of the broad phase. */
+  stats?: { pairTests: number };
+}
+
+/**
+ * All problems of a configuration, in a stable order: room, ids, then per
+ * system its own rules or else its geometry (outside, self-overlap, clashes
+ * with other systems). Pair checks use a uniform grid over the plan, so a hall
+ * with hundreds of rails costs O(n) exact rectangle tests, not O(n²).
+ */
+export function validate(config: Configuration, catalog: Catalog, options: ValidateOptions = {}): Problem[] {
+  const first = options.firstOnly === true;
+  const stats = options.stats ?? { pairTests: 0 };
+  const problems: Problem[] = roomProblems(config);
+  if (first && problems.length > 0) return problems;
+  problems.push(...idProblems(config));
+  if (first && problems.length > 0) return problems;
+  const n = config.systems.length;
+  const own = config.systems.map((s, i) => ownProblems(s, `systems[${i}]`, config.room.height, catalog));
+  if (first) {
+    const bad = own.find((p) => p.length > 0);
+    if (bad) return [...problems, ...bad];
+  }
+  // Geometry only for systems whose own rules hold (it needs sound references and numbers).
+  const elements = config.systems.map((s, i) => (own[i].length === 0 ? systemElements(s, catalog) : null));
+  const outside = config.systems.map((s, i) => {
+    const el = elements[i];
+    return el !== null && outsideRoom(el, config.room.width, config.room.depth) ? outsideProblem(s, i, config.room) : null;
+  });
+  if (first) {
+    const out = outside.find((p) => p !== null);
+    if (out) return [...problems, out];
+  }
+  // One grid over every element of every sound system: self-crossings (same
+  // system, chain elements more than one apart) and clashes between systems.
+  const rects: PlanRect[] = [];
+  const owner: number[] = [];
+  const chainIndex: number[] = [];
+  elements.forEach((el, i) => el?.forEach((group, a) => group.forEach((r) => (rects.push(r), owner.push(i), chainIndex.push(a)))));
+  const selfCrossing = new Set<number>();
+  const clashes = Array.from({ length: n }, () => new Set<number>());
+  forEachOverlap(rects, stats, (p, q) => {
+    const [i, j] = [owner[p], owner[q]];
+    if (i === j) {
+      if (Math.abs(chainIndex[p] - chainIndex[q]) < 3 || selfCrossing.has(i)) return 'skip';
+      selfCrossing.add(i);
+    } else {
+      if (clashes[i].has(j)) return 'skip';
+      clashes[i].add(j);
+      clashes[j].add(i);
+    }
+    return first ? 'stop' : 'continue';
+  }, (p, q) => {
+    // Cheap pre-filter: pairs whose answer is already known need no exact test.
+    const [i, j] = [owner[p], owner[q]];
+    return i === j ? Math.abs(chainIndex[p] - chainIndex[q]) >= 3 && !selfCrossing.has(i) : !clashes[i].has(j);
+  });
+  config.systems.forEach((s, i) => {
+    if (own[i].length > 0) return problems.push(...own[i]);
+    const at = `systems[${i}]`;
+    if (outside[i]) problems.push(outside[i]);
+    if (selfCrossing.has(i)) problems.push({ code: 'self-overlap', path: at, message: `system ${s.id} runs into itself` });
+    [...clashes[i]].sort((a, b) => a - b).forEach((j) => problems.push({ code: 'system-overlap', path: at, message: `system ${s.id} overlaps system ${config.systems[j].id}` }));
+  });
+  return problems;
+}
+
+function outsideRoom(elements: PlanRect[][], width: number, depth: number): boolean {
+  return elements.flat().flatMap(rectCorners).some(([x, z]) => x < -EPS || x > width + EPS || z < -EPS || z > depth + EPS);
+}
+
+function outsideProblem(s: LightSystem, index: number, room: Configuration['room']): Problem {
+  return { code: 'outside-room', path: `systems[${index}]`, message: `system ${s.id} reaches outside the ${room.width} × ${room.depth} m room` };
+}
+
+interface Box {
+  minX: number;
+  minZ: number;
+  maxX: number;
+  maxZ: number;
+}
+
+function boxOf(r: PlanRect): Box {
+  const c = rectCorners(r);
+  const xs = c.map((p) => p[0]);
+  const zs = c.map((p) => p[1]);
+  return { minX: Math.min(...xs), minZ: Math.min(...zs), maxX: Math.max(...xs), maxZ: Math.max(...zs) };
+}
+
+/** Grid cell edge, metres: about a rail's length, so an element covers a few cells. */
+const CELL = 1;
+/** Elements spanning more cells than this per axis (a hostile catalog's 1 km rail) are tested against all. */
+const MAX_CELLS_PER_AXIS = 64;
+
+/**
+ * Calls `found(p, q)` for every pair of rectangles that overlap (rectsOverlap),
+ * each pair once, after `wanted(p, q)` says the pair still matters. Broad phase:
+ * a uniform grid of CELL-metre cells; a pair is examined only in the first
+ * cell both boxes share. Boxes that merely touch are never candidates, which is
+ * exact: touching or separated boxes mean separated or touching rectangles,
+ * and rectsOverlap calls touching rectangles disjoint.
+ */
+export function forEachOverlap(
+  rects: readonly PlanRect[],
+  stats: { pairTests: number },
+  found: (p: number, q: number) => 'continue' | 'skip' | 'stop',
+  wanted: (p: number, q: number) => boolean = () => true,
+): void {
+  const boxes = rects.map(boxOf);
+  const cells = new Map<string, number[]>();
+  const oversize: number[] = [];
+  const range = (b: Box) => [Math.floor(b.minX / CELL), Math.floor(b.maxX / CELL), Math.floor(b.minZ / CELL), Math.floor(b.maxZ / CELL)];
+  boxes.forEach((b, p) => {
+    const [x0, x1, z0, z1] = range(b);
+    if (!(x1 - x0 <= MAX_CELLS_PER_AXIS && z1 - z0 <= MAX_CELLS_PER_AXIS)) return oversize.push(p);
+    for (let x = x0; x <= x1; x++) {
+      for (let z = z0; z <= z1; z++) {
+        const key = `${x},${z}`;
+        const list = cells.get(key);
+        if (list) list.push(p);
+        else cells.set(key, [p]);
+      }
+    }
+  });
+  const test = (p: number, q: number): boolean => {
+    const a = boxes[p];
+    const b = boxes[q];
+    if (a.minX >= b.maxX || b.minX >= a.maxX || a.minZ >= b.maxZ || b.minZ >= a.maxZ) return true;
+    const [lo, hi] = p < q ? [p, q] : [q, p];
+    if (!wanted(lo, hi)) return true;
+    stats.pairTests++;
+    return !rectsOverlap(rects[lo], rects[hi]) || found(lo, hi) !== 'stop';
+  };
+  for (const [key, list] of cells) {
+    const [cx, cz] = key.split(',').map(Number);
+    for (let u = 0; u < list.length; u++) {
+      for (let v = u + 1; v < list.length; v++) {
+        const [a, b] = [boxes[list[u]], boxes[list[v]]];
+        // Examine the pair only in the first cell both boxes cover.
+        if (Math.max(Math.floor(a.minX / CELL), Math.floor(b.minX / CELL)) !== cx || Math.max(Math.floor(a.minZ / CELL), Math.floor(b.minZ / CELL)) !== cz) continue;
+        if (!test(list[u], list[v])) return;
+      }
+    }
+  }
+  const isOversize = new Set(oversize);
+  for (const p of oversize) {
+    for (let q = 0; q < rects.length; q++) {
+      if (q === p || (isOversize.has(q) && q < p)) continue;
+      if (!test(p, q)) return;
+    }
+  }
+}
+
+export function roomProblems(config: Configuration): Problem[] {
+  const out: Problem[] = [];
+  for (const key of ['width', 'depth', 'height'] as const) {
+    const v = config.room[key];
+    const { min, max } = ROOM_LIMITS[key];
+    if (!Number.isFinite(v) || v < min || v > max) {
+      out.push({ code: 'room-dimension', path: `room.${key}`, message: `room ${key} must be between ${min} and ${max} m (got ${v})` });
+    }
+  }
+  const reflectance = (config.room.reflectance ?? {}) as Record<string, unknown>;
+  for (const surface of SURFACE_NAMES) {
+    const problem = reflectanceProblem(reflectance[surface]);
+    if (problem) out.push({ code: 'reflectance', path: `room.reflectance.${surface}`, message: problem });
+  }
+  return out;
+}
+
+function idProblems(config: Configuration): Problem[] {
+  const out: Problem[] = [];
+  const seen = new Set<string>();
+  const check = (id: string, path: string) => {
+    if (seen.has(id)) out.push({ code: 'duplicate-id', path, message: `id '${id}' is used twice` });
+    seen.add(id);
+    const m = /^[a-z](\d+)$/.exec(id);
+    if (m && Number(m[1]) >= config.nextId) out.push({ code: 'id-counter', path, message: `id '${id}' is not below nextId ${config.nextId}` });
+  };
+  config.systems.forEach((s, i) => {
+    check(s.id, `systems[${i}].id`);
+    s.rails.forEach((r, k) => {
+      check(r.id, `systems[${i}].rails[${k}].id`);
+      r.modules.forEach((m, n) => check(m.id, `systems[${i}].rails[${k}].modules[${n}].id`));
+    });
+  });
+  return out;
+}
+
+/**
+ * Problems of one system: its own rules, its fit in the room and clashes with
+ * the other systems. Actions use this on their candidate state to give reasons.
+ */
+export function systemProblems(config: Configuration, index: number, catalog: Catalog): Problem[] {
+  const s = config.systems[index];
+  const at = `systems[${index}]`;
+  const out = ownProblems(s, at, config.room.height, catalog);
+  if (out.length > 0) return out; // geometry needs sound references and numbers
+  const elements = systemElements(s, catalog);
+  if (outsideRoom(elements, config.room.width, config.room.depth)) out.push(outsideProblem(s, index, config.room));
+  const stats = { pairTests: 0 };
+  // Neighbours in the chain touch by design; anything further apart must not overlap.
+  const rects = elements.flat();
+  const chainIndex = elements.flatMap((group, a) => group.map(() => a));
+  let crosses = false;
+  forEachOverlap(rects, stats, () => ((crosses = true), 'stop'), (p, q) => Math.abs(chainIndex[p] - chainIndex[q]) >= 3);
+  if (crosses) out.push({ code: 'self-overlap', path: at, message: `system ${s.id} runs into itself` });
+  const mine = rects.map(boxOf);
+  const box = mine.reduce((u, b) => ({ minX: Math.min(u.minX, b.minX), minZ: Math.min(u.minZ, b.minZ), maxX: Math.max(u.maxX, b.maxX), maxZ: Math.max(u.maxZ, b.maxZ) }), { minX: Infinity, minZ: Infinity, maxX: -Infinity, maxZ: -Infinity });
+  config.systems.forEach((other, j) => {
+    if (j === index || ownProblems(other, '', config.room.height, catalog).length > 0) return;
+    const theirs = systemElements(other, catalog).flat().filter((rb) => {
+      const b = boxOf(rb);
+      return b.minX < box.maxX && box.minX < b.maxX && b.minZ < box.maxZ && box.minZ < b.maxZ;
+    });
+    if (theirs.length === 0) return;
+    if (rects.some((ra, p) => theirs.some((rb) => {
+      const b = boxOf(rb);
+      const a = mine[p];
+      return a.minX < b.maxX && b.minX < a.maxX && a.minZ < b.maxZ && b.minZ < a.maxZ && rectsOverlap(ra, rb);
+    }))) {
+      out.push({ code: 'system-overlap', path: at, message: `system ${s.id} overlaps system ${other.id}` });
+    }
+  });
+  return out;
+}
+
+function ownProblems(s: LightSystem, at: string, roomHeight: number, catalog: Catalog): Problem[] {
+  const out: Problem[] = [];
+  const p = (code: string, path: string, message: string) => out.push({ code, path: `${at}${path}`, message });
+  if (![s.x, s.z, s.rotation].every(Number.isFinite)) p('position', '', `system ${s.id} has a non-finite position or rotation`);
+  else if (s.rotation < 0 || s.rotation >= 360) p('rotation', '.rotation', `rotation must be in [0, 360) degrees (got ${s.rotation})`);
+  const susp = catalog.suspension;
+  if (!Number.isFinite(s.suspension) || s.suspension < susp.min - EPS || s.suspension > susp.max + EPS) {
+    p('suspension-range', '.suspension', `suspension must be between ${susp.min} and ${susp.max} m (got ${s.suspension})`);
+  } else if (roomHeight - s.suspension < susp.minHeightAboveFloor - EPS) {
+    p('suspension-floor', '.suspension', `modules would hang at ${fmt(roomHeight - s.suspension)} m, below the minimum ${susp.minHeightAboveFloor} m above the floor`);
+  }
+  if (s.rails.length === 0) p('no-rails', '.rails', `system ${s.id} has no rails`);
+  if (s.joints.length !== Math.max(0, s.rails.length - 1)) p('joint-count', '.joints', `${s.rails.length} rails need ${Math.max(0, s.rails.length - 1)} joints, found ${s.joints.length}`);
+  s.joints.forEach((j, i) => {
+    const con = catalog.connectors.find((c) => c.id === j.connector);
+    if (!con) p('unknown-connector', `.joints[${i}].connector`, `unknown connector '${j.connector}'`);
+    else if (Math.abs(j.turn) !== con.angle) p('bad-turn', `.joints[${i}].turn`, `connector '${con.id}' turns by ±${con.angle}°, not ${j.turn}°`);
+  });
+  const rail = catalog.rail;
+  s.rails.forEach((r, k) => {
+    const rp = `.rails[${k}]`;
+    if (!Number.isFinite(r.length) || r.length < rail.minLength - EPS || r.length > rail.maxLength + EPS) {
+      p('rail-length-range', `${rp}.length`, `rail length must be between ${rail.minLength} and ${rail.maxLength} m (got ${r.length})`);
+    } else if (!onGrid(r.length, rail.step)) p('rail-length-grid', `${rp}.length`, `rail length must be a multiple of ${rail.step} m (got ${r.length})`);
+    let refsOk = true;
+    r.modules.forEach((m, n) => {
+      const mp = `${rp}.modules[${n}]`;
+      const type = catalog.moduleTypes.find((t) => t.id === m.type);
+      if (!type) {
+        refsOk = false;
+        p('unknown-module-type', `${mp}.type`, `unknown module type '${m.type}'`);
+        return;
+      }
+      if (!type.beams.some((b) => b.id === m.beam)) p('unknown-beam', `${mp}.beam`, `${type.name} has no beam '${m.beam}'`);
+      if (!type.ccts.includes(m.cct)) p('cct', `${mp}.cct`, `${type.name} is not available in ${m.cct} K (offered: ${type.ccts.join(', ')} K)`);
+      if (!Number.isFinite(m.dimming) || m.dimming < 0 || m.dimming > 1) p('dimming', `${mp}.dimming`, `dimming must be within 0..1 (got ${m.dimming})`);
+    });
+    if (refsOk && Number.isFinite(r.length) && !railModuleOffsets(r, catalog)) {
+      p('modules-do-not-fit', `${rp}.modules`, `the modules of rail ${r.id} do not fit its ${fmt(r.length)} m with distribution '${r.distribution}'`);
+    }
+  });
+  return out;
+}
+
+function fmt(x: number): string {
+  return String(Math.round(x * 1000) / 1000);
+}

@@ -1,0 +1,30 @@
+import type { LightingLuminaire, NearField, Rgb, SurfaceName } from '../../core/model/lightingScene';
+import type { Photometry } from '../../core/photometry/types';
+
+/**
+ * One luminaire with its photometry already parsed (the baker reads no files):
+ * a lighting-scene luminaire (position, yaw/pitch/roll, dimming, colour) whose
+ * `photometry` is the parsed model instead of a path.
+ */
+export type BakeLuminaire = Omit<LightingLuminaire, 'photometry' | 'id'> & { photometry: Photometry };
+
+/**
+ * What the baker needs: the room and its luminaires. A reflectance is grey or
+ * linear RGB in [0, 1). Bake a subset of luminaires (one group) to get that
+ * group's basis maps: light is linear, so maps of groups add (combineMaps).
+ */
+export interface BakeScene {
+  room: {
+    width: number;
+    height: number;
+    depth: number;
+    reflectance: Record<SurfaceName, number | Rgb>;
+  };
+  luminaires: BakeLuminaire[];
+  /** Near-field model of the luminaires (scene file v2 `nearField`; absent = 'split'); the bake setting `nearField` overrides it. */
+  nearField?: NearField;
+}
+
+export function toRgb(value: number | Rgb): Rgb {
+  return typeof value === 'number' ? [value, value, value] : [value[0], value[1], value[2]];
+}

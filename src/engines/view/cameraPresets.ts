@@ -1,0 +1,73 @@
+import { InputError } from '../../core/inputError';
+import type { Vec3 } from '../../core/model/lightingScene';
+import { unknownFieldMessage } from '../../core/model/untrustedJson';
+
+export interface CameraPose {
+  position: Vec3;
+  target: Vec3;
+  /** Vertical field of view, degrees. */
+  fov: number;
+}
+
+export const CAMERA_PRESETS = ['eye', 'top', 'corner'] as const;
+export type CameraPresetName = (typeof CAMERA_PRESETS)[number];
+
+/** Eye height of a standing adult, metres (the usual 1.6 m of architectural views). */
+export const EYE_HEIGHT = 1.6;
+
+export class CameraSpecError extends InputError {
+  override name = 'CameraSpecError';
+}
+
+/**
+ * Camera presets for a W×H×D room:
+ * - eye: standing at eye height just inside the south wall, looking at the room's far half;
+ * - top: straight down from above (the ceiling faces away and is culled: a plan view with light);
+ * - corner: the "doll's house" view from above the south-east corner, outside the room; the
+ *   walls facing away from the camera are culled, so the inside shows.
+ */
+export function cameraPreset(name: CameraPresetName, room: { width: number; height: number; depth: number }): CameraPose {
+  const { width: W, height: H, depth: D } = room;
+  switch (name) {
+    case 'eye':
+      return { position: [W / 2, Math.min(EYE_HEIGHT, H * 0.8), D - Math.min(0.25, D * 0.1)], target: [W / 2, Math.min(EYE_HEIGHT, H * 0.8) * 0.6, D * 0.3], fov: 75 };
+    case 'top': {
+      // Narrow field: little parallax between the hardware and the floor, close to a plan.
+      const fov = 30;
+      const extent = Math.max(W, D) * 0.6;
+      const distance = extent / Math.tan(((fov / 2) * Math.PI) / 180);
+      // A hair off the vertical so the view's "up" (−z, north) is well defined.
+      return { position: [W / 2, H + distance, D / 2 + 1e-3], target: [W / 2, 0, D / 2], fov };
+    }
+    case 'corner': {
+      const r = Math.max(W, D, H);
+      return { position: [W + 0.55 * r, H + 0.9 * r, D + 0.75 * r], target: [W / 2, H * 0.3, D / 2], fov: 45 };
+    }
+  }
+}
+
+const CAMERA_FIELDS = ['position', 'target', 'fov'] as const;
+
+const isVec3 = (v: unknown): v is Vec3 => Array.isArray(v) && v.length === 3 && v.every((x) => typeof x === 'number' && Number.isFinite(x));
+
+/** `--camera eye|top|corner` or a JSON object `{"position":[x,y,z],"target":[x,y,z],"fov":deg}`. */
+export function parseCameraSpec(spec: string, room: { width: number; height: number; depth: number }): CameraPose {
+  if ((CAMERA_PRESETS as readonly string[]).includes(spec)) return cameraPreset(spec as CameraPresetName, room);
+  let data: unknown;
+  try {
+    data = JSON.parse(spec);
+  } catch {
+    throw new CameraSpecError(`--camera: "${spec}" is neither a preset (${CAMERA_PRESETS.join(', ')}) nor JSON like {"position":[x,y,z],"target":[x,y,z],"fov":60}`);
+  }
+  if (typeof data !== 'object' || data === null) throw new CameraSpecError('--camera: JSON must be an object with position, target and fov');
+  const o = data as Record<string, unknown>;
+  // Strict, as every other JSON input (issue 18): a misspelt "fov" must not silently become 60°.
+  const unknown = Array.isArray(o) ? undefined : Object.keys(o).find((k) => !(CAMERA_FIELDS as readonly string[]).includes(k));
+  if (unknown !== undefined) throw new CameraSpecError(`--camera: ${unknownFieldMessage(unknown, CAMERA_FIELDS)}; expected position, target and fov`);
+  if (!isVec3(o.position)) throw new CameraSpecError('--camera: position must be three finite numbers [x, y, z] in metres');
+  if (!isVec3(o.target)) throw new CameraSpecError('--camera: target must be three finite numbers [x, y, z] in metres');
+  const fov = o.fov ?? 60;
+  if (typeof fov !== 'number' || !(fov > 1 && fov < 170)) throw new CameraSpecError(`--camera: fov must be a number of degrees in 1..170, got ${JSON.stringify(fov)}`);
+  if (o.position.every((v, i) => v === (o.target as Vec3)[i])) throw new CameraSpecError('--camera: position and target must differ');
+  return { position: o.position, target: o.target, fov };
+}

@@ -1,0 +1,59 @@
+import { join } from 'node:path';
+import { InputError } from '../../core/inputError';
+import { parseBakeCli } from '../node/bakeCliOptions';
+import { batchFolderNames } from '../node/batchFolderNames';
+import { createSceneBaker } from '../node/bakeSceneFile';
+import { loadLightingSceneFile } from '../node/loadLightingSceneFile';
+import { prepareGl } from '../node/prepareGl';
+import { sceneWarnings } from '../node/sceneWarnings';
+import { writeBakeOutput } from '../node/writeBakeOutput';
+import { resolveBakeSettings } from '../../engines/bake/bakeSettings';
+
+export const bakeUsage =
+  'bake <scene.json> [more.json …] --out <dir> [--samples N --bounces N --texel m --blur texels --seed N --no-tail --gl vulkan|glx|auto]';
+
+/**
+ * `luxbox bake`: one scene writes its files into --out (docs/scene-format.md);
+ * several scenes are baked in one process on one GL context (each shader
+ * compiled once for the whole batch), each into --out/<scene name>/.
+ * Every scene file is read and checked before the first bake starts.
+ */
+export async function run(args: string[]): Promise<number> {
+  const { positional, settings, options } = parseBakeCli('bake', args, ['--out', '--gl']);
+  if (positional.length === 0) throw new InputError(`expected a scene file (usage: luxbox ${bakeUsage})`);
+  const out = options['--out'];
+  if (!out) throw new InputError(`--out <dir> is required (usage: luxbox ${bakeUsage})`);
+  resolveBakeSettings(settings);
+  const { exit, backend } = prepareGl(options['--gl']);
+  if (exit !== null) return exit;
+
+  const loaded = positional.map((p) => loadLightingSceneFile(p));
+  // Suspicious-but-readable photometry (docs/photometry.md, "Warnings"): in each
+  // report.json, and once per line on stderr (nothing on stderr when there are none).
+  const warnings = loaded.map((scene, i) => sceneWarnings(scene, positional[i]));
+  for (const line of new Set(warnings.flat())) process.stderr.write(`luxbox bake: warning: ${line}\n`);
+  const folders = positional.length === 1 ? [out] : batchFolderNames(positional).map((name) => join(out, name));
+  const started = performance.now();
+  const sceneBaker = createSceneBaker();
+  try {
+    loaded.forEach((scene, i) => {
+      const before = sceneBaker.programCount();
+      const { maps, report } = sceneBaker.bake(scene, settings);
+      const compiled = sceneBaker.programCount() - before;
+      writeBakeOutput(folders[i], positional[i], maps, report, {
+        gl: backend,
+        batch: { index: i, of: positional.length, programsCompiled: compiled },
+        warnings: warnings[i],
+      });
+      process.stdout.write(
+        `baked ${positional[i]} → ${folders[i]} (${report.totalTexels} texels, ${report.bouncesComputed} bounces, ${Math.round(report.timings_ms.total)} ms, ${compiled} programs compiled, gl ${backend})\n`,
+      );
+    });
+  } finally {
+    sceneBaker.destroy();
+  }
+  if (positional.length > 1) {
+    process.stdout.write(`batch: ${positional.length} scenes in ${Math.round(performance.now() - started)} ms, ${sceneBaker.programCount()} programs compiled in all\n`);
+  }
+  return 0;
+}

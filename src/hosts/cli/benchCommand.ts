@@ -1,0 +1,77 @@
+import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { join, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { benchTables, spliceSection } from '../bench/benchMarkdown';
+import { BENCH_DOC_INTRO, BENCH_DOC_OUTRO, BENCH_MARKERS } from '../bench/benchDocText';
+import { errorTimeSvg } from '../bench/errorTimeSvg';
+import { directSourcesExperiment, drawOverheadMs, gpuBenchTable, runGpuBench, statsRecordMs } from '../bench/gpuBench';
+import { runBench } from '../bench/runBench';
+import { InputError } from '../../core/inputError';
+import { prepareGl } from '../node/prepareGl';
+
+const usage = 'bench [--quick] [--out <dir>] [--gl vulkan|glx|auto] | bench --gpu [--repeats N] [--gl …]';
+const SVG = 'benchmarks-error-vs-time.svg';
+
+/**
+ * `luxbox bench`: error against run time of the GPU baker on the named scenes,
+ * and bake time against luminaires and texels. The full run writes its section
+ * of docs/benchmarks.md and the SVG plot (or into --out); `--quick`
+ * is a smoke run that prints its tables and writes files only with --out.
+ */
+export async function run(args: string[]): Promise<number> {
+  let quick = false;
+  let out: string | null = null;
+  let gl: string | undefined;
+  let gpu = false;
+  let repeats = 10;
+  for (let i = 0; i < args.length; i++) {
+    const a = args[i];
+    if (a === '--quick') quick = true;
+    else if (a === '--gpu') gpu = true;
+    else if (a === '--repeats') {
+      repeats = Number(args[++i]);
+      if (!Number.isInteger(repeats) || repeats < 1 || repeats > 1000) throw new InputError(`--repeats must be an integer in 1..1000 (usage: luxbox ${usage})`);
+    }
+    else if (a === '--out') {
+      out = args[++i] ?? null;
+      if (!out) throw new InputError(`--out needs a folder (usage: luxbox ${usage})`);
+    } else if (a === '--gl') {
+      gl = args[++i];
+      if (!gl) throw new InputError(`--gl needs vulkan, glx or auto (usage: luxbox ${usage})`);
+    } else throw new InputError(`unknown argument "${a}" (usage: luxbox ${usage})`);
+  }
+  const { exit, backend } = prepareGl(gl);
+  if (exit !== null) return exit;
+  if (gpu) {
+    // Bundled (docs/gpu-server.md) the module URL is the bundle's: scenes are read from the working folder.
+    const rows = runGpuBench(process.cwd(), repeats, (line) => process.stderr.write(line + '\n'));
+    const perDraw = drawOverheadMs();
+    process.stdout.write(`GL back end: ${backend}\n\n${gpuBenchTable(rows)}\n\nOne 256² combine draw in a stream of 200 (per-draw cost): ${perDraw.toFixed(3)} ms\nOne flux-statistics record (living room, 0.05 m): ${statsRecordMs().toFixed(3)} ms\n`);
+    const x = directSourcesExperiment(process.cwd(), repeats);
+    process.stdout.write(`Direct pass, 20 lamps, 6 × 256², centres: source positions in const arrays ${x.constArrays.toFixed(2)} ms, in uniform arrays ${x.uniformArrays.toFixed(2)} ms (largest relative difference ${x.maxError.toExponential(1)})\n`);
+    return 0;
+  }
+  const root = resolve(fileURLToPath(new URL('../../..', import.meta.url)));
+  if (!quick && out === null) out = join(root, 'docs');
+  const result = runBench({ quick, root, log: (line) => process.stderr.write(line + '\n') });
+  const tables = benchTables(result, out ? SVG : null);
+  if (out) {
+    mkdirSync(out, { recursive: true });
+    const series = [...new Set(result.rows.map((r) => r.scene))].map((scene) => {
+      const rows = result.rows.filter((r) => r.scene === scene);
+      return {
+        label: scene,
+        rms: rows.map((r) => [r.bakeMs / 1000, r.total.rms] as [number, number]),
+        max: rows.map((r) => [r.bakeMs / 1000, r.total.max] as [number, number]),
+      };
+    });
+    writeFileSync(join(out, SVG), errorTimeSvg(series, `GPU bake vs converged reference (${result.machine.date.slice(0, 10)})`));
+    // docs/benchmarks.md has other sections (viewer): replace only ours.
+    const docPath = join(out, 'benchmarks.md');
+    const doc = existsSync(docPath) ? readFileSync(docPath, 'utf8') : '';
+    writeFileSync(docPath, spliceSection(doc, `${BENCH_DOC_INTRO}\n${tables}\n${BENCH_DOC_OUTRO}`, BENCH_MARKERS));
+    process.stderr.write(`wrote ${docPath} and ${join(out, SVG)}\n`);
+  }
+  process.stdout.write(tables + '\n');
+  return 0;
+}

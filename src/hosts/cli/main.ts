@@ -1,0 +1,52 @@
+import { InputError } from '../../core/inputError';
+import { oneLine } from '../../core/model/untrustedJson';
+
+/** A subcommand: receives the arguments after its name, returns the exit code. */
+export type Command = (args: string[]) => Promise<number>;
+
+// Each command lives in its own module, loaded only when called, so `ies info`
+// never pays for WebGL. Add new commands here.
+const commands: Record<string, () => Promise<{ run: Command }>> = {
+  ies: () => import('./iesCommand'),
+  bake: () => import('./bakeCommand'),
+  probe: () => import('./probeCommand'),
+  render: () => import('./renderCommand'),
+  bench: () => import('./benchCommand'),
+};
+
+const usage = `usage: luxbox <command> [...]
+commands:
+  ies info <file.ies|file.ldt> [--json]   describe a photometric file
+  bake <scene.json> --out <dir> [--samples N --bounces N --texel m]   bake light maps (docs/baker.md)
+  probe <scene.json> <points.json> [--samples N --bounces N --texel m]   lux at surface points
+  render <config-or-scene.json> --out image.png [--camera eye|top|corner|json --width --height --exposure EV --mode light|lux]   3D image (docs/viewer.md)
+  bench [--quick] [--out <dir>]   bake error vs time against the CPU reference (docs/benchmarks.md)`;
+
+export async function main(argv: string[]): Promise<number> {
+  const [name, ...rest] = argv;
+  if (!name || name === '--help' || name === '-h' || name === 'help') {
+    process.stdout.write(usage + '\n');
+    return name ? 0 : 2;
+  }
+  const load = commands[name];
+  if (!load) {
+    process.stderr.write(`luxbox: unknown command "${name}"\n${usage}\n`);
+    return 2;
+  }
+  try {
+    const { run } = await load();
+    return await run(rest);
+  } catch (error) {
+    if (error instanceof InputError) {
+      process.stderr.write(`luxbox ${name}: ${oneLine(error.message)}\n`);
+      return 1;
+    }
+    // Input too deep or too large for some reader that lacks a limit (the formats check depth and size
+    // first, docs/scene-format.md): still one line, exit 1, not a stack trace. Other errors are bugs.
+    if (error instanceof RangeError && /call stack|Invalid (array|string) length/i.test(error.message)) {
+      process.stderr.write(`luxbox ${name}: input too deeply nested or too large to process (${oneLine(error.message, 80)})\n`);
+      return 1;
+    }
+    throw error;
+  }
+}

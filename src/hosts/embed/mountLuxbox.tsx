@@ -1,0 +1,166 @@
+import { StrictMode } from 'react';
+import { createRoot } from 'react-dom/client';
+import { Globals } from '@react-spring/web';
+import { InputError } from '../../core/inputError';
+import { isActionName } from '../../core/model/actionDefinitions';
+import { billOfMaterials } from '../../core/model/billOfMaterials';
+import { configurationFromData, deserializeConfiguration, encodeShareString, serializeConfiguration } from '../../core/model/sceneFile';
+import { toLightingScene } from '../../core/model/toLightingScene';
+import { createConfiguratorStore } from '../../core/store/createConfiguratorStore';
+import { Configurator } from '../../ui/app/Configurator';
+import { readLocal, writeLocal } from './localStore';
+import { SHARE_HASH_PREFIX, resolveStartup } from './startup';
+import { createUiStore } from '../../core/store/uiStore';
+import { createFootprintSource } from '../../ui/planner/footprintSource';
+import type { LuxboxInstance, LuxboxOptions } from './types';
+import { EmbedOptionsError, resolveCatalog } from './resolveCatalog';
+
+export { EmbedOptionsError };
+import { getViewerStatus } from '../../ui/viewer/viewerStatus';
+
+/** Class on the element luxbox renders into: the scope of its stylesheet and its size container. */
+const ROOT_CLASS = 'luxbox';
+
+function currentHash(): string {
+  return typeof location === 'undefined' ? '' : location.hash;
+}
+
+/**
+ * Mounts the configurator into `element` and returns its API (docs/embedding.md). Throws an
+ * InputError subclass for bad options before touching the element.
+ */
+export function mountLuxbox(element: Element, options: LuxboxOptions = {}): LuxboxInstance {
+  if (typeof Element === 'undefined' || !(element instanceof Element)) throw new EmbedOptionsError('mountLuxbox needs a DOM element to mount into');
+  const catalog = resolveCatalog(options);
+  const storageKey = options.storageKey || null;
+  const saved = storageKey ? readLocal(storageKey) : null;
+  const start = resolveStartup({ catalog, hash: options.shareLinks ? currentHash() : '', saved, room: options.room, demo: options.demo });
+  let store;
+  try {
+    store = createConfiguratorStore({ catalog, initial: start.config });
+  } catch (e) {
+    if (e instanceof InputError) throw new EmbedOptionsError(`options.room: ${e.message}`);
+    throw e;
+  }
+  const ui = createUiStore({ phase: start.phase, banner: start.banner });
+
+  if (start.clearHash && typeof history !== 'undefined') history.replaceState(null, '', location.pathname + location.search);
+  if (storageKey && start.saveNow) writeLocal(storageKey, serializeConfiguration(start.config, catalog));
+
+  // Users who ask their system for less motion get instant zooms (also makes screenshots deterministic).
+  if (typeof matchMedia !== 'undefined' && matchMedia('(prefers-reduced-motion: reduce)').matches) Globals.assign({ skipAnimation: true });
+
+  const listeners = new Set<(json: string) => void>();
+  if (options.onChange) listeners.add(options.onChange);
+  const unsubscribeStore = store.subscribe((s, prev) => {
+    if (s.config === prev.config) return;
+    const json = serializeConfiguration(s.config, catalog);
+    // Autosave only on changes: opening a broken link (no change) never overwrites the saved work.
+    if (storageKey) writeLocal(storageKey, json);
+    for (const l of [...listeners]) {
+      try {
+        l(json);
+      } catch (err) {
+        console.error('luxbox: a change listener threw', err);
+      }
+    }
+  });
+
+  const restoreSaved = () => {
+    const text = storageKey ? readLocal(storageKey) : null;
+    if (!text) return;
+    try {
+      store.getState().load(deserializeConfiguration(text, catalog, 'saved configuration'));
+      ui.setState({ banner: null, phase: 'planner' });
+    } catch (e) {
+      ui.setState({ banner: { text: `Your saved configuration could not be read (${e instanceof InputError ? e.message : 'unexpected error'}).`, canRestore: false } });
+    }
+  };
+
+  const shareLink = () => {
+    const base = typeof location === 'undefined' ? '' : location.origin + location.pathname + location.search;
+    return `${base}${SHARE_HASH_PREFIX}${encodeShareString(store.getState().config, catalog)}`;
+  };
+
+  const footprints = createFootprintSource(options.assetBase ?? import.meta.env.BASE_URL);
+  // The class scopes every luxbox style rule to this element and makes it the container whose
+  // width the layout's breakpoints query (app.css); a class the host put there itself stays on destroy.
+  const hadRootClass = element.classList.contains(ROOT_CLASS);
+  element.classList.add(ROOT_CLASS);
+  const root = createRoot(element);
+  root.render(
+    <StrictMode>
+      <Configurator store={store} ui={ui} locale={options.locale} onRestoreSaved={restoreSaved} shareLink={shareLink} footprints={footprints} />
+    </StrictMode>,
+  );
+
+  let destroyed = false;
+  const alive = () => {
+    if (destroyed) throw new InputError('this luxbox instance was destroyed');
+  };
+
+  return {
+    getConfig() {
+      alive();
+      return serializeConfiguration(store.getState().config, catalog);
+    },
+    setConfig(sceneFile) {
+      alive();
+      const config = typeof sceneFile === 'string' ? deserializeConfiguration(sceneFile, catalog, 'setConfig') : configurationFromData(sceneFile, catalog, 'setConfig');
+      const r = store.getState().load(config);
+      if (!r.ok) throw new InputError(`setConfig: ${r.reason}`);
+      ui.setState({ phase: 'planner', banner: null });
+    },
+    subscribe(listener) {
+      alive();
+      listeners.add(listener);
+      return () => listeners.delete(listener);
+    },
+    getBillOfMaterials() {
+      alive();
+      return billOfMaterials(store.getState().config, catalog);
+    },
+    listActions(paramsByName) {
+      alive();
+      return store
+        .getState()
+        .listActions(paramsByName)
+        .map((a) => ({ name: a.name, label: a.label, enabled: a.enabled === true, reason: a.enabled === true ? null : a.enabled.reason }));
+    },
+    runAction(name, params = {}) {
+      alive();
+      if (!isActionName(name)) return { ok: false, reason: `unknown action '${name}'` };
+      const r = store.getState().dispatch(name, params);
+      if (r.ok && ui.getState().phase === 'setup') ui.setState({ phase: 'planner' });
+      return r.ok ? { ok: true } : { ok: false, reason: r.reason };
+    },
+    undo() {
+      alive();
+      return store.getState().undo();
+    },
+    redo() {
+      alive();
+      return store.getState().redo();
+    },
+    getShareLink() {
+      alive();
+      return shareLink();
+    },
+    getLightingScene() {
+      alive();
+      return toLightingScene(store.getState().config, catalog);
+    },
+    view3d() {
+      alive();
+      return getViewerStatus(store);
+    },
+    destroy() {
+      if (destroyed) return;
+      destroyed = true;
+      unsubscribeStore();
+      listeners.clear();
+      root.unmount();
+      if (!hadRootClass) element.classList.remove(ROOT_CLASS);
+    },
+  };
+}

@@ -1,0 +1,22 @@
+import { defaultCatalog } from '../../core/catalog/defaultCatalog';
+import { InputError } from '../../core/inputError';
+import { parseCatalog, type Catalog } from '../../core/model/catalogSchema';
+import type { LuxboxOptions } from './types';
+
+/** Bad mount options (catalog, room, currency): the message names the option. */
+export class EmbedOptionsError extends InputError {
+  override name = 'EmbedOptionsError';
+}
+
+/**
+ * The catalog a mount uses: the host's (validated, errors name the field under
+ * `options.catalog`) or the bundled one. Prices are never converted, so a `currency` option
+ * that differs from the catalog's is refused rather than showing wrong prices.
+ */
+export function resolveCatalog(options: Pick<LuxboxOptions, 'catalog' | 'currency'>): Catalog {
+  const catalog = options.catalog === undefined ? defaultCatalog : parseCatalog(options.catalog, 'options.catalog');
+  if (options.currency !== undefined && options.currency !== catalog.currency) {
+    throw new EmbedOptionsError(`options.currency is ${options.currency} but the catalog's prices are in ${catalog.currency}; pass a catalog priced in ${options.currency}`);
+  }
+  return catalog;
+}

@@ -1,0 +1,83 @@
+import type { Catalog } from '../../core/model/catalogSchema';
+import { createConfiguration, type Configuration } from '../../core/model/configuration';
+import { decodeShareString, deserializeConfiguration } from '../../core/model/sceneFile';
+import { InputError } from '../../core/inputError';
+import { demoConfiguration } from '../../core/catalog/demoConfiguration';
+
+/** The URL hash prefix of a share link: `#c=<base64url scene file>` (src/core/model/sceneFile.ts). */
+export const SHARE_HASH_PREFIX = '#c=';
+
+export interface StartupInput {
+  catalog: Catalog;
+  /** location.hash, when share links are read ('' otherwise). */
+  hash: string;
+  /** The autosaved scene-file JSON, if any. */
+  saved: string | null;
+  /** A room the host page asked for (embedding option). */
+  room?: { width: number; depth: number; height: number };
+  /** Open the demo instead of the room setup when nothing else applies (dev server, `?demo`). */
+  demo?: boolean;
+}
+
+export interface Startup {
+  config: Configuration;
+  phase: 'setup' | 'planner';
+  /** A message to show until dismissed (broken link, unreadable autosave). */
+  banner: { text: string; canRestore: boolean } | null;
+  /** Whether to write `config` to the autosave right away (a valid share link was opened). */
+  saveNow: boolean;
+  /** Whether the hash was consumed and should be removed from the address bar. */
+  clearHash: boolean;
+}
+
+function message(e: unknown): string {
+  return e instanceof InputError ? e.message : 'unexpected error';
+}
+
+/**
+ * Decides what the configurator opens with, in order: a share link in the URL hash, the local
+ * autosave, the host's room, the demo when asked for, else the room-setup screen. A broken or foreign link opens an
+ * empty valid room with a message and never touches the autosave (saveNow false, and nothing
+ * is saved until the user changes something), so the user's own work survives a bad link.
+ */
+export function resolveStartup({ catalog, hash, saved, room, demo }: StartupInput): Startup {
+  let savedConfig: Configuration | null = null;
+  let savedError: string | null = null;
+  if (saved) {
+    try {
+      savedConfig = deserializeConfiguration(saved, catalog, 'saved configuration');
+    } catch (e) {
+      savedError = message(e);
+    }
+  }
+
+  if (hash && hash !== '#') {
+    if (hash.startsWith(SHARE_HASH_PREFIX)) {
+      try {
+        const config = decodeShareString(hash.slice(SHARE_HASH_PREFIX.length), catalog);
+        return { config, phase: 'planner', banner: null, saveNow: true, clearHash: true };
+      } catch (e) {
+        return {
+          config: createConfiguration(),
+          phase: 'planner',
+          banner: { text: `This link could not be opened: ${message(e)}. Showing an empty room instead.`, canRestore: savedConfig !== null },
+          saveNow: false,
+          clearHash: true,
+        };
+      }
+    }
+    return {
+      config: createConfiguration(),
+      phase: 'planner',
+      banner: { text: 'This link does not contain a luxbox configuration. Showing an empty room instead.', canRestore: savedConfig !== null },
+      saveNow: false,
+      clearHash: true,
+    };
+  }
+
+  if (savedConfig) return { config: savedConfig, phase: 'planner', banner: null, saveNow: false, clearHash: false };
+  const banner = savedError ? { text: `Your saved configuration could not be read (${savedError}).`, canRestore: false } : null;
+  if (room) return { config: createConfiguration(room), phase: 'planner', banner, saveNow: false, clearHash: false };
+  if (demo) return { config: demoConfiguration(catalog), phase: 'planner', banner, saveNow: false, clearHash: false };
+  return { config: createConfiguration(), phase: 'setup', banner, saveNow: false, clearHash: false };
+}

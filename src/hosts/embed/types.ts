@@ -1,0 +1,60 @@
+import type { ActionName } from '../../core/model/actionDefinitions';
+import type { BillOfMaterials } from '../../core/model/billOfMaterials';
+import type { ViewerStatus } from '../../ui/viewer/viewerStatus';
+
+/** Options of mountLuxbox (docs/embedding.md). */
+export interface LuxboxOptions {
+  /** Catalog data (parsed JSON in the documented format); default: the bundled demo catalog. */
+  catalog?: unknown;
+  /** Start directly on the plan of this room (metres) instead of the room-setup screen. */
+  room?: { width: number; depth: number; height: number };
+  /** BCP 47 locale for numbers and prices, e.g. 'de-CH'; default: the browser's. */
+  locale?: string;
+  /** ISO 4217 code the shop expects; must equal the catalog's currency (prices are never converted). */
+  currency?: string;
+  /** Called with the scene-file JSON after every change of the configuration. */
+  onChange?: (sceneFileJson: string) => void;
+  /** localStorage key for autosave; omitted or false: no autosave. The standalone app uses 'luxbox.autosave.v1'. */
+  storageKey?: string | false;
+  /** With nothing saved and no link or room, open the demo room with a preset instead of the room setup. */
+  demo?: boolean;
+  /** URL prefix under which the catalog's photometry paths ('ies/...') are served; default: the app's base URL. */
+  assetBase?: string;
+  /** Read a share link from location.hash at start (`#c=...`); default false. The standalone app turns it on. */
+  shareLinks?: boolean;
+}
+
+export interface LuxboxActionInfo {
+  name: ActionName;
+  label: string;
+  enabled: boolean;
+  /** Why it is disabled (null when enabled). */
+  reason: string | null;
+}
+
+export type LuxboxRunResult = { ok: true } | { ok: false; reason: string };
+
+/** A mounted configurator. */
+export interface LuxboxInstance {
+  /** The current configuration as scene-file JSON (format 'luxbox-configuration'). */
+  getConfig(): string;
+  /** Replaces the configuration (undoable). Accepts JSON text or the parsed object; throws an InputError naming the problem. */
+  setConfig(sceneFile: string | object): void;
+  /** Calls listener with the scene-file JSON after every change; returns the unsubscribe function. */
+  subscribe(listener: (sceneFileJson: string) => void): () => void;
+  getBillOfMaterials(): BillOfMaterials;
+  /** Every action with its enabled state for the given parameters (per action name). */
+  listActions(paramsByName?: Partial<Record<ActionName, unknown>>): LuxboxActionInfo[];
+  /** Runs an action by name if the model allows it; never throws for bad names or parameters. */
+  runAction(name: string, params?: unknown): LuxboxRunResult;
+  undo(): boolean;
+  redo(): boolean;
+  /** A link that opens this configuration (base URL + `#c=<share string>`). */
+  getShareLink(): string;
+  /** The lighting scene (version 1) the baker takes, for the current configuration. */
+  getLightingScene(): unknown;
+  /** State of the 3D view (docs/viewer.md): bake progress, counters (group bakes vs relights), floor lux; `open: false` in 2D. */
+  view3d(): ViewerStatus;
+  /** Unmounts and releases everything; the instance must not be used afterwards. */
+  destroy(): void;
+}

@@ -1,0 +1,166 @@
+/**
+ * The demo shop page (embed.html): a product page that embeds luxbox and talks to it only
+ * through the public API of docs/embedding.md — options on mount, onChange, getBillOfMaterials,
+ * listActions/runAction, undo/redo, destroy. No React and no luxbox internals on the host side.
+ */
+import { mountLuxbox } from '../embed/mountLuxbox';
+import type { LuxboxInstance } from '../embed/types';
+import { formatMoney } from '../../ui/planner/formatMoney';
+import { addToCart, cartTotal, type CartLine } from './cart';
+import { SHOP_ROOM, SHOP_VARIANTS, shopVariant } from './shopVariants';
+import './shop.css';
+
+declare global {
+  interface Window {
+    /** The demo shop's handle on its embedded instance (null while closed); e2e/embedHost.spec.ts uses it. */
+    shopDemo?: { readonly instance: LuxboxInstance | null; readonly changes: number };
+  }
+}
+
+interface PresetData {
+  id: string;
+  name: string;
+  description: string;
+}
+
+function byId<T extends HTMLElement = HTMLElement>(id: string): T {
+  const found = document.getElementById(id);
+  if (!found) throw new Error(`embed.html lacks #${id}`);
+  return found as T;
+}
+
+function element<K extends keyof HTMLElementTagNameMap>(tag: K, props: Partial<HTMLElementTagNameMap[K]> = {}, ...children: (Node | string)[]): HTMLElementTagNameMap[K] {
+  const node = Object.assign(document.createElement(tag), props);
+  node.append(...children);
+  return node;
+}
+
+const shop = shopVariant(new URLSearchParams(location.search).get('shop'));
+const presets = (shop.catalog as { presets: PresetData[] }).presets;
+const money = (x: number) => formatMoney(x, shop.currency, shop.locale);
+const count = (x: number) => new Intl.NumberFormat(shop.locale).format(x);
+
+const host = byId('configurator');
+const closedNote = byId('configurator-closed');
+const totalOut = byId('host-total');
+const metaOut = byId('host-meta');
+const bomBody = byId('host-bom');
+const actionList = byId('host-actions');
+const cartList = byId('cart');
+const cartTotalOut = byId('cart-total');
+const addButton = byId<HTMLButtonElement>('add-to-cart');
+const toggleButton = byId<HTMLButtonElement>('toggle-configurator');
+const undoButton = byId<HTMLButtonElement>('host-undo');
+const redoButton = byId<HTMLButtonElement>('host-redo');
+
+let instance: LuxboxInstance | null = null;
+let changes = 0;
+let cart: CartLine[] = [];
+let hostMessage = '';
+
+window.shopDemo = {
+  get instance() {
+    return instance;
+  },
+  get changes() {
+    return changes;
+  },
+};
+
+function renderRegions(): void {
+  byId('region').replaceChildren(
+    ...SHOP_VARIANTS.map((v) => element('a', { href: `?shop=${v.id}`, className: v.id === shop.id ? 'current' : '', textContent: v.label })),
+  );
+  for (const a of byId('region').querySelectorAll('a.current')) a.setAttribute('aria-current', 'page');
+}
+
+function renderConfiguration(lx: LuxboxInstance | null): void {
+  const bom = lx?.getBillOfMaterials();
+  totalOut.textContent = bom ? money(bom.total) : '—';
+  metaOut.textContent = bom ? `${count(bom.watts)} W · ${count(bom.lumens)} lm · incl. VAT` : '';
+  bomBody.replaceChildren(
+    ...(bom && bom.lines.length > 0
+      ? bom.lines.map((l) => element('tr', {}, element('td', { className: 'num' }, `${l.count}×`), element('td', {}, l.name), element('td', { className: 'num' }, money(l.total))))
+      : [element('tr', {}, element('td', { className: 'muted', colSpan: 3 }, bom ? 'Nothing placed yet.' : 'Open the configurator to plan a system.'))]),
+  );
+  addButton.disabled = !bom || bom.lines.length === 0;
+}
+
+function renderActions(lx: LuxboxInstance | null): void {
+  actionList.replaceChildren(
+    ...presets.map((p) => {
+      // One listActions call per preset: its verdict depends on the parameters (which preset).
+      const listing = lx?.listActions({ placePreset: { presetId: p.id } }).find((a) => a.name === 'placePreset');
+      const reason = !listing ? 'the configurator is closed' : listing.reason;
+      const button = element('button', { type: 'button', className: 'shop-btn', disabled: !listing?.enabled, title: reason ?? p.description, textContent: `Place “${p.name}”` });
+      button.dataset.testid = `host-action-${p.id}`;
+      button.addEventListener('click', () => {
+        const r = instance?.runAction('placePreset', { presetId: p.id });
+        hostMessage = r && !r.ok ? r.reason : '';
+        render();
+      });
+      const note = element('span', { className: reason ? 'action-reason' : 'action-detail', textContent: reason ?? p.description });
+      note.dataset.testid = `host-action-note-${p.id}`;
+      return element('li', {}, button, note);
+    }),
+    ...(hostMessage ? [element('li', { className: 'action-reason', role: 'status', textContent: hostMessage })] : []),
+  );
+  undoButton.disabled = !lx;
+  redoButton.disabled = !lx;
+}
+
+function renderCart(): void {
+  cartList.replaceChildren(
+    ...(cart.length > 0
+      ? cart.map((l) => element('li', {}, element('span', { className: 'cart-article', textContent: l.article }), element('span', { className: 'cart-name', textContent: `${l.count}× ${l.name}` }), element('span', { className: 'num', textContent: money(l.total) })))
+      : [element('li', { className: 'muted', textContent: 'Your cart is empty.' })]),
+  );
+  cartTotalOut.textContent = money(cartTotal(cart));
+}
+
+function render(): void {
+  renderConfiguration(instance);
+  renderActions(instance);
+  renderCart();
+}
+
+function open(): void {
+  host.hidden = false;
+  closedNote.hidden = true;
+  instance = mountLuxbox(host, {
+    room: SHOP_ROOM,
+    locale: shop.locale,
+    currency: shop.currency,
+    catalog: shop.catalog,
+    storageKey: shop.storageKey,
+    onChange: () => {
+      // Everything the host shows is re-read through the API after each change.
+      changes++;
+      render();
+    },
+  });
+  toggleButton.textContent = 'Close configurator';
+  render();
+}
+
+function close(): void {
+  instance?.destroy();
+  instance = null;
+  host.hidden = true;
+  closedNote.hidden = false;
+  toggleButton.textContent = 'Open configurator';
+  hostMessage = '';
+  render();
+}
+
+addButton.addEventListener('click', () => {
+  if (!instance) return;
+  cart = addToCart(cart, instance.getBillOfMaterials().lines);
+  render();
+});
+toggleButton.addEventListener('click', () => (instance ? close() : open()));
+undoButton.addEventListener('click', () => instance?.undo());
+redoButton.addEventListener('click', () => instance?.redo());
+
+renderRegions();
+open();

@@ -1,0 +1,49 @@
+import type { BakedMaps } from '../../engines/bake/bakedMaps';
+import type { BakeSettings } from '../../engines/bake/bakeSettings';
+import { resolveBakeSettings } from '../../engines/bake/bakeSettings';
+import { createBaker, type BakeReport } from '../../engines/bake/createBaker';
+import { cachedProgramCount } from '../../engines/bake/glResources';
+import { createHeadlessGL } from './createHeadlessGL';
+import { loadLightingSceneFile, type LoadedLightingScene } from './loadLightingSceneFile';
+
+export interface SceneBaker {
+  /** Bake a loaded scene; programs compiled by earlier bakes of this SceneBaker are reused. */
+  bake(loaded: LoadedLightingScene, settings: Partial<BakeSettings>): { loaded: LoadedLightingScene; maps: BakedMaps; report: BakeReport };
+  /** Programs compiled so far on this context (a batch compiles each distinct shader once). */
+  programCount(): number;
+  destroy(): void;
+}
+
+/**
+ * One headless-gl context and baker for many bakes: the program cache lives
+ * as long as the context, so a batch (`luxbox bake a.json b.json …`) pays each
+ * shader compile once.
+ */
+export function createSceneBaker(): SceneBaker {
+  const gl = createHeadlessGL();
+  const baker = createBaker(gl);
+  return {
+    bake(loaded, settings) {
+      const { maps, report } = baker.bake(loaded.bakeScene, resolveBakeSettings(settings));
+      return { loaded, maps, report };
+    },
+    programCount: () => cachedProgramCount(gl),
+    destroy: () => gl.destroy(),
+  };
+}
+
+/** Load a scene file and bake it on a fresh headless-gl context (shared by `bake` and `probe`). */
+export function bakeSceneFile(path: string, settings: Partial<BakeSettings>): { loaded: LoadedLightingScene; maps: BakedMaps; report: BakeReport } {
+  resolveBakeSettings(settings);
+  return bakeLoadedScene(loadLightingSceneFile(path), settings);
+}
+
+/** Bake an already loaded scene on a fresh headless-gl context. */
+export function bakeLoadedScene(loaded: LoadedLightingScene, settings: Partial<BakeSettings>): { loaded: LoadedLightingScene; maps: BakedMaps; report: BakeReport } {
+  const sceneBaker = createSceneBaker();
+  try {
+    return sceneBaker.bake(loaded, settings);
+  } finally {
+    sceneBaker.destroy();
+  }
+}

@@ -1,0 +1,50 @@
+import { SURFACE_NAMES, type SurfaceName } from '../../core/model/lightingScene';
+import { luxOf, type BakedMaps } from '../../engines/bake/bakedMaps';
+import type { BakeReport } from '../../engines/bake/createBaker';
+import { texelArea } from '../../engines/bake/surfaceLayout';
+
+export interface SurfaceSummary {
+  /** m² */
+  area: number;
+  /** lux (photometric Y of the RGB maps), over texel centres */
+  min: number;
+  avg: number;
+  max: number;
+  direct_avg: number;
+  indirect_avg: number;
+  texels: [number, number];
+}
+
+/** Per-surface statistics as report.json carries them (docs/scene-format.md, "Command-line contract"). */
+export function summarizeSurfaces(maps: BakedMaps): Record<SurfaceName, SurfaceSummary> {
+  const out = {} as Record<SurfaceName, SurfaceSummary>;
+  for (const name of SURFACE_NAMES) {
+    const m = maps[name];
+    const total = luxOf(m.total);
+    const direct = luxOf(m.direct);
+    const indirect = luxOf(m.indirect);
+    const mean = (a: Float32Array) => a.reduce((s, x) => s + x, 0) / a.length;
+    let min = Infinity;
+    let max = -Infinity;
+    for (const x of total) {
+      min = Math.min(min, x);
+      max = Math.max(max, x);
+    }
+    out[name] = {
+      area: texelArea(m.layout) * m.layout.width * m.layout.height,
+      min,
+      avg: mean(total),
+      max,
+      direct_avg: mean(direct),
+      indirect_avg: mean(indirect),
+      texels: [m.layout.width, m.layout.height],
+    };
+  }
+  return out;
+}
+
+/** report.json: the contract fields first, then the baker's own report. */
+export function reportJson(scenePath: string, maps: BakedMaps, report: BakeReport) {
+  const { settings, timings_ms, ...bake } = report;
+  return { scene: scenePath, surfaces: summarizeSurfaces(maps), timings_ms, settings, bake };
+}

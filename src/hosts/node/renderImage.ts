@@ -1,0 +1,117 @@
+import createGL from 'gl';
+import { PNG } from 'pngjs';
+import * as THREE from 'three';
+import type { BakeSettings } from '../../engines/bake/bakeSettings';
+import { toRgb } from '../../engines/bake/bakeScene';
+import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../core/model/lightingScene';
+import { createRelightEngine, VIEWER_BAKE_SETTINGS } from '../../engines/relight/createRelightEngine';
+import { autoExposure } from '../../engines/view/autoExposure';
+import type { CameraPose } from '../../engines/view/cameraPresets';
+import { luxLevels } from '../../engines/view/falseColorScale';
+import { luxScaleTop } from '../../engines/view/luxScaleTop';
+import { floorStats, type IlluminanceStats } from '../../engines/view/lightStats';
+import { createRoomView, type ViewMode } from '../../engines/view/roomView';
+import { noContextMessage, NoWebGLError } from './createHeadlessGL';
+import type { RenderInput } from './renderInput';
+
+export interface RenderOptions {
+  width: number;
+  height: number;
+  camera: CameraPose;
+  /** Exposure compensation in stops (EV) on top of the automatic exposure. */
+  exposureEv: number;
+  mode: ViewMode;
+  settings: Partial<BakeSettings>;
+}
+
+export interface RenderResult {
+  png: Buffer;
+  /** RGBA, top row first. */
+  pixels: Uint8Array;
+  exposure: number;
+  floor: IlluminanceStats;
+  timings_ms: { bake: number; render: number };
+}
+
+/** Several renders on one headless-gl context: the baker's and three's shader programs are compiled once for all. */
+export interface RenderSession {
+  /** Bake the scene once, then draw it from each camera (options.camera is ignored; results in camera order). */
+  renderViews(input: RenderInput, options: RenderOptions, cameras: CameraPose[]): RenderResult[];
+  destroy(): void;
+}
+
+/**
+ * Bake and draw rooms with three.js on a headless-gl WebGL2 context: the
+ * same RoomView, shaders and relight engine as the browser viewer (three's
+ * WebGLRenderer accepts an existing context plus a canvas-like object). One
+ * context serves the baker and three; three's state cache is reset after each
+ * bake touched the context. Every render of a session has the session's size.
+ */
+export function createRenderSession(width: number, height: number): RenderSession {
+  const gl = createGL(width, height, { createWebGL2Context: true, preserveDrawingBuffer: true, antialias: false }) as unknown as (WebGL2RenderingContext & { getExtension(name: 'STACKGL_destroy_context'): { destroy(): void } | null }) | null;
+  if (!gl || !('texStorage2D' in gl)) throw new NoWebGLError(noContextMessage(`a ${width}×${height} headless WebGL2 context`));
+  const canvas = { width, height, style: {}, addEventListener() {}, removeEventListener() {} } as unknown as HTMLCanvasElement;
+  // headless-gl contexts have no canvas; three reads gl.canvas for the default scissor and viewport.
+  Object.defineProperty(gl, 'canvas', { value: canvas, configurable: true });
+  let renderer: THREE.WebGLRenderer | null = null;
+  return {
+    renderViews(input, options, cameras) {
+      if (options.width !== width || options.height !== height) throw new Error(`render session is ${width}×${height}, asked for ${options.width}×${options.height}`);
+      const engine = createRelightEngine(gl, { ...VIEWER_BAKE_SETTINGS, ...options.settings });
+      try {
+        const t0 = performance.now();
+        engine.setScene(input.bakeScene);
+        engine.finish();
+        const lit = engine.maps();
+        const t1 = performance.now();
+        if (!renderer) {
+          renderer = new THREE.WebGLRenderer({ canvas, context: gl, antialias: false });
+          renderer.setPixelRatio(1);
+          renderer.setSize(width, height, false);
+        }
+        renderer.resetState();
+        const view = createRoomView(renderer);
+        const reflectance = Object.fromEntries(SURFACE_NAMES.map((n) => [n, toRgb(input.bakeScene.room.reflectance[n])])) as Record<SurfaceName, Rgb>;
+        view.setMaps(lit, reflectance);
+        const exposure = autoExposure(lit, reflectance) * 2 ** options.exposureEv;
+        view.setExposure(exposure);
+        const floor = floorStats(lit);
+        view.setMode(options.mode, luxLevels(luxScaleTop(lit)));
+        view.setFixtures(input.fixtures);
+        const results = cameras.map((camera): RenderResult => {
+          const t2 = performance.now();
+          view.setCamera(camera, width / height);
+          view.render(renderer!);
+          const raw = new Uint8Array(width * height * 4);
+          gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, raw);
+          const t3 = performance.now();
+          // GL rows run bottom-up; images top-down.
+          const pixels = new Uint8Array(raw.length);
+          const row = width * 4;
+          for (let y = 0; y < height; y++) pixels.set(raw.subarray((height - 1 - y) * row, (height - y) * row), y * row);
+          const png = new PNG({ width, height });
+          png.data = Buffer.from(pixels);
+          return { png: PNG.sync.write(png), pixels, exposure, floor, timings_ms: { bake: t1 - t0, render: t3 - t2 } };
+        });
+        view.dispose();
+        return results;
+      } finally {
+        engine.dispose();
+      }
+    },
+    destroy() {
+      renderer?.dispose();
+      gl.getExtension('STACKGL_destroy_context')?.destroy();
+    },
+  };
+}
+
+/** One render on its own context (see createRenderSession). */
+export function renderImage(input: RenderInput, options: RenderOptions): RenderResult {
+  const session = createRenderSession(options.width, options.height);
+  try {
+    return session.renderViews(input, options, [options.camera])[0];
+  } finally {
+    session.destroy();
+  }
+}

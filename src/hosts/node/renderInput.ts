@@ -1,0 +1,69 @@
+import { existsSync, readFileSync } from 'node:fs';
+import { basename, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import type { BakeScene } from '../../engines/bake/bakeScene';
+import { defaultCatalog } from '../../core/catalog/defaultCatalog';
+import { LightingSceneError } from '../../core/model/parseLightingScene';
+import { SCENE_FILE_FORMAT, deserializeConfiguration } from '../../core/model/sceneFile';
+import { toLightingScene } from '../../core/model/toLightingScene';
+import type { LightingScene } from '../../core/model/lightingScene';
+import { parsePhotometry } from '../../core/photometry/parsePhotometry';
+import type { Photometry } from '../../core/photometry/types';
+import { fixturesFromConfiguration, fixturesFromScene, type Fixtures } from '../../engines/view/fixtures';
+import { loadLightingSceneFile, parseJsonText } from './loadLightingSceneFile';
+
+/** What `luxbox render` draws: the baker's scene and the hardware to show. */
+export interface RenderInput {
+  scene: LightingScene;
+  bakeScene: BakeScene;
+  fixtures: Fixtures;
+  kind: 'configuration' | 'lighting-scene';
+}
+
+/**
+ * The app's public folder: the catalog's photometry paths ('ies/…') are
+ * relative to it. $LUXBOX_PUBLIC_DIR wins; else public/ of the repository
+ * this module is in (src/hosts/node/ from source, one level down when bundled into
+ * gpu-pack/luxbox.mjs), else public/ of the working folder.
+ */
+export const PUBLIC_DIR = resolvePublicDir();
+
+function resolvePublicDir(): string {
+  if (process.env.LUXBOX_PUBLIC_DIR) return join(process.env.LUXBOX_PUBLIC_DIR, '/');
+  const candidates = [fileURLToPath(new URL('../../../public/', import.meta.url)), fileURLToPath(new URL('../public/', import.meta.url)), join(process.cwd(), 'public/')];
+  return candidates.find((dir) => existsSync(join(dir, 'ies'))) ?? candidates[0];
+}
+
+/**
+ * Read a configurator scene file (format "luxbox-configuration", default
+ * catalog, photometry from public/) or a lighting scene v1 (photometry
+ * relative to the file), telling them apart by the format tag.
+ */
+export function loadRenderInput(path: string): RenderInput {
+  const source = basename(path);
+  let text: string;
+  try {
+    text = readFileSync(path, 'utf8');
+  } catch (error) {
+    const code = (error as NodeJS.ErrnoException).code;
+    throw new LightingSceneError(`${source}: cannot read ${path} (${code === 'ENOENT' ? 'no such file' : code ?? 'read error'})`);
+  }
+  const data = parseJsonText(text, source);
+  const isConfiguration = typeof data === 'object' && data !== null && (data as { format?: unknown }).format === SCENE_FILE_FORMAT;
+  if (!isConfiguration) {
+    const loaded = loadLightingSceneFile(path);
+    return { scene: loaded.scene, bakeScene: loaded.bakeScene, fixtures: fixturesFromScene(loaded.scene), kind: 'lighting-scene' };
+  }
+  const config = deserializeConfiguration(text, defaultCatalog, source);
+  const scene = toLightingScene(config, defaultCatalog);
+  const parsed = new Map<string, Photometry>();
+  const luminaires = scene.luminaires.map((l) => {
+    let p = parsed.get(l.photometry);
+    if (!p) {
+      p = parsePhotometry(readFileSync(PUBLIC_DIR + l.photometry), l.photometry);
+      parsed.set(l.photometry, p);
+    }
+    return { photometry: p, position: l.position, yaw: l.yaw, pitch: l.pitch, roll: l.roll, dimming: l.dimming ?? 1, color: l.color ?? [1, 1, 1] };
+  });
+  return { scene, bakeScene: { room: scene.room, luminaires }, fixtures: fixturesFromConfiguration(config, defaultCatalog), kind: 'configuration' };
+}

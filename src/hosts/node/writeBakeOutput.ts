@@ -1,0 +1,38 @@
+import { mkdirSync, writeFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { InputError } from '../../core/inputError';
+import { SURFACE_NAMES } from '../../core/model/lightingScene';
+import { luxOf, type BakedMaps } from '../../engines/bake/bakedMaps';
+import type { BakeReport } from '../../engines/bake/createBaker';
+import { reportJson } from './bakeSummary';
+import { falseColorPng } from './falseColorPng';
+import { writePfm } from './writePfm';
+
+/**
+ * What `luxbox bake` writes for one scene (docs/scene-format.md, "Command-line contract"): report.json,
+ * per surface <name>.direct/.indirect/.total.pfm (RGB lux) and <name>.png
+ * (false colour of total lux, one scale for all six).
+ */
+export function writeBakeOutput(out: string, scenePath: string, maps: BakedMaps, report: BakeReport, extra: Record<string, unknown> = {}): void {
+  const started = performance.now();
+  try {
+    mkdirSync(out, { recursive: true });
+  } catch (error) {
+    throw new InputError(`--out ${out}: cannot create the folder (${(error as NodeJS.ErrnoException).code ?? 'error'})`);
+  }
+  // One colour scale for all surfaces: the 99.5th percentile of total lux, so a
+  // lamp touching a wall does not turn every other surface dark blue.
+  const all = SURFACE_NAMES.flatMap((n) => Array.from(luxOf(maps[n].total))).sort((a, b) => a - b);
+  const scaleMax = all.length ? all[Math.min(all.length - 1, Math.floor(all.length * 0.995))] : 1;
+  for (const name of SURFACE_NAMES) {
+    const m = maps[name];
+    const { width, height } = m.layout;
+    writePfm(join(out, `${name}.direct.pfm`), width, height, m.direct);
+    writePfm(join(out, `${name}.indirect.pfm`), width, height, m.indirect);
+    writePfm(join(out, `${name}.total.pfm`), width, height, m.total);
+    writeFileSync(join(out, `${name}.png`), falseColorPng(luxOf(m.total), width, height, scaleMax));
+  }
+  const json = reportJson(scenePath, maps, report);
+  json.timings_ms = { ...json.timings_ms, write: performance.now() - started } as typeof json.timings_ms;
+  writeFileSync(join(out, 'report.json'), JSON.stringify({ ...json, ...extra, png_scale_max_lux: scaleMax }, null, 2) + '\n');
+}

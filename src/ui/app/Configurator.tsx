@@ -1,0 +1,87 @@
+import { useStore } from 'zustand';
+import { createConfiguration } from '../../core/model/configuration';
+import { demoConfiguration } from '../../core/catalog/demoConfiguration';
+import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
+import { Planner } from '../planner/Planner';
+import type { FootprintSource } from '../planner/footprintSource';
+import { RoomSetup } from './RoomSetup';
+import type { UiStore } from '../../core/store/uiStore';
+import './app.css';
+
+export interface ConfiguratorProps {
+  store: ConfiguratorStore;
+  ui: UiStore;
+  locale?: string;
+  /** Loads the autosaved configuration (offered after a broken link). */
+  onRestoreSaved: () => void;
+  /** The share link of the current configuration. */
+  shareLink: () => string;
+  footprints: FootprintSource;
+}
+
+/** The configurator's top-level component: room setup first, then the planner (configurator paper §3.2). */
+export function Configurator({ store, ui, locale, onRestoreSaved, shareLink, footprints }: ConfiguratorProps) {
+  const phase = useStore(ui, (s) => s.phase);
+  const banner = useStore(ui, (s) => s.banner);
+  const room = useStore(store, (s) => s.config.room);
+  const catalog = useStore(store, (s) => s.catalog);
+
+  const startDemo = () => {
+    const st = store.getState();
+    st.load(demoConfiguration(catalog));
+    const systems = store.getState().config.systems;
+    if (systems.length > 0) store.getState().select({ kind: 'system', id: systems[systems.length - 1].id });
+    ui.setState({ phase: 'planner' });
+  };
+
+  const share = () => {
+    const link = shareLink();
+    // The clipboard needs a secure context and permission; the link is also shown as text.
+    void navigator.clipboard?.writeText(link).catch(() => undefined);
+    ui.setState({ shareLink: link });
+    return 'Share link created: copy it from the side panel.';
+  };
+
+  return (
+    <div className="app" lang={locale}>
+      {banner && (
+        <div className="banner" role="alert" data-testid="banner">
+          <span className="banner-text">{banner.text}</span>
+          {banner.canRestore && (
+            <button type="button" className="btn" onClick={onRestoreSaved}>
+              Open my saved configuration
+            </button>
+          )}
+          <button type="button" className="btn" aria-label="Dismiss message" onClick={() => ui.setState({ banner: null })}>
+            ✕
+          </button>
+        </div>
+      )}
+      {phase === 'setup' ? (
+        <>
+          <header className="app-header">
+            <h1>luxbox</h1>
+            <span className="room-label">Lighting configurator</span>
+          </header>
+          <RoomSetup
+            initial={room}
+            onSubmit={(r) => {
+              store.getState().load(createConfiguration(r));
+              ui.setState({ phase: 'planner', mode: '2d' });
+            }}
+            onDemo={startDemo}
+          />
+        </>
+      ) : (
+        <Planner
+          store={store}
+          ui={ui}
+          locale={locale}
+          onNewRoom={() => ui.setState({ phase: 'setup', optionsOpen: false, panelOpen: false })}
+          onShare={share}
+          footprints={footprints}
+        />
+      )}
+    </div>
+  );
+}

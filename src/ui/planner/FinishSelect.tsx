@@ -1,0 +1,59 @@
+import type { Reflectance } from '../../core/model/lightingScene';
+import { luminousReflectance } from '../../core/model/reflectance';
+import { finishesFor, matchFinish, type FinishUse, type SurfaceFinish } from '../../core/model/surfaceFinish';
+import { finishColour } from './finishColour';
+
+export interface FinishSelectProps {
+  id: string;
+  label: string;
+  use: FinishUse;
+  /** The surface's reflectance; null when the surfaces it stands for differ (walls set one by one). */
+  value: Reflectance | null;
+  finishes: readonly SurfaceFinish[];
+  onChoose: (finish: SurfaceFinish) => void;
+  /** The model's reason a finish cannot be chosen, or null (the planner's action gate). */
+  disabledReason?: (finish: SurfaceFinish) => string | null;
+  testId?: string;
+}
+
+const CURRENT = '';
+
+/**
+ * A labelled native select of the finishes offered for a surface, with a swatch. Native selects
+ * give a large touch target and the platform's own picker on phones. A value not in the list
+ * (an older file, the embedding API) shows as "Custom" with its luminous reflectance.
+ */
+export function FinishSelect({ id, label, use, value, finishes, onChoose, disabledReason, testId }: FinishSelectProps) {
+  const offered = finishesFor(finishes, use);
+  const current = value === null ? null : matchFinish(offered, value);
+  const swatch = value === null ? 'repeating-linear-gradient(45deg, #ffffff 0 4px, #c8ccd3 4px 8px)' : finishColour(value, finishes);
+  return (
+    <div className="finish-row">
+      <span className="finish-swatch" style={{ background: swatch }} aria-hidden data-testid={testId ? `${testId}-swatch` : undefined} />
+      <label htmlFor={id}>{label}</label>
+      <select
+        id={id}
+        value={current?.id ?? CURRENT}
+        data-testid={testId}
+        onChange={(e) => {
+          const f = offered.find((x) => x.id === e.target.value);
+          if (f) onChoose(f);
+        }}
+      >
+        {!current && (
+          <option value={CURRENT} disabled>
+            {value === null ? 'Mixed (per wall)' : `Custom (ρ ${luminousReflectance(value).toFixed(2)})`}
+          </option>
+        )}
+        {offered.map((f) => {
+          const reason = disabledReason?.(f) ?? null;
+          return (
+            <option key={f.id} value={f.id} disabled={reason !== null} title={reason ?? undefined}>
+              {f.name} (ρ {luminousReflectance(f.reflectance).toFixed(2)})
+            </option>
+          );
+        })}
+      </select>
+    </div>
+  );
+}

@@ -1,0 +1,227 @@
+import type { CSSProperties, ReactNode } from 'react';
+import type { Catalog } from '../../core/model/catalogSchema';
+import type { Configuration, LightSystem } from '../../core/model/configuration';
+import { modulePlacements, railPlacements, type PlanVec } from '../../core/model/geometry';
+import { ActionButton } from './ActionButton';
+import { DistributionButtons } from './DistributionButtons';
+import { RailLengthField } from './RailLengthField';
+import { CommitField } from './CommitField';
+import type { ActionGate } from './actionGate';
+import type { DetailLevel } from './detailLevel';
+import type { Selection } from '../../core/store/createConfiguratorStore';
+import type { SelectionPath } from './selection';
+import { type PlanView, type Viewport, worldToScreen } from './viewTransform';
+
+export interface PlanControlsProps {
+  config: Configuration;
+  catalog: Catalog;
+  view: PlanView;
+  viewport: Viewport;
+  level: DetailLevel;
+  selection: SelectionPath;
+  gate: ActionGate;
+  onSelect: (sel: Selection) => void;
+  /** Opens the options panel for the current selection. */
+  onOpenOptions: () => void;
+}
+
+/** Distance of on-plan controls from a rail's centre line, in screen pixels (constant while zooming). */
+const NEAR_PX = 34;
+const FAR_PX = 92;
+/** Rails shorter than this on screen get no length field at system level. */
+const MIN_RAIL_PX_FOR_FIELD = 110;
+/** Approximate on-screen sizes of the fields, for keeping them from covering each other. */
+const MOVE_FIELD_BOX = { w: 170, h: 50 };
+const LENGTH_FIELD_BOX = { w: 104, h: 50 };
+
+type Box = { sx: number; sy: number; w: number; h: number };
+const overlaps = (a: Box, b: Box) => Math.abs(a.sx - b.sx) * 2 < a.w + b.w && Math.abs(a.sy - b.sy) * 2 < a.h + b.h;
+
+/** Short label for a module type's switch button (its first word). */
+export function typeShortName(name: string): string {
+  return name.split(/\s+/)[0] ?? name;
+}
+
+function Positioned({ at, children, className, testId }: { at: { sx: number; sy: number }; children: ReactNode; className?: string; testId?: string }) {
+  const style: CSSProperties = { transform: `translate(${at.sx}px, ${at.sy}px) translate(-50%, -50%)` };
+  return (
+    <div className={`plan-control${className ? ` ${className}` : ''}`} style={style} data-plan-control data-testid={testId}>
+      {children}
+    </div>
+  );
+}
+
+/**
+ * The on-screen side of a rail for controls "above" it: the unit normal of its screen
+ * direction that points up (or left for a vertical rail), so plus buttons read as above the
+ * rail whatever its heading.
+ */
+function upNormal(view: PlanView, start: PlanVec, end: PlanVec): { nx: number; ny: number } {
+  const a = worldToScreen(view, { x: start[0], z: start[1] });
+  const b = worldToScreen(view, { x: end[0], z: end[1] });
+  const len = Math.hypot(b.sx - a.sx, b.sy - a.sy) || 1;
+  const dx = (b.sx - a.sx) / len;
+  const dy = (b.sy - a.sy) / len;
+  let nx = dy;
+  let ny = -dx;
+  if (ny > 1e-9 || (Math.abs(ny) <= 1e-9 && nx > 0)) {
+    nx = -nx;
+    ny = -ny;
+  }
+  return { nx, ny };
+}
+
+function visible(p: { sx: number; sy: number }, viewport: Viewport): boolean {
+  const m = 120;
+  return p.sx > -m && p.sy > -m && p.sx < viewport.width + m && p.sy < viewport.height + m;
+}
+
+/** Figure 6: red fields move the system (anchor x, z), blue fields set each rail's length. */
+function SystemLevelControls({ system, catalog, view, viewport, gate }: { system: LightSystem; catalog: Catalog; view: PlanView; viewport: Viewport; gate: ActionGate }) {
+  const rails = railPlacements(system, catalog);
+  const anchor = worldToScreen(view, { x: system.x, z: system.z });
+  const first = rails[0];
+  const n = first ? upNormal(view, first.start, first.end) : { nx: 0, ny: -1 };
+  // Put the move fields on the side opposite the length fields, just off the system's start.
+  const movePos = { sx: anchor.sx - n.nx * 44, sy: anchor.sy - n.ny * 44 };
+  const placed: Box[] = [{ ...movePos, ...MOVE_FIELD_BOX }];
+  return (
+    <>
+      {visible(movePos, viewport) && (
+        <Positioned at={movePos} className="move-field" testId={`move-${system.id}`}>
+          <span aria-hidden>x</span>
+          <CommitField
+            label="System position x (m)"
+            value={system.x}
+            onCommit={(x) => {
+              const r = gate.reason('moveSystem', { systemId: system.id, x, z: system.z });
+              if (!r) gate.run('moveSystem', { systemId: system.id, x, z: system.z });
+              return r;
+            }}
+            onRefused={gate.explain}
+          />
+          <span aria-hidden>z</span>
+          <CommitField
+            label="System position z (m)"
+            value={system.z}
+            onCommit={(z) => {
+              const r = gate.reason('moveSystem', { systemId: system.id, x: system.x, z });
+              if (!r) gate.run('moveSystem', { systemId: system.id, x: system.x, z });
+              return r;
+            }}
+            onRefused={gate.explain}
+          />
+        </Positioned>
+      )}
+      {rails.map((r, i) => {
+        const mid = worldToScreen(view, { x: (r.start[0] + r.end[0]) / 2, z: (r.start[1] + r.end[1]) / 2 });
+        const nn = upNormal(view, r.start, r.end);
+        const pos = { sx: mid.sx + nn.nx * NEAR_PX, sy: mid.sy + nn.ny * NEAR_PX };
+        // A field longer than its rail on screen, or one that would cover another field, is left
+        // out until the user zooms in far enough for it to have room.
+        if (!visible(pos, viewport) || r.length * view.scale < MIN_RAIL_PX_FOR_FIELD) return null;
+        const box = { ...pos, ...LENGTH_FIELD_BOX };
+        if (placed.some((b) => overlaps(b, box))) return null;
+        placed.push(box);
+        return (
+          <Positioned key={r.railId} at={pos} className="length-field" testId={`length-${r.railId}`}>
+            <RailLengthField railId={r.railId} railNumber={i + 1} length={r.length} gate={gate} />
+            <span aria-hidden>m</span>
+          </Positioned>
+        );
+      })}
+    </>
+  );
+}
+
+/** Figures 7–10: plus buttons above rails, distribution options, type switches below modules. */
+function ModuleLevelControls({ system, catalog, view, viewport, selection, gate, onSelect, onOpenOptions }: { system: LightSystem; catalog: Catalog; view: PlanView; viewport: Viewport; selection: SelectionPath; gate: ActionGate; onSelect: (s: Selection) => void; onOpenOptions: () => void }) {
+  const rails = railPlacements(system, catalog);
+  const modules = modulePlacements(system, catalog);
+  const out: ReactNode[] = [];
+  rails.forEach((r, i) => {
+    const rail = system.rails[i];
+    const nn = upNormal(view, r.start, r.end);
+    const mid = worldToScreen(view, { x: (r.start[0] + r.end[0]) / 2, z: (r.start[1] + r.end[1]) / 2 });
+    const plusPos = { sx: mid.sx + nn.nx * NEAR_PX, sy: mid.sy + nn.ny * NEAR_PX };
+    // The plus button adds another module like the rail's last one (the catalog's first type on an empty rail).
+    const typeId = rail.modules[rail.modules.length - 1]?.type ?? catalog.moduleTypes[0].id;
+    const typeName = catalog.moduleTypes.find((t) => t.id === typeId)?.name ?? typeId;
+    if (visible(plusPos, viewport)) {
+      out.push(
+        <Positioned key={`plus-${rail.id}`} at={plusPos} className="plus-button" testId={`plus-${rail.id}`}>
+          <ActionButton
+            label={`Add ${typeName} to rail ${i + 1}`}
+            disabledReason={gate.reason('addModule', { railId: rail.id, type: typeId })}
+            onPress={() => {
+              gate.run('addModule', { railId: rail.id, type: typeId });
+              onSelect({ kind: 'rail', id: rail.id });
+            }}
+            onDisabledPress={gate.explain}
+          >
+            +
+          </ActionButton>
+        </Positioned>,
+      );
+    }
+    if (selection.railId === rail.id && !selection.moduleId) {
+      const distPos = { sx: mid.sx + nn.nx * FAR_PX, sy: mid.sy + nn.ny * FAR_PX };
+      if (visible(distPos, viewport)) {
+        out.push(
+          <Positioned key={`dist-${rail.id}`} at={distPos} className="chip-row" testId={`distribution-${rail.id}`}>
+            <DistributionButtons railId={rail.id} current={rail.distribution} gate={gate} compact />
+          </Positioned>,
+        );
+      }
+    }
+  });
+  for (const m of modules) {
+    const rail = system.rails.find((r) => r.id === m.railId);
+    const module = rail?.modules.find((x) => x.id === m.moduleId);
+    const railIndex = system.rails.findIndex((r) => r.id === m.railId);
+    const r = rails[railIndex];
+    if (!module || !r) continue;
+    const nn = upNormal(view, r.start, r.end);
+    const c = worldToScreen(view, { x: m.centre[0], z: m.centre[1] });
+    const pos = { sx: c.sx - nn.nx * NEAR_PX, sy: c.sy - nn.ny * NEAR_PX };
+    if (!visible(pos, viewport)) continue;
+    const type = catalog.moduleTypes.find((t) => t.id === module.type);
+    const selected = selection.moduleId === module.id;
+    out.push(
+      <Positioned key={`type-${module.id}`} at={pos} className="type-switch" testId={`module-${module.id}`}>
+        <ActionButton
+          label={`Module settings: ${type?.name ?? module.type}, ${module.cct} K`}
+          pressed={selected}
+          disabledReason={null}
+          onPress={() => {
+            onSelect({ kind: 'module', id: module.id });
+            onOpenOptions();
+          }}
+        >
+          {typeShortName(type?.name ?? module.type)}
+        </ActionButton>
+      </Positioned>,
+    );
+  }
+  return <>{out}</>;
+}
+
+/**
+ * Controls drawn over the plan at positions from worldToScreen, in screen pixels: they keep
+ * their size (≥ 44 px targets) while the geometry under them scales. Which controls appear
+ * depends on the zoom level, like detail on a map.
+ */
+export function PlanControls(props: PlanControlsProps) {
+  const { config, catalog, view, viewport, level, selection, gate, onSelect, onOpenOptions } = props;
+  if (level === 'system') {
+    const system = config.systems.find((s) => s.id === selection.systemId);
+    return <div className="plan-overlay">{system && <SystemLevelControls system={system} catalog={catalog} view={view} viewport={viewport} gate={gate} />}</div>;
+  }
+  return (
+    <div className="plan-overlay">
+      {config.systems.map((s) => (
+        <ModuleLevelControls key={s.id} system={s} catalog={catalog} view={view} viewport={viewport} selection={selection} gate={gate} onSelect={onSelect} onOpenOptions={onOpenOptions} />
+      ))}
+    </div>
+  );
+}

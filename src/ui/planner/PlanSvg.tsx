@@ -1,0 +1,176 @@
+import { memo, useId, useSyncExternalStore } from 'react';
+import type { Catalog } from '../../core/model/catalogSchema';
+import type { Configuration, LightSystem } from '../../core/model/configuration';
+import { modulePlacements, rectCorners, systemElements, type PlanRect } from '../../core/model/geometry';
+import { moduleFootprint, modulePhotometryPath } from './moduleFootprint';
+import type { FootprintSource } from './footprintSource';
+import { cctTint } from './cctTint';
+import { floorTint } from './finishColour';
+import { defaultSurfaceFinishes } from '../../core/catalog/surfaceFinishes';
+import { gridStep } from './detailLevel';
+import type { PlanPoint, PlanView } from './viewTransform';
+import type { SelectionPath } from './selection';
+
+export interface PlanSvgProps {
+  config: Configuration;
+  catalog: Catalog;
+  view: PlanView;
+  selection: SelectionPath;
+  /** A system being dragged is drawn offset by this much (metres) until it is dropped; faded where it may not be dropped. */
+  drag: { systemId: string; delta: PlanPoint; invalid: boolean } | null;
+  /** Measured floor footprints per photometric file. */
+  footprints: FootprintSource;
+}
+
+const points = (r: PlanRect) => {
+  // rectCorners returns the corners in (−,−), (−,+), (+,−), (+,+) order; reorder to a loop.
+  const c = rectCorners(r);
+  return [c[0], c[1], c[3], c[2]].map((p) => `${p[0]},${p[1]}`).join(' ');
+};
+
+/** Module symbols are drawn wider than the rail profile so they read as separate parts. */
+const MODULE_WIDTH_FACTOR = 1.8;
+
+/** Rails are a few centimetres wide: invisible hit strips keep them easy to tap (44 px across). */
+const HIT_HALF_WIDTH_PX = 22;
+
+function SystemShape({ system, catalog, scale, selected, selectedRailId, selectedModuleId }: { system: LightSystem; catalog: Catalog; scale: number; selected: boolean; selectedRailId?: string; selectedModuleId?: string }) {
+  const elements = systemElements(system, catalog);
+  const modules = modulePlacements(system, catalog);
+  const railIds = system.rails.map((r) => r.id);
+  return (
+    <g data-system-id={system.id} className="plan-system" style={{ cursor: 'move' }}>
+      {elements.map((rects, i) =>
+        rects.map((r, k) => (
+          <polygon key={`hit-${i}-${k}`} points={points({ ...r, halfWidth: Math.max(r.halfWidth, HIT_HALF_WIDTH_PX / scale) })} data-rail-id={i % 2 === 0 ? railIds[i / 2] : undefined} fill="transparent" />
+        )),
+      )}
+      {elements.map((rects, i) => {
+        // Elements alternate rail, connector, rail, ... (systemElements' contract).
+        const isRail = i % 2 === 0;
+        const railId = isRail ? railIds[i / 2] : undefined;
+        return rects.map((r, k) => (
+          <polygon
+            key={`${i}-${k}`}
+            points={points(r)}
+            data-rail-id={railId}
+            fill={isRail ? (railId === selectedRailId ? '#3b7be0' : '#1f5fbf') : '#6b7280'}
+            stroke={selected ? '#c0392b' : '#0f2f5f'}
+            strokeWidth={selected ? 3 : 1}
+            vectorEffect="non-scaling-stroke"
+          />
+        ));
+      })}
+      {modules.map((m) => {
+        const module = system.rails.flatMap((r) => r.modules).find((x) => x.id === m.moduleId);
+        const rect: PlanRect = { ...m.footprint, halfWidth: m.footprint.halfWidth * MODULE_WIDTH_FACTOR };
+        return (
+          <polygon
+            key={m.moduleId}
+            points={points(rect)}
+            data-module-id={m.moduleId}
+            fill={module ? cctTint(module.cct) : '#fff'}
+            stroke={m.moduleId === selectedModuleId ? '#c0392b' : '#1d2330'}
+            strokeWidth={m.moduleId === selectedModuleId ? 3 : 1}
+            vectorEffect="non-scaling-stroke"
+          />
+        );
+      })}
+    </g>
+  );
+}
+
+/**
+ * The room drawn from above as SVG (plan x = world x, plan y = world z). Geometry is drawn in
+ * metres inside one group whose transform is the view, with non-scaling strokes, so lines keep
+ * their on-screen width at every zoom; the constant-size controls live in PlanControls.
+ */
+export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection, drag, footprints }: PlanSvgProps) {
+  const clipId = useId();
+  // Re-render when a photometric file arrives.
+  useSyncExternalStore(footprints.subscribe, footprints.version);
+  // Every optic in use has its measured footprint (or failed to load): tests wait for this.
+  const footprintsReady = config.systems.every((s) =>
+    s.rails.every((r) => r.modules.every((m) => {
+      const p = modulePhotometryPath(m, catalog);
+      return p === null || footprints.get(p) !== undefined;
+    })),
+  );
+  const { width, depth, height } = config.room;
+  const step = gridStep(view.scale);
+  const gridLines: { x1: number; z1: number; x2: number; z2: number; major: boolean }[] = [];
+  for (let i = 1; i * step < width - 1e-9; i++) gridLines.push({ x1: i * step, z1: 0, x2: i * step, z2: depth, major: Math.abs(i * step - Math.round(i * step)) < 1e-9 });
+  for (let i = 1; i * step < depth - 1e-9; i++) gridLines.push({ x1: 0, z1: i * step, x2: width, z2: i * step, major: Math.abs(i * step - Math.round(i * step)) < 1e-9 });
+
+  return (
+    <svg className="plan-svg" role="img" aria-label={`Room plan, ${width} by ${depth} m, ${config.systems.length} lighting systems`} data-testid="plan-svg" data-footprints={footprintsReady ? 'ready' : 'loading'}>
+      <defs>
+        <clipPath id={clipId}>
+          <rect x={0} y={0} width={width} height={depth} />
+        </clipPath>
+      </defs>
+      <g transform={`matrix(${view.scale} 0 0 ${view.scale} ${view.offsetX} ${view.offsetY})`}>
+        <rect x={0} y={0} width={width} height={depth} fill={floorTint(config.room.reflectance.floor, defaultSurfaceFinishes)} data-testid="plan-floor" />
+        {gridLines.map((l, i) => (
+          <line key={i} x1={l.x1} y1={l.z1} x2={l.x2} y2={l.z2} stroke={l.major ? '#d3d8e0' : '#eceff3'} strokeWidth={1} vectorEffect="non-scaling-stroke" />
+        ))}
+        <g clipPath={`url(#${clipId})`} pointerEvents="none">
+          {config.systems.map((s) => {
+            const d = drag?.systemId === s.id ? drag.delta : { x: 0, z: 0 };
+            const h = height - s.suspension;
+            return (
+              <g key={s.id} transform={`translate(${d.x} ${d.z})`}>
+                {modulePlacements(s, catalog).map((m) => {
+                  const module = s.rails.flatMap((r) => r.modules).find((x) => x.id === m.moduleId);
+                  if (!module) return null;
+                  const path = modulePhotometryPath(module, catalog);
+                  const f = moduleFootprint(m, module, catalog, h, path ? footprints.get(path) : null);
+                  if (!f) return null;
+                  const paint = {
+                    fill: cctTint(module.cct),
+                    fillOpacity: 0.2,
+                    stroke: '#c98a1c',
+                    strokeOpacity: 0.7,
+                    strokeWidth: 1,
+                    vectorEffect: 'non-scaling-stroke' as const,
+                    'data-footprint-for': m.moduleId,
+                  };
+                  if (f.kind === 'polygon') return <polygon key={m.moduleId} points={f.points.map((p) => `${p.x},${p.z}`).join(' ')} {...paint} />;
+                  const e = f.ellipse;
+                  return (
+                    <ellipse
+                      key={m.moduleId}
+                      cx={e.center.x}
+                      cy={e.center.z}
+                      rx={Math.max(e.rx, 1e-3)}
+                      ry={Math.max(e.ry, 1e-3)}
+                      transform={`rotate(${e.rotationDeg} ${e.center.x} ${e.center.z})`}
+                      {...paint}
+                    />
+                  );
+                })}
+              </g>
+            );
+          })}
+        </g>
+        <rect x={0} y={0} width={width} height={depth} fill="none" stroke="#1d2330" strokeWidth={3} vectorEffect="non-scaling-stroke" />
+        {config.systems.map((s) => {
+          const d = drag?.systemId === s.id ? drag.delta : { x: 0, z: 0 };
+          const refused = drag?.systemId === s.id && drag.invalid;
+          return (
+            <g key={s.id} transform={`translate(${d.x} ${d.z})`} opacity={refused ? 0.4 : 1} data-drop-refused={refused || undefined}>
+              <SystemShape
+                system={s}
+                catalog={catalog}
+                scale={view.scale}
+                selected={selection.systemId === s.id}
+                selectedRailId={selection.systemId === s.id ? selection.railId : undefined}
+                selectedModuleId={selection.systemId === s.id ? selection.moduleId : undefined}
+              />
+            </g>
+          );
+        })}
+      </g>
+    </svg>
+  );
+});

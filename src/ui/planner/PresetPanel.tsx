@@ -1,0 +1,67 @@
+import { memo } from 'react';
+import type { Catalog, PresetSpec } from '../../core/model/catalogSchema';
+import { createConfiguration } from '../../core/model/configuration';
+import { rectCorners, systemBounds, systemElements } from '../../core/model/geometry';
+import { instantiatePreset } from '../../core/model/presets';
+import { ActionButton } from './ActionButton';
+import type { ActionGate } from './actionGate';
+
+/** A small drawing of a preset's rails, computed from the model's own geometry (not an image). */
+const PresetThumbnail = memo(function PresetThumbnail({ preset, catalog }: { preset: PresetSpec; catalog: Catalog }) {
+  const config = instantiatePreset(createConfiguration(), preset, catalog, { x: 0, z: 0, rotation: 0 }, catalog.suspension.default);
+  const system = config.systems[0];
+  const b = systemBounds(system, catalog);
+  const size = Math.max(b.maxX - b.minX, b.maxZ - b.minZ, 0.5);
+  const pad = size * 0.08;
+  const polys = systemElements(system, catalog)
+    .flat()
+    .map((r) => {
+      const c = rectCorners({ ...r, halfWidth: Math.max(r.halfWidth, size * 0.025) });
+      return [c[0], c[1], c[3], c[2]].map((p) => `${p[0]},${p[1]}`).join(' ');
+    });
+  return (
+    <svg width={48} height={48} viewBox={`${b.minX - pad} ${b.minZ - pad} ${size + 2 * pad} ${size + 2 * pad}`} aria-hidden>
+      {polys.map((p, i) => (
+        <polygon key={i} points={p} fill="#1f5fbf" />
+      ))}
+    </svg>
+  );
+});
+
+export interface PresetPanelProps {
+  catalog: Catalog;
+  gate: ActionGate;
+  /** Runs after a preset was placed (the app selects the new system). */
+  onPlaced: () => void;
+}
+
+/** The configurator paper's right-hand bar: presets placed into the room at a free spot the model finds. */
+export function PresetPanel({ catalog, gate, onPlaced }: PresetPanelProps) {
+  return (
+    <section className="panel-section" aria-labelledby="presets-title">
+      <h2 id="presets-title">Presets</h2>
+      <ul className="preset-list">
+        {catalog.presets.map((p) => (
+          <li key={p.id}>
+            <ActionButton
+              label={`Place preset ${p.name}`}
+              disabledReason={gate.reason('placePreset', { presetId: p.id })}
+              onPress={() => {
+                gate.run('placePreset', { presetId: p.id });
+                onPlaced();
+              }}
+              onDisabledPress={gate.explain}
+              testId={`preset-${p.id}`}
+            >
+              <PresetThumbnail preset={p} catalog={catalog} />
+              <span>
+                <span className="preset-name">{p.name}</span>
+                <span className="preset-detail">{p.description}</span>
+              </span>
+            </ActionButton>
+          </li>
+        ))}
+      </ul>
+    </section>
+  );
+}

@@ -1,0 +1,22 @@
+import { CommitField } from './CommitField';
+import type { ActionGate } from './actionGate';
+
+/**
+ * The rail length input (configurator paper, fig. 6, blue fields): commits through the
+ * always-valid `setRailLength` action, so a refused length snaps back and the
+ * model's reason is shown. Used next to the rail in the plan and in the options panel.
+ */
+export function RailLengthField({ railId, railNumber, length, gate }: { railId: string; railNumber: number; length: number; gate: ActionGate }) {
+  return (
+    <CommitField
+      label={`Rail ${railNumber} length (m)`}
+      value={length}
+      onCommit={(value) => {
+        const reason = gate.reason('setRailLength', { railId, length: value });
+        if (!reason) gate.run('setRailLength', { railId, length: value });
+        return reason;
+      }}
+      onRefused={gate.explain}
+    />
+  );
+}

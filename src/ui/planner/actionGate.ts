@@ -1,0 +1,35 @@
+import { checkAction, type ActionName, type ActionParams } from '../../core/model/actionDefinitions';
+import type { Catalog } from '../../core/model/catalogSchema';
+import type { Configuration } from '../../core/model/configuration';
+
+/**
+ * How the planner asks the model whether an action may run and runs it. Every control's
+ * disabled state is `reason(...)` — the model's own isEnabled — so the UI cannot disagree with
+ * the rules.
+ */
+export interface ActionGate {
+  /** null when enabled, else the model's reason. */
+  reason<N extends ActionName>(name: N, params: ActionParams<N>): string | null;
+  /** Runs an action (the store re-checks isEnabled and records it for undo). */
+  run<N extends ActionName>(name: N, params: ActionParams<N>): void;
+  /** Shows why something cannot be done (status line for touch users). */
+  explain(reason: string): void;
+}
+
+export function createActionGate(
+  config: Configuration,
+  catalog: Catalog,
+  run: (name: ActionName, params: unknown) => void,
+  explain: (reason: string) => void,
+): ActionGate {
+  return {
+    reason(name, params) {
+      const e = checkAction(config, name, params, catalog);
+      return e === true ? null : e.reason;
+    },
+    run(name, params) {
+      run(name, params);
+    },
+    explain,
+  };
+}

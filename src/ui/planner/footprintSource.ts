@@ -1,0 +1,68 @@
+import { photometryWarnings } from '../../core/photometry/checks';
+import { parsePhotometry } from '../../core/photometry/parsePhotometry';
+import { floorFootprint, type FloorFootprint } from './floorFootprint';
+
+/**
+ * Loads each photometric file the plan needs once (fetch + parse + floorFootprint) and tells
+ * subscribers when one arrives. The plan draws a module's measured footprint when it is
+ * loaded, and the catalog beam-angle cone before that or if the file cannot be loaded.
+ */
+export interface FootprintSource {
+  /** The footprint for a catalog photometry path: undefined while loading, null if unavailable. */
+  get(path: string): FloorFootprint | null | undefined;
+  /**
+   * The file's non-fatal findings (photometryWarnings: 360° plane ≠ 0° plane, stated vs
+   * integrated lumens, …), one line each without the file name; empty while loading or
+   * when the file could not be read.
+   */
+  warnings(path: string): readonly string[];
+  /** Starts loading paths not seen before. */
+  request(paths: readonly string[]): void;
+  subscribe(listener: () => void): () => void;
+  /** Increases whenever a file finished (for useSyncExternalStore snapshots). */
+  version(): number;
+}
+
+export function createFootprintSource(baseUrl: string, fetchFn: typeof fetch = (...a) => fetch(...a)): FootprintSource {
+  const results = new Map<string, FloorFootprint | null>();
+  const warnings = new Map<string, readonly string[]>();
+  const pending = new Set<string>();
+  const listeners = new Set<() => void>();
+  let version = 0;
+  const done = (path: string, value: FloorFootprint | null) => {
+    pending.delete(path);
+    results.set(path, value);
+    version++;
+    for (const l of [...listeners]) l();
+  };
+  return {
+    get: (path) => results.get(path),
+    warnings: (path) => warnings.get(path) ?? [],
+    request(paths) {
+      for (const path of paths) {
+        if (results.has(path) || pending.has(path)) continue;
+        pending.add(path);
+        fetchFn(baseUrl + path)
+          .then((r) => {
+            if (!r.ok) throw new Error(`${path}: HTTP ${r.status}`);
+            return r.arrayBuffer();
+          })
+          .then((buf) => {
+            const ph = parsePhotometry(new Uint8Array(buf), path);
+            warnings.set(path, photometryWarnings(ph));
+            done(path, floorFootprint(ph));
+          })
+          .catch((e: unknown) => {
+            // The cone from the catalog's beam angle stands in; the 3D view reports file problems.
+            console.warn('luxbox: no measured footprint for', path, e);
+            done(path, null);
+          });
+      }
+    },
+    subscribe(listener) {
+      listeners.add(listener);
+      return () => listeners.delete(listener);
+    },
+    version: () => version,
+  };
+}

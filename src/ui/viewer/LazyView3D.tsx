@@ -1,0 +1,53 @@
+import { Component, lazy, Suspense, useMemo, type ReactNode } from 'react';
+import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
+import { setViewerStatus, CLOSED_STATUS } from './viewerStatus';
+import { webglSupportProblem } from './webglSupport';
+
+// The 3D chunk (three.js, the baker, the relight engine) is downloaded only when 3D is first opened.
+const View3D = lazy(() => import('./View3D'));
+
+export interface LazyView3DProps {
+  store: ConfiguratorStore;
+  onBack: () => void;
+}
+
+function Message({ text, onBack, testId }: { text: string; onBack: () => void; testId: string }) {
+  return (
+    <section className="view3d-message" role="alert" data-testid={testId}>
+      <div>
+        <p>{text}</p>
+        <button type="button" className="btn btn-primary" onClick={onBack}>
+          Back to 2D plan
+        </button>
+      </div>
+    </section>
+  );
+}
+
+/** A failed chunk download or a crash inside the 3D view must not take the planner down. */
+class ViewerBoundary extends Component<{ onBack: () => void; children: ReactNode }, { error: string | null }> {
+  override state = { error: null as string | null };
+  static getDerivedStateFromError(error: Error) {
+    return { error: error.message || 'unknown error' };
+  }
+  override render() {
+    if (this.state.error) return <Message text={`The 3D view could not be loaded (${this.state.error}). Your configuration is unchanged.`} onBack={this.props.onBack} testId="view3d-error" />;
+    return this.props.children;
+  }
+}
+
+/** What the 2D/3D toggle shows in 3D: a support check, then the lazily loaded viewer. */
+export function LazyView3D({ store, onBack }: LazyView3DProps) {
+  const problem = useMemo(() => webglSupportProblem(), []);
+  if (problem) {
+    setViewerStatus(store, { ...CLOSED_STATUS, error: problem });
+    return <Message text={problem} onBack={onBack} testId="view3d-unsupported" />;
+  }
+  return (
+    <ViewerBoundary onBack={onBack}>
+      <Suspense fallback={<Message text="Loading the 3D view…" onBack={onBack} testId="view3d-loading" />}>
+        <View3D store={store} onBack={onBack} />
+      </Suspense>
+    </ViewerBoundary>
+  );
+}

@@ -1,0 +1,282 @@
+import { useEffect, useMemo, useRef, useState } from 'react';
+import { useStore } from 'zustand';
+import type { BakeScene } from '../../engines/bake/bakeScene';
+import { toLightingScene } from '../../core/model/toLightingScene';
+import { photometryWarnings } from '../../core/photometry/checks';
+import { PhotometryWarnings, type PhotometryNote } from '../shared/PhotometryWarnings';
+import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
+import { CAMERA_PRESETS, type CameraPresetName } from '../../engines/view/cameraPresets';
+import { createViewerController, type ViewerController } from '../../engines/view/createViewerController';
+import { legendPosition, turbo } from '../../engines/view/falseColorScale';
+import { fixturesFromConfiguration } from '../../engines/view/fixtures';
+import { floorStats, workPlaneStats, type IlluminanceStats } from '../../engines/view/lightStats';
+import { loadPhotometry } from './loadPhotometry';
+import type { ViewMode } from '../../engines/view/roomView';
+import { CLOSED_STATUS, setViewerStatus, type ViewerStatus } from './viewerStatus';
+import './viewer.css';
+
+export interface View3DProps {
+  store: ConfiguratorStore;
+  onBack: () => void;
+}
+
+const PRESET_LABEL: Record<CameraPresetName, string> = { eye: 'Eye height', top: 'Top', corner: 'Corner' };
+const fmt = (v: number) => (v >= 100 ? v.toFixed(0) : v >= 10 ? v.toFixed(1) : v.toFixed(2));
+
+function StatsRow({ label, s, testId }: { label: string; s: IlluminanceStats | null; testId: string }) {
+  return (
+    <tr data-testid={testId}>
+      <th scope="row">{label}</th>
+      <td>{s ? fmt(s.avg) : '–'}</td>
+      <td>{s ? fmt(s.min) : '–'}</td>
+      <td>{s ? fmt(s.max) : '–'}</td>
+      <td>{s ? s.u0.toFixed(2) : '–'}</td>
+    </tr>
+  );
+}
+
+/** The 3D view (lazily loaded chunk: three.js and the baker). Reads the configuration, never changes it except through store actions. */
+export default function View3D({ store, onBack }: View3DProps) {
+  const config = useStore(store, (s) => s.config);
+  const catalog = useStore(store, (s) => s.catalog);
+  const canvasRef = useRef<HTMLCanvasElement>(null);
+  const wrapRef = useRef<HTMLDivElement>(null);
+  const ctrl = useRef<ViewerController | null>(null);
+  const sceneRef = useRef<BakeScene | null>(null);
+  const status = useRef<ViewerStatus>({ ...CLOSED_STATUS, open: true });
+  const mountedAt = useRef(0);
+  const [progress, setProgress] = useState({ fraction: 0, done: false, lit: false });
+  const [error, setError] = useState<string | null>(null);
+  const [mode, setMode] = useState<ViewMode>('light');
+  const [ev, setEv] = useState(0);
+  const [preset, setPreset] = useState<CameraPresetName>('corner');
+  const [levels, setLevels] = useState<number[]>([]);
+  const [floor, setFloor] = useState<IlluminanceStats | null>(null);
+  const [plane, setPlane] = useState<{ on: boolean; height: number }>({ on: false, height: 0.75 });
+  const [planeStats, setPlaneStats] = useState<IlluminanceStats | null>(null);
+  const [lost, setLost] = useState(false);
+  const [photometryNotes, setPhotometryNotes] = useState<PhotometryNote[]>([]);
+  const litRef = useRef<Parameters<Parameters<typeof createViewerController>[1]['onMaps']>[0] | null>(null);
+  const [mapsVersion, setMapsVersion] = useState(0);
+
+  const publish = (patch: Partial<ViewerStatus>) => {
+    if (!status.current.open && !('open' in patch)) return; // late events after unmount
+    status.current = { ...status.current, ...patch };
+    setViewerStatus(store, status.current);
+  };
+
+  useEffect(() => {
+    const canvas = canvasRef.current!;
+    mountedAt.current = performance.now();
+    let controller: ViewerController;
+    try {
+      controller = createViewerController(canvas, {
+        onProgress: (p) => {
+          setProgress({ fraction: p.fraction, done: p.done, lit: p.lit });
+          publish({ progress: p.fraction, done: p.done, groupBakes: p.groupBakes, relightsOnly: p.relightsOnly });
+        },
+        onMaps: (lit, info) => {
+          litRef.current = lit;
+          setLevels(info.levels);
+          const f = floorStats(lit);
+          setFloor(f);
+          setMapsVersion((v) => v + 1);
+          publish({ lastRelightMs: info.relightMs, floor: { avg: f.avg, min: f.min, max: f.max, u0: f.u0 } });
+        },
+        onFrame: (frames) => {
+          const patch: Partial<ViewerStatus> = { frames };
+          if (!status.current.lit && litRef.current) {
+            patch.lit = true;
+            patch.firstLitMs = performance.now() - mountedAt.current;
+          }
+          publish(patch);
+        },
+        onContext: (state) => {
+          setLost(state === 'lost');
+          if (state === 'lost') publish({ contextLosses: status.current.contextLosses + 1 });
+        },
+        onError: (message) => {
+          setError(message);
+          publish({ error: message });
+        },
+      });
+    } catch (e) {
+      const message = `The 3D view could not start: ${(e as Error).message}`;
+      publish({ error: message });
+      queueMicrotask(() => setError(message));
+      return;
+    }
+    ctrl.current = controller;
+    const wrap = wrapRef.current!;
+    const ro = new ResizeObserver(() => {
+      const r = wrap.getBoundingClientRect();
+      controller.resize(Math.round(r.width), Math.round(r.height));
+    });
+    ro.observe(wrap);
+    publish({ open: true });
+    return () => {
+      ro.disconnect();
+      controller.dispose();
+      ctrl.current = null;
+      status.current = { ...CLOSED_STATUS };
+      setViewerStatus(store, status.current);
+    };
+    // eslint-disable-next-line react-hooks/exhaustive-deps
+  }, [store]);
+
+  // Every configuration change: new scene for the controller (it bakes only what changed).
+  useEffect(() => {
+    let cancelled = false;
+    const scene = toLightingScene(config, catalog);
+    Promise.all(scene.luminaires.map((l) => loadPhotometry(l.photometry)))
+      .then((photometries) => {
+        if (cancelled || !ctrl.current) return;
+        const bakeScene: BakeScene = {
+          room: scene.room,
+          luminaires: scene.luminaires.map((l, i) => ({ photometry: photometries[i], position: l.position, yaw: l.yaw, pitch: l.pitch, roll: l.roll, dimming: l.dimming ?? 1, color: l.color ?? [1, 1, 1] })),
+        };
+        sceneRef.current = bakeScene;
+        ctrl.current.setScene(bakeScene, fixturesFromConfiguration(config, catalog));
+        // Each file in use once, with its warnings (docs/photometry.md, "Warnings").
+        const files = new Map<string, PhotometryNote>();
+        scene.luminaires.forEach((l, i) => {
+          if (!files.has(l.photometry)) files.set(l.photometry, { file: l.photometry, warnings: photometryWarnings(photometries[i]) });
+        });
+        setPhotometryNotes([...files.values()]);
+      })
+      .catch((e: Error) => {
+        if (!cancelled) setError(`Could not load the photometric data: ${e.message}`);
+      });
+    return () => {
+      cancelled = true;
+    };
+  }, [config, catalog]);
+
+  // Work plane: recomputed when the maps settle or the height changes (direct part on the CPU).
+  useEffect(() => {
+    if (!plane.on || !litRef.current || !sceneRef.current) {
+      setPlaneStats(null);
+      return;
+    }
+    const t = setTimeout(() => setPlaneStats(workPlaneStats(sceneRef.current!, litRef.current!, plane.height, 0.1)), progress.done ? 0 : 400);
+    return () => clearTimeout(t);
+  }, [plane, mapsVersion, progress.done]);
+
+  const modules = useMemo(
+    () => config.systems.flatMap((s) => s.rails.flatMap((r) => r.modules.map((m) => ({ id: m.id, type: m.type, dimming: m.dimming })))),
+    [config],
+  );
+  const maxPlane = config.room.height - 0.1;
+
+  return (
+    <section className="viewer3d" aria-label="3D light view" data-testid="view3d">
+      <div className="viewer3d-canvas-wrap" ref={wrapRef}>
+        <canvas ref={canvasRef} className="viewer3d-canvas" data-testid="view3d-canvas" />
+        {!progress.done && !error && (
+          <div className="viewer3d-progress" role="progressbar" aria-label="Light calculation" aria-valuemin={0} aria-valuemax={100} aria-valuenow={Math.round(progress.fraction * 100)} data-testid="view3d-progress">
+            <div className="viewer3d-progress-bar" style={{ width: `${Math.round(progress.fraction * 100)}%` }} />
+            <span>{progress.lit ? 'Refining indirect light' : 'Computing light'} {Math.round(progress.fraction * 100)} %</span>
+          </div>
+        )}
+        {lost && <div className="viewer3d-note" role="status">Graphics were reset by the system; restoring the view…</div>}
+        {error && (
+          <div className="viewer3d-error" role="alert" data-testid="view3d-error">
+            <p>{error}</p>
+            <button type="button" className="btn btn-primary" onClick={onBack}>
+              Back to 2D plan
+            </button>
+          </div>
+        )}
+        {mode === 'lux' && levels.length > 1 && (
+          <div className="viewer3d-legend" aria-label="Illuminance legend (lux)" data-testid="view3d-legend">
+            {[...levels].reverse().map((v) => {
+              const [r, g, b] = turbo(legendPosition(v, levels));
+              return (
+                <div key={v} className="viewer3d-legend-row">
+                  <span className="viewer3d-swatch" style={{ background: `rgb(${r * 255}, ${g * 255}, ${b * 255})` }} />
+                  {v} lx
+                </div>
+              );
+            })}
+          </div>
+        )}
+      </div>
+      <div className="viewer3d-panel">
+        <div className="viewer3d-group" role="group" aria-label="Camera">
+          {CAMERA_PRESETS.map((p) => (
+            <button key={p} type="button" className={`btn${preset === p ? ' btn-primary' : ''}`} aria-pressed={preset === p} onClick={() => { setPreset(p); ctrl.current?.setPreset(p); }} data-testid={`camera-${p}`}>
+              {PRESET_LABEL[p]}
+            </button>
+          ))}
+        </div>
+        <div className="viewer3d-group" role="group" aria-label="View mode">
+          <button type="button" className={`btn${mode === 'light' ? ' btn-primary' : ''}`} aria-pressed={mode === 'light'} onClick={() => { setMode('light'); ctrl.current?.setMode('light'); }}>
+            Light
+          </button>
+          <button type="button" className={`btn${mode === 'lux' ? ' btn-primary' : ''}`} aria-pressed={mode === 'lux'} onClick={() => { setMode('lux'); ctrl.current?.setMode('lux'); }} data-testid="mode-lux">
+            Lux
+          </button>
+        </div>
+        <label className="viewer3d-field">
+          Exposure {ev > 0 ? '+' : ''}
+          {ev.toFixed(1)} EV
+          <input type="range" min={-4} max={4} step={0.5} value={ev} onChange={(e) => { const v = Number(e.target.value); setEv(v); ctrl.current?.setExposureEv(v); }} data-testid="exposure" />
+        </label>
+        <button type="button" className="btn" disabled={ev === 0} onClick={() => { setEv(0); ctrl.current?.setExposureEv(0); }}>
+          Auto exposure
+        </button>
+        <table className="viewer3d-stats" aria-label="Illuminance">
+          <thead>
+            <tr>
+              <th />
+              <th scope="col">Ē lx</th>
+              <th scope="col">Emin</th>
+              <th scope="col">Emax</th>
+              <th scope="col">U0</th>
+            </tr>
+          </thead>
+          <tbody>
+            <StatsRow label="Floor" s={floor} testId="stats-floor" />
+            {plane.on && <StatsRow label={`Plane ${plane.height.toFixed(2)} m`} s={planeStats} testId="stats-plane" />}
+          </tbody>
+        </table>
+        <label className="viewer3d-field viewer3d-inline">
+          <input type="checkbox" checked={plane.on} onChange={(e) => setPlane({ ...plane, on: e.target.checked })} data-testid="plane-on" /> Work plane at
+          <input type="number" min={0.1} max={maxPlane} step={0.05} value={plane.height} onChange={(e) => { const h = Number(e.target.value); if (Number.isFinite(h) && h >= 0.1 && h <= maxPlane) setPlane({ ...plane, height: h }); }} aria-label="Work plane height in metres" /> m
+        </label>
+        <PhotometryWarnings notes={photometryNotes} testId="view3d-photometry-warnings" collapsed />
+        {modules.length > 0 && (
+          <details className="viewer3d-modules">
+            <summary>Dimming ({modules.length} modules)</summary>
+            {modules.map((m) => (
+              <DimmerRow key={m.id} id={m.id} type={m.type} dimming={m.dimming} onCommit={(d) => store.getState().dispatch('setModuleDimming', { moduleId: m.id, dimming: d })} />
+            ))}
+          </details>
+        )}
+        <button type="button" className="btn" onClick={onBack} data-testid="back-2d">
+          Back to 2D plan
+        </button>
+      </div>
+    </section>
+  );
+}
+
+/** A module's dimmer: moves freely while dragged, commits one undoable action on release (follows the stored value when that changes, e.g. on undo). */
+function DimmerRow({ id, type, dimming, onCommit }: { id: string; type: string; dimming: number; onCommit: (d: number) => void }) {
+  const [value, setValue] = useState(dimming);
+  const [stored, setStored] = useState(dimming);
+  if (stored !== dimming) {
+    // Derived state, adjusted during render (react.dev: "storing information from previous renders").
+    setStored(dimming);
+    setValue(dimming);
+  }
+  const commit = () => {
+    if (value !== dimming) onCommit(value);
+  };
+  return (
+    <label className="viewer3d-field">
+      {type} {id}: {Math.round(value * 100)} %
+      <input type="range" min={0} max={1} step={0.05} value={value} onChange={(e) => setValue(Number(e.target.value))} onPointerUp={commit} onKeyUp={commit} onBlur={commit} data-testid={`dim-${id}`} />
+    </label>
+  );
+}

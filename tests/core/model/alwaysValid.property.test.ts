@@ -1,0 +1,137 @@
+/**
+ * The always-valid property (configurator paper §3.2): from any valid state, an enabled
+ * action leads to a valid state, and a refused action, performed anyway,
+ * either throws or leads to a state validate() rejects. Random sequences over
+ * every action, seeded so failures reproduce.
+ */
+import fc from 'fast-check';
+import { describe, expect, it } from 'vitest';
+import { bindAction } from '../../../src/core/model/actionDefinitions';
+import { billOfMaterials } from '../../../src/core/model/billOfMaterials';
+import { createConfiguration, type Configuration } from '../../../src/core/model/configuration';
+import { DISTRIBUTIONS } from '../../../src/core/model/catalogSchema';
+import { MAX_REFLECTANCE, SURFACE_TARGETS, reflectanceRgb } from '../../../src/core/model/reflectance';
+import { toLightingScene } from '../../../src/core/model/toLightingScene';
+import { validate } from '../../../src/core/model/validate';
+import { catalog } from './helpers';
+
+interface Step {
+  kind: number;
+  i: number;
+  j: number;
+  a: number;
+  b: number;
+  c: number;
+}
+
+const unit = fc.double({ min: 0, max: 1, noNaN: true });
+const step = fc.record({ kind: fc.nat(22), i: fc.nat(50), j: fc.nat(50), a: unit, b: unit, c: unit });
+
+const pick = <T>(xs: readonly T[], i: number, fallback: T): T => (xs.length ? xs[i % xs.length] : fallback);
+
+/** Interprets a random step as an action with params against the current state (ids chosen from it). */
+function toAction(s: Configuration, st: Step): [string, unknown] {
+  const systems = s.systems.map((x) => x.id);
+  const rails = s.systems.flatMap((x) => x.rails.map((r) => r.id));
+  const modules = s.systems.flatMap((x) => x.rails.flatMap((r) => r.modules.map((m) => m.id)));
+  const types = catalog.moduleTypes.map((t) => t.id);
+  const { width: W, depth: D } = s.room;
+  const sys = pick(systems, st.i, 'none');
+  const rail = pick(rails, st.i, 'none');
+  const mod = pick(modules, st.i, 'none');
+  // An empty room mostly gets a preset, so sequences spend their steps on systems.
+  if (systems.length === 0 && st.c < 0.8) return ['placePreset', { presetId: pick(catalog.presets, st.j, catalog.presets[0]).id }];
+  switch (st.kind) {
+    case 0:
+      return ['setRoom', { width: 0.5 + st.a * 11, depth: 0.5 + st.b * 11, height: 2 + st.c * 2.5 }];
+    case 1:
+    case 2:
+    case 3:
+      return st.c < 0.5
+        ? ['placePreset', { presetId: pick(catalog.presets, st.j, catalog.presets[0]).id }]
+        : ['placePreset', { presetId: pick(catalog.presets, st.j, catalog.presets[0]).id, x: st.a * W, z: st.b * D, rotation: 90 * (st.i % 4) }];
+    case 4:
+      return ['deleteSystem', { systemId: st.j % 5 === 0 ? sys : 'none' }];
+    case 5:
+      return ['moveSystem', { systemId: sys, x: -0.5 + st.a * (W + 1), z: -0.5 + st.b * (D + 1) }];
+    case 6:
+      return ['rotateSystem', { systemId: sys, by: st.c < 0.5 ? 90 * (st.j % 4) : -180 + 360 * st.a }];
+    case 7:
+      return ['setSuspension', { systemId: sys, suspension: st.a * 2.5 }];
+    case 8:
+    case 9:
+      return ['setRailLength', { railId: rail, length: 0.3 + st.a * 3 }];
+    case 10:
+      return ['setDistribution', { railId: rail, distribution: DISTRIBUTIONS[st.j % 4] }];
+    case 11:
+      return ['addRail', { systemId: sys, connector: pick(catalog.connectors, st.j, catalog.connectors[0]).id, turn: [0, 90, -90, 45][st.i % 4], length: 0.4 + st.a * 3 }];
+    case 12:
+      return ['removeRail', { railId: rail }];
+    case 13:
+    case 14:
+    case 15:
+      return ['addModule', { railId: rail, type: pick(types, st.j, 'spot'), ...(st.c < 0.3 ? { index: st.i % 6 } : {}) }];
+    case 16:
+      return ['removeModule', { moduleId: mod }];
+    case 17:
+      return ['setModuleType', { moduleId: mod, type: pick(types, st.j, 'spot') }];
+    case 18:
+      return ['setModuleCct', { moduleId: mod, cct: [2700, 3000, 4000, 5000][st.j % 4] }];
+    case 19:
+      return ['setModuleBeam', { moduleId: mod, beam: pick(catalog.moduleTypes.flatMap((t) => t.beams.map((b) => b.id)), st.j, 'x') }];
+    case 20:
+      return ['setModuleDimming', { moduleId: mod, dimming: -0.2 + 1.4 * st.a }];
+    case 21:
+      // Grey or RGB finishes from the integer fields (the unit doubles cluster at their ends);
+      // some step past the 0.95 cap or below 0.
+      return ['setReflectance', { surface: SURFACE_TARGETS[st.j % SURFACE_TARGETS.length], value: st.c < 0.5 ? 0.02 * st.i - 0.04 : [(st.i % 20) / 20, 0.02 * st.j, st.i % 3 === 0 ? 0.97 : 0.3] }];
+    default:
+      return ['setRailLength', { railId: rail, length: 0.5 + 0.1 * (st.j % 26) }];
+  }
+}
+
+describe('always-valid property', () => {
+  it('enabled actions keep validate() empty; refused ones would break it', () => {
+    const counts = { enabled: 0, refused: 0 };
+    const finishes = { enabled: 0, refused: 0 };
+    fc.assert(
+      fc.property(unit, unit, unit, fc.array(step, { minLength: 5, maxLength: 30 }), (a, b, c, steps) => {
+        let s = createConfiguration({ width: 2 + a * 8, depth: 2 + b * 8, height: 2.4 + c * 2 });
+        expect(validate(s, catalog)).toEqual([]);
+        for (const st of steps) {
+          const [name, params] = toAction(s, st);
+          const action = bindAction(name, params, catalog);
+          const e = action.isEnabled(s);
+          if (name === 'setReflectance') finishes[e === true ? 'enabled' : 'refused']++;
+          if (e === true) {
+            counts.enabled++;
+            s = action.perform(s);
+            const problems = validate(s, catalog);
+            if (problems.length) throw new Error(`${name} ${JSON.stringify(params)} was enabled but left: ${problems[0].path}: ${problems[0].message}`);
+          } else {
+            counts.refused++;
+            expect(e.reason.length).toBeGreaterThan(0);
+            let broken: Configuration;
+            try {
+              broken = action.perform(s);
+            } catch {
+              continue;
+            }
+            if (validate(broken, catalog).length === 0) throw new Error(`${name} ${JSON.stringify(params)} was refused (${e.reason}) but would have been valid`);
+          }
+        }
+        // derived outputs of any reachable state are finite
+        const scene = toLightingScene(s, catalog);
+        for (const l of scene.luminaires) expect([...l.position, l.yaw, l.roll].every(Number.isFinite)).toBe(true);
+        for (const r of Object.values(scene.room.reflectance)) expect(reflectanceRgb(r).every((v) => v >= 0 && v <= MAX_REFLECTANCE)).toBe(true);
+        expect(Number.isFinite(billOfMaterials(s, catalog).total)).toBe(true);
+      }),
+      { seed: 20240917, numRuns: 2000 },
+    );
+    // both branches were exercised in bulk
+    expect(counts.enabled).toBeGreaterThan(6000);
+    expect(counts.refused).toBeGreaterThan(6000);
+    expect(finishes.enabled).toBeGreaterThan(500);
+    expect(finishes.refused).toBeGreaterThan(40);
+  }, 120_000);
+});

@@ -1,0 +1,46 @@
+import { defaultCatalog } from '../../../src/core/catalog/defaultCatalog';
+import type { Catalog } from '../../../src/core/model/catalogSchema';
+import { bindAction } from '../../../src/core/model/actionDefinitions';
+import { createConfiguration, type Configuration, type LightSystem } from '../../../src/core/model/configuration';
+
+export const catalog: Catalog = defaultCatalog;
+
+/** Performs an action after asserting it is enabled (test helper). */
+export function run(state: Configuration, name: string, params: unknown, cat: Catalog = catalog): Configuration {
+  const a = bindAction(name, params, cat);
+  const e = a.isEnabled(state);
+  if (e !== true) throw new Error(`${name} ${JSON.stringify(params)} refused: ${e.reason}`);
+  return a.perform(state);
+}
+
+export function enabled(state: Configuration, name: string, params: unknown, cat: Catalog = catalog) {
+  return bindAction(name, params, cat).isEnabled(state);
+}
+
+/** A room with one preset placed at the given anchor and heading. */
+export function withPreset(presetId: string, x: number, z: number, rotation = 0, room = { width: 8, depth: 6, height: 3 }): Configuration {
+  return run(createConfiguration(room), 'placePreset', { presetId, x, z, rotation });
+}
+
+export function only(config: Configuration): LightSystem {
+  if (config.systems.length !== 1) throw new Error('expected one system');
+  return config.systems[0];
+}
+
+/** `systems` rows of `railsPer` 1 m rails joined straight, one row per metre: a 30 × 30 m hall. */
+export function hall(systems: number, railsPer: number, gap = 1): Configuration {
+  let next = 1;
+  const list: LightSystem[] = [];
+  for (let k = 0; k < systems; k++) {
+    list.push({
+      id: `s${next++}`,
+      x: 0.5,
+      z: 0.5 + k * gap,
+      rotation: 0,
+      suspension: catalog.suspension.default,
+      rails: Array.from({ length: railsPer }, () => ({ id: `r${next++}`, length: 1, distribution: 'start' as const, modules: [] })),
+      joints: Array.from({ length: railsPer - 1 }, () => ({ connector: 'straight', turn: 0 })),
+    });
+  }
+  return { ...createConfiguration({ width: 30, depth: 30, height: 3 }), systems: list, nextId: next };
+}

@@ -1,0 +1,37 @@
+import { readFileSync, readdirSync } from 'node:fs';
+import { join } from 'node:path';
+import { parsePhotometry, type Photometry } from '../../../src/core/photometry';
+
+export const REAL_DIR = 'public/ies';
+export const FIXTURE_DIR = 'tests/fixtures/photometry';
+
+export const realFiles = (): string[] => readdirSync(REAL_DIR).filter((f) => /\.(ies|ldt)$/i.test(f)).sort();
+export const fixtureFiles = (): string[] => readdirSync(FIXTURE_DIR).filter((f) => /\.(ies|ldt)$/i.test(f)).sort();
+
+export function loadReal(name: string): Photometry {
+  return parsePhotometry(readFileSync(join(REAL_DIR, name)), name);
+}
+
+export function loadFixture(name: string): Photometry {
+  return parsePhotometry(readFileSync(join(FIXTURE_DIR, name)), name, {
+    resolveTilt: (tilt) => {
+      try {
+        return readFileSync(join(FIXTURE_DIR, tilt), 'latin1');
+      } catch {
+        return undefined;
+      }
+    },
+  });
+}
+
+/** Deterministic PRNG (mulberry32) for the fuzz and sampling tests. */
+export function rng(seed: number): () => number {
+  let a = seed >>> 0;
+  return () => {
+    a = (a + 0x6d2b79f5) >>> 0;
+    let t = a;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}

@@ -1,0 +1,115 @@
+/**
+ * Every generated shader variant compiles and links on a real WebGL2 context
+ * (headless-gl / ANGLE): the features are enumerated, not sampled. Also the
+ * program cache: an identical scene compiles nothing new.
+ */
+import { describe, expect, it } from 'vitest';
+import { SURFACE_NAMES, type Rgb } from '../../../src/core/model/lightingScene';
+import { blurFragment, combineFragment } from '../../../shaders/passes.glsl';
+import { brightGatherFragment, residualFragment, tileSumFragment } from '../../../shaders/brightPatch.glsl';
+import { cachedProgramCount, getProgram } from '../../../src/engines/bake/glResources';
+import { generateDirectShader, type DirectLamp } from '../../../src/engines/bake/generateDirectShader';
+import { generateGatherShader } from '../../../src/engines/bake/generateGatherShader';
+import { buildProfileTable } from '../../../src/engines/bake/profileTable';
+import { luminaireRotation } from '../../../src/engines/bake/luminaireRotation';
+import { surfaceLayouts } from '../../../src/engines/bake/surfaceLayout';
+import { createBaker } from '../../../src/engines/bake/createBaker';
+import { basePhotometry, isotropic, spot, uniformRoom } from './bakeTestKit';
+import { withHeadlessGL } from './withHeadlessGL';
+
+const gl = withHeadlessGL();
+gl.getExtension('EXT_color_buffer_float');
+
+// Profiles covering each lookup path: rotational + uniform γ; rotational + mapped γ;
+// full C grid, uniform both; bilateral-like mapped C; mapped γ finer than the bin cap.
+const profiles = [
+  isotropic(100),
+  spot(1000, 5, 2, 0.5),
+  basePhotometry({ verticalAngles: [0, 3, 10, 45, 90, 90.01, 180], candela: [[5, 5, 4, 2, 1, 0, 0]] }),
+  basePhotometry({ symmetry: 'none', verticalAngles: [0, 90, 180], horizontalAngles: [0, 90, 180, 270, 360], candela: Array.from({ length: 5 }, (_, h) => [10 + h, 5, 0]) }),
+  basePhotometry({ symmetry: 'none', verticalAngles: [0, 45, 90, 90.01, 180], horizontalAngles: [0, 10, 90, 300, 360], candela: Array.from({ length: 5 }, () => [3, 2, 1, 0, 0]) }),
+  basePhotometry({ verticalAngles: Array.from({ length: 20001 }, (_, i) => (i * 180) / 20000), candela: [Array.from({ length: 20001 }, () => 1)] }),
+  basePhotometry({ verticalAngles: [0, ...Array.from({ length: 9000 }, (_, i) => 0.001 + i * 0.01), 180], candela: [Array.from({ length: 9002 }, () => 1)] }),
+];
+const table = buildProfileTable(profiles);
+const layouts = surfaceLayouts({ width: 3, height: 2.5, depth: 4 }, 0.25, 64);
+const compiles = (source: string) => expect(() => getProgram(gl, source)).not.toThrow();
+
+describe('generated shaders compile', () => {
+  it('the profile table takes every lookup path', () => {
+    const kinds = table.layouts.map((l) => `${l.horizontal ? 'C' : 'rot'}:${l.vertical.uniform ? 'u' : 'm'}${l.horizontal ? (l.horizontal.uniform ? 'u' : 'm') : ''}`);
+    expect(kinds).toEqual(['rot:u', 'rot:u', 'rot:m', 'C:uu', 'C:mm', 'rot:u', 'rot:m']);
+    // The last grid is finer than the bin-table cap: several angles share a bin.
+    expect(table.layouts[6].vertical.mapSize).toBe(8192);
+  });
+
+  for (const [p, profile] of table.layouts.entries()) {
+    for (const sources of [1, 6]) {
+      it(`direct: profile ${p}, ${sources} point source(s), every surface`, () => {
+        const lamp: DirectLamp = {
+          profile,
+          rotation: luminaireRotation(10, 20, 30),
+          sources: Array.from({ length: sources }, (_, k) => [1 + 0.01 * k, 1.2, 2]),
+          weight: [1, 0.5, 0.25],
+        };
+        for (const layout of layouts) compiles(generateDirectShader(layout, [lamp]));
+      });
+    }
+  }
+
+  it('direct: many luminaires with all profiles in one shader', () => {
+    const lamps: DirectLamp[] = table.layouts.map((profile, k) => ({ profile, rotation: luminaireRotation(k * 40, k * 10, 0), sources: [[0.5 + 0.3 * k, 1, 1]], weight: [1, 1, 1] }));
+    compiles(generateDirectShader(layouts[0], lamps));
+  });
+
+  const reflectances: [string, Rgb[]][] = [
+    ['all grey', SURFACE_NAMES.map((): Rgb => [0.5, 0.5, 0.5])],
+    ['some black', SURFACE_NAMES.map((_, i): Rgb => (i % 2 ? [0, 0, 0] : [0.3, 0.6, 0.9]))],
+    ['only one reflecting', SURFACE_NAMES.map((_, i): Rgb => (i === 0 ? [0.2, 0.2, 0.2] : [0, 0, 0]))],
+  ];
+  for (const [name, rho] of reflectances) {
+    it(`gather: ${name}, every receiving surface`, () => {
+      for (const layout of layouts) compiles(generateGatherShader(layout, [3, 2.5, 4], rho));
+    });
+  }
+
+  it('direct: texel means (sub-sampling) and a tall opening (faces emitting one hemisphere each)', () => {
+    const lamp: DirectLamp = {
+      profile: table.layouts[1],
+      rotation: luminaireRotation(0, 10, 0),
+      sources: [[1, 2.2, 2], [1, 2.4, 2]],
+      sides: [-1, 1],
+      weight: [1, 1, 1],
+    };
+    for (const layout of layouts) compiles(generateDirectShader(layout, [lamp, { ...lamp, sides: undefined }], 8));
+  });
+
+  it('fixed passes: combine and blur', () => {
+    compiles(combineFragment);
+    // Bright-patch passes (brightPatches.ts).
+    compiles(tileSumFragment);
+    compiles(residualFragment);
+    compiles(brightGatherFragment);
+    compiles(blurFragment);
+  });
+
+  it('identical scenes reuse compiled programs (cache keyed by source)', () => {
+    const baker = createBaker(gl);
+    const scene = { room: uniformRoom(2, 2, 2, 0.5), luminaires: [{ photometry: spot(500, 20, 5, 1), position: [1, 1.9, 1] as [number, number, number], yaw: 0, pitch: 0, roll: 0 }] };
+    const first = baker.bake(scene, { texelSize: 0.2, samples: 4, bounces: 1 }).report;
+    const before = cachedProgramCount(gl);
+    const second = baker.bake(scene, { texelSize: 0.2, samples: 4, bounces: 1 }).report;
+    expect(cachedProgramCount(gl)).toBe(before);
+    expect(first.shaders.some((s) => !s.cached)).toBe(true);
+    expect(second.shaders.every((s) => s.cached)).toBe(true);
+    // A downlight spot never reaches the ceiling: no direct shader for it.
+    expect(second.shaders.filter((s) => s.pass === 'direct')).toHaveLength(5);
+  });
+
+  it('a black room generates no indirect code', () => {
+    const { report } = createBaker(gl).bake({ room: uniformRoom(2, 2, 2, 0), luminaires: [{ photometry: isotropic(10), position: [1, 1, 1], yaw: 0, pitch: 0, roll: 0 }] }, { texelSize: 0.2 });
+    expect(report.indirectEnabled).toBe(false);
+    expect(report.shaders.map((s) => s.pass)).not.toContain('gather');
+    expect(report.shaders.map((s) => s.pass)).not.toContain('blur');
+  });
+});

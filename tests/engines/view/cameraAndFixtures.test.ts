@@ -1,0 +1,76 @@
+import { describe, expect, it } from 'vitest';
+import { defaultCatalog } from '../../../src/core/catalog/defaultCatalog';
+import { InputError } from '../../../src/core/inputError';
+import { createConfiguration } from '../../../src/core/model/configuration';
+import { toLightingScene } from '../../../src/core/model/toLightingScene';
+import { createConfiguratorStore } from '../../../src/core/store/createConfiguratorStore';
+import { cameraPreset, CAMERA_PRESETS, parseCameraSpec } from '../../../src/engines/view/cameraPresets';
+import { fixturesFromConfiguration, MODULE_HEIGHT, RAIL_HEIGHT } from '../../../src/engines/view/fixtures';
+
+const room = { width: 5, height: 2.8, depth: 4 };
+
+describe('camera presets and --camera', () => {
+  it('eye: inside the room at eye height; top: above, looking down; corner: outside, above the south-east corner', () => {
+    const eye = cameraPreset('eye', room);
+    expect(eye.position[1]).toBeCloseTo(1.6, 9);
+    for (let a = 0; a < 3; a++) expect(eye.position[a]).toBeGreaterThan(0);
+    expect(eye.position[0]).toBeLessThan(room.width);
+    expect(eye.position[2]).toBeLessThan(room.depth);
+    const top = cameraPreset('top', room);
+    expect(top.position[1]).toBeGreaterThan(room.height);
+    expect(Math.hypot(top.position[0] - top.target[0], top.position[2] - top.target[2])).toBeLessThan(0.01);
+    const corner = cameraPreset('corner', room);
+    expect(corner.position[0]).toBeGreaterThan(room.width);
+    expect(corner.position[1]).toBeGreaterThan(room.height);
+    expect(corner.position[2]).toBeGreaterThan(room.depth);
+  });
+
+  it('top view sees the whole floor: half-extent within the half field of view', () => {
+    const top = cameraPreset('top', room);
+    const dist = top.position[1];
+    const halfFov = ((top.fov / 2) * Math.PI) / 180;
+    expect(Math.max(room.width, room.depth) / 2).toBeLessThan(dist * Math.tan(halfFov));
+  });
+
+  it('parses presets and JSON; rejects bad specs with an InputError naming the field', () => {
+    for (const p of CAMERA_PRESETS) expect(parseCameraSpec(p, room)).toEqual(cameraPreset(p, room));
+    expect(parseCameraSpec('{"position":[1,2,3],"target":[2,1,2],"fov":50}', room)).toEqual({ position: [1, 2, 3], target: [2, 1, 2], fov: 50 });
+    expect(parseCameraSpec('{"position":[1,2,3],"target":[2,1,2]}', room).fov).toBe(60);
+    const bad: [string, RegExp][] = [
+      ['side', /neither a preset/],
+      ['{"position":[1,2],"target":[0,0,0]}', /position must be three/],
+      ['{"position":[1,2,3],"target":"x"}', /target must be three/],
+      ['{"position":[1,2,3],"target":[0,0,0],"fov":500}', /fov must be/],
+      ['{"position":[1,2,3],"target":[1,2,3]}', /must differ/],
+      ['[1,2,3]', /position must be three/],
+      // Unknown fields are refused (issue 18), with a suggestion for a misspelling.
+      ['{"position":[1,2,3],"target":[0,0,0],"fovy":50}', /^--camera: unknown field 'fovy' \(did you mean 'fov'\?\); expected position, target and fov$/],
+      ['{"postion":[1,2,3],"target":[0,0,0]}', /^--camera: unknown field 'postion' \(did you mean 'position'\?\)/],
+      ['{"position":[1,2,3],"target":[0,0,0],"up":[0,1,0]}', /^--camera: unknown field 'up'; expected position, target and fov$/],
+    ];
+    for (const [spec, message] of bad) {
+      expect(() => parseCameraSpec(spec, room)).toThrow(InputError);
+      expect(() => parseCameraSpec(spec, room)).toThrow(message);
+    }
+  });
+});
+
+describe('fixtures', () => {
+  it('modules sit at the photometric centres the baker uses; rails above them; cables reach the ceiling', () => {
+    const store = createConfiguratorStore({ catalog: defaultCatalog, initial: createConfiguration() });
+    expect(store.getState().dispatch('placePreset', { presetId: 'corner-l' })).toEqual({ ok: true });
+    const config = store.getState().config;
+    const f = fixturesFromConfiguration(config, defaultCatalog);
+    const scene = toLightingScene(config, defaultCatalog);
+    expect(f.modules.map((m) => m.id)).toEqual(scene.luminaires.map((l) => l.id));
+    f.modules.forEach((m, i) => {
+      expect(m.centre).toEqual(scene.luminaires[i].position);
+      expect(m.heading).toBe(scene.luminaires[i].yaw);
+    });
+    const y = scene.luminaires[0].position[1];
+    expect(f.rails).toHaveLength(config.systems[0].rails.length);
+    for (const r of f.rails) expect(r.start[1]).toBeCloseTo(y + MODULE_HEIGHT + RAIL_HEIGHT / 2, 12);
+    expect(f.cables).toHaveLength(config.systems[0].rails.length + 1);
+    for (const c of f.cables) expect(c.top[1]).toBe(config.room.height);
+  });
+});

@@ -1,0 +1,100 @@
+import { describe, expect, it } from 'vitest';
+import type { BakeScene } from '../../../src/engines/bake/bakeScene';
+import { surfaceLayouts } from '../../../src/engines/bake/surfaceLayout';
+import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../../src/core/model/lightingScene';
+import { emptyLitMaps } from '../../../src/engines/relight/relightMaps';
+import { AUTO_EXPOSURE_KEY, autoExposure } from '../../../src/engines/view/autoExposure';
+import { floorStats, statsOf, workPlaneStats } from '../../../src/engines/view/lightStats';
+import { luxScaleTop } from '../../../src/engines/view/luxScaleTop';
+import { isotropic, uniformRoom } from '../bake/bakeTestKit';
+
+describe('illuminance statistics', () => {
+  it('statsOf: average, min, max and U0 = Emin/Ē by hand', () => {
+    expect(statsOf([100, 200, 300, 400])).toEqual({ avg: 250, min: 100, max: 400, u0: 0.4, points: 4 });
+    expect(statsOf([0, 0])).toEqual({ avg: 0, min: 0, max: 0, u0: 0, points: 2 });
+    expect(statsOf([])).toEqual({ avg: 0, min: 0, max: 0, u0: 0, points: 0 });
+  });
+
+  it('floor statistics read photometric Y of the RGB floor map', () => {
+    const lit = emptyLitMaps(surfaceLayouts({ width: 2, height: 2.5, depth: 1 }, 0.5, 64));
+    const f = lit.maps.floor.total; // 4 × 2 texels
+    for (let i = 0; i < f.length / 3; i++) f.set(i < 4 ? [100, 100, 100] : [300, 0, 0], i * 3);
+    const s = floorStats(lit);
+    const red = 300 * 0.2126;
+    expect(s.points).toBe(8);
+    expect(s.min).toBeCloseTo(red, 4);
+    expect(s.max).toBeCloseTo(100, 4);
+    expect(s.avg).toBeCloseTo((400 + 4 * red) / 8, 4);
+  });
+
+  it('work plane, no indirect light: equals the point-source law E = I·h/d³ at every grid point (CIE 171:2006 §5.2)', () => {
+    const I = 1000;
+    const lamp: [number, number, number] = [1.2, 2.5, 1.7];
+    const scene: BakeScene = { room: uniformRoom(3, 2.8, 3.5, 0), luminaires: [{ photometry: isotropic(I), position: lamp, yaw: 0, pitch: 0, roll: 0 }] };
+    const lit = emptyLitMaps(surfaceLayouts(scene.room, 0.1, 64));
+    const h = 0.8;
+    const plane = workPlaneStats(scene, lit, h, 0.25);
+    expect(plane.nx).toBe(12);
+    expect(plane.nz).toBe(14);
+    let worst = 0;
+    for (let k = 0; k < plane.nz; k++) {
+      for (let i = 0; i < plane.nx; i++) {
+        const dx = (i + 0.5) * 0.25 - lamp[0];
+        const dz = (k + 0.5) * 0.25 - lamp[2];
+        const dy = lamp[1] - h;
+        const d = Math.hypot(dx, dy, dz);
+        worst = Math.max(worst, Math.abs(plane.values[k * plane.nx + i] - (I * dy) / d ** 3) / ((I * dy) / d ** 3));
+      }
+    }
+    expect(worst).toBeLessThan(1e-6);
+    expect(plane.max).toBeLessThanOrEqual(I / (lamp[1] - h) ** 2);
+    expect(plane.u0).toBeCloseTo(plane.min / plane.avg, 12);
+  });
+
+  it('work plane adds the floor\'s indirect illuminance (total − direct) at the same plan point', () => {
+    const scene: BakeScene = { room: uniformRoom(2, 2.8, 2, 0.5), luminaires: [] };
+    const lit = emptyLitMaps(surfaceLayouts(scene.room, 0.1, 64));
+    lit.maps.floor.total.fill(40);
+    lit.maps.floor.direct.fill(15);
+    const plane = workPlaneStats(scene, lit, 0.75, 0.5);
+    expect(plane.min).toBeCloseTo(25, 4);
+    expect(plane.max).toBeCloseTo(25, 4);
+  });
+});
+
+describe('automatic exposure', () => {
+  it('maps a uniformly lit room to the key value: exposure = key·π/(ρE)', () => {
+    const lit = emptyLitMaps(surfaceLayouts({ width: 3, height: 2.5, depth: 4 }, 0.25, 64));
+    for (const n of SURFACE_NAMES) lit.maps[n].total.fill(200);
+    const rho = Object.fromEntries(SURFACE_NAMES.map((n) => [n, [0.5, 0.5, 0.5]])) as Record<SurfaceName, Rgb>;
+    expect(autoExposure(lit, rho)).toBeCloseTo((AUTO_EXPOSURE_KEY * Math.PI) / (0.5 * 200), 9);
+  });
+
+  it('is the log (geometric) average: half the area at 4× the light gives 2× the mean luminance', () => {
+    const lit = emptyLitMaps(surfaceLayouts({ width: 2, height: 2, depth: 2 }, 0.5, 64));
+    const rho = Object.fromEntries(SURFACE_NAMES.map((n) => [n, [1, 1, 1]])) as Record<SurfaceName, Rgb>;
+    SURFACE_NAMES.forEach((n, i) => lit.maps[n].total.fill(i < 3 ? 100 : 400));
+    expect(autoExposure(lit, rho)).toBeCloseTo((AUTO_EXPOSURE_KEY * Math.PI) / 200, 9);
+  });
+
+  it('a dark room gets exposure 1, never Infinity', () => {
+    const lit = emptyLitMaps(surfaceLayouts({ width: 2, height: 2, depth: 2 }, 0.5, 64));
+    const rho = Object.fromEntries(SURFACE_NAMES.map((n) => [n, [0.5, 0.5, 0.5]])) as Record<SurfaceName, Rgb>;
+    expect(autoExposure(lit, rho)).toBe(1);
+  });
+});
+
+describe('false-colour scale top', () => {
+  it('is the 99th percentile (one 1/16-decade bin above it), not a tiny hot spot', () => {
+    const lit = emptyLitMaps(surfaceLayouts({ width: 2, height: 2, depth: 2 }, 0.1, 64));
+    let n = 0;
+    for (const name of SURFACE_NAMES) {
+      const m = lit.maps[name].total;
+      for (let i = 0; i < m.length; i += 3) m.fill(n++ % 200 === 0 ? 1e5 : 300, i, i + 3); // 0.5 % hot texels
+    }
+    const top = luxScaleTop(lit);
+    expect(top).toBeGreaterThanOrEqual(300);
+    expect(top).toBeLessThan(300 * 10 ** (1 / 16) * 1.0001);
+    expect(luxScaleTop(emptyLitMaps(surfaceLayouts({ width: 1, height: 1, depth: 1 }, 0.5, 8)))).toBeLessThan(0.01);
+  });
+});
