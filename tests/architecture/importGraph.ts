@@ -167,5 +167,29 @@ export function folderCycles(graph: ReadonlyMap<string, ReadonlySet<string>>): s
     }
   };
   for (const v of [...graph.keys()].sort()) if (!indices.has(v)) visit(v);
-  return components.map((c) => [...c, c[0]]);
+  return components.map((c) => shortestCycle(graph, c));
+}
+
+/** The shortest path from the component's first folder back to itself (breadth first, inside the component). */
+function shortestCycle(graph: ReadonlyMap<string, ReadonlySet<string>>, component: readonly string[]): string[] {
+  const inside = new Set(component);
+  const start = component[0];
+  const previous = new Map<string, string>();
+  const queue = [start];
+  while (queue.length > 0) {
+    const v = queue.shift()!;
+    for (const w of [...(graph.get(v) ?? [])].sort()) {
+      if (!inside.has(w)) continue;
+      if (w === start) {
+        const between: string[] = [];
+        for (let u = v; u !== start; u = previous.get(u)!) between.unshift(u);
+        return [start, ...between, start];
+      }
+      if (!previous.has(w)) {
+        previous.set(w, v);
+        queue.push(w);
+      }
+    }
+  }
+  return [...component, start];
 }
