@@ -1,7 +1,7 @@
 import { defineConfig } from '@playwright/test';
 
 // Debian's chromium (no browser download possible here). SwiftShader gives WebGL2
-// with EXT_color_buffer_float in headless mode (see DESIGN.md, "Stack").
+// with EXT_color_buffer_float in headless mode (docs/architecture.md, "Test machines").
 export const chromiumArgs = [
   '--no-sandbox',
   '--disable-background-networking',
@@ -11,6 +11,9 @@ export const chromiumArgs = [
   '--use-angle=swiftshader',
   '--enable-unsafe-swiftshader',
 ];
+
+// LUXBOX_E2E_PORT lets two copies of the tree run their suites side by side.
+const port = Number(process.env.LUXBOX_E2E_PORT ?? 4173);
 
 export default defineConfig({
   testDir: 'e2e',
@@ -23,12 +26,12 @@ export default defineConfig({
   retries: 0,
   reporter: [['list']],
   use: {
-    baseURL: 'http://localhost:4173',
+    baseURL: `http://localhost:${port}`,
     launchOptions: { executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium', args: chromiumArgs },
   },
   webServer: {
-    command: 'npx vite preview --port 4173 --strictPort',
-    url: 'http://localhost:4173',
+    command: `npx vite preview --port ${port} --strictPort`,
+    url: `http://localhost:${port}`,
     reuseExistingServer: false,
     timeout: 60_000,
   },
