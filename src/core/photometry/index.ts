@@ -12,3 +12,5 @@ export { integrateFlux } from './flux';
 export { tiltFactorAt, tiltMultiplier } from './tilt';
 export { beamAndField, peakIntensity, type BeamField } from './beam';
 export { cctToLinearRgb, planckianXyz, ColorTemperatureError, CCT_MIN_K, CCT_MAX_K } from './cct';
+export { PhotometryReadError } from './PhotometryReadError';
+export { createPhotometryLoader } from './createPhotometryLoader';

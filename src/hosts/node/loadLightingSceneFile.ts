@@ -1,11 +1,13 @@
 import { readFileSync, statSync } from 'node:fs';
 import { basename, dirname, resolve } from 'node:path';
 import type { BakeScene } from '../../engines/bake/bakeScene';
+import { LuminairePhotometryError, resolveBakeScene } from '../../engines/bake/resolveBakeScene';
 import { LightingSceneError, parseLightingScene } from '../../core/model/parseLightingScene';
 import type { LightingScene } from '../../core/model/lightingScene';
 import { excerpt, INPUT_LIMITS, parseUntrustedJson } from '../../core/model/untrustedJson';
-import { parsePhotometry } from '../../core/photometry/parsePhotometry';
+import { PhotometryReadError } from '../../core/photometry/PhotometryReadError';
 import type { Photometry } from '../../core/photometry/types';
+import { createNodePhotometryLoader } from './createNodePhotometryLoader';
 
 export interface LoadedLightingScene {
   scene: LightingScene;
@@ -46,24 +48,26 @@ function readText(path: string, what: string): string {
 export function loadLightingSceneFile(path: string): LoadedLightingScene {
   const source = basename(path);
   const scene = parseLightingScene(parseJsonText(readText(path, source), source), source);
-  const folder = dirname(resolve(path));
-  const photometries = new Map<string, Photometry>();
-  const luminaires = scene.luminaires.map((l, i) => {
-    const file = resolve(folder, l.photometry);
-    let photometry = photometries.get(file);
-    if (!photometry) {
-      let data: Uint8Array;
-      try {
-        data = readFileSync(file);
-      } catch (error) {
-        const code = (error as NodeJS.ErrnoException).code;
-        throw new LightingSceneError(`${source}: luminaires[${i}].photometry: cannot read ${excerpt(l.photometry)} (${code === 'ENOENT' ? 'no such file' : code ?? 'read error'})`);
-      }
-      photometry = parsePhotometry(data, file);
-      photometries.set(file, photometry);
-    }
-    return { photometry, position: l.position, yaw: l.yaw, pitch: l.pitch, roll: l.roll, dimming: l.dimming ?? 1, color: l.color ?? [1, 1, 1] };
-  });
-  const bakeScene: BakeScene = { room: scene.room, luminaires, ...(scene.nearField ? { nearField: scene.nearField } : {}) };
-  return { scene, photometries, bakeScene };
+  return { scene, ...resolveSceneFiles(scene, dirname(resolve(path)), source) };
+}
+
+/**
+ * The baker's scene for a lighting scene whose photometry paths are relative
+ * to `folder`, with the parsed files by absolute path. A file that cannot be
+ * read is `<source>: luminaires[i].photometry: cannot read "<path>" (no such
+ * file)`, the path as the scene wrote it; one that does not parse is the
+ * parser's own error (it names the file).
+ */
+export function resolveSceneFiles(scene: LightingScene, folder: string, source: string): Omit<LoadedLightingScene, 'scene'> {
+  const load = createNodePhotometryLoader();
+  let bakeScene: BakeScene;
+  try {
+    bakeScene = resolveBakeScene(scene, (p) => load(resolve(folder, p)));
+  } catch (error) {
+    if (!(error instanceof LuminairePhotometryError)) throw error;
+    if (!(error.cause instanceof PhotometryReadError)) throw error.cause;
+    throw new LightingSceneError(`${source}: luminaires[${error.luminaire}].photometry: cannot read ${excerpt(error.path)} (${error.cause.reason})`);
+  }
+  const photometries = new Map(scene.luminaires.map((l, i) => [resolve(folder, l.photometry), bakeScene.luminaires[i].photometry]));
+  return { photometries, bakeScene };
 }

@@ -7,10 +7,8 @@ import { LightingSceneError } from '../../core/model/parseLightingScene';
 import { SCENE_FILE_FORMAT, deserializeConfiguration } from '../../core/model/sceneFile';
 import { toLightingScene } from '../../core/model/toLightingScene';
 import type { LightingScene } from '../../core/model/lightingScene';
-import { parsePhotometry } from '../../core/photometry/parsePhotometry';
-import type { Photometry } from '../../core/photometry/types';
 import { fixturesFromConfiguration, fixturesFromScene, type Fixtures } from '../../engines/view/fixtures';
-import { loadLightingSceneFile, parseJsonText } from './loadLightingSceneFile';
+import { loadLightingSceneFile, parseJsonText, resolveSceneFiles } from './loadLightingSceneFile';
 
 /** What `luxbox render` draws: the baker's scene and the hardware to show. */
 export interface RenderInput {
@@ -56,14 +54,6 @@ export function loadRenderInput(path: string): RenderInput {
   }
   const config = deserializeConfiguration(text, defaultCatalog, source);
   const scene = toLightingScene(config, defaultCatalog);
-  const parsed = new Map<string, Photometry>();
-  const luminaires = scene.luminaires.map((l) => {
-    let p = parsed.get(l.photometry);
-    if (!p) {
-      p = parsePhotometry(readFileSync(PUBLIC_DIR + l.photometry), l.photometry);
-      parsed.set(l.photometry, p);
-    }
-    return { photometry: p, position: l.position, yaw: l.yaw, pitch: l.pitch, roll: l.roll, dimming: l.dimming ?? 1, color: l.color ?? [1, 1, 1] };
-  });
-  return { scene, bakeScene: { room: scene.room, luminaires }, fixtures: fixturesFromConfiguration(config, defaultCatalog), kind: 'configuration' };
+  const { bakeScene } = resolveSceneFiles(scene, PUBLIC_DIR, source);
+  return { scene, bakeScene, fixtures: fixturesFromConfiguration(config, defaultCatalog), kind: 'configuration' };
 }
