@@ -1,10 +1,10 @@
 import { photometryWarnings } from '../../core/photometry/checks';
-import { parsePhotometry } from '../../core/photometry/parsePhotometry';
+import { pagePhotometryLoader } from '../shared/pagePhotometryLoader';
 import { floorFootprint, type FloorFootprint } from './floorFootprint';
 
 /**
- * Loads each photometric file the plan needs once (fetch + parse + floorFootprint) and tells
- * subscribers when one arrives. The plan draws a module's measured footprint when it is
+ * Loads each photometric file the plan needs once (the page's photometry loader, shared with
+ * the 3D view, then floorFootprint) and tells subscribers when one arrives. The plan draws a module's measured footprint when it is
  * loaded, and the catalog beam-angle cone before that or if the file cannot be loaded.
  */
 export interface FootprintSource {
@@ -23,7 +23,8 @@ export interface FootprintSource {
   version(): number;
 }
 
-export function createFootprintSource(baseUrl: string, fetchFn: typeof fetch = (...a) => fetch(...a)): FootprintSource {
+export function createFootprintSource(baseUrl: string, fetchFn?: typeof fetch): FootprintSource {
+  const loadPhotometry = pagePhotometryLoader(baseUrl, fetchFn);
   const results = new Map<string, FloorFootprint | null>();
   const warnings = new Map<string, readonly string[]>();
   const pending = new Set<string>();
@@ -42,13 +43,8 @@ export function createFootprintSource(baseUrl: string, fetchFn: typeof fetch = (
       for (const path of paths) {
         if (results.has(path) || pending.has(path)) continue;
         pending.add(path);
-        fetchFn(baseUrl + path)
-          .then((r) => {
-            if (!r.ok) throw new Error(`${path}: HTTP ${r.status}`);
-            return r.arrayBuffer();
-          })
-          .then((buf) => {
-            const ph = parsePhotometry(new Uint8Array(buf), path);
+        loadPhotometry(path)
+          .then((ph) => {
             warnings.set(path, photometryWarnings(ph));
             done(path, floorFootprint(ph));
           })

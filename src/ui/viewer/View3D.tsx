@@ -1,6 +1,7 @@
 import { useEffect, useMemo, useRef, useState } from 'react';
 import { useStore } from 'zustand';
 import type { BakeScene } from '../../engines/bake/bakeScene';
+import { LuminairePhotometryError, resolveBakeScene } from '../../engines/bake/resolveBakeScene';
 import { toLightingScene } from '../../core/model/toLightingScene';
 import { photometryWarnings } from '../../core/photometry/checks';
 import { PhotometryWarnings, type PhotometryNote } from '../shared/PhotometryWarnings';
@@ -10,7 +11,7 @@ import { createViewerController, type ViewerController } from '../../engines/vie
 import { legendPosition, turbo } from '../../engines/view/falseColorScale';
 import { fixturesFromConfiguration } from '../../engines/view/fixtures';
 import { floorStats, workPlaneStats, type IlluminanceStats } from '../../engines/view/lightStats';
-import { loadPhotometry } from './loadPhotometry';
+import { pagePhotometryLoader } from '../shared/pagePhotometryLoader';
 import type { ViewMode } from '../../engines/view/roomView';
 import { CLOSED_STATUS, setViewerStatus, type ViewerStatus } from './viewerStatus';
 import './viewer.css';
@@ -19,6 +20,9 @@ export interface View3DProps {
   store: ConfiguratorStore;
   onBack: () => void;
 }
+
+/** Catalog paths are relative to the page (the app's public folder); the plan's footprints share this cache. */
+const loadPhotometry = pagePhotometryLoader('');
 
 const PRESET_LABEL: Record<CameraPresetName, string> = { eye: 'Eye height', top: 'Top', corner: 'Corner' };
 const fmt = (v: number) => (v >= 100 ? v.toFixed(0) : v >= 10 ? v.toFixed(1) : v.toFixed(2));
@@ -128,24 +132,21 @@ export default function View3D({ store, onBack }: View3DProps) {
   useEffect(() => {
     let cancelled = false;
     const scene = toLightingScene(config, catalog);
-    Promise.all(scene.luminaires.map((l) => loadPhotometry(l.photometry)))
-      .then((photometries) => {
+    resolveBakeScene(scene, loadPhotometry)
+      .then((bakeScene) => {
         if (cancelled || !ctrl.current) return;
-        const bakeScene: BakeScene = {
-          room: scene.room,
-          luminaires: scene.luminaires.map((l, i) => ({ photometry: photometries[i], position: l.position, yaw: l.yaw, pitch: l.pitch, roll: l.roll, dimming: l.dimming ?? 1, color: l.color ?? [1, 1, 1] })),
-        };
         sceneRef.current = bakeScene;
         ctrl.current.setScene(bakeScene, fixturesFromConfiguration(config, catalog));
         // Each file in use once, with its warnings (docs/photometry.md, "Warnings").
         const files = new Map<string, PhotometryNote>();
         scene.luminaires.forEach((l, i) => {
-          if (!files.has(l.photometry)) files.set(l.photometry, { file: l.photometry, warnings: photometryWarnings(photometries[i]) });
+          if (!files.has(l.photometry)) files.set(l.photometry, { file: l.photometry, warnings: photometryWarnings(bakeScene.luminaires[i].photometry) });
         });
         setPhotometryNotes([...files.values()]);
       })
       .catch((e: Error) => {
-        if (!cancelled) setError(`Could not load the photometric data: ${e.message}`);
+        // The loader's own message names the file ("ies/a.ies: HTTP 404"); which luminaire asked is no news to the user.
+        if (!cancelled) setError(`Could not load the photometric data: ${e instanceof LuminairePhotometryError && e.cause instanceof Error ? e.cause.message : e.message}`);
       });
     return () => {
       cancelled = true;

@@ -1,0 +1,36 @@
+import { createPhotometryLoader } from '../../core/photometry/createPhotometryLoader';
+import { PhotometryReadError } from '../../core/photometry/PhotometryReadError';
+import type { Photometry } from '../../core/photometry/types';
+
+/** Looks `fetch` up at call time, so a fetch a test or host installs later is the one used. */
+const pageFetch: typeof fetch = (...args) => fetch(...args);
+
+const loaders = new WeakMap<typeof fetch, Map<string, (path: string) => Promise<Photometry>>>();
+
+/**
+ * The browser host's photometry loader: `load(path)` fetches `baseUrl + path`
+ * (the catalog's paths are relative to the app's public folder; '' = relative
+ * to the page) and parses it. One loader, so one cache, per page for each
+ * folder: the plan's footprints and the 3D view ask for the same files and
+ * each is fetched once between them. An HTTP error is "<path>: HTTP <status>".
+ */
+export function pagePhotometryLoader(baseUrl: string, fetchFn: typeof fetch = pageFetch): (path: string) => Promise<Photometry> {
+  let byFolder = loaders.get(fetchFn);
+  if (!byFolder) loaders.set(fetchFn, (byFolder = new Map()));
+  const key = folderUrl(baseUrl);
+  let load = byFolder.get(key);
+  if (!load) {
+    load = createPhotometryLoader(async (path: string) => {
+      const response = await fetchFn(baseUrl + path);
+      if (!response.ok) throw new PhotometryReadError(path, `HTTP ${response.status}`);
+      return new Uint8Array(await response.arrayBuffer());
+    });
+    byFolder.set(key, load);
+  }
+  return load;
+}
+
+/** The folder as an absolute URL where there is a page, so '' and '/' share a cache when the page is at the site root. */
+function folderUrl(baseUrl: string): string {
+  return typeof document === 'undefined' ? baseUrl : new URL(baseUrl || './', document.baseURI).href;
+}
