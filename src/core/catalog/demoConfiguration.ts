@@ -1,4 +1,4 @@
-import { checkAction, bindAction } from '../model/actionDefinitions';
+import { attemptAction } from '../model/actionDefinitions';
 import type { Catalog } from '../model/catalogSchema';
 import { createConfiguration, type Configuration } from '../model/configuration';
 
@@ -14,7 +14,6 @@ export function demoConfiguration(catalog: Catalog): Configuration {
   const empty = createConfiguration();
   const preset = catalog.presets.find((p) => p.id === DEMO_PRESET_ID) ?? catalog.presets[0];
   if (!preset) return empty;
-  const params = { presetId: preset.id };
-  if (checkAction(empty, 'placePreset', params, catalog) !== true) return empty;
-  return bindAction('placePreset', params, catalog).perform(empty);
+  const outcome = attemptAction(empty, 'placePreset', { presetId: preset.id }, catalog);
+  return outcome.ok ? outcome.next : empty;
 }

@@ -1,13 +1,18 @@
 /**
  * The always-valid action contract (configurator paper §3.2): every user action is
  * `{ name, isEnabled(state), perform(state) }` on immutable state. The UI
- * disables exactly what isEnabled refuses and shows the reason. `perform` is
- * the raw operation: it does not re-check isEnabled (the store does), so tests
- * can prove that every refused action really would have broken validate().
+ * disables exactly what isEnabled refuses and shows the reason.
+ *
+ * A definition says only what is particular to it: its own refusals and how it
+ * words a validation problem. "The result must pass validate()" is added once,
+ * where a definition is bound (bindDefinition.ts), so it holds for every action
+ * by construction. `perform` is the raw operation: it does not re-check anything,
+ * so tests can prove that every refused action really would have broken validate().
  */
 import type { z } from 'zod';
 import type { Catalog } from './catalogSchema';
 import type { Configuration } from './configuration';
+import type { Problem } from './validate';
 
 export interface Refusal {
   readonly ok: false;
@@ -18,8 +23,16 @@ export interface Refusal {
 /** `true` when the action may run, otherwise a refusal with the reason. */
 export type Enablement = true | Refusal;
 
+/** What running an action on a state gives: the next state, or why not. */
+export type Outcome = { readonly ok: true; readonly next: Configuration } | Refusal;
+
 export function refuse(reason: string): Refusal {
   return { ok: false, reason };
+}
+
+/** Just the verdict of an outcome. */
+export function enablementOf(outcome: Outcome): Enablement {
+  return outcome.ok ? true : outcome;
 }
 
 /** An action definition: parameterised, catalog-aware. Registered by name in `actionDefinitions`. */
@@ -29,15 +42,31 @@ export interface ActionDefinition<P> {
   readonly label: string;
   /** Validates the parameters (from UI, embedding API or a test). */
   readonly params: z.ZodType<P>;
-  isEnabled(state: Configuration, params: P, catalog: Catalog): Enablement;
-  /** Raw transition; may throw InputError for unknown ids. Callers check isEnabled first. */
+  /**
+   * The action's own reasons to refuse, checked before perform. Leave out what
+   * validate() already decides on the result: the binding checks that. Omitted: none.
+   */
+  isEnabled?(state: Configuration, params: P, catalog: Catalog): Enablement;
+  /**
+   * Raw transition. Throws InputError when it cannot be done at all (unknown id,
+   * no free spot); the binding turns that into a refusal with the error's message.
+   */
   perform(state: Configuration, params: P, catalog: Catalog): Configuration;
+  /**
+   * The refusal sentence for the first validation problem of the result, in the
+   * action's words (e.g. "no room for another Spot"). Omitted: the problem's message.
+   */
+  explain?(problem: Problem, state: Configuration, params: P, catalog: Catalog): string;
 }
 
 /** An action bound to its parameters and catalog: the configurator paper's `{ isEnabled(state), perform(state) }`. */
 export interface UserAction {
   readonly name: string;
   readonly params: unknown;
+  /** The action's own reasons, then: the result must pass validate(). */
   isEnabled(state: Configuration): Enablement;
+  /** Raw transition (no checks); reuses the state isEnabled or attempt computed for the same input. */
   perform(state: Configuration): Configuration;
+  /** isEnabled and perform in one: the next state when enabled, else the refusal. */
+  attempt(state: Configuration): Outcome;
 }

@@ -3,7 +3,8 @@
  * API lists. Parameters are validated with each action's zod schema.
  */
 import { InputError } from '../inputError';
-import { refuse, type ActionDefinition, type Enablement, type UserAction } from './action';
+import { enablementOf, refuse, type ActionDefinition, type Enablement, type Outcome, type UserAction } from './action';
+import { bindDefinition } from './bindDefinition';
 import type { Catalog } from './catalogSchema';
 import { formatPath } from './catalogSchema';
 import type { Configuration } from './configuration';
@@ -61,24 +62,43 @@ export function parseActionParams(name: string, params: unknown): unknown {
   return r.data;
 }
 
-/** An action bound to params and catalog: `{ name, isEnabled(state), perform(state) }`. Throws ActionParamsError for bad params. */
+/** An action bound to params and catalog: `{ name, isEnabled(state), perform(state), attempt(state) }`. Throws ActionParamsError for bad params. */
 export function bindAction(name: string, params: unknown, catalog: Catalog): UserAction {
-  const def = definition(name);
-  const parsed = parseActionParams(name, params);
-  return {
-    name,
-    params: parsed,
-    isEnabled: (state: Configuration) => def.isEnabled(state, parsed, catalog),
-    perform: (state: Configuration) => def.perform(state, parsed, catalog),
-  };
+  return bindDefinition(definition(name), parseActionParams(name, params), catalog);
 }
 
-/** isEnabled by name; bad names or params come back as a refusal rather than an exception. */
-export function checkAction(state: Configuration, name: string, params: unknown, catalog: Catalog): Enablement {
+/** How many outcomes are kept for the latest state: more than the planner asks for on one screen. */
+const MEMO_SIZE = 512;
+
+/**
+ * Outcomes asked for on the latest state, by action and params. The planner asks
+ * whether each control is enabled and the store then runs the one clicked, on
+ * the same state: the memo makes that one perform and one validation, not two.
+ * Outcomes are pure functions of (catalog, state, name, params), and zod 4 has
+ * already refused NaN and ±Infinity, so the params' JSON identifies them.
+ */
+let memo: { catalog: Catalog; state: Configuration; outcomes: Map<string, Outcome> } | undefined;
+
+/** Runs an action by name if enabled: the next state, or the refusal (bad names or params included). Never throws for bad input. */
+export function attemptAction(state: Configuration, name: string, params: unknown, catalog: Catalog): Outcome {
+  let action: UserAction;
   try {
-    return bindAction(name, params, catalog).isEnabled(state);
+    action = bindAction(name, params, catalog);
   } catch (e) {
     if (e instanceof InputError) return refuse(e.message);
     throw e;
   }
+  if (memo?.state !== state || memo.catalog !== catalog) memo = { catalog, state, outcomes: new Map() };
+  const key = `${name} ${JSON.stringify(action.params)}`;
+  const known = memo.outcomes.get(key);
+  if (known) return known;
+  const outcome = action.attempt(state);
+  if (memo.outcomes.size >= MEMO_SIZE) memo.outcomes.delete(memo.outcomes.keys().next().value as string);
+  memo.outcomes.set(key, outcome);
+  return outcome;
+}
+
+/** isEnabled by name; bad names or params come back as a refusal rather than an exception. */
+export function checkAction(state: Configuration, name: string, params: unknown, catalog: Catalog): Enablement {
+  return enablementOf(attemptAction(state, name, params, catalog));
 }

@@ -79,6 +79,14 @@ export const ROOM_LIMITS = {
   height: { min: 2.2, max: 8 },
 } as const;
 
+export type RoomDimension = keyof typeof ROOM_LIMITS;
+
+/** The one room-limit check: validate(), and through it setRoom and scene files, and the room-setup form use it. */
+export function withinRoomLimits(key: RoomDimension, value: number): boolean {
+  const { min, max } = ROOM_LIMITS[key];
+  return Number.isFinite(value) && value >= min && value <= max;
+}
+
 export const DEFAULT_REFLECTANCE: Record<SurfaceName, Reflectance> = {
   floor: 0.2,
   ceiling: 0.8,

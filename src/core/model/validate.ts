@@ -5,7 +5,7 @@
  * tests/core/model checks it.
  */
 import { onGrid, type Catalog } from './catalogSchema';
-import { ROOM_LIMITS, type Configuration, type LightSystem } from './configuration';
+import { ROOM_LIMITS, withinRoomLimits, type Configuration, type LightSystem } from './configuration';
 import { SURFACE_NAMES } from './lightingScene';
 import { reflectanceProblem } from './reflectance';
 import { rectCorners, rectsOverlap, systemElements, railModuleOffsets, type PlanRect } from './geometry';
@@ -187,8 +187,8 @@ export function roomProblems(config: Configuration): Problem[] {
   const out: Problem[] = [];
   for (const key of ['width', 'depth', 'height'] as const) {
     const v = config.room[key];
-    const { min, max } = ROOM_LIMITS[key];
-    if (!Number.isFinite(v) || v < min || v > max) {
+    if (!withinRoomLimits(key, v)) {
+      const { min, max } = ROOM_LIMITS[key];
       out.push({ code: 'room-dimension', path: `room.${key}`, message: `room ${key} must be between ${min} and ${max} m (got ${v})` });
     }
   }
@@ -200,7 +200,7 @@ export function roomProblems(config: Configuration): Problem[] {
   return out;
 }
 
-function idProblems(config: Configuration): Problem[] {
+export function idProblems(config: Configuration): Problem[] {
   const out: Problem[] = [];
   const seen = new Set<string>();
   const check = (id: string, path: string) => {
@@ -221,7 +221,8 @@ function idProblems(config: Configuration): Problem[] {
 
 /**
  * Problems of one system: its own rules, its fit in the room and clashes with
- * the other systems. Actions use this on their candidate state to give reasons.
+ * the other systems. The action binding (validateResult.ts) and the preset
+ * placement search check only the systems a change touched with it.
  */
 export function systemProblems(config: Configuration, index: number, catalog: Catalog): Problem[] {
   const s = config.systems[index];
@@ -292,7 +293,7 @@ function ownProblems(s: LightSystem, at: string, roomHeight: number, catalog: Ca
       }
       if (!type.beams.some((b) => b.id === m.beam)) p('unknown-beam', `${mp}.beam`, `${type.name} has no beam '${m.beam}'`);
       if (!type.ccts.includes(m.cct)) p('cct', `${mp}.cct`, `${type.name} is not available in ${m.cct} K (offered: ${type.ccts.join(', ')} K)`);
-      if (!Number.isFinite(m.dimming) || m.dimming < 0 || m.dimming > 1) p('dimming', `${mp}.dimming`, `dimming must be within 0..1 (got ${m.dimming})`);
+      if (!Number.isFinite(m.dimming) || m.dimming < 0 || m.dimming > 1) p('dimming', `${mp}.dimming`, `dimming must be between 0 and 1 (got ${m.dimming})`);
     });
     if (refsOk && Number.isFinite(r.length) && !railModuleOffsets(r, catalog)) {
       p('modules-do-not-fit', `${rp}.modules`, `the modules of rail ${r.id} do not fit its ${fmt(r.length)} m with distribution '${r.distribution}'`);

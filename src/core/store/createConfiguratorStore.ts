@@ -1,14 +1,15 @@
 /**
  * The configurator's store: a zustand vanilla store (no React; the UI reads it
  * through selectors) holding the configuration with undo/redo, the selection
- * (outside the undo history) and every action by name. dispatch() checks
- * isEnabled before performing, so the store only ever holds valid
+ * (outside the undo history) and every action by name. dispatch() runs an
+ * action only when enabled, and a bound action is enabled only when its result
+ * passes validate() (bindDefinition.ts), so the store only ever holds valid
  * configurations; refusals and bad names/params come back as values.
  */
 import { createStore, type StoreApi } from 'zustand/vanilla';
 import { InputError } from '../inputError';
 import { refuse, type Enablement, type Refusal } from '../model/action';
-import { ACTION_NAMES, actionDefinitions, bindAction, checkAction, type ActionName } from '../model/actionDefinitions';
+import { ACTION_NAMES, actionDefinitions, attemptAction, checkAction, type ActionName } from '../model/actionDefinitions';
 import type { Catalog } from '../model/catalogSchema';
 import { createConfiguration, type Configuration } from '../model/configuration';
 import { createHistory, pushHistory, redo, undo, type History } from '../model/history';
@@ -84,11 +85,10 @@ export function createConfiguratorStore(options: ConfiguratorStoreOptions): Conf
       canUndo: false,
       canRedo: false,
       dispatch(name, params = {}) {
-        const state = get().config;
-        const enabled = checkAction(state, name, params, catalog);
-        if (enabled !== true) return enabled;
-        const next = bindAction(name, params, catalog).perform(state);
-        commit(pushHistory(get().history, next));
+        // One perform and one validation, reused when the UI asked isEnabled on this state first.
+        const outcome = attemptAction(get().config, name, params, catalog);
+        if (!outcome.ok) return outcome;
+        commit(pushHistory(get().history, outcome.next));
         return { ok: true };
       },
       isEnabled(name, params = {}) {

@@ -3,11 +3,7 @@
  * throw InputError (the caller passed a stale or foreign id).
  */
 import { InputError } from '../../inputError';
-import type { Enablement } from '../action';
-import { refuse } from '../action';
-import type { Catalog } from '../catalogSchema';
 import type { Configuration, LightSystem, ModuleInstance, Rail } from '../configuration';
-import { systemProblems } from '../validate';
 
 export interface RailRef {
   readonly systemIndex: number;
@@ -48,16 +44,6 @@ export function findModule(config: Configuration, moduleId: string): ModuleRef {
   throw new InputError(`no module with id '${moduleId}'`);
 }
 
-/** Runs `fn` and turns an InputError (unknown id, unknown catalog entry) into a refusal. */
-export function guard(fn: () => Enablement): Enablement {
-  try {
-    return fn();
-  } catch (e) {
-    if (e instanceof InputError) return refuse(e.message);
-    throw e;
-  }
-}
-
 export function replaceSystem(config: Configuration, index: number, system: LightSystem): Configuration {
   return { ...config, systems: config.systems.map((s, i) => (i === index ? system : s)) };
 }
@@ -65,12 +51,6 @@ export function replaceSystem(config: Configuration, index: number, system: Ligh
 export function replaceRail(config: Configuration, ref: { systemIndex: number; railIndex: number }, rail: Rail): Configuration {
   const system = config.systems[ref.systemIndex];
   return replaceSystem(config, ref.systemIndex, { ...system, rails: system.rails.map((r, i) => (i === ref.railIndex ? rail : r)) });
-}
-
-/** The first problem of a system in a candidate state as a refusal, or true. */
-export function systemFits(candidate: Configuration, index: number, catalog: Catalog): Enablement {
-  const p = systemProblems(candidate, index, catalog);
-  return p.length === 0 ? true : refuse(p[0].message);
 }
 
 /** A fresh id with the given one-letter prefix and the configuration with its counter advanced. */

@@ -1,13 +1,13 @@
 /**
  * The room's surface finishes: one reflectance for a surface, or the same for
  * all four walls at once. Refused only for values outside [0, MAX_REFLECTANCE]
- * per channel, so any finish from the list (or any sane custom value) is
- * always accepted; geometry is never affected.
+ * per channel (validate()'s rule on the result), so any finish from the list (or
+ * any sane custom value) is always accepted; geometry is never affected.
  */
 import { z } from 'zod';
-import { refuse, type ActionDefinition } from '../action';
+import type { ActionDefinition } from '../action';
 import type { Reflectance, SurfaceName } from '../lightingScene';
-import { SURFACE_TARGETS, reflectanceProblem, targetSurfaces } from '../reflectance';
+import { SURFACE_TARGETS, targetSurfaces } from '../reflectance';
 
 const setReflectanceParams = z.object({
   surface: z.enum(SURFACE_TARGETS),
@@ -19,14 +19,14 @@ export const setReflectance: ActionDefinition<z.infer<typeof setReflectanceParam
   name: 'setReflectance',
   label: 'Surface finish',
   params: setReflectanceParams,
-  isEnabled(_state, p) {
-    const problem = reflectanceProblem(p.value);
-    return problem === null ? true : refuse(`${p.surface}: ${problem}`);
-  },
   perform(state, p) {
     const reflectance: Record<SurfaceName, Reflectance> = { ...state.room.reflectance };
     // Copy RGB arrays so the configuration never shares a mutable array with the caller.
     for (const s of targetSurfaces(p.surface)) reflectance[s] = typeof p.value === 'number' ? p.value : [p.value[0], p.value[1], p.value[2]];
     return { ...state, room: { ...state.room, reflectance } };
+  },
+  explain(problem, _state, p) {
+    // Name the surface as the user chose it ("walls"), not the first wall validate() reports.
+    return problem.code === 'reflectance' ? `${p.surface}: ${problem.message}` : problem.message;
   },
 };

@@ -1,0 +1,58 @@
+/**
+ * validate() of an action's result, paying only for what the action changed.
+ * States are immutable and actions replace only the systems they touch (the
+ * others stay the same objects), so when the state before was valid and the room
+ * keeps its size, the result is valid exactly when its room finishes and ids
+ * are, and each new or replaced system passes systemProblems() (its own rules,
+ * the room bounds, self-crossing, clashes with every other system): an
+ * untouched system keeps its own validity, and a pair of untouched systems
+ * still does not clash. Anything else (a resized room, an invalid state
+ * before) gets the full validate(). The planner asks this for every control on
+ * every render, so a hall of hundreds of rails must not pay a full validate()
+ * per button.
+ */
+import type { Catalog } from './catalogSchema';
+import type { Configuration } from './configuration';
+import { idProblems, roomProblems, systemProblems, validate, type Problem } from './validate';
+
+/** Per catalog, whether a state passed validate(): states are immutable, so the answer never changes. */
+const knownValid = new WeakMap<Catalog, WeakMap<Configuration, boolean>>();
+
+function statesOf(catalog: Catalog): WeakMap<Configuration, boolean> {
+  let states = knownValid.get(catalog);
+  if (!states) knownValid.set(catalog, (states = new WeakMap()));
+  return states;
+}
+
+function isValid(state: Configuration, catalog: Catalog): boolean {
+  const states = statesOf(catalog);
+  let valid = states.get(state);
+  if (valid === undefined) {
+    valid = validate(state, catalog, { firstOnly: true }).length === 0;
+    states.set(state, valid);
+  }
+  return valid;
+}
+
+/** The problems of `after` (empty exactly when validate(after) is), the first one first; `before` is the state it came from. */
+export function validateResult(before: Configuration, after: Configuration, catalog: Catalog): Problem[] {
+  const resized = before.room.width !== after.room.width || before.room.depth !== after.room.depth || before.room.height !== after.room.height;
+  const problems = resized || !isValid(before, catalog) ? validate(after, catalog, { firstOnly: true }) : changedProblems(before, after, catalog);
+  // Remembered so the next action on this state (the store's new present) takes the cheap path.
+  statesOf(catalog).set(after, problems.length === 0);
+  return problems;
+}
+
+function changedProblems(before: Configuration, after: Configuration, catalog: Catalog): Problem[] {
+  const room = roomProblems(after);
+  if (room.length > 0) return room;
+  const ids = idProblems(after);
+  if (ids.length > 0) return ids;
+  const untouched = new Set(before.systems);
+  for (let i = 0; i < after.systems.length; i++) {
+    if (untouched.has(after.systems[i])) continue;
+    const problems = systemProblems(after, i, catalog);
+    if (problems.length > 0) return problems;
+  }
+  return [];
+}
