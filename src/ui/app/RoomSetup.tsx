@@ -1,6 +1,6 @@
 import { useId, useState } from 'react';
 import { defaultSurfaceFinishes } from '../../core/catalog/surfaceFinishes';
-import { DEFAULT_REFLECTANCE, DEFAULT_ROOM, ROOM_LIMITS } from '../../core/model/configuration';
+import { DEFAULT_REFLECTANCE, DEFAULT_ROOM, ROOM_LIMITS, withinRoomLimits } from '../../core/model/configuration';
 import type { Reflectance, SurfaceName } from '../../core/model/lightingScene';
 import { WALL_NAMES, sameReflectance, targetSurfaces, type SurfaceTarget } from '../../core/model/reflectance';
 import { FinishSelect } from '../planner/FinishSelect';
@@ -20,7 +20,7 @@ const FIELDS: { key: Field; label: string; hint: string }[] = [
 ];
 
 /**
- * One field's message, or null when valid. The limits are the model's ROOM_LIMITS, so the
+ * One field's message, or null when valid. The check is the model's withinRoomLimits, so the
  * form refuses exactly the rooms the model would refuse. Decimal commas are accepted because
  * many shoppers type "2,8".
  */
@@ -30,7 +30,7 @@ export function roomFieldError(key: Field, raw: string): string | null {
   const v = Number(text);
   if (!Number.isFinite(v)) return `The ${key} "${raw.trim()}" is not a number.`;
   const { min, max } = ROOM_LIMITS[key];
-  if (v < min || v > max) return `The ${key} must be between ${min} and ${max} m.`;
+  if (!withinRoomLimits(key, v)) return `The ${key} must be between ${min} and ${max} m.`;
   return null;
 }
 
