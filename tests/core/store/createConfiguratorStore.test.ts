@@ -1,5 +1,6 @@
-import { describe, expect, it } from 'vitest';
+import { describe, expect, it, vi } from 'vitest';
 import { defaultCatalog as catalog } from '../../../src/core/catalog/defaultCatalog';
+import { actionDefinitions, checkAction } from '../../../src/core/model/actionDefinitions';
 import { billOfMaterials } from '../../../src/core/model/billOfMaterials';
 import { createConfiguration } from '../../../src/core/model/configuration';
 import { deserializeConfiguration, serializeConfiguration } from '../../../src/core/model/sceneFile';
@@ -69,5 +70,24 @@ describe('configurator store', () => {
     b.getState().undo();
     expect(b.getState().config.systems).toEqual([]);
     expect(b.getState().load({ ...a.getState().config, room: { ...a.getState().config.room, width: 0.2 } })).toMatchObject({ ok: false });
+  });
+
+  it('performs an action once when the UI asks isEnabled and then dispatches', () => {
+    const store = fresh();
+    store.getState().dispatch('placePreset', { presetId: 'single' });
+    const params = { railId: store.getState().config.systems[0].rails[0].id, type: 'spot' };
+    const spy = vi.spyOn(actionDefinitions.addModule, 'perform');
+    try {
+      expect(store.getState().isEnabled('addModule', params)).toBe(true);
+      expect(store.getState().dispatch('addModule', params)).toEqual({ ok: true });
+      expect(spy).toHaveBeenCalledTimes(1);
+      // the new state is asked afresh; the planner asks through checkAction, then dispatches
+      expect(checkAction(store.getState().config, 'addModule', params, catalog)).toBe(true);
+      expect(spy).toHaveBeenCalledTimes(2);
+      expect(store.getState().dispatch('addModule', params)).toEqual({ ok: true });
+      expect(spy).toHaveBeenCalledTimes(2);
+    } finally {
+      spy.mockRestore();
+    }
   });
 });
