@@ -53,6 +53,25 @@ export function replaceRail(config: Configuration, ref: { systemIndex: number; r
   return replaceSystem(config, ref.systemIndex, { ...system, rails: system.rails.map((r, i) => (i === ref.railIndex ? rail : r)) });
 }
 
+/** The configuration with one system's fields replaced (by id). */
+export function updateSystem(config: Configuration, systemId: string, patch: Partial<LightSystem>): Configuration {
+  const i = systemIndex(config, systemId);
+  return replaceSystem(config, i, { ...config.systems[i], ...patch });
+}
+
+/** The configuration with one rail's fields replaced (by id). */
+export function updateRail(config: Configuration, railId: string, patch: Partial<Rail>): Configuration {
+  const ref = findRail(config, railId);
+  return replaceRail(config, ref, { ...ref.rail, ...patch });
+}
+
+/** The configuration with one module's fields replaced (by id). */
+export function updateModule(config: Configuration, moduleId: string, patch: Partial<ModuleInstance>): Configuration {
+  const ref = findModule(config, moduleId);
+  const m = { ...ref.module, ...patch };
+  return replaceRail(config, ref, { ...ref.rail, modules: ref.rail.modules.map((x, i) => (i === ref.moduleIndex ? m : x)) });
+}
+
 /** A fresh id with the given one-letter prefix and the configuration with its counter advanced. */
 export function takeId(config: Configuration, prefix: 's' | 'r' | 'm'): [string, Configuration] {
   return [`${prefix}${config.nextId}`, { ...config, nextId: config.nextId + 1 }];

@@ -9,16 +9,9 @@ import { z } from 'zod';
 import { InputError } from '../../inputError';
 import type { ActionDefinition } from '../action';
 import { findModuleType } from '../catalogSchema';
-import type { Configuration, ModuleInstance } from '../configuration';
+import type { ModuleInstance } from '../configuration';
 import { newModule } from '../presets';
-import { findModule, findRail, replaceRail, takeId } from './lookup';
-
-/** The configuration with one module's fields replaced. */
-function updateModule(state: Configuration, moduleId: string, patch: Partial<ModuleInstance>): Configuration {
-  const ref = findModule(state, moduleId);
-  const m = { ...ref.module, ...patch };
-  return replaceRail(state, ref, { ...ref.rail, modules: ref.rail.modules.map((x, i) => (i === ref.moduleIndex ? m : x)) });
-}
+import { findModule, findRail, replaceRail, takeId, updateModule } from './lookup';
 
 const addParams = z.object({
   railId: z.string(),
@@ -83,15 +76,15 @@ export const setModuleType: ActionDefinition<z.infer<typeof typeParams>> = {
   },
 };
 
+/** A definition that sets fields of one module; whether the values are offered is validate()'s rule. */
+function moduleSetting<P extends { moduleId: string }>(name: string, label: string, params: z.ZodType<P>, patch: (p: P) => Partial<ModuleInstance>): ActionDefinition<P> {
+  return { name, label, params, perform: (state, p) => updateModule(state, p.moduleId, patch(p)) };
+}
+
 const cctParams = z.object({ moduleId: z.string(), cct: z.number() });
 
 export const setModuleCct: ActionDefinition<z.infer<typeof cctParams>> = {
-  name: 'setModuleCct',
-  label: 'Colour temperature',
-  params: cctParams,
-  perform(state, p) {
-    return updateModule(state, p.moduleId, { cct: p.cct });
-  },
+  ...moduleSetting('setModuleCct', 'Colour temperature', cctParams, (p) => ({ cct: p.cct })),
   explain(problem, state, p, catalog) {
     if (problem.code !== 'cct') return problem.message;
     const type = findModuleType(catalog, findModule(state, p.moduleId).module.type);
@@ -99,24 +92,6 @@ export const setModuleCct: ActionDefinition<z.infer<typeof cctParams>> = {
   },
 };
 
-const beamParams = z.object({ moduleId: z.string(), beam: z.string() });
+export const setModuleBeam = moduleSetting('setModuleBeam', 'Beam', z.object({ moduleId: z.string(), beam: z.string() }), (p) => ({ beam: p.beam }));
 
-export const setModuleBeam: ActionDefinition<z.infer<typeof beamParams>> = {
-  name: 'setModuleBeam',
-  label: 'Beam',
-  params: beamParams,
-  perform(state, p) {
-    return updateModule(state, p.moduleId, { beam: p.beam });
-  },
-};
-
-const dimmingParams = z.object({ moduleId: z.string(), dimming: z.number() });
-
-export const setModuleDimming: ActionDefinition<z.infer<typeof dimmingParams>> = {
-  name: 'setModuleDimming',
-  label: 'Dimming',
-  params: dimmingParams,
-  perform(state, p) {
-    return updateModule(state, p.moduleId, { dimming: p.dimming });
-  },
-};
+export const setModuleDimming = moduleSetting('setModuleDimming', 'Dimming', z.object({ moduleId: z.string(), dimming: z.number() }), (p) => ({ dimming: p.dimming }));

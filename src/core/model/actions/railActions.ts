@@ -11,7 +11,7 @@ import type { ActionDefinition } from '../action';
 import { DISTRIBUTIONS, findConnector, type Catalog } from '../catalogSchema';
 import type { Rail } from '../configuration';
 import { railModuleOffsets } from '../geometry';
-import { findRail, replaceRail, replaceSystem, systemIndex, takeId } from './lookup';
+import { findRail, replaceSystem, systemIndex, takeId, updateRail } from './lookup';
 
 /** Nearest multiple of the catalog step, rounded to a micrometre so 1.3 stays 1.3. */
 export function snapRailLength(length: number, catalog: Catalog): number {
@@ -35,8 +35,7 @@ export const setRailLength: ActionDefinition<z.infer<typeof lengthParams>> = {
   label: 'Rail length',
   params: lengthParams,
   perform(state, p, catalog) {
-    const ref = findRail(state, p.railId);
-    return replaceRail(state, ref, { ...ref.rail, length: snapRailLength(p.length, catalog) });
+    return updateRail(state, p.railId, { length: snapRailLength(p.length, catalog) });
   },
   explain(problem, state, p, catalog) {
     if (problem.code !== 'modules-do-not-fit') return problem.message;
@@ -53,8 +52,7 @@ export const setDistribution: ActionDefinition<z.infer<typeof distributionParams
   label: 'Distribution',
   params: distributionParams,
   perform(state, p) {
-    const ref = findRail(state, p.railId);
-    return replaceRail(state, ref, { ...ref.rail, distribution: p.distribution });
+    return updateRail(state, p.railId, { distribution: p.distribution });
   },
   explain(problem, state, p) {
     return problem.code === 'modules-do-not-fit' ? `the modules do not fit '${p.distribution}' on this ${findRail(state, p.railId).rail.length} m rail` : problem.message;

@@ -10,7 +10,7 @@ import type { Catalog, PresetSpec } from '../catalogSchema';
 import type { Configuration } from '../configuration';
 import { normaliseDegrees, rotatePlan, systemBounds } from '../geometry';
 import { defaultSuspension, findPresetPlacement, instantiatePreset, type Placement } from '../presets';
-import { replaceSystem, systemIndex } from './lookup';
+import { replaceSystem, systemIndex, updateSystem } from './lookup';
 
 function findPreset(catalog: Catalog, id: string): PresetSpec {
   const p = catalog.presets.find((x) => x.id === id);
@@ -70,8 +70,7 @@ export const moveSystem: ActionDefinition<z.infer<typeof moveParams>> = {
   label: 'Move',
   params: moveParams,
   perform(state, p) {
-    const i = systemIndex(state, p.systemId);
-    return replaceSystem(state, i, { ...state.systems[i], x: p.x, z: p.z });
+    return updateSystem(state, p.systemId, { x: p.x, z: p.z });
   },
 };
 
@@ -105,7 +104,6 @@ export const setSuspension: ActionDefinition<z.infer<typeof suspensionParams>> =
   label: 'Suspension',
   params: suspensionParams,
   perform(state, p) {
-    const i = systemIndex(state, p.systemId);
-    return replaceSystem(state, i, { ...state.systems[i], suspension: p.suspension });
+    return updateSystem(state, p.systemId, { suspension: p.suspension });
   },
 };
