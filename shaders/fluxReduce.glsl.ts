@@ -1,11 +1,11 @@
 /**
  * GPU reduction of the light maps to the few numbers the tail estimate needs
- * (docs/baker.md, "Flux statistics on the GPU"). Reading whole maps back to
- * the CPU after every bounce stalls the pipeline; these passes reduce each map
- * to one texel and then to one stats texel per bounce, which stays on the GPU
- * until a caller asks for the report.
+ * (docs/baker.md, "Tail for ρ → 1"). Reading whole maps back to the CPU after
+ * every bounce stalls the pipeline; these passes reduce each map to at most
+ * REDUCE_GRID² partial sums and then to one stats texel per bounce, which
+ * stays on the GPU until a caller asks for the report.
  */
-import { fragmentHeader } from './fullscreen.glsl';
+import { fragmentPass } from './fragmentPass.glsl';
 
 /**
  * Largest edge of the first reduction level: a map is summed in blocks of
@@ -17,10 +17,9 @@ import { fragmentHeader } from './fullscreen.glsl';
 export const REDUCE_GRID = 16;
 
 /** out(p) = Σ source texels of the uBlock² block at p (clipped to the source). */
-export const reduceSumFragment = /* glsl */ `${fragmentHeader}
-uniform sampler2D uSource;
-uniform int uBlock;
-out vec4 outColor;
+export const reduceSumPass = fragmentPass(
+  { uSource: 'sampler2D', uBlock: 'int' },
+  /* glsl */ `out vec4 outColor;
 void main() {
   ivec2 size = textureSize(uSource, 0);
   ivec2 base = ivec2(gl_FragCoord.xy) * uBlock;
@@ -31,29 +30,32 @@ void main() {
   }
   outColor = vec4(sum, 1.0);
 }
-`;
+`,
+);
 
 /**
  * From the six first-level partial sums (at most REDUCE_GRID² texels each),
  * per channel c:
  *   Φ_c = Σ_s A_s·ΣE_s,c  (flux, lm, with A_s the texel area × input scale)
- *   r_c = Σ_s ρ_s,c·A_s·ΣE_s,c / Φ_c, clamped to [0, min(max ρ, 0.9999)]
+ *   r_c = Σ_s ρ_s,c·A_s·ΣE_s,c / Φ_c, clamped to [0, uMaxRatio]
  * written as (r_R, r_G, r_B, Φ_Y) into one texel of the stats row (the
- * draw's viewport picks which). r is the flux-weighted reflectance that the
- * tail r/(1−r) uses (createBaker.ts).
+ * draw's viewport picks which). The same formula on the CPU, and why r is
+ * what the tail needs: src/engines/bake/fluxRecord.ts.
  */
-export const fluxRatioFragment = /* glsl */ `${fragmentHeader}
-uniform sampler2D uSum0;
-uniform sampler2D uSum1;
-uniform sampler2D uSum2;
-uniform sampler2D uSum3;
-uniform sampler2D uSum4;
-uniform sampler2D uSum5;
-uniform float uArea[6];
-uniform vec3 uRho[6];
-uniform float uMaxRatio;
-uniform vec3 uLuminance;
-out vec4 outColor;
+export const fluxRatioPass = fragmentPass(
+  {
+    uSum0: 'sampler2D',
+    uSum1: 'sampler2D',
+    uSum2: 'sampler2D',
+    uSum3: 'sampler2D',
+    uSum4: 'sampler2D',
+    uSum5: 'sampler2D',
+    uArea: 'float[6]',
+    uRho: 'vec3[6]',
+    uMaxRatio: 'float',
+    uLuminance: 'vec3',
+  },
+  /* glsl */ `out vec4 outColor;
 vec3 total(sampler2D partial) {
   ivec2 size = textureSize(partial, 0);
   vec3 sum = vec3(0.0);
@@ -83,27 +85,5 @@ void main() {
   }
   outColor = vec4(ratio, dot(flux, uLuminance));
 }
-`;
-
-/**
- * out = a·scaleA + b·(uOffsetB + uTailB·f), f = r/(1−r) per channel with r
- * read from the stats row at uStatsIndex: the tail of the bounce series
- * applied without the CPU ever seeing r.
- */
-export const combineTailFragment = /* glsl */ `${fragmentHeader}
-uniform sampler2D uA;
-uniform sampler2D uB;
-uniform sampler2D uStats;
-uniform int uStatsIndex;
-uniform vec3 uScaleA;
-uniform vec3 uOffsetB;
-uniform vec3 uTailB;
-out vec4 outColor;
-void main() {
-  ivec2 p = ivec2(gl_FragCoord.xy);
-  vec3 r = texelFetch(uStats, ivec2(uStatsIndex, 0), 0).rgb;
-  vec3 f = r / (vec3(1.0) - r);
-  vec3 c = texelFetch(uA, p, 0).rgb * uScaleA + texelFetch(uB, p, 0).rgb * (uOffsetB + uTailB * f);
-  outColor = vec4(max(c, vec3(0.0)), 1.0);
-}
-`;
+`,
+);

@@ -1,15 +1,14 @@
 /**
  * Candela lookup in the packed profile table (src/engines/bake/profileTable.ts).
- * Needs DATA_WIDTH defined and a sampler uProfiles. Interpolation is done
- * here in full float precision instead of by the texture unit, whose
- * bilinear weights have only ~8 fractional bits on many GPUs (too coarse
- * for a 1° spot).
+ * Interpolation is done here in full float precision instead of by the
+ * texture unit, whose bilinear weights have only ~8 fractional bits on many
+ * GPUs (too coarse for a 1° spot). Inputs are parameters: `table`, the name
+ * of the R32F sampler the caller declares, and `dataWidth`, the table's width
+ * in texels (DATA_TEXTURE_WIDTH), compiled in as a constant.
  */
-export const profileLookup = /* glsl */ `
-uniform sampler2D uProfiles;
-
+export const profileLookup = ({ table, dataWidth }: { table: string; dataWidth: number }): string => /* glsl */ `
 float profileValue(int k) {
-  return texelFetch(uProfiles, ivec2(k % DATA_WIDTH, k / DATA_WIDTH), 0).r;
+  return texelFetch(${table}, ivec2(k % ${dataWidth}, k / ${dataWidth}), 0).r;
 }
 
 // Equal steps: the cell is found arithmetically.

@@ -1,9 +1,68 @@
-import type { Rgb, Vec3 } from '../../core/model/lightingScene';
-import { fragmentHeader } from '../../../shaders/fullscreen.glsl';
+import { SURFACE_NAMES, type Rgb, type Vec3 } from '../../core/model/lightingScene';
+import { fragmentPass, type FragmentPass } from '../../../shaders/fragmentPass.glsl';
 import { rayBox } from '../../../shaders/rayBox.glsl';
 import { sampling } from '../../../shaders/sampling.glsl';
-import { glslFloat, glslVec3 } from './glslFormat';
-import type { SurfaceLayout } from './surfaceLayout';
+import { glslVec3 } from './glslFormat';
+import { surfaceFrameGlsl } from './surfaceFrameGlsl';
+import { axisVector, SURFACE_FRAMES, type SurfaceLayout } from './surfaceLayout';
+
+/**
+ * The gather pass's uniforms. uSource<s>: what surface s emits this bounce
+ * (declared for all six; those the pass never samples are optimised away).
+ * Integers are passed as int: headless-gl 9 silently ignores uniform1ui
+ * (measured), and uint(int) keeps the bit pattern, so seeds above 2^31 survive.
+ */
+export const gatherUniforms = {
+  uSource0: 'sampler2D',
+  uSource1: 'sampler2D',
+  uSource2: 'sampler2D',
+  uSource3: 'sampler2D',
+  uSource4: 'sampler2D',
+  uSource5: 'sampler2D',
+  /** This surface's samples so far (the other half of its ping-pong pair). */
+  uAccumulated: 'sampler2D',
+  /** Bounce 1 only: the exact illuminance from the bright patches (runBrightPatchPass.ts), added once per sample with weight uBrightWeight. */
+  uBright: 'sampler2D',
+  uBrightWeight: 'float',
+  uFirstSample: 'int',
+  uSampleCount: 'int',
+  /** 1/S when the input is the previous bounce's sum of S samples, 1 for the direct maps. */
+  uInputScale: 'float',
+  uSeed: 'int',
+} as const;
+
+const AXIS_NAME = ['x', 'y', 'z'];
+
+/**
+ * `exitance(origin, dir)`: the light leaving the point where a ray from inside
+ * the room exits it, ρ·E of the surface hit, one branch per reflecting surface
+ * other than the receiver. Which wall a ray hits and where in its map follow
+ * from the same SURFACE_FRAMES as the layouts; branches in the order of the
+ * hit axis (x, y, z), min side first.
+ */
+function exitanceFunction(receiver: number, reflectance: Rgb[]): string {
+  const hit = SURFACE_NAMES.map((name, index) => {
+    const [u, v, axis, onMax] = SURFACE_FRAMES[name];
+    return { index, u: AXIS_NAME[u], v: AXIS_NAME[v], axis, onMax };
+  })
+    .filter((t) => t.index !== receiver && reflectance[t.index].some((r) => r > 0))
+    .sort((a, b) => a.axis - b.axis || Number(a.onMax) - Number(b.onMax));
+  const constants = hit.map((t) => `const vec3 RHO${t.index} = ${glslVec3(reflectance[t.index])};\n`).join('');
+  const branches = hit
+    .map(
+      (t) =>
+        `  if (axis == ${t.axis} && dir.${AXIS_NAME[t.axis]} ${t.onMax ? '>' : '<'} 0.0) return RHO${t.index} * texture(uSource${t.index}, vec2(hit.${t.u}, hit.${t.v}) / vec2(ROOM.${t.u}, ROOM.${t.v})).rgb;\n`,
+    )
+    .join('');
+  return `// sampling ${hit.length} reflecting surface(s)
+${constants}vec3 exitance(vec3 origin, vec3 dir) {
+  int axis;
+  float t = rayExit(origin, dir, ROOM, axis);
+  vec3 hit = clamp(origin + t * dir, vec3(0.0), ROOM);
+${branches}  return vec3(0.0);
+}
+`;
+}
 
 /**
  * The indirect ("gather") pass for one receiving surface, the configurator paper's
@@ -16,72 +75,18 @@ import type { SurfaceLayout } from './surfaceLayout';
  *
  * Only surfaces with non-zero reflectance are sampled; the receiving surface
  * itself is never (a ray leaving a plane cannot return to it). Samples add to
- * an accumulation map, so a bounce can be spread over many frames; the
- * previous bounce's accumulation (S samples) is read with uInputScale = 1/S.
- * For bounce 1 the sampled maps may be residual direct maps with the bright
- * patches cut out; their light is added exactly from uBright (brightPatches.ts).
+ * an accumulation map, so a bounce can be spread over many frames.
  */
-export function generateGatherShader(
-  surface: SurfaceLayout,
-  room: Vec3,
-  reflectance: Rgb[],
-): string {
-  const uAxis: Vec3 = [0, 0, 0];
-  uAxis[surface.uAxisIndex] = surface.lengthU;
-  const vAxis: Vec3 = [0, 0, 0];
-  vAxis[surface.vAxisIndex] = surface.lengthV;
-  const tangent: Vec3 = [0, 0, 0];
-  tangent[surface.uAxisIndex] = 1;
-  const bitangent: Vec3 = [0, 0, 0];
-  bitangent[surface.vAxisIndex] = 1;
-  // Hit surfaces: [surface index, hit axis, on the max side], lookup coordinates from its layout.
-  const targets = [
-    { index: 4, axis: 0, max: false, u: 'z', v: 'y' },
-    { index: 5, axis: 0, max: true, u: 'z', v: 'y' },
-    { index: 0, axis: 1, max: false, u: 'x', v: 'z' },
-    { index: 1, axis: 1, max: true, u: 'x', v: 'z' },
-    { index: 2, axis: 2, max: false, u: 'x', v: 'y' },
-    { index: 3, axis: 2, max: true, u: 'x', v: 'y' },
-  ].filter((t) => t.index !== surface.index && reflectance[t.index].some((r) => r > 0));
-  const axisName = ['x', 'y', 'z'];
-  const branches = targets
-    .map(
-      (t) =>
-        `  if (axis == ${t.axis} && dir.${axisName[t.axis]} ${t.max ? '>' : '<'} 0.0) return RHO${t.index} * texture(uSource${t.index}, vec2(hit.${t.u}, hit.${t.v}) / vec2(ROOM.${t.u}, ROOM.${t.v})).rgb;`,
-    )
-    .join('\n');
-  const samplers = targets.map((t) => `uniform sampler2D uSource${t.index};\nconst vec3 RHO${t.index} = ${glslVec3(reflectance[t.index])};`).join('\n');
-  return `${fragmentHeader}
-// gather pass, surface ${surface.name}, sampling ${targets.length} reflecting surface(s)
+export function generateGatherShader(surface: SurfaceLayout, room: Vec3, reflectance: Rgb[]): FragmentPass<typeof gatherUniforms> {
+  return fragmentPass(
+    gatherUniforms,
+    `// gather pass, surface ${surface.name}
 const vec3 ROOM = ${glslVec3(room)};
-const vec3 ORIGIN = ${glslVec3(surface.origin)};
-const vec3 U_AXIS = ${glslVec3(uAxis)};
-const vec3 V_AXIS = ${glslVec3(vAxis)};
-const vec3 NORMAL = ${glslVec3(surface.normal)};
-const vec3 TANGENT = ${glslVec3(tangent)};
-const vec3 BITANGENT = ${glslVec3(bitangent)};
-const vec2 RESOLUTION = vec2(${glslFloat(surface.width)}, ${glslFloat(surface.height)});
-${samplers}
-uniform sampler2D uAccumulated;
-// Integers passed as int: headless-gl 9 silently ignores uniform1ui (measured), and
-// uint(int) keeps the bit pattern, so seeds above 2^31 survive.
-uniform int uFirstSample;
-uniform int uSampleCount;
-uniform float uInputScale;
-uniform int uSeed;
-// Bounce 1 only: the exact illuminance from the bright patches (brightPatches.ts), once per sample.
-uniform sampler2D uBright;
-uniform float uBrightWeight;
+${surfaceFrameGlsl(surface)}const vec3 TANGENT = ${glslVec3(axisVector(surface.uAxisIndex, 1))};
+const vec3 BITANGENT = ${glslVec3(axisVector(surface.vAxisIndex, 1))};
 ${sampling}
 ${rayBox}
-vec3 exitance(vec3 origin, vec3 dir) {
-  int axis;
-  float t = rayExit(origin, dir, axis);
-  vec3 hit = clamp(origin + t * dir, vec3(0.0), ROOM);
-${branches}
-  return vec3(0.0);
-}
-out vec4 outColor;
+${exitanceFunction(surface.index, reflectance)}out vec4 outColor;
 void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy);
   vec2 uv = gl_FragCoord.xy / RESOLUTION;
@@ -96,5 +101,6 @@ void main() {
   vec3 bright = uBrightWeight > 0.0 ? uBrightWeight * float(uSampleCount) * texelFetch(uBright, texel, 0).rgb : vec3(0.0);
   outColor = vec4(texelFetch(uAccumulated, texel, 0).rgb + sum * uInputScale + bright, 1.0);
 }
-`;
+`,
+  );
 }

@@ -188,15 +188,6 @@ export function readRgb(gl: WebGL2RenderingContext, target: FloatTarget): Float3
   return rgb;
 }
 
-/** Draw the full-screen triangle into a target with a program whose uniforms `bind` has set. */
-export function drawInto(gl: WebGL2RenderingContext, target: FloatTarget, program: WebGLProgram, bind: () => void): void {
-  gl.bindFramebuffer(gl.FRAMEBUFFER, target.framebuffer);
-  gl.viewport(0, 0, target.width, target.height);
-  gl.useProgram(program);
-  bind();
-  gl.drawArrays(gl.TRIANGLES, 0, 3);
-}
-
 const locationCaches = new WeakMap<WebGLProgram, Map<string, WebGLUniformLocation | null>>();
 
 /**
@@ -210,12 +201,4 @@ export function uniformLocation(gl: WebGL2RenderingContext, program: WebGLProgra
   let loc = cache.get(name);
   if (loc === undefined) cache.set(name, (loc = gl.getUniformLocation(program, name)));
   return loc;
-}
-
-/** Bind a texture to a unit and point a sampler uniform at it (missing uniforms are fine: optimised away). */
-export function bindTexture(gl: WebGL2RenderingContext, program: WebGLProgram, name: string, unit: number, texture: WebGLTexture): void {
-  gl.activeTexture(gl.TEXTURE0 + unit);
-  gl.bindTexture(gl.TEXTURE_2D, texture);
-  const loc = uniformLocation(gl, program, name);
-  if (loc) gl.uniform1i(loc, unit);
 }

@@ -1,6 +1,6 @@
-import { type Rgb, type SurfaceName, type Vec3 } from '../../core/model/lightingScene';
+import { SURFACE_NAMES, type Rgb, type SurfaceName, type Vec3 } from '../../core/model/lightingScene';
 import { LUMINANCE_WEIGHTS, type BakedMaps } from './bakedMaps';
-import type { SurfaceLayout } from './surfaceLayout';
+import { SURFACE_FRAMES, type SurfaceLayout } from './surfaceLayout';
 import { directAtPoint } from './directAtPoint';
 import { scenePointSources, type LampSources } from './scenePointSources';
 import type { BakeScene } from './bakeScene';
@@ -10,15 +10,10 @@ import { resolveBakeSettings, type BakeSettings } from './bakeSettings';
 export function nearestSurface(room: { width: number; height: number; depth: number }, p: Vec3): { surface: SurfaceName; distance: number } {
   const dims = [room.width, room.height, room.depth];
   let best: { surface: SurfaceName; distance: number } = { surface: 'floor', distance: Infinity };
-  const planes: [SurfaceName, number, number][] = [
-    ['floor', 1, 0],
-    ['ceiling', 1, room.height],
-    ['north', 2, 0],
-    ['south', 2, room.depth],
-    ['west', 0, 0],
-    ['east', 0, room.width],
-  ];
-  for (const [surface, axis, at] of planes) {
+  for (const surface of SURFACE_NAMES) {
+    // The surface's plane: normal axis and side from the one frame table (surfaceLayout.ts).
+    const [, , axis, onMax] = SURFACE_FRAMES[surface];
+    const at = onMax ? dims[axis] : 0;
     // Distance to the surface rectangle (not just its plane): outside the rectangle counts too.
     let d2 = (p[axis] - at) ** 2;
     for (let a = 0; a < 3; a++) {

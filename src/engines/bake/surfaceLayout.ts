@@ -79,6 +79,13 @@ export function texelCentre(layout: SurfaceLayout, i: number, j: number): Vec3 {
   return p;
 }
 
+/** A world vector of the given length along one axis (0 = x, 1 = y, 2 = z): a surface's u or v edge, a texel step, a half edge. */
+export function axisVector(axis: 0 | 1 | 2, length: number): Vec3 {
+  const v: Vec3 = [0, 0, 0];
+  v[axis] = length;
+  return v;
+}
+
 /** Area of one texel, m². */
 export function texelArea(layout: SurfaceLayout): number {
   return (layout.lengthU / layout.width) * (layout.lengthV / layout.height);

@@ -14,11 +14,13 @@ import { createHeadlessGL } from '../node/createHeadlessGL';
 import { createFluxStatistics } from '../../engines/bake/fluxStatistics';
 import { surfaceLayouts } from '../../engines/bake/surfaceLayout';
 import { createTargetPool } from '../../engines/bake/targetPool';
-import { combineFragment } from '../../../shaders/passes.glsl';
-import { bindTexture, createDataTexture, createFloatTarget, drawInto, getProgram, readRgba, requireFloatTargets, uniformLocation, type FloatTarget } from '../../engines/bake/glResources';
+import { combinePass } from '../../../shaders/combinePass.glsl';
+import { createDataTexture, createFloatTarget, getProgram, readRgba, requireFloatTargets, type FloatTarget } from '../../engines/bake/glResources';
+import { passProgram, runPass } from '../../engines/bake/runPass';
+import type { UniformSpec } from '../../../shaders/fragmentPass.glsl';
 import { resolveBakeSettings } from '../../engines/bake/bakeSettings';
 import { buildProfileTable, DATA_TEXTURE_WIDTH } from '../../engines/bake/profileTable';
-import { generateDirectShader, type DirectLamp } from '../../engines/bake/generateDirectShader';
+import { directUniforms, generateDirectShader, type DirectLamp } from '../../engines/bake/generateDirectShader';
 import { lampReachesSurface } from '../../engines/bake/lampReach';
 import { scenePointSources } from '../../engines/bake/scenePointSources';
 import { loadLightingSceneFile } from '../node/loadLightingSceneFile';
@@ -142,14 +144,8 @@ export function drawOverheadMs(): number {
     requireFloatTargets(gl);
     const a = createFloatTarget(gl, 256, 256, false);
     const b = createFloatTarget(gl, 256, 256, false);
-    const prog = getProgram(gl, combineFragment).program;
-    const draw = (out: FloatTarget, src: FloatTarget) =>
-      drawInto(gl, out, prog, () => {
-        bindTexture(gl, prog, 'uA', 0, src.texture);
-        bindTexture(gl, prog, 'uB', 1, src.texture);
-        gl.uniform3fv(uniformLocation(gl, prog, 'uScaleA'), [1, 1, 1]);
-        gl.uniform3fv(uniformLocation(gl, prog, 'uScaleB'), [0, 0, 0]);
-      });
+    const prog = passProgram(gl, combinePass);
+    const draw = (out: FloatTarget, src: FloatTarget) => runPass(gl, prog, out, { uA: src.texture, uB: src.texture, uScaleA: [1, 1, 1], uScaleB: [0, 0, 0] });
     for (let i = 0; i < 20; i++) draw(i % 2 ? a : b, i % 2 ? b : a);
     gl.finish();
     const n = 200;
@@ -205,22 +201,22 @@ export function directSourcesExperiment(root: string, repeats: number): { constA
     const layouts = surfaceLayouts(scene.room, settings.texelSize, settings.maxTextureSize);
     const variants = layouts.map((layout) => {
       const reaching = lamps.filter((l) => lampReachesSurface(l.sources, l.rotation, l.profile.gammaMin, l.profile.gammaMax, layout));
-      const source = generateDirectShader(layout, reaching, 1);
+      const { source } = generateDirectShader(layout, reaching, 1);
       const values: Float32Array[] = [];
       const uniformSource = source.replace(/const vec3 (LAMP\d+_SOURCES)\[(\d+)\] = vec3\[\d+\]\(([^;]*)\);/g, (_m, name: string, n: string, list: string) => {
         values.push(new Float32Array((list.replace(/vec3/g, '').match(/-?[\d.]+(?:e[-+]?\d+)?/g) ?? []).map(Number)));
         return `uniform vec3 ${name}[${n}];`;
       });
       const names = [...source.matchAll(/const vec3 (LAMP\d+_SOURCES)\[/g)].map((m) => m[1]);
-      return { layout, source, uniformSource, values, names, target: createFloatTarget(gl, layout.width, layout.height, linear) };
+      const uniformSpec: UniformSpec = { ...directUniforms, ...Object.fromEntries(names.map((name, i) => [name, `vec3[${values[i].length / 3}]` as const])) };
+      const uniformValues = { uProfiles: data, ...Object.fromEntries(names.map((name, i) => [name, values[i]])) };
+      return { layout, source, uniformSource, uniformSpec, uniformValues, target: createFloatTarget(gl, layout.width, layout.height, linear) };
     });
     const run = (uniform: boolean) => {
       for (const v of variants) {
-        const prog = getProgram(gl, uniform ? v.uniformSource : v.source).program;
-        drawInto(gl, v.target, prog, () => {
-          bindTexture(gl, prog, 'uProfiles', 0, data);
-          if (uniform) v.names.forEach((name, i) => gl.uniform3fv(uniformLocation(gl, prog, `${name}[0]`), v.values[i]));
-        });
+        const program = getProgram(gl, uniform ? v.uniformSource : v.source).program;
+        if (uniform) runPass(gl, { program, uniforms: v.uniformSpec }, v.target, v.uniformValues);
+        else runPass(gl, { program, uniforms: directUniforms }, v.target, { uProfiles: data });
       }
       gl.finish();
     };

@@ -5,8 +5,13 @@
  */
 import { describe, expect, it } from 'vitest';
 import { SURFACE_NAMES, type Rgb } from '../../../src/core/model/lightingScene';
-import { blurFragment, combineFragment } from '../../../shaders/passes.glsl';
-import { brightGatherFragment, residualFragment, tileSumFragment } from '../../../shaders/brightPatch.glsl';
+import { blurPass } from '../../../shaders/blurPass.glsl';
+import { combinePass } from '../../../shaders/combinePass.glsl';
+import { combineTailPass } from '../../../shaders/combineTailPass.glsl';
+import { fluxRatioPass, reduceSumPass } from '../../../shaders/fluxReduce.glsl';
+import { brightGatherPass } from '../../../shaders/brightGatherPass.glsl';
+import { residualPass } from '../../../shaders/residualPass.glsl';
+import { tileSums } from '../../../src/engines/bake/readTileSums';
 import { cachedProgramCount, getProgram } from '../../../src/engines/bake/glResources';
 import { generateDirectShader, type DirectLamp } from '../../../src/engines/bake/generateDirectShader';
 import { generateGatherShader } from '../../../src/engines/bake/generateGatherShader';
@@ -33,7 +38,7 @@ const profiles = [
 ];
 const table = buildProfileTable(profiles);
 const layouts = surfaceLayouts({ width: 3, height: 2.5, depth: 4 }, 0.25, 64);
-const compiles = (source: string) => expect(() => getProgram(gl, source)).not.toThrow();
+const compiles = (pass: { source: string }) => expect(() => getProgram(gl, pass.source)).not.toThrow();
 
 describe('generated shaders compile', () => {
   it('the profile table takes every lookup path', () => {
@@ -84,13 +89,16 @@ describe('generated shaders compile', () => {
     for (const layout of layouts) compiles(generateDirectShader(layout, [lamp, { ...lamp, sides: undefined }], 8));
   });
 
-  it('fixed passes: combine and blur', () => {
-    compiles(combineFragment);
-    // Bright-patch passes (brightPatches.ts).
-    compiles(tileSumFragment);
-    compiles(residualFragment);
-    compiles(brightGatherFragment);
-    compiles(blurFragment);
+  it('fixed passes: combine, tail, flux reduction, blur', () => {
+    compiles(combinePass);
+    compiles(combineTailPass);
+    compiles(reduceSumPass);
+    compiles(fluxRatioPass);
+    // Bright-patch passes (runBrightPatchPass.ts).
+    compiles(tileSums);
+    compiles(residualPass);
+    compiles(brightGatherPass);
+    compiles(blurPass);
   });
 
   it('identical scenes reuse compiled programs (cache keyed by source)', () => {

@@ -1,0 +1,104 @@
+import type { combinePass } from '../../../shaders/combinePass.glsl';
+import type { BakeSettings } from './bakeSettings';
+import type { BakeTimer } from './createBakeTimer';
+import type { FluxStatistics } from './fluxStatistics';
+import type { gatherUniforms } from './generateGatherShader';
+import { clearTarget } from './glResources';
+import { mixSeed } from './mixSeed';
+import type { BrightPatchPass } from './runBrightPatchPass';
+import { runPass, type PassProgram } from './runPass';
+import type { SurfaceTargets } from './surfaceTargets';
+
+/** The explicit bounces of a bake, advanced a few samples at a time. */
+export interface BounceIteration {
+  /** Bounces finished. */
+  readonly bounce: number;
+  /** Samples gathered so far in the bounce under way. */
+  readonly samplesDone: number;
+  /** Gather up to `maxSamples` more samples per texel (across bounce boundaries) until every bounce is done; false when there was nothing left to gather. */
+  step(maxSamples: number): boolean;
+}
+
+/**
+ * Bounce k gathers from bounce k−1 only (bounce 1 from the direct maps, or
+ * their residual with the bright patches' light added exactly), `samples`
+ * per texel, in draws of at most `samplesPerDraw` into each surface's sample
+ * ping-pong pair. A finished bounce (S·E_k) is added to the running sum as
+ * E_k, its flux statistics are recorded for the tail (fluxStatistics.ts),
+ * and it becomes the next bounce's input.
+ */
+export function createBounceIteration(
+  gl: WebGL2RenderingContext,
+  surfaces: SurfaceTargets[],
+  passes: { gather: PassProgram<typeof gatherUniforms>[]; combine: PassProgram<typeof combinePass.uniforms> },
+  statistics: FluxStatistics,
+  brightPass: BrightPatchPass | null,
+  settings: BakeSettings,
+  timer: BakeTimer,
+): BounceIteration {
+  let bounce = 0;
+  let samplesDone = 0;
+  // What surface s emits into this bounce: the direct map (or its residual) for bounce 1, else the previous bounce.
+  const source = (s: number) => (bounce === 0 ? (brightPass?.residual[s] ?? surfaces[s].direct) : surfaces[s].previous).texture;
+
+  const gatherDraw = (st: SurfaceTargets, first: number, count: number) => {
+    const bright = bounce === 0 ? brightPass?.bright[st.layout.index] : null;
+    runPass(gl, passes.gather[st.layout.index], st.samples.write, {
+      uSource0: source(0),
+      uSource1: source(1),
+      uSource2: source(2),
+      uSource3: source(3),
+      uSource4: source(4),
+      uSource5: source(5),
+      uAccumulated: st.samples.read.texture,
+      uBright: (bright ?? st.samples.read).texture,
+      uBrightWeight: bright ? 1 : 0,
+      uFirstSample: first,
+      uSampleCount: count,
+      // The previous bounce is stored as the sum of its S samples: read it as lux.
+      uInputScale: bounce === 0 ? 1 : 1 / settings.samples,
+      uSeed: mixSeed(settings.seed, st.layout.index, bounce) | 0,
+    });
+    st.samples.swap();
+  };
+
+  const finishBounce = () => {
+    const inv = 1 / settings.samples;
+    timer.timed('blend', () => {
+      for (const st of surfaces) {
+        runPass(gl, passes.combine, st.sum.write, { uA: st.sum.read.texture, uB: st.samples.read.texture, uScaleA: [1, 1, 1], uScaleB: [inv, inv, inv] });
+        st.sum.swap();
+      }
+    });
+    timer.timed('blend', () => statistics.record(bounce + 1, surfaces.map((st) => st.samples.read), inv));
+    bounce++;
+    for (const st of surfaces) {
+      // The finished bounce becomes the input; the old input, cleared, collects the next bounce.
+      st.previous = st.samples.exchange(st.previous);
+      clearTarget(gl, st.samples.read);
+    }
+    samplesDone = 0;
+  };
+
+  return {
+    get bounce() {
+      return bounce;
+    },
+    get samplesDone() {
+      return samplesDone;
+    },
+    step(maxSamples) {
+      let remaining = maxSamples;
+      timer.timed('indirect', () => {
+        while (remaining > 0 && bounce < settings.bounces) {
+          const n = Math.min(remaining, settings.samplesPerDraw, settings.samples - samplesDone);
+          for (const st of surfaces) gatherDraw(st, samplesDone, n);
+          samplesDone += n;
+          remaining -= n;
+          if (samplesDone >= settings.samples) finishBounce();
+        }
+      });
+      return remaining < maxSamples;
+    },
+  };
+}

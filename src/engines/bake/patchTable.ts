@@ -1,0 +1,21 @@
+import type { BrightPatch } from './selectBrightPatches';
+import { axisVector, type SurfaceLayout } from './surfaceLayout';
+
+/** Texels per patch in the patch table (one row per patch). */
+export const PATCH_TABLE_WIDTH = 4;
+
+/**
+ * The bright patches as the bright gather reads them (shaders/brightGatherPass.glsl.ts):
+ * one RGBA row per patch, (centre.xyz, surface index), (half edge along u as a
+ * world vector, 0), (half edge along v, 0), (exitance M.rgb, 0).
+ */
+export function patchTable(patches: readonly BrightPatch[], layouts: readonly SurfaceLayout[]): Float32Array {
+  const data = new Float32Array(patches.length * PATCH_TABLE_WIDTH * 4);
+  patches.forEach((p, k) => {
+    const layout = layouts[p.surface];
+    const hu = axisVector(layout.uAxisIndex, p.halfU);
+    const hv = axisVector(layout.vAxisIndex, p.halfV);
+    data.set([...p.centre, p.surface, ...hu, 0, ...hv, 0, ...p.exitance, 0], PATCH_TABLE_WIDTH * 4 * k);
+  });
+  return data;
+}

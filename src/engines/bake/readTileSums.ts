@@ -1,0 +1,80 @@
+import type { Rgb } from '../../core/model/lightingScene';
+import { tileSumPass } from '../../../shaders/tileSumPass.glsl';
+import { LUMINANCE_WEIGHTS } from './bakedMaps';
+import { readRgba, type FloatTarget } from './glResources';
+import { runPass, type PassProgram } from './runPass';
+import type { SurfaceTileSums } from './selectBrightPatches';
+import type { SurfaceLayout } from './surfaceLayout';
+import type { TargetPool } from './targetPool';
+
+/** Texels per tile edge for a target tile size (metres). */
+export function tileTexels(layout: SurfaceLayout, tileSize: number): number {
+  const texel = Math.max(layout.lengthU / layout.width, layout.lengthV / layout.height);
+  return Math.max(1, Math.round(tileSize / texel));
+}
+
+/** The tile-sum pass as compiled for the baker's luminance weights. */
+export const tileSums = tileSumPass(LUMINANCE_WEIGHTS);
+
+/**
+ * The tile sums and moments (shaders/tileSumPass.glsl.ts) of the direct maps
+ * of `surfaces`, for the bright-patch selection on the CPU. Every surface's
+ * sums (mode 0) and moments (mode 1) are drawn side by side into one atlas
+ * target, so the whole selection costs one read-back (told to `countRead`).
+ */
+export function readTileSums(
+  gl: WebGL2RenderingContext,
+  pass: PassProgram<typeof tileSums.uniforms>,
+  surfaces: readonly SurfaceLayout[],
+  reflectance: readonly Rgb[],
+  direct: readonly FloatTarget[],
+  tileSize: number,
+  targets: Pick<TargetPool, 'acquire' | 'release'>,
+  countRead: (bytes: number) => void,
+): SurfaceTileSums[] {
+  const grids = surfaces.map((layout) => {
+    const tile = tileTexels(layout, tileSize);
+    return { layout, tile, tilesU: Math.ceil(layout.width / tile), tilesV: Math.ceil(layout.height / tile) };
+  });
+  const atlasWidth = grids.reduce((w, g) => w + g.tilesU, 0);
+  const rowsPerMode = Math.max(...grids.map((g) => g.tilesV));
+  // Every texel that is read back below is written first: no clear needed.
+  const atlas = targets.acquire(atlasWidth, 2 * rowsPerMode, false);
+  let x0 = 0;
+  const offsets = grids.map((g) => {
+    const x = x0;
+    x0 += g.tilesU;
+    for (const mode of [0, 1]) {
+      const y = mode * rowsPerMode;
+      runPass(
+        gl,
+        pass,
+        atlas,
+        {
+          uMap: direct[g.layout.index].texture,
+          uOffset: [x, y],
+          uTile: g.tile,
+          uMode: mode,
+          uTexel: [g.layout.lengthU / g.layout.width, g.layout.lengthV / g.layout.height],
+          uRho: reflectance[g.layout.index],
+        },
+        [x, y, g.tilesU, g.tilesV],
+      );
+    }
+    return x;
+  });
+  const all = readRgba(gl, atlas);
+  countRead(all.byteLength);
+  targets.release(atlas);
+  return grids.map((g, k) => {
+    const cut = (mode: number) => {
+      const out = new Float32Array(g.tilesU * g.tilesV * 4);
+      for (let j = 0; j < g.tilesV; j++) {
+        const from = ((mode * rowsPerMode + j) * atlasWidth + offsets[k]) * 4;
+        out.set(all.subarray(from, from + g.tilesU * 4), j * g.tilesU * 4);
+      }
+      return out;
+    };
+    return { ...g, reflectance: reflectance[g.layout.index], sums: cut(0), moments: cut(1) };
+  });
+}

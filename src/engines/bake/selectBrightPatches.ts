@@ -1,0 +1,146 @@
+import type { Rgb, Vec3 } from '../../core/model/lightingScene';
+import { LUMINANCE_WEIGHTS } from './bakedMaps';
+import type { SurfaceLayout } from './surfaceLayout';
+
+/** One bright tile as the gather sees it: a uniformly emitting rectangle on a room surface. */
+export interface BrightPatch {
+  surface: number;
+  /** Tile indices on that surface. */
+  tileU: number;
+  tileV: number;
+  /** Centre (world), half edges along the surface's u and v axes (metres). */
+  centre: Vec3;
+  halfU: number;
+  halfV: number;
+  /** Reflected flux ρ·Φ per channel, lm, and the exitance M = flux / area of the rectangle. */
+  flux: Rgb;
+  exitance: Rgb;
+}
+
+/** Per-tile sums of one surface, as the tile pass writes them (4 floats per tile in each array). */
+export interface SurfaceTileSums {
+  layout: SurfaceLayout;
+  reflectance: Rgb;
+  /** Texels per tile edge. */
+  tile: number;
+  tilesU: number;
+  tilesV: number;
+  /** (Σ E_r·a, Σ E_g·a, Σ E_b·a, Σ y²·a) per tile, y = Y(ρ·E). */
+  sums: Float32Array;
+  /** (Σ y·a·u, Σ y·a·v, Σ y·a·u², Σ y·a·v²), u, v from the tile corner, metres. */
+  moments: Float32Array;
+}
+
+export interface BrightSelection {
+  patches: BrightPatch[];
+  /** Peakedness S·Σ M²A / (Σ M A)² of all exitance (1 = uniform), and the same with Σ M²A over only what the Monte Carlo gather still samples. */
+  peakedness: number;
+  residualPeakedness: number;
+}
+
+/**
+ * Which tiles to gather deterministically. The variance of the cosine-sampled
+ * gather of bounce 1 is, up to geometry, Σ M²·A over what it samples; for a
+ * uniform exitance of the same flux it would be (Σ M·A)²/S. Tiles are taken in
+ * decreasing Σ M²·A until the "peakedness" S·Σ M²A/(Σ MA)² of what the gather
+ * still samples (Σ M²A over the residual, Σ MA over all exitance) is below
+ * `targetPeakedness`, at most `maxPatches`, and only tiles whose mean exitance is
+ * above `minContrast` × the room mean (a smooth room selects nothing and pays
+ * nothing).
+ */
+export function selectBrightPatches(
+  surfaces: SurfaceTileSums[],
+  options: { maxPatches: number; targetPeakedness: number; minContrast: number },
+): BrightSelection {
+  interface Candidate {
+    s: SurfaceTileSums;
+    k: number;
+    score: number;
+    flux: Rgb;
+    y: number;
+  }
+  // Totals first (no allocation per tile: a 20 m corridor has ~25 000 tiles), then
+  // only the tiles bright enough to qualify become candidates and are sorted.
+  let area = 0;
+  let scoreAll = 0;
+  let yAll = 0;
+  const yOfTile = (s: SurfaceTileSums, k: number) =>
+    LUMINANCE_WEIGHTS[0] * Math.max(0, s.sums[4 * k]) * s.reflectance[0] +
+    LUMINANCE_WEIGHTS[1] * Math.max(0, s.sums[4 * k + 1]) * s.reflectance[1] +
+    LUMINANCE_WEIGHTS[2] * Math.max(0, s.sums[4 * k + 2]) * s.reflectance[2];
+  for (const s of surfaces) {
+    area += s.layout.lengthU * s.layout.lengthV;
+    for (let k = 0; k < s.tilesU * s.tilesV; k++) {
+      const y = yOfTile(s, k);
+      const score = Math.max(0, s.sums[4 * k + 3]);
+      if (!(y > 0) || !Number.isFinite(y) || !Number.isFinite(score)) continue;
+      scoreAll += score;
+      yAll += y;
+    }
+  }
+  const candidates: Candidate[] = [];
+  const meanExitance = yAll / area;
+  for (const s of surfaces) {
+    const du = s.layout.lengthU / s.layout.width;
+    const dv = s.layout.lengthV / s.layout.height;
+    for (let k = 0; k < s.tilesU * s.tilesV; k++) {
+      const y = yOfTile(s, k);
+      const score = Math.max(0, s.sums[4 * k + 3]);
+      // The tile's own area (the last row and column may be partial).
+      const iu = k % s.tilesU;
+      const iv = Math.floor(k / s.tilesU);
+      const tileArea = (Math.min(s.layout.width, (iu + 1) * s.tile) - iu * s.tile) * du * (Math.min(s.layout.height, (iv + 1) * s.tile) - iv * s.tile) * dv;
+      if (!(y >= options.minContrast * meanExitance * tileArea) || !Number.isFinite(y) || !Number.isFinite(score)) continue;
+      const flux = [0, 1, 2].map((c) => Math.max(0, s.sums[4 * k + c]) * s.reflectance[c]) as Rgb;
+      candidates.push({ s, k, score, flux, y });
+    }
+  }
+  // Relative to all of the exitance: the residual's noise against the whole signal.
+  const peak = (score: number) => (yAll > 0 ? (area * score) / (yAll * yAll) : 1);
+  const peakedness = peak(scoreAll);
+  const patches: BrightPatch[] = [];
+  if (!(yAll > 0) || options.maxPatches <= 0) return { patches, peakedness, residualPeakedness: peakedness };
+  candidates.sort((a, b) => b.score - a.score);
+  let score = scoreAll;
+  for (const c of candidates) {
+    if (patches.length >= options.maxPatches || peak(score) <= options.targetPeakedness) break;
+    const { layout, tile } = c.s;
+    const du = layout.lengthU / layout.width;
+    const dv = layout.lengthV / layout.height;
+    const iu = c.k % c.s.tilesU;
+    const iv = Math.floor(c.k / c.s.tilesU);
+    // Tile extent (the last row/column may be partial).
+    const u0 = iu * tile * du;
+    const v0 = iv * tile * dv;
+    const u1 = Math.min(layout.lengthU, (iu + 1) * tile * du);
+    const v1 = Math.min(layout.lengthV, (iv + 1) * tile * dv);
+    if (c.y / ((u1 - u0) * (v1 - v0)) < options.minContrast * meanExitance) continue;
+    const m = c.s.moments.subarray(4 * c.k, 4 * c.k + 4);
+    // Flux centroid and spread of the tile's exitance (plus the spread inside a texel).
+    const mu = m[0] / c.y;
+    const mv = m[1] / c.y;
+    const varU = Math.max(0, m[2] / c.y - mu * mu) + (du * du) / 12;
+    const varV = Math.max(0, m[3] / c.y - mv * mv) + (dv * dv) / 12;
+    const cu = u0 + Math.min(Math.max(mu, 0), u1 - u0);
+    const cv = v0 + Math.min(Math.max(mv, 0), v1 - v0);
+    // A uniform rectangle with the same mean and variance has half edge √3·σ; keep it in the tile.
+    const halfU = Math.max(1e-4, Math.min(Math.sqrt(3 * varU), cu - u0, u1 - cu));
+    const halfV = Math.max(1e-4, Math.min(Math.sqrt(3 * varV), cv - v0, v1 - cv));
+    const centre: Vec3 = [layout.origin[0], layout.origin[1], layout.origin[2]];
+    centre[layout.uAxisIndex] = cu;
+    centre[layout.vAxisIndex] = cv;
+    const rectArea = 4 * halfU * halfV;
+    patches.push({
+      surface: layout.index,
+      tileU: iu,
+      tileV: iv,
+      centre,
+      halfU,
+      halfV,
+      flux: c.flux,
+      exitance: c.flux.map((f) => f / rectArea) as Rgb,
+    });
+    score -= c.score;
+  }
+  return { patches, peakedness, residualPeakedness: peak(Math.max(0, score)) };
+}
