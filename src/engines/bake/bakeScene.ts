@@ -1,4 +1,4 @@
-import type { LightingLuminaire, NearField, Rgb, SurfaceName } from '../../core/model/lightingScene';
+import { SURFACE_NAMES, type LightingLuminaire, type NearField, type Rgb, type SurfaceName } from '../../core/model/lightingScene';
 import type { Photometry } from '../../core/photometry/types';
 
 /**
@@ -27,4 +27,9 @@ export interface BakeScene {
 
 export function toRgb(value: number | Rgb): Rgb {
   return typeof value === 'number' ? [value, value, value] : [value[0], value[1], value[2]];
+}
+
+/** Every surface's reflectance as linear RGB (what the viewer's shaders take). */
+export function reflectanceRgb(room: BakeScene['room']): Record<SurfaceName, Rgb> {
+  return Object.fromEntries(SURFACE_NAMES.map((n) => [n, toRgb(room.reflectance[n])])) as Record<SurfaceName, Rgb>;
 }

@@ -51,3 +51,13 @@ export function legendPosition(lux: number, levels: readonly number[]): number {
   }
   return 1;
 }
+
+/**
+ * The levels as the shader takes them (uLevels, uLevelCount): the first
+ * MAX_LEVELS positive ones, the rest of the array 1 (log 1 = 0, never read
+ * past the count but kept finite).
+ */
+export function shaderLevels(levels: readonly number[]): { count: number; values: number[] } {
+  const ls = levels.slice(0, MAX_LEVELS).filter((v) => v > 0);
+  return { count: ls.length, values: Array.from({ length: MAX_LEVELS }, (_, i) => ls[i] ?? 1) };
+}

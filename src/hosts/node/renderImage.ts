@@ -2,14 +2,11 @@ import createGL from 'gl';
 import { PNG } from 'pngjs';
 import * as THREE from 'three';
 import type { BakeSettings } from '../../engines/bake/bakeSettings';
-import { toRgb } from '../../engines/bake/bakeScene';
-import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../core/model/lightingScene';
+import { reflectanceRgb } from '../../engines/bake/bakeScene';
 import { createRelightEngine, VIEWER_BAKE_SETTINGS } from '../../engines/relight/createRelightEngine';
-import { autoExposure } from '../../engines/view/autoExposure';
 import type { CameraPose } from '../../engines/view/cameraPresets';
-import { luxLevels } from '../../engines/view/falseColorScale';
-import { luxScaleTop } from '../../engines/view/luxScaleTop';
 import { floorStats, type IlluminanceStats } from '../../engines/view/lightStats';
+import { presentMaps } from '../../engines/view/presentMaps';
 import { createRoomView, type ViewMode } from '../../engines/view/roomView';
 import { noContextMessage, NoWebGLError } from './createHeadlessGL';
 import type { RenderInput } from './renderInput';
@@ -71,12 +68,8 @@ export function createRenderSession(width: number, height: number): RenderSessio
         }
         renderer.resetState();
         const view = createRoomView(renderer);
-        const reflectance = Object.fromEntries(SURFACE_NAMES.map((n) => [n, toRgb(input.bakeScene.room.reflectance[n])])) as Record<SurfaceName, Rgb>;
-        view.setMaps(lit, reflectance);
-        const exposure = autoExposure(lit, reflectance) * 2 ** options.exposureEv;
-        view.setExposure(exposure);
+        const { exposure } = presentMaps(view, lit, reflectanceRgb(input.bakeScene.room), { exposureEv: options.exposureEv, mode: options.mode });
         const floor = floorStats(lit);
-        view.setMode(options.mode, luxLevels(luxScaleTop(lit)));
         view.setFixtures(input.fixtures);
         const results = cameras.map((camera): RenderResult => {
           const t2 = performance.now();

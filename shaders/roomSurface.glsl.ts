@@ -1,0 +1,50 @@
+import { falseColorGlsl, type FalseColorScaleFacts } from './falseColor.glsl';
+import { toneMapGlsl } from './toneMap.glsl';
+
+/** A room surface's vertex shader (three.js GLSL3 material): the light map's uv and the world position (for the view angle). */
+export const roomSurfaceVertex = /* glsl */ `
+out vec2 vUv;
+out vec3 vWorld;
+void main() {
+  vUv = uv;
+  vWorld = (modelMatrix * vec4(position, 1.0)).xyz;
+  gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
+}
+`;
+
+/**
+ * A room surface's fragment shader: stored illuminance E (RGB lux) →
+ * luminance ρE/π → display (toneMap.glsl.ts), or false-colour lux
+ * (uMode 1). In lux mode the isolines follow E averaged over the 4×4 texels
+ * around the point (four bilinear taps one texel off diagonally): the fill
+ * keeps every texel's value, the lines do not wiggle with the noise of the
+ * indirect light (falseColor.glsl.ts). `scale` is the false-colour scale's
+ * facts (falseColorScale.ts), passed on to the false-colour chunk.
+ */
+export const roomSurfaceFragment = (scale: FalseColorScaleFacts): string => /* glsl */ `
+precision highp float;
+in vec2 vUv;
+in vec3 vWorld;
+uniform sampler2D uIlluminance;
+uniform vec3 uNormal;
+uniform vec3 uReflectance;
+uniform float uExposure;
+uniform int uMode;
+out vec4 fragColor;
+${toneMapGlsl}
+${falseColorGlsl(scale)}
+void main() {
+  vec3 E = max(texture(uIlluminance, vUv).rgb, 0.0);
+  if (uMode == 1) {
+    const vec3 Y = vec3(0.2126, 0.7152, 0.0722);
+    vec2 t = 1.0 / vec2(textureSize(uIlluminance, 0));
+    vec3 Es = texture(uIlluminance, vUv + vec2(t.x, t.y)).rgb + texture(uIlluminance, vUv + vec2(-t.x, t.y)).rgb
+            + texture(uIlluminance, vUv + vec2(t.x, -t.y)).rgb + texture(uIlluminance, vUv - t).rgb;
+    float facing = abs(dot(uNormal, normalize(cameraPosition - vWorld)));
+    fragColor = vec4(luxFalseColor(dot(E, Y), max(dot(Es, Y), 0.0) * 0.25, facing), 1.0);
+  } else {
+    vec3 L = uReflectance * E / 3.14159265358979;
+    fragColor = vec4(luxDisplay(L, uExposure), 1.0);
+  }
+}
+`;

@@ -1,0 +1,126 @@
+import * as THREE from 'three';
+import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../core/model/lightingScene';
+import { roomSurfaceFragment, roomSurfaceVertex } from '../../../shaders/roomSurface.glsl';
+import type { SurfaceLayout } from '../bake/surfaceLayout';
+import type { LitMaps } from '../relight/relightMaps';
+import { MAX_LEVELS, shaderLevels, TURBO_B, TURBO_G, TURBO_R } from './falseColorScale';
+import { surfaceQuad } from './surfaceQuad';
+
+export type ViewMode = 'light' | 'lux';
+
+const fragmentShader = roomSurfaceFragment({ maxLevels: MAX_LEVELS, turbo: [TURBO_R, TURBO_G, TURBO_B] });
+
+/** The six room surfaces showing the relit light maps, and the display settings all six share (exposure, mode, lux levels). */
+export interface RoomSurfaces {
+  /** Upload relit maps (RGB lux) and the room's reflectances; a surface whose layout changed is rebuilt. */
+  setMaps(lit: LitMaps, reflectance: Record<SurfaceName, Rgb>): void;
+  setExposure(exposure: number): void;
+  setMode(mode: ViewMode, levels?: readonly number[]): void;
+  dispose(): void;
+}
+
+interface Surface {
+  mesh: THREE.Mesh;
+  material: THREE.ShaderMaterial;
+  texture: THREE.DataTexture | null;
+  key: string;
+}
+
+function quadGeometry(layout: SurfaceLayout): THREE.BufferGeometry {
+  const q = surfaceQuad(layout);
+  const g = new THREE.BufferGeometry();
+  g.setAttribute('position', new THREE.Float32BufferAttribute(q.positions, 3));
+  g.setAttribute('uv', new THREE.Float32BufferAttribute(q.uvs, 2));
+  g.setIndex(q.index);
+  return g;
+}
+
+/** Surfaces are added to `scene` when the first maps arrive (their size comes from the maps' layouts). */
+export function createRoomSurfaces(scene: THREE.Scene, renderer: THREE.WebGLRenderer): RoomSurfaces {
+  // Without float texture filtering the maps are sampled nearest (blocky, but correct values).
+  const linear = renderer.extensions.has('OES_texture_float_linear');
+  const surfaces = new Map<SurfaceName, Surface>();
+  // Shared uniform objects: one assignment updates every surface's material.
+  const levelUniform = { value: new Array<number>(MAX_LEVELS).fill(1) };
+  const levelCount = { value: 0 };
+  const exposure = { value: 1 };
+  const mode = { value: 0 };
+
+  const release = (s: Surface) => {
+    s.mesh.geometry.dispose();
+    s.texture?.dispose();
+    s.material.dispose();
+  };
+
+  const surfaceFor = (layout: SurfaceLayout): Surface => {
+    const key = `${layout.width}x${layout.height}@${layout.lengthU}x${layout.lengthV}`;
+    let s = surfaces.get(layout.name);
+    if (s && s.key === key) return s;
+    if (s) {
+      scene.remove(s.mesh);
+      release(s);
+    }
+    const material = new THREE.ShaderMaterial({
+      glslVersion: THREE.GLSL3,
+      vertexShader: roomSurfaceVertex,
+      fragmentShader,
+      uniforms: {
+        uIlluminance: { value: null },
+        uNormal: { value: new THREE.Vector3(...layout.normal) },
+        uReflectance: { value: new THREE.Vector3(0.5, 0.5, 0.5) },
+        uExposure: exposure,
+        uMode: mode,
+        uLevels: levelUniform,
+        uLevelCount: levelCount,
+      },
+      side: THREE.FrontSide,
+    });
+    const mesh = new THREE.Mesh(quadGeometry(layout), material);
+    mesh.name = layout.name;
+    scene.add(mesh);
+    s = { mesh, material, texture: null, key };
+    surfaces.set(layout.name, s);
+    return s;
+  };
+
+  return {
+    setMaps(lit, reflectance) {
+      for (const name of SURFACE_NAMES) {
+        const layout = lit.layouts[name];
+        const s = surfaceFor(layout);
+        const n = layout.width * layout.height;
+        if (!s.texture) {
+          // RGBA float: three has no RGB float format; alpha unused.
+          s.texture = new THREE.DataTexture(new Float32Array(n * 4), layout.width, layout.height, THREE.RGBAFormat, THREE.FloatType);
+          s.texture.minFilter = s.texture.magFilter = linear ? THREE.LinearFilter : THREE.NearestFilter;
+          s.texture.wrapS = s.texture.wrapT = THREE.ClampToEdgeWrapping;
+          s.texture.generateMipmaps = false;
+          s.material.uniforms.uIlluminance.value = s.texture;
+        }
+        const dst = s.texture.image.data as Float32Array;
+        const src = lit.maps[name].total;
+        for (let i = 0; i < n; i++) {
+          dst[i * 4] = src[i * 3];
+          dst[i * 4 + 1] = src[i * 3 + 1];
+          dst[i * 4 + 2] = src[i * 3 + 2];
+          dst[i * 4 + 3] = 1;
+        }
+        s.texture.needsUpdate = true;
+        (s.material.uniforms.uReflectance.value as THREE.Vector3).set(...reflectance[name]);
+      }
+    },
+    setExposure(value) {
+      exposure.value = Number.isFinite(value) && value > 0 ? value : 1;
+    },
+    setMode(m, levels = []) {
+      mode.value = m === 'lux' ? 1 : 0;
+      const { count, values } = shaderLevels(levels);
+      levelCount.value = count;
+      values.forEach((v, i) => (levelUniform.value[i] = v));
+    },
+    dispose() {
+      for (const s of surfaces.values()) release(s);
+      surfaces.clear();
+    },
+  };
+}
