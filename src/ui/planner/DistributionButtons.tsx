@@ -1,5 +1,5 @@
 import { DISTRIBUTIONS, type Distribution } from '../../core/model/catalogSchema';
-import { ActionButton } from './ActionButton';
+import { GatedButton } from './GatedButton';
 import type { ActionGate } from './actionGate';
 
 export const DISTRIBUTION_LABELS: Record<Distribution, { short: string; long: string }> = {
@@ -19,17 +19,17 @@ export function DistributionButtons({ railId, current, gate, compact = false }: 
   return (
     <>
       {DISTRIBUTIONS.map((d) => (
-        <ActionButton
+        <GatedButton
           key={d}
+          gate={gate}
+          action="setDistribution"
+          params={{ railId, distribution: d }}
           label={DISTRIBUTION_LABELS[d].long}
-          pressed={current === d}
-          disabledReason={current === d ? null : gate.reason('setDistribution', { railId, distribution: d })}
-          onPress={() => current !== d && gate.run('setDistribution', { railId, distribution: d })}
-          onDisabledPress={gate.explain}
+          current={current === d}
           testId={compact ? `distribution-${railId}-${d}` : undefined}
         >
           {compact ? <span aria-hidden>{DISTRIBUTION_LABELS[d].short}</span> : d}
-        </ActionButton>
+        </GatedButton>
       ))}
     </>
   );

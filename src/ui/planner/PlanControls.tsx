@@ -4,6 +4,7 @@ import type { Configuration, LightSystem } from '../../core/model/configuration'
 import { modulePlacements, railPlacements, type PlanVec } from '../../core/model/geometry';
 import { ActionButton } from './ActionButton';
 import { DistributionButtons } from './DistributionButtons';
+import { GatedButton } from './GatedButton';
 import { RailLengthField } from './RailLengthField';
 import { CommitField } from './CommitField';
 import type { ActionGate } from './actionGate';
@@ -93,22 +94,14 @@ function SystemLevelControls({ system, catalog, view, viewport, gate }: { system
           <CommitField
             label="System position x (m)"
             value={system.x}
-            onCommit={(x) => {
-              const r = gate.reason('moveSystem', { systemId: system.id, x, z: system.z });
-              if (!r) gate.run('moveSystem', { systemId: system.id, x, z: system.z });
-              return r;
-            }}
+            onCommit={(x) => gate.attempt('moveSystem', { systemId: system.id, x, z: system.z })}
             onRefused={gate.explain}
           />
           <span aria-hidden>z</span>
           <CommitField
             label="System position z (m)"
             value={system.z}
-            onCommit={(z) => {
-              const r = gate.reason('moveSystem', { systemId: system.id, x: system.x, z });
-              if (!r) gate.run('moveSystem', { systemId: system.id, x: system.x, z });
-              return r;
-            }}
+            onCommit={(z) => gate.attempt('moveSystem', { systemId: system.id, x: system.x, z })}
             onRefused={gate.explain}
           />
         </Positioned>
@@ -150,17 +143,9 @@ function ModuleLevelControls({ system, catalog, view, viewport, selection, gate,
     if (visible(plusPos, viewport)) {
       out.push(
         <Positioned key={`plus-${rail.id}`} at={plusPos} className="plus-button" testId={`plus-${rail.id}`}>
-          <ActionButton
-            label={`Add ${typeName} to rail ${i + 1}`}
-            disabledReason={gate.reason('addModule', { railId: rail.id, type: typeId })}
-            onPress={() => {
-              gate.run('addModule', { railId: rail.id, type: typeId });
-              onSelect({ kind: 'rail', id: rail.id });
-            }}
-            onDisabledPress={gate.explain}
-          >
+          <GatedButton gate={gate} action="addModule" params={{ railId: rail.id, type: typeId }} label={`Add ${typeName} to rail ${i + 1}`} onRan={() => onSelect({ kind: 'rail', id: rail.id })}>
             +
-          </ActionButton>
+          </GatedButton>
         </Positioned>,
       );
     }

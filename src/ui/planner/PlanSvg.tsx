@@ -8,7 +8,9 @@ import { cctTint } from './cctTint';
 import { floorTint } from './finishColour';
 import { defaultSurfaceFinishes } from '../../core/catalog/surfaceFinishes';
 import { gridStep } from './detailLevel';
-import type { PlanPoint, PlanView } from './viewTransform';
+import type { PlanView } from './viewTransform';
+import { hitStrip, moduleSymbol } from './planHitTest';
+import type { DragPreview } from './PlannerController';
 import type { SelectionPath } from './selection';
 
 export interface PlanSvgProps {
@@ -17,7 +19,7 @@ export interface PlanSvgProps {
   view: PlanView;
   selection: SelectionPath;
   /** A system being dragged is drawn offset by this much (metres) until it is dropped; faded where it may not be dropped. */
-  drag: { systemId: string; delta: PlanPoint; invalid: boolean } | null;
+  drag: DragPreview | null;
   /** Measured floor footprints per photometric file. */
   footprints: FootprintSource;
 }
@@ -28,12 +30,6 @@ const points = (r: PlanRect) => {
   return [c[0], c[1], c[3], c[2]].map((p) => `${p[0]},${p[1]}`).join(' ');
 };
 
-/** Module symbols are drawn wider than the rail profile so they read as separate parts. */
-const MODULE_WIDTH_FACTOR = 1.8;
-
-/** Rails are a few centimetres wide: invisible hit strips keep them easy to tap (44 px across). */
-const HIT_HALF_WIDTH_PX = 22;
-
 function SystemShape({ system, catalog, scale, selected, selectedRailId, selectedModuleId }: { system: LightSystem; catalog: Catalog; scale: number; selected: boolean; selectedRailId?: string; selectedModuleId?: string }) {
   const elements = systemElements(system, catalog);
   const modules = modulePlacements(system, catalog);
@@ -42,7 +38,7 @@ function SystemShape({ system, catalog, scale, selected, selectedRailId, selecte
     <g data-system-id={system.id} className="plan-system" style={{ cursor: 'move' }}>
       {elements.map((rects, i) =>
         rects.map((r, k) => (
-          <polygon key={`hit-${i}-${k}`} points={points({ ...r, halfWidth: Math.max(r.halfWidth, HIT_HALF_WIDTH_PX / scale) })} data-rail-id={i % 2 === 0 ? railIds[i / 2] : undefined} fill="transparent" />
+          <polygon key={`hit-${i}-${k}`} points={points(hitStrip(r, scale))} data-rail-id={i % 2 === 0 ? railIds[i / 2] : undefined} fill="transparent" />
         )),
       )}
       {elements.map((rects, i) => {
@@ -63,7 +59,7 @@ function SystemShape({ system, catalog, scale, selected, selectedRailId, selecte
       })}
       {modules.map((m) => {
         const module = system.rails.flatMap((r) => r.modules).find((x) => x.id === m.moduleId);
-        const rect: PlanRect = { ...m.footprint, halfWidth: m.footprint.halfWidth * MODULE_WIDTH_FACTOR };
+        const rect = moduleSymbol(m.footprint);
         return (
           <polygon
             key={m.moduleId}
@@ -83,7 +79,9 @@ function SystemShape({ system, catalog, scale, selected, selectedRailId, selecte
 /**
  * The room drawn from above as SVG (plan x = world x, plan y = world z). Geometry is drawn in
  * metres inside one group whose transform is the view, with non-scaling strokes, so lines keep
- * their on-screen width at every zoom; the constant-size controls live in PlanControls.
+ * their on-screen width at every zoom; the constant-size controls live in PlanControls. It
+ * only draws: what a pointer hits is found from the same shapes by planHitTest, and input goes
+ * to the PlannerController.
  */
 export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection, drag, footprints }: PlanSvgProps) {
   const clipId = useId();

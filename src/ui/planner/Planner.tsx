@@ -1,9 +1,8 @@
-import { useCallback, useEffect, useLayoutEffect, useMemo, useRef, useState } from 'react';
+import { useCallback, useEffect, useLayoutEffect, useMemo, useRef, useState, useSyncExternalStore } from 'react';
 import { useStore } from 'zustand';
 import { billOfMaterials } from '../../core/model/billOfMaterials';
 import type { ConfiguratorStore, Selection } from '../../core/store/createConfiguratorStore';
-import { type UiStore, showStatus } from '../../core/store/uiStore';
-import { ActionButton } from './ActionButton';
+import type { UiStore } from '../../core/store/uiStore';
 import { BomPanel } from './BomPanel';
 import { OptionsPanel } from './OptionsPanel';
 import { PlanControls } from './PlanControls';
@@ -19,9 +18,10 @@ import { formatMoney } from './formatMoney';
 import { selectionPath } from './selection';
 import { usePlanGestures } from './usePlanGestures';
 import { usePlanView } from './usePlanView';
-import { type PlanPoint, type Viewport, fitRoom, worldToScreen } from './viewTransform';
-import { systemBounds } from '../../core/model/geometry';
+import type { Viewport } from './viewTransform';
 import { BottomBar } from './BottomBar';
+import { CommandButton } from './CommandButton';
+import { DEFAULT_VIEWPORT, PlannerController } from './PlannerController';
 import type { FootprintSource } from './footprintSource';
 import { requestFootprints } from './moduleFootprint';
 import { usePlannerKeys } from './usePlannerKeys';
@@ -37,15 +37,11 @@ export interface PlannerProps {
   footprints: FootprintSource;
 }
 
-const ZOOM_STEP = 1.5;
-
 /** The main screen (configurator paper, fig. 6): the plan, side panel with presets and price, bottom bar. */
 export function Planner({ store, ui, locale, onNewRoom, onShare, footprints }: PlannerProps) {
   const config = useStore(store, (s) => s.config);
   const catalog = useStore(store, (s) => s.catalog);
   const selection = useStore(store, (s) => s.selection);
-  const canUndo = useStore(store, (s) => s.canUndo);
-  const canRedo = useStore(store, (s) => s.canRedo);
   const mode = useStore(ui, (s) => s.mode);
   const optionsOpen = useStore(ui, (s) => s.optionsOpen);
   const panelOpen = useStore(ui, (s) => s.panelOpen);
@@ -53,18 +49,12 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, footprints }: P
   const shareLink = useStore(ui, (s) => s.shareLink);
 
   const wrapRef = useRef<HTMLDivElement>(null);
-  const [viewport, setViewport] = useState<Viewport>({ width: 800, height: 600 });
-  const plan = usePlanView(fitRoom(config.room, viewport));
-  const [drag, setDrag] = useState<{ systemId: string; delta: PlanPoint; invalid: boolean } | null>(null);
-
-  const explain = useCallback((reason: string) => showStatus(ui, reason), [ui]);
-  const run = useCallback(
-    (name: string, params: unknown) => {
-      const r = store.getState().dispatch(name, params);
-      if (!r.ok) explain(r.reason);
-    },
-    [store, explain],
-  );
+  const [viewport, setViewport] = useState<Viewport>(DEFAULT_VIEWPORT);
+  // Everything the plan does with input lives in the controller; React draws what it holds.
+  const controller = useMemo(() => new PlannerController(store, ui), [store, ui]);
+  const view = usePlanView(controller);
+  const drag = useSyncExternalStore(controller.subscribe, () => controller.drag);
+  const { explain, run } = controller;
   const gate = useMemo(() => createActionGate(config, catalog, run, explain), [config, catalog, run, explain]);
   const path = selectionPath(config, selection);
   const select = useCallback((sel: Selection) => store.getState().select(sel), [store]);
@@ -72,8 +62,6 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, footprints }: P
 
   // Fit the room when the plan first gets its size and whenever the room's dimensions change.
   const roomKey = `${config.room.width}x${config.room.depth}`;
-  const fittedFor = useRef<string | null>(null);
-  const { jumpTo } = plan;
   useLayoutEffect(() => {
     const el = wrapRef.current;
     if (!el) return;
@@ -88,12 +76,8 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, footprints }: P
     ro.observe(el);
     return () => ro.disconnect();
   }, [mode]);
-  useLayoutEffect(() => {
-    const key = `${roomKey}@${viewport.width}x${viewport.height}`;
-    if (fittedFor.current === key) return;
-    fittedFor.current = key;
-    jumpTo(fitRoom(config.room, viewport));
-  }, [roomKey, viewport, config.room, jumpTo]);
+  // roomKey is a dependency on purpose: setViewport refits when the room's size changed.
+  useLayoutEffect(() => controller.setViewport(viewport), [roomKey, viewport, controller]);
 
   useEffect(() => {
     requestFootprints(footprints, config.systems.flatMap((s) => s.rails.flatMap((r) => r.modules)), catalog);
@@ -106,55 +90,9 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, footprints }: P
     return () => window.clearTimeout(t);
   }, [status, ui]);
 
-  usePlanGestures(wrapRef, plan, {
-    onSystemDrag: (systemId, delta) => {
-      if (store.getState().selection?.id !== systemId) select({ kind: 'system', id: systemId });
-      // Preview whether dropping here would be accepted (the model's isEnabled, live).
-      const s = store.getState().config.systems.find((x) => x.id === systemId);
-      const invalid = !s || store.getState().isEnabled('moveSystem', { systemId, x: s.x + delta.x, z: s.z + delta.z }) !== true;
-      setDrag({ systemId, delta, invalid });
-    },
-    onSystemDrop: (systemId, delta) => {
-      setDrag(null);
-      const s = store.getState().config.systems.find((x) => x.id === systemId);
-      if (!s) return;
-      // Positions snap to whole centimetres so the move fields show clean numbers.
-      const x = Math.round((s.x + delta.x) * 100) / 100;
-      const z = Math.round((s.z + delta.z) * 100) / 100;
-      run('moveSystem', { systemId, x, z });
-    },
-    onTap: (hit) => {
-      if (!hit.systemId) {
-        select(null);
-        return;
-      }
-      // Like the controls, what a tap selects follows the zoom level: whole systems when zoomed
-      // out, rails and modules when zoomed in.
-      const zoomedIn = detailLevel(plan.targetRef.current.scale) === 'module';
-      if (zoomedIn && hit.moduleId) select({ kind: 'module', id: hit.moduleId });
-      else if (zoomedIn && hit.railId) select({ kind: 'rail', id: hit.railId });
-      else select({ kind: 'system', id: hit.systemId });
-    },
-  });
-
-  // Buttons and keys zoom about the selected system when it is on screen (so zooming in on it
-  // reaches the module level without panning), else about the middle of the plan.
-  const selectedSystem = config.systems.find((s) => s.id === path.systemId);
-  const zoomButtons = useCallback(
-    (factor: number) => {
-      let anchor = { sx: viewport.width / 2, sy: viewport.height / 2 };
-      if (selectedSystem) {
-        const b = systemBounds(selectedSystem, catalog);
-        const c = worldToScreen(plan.targetRef.current, { x: (b.minX + b.maxX) / 2, z: (b.minZ + b.maxZ) / 2 });
-        if (c.sx >= 0 && c.sy >= 0 && c.sx <= viewport.width && c.sy <= viewport.height) anchor = c;
-      }
-      plan.zoomBy(factor, anchor);
-    },
-    [viewport, selectedSystem, catalog, plan],
-  );
-  const level = detailLevel(plan.view.scale);
-
-  usePlannerKeys({ store, ui, run, explain, zoom: zoomButtons, enabled: mode === '2d' });
+  usePlanGestures(wrapRef, controller);
+  usePlannerKeys(controller, mode === '2d');
+  const level = detailLevel(view.scale);
 
   const placedNew = () => {
     const systems = store.getState().config.systems;
@@ -181,12 +119,12 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, footprints }: P
       <div className="workspace">
         <div className="stage">
           {mode === '2d' ? (
-            <div className="plan-wrap" ref={wrapRef} data-testid="plan" data-scale={plan.view.scale.toFixed(3)} data-level={level}>
-              <PlanSvg config={config} catalog={catalog} view={plan.view} selection={path} drag={drag} footprints={footprints} />
+            <div className="plan-wrap" ref={wrapRef} data-testid="plan" data-scale={view.scale.toFixed(3)} data-level={level}>
+              <PlanSvg config={config} catalog={catalog} view={view} selection={path} drag={drag} footprints={footprints} />
               <PlanControls
                 config={config}
                 catalog={catalog}
-                view={plan.view}
+                view={view}
                 viewport={viewport}
                 level={level}
                 selection={path}
@@ -195,15 +133,15 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, footprints }: P
                 onOpenOptions={() => ui.setState({ optionsOpen: true, panelOpen: true })}
               />
               <div className="zoom-controls" data-plan-control>
-                <ActionButton label="Zoom in" disabledReason={null} onPress={() => zoomButtons(ZOOM_STEP)} testId="zoom-in">
+                <CommandButton controller={controller} id="zoom-in" testId="zoom-in">
                   +
-                </ActionButton>
-                <ActionButton label="Zoom out" disabledReason={null} onPress={() => zoomButtons(1 / ZOOM_STEP)} testId="zoom-out">
+                </CommandButton>
+                <CommandButton controller={controller} id="zoom-out" testId="zoom-out">
                   −
-                </ActionButton>
-                <ActionButton label="Fit room" disabledReason={null} onPress={() => plan.animateTo(fitRoom(config.room, viewport))} testId="zoom-fit">
+                </CommandButton>
+                <CommandButton controller={controller} id="zoom-fit" testId="zoom-fit">
                   ⤢
-                </ActionButton>
+                </CommandButton>
               </div>
               {status && (
                 <div className="status-line" role="status" key={status.seq}>
@@ -214,7 +152,7 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, footprints }: P
           ) : (
             <LazyView3D store={store} onBack={() => ui.setState({ mode: '2d' })} />
           )}
-          <BottomBar store={store} ui={ui} config={config} path={path} gate={gate} canUndo={canUndo} canRedo={canRedo} mode={mode} />
+          <BottomBar controller={controller} mode={mode} />
         </div>
         <aside className={`side-panel${panelOpen ? ' open' : ''}`} aria-label="Presets and price">
           {optionsOpen && <OptionsPanel config={config} catalog={catalog} path={path} gate={gate} onClose={() => ui.setState({ optionsOpen: false })} footprints={footprints} />}

@@ -11,11 +11,7 @@ export function RailLengthField({ railId, railNumber, length, gate }: { railId: 
     <CommitField
       label={`Rail ${railNumber} length (m)`}
       value={length}
-      onCommit={(value) => {
-        const reason = gate.reason('setRailLength', { railId, length: value });
-        if (!reason) gate.run('setRailLength', { railId, length: value });
-        return reason;
-      }}
+      onCommit={(value) => gate.attempt('setRailLength', { railId, length: value })}
       onRefused={gate.explain}
     />
   );

@@ -12,6 +12,8 @@ export interface ActionGate {
   reason<N extends ActionName>(name: N, params: ActionParams<N>): string | null;
   /** Runs an action (the store re-checks isEnabled and records it for undo). */
   run<N extends ActionName>(name: N, params: ActionParams<N>): void;
+  /** Runs an action if it is enabled; returns null when it ran, else the reason (what a CommitField's onCommit returns). */
+  attempt<N extends ActionName>(name: N, params: ActionParams<N>): string | null;
   /** Shows why something cannot be done (status line for touch users). */
   explain(reason: string): void;
 }
@@ -22,13 +24,19 @@ export function createActionGate(
   run: (name: ActionName, params: unknown) => void,
   explain: (reason: string) => void,
 ): ActionGate {
+  const reason = (name: ActionName, params: unknown): string | null => {
+    const e = checkAction(config, name, params, catalog);
+    return e === true ? null : e.reason;
+  };
   return {
-    reason(name, params) {
-      const e = checkAction(config, name, params, catalog);
-      return e === true ? null : e.reason;
-    },
+    reason,
     run(name, params) {
       run(name, params);
+    },
+    attempt(name, params) {
+      const r = reason(name, params);
+      if (r === null) run(name, params);
+      return r;
     },
     explain,
   };

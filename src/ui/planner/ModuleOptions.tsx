@@ -1,0 +1,73 @@
+import { useSyncExternalStore } from 'react';
+import type { Catalog } from '../../core/model/catalogSchema';
+import type { ModuleInstance } from '../../core/model/configuration';
+import { PhotometryWarnings } from '../shared/PhotometryWarnings';
+import type { ActionGate } from './actionGate';
+import type { FootprintSource } from './footprintSource';
+import { GatedButton } from './GatedButton';
+import { modulePhotometryPath } from './moduleFootprint';
+import { OptionChips } from './OptionChips';
+import { OptionsSection } from './OptionsSection';
+
+/** Dimming levels offered as touch-sized choices (the 3D view relights instantly on a change). */
+export const DIMMING_STEPS = [0.25, 0.5, 0.75, 1] as const;
+
+/** The warnings of a module's photometric file, once the plan has loaded it (re-renders when it arrives). */
+function ModulePhotometryNote({ source, path }: { source: FootprintSource; path: string }) {
+  useSyncExternalStore(source.subscribe, source.version, source.version);
+  return <PhotometryWarnings notes={[{ file: path, warnings: source.warnings(path) }]} testId="module-photometry-warnings" />;
+}
+
+export interface ModuleOptionsProps {
+  module: ModuleInstance;
+  catalog: Catalog;
+  gate: ActionGate;
+  onClose: () => void;
+  /** The plan's photometry loader: the module's file warnings are shown from it. */
+  footprints?: FootprintSource;
+}
+
+/** A selected module's settings (configurator paper, fig. 10, 11): type, beam, photometry notes, colour temperature, dimming, remove. */
+export function ModuleOptions({ module, catalog, gate, onClose, footprints }: ModuleOptionsProps) {
+  const type = catalog.moduleTypes.find((t) => t.id === module.type);
+  const photometryPath = modulePhotometryPath(module, catalog);
+  const moduleId = module.id;
+  return (
+    <OptionsSection title={`Module: ${type?.name ?? module.type}`} onClose={onClose}>
+      <OptionChips title="Module type">
+        {catalog.moduleTypes.map((t) => (
+          <GatedButton key={t.id} gate={gate} action="setModuleType" params={{ moduleId, type: t.id }} label={t.name} current={t.id === module.type} testId={`type-${t.id}`} />
+        ))}
+      </OptionChips>
+      {type && type.beams.length > 0 && (
+        <OptionChips title="Beam">
+          {type.beams.map((b) => (
+            <GatedButton key={b.id} gate={gate} action="setModuleBeam" params={{ moduleId, beam: b.id }} label={b.label} current={b.id === module.beam} testId={`beam-${b.id}`} />
+          ))}
+        </OptionChips>
+      )}
+      {footprints && photometryPath && <ModulePhotometryNote source={footprints} path={photometryPath} />}
+      {type && (
+        <OptionChips title="Colour temperature">
+          {type.ccts.map((k) => (
+            <GatedButton key={k} gate={gate} action="setModuleCct" params={{ moduleId, cct: k }} label={`${k} K`} current={k === module.cct} testId={`cct-${k}`} />
+          ))}
+        </OptionChips>
+      )}
+      <OptionChips title="Dimming">
+        {DIMMING_STEPS.map((d) => (
+          <GatedButton
+            key={d}
+            gate={gate}
+            action="setModuleDimming"
+            params={{ moduleId, dimming: d }}
+            label={`${Math.round(d * 100)} %`}
+            current={Math.abs(module.dimming - d) < 1e-9}
+            testId={`dimming-${Math.round(d * 100)}`}
+          />
+        ))}
+      </OptionChips>
+      <GatedButton gate={gate} action="removeModule" params={{ moduleId }} label="Remove module" />
+    </OptionsSection>
+  );
+}

@@ -1,0 +1,261 @@
+import { systemBounds } from '../../core/model/geometry';
+import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
+import { type UiStore, showStatus } from '../../core/store/uiStore';
+import { detailLevel } from './detailLevel';
+import { type KeyChord, findByChord } from './keyChord';
+import { type PlanHit, planHitTest } from './planHitTest';
+import { selectionPath } from './selection';
+import { type CommandContext, type PlannerCommand, PLANNER_COMMANDS, plannerCommand, runCommand } from './plannerCommands';
+import {
+  type PlanPoint,
+  type PlanView,
+  type ScreenPoint,
+  type Viewport,
+  fitRoom,
+  panBy,
+  screenToWorld,
+  wheelZoomFactor,
+  worldToScreen,
+  zoomAt,
+} from './viewTransform';
+
+/** A system being dragged: drawn offset by `delta` (metres) until dropped; `invalid` where it may not be dropped. */
+export interface DragPreview {
+  systemId: string;
+  delta: PlanPoint;
+  invalid: boolean;
+}
+
+/** What changed: the view (animated for buttons, wheel and keys; at once for fingers), or the drag preview. */
+export type PlannerEvent = { kind: 'view'; animate: boolean } | { kind: 'drag' };
+
+/**
+ * Pixels a pointer must travel on either axis before a press becomes a drag; less is a tap.
+ * The same as @use-gesture's tap threshold, which the React side uses to tell them apart.
+ */
+export const DRAG_THRESHOLD_PX = 3;
+
+/** The plan's size until it is measured. */
+export const DEFAULT_VIEWPORT: Viewport = { width: 800, height: 600 };
+
+type Gesture =
+  | { mode: 'pending'; down: ScreenPoint; hit: PlanHit }
+  | { mode: 'pan'; last: ScreenPoint }
+  | { mode: 'system'; id: string; down: ScreenPoint; startScale: number }
+  | { mode: 'pinch'; view: PlanView; world: PlanPoint; d0: number };
+
+/**
+ * The plan's interaction logic without React or a DOM, in the manner of tldraw's TestEditor:
+ * pointer, wheel, pinch and key input in screen pixels (relative to the plan's top-left
+ * corner) becomes selection, panning, zooming and the model's actions through the store.
+ * The React hooks feed it DOM events and draw what it holds; tests drive it directly.
+ *
+ * `view` is where the view is heading: the React side animates towards it, and gestures
+ * build on it so fast wheel turns accumulate.
+ */
+export class PlannerController implements CommandContext {
+  readonly store: ConfiguratorStore;
+  readonly ui: UiStore;
+  view: PlanView;
+  viewport: Viewport;
+  drag: DragPreview | null = null;
+  private gesture: Gesture | null = null;
+  private fittedFor: string | null = null;
+  private readonly listeners = new Set<(e: PlannerEvent) => void>();
+
+  constructor(store: ConfiguratorStore, ui: UiStore, viewport: Viewport = DEFAULT_VIEWPORT) {
+    this.store = store;
+    this.ui = ui;
+    this.viewport = viewport;
+    this.view = fitRoom(store.getState().config.room, viewport);
+  }
+
+  /** Listens for view and drag-preview changes; returns the unsubscribe function. */
+  subscribe = (listener: (e: PlannerEvent) => void): (() => void) => {
+    this.listeners.add(listener);
+    return () => this.listeners.delete(listener);
+  };
+
+  private emit(e: PlannerEvent): void {
+    for (const l of this.listeners) l(e);
+  }
+
+  setView(next: PlanView, animate: boolean): void {
+    this.view = next;
+    this.emit({ kind: 'view', animate });
+  }
+
+  private setDrag(drag: DragPreview | null): void {
+    this.drag = drag;
+    this.emit({ kind: 'drag' });
+  }
+
+  /** The plan's size changed (or the room did): fits the room when either differs from the last fit. */
+  setViewport(viewport: Viewport): void {
+    this.viewport = viewport;
+    const { room } = this.store.getState().config;
+    const key = `${room.width}x${room.depth}@${viewport.width}x${viewport.height}`;
+    if (this.fittedFor === key) return;
+    this.fittedFor = key;
+    this.setView(fitRoom(room, viewport), false);
+  }
+
+  // --- actions and commands -------------------------------------------------------------
+
+  explain = (reason: string): void => showStatus(this.ui, reason);
+
+  run = (name: string, params: unknown): void => {
+    const r = this.store.getState().dispatch(name, params);
+    if (!r.ok) this.explain(r.reason);
+  };
+
+  /** Runs a command of the table by id (or explains why it may not run). */
+  command(id: string): void {
+    runCommand(plannerCommand(id), this, this.explain);
+  }
+
+  /**
+   * A key pressed outside text fields. Returns whether a command took it (the caller then
+   * keeps the browser from acting on it too).
+   */
+  keyDown(chord: KeyChord): boolean {
+    const command: PlannerCommand | undefined = findByChord(PLANNER_COMMANDS, chord);
+    if (!command) return false;
+    runCommand(command, this, this.explain);
+    return true;
+  }
+
+  // --- view -----------------------------------------------------------------------------
+
+  /**
+   * Buttons and keys zoom about the selected system when it is on screen (so zooming in on it
+   * reaches the module level without panning), else about the middle of the plan.
+   */
+  zoom = (factor: number): void => {
+    const { config, catalog, selection } = this.store.getState();
+    const { width, height } = this.viewport;
+    let anchor = { sx: width / 2, sy: height / 2 };
+    const systemId = selectionPath(config, selection).systemId;
+    const system = config.systems.find((s) => s.id === systemId);
+    if (system) {
+      const b = systemBounds(system, catalog);
+      const c = worldToScreen(this.view, { x: (b.minX + b.maxX) / 2, z: (b.minZ + b.maxZ) / 2 });
+      if (c.sx >= 0 && c.sy >= 0 && c.sx <= width && c.sy <= height) anchor = c;
+    }
+    this.setView(zoomAt(this.view, anchor, factor), true);
+  };
+
+  fit = (): void => this.setView(fitRoom(this.store.getState().config.room, this.viewport), true);
+
+  /** A wheel turn at a point, in pixels (wheels that count lines or pages converted by the caller): zooms about it. */
+  wheel(at: ScreenPoint, deltaYPixels: number): void {
+    this.setView(zoomAt(this.view, at, wheelZoomFactor(deltaYPixels)), true);
+  }
+
+  /** Two fingers (or a trackpad pinch) start `distance` px apart about `centre`; a pointer drag in progress is dropped. */
+  pinchStart(centre: ScreenPoint, distance: number): void {
+    this.pointerCancel();
+    this.gesture = { mode: 'pinch', view: this.view, world: screenToWorld(this.view, centre), d0: Math.max(1, distance) };
+  }
+
+  /**
+   * The fingers moved: the zoom is the ratio of their distance to the starting one (so it does
+   * not depend on earlier pinches), and the world point that started under them is put back
+   * under their centre (two-finger pan).
+   */
+  pinchMove(centre: ScreenPoint, distance: number): void {
+    const g = this.gesture;
+    if (g?.mode !== 'pinch') return;
+    const scaled = zoomAt(g.view, centre, Math.max(1, distance) / g.d0);
+    const drift = worldToScreen(scaled, g.world);
+    this.setView(panBy(scaled, centre.sx - drift.sx, centre.sy - drift.sy), false);
+  }
+
+  pinchEnd(): void {
+    if (this.gesture?.mode === 'pinch') this.gesture = null;
+  }
+
+  // --- pointer --------------------------------------------------------------------------
+
+  /** What is under a screen point, as drawn now. */
+  hitTest(at: ScreenPoint): PlanHit {
+    const { config, catalog } = this.store.getState();
+    return planHitTest(config, catalog, this.view, at);
+  }
+
+  /** A press on the plan (not on a control): on a system it may become a move, elsewhere a pan, or a tap. */
+  pointerDown(at: ScreenPoint): void {
+    this.gesture = { mode: 'pending', down: at, hit: this.hitTest(at) };
+  }
+
+  pointerMove(at: ScreenPoint): void {
+    const g = this.gesture;
+    if (!g) return;
+    if (g.mode === 'pending') {
+      // Below the threshold the press may still be a tap: nothing moves yet.
+      if (Math.abs(at.sx - g.down.sx) < DRAG_THRESHOLD_PX && Math.abs(at.sy - g.down.sy) < DRAG_THRESHOLD_PX) return;
+      if (g.hit.systemId) {
+        this.gesture = { mode: 'system', id: g.hit.systemId, down: g.down, startScale: this.view.scale };
+        if (this.store.getState().selection?.id !== g.hit.systemId) this.store.getState().select({ kind: 'system', id: g.hit.systemId });
+      } else {
+        // The pan starts where the press became a drag, so the plan does not jump by the threshold.
+        this.gesture = { mode: 'pan', last: at };
+        return;
+      }
+    }
+    const cur = this.gesture;
+    if (cur?.mode === 'pan') {
+      this.setView(panBy(this.view, at.sx - cur.last.sx, at.sy - cur.last.sy), false);
+      this.gesture = { mode: 'pan', last: at };
+    } else if (cur?.mode === 'system') {
+      const delta = this.systemDelta(cur, at);
+      // Preview whether dropping here would be accepted (the model's isEnabled, live).
+      const s = this.store.getState().config.systems.find((x) => x.id === cur.id);
+      const invalid = !s || this.store.getState().isEnabled('moveSystem', { systemId: cur.id, x: s.x + delta.x, z: s.z + delta.z }) !== true;
+      this.setDrag({ systemId: cur.id, delta, invalid });
+    }
+  }
+
+  /** The press ends: a tap selects, a system drag is committed as one undoable move, a pan just stops. */
+  pointerUp(at: ScreenPoint): void {
+    this.pointerMove(at);
+    const g = this.gesture;
+    this.gesture = null;
+    if (g?.mode === 'pending') this.tap(g.hit);
+    else if (g?.mode === 'system') this.drop(g.id, this.systemDelta(g, at));
+  }
+
+  /** The press was taken over (a second finger, the browser): a drag is dropped without moving anything. */
+  pointerCancel(): void {
+    if (this.gesture?.mode !== 'pinch') this.gesture = null;
+    if (this.drag) this.setDrag(null);
+  }
+
+  /** The pointer's movement since the press, in metres at the scale the drag started at: the grabbed point stays under it. */
+  private systemDelta(g: { down: ScreenPoint; startScale: number }, at: ScreenPoint): PlanPoint {
+    return { x: (at.sx - g.down.sx) / g.startScale, z: (at.sy - g.down.sy) / g.startScale };
+  }
+
+  private drop(systemId: string, delta: PlanPoint): void {
+    this.setDrag(null);
+    const s = this.store.getState().config.systems.find((x) => x.id === systemId);
+    if (!s) return;
+    // Positions snap to whole centimetres so the move fields show clean numbers.
+    const x = Math.round((s.x + delta.x) * 100) / 100;
+    const z = Math.round((s.z + delta.z) * 100) / 100;
+    this.run('moveSystem', { systemId, x, z });
+  }
+
+  /**
+   * Like the controls, what a tap selects follows the zoom level: whole systems when zoomed
+   * out, rails and modules when zoomed in. A tap on the floor deselects.
+   */
+  tap(hit: PlanHit): void {
+    const select = this.store.getState().select;
+    if (!hit.systemId) return select(null);
+    const zoomedIn = detailLevel(this.view.scale) === 'module';
+    if (zoomedIn && hit.moduleId) select({ kind: 'module', id: hit.moduleId });
+    else if (zoomedIn && hit.railId) select({ kind: 'rail', id: hit.railId });
+    else select({ kind: 'system', id: hit.systemId });
+  }
+}

@@ -1,0 +1,215 @@
+import { checkAction, type ActionName } from '../../core/model/actionDefinitions';
+import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
+import type { UiStore } from '../../core/store/uiStore';
+import { deleteTarget } from './deleteTarget';
+import type { KeySpec } from './keyChord';
+import { selectionPath } from './selection';
+
+/** What a command may use: the stores, the action runner and the view. The PlannerController provides it. */
+export interface CommandContext {
+  readonly store: ConfiguratorStore;
+  readonly ui: UiStore;
+  /** Dispatches an action; a refusal is explained in the status line. */
+  run(name: ActionName, params: unknown): void;
+  /** Zoom by a factor about the selected system when it is on screen, else the plan's middle. */
+  zoom(factor: number): void;
+  /** Show the whole room. */
+  fit(): void;
+}
+
+/**
+ * One UI command, used alike by the bottom bar, the zoom buttons and the keyboard, so a
+ * button and its key can never disagree about what they do or when they may.
+ */
+export interface PlannerCommand {
+  readonly id: string;
+  /** Accessible name of its button (commands that change with the state compute it). */
+  readonly label: string | ((c: CommandContext) => string);
+  /** Keys that run it (keyChord.ts syntax); empty for button-only commands. */
+  readonly keys: readonly KeySpec[];
+  /** null when it may run now, else why not: the disabled button's title, and what a key press explains. */
+  readonly disabledReason: (c: CommandContext) => string | null;
+  readonly action: (c: CommandContext) => void;
+  /** For toggles: whether the button shows as pressed. */
+  readonly pressed?: (c: CommandContext) => boolean;
+}
+
+/** Degrees the rotate command (button and R) turns a system: a quarter turn, counterclockwise. */
+export const ROTATE_STEP = 90;
+
+/**
+ * Zoom factor of one zoom-in (button or +) step; zoom-out divides by it. 1.5 is what the
+ * zoom buttons have always used: e2e/helpers.ts `zoomToModuleLevel` clicks it and the golden
+ * screenshot `module-level-desktop.png` is taken at the scale those clicks reach.
+ */
+export const ZOOM_STEP = 1.5;
+
+/** Arrow keys move the selected system this far (metres); with Shift, a tenth of it. */
+export const KEY_MOVE_STEP = 0.1;
+
+const always = () => null;
+
+function selectedSystem(c: CommandContext) {
+  const { config, selection } = c.store.getState();
+  const id = selectionPath(config, selection).systemId;
+  return config.systems.find((s) => s.id === id);
+}
+
+/** The model's reason an action may not run now, null when it may. */
+function refusal(c: CommandContext, name: ActionName, params: unknown): string | null {
+  const { config, catalog } = c.store.getState();
+  const e = checkAction(config, name, params, catalog);
+  return e === true ? null : e.reason;
+}
+
+function deleteCommand(): PlannerCommand {
+  const target = (c: CommandContext) => {
+    const { config, selection } = c.store.getState();
+    return deleteTarget(selectionPath(config, selection));
+  };
+  return {
+    id: 'delete',
+    label: 'Delete',
+    keys: ['Delete', 'Backspace'],
+    disabledReason: (c) => {
+      const t = target(c);
+      return 'reason' in t ? t.reason : refusal(c, t.name, t.params);
+    },
+    action: (c) => {
+      const t = target(c);
+      if (!('reason' in t)) c.run(t.name, t.params);
+    },
+  };
+}
+
+function rotateCommand(id: string, label: string, keys: KeySpec[], by: number): PlannerCommand {
+  return {
+    id,
+    label,
+    keys,
+    disabledReason: (c) => {
+      const s = selectedSystem(c);
+      return s ? refusal(c, 'rotateSystem', { systemId: s.id, by }) : 'select a system first';
+    },
+    action: (c) => {
+      const s = selectedSystem(c);
+      if (s) c.run('rotateSystem', { systemId: s.id, by });
+    },
+  };
+}
+
+/** Where an arrow step puts the selected system, rounded to the millimetre so repeated steps do not gather float noise. */
+function stepped(c: CommandContext, dx: number, dz: number) {
+  const s = selectedSystem(c);
+  if (!s) return null;
+  const round = (v: number) => Math.round(v * 1000) / 1000;
+  return { systemId: s.id, x: dx ? round(s.x + dx) : s.x, z: dz ? round(s.z + dz) : s.z };
+}
+
+function moveCommand(key: string, dx: number, dz: number, fine: boolean): PlannerCommand {
+  const step = fine ? KEY_MOVE_STEP / 10 : KEY_MOVE_STEP;
+  return {
+    id: `move-${key}${fine ? '-fine' : ''}`,
+    label: `Move the system ${step} m ${key.replace('Arrow', '').toLowerCase()}`,
+    keys: [fine ? `Shift+${key}` : key],
+    disabledReason: (c) => {
+      const p = stepped(c, dx * step, dz * step);
+      return p ? refusal(c, 'moveSystem', p) : 'select a system first';
+    },
+    action: (c) => {
+      const p = stepped(c, dx * step, dz * step);
+      if (p) c.run('moveSystem', p);
+    },
+  };
+}
+
+const ARROWS: [string, number, number][] = [
+  ['ArrowLeft', -1, 0],
+  ['ArrowRight', 1, 0],
+  ['ArrowUp', 0, -1],
+  ['ArrowDown', 0, 1],
+];
+
+function historyCommand(id: 'undo' | 'redo', label: string, keys: KeySpec[]): PlannerCommand {
+  return {
+    id,
+    label,
+    keys,
+    disabledReason: (c) => {
+      const st = c.store.getState();
+      return (id === 'undo' ? st.canUndo : st.canRedo) ? null : `nothing to ${id}`;
+    },
+    action: (c) => void c.store.getState()[id](),
+  };
+}
+
+/**
+ * Every command of the planner's bottom bar, zoom buttons and keyboard (docs/planner.md,
+ * "Bottom bar and keys"). Keys are only listened to outside text fields, in the 2D plan.
+ */
+export const PLANNER_COMMANDS: readonly PlannerCommand[] = [
+  deleteCommand(),
+  {
+    id: 'select-next',
+    label: 'Select next system',
+    keys: [],
+    disabledReason: (c) => (c.store.getState().config.systems.length === 0 ? 'place a preset first' : null),
+    action: (c) => {
+      const { config, selection } = c.store.getState();
+      const systems = config.systems;
+      const i = systems.findIndex((s) => s.id === selectionPath(config, selection).systemId);
+      c.store.getState().select({ kind: 'system', id: systems[(i + 1) % systems.length].id });
+    },
+  },
+  {
+    id: 'options',
+    label: 'Options',
+    keys: [],
+    disabledReason: always,
+    pressed: (c) => c.ui.getState().optionsOpen,
+    action: (c) => c.ui.setState((s) => ({ optionsOpen: !s.optionsOpen, panelOpen: !s.optionsOpen })),
+  },
+  rotateCommand('rotate', 'Rotate', ['r'], ROTATE_STEP),
+  rotateCommand('rotate-back', 'Rotate back', ['Shift+r'], -ROTATE_STEP),
+  historyCommand('undo', 'Undo', ['Mod+z']),
+  historyCommand('redo', 'Redo', ['Mod+Shift+z', 'Mod+y']),
+  {
+    id: 'toggle-3d',
+    label: (c) => (c.ui.getState().mode === '2d' ? 'Show 3D view' : 'Show 2D plan'),
+    keys: [],
+    disabledReason: always,
+    pressed: (c) => c.ui.getState().mode === '3d',
+    action: (c) => c.ui.setState((s) => ({ mode: s.mode === '2d' ? '3d' : '2d' })),
+  },
+  { id: 'zoom-in', label: 'Zoom in', keys: ['+', '='], disabledReason: always, action: (c) => c.zoom(ZOOM_STEP) },
+  { id: 'zoom-out', label: 'Zoom out', keys: ['-', '_'], disabledReason: always, action: (c) => c.zoom(1 / ZOOM_STEP) },
+  { id: 'zoom-fit', label: 'Fit room', keys: [], disabledReason: always, action: (c) => c.fit() },
+  {
+    id: 'deselect',
+    label: 'Deselect',
+    keys: ['Escape'],
+    disabledReason: always,
+    action: (c) => {
+      c.store.getState().select(null);
+      c.ui.setState({ optionsOpen: false });
+    },
+  },
+  ...ARROWS.flatMap(([key, dx, dz]) => [moveCommand(key, dx, dz, false), moveCommand(key, dx, dz, true)]),
+];
+
+export function plannerCommand(id: string): PlannerCommand {
+  const c = PLANNER_COMMANDS.find((x) => x.id === id);
+  if (!c) throw new Error(`unknown planner command '${id}'`);
+  return c;
+}
+
+export function commandLabel(command: PlannerCommand, c: CommandContext): string {
+  return typeof command.label === 'string' ? command.label : command.label(c);
+}
+
+/** Runs a command, or explains why it may not run (a disabled button's tap and a refused key alike). */
+export function runCommand(command: PlannerCommand, c: CommandContext, explain: (reason: string) => void): void {
+  const reason = command.disabledReason(c);
+  if (reason !== null) explain(reason);
+  else command.action(c);
+}
