@@ -55,17 +55,10 @@ export function ModuleOptions({ module, catalog, gate, onClose, footprints }: Mo
         </OptionChips>
       )}
       <OptionChips title="Dimming">
-        {DIMMING_STEPS.map((d) => (
-          <GatedButton
-            key={d}
-            gate={gate}
-            action="setModuleDimming"
-            params={{ moduleId, dimming: d }}
-            label={`${Math.round(d * 100)} %`}
-            current={Math.abs(module.dimming - d) < 1e-9}
-            testId={`dimming-${Math.round(d * 100)}`}
-          />
-        ))}
+        {DIMMING_STEPS.map((d) => {
+          const percent = Math.round(d * 100);
+          return <GatedButton key={d} gate={gate} action="setModuleDimming" params={{ moduleId, dimming: d }} label={`${percent} %`} current={Math.abs(module.dimming - d) < 1e-9} testId={`dimming-${percent}`} />;
+        })}
       </OptionChips>
       <GatedButton gate={gate} action="removeModule" params={{ moduleId }} label="Remove module" />
     </OptionsSection>
