@@ -10,7 +10,7 @@ command -v xvfb-run >/dev/null 2>&1 || need_pkgs+=(xvfb xauth)
 # headless-gl's native binding is compiled with node-gyp against these; the fonts are
 # listed so screenshot goldens see the same glyphs on every machine. libvulkan1 +
 # mesa-vulkan-drivers give ANGLE's Vulkan back end (no X display; docs/gpu-server.md).
-for p in build-essential python3 pkg-config libxi-dev libglu1-mesa-dev libglew-dev libgl1-mesa-dri libvulkan1 mesa-vulkan-drivers fonts-dejavu-core fonts-dejavu-extra fonts-liberation; do
+for p in build-essential python3 python3-venv pkg-config libxi-dev libglu1-mesa-dev libglew-dev libgl1-mesa-dri libvulkan1 mesa-vulkan-drivers fonts-dejavu-core fonts-dejavu-extra fonts-liberation; do
   dpkg -s "$p" >/dev/null 2>&1 || need_pkgs+=("$p")
 done
 if [ ${#need_pkgs[@]} -gt 0 ]; then
@@ -29,6 +29,13 @@ fi
 # headless-gl must have its native binding (npm >= 11 only runs approved install scripts).
 if [ ! -f node_modules/gl/build/Release/webgl.node ]; then
   npm rebuild gl
+fi
+# Radiance (the PyPI package pyradiance ships its binaries) in a project-local virtual
+# environment: the Radiance export test renders through it (docs/radiance.md). Optional: a
+# machine without it skips that test and says so.
+if [ ! -x .venv/bin/python ] || ! .venv/bin/python -c 'import pyradiance' >/dev/null 2>&1; then
+  (python3 -m venv .venv && .venv/bin/pip install --quiet --disable-pip-version-check pyradiance==1.3.1) \
+    || echo "setup: pyradiance could not be installed; the Radiance cross-check will be skipped"
 fi
 # ANGLE loads libvulkan.so.1 from its own folder: link the system loader there
 # (npm ci's postinstall does the same; this covers an existing node_modules).

@@ -12,6 +12,7 @@ const commands: Record<string, () => Promise<{ run: Command }>> = {
   probe: () => import('./probeCommand'),
   render: () => import('./renderCommand'),
   bench: () => import('./benchCommand'),
+  export: () => import('./exportCommand'),
 };
 
 const usage = `usage: luxbox <command> [...]
@@ -20,7 +21,8 @@ commands:
   bake <scene.json> --out <dir> [--samples N --bounces N --texel m]   bake light maps (docs/baker.md)
   probe <scene.json> <points.json> [--samples N --bounces N --texel m]   lux at surface points
   render <config-or-scene.json> --out image.png [--camera eye|top|corner|json --width --height --exposure EV --mode light|lux]   3D image (docs/viewer.md)
-  bench [--quick] [--out <dir>]   bake error vs time against the CPU reference (docs/benchmarks.md)`;
+  bench [--quick] [--out <dir>]   bake error vs time against the CPU reference (docs/benchmarks.md)
+  export radiance <config-or-scene.json> --out <dir> [--near-field split|point]   Radiance scene folder (docs/radiance.md)`;
 
 export async function main(argv: string[]): Promise<number> {
   const [name, ...rest] = argv;

@@ -1,0 +1,58 @@
+import { LUMINANCE_WEIGHTS } from '../bake/bakedMaps';
+import { num } from './radianceFrame';
+import { WHITE_EFFICACY } from './brightdataFile';
+
+/** The cameras the export writes view files for (luxbox's presets: docs/viewer.md). */
+export const EXPORT_VIEWS = ['eye', 'top', 'corner'] as const;
+
+/** The illuminance grids of the export: file stem, height above the floor (m), what it is. */
+export const EXPORT_GRIDS = [
+  { name: 'floor', height: 0.001, label: 'the floor (1 mm above it)' },
+  { name: 'workplane', height: 0.75, label: 'a horizontal work plane 0.75 m above the floor' },
+] as const;
+
+/** Spacing of the illuminance grids of the export, metres. */
+export const GRID_SPACING = 0.25;
+
+/** Image size of `render.sh`'s pictures. */
+export const IMAGE_SIZE = { width: 1024, height: 768 };
+
+/**
+ * rcalc expression: lux from `rtrace -I` RGB irradiance (W/m²), with Radiance's white efficacy
+ * (179 lm/W) and luxbox's luminance weights (Rec. 709 Y, bakedMaps.ts), so the numbers are
+ * those `luxbox probe` reports. Radiance's own tools use 0.265/0.670/0.065; for white light both
+ * give the same lux.
+ */
+export const LUX_EXPRESSION = `$1=${WHITE_EFFICACY}*(${LUMINANCE_WEIGHTS.map((w, c) => `${num(w)}*$${c + 1}`).join('+')})`;
+
+/**
+ * Ambient settings of the script. Enough bounces for bright rooms and a reflection limit above
+ * them: Radiance's default -lr 10 cuts the interreflection series of a ρ = 0.8 box 11 % short
+ * (measured on CIE 171:2006 §5.8: 371.5 lx instead of 416.7 lx; with -lr 40, 416.6 lx). No
+ * threshold on sources (-dt 0 -dc 1): every source is tested at every bounce.
+ */
+export const RTRACE_SETTINGS = '-ab 16 -ad 2048 -as 1024 -aa 0.05 -ar 512 -lr 20 -lw 1e-8 -dt 0 -dc 1';
+export const RPICT_SETTINGS = '-ab 8 -ad 1024 -as 512 -aa 0.1 -ar 256 -lr 12 -lw 1e-5 -ps 1';
+
+export function renderScript(): string {
+  const { width, height } = IMAGE_SIZE;
+  return `#!/bin/sh
+# Render this luxbox scene with Radiance (oconv, rpict, rtrace, rcalc on PATH).
+# Written by \`luxbox export radiance\`; see README.md in this folder.
+set -e
+cd "$(dirname "$0")"
+# Radiance's default search path starts with "."; a RAYPATH of your own gets "." in front, so
+# the source.cal of this folder (Radiance's own definitions) is found either way.
+if [ -n "\${RAYPATH:-}" ]; then RAYPATH=".:$RAYPATH"; export RAYPATH; fi
+
+oconv scene.rad > scene.oct
+
+# Illuminance grids (lux, one value per line, in the order of the .pts file).
+${EXPORT_GRIDS.map((g) => `rtrace -h -I ${RTRACE_SETTINGS} scene.oct < points/${g.name}.pts | rcalc -e '${LUX_EXPRESSION}' > ${g.name}.lux`).join('\n')}
+
+# Images (HDR, radiance in W/sr/m²; view with ximage or convert with pcond/ra_tiff).
+for view in ${EXPORT_VIEWS.join(' ')}; do
+  rpict -vf views/$view.vf -x ${width} -y ${height} ${RPICT_SETTINGS} scene.oct > $view.hdr
+done
+`;
+}

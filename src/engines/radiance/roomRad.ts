@@ -1,0 +1,55 @@
+import type { Rgb, SurfaceName, Vec3 } from '../../core/model/lightingScene';
+import { toRgb, type BakeScene } from '../bake/bakeScene';
+import { num, toRadiance, vecText } from './radianceFrame';
+
+/** The six surfaces in luxbox's world: four corners and the normal pointing into the room. */
+function surfaceQuads(room: { width: number; height: number; depth: number }): { name: SurfaceName; corners: Vec3[]; inward: Vec3 }[] {
+  const { width: W, height: H, depth: D } = room;
+  return [
+    { name: 'floor', corners: [[0, 0, 0], [W, 0, 0], [W, 0, D], [0, 0, D]], inward: [0, 1, 0] },
+    { name: 'ceiling', corners: [[0, H, 0], [W, H, 0], [W, H, D], [0, H, D]], inward: [0, -1, 0] },
+    { name: 'north', corners: [[0, 0, 0], [W, 0, 0], [W, H, 0], [0, H, 0]], inward: [0, 0, 1] },
+    { name: 'south', corners: [[0, 0, D], [W, 0, D], [W, H, D], [0, H, D]], inward: [0, 0, -1] },
+    { name: 'west', corners: [[0, 0, 0], [0, 0, D], [0, H, D], [0, H, 0]], inward: [1, 0, 0] },
+    { name: 'east', corners: [[W, 0, 0], [W, 0, D], [W, H, D], [W, H, 0]], inward: [-1, 0, 0] },
+  ];
+}
+
+/**
+ * Radiance orders a polygon's vertices counterclockwise seen from the side its normal points to
+ * (right-hand rule). Each surface faces into the room, so a ray from inside sees its front.
+ */
+function inwardOrder(corners: Vec3[], inward: Vec3): Vec3[] {
+  const [a, b, c] = corners;
+  const e1 = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+  const e2 = [c[0] - b[0], c[1] - b[1], c[2] - b[2]];
+  const n = [e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]];
+  const facing = n[0] * inward[0] + n[1] * inward[1] + n[2] * inward[2];
+  return facing > 0 ? corners : [...corners].reverse();
+}
+
+/**
+ * The room as six Lambertian polygons: Radiance `plastic` with no specular part reflects
+ * ρ·E/π, the grey (or RGB) Lambertian surface luxbox bakes.
+ */
+export function roomRad(scene: BakeScene): string {
+  const out: string[] = ['# Room: six Lambertian surfaces, normals into the room'];
+  for (const { name, corners, inward } of surfaceQuads(scene.room)) {
+    const rho: Rgb = toRgb(scene.room.reflectance[name]);
+    const vertices = inwardOrder(corners, inward).map(toRadiance);
+    out.push(
+      '',
+      `void plastic ${name}_material`,
+      '0',
+      '0',
+      `5 ${rho.map(num).join(' ')} 0 0`,
+      '',
+      `${name}_material polygon ${name}`,
+      '0',
+      '0',
+      `12`,
+      ...vertices.map((v) => `\t${vecText(v)}`),
+    );
+  }
+  return out.join('\n') + '\n';
+}

@@ -1,0 +1,32 @@
+import { chmodSync, mkdirSync, writeFileSync } from 'node:fs';
+import { basename, dirname, join } from 'node:path';
+import { InputError } from '../../core/inputError';
+import { exportRadiance } from '../../engines/radiance/exportRadiance';
+import { parseBakeCli } from '../node/bakeCliOptions';
+import { loadRenderInput } from '../node/renderInput';
+
+export const exportUsage = 'export radiance <config-or-scene.json> --out <dir> [--near-field split|point]';
+
+/**
+ * `luxbox export radiance`: a self-contained Radiance folder for a configuration (the app's
+ * scene file) or a lighting scene (docs/radiance.md). No GL: it writes text only.
+ */
+export async function run(args: string[]): Promise<number> {
+  const [format, ...rest] = args;
+  if (format !== 'radiance') throw new InputError(`export: unknown format ${format === undefined ? '(none)' : `"${format}"`} (usage: luxbox ${exportUsage})`);
+  const { positional, settings, options } = parseBakeCli('export radiance', rest, ['--out']);
+  if (positional.length !== 1) throw new InputError(`export radiance: expected one scene file (usage: luxbox ${exportUsage})`);
+  const out = options['--out'];
+  if (!out) throw new InputError(`export radiance: --out <dir> is required (usage: luxbox ${exportUsage})`);
+  const input = loadRenderInput(positional[0]);
+  const title = basename(positional[0]).replace(/\.json$/i, '');
+  const files = exportRadiance(input.bakeScene, settings, title);
+  for (const file of files) {
+    const path = join(out, file.path);
+    mkdirSync(dirname(path), { recursive: true });
+    writeFileSync(path, file.text);
+    if (file.executable) chmodSync(path, 0o755);
+  }
+  process.stdout.write(`${out}: ${files.length} files (scene.rad, render.sh, README.md, ${files.filter((f) => f.path.endsWith('.dat')).length} distributions)\n`);
+  return 0;
+}
