@@ -79,7 +79,7 @@ const MEMO_SIZE = 512;
  */
 let memo: { catalog: Catalog; state: Configuration; outcomes: Map<string, Outcome> } | undefined;
 
-/** Runs an action by name if enabled: the next state, or the refusal (bad names or params included). Never throws for bad input. */
+/** What an action by name does to a state: the next state when enabled, else the refusal (bad names or params included). Never throws for bad input. */
 export function attemptAction(state: Configuration, name: string, params: unknown, catalog: Catalog): Outcome {
   let action: UserAction;
   try {
@@ -93,7 +93,8 @@ export function attemptAction(state: Configuration, name: string, params: unknow
   const known = memo.outcomes.get(key);
   if (known) return known;
   const outcome = action.attempt(state);
-  if (memo.outcomes.size >= MEMO_SIZE) memo.outcomes.delete(memo.outcomes.keys().next().value as string);
+  const oldest = memo.outcomes.keys().next();
+  if (memo.outcomes.size >= MEMO_SIZE && !oldest.done) memo.outcomes.delete(oldest.value);
   memo.outcomes.set(key, outcome);
   return outcome;
 }
