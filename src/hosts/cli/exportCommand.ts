@@ -13,11 +13,11 @@ export const exportUsage = 'export radiance <config-or-scene.json> --out <dir> [
  */
 export async function run(args: string[]): Promise<number> {
   const [format, ...rest] = args;
-  if (format !== 'radiance') throw new InputError(`export: unknown format ${format === undefined ? '(none)' : `"${format}"`} (usage: luxbox ${exportUsage})`);
-  const { positional, settings, options } = parseBakeCli('export radiance', rest, ['--out']);
-  if (positional.length !== 1) throw new InputError(`export radiance: expected one scene file (usage: luxbox ${exportUsage})`);
+  if (format !== 'radiance') throw new InputError(`unknown format ${format === undefined ? '(none)' : `"${format}"`} (usage: luxbox ${exportUsage})`);
+  const { positional, settings, options } = parseBakeCli('radiance', rest, ['--out']);
+  if (positional.length !== 1) throw new InputError(`radiance: expected one scene file (usage: luxbox ${exportUsage})`);
   const out = options['--out'];
-  if (!out) throw new InputError(`export radiance: --out <dir> is required (usage: luxbox ${exportUsage})`);
+  if (!out) throw new InputError(`radiance: --out <dir> is required (usage: luxbox ${exportUsage})`);
   const input = loadRenderInput(positional[0]);
   const title = basename(positional[0]).replace(/\.json$/i, '');
   const files = exportRadiance(input.bakeScene, settings, title);
