@@ -7,12 +7,9 @@ describe('validate at scale', () => {
   it('a hall with 500 rails validates with O(n) exact rectangle tests', () => {
     const config = hall(25, 20);
     const stats = { pairTests: 0 };
-    const t0 = performance.now();
     expect(validate(config, catalog, { stats })).toEqual([]);
-    const ms = performance.now() - t0;
     // 500 rails + 475 joints = 975 elements; all pairs would be ~475 000 tests.
     expect(stats.pairTests).toBeLessThan(975 * 4);
-    expect(ms).toBeLessThan(2000); // generous: measured ~20 ms
   });
 
   it('finds clashes and self-crossings through the grid like the pairwise check', () => {

@@ -78,7 +78,7 @@ describe('numerals of absurd length: linear time, short messages', () => {
     'LDT decimal comma line': (n) => [ldtWith(4, `${digits(n)},`), 'a.ldt'],
   };
   for (const [what, make] of Object.entries(CASES)) {
-    it(`${what}: 1M digits in well under 1 s, 100k → 1M grows < 40×`, () => {
+    it(`${what}: 100k → 1M digits grows < 40× (linear, not quadratic)`, () => {
       const [small, name] = make(100_000);
       const [big] = make(1_000_000);
       const parse = (text: string) => () => {
@@ -94,18 +94,19 @@ describe('numerals of absurd length: linear time, short messages', () => {
       parse(small)(); // warm-up
       const tSmall = minMs(parse(small));
       const tBig = minMs(parse(big), 3);
-      expect(tBig).toBeLessThan(1000);
-      // Linear: ×10; the quadratic regexes of issue 18 gave ×100. The margin
+      // A complexity check, not a speed limit (speed is measured in benchmarks): linear: ×10; the quadratic regexes of issue 18 gave ×100. The margin
       // (and +1 ms on the small run) absorbs timer noise and GC on 2 busy cores.
       expect(tBig / (tSmall + 1)).toBeLessThan(40);
     });
   }
 
-  it('[MORE] continuation lines are joined once (10 000 lines)', () => {
+  it('[MORE] continuation lines are joined once: 900 → 9 000 lines grows < 40× (linear)', () => {
     const make = (n: number): string => ISO.replace('[LUMINAIRE] isotropic', `[LUMINAIRE] a\n${'[MORE] ' + 'x'.repeat(100) + '\n'}`.repeat(1) + `[MORE] ${'y'.repeat(100)}\n`.repeat(n));
-    const t0 = performance.now();
-    const ph = parsePhotometry(make(9_000), 'a.ies');
-    expect(performance.now() - t0).toBeLessThan(1000);
+    let ph = parsePhotometry(make(9_000), 'a.ies'); // warm-up
+    const tSmall = minMs(() => parsePhotometry(make(900), 'a.ies'));
+    const tBig = minMs(() => (ph = parsePhotometry(make(9_000), 'a.ies')), 3);
+    // Joining each line onto a growing string again and again was quadratic (×100 here).
+    expect(tBig / (tSmall + 1)).toBeLessThan(40);
     expect(ph.luminaire.length).toBeGreaterThan(9_000 * 100);
   });
 
