@@ -16,7 +16,7 @@ const vec = (k: readonly number[]) => `vec3(${k.slice(0, 3).join(', ')}), vec3($
  *   two 1–2–5 levels): lines that close merge into dark bands.
  * The caller passes the illuminance for the lines separately from the one
  * for the colour, so it can smooth it: a level crossing in a nearly flat
- * field moves with every percent of Monte-Carlo noise (roomView.ts averages
+ * field moves with every percent of Monte-Carlo noise (roomSurface.glsl.ts averages
  * the neighbouring texels).
  *
  * The scale's facts are parameters, so this chunk mirrors falseColorScale.ts without importing

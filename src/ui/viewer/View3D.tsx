@@ -8,9 +8,11 @@ import { PhotometryWarnings, type PhotometryNote } from '../shared/PhotometryWar
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import { CAMERA_PRESETS, type CameraPresetName } from '../../engines/view/cameraPresets';
 import { createViewerController, type ViewerController } from '../../engines/view/createViewerController';
-import { legendPosition, turbo } from '../../engines/view/falseColorScale';
 import { fixturesFromConfiguration } from '../../engines/view/fixtures';
 import { floorStats, workPlaneStats, type IlluminanceStats } from '../../engines/view/lightStats';
+import { DimmerRow } from './DimmerRow';
+import { IlluminanceTable } from './IlluminanceTable';
+import { LuxLegend } from './LuxLegend';
 import { pagePhotometryLoader } from '../shared/pagePhotometryLoader';
 import type { ViewMode } from '../../engines/view/roomView';
 import { CLOSED_STATUS, setViewerStatus, type ViewerStatus } from './viewerStatus';
@@ -25,19 +27,6 @@ export interface View3DProps {
 const loadPhotometry = pagePhotometryLoader('');
 
 const PRESET_LABEL: Record<CameraPresetName, string> = { eye: 'Eye height', top: 'Top', corner: 'Corner' };
-const fmt = (v: number) => (v >= 100 ? v.toFixed(0) : v >= 10 ? v.toFixed(1) : v.toFixed(2));
-
-function StatsRow({ label, s, testId }: { label: string; s: IlluminanceStats | null; testId: string }) {
-  return (
-    <tr data-testid={testId}>
-      <th scope="row">{label}</th>
-      <td>{s ? fmt(s.avg) : '–'}</td>
-      <td>{s ? fmt(s.min) : '–'}</td>
-      <td>{s ? fmt(s.max) : '–'}</td>
-      <td>{s ? s.u0.toFixed(2) : '–'}</td>
-    </tr>
-  );
-}
 
 /** The 3D view (lazily loaded chunk: three.js and the baker). Reads the configuration, never changes it except through store actions. */
 export default function View3D({ store, onBack }: View3DProps) {
@@ -188,19 +177,7 @@ export default function View3D({ store, onBack }: View3DProps) {
             </button>
           </div>
         )}
-        {mode === 'lux' && levels.length > 1 && (
-          <div className="viewer3d-legend" aria-label="Illuminance legend (lux)" data-testid="view3d-legend">
-            {[...levels].reverse().map((v) => {
-              const [r, g, b] = turbo(legendPosition(v, levels));
-              return (
-                <div key={v} className="viewer3d-legend-row">
-                  <span className="viewer3d-swatch" style={{ background: `rgb(${r * 255}, ${g * 255}, ${b * 255})` }} />
-                  {v} lx
-                </div>
-              );
-            })}
-          </div>
-        )}
+        {mode === 'lux' && levels.length > 1 && <LuxLegend levels={levels} />}
       </div>
       <div className="viewer3d-panel">
         <div className="viewer3d-group" role="group" aria-label="Camera">
@@ -226,21 +203,7 @@ export default function View3D({ store, onBack }: View3DProps) {
         <button type="button" className="btn" disabled={ev === 0} onClick={() => { setEv(0); ctrl.current?.setExposureEv(0); }}>
           Auto exposure
         </button>
-        <table className="viewer3d-stats" aria-label="Illuminance">
-          <thead>
-            <tr>
-              <th />
-              <th scope="col">Ē lx</th>
-              <th scope="col">Emin</th>
-              <th scope="col">Emax</th>
-              <th scope="col">U0</th>
-            </tr>
-          </thead>
-          <tbody>
-            <StatsRow label="Floor" s={floor} testId="stats-floor" />
-            {plane.on && <StatsRow label={`Plane ${plane.height.toFixed(2)} m`} s={planeStats} testId="stats-plane" />}
-          </tbody>
-        </table>
+        <IlluminanceTable floor={floor} plane={plane.on ? { height: plane.height, stats: planeStats } : null} />
         <label className="viewer3d-field viewer3d-inline">
           <input type="checkbox" checked={plane.on} onChange={(e) => setPlane({ ...plane, on: e.target.checked })} data-testid="plane-on" /> Work plane at
           <input type="number" min={0.1} max={maxPlane} step={0.05} value={plane.height} onChange={(e) => { const h = Number(e.target.value); if (Number.isFinite(h) && h >= 0.1 && h <= maxPlane) setPlane({ ...plane, height: h }); }} aria-label="Work plane height in metres" /> m
@@ -259,25 +222,5 @@ export default function View3D({ store, onBack }: View3DProps) {
         </button>
       </div>
     </section>
-  );
-}
-
-/** A module's dimmer: moves freely while dragged, commits one undoable action on release (follows the stored value when that changes, e.g. on undo). */
-function DimmerRow({ id, type, dimming, onCommit }: { id: string; type: string; dimming: number; onCommit: (d: number) => void }) {
-  const [value, setValue] = useState(dimming);
-  const [stored, setStored] = useState(dimming);
-  if (stored !== dimming) {
-    // Derived state, adjusted during render (react.dev: "storing information from previous renders").
-    setStored(dimming);
-    setValue(dimming);
-  }
-  const commit = () => {
-    if (value !== dimming) onCommit(value);
-  };
-  return (
-    <label className="viewer3d-field">
-      {type} {id}: {Math.round(value * 100)} %
-      <input type="range" min={0} max={1} step={0.05} value={value} onChange={(e) => setValue(Number(e.target.value))} onPointerUp={commit} onKeyUp={commit} onBlur={commit} data-testid={`dim-${id}`} />
-    </label>
   );
 }

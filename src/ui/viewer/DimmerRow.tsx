@@ -1,0 +1,21 @@
+import { useState } from 'react';
+
+/** A module's dimmer: moves freely while dragged, commits one undoable action on release (follows the stored value when that changes, e.g. on undo). */
+export function DimmerRow({ id, type, dimming, onCommit }: { id: string; type: string; dimming: number; onCommit: (d: number) => void }) {
+  const [value, setValue] = useState(dimming);
+  const [stored, setStored] = useState(dimming);
+  if (stored !== dimming) {
+    // Derived state, adjusted during render (react.dev: "storing information from previous renders").
+    setStored(dimming);
+    setValue(dimming);
+  }
+  const commit = () => {
+    if (value !== dimming) onCommit(value);
+  };
+  return (
+    <label className="viewer3d-field">
+      {type} {id}: {Math.round(value * 100)} %
+      <input type="range" min={0} max={1} step={0.05} value={value} onChange={(e) => setValue(Number(e.target.value))} onPointerUp={commit} onKeyUp={commit} onBlur={commit} data-testid={`dim-${id}`} />
+    </label>
+  );
+}

@@ -1,0 +1,18 @@
+import { legendPosition, turbo } from '../../engines/view/falseColorScale';
+
+/** The false-colour legend: each level (highest first) with the colour the shader gives it. */
+export function LuxLegend({ levels }: { levels: readonly number[] }) {
+  return (
+    <div className="viewer3d-legend" aria-label="Illuminance legend (lux)" data-testid="view3d-legend">
+      {[...levels].reverse().map((v) => {
+        const [r, g, b] = turbo(legendPosition(v, levels));
+        return (
+          <div key={v} className="viewer3d-legend-row">
+            <span className="viewer3d-swatch" style={{ background: `rgb(${r * 255}, ${g * 255}, ${b * 255})` }} />
+            {v} lx
+          </div>
+        );
+      })}
+    </div>
+  );
+}
