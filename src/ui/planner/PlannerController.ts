@@ -56,9 +56,9 @@ type Gesture =
 export class PlannerController implements CommandContext {
   readonly store: ConfiguratorStore;
   readonly ui: UiStore;
-  view: PlanView;
-  viewport: Viewport;
-  drag: DragPreview | null = null;
+  private currentView: PlanView;
+  private currentViewport: Viewport;
+  private dragPreview: DragPreview | null = null;
   private gesture: Gesture | null = null;
   private fittedFor: string | null = null;
   private readonly listeners = new Set<(e: PlannerEvent) => void>();
@@ -66,8 +66,22 @@ export class PlannerController implements CommandContext {
   constructor(store: ConfiguratorStore, ui: UiStore, viewport: Viewport = DEFAULT_VIEWPORT) {
     this.store = store;
     this.ui = ui;
-    this.viewport = viewport;
-    this.view = fitRoom(store.getState().config.room, viewport);
+    this.currentViewport = viewport;
+    this.currentView = fitRoom(store.getState().config.room, viewport);
+  }
+
+  /** The view the plan is heading to (changed through setView, gestures and commands). */
+  get view(): PlanView {
+    return this.currentView;
+  }
+
+  get viewport(): Viewport {
+    return this.currentViewport;
+  }
+
+  /** The system being dragged, while it is. */
+  get drag(): DragPreview | null {
+    return this.dragPreview;
   }
 
   /** Listens for view and drag-preview changes; returns the unsubscribe function. */
@@ -81,18 +95,18 @@ export class PlannerController implements CommandContext {
   }
 
   setView(next: PlanView, animate: boolean): void {
-    this.view = next;
+    this.currentView = next;
     this.emit({ kind: 'view', animate });
   }
 
   private setDrag(drag: DragPreview | null): void {
-    this.drag = drag;
+    this.dragPreview = drag;
     this.emit({ kind: 'drag' });
   }
 
   /** The plan's size changed (or the room did): fits the room when either differs from the last fit. */
   setViewport(viewport: Viewport): void {
-    this.viewport = viewport;
+    this.currentViewport = viewport;
     const { room } = this.store.getState().config;
     const key = `${room.width}x${room.depth}@${viewport.width}x${viewport.height}`;
     if (this.fittedFor === key) return;
