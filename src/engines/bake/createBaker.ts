@@ -2,7 +2,7 @@ import type { SurfaceName } from '../../core/model/lightingScene';
 import type { BakeScene } from './bakeScene';
 import { resolveBakeSettings, type BakeSettings } from './bakeSettings';
 import type { Baker } from './bakeJob';
-import { requireFloatTargets } from './glResources';
+import { requireFloatTargets } from './floatTarget';
 import { startBakeJob } from './startBakeJob';
 import { createTargetPool } from './targetPool';
 

@@ -3,7 +3,7 @@ import type { BakeSettings } from './bakeSettings';
 import type { BakeTimer } from './createBakeTimer';
 import type { FluxStatistics } from './fluxStatistics';
 import type { gatherUniforms } from './generateGatherShader';
-import { clearTarget } from './glResources';
+import { clearTarget } from './floatTarget';
 import { mixSeed } from './mixSeed';
 import type { BrightPatchPass } from './runBrightPatchPass';
 import { runPass, type PassProgram } from './runPass';

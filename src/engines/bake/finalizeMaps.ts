@@ -6,7 +6,7 @@ import type { BakeSettings } from './bakeSettings';
 import type { BakeTimer } from './createBakeTimer';
 import type { BounceIteration } from './createBounceIteration';
 import type { FluxStatistics } from './fluxStatistics';
-import { clearTarget, type FloatTarget } from './glResources';
+import { clearTarget, type FloatTarget } from './floatTarget';
 import { runPass, type PassProgram } from './runPass';
 import type { SurfaceTargets } from './surfaceTargets';
 

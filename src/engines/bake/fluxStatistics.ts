@@ -2,7 +2,7 @@ import type { Rgb } from '../../core/model/lightingScene';
 import { fluxRatioPass, reduceSumPass, REDUCE_GRID } from '../../../shaders/fluxReduce.glsl';
 import { LUMINANCE_WEIGHTS } from './bakedMaps';
 import { maxFluxRatio, type FluxRecord } from './fluxRecord';
-import { readRgba, type FloatTarget } from './glResources';
+import { readRgba, type FloatTarget } from './floatTarget';
 import { passProgram, runPass } from './runPass';
 import type { TargetPool } from './targetPool';
 import { texelArea, type SurfaceLayout } from './surfaceLayout';

@@ -1,4 +1,4 @@
-import type { FloatTarget } from './glResources';
+import type { FloatTarget } from './floatTarget';
 
 /**
  * Two render targets used in turn: a pass reads `read` and writes `write`,

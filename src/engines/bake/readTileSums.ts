@@ -1,7 +1,7 @@
 import type { Rgb } from '../../core/model/lightingScene';
 import { tileSumPass } from '../../../shaders/tileSumPass.glsl';
 import { LUMINANCE_WEIGHTS } from './bakedMaps';
-import { readRgba, type FloatTarget } from './glResources';
+import { readRgba, type FloatTarget } from './floatTarget';
 import { runPass, type PassProgram } from './runPass';
 import type { SurfaceTileSums } from './selectBrightPatches';
 import type { SurfaceLayout } from './surfaceLayout';

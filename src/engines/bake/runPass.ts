@@ -1,5 +1,6 @@
 import type { FragmentPass, UniformSpec, UniformType } from '../../../shaders/fragmentPass.glsl';
-import { getProgram, uniformLocation, type FloatTarget } from './glResources';
+import { getProgram, uniformLocation } from './glResources';
+import type { FloatTarget } from './floatTarget';
 
 /** A compiled pass: its program and the uniforms its fragment shader declares (fragmentPass.glsl.ts). */
 export interface PassProgram<U extends UniformSpec = UniformSpec> {

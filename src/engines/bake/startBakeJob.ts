@@ -13,7 +13,9 @@ import { createBounceIteration, type BounceIteration } from './createBounceItera
 import { createPassCompiler } from './createPassCompiler';
 import { finalizeMaps, type FinalPasses } from './finalizeMaps';
 import { createFluxStatistics, type FluxRecord } from './fluxStatistics';
-import { clearTarget, createDataTexture, readRgb, startPrograms, uploadRgb, type FloatTarget } from './glResources';
+import { startPrograms } from './glResources';
+import { clearTarget, readRgb, uploadRgb, type FloatTarget } from './floatTarget';
+import { createDataTexture } from './createDataTexture';
 import { planBakePasses } from './planBakePasses';
 import { prepareLamps } from './prepareLamps';
 import { DATA_TEXTURE_WIDTH } from './profileTable';

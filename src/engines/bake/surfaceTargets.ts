@@ -1,4 +1,4 @@
-import type { FloatTarget } from './glResources';
+import type { FloatTarget } from './floatTarget';
 import { createPingPong, type PingPong } from './pingPong';
 import type { SurfaceLayout } from './surfaceLayout';
 import type { TargetPool } from './targetPool';

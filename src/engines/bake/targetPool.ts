@@ -1,4 +1,4 @@
-import { clearTarget, createFloatTarget, deleteTarget, type FloatTarget } from './glResources';
+import { clearTarget, createFloatTarget, deleteTarget, type FloatTarget } from './floatTarget';
 
 /**
  * Float render targets kept between bakes of one baker. A bake uses about a

@@ -7,7 +7,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import { createBaker } from '../../../src/engines/bake/createBaker';
-import { createFloatTarget, requireFloatTargets, uploadRgb } from '../../../src/engines/bake/glResources';
+import { createFloatTarget, requireFloatTargets, uploadRgb } from '../../../src/engines/bake/floatTarget';
 import { createFluxStatistics } from '../../../src/engines/bake/fluxStatistics';
 import { createTargetPool } from '../../../src/engines/bake/targetPool';
 import { LUMINANCE_WEIGHTS } from '../../../src/engines/bake/bakedMaps';

@@ -1,6 +1,6 @@
 /** The ping-pong pair that replaced the baker's index juggling (pingPong.ts): no GL needed, targets are opaque. */
 import { describe, expect, it } from 'vitest';
-import type { FloatTarget } from '../../../src/engines/bake/glResources';
+import type { FloatTarget } from '../../../src/engines/bake/floatTarget';
 import { createPingPong } from '../../../src/engines/bake/pingPong';
 
 const target = (name: string) => ({ name, width: 1, height: 1 }) as unknown as FloatTarget;
