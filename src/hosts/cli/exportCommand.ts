@@ -1,8 +1,8 @@
-import { chmodSync, mkdirSync, writeFileSync } from 'node:fs';
-import { basename, dirname, join } from 'node:path';
+import { basename } from 'node:path';
 import { InputError } from '../../core/inputError';
 import { exportRadiance } from '../../engines/radiance/exportRadiance';
 import { parseBakeCli } from '../node/bakeCliOptions';
+import { writeExportFiles } from '../node/radianceTools';
 import { loadRenderInput } from '../node/renderInput';
 
 export const exportUsage = 'export radiance <config-or-scene.json> --out <dir> [--near-field split|point]';
@@ -21,12 +21,7 @@ export async function run(args: string[]): Promise<number> {
   const input = loadRenderInput(positional[0]);
   const title = basename(positional[0]).replace(/\.json$/i, '');
   const files = exportRadiance(input.bakeScene, settings, title);
-  for (const file of files) {
-    const path = join(out, file.path);
-    mkdirSync(dirname(path), { recursive: true });
-    writeFileSync(path, file.text);
-    if (file.executable) chmodSync(path, 0o755);
-  }
+  writeExportFiles(out, files);
   process.stdout.write(`${out}: ${files.length} files (scene.rad, render.sh, README.md, ${files.filter((f) => f.path.endsWith('.dat')).length} distributions)\n`);
   return 0;
 }
