@@ -6,10 +6,12 @@ import { BENCH_DOC_INTRO, BENCH_DOC_OUTRO, BENCH_MARKERS } from '../bench/benchD
 import { errorTimeSvg } from '../bench/errorTimeSvg';
 import { directSourcesExperiment, drawOverheadMs, gpuBenchTable, runGpuBench, statsRecordMs } from '../bench/gpuBench';
 import { runBench } from '../bench/runBench';
+import { peerTables, runRadiancePeerBench } from '../bench/radianceBench';
+import { RADIANCE_DOC_INTRO, RADIANCE_MARKERS } from '../bench/radianceDocText';
 import { InputError } from '../../core/inputError';
 import { prepareGl } from '../node/prepareGl';
 
-const usage = 'bench [--quick] [--out <dir>] [--gl vulkan|glx|auto] | bench --gpu [--repeats N] [--gl …]';
+const usage = 'bench [--quick] [--out <dir>] [--gl vulkan|glx|auto] | bench --gpu [--repeats N] [--gl …] | bench --radiance [--out <dir>]';
 const SVG = 'benchmarks-error-vs-time.svg';
 
 /**
@@ -23,11 +25,13 @@ export async function run(args: string[]): Promise<number> {
   let out: string | null = null;
   let gl: string | undefined;
   let gpu = false;
+  let radiance = false;
   let repeats = 10;
   for (let i = 0; i < args.length; i++) {
     const a = args[i];
     if (a === '--quick') quick = true;
     else if (a === '--gpu') gpu = true;
+    else if (a === '--radiance') radiance = true;
     else if (a === '--repeats') {
       repeats = Number(args[++i]);
       if (!Number.isInteger(repeats) || repeats < 1 || repeats > 1000) throw new InputError(`--repeats must be an integer in 1..1000 (usage: luxbox ${usage})`);
@@ -53,6 +57,14 @@ export async function run(args: string[]): Promise<number> {
   }
   const root = resolve(fileURLToPath(new URL('../../..', import.meta.url)));
   if (!quick && out === null) out = join(root, 'docs');
+  if (radiance) {
+    const tables = peerTables(runRadiancePeerBench(root, (line) => process.stderr.write(line + '\n')));
+    const docPath = join(out ?? join(root, 'docs'), 'benchmarks.md');
+    const doc = existsSync(docPath) ? readFileSync(docPath, 'utf8') : '';
+    writeFileSync(docPath, spliceSection(doc, `${RADIANCE_DOC_INTRO}\n${tables}\n`, RADIANCE_MARKERS));
+    process.stdout.write(tables + `\n\nwrote ${docPath}\n`);
+    return 0;
+  }
   const result = runBench({ quick, root, log: (line) => process.stderr.write(line + '\n') });
   const tables = benchTables(result, out ? SVG : null);
   if (out) {
