@@ -24,40 +24,53 @@ export class LuminairePhotometryError extends InputError {
   }
 }
 
-/**
- * A lighting scene as the baker takes it: each distinct photometry path loaded
- * once (in the order luminaires first use it), dimming and colour defaults
- * filled in (1 and white), the scene's near-field model kept. The loader is
- * the host's (createPhotometryLoader): with an asynchronous one the result is
- * a promise, with a synchronous one (Node) it is the scene itself. A failure
- * is a LuminairePhotometryError.
- */
-export function resolveBakeScene(scene: LightingScene, loadPhotometry: (path: string) => Promise<Photometry>): Promise<BakeScene>;
-export function resolveBakeScene(scene: LightingScene, loadPhotometry: (path: string) => Photometry): BakeScene;
-export function resolveBakeScene(scene: LightingScene, loadPhotometry: (path: string) => Photometry | Promise<Photometry>): BakeScene | Promise<BakeScene> {
+/** Each distinct photometry path with the first luminaire that uses it, in first-use order. */
+function firstUses(scene: LightingScene): Map<string, number> {
   const firstUse = new Map<string, number>();
   scene.luminaires.forEach((l, i) => {
     if (!firstUse.has(l.photometry)) firstUse.set(l.photometry, i);
   });
+  return firstUse;
+}
+
+function buildBakeScene(scene: LightingScene, byPath: ReadonlyMap<string, Photometry>): BakeScene {
+  const luminaires = scene.luminaires.map(
+    (l): BakeLuminaire => ({ photometry: byPath.get(l.photometry)!, position: l.position, yaw: l.yaw, pitch: l.pitch, roll: l.roll, dimming: l.dimming ?? 1, color: l.color ?? [1, 1, 1] }),
+  );
+  return { room: scene.room, luminaires, ...(scene.nearField ? { nearField: scene.nearField } : {}) };
+}
+
+/**
+ * A lighting scene as the baker takes it: each distinct photometry path loaded
+ * once (in the order luminaires first use it), dimming and colour defaults
+ * filled in (1 and white), the scene's near-field model kept. The loader is
+ * the host's (createPhotometryLoader; the browser's fetches). Always a promise,
+ * also for a scene without luminaires. A failure is a LuminairePhotometryError.
+ */
+export async function resolveBakeScene(scene: LightingScene, loadPhotometry: (path: string) => Photometry | Promise<Photometry>): Promise<BakeScene> {
+  const firstUse = firstUses(scene);
   const paths = [...firstUse.keys()];
-  const loaded = paths.map((path) => {
-    const fail = (error: unknown): never => {
-      throw new LuminairePhotometryError(firstUse.get(path)!, path, error);
-    };
+  const photometries = await Promise.all(
+    paths.map(async (path) => {
+      try {
+        return await loadPhotometry(path);
+      } catch (error) {
+        throw new LuminairePhotometryError(firstUse.get(path)!, path, error);
+      }
+    }),
+  );
+  return buildBakeScene(scene, new Map(paths.map((path, k) => [path, photometries[k]])));
+}
+
+/** resolveBakeScene for a synchronous loader (Node reads files synchronously): the scene itself, or a thrown LuminairePhotometryError. */
+export function resolveBakeSceneSync(scene: LightingScene, loadPhotometry: (path: string) => Photometry): BakeScene {
+  const byPath = new Map<string, Photometry>();
+  for (const [path, luminaire] of firstUses(scene)) {
     try {
-      const result = loadPhotometry(path);
-      return result instanceof Promise ? result.catch(fail) : result;
+      byPath.set(path, loadPhotometry(path));
     } catch (error) {
-      return fail(error);
+      throw new LuminairePhotometryError(luminaire, path, error);
     }
-  });
-  const build = (photometries: Photometry[]): BakeScene => {
-    const byPath = new Map(paths.map((path, k) => [path, photometries[k]]));
-    const luminaires = scene.luminaires.map(
-      (l): BakeLuminaire => ({ photometry: byPath.get(l.photometry)!, position: l.position, yaw: l.yaw, pitch: l.pitch, roll: l.roll, dimming: l.dimming ?? 1, color: l.color ?? [1, 1, 1] }),
-    );
-    return { room: scene.room, luminaires, ...(scene.nearField ? { nearField: scene.nearField } : {}) };
-  };
-  if (loaded.some((p) => p instanceof Promise)) return Promise.all(loaded).then(build);
-  return build(loaded as Photometry[]);
+  }
+  return buildBakeScene(scene, byPath);
 }

@@ -1,7 +1,7 @@
 import { readFileSync, statSync } from 'node:fs';
 import { basename, dirname, resolve } from 'node:path';
 import type { BakeScene } from '../../engines/bake/bakeScene';
-import { LuminairePhotometryError, resolveBakeScene } from '../../engines/bake/resolveBakeScene';
+import { LuminairePhotometryError, resolveBakeSceneSync } from '../../engines/bake/resolveBakeScene';
 import { LightingSceneError, parseLightingScene } from '../../core/model/parseLightingScene';
 import type { LightingScene } from '../../core/model/lightingScene';
 import { excerpt, INPUT_LIMITS, parseUntrustedJson } from '../../core/model/untrustedJson';
@@ -62,7 +62,7 @@ export function resolveSceneFiles(scene: LightingScene, folder: string, source: 
   const load = createNodePhotometryLoader();
   let bakeScene: BakeScene;
   try {
-    bakeScene = resolveBakeScene(scene, (p) => load(resolve(folder, p)));
+    bakeScene = resolveBakeSceneSync(scene, (p) => load(resolve(folder, p)));
   } catch (error) {
     if (!(error instanceof LuminairePhotometryError)) throw error;
     if (!(error.cause instanceof PhotometryReadError)) throw error.cause;

@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import type { LightingScene, SurfaceName } from '../../../src/core/model/lightingScene';
 import { PhotometryReadError } from '../../../src/core/photometry/PhotometryReadError';
 import type { Photometry } from '../../../src/core/photometry/types';
-import { LuminairePhotometryError, resolveBakeScene } from '../../../src/engines/bake/resolveBakeScene';
+import { LuminairePhotometryError, resolveBakeScene, resolveBakeSceneSync } from '../../../src/engines/bake/resolveBakeScene';
 
 const reflectance = { floor: 0.2, ceiling: 0.8, north: 0.5, south: 0.5, west: 0.5, east: 0.5 } as Record<SurfaceName, number>;
 
@@ -43,9 +43,15 @@ describe('resolveBakeScene', () => {
     expect(out.luminaires[4].photometry).toBe(out.luminaires[1].photometry);
   });
 
-  it('a synchronous loader gives the scene at once', () => {
-    const out = resolveBakeScene(scene(['a.ies']), (p) => fake(p));
+  it('a synchronous loader gives the scene at once (resolveBakeSceneSync)', () => {
+    const out = resolveBakeSceneSync(scene(['a.ies']), (p) => fake(p));
     expect(out.luminaires).toHaveLength(1);
+  });
+
+  it('a scene without luminaires still gives a promise (an empty shop room opens in 3D)', async () => {
+    const result = resolveBakeScene(scene([]), async (p) => fake(p));
+    expect(result).toBeInstanceOf(Promise);
+    expect((await result).luminaires).toEqual([]);
   });
 
   it('a failure names the first luminaire using the file and the file, and keeps the cause', async () => {
@@ -59,7 +65,7 @@ describe('resolveBakeScene', () => {
     expect(error).toMatchObject({ luminaire: 1, path: 'ies/gone.ies', cause, message: 'luminaires[1].photometry: ies/gone.ies: HTTP 404' });
     // A cause that does not name the file gets it added.
     expect(() =>
-      resolveBakeScene(scene(['x.ies']), () => {
+      resolveBakeSceneSync(scene(['x.ies']), () => {
         throw new Error('boom');
       }),
     ).toThrow('luminaires[0].photometry: x.ies: boom');
