@@ -13,7 +13,8 @@ test('a share link restores the configuration in a fresh browser', async ({ page
 
   const other = await browser.newContext({ reducedMotion: 'reduce' });
   const p2 = await other.newPage();
-  await p2.goto(link.replace(/^https?:\/\/[^/]+/, 'http://localhost:4173'));
+  // Same server as the first page (the port follows LUXBOX_E2E_PORT).
+  await p2.goto(link.replace(/^https?:\/\/[^/]+/, new URL(page.url()).origin));
   await expect(p2.getByTestId('plan')).toBeVisible();
   expect(await sceneFile(p2)).toEqual(original);
   // The link was consumed: the address bar no longer carries it.
