@@ -1,3 +1,5 @@
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
 import { expect, test, type Page } from '@playwright/test';
 
 // The shop page of embed.html (src/hosts/embedDemo) mounts luxbox with its own room, locale, catalog and
@@ -92,6 +94,26 @@ test('add to cart copies the bill of materials into the host cart', async ({ pag
   await expect(cart).toHaveCount(bom.lines.length);
   await expect(cart.first().locator('.cart-name')).toHaveText(`${2 * bom.lines[0].count}× ${bom.lines[0].name}`);
   expect(await text(page, 'cart-total')).toBe('1.596,00 €');
+});
+
+test('assetBase: the plan and the 3D view load photometry from the host\'s folder, each file once', async ({ page }) => {
+  const fromHost: string[] = [];
+  const fromApp: string[] = [];
+  await page.route('**/shop-assets/ies/**', async (route) => {
+    const name = new URL(route.request().url()).pathname.split('/').pop()!;
+    fromHost.push(name);
+    await route.fulfill({ body: readFileSync(join('public/ies', name)), contentType: 'text/plain' });
+  });
+  page.on('request', (r) => {
+    if (/\/ies\//.test(r.url()) && !r.url().includes('/shop-assets/')) fromApp.push(r.url());
+  });
+  await page.goto('/embed.html?assetBase=/shop-assets/');
+  await page.getByTestId('host-action-single').click();
+  await page.getByTestId('tool-3d').click();
+  await expect.poll(() => page.evaluate(() => window.shopDemo!.instance!.view3d().lit), { timeout: 90_000, intervals: [250] }).toBe(true);
+  expect(fromHost.length).toBeGreaterThan(0);
+  expect(new Set(fromHost).size).toBe(fromHost.length);
+  expect(fromApp).toEqual([]);
 });
 
 test('destroy() unmounts cleanly and a re-mount works and restores the autosave', async ({ page }) => {

@@ -133,6 +133,8 @@ function open(): void {
     currency: shop.currency,
     catalog: shop.catalog,
     storageKey: shop.storageKey,
+    // A shop may serve the photometry from its own asset folder (?assetBase=/cdn/ tries it).
+    assetBase: new URLSearchParams(location.search).get('assetBase') ?? undefined,
     onChange: () => {
       // Everything the host shows is re-read through the API after each change.
       changes++;

@@ -150,7 +150,7 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, footprints }: P
               )}
             </div>
           ) : (
-            <LazyView3D store={store} onBack={() => ui.setState({ mode: '2d' })} />
+            <LazyView3D store={store} loadPhotometry={footprints.loadPhotometry} onBack={() => ui.setState({ mode: '2d' })} />
           )}
           <BottomBar controller={controller} mode={mode} />
         </div>

@@ -1,4 +1,5 @@
 import { photometryWarnings } from '../../core/photometry/checks';
+import type { Photometry } from '../../core/photometry/types';
 import { pagePhotometryLoader } from '../shared/pagePhotometryLoader';
 import { floorFootprint, type FloorFootprint } from './floorFootprint';
 
@@ -21,6 +22,8 @@ export interface FootprintSource {
   subscribe(listener: () => void): () => void;
   /** Increases whenever a file finished (for useSyncExternalStore snapshots). */
   version(): number;
+  /** The page's photometry loader for the same folder (the 3D view loads through it: one fetch per file for both). */
+  loadPhotometry(path: string): Promise<Photometry>;
 }
 
 export function createFootprintSource(baseUrl: string, fetchFn?: typeof fetch): FootprintSource {
@@ -37,6 +40,7 @@ export function createFootprintSource(baseUrl: string, fetchFn?: typeof fetch): 
     for (const l of [...listeners]) l();
   };
   return {
+    loadPhotometry,
     get: (path) => results.get(path),
     warnings: (path) => warnings.get(path) ?? [],
     request(paths) {

@@ -1,4 +1,5 @@
 import { Component, lazy, Suspense, useMemo, type ReactNode } from 'react';
+import type { Photometry } from '../../core/photometry/types';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import { setViewerStatus, CLOSED_STATUS } from './viewerStatus';
 import { webglSupportProblem } from './webglSupport';
@@ -8,6 +9,8 @@ const View3D = lazy(() => import('./View3D'));
 
 export interface LazyView3DProps {
   store: ConfiguratorStore;
+  /** The host's photometry loader (catalog paths relative to its asset folder, `assetBase` when embedded). */
+  loadPhotometry: (path: string) => Promise<Photometry>;
   onBack: () => void;
 }
 
@@ -37,7 +40,7 @@ class ViewerBoundary extends Component<{ onBack: () => void; children: ReactNode
 }
 
 /** What the 2D/3D toggle shows in 3D: a support check, then the lazily loaded viewer. */
-export function LazyView3D({ store, onBack }: LazyView3DProps) {
+export function LazyView3D({ store, loadPhotometry, onBack }: LazyView3DProps) {
   const problem = useMemo(() => webglSupportProblem(), []);
   if (problem) {
     setViewerStatus(store, { ...CLOSED_STATUS, error: problem });
@@ -46,7 +49,7 @@ export function LazyView3D({ store, onBack }: LazyView3DProps) {
   return (
     <ViewerBoundary onBack={onBack}>
       <Suspense fallback={<Message text="Loading the 3D view…" onBack={onBack} testId="view3d-loading" />}>
-        <View3D store={store} onBack={onBack} />
+        <View3D store={store} loadPhotometry={loadPhotometry} onBack={onBack} />
       </Suspense>
     </ViewerBoundary>
   );

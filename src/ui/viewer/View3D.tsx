@@ -1,5 +1,6 @@
 import { useEffect, useMemo, useRef, useState } from 'react';
 import { useStore } from 'zustand';
+import type { Photometry } from '../../core/photometry/types';
 import type { BakeScene } from '../../engines/bake/bakeScene';
 import { LuminairePhotometryError, resolveBakeScene } from '../../engines/bake/resolveBakeScene';
 import { toLightingScene } from '../../core/model/toLightingScene';
@@ -13,23 +14,21 @@ import { floorStats, workPlaneStats, type IlluminanceStats } from '../../engines
 import { DimmerRow } from './DimmerRow';
 import { IlluminanceTable } from './IlluminanceTable';
 import { LuxLegend } from './LuxLegend';
-import { pagePhotometryLoader } from '../shared/pagePhotometryLoader';
 import type { ViewMode } from '../../engines/view/roomView';
 import { CLOSED_STATUS, setViewerStatus, type ViewerStatus } from './viewerStatus';
 import './viewer.css';
 
 export interface View3DProps {
   store: ConfiguratorStore;
+  /** The host's photometry loader (the plan's footprints load through the same one and cache). */
+  loadPhotometry: (path: string) => Promise<Photometry>;
   onBack: () => void;
 }
-
-/** Catalog paths are relative to the page (the app's public folder); the plan's footprints share this cache. */
-const loadPhotometry = pagePhotometryLoader('');
 
 const PRESET_LABEL: Record<CameraPresetName, string> = { eye: 'Eye height', top: 'Top', corner: 'Corner' };
 
 /** The 3D view (lazily loaded chunk: three.js and the baker). Reads the configuration, never changes it except through store actions. */
-export default function View3D({ store, onBack }: View3DProps) {
+export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
   const config = useStore(store, (s) => s.config);
   const catalog = useStore(store, (s) => s.catalog);
   const canvasRef = useRef<HTMLCanvasElement>(null);
@@ -140,7 +139,7 @@ export default function View3D({ store, onBack }: View3DProps) {
     return () => {
       cancelled = true;
     };
-  }, [config, catalog]);
+  }, [config, catalog, loadPhotometry]);
 
   // Work plane: recomputed when the maps settle or the height changes (direct part on the CPU).
   useEffect(() => {
