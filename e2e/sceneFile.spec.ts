@@ -1,5 +1,6 @@
 import { readFile } from 'node:fs/promises';
 import { expect, test } from '@playwright/test';
+import { strFromU8, unzipSync } from 'fflate';
 import { sceneFile } from './helpers';
 
 test.use({ reducedMotion: 'reduce' });
@@ -73,4 +74,21 @@ test('Open file… is reachable by keyboard and 44 px tall in the phone drawer',
   // Space on the focused input opens the browser's file chooser.
   const [chooser] = await Promise.all([page.waitForEvent('filechooser', { timeout: 10_000 }), page.keyboard.press('Space')]);
   expect(chooser.isMultiple()).toBe(false);
+});
+
+test('Download for Radiance: a zip with the scene, one light per module, the distributions and render.sh', async ({ page }) => {
+  await page.goto('/');
+  await page.getByRole('button', { name: 'Start planning' }).click();
+  await page.getByTestId('preset-single').click();
+  const before = await sceneFile(page);
+  const [download] = await Promise.all([page.waitForEvent('download'), page.getByTestId('download-radiance').click()]);
+  expect(download.suggestedFilename()).toBe('luxbox-5x4x2.8-radiance.zip');
+  const files = unzipSync(new Uint8Array(await readFile(await download.path())));
+  const rad = strFromU8(files['luxbox-5x4x2.8-radiance/scene.rad']);
+  // The single-rail preset: three spots, each a light of its own; every file the scene names is there.
+  expect(rad.match(/ light lum\d+_light/g)).toHaveLength(3);
+  for (const dat of rad.matchAll(/corr (\S+) source\.cal/g)) expect(files[`luxbox-5x4x2.8-radiance/${dat[1]}`]).toBeDefined();
+  expect(strFromU8(files['luxbox-5x4x2.8-radiance/render.sh'])).toContain('oconv scene.rad > scene.oct');
+  await expect(page.getByRole('status')).toContainText('Saved luxbox-5x4x2.8-radiance.zip');
+  expect(await sceneFile(page)).toEqual(before);
 });

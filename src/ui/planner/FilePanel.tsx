@@ -3,6 +3,8 @@ import { showStatus, type UiStore } from '../../core/store/uiStore';
 import { InputError } from '../../core/inputError';
 import { serializeConfiguration } from '../../core/model/sceneFile';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
+import type { Photometry } from '../../core/photometry/types';
+import { downloadRadiance } from './downloadRadiance';
 import { downloadText } from './downloadText';
 import { readSceneFile } from './readSceneFile';
 import { sceneFileName } from './sceneFileName';
@@ -10,6 +12,8 @@ import { sceneFileName } from './sceneFileName';
 export interface FilePanelProps {
   store: ConfiguratorStore;
   ui: UiStore;
+  /** The page's photometry loader (the Radiance export converts the same files the plan shows). */
+  loadPhotometry: (path: string) => Promise<Photometry>;
 }
 
 /**
@@ -19,12 +23,23 @@ export interface FilePanelProps {
  * untouched and says why in the banner (it stays until dismissed, unlike the status line, so a
  * long message about a file can be read in full).
  */
-export function FilePanel({ store, ui }: FilePanelProps) {
+export function FilePanel({ store, ui, loadPhotometry }: FilePanelProps) {
   const save = () => {
     const { config, catalog } = store.getState();
     const name = sceneFileName(config);
     downloadText(name, `${serializeConfiguration(config, catalog)}\n`);
     showStatus(ui, `Saved ${name}`);
+  };
+
+  const radiance = async () => {
+    const { config, catalog } = store.getState();
+    try {
+      const name = await downloadRadiance(config, catalog, loadPhotometry);
+      showStatus(ui, `Saved ${name} (unpack, then sh render.sh)`);
+    } catch (err) {
+      // The configuration is untouched; the message names the file that could not be read.
+      ui.setState({ banner: { text: `The Radiance export failed: ${err instanceof Error ? err.message : String(err)}`, canRestore: false } });
+    }
   };
 
   const open = async (e: ChangeEvent<HTMLInputElement>) => {
@@ -62,6 +77,9 @@ export function FilePanel({ store, ui }: FilePanelProps) {
         />
         Open file…
       </label>
+      <button type="button" className="btn" onClick={() => void radiance()} data-testid="download-radiance" title="A folder for the Radiance renderer: scene, luminaires, views, render.sh">
+        Download for Radiance
+      </button>
     </div>
   );
 }

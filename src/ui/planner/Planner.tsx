@@ -168,7 +168,7 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, footprints }: P
                 New room
               </button>
             </div>
-            <FilePanel store={store} ui={ui} />
+            <FilePanel store={store} ui={ui} loadPhotometry={footprints.loadPhotometry} />
             {shareLink && (
               <div className="field" style={{ marginTop: 8 }}>
                 <label htmlFor="share-link">Link to this configuration</label>
