@@ -77,7 +77,7 @@ export function FilePanel({ store, ui, loadPhotometry }: FilePanelProps) {
         />
         Open file…
       </label>
-      <button type="button" className="btn" onClick={() => void radiance()} data-testid="download-radiance" title="A folder for the Radiance renderer: scene, luminaires, views, render.sh">
+      <button type="button" className="btn btn-export" onClick={() => void radiance()} data-testid="download-radiance" title="A folder for the Radiance renderer: scene, luminaires, views, render.sh">
         Download for Radiance
       </button>
     </div>
