@@ -26,8 +26,8 @@ export const RADIANCE_LADDER: readonly { label: string; options: readonly string
   { label: '-ab 16 -ad 2048', options: ['-ab', '16', '-ad', '2048', '-as', '1024', '-aa', '0.02', '-ar', '256', '-lr', '20', '-lw', '1e-8', '-dt', '0', '-dc', '1'] },
 ];
 
-/** The scenes of the comparison: the smooth ones and two stiff ones. */
-export const RADIANCE_SCENES: readonly BenchScene[] = [...BENCH_SCENES, STIFF_SCENES[0], STIFF_SCENES[2]];
+/** The scenes of the comparison: the CIE cube, the living room and the spot aimed at a wall (stiff). */
+export const RADIANCE_SCENES: readonly BenchScene[] = [BENCH_SCENES[0], BENCH_SCENES[1], STIFF_SCENES[0]];
 
 /** Every `POINT_STRIDE`-th comparison point of the main bench: Radiance's cost is per point. */
 export const POINT_STRIDE = 4;
