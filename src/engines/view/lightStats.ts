@@ -1,6 +1,6 @@
 import type { BakeScene } from '../bake/bakeScene';
 import { LUMINANCE_WEIGHTS } from '../bake/bakedMaps';
-import { bilinearRgb } from '../bake/probeMaps';
+import { bilinearRgb } from '../bake/bilinearMap';
 import { resolveBakeSettings, type BakeSettings } from '../bake/bakeSettings';
 import { directAtPoint } from '../bake/directAtPoint';
 import { scenePointSources } from '../bake/scenePointSources';
