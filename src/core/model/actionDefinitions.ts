@@ -13,6 +13,7 @@ import { setReflectance } from './actions/surfaceActions';
 import { deleteSystem, moveSystem, placePreset, rotateSystem, setSuspension } from './actions/systemActions';
 import { addRail, removeRail, setDistribution, setRailLength } from './actions/railActions';
 import { addModule, removeModule, setModuleBeam, setModuleCct, setModuleDimming, setModuleType } from './actions/moduleActions';
+import { autoPatch, clearPatch, setModulePatch } from './actions/patchActions';
 
 export const actionDefinitions = {
   setRoom,
@@ -32,6 +33,9 @@ export const actionDefinitions = {
   setModuleCct,
   setModuleBeam,
   setModuleDimming,
+  setModulePatch,
+  autoPatch,
+  clearPatch,
 } as const;
 
 export type ActionName = keyof typeof actionDefinitions;

@@ -5,6 +5,7 @@
  * overlapping modules by construction of its layout rule.
  */
 import type { Distribution } from './catalogSchema';
+import type { DmxPatch } from './dmxPatch';
 import type { Reflectance, SurfaceName } from './lightingScene';
 
 export type { Distribution };
@@ -30,6 +31,8 @@ export interface ModuleInstance {
   readonly cct: number;
   /** 0..1 multiplier on intensity. */
   readonly dimming: number;
+  /** Where a lighting console drives it (docs/live-control.md); absent: not patched. Scene file version 2. */
+  readonly dmx?: DmxPatch;
 }
 
 export interface Rail {

@@ -18,7 +18,8 @@ import { describeIssues, excerpt, INPUT_LIMITS, jsonShapeProblem, oneLine, parse
 import { validate } from './validate';
 
 export const SCENE_FILE_FORMAT = 'luxbox-configuration';
-export const SCENE_FILE_VERSION = 1;
+/** 2: modules may carry a DMX patch (`dmx`, docs/live-control.md); version 1 files are migrated on reading. */
+export const SCENE_FILE_VERSION = 2;
 /** Share strings longer than this are refused before decoding (browsers cap URLs near 64k). */
 export const MAX_SHARE_STRING = 60_000;
 
@@ -66,7 +67,17 @@ const configurationSchema = z.strictObject({
           id,
           length: z.number(),
           distribution: z.enum(DISTRIBUTIONS),
-          modules: z.array(z.strictObject({ id, type: ref, beam: ref, cct: z.number(), dimming: z.number() })),
+          modules: z.array(
+            z.strictObject({
+              id,
+              type: ref,
+              beam: ref,
+              cct: z.number(),
+              dimming: z.number(),
+              // Ranges, the CCT channel's type and overlaps are validate()'s rules (dmx-range, dmx-overlap).
+              dmx: z.strictObject({ universe: z.number(), address: z.number(), resolution: z.union([z.literal(8), z.literal(16)]), cct: z.boolean() }).optional(),
+            }),
+          ),
         }),
       ),
       joints: z.array(z.strictObject({ connector: ref, turn: z.number() })),
@@ -88,10 +99,34 @@ export type SceneFile = z.infer<typeof fileSchema>;
 
 /**
  * Migration hook: migrations[n] turns a version-n document into version n+1.
- * Version 1 is the first, so there is nothing to migrate yet; a future version
- * adds its step here and bumps SCENE_FILE_VERSION.
+ * A future version adds its step here and bumps SCENE_FILE_VERSION.
  */
-export const migrations: Record<number, (doc: Record<string, unknown>) => Record<string, unknown>> = {};
+export const migrations: Record<number, (doc: Record<string, unknown>) => Record<string, unknown>> = {
+  // 1 → 2: version 2 added the optional DMX patch per module; a version 1 module has none, so its
+  // content reads as is. A `dmx` field in a version 1 file was never written by luxbox: refused.
+  1(doc) {
+    const at = v1PatchField(doc.configuration);
+    if (at) throw new SceneFileError(`configuration.${at}: needs "version": 2 (this file says version 1)`);
+    return { ...doc, version: 2 };
+  },
+};
+
+/** Path of the first module carrying `dmx` in a version 1 configuration (its shape is checked later, so every step looks before it leaps). */
+function v1PatchField(configuration: unknown): string | null {
+  const list = (o: unknown, key: string): unknown[] => (typeof o === 'object' && o !== null && Array.isArray((o as Record<string, unknown>)[key]) ? ((o as Record<string, unknown>)[key] as unknown[]) : []);
+  const systems = list(configuration, 'systems');
+  for (let i = 0; i < systems.length; i++) {
+    const rails = list(systems[i], 'rails');
+    for (let k = 0; k < rails.length; k++) {
+      const modules = list(rails[k], 'modules');
+      for (let n = 0; n < modules.length; n++) {
+        const m = modules[n];
+        if (typeof m === 'object' && m !== null && 'dmx' in m) return `systems[${i}].rails[${k}].modules[${n}].dmx`;
+      }
+    }
+  }
+  return null;
+}
 
 export function migrateSceneFile(doc: Record<string, unknown>): Record<string, unknown> {
   let d = doc;
@@ -134,7 +169,14 @@ export function configurationFromData(data: unknown, catalog: Catalog, source = 
   }
   if (typeof doc.version !== 'number' || !Number.isInteger(doc.version) || doc.version < 1) throw new SceneFileError(`${source}: version must be a positive integer`);
   if (doc.version > SCENE_FILE_VERSION) throw new SceneFileError(`${source} was made by a newer luxbox (version ${doc.version}; this one reads up to ${SCENE_FILE_VERSION})`);
-  const r = fileSchema.safeParse(migrateSceneFile(doc));
+  let migrated: Record<string, unknown>;
+  try {
+    migrated = migrateSceneFile(doc);
+  } catch (e) {
+    if (e instanceof SceneFileError) throw new SceneFileError(`${source}: ${e.message}`);
+    throw e;
+  }
+  const r = fileSchema.safeParse(migrated);
   if (!r.success) throw new SceneFileError(`${source}: ${describeIssues(r.error.issues, FIELD_NAMES)}`);
   if (r.data.catalog !== catalog.id) throw new SceneFileError(`${source} was made for catalog ${excerpt(r.data.catalog).replace(/^"|"$/g, "'")}, but this configurator uses '${catalog.id}'`);
   const config = normaliseRoom(r.data.configuration);

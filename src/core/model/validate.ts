@@ -7,6 +7,7 @@
 import { onGrid, type Catalog } from './catalogSchema';
 import { ROOM_LIMITS, withinRoomLimits, type Configuration, type LightSystem } from './configuration';
 import { SURFACE_NAMES } from './lightingScene';
+import { firstPatchOverlap, formatPatchRange, patchRangeProblem } from './dmxPatch';
 import { reflectanceProblem } from './reflectance';
 import { rectCorners, rectsOverlap, systemElements, railModuleOffsets, type PlanRect } from './geometry';
 
@@ -46,6 +47,8 @@ export function validate(config: Configuration, catalog: Catalog, options: Valid
   const problems: Problem[] = roomProblems(config);
   if (first && problems.length > 0) return problems;
   problems.push(...idProblems(config));
+  if (first && problems.length > 0) return problems;
+  problems.push(...patchProblems(config));
   if (first && problems.length > 0) return problems;
   const n = config.systems.length;
   const own = config.systems.map((s, i) => ownProblems(s, `systems[${i}]`, config.room.height, catalog));
@@ -220,6 +223,18 @@ export function idProblems(config: Configuration): Problem[] {
 }
 
 /**
+ * Channels shared by two patched modules (one problem: the first overlap, on the
+ * later module in module order). Each patch's own ranges are a module rule
+ * (ownProblems); this is the one rule across systems besides clashes.
+ */
+export function patchProblems(config: Configuration): Problem[] {
+  const hit = firstPatchOverlap(config);
+  if (!hit) return [];
+  const { at, other } = hit;
+  return [{ code: 'dmx-overlap', path: `${at.path}.dmx`, message: `DMX ${formatPatchRange(at.patch)} of module ${at.module.id} overlaps module ${other.module.id} (${formatPatchRange(other.patch)})` }];
+}
+
+/**
  * Problems of one system: its own rules, its fit in the room and clashes with
  * the other systems. The action binding (validateResult.ts) and the preset
  * placement search check only the systems a change touched with it.
@@ -294,6 +309,8 @@ function ownProblems(s: LightSystem, at: string, roomHeight: number, catalog: Ca
       if (!type.beams.some((b) => b.id === m.beam)) p('unknown-beam', `${mp}.beam`, `${type.name} has no beam '${m.beam}'`);
       if (!type.ccts.includes(m.cct)) p('cct', `${mp}.cct`, `${type.name} is not available in ${m.cct} K (offered: ${type.ccts.join(', ')} K)`);
       if (!Number.isFinite(m.dimming) || m.dimming < 0 || m.dimming > 1) p('dimming', `${mp}.dimming`, `dimming must be between 0 and 1 (got ${m.dimming})`);
+      const patch = m.dmx ? patchRangeProblem(m.dmx, type) : null;
+      if (patch) p('dmx-range', `${mp}.dmx`, patch);
     });
     if (refsOk && Number.isFinite(r.length) && !railModuleOffsets(r, catalog)) {
       p('modules-do-not-fit', `${rp}.modules`, `the modules of rail ${r.id} do not fit its ${fmt(r.length)} m with distribution '${r.distribution}'`);

@@ -2,8 +2,8 @@
  * validate() of an action's result, paying only for what the action changed.
  * States are immutable and actions replace only the systems they touch (the
  * others stay the same objects), so when the state before was valid and the room
- * keeps its size, the result is valid exactly when its room finishes and ids
- * are, and each new or replaced system passes systemProblems() (its own rules,
+ * keeps its size, the result is valid exactly when its room finishes, ids and
+ * DMX patch (no shared channels) are, and each new or replaced system passes systemProblems() (its own rules,
  * the room bounds, self-crossing, clashes with every other system): an
  * untouched system keeps its own validity, and a pair of untouched systems
  * still does not clash. Anything else (a resized room, an invalid state
@@ -13,7 +13,7 @@
  */
 import type { Catalog } from './catalogSchema';
 import type { Configuration } from './configuration';
-import { idProblems, roomProblems, systemProblems, validate, type Problem } from './validate';
+import { idProblems, patchProblems, roomProblems, systemProblems, validate, type Problem } from './validate';
 
 /** Per catalog, whether a state passed validate(): states are immutable, so the answer never changes. */
 const knownValid = new WeakMap<Catalog, WeakMap<Configuration, boolean>>();
@@ -48,6 +48,9 @@ function changedProblems(before: Configuration, after: Configuration, catalog: C
   if (room.length > 0) return room;
   const ids = idProblems(after);
   if (ids.length > 0) return ids;
+  // The patch spans systems: a changed module's channels may meet an untouched system's (one sort over the patched modules).
+  const patch = patchProblems(after);
+  if (patch.length > 0) return patch;
   const untouched = new Set(before.systems);
   for (let i = 0; i < after.systems.length; i++) {
     if (untouched.has(after.systems[i])) continue;

@@ -25,7 +25,7 @@ interface Step {
 }
 
 const unit = fc.double({ min: 0, max: 1, noNaN: true });
-const step = fc.record({ kind: fc.nat(22), i: fc.nat(50), j: fc.nat(50), a: unit, b: unit, c: unit });
+const step = fc.record({ kind: fc.nat(24), i: fc.nat(50), j: fc.nat(50), a: unit, b: unit, c: unit });
 
 const pick = <T>(xs: readonly T[], i: number, fallback: T): T => (xs.length ? xs[i % xs.length] : fallback);
 
@@ -85,6 +85,11 @@ function toAction(s: Configuration, st: Step): [string, unknown] {
       // Grey or RGB finishes from the integer fields (the unit doubles cluster at their ends);
       // some step past the 0.95 cap or below 0.
       return ['setReflectance', { surface: SURFACE_TARGETS[st.j % SURFACE_TARGETS.length], value: st.c < 0.5 ? 0.02 * st.i - 0.04 : [(st.i % 20) / 20, 0.02 * st.j, st.i % 3 === 0 ? 0.97 : 0.3] }];
+    case 22:
+      // Addresses near the end of the universe and next to other modules' channels; some unpatch.
+      return ['setModulePatch', { moduleId: mod, patch: st.c < 0.1 ? null : { universe: st.j % 3, address: st.c < 0.3 ? 505 + (st.i % 10) : 1 + (st.i % 12), resolution: st.a < 0.5 ? 8 : 16, cct: st.b < 0.5 } }];
+    case 23:
+      return st.c < 0.15 ? ['clearPatch', {}] : ['autoPatch', { universe: st.j % 3, address: 1 + Math.floor(st.a * 511), resolution: st.b < 0.5 ? 8 : 16, cct: st.i % 2 === 0 }];
     default:
       return ['setRailLength', { railId: rail, length: 0.5 + 0.1 * (st.j % 26) }];
   }

@@ -10,6 +10,7 @@ import { InputError } from '../../inputError';
 import type { ActionDefinition } from '../action';
 import { findModuleType } from '../catalogSchema';
 import type { ModuleInstance } from '../configuration';
+import { isTunable } from '../dmxPatch';
 import { newModule } from '../presets';
 import { findModule, findRail, replaceRail, takeId, updateModule } from './lookup';
 
@@ -58,7 +59,7 @@ export const removeModule: ActionDefinition<z.infer<typeof moduleIdParams>> = {
 
 const typeParams = z.object({ moduleId: z.string(), type: z.string() });
 
-/** Switches a module's type; only to types that fit without clashing. Keeps the CCT where the new type offers it. */
+/** Switches a module's type; only to types that fit without clashing. Keeps the CCT where the new type offers it, and the DMX patch (without a CCT channel when the new type has one CCT). */
 export const setModuleType: ActionDefinition<z.infer<typeof typeParams>> = {
   name: 'setModuleType',
   label: 'Module type',
@@ -67,7 +68,9 @@ export const setModuleType: ActionDefinition<z.infer<typeof typeParams>> = {
     const { module } = findModule(state, p.moduleId);
     const type = findModuleType(catalog, p.type);
     const cct = type.ccts.includes(module.cct) ? module.cct : type.defaultCct;
-    return updateModule(state, p.moduleId, { type: type.id, beam: type.defaultBeam, cct });
+    // A type with one CCT has no CCT channel: the patch keeps its level channels and shrinks, so it never meets a neighbour.
+    const dmx = module.dmx?.cct && !isTunable(type) ? { ...module.dmx, cct: false } : module.dmx;
+    return updateModule(state, p.moduleId, { type: type.id, beam: type.defaultBeam, cct, ...(dmx ? { dmx } : {}) });
   },
   explain(problem, _state, p, catalog) {
     if (problem.code !== 'modules-do-not-fit') return problem.message;
