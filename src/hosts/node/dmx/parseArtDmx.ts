@@ -76,8 +76,8 @@ export function parseArtDmx(bytes: Uint8Array): ArtDmxResult {
       sequence: bytes[12],
       physical: bytes[13],
       portAddress: ((bytes[15] & 0x7f) << 8) | bytes[14],
-      // A copy: the datagram's buffer is Node's and may be reused.
-      data: bytes.slice(ARTDMX_HEADER_BYTES, ARTDMX_HEADER_BYTES + length),
+      // A copy into a plain Uint8Array (Buffer#slice would be a view of Node's datagram buffer).
+      data: Uint8Array.from(bytes.subarray(ARTDMX_HEADER_BYTES, ARTDMX_HEADER_BYTES + length)),
     },
   };
 }

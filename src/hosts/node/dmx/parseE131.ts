@@ -149,7 +149,8 @@ export function parseE131(bytes: Uint8Array): E131Result {
       preview: (options & 0x80) !== 0,
       terminated,
       universe,
-      data: bytes.slice(126, 125 + count),
+      // A copy into a plain Uint8Array (Buffer#slice would be a view of Node's datagram buffer).
+      data: Uint8Array.from(bytes.subarray(126, 125 + count)),
     },
   };
 }
