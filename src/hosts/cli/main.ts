@@ -13,6 +13,7 @@ const commands: Record<string, () => Promise<{ run: Command }>> = {
   render: () => import('./renderCommand'),
   bench: () => import('./benchCommand'),
   export: () => import('./exportCommand'),
+  dmx: () => import('./dmxCommand'),
 };
 
 const usage = `usage: luxbox <command> [...]
@@ -22,7 +23,8 @@ commands:
   probe <scene.json> <points.json> [--samples N --bounces N --texel m]   lux at surface points
   render <config-or-scene.json> --out image.png [--camera eye|top|corner|json --width --height --exposure EV --mode light|lux]   3D image (docs/viewer.md)
   bench [--quick] [--out <dir>]   bake error vs time against the CPU reference (docs/benchmarks.md)
-  export radiance <config-or-scene.json> --out <dir> [--near-field split|point]   Radiance scene folder (docs/radiance.md)`;
+  export radiance <config-or-scene.json> --out <dir> [--near-field split|point]   Radiance scene folder (docs/radiance.md)
+  dmx [--artnet] [--sacn] [--port N] [--bind ADDR] [--universes 1-4]   Art-Net/sACN → WebSocket bridge for live control (docs/dmx.md)`;
 
 export async function main(argv: string[]): Promise<number> {
   const [name, ...rest] = argv;
