@@ -9,6 +9,8 @@ import { createFrameScheduler } from './createFrameScheduler';
 import { createMapDisplay, type MapsListener } from './createMapDisplay';
 import type { CameraPresetName } from './cameraPresets';
 import type { Fixtures } from './fixtures';
+import { applyLiveLevels } from './applyLiveLevels';
+import type { LiveLevel } from './liveLevels';
 import { createRoomView, type RoomView, type ViewMode } from './roomView';
 import { watchContextLoss } from './watchContextLoss';
 
@@ -40,6 +42,12 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
   controls.screenSpacePanning = true;
 
   let scene: BakeScene | null = null;
+  /** Module id per luminaire of `scene`, for the live overlay. */
+  let ids: readonly string[] = [];
+  /** Live control's levels over the scene's own dimming (transient: never in the configuration), or null. */
+  let live: ReadonlyMap<string, LiveLevel> | null = null;
+  /** What the engine lights: the scene with the live overlay, if any. */
+  const lit = (s: BakeScene): BakeScene => (live ? applyLiveLevels(s, ids, live) : s);
   let fixtures: Fixtures | null = null;
   /** The engine version on screen; -1 forces the next slice to show the maps. */
   let shownVersion = -1;
@@ -74,7 +82,7 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
   const bake = createBakeContext({
     onLost: () => events.onContext('lost'),
     onRestored(engine) {
-      if (engine && scene) engine.setScene(scene);
+      if (engine && scene) engine.setScene(lit(scene));
       shownVersion = -1;
       events.onContext('restored');
       slicer.queue();
@@ -92,13 +100,24 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
 
   return {
     /** A new scene (any change of the configuration): bakes only new or moved groups, relights the rest. */
-    setScene(next: BakeScene, nextFixtures: Fixtures) {
+    setScene(next: BakeScene, nextFixtures: Fixtures, luminaireIds: readonly string[] = []) {
       scene = next;
+      ids = luminaireIds;
       fixtures = nextFixtures;
       view.setFixtures(nextFixtures);
       camera.setRoom(next.room);
-      bake.engine?.setScene(next);
+      bake.engine?.setScene(lit(next));
       frames.request();
+      slicer.run();
+    },
+    /**
+     * Live control's levels over the configuration's dimming (null: the configuration's own
+     * again). Only dimming and colour change, so it is a relight, never a bake.
+     */
+    setLiveLevels(levels: ReadonlyMap<string, LiveLevel> | null) {
+      live = levels;
+      if (!scene) return;
+      bake.engine?.setScene(lit(scene));
       slicer.run();
     },
     setExposureEv(ev: number) {

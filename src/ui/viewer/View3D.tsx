@@ -13,6 +13,7 @@ import { fixturesFromConfiguration } from '../../engines/view/fixtures';
 import { floorStats, workPlaneStats, type IlluminanceStats } from '../../engines/view/lightStats';
 import { DimmerRow } from './DimmerRow';
 import { IlluminanceTable } from './IlluminanceTable';
+import { LiveControl } from './LiveControl';
 import { LuxLegend } from './LuxLegend';
 import type { ViewMode } from '../../engines/view/roomView';
 import { CLOSED_STATUS, setViewerStatus, type ViewerStatus } from './viewerStatus';
@@ -50,6 +51,7 @@ export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
   const [photometryNotes, setPhotometryNotes] = useState<PhotometryNote[]>([]);
   const litRef = useRef<Parameters<Parameters<typeof createViewerController>[1]['onMaps']>[0] | null>(null);
   const [mapsVersion, setMapsVersion] = useState(0);
+  const [liveState, setLiveState] = useState<NonNullable<ViewerStatus['live']>['state'] | null>(null);
 
   const publish = (patch: Partial<ViewerStatus>) => {
     if (!status.current.open && !('open' in patch)) return; // late events after unmount
@@ -124,7 +126,8 @@ export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
       .then((bakeScene) => {
         if (cancelled || !ctrl.current) return;
         sceneRef.current = bakeScene;
-        ctrl.current.setScene(bakeScene, fixturesFromConfiguration(config, catalog));
+        // Module ids in luminaire order: the live overlay (LiveControl) addresses modules by id.
+        ctrl.current.setScene(bakeScene, fixturesFromConfiguration(config, catalog), scene.luminaires.map((l) => l.id ?? ''));
         // Each file in use once, with its warnings (docs/photometry.md, "Warnings").
         const files = new Map<string, PhotometryNote>();
         scene.luminaires.forEach((l, i) => {
@@ -177,6 +180,11 @@ export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
           </div>
         )}
         {mode === 'lux' && levels.length > 1 && <LuxLegend levels={levels} />}
+        {(liveState === 'lost' || liveState === 'no-bridge') && (
+          <div className="viewer3d-note viewer3d-live-note" role="status" data-testid="live-note">
+            {liveState === 'lost' ? 'Live control: bridge lost, showing the last levels received' : 'Live control: no bridge'}
+          </div>
+        )}
       </div>
       <div className="viewer3d-panel">
         <div className="viewer3d-group" role="group" aria-label="Camera">
@@ -216,6 +224,14 @@ export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
             ))}
           </details>
         )}
+        <LiveControl
+          store={store}
+          onLevels={(l) => ctrl.current?.setLiveLevels(l)}
+          onStatus={(live) => {
+            setLiveState(live?.state ?? null);
+            publish({ live });
+          }}
+        />
         <button type="button" className="btn" onClick={onBack} data-testid="back-2d">
           Back to 2D plan
         </button>

@@ -28,13 +28,19 @@ export interface ViewerStatus {
   error: string | null;
   /** Floor statistics in lux (null until lit). */
   floor: { avg: number; min: number; max: number; u0: number } | null;
+  /**
+   * Live control (docs/live-control.md), null while off: the bridge connection, frames
+   * received, and overlays applied to the view (at most one per animation frame, only when
+   * the levels changed).
+   */
+  live: { state: 'connecting' | 'connected' | 'no-bridge' | 'lost'; received: number; applied: number } | null;
 }
 
 const statuses = new WeakMap<object, ViewerStatus>();
 
 export const CLOSED_STATUS: ViewerStatus = {
   open: false, lit: false, done: false, progress: 0, groupBakes: 0, relightsOnly: 0, frames: 0,
-  firstLitMs: null, lastRelightMs: null, contextLosses: 0, error: null, floor: null,
+  firstLitMs: null, lastRelightMs: null, contextLosses: 0, error: null, floor: null, live: null,
 };
 
 export function setViewerStatus(owner: object, status: ViewerStatus): void {

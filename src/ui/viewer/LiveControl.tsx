@@ -1,0 +1,168 @@
+import { useEffect, useMemo, useRef, useState } from 'react';
+import { useStore } from 'zustand';
+import { findModuleType } from '../../core/model/catalogSchema';
+import { isTunable, modulesInOrder, type DmxPatch } from '../../core/model/dmxPatch';
+import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
+import { levelsFromFrames, sameLevels, type LiveLevel } from '../../engines/view/liveLevels';
+import { AutoPatchForm } from './AutoPatchForm';
+import { BRIDGE_RETRY_S, createBridgeClient, type BridgeState } from './createBridgeClient';
+import { createFrameLatch, type FrameLatch } from './createFrameLatch';
+import { PatchRow } from './PatchRow';
+import type { ViewerStatus } from './viewerStatus';
+
+export const DEFAULT_BRIDGE_PORT = 9090;
+
+export interface LiveControlProps {
+  store: ConfiguratorStore;
+  /** The overlay for the view (null: the configuration's own dimming again). */
+  onLevels(levels: ReadonlyMap<string, LiveLevel> | null): void;
+  /** For window.luxbox.view3d().live. */
+  onStatus(live: ViewerStatus['live']): void;
+}
+
+function describe(state: BridgeState, url: string): string {
+  switch (state.kind) {
+    case 'connecting':
+      return `Connecting to ${url}…`;
+    case 'connected': {
+      const s = state.status;
+      if (!s) return `Connected to ${url}`;
+      const universes = s.universes.length > 0 ? `universe${s.universes.length > 1 ? 's' : ''} ${s.universes.join(', ')}` : 'no universe yet';
+      return `Connected · ${[s.protocols.join(', ') || 'no protocol', universes, `${s.sources} source${s.sources === 1 ? '' : 's'}`].join(' · ')}`;
+    }
+    case 'no-bridge':
+      return `No bridge at ${url}: start it with “npx luxbox dmx”. Retrying every ${BRIDGE_RETRY_S} s.`;
+    case 'lost':
+      return `Bridge lost: the view keeps the last levels received. Retrying every ${BRIDGE_RETRY_S} s.`;
+  }
+}
+
+/**
+ * "Live control" in the 3D view's panel (docs/live-control.md): off by default;
+ * on, it connects to the DMX bridge and relights the view from the console's
+ * levels, once per animation frame at most, as an overlay that never touches
+ * the configuration or its undo history. The patch it reads is the
+ * configuration's (saved with it) and is edited here through undoable actions.
+ */
+export function LiveControl({ store, onLevels, onStatus }: LiveControlProps) {
+  const config = useStore(store, (s) => s.config);
+  const catalog = useStore(store, (s) => s.catalog);
+  const [on, setOn] = useState(false);
+  const [portText, setPortText] = useState(String(DEFAULT_BRIDGE_PORT));
+  const [port, setPort] = useState(DEFAULT_BRIDGE_PORT);
+  const [bridge, setBridge] = useState<BridgeState>({ kind: 'connecting' });
+  const [levels, setLevels] = useState<ReadonlyMap<string, LiveLevel>>(new Map());
+  const latch = useRef<FrameLatch | null>(null);
+  // The latest props and configuration for callbacks that outlive a render (the latch, the socket).
+  const latest = useRef({ config, onLevels, onStatus });
+  useEffect(() => {
+    latest.current = { config, onLevels, onStatus };
+  });
+  const url = `ws://127.0.0.1:${port}`;
+
+  useEffect(() => {
+    if (!on) return;
+    let state: BridgeState = { kind: 'connecting' };
+    let applied = 0;
+    let last: ReadonlyMap<string, LiveLevel> | null = null;
+    const report = () => latest.current.onStatus({ state: state.kind, received: l.counts.received, applied });
+    const l = createFrameLatch((frames) => {
+      const next = levelsFromFrames(latest.current.config, catalog, frames);
+      if (!sameLevels(last, next)) {
+        last = next;
+        applied++;
+        latest.current.onLevels(next);
+        setLevels(next);
+      }
+      report();
+    });
+    latch.current = l;
+    const client = createBridgeClient({
+      url: `ws://127.0.0.1:${port}`,
+      onState(s) {
+        state = s;
+        setBridge(s);
+        report();
+      },
+      onFrame: (universe, channels) => l.put(universe, channels),
+    });
+    return () => {
+      client.close();
+      l.dispose();
+      latch.current = null;
+      // Off (or another port): the configuration's own dimming again.
+      latest.current.onLevels(null);
+      latest.current.onStatus(null);
+      setLevels(new Map());
+    };
+  }, [on, port, catalog]);
+
+  // A patch edit (or any change) re-reads the frames already held: the view follows at once.
+  useEffect(() => {
+    latch.current?.reapply();
+  }, [config]);
+
+  const rows = useMemo(
+    () =>
+      modulesInOrder(config).map(({ module }) => {
+        const type = findModuleType(catalog, module.type);
+        return { id: module.id, typeName: type.name, tunable: isTunable(type), patch: module.dmx };
+      }),
+    [config, catalog],
+  );
+  const dispatch = (name: string, params: unknown): string | null => {
+    const r = store.getState().dispatch(name, params);
+    return r.ok ? null : r.reason;
+  };
+  const commitPort = () => {
+    const p = Number(portText);
+    if (Number.isInteger(p) && p >= 1 && p <= 65535) setPort(p);
+    else setPortText(String(port));
+  };
+
+  return (
+    <div className="viewer3d-live" data-testid="live-control">
+      <label className="viewer3d-field viewer3d-inline">
+        <input type="checkbox" checked={on} onChange={(e) => setOn(e.target.checked)} data-testid="live-on" /> Live control (DMX)
+      </label>
+      {on && (
+        <>
+          <label className="viewer3d-field viewer3d-inline">
+            Bridge port
+            <input
+              type="number"
+              min={1}
+              max={65535}
+              step={1}
+              inputMode="numeric"
+              value={portText}
+              onChange={(e) => setPortText(e.target.value)}
+              onBlur={commitPort}
+              onKeyDown={(e) => e.key === 'Enter' && commitPort()}
+              aria-label="DMX bridge port"
+              data-testid="live-port"
+            />
+          </label>
+          <p className={`viewer3d-live-state viewer3d-live-${bridge.kind}`} role="status" data-testid="live-state" data-state={bridge.kind}>
+            {describe(bridge, url)}
+          </p>
+          <p className="viewer3d-dim">Levels from the console light the view only: the configuration and its undo history stay as they are.</p>
+          <AutoPatchForm
+            onAutoPatch={(p) => dispatch('autoPatch', p)}
+            onClear={() => dispatch('clearPatch', {})}
+            canClear={rows.some((r) => r.patch)}
+          />
+          {rows.length > 0 ? (
+            <ul className="viewer3d-patch" aria-label="DMX patch">
+              {rows.map((r) => (
+                <PatchRow key={r.id} {...r} live={levels.get(r.id)} onPatch={(patch: DmxPatch | null) => dispatch('setModulePatch', { moduleId: r.id, patch })} />
+              ))}
+            </ul>
+          ) : (
+            <p className="viewer3d-dim">No modules to patch.</p>
+          )}
+        </>
+      )}
+    </div>
+  );
+}
