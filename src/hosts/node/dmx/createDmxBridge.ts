@@ -57,12 +57,25 @@ export interface ProtocolStatus {
   ignored: Record<string, number>;
 }
 
+/** One sending device: an sACN CID or an Art-Net IP address, with every universe it sends. */
+export interface DmxSourceStatus {
+  protocol: DmxProtocol;
+  id: string;
+  address: string;
+  name: string;
+  /** Its highest priority over its universes (Art-Net: 100). */
+  priority: number;
+  universes: number[];
+  /** Milliseconds since its last accepted packet, any universe. */
+  ageMs: number;
+}
+
 export interface DmxBridgeStatus {
   type: 'status';
   uptimeS: number;
   artnet: ProtocolStatus;
   sacn: ProtocolStatus & { multicast: string[] };
-  sources: DmxSourceInfo[];
+  sources: DmxSourceStatus[];
   universes: number[];
   clients: number;
   /** Frames replaced by a newer one before a slow client could take them. */
@@ -128,6 +141,22 @@ function listenWs(port: number, host: string): Promise<WebSocketServer> {
       resolve(server);
     });
   });
+}
+
+function groupSources(perUniverse: readonly DmxSourceInfo[]): DmxSourceStatus[] {
+  const byId = new Map<string, DmxSourceStatus>();
+  for (const s of perUniverse) {
+    const key = `${s.protocol}:${s.id}`;
+    const known = byId.get(key);
+    if (!known) {
+      byId.set(key, { protocol: s.protocol, id: s.id, address: s.address, name: s.name, priority: s.priority, universes: [s.universe], ageMs: s.ageMs });
+    } else {
+      known.universes.push(s.universe);
+      known.priority = Math.max(known.priority, s.priority);
+      known.ageMs = Math.min(known.ageMs, s.ageMs);
+    }
+  }
+  return [...byId.values()];
 }
 
 function ignoredSummary(ignored: Record<string, number>): string {
@@ -247,7 +276,7 @@ export async function createDmxBridge(options: DmxBridgeOptions = {}): Promise<D
       uptimeS: Math.round((t - started) / 100) / 10,
       artnet: protocolStatus(useArtnet, artnet),
       sacn: { ...protocolStatus(useSacn, sacn), multicast: [...multicast] },
-      sources: store.sources(t),
+      sources: groupSources(store.sources(t)),
       universes: store.universes(),
       clients: clients.size,
       coalesced,

@@ -122,7 +122,9 @@ export function createUniverseStore(options: UniverseStoreOptions = {}): Univers
       state.sources.delete(key);
       return { ok: true, universe, changed: remerge(state) };
     }
-    if (known && known.sequence !== 0 && incoming.sequence !== 0 && isStaleSequence(known.sequence, incoming.sequence)) {
+    // Art-Net 4 (ArtDmx, Sequence): 0 disables the check; in E1.31 0 is an ordinary sequence number.
+    const sequenced = incoming.protocol === 'sacn' || (known?.sequence !== 0 && incoming.sequence !== 0);
+    if (known && sequenced && isStaleSequence(known.sequence, incoming.sequence)) {
       return { ok: false, reason: 'stale-sequence' };
     }
     if (!known && state.sources.size >= maxSources) return { ok: false, reason: 'source-limit' };

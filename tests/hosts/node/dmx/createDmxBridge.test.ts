@@ -68,7 +68,7 @@ describe('createDmxBridge', () => {
     // A keeps sending at the lower priority: nothing changes.
     await tc.send(buildE131({ cid: CID_A, priority: 100, sequence: 1, universe: 1, data: levels(255) }), sacnPort);
     const s = await client.status();
-    expect(s.sources.map((x: { priority: number }) => x.priority).sort()).toEqual([100, 150]);
+    expect(s.sources.map((x) => x.priority).sort()).toEqual([100, 150]);
     expect(client.frames.at(-1)!.channels[0]).toBe(30);
   });
 
@@ -122,14 +122,16 @@ describe('createDmxBridge', () => {
     await client.waitFor((f) => f.universe === 2 && f.channels[0] === 50 && f.channels[1] === 30, 'HTP of Art-Net and sACN');
     const mergedAt = client.frames.length;
     // Only the sACN source keeps sending; the Art-Net one times out.
-    const keepAlive = setInterval(() => void tc.send(buildE131({ cid: CID_A, universe: 2, data: levels(0, { 0: 30, 1: 30 }) }), sacnPort), 30);
+    let seq = 5;
+    const keepAlive = setInterval(() => void tc.send(buildE131({ cid: CID_A, universe: 2, sequence: ++seq & 0xff, data: levels(0, { 0: 30, 1: 30 }) }), sacnPort), 30);
     try {
       await client.waitFor((f) => f.universe === 2 && f.channels[0] === 30 && f.channels[1] === 30, 'Art-Net source timed out', 5000, mergedAt);
     } finally {
       clearInterval(keepAlive);
     }
     const s = await client.status();
-    expect(s.sources.filter((x: { universe: number }) => x.universe === 2).map((x: { protocol: string }) => x.protocol)).toEqual(['sacn']);
+    expect(s.sources.filter((x) => x.universes.includes(2)).map((x) => x.protocol)).toEqual(['sacn']);
+    expect(s.sources).toEqual([expect.objectContaining({ protocol: 'sacn', id: CID_A.map((b) => b.toString(16)).join(''), universes: [2], name: 'test console' })]);
   });
 
   it('ignores non-zero START Codes, counts every datagram as accepted or ignored with a reason', async () => {

@@ -120,8 +120,9 @@ describe('DMX packet fuzzing', () => {
       const rng = createRng(2024);
       const { artnet, sacn } = bridge.address();
       // The clean universe exists before the fuzz fills the universe table to its limit.
-      const clean = (v: number) => buildE131({ cid: Array(16).fill(0x5a), universe: 2, priority: 200, sequence: 0, data: levels(v) });
-      await tc.send(clean(1), sacn!.port);
+      // Priority 200 and all 255 after the fuzz: whatever mutant reached universe 2, this frame is the merge.
+      const clean = (v: number, sequence: number) => buildE131({ cid: Array(16).fill(0x5a), universe: 2, priority: 200, sequence, data: levels(v) });
+      await tc.send(clean(1, 0), sacn!.port);
       await client.waitFor((f) => f.universe === 2 && f.channels[0] === 1, 'clean frame before the fuzz');
       let sent = 1;
       for (let i = 0; i < 3000; i++) {
@@ -136,9 +137,9 @@ describe('DMX packet fuzzing', () => {
         if (i % 20 === 0) await new Promise((resolve) => setTimeout(resolve, 1));
       }
       // The bridge still works: a clean frame goes through.
-      await tc.send(clean(123), sacn!.port);
+      await tc.send(clean(255, 1), sacn!.port);
       sent++;
-      await client.waitFor((f) => f.universe === 2 && f.channels.every((v) => v === 123), 'clean frame after the fuzz', 10_000);
+      await client.waitFor((f) => f.universe === 2 && f.channels.every((v) => v === 255), 'clean frame after the fuzz', 10_000);
       const s = await client.status();
       const sum = (r: Record<string, number>) => Object.values(r).reduce((a, b) => a + b, 0);
       for (const p of [s.artnet, s.sacn]) expect(p.packets).toBe(p.accepted + sum(p.ignored));

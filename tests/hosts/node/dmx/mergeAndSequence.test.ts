@@ -61,6 +61,19 @@ describe('createUniverseStore', () => {
     expect(s.universes()).toEqual([1]);
   });
 
+  it('sequence 0 disables the check for Art-Net only; in sACN it is an ordinary number', () => {
+    const s = createUniverseStore();
+    s.acceptE131(sacn('a', 1, [1], { sequence: 0 }), 'x', 0);
+    expect(s.acceptE131(sacn('a', 1, [2], { sequence: 0 }), 'x', 0)).toEqual({ ok: false, reason: 'stale-sequence' });
+    expect(s.acceptE131(sacn('a', 1, [2], { sequence: 1 }), 'x', 0)).toEqual({ ok: true, universe: 1, changed: true });
+    const art = (sequence: number, v: number) => ({ sequence, physical: 0, portAddress: 0, data: u8(v) });
+    s.acceptArtDmx(art(0, 1), 'y', 0);
+    expect(s.acceptArtDmx(art(0, 2), 'y', 0).ok).toBe(true);
+    expect(s.acceptArtDmx(art(9, 3), 'y', 0).ok).toBe(true);
+    expect(s.acceptArtDmx(art(8, 4), 'y', 0)).toEqual({ ok: false, reason: 'stale-sequence' });
+    expect(s.acceptArtDmx(art(0, 5), 'y', 0).ok).toBe(true);
+  });
+
   it('limits universes and sources per universe, and counts them as ignored', () => {
     const s = createUniverseStore({ maxUniverses: 2, maxSourcesPerUniverse: 2 });
     s.acceptE131(sacn('a', 1, [1]), 'x', 0);
