@@ -209,8 +209,8 @@ export async function createDmxBridge(options: DmxBridgeOptions = {}): Promise<D
   }
 
   function onDatagram(protocol: DmxProtocol, msg: Buffer, from: RemoteInfo): void {
-    // Whatever the bytes, this handler must not throw: a throw in a 'message' listener would
-    // take the process down. The parsers never throw; the guard is for bugs, counted not fatal.
+    // Whatever the bytes, this handler must not throw (a throw in a 'message' listener ends the
+    // process): the parsers and the store never throw, which tests/hosts/node/dmx/fuzz.test.ts checks.
     const c: Counters<string> = protocol === 'artnet' ? artnet : sacn;
     c.packets++;
     const address = `${from.address}:${from.port}`;

@@ -2,6 +2,7 @@
  * The bridge end to end: a test console sends real Art-Net and sACN datagrams on the loopback
  * interface, a real `ws` client reads what the app would read.
  */
+import { createSocket } from 'node:dgram';
 import { afterEach, describe, expect, it } from 'vitest';
 import { createDmxBridge, type DmxBridge, type DmxBridgeOptions } from '../../../../src/hosts/node/dmx/createDmxBridge';
 import { buildArtDmx, buildE131, CID_A, CID_B, connect, levels, openConsole, type TestClient, type TestConsole } from './testConsole';
@@ -195,6 +196,30 @@ describe('createDmxBridge', () => {
     await b.close();
     await b.close();
     bridge = null;
+  });
+
+  it('receives sACN multicast on 239.255.hi.lo for a joined universe', async () => {
+    const warnings: string[] = [];
+    const b = await createDmxBridge({ artnet: false, sacnPort: 0, wsPort: 0, universes: [3], log: (l) => warnings.push(l) });
+    bridge = b;
+    const { sacn, ws } = b.address();
+    if (sacn!.multicast.length === 0) {
+      // A machine without a multicast route: the failed join is said, and unicast still works.
+      expect(warnings.join('\n')).toMatch(/cannot join multicast group 239\.255\.0\.3 for universe 3/);
+      return;
+    }
+    expect(sacn!.multicast).toEqual(['239.255.0.3']);
+    const client = await connect(ws.url);
+    clients.push(client);
+    const sender = createSocket('udp4');
+    await new Promise<void>((resolve) => sender.bind(0, () => resolve()));
+    sender.setMulticastLoopback(true);
+    try {
+      await new Promise<void>((resolve, reject) => sender.send(buildE131({ cid: CID_A, universe: 3, data: levels(0, { 0: 33 }) }), sacn!.port, '239.255.0.3', (e) => (e ? reject(e) : resolve())));
+      await client.waitFor(at(3, 0, 33), 'multicast frame');
+    } finally {
+      sender.close();
+    }
   });
 
   it('a port in use is a clear start error', async () => {
