@@ -18,19 +18,30 @@ import { relativeErrors } from './errorStats';
 import { machineInfo, type MachineInfo } from './machineInfo';
 import { samplePoints } from './runBench';
 
-/** Radiance settings from quick to thorough, with ambient caching as Radiance is normally run, and a reflection limit above the bounces. */
+/**
+ * Radiance settings from quick to thorough: pure Monte Carlo (-aa 0; with ambient caching a
+ * -ab 8 run on the CIE cube took over ten minutes for 384 points on 2 cores), Radiance's default
+ * source thresholds (-dt 0.05 -dc 0.5: with -dt 0 every one of the living room's 137 point
+ * sources is tested at every bounce, 156 s for -ab 4 -ad 64 at 90 points), and a reflection
+ * limit above the bounces (Radiance's default -lr 10 cuts the series of a ρ = 0.8 room short:
+ * docs/radiance.md).
+ */
+const rtraceOptions = (ab: number, ad: number): string[] => ['-ab', String(ab), '-ad', String(ad), '-aa', '0', '-lr', String(ab + 4), '-lw', '1e-6'];
 export const RADIANCE_LADDER: readonly { label: string; options: readonly string[] }[] = [
-  { label: '-ab 2 -ad 256', options: ['-ab', '2', '-ad', '256', '-as', '128', '-aa', '0.2', '-ar', '32', '-lr', '4', '-dt', '0', '-dc', '1'] },
-  { label: '-ab 4 -ad 512', options: ['-ab', '4', '-ad', '512', '-as', '256', '-aa', '0.1', '-ar', '64', '-lr', '8', '-dt', '0', '-dc', '1'] },
-  { label: '-ab 8 -ad 1024', options: ['-ab', '8', '-ad', '1024', '-as', '512', '-aa', '0.05', '-ar', '128', '-lr', '12', '-lw', '1e-6', '-dt', '0', '-dc', '1'] },
-  { label: '-ab 16 -ad 2048', options: ['-ab', '16', '-ad', '2048', '-as', '1024', '-aa', '0.02', '-ar', '256', '-lr', '20', '-lw', '1e-8', '-dt', '0', '-dc', '1'] },
-];
+  [4, 64],
+  [8, 128],
+  [16, 256],
+  [16, 512],
+].map(([ab, ad]) => ({ label: `-ab ${ab} -ad ${ad} -aa 0`, options: rtraceOptions(ab, ad) }));
 
 /** The scenes of the comparison: the CIE cube, the living room and the spot aimed at a wall (stiff). */
 export const RADIANCE_SCENES: readonly BenchScene[] = [BENCH_SCENES[0], BENCH_SCENES[1], STIFF_SCENES[0]];
 
+/** After a Radiance run longer than this, the scene's more expensive rungs are skipped (and listed as skipped). */
+export const RADIANCE_RUNG_BUDGET_MS = 60_000;
+
 /** Every `POINT_STRIDE`-th comparison point of the main bench: Radiance's cost is per point. */
-export const POINT_STRIDE = 4;
+export const POINT_STRIDE = 16;
 
 export interface PeerRow {
   scene: string;
@@ -40,6 +51,8 @@ export interface PeerRow {
   /** Illuminance values the run produced: texels of all maps (luxbox), points traced (Radiance). */
   values: number;
   total: { rms: number; max: number };
+  /** Not run: the previous rung already took longer than RADIANCE_RUNG_BUDGET_MS. */
+  skipped?: boolean;
 }
 
 export interface PeerResult {
@@ -107,13 +120,20 @@ export function runRadiancePeerBench(root: string, log: (line: string) => void):
         const t0 = performance.now();
         compileOctree(bin, dir);
         const compileMs = performance.now() - t0;
+        let overBudget = false;
         for (const { label, options } of RADIANCE_LADDER) {
+          if (overBudget) {
+            rows.push({ scene: scene.name, solver: 'radiance', settings: label, ms: NaN, values: sampled.length, total: { rms: NaN, max: NaN }, skipped: true });
+            log(`  radiance ${label}: skipped (the previous rung took over ${RADIANCE_RUNG_BUDGET_MS / 1000} s)`);
+            continue;
+          }
           const t1 = performance.now();
           const values = rtraceLux(bin, dir, options, input + '\n');
           const ms = performance.now() - t1 + compileMs;
           const e = relativeErrors(values, ref);
           rows.push({ scene: scene.name, solver: 'radiance', settings: label, ms, values: sampled.length, total: { rms: e.rms, max: e.max } });
           log(`  radiance ${label}: ${Math.round(ms)} ms, RMS ${(100 * e.rms).toFixed(2)} %`);
+          overBudget = ms > RADIANCE_RUNG_BUDGET_MS;
         }
       } finally {
         rmSync(dir, { recursive: true, force: true });
@@ -131,7 +151,7 @@ export function runRadiancePeerBench(root: string, log: (line: string) => void):
  */
 export function equalErrorRatios(rows: readonly PeerRow[]): { scene: string; radiance: PeerRow; luxbox: PeerRow | null; ratio: number | null }[] {
   return rows
-    .filter((r) => r.solver === 'radiance')
+    .filter((r) => r.solver === 'radiance' && !r.skipped)
     .map((radiance) => {
       const candidates = rows.filter((r) => r.solver === 'luxbox' && r.scene === radiance.scene && r.total.rms <= radiance.total.rms);
       const luxbox = candidates.sort((a, b) => a.ms - b.ms)[0] ?? null;
@@ -151,7 +171,11 @@ export function peerTables(r: PeerResult): string {
     '',
     '| scene | solver | settings | time | values | values / s | total RMS | total max |',
     '|---|---|---|---|---|---|---|---|',
-    ...r.rows.map((x) => `| ${x.scene} (${r.points[x.scene]} points) | ${x.solver} | ${x.settings} | ${time(x.ms)} | ${x.values} ${x.solver === 'luxbox' ? 'texels' : 'points'} | ${Math.round((1000 * x.values) / x.ms)} | ${pct(x.total.rms)} % | ${pct(x.total.max)} % |`),
+    ...r.rows.map((x) =>
+      x.skipped
+        ? `| ${x.scene} (${r.points[x.scene]} points) | ${x.solver} | ${x.settings} | not run: the rung before took over ${RADIANCE_RUNG_BUDGET_MS / 1000} s | | | | |`
+        : `| ${x.scene} (${r.points[x.scene]} points) | ${x.solver} | ${x.settings} | ${time(x.ms)} | ${x.values} ${x.solver === 'luxbox' ? 'texels' : 'points'} | ${Math.round((1000 * x.values) / x.ms)} | ${pct(x.total.rms)} % | ${pct(x.total.max)} % |`,
+    ),
     '',
     '**At equal error**: for each Radiance run, luxbox\'s fastest run with a total RMS error at most Radiance\'s, and the ratio of illuminance values per second (luxbox counts every texel of its six maps, Radiance the points it traced):',
     '',
