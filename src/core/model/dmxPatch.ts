@@ -10,7 +10,11 @@ import type { ModuleTypeSpec } from './catalogSchema';
 import type { Configuration, ModuleInstance } from './configuration';
 
 export const DMX_CHANNELS = 512;
-/** Universe numbers as the bridge forwards them: sACN uses 1–63999, Art-Net port-addresses 0–32767. */
+/**
+ * Universe numbers as the bridge forwards them (docs/dmx.md, "Universe numbering"): sACN's own
+ * 1–63999, and Art-Net Port-Address + 1, so the same physical universe has one number.
+ */
+export const DMX_UNIVERSE_MIN = 1;
 export const DMX_UNIVERSE_MAX = 63999;
 
 export type DmxResolution = 8 | 16;
@@ -43,7 +47,7 @@ export function formatPatchRange(p: Pick<DmxPatch, 'universe' | 'address' | 'res
 
 /** A patch's own problem (ranges, fit in the universe, CCT on a tunable type), or null. */
 export function patchRangeProblem(p: DmxPatch, type: Pick<ModuleTypeSpec, 'ccts' | 'name'>): string | null {
-  if (!Number.isInteger(p.universe) || p.universe < 0 || p.universe > DMX_UNIVERSE_MAX) return `DMX universe must be an integer in 0..${DMX_UNIVERSE_MAX} (got ${p.universe})`;
+  if (!Number.isInteger(p.universe) || p.universe < DMX_UNIVERSE_MIN || p.universe > DMX_UNIVERSE_MAX) return `DMX universe must be an integer in ${DMX_UNIVERSE_MIN}..${DMX_UNIVERSE_MAX} (got ${p.universe})`;
   if (!Number.isInteger(p.address) || p.address < 1 || p.address > DMX_CHANNELS) return `DMX address must be an integer in 1..${DMX_CHANNELS} (got ${p.address})`;
   if (p.resolution !== 8 && p.resolution !== 16) return `DMX resolution must be 8 or 16 bits (got ${String(p.resolution)})`;
   if (p.cct && !isTunable(type)) return `${type.name} has one colour temperature only: no CCT channel`;

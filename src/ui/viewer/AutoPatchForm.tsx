@@ -1,5 +1,5 @@
 import { useState } from 'react';
-import { DMX_CHANNELS, DMX_UNIVERSE_MAX } from '../../core/model/dmxPatch';
+import { DMX_CHANNELS, DMX_UNIVERSE_MAX, DMX_UNIVERSE_MIN } from '../../core/model/dmxPatch';
 
 export interface AutoPatchParams {
   universe: number;
@@ -17,13 +17,13 @@ export function AutoPatchForm({ onAutoPatch, onClear, canClear }: { onAutoPatch(
   const [reason, setReason] = useState<string | null>(null);
   const u = Number(universe);
   const a = Number(address);
-  const valid = Number.isInteger(u) && u >= 0 && u <= DMX_UNIVERSE_MAX && Number.isInteger(a) && a >= 1 && a <= DMX_CHANNELS;
+  const valid = Number.isInteger(u) && u >= DMX_UNIVERSE_MIN && u <= DMX_UNIVERSE_MAX && Number.isInteger(a) && a >= 1 && a <= DMX_CHANNELS;
   return (
     <div className="viewer3d-autopatch" role="group" aria-label="Auto-patch">
       <div className="viewer3d-patch-fields">
         <label className="viewer3d-patch-num">
           U
-          <input type="number" min={0} step={1} inputMode="numeric" value={universe} onChange={(e) => setUniverse(e.target.value)} aria-label="Auto-patch universe" data-testid="autopatch-universe" />
+          <input type="number" min={DMX_UNIVERSE_MIN} max={DMX_UNIVERSE_MAX} step={1} inputMode="numeric" value={universe} onChange={(e) => setUniverse(e.target.value)} aria-label="Auto-patch universe" data-testid="autopatch-universe" />
         </label>
         <label className="viewer3d-patch-num">
           @
@@ -44,7 +44,7 @@ export function AutoPatchForm({ onAutoPatch, onClear, canClear }: { onAutoPatch(
           Clear patch
         </button>
       </div>
-      {!valid && <p className="viewer3d-patch-reason">Universe 0–{DMX_UNIVERSE_MAX}, address 1–{DMX_CHANNELS}.</p>}
+      {!valid && <p className="viewer3d-patch-reason">Universe {DMX_UNIVERSE_MIN}–{DMX_UNIVERSE_MAX}, address 1–{DMX_CHANNELS}.</p>}
       {reason && (
         <p className="viewer3d-patch-reason" role="alert">
           {reason}

@@ -70,7 +70,7 @@ export function PatchRow({ id, typeName, tunable, patch, live, onPatch }: PatchR
           <>
             <label className="viewer3d-patch-num">
               U
-              <input type="number" min={0} step={1} inputMode="numeric" value={universe} aria-label={`DMX universe of ${id}`} onChange={(e) => edit('universe', e.target.value)} onBlur={commitNumbers} onKeyDown={onKey} data-testid={`patch-universe-${id}`} />
+              <input type="number" min={1} step={1} inputMode="numeric" value={universe} aria-label={`DMX universe of ${id}`} onChange={(e) => edit('universe', e.target.value)} onBlur={commitNumbers} onKeyDown={onKey} data-testid={`patch-universe-${id}`} />
             </label>
             <label className="viewer3d-patch-num">
               @

@@ -89,7 +89,7 @@ function toAction(s: Configuration, st: Step): [string, unknown] {
       // Addresses near the end of the universe and next to other modules' channels; some unpatch.
       return ['setModulePatch', { moduleId: mod, patch: st.c < 0.1 ? null : { universe: st.j % 3, address: st.c < 0.3 ? 505 + (st.i % 10) : 1 + (st.i % 12), resolution: st.a < 0.5 ? 8 : 16, cct: st.b < 0.5 } }];
     case 23:
-      return st.c < 0.15 ? ['clearPatch', {}] : ['autoPatch', { universe: st.j % 3, address: 1 + Math.floor(st.a * 511), resolution: st.b < 0.5 ? 8 : 16, cct: st.i % 2 === 0 }];
+      return st.c < 0.15 ? ['clearPatch', {}] : ['autoPatch', { universe: 1 + (st.j % 3), address: 1 + Math.floor(st.a * 511), resolution: st.b < 0.5 ? 8 : 16, cct: st.i % 2 === 0 }];
     default:
       return ['setRailLength', { railId: rail, length: 0.5 + 0.1 * (st.j % 26) }];
   }

@@ -11,7 +11,7 @@ import type { ActionDefinition } from '../action';
 import type { Catalog } from '../catalogSchema';
 import { findModuleType } from '../catalogSchema';
 import type { Configuration, ModuleInstance } from '../configuration';
-import { DMX_CHANNELS, DMX_UNIVERSE_MAX, isTunable, modulesInOrder, patchWidth, type DmxPatch } from '../dmxPatch';
+import { DMX_CHANNELS, DMX_UNIVERSE_MAX, DMX_UNIVERSE_MIN, isTunable, modulesInOrder, patchWidth, type DmxPatch } from '../dmxPatch';
 import { findModule } from './lookup';
 
 const resolution = z.union([z.literal(8), z.literal(16)]);
@@ -59,7 +59,7 @@ export const setModulePatch: ActionDefinition<z.infer<typeof moduleParams>> = {
 };
 
 const autoParams = z.object({
-  universe: z.number().int().min(0).max(DMX_UNIVERSE_MAX),
+  universe: z.number().int().min(DMX_UNIVERSE_MIN).max(DMX_UNIVERSE_MAX),
   /** First channel of the first module, 1..512. */
   address: z.number().int().min(1).max(DMX_CHANNELS),
   resolution,
