@@ -2,7 +2,9 @@ import { createSocket, type RemoteInfo, type Socket } from 'node:dgram';
 import { WebSocketServer, type WebSocket } from 'ws';
 import { createFrameQueue, type FrameQueue } from './createFrameQueue';
 import {
+  ARTNET_SOURCE_TIMEOUT_MS,
   createUniverseStore,
+  SACN_SOURCE_TIMEOUT_MS,
   STORE_IGNORE_REASONS,
   type DmxProtocol,
   type DmxSourceInfo,
@@ -310,7 +312,7 @@ export async function createDmxBridge(options: DmxBridgeOptions = {}): Promise<D
   wss.on('error', (error) => log(`dmx: WebSocket server: ${error.message}`));
 
   // Source loss (E1.31-2018 §6.7.1): checked often enough that a source leaves within a fifth of its timeout.
-  const shortestTimeout = Math.min(options.sacnTimeoutMs ?? 2500, options.artnetTimeoutMs ?? 10_000);
+  const shortestTimeout = Math.min(options.sacnTimeoutMs ?? SACN_SOURCE_TIMEOUT_MS, options.artnetTimeoutMs ?? ARTNET_SOURCE_TIMEOUT_MS);
   const expireTimer = setInterval(() => {
     for (const universe of store.expire(now())) broadcast(universe);
   }, Math.max(10, Math.min(500, shortestTimeout / 5)));
