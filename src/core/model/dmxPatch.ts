@@ -68,9 +68,17 @@ export function modulesInOrder(config: Configuration): { module: ModuleInstance;
   return config.systems.flatMap((s, i) => s.rails.flatMap((r, k) => r.modules.map((module, n) => ({ module, path: `systems[${i}].rails[${k}].modules[${n}]` }))));
 }
 
-/** The patched modules, in module order. */
+/** The patched modules, in module order (paths built for those only: validateResult runs this on every action). */
 export function patchedModules(config: Configuration): PatchedModule[] {
-  return modulesInOrder(config).flatMap(({ module, path }) => (module.dmx ? [{ module, patch: module.dmx, path }] : []));
+  const out: PatchedModule[] = [];
+  config.systems.forEach((s, i) =>
+    s.rails.forEach((r, k) =>
+      r.modules.forEach((module, n) => {
+        if (module.dmx) out.push({ module, patch: module.dmx, path: `systems[${i}].rails[${k}].modules[${n}]` });
+      }),
+    ),
+  );
+  return out;
 }
 
 /**
