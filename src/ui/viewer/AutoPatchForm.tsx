@@ -20,6 +20,7 @@ export function AutoPatchForm({ onAutoPatch, onClear, canClear }: { onAutoPatch(
   const valid = Number.isInteger(u) && u >= DMX_UNIVERSE_MIN && u <= DMX_UNIVERSE_MAX && Number.isInteger(a) && a >= 1 && a <= DMX_CHANNELS;
   return (
     <div className="viewer3d-autopatch" role="group" aria-label="Auto-patch">
+      <p className="viewer3d-dim">Auto-patch every module, in module order, from universe (U) and address (@):</p>
       <div className="viewer3d-patch-fields">
         <label className="viewer3d-patch-num">
           U
