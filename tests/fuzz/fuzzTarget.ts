@@ -19,7 +19,7 @@ export type FuzzOutcome =
 export interface FuzzTarget {
   /** Short name used in tables and `npm run fuzz -- --target <name>`. */
   name: string;
-  /** Real fixtures (read from tests/fixtures, never from ../shared). */
+  /** Real fixtures (read from tests/fixtures, never from outside the repository). */
   seeds(): FuzzSeed[];
   /**
    * Feed one input. Returns `{kind:'accepted', problems}` when the entry point

@@ -7,7 +7,6 @@ import { SURFACE_FRAMES } from '../../engines/bake/surfaceLayout';
 import { exportRadiance } from '../../engines/radiance/exportRadiance';
 import { toRadiance, vecText } from '../../engines/radiance/radianceFrame';
 import type { Vec3 } from '../../core/model/lightingScene';
-import type { Photometry } from '../../core/photometry/types';
 import { sampleReference } from '../../reference/sampleReference';
 import { solveBoxReference } from '../../reference/solveBoxReference';
 import { createHeadlessGL } from '../node/createHeadlessGL';
@@ -16,7 +15,7 @@ import { compileOctree, findRadianceBin, rtraceLux, writeExportFiles } from '../
 import { BENCH_SCENES, QUALITY_LADDER, STIFF_SCENES, type BenchQuality, type BenchScene } from './benchScenes';
 import { relativeErrors } from './errorStats';
 import { machineInfo, type MachineInfo } from './machineInfo';
-import { samplePoints } from './runBench';
+import { photometryMap, samplePoints, timedBake } from './runBench';
 
 /**
  * Radiance settings from quick to thorough: pure Monte Carlo (-aa 0; with ambient caching a
@@ -62,18 +61,12 @@ export interface PeerResult {
   rows: PeerRow[];
 }
 
-function photometryMap(loaded: LoadedLightingScene): Map<string, Photometry> {
-  const map = new Map<string, Photometry>();
-  loaded.scene.luminaires.forEach((l, i) => map.set(l.photometry, loaded.bakeScene.luminaires[i].photometry));
-  return map;
-}
-
+/** The main bench's timed bake (after its untimed warm-up), plus reading the points: luxbox's time to the same numbers Radiance gives. */
 function luxboxRun(baker: Baker, loaded: LoadedLightingScene, quality: BenchQuality, points: Vec3[]) {
-  baker.bake(loaded.bakeScene, { ...quality, samples: Math.min(quality.samples, 16), bounces: 1 }); // warm-up: compile
+  const { maps, report, ms } = timedBake(baker, loaded, quality);
   const t0 = performance.now();
-  const { maps, report } = baker.bake(loaded.bakeScene, quality);
   const values = probeScene(loaded.bakeScene, maps, quality, points).map((p) => p.total);
-  return { ms: performance.now() - t0, texels: report.totalTexels, values };
+  return { ms: ms + performance.now() - t0, texels: report.totalTexels, values };
 }
 
 /**

@@ -107,7 +107,7 @@ export function samplePoints(room: { width: number; height: number; depth: numbe
 }
 
 /** The reference's photometry map: the scene's own `photometry` strings → the parsed files the loader already read. */
-function photometryMap(loaded: LoadedLightingScene): Map<string, Photometry> {
+export function photometryMap(loaded: LoadedLightingScene): Map<string, Photometry> {
   const map = new Map<string, Photometry>();
   loaded.scene.luminaires.forEach((l, i) => map.set(l.photometry, loaded.bakeScene.luminaires[i].photometry));
   return map;
@@ -118,7 +118,7 @@ function photometryMap(loaded: LoadedLightingScene): Map<string, Photometry> {
  * luminaires: the generated programs depend on both, and ANGLE finishes
  * compiling lazily at first draw, which would otherwise land in the timing.
  */
-function timedBake(baker: Baker, loaded: LoadedLightingScene, quality: BenchQuality, luminaires = loaded.bakeScene.luminaires, method: BenchMethod = 'bright-patches') {
+export function timedBake(baker: Baker, loaded: LoadedLightingScene, quality: BenchQuality, luminaires = loaded.bakeScene.luminaires, method: BenchMethod = 'bright-patches') {
   const extra = METHOD_SETTINGS[method];
   baker.bake({ ...loaded.bakeScene, luminaires }, { ...quality, ...extra, samples: Math.min(quality.samples, 16), bounces: Math.min(quality.bounces, 1) });
   const started = performance.now();

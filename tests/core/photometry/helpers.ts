@@ -1,6 +1,7 @@
 import { readFileSync, readdirSync } from 'node:fs';
 import { join } from 'node:path';
 import { parsePhotometry, type Photometry } from '../../../src/core/photometry';
+import { createRng } from '../../fuzz/mutate';
 
 export const REAL_DIR = 'public/ies';
 export const FIXTURE_DIR = 'tests/fixtures/photometry';
@@ -24,14 +25,7 @@ export function loadFixture(name: string): Photometry {
   });
 }
 
-/** Deterministic PRNG (mulberry32) for the fuzz and sampling tests. */
+/** Deterministic PRNG (mulberry32: the fuzzers' createRng) for the fuzz and sampling tests. */
 export function rng(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
+  return createRng(seed).next;
 }

@@ -8,24 +8,14 @@ import { scenePointSources } from '../../../src/engines/bake/scenePointSources';
 import { exportRadiance } from '../../../src/engines/radiance/exportRadiance';
 import { toRadiance } from '../../../src/engines/radiance/radianceFrame';
 import { loadRenderInput } from '../../../src/hosts/node/renderInput';
+import { createRng } from '../../fuzz/mutate';
 import { radianceDirect } from './radianceSceneEvaluator';
 
 const Y = (e: Vec3): number => LUMINANCE_WEIGHTS[0] * e[0] + LUMINANCE_WEIGHTS[1] * e[1] + LUMINANCE_WEIGHTS[2] * e[2];
 
-/** A seeded generator (mulberry32), so the sampled points are the same on every run. */
-function random(seed: number): () => number {
-  let a = seed;
-  return () => {
-    a = (a + 0x6d2b79f5) | 0;
-    let t = Math.imul(a ^ (a >>> 15), 1 | a);
-    t = (t + Math.imul(t ^ (t >>> 7), 61 | t)) ^ t;
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
-
 /** Points on all six surfaces (normal into the room) and in the air (random normals). */
 function samplePoints(scene: BakeScene, n: number, seed: number): { p: Vec3; normal: Vec3 }[] {
-  const rnd = random(seed);
+  const rnd = createRng(seed).next;
   const { width: W, height: H, depth: D } = scene.room;
   const out: { p: Vec3; normal: Vec3 }[] = [];
   const faces: { at: (u: number, v: number) => Vec3; normal: Vec3 }[] = [
