@@ -47,11 +47,32 @@ export const NEAR_FIELD_MODELS = ['split', 'point'] as const;
 export type NearField = (typeof NEAR_FIELD_MODELS)[number];
 export const DEFAULT_NEAR_FIELD: NearField = 'split';
 
+/**
+ * An object in the room (version 2): a mesh file placed on the floor or anywhere in the room.
+ * world = T(position) · Ry(yaw) · S(scale) · local (src/core/mesh/placeMesh.ts).
+ */
+export interface LightingObject {
+  /** OBJ (+MTL) or glTF/GLB file relative to the scene file (metres, y up); in the app also `object:<id>` (resolved from the configuration). */
+  mesh: string;
+  /** World position of the mesh's origin, metres. */
+  position: Vec3;
+  /** Degrees, counterclockwise seen from above; default 0. */
+  yaw: number;
+  /** Uniform scale; default 1. */
+  scale: number;
+  /** Overrides every material of the mesh (grey or linear RGB in [0, 1)); absent: the file's own colours (MTL Kd, glTF base colour). */
+  reflectance?: Reflectance;
+  /** Optional stable identifier (the configurator sets it to the object id). */
+  id?: string;
+}
+
 export interface LightingScene {
-  /** 1, or 2 when the scene uses a version-2 field (nearField). */
+  /** 1, or 2 when the scene uses a version-2 field (nearField, objects). */
   version: 1 | 2;
   /** Version 2 only; absent means DEFAULT_NEAR_FIELD ('split'). */
   nearField?: NearField;
   room: LightingRoom;
   luminaires: LightingLuminaire[];
+  /** Version 2 only; absent or empty: an empty room. */
+  objects?: LightingObject[];
 }

@@ -1,5 +1,7 @@
 import { SURFACE_NAMES, type LightingLuminaire, type NearField, type Rgb, type SurfaceName } from '../../core/model/lightingScene';
 import type { Photometry } from '../../core/photometry/types';
+import type { MeshPlacement } from '../../core/mesh/placeMesh';
+import type { TriangleMesh } from '../../core/mesh/triangleMesh';
 
 /**
  * One luminaire with its photometry already parsed (the baker reads no files):
@@ -21,8 +23,21 @@ export interface BakeScene {
     reflectance: Record<SurfaceName, number | Rgb>;
   };
   luminaires: BakeLuminaire[];
+  /**
+   * Objects in the room (scene file v2 `objects`, the configurator's furniture): they occlude
+   * direct light, are hit by the gather and get light maps of their own. Absent or empty: the
+   * baker compiles exactly the shaders of an empty room.
+   */
+  objects?: BakeObject[];
   /** Near-field model of the luminaires (scene file v2 `nearField`; absent = 'split'); the bake setting `nearField` overrides it. */
   nearField?: NearField;
+}
+
+/** One object with its mesh already loaded; `reflectance` (grey or RGB) overrides every material of the mesh. */
+export interface BakeObject extends MeshPlacement {
+  id: string;
+  mesh: TriangleMesh;
+  reflectance?: number | Rgb;
 }
 
 export function toRgb(value: number | Rgb): Rgb {

@@ -1,0 +1,41 @@
+/**
+ * Where an object's mesh lies in the room: world = T(position) · Ry(yaw) · S(scale) · local,
+ * with Ry the right-handed rotation about +y (counterclockwise seen from above, the same Ry as
+ * the luminaires' yaw: docs/scene-format.md, "Units and frames"). The one place that turns an
+ * object placement into world coordinates: the baker, the reference, the plan's outlines and
+ * the 3D view all call it.
+ */
+import type { Vec3 } from '../model/lightingScene';
+import type { TriangleMesh } from './triangleMesh';
+
+export interface MeshPlacement {
+  /** World position of the mesh's origin, metres. */
+  readonly position: Vec3;
+  /** Degrees, counterclockwise seen from above. */
+  readonly yaw: number;
+  /** Uniform scale (1 = the mesh's own metres). */
+  readonly scale: number;
+}
+
+/** The placement as a function of one local point (x, y, z) → world [x, y, z]. */
+export function placementTransform(placement: MeshPlacement): (x: number, y: number, z: number) => Vec3 {
+  const t = (placement.yaw * Math.PI) / 180;
+  const c = Math.cos(t);
+  const s = Math.sin(t);
+  const k = placement.scale;
+  const [px, py, pz] = placement.position;
+  return (x, y, z) => [px + k * (c * x + s * z), py + k * y, pz + k * (-s * x + c * z)];
+}
+
+/** Every vertex of the mesh in world coordinates (x, y, z per vertex). */
+export function placedPositions(mesh: TriangleMesh, placement: MeshPlacement): Float32Array {
+  const transform = placementTransform(placement);
+  const out = new Float32Array(mesh.positions.length);
+  for (let i = 0; i < out.length; i += 3) {
+    const w = transform(mesh.positions[i], mesh.positions[i + 1], mesh.positions[i + 2]);
+    out[i] = w[0];
+    out[i + 1] = w[1];
+    out[i + 2] = w[2];
+  }
+  return out;
+}

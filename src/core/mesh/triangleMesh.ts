@@ -1,0 +1,48 @@
+/**
+ * A triangle mesh as the product passes it around: pure data, no three.js. Object-local
+ * coordinates in metres, y up (docs/scene-format.md, "Units and frames"). Every triangle names
+ * its material; a material carries the diffuse reflectance the baker uses (linear RGB, each
+ * component in [0, 1)). Library furniture (src/core/catalog), imported OBJ/glTF files
+ * (src/engines/meshImport) and the baker (src/engines/bake/objects) all speak this type.
+ */
+import type { Rgb } from '../model/lightingScene';
+
+export interface MeshMaterial {
+  /** Name from the file (MTL `newmtl`, glTF material name) or the library item's part ("top", "legs"). */
+  readonly name: string;
+  /** Diffuse reflectance ρ, linear RGB, each in [0, 1). */
+  readonly reflectance: Rgb;
+}
+
+export interface TriangleMesh {
+  /** x, y, z per vertex, metres, object-local, y up. */
+  readonly positions: Float32Array;
+  /** Three vertex indices per triangle, counterclockwise seen from the lit (front) side. */
+  readonly indices: Uint32Array;
+  /** Index into `materials` per triangle. */
+  readonly materialOfTriangle: Uint16Array;
+  readonly materials: readonly MeshMaterial[];
+}
+
+export function triangleCount(mesh: TriangleMesh): number {
+  return mesh.indices.length / 3;
+}
+
+export interface Bounds3 {
+  readonly min: [number, number, number];
+  readonly max: [number, number, number];
+}
+
+/** Axis-aligned bounds of a position array (x, y, z per vertex); empty input gives min = +∞, max = −∞. */
+export function positionBounds(positions: ArrayLike<number>): Bounds3 {
+  const min: [number, number, number] = [Infinity, Infinity, Infinity];
+  const max: [number, number, number] = [-Infinity, -Infinity, -Infinity];
+  for (let i = 0; i < positions.length; i += 3) {
+    for (let a = 0; a < 3; a++) {
+      const v = positions[i + a];
+      if (v < min[a]) min[a] = v;
+      if (v > max[a]) max[a] = v;
+    }
+  }
+  return { min, max };
+}
