@@ -1,6 +1,7 @@
 import type { Rgb, SurfaceName } from '../../core/model/lightingScene';
 import { SURFACE_NAMES } from '../../core/model/lightingScene';
 import type { SurfaceLayout } from './surfaceLayout';
+import type { ObjectAtlas } from './objects/preparedObjects';
 
 /**
  * Photometric value (lux) of an RGB light-map texel: the luminance weights of
@@ -17,7 +18,16 @@ export interface SurfaceMaps {
   total: Float32Array;
 }
 
-export type BakedMaps = Record<SurfaceName, SurfaceMaps>;
+/** The objects' light maps: one atlas for all objects (docs/baker.md, "Objects"), RGB lux per atlas texel; empty texels hold their dilated neighbours. */
+export interface ObjectMaps {
+  atlas: ObjectAtlas;
+  direct: Float32Array;
+  indirect: Float32Array;
+  total: Float32Array;
+}
+
+/** One map set per room surface, and `objects` when the scene has objects. */
+export type BakedMaps = Record<SurfaceName, SurfaceMaps> & { objects?: ObjectMaps };
 
 /** Lux (Y) per texel of an RGB map. */
 export function luxOf(rgb: Float32Array): Float32Array {
