@@ -134,7 +134,7 @@ export function startBakeJob(
       return timed('readback', () =>
         Object.fromEntries(
           surfaces.map((st) => [st.layout.name, { layout: st.layout, direct: read(st.direct), indirect: read(st.indirect), total: read(st.total) }]),
-        ) as BakedMaps,
+        ) as unknown as BakedMaps,
       );
     },
     report() {
