@@ -6,7 +6,8 @@
  */
 import type { Distribution } from './catalogSchema';
 import type { DmxPatch } from './dmxPatch';
-import type { Reflectance, SurfaceName } from './lightingScene';
+import type { Reflectance, Rgb, SurfaceName } from './lightingScene';
+import type { TriangleMesh } from '../mesh/triangleMesh';
 
 export type { Distribution };
 
@@ -68,10 +69,71 @@ export interface LightSystem {
   readonly joints: readonly Joint[];
 }
 
+/** The four walls (docs/scene-format.md: north z = 0, south z = D, west x = 0, east x = W). */
+export const WALL_NAMES = ['north', 'south', 'west', 'east'] as const;
+export type WallName = (typeof WALL_NAMES)[number];
+
+/** Where an object's mesh comes from: the furniture library (src/core/catalog/furniture) or a mesh the user imported. */
+export type ObjectSource =
+  | { readonly kind: 'library'; /** Furniture library item id ('dining-table'). */ readonly item: string }
+  | { readonly kind: 'imported'; /** Key in Configuration.importedMeshes ('i7'). */ readonly mesh: string };
+
+/**
+ * Where an object stands. Floor: the mesh origin on the floor at (x, z), turned by the object's
+ * yaw. Wall: the mesh's back (local z = 0, front toward local +z) flush on the wall, facing into
+ * the room; u along the wall in the wall map coordinates of docs/scene-format.md (north/south:
+ * u = x, west/east: u = z) and y the height of the mesh origin above the floor (library wall
+ * items have their origin at the back's centre).
+ */
+export type ObjectPlacement =
+  | { readonly on: 'floor'; readonly x: number; readonly z: number }
+  | { readonly on: 'wall'; readonly wall: WallName; readonly u: number; readonly y: number };
+
+/** A material's finish: a surface-finish id (src/core/catalog/surface-finishes.json) or linear RGB, each channel in [0, 0.95]. */
+export type ObjectFinish = string | Rgb;
+
+/** A piece of furniture or an imported model placed in the room (docs/model.md, "Objects"). */
+export interface RoomObject {
+  /** 'o12', from nextId. */
+  readonly id: string;
+  readonly source: ObjectSource;
+  readonly placement: ObjectPlacement;
+  /** Degrees in [0, 360), counterclockwise seen from above; floor objects only (wall objects: 0). */
+  readonly yaw: number;
+  /** Uniform scale; 1 = the library item's real dimensions (or the imported mesh's metres). Limits: OBJECT_SCALE_LIMITS. */
+  readonly scale: number;
+  /** Material name → finish; a material not listed keeps its default (library) or file colour (import). */
+  readonly finishes: Readonly<Record<string, ObjectFinish>>;
+}
+
+/** The length unit an imported file was read in (the mesh itself is always stored in metres). */
+export const MESH_UNITS = ['m', 'cm', 'mm', 'in'] as const;
+export type MeshUnits = (typeof MESH_UNITS)[number];
+
+/** A mesh the user imported (OBJ/glTF, src/engines/meshImport), shared by every object made from it. */
+export interface ImportedMesh {
+  /** File name shown to the user ('kitchen.obj'). */
+  readonly name: string;
+  /** Object-local metres, y up, origin on the floor (docs/furniture.md, "Imported models"). */
+  readonly mesh: TriangleMesh;
+  /** Unit the file was read in. */
+  readonly units: MeshUnits;
+}
+
+/** Uniform scale limits: library items keep plausible real sizes; imports may need more correction. */
+export const OBJECT_SCALE_LIMITS = {
+  library: { min: 0.5, max: 2 },
+  imported: { min: 0.25, max: 4 },
+} as const;
+
 export interface Configuration {
   readonly room: Room;
   readonly systems: readonly LightSystem[];
-  /** Next number for generated ids ('s7', 'r8', 'm9'); keeps ids unique and deterministic. */
+  /** Furniture and imported models in the room (scene file version 3). */
+  readonly objects: readonly RoomObject[];
+  /** Imported meshes by id ('i7'); each is used by at least one object. */
+  readonly importedMeshes: Readonly<Record<string, ImportedMesh>>;
+  /** Next number for generated ids ('s7', 'r8', 'm9', 'o10', 'i11'); keeps ids unique and deterministic. */
   readonly nextId: number;
 }
 
@@ -103,5 +165,5 @@ export const DEFAULT_ROOM: Room = { width: 5, depth: 4, height: 2.8, reflectance
 
 /** An empty configuration for a room (dimensions are checked by validate(), not here). */
 export function createConfiguration(room: Partial<Room> = {}): Configuration {
-  return { room: { ...DEFAULT_ROOM, ...room, reflectance: { ...DEFAULT_REFLECTANCE, ...room.reflectance } }, systems: [], nextId: 1 };
+  return { room: { ...DEFAULT_ROOM, ...room, reflectance: { ...DEFAULT_REFLECTANCE, ...room.reflectance } }, systems: [], objects: [], importedMeshes: {}, nextId: 1 };
 }

@@ -139,7 +139,9 @@ export function migrateSceneFile(doc: Record<string, unknown>): Record<string, u
 }
 
 export function toSceneFile(config: Configuration, catalog: Catalog): SceneFile {
-  return { format: SCENE_FILE_FORMAT, version: SCENE_FILE_VERSION, catalog: catalog.id, configuration: config as SceneFile['configuration'] };
+  if (config.objects.length > 0) throw new SceneFileError('objects cannot be saved by this scene file version yet');
+  const { room, systems, nextId } = config;
+  return { format: SCENE_FILE_FORMAT, version: SCENE_FILE_VERSION, catalog: catalog.id, configuration: { room, systems, nextId } as unknown as SceneFile['configuration'] };
 }
 
 /** Pretty JSON for saving to disk or the host page; `space` 0 for compact JSON (share links). */
@@ -189,7 +191,7 @@ export function configurationFromData(data: unknown, catalog: Catalog, source = 
 function normaliseRoom(data: SceneFile['configuration']): Configuration {
   const given: Partial<Record<SurfaceName, Reflectance>> = data.room.reflectance ?? {};
   const reflectance = Object.fromEntries(SURFACE_NAMES.map((s) => [s, capReflectance(given[s] ?? DEFAULT_REFLECTANCE[s])])) as Record<SurfaceName, Reflectance>;
-  return { ...data, room: { ...data.room, reflectance } } as Configuration;
+  return { ...data, room: { ...data.room, reflectance }, objects: [], importedMeshes: {} } as Configuration;
 }
 
 /**

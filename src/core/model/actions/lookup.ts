@@ -73,6 +73,6 @@ export function updateModule(config: Configuration, moduleId: string, patch: Par
 }
 
 /** A fresh id with the given one-letter prefix and the configuration with its counter advanced. */
-export function takeId(config: Configuration, prefix: 's' | 'r' | 'm'): [string, Configuration] {
+export function takeId(config: Configuration, prefix: 's' | 'r' | 'm' | 'o' | 'i'): [string, Configuration] {
   return [`${prefix}${config.nextId}`, { ...config, nextId: config.nextId + 1 }];
 }
