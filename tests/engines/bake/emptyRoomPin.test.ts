@@ -1,0 +1,109 @@
+/**
+ * Objects are additive (issue #10): a scene without objects (`objects` absent or empty) must bake
+ * with exactly the shaders and passes of the baker before objects existed. Pinned here: the
+ * SHA-256 of every shader source the bake compiles (captured at gl.shaderSource, so nothing the
+ * bake compiles escapes) and per-surface checksums of its maps, all recorded from the code
+ * before the objects work (commit 3d3c8bd). Same shaders + same inputs ⇒ same maps; the map
+ * checksums (Σ of each map, and its largest texel) are compared to 1e-6 relative so the pin holds
+ * on any GL back end, not only this machine's llvmpipe.
+ */
+import { createHash } from 'node:crypto';
+import { writeFileSync } from 'node:fs';
+import { describe, expect, it } from 'vitest';
+import { SURFACE_NAMES } from '../../../src/core/model/lightingScene';
+import type { BakeScene } from '../../../src/engines/bake/bakeScene';
+import { createBaker } from '../../../src/engines/bake/createBaker';
+import { basePhotometry, isotropic, spot } from './bakeTestKit';
+import { withHeadlessGL } from './withHeadlessGL';
+
+const gl = withHeadlessGL();
+const compiled: string[] = [];
+const shaderSource = gl.shaderSource.bind(gl);
+gl.shaderSource = (shader: WebGLShader, source: string) => {
+  compiled.push(source);
+  shaderSource(shader, source);
+};
+const baker = createBaker(gl);
+
+const room: BakeScene['room'] = {
+  width: 3,
+  height: 2.4,
+  depth: 2.2,
+  reflectance: { floor: 0.3, ceiling: 0.85, north: [0.7, 0.5, 0.3], south: 0.6, west: 0.5, east: 0 },
+};
+const pendant = { ...spot(2000, 20, 10, 1), luminousOpening: { width: 0.2, length: 0.2, height: 0.1, shape: 'rectangular' as const } };
+const luminaires: BakeScene['luminaires'] = [
+  { photometry: pendant, position: [1.2, 2.0, 1.0], yaw: 15, pitch: 10, roll: 0 },
+  { photometry: isotropic(150), position: [2.5, 1.0, 0.3], yaw: 0, pitch: 0, roll: 0, colour: [1, 0.8, 0.6] },
+  { photometry: basePhotometry({ verticalAngles: [0, 90, 180], candela: [[0, 0, 300]] }), position: [0.5, 2.3, 1.8], yaw: 0, pitch: 0, roll: 0 },
+];
+const settings = { texelSize: 0.2, samples: 32, bounces: 2, samplesPerDraw: 16 };
+
+const sha = (s: string) => createHash('sha256').update(s).digest('hex').slice(0, 16);
+
+/** Recorded at 3d3c8bd (before objects): sorted SHA-256 prefixes of the compiled shader sources. */
+const SHADERS = [
+  '0f60c96f28184550',
+  '10faa1c236045f3c',
+  '2a54593de58f3546',
+  '2ec6a6d30aa4a1d6',
+  '5541ac5901f6fe22',
+  '55d1f4d319b557d2',
+  '6bdeafb5d0119a64',
+  '8c03f15d71800bd9',
+  '99d4fc4d46d1af2c',
+  '9d936dc33d591134',
+  '9de21ee0f4e0551d',
+  'a1468a7c5d07ca4e',
+  'a22e5be0a7dd81f4',
+  'aa386da2ab6976d6',
+  'b1e956c5c41a7e88',
+  'bc69a012ad0540ae',
+  'd03df27f82595ab5',
+  'd277f253067d15e7',
+  'e72c23bc62561205',
+  'efe5f9b5bd2b432e',
+  'f15cdd941093e784',
+];
+/** Recorded at 3d3c8bd: per surface, [Σ direct, Σ indirect, Σ total, max total] over all RGB floats. */
+const MAPS: Record<string, number[]> = {
+  floor: [99482.25941991806, 40813.55478286743, 140295.81435394287, 657.93408203125],
+  ceiling: [65028.73111152649, 34688.63821411133, 99717.36968612671, 6164.45654296875],
+  north: [60822.90196824074, 41337.99514389038, 102160.89686203003, 1387.54248046875],
+  south: [13474.193020820618, 50246.96389579773, 63721.157009124756, 422.5710144042969],
+  west: [7570.233550071716, 39573.86154937744, 47144.09498977661, 312.6465148925781],
+  east: [35711.22684144974, 35399.907749176025, 71111.13452529907, 725.1297607421875],
+};
+
+function checksums(scene: BakeScene) {
+  const { maps } = baker.bake(scene, settings);
+  return Object.fromEntries(
+    SURFACE_NAMES.map((n) => {
+      const m = maps[n];
+      const sum = (a: Float32Array) => a.reduce((s, x) => s + x, 0);
+      return [n, [sum(m.direct), sum(m.indirect), sum(m.total), Math.max(...m.total)]];
+    }),
+  );
+}
+
+describe('a scene without objects bakes exactly as before objects existed', () => {
+  it('objects absent: the same shader sources and the same maps', () => {
+    const got = checksums({ room, luminaires });
+    const shaders = [...new Set(compiled.map(sha))].sort();
+    if (process.env.PIN_RECORD) writeFileSync(process.env.PIN_RECORD, JSON.stringify({ shaders, got }));
+    expect(shaders).toEqual(SHADERS);
+    for (const n of SURFACE_NAMES) {
+      got[n].forEach((v, k) => expect(Math.abs(v - MAPS[n][k])).toBeLessThanOrEqual(1e-6 * Math.abs(MAPS[n][k]) + 1e-9));
+    }
+  });
+
+  it('objects: [] compiles nothing new and gives the same maps', () => {
+    const before = compiled.length;
+    const got = checksums({ room, luminaires, objects: [] });
+    // The program cache is keyed by source: an identical set of shaders compiles nothing.
+    expect(compiled.length).toBe(before);
+    for (const n of SURFACE_NAMES) {
+      got[n].forEach((v, k) => expect(Math.abs(v - MAPS[n][k])).toBeLessThanOrEqual(1e-6 * Math.abs(MAPS[n][k]) + 1e-9));
+    }
+  });
+});
