@@ -5,8 +5,10 @@
  * object placement into world coordinates: the baker, the reference, the plan's outlines and
  * the 3D view all call it.
  */
-import type { Vec3 } from '../model/lightingScene';
 import type { TriangleMesh } from './triangleMesh';
+
+/** x, y, z in metres; the same tuple as core/model's Vec3 (not imported: core/model imports core/mesh, and folders may not import each other, docs/architecture.md). */
+type Vec3 = [number, number, number];
 
 export interface MeshPlacement {
   /** World position of the mesh's origin, metres. */

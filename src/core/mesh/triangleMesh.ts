@@ -5,7 +5,9 @@
  * component in [0, 1)). Library furniture (src/core/catalog), imported OBJ/glTF files
  * (src/engines/meshImport) and the baker (src/engines/bake/objects) all speak this type.
  */
-import type { Rgb } from '../model/lightingScene';
+
+/** Linear RGB; the same tuple as core/model's Rgb (not imported: core/model imports core/mesh, and folders may not import each other, docs/architecture.md). */
+type Rgb = [number, number, number];
 
 export interface MeshMaterial {
   /** Name from the file (MTL `newmtl`, glTF material name) or the library item's part ("top", "legs"). */
