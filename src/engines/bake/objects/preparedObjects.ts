@@ -40,10 +40,23 @@ export interface ObjectBvhTextures {
   trianglesHeight: number;
 }
 
+/** One planar chart of the atlas: its texels are columns × rows from (x, y), with a gutter of empty texels around them. */
+export interface ObjectChart {
+  /** Index of its object in PreparedObjects.objects. */
+  object: number;
+  x: number;
+  y: number;
+  columns: number;
+  rows: number;
+  triangleCount: number;
+}
+
 export interface PreparedObjects {
   atlas: ObjectAtlas;
   bvh: ObjectBvhTextures;
   objects: PreparedObjectInfo[];
+  /** The atlas's charts; chart c's texels carry c + 1 in ObjectAtlas.normal's a. */
+  charts: ObjectChart[];
   triangleCount: number;
   /** World bounds of all objects together. */
   bounds: Bounds3;

@@ -1,0 +1,63 @@
+/**
+ * Where each chart goes in the objects' atlas and at what texel size (docs/baker.md, "Objects:
+ * geometry"). A chart of w × h metres covers ⌈w/s⌉ × ⌈h/s⌉ texels at texel size s; its cell adds a
+ * one-texel gutter on every side, so two charts are at least two texels apart and no chart touches
+ * the atlas edge (bilinear lookups and the baker's dilation never mix two charts). When the cells do
+ * not fit in maxAtlasSize², s grows by 1.25 until they do.
+ */
+import { InputError } from '../../../core/inputError';
+import type { Chart } from './buildCharts';
+import { packCells } from './packCells';
+
+/** Empty texels around each chart's texels, per side. */
+export const CHART_GUTTER = 1;
+/** Factor by which the texel size grows while the atlas does not fit. */
+export const TEXEL_GROWTH = 1.25;
+
+export interface AtlasLayout {
+  /** Metres per texel actually used. */
+  texelSize: number;
+  width: number;
+  height: number;
+  /** Per chart: lower-left texel of its texels (inside the gutter) and its size in texels. */
+  x: Int32Array;
+  y: Int32Array;
+  columns: Int32Array;
+  rows: Int32Array;
+}
+
+/** Texels a length of `metres` spans (at least 1; a float hair over an integer does not add a texel). */
+function texelsFor(metres: number, texelSize: number): number {
+  return Math.max(1, Math.ceil(metres / texelSize - 1e-9));
+}
+
+export function layoutAtlas(charts: readonly Chart[], texelSize: number, maxAtlasSize: number): AtlasLayout {
+  if (!(Number.isFinite(texelSize) && texelSize > 0)) throw new InputError(`objects: texel size must be a positive number of metres (got ${texelSize})`);
+  if (!(Number.isInteger(maxAtlasSize) && maxAtlasSize >= 1 + 2 * CHART_GUTTER)) {
+    throw new InputError(`objects: maxAtlasSize must be an integer of at least ${1 + 2 * CHART_GUTTER} texels (got ${maxAtlasSize})`);
+  }
+  const n = charts.length;
+  const columns = new Int32Array(n);
+  const rows = new Int32Array(n);
+  const cellW = new Int32Array(n);
+  const cellH = new Int32Array(n);
+  for (let s = texelSize; ; s *= TEXEL_GROWTH) {
+    let smallest = true;
+    for (let i = 0; i < n; i++) {
+      columns[i] = texelsFor(charts[i].width, s);
+      rows[i] = texelsFor(charts[i].height, s);
+      smallest &&= columns[i] === 1 && rows[i] === 1;
+      cellW[i] = columns[i] + 2 * CHART_GUTTER;
+      cellH[i] = rows[i] + 2 * CHART_GUTTER;
+    }
+    const packed = packCells(cellW, cellH, maxAtlasSize);
+    if (packed) {
+      const x = packed.x.map((v) => v + CHART_GUTTER);
+      const y = packed.y.map((v) => v + CHART_GUTTER);
+      return { texelSize: s, width: packed.width, height: packed.height, x, y, columns: columns.slice(), rows: rows.slice() };
+    }
+    if (smallest) {
+      throw new InputError(`objects: ${n} planar charts do not fit in a ${maxAtlasSize} × ${maxAtlasSize} atlas even at one texel each; simplify the meshes or raise maxAtlasSize`);
+    }
+  }
+}

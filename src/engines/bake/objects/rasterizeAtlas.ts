@@ -1,0 +1,120 @@
+/**
+ * The objects' atlas G-buffer, computed on the CPU (docs/baker.md, "Objects: geometry"). Per texel:
+ * coverage = the exact fraction of the texel inside its chart's triangles (triangle ∩ square
+ * clipping, summed over the chart's triangles, which do not overlap); the sample point = the texel
+ * centre when it lies in a triangle of the chart, else the nearest point of the chart's triangles,
+ * so every covered texel has a point ON the surface; that triangle's front normal and reflectance.
+ * Points are mapped to world space with the triangle's own barycentric weights, so they lie on the
+ * triangle's plane even where a chart is only nearly planar.
+ */
+import type { ObjectAtlas } from './preparedObjects';
+import type { Chart } from './buildCharts';
+import type { WorldTriangles } from './collectWorldTriangles';
+import type { AtlasLayout } from './layoutAtlas';
+import { barycentric, closestOnTriangle, overlapWithTexel } from './planarTriangle';
+
+/** Coverage at or below this fraction counts as an empty texel (a float hair of a neighbouring edge). */
+const MIN_COVERAGE = 1e-9;
+
+export interface RasterizedAtlas {
+  atlas: ObjectAtlas;
+  /** Atlas uv (normalised, texel centres at (i + 0.5)/width) of each world triangle's 3 corners: 6 numbers per triangle. */
+  uvOfTriangle: Float64Array;
+  /** Chart index per world triangle. */
+  chartOfTriangle: Uint32Array;
+  /** Covered texels per object. */
+  texelCount: number[];
+}
+
+export function rasterizeAtlas(tris: WorldTriangles, charts: readonly Chart[], layout: AtlasLayout): RasterizedAtlas {
+  const { width, height, texelSize: s } = layout;
+  const position = new Float32Array(width * height * 4);
+  const normal = new Float32Array(width * height * 4);
+  const reflectance = new Float32Array(width * height * 4);
+  const uvOfTriangle = new Float64Array(tris.count * 6);
+  const chartOfTriangle = new Uint32Array(tris.count);
+  const texelCount = tris.objects.map(() => 0);
+  const P = tris.positions;
+
+  charts.forEach((chart, c) => {
+    const cols = layout.columns[c];
+    const rows = layout.rows[c];
+    const x0 = layout.x[c];
+    const y0 = layout.y[c];
+    const m = chart.triangles.length;
+    // Chart triangles in chart-local texel units.
+    const local = new Float64Array(m * 6);
+    for (let i = 0; i < m * 6; i++) local[i] = chart.uv[i] / s;
+    chart.triangles.forEach((t, i) => {
+      chartOfTriangle[t] = c;
+      for (let k = 0; k < 3; k++) {
+        uvOfTriangle[6 * t + 2 * k] = (x0 + local[6 * i + 2 * k]) / width;
+        uvOfTriangle[6 * t + 2 * k + 1] = (y0 + local[6 * i + 2 * k + 1]) / height;
+      }
+    });
+    const coverage = new Float64Array(cols * rows);
+    const owner = new Int32Array(cols * rows).fill(-1);
+    const weights = new Float64Array(cols * rows * 3);
+    const box = (i: number): [number, number, number, number] => {
+      const tri = local.subarray(6 * i, 6 * i + 6);
+      return [Math.min(tri[0], tri[2], tri[4]), Math.min(tri[1], tri[3], tri[5]), Math.max(tri[0], tri[2], tri[4]), Math.max(tri[1], tri[3], tri[5])];
+    };
+    for (let i = 0; i < m; i++) {
+      const tri = local.subarray(6 * i, 6 * i + 6);
+      const [minX, minY, maxX, maxY] = box(i);
+      const i0 = Math.max(0, Math.floor(minX)), i1 = Math.min(cols - 1, Math.ceil(maxX) - 1);
+      const j0 = Math.max(0, Math.floor(minY)), j1 = Math.min(rows - 1, Math.ceil(maxY) - 1);
+      for (let j = j0; j <= j1; j++) {
+        for (let ii = i0; ii <= i1; ii++) {
+          const a = overlapWithTexel(tri, ii, j);
+          if (a <= 0) continue;
+          const k = j * cols + ii;
+          coverage[k] += a;
+          if (owner[k] >= 0) continue;
+          const w = barycentric(tri, ii + 0.5, j + 0.5);
+          if (w[0] >= -1e-12 && w[1] >= -1e-12 && w[2] >= -1e-12) {
+            owner[k] = i;
+            weights.set(w, 3 * k);
+          }
+        }
+      }
+    }
+    for (let j = 0; j < rows; j++) {
+      for (let ii = 0; ii < cols; ii++) {
+        const k = j * cols + ii;
+        if (coverage[k] <= MIN_COVERAGE) continue;
+        if (owner[k] < 0) {
+          // Centre outside the chart: the nearest point of the chart's triangles. It lies within
+          // half a texel diagonal, so only triangles whose box reaches within one texel qualify.
+          let best = Infinity;
+          for (let i = 0; i < m; i++) {
+            const [minX, minY, maxX, maxY] = box(i);
+            if (minX > ii + 2 || maxX < ii - 1 || minY > j + 2 || maxY < j - 1) continue;
+            const hit = closestOnTriangle(local.subarray(6 * i, 6 * i + 6), ii + 0.5, j + 0.5);
+            if (hit.distanceSq < best) {
+              best = hit.distanceSq;
+              owner[k] = i;
+              weights.set(hit.weights, 3 * k);
+            }
+          }
+        }
+        const t = chart.triangles[owner[k]];
+        // Clamp the weights of a centre a float hair outside its triangle back onto it.
+        let w0 = Math.max(0, weights[3 * k]), w1 = Math.max(0, weights[3 * k + 1]), w2 = Math.max(0, weights[3 * k + 2]);
+        const sum = w0 + w1 + w2;
+        w0 /= sum; w1 /= sum; w2 /= sum;
+        const g = 4 * ((y0 + j) * width + x0 + ii);
+        for (let a = 0; a < 3; a++) {
+          position[g + a] = w0 * P[9 * t + a] + w1 * P[9 * t + 3 + a] + w2 * P[9 * t + 6 + a];
+          normal[g + a] = tris.normals[3 * t + a];
+          reflectance[g + a] = tris.reflectance[3 * t + a];
+        }
+        position[g + 3] = Math.min(1, coverage[k]);
+        normal[g + 3] = c + 1;
+        reflectance[g + 3] = chart.object + 1;
+        texelCount[chart.object]++;
+      }
+    }
+  });
+  return { atlas: { width, height, texelSize: s, position, normal, reflectance }, uvOfTriangle, chartOfTriangle, texelCount };
+}
