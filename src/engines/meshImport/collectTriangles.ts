@@ -1,0 +1,121 @@
+import { Matrix4, Vector3, type BufferAttribute, type InterleavedBufferAttribute, type Material, type Mesh, type Object3D } from 'three';
+import { InputError } from '../../core/inputError';
+import type { MeshMaterial, TriangleMesh } from '../../core/mesh/triangleMesh';
+import { checkTriangleBudget } from './triangleBudget';
+
+/** What a loader's material becomes: the name and ρ the file gives it. */
+export type MaterialOf = (material: Material | undefined) => MeshMaterial;
+
+/**
+ * Every triangle of the meshes under `root` (three.js objects as OBJLoader or GLTFLoader build
+ * them) as one TriangleMesh in the file's own units: node transforms applied (`matrixWorld`,
+ * instances of an InstancedMesh expanded), geometry groups mapped to materials, vertices at
+ * exactly the same position welded into one (loaders de-index faces; the baker's charts grow
+ * over shared edges), triangles whose corners weld together dropped. A transform with a negative
+ * determinant (a mirror) reverses the winding back to counterclockwise-from-the-front.
+ */
+export function collectTriangles(root: Object3D, file: string, materialOf: MaterialOf, warnings: string[]): TriangleMesh {
+  root.updateMatrixWorld(true);
+  const positions: number[] = [];
+  const indices: number[] = [];
+  const materialOfTriangle: number[] = [];
+  const materials: MeshMaterial[] = [];
+  const materialIndex = new Map<string, number>();
+  const weld = new Map<string, number>();
+  let collapsed = 0;
+  const v = new Vector3();
+  const corner = [0, 0, 0];
+
+  const vertexOf = (p: Vector3): number => {
+    const x = Math.fround(p.x);
+    const y = Math.fround(p.y);
+    const z = Math.fround(p.z);
+    if (!Number.isFinite(x) || !Number.isFinite(y) || !Number.isFinite(z)) {
+      throw new InputError(`${file}: a vertex has a coordinate that is not a finite number (${p.x}, ${p.y}, ${p.z})`);
+    }
+    const key = `${x},${y},${z}`;
+    let k = weld.get(key);
+    if (k === undefined) {
+      k = positions.length / 3;
+      positions.push(x, y, z);
+      weld.set(key, k);
+    }
+    return k;
+  };
+  const materialSlot = (material: Material | undefined): number => {
+    const m = materialOf(material);
+    const key = JSON.stringify([m.name, m.reflectance]);
+    let k = materialIndex.get(key);
+    if (k === undefined) {
+      if (materials.length >= 65535) throw new InputError(`${file}: more than 65 535 materials`);
+      k = materials.length;
+      materials.push(m);
+      materialIndex.set(key, k);
+    }
+    return k;
+  };
+
+  const meshes: Mesh[] = [];
+  root.traverse((o) => {
+    // Points and lines carry no surface; skinned meshes are read in their bind pose.
+    if ((o as Mesh).isMesh) meshes.push(o as Mesh);
+  });
+  let triangleTotal = 0;
+  for (const mesh of meshes) {
+    const geometry = mesh.geometry;
+    const position = geometry.getAttribute('position') as BufferAttribute | InterleavedBufferAttribute | undefined;
+    if (!position || position.itemSize < 3) continue;
+    const index = geometry.index;
+    const vertexCount = index ? index.count : position.count;
+    const instances = instanceMatrices(mesh);
+    triangleTotal += Math.floor(vertexCount / 3) * instances.length;
+    checkTriangleBudget(file, triangleTotal);
+    const groups = geometry.groups.length > 0 ? geometry.groups : [{ start: 0, count: vertexCount, materialIndex: 0 }];
+    for (const matrix of instances) {
+      const mirrored = matrix.determinant() < 0;
+      for (const group of groups) {
+        const material = Array.isArray(mesh.material) ? mesh.material[group.materialIndex ?? 0] : mesh.material;
+        const slot = materialSlot(material);
+        const end = Math.min(vertexCount, group.start + (Number.isFinite(group.count) ? group.count : vertexCount));
+        for (let t = Math.max(0, group.start); t + 3 <= end; t += 3) {
+          for (let c = 0; c < 3; c++) {
+            const idx = index ? index.getX(t + c) : t + c;
+            if (!(idx >= 0 && idx < position.count)) {
+              throw new InputError(`${file}: a triangle refers to vertex ${idx} of a mesh with ${position.count} vertices`);
+            }
+            v.fromBufferAttribute(position, idx).applyMatrix4(matrix);
+            corner[c] = vertexOf(v);
+          }
+          if (corner[0] === corner[1] || corner[1] === corner[2] || corner[0] === corner[2]) {
+            collapsed++;
+            continue;
+          }
+          if (mirrored) indices.push(corner[0], corner[2], corner[1]);
+          else indices.push(corner[0], corner[1], corner[2]);
+          materialOfTriangle.push(slot);
+        }
+      }
+    }
+  }
+  if (collapsed > 0) warnings.push(`${file}: ${collapsed} triangle${collapsed === 1 ? '' : 's'} with coinciding corners dropped`);
+  if (indices.length === 0) throw new InputError(`${file}: no triangles (luxbox needs a surface model)`);
+  return {
+    positions: new Float32Array(positions),
+    indices: new Uint32Array(indices),
+    materialOfTriangle: new Uint16Array(materialOfTriangle),
+    materials,
+  };
+}
+
+/** The world matrix of a mesh, or one per instance of an InstancedMesh (glTF EXT_mesh_gpu_instancing). */
+function instanceMatrices(mesh: Mesh): Matrix4[] {
+  const instanced = mesh as Mesh & { isInstancedMesh?: boolean; count?: number; getMatrixAt?: (i: number, m: Matrix4) => void };
+  if (!instanced.isInstancedMesh || !instanced.getMatrixAt) return [mesh.matrixWorld];
+  const out: Matrix4[] = [];
+  for (let i = 0; i < (instanced.count ?? 0); i++) {
+    const m = new Matrix4();
+    instanced.getMatrixAt(i, m);
+    out.push(new Matrix4().multiplyMatrices(mesh.matrixWorld, m));
+  }
+  return out;
+}
