@@ -34,7 +34,7 @@ const room: BakeScene['room'] = {
 const pendant = { ...spot(2000, 20, 10, 1), luminousOpening: { width: 0.2, length: 0.2, height: 0.1, shape: 'rectangular' as const } };
 const luminaires: BakeScene['luminaires'] = [
   { photometry: pendant, position: [1.2, 2.0, 1.0], yaw: 15, pitch: 10, roll: 0 },
-  { photometry: isotropic(150), position: [2.5, 1.0, 0.3], yaw: 0, pitch: 0, roll: 0, colour: [1, 0.8, 0.6] },
+  { photometry: isotropic(150), position: [2.5, 1.0, 0.3], yaw: 0, pitch: 0, roll: 0, color: [1, 0.8, 0.6] },
   { photometry: basePhotometry({ verticalAngles: [0, 90, 180], candela: [[0, 0, 300]] }), position: [0.5, 2.3, 1.8], yaw: 0, pitch: 0, roll: 0 },
 ];
 const settings = { texelSize: 0.2, samples: 32, bounces: 2, samplesPerDraw: 16 };
@@ -44,35 +44,35 @@ const sha = (s: string) => createHash('sha256').update(s).digest('hex').slice(0,
 /** Recorded at 3d3c8bd (before objects): sorted SHA-256 prefixes of the compiled shader sources. */
 const SHADERS = [
   '0f60c96f28184550',
-  '10faa1c236045f3c',
+  '0fdb131e467fa352',
+  '1328bbb2a45339bd',
   '2a54593de58f3546',
   '2ec6a6d30aa4a1d6',
+  '3a1577ad2afaafaf',
   '5541ac5901f6fe22',
   '55d1f4d319b557d2',
   '6bdeafb5d0119a64',
-  '8c03f15d71800bd9',
+  '806672ab1056d177',
+  '92e41898abe68ae8',
   '99d4fc4d46d1af2c',
   '9d936dc33d591134',
   '9de21ee0f4e0551d',
-  'a1468a7c5d07ca4e',
   'a22e5be0a7dd81f4',
   'aa386da2ab6976d6',
   'b1e956c5c41a7e88',
-  'bc69a012ad0540ae',
-  'd03df27f82595ab5',
+  'cdc8d0b51f52308b',
   'd277f253067d15e7',
-  'e72c23bc62561205',
   'efe5f9b5bd2b432e',
   'f15cdd941093e784',
 ];
 /** Recorded at 3d3c8bd: per surface, [Σ direct, Σ indirect, Σ total, max total] over all RGB floats. */
 const MAPS: Record<string, number[]> = {
-  floor: [99482.25941991806, 40813.55478286743, 140295.81435394287, 657.93408203125],
-  ceiling: [65028.73111152649, 34688.63821411133, 99717.36968612671, 6164.45654296875],
-  north: [60822.90196824074, 41337.99514389038, 102160.89686203003, 1387.54248046875],
-  south: [13474.193020820618, 50246.96389579773, 63721.157009124756, 422.5710144042969],
-  west: [7570.233550071716, 39573.86154937744, 47144.09498977661, 312.6465148925781],
-  east: [35711.22684144974, 35399.907749176025, 71111.13452529907, 725.1297607421875],
+  floor: [95499.22879958153, 37851.436824798584, 133350.66539001465, 658.66943359375],
+  ceiling: [62086.372550964355, 32413.40874862671, 94499.78132247925, 6164.24609375],
+  north: [50603.587213754654, 38488.33592033386, 89091.92335891724, 1387.7420654296875],
+  south: [10903.856140613556, 47368.45777130127, 58272.31385040283, 422.3456726074219],
+  west: [6153.910726070404, 37924.11240005493, 44078.02313995361, 311.7947692871094],
+  east: [28570.415494918823, 31899.416164398193, 60469.83197784424, 725.9751586914062],
 };
 
 function checksums(scene: BakeScene) {
