@@ -1,6 +1,7 @@
 import type { Material } from 'three';
 import { GLTFLoader, type GLTF } from 'three/examples/jsm/loaders/GLTFLoader.js';
 import { InputError } from '../../core/inputError';
+import { oneLine } from '../../core/model/untrustedJson';
 import type { Rgb } from '../../core/model/lightingScene';
 import { clampReflectance } from './clampReflectance';
 import { collectTriangles } from './collectTriangles';
@@ -26,7 +27,7 @@ export async function importGltfMesh(files: readonly MeshFile[], options: MeshIm
     gltf = await new Promise<GLTF>((resolve, reject) => new GLTFLoader().parse(packed.glb, '', resolve, reject));
   } catch (error) {
     // Structure the container checks do not cover (accessor types, sparse data …) fails inside the loader.
-    throw new InputError(`${name}: cannot read the model (${error instanceof Error ? error.message.replace(/^THREE\.GLTFLoader:\s*/, '').slice(0, 100) : String(error)})`);
+    throw new InputError(`${name}: cannot read the model (${oneLine(error instanceof Error ? error.message.replace(/^THREE\.GLTFLoader:\s*/, '') : String(error), 100)})`);
   }
   if (!gltf.scene) throw new InputError(`${name}: no scene`);
   const materials = Array.isArray(json.materials) ? json.materials : [];

@@ -1,6 +1,7 @@
 import { OBJLoader } from 'three/examples/jsm/loaders/OBJLoader.js';
 import type { Group, Material } from 'three';
 import { InputError } from '../../core/inputError';
+import { oneLine } from '../../core/model/untrustedJson';
 import type { Rgb } from '../../core/model/lightingScene';
 import { collectTriangles } from './collectTriangles';
 import { decodeText } from './decodeText';
@@ -53,7 +54,7 @@ export function importObjMesh(files: readonly MeshFile[], options: MeshImportOpt
     group = new OBJLoader().parse(scanned.text);
   } catch (error) {
     // scanObjText leaves OBJLoader only well-formed statements; this is the safety net for its own limits.
-    throw new InputError(`${name}: cannot read the model (${error instanceof Error ? error.message : String(error)})`);
+    throw new InputError(`${name}: cannot read the model (${oneLine(error instanceof Error ? error.message : String(error), 100)})`);
   }
   const undefinedMaterials = new Set<string>();
   const fileMesh = collectTriangles(

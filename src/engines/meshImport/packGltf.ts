@@ -1,4 +1,5 @@
 import { InputError } from '../../core/inputError';
+import { excerpt, jsonShapeProblem, oneLine } from '../../core/model/untrustedJson';
 import { decodeText } from './decodeText';
 import { findFile } from './findFile';
 import type { MeshFile, MeshImportOptions } from './importedMesh';
@@ -14,6 +15,8 @@ const CHUNK_BIN = 0x004e4942;
 const DROPPED_EXTENSIONS = /^(KHR_materials_|KHR_texture_|EXT_texture_|MSFT_texture_)/;
 /** Extensions three's GLTFLoader reads without extra decoders. */
 const READABLE_EXTENSIONS = new Set(['KHR_mesh_quantization', 'EXT_mesh_gpu_instancing', 'KHR_lights_punctual']);
+/** glTF JSON nests about 6 levels deep; arrays (nodes, accessors) may be long. */
+const GLTF_JSON_LIMITS = { maxDepth: 64, maxArrayLength: 1_000_000 } as const;
 /** Largest accessor (elements): bounds what a hostile count can make the loader allocate. */
 const MAX_ACCESSOR_COUNT = 1 << 24;
 
@@ -45,7 +48,8 @@ export async function packGltf(files: readonly MeshFile[], options: MeshImportOp
   if (!main) throw new InputError(`no .gltf or .glb file among ${files.map((f) => f.name).join(', ') || 'the files given'}`);
   const name = main.name;
   const fail: (problem: string) => never = (problem) => {
-    throw new InputError(`${name}: ${problem}`);
+    // One line of bounded length, whatever the file put into the values quoted.
+    throw new InputError(oneLine(`${name}: ${problem}`));
   };
   const isGlb = main.bytes.length >= 4 && readU32(main.bytes, 0) === GLB_MAGIC;
   if (/\.glb$/i.test(name) && !isGlb) fail(`not a GLB file (the first 4 bytes are not "glTF")`);
@@ -54,13 +58,16 @@ export async function packGltf(files: readonly MeshFile[], options: MeshImportOp
   try {
     parsed = JSON.parse(text);
   } catch (error) {
-    fail(`invalid JSON (${error instanceof Error ? error.message.slice(0, 80) : 'syntax error'})`);
+    fail(`invalid JSON (${error instanceof Error ? oneLine(error.message, 80) : 'syntax error'})`);
   }
   if (typeof parsed !== 'object' || parsed === null || Array.isArray(parsed)) fail('the glTF JSON is not an object');
+  // Nothing below (nor GLTFLoader) may recurse into a hostile nesting depth.
+  const shape = jsonShapeProblem(parsed, GLTF_JSON_LIMITS);
+  if (shape) fail(shape);
   const json = parsed as GltfJson;
   const asset = json.asset as Json | undefined;
   const version = typeof asset === 'object' && asset !== null ? asset.version : undefined;
-  if (typeof version !== 'string' || !version.startsWith('2.')) fail(`asset.version ${JSON.stringify(version ?? null)} (luxbox reads glTF 2.0)`);
+  if (typeof version !== 'string' || !version.startsWith('2.')) fail(`asset.version ${excerpt(version ?? null)} (luxbox reads glTF 2.0)`);
 
   const required = list(json, 'extensionsRequired', fail).map(String);
   for (const ext of required) {
@@ -187,7 +194,7 @@ async function packBuffers(
         try {
           bytes = await options.readFile(uri);
         } catch (error) {
-          fail(`buffers[${i}]: cannot read ${shortName(uri)} (${error instanceof Error ? error.message.slice(0, 60) : 'read error'})`);
+          fail(`buffers[${i}]: cannot read ${shortName(uri)} (${error instanceof Error ? oneLine(error.message, 60) : 'read error'})`);
         }
       }
       if (!bytes) fail(`buffers[${i}]: ${shortName(uri)} is missing (pick it together with ${name})`);
@@ -209,7 +216,7 @@ async function packBuffers(
   views.forEach((_, k) => {
     const v = objectAt(views, k, 'bufferViews', fail);
     const b = v.buffer;
-    if (typeof b !== 'number' || !Number.isInteger(b) || b < 0 || b >= parts.length) fail(`bufferViews[${k}].buffer ${JSON.stringify(b ?? null)} is not a buffer of this file`);
+    if (typeof b !== 'number' || !Number.isInteger(b) || b < 0 || b >= parts.length) fail(`bufferViews[${k}].buffer ${excerpt(b ?? null)} is not a buffer of this file`);
     const offset = v.byteOffset ?? 0;
     const length = v.byteLength;
     if (typeof offset !== 'number' || !Number.isInteger(offset) || offset < 0) fail(`bufferViews[${k}].byteOffset must be a whole number`);
@@ -240,7 +247,7 @@ function checkAccessors(json: GltfJson, fail: (p: string) => never): void {
     const a = objectAt(accessors, i, 'accessors', fail);
     const count = a.count;
     if (typeof count !== 'number' || !Number.isInteger(count) || count < 0 || count > MAX_ACCESSOR_COUNT) {
-      fail(`accessors[${i}].count ${JSON.stringify(count ?? null)} is not a whole number up to ${formatCount(MAX_ACCESSOR_COUNT)}`);
+      fail(`accessors[${i}].count ${excerpt(count ?? null)} is not a whole number up to ${formatCount(MAX_ACCESSOR_COUNT)}`);
     }
   });
 }
@@ -254,16 +261,16 @@ function sceneTriangles(json: GltfJson, fail: (p: string) => never): number {
   const scenes = list(json, 'scenes', fail);
   if (scenes.length === 0) fail('no scene');
   const sceneIndex = json.scene ?? 0;
-  if (typeof sceneIndex !== 'number' || !Number.isInteger(sceneIndex) || sceneIndex < 0 || sceneIndex >= scenes.length) fail(`scene ${JSON.stringify(sceneIndex)} is not one of the file's scenes`);
+  if (typeof sceneIndex !== 'number' || !Number.isInteger(sceneIndex) || sceneIndex < 0 || sceneIndex >= scenes.length) fail(`scene ${excerpt(sceneIndex)} is not one of the file's scenes`);
   const nodes = list(json, 'nodes', fail);
   const meshes = list(json, 'meshes', fail);
   const accessors = list(json, 'accessors', fail);
   const countOf = (k: unknown): number => {
-    if (typeof k !== 'number' || !Number.isInteger(k) || k < 0 || k >= accessors.length) fail(`a primitive refers to accessor ${JSON.stringify(k ?? null)}, which does not exist`);
+    if (typeof k !== 'number' || !Number.isInteger(k) || k < 0 || k >= accessors.length) fail(`a primitive refers to accessor ${excerpt(k ?? null)}, which does not exist`);
     return (accessors[k as number] as Json).count as number;
   };
   const meshTriangles = (m: unknown): number => {
-    if (typeof m !== 'number' || !Number.isInteger(m) || m < 0 || m >= meshes.length) fail(`a node refers to mesh ${JSON.stringify(m)}, which does not exist`);
+    if (typeof m !== 'number' || !Number.isInteger(m) || m < 0 || m >= meshes.length) fail(`a node refers to mesh ${excerpt(m)}, which does not exist`);
     const mesh = objectAt(meshes, m as number, 'meshes', fail);
     let n = 0;
     for (const [pi, primitive] of list(mesh, 'primitives', fail, `meshes[${m}].primitives`).entries()) {
@@ -280,10 +287,10 @@ function sceneTriangles(json: GltfJson, fail: (p: string) => never): number {
   };
   const seen = new Set<number>();
   let triangles = 0;
-  const stack = [...list(scenes[sceneIndex as number] as Json, 'nodes', fail, `scenes[${sceneIndex}].nodes`)];
+  const stack = list(objectAt(scenes, sceneIndex as number, 'scenes', fail), 'nodes', fail, `scenes[${sceneIndex}].nodes`).slice();
   while (stack.length > 0) {
     const k = stack.pop();
-    if (typeof k !== 'number' || !Number.isInteger(k) || k < 0 || k >= nodes.length) fail(`the scene refers to node ${JSON.stringify(k ?? null)}, which does not exist`);
+    if (typeof k !== 'number' || !Number.isInteger(k) || k < 0 || k >= nodes.length) fail(`the scene refers to node ${excerpt(k ?? null)}, which does not exist`);
     if (seen.has(k as number)) fail(`nodes[${k}] appears twice in the node hierarchy (it must be a tree)`);
     seen.add(k as number);
     const node = objectAt(nodes, k as number, 'nodes', fail);
@@ -291,7 +298,7 @@ function sceneTriangles(json: GltfJson, fail: (p: string) => never): number {
     const instanceAccessor = (instancing?.attributes as Json | undefined)?.TRANSLATION ?? (instancing?.attributes as Json | undefined)?.ROTATION ?? (instancing?.attributes as Json | undefined)?.SCALE;
     const copies = instanceAccessor !== undefined ? countOf(instanceAccessor) : 1;
     if (node.mesh !== undefined) triangles += meshTriangles(node.mesh) * copies;
-    stack.push(...list(node, 'children', fail, `nodes[${k}].children`));
+    for (const child of list(node, 'children', fail, `nodes[${k}].children`)) stack.push(child);
   }
   return triangles;
 }
