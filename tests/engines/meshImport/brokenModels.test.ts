@@ -151,7 +151,7 @@ describe('importMesh: seeded fuzz of the fixtures (only InputError or a valid me
         try {
           result = await importMesh(files);
         } catch (error) {
-          if (!(error instanceof InputError)) throw new Error(`mutant ${n} of ${seed[0].name}: ${String(error)}`);
+          if (!(error instanceof InputError)) throw new Error(`mutant ${n} of ${seed[0].name}: ${String(error)}`, { cause: error });
           expect(error.message).not.toMatch(/\n/);
           expect(error.message.length).toBeLessThanOrEqual(300);
           outcomes.refused++;
