@@ -26,9 +26,12 @@ export interface AtlasLayout {
   rows: Int32Array;
 }
 
-/** Texels a length of `metres` spans (at least 1; a float hair over an integer does not add a texel). */
+/**
+ * Texels a length of `metres` spans (at least 1). Up to 1e-4 texel over an integer does not add a
+ * texel: float32 vertices make a 0.6 m face 0.6000001 m long. That hair is clipped from coverage.
+ */
 function texelsFor(metres: number, texelSize: number): number {
-  return Math.max(1, Math.ceil(metres / texelSize - 1e-9));
+  return Math.max(1, Math.ceil(metres / texelSize - 1e-4));
 }
 
 export function layoutAtlas(charts: readonly Chart[], texelSize: number, maxAtlasSize: number): AtlasLayout {
