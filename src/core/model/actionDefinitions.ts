@@ -14,6 +14,7 @@ import { deleteSystem, moveSystem, placePreset, rotateSystem, setSuspension } fr
 import { addRail, removeRail, setDistribution, setRailLength } from './actions/railActions';
 import { addModule, removeModule, setModuleBeam, setModuleCct, setModuleDimming, setModuleType } from './actions/moduleActions';
 import { autoPatch, clearPatch, setModulePatch } from './actions/patchActions';
+import { addObject, moveObject, refinishObject, removeObject, resizeObject, rotateObject } from './actions/objectActions';
 
 export const actionDefinitions = {
   setRoom,
@@ -36,6 +37,12 @@ export const actionDefinitions = {
   setModulePatch,
   autoPatch,
   clearPatch,
+  addObject,
+  moveObject,
+  rotateObject,
+  resizeObject,
+  refinishObject,
+  removeObject,
 } as const;
 
 export type ActionName = keyof typeof actionDefinitions;
@@ -83,6 +90,19 @@ const MEMO_SIZE = 512;
  */
 let memo: { catalog: Catalog; state: Configuration; outcomes: Map<string, Outcome> } | undefined;
 
+/**
+ * JSON replacer for the memo key: an imported mesh's typed arrays (addObject) are keyed by
+ * identity, not spelt out (a 100 000-vertex mesh would make a megabyte key per question).
+ */
+const bufferIds = new WeakMap<object, number>();
+let nextBufferId = 0;
+function paramsKey(_key: string, value: unknown): unknown {
+  if (!ArrayBuffer.isView(value)) return value;
+  let id = bufferIds.get(value);
+  if (id === undefined) bufferIds.set(value, (id = nextBufferId++));
+  return `#buffer${id}`;
+}
+
 /** What an action by name does to a state: the next state when enabled, else the refusal (bad names or params included). Never throws for bad input. */
 export function attemptAction(state: Configuration, name: string, params: unknown, catalog: Catalog): Outcome {
   let action: UserAction;
@@ -93,7 +113,7 @@ export function attemptAction(state: Configuration, name: string, params: unknow
     throw e;
   }
   if (memo?.state !== state || memo.catalog !== catalog) memo = { catalog, state, outcomes: new Map() };
-  const key = `${name} ${JSON.stringify(action.params)}`;
+  const key = `${name} ${JSON.stringify(action.params, paramsKey)}`;
   const known = memo.outcomes.get(key);
   if (known) return known;
   const outcome = action.attempt(state);

@@ -8,6 +8,7 @@ import { onGrid, type Catalog } from './catalogSchema';
 import { ROOM_LIMITS, withinRoomLimits, type Configuration, type LightSystem } from './configuration';
 import { SURFACE_NAMES } from './lightingScene';
 import { firstPatchOverlap, formatPatchRange, patchRangeProblem } from './dmxPatch';
+import { allObjectProblems } from './objectProblems';
 import { reflectanceProblem } from './reflectance';
 import { rectCorners, rectsOverlap, systemElements, railModuleOffsets, type PlanRect } from './geometry';
 
@@ -97,6 +98,9 @@ export function validate(config: Configuration, catalog: Catalog, options: Valid
     if (selfCrossing.has(i)) problems.push({ code: 'self-overlap', path: at, message: `system ${s.id} runs into itself` });
     [...clashes[i]].sort((a, b) => a - b).forEach((j) => problems.push({ code: 'system-overlap', path: at, message: `system ${s.id} overlaps system ${config.systems[j].id}` }));
   });
+  if (first && problems.length > 0) return problems;
+  // Objects last: they never clash with systems or each other (overlapping furniture is the user's business).
+  problems.push(...allObjectProblems(config, first));
   return problems;
 }
 
@@ -212,6 +216,8 @@ export function idProblems(config: Configuration): Problem[] {
     const m = /^[a-z](\d+)$/.exec(id);
     if (m && Number(m[1]) >= config.nextId) out.push({ code: 'id-counter', path, message: `id '${id}' is not below nextId ${config.nextId}` });
   };
+  config.objects.forEach((o, i) => check(o.id, `objects[${i}].id`));
+  Object.keys(config.importedMeshes).forEach((id) => check(id, `importedMeshes.${id}`));
   config.systems.forEach((s, i) => {
     check(s.id, `systems[${i}].id`);
     s.rails.forEach((r, k) => {

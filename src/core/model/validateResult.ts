@@ -13,6 +13,7 @@
  */
 import type { Catalog } from './catalogSchema';
 import type { Configuration } from './configuration';
+import { changedObjectProblems } from './objectProblems';
 import { idProblems, patchProblems, roomProblems, systemProblems, validate, type Problem } from './validate';
 
 /** Per catalog, whether a state passed validate(): states are immutable, so the answer never changes. */
@@ -57,5 +58,6 @@ function changedProblems(before: Configuration, after: Configuration, catalog: C
     const problems = systemProblems(after, i, catalog);
     if (problems.length > 0) return problems;
   }
-  return [];
+  // Objects do not interact with systems or each other: only new or replaced ones (and the meshes) need a look.
+  return changedObjectProblems(before, after);
 }
