@@ -79,25 +79,33 @@ export function rasterizeAtlas(tris: WorldTriangles, charts: readonly Chart[], l
         }
       }
     }
+    // Covered texels whose centre lies outside the chart take the nearest point of the chart's
+    // triangles. It lies within half a texel diagonal of the centre, so only triangles whose box
+    // reaches within one texel qualify: one more sweep over the triangles' widened boxes.
+    const nearest = new Float64Array(cols * rows).fill(Infinity);
+    let outside = 0;
+    for (let k = 0; k < cols * rows; k++) if (coverage[k] > MIN_COVERAGE && owner[k] < 0) outside++;
+    for (let i = 0; i < m && outside > 0; i++) {
+      const [minX, minY, maxX, maxY] = box(i);
+      const i0 = Math.max(0, Math.floor(minX) - 1), i1 = Math.min(cols - 1, Math.ceil(maxX));
+      const j0 = Math.max(0, Math.floor(minY) - 1), j1 = Math.min(rows - 1, Math.ceil(maxY));
+      for (let j = j0; j <= j1; j++) {
+        for (let ii = i0; ii <= i1; ii++) {
+          const k = j * cols + ii;
+          if (!(coverage[k] > MIN_COVERAGE) || (owner[k] >= 0 && nearest[k] === Infinity)) continue;
+          const hit = closestOnTriangle(local.subarray(6 * i, 6 * i + 6), ii + 0.5, j + 0.5);
+          if (hit.distanceSq < nearest[k]) {
+            nearest[k] = hit.distanceSq;
+            owner[k] = i;
+            weights.set(hit.weights, 3 * k);
+          }
+        }
+      }
+    }
     for (let j = 0; j < rows; j++) {
       for (let ii = 0; ii < cols; ii++) {
         const k = j * cols + ii;
         if (coverage[k] <= MIN_COVERAGE) continue;
-        if (owner[k] < 0) {
-          // Centre outside the chart: the nearest point of the chart's triangles. It lies within
-          // half a texel diagonal, so only triangles whose box reaches within one texel qualify.
-          let best = Infinity;
-          for (let i = 0; i < m; i++) {
-            const [minX, minY, maxX, maxY] = box(i);
-            if (minX > ii + 2 || maxX < ii - 1 || minY > j + 2 || maxY < j - 1) continue;
-            const hit = closestOnTriangle(local.subarray(6 * i, 6 * i + 6), ii + 0.5, j + 0.5);
-            if (hit.distanceSq < best) {
-              best = hit.distanceSq;
-              owner[k] = i;
-              weights.set(hit.weights, 3 * k);
-            }
-          }
-        }
         const t = chart.triangles[owner[k]];
         // Clamp the weights of a centre a float hair outside its triangle back onto it.
         let w0 = Math.max(0, weights[3 * k]), w1 = Math.max(0, weights[3 * k + 1]), w2 = Math.max(0, weights[3 * k + 2]);

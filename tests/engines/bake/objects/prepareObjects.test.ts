@@ -88,6 +88,51 @@ describe('prepareObjects: charts', () => {
     expect(bent.charts.map((c) => c.triangleCount)).toEqual([1, 1, 2, 1]);
   });
 
+  it('a tessellated plane is one chart; a finely tessellated cylinder does not drift into bent charts', () => {
+    // 20 × 20 quads on a 2 × 2 m plane, yawed: one chart, its area exact.
+    const n = 20;
+    const grid: number[] = [];
+    const gridIndices: number[] = [];
+    for (let j = 0; j <= n; j++) for (let i = 0; i <= n; i++) grid.push((2 * i) / n, 0, (-2 * j) / n);
+    for (let j = 0; j < n; j++) {
+      for (let i = 0; i < n; i++) {
+        const a = j * (n + 1) + i;
+        gridIndices.push(a, a + 1, a + n + 2, a, a + n + 2, a + n + 1);
+      }
+    }
+    const material = [{ name: 'm', reflectance: [0.5, 0.5, 0.5] as [number, number, number] }];
+    const plane = { positions: new Float32Array(grid), indices: new Uint32Array(gridIndices), materialOfTriangle: new Uint16Array(2 * n * n), materials: material };
+    const flat = prepareObjects([placed('plane', plane, [1, 0.5, 3], 23)], { texelSize: 0.05 });
+    expect(flat.charts).toHaveLength(1);
+    expect([flat.charts[0].columns, flat.charts[0].rows]).toEqual([40, 40]);
+    // A 720-sided open cylinder (0.5° between neighbours, r = 0.3 m): each chart stays within 1° of its seed.
+    const sides = 720;
+    const cyl: number[] = [];
+    const cylIndices: number[] = [];
+    for (let i = 0; i < sides; i++) {
+      const phi = (2 * Math.PI * i) / sides;
+      cyl.push(0.3 * Math.cos(phi), 0, -0.3 * Math.sin(phi), 0.3 * Math.cos(phi), 1, -0.3 * Math.sin(phi));
+      const a = 2 * i, b = 2 * ((i + 1) % sides);
+      cylIndices.push(a, b, b + 1, a, b + 1, a + 1);
+    }
+    const cylinder = { positions: new Float32Array(cyl), indices: new Uint32Array(cylIndices), materialOfTriangle: new Uint16Array(2 * sides), materials: material };
+    const p = prepareObjects([placed('cylinder', cylinder, [2, 0, 2])], { texelSize: 0.05 });
+    const byChart = chartTriangles(p);
+    let widest = 0;
+    for (const tris of byChart.values()) {
+      const normals = tris.map((t) => {
+        const c = cross(sub(t[1], t[0]), sub(t[2], t[0]));
+        const l = Math.hypot(...c);
+        return [c[0] / l, c[1] / l, c[2] / l] as V3;
+      });
+      for (const a of normals) for (const b of normals) widest = Math.max(widest, Math.acos(Math.min(1, dot(a, b))));
+    }
+    expect((widest * 180) / Math.PI).toBeLessThanOrEqual(2 + 1e-6);
+    expect(p.charts.length).toBeGreaterThan(sides / 5);
+    expect(p.charts.length).toBeLessThan(sides / 2);
+    expect(p.objects[0].area).toBeCloseTo(2 * Math.PI * 0.3 * Math.sin(Math.PI / sides) * (sides / Math.PI), 4);
+  });
+
   it('no texel is claimed twice: triangle uv footprints of different charts never share a texel; gutters and edges stay empty', () => {
     const owner = new Int32Array(atlas.width * atlas.height).fill(-1);
     const T = prepared.bvh.triangles;
