@@ -15,7 +15,7 @@ import { createConfiguration, type Configuration } from '../model/configuration'
 import { createHistory, pushHistory, redo, undo, type History } from '../model/history';
 import { validate } from '../model/validate';
 
-export type Selection = { readonly kind: 'system' | 'rail' | 'module'; readonly id: string } | null;
+export type Selection = { readonly kind: 'system' | 'rail' | 'module' | 'object'; readonly id: string } | null;
 
 export type DispatchResult = { readonly ok: true } | Refusal;
 
@@ -54,6 +54,7 @@ export type ConfiguratorStore = StoreApi<ConfiguratorState>;
 
 function selectionExists(config: Configuration, sel: Selection): boolean {
   if (!sel) return true;
+  if (sel.kind === 'object') return config.objects.some((o) => o.id === sel.id);
   return config.systems.some((s) =>
     sel.kind === 'system' ? s.id === sel.id : s.rails.some((r) => (sel.kind === 'rail' ? r.id === sel.id : r.modules.some((m) => m.id === sel.id))),
   );
