@@ -3,6 +3,7 @@ import type { BakedMaps } from './bakedMaps';
 import type { BakeScene } from './bakeScene';
 import type { BakeSettings } from './bakeSettings';
 import type { SurfaceLayout } from './surfaceLayout';
+import type { ObjectReportEntry } from './objects/objectPassReport';
 
 /** The baker's public contract: what createBaker returns, its jobs, their progress and reports. */
 export interface BakeProgress {
@@ -38,6 +39,15 @@ export interface BakeReport {
   timings_ms: { compile: number; direct: number; indirect: number; blur: number; blend: number; readback: number; total: number };
   /** GPU → CPU read-backs this job made (readPixels calls) and the bytes they moved: 0 until the caller reads maps or this report. */
   readbacks: { count: number; bytes: number };
+  /** Per object (scenes with objects only; docs/scene-format.md): area, atlas texels, total lux mean/min/max and flux. */
+  objects?: ObjectReportEntry[];
+}
+
+/** A receiver's maps on the GPU. */
+export interface MapTextures {
+  direct: WebGLTexture;
+  indirect: WebGLTexture;
+  total: WebGLTexture;
 }
 
 /** A bake in progress: direct maps ready, indirect refined by `step` (for the browser, a few samples per frame). */
@@ -51,7 +61,7 @@ export interface BakeJob {
   /** Build indirect (blurred, with the tail estimate) and total maps from the current state. */
   finalize(): void;
   /** Current maps on the GPU (valid until dispose), e.g. for the viewer. Call finalize first. */
-  textures(): Record<SurfaceName, { direct: WebGLTexture; indirect: WebGLTexture; total: WebGLTexture }>;
+  textures(): Record<SurfaceName, MapTextures> & { objects?: MapTextures };
   /** Maps read back as RGB lux floats (finalizes if needed). */
   readMaps(): BakedMaps;
   report(): BakeReport;

@@ -4,6 +4,7 @@ import type { BakeSettings } from './bakeSettings';
 import type { FluxRecord } from './fluxRecord';
 import type { BrightSelection } from './selectBrightPatches';
 import type { SurfaceLayout } from './surfaceLayout';
+import type { ObjectReportEntry } from './objects/objectPassReport';
 import { tailFactor } from './tailFactor';
 
 /** What a job knows when its report is asked for. */
@@ -23,6 +24,8 @@ export interface BakeFacts {
   shaders: BakeReport['shaders'];
   timings: BakeReport['timings_ms'];
   readbacks: BakeReport['readbacks'];
+  /** Per-object statistics (scenes with objects only). */
+  objects?: ObjectReportEntry[];
 }
 
 /** The bake report (bakeJob.ts, docs/baker.md "report.json"); timings and read-backs are copied as they are now. */
@@ -49,5 +52,6 @@ export function bakeReport(f: BakeFacts): BakeReport {
     shaders: f.shaders,
     timings_ms: { ...f.timings },
     readbacks: { ...f.readbacks },
+    ...(f.objects ? { objects: f.objects } : {}),
   };
 }

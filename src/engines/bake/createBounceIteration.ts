@@ -7,7 +7,16 @@ import { clearTarget } from './floatTarget';
 import { mixSeed } from './mixSeed';
 import type { BrightPatchPass } from './runBrightPatchPass';
 import { runPass, type PassProgram } from './runPass';
-import type { SurfaceTargets } from './surfaceTargets';
+import type { BounceTargets } from './surfaceTargets';
+
+/** The G-buffer and BVH textures the object-aware gather passes read (objectGatherUniforms less the per-bounce ones). */
+export interface ObjectGatherSamplers {
+  uObjectRho: WebGLTexture;
+  uBvhNodes: WebGLTexture;
+  uBvhTriangles: WebGLTexture;
+  uPoints: WebGLTexture;
+  uNormals: WebGLTexture;
+}
 
 /** The explicit bounces of a bake, advanced a few samples at a time. */
 export interface BounceIteration {
@@ -29,21 +38,23 @@ export interface BounceIteration {
  */
 export function createBounceIteration(
   gl: WebGL2RenderingContext,
-  surfaces: SurfaceTargets[],
+  surfaces: BounceTargets[],
   passes: { gather: PassProgram<typeof gatherUniforms>[]; combine: PassProgram<typeof combinePass.uniforms> },
   statistics: FluxStatistics,
   brightPass: BrightPatchPass | null,
   settings: BakeSettings,
   timer: BakeTimer,
+  objectSamplers: ObjectGatherSamplers | null = null,
 ): BounceIteration {
   let bounce = 0;
   let samplesDone = 0;
-  // What surface s emits into this bounce: the direct map (or its residual) for bounce 1, else the previous bounce.
+  // What receiver s emits into this bounce: the direct map (or its residual) for bounce 1, else the previous bounce.
+  // Receivers 0–5 are the room surfaces, 6 the objects' atlas when the scene has objects.
   const source = (s: number) => (bounce === 0 ? (brightPass?.residual[s] ?? surfaces[s].direct) : surfaces[s].previous).texture;
 
-  const gatherDraw = (st: SurfaceTargets, first: number, count: number) => {
-    const bright = bounce === 0 ? brightPass?.bright[st.layout.index] : null;
-    runPass(gl, passes.gather[st.layout.index], st.samples.write, {
+  const gatherDraw = (st: BounceTargets, index: number, first: number, count: number) => {
+    const bright = bounce === 0 ? brightPass?.bright[index] : null;
+    const values = {
       uSource0: source(0),
       uSource1: source(1),
       uSource2: source(2),
@@ -57,8 +68,11 @@ export function createBounceIteration(
       uSampleCount: count,
       // The previous bounce is stored as the sum of its S samples: read it as lux.
       uInputScale: bounce === 0 ? 1 : 1 / settings.samples,
-      uSeed: mixSeed(settings.seed, st.layout.index, bounce) | 0,
-    });
+      uSeed: mixSeed(settings.seed, index, bounce) | 0,
+      // The object-aware passes (generateGatherShader.ts objectGatherUniforms) also read the atlas and the BVH.
+      ...(objectSamplers ? { ...objectSamplers, uSource6: source(6) } : {}),
+    };
+    runPass(gl, passes.gather[index], st.samples.write, values);
     st.samples.swap();
   };
 
@@ -92,7 +106,7 @@ export function createBounceIteration(
       timer.timed('indirect', () => {
         while (remaining > 0 && bounce < settings.bounces) {
           const n = Math.min(remaining, settings.samplesPerDraw, settings.samples - samplesDone);
-          for (const st of surfaces) gatherDraw(st, samplesDone, n);
+          surfaces.forEach((st, index) => gatherDraw(st, index, samplesDone, n));
           samplesDone += n;
           remaining -= n;
           if (samplesDone >= settings.samples) finishBounce();

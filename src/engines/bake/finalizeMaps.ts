@@ -1,5 +1,7 @@
 import type { Rgb } from '../../core/model/lightingScene';
 import type { blurPass } from '../../../shaders/blurPass.glsl';
+import type { chartBlurPass } from '../../../shaders/chartBlurPass.glsl';
+import type { chartDilatePass } from '../../../shaders/chartDilatePass.glsl';
 import type { combinePass } from '../../../shaders/combinePass.glsl';
 import type { combineTailPass } from '../../../shaders/combineTailPass.glsl';
 import type { BakeSettings } from './bakeSettings';
@@ -8,7 +10,7 @@ import type { BounceIteration } from './createBounceIteration';
 import type { FluxStatistics } from './fluxStatistics';
 import { clearTarget, type FloatTarget } from './floatTarget';
 import { runPass, type PassProgram } from './runPass';
-import type { SurfaceTargets } from './surfaceTargets';
+import type { BounceTargets } from './surfaceTargets';
 
 export interface FinalPasses {
   combine: PassProgram<typeof combinePass.uniforms>;
@@ -16,6 +18,21 @@ export interface FinalPasses {
   combineTail: PassProgram<typeof combineTailPass.uniforms> | null;
   /** Null without indirect light or with blurRadius 0. */
   blur: PassProgram<typeof blurPass.uniforms> | null;
+}
+
+/**
+ * The objects' atlas in the final passes: its targets (also in `surfaces`), a chart-aware blur
+ * (shaders/chartBlurPass.glsl.ts) instead of the plain one, and after the total the dilation
+ * (shaders/chartDilatePass.glsl.ts) of direct, indirect and total into the maps that are shown.
+ */
+export interface FinalObjects {
+  targets: BounceTargets;
+  chartBlur: PassProgram<typeof chartBlurPass.uniforms> | null;
+  dilate: PassProgram<typeof chartDilatePass.uniforms>;
+  /** G-buffer normal texture (a = chart id + 1) and point texture (a = coverage). */
+  charts: WebGLTexture;
+  coverage: WebGLTexture;
+  shown: { direct: FloatTarget; indirect: FloatTarget; total: FloatTarget };
 }
 
 const ONE: Rgb = [1, 1, 1];
@@ -31,18 +48,19 @@ const ZERO: Rgb = [0, 0, 0];
  */
 export function finalizeMaps(
   gl: WebGL2RenderingContext,
-  surfaces: readonly SurfaceTargets[],
+  surfaces: readonly BounceTargets[],
   passes: FinalPasses,
   bounces: BounceIteration | null,
   statistics: FluxStatistics,
   settings: BakeSettings,
   timer: BakeTimer,
+  objects: FinalObjects | null = null,
 ): void {
   const copy = (out: FloatTarget, from: FloatTarget) => runPass(gl, passes.combine, out, { uA: from.texture, uB: from.texture, uScaleA: ONE, uScaleB: ZERO });
   const { combineTail, blur } = passes;
   if (bounces && combineTail) {
     // raw = sum + part·(offset + f·tailScale), f = r/(1−r) of the last finished bounce.
-    const tail = (st: SurfaceTargets, part: FloatTarget, offset: number, tailScale: number) => {
+    const tail = (st: BounceTargets, part: FloatTarget, offset: number, tailScale: number) => {
       const t = settings.tail ? tailScale : 0;
       runPass(gl, combineTail, st.raw, {
         uA: st.sum.read.texture,
@@ -67,10 +85,13 @@ export function finalizeMaps(
       const sigma = radius / 2;
       const blurInto = (out: FloatTarget, from: FloatTarget, direction: readonly [number, number]) =>
         runPass(gl, blur, out, { uSource: from.texture, uDirection: direction, uRadius: radius, uInvTwoSigma2: 1 / (2 * sigma * sigma) });
+      const chartBlurInto = (out: FloatTarget, from: FloatTarget, direction: readonly [number, number]) =>
+        runPass(gl, objects!.chartBlur!, out, { uSource: from.texture, uCharts: objects!.charts, uDirection: direction, uRadius: radius, uInvTwoSigma2: 1 / (2 * sigma * sigma) });
       timer.timed('blur', () => {
         for (const st of surfaces) {
-          blurInto(st.blurTemp, st.raw, [1, 0]);
-          blurInto(st.indirect, st.blurTemp, [0, 1]);
+          const into = objects?.chartBlur && st === objects.targets ? chartBlurInto : blurInto;
+          into(st.blurTemp, st.raw, [1, 0]);
+          into(st.indirect, st.blurTemp, [0, 1]);
         }
       });
     } else {
@@ -84,4 +105,10 @@ export function finalizeMaps(
   timer.timed('blend', () => {
     for (const st of surfaces) runPass(gl, passes.combine, st.total, { uA: st.direct.texture, uB: st.indirect.texture, uScaleA: ONE, uScaleB: ONE });
   });
+  if (objects) {
+    const { targets, shown, dilate, coverage } = objects;
+    timer.timed('blend', () => {
+      for (const kind of ['direct', 'indirect', 'total'] as const) runPass(gl, dilate, shown[kind], { uSource: targets[kind].texture, uCoverage: coverage });
+    });
+  }
 }

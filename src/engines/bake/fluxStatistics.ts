@@ -1,5 +1,6 @@
 import type { Rgb } from '../../core/model/lightingScene';
 import { fluxRatioPass, reduceSumPass, REDUCE_GRID } from '../../../shaders/fluxReduce.glsl';
+import { objectFluxRatioPass, objectReduceSumPass } from '../../../shaders/objectFluxReduce.glsl';
 import { LUMINANCE_WEIGHTS } from './bakedMaps';
 import { maxFluxRatio, type FluxRecord } from './fluxRecord';
 import { readRgba, type FloatTarget } from './floatTarget';
@@ -20,10 +21,26 @@ export type { FluxRecord } from './fluxRecord';
 export interface FluxStatistics {
   /** Row texture: texel i = record i (RGBA32F, width = capacity). */
   readonly stats: FloatTarget;
+  /** `maps`: the six surfaces' maps, then the atlas's when the bake has objects. */
   record(index: number, maps: FloatTarget[], scale: number): void;
   /** Records 0..count−1, in one readPixels of `capacity` texels. */
   read(count: number): FluxRecord[];
   dispose(): void;
+}
+
+/**
+ * The objects' atlas as a seventh receiver (shaders/objectFluxReduce.glsl.ts): its flux is
+ * Σ E·coverage·texel² and its reflected flux Σ ρ·E·coverage·texel², ρ per texel, so the
+ * flux-weighted r of the tail includes the objects.
+ */
+export interface FluxObjects {
+  width: number;
+  height: number;
+  texelSize: number;
+  /** G-buffer point texture (a = coverage) and reflectance texture. */
+  points: WebGLTexture;
+  reflectance: WebGLTexture;
+  maxReflectance: number;
 }
 
 export function createFluxStatistics(
@@ -33,8 +50,9 @@ export function createFluxStatistics(
   reflectance: Rgb[],
   capacity: number,
   onRead: (bytes: number) => void,
+  objects: FluxObjects | null = null,
 ): FluxStatistics {
-  const maxRatio = maxFluxRatio(reflectance);
+  const maxRatio = Math.min(Math.max(maxFluxRatio(reflectance), objects ? objects.maxReflectance : 0), 0.9999);
   // First level per surface: blocks of block² texels, at most REDUCE_GRID² of them.
   const levels = layouts.map((l) => {
     const block = Math.max(1, Math.ceil(Math.max(l.width, l.height) / REDUCE_GRID));
@@ -46,12 +64,51 @@ export function createFluxStatistics(
   const areas = new Float32Array(layouts.map(texelArea));
   const rho = new Float32Array(reflectance.flat());
   const sum = (s: number) => levels[s].target.texture;
+  // The atlas: two weighted first levels (Σ E·c and Σ ρ·E·c).
+  const objectLevels = objects
+    ? (() => {
+        const block = Math.max(1, Math.ceil(Math.max(objects.width, objects.height) / REDUCE_GRID));
+        const size = [Math.ceil(objects.width / block), Math.ceil(objects.height / block)] as const;
+        return { block, flux: pool.acquire(size[0], size[1]), reflected: pool.acquire(size[0], size[1]) };
+      })()
+    : null;
+  const objectReduce = objects ? passProgram(gl, objectReduceSumPass) : null;
+  const objectRatio = objects ? passProgram(gl, objectFluxRatioPass) : null;
 
   return {
     stats,
     record(index, maps, scale) {
       if (index < 0 || index >= capacity) throw new Error(`flux statistics: record ${index} outside 0..${capacity - 1}`);
-      maps.forEach((map, s) => runPass(gl, reduce, levels[s].target, { uSource: map.texture, uBlock: levels[s].block }));
+      if (maps.length !== layouts.length + (objects ? 1 : 0)) throw new Error(`flux statistics: ${maps.length} maps for ${layouts.length} surfaces${objects ? ' and the atlas' : ''}`);
+      layouts.forEach((_, s) => runPass(gl, reduce, levels[s].target, { uSource: maps[s].texture, uBlock: levels[s].block }));
+      if (objects && objectLevels && objectReduce && objectRatio) {
+        const atlas = maps[layouts.length].texture;
+        const common = { uSource: atlas, uPoints: objects.points, uRho: objects.reflectance, uBlock: objectLevels.block };
+        runPass(gl, objectReduce, objectLevels.flux, { ...common, uReflected: 0 });
+        runPass(gl, objectReduce, objectLevels.reflected, { ...common, uReflected: 1 });
+        runPass(
+          gl,
+          objectRatio,
+          stats,
+          {
+            uSum0: sum(0),
+            uSum1: sum(1),
+            uSum2: sum(2),
+            uSum3: sum(3),
+            uSum4: sum(4),
+            uSum5: sum(5),
+            uSum6: objectLevels.flux.texture,
+            uSum7: objectLevels.reflected.texture,
+            uArea: areas.map((a) => a * scale),
+            uRho: rho,
+            uObjectArea: objects.texelSize * objects.texelSize * scale,
+            uMaxRatio: maxRatio,
+            uLuminance: LUMINANCE_WEIGHTS,
+          },
+          [index, 0, 1, 1],
+        );
+        return;
+      }
       runPass(
         gl,
         ratio,
@@ -81,6 +138,7 @@ export function createFluxStatistics(
     },
     dispose() {
       for (const t of [...levels.map((l) => l.target), stats]) pool.release(t);
+      if (objectLevels) for (const t of [objectLevels.flux, objectLevels.reflected]) pool.release(t);
     },
   };
 }

@@ -1,5 +1,6 @@
 import { SURFACE_NAMES, type Rgb, type Vec3 } from '../../core/model/lightingScene';
 import { fragmentPass, type FragmentPass } from '../../../shaders/fragmentPass.glsl';
+import { objectTracing, SURFACE_OFFSET } from '../../../shaders/objectTracing.glsl';
 import { rayBox } from '../../../shaders/rayBox.glsl';
 import { sampling } from '../../../shaders/sampling.glsl';
 import { glslVec3 } from './glslFormat';
@@ -31,6 +32,29 @@ export const gatherUniforms = {
   uSeed: 'int',
 } as const;
 
+/**
+ * With objects, every gather pass also reads the objects' atlas: uSource6 is what the atlas emits
+ * this bounce (as E; times uObjectRho, the G-buffer's ρ, it is the exitance), the BVH, and for
+ * the atlas receiver its G-buffer points (a = coverage) and normals.
+ */
+export const objectGatherUniforms = {
+  ...gatherUniforms,
+  uSource6: 'sampler2D',
+  uObjectRho: 'sampler2D',
+  uBvhNodes: 'sampler2D',
+  uBvhTriangles: 'sampler2D',
+  uPoints: 'sampler2D',
+  uNormals: 'sampler2D',
+} as const;
+
+/** What a gather pass needs to know of the objects. */
+export interface GatherObjects {
+  /** Width of the BVH textures (objects/preparedObjects.ts ObjectBvhTextures). */
+  bvhWidth: number;
+  atlasWidth: number;
+  atlasHeight: number;
+}
+
 const AXIS_NAME = ['x', 'y', 'z'];
 
 /**
@@ -40,7 +64,7 @@ const AXIS_NAME = ['x', 'y', 'z'];
  * from the same SURFACE_FRAMES as the layouts; branches in the order of the
  * hit axis (x, y, z), min side first.
  */
-function exitanceFunction(receiver: number, reflectance: Rgb[]): string {
+function exitanceFunction(receiver: number, reflectance: Rgb[], objects: GatherObjects | null = null): string {
   const hit = SURFACE_NAMES.map((name, index) => {
     const [u, v, axis, onMax] = SURFACE_FRAMES[name];
     return { index, u: AXIS_NAME[u], v: AXIS_NAME[v], axis, onMax };
@@ -54,11 +78,25 @@ function exitanceFunction(receiver: number, reflectance: Rgb[]): string {
         `  if (axis == ${t.axis} && dir.${AXIS_NAME[t.axis]} ${t.onMax ? '>' : '<'} 0.0) return RHO${t.index} * texture(uSource${t.index}, vec2(hit.${t.u}, hit.${t.v}) / vec2(ROOM.${t.u}, ROOM.${t.v})).rgb;\n`,
     )
     .join('');
-  return `// sampling ${hit.length} reflecting surface(s)
+  // With objects the ray ends at the nearer of the box exit and the first object hit; an object
+  // emits ρ·E of the atlas texel hit (nearest texel: the texel holding the hit point is covered,
+  // so no empty neighbour darkens it), nothing from its back face (which still blocks).
+  const objectHit = objects
+    ? `  float tObject;
+  vec2 atlasUv;
+  bool frontFace;
+  if (bvhClosestHit(origin, dir, t, tObject, atlasUv, frontFace)) {
+    if (!frontFace) return vec3(0.0);
+    ivec2 texel = clamp(ivec2(atlasUv * ATLAS_SIZE), ivec2(0), ivec2(ATLAS_SIZE) - 1);
+    return texelFetch(uObjectRho, texel, 0).rgb * texelFetch(uSource6, texel, 0).rgb;
+  }
+`
+    : '';
+  return `// sampling ${hit.length} reflecting surface(s)${objects ? ' and the objects' : ''}
 ${constants}vec3 exitance(vec3 origin, vec3 dir) {
   int axis;
   float t = rayExit(origin, dir, ROOM, axis);
-  vec3 hit = clamp(origin + t * dir, vec3(0.0), ROOM);
+${objectHit}  vec3 hit = clamp(origin + t * dir, vec3(0.0), ROOM);
 ${branches}  return vec3(0.0);
 }
 `;
@@ -101,6 +139,79 @@ void main() {
   vec3 bright = uBrightWeight > 0.0 ? uBrightWeight * float(uSampleCount) * texelFetch(uBright, texel, 0).rgb : vec3(0.0);
   outColor = vec4(texelFetch(uAccumulated, texel, 0).rgb + sum * uInputScale + bright, 1.0);
 }
+`,
+  );
+}
+
+/** Constants and functions every object-aware gather pass shares. */
+function objectGatherHead(room: Vec3, receiver: number, reflectance: Rgb[], objects: GatherObjects): string {
+  return `const vec3 ROOM = ${glslVec3(room)};
+const vec2 ATLAS_SIZE = vec2(${objects.atlasWidth}.0, ${objects.atlasHeight}.0);
+${sampling}
+${rayBox}
+${objectTracing(objects.bvhWidth)}${exitanceFunction(receiver, reflectance, objects)}`;
+}
+
+/** The sample loop and output of a gather pass from point p with normal frame (n, tangent, bitangent). */
+const GATHER_LOOP = `  uint h = hash32(uint(texel.x) ^ hash32(uint(texel.y) ^ hash32(uint(uSeed))));
+  uvec2 rotation = uvec2(h, hash32(h + 0x9e3779b9u));
+  vec3 sum = vec3(0.0);
+  for (int k = 0; k < uSampleCount; k++) {
+    vec3 dir = cosineDirection(r2Sample(uint(uFirstSample + k), rotation), n, tangent, bitangent);
+    sum += exitance(p, dir);
+  }
+  vec3 bright = uBrightWeight > 0.0 ? uBrightWeight * float(uSampleCount) * texelFetch(uBright, texel, 0).rgb : vec3(0.0);
+  outColor = vec4(texelFetch(uAccumulated, texel, 0).rgb + sum * uInputScale + bright, 1.0);
+`;
+
+/**
+ * The gather pass of a room surface in a scene with objects: as generateGatherShader, but each
+ * ray ends at the nearer of the box exit and the first object hit (bvhClosestHit), and rays start
+ * SURFACE_OFFSET off the wall (an object resting on the wall or floor is not missed).
+ */
+export function generateObjectAwareGatherShader(surface: SurfaceLayout, room: Vec3, reflectance: Rgb[], objects: GatherObjects): FragmentPass<typeof objectGatherUniforms> {
+  return fragmentPass(
+    objectGatherUniforms,
+    `// gather pass, surface ${surface.name}, with objects
+${surfaceFrameGlsl(surface)}${objectGatherHead(room, surface.index, reflectance, objects)}out vec4 outColor;
+void main() {
+  ivec2 texel = ivec2(gl_FragCoord.xy);
+  vec2 uv = gl_FragCoord.xy / RESOLUTION;
+  vec3 n = NORMAL;
+  vec3 tangent = ${glslVec3(axisVector(surface.uAxisIndex, 1))};
+  vec3 bitangent = ${glslVec3(axisVector(surface.vAxisIndex, 1))};
+  vec3 p = ORIGIN + U_AXIS * uv.x + V_AXIS * uv.y + n * ${SURFACE_OFFSET.toExponential()};
+${GATHER_LOOP}}
+`,
+  );
+}
+
+/**
+ * The gather pass of the objects' atlas: per covered texel, its G-buffer point and normal, an
+ * orthonormal frame about the normal (Duff et al., "Building an Orthonormal Basis, Revisited",
+ * JCGT 2017), rays from p + n·SURFACE_OFFSET that end at the box (all six walls can be hit) or at
+ * an object. Empty texels keep 0.
+ */
+export function generateObjectGatherShader(room: Vec3, reflectance: Rgb[], objects: GatherObjects): FragmentPass<typeof objectGatherUniforms> {
+  return fragmentPass(
+    objectGatherUniforms,
+    `// gather pass, objects' atlas
+${objectGatherHead(room, -1, reflectance, objects)}out vec4 outColor;
+void main() {
+  ivec2 texel = ivec2(gl_FragCoord.xy);
+  vec4 point = texelFetch(uPoints, texel, 0);
+  if (point.a <= 0.0) {
+    outColor = vec4(0.0, 0.0, 0.0, 1.0);
+    return;
+  }
+  vec3 n = normalize(texelFetch(uNormals, texel, 0).xyz);
+  float sgn = n.z >= 0.0 ? 1.0 : -1.0;
+  float a = -1.0 / (sgn + n.z);
+  float b = n.x * n.y * a;
+  vec3 tangent = vec3(1.0 + sgn * n.x * n.x * a, sgn * b, -sgn * n.x);
+  vec3 bitangent = vec3(b, sgn + n.y * n.y * a, -n.y);
+  vec3 p = clamp(point.xyz + n * ${SURFACE_OFFSET.toExponential()}, vec3(0.0), ROOM);
+${GATHER_LOOP}}
 `,
   );
 }

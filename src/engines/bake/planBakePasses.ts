@@ -4,8 +4,18 @@ import { blurPass } from '../../../shaders/blurPass.glsl';
 import { combinePass } from '../../../shaders/combinePass.glsl';
 import { combineTailPass } from '../../../shaders/combineTailPass.glsl';
 import type { BakeSettings } from './bakeSettings';
-import { generateDirectShader, type DirectLamp, type directUniforms } from './generateDirectShader';
-import { generateGatherShader, type gatherUniforms } from './generateGatherShader';
+import { chartBlurPass } from '../../../shaders/chartBlurPass.glsl';
+import { chartDilatePass } from '../../../shaders/chartDilatePass.glsl';
+import { generateDirectShader, generateShadowedDirectShader, type DirectLamp, type directUniforms } from './generateDirectShader';
+import {
+  generateGatherShader,
+  generateObjectAwareGatherShader,
+  generateObjectGatherShader,
+  type GatherObjects,
+  type gatherUniforms,
+  type objectGatherUniforms,
+} from './generateGatherShader';
+import { generateObjectDirectShader, type objectDirectUniforms } from './objects/objectPassDirectShader';
 import { lampReachesSurface } from './lampReach';
 import type { SurfaceLayout } from './surfaceLayout';
 
@@ -20,6 +30,15 @@ export interface BakePlan {
   blur: boolean;
   /** Every fragment source the bake will use, to start their compiles together (glResources.startPrograms). */
   sources: string[];
+  /** With objects: the atlas's direct pass (null without luminaires) and gather pass (null when indirect is off). */
+  objectDirect: FragmentPass<typeof objectDirectUniforms> | null;
+  objectGather: FragmentPass<typeof objectGatherUniforms> | null;
+}
+
+/** What the plan needs to know of a scene's objects (null: none, the empty room's passes exactly). */
+export interface PlanObjects extends GatherObjects {
+  /** Largest reflectance of any covered atlas texel (any channel). */
+  maxReflectance: number;
 }
 
 /**
@@ -34,21 +53,37 @@ export function planBakePasses(
   reflectance: Rgb[],
   settings: BakeSettings,
   directOverride: Record<SurfaceName, Float32Array> | null,
+  objects: PlanObjects | null = null,
 ): BakePlan {
+  // With objects, a lamp still reaches every surface it reaches in the empty room (objects only
+  // take light away, per point, in the shader); the atlas gets its own pass with every lamp.
   const direct = layouts.map((layout) => {
     if (directOverride) return null;
     const reaching = lamps.filter((l) => lampReachesSurface(l.sources, l.rotation, l.profile.gammaMin, l.profile.gammaMax, layout));
-    return reaching.length > 0 ? generateDirectShader(layout, reaching, settings.texelSupersampling) : null;
+    if (reaching.length === 0) return null;
+    return objects
+      ? generateShadowedDirectShader(layout, reaching, settings.texelSupersampling, objects.bvhWidth)
+      : generateDirectShader(layout, reaching, settings.texelSupersampling);
   });
-  const anyDirect = directOverride ? Object.values(directOverride).some((rgb) => rgb.some((v) => v > 0)) : direct.some((pass) => pass !== null);
-  const indirectEnabled = settings.bounces > 0 && Math.max(...reflectance.flat()) > 0 && anyDirect;
-  const gather = indirectEnabled ? layouts.map((layout) => generateGatherShader(layout, room, reflectance)) : [];
+  const objectDirect = objects && !directOverride && lamps.length > 0 ? generateObjectDirectShader([...lamps], objects.bvhWidth) : null;
+  const anyDirect = directOverride
+    ? Object.values(directOverride).some((rgb) => rgb.some((v) => v > 0))
+    : direct.some((pass) => pass !== null) || objectDirect !== null;
+  const maxReflectance = Math.max(...reflectance.flat(), objects ? objects.maxReflectance : 0);
+  const indirectEnabled = settings.bounces > 0 && maxReflectance > 0 && anyDirect;
+  const gather = indirectEnabled
+    ? layouts.map((layout) => (objects ? generateObjectAwareGatherShader(layout, room, reflectance, objects) : generateGatherShader(layout, room, reflectance)))
+    : [];
+  const objectGather = objects && indirectEnabled ? generateObjectGatherShader(room, reflectance, objects) : null;
   const blur = indirectEnabled && settings.blurRadius > 0;
   const sources = [
     ...direct.flatMap((pass) => (pass ? [pass.source] : [])),
     combinePass.source,
     ...(indirectEnabled ? [combineTailPass.source, ...gather.map((pass) => pass.source)] : []),
     ...(blur ? [blurPass.source] : []),
+    ...(objectDirect ? [objectDirect.source] : []),
+    ...(objectGather ? [objectGather.source] : []),
+    ...(objects ? [chartDilatePass.source, ...(blur ? [chartBlurPass.source] : [])] : []),
   ];
-  return { direct, indirectEnabled, gather, blur, sources };
+  return { direct, indirectEnabled, gather, blur, sources, objectDirect, objectGather };
 }

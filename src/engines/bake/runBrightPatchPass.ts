@@ -1,5 +1,6 @@
 import type { Rgb } from '../../core/model/lightingScene';
 import { brightGatherPass } from '../../../shaders/brightGatherPass.glsl';
+import { occludedBrightGatherPass } from '../../../shaders/occludedBrightGatherPass.glsl';
 import { residualPass } from '../../../shaders/residualPass.glsl';
 import type { BrightPatchOptions } from './brightPatchOptions';
 import type { FloatTarget } from './floatTarget';
@@ -31,9 +32,25 @@ export interface BrightPatchPass {
   selection: BrightSelection;
   /** Per surface index: the residual direct map (null: gather the direct map itself). */
   residual: (FloatTarget | null)[];
-  /** Per surface index: E from the bright patches at texel centres (null when there are none). */
+  /** Per surface index (then the objects' atlas, index 6, with objects): E from the bright patches at texel centres (null when there are none). */
   bright: (FloatTarget | null)[];
   dispose(): void;
+}
+
+/**
+ * A scene's objects as the bright-patch pass sees them: occluders between patches and receivers,
+ * and the atlas as one more receiver (shaders/occludedBrightGatherPass.glsl.ts). Patches are still
+ * taken from the room surfaces' direct maps only: the atlas's first bounce goes through the
+ * ordinary gather.
+ */
+export interface BrightPatchObjects {
+  bvhWidth: number;
+  atlasWidth: number;
+  atlasHeight: number;
+  uBvhNodes: WebGLTexture;
+  uBvhTriangles: WebGLTexture;
+  uPoints: WebGLTexture;
+  uNormals: WebGLTexture;
 }
 
 /**
@@ -52,6 +69,7 @@ export function runBrightPatchPass(
   compile: CompilePass,
   countRead: (bytes: number) => void,
   targets: Pick<TargetPool, 'acquire' | 'release'>,
+  objects: BrightPatchObjects | null = null,
 ): BrightPatchPass {
   const none: BrightPatchPass = {
     selection: { patches: [], peakedness: 1, residualPeakedness: 1 },
@@ -86,24 +104,37 @@ export function runBrightPatchPass(
     return out;
   });
 
-  // Exact gather from the bright patches at every texel centre of every surface.
-  const gather = compile(brightGatherPass, 'bright gather');
+  // Exact gather from the bright patches at every texel centre of every surface (and every covered atlas texel).
+  const frame = (layout: SurfaceLayout) => ({
+    uPatches: patchTexture,
+    uPatchCount: n,
+    uOrigin: layout.origin,
+    uAxisU: axisVector(layout.uAxisIndex, layout.lengthU),
+    uAxisV: axisVector(layout.vAxisIndex, layout.lengthV),
+    uNormal: layout.normal,
+    uResolution: [layout.width, layout.height] as const,
+    uSurface: layout.index,
+  });
+  const gather = objects ? null : compile(brightGatherPass, 'bright gather');
+  const occluded = objects ? compile(occludedBrightGatherPass(objects.bvhWidth), 'bright gather') : null;
+  const objectValues = objects
+    ? { uBvhNodes: objects.uBvhNodes, uBvhTriangles: objects.uBvhTriangles, uPoints: objects.uPoints, uNormals: objects.uNormals }
+    : null;
   const bright = layouts.map((layout): FloatTarget | null => {
     if (selection.patches.every((p) => p.surface === layout.index)) return null;
     const out = targets.acquire(layout.width, layout.height, false);
     made.push(out);
-    runPass(gl, gather, out, {
-      uPatches: patchTexture,
-      uPatchCount: n,
-      uOrigin: layout.origin,
-      uAxisU: axisVector(layout.uAxisIndex, layout.lengthU),
-      uAxisV: axisVector(layout.vAxisIndex, layout.lengthV),
-      uNormal: layout.normal,
-      uResolution: [layout.width, layout.height],
-      uSurface: layout.index,
-    });
+    if (occluded && objectValues) runPass(gl, occluded, out, { ...frame(layout), ...objectValues, uFromAtlas: 0 });
+    else runPass(gl, gather!, out, frame(layout));
     return out;
   });
+  if (occluded && objects && objectValues) {
+    const out = targets.acquire(objects.atlasWidth, objects.atlasHeight, false);
+    made.push(out);
+    // The frame uniforms are unused for the atlas (uFromAtlas = 1); uSurface −1 skips no patch.
+    runPass(gl, occluded, out, { ...frame(layouts[0]), uSurface: -1, ...objectValues, uFromAtlas: 1 });
+    bright.push(out);
+  }
 
   return {
     selection,

@@ -1,5 +1,8 @@
 import { SURFACE_NAMES, type SurfaceName, type Vec3 } from '../../core/model/lightingScene';
 import { blurPass } from '../../../shaders/blurPass.glsl';
+import { chartBlurPass } from '../../../shaders/chartBlurPass.glsl';
+import { chartDilatePass } from '../../../shaders/chartDilatePass.glsl';
+import { InputError } from '../../core/inputError';
 import { combinePass } from '../../../shaders/combinePass.glsl';
 import { combineTailPass } from '../../../shaders/combineTailPass.glsl';
 import type { BakedMaps } from './bakedMaps';
@@ -11,7 +14,7 @@ import { brightPatchOptions } from './brightPatchOptions';
 import { createBakeTimer } from './createBakeTimer';
 import { createBounceIteration, type BounceIteration } from './createBounceIteration';
 import { createPassCompiler } from './createPassCompiler';
-import { finalizeMaps, type FinalPasses } from './finalizeMaps';
+import { finalizeMaps, type FinalObjects, type FinalPasses } from './finalizeMaps';
 import { createFluxStatistics, type FluxRecord } from './fluxStatistics';
 import { startPrograms } from './glResources';
 import { clearTarget, readRgb, uploadRgb, type FloatTarget } from './floatTarget';
@@ -22,7 +25,11 @@ import { DATA_TEXTURE_WIDTH } from './profileTable';
 import { runBrightPatchPass } from './runBrightPatchPass';
 import { runPass } from './runPass';
 import { surfaceLayouts } from './surfaceLayout';
-import { acquireSurfaceTargets, releaseSurfaceTargets } from './surfaceTargets';
+import { acquireBounceTargets, acquireSurfaceTargets, releaseSurfaceTargets, type BounceTargets } from './surfaceTargets';
+import { objectReport, type ObjectReportEntry } from './objects/objectPassReport';
+import { uploadObjectPassInputs, type ObjectPassInputs } from './objects/objectPassInputs';
+import { prepareObjects } from './objects/prepareObjects';
+import type { PreparedObjects } from './objects/preparedObjects';
 import type { TargetPool } from './targetPool';
 
 /**
@@ -53,42 +60,108 @@ export function startBakeJob(
   const reflectance = SURFACE_NAMES.map((n) => toRgb(room.reflectance[n]));
   const layouts = surfaceLayouts(room, settings.texelSize, settings.maxTextureSize);
   const { table, lamps, pointSources } = prepareLamps(scene, settings);
+  // Objects (docs/baker.md, "Objects: passes"): none, or an empty list, is exactly the empty room.
+  const prepared = scene.objects && scene.objects.length > 0 && !directOverride ? prepareSceneObjects(scene, settings) : null;
   const dataTexture = table.layouts.length > 0 ? createDataTexture(gl, table.data, DATA_TEXTURE_WIDTH, table.rows) : null;
+  const objectInputs: ObjectPassInputs | null = prepared ? uploadObjectPassInputs(gl, prepared) : null;
 
   pool.nextJob();
   const surfaces = layouts.map((layout) => acquireSurfaceTargets(pool, layout));
-  const plan = planBakePasses(layouts, lamps, roomSize, reflectance, settings, directOverride);
+  const atlas = prepared?.atlas ?? null;
+  const atlasTargets: BounceTargets | null = atlas ? acquireBounceTargets(pool, atlas.width, atlas.height) : null;
+  const atlasShown = atlas ? { direct: pool.acquire(atlas.width, atlas.height), indirect: pool.acquire(atlas.width, atlas.height), total: pool.acquire(atlas.width, atlas.height) } : null;
+  // Every receiver the bounces run over: the six surfaces, then the atlas.
+  const receivers: BounceTargets[] = atlasTargets ? [...surfaces, atlasTargets] : surfaces;
+  const planObjects =
+    prepared && objectInputs
+      ? { bvhWidth: prepared.bvh.width, atlasWidth: prepared.atlas.width, atlasHeight: prepared.atlas.height, maxReflectance: objectInputs.maxReflectance }
+      : null;
+  const plan = planBakePasses(layouts, lamps, roomSize, reflectance, settings, directOverride, planObjects);
   startPrograms(gl, plan.sources);
+  const bvhSamplers = objectInputs ? { uBvhNodes: objectInputs.bvhNodes, uBvhTriangles: objectInputs.bvhTriangles } : {};
 
   const directSkipped: SurfaceName[] = [];
   timed('direct', () => {
     surfaces.forEach((st, s) => {
       const pass = plan.direct[s];
+      // With objects the pass also takes the BVH (generateShadowedDirectShader).
+      const values = { uProfiles: dataTexture!, ...bvhSamplers };
       if (directOverride) uploadRgb(gl, st.direct, directOverride[st.layout.name]);
-      else if (pass) runPass(gl, compile(pass, 'direct', st.layout.name), st.direct, { uProfiles: dataTexture! });
+      else if (pass) runPass(gl, compile(pass, 'direct', st.layout.name), st.direct, values);
       else {
         directSkipped.push(st.layout.name);
         clearTarget(gl, st.direct);
       }
     });
+    if (atlasTargets && objectInputs) {
+      if (plan.objectDirect) {
+        runPass(gl, compile(plan.objectDirect, 'direct objects'), atlasTargets.direct, {
+          uProfiles: dataTexture!,
+          uBvhNodes: objectInputs.bvhNodes,
+          uBvhTriangles: objectInputs.bvhTriangles,
+          uPoints: objectInputs.points,
+          uNormals: objectInputs.normals,
+        });
+      } else clearTarget(gl, atlasTargets.direct);
+    }
   });
 
   // Flux statistics per bounce (for the tail and the report) stay on the GPU: record 0 is the direct light, record k bounce k.
-  const statistics = createFluxStatistics(gl, pool, layouts, reflectance, settings.bounces + 1, countRead);
-  timed('blend', () => statistics.record(0, surfaces.map((st) => st.direct), 1));
+  const fluxObjects =
+    prepared && objectInputs
+      ? {
+          width: prepared.atlas.width,
+          height: prepared.atlas.height,
+          texelSize: prepared.atlas.texelSize,
+          points: objectInputs.points,
+          reflectance: objectInputs.reflectance,
+          maxReflectance: objectInputs.maxReflectance,
+        }
+      : null;
+  const statistics = createFluxStatistics(gl, pool, layouts, reflectance, settings.bounces + 1, countRead, fluxObjects);
+  timed('blend', () => statistics.record(0, receivers.map((st) => st.direct), 1));
   const passes: FinalPasses = {
     combineTail: plan.indirectEnabled ? compile(combineTailPass, 'combine') : null,
     combine: compile(combinePass, 'combine'),
     blur: plan.blur ? compile(blurPass, 'blur') : null,
   };
   const gather = plan.gather.map((pass, s) => compile(pass, 'gather', layouts[s].name));
+  if (plan.objectGather) gather.push(compile(plan.objectGather, 'gather objects'));
+  const objectSamplers = objectInputs
+    ? { uObjectRho: objectInputs.reflectance, uBvhNodes: objectInputs.bvhNodes, uBvhTriangles: objectInputs.bvhTriangles, uPoints: objectInputs.points, uNormals: objectInputs.normals }
+    : null;
+  const brightObjects =
+    prepared && objectInputs
+      ? {
+          bvhWidth: prepared.bvh.width,
+          atlasWidth: prepared.atlas.width,
+          atlasHeight: prepared.atlas.height,
+          uBvhNodes: objectInputs.bvhNodes,
+          uBvhTriangles: objectInputs.bvhTriangles,
+          uPoints: objectInputs.points,
+          uNormals: objectInputs.normals,
+        }
+      : null;
   // Bounce 1 from the brightest tiles of the direct maps, exactly (runBrightPatchPass.ts).
   const brightPass = plan.indirectEnabled
-    ? timed('direct', () => runBrightPatchPass(gl, layouts, reflectance, surfaces.map((st) => st.direct), brightPatchOptions(settings), compile, countRead, pool))
+    ? timed('direct', () =>
+        runBrightPatchPass(gl, layouts, reflectance, surfaces.map((st) => st.direct), brightPatchOptions(settings), compile, countRead, pool, brightObjects),
+      )
     : null;
   const bounces: BounceIteration | null = plan.indirectEnabled
-    ? createBounceIteration(gl, surfaces, { gather, combine: passes.combine }, statistics, brightPass, settings, timer)
+    ? createBounceIteration(gl, receivers, { gather, combine: passes.combine }, statistics, brightPass, settings, timer, objectSamplers)
     : null;
+  const finalObjects: FinalObjects | null =
+    atlasTargets && atlasShown && objectInputs
+      ? {
+          targets: atlasTargets,
+          chartBlur: plan.blur ? compile(chartBlurPass, 'blur objects') : null,
+          dilate: compile(chartDilatePass, 'dilate objects'),
+          charts: objectInputs.normals,
+          coverage: objectInputs.points,
+          shown: atlasShown,
+        }
+      : null;
 
   let finalized = false;
   const progress = (): BakeProgress => ({
@@ -103,12 +176,17 @@ export function startBakeJob(
     return progress();
   };
   const finalize = () => {
-    finalizeMaps(gl, surfaces, passes, bounces, statistics, settings, timer);
+    finalizeMaps(gl, receivers, passes, bounces, statistics, settings, timer, finalObjects);
     finalized = true;
   };
 
   let disposed = false;
   let records: FluxRecord[] | null = null;
+  let objectEntries: ObjectReportEntry[] | null = null;
+  const read = (t: FloatTarget) => {
+    countRead(t.width * t.height * 16);
+    return readRgb(gl, t);
+  };
   return {
     layouts,
     get progress() {
@@ -121,26 +199,33 @@ export function startBakeJob(
     },
     finalize,
     textures() {
-      return Object.fromEntries(
+      const textures = Object.fromEntries(
         surfaces.map((st) => [st.layout.name, { direct: st.direct.texture, indirect: st.indirect.texture, total: st.total.texture }]),
       ) as ReturnType<BakeJob['textures']>;
+      if (atlasShown) textures.objects = { direct: atlasShown.direct.texture, indirect: atlasShown.indirect.texture, total: atlasShown.total.texture };
+      return textures;
     },
     readMaps() {
       if (!finalized) finalize();
-      const read = (t: FloatTarget) => {
-        countRead(t.width * t.height * 16);
-        return readRgb(gl, t);
-      };
-      return timed('readback', () =>
-        Object.fromEntries(
+      return timed('readback', () => {
+        const maps = Object.fromEntries(
           surfaces.map((st) => [st.layout.name, { layout: st.layout, direct: read(st.direct), indirect: read(st.indirect), total: read(st.total) }]),
-        ) as unknown as BakedMaps,
-      );
+        ) as unknown as BakedMaps;
+        if (prepared && atlasShown) {
+          maps.objects = { atlas: prepared.atlas, direct: read(atlasShown.direct), indirect: read(atlasShown.indirect), total: read(atlasShown.total) };
+          objectEntries = objectReport(prepared, maps.objects.total);
+        }
+        return maps;
+      });
     },
     report() {
       const bouncesComputed = bounces?.bounce ?? 0;
       // One read-back of the stats row, only now (never between bounces).
       if (!records || records.length !== bouncesComputed + 1) records = timed('readback', () => statistics.read(bouncesComputed + 1));
+      if (prepared && atlasShown && !objectEntries) {
+        if (!finalized) finalize();
+        objectEntries = timed('readback', () => objectReport(prepared, read(atlasShown.total)));
+      }
       timings.total = performance.now() - t0;
       return bakeReport({
         settings,
@@ -156,15 +241,36 @@ export function startBakeJob(
         shaders,
         timings,
         readbacks,
+        ...(objectEntries ? { objects: objectEntries } : {}),
       });
     },
     dispose() {
       if (disposed) return;
       disposed = true;
-      for (const st of surfaces) releaseSurfaceTargets(pool, st);
+      for (const st of receivers) releaseSurfaceTargets(pool, st);
+      if (atlasShown) for (const t of Object.values(atlasShown)) pool.release(t);
+      objectInputs?.dispose();
       statistics.dispose();
       if (dataTexture) gl.deleteTexture(dataTexture);
       brightPass?.dispose();
     },
   };
+}
+
+/**
+ * The scene's objects prepared for the GPU (objects/prepareObjects.ts): the atlas at the bake's
+ * texel size (at most maxTextureSize per edge), after checking that every object lies inside the
+ * room (1 mm tolerance): the passes trace rays only inside the box.
+ */
+function prepareSceneObjects(scene: BakeScene, settings: BakeSettings): PreparedObjects {
+  const prepared = prepareObjects(scene.objects ?? [], { texelSize: settings.texelSize, maxAtlasSize: settings.maxTextureSize });
+  const size = [scene.room.width, scene.room.height, scene.room.depth];
+  prepared.objects.forEach((o, k) => {
+    const inside = [0, 1, 2].every((a) => o.bounds.min[a] >= -1e-3 && o.bounds.max[a] <= size[a] + 1e-3);
+    if (!inside) {
+      const fmt = (v: readonly number[]) => `(${v.map((x) => x.toFixed(3)).join(', ')})`;
+      throw new InputError(`object ${k + 1} ("${o.id}") reaches outside the room: its bounds ${fmt(o.bounds.min)}–${fmt(o.bounds.max)} m, the room 0–${fmt(size)} m`);
+    }
+  });
+  return prepared;
 }

@@ -3,9 +3,10 @@ import { createPingPong, type PingPong } from './pingPong';
 import type { SurfaceLayout } from './surfaceLayout';
 import type { TargetPool } from './targetPool';
 
-/** The render targets of one surface for one bake (all of its size, RGBA32F). */
-export interface SurfaceTargets {
-  layout: SurfaceLayout;
+/** The render targets of one receiver (a room surface or the objects' atlas) for one bake (all of its size, RGBA32F). */
+export interface BounceTargets {
+  width: number;
+  height: number;
   /** Direct illuminance E_0 (lux). */
   direct: FloatTarget;
   /** Running sum E_1 + … + E_k of the finished bounces. */
@@ -21,15 +22,21 @@ export interface SurfaceTargets {
   total: FloatTarget;
 }
 
+/** A room surface's targets. */
+export interface SurfaceTargets extends BounceTargets {
+  layout: SurfaceLayout;
+}
+
 /**
- * Targets for a surface from the pool. Only what is read before it is written
+ * Targets of a receiver from the pool. Only what is read before it is written
  * starts at zero: the first running sum and the first sample accumulator
  * (every clear is a render pass of its own).
  */
-export function acquireSurfaceTargets(pool: TargetPool, layout: SurfaceLayout): SurfaceTargets {
-  const target = (zero = false) => pool.acquire(layout.width, layout.height, zero);
+export function acquireBounceTargets(pool: TargetPool, width: number, height: number): BounceTargets {
+  const target = (zero = false) => pool.acquire(width, height, zero);
   return {
-    layout,
+    width,
+    height,
     direct: target(),
     sum: createPingPong(target(true), target()),
     samples: createPingPong(target(true), target()),
@@ -41,6 +48,10 @@ export function acquireSurfaceTargets(pool: TargetPool, layout: SurfaceLayout): 
   };
 }
 
-export function releaseSurfaceTargets(pool: TargetPool, t: SurfaceTargets): void {
+export function acquireSurfaceTargets(pool: TargetPool, layout: SurfaceLayout): SurfaceTargets {
+  return { layout, ...acquireBounceTargets(pool, layout.width, layout.height) };
+}
+
+export function releaseSurfaceTargets(pool: TargetPool, t: BounceTargets): void {
   for (const target of [t.direct, ...t.sum.targets, ...t.samples.targets, t.previous, t.raw, t.blurTemp, t.indirect, t.total]) pool.release(target);
 }
