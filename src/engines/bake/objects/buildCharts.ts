@@ -122,9 +122,9 @@ export function buildCharts(tris: WorldTriangles): Chart[] {
         const list = edges.get(edgeKey(vertexIds[3 * t + c], vertexIds[3 * t + ((c + 1) % 3)]));
         for (const o of list ?? []) {
           if (chartOf[o] >= 0 || tris.objectOfTriangle[o] !== object) continue;
-          if (dot(normalOf(o), ns) < cosMax) continue;
+          if (N[3 * o] * ns[0] + N[3 * o + 1] * ns[1] + N[3 * o + 2] * ns[2] < cosMax) continue;
           let flat = true;
-          for (let k = 0; k < 3 && flat; k++) flat = Math.abs(dot(ns, vertex(o, k)) - ds) <= CHART_MAX_OFFSET;
+          for (let k = 9 * o; k < 9 * o + 9 && flat; k += 3) flat = Math.abs(P[k] * ns[0] + P[k + 1] * ns[1] + P[k + 2] * ns[2] - ds) <= CHART_MAX_OFFSET;
           if (!flat) continue;
           chartOf[o] = id;
           members.push(o);

@@ -83,17 +83,17 @@ export function collectWorldTriangles(objects: readonly BakeObject[]): WorldTria
     const override = object.reflectance === undefined ? null : clampRgb(toRgb(object.reflectance));
     const materialRgb = mesh.materials.map((m) => clampRgb(toRgb(m.reflectance)));
     // Weld by exact world position: a mesh that repeats a corner per face (split normals) still
-    // has edge-connected faces for the chart builder.
-    const weld = new Map<string, number>();
-    const idOfVertex = new Int32Array(vertexCount).fill(-1);
-    const vertexId = (v: number): number => {
-      if (idOfVertex[v] >= 0) return idOfVertex[v];
-      const key = `${world[3 * v]},${world[3 * v + 1]},${world[3 * v + 2]}`;
-      let id = weld.get(key);
-      if (id === undefined) weld.set(key, (id = nextVertexId++));
-      idOfVertex[v] = id;
-      return id;
-    };
+    // has edge-connected faces for the chart builder. Sorting the vertices by position puts equal
+    // ones next to each other.
+    const order = Array.from({ length: vertexCount }, (_, v) => v).sort(
+      (a, b) => world[3 * a] - world[3 * b] || world[3 * a + 1] - world[3 * b + 1] || world[3 * a + 2] - world[3 * b + 2],
+    );
+    const idOfVertex = new Uint32Array(vertexCount);
+    order.forEach((v, i) => {
+      const u = order[i - 1];
+      const same = i > 0 && world[3 * u] === world[3 * v] && world[3 * u + 1] === world[3 * v + 1] && world[3 * u + 2] === world[3 * v + 2];
+      idOfVertex[v] = same ? idOfVertex[u] : nextVertexId++;
+    });
     const first = n;
     let area = 0;
     const min: [number, number, number] = [Infinity, Infinity, Infinity];
@@ -102,8 +102,8 @@ export function collectWorldTriangles(objects: readonly BakeObject[]): WorldTria
       const ia = mesh.indices[3 * t];
       const ib = mesh.indices[3 * t + 1];
       const ic = mesh.indices[3 * t + 2];
-      for (const v of [ia, ib, ic]) {
-        if (v >= vertexCount) throw new InputError(`${name}: triangle ${t} uses vertex ${v}, but the mesh has ${vertexCount} vertices`);
+      if (ia >= vertexCount || ib >= vertexCount || ic >= vertexCount) {
+        throw new InputError(`${name}: triangle ${t} uses vertex ${Math.max(ia, ib, ic)}, but the mesh has ${vertexCount} vertices`);
       }
       let rgb = override;
       if (!rgb) {
@@ -119,15 +119,16 @@ export function collectWorldTriangles(objects: readonly BakeObject[]): WorldTria
       const cz = e1x * e2y - e1y * e2x;
       const len = Math.hypot(cx, cy, cz);
       if (len / 2 < MIN_TRIANGLE_AREA) continue;
-      [ia, ib, ic].forEach((v, c) => {
+      for (let c = 0; c < 3; c++) {
+        const v = c === 0 ? ia : c === 1 ? ib : ic;
         for (let a = 0; a < 3; a++) {
           const x = world[3 * v + a];
           positions[9 * n + 3 * c + a] = x;
           if (x < min[a]) min[a] = x;
           if (x > max[a]) max[a] = x;
         }
-        vertexIds[3 * n + c] = vertexId(v);
-      });
+        vertexIds[3 * n + c] = idOfVertex[v];
+      }
       normals[3 * n] = cx / len;
       normals[3 * n + 1] = cy / len;
       normals[3 * n + 2] = cz / len;

@@ -10,8 +10,15 @@ export type Triangle2 = ArrayLike<number>;
 
 /** Area of triangle ∩ [x0, x0 + 1] × [y0, y0 + 1] (either winding). */
 export function overlapWithTexel(tri: Triangle2, x0: number, y0: number): number {
+  const minX = Math.min(tri[0], tri[2], tri[4]), maxX = Math.max(tri[0], tri[2], tri[4]);
+  const minY = Math.min(tri[1], tri[3], tri[5]), maxY = Math.max(tri[1], tri[3], tri[5]);
+  if (maxX <= x0 || minX >= x0 + 1 || maxY <= y0 || minY >= y0 + 1) return 0;
+  if (minX >= x0 && maxX <= x0 + 1 && minY >= y0 && maxY <= y0 + 1) {
+    // Wholly inside the texel (the common case for small triangles): no clipping.
+    return Math.abs((tri[2] - tri[0]) * (tri[5] - tri[1]) - (tri[4] - tri[0]) * (tri[3] - tri[1])) / 2;
+  }
   let poly: number[] = [tri[0], tri[1], tri[2], tri[3], tri[4], tri[5]];
-  // Clip against x ≥ x0, x ≤ x0+1, y ≥ y0, y ≤ y0+1 in turn.
+  // Clip against x ≥ x0, x ≤ x0+1, y ≥ y0, y ≤ y0+1 in turn: [axis, sign, limit] means sign·coordinate ≥ limit.
   const planes: [number, number, number][] = [
     [0, 1, x0],
     [0, -1, -(x0 + 1)],

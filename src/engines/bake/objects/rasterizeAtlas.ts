@@ -35,6 +35,19 @@ export function rasterizeAtlas(tris: WorldTriangles, charts: readonly Chart[], l
   const chartOfTriangle = new Uint32Array(tris.count);
   const texelCount = tris.objects.map(() => 0);
   const P = tris.positions;
+  // Scratch space for the largest chart, reused by every chart (many small charts: no garbage).
+  let maxTexels = 0;
+  let maxTriangles = 0;
+  charts.forEach((chart, c) => {
+    maxTexels = Math.max(maxTexels, layout.columns[c] * layout.rows[c]);
+    maxTriangles = Math.max(maxTriangles, chart.triangles.length);
+  });
+  const local = new Float64Array(maxTriangles * 6);
+  const boxes = new Float64Array(maxTriangles * 4);
+  const coverage = new Float64Array(maxTexels);
+  const owner = new Int32Array(maxTexels);
+  const weights = new Float64Array(maxTexels * 3);
+  const nearest = new Float64Array(maxTexels);
 
   charts.forEach((chart, c) => {
     const cols = layout.columns[c];
@@ -43,7 +56,6 @@ export function rasterizeAtlas(tris: WorldTriangles, charts: readonly Chart[], l
     const y0 = layout.y[c];
     const m = chart.triangles.length;
     // Chart triangles in chart-local texel units.
-    const local = new Float64Array(m * 6);
     for (let i = 0; i < m * 6; i++) local[i] = chart.uv[i] / s;
     chart.triangles.forEach((t, i) => {
       chartOfTriangle[t] = c;
@@ -52,13 +64,17 @@ export function rasterizeAtlas(tris: WorldTriangles, charts: readonly Chart[], l
         uvOfTriangle[6 * t + 2 * k + 1] = (y0 + local[6 * i + 2 * k + 1]) / height;
       }
     });
-    const coverage = new Float64Array(cols * rows);
-    const owner = new Int32Array(cols * rows).fill(-1);
-    const weights = new Float64Array(cols * rows * 3);
-    const box = (i: number): [number, number, number, number] => {
-      const tri = local.subarray(6 * i, 6 * i + 6);
-      return [Math.min(tri[0], tri[2], tri[4]), Math.min(tri[1], tri[3], tri[5]), Math.max(tri[0], tri[2], tri[4]), Math.max(tri[1], tri[3], tri[5])];
-    };
+    coverage.fill(0, 0, cols * rows);
+    owner.fill(-1, 0, cols * rows);
+    nearest.fill(Infinity, 0, cols * rows);
+    for (let i = 0; i < m; i++) {
+      const o = 6 * i;
+      boxes[4 * i] = Math.min(local[o], local[o + 2], local[o + 4]);
+      boxes[4 * i + 1] = Math.min(local[o + 1], local[o + 3], local[o + 5]);
+      boxes[4 * i + 2] = Math.max(local[o], local[o + 2], local[o + 4]);
+      boxes[4 * i + 3] = Math.max(local[o + 1], local[o + 3], local[o + 5]);
+    }
+    const box = (i: number): Float64Array => boxes.subarray(4 * i, 4 * i + 4);
     for (let i = 0; i < m; i++) {
       const tri = local.subarray(6 * i, 6 * i + 6);
       const [minX, minY, maxX, maxY] = box(i);
@@ -82,7 +98,6 @@ export function rasterizeAtlas(tris: WorldTriangles, charts: readonly Chart[], l
     // Covered texels whose centre lies outside the chart take the nearest point of the chart's
     // triangles. It lies within half a texel diagonal of the centre, so only triangles whose box
     // reaches within one texel qualify: one more sweep over the triangles' widened boxes.
-    const nearest = new Float64Array(cols * rows).fill(Infinity);
     let outside = 0;
     for (let k = 0; k < cols * rows; k++) if (coverage[k] > MIN_COVERAGE && owner[k] < 0) outside++;
     for (let i = 0; i < m && outside > 0; i++) {
