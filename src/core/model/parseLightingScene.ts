@@ -3,7 +3,8 @@
  * untrusted JSON: size and shape limits (untrustedJson.ts),
  * the version, structure and types with zod (strict: an unknown field is
  * refused, naming it, with a suggestion for a misspelling), then the physical
- * checks zod cannot express (a lamp inside the room). Every error is one line
+ * checks zod cannot express (a lamp inside the room; an object's mesh inside
+ * the room is checked once loaded, by resolveBakeScene). Every error is one line
  * naming the source and the field, e.g.
  * `scene.json: luminaires[2].position[1]: 3.1 m is above the ceiling (height 2.8 m)`.
  * Limits are in SCENE_LIMITS and docs/scene-format.md.
@@ -33,7 +34,14 @@ export const SCENE_LIMITS = {
   maxLuminaires: 10_000,
   /** Largest colour multiplier per channel (a linear RGB gain, typically ≤ 1). */
   maxColor: 100,
+  maxObjects: 1_000,
+  /** Uniform scale of an object's mesh (1 = the file's own metres). */
+  minObjectScale: 0.01,
+  maxObjectScale: 100,
 } as const;
+
+/** How far (metres) a placed mesh may reach beyond a room surface: a model resting on the floor may dip a few millimetres through it. */
+export const OBJECT_ROOM_TOLERANCE = 0.01;
 
 /** A value as the user wrote it (NaN stays NaN, not JSON's null), bounded in length. */
 const show = (value: unknown): string => excerpt(value);
@@ -52,11 +60,33 @@ const reflectance = z.union([reflectanceValue, z.tuple([reflectanceValue, reflec
 const vec3 = z.tuple([finite, finite, finite], { error: (i) => `must be [x, y, z] in metres, got ${show(i.input)}` });
 const angle = finite.optional();
 
+/** A mesh file luxbox reads, or the configurator's `object:<id>` (docs/scene-format.md, "Objects"). */
+const MESH_REFERENCE = /(\.(obj|gltf|glb)$)|(^object:)/i;
+
+const sceneObject = z.strictObject({
+  mesh: z
+    .string({ error: 'must be a path to an OBJ, glTF or GLB file' })
+    .min(1, 'must not be empty')
+    .refine((p) => MESH_REFERENCE.test(p), { error: (i) => `${show(i.input)} is not an .obj, .gltf or .glb file` }),
+  position: vec3,
+  yaw: angle,
+  scale: finite
+    .refine((v) => v >= SCENE_LIMITS.minObjectScale && v <= SCENE_LIMITS.maxObjectScale, {
+      error: (i) => `scale ${show(i.input)} is outside ${SCENE_LIMITS.minObjectScale}..${SCENE_LIMITS.maxObjectScale}`,
+    })
+    .optional(),
+  reflectance: reflectance.optional(),
+  id: z.string({ error: 'must be a string' }).optional(),
+}, { error: 'must be an object' });
+
 const schema = z.strictObject({
   version: z.union([z.literal(1), z.literal(2)]),
   nearField: z.enum(NEAR_FIELD_MODELS, { error: (i) => `must be "split" or "point", got ${show(i.input)}` }).optional(),
+  objects: z
+    .array(sceneObject, { error: 'must be an array' })
+    .max(SCENE_LIMITS.maxObjects, `more than ${SCENE_LIMITS.maxObjects} objects`)
+    .optional(),
   // Checked before zod (a clear "not baked yet"); only empty lists reach here.
-  objects: z.array(z.never()).optional(),
   windows: z.array(z.never()).optional(),
   room: z.strictObject({
     width: dimension,
@@ -106,7 +136,7 @@ function versionProblem(json: unknown): string | null {
   for (const field of V2_FIELDS) {
     if (v === 1 && field in doc) return `${field}: needs "version": 2 (this file says version 1)`;
   }
-  for (const field of ['objects', 'windows'] as const) {
+  for (const field of ['windows'] as const) {
     const list = doc[field];
     if (list === undefined) continue;
     if (!Array.isArray(list)) return `${field}: must be an array`;
@@ -127,7 +157,7 @@ export function parseLightingScene(json: unknown, source: string): LightingScene
     const described = describeIssues(result.error.issues, FIELD_NAMES);
     throw new LightingSceneError(`${source}: ${described.replace(/^\(root\): /, '')}`);
   }
-  const { version, nearField, room, luminaires } = result.data;
+  const { version, nearField, room, luminaires, objects } = result.data;
   const bounds = [room.width, room.height, room.depth];
   const names = [
     ['west wall (x = 0)', 'east wall (x = width %)'],
@@ -159,5 +189,18 @@ export function parseLightingScene(json: unknown, source: string): LightingScene
       ...(l.color !== undefined ? { color: l.color } : {}),
       ...(l.id !== undefined ? { id: l.id } : {}),
     })),
+    // Where a placed mesh lies is known only once it is loaded: resolveBakeScene checks it against the room.
+    ...(objects !== undefined
+      ? {
+          objects: objects.map((o) => ({
+            mesh: o.mesh,
+            position: o.position,
+            yaw: o.yaw ?? 0,
+            scale: o.scale ?? 1,
+            ...(o.reflectance !== undefined ? { reflectance: o.reflectance } : {}),
+            ...(o.id !== undefined ? { id: o.id } : {}),
+          })),
+        }
+      : {}),
   };
 }

@@ -1,20 +1,24 @@
 import { readFileSync, statSync } from 'node:fs';
 import { basename, dirname, resolve } from 'node:path';
 import type { BakeScene } from '../../engines/bake/bakeScene';
-import { LuminairePhotometryError, resolveBakeSceneSync } from '../../engines/bake/resolveBakeScene';
+import { LuminairePhotometryError, resolveBakeScene, resolveBakeSceneSync, SceneObjectError } from '../../engines/bake/resolveBakeScene';
+import type { ImportedMesh } from '../../engines/meshImport/importedMesh';
 import { LightingSceneError, parseLightingScene } from '../../core/model/parseLightingScene';
 import type { LightingScene } from '../../core/model/lightingScene';
 import { excerpt, INPUT_LIMITS, parseUntrustedJson } from '../../core/model/untrustedJson';
 import { PhotometryReadError } from '../../core/photometry/PhotometryReadError';
 import type { Photometry } from '../../core/photometry/types';
 import { createNodePhotometryLoader } from './createNodePhotometryLoader';
+import { createNodeMeshLoader } from './createNodeMeshLoader';
 
 export interface LoadedLightingScene {
   scene: LightingScene;
   /** Parsed photometry per resolved path (each file read once, however many luminaires share it). */
   photometries: Map<string, Photometry>;
-  /** Ready for the baker: photometry parsed, defaults filled in. */
+  /** Ready for the baker: photometry parsed, meshes loaded, defaults filled in. */
   bakeScene: BakeScene;
+  /** Each object mesh as imported (units, triangle count, warnings), by the path the scene gives. */
+  meshes: Map<string, ImportedMesh>;
 }
 
 /**
@@ -42,13 +46,47 @@ function readText(path: string, what: string): string {
 }
 
 /**
- * Read a lighting scene file and every photometric file it names. Photometry
- * paths are relative to the scene file's folder (absolute paths are kept).
+ * Read a lighting scene file and every photometric file it names, and its
+ * objects' meshes when they are OBJ files (synchronously; glTF models need
+ * loadLightingSceneFileAsync). Paths are relative to the scene file's folder
+ * (absolute paths are kept).
  */
 export function loadLightingSceneFile(path: string): LoadedLightingScene {
   const source = basename(path);
   const scene = parseLightingScene(parseJsonText(readText(path, source), source), source);
   return { scene, ...resolveSceneFiles(scene, dirname(resolve(path)), source) };
+}
+
+/** loadLightingSceneFile for every mesh format (OBJ, glTF, GLB): what `luxbox bake`, `probe` and `render` use. */
+export async function loadLightingSceneFileAsync(path: string): Promise<LoadedLightingScene> {
+  const source = basename(path);
+  const scene = parseLightingScene(parseJsonText(readText(path, source), source), source);
+  return { scene, ...(await resolveSceneFilesAsync(scene, dirname(resolve(path)), source)) };
+}
+
+/** A resolver failure as the one line the CLI prints: `<source>: luminaires[i].photometry: …` or `<source>: objects[i]…`. */
+function sceneFileError(error: unknown, source: string): unknown {
+  if (error instanceof SceneObjectError) return new LightingSceneError(`${source}: ${error.message}`);
+  if (!(error instanceof LuminairePhotometryError)) return error;
+  if (!(error.cause instanceof PhotometryReadError)) return error.cause;
+  return new LightingSceneError(`${source}: luminaires[${error.luminaire}].photometry: cannot read ${excerpt(error.path)} (${error.cause.reason})`);
+}
+
+function photometriesOf(scene: LightingScene, folder: string, bakeScene: BakeScene): Map<string, Photometry> {
+  return new Map(scene.luminaires.map((l, i) => [resolve(folder, l.photometry), bakeScene.luminaires[i].photometry]));
+}
+
+/** resolveSceneFiles for every mesh format (glTF is read asynchronously). */
+export async function resolveSceneFilesAsync(scene: LightingScene, folder: string, source: string): Promise<Omit<LoadedLightingScene, 'scene'>> {
+  const load = createNodePhotometryLoader();
+  const meshLoader = createNodeMeshLoader(folder);
+  let bakeScene: BakeScene;
+  try {
+    bakeScene = await resolveBakeScene(scene, (p) => load(resolve(folder, p)), meshLoader.load);
+  } catch (error) {
+    throw sceneFileError(error, source);
+  }
+  return { photometries: photometriesOf(scene, folder, bakeScene), bakeScene, meshes: meshLoader.imported };
 }
 
 /**
@@ -60,14 +98,12 @@ export function loadLightingSceneFile(path: string): LoadedLightingScene {
  */
 export function resolveSceneFiles(scene: LightingScene, folder: string, source: string): Omit<LoadedLightingScene, 'scene'> {
   const load = createNodePhotometryLoader();
+  const meshLoader = createNodeMeshLoader(folder);
   let bakeScene: BakeScene;
   try {
-    bakeScene = resolveBakeSceneSync(scene, (p) => load(resolve(folder, p)));
+    bakeScene = resolveBakeSceneSync(scene, (p) => load(resolve(folder, p)), meshLoader.loadSync);
   } catch (error) {
-    if (!(error instanceof LuminairePhotometryError)) throw error;
-    if (!(error.cause instanceof PhotometryReadError)) throw error.cause;
-    throw new LightingSceneError(`${source}: luminaires[${error.luminaire}].photometry: cannot read ${excerpt(error.path)} (${error.cause.reason})`);
+    throw sceneFileError(error, source);
   }
-  const photometries = new Map(scene.luminaires.map((l, i) => [resolve(folder, l.photometry), bakeScene.luminaires[i].photometry]));
-  return { photometries, bakeScene };
+  return { photometries: photometriesOf(scene, folder, bakeScene), bakeScene, meshes: meshLoader.imported };
 }
