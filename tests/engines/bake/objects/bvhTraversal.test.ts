@@ -3,8 +3,8 @@
  * against a brute-force double-precision Möller–Trumbore over every triangle, and against the CPU
  * ray caster that walks the same textures. Scene: three boxes (one yawed, one yawed and scaled) and
  * a 2000-triangle random soup; 2400 seeded rays, half of them aimed at a random point of a random
- * triangle so that most of them hit something, with finite and unbounded tMax and unnormalised
- * directions.
+ * triangle so that most of them hit something, one in eight along an axis, with finite and
+ * unbounded tMax and unnormalised directions.
  */
 import { describe, expect, it } from 'vitest';
 import { bvhTraversal } from '../../../../shaders/bvhTraversal.glsl';
@@ -37,7 +37,12 @@ function makeRays(): { origin: V3; dir: V3; tMax: number }[] {
   for (let r = 0; r < RAY_COUNT; r++) {
     const origin: V3 = [rng.next() * 4, rng.next() * 3, rng.next() * 5];
     let dir: V3;
-    if (r % 2 === 0) {
+    if (r % 8 === 7) {
+      // Along an axis: two direction components exactly 0 (the safe inverse direction).
+      const axis = rng.int(3);
+      dir = [0, 0, 0];
+      dir[axis] = (rng.chance(0.5) ? -1 : 1) * (0.5 + rng.next());
+    } else if (r % 2 === 0) {
       // Aim at a random point of a random triangle.
       const k = rng.int(brute.count);
       let a = rng.next(), b = rng.next();
@@ -107,6 +112,7 @@ describe('bvhTraversal on WebGL2', () => {
     // Enough of them hit, and enough miss or stop short.
     expect(clear.filter((r) => reference[r].hit).length).toBeGreaterThan(0.4 * RAY_COUNT);
     expect(clear.filter((r) => !reference[r].hit).length).toBeGreaterThan(0.1 * RAY_COUNT);
+    expect(clear.filter((r) => r % 8 === 7 && reference[r].hit).length).toBeGreaterThan(30);
   });
 
   it('closest hit: t within 1e-4 relative and the face agree with brute force on every clear ray', () => {
