@@ -11,15 +11,20 @@
 import { z } from 'zod';
 import { InputError } from '../inputError';
 import { DISTRIBUTIONS, type Catalog } from './catalogSchema';
-import { DEFAULT_REFLECTANCE, type Configuration } from './configuration';
+import { DEFAULT_REFLECTANCE, MESH_UNITS, WALL_NAMES, type Configuration, type ImportedMesh, type RoomObject } from './configuration';
+import { decodeMesh, encodeMesh } from './meshCodec';
+import { sourceName } from './objectGeometry';
 import { SURFACE_NAMES, type Reflectance, type SurfaceName } from './lightingScene';
 import { capReflectance } from './reflectance';
 import { describeIssues, excerpt, INPUT_LIMITS, jsonShapeProblem, oneLine, parseUntrustedJson, schemaFieldNames } from './untrustedJson';
 import { validate } from './validate';
 
 export const SCENE_FILE_FORMAT = 'luxbox-configuration';
-/** 2: modules may carry a DMX patch (`dmx`, docs/live-control.md); version 1 files are migrated on reading. */
-export const SCENE_FILE_VERSION = 2;
+/**
+ * 3: objects (furniture, imported models) and imported meshes (docs/model.md, "Objects").
+ * 2: modules may carry a DMX patch (`dmx`, docs/live-control.md). Older files are migrated on reading.
+ */
+export const SCENE_FILE_VERSION = 3;
 /** Share strings longer than this are refused before decoding (browsers cap URLs near 64k). */
 export const MAX_SHARE_STRING = 60_000;
 
@@ -83,6 +88,37 @@ const configurationSchema = z.strictObject({
       joints: z.array(z.strictObject({ connector: ref, turn: z.number() })),
     }),
   ),
+  // Version 3; optional so a hand-written file may leave them out (empty).
+  objects: z
+    .array(
+      z.strictObject({
+        id,
+        source: z.discriminatedUnion('kind', [z.strictObject({ kind: z.literal('library'), item: ref }), z.strictObject({ kind: z.literal('imported'), mesh: id })]),
+        placement: z.discriminatedUnion('on', [
+          z.strictObject({ on: z.literal('floor'), x: z.number(), z: z.number() }),
+          z.strictObject({ on: z.literal('wall'), wall: z.enum(WALL_NAMES), u: z.number(), y: z.number() }),
+        ]),
+        yaw: z.number(),
+        scale: z.number(),
+        // Material names and finish ids are checked against the mesh and the finish list by validate().
+        finishes: z.record(z.string().max(200), z.union([ref, z.tuple([z.number(), z.number(), z.number()])])),
+      }),
+    )
+    .optional(),
+  importedMeshes: z
+    .record(
+      id,
+      z.strictObject({
+        name: z.string().max(200),
+        units: z.enum(MESH_UNITS),
+        // base64 of the little-endian typed arrays (meshCodec.ts).
+        positions: z.string(),
+        indices: z.string(),
+        materialOfTriangle: z.string(),
+        materials: z.array(z.strictObject({ name: z.string().max(200), reflectance: z.tuple([z.number().min(0).lt(1), z.number().min(0).lt(1), z.number().min(0).lt(1)]) })),
+      }),
+    )
+    .optional(),
   nextId: z.number().int().positive(),
 });
 
@@ -107,7 +143,19 @@ export const migrations: Record<number, (doc: Record<string, unknown>) => Record
   1(doc) {
     const at = v1PatchField(doc.configuration);
     if (at) throw new SceneFileError(`configuration.${at}: needs "version": 2 (this file says version 1)`);
+    const c = doc.configuration;
+    for (const key of ['objects', 'importedMeshes']) {
+      if (typeof c === 'object' && c !== null && key in c) throw new SceneFileError(`configuration.${key}: needs "version": 3 (this file says version 1)`);
+    }
     return { ...doc, version: 2 };
+  },
+  // 2 → 3: version 3 added objects and imported meshes; a version 2 configuration has none.
+  2(doc) {
+    const c = doc.configuration;
+    for (const key of ['objects', 'importedMeshes']) {
+      if (typeof c === 'object' && c !== null && key in c) throw new SceneFileError(`configuration.${key}: needs "version": 3 (this file says version 2)`);
+    }
+    return { ...doc, version: 3 };
   },
 };
 
@@ -139,9 +187,16 @@ export function migrateSceneFile(doc: Record<string, unknown>): Record<string, u
 }
 
 export function toSceneFile(config: Configuration, catalog: Catalog): SceneFile {
-  if (config.objects.length > 0) throw new SceneFileError('objects cannot be saved by this scene file version yet');
-  const { room, systems, nextId } = config;
-  return { format: SCENE_FILE_FORMAT, version: SCENE_FILE_VERSION, catalog: catalog.id, configuration: { room, systems, nextId } as unknown as SceneFile['configuration'] };
+  const importedMeshes = Object.fromEntries(Object.entries(config.importedMeshes).map(([key, m]) => [key, { name: m.name, units: m.units, ...encodeMesh(m.mesh) }]));
+  // Left out when empty, so a configuration without objects reads the same as it did in version 2.
+  const configuration = {
+    room: config.room,
+    systems: config.systems,
+    ...(config.objects.length > 0 ? { objects: config.objects } : {}),
+    ...(Object.keys(importedMeshes).length > 0 ? { importedMeshes } : {}),
+    nextId: config.nextId,
+  };
+  return { format: SCENE_FILE_FORMAT, version: SCENE_FILE_VERSION, catalog: catalog.id, configuration: configuration as SceneFile['configuration'] };
 }
 
 /** Pretty JSON for saving to disk or the host page; `space` 0 for compact JSON (share links). */
@@ -181,17 +236,53 @@ export function configurationFromData(data: unknown, catalog: Catalog, source = 
   const r = fileSchema.safeParse(migrated);
   if (!r.success) throw new SceneFileError(`${source}: ${describeIssues(r.error.issues, FIELD_NAMES)}`);
   if (r.data.catalog !== catalog.id) throw new SceneFileError(`${source} was made for catalog ${excerpt(r.data.catalog).replace(/^"|"$/g, "'")}, but this configurator uses '${catalog.id}'`);
-  const config = normaliseRoom(r.data.configuration);
+  const config = normaliseRoom(r.data.configuration, source);
   const problems = validate(config, catalog, { firstOnly: true });
   if (problems.length > 0) throw new SceneFileError(`${source}: configuration.${problems[0].path}: ${problems[0].message}`);
   return config;
 }
 
-/** Fills left-out reflectances with DEFAULT_REFLECTANCE and caps legacy values above MAX_REFLECTANCE. */
-function normaliseRoom(data: SceneFile['configuration']): Configuration {
+/**
+ * Fills left-out reflectances with DEFAULT_REFLECTANCE, caps legacy values above MAX_REFLECTANCE,
+ * gives left-out objects and meshes their empty defaults and decodes the meshes' base64 arrays.
+ */
+function normaliseRoom(data: SceneFile['configuration'], source: string): Configuration {
   const given: Partial<Record<SurfaceName, Reflectance>> = data.room.reflectance ?? {};
   const reflectance = Object.fromEntries(SURFACE_NAMES.map((s) => [s, capReflectance(given[s] ?? DEFAULT_REFLECTANCE[s])])) as Record<SurfaceName, Reflectance>;
-  return { ...data, room: { ...data.room, reflectance }, objects: [], importedMeshes: {} } as Configuration;
+  const importedMeshes: Record<string, ImportedMesh> = {};
+  for (const [key, m] of Object.entries(data.importedMeshes ?? {})) {
+    const mesh = decodeMesh(m);
+    if ('problem' in mesh) throw new SceneFileError(`${source}: configuration.importedMeshes.${key}.${mesh.field}: ${mesh.problem}`);
+    importedMeshes[key] = { name: m.name, units: m.units, mesh };
+  }
+  const { objects, importedMeshes: _encoded, ...rest } = data;
+  return { ...rest, room: { ...data.room, reflectance }, objects: (objects ?? []) as RoomObject[], importedMeshes } as Configuration;
+}
+
+/** An object a share link leaves out (imported models are not in links: they can be megabytes). */
+export interface LeftOutObject {
+  readonly objectId: string;
+  /** The imported file's name ('kitchen.obj'). */
+  readonly name: string;
+}
+
+/** A share link's text and what it could not carry, with the sentence to show the user (null when complete). */
+export interface ShareLink {
+  readonly text: string;
+  readonly leftOut: readonly LeftOutObject[];
+  readonly notice: string | null;
+}
+
+/**
+ * The share string of a configuration: library objects travel in it, imported ones (and their
+ * meshes) are left out and listed, so the UI can tell the user — never silently dropped.
+ */
+export function encodeShareLink(config: Configuration, catalog: Catalog): ShareLink {
+  const leftOut: LeftOutObject[] = config.objects.filter((o) => o.source.kind === 'imported').map((o) => ({ objectId: o.id, name: sourceName(config, o.source) }));
+  const shared: Configuration = leftOut.length === 0 ? config : { ...config, objects: config.objects.filter((o) => o.source.kind !== 'imported'), importedMeshes: {} };
+  const names = [...new Set(leftOut.map((o) => `'${o.name}'`))];
+  const notice = names.length === 0 ? null : `the imported model${names.length > 1 ? 's' : ''} ${names.join(', ')} ${names.length > 1 ? 'are' : 'is'} not in the link; save the file to keep ${names.length > 1 ? 'them' : 'it'}`;
+  return { text: encodeShareBytes(serializeConfiguration(shared, catalog, 0)), leftOut, notice };
 }
 
 /**
@@ -199,7 +290,14 @@ function normaliseRoom(data: SceneFile['configuration']): Configuration {
  * share links. Links written with indented JSON (before issue 18) decode all the same.
  */
 export function encodeShareString(config: Configuration, catalog: Catalog): string {
-  const bytes = new TextEncoder().encode(serializeConfiguration(config, catalog, 0));
+  const link = encodeShareLink(config, catalog);
+  // Never silently incomplete: callers that can tell the user use encodeShareLink.
+  if (link.notice) throw new SceneFileError(link.notice);
+  return link.text;
+}
+
+function encodeShareBytes(json: string): string {
+  const bytes = new TextEncoder().encode(json);
   let bin = '';
   for (const b of bytes) bin += String.fromCharCode(b);
   return btoa(bin).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');

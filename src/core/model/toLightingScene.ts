@@ -1,5 +1,5 @@
 /**
- * The configuration as the baker's input (LightingScene v1, docs/scene-format.md): one
+ * The configuration as the baker's input (LightingScene v1, or v2 with objects, docs/scene-format.md): one
  * luminaire per module, at its photometric centre (plan centre of the module,
  * y = ceiling − suspension), turned so C0 runs along its rail (yaw = rail
  * heading) plus the optic's roll from the catalog, coloured by its CCT.
@@ -8,7 +8,11 @@ import { cctToLinearRgb } from '../photometry/cct';
 import { findBeam, findModuleType, type Catalog } from './catalogSchema';
 import type { Configuration } from './configuration';
 import { modulePlacements } from './geometry';
-import type { LightingLuminaire, LightingScene, Rgb } from './lightingScene';
+import type { LightingLuminaire, LightingObject, LightingScene, Rgb } from './lightingScene';
+import { objectPlacement } from './objectGeometry';
+
+/** The mesh reference of a configuration's object in its lighting scene; objectMesh(config, id) resolves it. */
+export const OBJECT_MESH_PREFIX = 'object:';
 
 export interface ToLightingSceneOptions {
   /** Prefix for the catalog's photometry paths (e.g. '../public/' when the scene file lives elsewhere). Default ''. */
@@ -37,5 +41,12 @@ export function toLightingScene(config: Configuration, catalog: Catalog, options
     }
   }
   const { width, depth, height, reflectance } = config.room;
-  return { version: 1, room: { width, height, depth, reflectance: { ...reflectance } }, luminaires };
+  const room = { width, height, depth, reflectance: { ...reflectance } };
+  if (config.objects.length === 0) return { version: 1, room, luminaires };
+  // Objects are a version 2 field (docs/scene-format.md); their finishes travel in the mesh (objectMesh), not as a reflectance override.
+  const objects: LightingObject[] = config.objects.map((o) => {
+    const { position, yaw, scale } = objectPlacement(o, config.room);
+    return { mesh: `${OBJECT_MESH_PREFIX}${o.id}`, position: [position[0], position[1], position[2]], yaw, scale, id: o.id };
+  });
+  return { version: 2, room, luminaires, objects };
 }

@@ -4,13 +4,13 @@ import { Globals } from '@react-spring/web';
 import { InputError } from '../../core/inputError';
 import { isActionName } from '../../core/model/actionDefinitions';
 import { billOfMaterials } from '../../core/model/billOfMaterials';
-import { configurationFromData, deserializeConfiguration, encodeShareString, serializeConfiguration } from '../../core/model/sceneFile';
+import { configurationFromData, deserializeConfiguration, encodeShareLink, serializeConfiguration } from '../../core/model/sceneFile';
 import { toLightingScene } from '../../core/model/toLightingScene';
 import { createConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import { Configurator } from '../../ui/app/Configurator';
 import { readLocal, writeLocal } from './localStore';
 import { SHARE_HASH_PREFIX, resolveStartup } from './startup';
-import { createUiStore } from '../../core/store/uiStore';
+import { createUiStore, showStatus } from '../../core/store/uiStore';
 import { createFootprintSource } from '../../ui/planner/footprintSource';
 import type { LuxboxInstance, LuxboxOptions } from './types';
 import { EmbedOptionsError, resolveCatalog } from './resolveCatalog';
@@ -79,7 +79,10 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
 
   const shareLink = () => {
     const base = typeof location === 'undefined' ? '' : location.origin + location.pathname + location.search;
-    return `${base}${SHARE_HASH_PREFIX}${encodeShareString(store.getState().config, catalog)}`;
+    // Imported models are not in links (they can be megabytes): say so instead of dropping them silently.
+    const link = encodeShareLink(store.getState().config, catalog);
+    if (link.notice) showStatus(ui, `Share link: ${link.notice}`);
+    return `${base}${SHARE_HASH_PREFIX}${link.text}`;
   };
 
   const footprints = createFootprintSource(options.assetBase ?? import.meta.env.BASE_URL);
