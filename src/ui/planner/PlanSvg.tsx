@@ -8,7 +8,10 @@ import { cctTint } from './cctTint';
 import { floorTint } from './finishColour';
 import { defaultSurfaceFinishes } from '../../core/catalog/surfaceFinishes';
 import { gridStep } from './detailLevel';
-import type { PlanView } from './viewTransform';
+import type { PlanPoint, PlanView } from './viewTransform';
+import { sourceName } from '../../core/model/objectGeometry';
+import { objectFillColour } from './objectColour';
+import { objectPolygons } from './objectShapes';
 import { hitStrip, moduleSymbol } from './planHitTest';
 import type { DragPreview } from './PlannerController';
 import type { SelectionPath } from './selection';
@@ -18,7 +21,7 @@ export interface PlanSvgProps {
   catalog: Catalog;
   view: PlanView;
   selection: SelectionPath;
-  /** A system being dragged is drawn offset by this much (metres) until it is dropped; faded where it may not be dropped. */
+  /** A system or object being dragged is drawn offset by this much (metres) until it is dropped; faded where it may not be dropped. */
   drag: DragPreview | null;
   /** Measured floor footprints per photometric file. */
   footprints: FootprintSource;
@@ -76,6 +79,49 @@ function SystemShape({ system, catalog, scale, selected, selectedRailId, selecte
   );
 }
 
+/** SVG path data for outline polygons (holes come out by the even-odd rule). */
+function outlinePath(polygons: readonly (readonly PlanPoint[])[]): string {
+  return polygons.map((poly) => `M${poly.map((p) => `${p.x},${p.z}`).join('L')}Z`).join('');
+}
+
+/**
+ * Furniture and imported models: each object's real outline seen from above, filled with its
+ * main finish at low opacity, drawn under the footprints and rails (the lights hang from the
+ * ceiling). Memoised on the configuration: a drag only moves the dragged object's group.
+ */
+const ObjectShapes = memo(function ObjectShapes({ config, selectedId, drag }: { config: Configuration; selectedId?: string; drag: DragPreview | null }) {
+  return (
+    <g data-testid="plan-objects">
+      {config.objects.map((o) => {
+        const dragged = drag && 'objectId' in drag && drag.objectId === o.id ? drag : null;
+        const selected = o.id === selectedId;
+        const fill = objectFillColour(config, o.id);
+        return (
+          <g
+            key={o.id}
+            data-object-id={o.id}
+            transform={dragged ? `translate(${dragged.delta.x} ${dragged.delta.z})` : undefined}
+            opacity={dragged?.invalid ? 0.4 : 1}
+            data-drop-refused={dragged?.invalid || undefined}
+            data-selected={selected || undefined}
+          >
+            <title>{sourceName(config, o.source)}</title>
+            <path
+              d={outlinePath(objectPolygons(config, o.id))}
+              fillRule="evenodd"
+              fill={fill}
+              fillOpacity={selected ? 0.55 : 0.35}
+              stroke={selected ? '#c0392b' : '#4a5160'}
+              strokeWidth={selected ? 2.5 : 1}
+              vectorEffect="non-scaling-stroke"
+            />
+          </g>
+        );
+      })}
+    </g>
+  );
+});
+
 /**
  * The room drawn from above as SVG (plan x = world x, plan y = world z). Geometry is drawn in
  * metres inside one group whose transform is the view, with non-scaling strokes, so lines keep
@@ -94,6 +140,7 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
       return p === null || footprints.get(p) !== undefined;
     })),
   );
+  const systemDrag = drag && 'systemId' in drag ? drag : null;
   const { width, depth, height } = config.room;
   const step = gridStep(view.scale);
   const gridLines: { x1: number; z1: number; x2: number; z2: number; major: boolean }[] = [];
@@ -101,7 +148,7 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
   for (let i = 1; i * step < depth - 1e-9; i++) gridLines.push({ x1: 0, z1: i * step, x2: width, z2: i * step, major: Math.abs(i * step - Math.round(i * step)) < 1e-9 });
 
   return (
-    <svg className="plan-svg" role="img" aria-label={`Room plan, ${width} by ${depth} m, ${config.systems.length} lighting systems`} data-testid="plan-svg" data-footprints={footprintsReady ? 'ready' : 'loading'}>
+    <svg className="plan-svg" role="img" aria-label={`Room plan, ${width} by ${depth} m, ${config.systems.length} lighting systems, ${config.objects.length} objects`} data-testid="plan-svg" data-footprints={footprintsReady ? 'ready' : 'loading'}>
       <defs>
         <clipPath id={clipId}>
           <rect x={0} y={0} width={width} height={depth} />
@@ -112,9 +159,10 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
         {gridLines.map((l, i) => (
           <line key={i} x1={l.x1} y1={l.z1} x2={l.x2} y2={l.z2} stroke={l.major ? '#d3d8e0' : '#eceff3'} strokeWidth={1} vectorEffect="non-scaling-stroke" />
         ))}
+        <ObjectShapes config={config} selectedId={selection.objectId} drag={drag} />
         <g clipPath={`url(#${clipId})`} pointerEvents="none">
           {config.systems.map((s) => {
-            const d = drag?.systemId === s.id ? drag.delta : { x: 0, z: 0 };
+            const d = systemDrag?.systemId === s.id ? systemDrag.delta : { x: 0, z: 0 };
             const h = height - s.suspension;
             return (
               <g key={s.id} transform={`translate(${d.x} ${d.z})`}>
@@ -153,8 +201,8 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
         </g>
         <rect x={0} y={0} width={width} height={depth} fill="none" stroke="#1d2330" strokeWidth={3} vectorEffect="non-scaling-stroke" />
         {config.systems.map((s) => {
-          const d = drag?.systemId === s.id ? drag.delta : { x: 0, z: 0 };
-          const refused = drag?.systemId === s.id && drag.invalid;
+          const d = systemDrag?.systemId === s.id ? systemDrag.delta : { x: 0, z: 0 };
+          const refused = systemDrag?.systemId === s.id && systemDrag.invalid;
           return (
             <g key={s.id} transform={`translate(${d.x} ${d.z})`} opacity={refused ? 0.4 : 1} data-drop-refused={refused || undefined}>
               <SystemShape

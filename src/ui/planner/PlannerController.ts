@@ -4,6 +4,11 @@ import { type UiStore, showStatus } from '../../core/store/uiStore';
 import { detailLevel } from './detailLevel';
 import { type KeyChord, findByChord } from './keyChord';
 import { type PlanHit, planHitTest } from './planHitTest';
+import type { ActionParams } from '../../core/model/actionDefinitions';
+import type { MeshUnits, ObjectPlacement } from '../../core/model/configuration';
+import { findFurnitureItem } from '../../core/model/furniture/furnitureLibrary';
+import type { TriangleMesh } from '../../core/mesh/triangleMesh';
+import { followableDelta, movedPlacement, wallPlacementNear } from './objectMoves';
 import { selectionPath } from './selection';
 import { type CommandContext, type PlannerCommand, PLANNER_COMMANDS, plannerCommand, runCommand } from './plannerCommands';
 import {
@@ -19,12 +24,11 @@ import {
   zoomAt,
 } from './viewTransform';
 
-/** A system being dragged: drawn offset by `delta` (metres) until dropped; `invalid` where it may not be dropped. */
-export interface DragPreview {
-  systemId: string;
-  delta: PlanPoint;
-  invalid: boolean;
-}
+/**
+ * A system or an object being dragged: drawn offset by `delta` (metres) until dropped; `invalid`
+ * where it may not be dropped. A wall item's delta is only the part along its wall.
+ */
+export type DragPreview = { systemId: string; delta: PlanPoint; invalid: boolean } | { objectId: string; delta: PlanPoint; invalid: boolean };
 
 /** What changed: the view (animated for buttons, wheel and keys; at once for fingers), or the drag preview. */
 export type PlannerEvent = { kind: 'view'; animate: boolean } | { kind: 'drag' };
@@ -38,10 +42,14 @@ export const DRAG_THRESHOLD_PX = 3;
 /** The plan's size until it is measured. */
 export const DEFAULT_VIEWPORT: Viewport = { width: 800, height: 600 };
 
+/** Dropped systems and objects land on whole centimetres, so the fields show clean numbers. */
+export const DROP_SNAP = 0.01;
+
 type Gesture =
   | { mode: 'pending'; down: ScreenPoint; hit: PlanHit }
   | { mode: 'pan'; last: ScreenPoint }
   | { mode: 'system'; id: string; down: ScreenPoint; startScale: number }
+  | { mode: 'object'; id: string; down: ScreenPoint; startScale: number }
   | { mode: 'pinch'; view: PlanView; world: PlanPoint; d0: number };
 
 /**
@@ -79,7 +87,7 @@ export class PlannerController implements CommandContext {
     return this.currentViewport;
   }
 
-  /** The system being dragged, while it is. */
+  /** The system or object being dragged, while it is. */
   get drag(): DragPreview | null {
     return this.dragPreview;
   }
@@ -211,6 +219,9 @@ export class PlannerController implements CommandContext {
       if (g.hit.systemId) {
         this.gesture = { mode: 'system', id: g.hit.systemId, down: g.down, startScale: this.view.scale };
         if (this.store.getState().selection?.id !== g.hit.systemId) this.store.getState().select({ kind: 'system', id: g.hit.systemId });
+      } else if (g.hit.objectId) {
+        this.gesture = { mode: 'object', id: g.hit.objectId, down: g.down, startScale: this.view.scale };
+        if (this.store.getState().selection?.id !== g.hit.objectId) this.store.getState().select({ kind: 'object', id: g.hit.objectId });
       } else {
         // The pan starts where the press became a drag, so the plan does not jump by the threshold.
         this.gesture = { mode: 'pan', last: at };
@@ -222,11 +233,17 @@ export class PlannerController implements CommandContext {
       this.setView(panBy(this.view, at.sx - cur.last.sx, at.sy - cur.last.sy), false);
       this.gesture = { mode: 'pan', last: at };
     } else if (cur?.mode === 'system') {
-      const delta = this.systemDelta(cur, at);
+      const delta = this.pointerDelta(cur, at);
       // Preview whether dropping here would be accepted (the model's isEnabled, live).
       const s = this.store.getState().config.systems.find((x) => x.id === cur.id);
       const invalid = !s || this.store.getState().isEnabled('moveSystem', { systemId: cur.id, x: s.x + delta.x, z: s.z + delta.z }) !== true;
       this.setDrag({ systemId: cur.id, delta, invalid });
+    } else if (cur?.mode === 'object') {
+      const o = this.store.getState().config.objects.find((x) => x.id === cur.id);
+      if (!o) return;
+      const delta = followableDelta(o.placement, this.pointerDelta(cur, at));
+      const invalid = this.store.getState().isEnabled('moveObject', { objectId: cur.id, placement: movedPlacement(o.placement, delta, DROP_SNAP) }) !== true;
+      this.setDrag({ objectId: cur.id, delta, invalid });
     }
   }
 
@@ -236,7 +253,8 @@ export class PlannerController implements CommandContext {
     const g = this.gesture;
     this.gesture = null;
     if (g?.mode === 'pending') this.tap(g.hit);
-    else if (g?.mode === 'system') this.drop(g.id, this.systemDelta(g, at));
+    else if (g?.mode === 'system') this.drop(g.id, this.pointerDelta(g, at));
+    else if (g?.mode === 'object') this.dropObject(g.id, this.pointerDelta(g, at));
   }
 
   /** The press was taken over (a second finger, the browser): a drag is dropped without moving anything. */
@@ -246,7 +264,7 @@ export class PlannerController implements CommandContext {
   }
 
   /** The pointer's movement since the press, in metres at the scale the drag started at: the grabbed point stays under it. */
-  private systemDelta(g: { down: ScreenPoint; startScale: number }, at: ScreenPoint): PlanPoint {
+  private pointerDelta(g: { down: ScreenPoint; startScale: number }, at: ScreenPoint): PlanPoint {
     return { x: (at.sx - g.down.sx) / g.startScale, z: (at.sy - g.down.sy) / g.startScale };
   }
 
@@ -260,12 +278,67 @@ export class PlannerController implements CommandContext {
     this.run('moveSystem', { systemId, x, z });
   }
 
+  /** One undoable moveObject to where the object was dropped (snapped to the centimetre), or snaps back and says why. */
+  private dropObject(objectId: string, delta: PlanPoint): void {
+    this.setDrag(null);
+    const o = this.store.getState().config.objects.find((x) => x.id === objectId);
+    if (!o) return;
+    const d = followableDelta(o.placement, delta);
+    if (d.x === 0 && d.z === 0) return;
+    this.run('moveObject', { objectId, placement: movedPlacement(o.placement, d, DROP_SNAP) });
+  }
+
+  /**
+   * Adds a furniture library item where it was dropped (`at`, plan pixels) or, tapped in the
+   * panel, at the middle of the visible plan; a wall item goes on the nearest wall at its
+   * hanging height. The model moves it to the nearest spot where it fits. The new object is
+   * selected. Returns the refusal, if any (also shown in the status line).
+   */
+  addLibraryItem(itemId: string, at?: ScreenPoint): string | null {
+    const item = findFurnitureItem(itemId);
+    if (!item) return this.refused(`no furniture item '${itemId}' in the library`);
+    const p = at ? this.insideRoom(screenToWorld(this.view, at)) : this.visibleCentre();
+    const { room } = this.store.getState().config;
+    const placement: ObjectPlacement = item.mount === 'wall' ? wallPlacementNear(room, p, Math.min(item.hangHeight ?? room.height / 2, room.height - item.height / 2)) : { on: 'floor', x: p.x, z: p.z };
+    return this.addObject({ source: { kind: 'library', item: itemId }, placement });
+  }
+
+  /** Adds an imported model (already read and converted to metres) at the middle of the visible plan and selects it. */
+  addImported(name: string, mesh: TriangleMesh, units: MeshUnits): string | null {
+    const c = this.visibleCentre();
+    return this.addObject({ source: { kind: 'import', name, mesh, units }, placement: { on: 'floor', x: c.x, z: c.z } });
+  }
+
+  private addObject(params: ActionParams<'addObject'>): string | null {
+    const r = this.store.getState().dispatch('addObject', params);
+    if (!r.ok) return this.refused(r.reason);
+    const objects = this.store.getState().config.objects;
+    this.store.getState().select({ kind: 'object', id: objects[objects.length - 1].id });
+    return null;
+  }
+
+  private refused(reason: string): string {
+    this.explain(reason);
+    return reason;
+  }
+
+  private insideRoom(p: PlanPoint): PlanPoint {
+    const { width, depth } = this.store.getState().config.room;
+    return { x: Math.min(width, Math.max(0, p.x)), z: Math.min(depth, Math.max(0, p.z)) };
+  }
+
+  /** The plan point at the middle of the plan, kept inside the room: where a tapped library item goes. */
+  visibleCentre(): PlanPoint {
+    return this.insideRoom(screenToWorld(this.view, { sx: this.viewport.width / 2, sy: this.viewport.height / 2 }));
+  }
+
   /**
    * Like the controls, what a tap selects follows the zoom level: whole systems when zoomed
    * out, rails and modules when zoomed in. A tap on the floor deselects.
    */
   tap(hit: PlanHit): void {
     const select = this.store.getState().select;
+    if (hit.objectId) return select({ kind: 'object', id: hit.objectId });
     if (!hit.systemId) return select(null);
     const zoomedIn = detailLevel(this.view.scale) === 'module';
     if (zoomedIn && hit.moduleId) select({ kind: 'module', id: hit.moduleId });

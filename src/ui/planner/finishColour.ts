@@ -17,6 +17,11 @@ function encodeSrgb(linear: number): number {
 
 const hex = (bytes: readonly number[]) => `#${bytes.map((b) => b.toString(16).padStart(2, '0')).join('')}`;
 
+/** '#rrggbb' showing a linear-RGB reflectance under white light (sRGB encoded). */
+export function rgbColour(linear: readonly [number, number, number]): string {
+  return hex(linear.map(encodeSrgb));
+}
+
 /** '#rrggbb' for a surface's reflectance. */
 export function finishColour(value: Reflectance, finishes: readonly SurfaceFinish[]): string {
   const f = matchFinish(finishes, value);

@@ -1,13 +1,16 @@
 import type { Catalog } from '../../core/model/catalogSchema';
 import type { Configuration } from '../../core/model/configuration';
 import { modulePlacements, systemElements, type PlanRect } from '../../core/model/geometry';
-import { type PlanView, type ScreenPoint, screenToWorld } from './viewTransform';
+import { objectPolygons } from './objectShapes';
+import { type PlanPoint, type PlanView, type ScreenPoint, screenToWorld } from './viewTransform';
 
 /** What is under a point of the plan (all undefined on empty floor or outside the room). */
 export interface PlanHit {
   systemId?: string;
   railId?: string;
   moduleId?: string;
+  /** A piece of furniture or an imported model (found only where no system is). */
+  objectId?: string;
 }
 
 /** Module symbols are drawn wider than the rail profile so they read as separate parts. */
@@ -34,10 +37,56 @@ function inside(r: PlanRect, x: number, z: number): boolean {
   return Math.abs(along) <= r.halfLength && Math.abs(across) <= r.halfWidth;
 }
 
+/** Objects closer than this to the pointer (outside their outline) still take a tap: a 3 cm picture on its wall stays tappable. */
+export const OBJECT_HIT_MARGIN_PX = 12;
+
+/** Whether (x, z) is inside a polygon (even-odd rule, the SVG default fill rule). */
+export function insidePolygon(poly: readonly PlanPoint[], x: number, z: number): boolean {
+  let inside = false;
+  for (let i = 0, j = poly.length - 1; i < poly.length; j = i++) {
+    const a = poly[i];
+    const b = poly[j];
+    if (a.z > z !== b.z > z && x < ((b.x - a.x) * (z - a.z)) / (b.z - a.z) + a.x) inside = !inside;
+  }
+  return inside;
+}
+
+/** Distance from (x, z) to a polygon's edges. */
+export function distanceToPolygon(poly: readonly PlanPoint[], x: number, z: number): number {
+  let best = Infinity;
+  for (let i = 0, j = poly.length - 1; i < poly.length; j = i++) {
+    const a = poly[j];
+    const b = poly[i];
+    const ex = b.x - a.x;
+    const ez = b.z - a.z;
+    const len2 = ex * ex + ez * ez;
+    const t = len2 > 0 ? Math.max(0, Math.min(1, ((x - a.x) * ex + (z - a.z) * ez) / len2)) : 0;
+    best = Math.min(best, Math.hypot(x - (a.x + t * ex), z - (a.z + t * ez)));
+  }
+  return best;
+}
+
+/**
+ * The object under a plan point, as PlanSvg stacks them (later objects above earlier ones):
+ * first one whose outline contains it, else the nearest within `margin` metres.
+ */
+export function objectAt(config: Configuration, x: number, z: number, margin: number): string | undefined {
+  const objects = [...config.objects].reverse();
+  const shapes = objects.map((o) => objectPolygons(config, o.id));
+  const inside = objects.findIndex((_, i) => shapes[i].some((p) => insidePolygon(p, x, z)));
+  if (inside >= 0) return objects[inside].id;
+  let best: { id: string; d: number } | undefined;
+  objects.forEach((o, i) => {
+    const d = Math.min(...shapes[i].map((p) => distanceToPolygon(p, x, z)));
+    if (d <= margin && (!best || d < best.d)) best = { id: o.id, d };
+  });
+  return best?.id;
+}
+
 /**
  * The plan element under a screen point, found the way the drawn SVG stacks them (PlanSvg):
  * later systems above earlier ones; inside a system the module symbols on top, then the
- * visible rails and connectors, then the wide hit strips. Elements alternate rail, connector,
+ * visible rails and connectors, then the wide hit strips; objects come last, under every system. Elements alternate rail, connector,
  * rail, … (systemElements' contract), so only even ones name a rail.
  */
 export function planHitTest(config: Configuration, catalog: Catalog, view: PlanView, point: ScreenPoint): PlanHit {
@@ -54,5 +103,7 @@ export function planHitTest(config: Configuration, catalog: Catalog, view: PlanV
       }
     }
   }
-  return {};
+  // Objects stand on the floor, drawn under the rails (the lights hang from the ceiling).
+  const objectId = objectAt(config, x, z, OBJECT_HIT_MARGIN_PX / view.scale);
+  return objectId ? { objectId } : {};
 }

@@ -3,6 +3,7 @@ import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore
 import type { UiStore } from '../../core/store/uiStore';
 import { deleteTarget } from './deleteTarget';
 import type { KeySpec } from './keyChord';
+import { followableDelta, movedPlacement } from './objectMoves';
 import { selectionPath } from './selection';
 
 /** What a command may use: the stores, the action runner and the view. The PlannerController provides it. */
@@ -37,6 +38,9 @@ export interface PlannerCommand {
 /** Degrees the rotate command (button and R) turns a system: a quarter turn, counterclockwise. */
 export const ROTATE_STEP = 90;
 
+/** Degrees the rotate command (button and R), and [ / ] for anything, turn furniture: fine enough to line a sofa up with a rail. */
+export const OBJECT_ROTATE_STEP = 15;
+
 /**
  * Zoom factor of one zoom-in (button or +) step; zoom-out divides by it. 1.5 is what the
  * zoom buttons have always used: e2e/helpers.ts `zoomToModuleLevel` clicks it and the golden
@@ -53,6 +57,12 @@ function selectedSystem(c: CommandContext) {
   const { config, selection } = c.store.getState();
   const id = selectionPath(config, selection).systemId;
   return config.systems.find((s) => s.id === id);
+}
+
+function selectedObject(c: CommandContext) {
+  const { config, selection } = c.store.getState();
+  const id = selectionPath(config, selection).objectId;
+  return config.objects.find((o) => o.id === id);
 }
 
 /** The model's reason an action may not run now, null when it may. */
@@ -82,43 +92,66 @@ function deleteCommand(): PlannerCommand {
   };
 }
 
-function rotateCommand(id: string, label: string, keys: KeySpec[], by: number): PlannerCommand {
+/**
+ * Turns the selected system by `systemBy` or the selected object by `objectBy` degrees
+ * (counterclockwise seen from above positive), as the model's rotateSystem / rotateObject.
+ */
+function rotateCommand(id: string, label: string, keys: KeySpec[], systemBy: number, objectBy: number): PlannerCommand {
+  const target = (c: CommandContext): { name: ActionName; params: Record<string, unknown> } | null => {
+    const o = selectedObject(c);
+    if (o) return { name: 'rotateObject', params: { objectId: o.id, by: objectBy } };
+    const s = selectedSystem(c);
+    return s ? { name: 'rotateSystem', params: { systemId: s.id, by: systemBy } } : null;
+  };
   return {
     id,
     label,
     keys,
     disabledReason: (c) => {
-      const s = selectedSystem(c);
-      return s ? refusal(c, 'rotateSystem', { systemId: s.id, by }) : 'select a system first';
+      const t = target(c);
+      return t ? refusal(c, t.name, t.params) : 'select a system or an object first';
     },
     action: (c) => {
-      const s = selectedSystem(c);
-      if (s) c.run('rotateSystem', { systemId: s.id, by });
+      const t = target(c);
+      if (t) c.run(t.name, t.params);
     },
   };
 }
 
-/** Where an arrow step puts the selected system, rounded to the millimetre so repeated steps do not gather float noise. */
-function stepped(c: CommandContext, dx: number, dz: number) {
+/**
+ * Where an arrow step puts the selection, rounded to the millimetre so repeated steps do not
+ * gather float noise: the system, or the object (a wall item only along its wall; an arrow
+ * across the wall is refused with the reason).
+ */
+function stepped(c: CommandContext, dx: number, dz: number): { name: ActionName; params: Record<string, unknown> } | { reason: string } {
+  const o = selectedObject(c);
+  if (o) {
+    const d = followableDelta(o.placement, { x: dx, z: dz });
+    if (d.x === 0 && d.z === 0) return { reason: 'a wall item slides along its wall: use the arrows along it' };
+    return { name: 'moveObject', params: { objectId: o.id, placement: movedPlacement(o.placement, d, KEY_SNAP) } };
+  }
   const s = selectedSystem(c);
-  if (!s) return null;
+  if (!s) return { reason: 'select a system or an object first' };
   const round = (v: number) => Math.round(v * 1000) / 1000;
-  return { systemId: s.id, x: dx ? round(s.x + dx) : s.x, z: dz ? round(s.z + dz) : s.z };
+  return { name: 'moveSystem', params: { systemId: s.id, x: dx ? round(s.x + dx) : s.x, z: dz ? round(s.z + dz) : s.z } };
 }
+
+/** Arrow-key positions are rounded to this (metres). */
+const KEY_SNAP = 0.001;
 
 function moveCommand(key: string, dx: number, dz: number, fine: boolean): PlannerCommand {
   const step = fine ? KEY_MOVE_STEP / 10 : KEY_MOVE_STEP;
   return {
     id: `move-${key}${fine ? '-fine' : ''}`,
-    label: `Move the system ${step} m ${key.replace('Arrow', '').toLowerCase()}`,
+    label: `Move the selection ${step} m ${key.replace('Arrow', '').toLowerCase()}`,
     keys: [fine ? `Shift+${key}` : key],
     disabledReason: (c) => {
-      const p = stepped(c, dx * step, dz * step);
-      return p ? refusal(c, 'moveSystem', p) : 'select a system first';
+      const t = stepped(c, dx * step, dz * step);
+      return 'reason' in t ? t.reason : refusal(c, t.name, t.params);
     },
     action: (c) => {
-      const p = stepped(c, dx * step, dz * step);
-      if (p) c.run('moveSystem', p);
+      const t = stepped(c, dx * step, dz * step);
+      if (!('reason' in t)) c.run(t.name, t.params);
     },
   };
 }
@@ -151,14 +184,19 @@ export const PLANNER_COMMANDS: readonly PlannerCommand[] = [
   deleteCommand(),
   {
     id: 'select-next',
-    label: 'Select next system',
+    label: 'Select next system or object',
     keys: [],
-    disabledReason: (c) => (c.store.getState().config.systems.length === 0 ? 'place a preset first' : null),
+    disabledReason: (c) => {
+      const { systems, objects } = c.store.getState().config;
+      return systems.length + objects.length === 0 ? 'place a preset or a piece of furniture first' : null;
+    },
     action: (c) => {
+      // Systems first, then objects, round and round.
       const { config, selection } = c.store.getState();
-      const systems = config.systems;
-      const i = systems.findIndex((s) => s.id === selectionPath(config, selection).systemId);
-      c.store.getState().select({ kind: 'system', id: systems[(i + 1) % systems.length].id });
+      const all = [...config.systems.map((s) => ({ kind: 'system' as const, id: s.id })), ...config.objects.map((o) => ({ kind: 'object' as const, id: o.id }))];
+      const path = selectionPath(config, selection);
+      const i = all.findIndex((x) => x.id === (path.objectId ?? path.systemId));
+      c.store.getState().select(all[(i + 1) % all.length]);
     },
   },
   {
@@ -169,8 +207,10 @@ export const PLANNER_COMMANDS: readonly PlannerCommand[] = [
     pressed: (c) => c.ui.getState().optionsOpen,
     action: (c) => c.ui.setState((s) => ({ optionsOpen: !s.optionsOpen, panelOpen: !s.optionsOpen })),
   },
-  rotateCommand('rotate', 'Rotate', ['r'], ROTATE_STEP),
-  rotateCommand('rotate-back', 'Rotate back', ['Shift+r'], -ROTATE_STEP),
+  rotateCommand('rotate', 'Rotate', ['r'], ROTATE_STEP, OBJECT_ROTATE_STEP),
+  rotateCommand('rotate-back', 'Rotate back', ['Shift+r'], -ROTATE_STEP, -OBJECT_ROTATE_STEP),
+  rotateCommand('rotate-left-fine', `Rotate left ${OBJECT_ROTATE_STEP}°`, ['['], OBJECT_ROTATE_STEP, OBJECT_ROTATE_STEP),
+  rotateCommand('rotate-right-fine', `Rotate right ${OBJECT_ROTATE_STEP}°`, [']'], -OBJECT_ROTATE_STEP, -OBJECT_ROTATE_STEP),
   historyCommand('undo', 'Undo', ['Mod+z']),
   historyCommand('redo', 'Redo', ['Mod+Shift+z', 'Mod+y']),
   {

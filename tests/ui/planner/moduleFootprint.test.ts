@@ -62,6 +62,6 @@ describe('selectionPath and deleteTarget', () => {
     expect(deleteTarget(selectionPath(config, { kind: 'module', id: m.id }))).toEqual({ name: 'removeModule', params: { moduleId: m.id } });
     expect(deleteTarget(selectionPath(config, { kind: 'system', id: s.id }))).toEqual({ name: 'deleteSystem', params: { systemId: s.id } });
     expect(selectionPath(config, { kind: 'module', id: 'gone' })).toEqual({});
-    expect(deleteTarget({})).toEqual({ reason: 'select a system or a module first' });
+    expect(deleteTarget({})).toEqual({ reason: 'select a system, a module or an object first' });
   });
 });

@@ -37,7 +37,7 @@ describe('keys and buttons run the same commands', () => {
     const t = new TestPlanner();
     const s0 = t.system();
     expect(t.press('ArrowLeft')).toBe(true);
-    expect(t.status).toBe('select a system first');
+    expect(t.status).toBe('select a system or an object first');
     expect(t.config.systems[0]).toBe(s0);
 
     t.store.getState().select({ kind: 'system', id: s0.id });
@@ -65,10 +65,10 @@ describe('keys and buttons run the same commands', () => {
   it('a disabled command explains itself, by key or by button, and changes nothing', () => {
     const t = new TestPlanner(createConfiguration());
     for (const [id, key, reason] of [
-      ['delete', 'Backspace', 'select a system or a module first'],
+      ['delete', 'Backspace', 'select a system, a module or an object first'],
       ['undo', 'Mod+z', 'nothing to undo'],
       ['redo', 'Mod+y', 'nothing to redo'],
-      ['rotate', 'r', 'select a system first'],
+      ['rotate', 'r', 'select a system or an object first'],
     ] as const) {
       expect(plannerCommand(id).disabledReason(t.controller)).toBe(reason);
       t.ui.setState({ status: null });
@@ -78,7 +78,7 @@ describe('keys and buttons run the same commands', () => {
       t.controller.command(id);
       expect(t.status).toBe(reason);
     }
-    expect(plannerCommand('select-next').disabledReason(t.controller)).toBe('place a preset first');
+    expect(plannerCommand('select-next').disabledReason(t.controller)).toBe('place a preset or a piece of furniture first');
     expect(t.store.getState().canUndo).toBe(false);
   });
 
