@@ -83,15 +83,15 @@ void main() {
 `,
 );
 
-function runOnGpu(rays: { origin: V3; dir: V3; tMax: number }[]): Float32Array {
+function runOnGpu(rays: { origin: V3; dir: V3; tMax: number }[], bvh = prepared.bvh): Float32Array {
   const linear = requireFloatTargets(gl).linear;
   const data = new Float32Array(RAY_COUNT * 8);
   rays.forEach((ray, r) => {
     data.set([...ray.origin, ray.tMax, ...ray.dir, 0], 8 * r);
   });
   const rayTexture = createDataTexture(gl, data, 2 * RAYS_X, RAYS_Y, 4);
-  const nodes = createDataTexture(gl, prepared.bvh.nodes, prepared.bvh.width, prepared.bvh.nodesHeight, 4);
-  const triangles = createDataTexture(gl, prepared.bvh.triangles, prepared.bvh.width, prepared.bvh.trianglesHeight, 4);
+  const nodes = createDataTexture(gl, bvh.nodes, bvh.width, bvh.nodesHeight, 4);
+  const triangles = createDataTexture(gl, bvh.triangles, bvh.width, bvh.trianglesHeight, 4);
   const target = createFloatTarget(gl, RAYS_X, RAYS_Y, linear);
   runPass(gl, passProgram(gl, pass), target, { uNodes: nodes, uTriangles: triangles, uRays: rayTexture });
   return readRgba(gl, target);
@@ -156,5 +156,10 @@ describe('bvhTraversal on WebGL2', () => {
     }
     expect(wrong).toEqual([]);
     expect(compared).toBeGreaterThan(0.4 * RAY_COUNT);
+  });
+
+  it('an empty BVH (no objects) terminates and reports no hit', () => {
+    const empty = runOnGpu(rays, prepareObjects([], { texelSize: 0.1 }).bvh);
+    expect(Array.from({ length: RAY_COUNT }, (_, r) => empty[4 * r + 3]).every((flags) => flags === 0)).toBe(true);
   });
 });
