@@ -185,7 +185,12 @@ describe('objects in scene files and share links', () => {
     const read = (f: unknown) => () => deserializeConfiguration(JSON.stringify(f), catalog);
     expect(read({ ...file, version: 2 })).toThrow('scene file: configuration.objects: needs "version": 3 (this file says version 2)');
     expect(read({ ...file, version: 1 })).toThrow('scene file: configuration.objects: needs "version": 3 (this file says version 1)');
-    const edit = (f: (c: Record<string, any>) => void) => {
+    /** The parsed file's configuration, loosely typed: the edits below break it on purpose. */
+    interface Loose {
+      objects: { id: string; scael?: number; placement: { on: string; x?: number }; finishes: Record<string, unknown> }[];
+      importedMeshes: Record<string, { positions: string; indices: string; materialOfTriangle: string }>;
+    }
+    const edit = (f: (c: Loose) => void) => {
       const copy = JSON.parse(JSON.stringify(file));
       f(copy.configuration);
       return copy;
@@ -197,7 +202,7 @@ describe('objects in scene files and share links', () => {
     expect(read(edit((c) => (c.importedMeshes.i2.materialOfTriangle = 'AA==')))).toThrow(/configuration\.importedMeshes\.i2\.materialOfTriangle: holds 1 bytes, not a whole number of 2-byte values/);
     expect(read(edit((c) => (c.importedMeshes.i2.indices = 'AAAAAA==')))).toThrow(/configuration\.importedMeshes\.i2\.mesh: imported model 'kitchen.obj': indices hold 1 numbers/);
     expect(read(edit((c) => (c.objects[1].placement.x = -1)))).toThrow(/configuration\.objects\[1\]\.placement: kitchen.obj o3 passes through the west wall/);
-    expect(read(edit((c) => (c.objects = c.objects.filter((o: { id: string }) => o.id !== 'o3'))))).toThrow(/configuration\.importedMeshes\.i2: imported model 'kitchen.obj' \(i2\) is used by no object/);
+    expect(read(edit((c) => (c.objects = c.objects.filter((o) => o.id !== 'o3'))))).toThrow(/configuration\.importedMeshes\.i2: imported model 'kitchen.obj' \(i2\) is used by no object/);
   });
 
   it('share links carry library objects and report the imported ones they leave out', () => {
