@@ -3,14 +3,27 @@ import { InputError } from '../../core/inputError';
 import { parseBakeCli } from '../node/bakeCliOptions';
 import { batchFolderNames } from '../node/batchFolderNames';
 import { createSceneBaker } from '../node/bakeSceneFile';
-import { loadLightingSceneFile } from '../node/loadLightingSceneFile';
+import { loadLightingSceneFileAsync, type LoadedLightingScene } from '../node/loadLightingSceneFile';
 import { prepareGl } from '../node/prepareGl';
 import { sceneWarnings } from '../node/sceneWarnings';
-import { writeBakeOutput } from '../node/writeBakeOutput';
+import { writeBakeOutput, type SceneObjectsOutput } from '../node/writeBakeOutput';
 import { resolveBakeSettings } from '../../engines/bake/bakeSettings';
 
 export const bakeUsage =
   'bake <scene.json> [more.json …] --out <dir> [--samples N --bounces N --texel m --blur texels --seed N --no-tail --gl vulkan|glx|auto]';
+
+/** The scene's objects with their ids, mesh paths, triangle counts and units, for report.json and objects.json. */
+function objectsOutput(loaded: LoadedLightingScene): SceneObjectsOutput {
+  const objects = loaded.scene.objects ?? [];
+  return {
+    objects,
+    ids: (loaded.bakeScene.objects ?? []).map((o) => o.id),
+    sources: objects.map((o) => {
+      const imported = loaded.meshes.get(o.mesh);
+      return { mesh: o.mesh, triangles: imported?.triangleCount ?? 0, units: imported?.units ?? 'm' };
+    }),
+  };
+}
 
 /**
  * `luxbox bake`: one scene writes its files into --out (docs/scene-format.md);
@@ -27,7 +40,8 @@ export async function run(args: string[]): Promise<number> {
   const { exit, backend } = prepareGl(options['--gl']);
   if (exit !== null) return exit;
 
-  const loaded = positional.map((p) => loadLightingSceneFile(p));
+  const loaded: LoadedLightingScene[] = [];
+  for (const p of positional) loaded.push(await loadLightingSceneFileAsync(p));
   // Suspicious-but-readable photometry (docs/photometry.md, "Warnings"): in each
   // report.json, and once per line on stderr (nothing on stderr when there are none).
   const warnings = loaded.map((scene, i) => sceneWarnings(scene, positional[i]));
@@ -40,11 +54,18 @@ export async function run(args: string[]): Promise<number> {
       const before = sceneBaker.programCount();
       const { maps, report } = sceneBaker.bake(scene, settings);
       const compiled = sceneBaker.programCount() - before;
-      writeBakeOutput(folders[i], positional[i], maps, report, {
-        gl: backend,
-        batch: { index: i, of: positional.length, programsCompiled: compiled },
-        warnings: warnings[i],
-      });
+      writeBakeOutput(
+        folders[i],
+        positional[i],
+        maps,
+        report,
+        {
+          gl: backend,
+          batch: { index: i, of: positional.length, programsCompiled: compiled },
+          warnings: warnings[i],
+        },
+        objectsOutput(scene),
+      );
       process.stdout.write(
         `baked ${positional[i]} → ${folders[i]} (${report.totalTexels} texels, ${report.bouncesComputed} bounces, ${Math.round(report.timings_ms.total)} ms, ${compiled} programs compiled, gl ${backend})\n`,
       );

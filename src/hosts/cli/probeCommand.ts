@@ -4,25 +4,36 @@ import { z } from 'zod';
 import { InputError } from '../../core/inputError';
 import type { Vec3 } from '../../core/model/lightingScene';
 import { nearestSurface } from '../../engines/bake/nearestSurface';
-import { probeScene } from '../../engines/bake/probeMaps';
 import { parseBakeCli } from '../node/bakeCliOptions';
+import { createProbe } from '../node/createProbe';
 import { bakeLoadedScene } from '../node/bakeSceneFile';
 import { resolveBakeSettings } from '../../engines/bake/bakeSettings';
 import { prepareGl } from '../node/prepareGl';
-import { loadLightingSceneFile, parseJsonText } from '../node/loadLightingSceneFile';
+import { loadLightingSceneFileAsync, parseJsonText } from '../node/loadLightingSceneFile';
 import { describeIssues } from '../../core/model/untrustedJson';
 
-export const probeUsage = 'probe <scene.json> <points.json> [--samples N --bounces N --texel m --gl vulkan|glx|auto]';
+export const probeUsage = 'probe <scene.json> <points.json> [--samples N --bounces N --texel m --gl vulkan|glx|auto] (points [x, y, z] on a surface or [x, y, z, nx, ny, nz])';
 
-/** Probe points must lie on a surface, within this distance (metres). */
+/** Probe points must lie on a surface (or, with a normal, inside the room), within this distance (metres). */
 export const PROBE_TOLERANCE = 0.01;
 
+const finiteNumbers = (p: number[]) => p.every(Number.isFinite);
 // Strict (issue 18): an unknown or misspelt field is refused, not ignored.
 const pointsSchema = z.strictObject({
-  points: z.array(z.tuple([z.number(), z.number(), z.number()]).refine((p) => p.every(Number.isFinite), 'must be finite numbers')),
+  points: z.array(
+    z.union([z.tuple([z.number(), z.number(), z.number()]), z.tuple([z.number(), z.number(), z.number(), z.number(), z.number(), z.number()])], {
+      error: 'must be [x, y, z] (a point on a surface) or [x, y, z, nx, ny, nz] (a point and a normal)',
+    }).refine(finiteNumbers, 'must be finite numbers'),
+  ),
 });
 
-/** `luxbox probe`: bake, then print {total, direct, indirect} lux at the given surface points. */
+const AXES = ['x', 'y', 'z'];
+
+/**
+ * `luxbox probe`: bake, then print {total, direct, indirect} lux at the given points: `[x, y, z]`
+ * on a room surface, or `[x, y, z, nx, ny, nz]` on the plane with that normal anywhere in the room
+ * (docs/scene-format.md, "Probe points").
+ */
 export async function run(args: string[]): Promise<number> {
   const { positional, settings, options } = parseBakeCli('probe', args, ['--gl']);
   if (positional.length !== 2) throw new InputError(`expected a scene file and a points file (usage: luxbox ${probeUsage})`);
@@ -43,22 +54,35 @@ export async function run(args: string[]): Promise<number> {
     throw new InputError(`${source}: ${path ? `${path}: ` : ''}${issue.path.length ? issue.message : 'expected { "points": [[x, y, z], ...] }'}`);
   }
   resolveBakeSettings(settings);
-  const loaded = loadLightingSceneFile(scenePath);
+  const loaded = await loadLightingSceneFileAsync(scenePath);
   const room = loaded.scene.room;
-  const points = parsed.data.points as Vec3[];
-  points.forEach((p, i) => {
-    const { surface, distance } = nearestSurface(room, p);
-    if (distance > PROBE_TOLERANCE) {
-      throw new InputError(
-        `${source}: points[${i}]: [${p.join(', ')}] is ${distance.toPrecision(3)} m from the nearest surface (${surface}); probe points must lie within ${PROBE_TOLERANCE} m of a surface`,
-      );
+  const dims = [room.width, room.height, room.depth];
+  const points = parsed.data.points.map((p, i): { point: Vec3; normal?: Vec3 } => {
+    const point: Vec3 = [p[0], p[1], p[2]];
+    if (p.length === 3) {
+      const { surface, distance } = nearestSurface(room, point);
+      if (distance > PROBE_TOLERANCE) {
+        throw new InputError(
+          `${source}: points[${i}]: [${p.join(', ')}] is ${distance.toPrecision(3)} m from the nearest surface (${surface}); probe points must lie within ${PROBE_TOLERANCE} m of a surface`,
+        );
+      }
+      return { point };
     }
+    for (let a = 0; a < 3; a++) {
+      if (point[a] < -PROBE_TOLERANCE || point[a] > dims[a] + PROBE_TOLERANCE) {
+        throw new InputError(`${source}: points[${i}]: ${AXES[a]} = ${point[a]} m is outside the room (0..${dims[a]} m)`);
+      }
+    }
+    const length = Math.hypot(p[3], p[4], p[5]);
+    if (!(length > 1e-9)) throw new InputError(`${source}: points[${i}]: the normal [${p.slice(3).join(', ')}] has no direction`);
+    return { point, normal: [p[3] / length, p[4] / length, p[5] / length] };
   });
   const { exit } = prepareGl(options['--gl']);
   if (exit !== null) return exit;
   const { maps } = bakeLoadedScene(loaded, settings);
-  // Direct light exactly at each point (CPU), indirect from the maps.
-  const values = probeScene(loaded.bakeScene, maps, settings, points);
+  // Direct light exactly at each point (CPU, objects occluding); indirect from the maps, or gathered from them at a point with a normal.
+  const probe = createProbe(loaded.bakeScene, maps, settings);
+  const values = points.map(({ point, normal }) => (normal ? probe.atPlane(point, normal) : probe.atSurface(point)));
   const result = { total: values.map((v) => v.total), direct: values.map((v) => v.direct), indirect: values.map((v) => v.indirect) };
   process.stdout.write(JSON.stringify(result) + '\n');
   return 0;

@@ -43,8 +43,27 @@ export function summarizeSurfaces(maps: BakedMaps): Record<SurfaceName, SurfaceS
   return out;
 }
 
-/** report.json: the contract fields first, then the baker's own report. */
-export function reportJson(scenePath: string, maps: BakedMaps, report: BakeReport) {
-  const { settings, timings_ms, ...bake } = report;
-  return { scene: scenePath, surfaces: summarizeSurfaces(maps), timings_ms, settings, bake };
+/** What report.json says about an object's mesh besides the baker's statistics. */
+export interface ObjectSource {
+  /** The mesh path as the scene gives it. */
+  mesh: string;
+  triangles: number;
+  /** The unit the import applied ('m' for glTF, detected for OBJ). */
+  units: string;
+}
+
+/**
+ * report.json: the contract fields first, then the baker's own report. `objects` (scenes with
+ * objects) is the baker's per-object statistics, each with its mesh path, triangle count and units.
+ */
+export function reportJson(scenePath: string, maps: BakedMaps, report: BakeReport, sources: readonly ObjectSource[] = []) {
+  const { settings, timings_ms, objects, ...bake } = report;
+  return {
+    scene: scenePath,
+    surfaces: summarizeSurfaces(maps),
+    ...(objects ? { objects: objects.map((o, i) => ({ ...o, ...(sources[i] ?? {}) })) } : {}),
+    timings_ms,
+    settings,
+    bake,
+  };
 }

@@ -11,7 +11,9 @@ function shownName(path: string): string {
 /**
  * The photometry warnings of a loaded scene (docs/photometry.md, "Warnings"),
  * one line each, `<file>: <warning>`, the file named as the scene names it;
- * each file once, in the order the luminaires first use it. For report.json's
+ * each file once, in the order the luminaires first use it; then the mesh
+ * import warnings (docs/scene-format.md, "Objects"; they name their file), each
+ * mesh once, in the order the objects first use it. For report.json's
  * `warnings` and the CLI's stderr.
  */
 export function sceneWarnings(loaded: LoadedLightingScene, scenePath: string): string[] {
@@ -26,5 +28,6 @@ export function sceneWarnings(loaded: LoadedLightingScene, scenePath: string): s
     if (!ph) continue;
     for (const w of photometryWarnings(ph)) lines.push(`${shownName(l.photometry)}: ${w}`);
   }
+  for (const imported of loaded.meshes.values()) for (const w of imported.warnings) lines.push(w);
   return lines;
 }

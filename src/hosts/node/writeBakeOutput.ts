@@ -4,16 +4,33 @@ import { InputError } from '../../core/inputError';
 import { SURFACE_NAMES } from '../../core/model/lightingScene';
 import { luxOf, type BakedMaps } from '../../engines/bake/bakedMaps';
 import type { BakeReport } from '../../engines/bake/createBaker';
-import { reportJson } from './bakeSummary';
+import { reportJson, type ObjectSource } from './bakeSummary';
+import type { LightingObject } from '../../core/model/lightingScene';
+import { writeObjectMaps } from './writeObjectMaps';
 import { falseColorPng } from './falseColorPng';
 import { writePfm } from './writePfm';
+
+/** The scene's objects as report.json and objects.json name them. */
+export interface SceneObjectsOutput {
+  objects: readonly LightingObject[];
+  ids: readonly string[];
+  sources: readonly ObjectSource[];
+}
 
 /**
  * What `luxbox bake` writes for one scene (docs/scene-format.md, "Command-line contract"): report.json,
  * per surface <name>.direct/.indirect/.total.pfm (RGB lux) and <name>.png
- * (false colour of total lux, one scale for all six).
+ * (false colour of total lux, one scale for all six), and with objects the atlas's
+ * objects.direct/.indirect/.total.pfm, objects.png, objects.mask.pfm and objects.json.
  */
-export function writeBakeOutput(out: string, scenePath: string, maps: BakedMaps, report: BakeReport, extra: Record<string, unknown> = {}): void {
+export function writeBakeOutput(
+  out: string,
+  scenePath: string,
+  maps: BakedMaps,
+  report: BakeReport,
+  extra: Record<string, unknown> = {},
+  objects: SceneObjectsOutput = { objects: [], ids: [], sources: [] },
+): void {
   const started = performance.now();
   try {
     mkdirSync(out, { recursive: true });
@@ -32,7 +49,8 @@ export function writeBakeOutput(out: string, scenePath: string, maps: BakedMaps,
     writePfm(join(out, `${name}.total.pfm`), width, height, m.total);
     writeFileSync(join(out, `${name}.png`), falseColorPng(luxOf(m.total), width, height, scaleMax));
   }
-  const json = reportJson(scenePath, maps, report);
+  if (maps.objects) writeObjectMaps(out, maps.objects, objects.objects, objects.ids, scaleMax);
+  const json = reportJson(scenePath, maps, report, objects.sources);
   json.timings_ms = { ...json.timings_ms, write: performance.now() - started } as typeof json.timings_ms;
   writeFileSync(join(out, 'report.json'), JSON.stringify({ ...json, ...extra, png_scale_max_lux: scaleMax }, null, 2) + '\n');
 }

@@ -15,6 +15,15 @@ export function encodePfm(width: number, height: number, rgb: Float32Array): Buf
   return Buffer.concat([header, body]);
 }
 
+/** Portable float map, grey ("Pf"): one float32 per texel, same layout and header rules as encodePfm. */
+export function encodePfmGrey(width: number, height: number, values: Float32Array): Buffer {
+  if (values.length !== width * height) throw new Error(`PFM: ${values.length} floats for ${width}×${height} grey`);
+  const header = Buffer.from(`Pf\n${width} ${height}\n-1.0\n`, 'ascii');
+  const body = Buffer.alloc(values.length * 4);
+  for (let i = 0; i < values.length; i++) body.writeFloatLE(values[i], i * 4);
+  return Buffer.concat([header, body]);
+}
+
 export function writePfm(path: string, width: number, height: number, rgb: Float32Array): void {
   writeFileSync(path, encodePfm(width, height, rgb));
 }

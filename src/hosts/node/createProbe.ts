@@ -1,0 +1,167 @@
+import type { Rgb, SurfaceName, Vec3 } from '../../core/model/lightingScene';
+import { LUMINANCE_WEIGHTS, type BakedMaps } from '../../engines/bake/bakedMaps';
+import { toRgb, type BakeScene } from '../../engines/bake/bakeScene';
+import { resolveBakeSettings, type BakeSettings } from '../../engines/bake/bakeSettings';
+import { bilinearLux, bilinearRgb } from '../../engines/bake/bilinearMap';
+import { directAtPoint } from '../../engines/bake/directAtPoint';
+import { nearestSurface } from '../../engines/bake/nearestSurface';
+import { createObjectRayCaster, type ObjectRayCaster } from '../../engines/bake/objects/createObjectRayCaster';
+import { prepareObjects } from '../../engines/bake/objects/prepareObjects';
+import { scenePointSources, type LampSources } from '../../engines/bake/scenePointSources';
+
+/** Rays of the indirect gather at a point with a normal (a 64 × 64 stratified grid). */
+export const PROBE_GATHER_RAYS = 4096;
+/** Seed of the gather's jitter: the same numbers on every run and machine. */
+export const PROBE_GATHER_SEED = 0x1ab0c5;
+/** Shadow and gather rays start this far off the surface (metres), clear of its own triangles. */
+const RAY_OFFSET = 1e-4;
+
+export interface ProbeResult {
+  /** The room surface of a surface point; absent for a point with a normal. */
+  surface?: SurfaceName;
+  direct: number;
+  indirect: number;
+  total: number;
+}
+
+export interface Probe {
+  /** A point on a room surface (within 1 cm): direct exactly at the point (objects occluding), indirect from the surface's maps. */
+  atSurface(point: Vec3): ProbeResult;
+  /** Illuminance on the plane through `point` with unit normal `normal`, anywhere in the room: direct with occlusion, indirect by a CPU gather over the baked maps. */
+  atPlane(point: Vec3, normal: Vec3): ProbeResult;
+}
+
+const lux = (rgb: Rgb): number => LUMINANCE_WEIGHTS[0] * rgb[0] + LUMINANCE_WEIGHTS[1] * rgb[1] + LUMINANCE_WEIGHTS[2] * rgb[2];
+
+/** mulberry32 (Tommy Ettinger's 32-bit generator): small and identical everywhere. */
+function mulberry32(seed: number): () => number {
+  let a = seed >>> 0;
+  return () => {
+    a = (a + 0x6d2b79f5) >>> 0;
+    let t = a;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}
+
+/**
+ * `luxbox probe` after a bake (docs/scene-format.md, "Probe points"). Direct light is
+ * directAtPoint's E = Σ I·cos/d² over the bake's point sources (CIE 171:2006 §5.2), each source
+ * kept only if a shadow ray from the point reaches it past every object (the CPU twin of the GPU
+ * BVH, createObjectRayCaster, over the same prepared objects as the bake). Indirect light at a
+ * point with a normal is a gather: cosine-weighted rays (pdf cos θ/π), each taking the light that
+ * leaves the first surface it meets, L = ρ·E_total/π, from the baked total map of that wall or
+ * atlas texel (the back of an object's face is dark), so E_indirect = π·mean(L) = mean(ρ·E_total)
+ * (Pharr, Jakob & Humphreys, Physically Based Rendering, 4th ed., §13.6.3, cosine-weighted
+ * hemisphere sampling).
+ */
+export function createProbe(scene: BakeScene, maps: BakedMaps, settingsIn: Partial<BakeSettings>): Probe {
+  const settings = resolveBakeSettings(settingsIn);
+  const lamps = scenePointSources(scene, settings);
+  const room = scene.room;
+  const dims: Vec3 = [room.width, room.height, room.depth];
+  let caster: ObjectRayCaster | null = null;
+  if (scene.objects && scene.objects.length > 0) {
+    // The bake prepared the same objects with the same settings (startBakeJob): the atlas is the maps' atlas.
+    const prepared = prepareObjects(scene.objects, { texelSize: settings.texelSize, maxAtlasSize: settings.maxTextureSize });
+    const atlas = maps.objects?.atlas;
+    if (!atlas || atlas.width !== prepared.atlas.width || atlas.height !== prepared.atlas.height) {
+      throw new Error(`probe: the bake's object atlas (${atlas ? `${atlas.width}×${atlas.height}` : 'none'}) is not the one prepared here (${prepared.atlas.width}×${prepared.atlas.height})`);
+    }
+    caster = createObjectRayCaster(prepared);
+  }
+
+  /** The lamps with only the point sources that `p` sees (all of them in an empty room). */
+  const visibleFrom = (p: Vec3, n: Vec3): readonly LampSources[] => {
+    if (!caster) return lamps;
+    const o: Vec3 = [p[0] + n[0] * RAY_OFFSET, p[1] + n[1] * RAY_OFFSET, p[2] + n[2] * RAY_OFFSET];
+    return lamps.map((lamp) => {
+      const keep = lamp.sources.map((s) => {
+        const d: Vec3 = [s[0] - o[0], s[1] - o[1], s[2] - o[2]];
+        const dist = Math.hypot(d[0], d[1], d[2]);
+        if (!(dist > 0)) return true;
+        return !caster!.anyHit(o, [d[0] / dist, d[1] / dist, d[2] / dist], dist * (1 - 1e-6));
+      });
+      return { ...lamp, sources: lamp.sources.filter((_, k) => keep[k]), sides: lamp.sides.filter((_, k) => keep[k]) };
+    });
+  };
+
+  /** ρ·E_total (RGB) of the surface a ray from `o` along `dir` meets first. */
+  const leaving = (o: Vec3, dir: Vec3): Rgb => {
+    let tWall = Infinity;
+    let axis = 0;
+    for (let a = 0; a < 3; a++) {
+      if (dir[a] === 0) continue;
+      const t = ((dir[a] > 0 ? dims[a] : 0) - o[a]) / dir[a];
+      if (t < tWall) [tWall, axis] = [Math.max(0, t), a];
+    }
+    const hit = caster?.closestHit(o, dir, tWall) ?? null;
+    if (hit) {
+      if (!hit.frontFace) return [0, 0, 0];
+      const m = maps.objects!;
+      const i = Math.min(m.atlas.width - 1, Math.max(0, Math.floor(hit.atlasUv[0] * m.atlas.width)));
+      const j = Math.min(m.atlas.height - 1, Math.max(0, Math.floor(hit.atlasUv[1] * m.atlas.height)));
+      const k = j * m.atlas.width + i;
+      return [0, 1, 2].map((c) => m.atlas.reflectance[4 * k + c] * m.total[3 * k + c]) as Rgb;
+    }
+    const surface: SurfaceName = (
+      [
+        ['west', 'east'],
+        ['floor', 'ceiling'],
+        ['north', 'south'],
+      ] as const
+    )[axis][dir[axis] > 0 ? 1 : 0];
+    const layout = maps[surface].layout;
+    const q = [o[0] + dir[0] * tWall, o[1] + dir[1] * tWall, o[2] + dir[2] * tWall];
+    const e = bilinearRgb(layout, maps[surface].total, q[layout.uAxisIndex], q[layout.vAxisIndex]);
+    const rho = toRgb(room.reflectance[surface]);
+    return [rho[0] * e[0], rho[1] * e[1], rho[2] * e[2]];
+  };
+
+  return {
+    atSurface(point) {
+      const { surface } = nearestSurface(room, point);
+      const m = maps[surface];
+      const { uAxisIndex: ua, vAxisIndex: va, normalAxisIndex: na } = m.layout;
+      // On the surface's plane (probe points may lie up to 1 cm off it), as probeExact does.
+      const p: Vec3 = [point[0], point[1], point[2]];
+      p[na] = m.layout.origin[na];
+      p[ua] = Math.min(m.layout.lengthU, Math.max(0, point[ua]));
+      p[va] = Math.min(m.layout.lengthV, Math.max(0, point[va]));
+      const direct = lux(directAtPoint(visibleFrom(p, m.layout.normal), p, m.layout.normal));
+      const indirect = bilinearLux(m.layout, m.indirect, point[ua], point[va]);
+      return { surface, direct, indirect, total: direct + indirect };
+    },
+    atPlane(p, n) {
+      const direct = lux(directAtPoint(visibleFrom(p, n), p, n));
+      // An orthonormal frame (t, b, n) (Duff et al., "Building an Orthonormal Basis, Revisited", JCGT 6(1), 2017).
+      const sign = n[2] >= 0 ? 1 : -1;
+      const a = -1 / (sign + n[2]);
+      const b = n[0] * n[1] * a;
+      const t: Vec3 = [1 + sign * n[0] * n[0] * a, sign * b, -sign * n[0]];
+      const bt: Vec3 = [b, sign + n[1] * n[1] * a, -n[1]];
+      const o: Vec3 = [p[0] + n[0] * RAY_OFFSET, p[1] + n[1] * RAY_OFFSET, p[2] + n[2] * RAY_OFFSET];
+      const random = mulberry32(PROBE_GATHER_SEED);
+      const side = Math.round(Math.sqrt(PROBE_GATHER_RAYS));
+      const sum: Rgb = [0, 0, 0];
+      for (let s = 0; s < side * side; s++) {
+        // Stratified in (u1, u2), then Malley's method: uniform on the disc, lifted to the hemisphere.
+        const u1 = (Math.floor(s / side) + random()) / side;
+        const u2 = ((s % side) + random()) / side;
+        const r = Math.sqrt(u1);
+        const phi = 2 * Math.PI * u2;
+        const x = r * Math.cos(phi);
+        const y = r * Math.sin(phi);
+        const z = Math.sqrt(Math.max(0, 1 - u1));
+        const dir: Vec3 = [x * t[0] + y * bt[0] + z * n[0], x * t[1] + y * bt[1] + z * n[1], x * t[2] + y * bt[2] + z * n[2]];
+        const l = leaving(o, dir);
+        sum[0] += l[0];
+        sum[1] += l[1];
+        sum[2] += l[2];
+      }
+      const indirect = lux([sum[0] / (side * side), sum[1] / (side * side), sum[2] / (side * side)]);
+      return { direct, indirect, total: direct + indirect };
+    },
+  };
+}
