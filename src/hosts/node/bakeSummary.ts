@@ -53,11 +53,13 @@ export interface ObjectSource {
 }
 
 /**
- * report.json: the contract fields first, then the baker's own report. `objects` (scenes with
- * objects) is the baker's per-object statistics, each with its mesh path, triangle count and units.
+ * report.json: the contract fields first, then the baker's own report (`bake`, which keeps its
+ * `objects` too). `objects` (scenes with objects) is the baker's per-object statistics, each with
+ * its mesh path, triangle count and units.
  */
 export function reportJson(scenePath: string, maps: BakedMaps, report: BakeReport, sources: readonly ObjectSource[] = []) {
-  const { settings, timings_ms, objects, ...bake } = report;
+  const { settings, timings_ms, ...bake } = report;
+  const objects = report.objects;
   return {
     scene: scenePath,
     surfaces: summarizeSurfaces(maps),

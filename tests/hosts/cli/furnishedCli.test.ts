@@ -65,6 +65,7 @@ describe('luxbox bake: a furnished scene', () => {
     const report = JSON.parse(readFileSync(join(out, 'report.json'), 'utf8'));
     expect(report.warnings).toEqual([]);
     expect(report.objects.map((o: { id: string }) => o.id)).toEqual(['dining-table', 'objects[1]']);
+    expect(report.bake.objects.map((o: { id: string }) => o.id)).toEqual(['dining-table', 'objects[1]']);
     for (const [k, o] of report.objects.entries()) {
       expect(o).toMatchObject({ mesh: ['table.obj', 'table.glb'][k], triangles: 60, units: 'm', texels: objects.objects[k].texels });
       expect(o.area).toBeCloseTo(TABLE.area, 5);
