@@ -41,7 +41,8 @@ export interface GltfJson extends Json {
  * `options.readFile`) and concatenated into one BIN chunk, images and textures removed (luxbox
  * needs geometry and base colour factors; Node has no image decoder), the node hierarchy checked
  * for cycles, and the triangle count checked against the budget before any geometry is built.
- * GLTFLoader itself then fetches nothing.
+ * GLTFLoader itself then fetches nothing: in Node its FileLoader cannot even read a data URI (it
+ * needs the browser's ProgressEvent; three 0.187), and without images it needs no image decoder.
  */
 export async function packGltf(files: readonly MeshFile[], options: MeshImportOptions): Promise<PackedGltf> {
   const main = files.find((f) => /\.(gltf|glb)$/i.test(f.name));
@@ -80,6 +81,7 @@ export async function packGltf(files: readonly MeshFile[], options: MeshImportOp
   const binary = await packBuffers(json, bin, files, options, name, fail);
   checkAccessors(json, fail);
   checkTriangleBudget(name, sceneTriangles(json, fail));
+  fillPositionBounds(json, binary);
   return { name, glb: buildGlb(JSON.stringify(json), binary), json, warnings };
 }
 
@@ -250,6 +252,48 @@ function checkAccessors(json: GltfJson, fail: (p: string) => never): void {
       fail(`accessors[${i}].count ${excerpt(count ?? null)} is not a whole number up to ${formatCount(MAX_ACCESSOR_COUNT)}`);
     }
   });
+}
+
+/**
+ * POSITION accessors must carry min and max (glTF 2.0 §3.7.2.1); GLTFLoader warns on the console
+ * when they are missing, which would break the CLI's promise of an empty stderr. Fill them in for
+ * plain float positions (what exporters write when they omit them); anything else stays as it is.
+ */
+function fillPositionBounds(json: GltfJson, binary: Uint8Array): void {
+  const accessors = (json.accessors ?? []) as Json[];
+  const views = (json.bufferViews ?? []) as Json[];
+  const data = new DataView(binary.buffer, binary.byteOffset, binary.byteLength);
+  const positionAccessors = new Set<number>();
+  for (const mesh of (json.meshes ?? []) as Json[]) {
+    for (const p of (Array.isArray(mesh?.primitives) ? mesh.primitives : []) as Json[]) {
+      const k = (p?.attributes as Json | undefined)?.POSITION;
+      if (typeof k === 'number') positionAccessors.add(k);
+    }
+  }
+  for (const k of positionAccessors) {
+    const a = accessors[k];
+    if (!a || (Array.isArray(a.min) && Array.isArray(a.max)) || a.componentType !== 5126 || a.type !== 'VEC3' || a.sparse !== undefined) continue;
+    const view = typeof a.bufferView === 'number' ? views[a.bufferView] : undefined;
+    if (!view) continue;
+    const start = (view.byteOffset as number) + (typeof a.byteOffset === 'number' ? a.byteOffset : 0);
+    const stride = typeof view.byteStride === 'number' ? view.byteStride : 12;
+    const count = a.count as number;
+    const end = (view.byteOffset as number) + (view.byteLength as number);
+    if (count === 0 || start + (count - 1) * stride + 12 > end) continue;
+    const min = [Infinity, Infinity, Infinity];
+    const max = [-Infinity, -Infinity, -Infinity];
+    for (let i = 0; i < count; i++) {
+      for (let c = 0; c < 3; c++) {
+        const v = data.getFloat32(start + i * stride + 4 * c, true);
+        min[c] = Math.min(min[c], v);
+        max[c] = Math.max(max[c], v);
+      }
+    }
+    if (min.every(Number.isFinite) && max.every(Number.isFinite)) {
+      a.min = min;
+      a.max = max;
+    }
+  }
 }
 
 /**
