@@ -8,6 +8,14 @@ import { surfaceQuad } from './surfaceQuad';
 
 export type ViewMode = 'light' | 'lux';
 
+/** The display uniforms the room's surfaces own; the objects' material shares the very objects, so one assignment updates both. */
+export interface SharedDisplayUniforms {
+  uExposure: { value: number };
+  uMode: { value: number };
+  uLevels: { value: number[] };
+  uLevelCount: { value: number };
+}
+
 const fragmentShader = roomSurfaceFragment({ maxLevels: MAX_LEVELS, turbo: [TURBO_R, TURBO_G, TURBO_B] });
 
 /** The six room surfaces showing the relit light maps, and the display settings all six share (exposure, mode, lux levels). */
@@ -16,6 +24,8 @@ export interface RoomSurfaces {
   setMaps(lit: LitMaps, reflectance: Record<SurfaceName, Rgb>): void;
   setExposure(exposure: number): void;
   setMode(mode: ViewMode, levels?: readonly number[]): void;
+  /** The exposure, mode and level uniforms every surface shares (the objects' material shares them too). */
+  readonly display: SharedDisplayUniforms;
   dispose(): void;
 }
 
@@ -84,6 +94,7 @@ export function createRoomSurfaces(scene: THREE.Scene, renderer: THREE.WebGLRend
   };
 
   return {
+    display: { uExposure: exposure, uMode: mode, uLevels: levelUniform, uLevelCount: levelCount },
     setMaps(lit, reflectance) {
       for (const name of SURFACE_NAMES) {
         const layout = lit.layouts[name];

@@ -11,8 +11,13 @@ import type { CameraPresetName } from './cameraPresets';
 import type { Fixtures } from './fixtures';
 import { applyLiveLevels } from './applyLiveLevels';
 import type { LiveLevel } from './liveLevels';
-import { createRoomView, type RoomView, type ViewMode } from './roomView';
+import { createRoomView, type PickTarget, type RoomView, type ViewMode } from './roomView';
 import { watchContextLoss } from './watchContextLoss';
+import { resolveBakeSettings } from '../bake/bakeSettings';
+import type { PreparedObjects } from '../bake/objects/preparedObjects';
+import { VIEWER_BAKE_SETTINGS } from '../relight/createRelightEngine';
+import { createObjectsMemo } from './createObjectsMemo';
+import { watchTaps } from './watchTaps';
 
 export interface ViewerEvents {
   /** Bake progress and counters changed. */
@@ -22,6 +27,8 @@ export interface ViewerEvents {
   onFrame(frames: number): void;
   onContext(state: 'lost' | 'restored'): void;
   onError(message: string): void;
+  /** A tap or click picked an object or a module (null: nothing, or only the room). */
+  onPick?(target: PickTarget | null): void;
 }
 
 /**
@@ -51,6 +58,10 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
   let fixtures: Fixtures | null = null;
   /** The engine version on screen; -1 forces the next slice to show the maps. */
   let shownVersion = -1;
+  /** The objects' geometry as the baker lays out their atlas (null: no objects), and the highlighted one. */
+  const prepareFor = createObjectsMemo();
+  let prepared: PreparedObjects | null = null;
+  let selectedObject: string | null = null;
 
   const display = watchContextLoss(canvas, {
     lost: () => events.onContext('lost'),
@@ -60,6 +71,8 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
       view = createRoomView(renderer);
       camera.attach(view);
       if (fixtures) view.setFixtures(fixtures);
+      view.setObjects(prepared);
+      view.setSelectedObject(selectedObject);
       shownVersion = -1;
       if (bake.engine) showMaps(bake.engine);
       events.onContext('restored');
@@ -69,6 +82,7 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
   const frames = createFrameScheduler({ draw: () => view.render(renderer), canDraw: () => !display.lost, onFrame: events.onFrame });
   controls.addEventListener('change', frames.request);
   const camera = createCameraRig(controls, view);
+  const stopTaps = watchTaps(canvas, (x, y) => events.onPick?.(view.pick(x, y)));
   const maps = createMapDisplay(() => view, events.onMaps);
 
   const showMaps = (engine: RelightEngine) => {
@@ -105,6 +119,13 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
       ids = luminaireIds;
       fixtures = nextFixtures;
       view.setFixtures(nextFixtures);
+      const nextPrepared = prepareFor(next.objects, bake.engine?.settings ?? resolveBakeSettings(VIEWER_BAKE_SETTINGS));
+      if (nextPrepared !== prepared) {
+        // New or moved objects: their old light belongs to another atlas; they show again with the new bake's first maps.
+        prepared = nextPrepared;
+        view.setObjects(prepared);
+        shownVersion = -1;
+      }
       camera.setRoom(next.room);
       bake.engine?.setScene(lit(next));
       frames.request();
@@ -128,6 +149,16 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
       maps.setMode(m);
       frames.request();
     },
+    /** The objects' geometry on screen, as the baker lays out their atlas (null: no objects). */
+    objects(): PreparedObjects | null {
+      return prepared;
+    },
+    /** Highlight an object (the store's selection when it is an object; null: none). */
+    setSelectedObject(id: string | null) {
+      selectedObject = id;
+      view.setSelectedObject(id);
+      frames.request();
+    },
     setPreset(name: CameraPresetName) {
       camera.setPreset(name);
       frames.request();
@@ -140,6 +171,7 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
     dispose() {
       frames.stop();
       slicer.stop();
+      stopTaps();
       controls.dispose();
       view.dispose();
       bake.dispose();

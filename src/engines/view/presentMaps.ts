@@ -3,6 +3,7 @@ import type { LitMaps } from '../relight/relightMaps';
 import { autoExposure } from './autoExposure';
 import { luxLevels } from './falseColorScale';
 import { luxScaleTop } from './luxScaleTop';
+import { objectLightOf } from './objectLight';
 import type { RoomView, ViewMode } from './roomView';
 
 /** How the maps are shown: exposure compensation in stops over the automatic exposure, light or lux. */
@@ -22,14 +23,18 @@ export interface PresentedMaps {
  * Put relit maps on a room view as the viewer shows them (docs/viewer.md,
  * "Display"): the maps and reflectances, automatic exposure times the
  * compensation, and the mode with lux levels up to the maps' 99th percentile.
- * The browser viewer and `luxbox render` both draw through this.
+ * The objects' light (when the maps have it) goes to the objects and counts in
+ * the exposure and the percentile by its area. The browser viewer and
+ * `luxbox render` both draw through this.
  */
 export function presentMaps(view: RoomView, lit: LitMaps, reflectance: Record<SurfaceName, Rgb>, display: DisplaySettings): PresentedMaps {
   view.setMaps(lit, reflectance);
-  const auto = autoExposure(lit, reflectance);
+  const objects = objectLightOf(lit);
+  view.setObjectLight(objects);
+  const auto = autoExposure(lit, reflectance, objects);
   const exposure = auto * 2 ** display.exposureEv;
   view.setExposure(exposure);
-  const levels = luxLevels(luxScaleTop(lit));
+  const levels = luxLevels(luxScaleTop(lit, 0.99, objects));
   view.setMode(display.mode, levels);
   return { autoExposure: auto, exposure, levels };
 }

@@ -1,16 +1,22 @@
 import * as THREE from 'three';
-import type { Rgb, SurfaceName } from '../../core/model/lightingScene';
+import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../core/model/lightingScene';
 import type { LitMaps } from '../relight/relightMaps';
 import type { CameraPose } from './cameraPresets';
+import type { PreparedObjects } from '../bake/objects/preparedObjects';
 import { createRoomHardware } from './createRoomHardware';
+import { createRoomObjects, OBJECTS_MESH_NAME } from './createRoomObjects';
 import { createRoomSurfaces, type ViewMode } from './createRoomSurfaces';
 import type { Fixtures } from './fixtures';
+import type { ObjectLight } from './objectLight';
 
 export type { ViewMode } from './createRoomSurfaces';
 
+/** What a pick hit: an object (furniture, imported model) or a module, by id. */
+export type PickTarget = { kind: 'object' | 'module'; id: string };
+
 /**
- * The 3D room: six surfaces showing the relit light maps, the hardware, a
- * camera. Shared by the browser viewer and `luxbox render` (three.js on
+ * The 3D room: six surfaces showing the relit light maps, the objects with
+ * theirs, the hardware, a camera. Shared by the browser viewer and `luxbox render` (three.js on
  * headless-gl), so both draw the same pixels from the same maps.
  */
 export interface RoomView {
@@ -18,6 +24,14 @@ export interface RoomView {
   readonly camera: THREE.PerspectiveCamera;
   /** Upload relit maps (RGB lux) and the room's reflectances. */
   setMaps(lit: LitMaps, reflectance: Record<SurfaceName, Rgb>): void;
+  /** The objects' geometry (PreparedObjects of the scene's objects, the same the baker lights; null: none). */
+  setObjects(prepared: PreparedObjects | null): void;
+  /** The objects' relit light (null: not yet, they stay hidden). */
+  setObjectLight(light: ObjectLight | null): void;
+  /** Highlight an object by id (null: none). */
+  setSelectedObject(id: string | null): void;
+  /** The nearest object or module under a point of the view (normalised device coordinates, −1…1, y up), or null. */
+  pick(ndcX: number, ndcY: number): PickTarget | null;
   setExposure(exposure: number): void;
   setMode(mode: ViewMode, levels?: readonly number[]): void;
   setFixtures(fixtures: Fixtures): void;
@@ -33,6 +47,9 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
   const hardware = createRoomHardware();
   scene.add(hardware.group);
   const surfaces = createRoomSurfaces(scene, renderer);
+  const objects = createRoomObjects(surfaces.display, renderer);
+  scene.add(objects.group);
+  const raycaster = new THREE.Raycaster();
   return {
     scene,
     camera,
@@ -40,6 +57,23 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
     setExposure: surfaces.setExposure,
     setMode: surfaces.setMode,
     setFixtures: hardware.setFixtures,
+    setObjects: objects.setGeometry,
+    setObjectLight: objects.setLight,
+    setSelectedObject: objects.setSelected,
+    pick(ndcX, ndcY) {
+      raycaster.setFromCamera(new THREE.Vector2(ndcX, ndcY), camera);
+      // The room's surfaces are no targets, but they hide what lies behind them. They are front-side
+      // materials, which the raycaster honours: the walls the corner view looks through (back faces) do not block.
+      const walls = scene.children.filter((c) => (SURFACE_NAMES as readonly string[]).includes(c.name));
+      const targets = [...walls, ...hardware.group.children.filter((c) => c.name.startsWith('module:')), ...objects.group.children.filter((c) => c.name === OBJECTS_MESH_NAME && c.visible)];
+      const hit = raycaster.intersectObjects(targets, false)[0];
+      if (!hit) return null;
+      if (hit.object.name === OBJECTS_MESH_NAME) {
+        const id = hit.faceIndex != null ? objects.objectAt(hit.faceIndex) : null;
+        return id ? { kind: 'object', id } : null;
+      }
+      return hit.object.name.startsWith('module:') ? { kind: 'module', id: hit.object.name.slice('module:'.length) } : null;
+    },
     setCamera(pose, aspect) {
       camera.fov = pose.fov;
       camera.aspect = aspect;
@@ -53,6 +87,7 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
     },
     dispose() {
       hardware.dispose();
+      objects.dispose();
       surfaces.dispose();
     },
   };

@@ -3,6 +3,7 @@ import { PNG } from 'pngjs';
 import * as THREE from 'three';
 import type { BakeSettings } from '../../engines/bake/bakeSettings';
 import { reflectanceRgb } from '../../engines/bake/bakeScene';
+import { prepareObjects } from '../../engines/bake/objects/prepareObjects';
 import { createRelightEngine, VIEWER_BAKE_SETTINGS } from '../../engines/relight/createRelightEngine';
 import type { CameraPose } from '../../engines/view/cameraPresets';
 import { floorStats, type IlluminanceStats } from '../../engines/view/lightStats';
@@ -68,6 +69,9 @@ export function createRenderSession(width: number, height: number): RenderSessio
         }
         renderer.resetState();
         const view = createRoomView(renderer);
+        // The objects' geometry on the atlas the baker lit (same objects, same texel size and limit).
+        const objects = input.bakeScene.objects ?? [];
+        view.setObjects(objects.length > 0 ? prepareObjects(objects, { texelSize: engine.settings.texelSize, maxAtlasSize: engine.settings.maxTextureSize }) : null);
         const { exposure } = presentMaps(view, lit, reflectanceRgb(input.bakeScene.room), { exposureEv: options.exposureEv, mode: options.mode });
         const floor = floorStats(lit);
         view.setFixtures(input.fixtures);

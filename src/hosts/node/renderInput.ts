@@ -7,7 +7,9 @@ import { LightingSceneError } from '../../core/model/parseLightingScene';
 import { SCENE_FILE_FORMAT, deserializeConfiguration } from '../../core/model/sceneFile';
 import { toLightingScene } from '../../core/model/toLightingScene';
 import type { LightingScene } from '../../core/model/lightingScene';
+import { configurationMeshLoader } from '../../engines/view/configurationMeshLoader';
 import { fixturesFromConfiguration, fixturesFromScene, type Fixtures } from '../../engines/view/fixtures';
+import { resolveBakeSceneSync, SceneObjectError } from '../../engines/bake/resolveBakeScene';
 import { loadLightingSceneFile, parseJsonText, resolveSceneFiles } from './loadLightingSceneFile';
 
 /** What `luxbox render` draws: the baker's scene and the hardware to show. */
@@ -54,6 +56,15 @@ export function loadRenderInput(path: string): RenderInput {
   }
   const config = deserializeConfiguration(text, defaultCatalog, source);
   const scene = toLightingScene(config, defaultCatalog);
-  const { bakeScene } = resolveSceneFiles(scene, PUBLIC_DIR, source);
-  return { scene, bakeScene, fixtures: fixturesFromConfiguration(config, defaultCatalog), kind: 'configuration' };
+  // Photometry from public/ (the scene file's loader and messages); the objects' meshes from the configuration itself (`object:<id>`).
+  const { bakeScene } = resolveSceneFiles({ ...scene, objects: [] }, PUBLIC_DIR, source);
+  let objects: BakeScene['objects'];
+  try {
+    objects = resolveBakeSceneSync({ ...scene, luminaires: [] }, () => {
+      throw new Error('no photometry here');
+    }, configurationMeshLoader(config)).objects;
+  } catch (error) {
+    throw error instanceof SceneObjectError ? new LightingSceneError(`${source}: ${error.message}`) : error;
+  }
+  return { scene, bakeScene: objects ? { ...bakeScene, objects } : bakeScene, fixtures: fixturesFromConfiguration(config, defaultCatalog), kind: 'configuration' };
 }

@@ -2,7 +2,11 @@ import { useEffect, useMemo, useRef, useState } from 'react';
 import { useStore } from 'zustand';
 import type { Photometry } from '../../core/photometry/types';
 import type { BakeScene } from '../../engines/bake/bakeScene';
-import { LuminairePhotometryError, resolveBakeScene } from '../../engines/bake/resolveBakeScene';
+import { LuminairePhotometryError, resolveBakeScene, SceneObjectError } from '../../engines/bake/resolveBakeScene';
+import { configurationMeshLoader } from '../../engines/view/configurationMeshLoader';
+import { objectLightOf } from '../../engines/view/objectLight';
+import { objectStats } from '../../engines/view/objectStats';
+import { sourceName } from '../../core/model/objectGeometry';
 import { toLightingScene } from '../../core/model/toLightingScene';
 import { photometryWarnings } from '../../core/photometry/checks';
 import { PhotometryWarnings, type PhotometryNote } from '../shared/PhotometryWarnings';
@@ -32,6 +36,7 @@ const PRESET_LABEL: Record<CameraPresetName, string> = { eye: 'Eye height', top:
 export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
   const config = useStore(store, (s) => s.config);
   const catalog = useStore(store, (s) => s.catalog);
+  const selection = useStore(store, (s) => s.selection);
   const canvasRef = useRef<HTMLCanvasElement>(null);
   const wrapRef = useRef<HTMLDivElement>(null);
   const ctrl = useRef<ViewerController | null>(null);
@@ -75,7 +80,10 @@ export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
           const f = floorStats(lit);
           setFloor(f);
           setMapsVersion((v) => v + 1);
-          publish({ lastRelightMs: info.relightMs, floor: { avg: f.avg, min: f.min, max: f.max, u0: f.u0 } });
+          const prepared = ctrl.current?.objects() ?? null;
+          const light = objectLightOf(lit);
+          const objects = prepared && light && light.atlas.width === prepared.atlas.width && light.atlas.height === prepared.atlas.height ? objectStats(lit, prepared, light) : null;
+          publish({ lastRelightMs: info.relightMs, floor: { avg: f.avg, min: f.min, max: f.max, u0: f.u0 }, objects });
         },
         onFrame: (frames) => {
           const patch: Partial<ViewerStatus> = { frames };
@@ -93,6 +101,8 @@ export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
           setError(message);
           publish({ error: message });
         },
+        // A tap on an object or a module selects it, as a tap in the plan does; a tap on the room clears the selection.
+        onPick: (target) => store.getState().select(target),
       });
     } catch (e) {
       const message = `The 3D view could not start: ${(e as Error).message}`;
@@ -122,7 +132,8 @@ export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
   useEffect(() => {
     let cancelled = false;
     const scene = toLightingScene(config, catalog);
-    resolveBakeScene(scene, loadPhotometry)
+    // Objects' meshes come from the configuration itself (`object:<id>`, with their finishes).
+    resolveBakeScene(scene, loadPhotometry, configurationMeshLoader(config))
       .then((bakeScene) => {
         if (cancelled || !ctrl.current) return;
         sceneRef.current = bakeScene;
@@ -136,13 +147,32 @@ export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
         setPhotometryNotes([...files.values()]);
       })
       .catch((e: Error) => {
+        if (cancelled) return;
         // The loader's own message names the file ("ies/a.ies: HTTP 404"); which luminaire asked is no news to the user.
-        if (!cancelled) setError(`Could not load the photometric data: ${e instanceof LuminairePhotometryError && e.cause instanceof Error ? e.cause.message : e.message}`);
+        if (e instanceof SceneObjectError) setError(`Could not prepare the furniture for the light calculation: ${e.message}`);
+        else setError(`Could not load the photometric data: ${e instanceof LuminairePhotometryError && e.cause instanceof Error ? e.cause.message : e.message}`);
       });
     return () => {
       cancelled = true;
     };
   }, [config, catalog, loadPhotometry]);
+
+  // The selected object is highlighted in 3D too (the plan and the view share the store's selection).
+  const selectedObject = selection?.kind === 'object' ? selection.id : null;
+  useEffect(() => {
+    ctrl.current?.setSelectedObject(selectedObject);
+  }, [selectedObject]);
+  const selectedLabel = useMemo(() => {
+    if (!selection) return null;
+    if (selection.kind === 'object') {
+      const o = config.objects.find((x) => x.id === selection.id);
+      return o ? sourceName(config, o.source) : null;
+    }
+    if (selection.kind === 'module') {
+      for (const s of config.systems) for (const r of s.rails) for (const m of r.modules) if (m.id === selection.id) return `Module ${m.type}`;
+    }
+    return null;
+  }, [selection, config]);
 
   // Work plane: recomputed when the maps settle or the height changes (direct part on the CPU).
   useEffect(() => {
@@ -210,6 +240,11 @@ export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
         <button type="button" className="btn" disabled={ev === 0} onClick={() => { setEv(0); ctrl.current?.setExposureEv(0); }}>
           Auto exposure
         </button>
+        {selectedLabel && (
+          <p className="viewer3d-selected" data-testid="view3d-selected" data-kind={selection?.kind} data-id={selection?.id}>
+            Selected: {selectedLabel}
+          </p>
+        )}
         <IlluminanceTable floor={floor} plane={plane.on ? { height: plane.height, stats: planeStats } : null} />
         <label className="viewer3d-field viewer3d-inline">
           <input type="checkbox" checked={plane.on} onChange={(e) => setPlane({ ...plane, on: e.target.checked })} data-testid="plane-on" /> Work plane at

@@ -34,13 +34,19 @@ export interface ViewerStatus {
    * the levels changed).
    */
   live: { state: 'connecting' | 'connected' | 'no-bridge' | 'lost'; received: number; applied: number } | null;
+  /**
+   * Per object once its light is on screen (null before, or without objects): mean lux over the
+   * object, over its top (null if it has no flat top) and of the floor under its plan bounds
+   * (src/engines/view/objectStats.ts).
+   */
+  objects: { id: string; avg: number; top: number | null; floorUnder: number | null }[] | null;
 }
 
 const statuses = new WeakMap<object, ViewerStatus>();
 
 export const CLOSED_STATUS: ViewerStatus = {
   open: false, lit: false, done: false, progress: 0, groupBakes: 0, relightsOnly: 0, frames: 0,
-  firstLitMs: null, lastRelightMs: null, contextLosses: 0, error: null, floor: null, live: null,
+  firstLitMs: null, lastRelightMs: null, contextLosses: 0, error: null, floor: null, live: null, objects: null,
 };
 
 export function setViewerStatus(owner: object, status: ViewerStatus): void {
