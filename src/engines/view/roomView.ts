@@ -61,6 +61,9 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
     setObjectLight: objects.setLight,
     setSelectedObject: objects.setSelected,
     pick(ndcX, ndcY) {
+      // World matrices are brought up to date by a render; a pick may come before the first one.
+      scene.updateMatrixWorld();
+      camera.updateMatrixWorld();
       raycaster.setFromCamera(new THREE.Vector2(ndcX, ndcY), camera);
       // The room's surfaces are no targets, but they hide what lies behind them. They are front-side
       // materials, which the raycaster honours: the walls the corner view looks through (back faces) do not block.

@@ -83,6 +83,7 @@ describe('presentMaps', () => {
       setMaps: (...a: unknown[]) => calls.push(['maps', ...a]),
       setExposure: (...a: unknown[]) => calls.push(['exposure', ...a]),
       setMode: (...a: unknown[]) => calls.push(['mode', ...a]),
+      setObjectLight: (...a: unknown[]) => calls.push(['objects', ...a]),
     } as unknown as RoomView;
     const shown = presentMaps(view, lit, reflectance, { exposureEv: -1, mode: 'lux' });
     const auto = autoExposure(lit, reflectance);
@@ -90,6 +91,7 @@ describe('presentMaps', () => {
     expect(shown).toEqual({ autoExposure: auto, exposure: auto / 2, levels });
     expect(calls).toEqual([
       ['maps', lit, reflectance],
+      ['objects', null],
       ['exposure', auto / 2],
       ['mode', 'lux', levels],
     ]);
