@@ -6,6 +6,11 @@ import { directAtPoint } from '../bake/directAtPoint';
 import { scenePointSources } from '../bake/scenePointSources';
 import type { Vec3 } from '../../core/model/lightingScene';
 import type { LitMaps } from '../relight/relightMaps';
+import { createObjectRayCaster } from '../bake/objects/createObjectRayCaster';
+import type { PreparedObjects } from '../bake/objects/preparedObjects';
+
+/** Shadow rays toward the lamps start this far above the work plane (metres): clear of a table top lying in it. */
+const SHADOW_RAY_OFFSET = 1e-4;
 
 /** The numbers a lighting planner asks for first (EN 12464-1 vocabulary): lux and uniformity U0 = Emin/Ē. */
 export interface IlluminanceStats {
@@ -57,7 +62,10 @@ export function floorStats(lit: LitMaps): IlluminanceStats {
  * floor the same plus the wall band below the plane: nearly the same view of
  * the bright surfaces, so the estimate errs low by the band's small share).
  * Luminaires below the plane light it from underneath and are skipped by the
- * cosine test, as they should be.
+ * cosine test, as they should be. With `objects` (the scene's, prepared as the
+ * baker lays them out) each point source counts only where a shadow ray from
+ * the grid point reaches it past every object (the CPU ray caster over the
+ * baker's BVH): the plane under a shelf board or inside a sofa is shaded.
  */
 export function workPlaneStats(
   scene: BakeScene,
@@ -65,9 +73,24 @@ export function workPlaneStats(
   height: number,
   spacing = 0.1,
   settings: Partial<BakeSettings> = {},
+  objects: PreparedObjects | null = null,
 ): IlluminanceStats & { values: Float32Array; nx: number; nz: number } {
   const { width, depth } = scene.room;
   const lamps = scenePointSources(scene, resolveBakeSettings(settings));
+  const caster = objects && objects.triangleCount > 0 ? createObjectRayCaster(objects) : null;
+  /** The lamps with only the point sources a point of the plane sees. */
+  const visibleFrom = (p: Vec3): typeof lamps => {
+    if (!caster) return lamps;
+    const o: Vec3 = [p[0], p[1] + SHADOW_RAY_OFFSET, p[2]];
+    return lamps.map((lamp) => {
+      const keep = lamp.sources.map((src) => {
+        const d: Vec3 = [src[0] - o[0], src[1] - o[1], src[2] - o[2]];
+        const dist = Math.hypot(d[0], d[1], d[2]);
+        return !(dist > 0) || !caster.anyHit(o, [d[0] / dist, d[1] / dist, d[2] / dist], dist * (1 - 1e-6));
+      });
+      return { ...lamp, sources: lamp.sources.filter((_, k) => keep[k]), sides: lamp.sides.filter((_, k) => keep[k]) };
+    });
+  };
   const nx = Math.max(1, Math.round(width / spacing));
   const nz = Math.max(1, Math.round(depth / spacing));
   const values = new Float32Array(nx * nz);
@@ -79,7 +102,7 @@ export function workPlaneStats(
     for (let i = 0; i < nx; i++) {
       const x = ((i + 0.5) / nx) * width;
       const z = ((k + 0.5) / nz) * depth;
-      const e = directAtPoint(lamps, [x, height, z], up);
+      const e = directAtPoint(visibleFrom([x, height, z]), [x, height, z], up);
       const t = bilinearRgb(floor, total, x, z);
       const d = bilinearRgb(floor, direct, x, z);
       values[k * nx + i] = Y(e[0], e[1], e[2]) + Math.max(0, Y(t[0] - d[0], t[1] - d[1], t[2] - d[2]));

@@ -180,7 +180,7 @@ export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
       setPlaneStats(null);
       return;
     }
-    const t = setTimeout(() => setPlaneStats(workPlaneStats(sceneRef.current!, litRef.current!, plane.height, 0.1)), progress.done ? 0 : 400);
+    const t = setTimeout(() => setPlaneStats(workPlaneStats(sceneRef.current!, litRef.current!, plane.height, 0.1, {}, ctrl.current?.objects() ?? null)), progress.done ? 0 : 400);
     return () => clearTimeout(t);
   }, [plane, mapsVersion, progress.done]);
 

@@ -7,6 +7,8 @@ import { AUTO_EXPOSURE_KEY, autoExposure } from '../../../src/engines/view/autoE
 import { floorStats, statsOf, workPlaneStats } from '../../../src/engines/view/lightStats';
 import { luxScaleTop } from '../../../src/engines/view/luxScaleTop';
 import { isotropic, uniformRoom } from '../bake/bakeTestKit';
+import { boxMesh } from '../bake/objects/objectFixtures';
+import { prepareObjects } from '../../../src/engines/bake/objects/prepareObjects';
 
 describe('illuminance statistics', () => {
   it('statsOf: average, min, max and U0 = Emin/Ē by hand', () => {
@@ -49,6 +51,41 @@ describe('illuminance statistics', () => {
     expect(worst).toBeLessThan(1e-6);
     expect(plane.max).toBeLessThanOrEqual(I / (lamp[1] - h) ** 2);
     expect(plane.u0).toBeCloseTo(plane.min / plane.avg, 12);
+  });
+
+  it('work plane with objects: an opaque plate between lamp and plane leaves exactly its shadow dark, the rest is I·h/d³', () => {
+    const I = 1000;
+    const lamp: [number, number, number] = [1.5, 2.5, 1.75];
+    // A 1 × 1 m plate, 2 cm thick, its underside at 1.59 m, centred under the lamp.
+    const plate = { id: 'plate', mesh: boxMesh(1, 0.02, 1), position: [1.5, 1.59, 1.75] as [number, number, number], yaw: 0, scale: 1 };
+    const scene: BakeScene = { room: uniformRoom(3, 2.8, 3.5, 0), luminaires: [{ photometry: isotropic(I), position: lamp, yaw: 0, pitch: 0, roll: 0 }], objects: [plate] };
+    const lit = emptyLitMaps(surfaceLayouts(scene.room, 0.1, 64));
+    const h = 0.8;
+    const plane = workPlaneStats(scene, lit, h, 0.1, {}, prepareObjects([plate], { texelSize: 0.1 }));
+    let shadowed = 0;
+    let checked = 0;
+    for (let k = 0; k < plane.nz; k++) {
+      for (let i = 0; i < plane.nx; i++) {
+        const p = [(i + 0.5) * 0.1, h, (k + 0.5) * 0.1];
+        // Where the segment to the lamp crosses the plate's two faces (y = 1.59 and 1.61).
+        const cross = (y: number) => [0, 2].map((a) => p[a] + ((y - h) / (lamp[1] - h)) * (lamp[a] - p[a]));
+        const inside = (q: number[], m: number) => Math.abs(q[0] - 1.5) < 0.5 - m && Math.abs(q[1] - 1.75) < 0.5 - m;
+        const [lo, hi] = [cross(1.59), cross(1.61)];
+        const clear = !inside(lo, -0.04) && !inside(hi, -0.04);
+        const e = plane.values[k * plane.nx + i];
+        if (inside(lo, 0.02) && inside(hi, 0.02)) {
+          expect(e).toBe(0);
+          shadowed++;
+        } else if (clear) {
+          const d = Math.hypot(p[0] - lamp[0], lamp[1] - h, p[2] - lamp[2]);
+          expect(Math.abs(e - (I * (lamp[1] - h)) / d ** 3) / ((I * (lamp[1] - h)) / d ** 3)).toBeLessThan(1e-6);
+          checked++;
+        }
+      }
+    }
+    // The shadow of a 1 m plate 0.91 m under the lamp on a plane 1.7 m under it: about 1.87 m square.
+    expect(shadowed).toBeGreaterThan(250);
+    expect(checked).toBeGreaterThan(500);
   });
 
   it('work plane adds the floor\'s indirect illuminance (total − direct) at the same plan point', () => {
