@@ -59,6 +59,17 @@ test('a table under a rail: top lit, floor under it in shadow; a tap on the tabl
   await canvas.click({ position: { x: box.width / 2 + box.height * 0.02, y: box.height * 0.54 } });
   await expect(page.getByTestId('view3d-selected')).toHaveAttribute('data-id', tableId);
   await expect(page.getByTestId('view3d-selected')).toHaveAttribute('data-kind', 'object');
+  mkdirSync('test-results/objects3d', { recursive: true });
+  await page.screenshot({ path: 'test-results/objects3d/desktop-top-selected.png' });
+
+  // Dimming relights the table with the room, without a bake: the middle spot off, the top darker.
+  const before = await status(page);
+  const middle: string = (await config(page)).systems[0].rails[0].modules[1].id;
+  expect(await page.evaluate((id) => window.luxbox!.runAction('setModuleDimming', { moduleId: id, dimming: 0 }), middle)).toEqual({ ok: true });
+  await expect.poll(async () => (await status(page)).objects?.find((o) => o.id === tableId)?.top ?? Infinity).toBeLessThan(table!.top! * 0.8);
+  const dimmed = await status(page);
+  expect(dimmed.groupBakes).toBe(before.groupBakes);
+  expect(dimmed.relightsOnly).toBeGreaterThan(before.relightsOnly);
   // A tap on the floor far from the table clears the selection.
   await canvas.click({ position: { x: box.width / 2, y: box.height * 0.9 } });
   await expect(page.getByTestId('view3d-selected')).toHaveCount(0);
