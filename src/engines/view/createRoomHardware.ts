@@ -15,8 +15,13 @@ const COLORS: Record<HardwareBox['part'], Rgb> = {
 export interface RoomHardware {
   readonly group: THREE.Group;
   setFixtures(fixtures: Fixtures): void;
+  /** Draw one module in the selection colour (null: none); kept across setFixtures. */
+  setSelectedModule(id: string | null): void;
   dispose(): void;
 }
+
+/** The UI's accent blue (the plan's selection colour), for the selected module. */
+const SELECTED: Rgb = [0.16, 0.56, 0.98];
 
 export function createRoomHardware(): RoomHardware {
   const group = new THREE.Group();
@@ -26,11 +31,18 @@ export function createRoomHardware(): RoomHardware {
       new THREE.ShaderMaterial({ glslVersion: THREE.GLSL3, vertexShader: hardwareVertex, fragmentShader: hardwareFragment, uniforms: { uColor: { value: new THREE.Vector3(...color) } } }),
     ]),
   ) as Record<HardwareBox['part'], THREE.ShaderMaterial>;
+  const selectedMaterial = new THREE.ShaderMaterial({ glslVersion: THREE.GLSL3, vertexShader: hardwareVertex, fragmentShader: hardwareFragment, uniforms: { uColor: { value: new THREE.Vector3(...SELECTED) } } });
+  let selected: string | null = null;
+  const parts = new Map<THREE.Mesh, HardwareBox['part']>();
+  const paint = () => {
+    for (const [mesh, part] of parts) mesh.material = mesh.name === `module:${selected}` ? selectedMaterial : materials[part];
+  };
   const clear = () => {
     for (const child of [...group.children]) {
       group.remove(child);
       (child as THREE.Mesh).geometry?.dispose();
     }
+    parts.clear();
   };
   return {
     group,
@@ -42,11 +54,18 @@ export function createRoomHardware(): RoomHardware {
         mesh.rotation.y = box.yaw;
         mesh.name = box.name;
         group.add(mesh);
+        parts.set(mesh, box.part);
       }
+      paint();
+    },
+    setSelectedModule(id) {
+      selected = id;
+      paint();
     },
     dispose() {
       clear();
       for (const m of Object.values(materials)) m.dispose();
+      selectedMaterial.dispose();
     },
   };
 }

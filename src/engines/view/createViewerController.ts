@@ -62,6 +62,7 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
   const prepareFor = createObjectsMemo();
   let prepared: PreparedObjects | null = null;
   let selectedObject: string | null = null;
+  let selectedModule: string | null = null;
 
   const display = watchContextLoss(canvas, {
     lost: () => events.onContext('lost'),
@@ -73,6 +74,7 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
       if (fixtures) view.setFixtures(fixtures);
       view.setObjects(prepared);
       view.setSelectedObject(selectedObject);
+      view.setSelectedModule(selectedModule);
       shownVersion = -1;
       if (bake.engine) showMaps(bake.engine);
       events.onContext('restored');
@@ -153,10 +155,12 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
     objects(): PreparedObjects | null {
       return prepared;
     },
-    /** Highlight an object (the store's selection when it is an object; null: none). */
-    setSelectedObject(id: string | null) {
-      selectedObject = id;
-      view.setSelectedObject(id);
+    /** Highlight the store's selection when it is an object or a module (null: none). */
+    setSelection(selection: { kind: string; id: string } | null) {
+      selectedObject = selection?.kind === 'object' ? selection.id : null;
+      selectedModule = selection?.kind === 'module' ? selection.id : null;
+      view.setSelectedObject(selectedObject);
+      view.setSelectedModule(selectedModule);
       frames.request();
     },
     setPreset(name: CameraPresetName) {

@@ -30,6 +30,8 @@ export interface RoomView {
   setObjectLight(light: ObjectLight | null): void;
   /** Highlight an object by id (null: none). */
   setSelectedObject(id: string | null): void;
+  /** Draw a module in the selection colour (null: none). */
+  setSelectedModule(id: string | null): void;
   /** The nearest object or module under a point of the view (normalised device coordinates, −1…1, y up), or null. */
   pick(ndcX: number, ndcY: number): PickTarget | null;
   setExposure(exposure: number): void;
@@ -60,6 +62,7 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
     setObjects: objects.setGeometry,
     setObjectLight: objects.setLight,
     setSelectedObject: objects.setSelected,
+    setSelectedModule: hardware.setSelectedModule,
     pick(ndcX, ndcY) {
       // World matrices are brought up to date by a render; a pick may come before the first one.
       scene.updateMatrixWorld();

@@ -157,11 +157,10 @@ export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
     };
   }, [config, catalog, loadPhotometry]);
 
-  // The selected object is highlighted in 3D too (the plan and the view share the store's selection).
-  const selectedObject = selection?.kind === 'object' ? selection.id : null;
+  // The selected object or module is highlighted in 3D too (the plan and the view share the store's selection).
   useEffect(() => {
-    ctrl.current?.setSelectedObject(selectedObject);
-  }, [selectedObject]);
+    ctrl.current?.setSelection(selection);
+  }, [selection]);
   const selectedLabel = useMemo(() => {
     if (!selection) return null;
     if (selection.kind === 'object') {

@@ -73,7 +73,7 @@ describe('RoomView.pick', () => {
     expect(view.pick(...ndcOf(corner, tableTop))).toEqual({ kind: 'object', id: 'table' });
   });
 
-  it('the selection adds the selected object\'s edges and nothing for an unknown id', () => {
+  it('the selection: the selected object\'s edges (none for an unknown id), the selected module in the accent colour', () => {
     view.setSelectedObject('table');
     const edges = view.scene.getObjectByName('objects-selection') as THREE.LineSegments | undefined;
     expect(edges).toBeDefined();
@@ -88,6 +88,16 @@ describe('RoomView.pick', () => {
     expect(pos.count).toBeGreaterThan(24);
     view.setSelectedObject('nothing-like-this');
     expect(view.scene.getObjectByName('objects-selection')).toBeUndefined();
+    // A selected module is drawn in the accent colour; the others keep theirs, also after new fixtures.
+    const colour = (id: string) => ((view.scene.getObjectByName(`module:${id}`) as THREE.Mesh).material as THREE.ShaderMaterial).uniforms.uColor.value.toArray();
+    const [first, second] = fixtures.modules;
+    const plain = colour(first.id);
+    view.setSelectedModule(first.id);
+    view.setFixtures(fixtures);
+    expect(colour(first.id)).toEqual([0.16, 0.56, 0.98].map((x) => expect.closeTo(x, 6)));
+    expect(colour(second.id)).toEqual(plain);
+    view.setSelectedModule(null);
+    expect(colour(first.id)).toEqual(plain);
     view.render(renderer);
     view.dispose();
   });
