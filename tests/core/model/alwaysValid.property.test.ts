@@ -2,7 +2,8 @@
  * The always-valid property (configurator paper §3.2): from any valid state, an enabled
  * action leads to a valid state, and a refused action, performed anyway,
  * either throws or leads to a state validate() rejects. Random sequences over
- * every action, seeded so failures reproduce.
+ * every action — rails, modules, patches, finishes and objects (furniture, imported meshes) mixed —
+ * seeded so failures reproduce.
  */
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
@@ -13,7 +14,23 @@ import { DISTRIBUTIONS } from '../../../src/core/model/catalogSchema';
 import { MAX_REFLECTANCE, SURFACE_TARGETS, reflectanceRgb } from '../../../src/core/model/reflectance';
 import { toLightingScene } from '../../../src/core/model/toLightingScene';
 import { validate } from '../../../src/core/model/validate';
+import { FURNITURE_LIBRARY } from '../../../src/core/model/furniture/furnitureLibrary';
+import { boxPart, composeParts, frustumPart } from '../../../src/core/model/furniture/meshParts';
+import { OBJECT_FINISHES } from '../../../src/core/model/furniture/objectFinishes';
+import { WALL_NAMES } from '../../../src/core/model/configuration';
+import { objectMesh } from '../../../src/core/model/objectGeometry';
+import type { TriangleMesh } from '../../../src/core/mesh/triangleMesh';
 import { catalog } from './helpers';
+
+const grey = (): [number, number, number] => [0.4, 0.4, 0.4];
+/** Meshes an import could hand over: an L-shaped counter, a tall thin lamp, one reaching below its origin, a malformed one. */
+const IMPORTS: { name: string; mesh: TriangleMesh }[] = [
+  { name: 'counter.obj', mesh: composeParts([boxPart('worktop', [0, 0, 0], [2, 0.9, 0.6]), boxPart('worktop', [0, 0, 0.6], [0.6, 0.9, 1.6])], grey) },
+  { name: 'lamp.glb', mesh: composeParts([frustumPart('shade', 0, 0, 1.4, 1.7, 0.25, 0.12), frustumPart('stand', 0, 0, 0, 1.4, 0.03)], grey) },
+  { name: 'sunk.obj', mesh: composeParts([boxPart('body', [-0.3, -0.05, -0.3], [0.3, 0.4, 0.3])], grey) },
+  { name: 'broken.obj', mesh: { ...composeParts([boxPart('body', [0, 0, 0], [1, 1, 1])], grey), indices: new Uint32Array([0, 1, 42]), materialOfTriangle: new Uint16Array(1) } },
+];
+const MATERIALS = ['top', 'legs', 'frame', 'cushions', 'body', 'worktop', 'canvas', 'nope'];
 
 interface Step {
   kind: number;
@@ -25,7 +42,7 @@ interface Step {
 }
 
 const unit = fc.double({ min: 0, max: 1, noNaN: true });
-const step = fc.record({ kind: fc.nat(24), i: fc.nat(50), j: fc.nat(50), a: unit, b: unit, c: unit });
+const step = fc.record({ kind: fc.nat(31), i: fc.nat(50), j: fc.nat(50), a: unit, b: unit, c: unit });
 
 const pick = <T>(xs: readonly T[], i: number, fallback: T): T => (xs.length ? xs[i % xs.length] : fallback);
 
@@ -39,9 +56,12 @@ function toAction(s: Configuration, st: Step): [string, unknown] {
   const sys = pick(systems, st.i, 'none');
   const rail = pick(rails, st.i, 'none');
   const mod = pick(modules, st.i, 'none');
+  const obj = pick(s.objects.map((o) => o.id), st.i, 'none');
   // An empty room mostly gets a preset, so sequences spend their steps on systems.
   if (systems.length === 0 && st.c < 0.8) return ['placePreset', { presetId: pick(catalog.presets, st.j, catalog.presets[0]).id }];
-  switch (st.kind) {
+  // Object edits on a room without objects mostly furnish it first.
+  const kind = st.kind >= 27 && s.objects.length === 0 && st.c < 0.8 ? 32 : st.kind;
+  switch (kind) {
     case 0:
       return ['setRoom', { width: 0.5 + st.a * 11, depth: 0.5 + st.b * 11, height: 2 + st.c * 2.5 }];
     case 1:
@@ -90,6 +110,31 @@ function toAction(s: Configuration, st: Step): [string, unknown] {
       return ['setModulePatch', { moduleId: mod, patch: st.c < 0.1 ? null : { universe: st.j % 3, address: st.c < 0.3 ? 505 + (st.i % 10) : 1 + (st.i % 12), resolution: st.a < 0.5 ? 8 : 16, cct: st.b < 0.5 } }];
     case 23:
       return st.c < 0.15 ? ['clearPatch', {}] : ['autoPatch', { universe: 1 + (st.j % 3), address: 1 + Math.floor(st.a * 511), resolution: st.b < 0.5 ? 8 : 16, cct: st.i % 2 === 0 }];
+    case 24:
+    case 25:
+    case 32: {
+      // Library items where asked (some half through a wall: addObject finds the nearest free spot), or where the model puts them.
+      const item = pick(FURNITURE_LIBRARY, st.j, FURNITURE_LIBRARY[0]);
+      const wall = item.mount === 'wall' ? st.i % 10 !== 0 : st.i % 10 === 0;
+      const placement = wall ? { on: 'wall', wall: WALL_NAMES[st.j % 4], u: -0.5 + st.a * (Math.max(W, D) + 1), y: st.b * 3.5 } : { on: 'floor', x: -0.5 + st.a * (W + 1), z: -0.5 + st.b * (D + 1) };
+      return ['addObject', { source: { kind: 'library', item: item.id }, ...(st.c < 0.2 ? {} : { placement }), ...(st.c > 0.7 ? { yaw: 360 * st.a - 90, scale: 0.3 + 2.4 * st.b } : {}) }];
+    }
+    case 26: {
+      const meshIds = Object.keys(s.importedMeshes);
+      if (meshIds.length > 0 && st.c < 0.4) return ['addObject', { source: { kind: 'imported', mesh: st.i % 7 === 0 ? 'i0' : pick(meshIds, st.i, 'i0') }, placement: { on: 'floor', x: st.a * W, z: st.b * D } }];
+      const imp = IMPORTS[st.j % IMPORTS.length];
+      return ['addObject', { source: { kind: 'import', name: imp.name, mesh: imp.mesh, units: 'cm' }, placement: { on: 'floor', x: st.a * W, z: st.b * D }, yaw: 90 * (st.i % 4) }];
+    }
+    case 27:
+      return ['moveObject', { objectId: obj, placement: st.c < 0.75 ? { on: 'floor', x: -0.5 + st.a * (W + 1), z: -0.5 + st.b * (D + 1) } : { on: 'wall', wall: WALL_NAMES[st.j % 4], u: st.a * Math.max(W, D), y: st.b * 3 } }];
+    case 28:
+      return ['rotateObject', st.c < 0.5 ? { objectId: obj, by: 15 * (st.j % 24) - 90 } : { objectId: obj, yaw: 400 * st.a - 20 }];
+    case 29:
+      return ['resizeObject', { objectId: obj, scale: 0.1 + 4.5 * st.a }];
+    case 30:
+      return ['refinishObject', { objectId: obj, material: MATERIALS[st.j % MATERIALS.length], finish: st.c < 0.1 ? null : st.c < 0.6 ? (st.i % 9 === 0 ? 'gold' : pick(OBJECT_FINISHES, st.i, OBJECT_FINISHES[0]).id) : [st.a, st.b, (st.i % 20) / 19] }];
+    case 31:
+      return ['removeObject', { objectId: st.j % 3 === 0 ? obj : 'none' }];
     default:
       return ['setRailLength', { railId: rail, length: 0.5 + 0.1 * (st.j % 26) }];
   }
@@ -99,6 +144,8 @@ describe('always-valid property', () => {
   it('enabled actions keep validate() empty; refused ones would break it', () => {
     const counts = { enabled: 0, refused: 0 };
     const finishes = { enabled: 0, refused: 0 };
+    const objects = { enabled: 0, refused: 0 };
+    let placed = 0;
     fc.assert(
       fc.property(unit, unit, unit, fc.array(step, { minLength: 5, maxLength: 30 }), (a, b, c, steps) => {
         let s = createConfiguration({ width: 2 + a * 8, depth: 2 + b * 8, height: 2.4 + c * 2 });
@@ -108,6 +155,7 @@ describe('always-valid property', () => {
           const action = bindAction(name, params, catalog);
           const e = action.isEnabled(s);
           if (name === 'setReflectance') finishes[e === true ? 'enabled' : 'refused']++;
+          if (/Object$/.test(name)) objects[e === true ? 'enabled' : 'refused']++;
           if (e === true) {
             counts.enabled++;
             s = action.perform(s);
@@ -130,13 +178,21 @@ describe('always-valid property', () => {
         for (const l of scene.luminaires) expect([...l.position, l.yaw, l.roll].every(Number.isFinite)).toBe(true);
         for (const r of Object.values(scene.room.reflectance)) expect(reflectanceRgb(r).every((v) => v >= 0 && v <= MAX_REFLECTANCE)).toBe(true);
         expect(Number.isFinite(billOfMaterials(s, catalog).total)).toBe(true);
+        // every object of a reachable state has a finite placement and a mesh whose reflectances the baker accepts
+        placed += s.objects.length;
+        for (const o of scene.objects ?? []) expect([...o.position, o.yaw, o.scale].every(Number.isFinite)).toBe(true);
+        for (const o of s.objects) expect(objectMesh(s, o.id).materials.every((m) => m.reflectance.every((c) => c >= 0 && c < 1))).toBe(true);
       }),
       { seed: 20240917, numRuns: 2000 },
     );
     // both branches were exercised in bulk
     expect(counts.enabled).toBeGreaterThan(6000);
     expect(counts.refused).toBeGreaterThan(6000);
-    expect(finishes.enabled).toBeGreaterThan(500);
+    // 456 enabled finishes at this seed: object actions took a share of the steps from 0.5 k before
+    expect(finishes.enabled).toBeGreaterThan(400);
     expect(finishes.refused).toBeGreaterThan(40);
+    expect(objects.enabled).toBeGreaterThan(2000);
+    expect(objects.refused).toBeGreaterThan(1000);
+    expect(placed).toBeGreaterThan(1500);
   }, 120_000);
 });
