@@ -85,6 +85,13 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
     return `${base}${SHARE_HASH_PREFIX}${link.text}`;
   };
 
+  // The planner's Share link button: the same link, and the notice shown next to it (not only in the status line).
+  const shareLinkForUi = () => {
+    const link = encodeShareLink(store.getState().config, catalog);
+    const base = typeof location === 'undefined' ? '' : location.origin + location.pathname + location.search;
+    return { link: `${base}${SHARE_HASH_PREFIX}${link.text}`, notice: link.notice };
+  };
+
   const footprints = createFootprintSource(options.assetBase ?? import.meta.env.BASE_URL);
   // The class scopes every luxbox style rule to this element and makes it the container whose
   // width the layout's breakpoints query (app.css); a class the host put there itself stays on destroy.
@@ -93,7 +100,7 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
   const root = createRoot(element);
   root.render(
     <StrictMode>
-      <Configurator store={store} ui={ui} locale={options.locale} onRestoreSaved={restoreSaved} shareLink={shareLink} footprints={footprints} />
+      <Configurator store={store} ui={ui} locale={options.locale} onRestoreSaved={restoreSaved} shareLink={shareLinkForUi} footprints={footprints} />
     </StrictMode>,
   );
 

@@ -1,3 +1,4 @@
+import { useState } from 'react';
 import { useStore } from 'zustand';
 import { createConfiguration } from '../../core/model/configuration';
 import { demoConfiguration } from '../../core/catalog/demoConfiguration';
@@ -14,8 +15,8 @@ export interface ConfiguratorProps {
   locale?: string;
   /** Loads the autosaved configuration (offered after a broken link). */
   onRestoreSaved: () => void;
-  /** The share link of the current configuration. */
-  shareLink: () => string;
+  /** The share link of the current configuration, and the sentence saying what it leaves out (imported models), or null. */
+  shareLink: () => { link: string; notice: string | null };
   footprints: FootprintSource;
 }
 
@@ -25,6 +26,7 @@ export function Configurator({ store, ui, locale, onRestoreSaved, shareLink, foo
   const banner = useStore(ui, (s) => s.banner);
   const room = useStore(store, (s) => s.config.room);
   const catalog = useStore(store, (s) => s.catalog);
+  const [shareNotice, setShareNotice] = useState<string | null>(null);
 
   const startDemo = () => {
     const st = store.getState();
@@ -35,11 +37,12 @@ export function Configurator({ store, ui, locale, onRestoreSaved, shareLink, foo
   };
 
   const share = () => {
-    const link = shareLink();
+    const { link, notice } = shareLink();
     // The clipboard needs a secure context and permission; the link is also shown as text.
     void navigator.clipboard?.writeText(link).catch(() => undefined);
+    setShareNotice(notice);
     ui.setState({ shareLink: link });
-    return 'Share link created: copy it from the side panel.';
+    return notice ? 'Share link created without the imported models: see the side panel.' : 'Share link created: copy it from the side panel.';
   };
 
   return (
@@ -79,6 +82,7 @@ export function Configurator({ store, ui, locale, onRestoreSaved, shareLink, foo
           locale={locale}
           onNewRoom={() => ui.setState({ phase: 'setup', optionsOpen: false, panelOpen: false })}
           onShare={share}
+          shareNotice={shareNotice}
           footprints={footprints}
         />
       )}

@@ -3,6 +3,7 @@ import type { Configuration } from '../../core/model/configuration';
 import type { ActionGate } from './actionGate';
 import type { FootprintSource } from './footprintSource';
 import { ModuleOptions } from './ModuleOptions';
+import { ObjectOptions } from './ObjectOptions';
 import { RailOptions } from './RailOptions';
 import { RoomOptions } from './RoomOptions';
 import type { SelectionPath } from './selection';
@@ -19,10 +20,12 @@ export interface OptionsPanelProps {
 }
 
 /**
- * Settings of the selected part (configurator paper, fig. 10, 11), the deepest selected: a
- * module, a rail, a system, or with nothing selected the room. Every choice is gated by the model.
+ * Settings of the selected part (configurator paper, fig. 10, 11), the deepest selected: an
+ * object, a module, a rail, a system, or with nothing selected the room. Every choice is gated by the model.
  */
 export function OptionsPanel({ config, catalog, path, gate, onClose, footprints }: OptionsPanelProps) {
+  const object = config.objects.find((o) => o.id === path.objectId);
+  if (object) return <ObjectOptions config={config} object={object} gate={gate} onClose={onClose} />;
   const system = config.systems.find((s) => s.id === path.systemId);
   const rail = system?.rails.find((r) => r.id === path.railId);
   const module = rail?.modules.find((m) => m.id === path.moduleId);

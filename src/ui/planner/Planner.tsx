@@ -1,4 +1,4 @@
-import { useCallback, useEffect, useLayoutEffect, useMemo, useRef, useState, useSyncExternalStore } from 'react';
+import { useCallback, useEffect, useLayoutEffect, useMemo, useRef, useState, useSyncExternalStore, type DragEvent } from 'react';
 import { useStore } from 'zustand';
 import { billOfMaterials } from '../../core/model/billOfMaterials';
 import type { ConfiguratorStore, Selection } from '../../core/store/createConfiguratorStore';
@@ -8,6 +8,10 @@ import { OptionsPanel } from './OptionsPanel';
 import { PlanControls } from './PlanControls';
 import { PlanSvg } from './PlanSvg';
 import { PresetPanel } from './PresetPanel';
+import { FURNITURE_DRAG_TYPE, FurniturePanel } from './FurniturePanel';
+import { ImportPanel } from './ImportPanel';
+import type { MeshUnits } from '../../core/model/configuration';
+import type { TriangleMesh } from '../../core/mesh/triangleMesh';
 import { FilePanel } from './FilePanel';
 import { SurfacesPanel } from './SurfacesPanel';
 import { defaultSurfaceFinishes } from '../../core/catalog/surfaceFinishes';
@@ -34,11 +38,13 @@ export interface PlannerProps {
   onNewRoom: () => void;
   /** Copies a share link; returns the message to show. */
   onShare: () => string;
+  /** What the last share link left out (imported models), shown next to it; null when it is complete. */
+  shareNotice?: string | null;
   footprints: FootprintSource;
 }
 
 /** The main screen (configurator paper, fig. 6): the plan, side panel with presets and price, bottom bar. */
-export function Planner({ store, ui, locale, onNewRoom, onShare, footprints }: PlannerProps) {
+export function Planner({ store, ui, locale, onNewRoom, onShare, shareNotice = null, footprints }: PlannerProps) {
   const config = useStore(store, (s) => s.config);
   const catalog = useStore(store, (s) => s.catalog);
   const selection = useStore(store, (s) => s.selection);
@@ -94,6 +100,30 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, footprints }: P
   usePlannerKeys(controller, mode === '2d');
   const level = detailLevel(view.scale);
 
+  // A library item tapped in the panel goes to the middle of the visible plan; the drawer closes to show it.
+  const addFurniture = (itemId: string) => {
+    if (controller.addLibraryItem(itemId) === null) ui.setState({ panelOpen: false });
+  };
+  const addImported = (name: string, mesh: TriangleMesh, units: MeshUnits) => {
+    const refused = controller.addImported(name, mesh, units);
+    if (refused === null) ui.setState({ panelOpen: false });
+    return refused;
+  };
+  // A library item dragged from the panel and dropped on the plan lands where it was dropped.
+  const dragOver = (e: DragEvent) => {
+    if (!e.dataTransfer.types.includes(FURNITURE_DRAG_TYPE)) return;
+    e.preventDefault();
+    e.dataTransfer.dropEffect = 'copy';
+  };
+  const drop = (e: DragEvent) => {
+    const itemId = e.dataTransfer.getData(FURNITURE_DRAG_TYPE);
+    const el = wrapRef.current;
+    if (!itemId || !el) return;
+    e.preventDefault();
+    const r = el.getBoundingClientRect();
+    controller.addLibraryItem(itemId, { sx: e.clientX - r.left, sy: e.clientY - r.top });
+  };
+
   const placedNew = () => {
     const systems = store.getState().config.systems;
     const last = systems[systems.length - 1];
@@ -119,7 +149,7 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, footprints }: P
       <div className="workspace">
         <div className="stage">
           {mode === '2d' ? (
-            <div className="plan-wrap" ref={wrapRef} data-testid="plan" data-scale={view.scale.toFixed(3)} data-level={level}>
+            <div className="plan-wrap" ref={wrapRef} data-testid="plan" data-scale={view.scale.toFixed(3)} data-level={level} onDragOver={dragOver} onDrop={drop}>
               <PlanSvg config={config} catalog={catalog} view={view} selection={path} drag={drag} footprints={footprints} />
               <PlanControls
                 config={config}
@@ -157,6 +187,9 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, footprints }: P
         <aside className={`side-panel${panelOpen ? ' open' : ''}`} aria-label="Presets and price">
           {optionsOpen && <OptionsPanel config={config} catalog={catalog} path={path} gate={gate} onClose={() => ui.setState({ optionsOpen: false })} footprints={footprints} />}
           <PresetPanel catalog={catalog} gate={gate} onPlaced={placedNew} />
+          <FurniturePanel gate={gate} onAdd={addFurniture}>
+            <ImportPanel onAdd={addImported} />
+          </FurniturePanel>
           <SurfacesPanel room={config.room} finishes={defaultSurfaceFinishes} gate={gate} />
           <BomPanel bom={bom} locale={locale} />
           <section className="panel-section">
@@ -173,6 +206,11 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, footprints }: P
               <div className="field" style={{ marginTop: 8 }}>
                 <label htmlFor="share-link">Link to this configuration</label>
                 <input id="share-link" readOnly value={shareLink} onFocus={(e) => e.target.select()} data-testid="share-link" />
+                {shareNotice && (
+                  <p className="share-notice" role="note" data-testid="share-notice">
+                    ⚠ {shareNotice.charAt(0).toUpperCase() + shareNotice.slice(1)}.
+                  </p>
+                )}
               </div>
             )}
           </section>

@@ -73,7 +73,8 @@ export function distanceToPolygon(poly: readonly PlanPoint[], x: number, z: numb
 export function objectAt(config: Configuration, x: number, z: number, margin: number): string | undefined {
   const objects = [...config.objects].reverse();
   const shapes = objects.map((o) => objectPolygons(config, o.id));
-  const inside = objects.findIndex((_, i) => shapes[i].some((p) => insidePolygon(p, x, z)));
+  // Even-odd over the outline's loops, as it is filled: a point in a hole (under a table's rim) is not on it.
+  const inside = objects.findIndex((_, i) => shapes[i].filter((p) => insidePolygon(p, x, z)).length % 2 === 1);
   if (inside >= 0) return objects[inside].id;
   let best: { id: string; d: number } | undefined;
   objects.forEach((o, i) => {

@@ -1,0 +1,136 @@
+import { useRef, useState, type ChangeEvent } from 'react';
+import { InputError } from '../../core/inputError';
+import { MESH_UNITS, type MeshUnits } from '../../core/model/configuration';
+import type { TriangleMesh } from '../../core/mesh/triangleMesh';
+import type { ImportedMesh, MeshFile } from '../../engines/meshImport/importedMesh';
+import { itemDimensions } from './FurniturePanel';
+
+/** What the file picker offers: an OBJ with its MTL (picked together), a glTF (with its .bin buffers) or a GLB. */
+export const IMPORT_ACCEPT = '.obj,.mtl,.gltf,.glb,.bin';
+
+const UNIT_NAMES: Record<MeshUnits, string> = { m: 'metres (m)', cm: 'centimetres (cm)', mm: 'millimetres (mm)', in: 'inches (in)' };
+
+/**
+ * Reads the picked files with the mesh importer (src/engines/meshImport), loaded on first use:
+ * it carries three.js's loaders, which the planner's bundle does not (docs/planner.md).
+ */
+async function readModel(files: readonly MeshFile[], units: 'auto' | MeshUnits): Promise<ImportedMesh> {
+  const { importMesh } = await import('../../engines/meshImport/importMesh');
+  return importMesh(files, { units });
+}
+
+export interface ImportPanelProps {
+  /** Adds the model to the room; returns null when it was added, else the model's reason. */
+  onAdd: (name: string, mesh: TriangleMesh, units: MeshUnits) => string | null;
+}
+
+/**
+ * "Import model…": pick an .obj with its .mtl, a .gltf or a .glb. Before anything is added the
+ * panel shows what was read — the file, the triangle count, the size, the unit the importer
+ * detected with a select to override it, and any warnings — and **Add to room** adds it.
+ * Problems with the files are shown here, naming the file; the configuration is untouched
+ * until the user adds the model.
+ */
+export function ImportPanel({ onAdd }: ImportPanelProps) {
+  const [files, setFiles] = useState<MeshFile[] | null>(null);
+  const [model, setModel] = useState<ImportedMesh | null>(null);
+  const [error, setError] = useState<string | null>(null);
+  const [busy, setBusy] = useState(false);
+  // Only the latest read is shown (a slow read superseded by another pick or unit change is dropped).
+  const seq = useRef(0);
+
+  const read = async (picked: MeshFile[], units: 'auto' | MeshUnits) => {
+    const mine = ++seq.current;
+    setBusy(true);
+    setError(null);
+    try {
+      const result = await readModel(picked, units);
+      if (mine !== seq.current) return;
+      setModel(result);
+    } catch (err) {
+      if (mine !== seq.current) return;
+      setModel(null);
+      const names = picked.map((f) => f.name).join(', ');
+      setError(err instanceof InputError ? err.message : `${names}: could not be read (${err instanceof Error ? err.message : String(err)})`);
+    } finally {
+      if (mine === seq.current) setBusy(false);
+    }
+  };
+
+  const pick = async (e: ChangeEvent<HTMLInputElement>) => {
+    const input = e.currentTarget;
+    const list = [...(input.files ?? [])];
+    // Cleared so that picking the same files again fires change again.
+    input.value = '';
+    if (list.length === 0) return;
+    const picked = await Promise.all(list.map(async (f) => ({ name: f.name, bytes: new Uint8Array(await f.arrayBuffer()) })));
+    setFiles(picked);
+    await read(picked, 'auto');
+  };
+
+  const cancel = () => {
+    seq.current++;
+    setFiles(null);
+    setModel(null);
+    setError(null);
+    setBusy(false);
+  };
+
+  const add = () => {
+    if (!model) return;
+    const refused = onAdd(model.name, model.mesh, model.units);
+    if (refused) setError(`${model.name} cannot be added: ${refused}`);
+    else cancel();
+  };
+
+  const b = model?.bounds;
+  return (
+    <div className="import-model" data-testid="import-panel">
+      <label className="btn file-button">
+        <input type="file" multiple accept={IMPORT_ACCEPT} className="file-input" onChange={(e) => void pick(e)} data-testid="import-file" />
+        Import model…
+      </label>
+      <p className="empty-note">An .obj with its .mtl (pick both), a .gltf or a .glb.</p>
+      {busy && <p className="empty-note" role="status">Reading the model…</p>}
+      {error && (
+        <p className="import-error" role="alert" data-testid="import-error">
+          {error}
+        </p>
+      )}
+      {model && files && b && (
+        <div className="import-preview" data-testid="import-preview">
+          <p className="preset-name">{model.name}</p>
+          <p className="preset-detail" data-testid="import-triangles">
+            {model.triangleCount.toLocaleString('en')} triangles · {itemDimensions({ width: b.max[0] - b.min[0], depth: b.max[2] - b.min[2], height: b.max[1] - b.min[1] })}
+          </p>
+          <div className="field">
+            <label htmlFor="import-units">Units of the file (detected: {model.detectedUnits})</label>
+            <select id="import-units" value={model.units} data-testid="import-units" onChange={(e) => void read(files, e.target.value as MeshUnits)}>
+              {MESH_UNITS.map((u) => (
+                <option key={u} value={u}>
+                  {UNIT_NAMES[u]}
+                  {u === model.detectedUnits ? ' — detected' : ''}
+                </option>
+              ))}
+            </select>
+          </div>
+          {model.warnings.length > 0 && (
+            <ul className="import-warnings" aria-label="Import warnings">
+              {model.warnings.map((w) => (
+                <li key={w}>{w}</li>
+              ))}
+            </ul>
+          )}
+          <div className="setup-actions">
+            <button type="button" className="btn btn-primary" onClick={add} disabled={busy} data-testid="import-add">
+              Add to room
+            </button>
+            <button type="button" className="btn" onClick={cancel}>
+              Cancel
+            </button>
+          </div>
+        </div>
+      )}
+    </div>
+  );
+}
