@@ -1,11 +1,15 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { PLANNER_COMMANDS } from '../../../src/ui/planner/plannerCommands';
+import type { RoomObject } from '../../../src/core/model/configuration';
+import { FURNITURE_LIBRARY } from '../../../src/core/model/furniture/furnitureLibrary';
+import { objectPlacement } from '../../../src/core/model/objectGeometry';
 import { TestPlanner } from './testPlanner';
 
 /** One thing a user can do to the plan, with positions in plan pixels (1000 × 800). */
 type Step =
-  | { kind: 'drag'; onSystem: boolean; from: [number, number]; by: [number, number]; steps: number }
+  | { kind: 'drag'; on: 'system' | 'object' | 'anywhere'; from: [number, number]; by: [number, number]; steps: number }
+  | { kind: 'add'; item: string; at: [number, number] | null }
   | { kind: 'tap'; at: [number, number] }
   | { kind: 'wheel'; at: [number, number]; delta: number }
   | { kind: 'pinch'; at: [number, number]; from: number; to: number }
@@ -21,24 +25,36 @@ const buttonIds = PLANNER_COMMANDS.map((c) => c.id).filter((id) => id !== 'toggl
 const step: fc.Arbitrary<Step> = fc.oneof(
   { weight: 4, arbitrary: fc.record({
     kind: fc.constant('drag' as const),
-    // Half the drags start on a system (its first rail's middle), the rest anywhere.
-    onSystem: fc.boolean(),
+    // A third of the drags start on a system (its first rail's middle), a third on an object, the rest anywhere.
+    on: fc.constantFrom('system' as const, 'object' as const, 'anywhere' as const),
     from: point,
     by: fc.tuple(fc.integer({ min: -200, max: 200 }), fc.integer({ min: -200, max: 200 })),
     steps: fc.integer({ min: 1, max: 6 }),
   }) },
   fc.record({ kind: fc.constant('tap' as const), at: point }),
+  // Furniture from the panel: tapped (the middle of the visible plan) or dropped at a point.
+  fc.record({ kind: fc.constant('add' as const), item: fc.constantFrom(...FURNITURE_LIBRARY.map((i) => i.id)), at: fc.option(point, { nil: null }) }),
   fc.record({ kind: fc.constant('wheel' as const), at: point, delta: fc.integer({ min: -600, max: 600 }) }),
   fc.record({ kind: fc.constant('pinch' as const), at: point, from: fc.integer({ min: 20, max: 400 }), to: fc.integer({ min: 20, max: 400 }) }),
   { weight: 3, arbitrary: fc.record({ kind: fc.constant('key' as const), spec: fc.constantFrom(...keySpecs) }) },
   fc.record({ kind: fc.constant('button' as const), id: fc.constantFrom(...buttonIds) }),
 );
 
+/** A point on an object (its origin: a floor item's footprint centre, a wall item's back on its wall), on screen. */
+function objectPoint(t: TestPlanner, o: RoomObject) {
+  const w = objectPlacement(o, t.config.room).position;
+  return t.screenOf({ x: w[0], z: w[2] });
+}
+
 function perform(t: TestPlanner, s: Step): void {
   const at = (p: [number, number]) => ({ sx: p[0], sy: p[1] });
   switch (s.kind) {
+    case 'add':
+      t.controller.addLibraryItem(s.item, s.at ? at(s.at) : undefined);
+      return;
     case 'drag': {
-      const from = s.onSystem && t.config.systems.length > 0 ? t.railCentre() : at(s.from);
+      const o = t.config.objects[t.config.objects.length - 1];
+      const from = s.on === 'system' && t.config.systems.length > 0 ? t.railCentre() : s.on === 'object' && o ? objectPoint(t, o) : at(s.from);
       t.drag(from, { sx: from.sx + s.by[0], sy: from.sy + s.by[1] }, s.steps);
       return;
     }
@@ -62,8 +78,9 @@ function perform(t: TestPlanner, s: Step): void {
 }
 
 describe('random pointer and key sequences (seeded)', () => {
-  it('never produce an invalid configuration, and every accepted step is undone exactly', () => {
+  it('never produce an invalid configuration (systems and objects alike), and every accepted step is undone exactly', () => {
     let changed = 0;
+    let objectChanges = 0;
     fc.assert(
       fc.property(fc.array(step, { minLength: 1, maxLength: 40, size: 'max' }), (steps) => {
         const t = new TestPlanner();
@@ -73,7 +90,11 @@ describe('random pointer and key sequences (seeded)', () => {
           expect(t.problems()).toEqual([]);
           expect(t.controller.drag).toBeNull();
           expect(Number.isFinite(t.view.scale) && Number.isFinite(t.view.offsetX) && Number.isFinite(t.view.offsetY)).toBe(true);
-          if (t.config !== seen[seen.length - 1]) seen.push(t.config);
+          const last = seen[seen.length - 1];
+          if (t.config !== last) {
+            if (t.config.objects !== last.objects) objectChanges++;
+            seen.push(t.config);
+          }
         }
         changed += seen.length - 1;
         // Undo walks back through valid configurations to the start.
@@ -82,7 +103,8 @@ describe('random pointer and key sequences (seeded)', () => {
       }),
       { seed: 20261123, numRuns: 60 },
     );
-    // The sequences did reach the model (else the check above proves little).
+    // The sequences did reach the model (else the check above proves little), objects included.
     expect(changed).toBeGreaterThan(100);
+    expect(objectChanges).toBeGreaterThan(50);
   });
 });
