@@ -67,5 +67,22 @@ export function combineMaps(parts: { maps: BakedMaps; weight: number | Rgb }[]):
     }
     result[name] = { layout, ...sum };
   }
+  // The objects' atlas, when the parts have one (every part of one scene has the same atlas).
+  const atlas = first.objects?.atlas;
+  if (atlas) {
+    const size = atlas.width * atlas.height * 3;
+    const sum = { direct: new Float32Array(size), indirect: new Float32Array(size), total: new Float32Array(size) };
+    for (const { maps, weight } of parts) {
+      const m = maps.objects;
+      if (!m || m.total.length !== size) throw new Error(`combineMaps: objects maps differ in size (${m ? m.total.length / 3 : 'none'} vs ${size / 3} texels)`);
+      const w = typeof weight === 'number' ? [weight, weight, weight] : weight;
+      for (const kind of ['direct', 'indirect', 'total'] as const) {
+        const src = m[kind];
+        const dst = sum[kind];
+        for (let i = 0; i < size; i++) dst[i] += src[i] * w[i % 3];
+      }
+    }
+    result.objects = { atlas, ...sum };
+  }
   return result;
 }

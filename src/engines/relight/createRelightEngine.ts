@@ -5,6 +5,7 @@ import { createBaker, type BakeJob } from '../bake/createBaker';
 import { surfaceLayouts } from '../bake/surfaceLayout';
 import { SURFACE_NAMES, type Rgb } from '../../core/model/lightingScene';
 import { groupLuminaires, groupWeight, roomKey, type LuminaireGroup } from './luminaireGroups';
+import { objectsKey } from './objectsKey';
 import { emptyLitMaps, relightMaps, type BasisMaps, type LitMaps } from './relightMaps';
 
 /**
@@ -98,7 +99,9 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
 
   const readBasis = (j: BakeJob): BasisMaps => {
     const m = j.readMaps();
-    return Object.fromEntries(SURFACE_NAMES.map((n) => [n, { direct: m[n].direct, total: m[n].total }])) as BasisMaps;
+    const basis = Object.fromEntries(SURFACE_NAMES.map((n) => [n, { direct: m[n].direct, total: m[n].total }])) as BasisMaps;
+    if (m.objects) basis.objects = { atlas: m.objects.atlas, direct: m.objects.direct, total: m.objects.total };
+    return basis;
   };
 
   // Direct-only bases for every new group first (one group per call, so a caller slicing the
@@ -107,7 +110,7 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
     const st = order.find((s) => !s.basis);
     if (!st) return false;
     counters.groupBakes++;
-    const j = baker.start({ room: scene!.room, luminaires: st.group.basis }, settings);
+    const j = baker.start(groupScene(scene!, st.group), settings);
     try {
       j.finalize();
       st.basis = readBasis(j);
@@ -145,7 +148,7 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
     if (!job) {
       const next = order.find((s) => !s.final);
       if (!next) return progress();
-      job = { state: next, job: baker.start({ room: scene.room, luminaires: next.group.basis }, settings), lastPreview: performance.now() };
+      job = { state: next, job: baker.start(groupScene(scene, next.group), settings), lastPreview: performance.now() };
     }
     const p = job.job.step(samples);
     if (p.done) finishJob();
@@ -160,7 +163,8 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
 
   const engine: RelightEngine = {
     setScene(next) {
-      const nextRoom = roomKey(next.room);
+      // Objects are part of the room: moving, adding or removing one is a new scene and rebakes every group.
+      const nextRoom = roomKey(next.room) + objectsKey(next.objects);
       if (nextRoom !== room) {
         job?.job.dispose();
         job = null;
@@ -222,4 +226,9 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
     },
   };
   return engine;
+}
+
+/** One group's basis scene: the room, the group's luminaires at unit weight, and the scene's objects (they shade and bounce every group's light). */
+function groupScene(scene: BakeScene, group: LuminaireGroup): BakeScene {
+  return { room: scene.room, luminaires: group.basis, ...(scene.objects && scene.objects.length > 0 ? { objects: scene.objects } : {}) };
 }

@@ -1,13 +1,25 @@
 import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../core/model/lightingScene';
 import type { SurfaceLayout } from '../bake/surfaceLayout';
+import type { ObjectAtlas } from '../bake/objects/preparedObjects';
 
-/** One group's basis: RGB lux per texel (3 floats), direct and total, per surface, at unit weight. */
-export type BasisMaps = Record<SurfaceName, { direct: Float32Array; total: Float32Array }>;
+/** A receiver's relit (or basis) maps: RGB lux per texel, 3 floats. */
+export interface DirectTotal {
+  direct: Float32Array;
+  total: Float32Array;
+}
 
-/** Relit maps: what the viewer shows and the statistics read. */
+/** The objects' atlas maps (scenes with objects; bakedMaps.ts ObjectMaps without the indirect map). */
+export interface ObjectDirectTotal extends DirectTotal {
+  atlas: ObjectAtlas;
+}
+
+/** One group's basis: RGB lux per texel (3 floats), direct and total, per surface (and the objects' atlas), at unit weight. */
+export type BasisMaps = Record<SurfaceName, DirectTotal> & { objects?: ObjectDirectTotal };
+
+/** Relit maps: what the viewer shows and the statistics read. `objects` is there when the bases have objects. */
 export interface LitMaps {
   layouts: Record<SurfaceName, SurfaceLayout>;
-  maps: Record<SurfaceName, { direct: Float32Array; total: Float32Array }>;
+  maps: Record<SurfaceName, DirectTotal> & { objects?: ObjectDirectTotal };
 }
 
 /** Zeroed output buffers for a set of layouts. */
@@ -26,14 +38,14 @@ export function emptyLitMaps(layouts: readonly SurfaceLayout[]): LitMaps {
  * is one pass over the texels per group.
  */
 export function relightMaps(parts: readonly { basis: BasisMaps; weight: Rgb }[], out: LitMaps): LitMaps {
-  for (const name of SURFACE_NAMES) {
-    const dst = out.maps[name];
+  const add = (name: string, dst: DirectTotal, pick: (basis: BasisMaps) => DirectTotal | undefined) => {
     dst.direct.fill(0);
     dst.total.fill(0);
     for (const { basis, weight } of parts) {
       const [wr, wg, wb] = weight;
       if (wr === 0 && wg === 0 && wb === 0) continue;
-      const src = basis[name];
+      const src = pick(basis);
+      if (!src) throw new Error(`relightMaps: a basis has no ${name} maps`);
       if (src.total.length !== dst.total.length) throw new Error(`relightMaps: ${name} basis has ${src.total.length / 3} texels, output ${dst.total.length / 3}`);
       for (const kind of ['direct', 'total'] as const) {
         const s = src[kind];
@@ -45,6 +57,17 @@ export function relightMaps(parts: readonly { basis: BasisMaps; weight: Rgb }[],
         }
       }
     }
-  }
+  };
+  for (const name of SURFACE_NAMES) add(name, out.maps[name], (b) => b[name]);
+  // The objects' atlas: every basis of one scene has the same atlas (the same objects, the same settings).
+  const atlas = parts.find((p) => p.basis.objects)?.basis.objects?.atlas;
+  if (atlas) {
+    const size = atlas.width * atlas.height * 3;
+    if (!out.maps.objects || out.maps.objects.total.length !== size) {
+      out.maps.objects = { atlas, direct: new Float32Array(size), total: new Float32Array(size) };
+    }
+    out.maps.objects.atlas = atlas;
+    add('objects', out.maps.objects, (b) => b.objects);
+  } else delete out.maps.objects;
   return out;
 }
