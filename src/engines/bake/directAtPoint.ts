@@ -6,12 +6,12 @@ import type { LampSources } from './scenePointSources';
 /**
  * Direct illuminance (lux, RGB) exactly at a surface point p with unit normal n,
  * on the CPU in float64: E = Σ I(γ, C)·cos(incidence)/d² over the same point
- * sources the direct pass uses (CIE 171:2006 §5.2; an empty box has no
- * occluders). `luxbox probe` takes direct light from here, not from the maps:
+ * sources the direct pass uses (CIE 171:2006 §5.2), each, when `visible` is
+ * given (a scene with objects), only if the point sees it. `luxbox probe` takes direct light from here, not from the maps:
  * near a hot spot E changes by orders of magnitude between texel centres,
  * where any interpolation of a map is wrong.
  */
-export function directAtPoint(lamps: readonly LampSources[], p: Vec3, n: Vec3): Rgb {
+export function directAtPoint(lamps: readonly LampSources[], p: Vec3, n: Vec3, visible?: (p: Vec3, n: Vec3, source: Vec3) => boolean): Rgb {
   const out: Rgb = [0, 0, 0];
   for (const lamp of lamps) {
     const toLocal = transpose(lamp.rotation);
@@ -27,6 +27,8 @@ export function directAtPoint(lamps: readonly LampSources[], p: Vec3, n: Vec3): 
       const local = applyMat3(toLocal, d);
       // A face of a tall opening emits only its own hemisphere (openingSources).
       if (lamp.sides[k] * local[1] < 0) continue;
+      // With objects: only sources the point sees past them (the direct pass's shadow test).
+      if (visible && !visible(p, n, s)) continue;
       const [g, c] = photometricAngles(local);
       e += (Math.max(0, intensity(lamp.photometry, g, c)) * cos) / d2;
     }

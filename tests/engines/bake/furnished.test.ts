@@ -10,6 +10,7 @@ import { SURFACE_NAMES, type Vec3 } from '../../../src/core/model/lightingScene'
 import type { BakeObject, BakeScene } from '../../../src/engines/bake/bakeScene';
 import { luxOf, type BakedMaps } from '../../../src/engines/bake/bakedMaps';
 import { createBaker } from '../../../src/engines/bake/createBaker';
+import { probeScene } from '../../../src/engines/bake/probeMaps';
 import { texelCentre } from '../../../src/engines/bake/surfaceLayout';
 import { boxMesh } from './objects/objectFixtures';
 import { isotropic, spot, totalFlux, uniformRoom } from './bakeTestKit';
@@ -106,6 +107,19 @@ describe('direct light with objects', () => {
     console.info(`plate top: ${top} texels, worst |E/(I·cosθ/d²) − 1| = ${worst.toExponential(2)}`);
     expect(top).toBeGreaterThanOrEqual(100);
     expect(worst).toBeLessThan(0.005);
+  });
+
+  it('probe: direct light at a point is shadow-tested on the CPU as in the direct pass', () => {
+    const withPlate = { ...scene, objects: [plate] };
+    const [under, beside] = probeScene(withPlate, furnished.maps, settings, [
+      [1.7, 0, 1.4],
+      [2.8, 0, 0.3],
+    ]);
+    expect(under.direct).toBe(0);
+    // Beside the shadow: I·cosθ/d² of the point source.
+    const d = [2.8 - source[0], -source[1], 0.3 - source[2]];
+    const dist = Math.hypot(...d);
+    expect(Math.abs(beside.direct / ((I * source[1]) / dist ** 3) - 1)).toBeLessThan(1e-9);
   });
 
   it('the report lists the plate with its area, texels and flux', () => {
