@@ -13,8 +13,13 @@ import { brightGatherPass } from '../../../shaders/brightGatherPass.glsl';
 import { residualPass } from '../../../shaders/residualPass.glsl';
 import { tileSums } from '../../../src/engines/bake/readTileSums';
 import { cachedProgramCount, getProgram } from '../../../src/engines/bake/glResources';
-import { generateDirectShader, type DirectLamp } from '../../../src/engines/bake/generateDirectShader';
-import { generateGatherShader } from '../../../src/engines/bake/generateGatherShader';
+import { generateDirectShader, generateShadowedDirectShader, type DirectLamp } from '../../../src/engines/bake/generateDirectShader';
+import { generateGatherShader, generateObjectAwareGatherShader, generateObjectGatherShader } from '../../../src/engines/bake/generateGatherShader';
+import { generateObjectDirectShader } from '../../../src/engines/bake/objects/objectPassDirectShader';
+import { occludedBrightGatherPass } from '../../../shaders/occludedBrightGatherPass.glsl';
+import { chartBlurPass } from '../../../shaders/chartBlurPass.glsl';
+import { chartDilatePass } from '../../../shaders/chartDilatePass.glsl';
+import { objectFluxRatioPass, objectReduceSumPass } from '../../../shaders/objectFluxReduce.glsl';
 import { buildProfileTable } from '../../../src/engines/bake/profileTable';
 import { luminaireRotation } from '../../../src/engines/bake/luminaireRotation';
 import { surfaceLayouts } from '../../../src/engines/bake/surfaceLayout';
@@ -87,6 +92,27 @@ describe('generated shaders compile', () => {
       weight: [1, 1, 1],
     };
     for (const layout of layouts) compiles(generateDirectShader(layout, [lamp, { ...lamp, sides: undefined }], 8));
+  });
+
+  it('with objects: shadowed direct (texel means, tall opening), atlas direct, object-aware gathers, occluded bright gather', () => {
+    const lamp: DirectLamp = {
+      profile: table.layouts[3],
+      rotation: luminaireRotation(0, 10, 0),
+      sources: [[1, 2.2, 2], [1, 2.4, 2]],
+      sides: [-1, 1],
+      weight: [1, 1, 1],
+    };
+    const lamps = [lamp, { ...lamp, sides: undefined, profile: table.layouts[1] }];
+    const objects = { bvhWidth: 1024, atlasWidth: 37, atlasHeight: 21 };
+    for (const layout of layouts) {
+      compiles(generateShadowedDirectShader(layout, lamps, 8, objects.bvhWidth));
+      compiles(generateShadowedDirectShader(layout, lamps, 1, objects.bvhWidth));
+      for (const [, rho] of reflectances) compiles(generateObjectAwareGatherShader(layout, [3, 2.5, 4], rho, objects));
+    }
+    compiles(generateObjectDirectShader(lamps, objects.bvhWidth));
+    for (const [, rho] of reflectances) compiles(generateObjectGatherShader([3, 2.5, 4], rho, objects));
+    compiles(occludedBrightGatherPass(objects.bvhWidth));
+    for (const pass of [chartBlurPass, chartDilatePass, objectReduceSumPass, objectFluxRatioPass]) compiles(pass);
   });
 
   it('fixed passes: combine, tail, flux reduction, blur', () => {
