@@ -96,6 +96,12 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, shareNotice = n
     return () => window.clearTimeout(t);
   }, [status, ui]);
 
+  // The options sit at the top of the side panel: show them when they open, wherever the panel was scrolled to (the furniture list, say).
+  const panelRef = useRef<HTMLElement>(null);
+  useEffect(() => {
+    if (optionsOpen && panelRef.current) panelRef.current.scrollTop = 0;
+  }, [optionsOpen, selection]);
+
   usePlanGestures(wrapRef, controller);
   usePlannerKeys(controller, mode === '2d');
   const level = detailLevel(view.scale);
@@ -184,9 +190,17 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, shareNotice = n
           )}
           <BottomBar controller={controller} mode={mode} />
         </div>
-        <aside className={`side-panel${panelOpen ? ' open' : ''}`} aria-label="Presets and price">
+        <aside ref={panelRef} className={`side-panel${panelOpen ? ' open' : ''}`} aria-label="Presets and price">
           {optionsOpen && <OptionsPanel config={config} catalog={catalog} path={path} gate={gate} onClose={() => ui.setState({ optionsOpen: false })} footprints={footprints} />}
-          <PresetPanel catalog={catalog} gate={gate} onPlaced={placedNew} />
+          <PresetPanel
+            catalog={catalog}
+            gate={gate}
+            onPlaced={placedNew}
+            onLoadRoom={(room) => {
+              const result = store.getState().load(room);
+              if (!result.ok) explain(result.reason);
+            }}
+          />
           <FurniturePanel gate={gate} onAdd={addFurniture}>
             <ImportPanel onAdd={addImported} />
           </FurniturePanel>
