@@ -1,3 +1,4 @@
+import { furnishedTables } from './furnishedBench';
 import type { BenchResult } from './runBench';
 
 const pct = (e: number): string => (100 * e < 0.1 ? (100 * e).toFixed(3) : (100 * e).toFixed(2));
@@ -58,6 +59,12 @@ export function benchTables(r: BenchResult, svgName: string | null): string {
     lines.push(`| ${s.study} | ${s.luminaires} | ${s.pointSources} | ${s.texelSize} m | ${s.texels} | ${ms(s.bakeMs)} | ${ms(s.compileMs)} | ${((1000 * (s.bakeMs - s.compileMs)) / s.texels).toFixed(1)} |`);
   }
   lines.push('');
+  if (r.furnished && r.furnished.length > 0) {
+    lines.push('#### Furnished rooms (objects, against the furnished CPU reference)');
+    lines.push('');
+    lines.push(furnishedTables(r.furnished));
+    lines.push('');
+  }
   return lines.join('\n');
 }
 

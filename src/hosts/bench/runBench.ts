@@ -26,6 +26,7 @@ import {
   type BenchScene,
 } from './benchScenes';
 import { relativeErrors } from './errorStats';
+import { runFurnishedBench, type FurnishedBenchScenePart } from './furnishedBench';
 import { machineInfo, type MachineInfo } from './machineInfo';
 
 export interface BenchRow {
@@ -75,6 +76,8 @@ export interface BenchResult {
   scaling: ScalingRow[];
   scalingScene: string;
   scalingQuality: Omit<BenchQuality, 'texelSize'>;
+  /** Furnished scenes (issue #10) against the furnished reference; full runs only. */
+  furnished?: FurnishedBenchScenePart[];
   totalMs: number;
 }
 
@@ -232,9 +235,11 @@ export function runBench(options: BenchOptions): BenchResult {
       scaling.push({ study: 'texels', luminaires: all.length, pointSources: report.pointSources, texelSize, texels: report.totalTexels, bakeMs: ms, compileMs: report.timings_ms.compile });
       options.log(`scaling: texel ${texelSize} m (${report.totalTexels} texels): ${Math.round(ms)} ms`);
     }
+    const furnished = options.quick ? undefined : runFurnishedBench(baker, options.root, options.log);
     return {
       quick: options.quick,
       machine,
+      furnished,
       scenes: infos,
       rows,
       scaling,
