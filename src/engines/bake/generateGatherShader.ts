@@ -79,15 +79,28 @@ function exitanceFunction(receiver: number, reflectance: Rgb[], objects: GatherO
     )
     .join('');
   // With objects the ray ends at the nearer of the box exit and the first object hit; an object
-  // emits ρ·E of the atlas texel hit (nearest texel: the texel holding the hit point is covered,
-  // so no empty neighbour darkens it), nothing from its back face (which still blocks).
+  // emits ρ·E of the atlas texel hit (nearest texel, so no empty neighbour darkens hits near a
+  // chart's border), nothing from its back face (which still blocks). A hit in a texel whose
+  // coverage is 0 (a sliver of the chart too thin to count) reads the first covered texel of its
+  // 3×3 neighbourhood: charts are ≥ 2 texels apart, so that texel is of the same chart.
   const objectHit = objects
     ? `  float tObject;
   vec2 atlasUv;
   bool frontFace;
   if (bvhClosestHit(origin, dir, t, tObject, atlasUv, frontFace)) {
     if (!frontFace) return vec3(0.0);
-    ivec2 texel = clamp(ivec2(atlasUv * ATLAS_SIZE), ivec2(0), ivec2(ATLAS_SIZE) - 1);
+    ivec2 last = ivec2(ATLAS_SIZE) - 1;
+    ivec2 texel = clamp(ivec2(atlasUv * ATLAS_SIZE), ivec2(0), last);
+    if (texelFetch(uPoints, texel, 0).a <= 0.0) {
+      ivec2 centre = texel;
+      for (int k = 0; k < 9; k++) {
+        ivec2 q = clamp(centre + ivec2(k % 3 - 1, k / 3 - 1), ivec2(0), last);
+        if (texelFetch(uPoints, q, 0).a > 0.0) {
+          texel = q;
+          break;
+        }
+      }
+    }
     return texelFetch(uObjectRho, texel, 0).rgb * texelFetch(uSource6, texel, 0).rgb;
   }
 `
