@@ -2,7 +2,7 @@ import type { Catalog } from '../../core/model/catalogSchema';
 import { createConfiguration, type Configuration } from '../../core/model/configuration';
 import { decodeShareString, deserializeConfiguration } from '../../core/model/sceneFile';
 import { InputError } from '../../core/inputError';
-import { demoConfiguration } from '../../core/catalog/demoConfiguration';
+import { firstImpression } from '../../ui/viewer/firstImpression';
 
 /** The URL hash prefix of a share link: `#c=<base64url scene file>` (src/core/model/sceneFile.ts). */
 export const SHARE_HASH_PREFIX = '#c=';
@@ -78,6 +78,6 @@ export function resolveStartup({ catalog, hash, saved, room, demo }: StartupInpu
   if (savedConfig) return { config: savedConfig, phase: 'planner', banner: null, saveNow: false, clearHash: false };
   const banner = savedError ? { text: `Your saved configuration could not be read (${savedError}).`, canRestore: false } : null;
   if (room) return { config: createConfiguration(room), phase: 'planner', banner, saveNow: false, clearHash: false };
-  if (demo) return { config: demoConfiguration(catalog), phase: 'planner', banner, saveNow: false, clearHash: false };
+  if (demo) return { config: firstImpression(catalog), phase: 'planner', banner, saveNow: false, clearHash: false };
   return { config: createConfiguration(), phase: 'setup', banner, saveNow: false, clearHash: false };
 }

@@ -1,7 +1,7 @@
 import { useState } from 'react';
 import { useStore } from 'zustand';
 import { createConfiguration } from '../../core/model/configuration';
-import { demoConfiguration } from '../../core/catalog/demoConfiguration';
+import { firstImpression } from '../viewer/firstImpression';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import { Planner } from '../planner/Planner';
 import type { FootprintSource } from '../planner/footprintSource';
@@ -30,7 +30,7 @@ export function Configurator({ store, ui, locale, onRestoreSaved, shareLink, foo
 
   const startDemo = () => {
     const st = store.getState();
-    st.load(demoConfiguration(catalog));
+    st.load(firstImpression(catalog));
     const systems = store.getState().config.systems;
     if (systems.length > 0) store.getState().select({ kind: 'system', id: systems[systems.length - 1].id });
     ui.setState({ phase: 'planner' });

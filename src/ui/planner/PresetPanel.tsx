@@ -1,6 +1,7 @@
 import { memo } from 'react';
+import { FURNISHED_PRESETS } from '../../core/catalog/furnishedPresets';
 import type { Catalog, PresetSpec } from '../../core/model/catalogSchema';
-import { createConfiguration } from '../../core/model/configuration';
+import { createConfiguration, type Configuration } from '../../core/model/configuration';
 import { rectCorners, systemBounds, systemElements } from '../../core/model/geometry';
 import { instantiatePreset } from '../../core/model/presets';
 import { ActionButton } from './ActionButton';
@@ -33,10 +34,12 @@ export interface PresetPanelProps {
   gate: ActionGate;
   /** Runs after a preset was placed (the app selects the new system). */
   onPlaced: () => void;
+  /** Opens a furnished room in place of the current configuration (undoable); without it the furnished rooms are not listed. */
+  onLoadRoom?: (config: Configuration) => void;
 }
 
 /** The configurator paper's right-hand bar: presets placed into the room at a free spot the model finds. */
-export function PresetPanel({ catalog, gate, onPlaced }: PresetPanelProps) {
+export function PresetPanel({ catalog, gate, onPlaced, onLoadRoom }: PresetPanelProps) {
   return (
     <section className="panel-section" aria-labelledby="presets-title">
       <h2 id="presets-title">Presets</h2>
@@ -62,6 +65,39 @@ export function PresetPanel({ catalog, gate, onPlaced }: PresetPanelProps) {
           </li>
         ))}
       </ul>
+      {onLoadRoom && (
+        <>
+          <h3 id="rooms-title">Furnished rooms</h3>
+          <ul className="preset-list" aria-labelledby="rooms-title">
+            {FURNISHED_PRESETS.map((room) => (
+              <li key={room.id}>
+                <ActionButton
+                  label={`Open the furnished ${room.name.toLowerCase()} (replaces the current room; undo brings it back)`}
+                  disabledReason={null}
+                  onPress={() => {
+                    // Built from this catalog's presets through the model's actions; a catalog without them cannot build it.
+                    let config: Configuration;
+                    try {
+                      config = room.build(catalog);
+                    } catch (e) {
+                      gate.explain(`The ${room.name.toLowerCase()} cannot be built from this catalog (${(e as Error).message}).`);
+                      return;
+                    }
+                    onLoadRoom(config);
+                  }}
+                  onDisabledPress={gate.explain}
+                  testId={`room-${room.id}`}
+                >
+                  <span>
+                    <span className="preset-name">{room.name}</span>
+                    <span className="preset-detail">Furnished, with its lights: replaces the current room</span>
+                  </span>
+                </ActionButton>
+              </li>
+            ))}
+          </ul>
+        </>
+      )}
     </section>
   );
 }

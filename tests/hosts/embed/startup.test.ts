@@ -6,6 +6,9 @@ import { createConfiguration } from '../../../src/core/model/configuration';
 import { encodeShareString, serializeConfiguration } from '../../../src/core/model/sceneFile';
 import { actionDefinitions } from '../../../src/core/model/actionDefinitions';
 import { validate } from '../../../src/core/model/validate';
+import { livingRoom } from '../../../src/core/catalog/furnishedPresets';
+import { demoConfiguration } from '../../../src/core/catalog/demoConfiguration';
+import { firstImpression } from '../../../src/ui/viewer/firstImpression';
 
 const catalog = defaultCatalog;
 const withPreset = actionDefinitions.placePreset.perform(createConfiguration(), { presetId: 'single' }, catalog);
@@ -62,13 +65,21 @@ describe('resolveStartup', () => {
 });
 
 describe('demo startup', () => {
-  it('opens the demo room with the L corner placed when asked and nothing else applies', () => {
+  it('opens the furnished living room (L corner, furniture) when asked and nothing else applies', () => {
     const s = resolveStartup({ catalog, hash: '', saved: null, demo: true });
     expect(s.phase).toBe('planner');
-    expect(s.config.room).toMatchObject({ width: 5, depth: 4, height: 2.8 });
+    expect(s.config).toEqual(livingRoom(catalog));
+    expect(s.config.room).toMatchObject({ width: 6, depth: 5, height: 2.7 });
     expect(s.config.systems.map((x) => x.presetId)).toEqual(['corner-l']);
+    expect(s.config.objects.map((o) => (o.source.kind === 'library' ? o.source.item : o.source.mesh))).toContain('sofa');
     expect(validate(s.config, catalog)).toEqual([]);
     expect(s.saveNow).toBe(false);
+  });
+
+  it('a catalog without the presets the living room needs gets the plain demo', () => {
+    const bare = { ...catalog, presets: [] };
+    expect(firstImpression(bare)).toEqual(demoConfiguration(bare));
+    expect(firstImpression(bare).objects).toEqual([]);
   });
 
   it('never replaces saved work with the demo', () => {
