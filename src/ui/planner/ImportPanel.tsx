@@ -86,7 +86,7 @@ export function ImportPanel({ onAdd }: ImportPanelProps) {
   const b = model?.bounds;
   return (
     <div className="import-model" data-testid="import-panel">
-      <label className="btn file-button">
+      <label className="btn import-file-button">
         <input type="file" multiple accept={IMPORT_ACCEPT} className="file-input" onChange={(e) => void pick(e)} data-testid="import-file" />
         Import model…
       </label>

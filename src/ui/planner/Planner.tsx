@@ -198,7 +198,10 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, shareNotice = n
             onPlaced={placedNew}
             onLoadRoom={(room) => {
               const result = store.getState().load(room);
-              if (!result.ok) explain(result.reason);
+              if (!result.ok) return explain(result.reason);
+              // Show the room that replaced the old one: the drawer closes, nothing stays selected.
+              store.getState().select(null);
+              ui.setState({ panelOpen: false, optionsOpen: false });
             }}
           />
           <FurniturePanel gate={gate} onAdd={addFurniture}>
