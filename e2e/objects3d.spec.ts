@@ -87,3 +87,19 @@ for (const [name, viewport] of Object.entries(SIZES)) {
     await page.screenshot({ path: `test-results/objects3d/${name}-eye.png` });
   });
 }
+
+test('the demo opens the furnished living room; the preset panel opens the dining room (undoable)', async ({ page }) => {
+  await page.setViewportSize(SIZES.desktop);
+  await page.goto('/');
+  await page.getByRole('button', { name: 'Try the demo' }).click();
+  await expect(page.getByTestId('plan')).toBeVisible();
+  const living = await config(page);
+  expect(living.room.width).toBe(6);
+  expect(living.objects.length).toBeGreaterThan(5);
+  expect(living.systems.length).toBe(1);
+  await page.getByTestId('room-dining-room').click();
+  await expect.poll(async () => (await config(page)).room.width).toBe(5);
+  expect((await config(page)).objects.length).toBeGreaterThan(6);
+  expect(await page.evaluate(() => window.luxbox!.undo())).toBe(true);
+  await expect.poll(async () => (await config(page)).room.width).toBe(6);
+});
