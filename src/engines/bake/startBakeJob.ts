@@ -28,7 +28,7 @@ import { surfaceLayouts } from './surfaceLayout';
 import { acquireBounceTargets, acquireSurfaceTargets, releaseSurfaceTargets, type BounceTargets } from './surfaceTargets';
 import { objectReport, type ObjectReportEntry } from './objects/objectPassReport';
 import { uploadObjectPassInputs, type ObjectPassInputs } from './objects/objectPassInputs';
-import { prepareObjects } from './objects/prepareObjects';
+import { prepareObjectsCached } from './objects/prepareObjectsCached';
 import type { PreparedObjects } from './objects/preparedObjects';
 import type { TargetPool } from './targetPool';
 
@@ -263,7 +263,7 @@ export function startBakeJob(
  * room (1 mm tolerance): the passes trace rays only inside the box.
  */
 function prepareSceneObjects(scene: BakeScene, settings: BakeSettings): PreparedObjects {
-  const prepared = prepareObjects(scene.objects ?? [], { texelSize: settings.texelSize, maxAtlasSize: settings.maxTextureSize });
+  const prepared = prepareObjectsCached(scene.objects ?? [], { texelSize: settings.texelSize, maxAtlasSize: settings.maxTextureSize });
   const size = [scene.room.width, scene.room.height, scene.room.depth];
   prepared.objects.forEach((o, k) => {
     const inside = [0, 1, 2].every((a) => o.bounds.min[a] >= -1e-3 && o.bounds.max[a] <= size[a] + 1e-3);
