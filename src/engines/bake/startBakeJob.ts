@@ -29,6 +29,7 @@ import { acquireBounceTargets, acquireSurfaceTargets, releaseSurfaceTargets, typ
 import { objectReport, type ObjectReportEntry } from './objects/objectPassReport';
 import { uploadObjectPassInputs, type ObjectPassInputs } from './objects/objectPassInputs';
 import { prepareObjectsCached } from './objects/prepareObjectsCached';
+import { OBJECT_ROOM_TOLERANCE } from '../../core/model/parseLightingScene';
 import type { PreparedObjects } from './objects/preparedObjects';
 import type { TargetPool } from './targetPool';
 
@@ -260,13 +261,14 @@ export function startBakeJob(
 /**
  * The scene's objects prepared for the GPU (objects/prepareObjects.ts): the atlas at the bake's
  * texel size (at most maxTextureSize per edge), after checking that every object lies inside the
- * room (1 mm tolerance): the passes trace rays only inside the box.
+ * room (OBJECT_ROOM_TOLERANCE, the scene file's 1 cm: a mesh exported a few mm below its floor
+ * still bakes, with finite values): the passes trace rays only inside the box.
  */
 function prepareSceneObjects(scene: BakeScene, settings: BakeSettings): PreparedObjects {
   const prepared = prepareObjectsCached(scene.objects ?? [], { texelSize: settings.texelSize, maxAtlasSize: settings.maxTextureSize });
   const size = [scene.room.width, scene.room.height, scene.room.depth];
   prepared.objects.forEach((o, k) => {
-    const inside = [0, 1, 2].every((a) => o.bounds.min[a] >= -1e-3 && o.bounds.max[a] <= size[a] + 1e-3);
+    const inside = [0, 1, 2].every((a) => o.bounds.min[a] >= -OBJECT_ROOM_TOLERANCE && o.bounds.max[a] <= size[a] + OBJECT_ROOM_TOLERANCE);
     if (!inside) {
       const fmt = (v: readonly number[]) => `(${v.map((x) => x.toFixed(3)).join(', ')})`;
       throw new InputError(`object ${k + 1} ("${o.id}") reaches outside the room: its bounds ${fmt(o.bounds.min)}–${fmt(o.bounds.max)} m, the room 0–${fmt(size)} m`);

@@ -221,7 +221,7 @@ describe('stiff light with objects: bright patches shaded by an object, and gath
 });
 
 describe('contact cases', () => {
-  it('a lamp touching an object and an object touching two walls: every map finite and ≥ 0', () => {
+  it('a lamp touching an object, an object touching two walls, one sunk 5 mm into the floor (within OBJECT_ROOM_TOLERANCE): every map finite and ≥ 0', () => {
     const scene: BakeScene = {
       room: uniformRoom(2, 2, 2, 0.6),
       luminaires: [
@@ -229,7 +229,7 @@ describe('contact cases', () => {
         { photometry: isotropic(50), position: [1.8, 0.4, 0.2], yaw: 0, pitch: 0, roll: 0 },
         { photometry: isotropic(50), position: [0.3, 1.5, 0.1], yaw: 0, pitch: 0, roll: 0 },
       ],
-      objects: [box('block', 0.6, 0.8, 0.6, [1.2, 0, 1.2], 0.7), box('shelf', 0.6, 0.04, 0.2, [0.3, 1.48, 0.1], 0.5), box('corner', 0.4, 0.4, 0.4, [1.8, 0, 0.2], 0.4)],
+      objects: [box('block', 0.6, 0.8, 0.6, [1.2, -0.005, 1.2], 0.7), box('shelf', 0.6, 0.04, 0.2, [0.3, 1.48, 0.1], 0.5), box('corner', 0.4, 0.4, 0.4, [1.8, 0, 0.2], 0.4)],
     };
     const { maps, report } = baker.bake(scene, { texelSize: 0.1, samples: 16, bounces: 2 });
     expect(allFinite(maps)).toBe(true);
