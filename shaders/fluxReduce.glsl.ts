@@ -41,21 +41,28 @@ void main() {
  * written as (r_R, r_G, r_B, Φ_Y) into one texel of the stats row (the
  * draw's viewport picks which). The same formula on the CPU, and why r is
  * what the tail needs: src/engines/bake/fluxRecord.ts.
+ *
+ * Its uniforms (the object variant adds its atlas sums: objectFluxReduce.glsl.ts):
  */
-export const fluxRatioPass = fragmentPass(
-  {
-    uSum0: 'sampler2D',
-    uSum1: 'sampler2D',
-    uSum2: 'sampler2D',
-    uSum3: 'sampler2D',
-    uSum4: 'sampler2D',
-    uSum5: 'sampler2D',
-    uArea: 'float[6]',
-    uRho: 'vec3[6]',
-    uMaxRatio: 'float',
-    uLuminance: 'vec3',
-  },
-  /* glsl */ `out vec4 outColor;
+export const fluxRatioUniforms = {
+  uSum0: 'sampler2D',
+  uSum1: 'sampler2D',
+  uSum2: 'sampler2D',
+  uSum3: 'sampler2D',
+  uSum4: 'sampler2D',
+  uSum5: 'sampler2D',
+  uArea: 'float[6]',
+  uRho: 'vec3[6]',
+  uMaxRatio: 'float',
+  uLuminance: 'vec3',
+} as const;
+
+/**
+ * The flux-ratio pass's GLSL, the six surfaces' sums added to `start` (the atlas's flux and
+ * reflected flux for a scene with objects, zero otherwise): one formula for both passes.
+ */
+export function fluxRatioSource(start: { flux: string; reflected: string }): string {
+  return /* glsl */ `out vec4 outColor;
 vec3 total(sampler2D partial) {
   ivec2 size = textureSize(partial, 0);
   vec3 sum = vec3(0.0);
@@ -72,8 +79,8 @@ void main() {
   e[3] = total(uSum3);
   e[4] = total(uSum4);
   e[5] = total(uSum5);
-  vec3 flux = vec3(0.0);
-  vec3 reflected = vec3(0.0);
+  vec3 flux = ${start.flux};
+  vec3 reflected = ${start.reflected};
   for (int s = 0; s < 6; s++) {
     vec3 f = e[s] * uArea[s];
     flux += f;
@@ -85,5 +92,7 @@ void main() {
   }
   outColor = vec4(ratio, dot(flux, uLuminance));
 }
-`,
-);
+`;
+}
+
+export const fluxRatioPass = fragmentPass(fluxRatioUniforms, fluxRatioSource({ flux: 'vec3(0.0)', reflected: 'vec3(0.0)' }));
