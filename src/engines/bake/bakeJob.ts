@@ -1,9 +1,10 @@
 import type { Rgb, SurfaceName } from '../../core/model/lightingScene';
 import type { BakedMaps } from './bakedMaps';
-import type { BakeScene } from './bakeScene';
+import type { BakeObject, BakeScene } from './bakeScene';
 import type { BakeSettings } from './bakeSettings';
 import type { SurfaceLayout } from './surfaceLayout';
 import type { ObjectReportEntry } from './objects/objectPassReport';
+import type { ObjectAtlas } from './objects/preparedObjects';
 
 /** The baker's public contract: what createBaker returns, its jobs, their progress and reports. */
 export interface BakeProgress {
@@ -50,6 +51,25 @@ export interface MapTextures {
   total: WebGLTexture;
 }
 
+/**
+ * A bake's direct maps only (RGB lux, 3 floats per texel, row j = 0 first): what a relighting
+ * basis keeps (docs/viewer.md, "Relighting without rebaking"). With objects, the atlas's direct
+ * map twice: `emitted` as the bounces read it (covered texels only, as the direct pass wrote it;
+ * what startFromDirect takes back) and `shown`, dilated into the charts' gutters like every map
+ * the viewer displays (shaders/chartDilatePass.glsl.ts).
+ */
+export interface DirectMaps {
+  surfaces: Record<SurfaceName, Float32Array>;
+  objects?: { atlas: ObjectAtlas; emitted: Float32Array; shown: Float32Array };
+}
+
+/** A scene's objects for an indirect-only solve: the objects and their atlas's direct map (DirectMaps.objects.emitted, in the atlas prepareObjects gives for the solve's settings). */
+export interface GivenObjectDirect {
+  /** Pass the scene's own array: the prepared atlas and BVH are cached per array (prepareObjectsCached). */
+  objects: BakeObject[];
+  direct: Float32Array;
+}
+
 /** A bake in progress: direct maps ready, indirect refined by `step` (for the browser, a few samples per frame). */
 export interface BakeJob {
   readonly layouts: SurfaceLayout[];
@@ -64,6 +84,8 @@ export interface BakeJob {
   textures(): Record<SurfaceName, MapTextures> & { objects?: MapTextures };
   /** Maps read back as RGB lux floats (finalizes if needed). */
   readMaps(): BakedMaps;
+  /** The direct maps only (finalizes if needed; 6 read-backs, 8 with objects, instead of readMaps' 18 or 21). */
+  readDirect(): DirectMaps;
   report(): BakeReport;
   dispose(): void;
 }
@@ -75,9 +97,11 @@ export interface Baker {
    * Start an indirect-only solve from given per-surface "direct" maps (RGB,
    * 3 floats per texel, layouts as `surfaceLayouts` gives for these settings):
    * e.g. uniform self-emission for the grey-furnace check, or an external
-   * direct solution.
+   * direct solution (the relight engine's shared indirect solve: Σ weight · direct basis).
+   * With `objects`, the objects shade and bounce as in `start`, and their atlas emits the given
+   * atlas direct map; without, the empty room exactly as before.
    */
-  startFromDirect(room: BakeScene['room'], direct: Record<SurfaceName, Float32Array>, settings?: Partial<BakeSettings>): BakeJob;
+  startFromDirect(room: BakeScene['room'], direct: Record<SurfaceName, Float32Array>, settings?: Partial<BakeSettings>, objects?: GivenObjectDirect): BakeJob;
   /** Free the render targets kept for the next bake (jobs still running keep theirs until disposed). */
   dispose(): void;
   /** start + run + readMaps + report. */

@@ -1,24 +1,27 @@
 import type { SurfaceName } from '../../core/model/lightingScene';
 import type { BakeScene } from './bakeScene';
 import { resolveBakeSettings, type BakeSettings } from './bakeSettings';
-import type { Baker } from './bakeJob';
+import type { Baker, GivenObjectDirect } from './bakeJob';
 import { requireFloatTargets } from './floatTarget';
 import { startBakeJob } from './startBakeJob';
 import { createTargetPool } from './targetPool';
 
-export type { BakeJob, BakeProgress, BakeReport, Baker } from './bakeJob';
+export type { BakeJob, BakeProgress, BakeReport, Baker, DirectMaps, GivenObjectDirect } from './bakeJob';
 
 /** Create a baker on any WebGL2 context (browser canvas or headless-gl). */
 export function createBaker(gl: WebGL2RenderingContext): Baker {
   const { linear } = requireFloatTargets(gl);
   // Render targets outlive a job: the next bake of the same room reuses them (targetPool.ts).
   const pool = createTargetPool(gl, linear);
-  const start = (scene: BakeScene, partial: Partial<BakeSettings> | undefined, direct: Record<SurfaceName, Float32Array> | null) =>
-    startBakeJob(gl, linear, pool, scene, resolveBakeSettings(partial), direct);
+  const start = (scene: BakeScene, partial: Partial<BakeSettings> | undefined, direct: Record<SurfaceName, Float32Array> | null, objectDirect: Float32Array | null = null) =>
+    startBakeJob(gl, linear, pool, scene, resolveBakeSettings(partial), direct, objectDirect);
   return {
     dispose: () => pool.dispose(),
     start: (scene, settings) => start(scene, settings, null),
-    startFromDirect: (room, direct, settings) => start({ room, luminaires: [] }, settings, direct),
+    startFromDirect: (room, direct, settings, objects?: GivenObjectDirect) =>
+      objects && objects.objects.length > 0
+        ? start({ room, luminaires: [], objects: objects.objects }, settings, direct, objects.direct)
+        : start({ room, luminaires: [] }, settings, direct),
     bake(scene, settings) {
       const job = start(scene, settings, null);
       try {

@@ -1,4 +1,4 @@
-import type { Rgb, SurfaceName, Vec3 } from '../../core/model/lightingScene';
+import type { Rgb, Vec3 } from '../../core/model/lightingScene';
 import type { FragmentPass } from '../../../shaders/fragmentPass.glsl';
 import { blurPass } from '../../../shaders/blurPass.glsl';
 import { combinePass } from '../../../shaders/combinePass.glsl';
@@ -52,7 +52,8 @@ export function planBakePasses(
   room: Vec3,
   reflectance: Rgb[],
   settings: BakeSettings,
-  directOverride: Record<SurfaceName, Float32Array> | null,
+  /** Given direct maps (startFromDirect), per surface and, with objects, the atlas's: no direct passes. */
+  directOverride: Readonly<Record<string, Float32Array>> | null,
   objects: PlanObjects | null = null,
 ): BakePlan {
   // With objects, a lamp still reaches every surface it reaches in the empty room (objects only

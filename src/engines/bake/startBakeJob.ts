@@ -6,7 +6,7 @@ import { InputError } from '../../core/inputError';
 import { combinePass } from '../../../shaders/combinePass.glsl';
 import { combineTailPass } from '../../../shaders/combineTailPass.glsl';
 import type { BakedMaps } from './bakedMaps';
-import type { BakeJob, BakeProgress } from './bakeJob';
+import type { BakeJob, BakeProgress, DirectMaps } from './bakeJob';
 import { bakeReport } from './bakeReport';
 import { toRgb, type BakeScene } from './bakeScene';
 import type { BakeSettings } from './bakeSettings';
@@ -46,6 +46,7 @@ export function startBakeJob(
   scene: BakeScene,
   settings: BakeSettings,
   directOverride: Record<SurfaceName, Float32Array> | null,
+  objectDirectOverride: Float32Array | null = null,
 ): BakeJob {
   const t0 = performance.now();
   const timer = createBakeTimer(gl, settings.syncTimings);
@@ -62,7 +63,15 @@ export function startBakeJob(
   const layouts = surfaceLayouts(room, settings.texelSize, settings.maxTextureSize);
   const { table, lamps, pointSources } = prepareLamps(scene, settings);
   // Objects (docs/baker.md, "Objects: passes"): none, or an empty list, is exactly the empty room.
-  const prepared = scene.objects && scene.objects.length > 0 && !directOverride ? prepareSceneObjects(scene, settings) : null;
+  // Given direct maps (startFromDirect) with objects come with the atlas's direct map.
+  const prepared = scene.objects && scene.objects.length > 0 ? prepareSceneObjects(scene, settings) : null;
+  if (directOverride && prepared) {
+    const expected = prepared.atlas.width * prepared.atlas.height * 3;
+    if (!objectDirectOverride) throw new Error('startFromDirect: the scene has objects but no direct map of their atlas was given');
+    if (objectDirectOverride.length !== expected) {
+      throw new Error(`startFromDirect: the objects' direct map has ${objectDirectOverride.length / 3} texels, their atlas ${prepared.atlas.width}×${prepared.atlas.height}`);
+    }
+  }
   const dataTexture = table.layouts.length > 0 ? createDataTexture(gl, table.data, DATA_TEXTURE_WIDTH, table.rows) : null;
   const objectInputs: ObjectPassInputs | null = prepared ? uploadObjectPassInputs(gl, prepared) : null;
 
@@ -77,7 +86,9 @@ export function startBakeJob(
     prepared && objectInputs
       ? { bvhWidth: prepared.bvh.width, atlasWidth: prepared.atlas.width, atlasHeight: prepared.atlas.height, maxReflectance: objectInputs.maxReflectance }
       : null;
-  const plan = planBakePasses(layouts, lamps, roomSize, reflectance, settings, directOverride, planObjects);
+  // Given direct maps: whether any light enters is decided from every given map, the atlas's included.
+  const given = directOverride && prepared && objectDirectOverride ? { ...directOverride, objects: objectDirectOverride } : directOverride;
+  const plan = planBakePasses(layouts, lamps, roomSize, reflectance, settings, given, planObjects);
   startPrograms(gl, plan.sources);
   const bvhSamplers = objectInputs ? { uBvhNodes: objectInputs.bvhNodes, uBvhTriangles: objectInputs.bvhTriangles } : {};
 
@@ -95,7 +106,8 @@ export function startBakeJob(
       }
     });
     if (atlasTargets && objectInputs) {
-      if (plan.objectDirect) {
+      if (directOverride && objectDirectOverride) uploadRgb(gl, atlasTargets.direct, objectDirectOverride);
+      else if (plan.objectDirect) {
         runPass(gl, compile(plan.objectDirect, 'direct objects'), atlasTargets.direct, {
           uProfiles: dataTexture!,
           uBvhNodes: objectInputs.bvhNodes,
@@ -120,7 +132,15 @@ export function startBakeJob(
         }
       : null;
   const statistics = createFluxStatistics(gl, pool, layouts, reflectance, settings.bounces + 1, countRead, fluxObjects);
-  timed('blend', () => statistics.record(0, receivers.map((st) => st.direct), 1));
+  // Record 0 (the direct light) feeds the tail of bounce 1; a bake without indirect light (a
+  // relighting basis: bounces 0) needs it only for its report, so it is recorded then, lazily.
+  let directRecorded = false;
+  const recordDirect = () => {
+    if (directRecorded) return;
+    directRecorded = true;
+    timed('blend', () => statistics.record(0, receivers.map((st) => st.direct), 1));
+  };
+  if (plan.indirectEnabled) recordDirect();
   const passes: FinalPasses = {
     combineTail: plan.indirectEnabled ? compile(combineTailPass, 'combine') : null,
     combine: compile(combinePass, 'combine'),
@@ -206,6 +226,16 @@ export function startBakeJob(
       if (atlasShown) textures.objects = { direct: atlasShown.direct.texture, indirect: atlasShown.indirect.texture, total: atlasShown.total.texture };
       return textures;
     },
+    readDirect() {
+      if (!finalized) finalize();
+      return timed('readback', () => {
+        const out: DirectMaps = {
+          surfaces: Object.fromEntries(surfaces.map((st) => [st.layout.name, read(st.direct)])) as DirectMaps['surfaces'],
+        };
+        if (prepared && atlasShown && atlasTargets) out.objects = { atlas: prepared.atlas, emitted: read(atlasTargets.direct), shown: read(atlasShown.direct) };
+        return out;
+      });
+    },
     readMaps() {
       if (!finalized) finalize();
       return timed('readback', () => {
@@ -221,6 +251,7 @@ export function startBakeJob(
     },
     report() {
       const bouncesComputed = bounces?.bounce ?? 0;
+      recordDirect();
       // One read-back of the stats row, only now (never between bounces).
       if (!records || records.length !== bouncesComputed + 1) records = timed('readback', () => statistics.read(bouncesComputed + 1));
       if (prepared && atlasShown && !objectEntries) {

@@ -1,16 +1,18 @@
-import type { BakeScene } from '../bake/bakeScene';
+import { reflectanceRgb, type BakeScene } from '../bake/bakeScene';
 import type { BakeSettings } from '../bake/bakeSettings';
 import { resolveBakeSettings } from '../bake/bakeSettings';
 import { createBaker, type BakeJob } from '../bake/createBaker';
-import { surfaceLayouts } from '../bake/surfaceLayout';
-import { SURFACE_NAMES, type Rgb } from '../../core/model/lightingScene';
+import { surfaceLayouts, type SurfaceLayout } from '../bake/surfaceLayout';
+import type { ObjectAtlas } from '../bake/objects/preparedObjects';
+import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../core/model/lightingScene';
 import { groupLuminaires, groupWeight, roomKey, type LuminaireGroup } from './luminaireGroups';
 import { objectsKey } from './objectsKey';
-import { emptyLitMaps, relightMaps, type BasisMaps, type LitMaps } from './relightMaps';
+import { indirectScale, reflectedFlux, weightedFlux } from './reflectedFlux';
+import { emptyLitMaps, relightMaps, sumDirect, type DirectBasis, type IndirectSolution, type LitMaps, type WeightedBasis } from './relightMaps';
 
 /**
- * Quality of the viewer's basis bakes: coarser texels than the CLI default, as
- * each module gets its own bake. 128 samples (not 64): on the corner-l
+ * Quality of the viewer's bakes (direct bases and the shared indirect solve): coarser texels
+ * than the CLI default. 128 samples (not 64): on the corner-l
  * configuration the RMS error of the indirect light averaged over 25 cm
  * patches (the visible blotches) drops from 2.0 % to 1.4 % of a 1024-sample
  * reference, for 1.6× the bake time; a wider blur (8–10 texels) was cheaper
@@ -19,32 +21,36 @@ import { emptyLitMaps, relightMaps, type BasisMaps, type LitMaps } from './relig
  */
 export const VIEWER_BAKE_SETTINGS: Partial<BakeSettings> = { texelSize: 0.05, maxTextureSize: 256, samples: 128, bounces: 3, samplesPerDraw: 8, blurRadius: 5 };
 
-/** Least time between two previews of a bake under way (each costs a finalize and a read-back). */
+/** Least time between two previews of the first solve under way (each costs a finalize and a read-back). */
 export const PREVIEW_MS = 300;
 
 export interface EngineProgress {
-  /** Groups whose basis is final. */
+  /** Groups whose direct basis is baked. */
   groupsDone: number;
   groups: number;
-  /** 0..1 over all pending indirect work. */
+  /** 0..1 over the pending work: the direct bases (a small first share), then the shared indirect solve. */
   fraction: number;
-  /** Every group's basis is final. */
+  /** Every group's direct basis is baked and the indirect light is solved at the current weights. */
   done: boolean;
-  /** Every group has at least its direct-only basis: the image shows all the light. */
+  /** Every group has its direct basis: the image shows all the direct light. */
   lit: boolean;
+  /** The indirect light shown is the finished solve at the current weights (not a preview, not a scaled earlier solve). */
+  exact: boolean;
 }
 
 export interface EngineCounters {
-  /** Groups baked (a new or moved group counts once), since the engine was made. */
+  /** Direct bases baked (a new or moved group counts once), since the engine was made. */
   groupBakes: number;
-  /** Scene updates that needed no bake at all (dimming, colour, on/off only). */
+  /** Scene updates that needed no group bake (dimming, colour, on/off, removed groups only). */
   relightsOnly: number;
   /** Weighted sums computed. */
   relights: number;
+  /** Shared indirect solves started (the first of a room and every re-solve after a change of weights or groups). */
+  indirectSolves: number;
 }
 
 export interface SetSceneResult {
-  /** Groups that will be (re)baked. */
+  /** Groups whose direct basis will be (re)baked. */
   bake: number;
   /** Groups whose basis was kept. */
   reused: number;
@@ -52,26 +58,39 @@ export interface SetSceneResult {
 
 interface GroupState {
   group: LuminaireGroup;
-  basis: BasisMaps | null;
-  final: boolean;
+  basis: DirectBasis | null;
 }
 
+interface SolveJob {
+  job: BakeJob;
+  key: string;
+  flux: Rgb;
+  lastPreview: number;
+}
+
+/** Share of the progress fraction taken by the direct bases (cheap: no bounces), the rest is the shared solve. */
+const DIRECT_SHARE = 0.1;
+
 /**
- * Bakes each luminaire group of a scene into basis maps (once), then relights
- * by weighted sums: a scene change that only touches dimming or colour costs a
- * relight; a moved or added luminaire bakes only its group; a room change
- * bakes everything. Bakes are progressive: `step` advances the one bake under
- * way by a few samples (callers slice it over frames), and every group first
- * gets its direct-only basis, so light appears at once and refines.
+ * Relighting by one shared indirect solve (docs/viewer.md, "Relighting without rebaking"). Each
+ * luminaire group gets a direct basis only (direct maps at unit weight, no bounces); the
+ * indirect light of the whole scene is one solve from Σ_g w_g · direct_g (the gather reads only
+ * the direct maps, and it is linear in them). A change of dimming or colour, or an added, moved
+ * or removed group, shows the exact direct light at once and the last solve's indirect light
+ * scaled per channel by Φ_now/Φ_solve (reflected direct flux, reflectedFlux.ts) until a
+ * background re-solve at the new weights is done; a room or objects change rebakes every basis.
+ * Work is progressive: `step` bakes one missing basis per call, then advances the solve by a
+ * few samples (callers slice it over frames).
  */
 export interface RelightEngine {
   setScene(scene: BakeScene): SetSceneResult;
   /**
-   * Advance pending bakes by up to `samples` indirect samples per texel; returns the progress.
-   * With `preview` (default) the partial solution is read back at most every PREVIEW_MS.
+   * Advance pending work by one direct basis or up to `samples` indirect samples per texel; returns the progress.
+   * With `preview` (default) the first solve of a room is read back and shown at most every PREVIEW_MS
+   * (a re-solve keeps showing the previous solution, scaled, until it is done).
    */
   step(samples?: number, preview?: boolean): EngineProgress;
-  /** Finish every pending bake now (for the CLI and tests). */
+  /** Finish every pending bake and the solve now (for the CLI and tests). */
   finish(): void;
   readonly progress: EngineProgress;
   /** The relit maps for the current scene's weights (recomputed only when something changed). */
@@ -85,35 +104,47 @@ export interface RelightEngine {
 
 export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial<BakeSettings> = VIEWER_BAKE_SETTINGS): RelightEngine {
   const settings = resolveBakeSettings(partial);
+  // A basis is the direct pass alone: with no bounces the baker skips the bright patches, the gather and the flux record.
+  const basisSettings: BakeSettings = { ...settings, bounces: 0 };
   const baker = createBaker(gl);
   let scene: BakeScene | null = null;
   let room = '';
+  let layouts: SurfaceLayout[] = [];
+  let atlas: ObjectAtlas | null = null;
   let states = new Map<string, GroupState>();
   let order: GroupState[] = [];
-  let job: { state: GroupState; job: BakeJob; lastPreview: number } | null = null;
+  let solve: SolveJob | null = null;
+  let solved: IndirectSolution | null = null;
   let out: LitMaps | null = null;
   let version = 0;
   let composedVersion = -1;
-  const counters: EngineCounters = { groupBakes: 0, relightsOnly: 0, relights: 0 };
-  const totalWork = () => Math.max(1, settings.bounces) * settings.samples;
+  const counters: EngineCounters = { groupBakes: 0, relightsOnly: 0, relights: 0, indirectSolves: 0 };
 
-  const readBasis = (j: BakeJob): BasisMaps => {
-    const m = j.readMaps();
-    const basis = Object.fromEntries(SURFACE_NAMES.map((n) => [n, { direct: m[n].direct, total: m[n].total }])) as BasisMaps;
-    if (m.objects) basis.objects = { atlas: m.objects.atlas, direct: m.objects.direct, total: m.objects.total };
-    return basis;
-  };
+  const weightOf = (s: GroupState) => groupWeight(s.group, scene!.luminaires);
+  /** The groups that are shown (basis baked) with their weights. */
+  const parts = (): WeightedBasis[] => order.filter((s) => s.basis).map((s) => ({ basis: s.basis!, weight: weightOf(s) }));
+  /** The weights the indirect light depends on: every lit group with its RGB weight (order-free; '' = no light at all). */
+  const weightsKey = (): string =>
+    order
+      .map((s) => [s.group.key, weightOf(s)] as const)
+      .filter(([, w]) => w.some((v) => v > 0))
+      .map(([k, w]) => `${k}=${w.join(',')}`)
+      .sort()
+      .join('|');
+  /** No light (key '') has exactly no indirect light: nothing to solve. */
+  const isExact = (key: string) => key === '' || (solved !== null && solved.final && solved.key === key);
 
-  // Direct-only bases for every new group first (one group per call, so a caller slicing the
-  // work over frames stays responsive): light shows up before any indirect work.
-  const bakeDirectOnly = (): boolean => {
+  // Direct bases for every new group first, one group per call (a caller slicing the work over frames stays responsive).
+  const bakeDirectBasis = (): boolean => {
     const st = order.find((s) => !s.basis);
     if (!st) return false;
     counters.groupBakes++;
-    const j = baker.start(groupScene(scene!, st.group), settings);
+    const j = baker.start(groupScene(scene!, st.group), basisSettings);
     try {
-      j.finalize();
-      st.basis = readBasis(j);
+      const d = j.readDirect();
+      atlas = d.objects?.atlas ?? null;
+      const flux = reflectedFlux(d.surfaces, layouts, reflectanceRgb(scene!.room), atlas, d.objects?.emitted ?? null);
+      st.basis = { ...d, flux };
     } finally {
       j.dispose();
     }
@@ -122,40 +153,55 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
   };
 
   const progress = (): EngineProgress => {
-    const done = order.filter((s) => s.final).length;
-    // Direct-only previews count as a small first share of each group's work.
-    const previews = order.filter((s) => s.basis && !s.final).length;
-    let fraction = order.length === 0 ? 1 : (done + 0.05 * previews) / order.length;
-    if (job && order.length > 0) {
-      const p = job.job.progress;
-      const within = p.done ? 1 : (p.bounce * settings.samples + p.samplesDone) / totalWork();
-      fraction += (0.95 * within) / order.length;
+    const n = order.length;
+    const based = order.filter((s) => s.basis).length;
+    const lit = based === n;
+    const exact = lit && isExact(weightsKey());
+    let solveFraction = exact ? 1 : 0;
+    if (!exact && solve) {
+      const p = solve.job.progress;
+      solveFraction = p.done ? 1 : (p.bounce * settings.samples + p.samplesDone) / (Math.max(1, settings.bounces) * settings.samples);
     }
-    return { groupsDone: done, groups: order.length, fraction: Math.min(1, fraction), done: done === order.length, lit: order.every((s) => s.basis) };
+    const fraction = n === 0 ? 1 : DIRECT_SHARE * (based / n) + (1 - DIRECT_SHARE) * solveFraction;
+    return { groupsDone: based, groups: n, fraction: Math.min(1, fraction), done: exact, lit, exact };
   };
 
-  const finishJob = () => {
-    if (!job) return;
-    job.state.basis = readBasis(job.job);
-    job.state.final = true;
-    job.job.dispose();
-    job = null;
-    version++;
+  const readSolution = (s: SolveJob, final: boolean): IndirectSolution => {
+    const m = s.job.readMaps();
+    const surfaces = Object.fromEntries(SURFACE_NAMES.map((name) => [name, m[name].indirect])) as Record<SurfaceName, Float32Array>;
+    return { surfaces, ...(m.objects ? { objects: m.objects.indirect } : {}), flux: s.flux, key: s.key, final };
+  };
+
+  const startSolve = (key: string): SolveJob => {
+    const weighted = parts();
+    const direct = sumDirect(weighted, layouts, atlas);
+    const objects = scene!.objects && scene!.objects.length > 0 && direct.objects ? { objects: scene!.objects, direct: direct.objects } : undefined;
+    counters.indirectSolves++;
+    const job = baker.startFromDirect(scene!.room, direct.surfaces, settings, objects);
+    const flux = weightedFlux(weighted.map((p) => ({ flux: p.basis.flux, weight: p.weight })));
+    return { job, key, flux, lastPreview: performance.now() };
+  };
+
+  const dropSolve = () => {
+    solve?.job.dispose();
+    solve = null;
   };
 
   const step = (samples = settings.samplesPerDraw, preview = true): EngineProgress => {
-    if (!scene || bakeDirectOnly()) return progress();
-    if (!job) {
-      const next = order.find((s) => !s.final);
-      if (!next) return progress();
-      job = { state: next, job: baker.start(groupScene(scene, next.group), settings), lastPreview: performance.now() };
-    }
-    const p = job.job.step(samples);
-    if (p.done) finishJob();
-    else if (preview && performance.now() - job.lastPreview > PREVIEW_MS) {
-      // A preview of the partial indirect solution a few times a second: the image converges while the user looks.
-      job.state.basis = readBasis(job.job);
-      job.lastPreview = performance.now();
+    if (!scene || bakeDirectBasis()) return progress();
+    const key = weightsKey();
+    if (isExact(key)) return progress();
+    if (solve && solve.key !== key) dropSolve();
+    if (!solve) solve = startSolve(key);
+    const p = solve.job.step(samples);
+    if (p.done) {
+      solved = readSolution(solve, true);
+      dropSolve();
+      version++;
+    } else if (preview && !solved?.final && performance.now() - solve.lastPreview > PREVIEW_MS) {
+      // The first solve of a room: nothing better is on screen, so its partial solution is shown a few times a second.
+      solved = readSolution(solve, false);
+      solve.lastPreview = performance.now();
       version++;
     }
     return progress();
@@ -166,11 +212,12 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
       // Objects are part of the room: moving, adding or removing one is a new scene and rebakes every group.
       const nextRoom = roomKey(next.room) + objectsKey(next.objects);
       if (nextRoom !== room) {
-        job?.job.dispose();
-        job = null;
+        dropSolve();
+        solved = null;
+        atlas = null;
         states = new Map();
         room = nextRoom;
-        const layouts = surfaceLayouts(next.room, settings.texelSize, settings.maxTextureSize);
+        layouts = surfaceLayouts(next.room, settings.texelSize, settings.maxTextureSize);
         out = emptyLitMaps(layouts);
       }
       scene = next;
@@ -181,16 +228,14 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
         const old = states.get(g.key);
         if (old) kept.set(g.key, { ...old, group: g });
         else {
-          kept.set(g.key, { group: g, basis: null, final: false });
+          kept.set(g.key, { group: g, basis: null });
           bake++;
         }
       }
-      if (job && !kept.has(job.state.group.key)) {
-        job.job.dispose();
-        job = null;
-      } else if (job) job.state = kept.get(job.state.group.key)!;
       states = kept;
       order = groups.map((g) => kept.get(g.key)!);
+      // A solve under way for other weights is of no use any more (the shown one stays until the new solve is done).
+      if (solve && solve.key !== weightsKey()) dropSolve();
       if (bake === 0) counters.relightsOnly++;
       version++;
       return { bake, reused: groups.length - bake };
@@ -205,9 +250,16 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
     maps() {
       if (!out) out = emptyLitMaps(surfaceLayouts({ width: 1, height: 1, depth: 1 }, settings.texelSize, settings.maxTextureSize));
       if (composedVersion === version || !scene) return out;
-      const lums = scene.luminaires;
-      const parts = order.filter((s) => s.basis).map((s) => ({ basis: s.basis!, weight: groupWeight(s.group, lums) as Rgb }));
-      relightMaps(parts, out);
+      const weighted = parts();
+      const key = weightsKey();
+      let indirect: IndirectSolution | null = null;
+      let scale: Rgb = [0, 0, 0];
+      if (key !== '' && solved) {
+        indirect = solved;
+        // Solved at these weights (final or a preview of the first solve): as is; otherwise scaled by the reflected direct flux.
+        scale = solved.key === key ? [1, 1, 1] : indirectScale(weightedFlux(weighted.map((p) => ({ flux: p.basis.flux, weight: p.weight }))), solved.flux);
+      }
+      relightMaps(weighted, indirect, scale, atlas, out);
       counters.relights++;
       composedVersion = version;
       return out;
@@ -218,8 +270,8 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
     counters,
     settings,
     dispose() {
-      job?.job.dispose();
-      job = null;
+      dropSolve();
+      solved = null;
       states.clear();
       order = [];
       baker.dispose();
@@ -228,7 +280,7 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
   return engine;
 }
 
-/** One group's basis scene: the room, the group's luminaires at unit weight, and the scene's objects (they shade and bounce every group's light). */
+/** One group's basis scene: the room, the group's luminaires at unit weight, and the scene's objects (they shade every group's light). */
 function groupScene(scene: BakeScene, group: LuminaireGroup): BakeScene {
   return { room: scene.room, luminaires: group.basis, ...(scene.objects && scene.objects.length > 0 ? { objects: scene.objects } : {}) };
 }
