@@ -5,25 +5,47 @@ export const SLICE_MS = 12;
 /** Starting guess of the cost of one indirect sample per texel (all six maps), refined as it runs. */
 export const FIRST_MS_PER_SAMPLE = 1.5;
 
+export interface SliceResult {
+  progress: RelightEngine['progress'];
+  /** The cost per sample after this slice (unchanged in fenced mode: the caller measures it when the fence signals). */
+  msPerSample: number;
+  /** Samples asked for in this slice (a step counts the samples it was asked for). */
+  samples: number;
+  /** JavaScript time of the slice, ms. */
+  ms: number;
+}
+
 /**
- * One slice of background baking: engine steps until the bake is done or
- * SLICE_MS have passed. Each step takes as many samples as fit the slice at
- * the measured cost per sample (at least one, at most the engine's
- * samplesPerDraw), so a slow GPU still yields to input; the cost is a running
- * average (70 % old, 30 % new). Returns the progress and the updated cost.
+ * One slice of background baking.
+ *
+ * Unfenced (no fence sync, e.g. a context without it): engine steps until the bake is done or
+ * SLICE_MS have passed; each step takes as many samples as fit the slice at the measured cost per
+ * sample (at least one, at most the engine's samplesPerDraw), the cost a running average (70 % old,
+ * 30 % new) of the JavaScript time of each step.
+ *
+ * Fenced: WebGL draws are asynchronous (Chromium queues them to the GPU process), so the JavaScript
+ * time of a step says little about its GPU cost, and stepping until 12 ms of JavaScript time have
+ * passed can queue seconds of GPU work on a software rasteriser: the compositor starves and input
+ * waits. So a fenced slice issues a budget of samples, floor(SLICE_MS / msPerSample) (at least one
+ * step), where msPerSample is measured by the caller from the slice's start until its fence
+ * signalled (JavaScript + GPU time).
  */
 export function bakeSlice(
   engine: Pick<RelightEngine, 'progress' | 'step' | 'settings'>,
   msPerSample: number,
   now: () => number = () => performance.now(),
-): { progress: RelightEngine['progress']; msPerSample: number } {
+  fenced = false,
+): SliceResult {
   const start = now();
   let p = engine.progress;
-  while (!p.done && now() - start < SLICE_MS) {
-    const n = Math.max(1, Math.min(engine.settings.samplesPerDraw, Math.floor(SLICE_MS / msPerSample)));
+  let samples = 0;
+  const budget = Math.max(1, Math.floor(SLICE_MS / msPerSample));
+  while (!p.done && now() - start < SLICE_MS && (!fenced || samples < budget)) {
+    const n = Math.max(1, Math.min(engine.settings.samplesPerDraw, fenced ? budget - samples : Math.floor(SLICE_MS / msPerSample)));
     const t = now();
     p = engine.step(n);
-    msPerSample = 0.7 * msPerSample + (0.3 * (now() - t)) / n;
+    samples += n;
+    if (!fenced) msPerSample = 0.7 * msPerSample + (0.3 * (now() - t)) / n;
   }
-  return { progress: p, msPerSample };
+  return { progress: p, msPerSample, samples, ms: now() - start };
 }

@@ -1,4 +1,5 @@
-import { createRelightEngine, type RelightEngine } from '../relight/createRelightEngine';
+import type { BakeSettings } from '../bake/bakeSettings';
+import { createRelightEngine, VIEWER_BAKE_SETTINGS, type RelightEngine } from '../relight/createRelightEngine';
 import { watchContextLoss, type ContextWatch } from './watchContextLoss';
 
 /**
@@ -6,15 +7,26 @@ import { watchContextLoss, type ContextWatch } from './watchContextLoss';
  * it. Its basis maps live on the CPU, but go with the engine when the context
  * is lost: after the restore a fresh canvas (a fresh context object, so no
  * stale compiled programs are reused) gets a fresh engine, which has to
- * rebake. The engine's counters run on across engines, so hosts see the
- * rebake as more group bakes.
+ * rebake. The engine's counters run on across engines (restores and quality
+ * changes), so hosts see a rebake as more group bakes.
  */
 export interface BakeContext {
   /** The engine, or null while the context is lost or when none could be made (onError said why). */
   readonly engine: RelightEngine | null;
-  /** Group bakes and relights of every engine so far. */
-  counters(): { groupBakes: number; relightsOnly: number };
+  /** The context the engine bakes on (null while lost or when none could be made): for fences. */
+  readonly gl: WebGL2RenderingContext | null;
+  /** Group bakes, relights and indirect solves of every engine so far. */
+  counters(): BakeCounters;
+  /** A fresh engine with other settings on the same context (a quality change): it knows no scene yet. */
+  setSettings(settings: Partial<BakeSettings>): RelightEngine | null;
   dispose(): void;
+}
+
+export interface BakeCounters {
+  groupBakes: number;
+  relightsOnly: number;
+  /** Shared indirect solves (engines that count them; 0 otherwise). */
+  indirectSolves: number;
 }
 
 export interface BakeContextEvents {
@@ -24,19 +36,44 @@ export interface BakeContextEvents {
   onError(message: string): void;
 }
 
-export function createBakeContext(events: BakeContextEvents): BakeContext {
-  const carried = { groupBakes: 0, relightsOnly: 0 };
-  let canvas = document.createElement('canvas');
+/** What the context is made on: a detached canvas in the browser, a headless-gl stand-in in tests. */
+export type BakeCanvas = Pick<HTMLCanvasElement, 'addEventListener' | 'removeEventListener'> & { getContext(kind: 'webgl2'): WebGL2RenderingContext | null };
+
+export interface BakeContextOptions {
+  settings?: Partial<BakeSettings>;
+  /** A new canvas (default: document.createElement('canvas')). */
+  canvas?: () => BakeCanvas;
+}
+
+const countersOf = (e: RelightEngine | null): BakeCounters => {
+  const c = e?.counters as (RelightEngine['counters'] & { indirectSolves?: number }) | undefined;
+  return { groupBakes: c?.groupBakes ?? 0, relightsOnly: c?.relightsOnly ?? 0, indirectSolves: c?.indirectSolves ?? 0 };
+};
+
+export function createBakeContext(events: BakeContextEvents, options: BakeContextOptions = {}): BakeContext {
+  const newCanvas = options.canvas ?? (() => document.createElement('canvas'));
+  let settings = options.settings ?? VIEWER_BAKE_SETTINGS;
+  const carried: BakeCounters = { groupBakes: 0, relightsOnly: 0, indirectSolves: 0 };
+  let canvas = newCanvas();
   let engine: RelightEngine | null = null;
+  let gl: WebGL2RenderingContext | null = null;
+
+  const retire = () => {
+    const c = countersOf(engine);
+    carried.groupBakes += c.groupBakes;
+    carried.relightsOnly += c.relightsOnly;
+    carried.indirectSolves += c.indirectSolves;
+    engine = null;
+  };
 
   const makeEngine = (): RelightEngine | null => {
-    const gl = canvas.getContext('webgl2');
+    gl = canvas.getContext('webgl2');
     if (!gl) {
       events.onError('Could not create a WebGL2 context for baking the light.');
       return null;
     }
     try {
-      return createRelightEngine(gl);
+      return createRelightEngine(gl, settings);
     } catch (e) {
       events.onError(`The light baker cannot run on this device: ${(e as Error).message}`);
       return null;
@@ -44,18 +81,15 @@ export function createBakeContext(events: BakeContextEvents): BakeContext {
   };
 
   const watch = (): ContextWatch =>
-    watchContextLoss(canvas, {
+    watchContextLoss(canvas as HTMLCanvasElement, {
       lost() {
-        if (engine) {
-          carried.groupBakes += engine.counters.groupBakes;
-          carried.relightsOnly += engine.counters.relightsOnly;
-        }
-        engine = null; // its GPU objects are gone; the CPU basis maps go with it
+        retire(); // its GPU objects are gone; the CPU basis maps go with it
+        gl = null;
         events.onLost();
       },
       restored() {
         watcher.dispose();
-        canvas = document.createElement('canvas');
+        canvas = newCanvas();
         watcher = watch();
         engine = makeEngine();
         events.onRestored(engine);
@@ -68,9 +102,24 @@ export function createBakeContext(events: BakeContextEvents): BakeContext {
     get engine() {
       return engine;
     },
-    counters: () => ({ groupBakes: carried.groupBakes + (engine?.counters.groupBakes ?? 0), relightsOnly: carried.relightsOnly + (engine?.counters.relightsOnly ?? 0) }),
+    get gl() {
+      return engine ? gl : null;
+    },
+    counters() {
+      const c = countersOf(engine);
+      return { groupBakes: carried.groupBakes + c.groupBakes, relightsOnly: carried.relightsOnly + c.relightsOnly, indirectSolves: carried.indirectSolves + c.indirectSolves };
+    },
+    setSettings(next) {
+      settings = next;
+      if (watcher.lost) return null; // the restore makes the engine with the new settings
+      engine?.dispose();
+      retire();
+      engine = makeEngine();
+      return engine;
+    },
     dispose() {
       engine?.dispose();
+      engine = null;
       watcher.dispose();
       // Free the context now rather than when the garbage collector gets to it (browsers cap live contexts).
       canvas.getContext('webgl2')?.getExtension('WEBGL_lose_context')?.loseContext();

@@ -1,18 +1,54 @@
 import type { EngineProgress, RelightEngine } from '../relight/createRelightEngine';
 import { bakeSlice, FIRST_MS_PER_SAMPLE } from './bakeSlice';
 
+/** How often a slice's fence is polled, ms (browsers clamp nested timeouts to about 4 ms anyway). */
+export const FENCE_POLL_MS = 2;
+
+/** A GPU fence after a slice's commands: signalled once the GPU has executed them. */
+export interface GpuFence {
+  signalled(): boolean;
+  dispose(): void;
+}
+
 /**
- * The progressive background bake: slices of engine steps (bakeSlice) queued
- * with setTimeout until the bake is done. setTimeout, not
- * requestAnimationFrame: baking continues in a background tab's budget too,
- * and frames stay free for input. Keeps the measured cost per sample across
- * slices and bakes.
+ * A fence after everything issued on `gl` so far (gl.fenceSync), polled without waiting
+ * (clientWaitSync with timeout 0); null when the context cannot make one. A failed wait (a lost
+ * context) counts as signalled, so the slicer never waits forever.
+ */
+export function glFence(gl: WebGL2RenderingContext): GpuFence | null {
+  const sync = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
+  if (!sync) return null;
+  gl.flush(); // without a flush the fence may never reach the GPU (WebGL 2 spec §5.27)
+  return {
+    signalled() {
+      const r = gl.clientWaitSync(sync, 0, 0);
+      return r === gl.ALREADY_SIGNALED || r === gl.CONDITION_SATISFIED || r === gl.WAIT_FAILED;
+    },
+    dispose: () => gl.deleteSync(sync),
+  };
+}
+
+/**
+ * The progressive background bake: slices of engine steps (bakeSlice) queued with setTimeout until
+ * the bake is done. setTimeout, not requestAnimationFrame: frames stay free for input. With a fence
+ * factory at most one slice is in flight on the GPU: after each slice a fence goes in, and the next
+ * slice starts only once it has signalled (polled every FENCE_POLL_MS); the cost per sample is the
+ * time from the slice's start until then (JavaScript + GPU), so the slice size follows the GPU, not
+ * only the JavaScript time. Paused, it runs nothing until resumed.
  */
 export interface BakeSlicer {
-  /** One slice now (a new scene: start without waiting for the queue). */
+  /** One slice now (a new scene), or right after the slice in flight; nothing while paused (it runs on resume). */
   run(): void;
-  /** One slice soon, unless one is already queued. */
+  /** One slice soon, unless one is already queued or in flight. */
   queue(): void;
+  setPaused(paused: boolean): void;
+  readonly paused: boolean;
+  /** A slice is queued or its fence has not signalled yet. */
+  readonly busy: boolean;
+  /** Slices whose GPU work has not finished (fenced: never more than one). */
+  readonly inFlight: number;
+  /** The measured cost of one sample per texel, ms (JavaScript + GPU when fenced). */
+  readonly msPerSample: number;
   stop(): void;
 }
 
@@ -22,38 +58,105 @@ export interface BakeSlicerOptions {
   /** After every slice that ran, with the engine it stepped and its progress. */
   onSlice(engine: RelightEngine, progress: EngineProgress): void;
   onError(message: string): void;
-  /** setTimeout(…, 0), or a test's stand-in. */
-  defer?: (callback: () => void) => unknown;
+  /** setTimeout, or a test's stand-in. */
+  defer?: (callback: () => void, ms: number) => unknown;
   /** performance.now(), or a test's clock. */
   now?: () => number;
+  /** A fence after the slice's GPU commands (glFence on the engine's context); absent or null: unfenced slices. */
+  fence?: () => GpuFence | null;
 }
 
-export function createBakeSlicer({ engine, onSlice, onError, defer = (f) => setTimeout(f, 0), now }: BakeSlicerOptions): BakeSlicer {
+export function createBakeSlicer({ engine, onSlice, onError, defer = (f, ms) => setTimeout(f, ms), now = () => performance.now(), fence }: BakeSlicerOptions): BakeSlicer {
   let msPerSample = FIRST_MS_PER_SAMPLE;
   let queued = false;
   let stopped = false;
-  const run = () => {
+  let paused = false;
+  /** The slice whose fence has not signalled. */
+  let flight: { fence: GpuFence; start: number; samples: number } | null = null;
+  /** A run was asked for while a slice was in flight or the slicer paused. */
+  let again = false;
+
+  const slice = () => {
     queued = false;
+    if (stopped) return;
+    if (paused || flight) {
+      again = true;
+      return;
+    }
+    again = false;
     const e = engine();
-    if (stopped || !e) return;
-    let progress: EngineProgress;
+    if (!e) return;
+    const start = now();
+    const fenced = fence !== undefined;
+    let r: ReturnType<typeof bakeSlice>;
     try {
-      ({ progress, msPerSample } = bakeSlice(e, msPerSample, now));
+      r = bakeSlice(e, msPerSample, now, fenced);
     } catch (error) {
       onError(`Baking failed: ${(error as Error).message}`);
       return;
     }
-    onSlice(e, progress);
-    if (!progress.done) queue();
+    onSlice(e, r.progress);
+    if (r.samples === 0) return; // nothing was issued: the bake is done
+    const f = fenced ? fence() : null;
+    if (!f) {
+      if (fenced) msPerSample = 0.7 * msPerSample + (0.3 * r.ms) / r.samples;
+      else msPerSample = r.msPerSample;
+      if (!r.progress.done) queue();
+      return;
+    }
+    flight = { fence: f, start, samples: r.samples };
+    poll();
   };
+
+  const poll = () =>
+    defer(() => {
+      if (!flight) return;
+      if (stopped) {
+        flight.fence.dispose();
+        flight = null;
+        return;
+      }
+      if (!flight.fence.signalled()) {
+        poll();
+        return;
+      }
+      msPerSample = 0.7 * msPerSample + (0.3 * (now() - flight.start)) / flight.samples;
+      flight.fence.dispose();
+      flight = null;
+      const e = engine();
+      if (again || (e && !e.progress.done)) queue();
+    }, FENCE_POLL_MS);
+
   const queue = () => {
     if (queued || stopped) return;
+    if (flight || paused) {
+      again = true;
+      return;
+    }
     queued = true;
-    defer(run);
+    defer(slice, 0);
   };
+
   return {
-    run,
+    run: slice,
     queue,
+    setPaused(p) {
+      if (p === paused) return;
+      paused = p;
+      if (!paused && (again || engine()?.progress.done === false)) queue();
+    },
+    get paused() {
+      return paused;
+    },
+    get busy() {
+      return queued || flight !== null;
+    },
+    get inFlight() {
+      return flight ? 1 : 0;
+    },
+    get msPerSample() {
+      return msPerSample;
+    },
     stop() {
       stopped = true;
     },

@@ -1,9 +1,8 @@
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { reflectanceRgb, type BakeScene } from '../bake/bakeScene';
-import type { EngineProgress, RelightEngine } from '../relight/createRelightEngine';
-import { createBakeContext } from './createBakeContext';
-import { createBakeSlicer } from './createBakeSlicer';
+import type { RelightEngine } from '../relight/createRelightEngine';
+import type { BakeService } from './createBakeService';
 import { createCameraRig } from './createCameraRig';
 import { createFrameScheduler } from './createFrameScheduler';
 import { createMapDisplay, type MapsListener } from './createMapDisplay';
@@ -13,15 +12,12 @@ import { applyLiveLevels } from './applyLiveLevels';
 import type { LiveLevel } from './liveLevels';
 import { createRoomView, type PickTarget, type RoomView, type ViewMode } from './roomView';
 import { watchContextLoss } from './watchContextLoss';
-import { resolveBakeSettings } from '../bake/bakeSettings';
 import type { PreparedObjects } from '../bake/objects/preparedObjects';
-import { VIEWER_BAKE_SETTINGS } from '../relight/createRelightEngine';
-import { createObjectsMemo } from './createObjectsMemo';
 import { watchTaps } from './watchTaps';
 
 export interface ViewerEvents {
   /** Bake progress and counters changed. */
-  onProgress(p: { fraction: number; done: boolean; lit: boolean; groupBakes: number; relightsOnly: number }): void;
+  onProgress(p: { fraction: number; done: boolean; lit: boolean; groupBakes: number; relightsOnly: number; indirectSolves: number }): void;
   /** New relit maps are on screen (for statistics and the legend). */
   onMaps: MapsListener;
   onFrame(frames: number): void;
@@ -33,14 +29,14 @@ export interface ViewerEvents {
 
 /**
  * The imperative core of the 3D view (three.js, no React): renders on demand
- * only (createFrameScheduler), bakes in background slices between frames
- * (createBakeSlicer), relights instantly when only dimming or colour changed,
- * survives WebGL context loss. The baker has its own WebGL2 context
- * (createBakeContext): its basis maps live on the CPU, so losing the display
- * context costs a re-upload, and losing the bake context costs a rebake once
- * it is restored. This file wires those parts to the scene and the room view.
+ * only (createFrameScheduler), shows the maps of the bake service's engine
+ * (createBakeService: it outlives the view, bakes in background slices and
+ * relights instantly when only dimming or colour changed), survives WebGL
+ * context loss. On creation it shows the engine's current maps at once: a view
+ * opened again with nothing changed bakes nothing. Disposing it frees the
+ * display (renderer, room view), never the service.
  */
-export function createViewerController(canvas: HTMLCanvasElement, events: ViewerEvents) {
+export function createViewerController(canvas: HTMLCanvasElement, service: BakeService, events: ViewerEvents) {
   const renderer = new THREE.WebGLRenderer({ canvas, antialias: true, powerPreference: 'high-performance' });
   renderer.setPixelRatio(Math.min(2, window.devicePixelRatio || 1));
   let view: RoomView = createRoomView(renderer);
@@ -53,13 +49,12 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
   let ids: readonly string[] = [];
   /** Live control's levels over the scene's own dimming (transient: never in the configuration), or null. */
   let live: ReadonlyMap<string, LiveLevel> | null = null;
-  /** What the engine lights: the scene with the live overlay, if any. */
-  const lit = (s: BakeScene): BakeScene => (live ? applyLiveLevels(s, ids, live) : s);
+  /** The service lights the scene with the live overlay, if any (a relight: only dimming and colour change). */
+  const applyOverlay = () => service.setOverlay(live ? (s: BakeScene) => applyLiveLevels(s, ids, live!) : null);
   let fixtures: Fixtures | null = null;
   /** The engine version on screen; -1 forces the next slice to show the maps. */
   let shownVersion = -1;
-  /** The objects' geometry as the baker lays out their atlas (null: no objects), and the highlighted one. */
-  const prepareFor = createObjectsMemo();
+  /** The objects' geometry as the baker lays out their atlas (null: no objects; the service's), and the highlighted one. */
   let prepared: PreparedObjects | null = null;
   let selectedObject: string | null = null;
   let selectedModule: string | null = null;
@@ -76,7 +71,7 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
       view.setSelectedObject(selectedObject);
       view.setSelectedModule(selectedModule);
       shownVersion = -1;
-      if (bake.engine) showMaps(bake.engine);
+      if (service.engine) showMaps(service.engine);
       events.onContext('restored');
       frames.request();
     },
@@ -95,24 +90,31 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
     frames.request();
   };
 
-  const bake = createBakeContext({
-    onLost: () => events.onContext('lost'),
-    onRestored(engine) {
-      if (engine && scene) engine.setScene(lit(scene));
+  const counters = () => {
+    const { groupBakes, relightsOnly, indirectSolves } = service.status();
+    return { groupBakes, relightsOnly, indirectSolves };
+  };
+  /** The service's objects layout on screen (it changes with the objects and with the quality's texel size). */
+  const syncObjects = () => {
+    const next = service.objects();
+    if (next === prepared) return;
+    // New or moved objects: their old light belongs to another atlas; they show again with the new bake's first maps.
+    prepared = next;
+    view.setObjects(prepared);
+    shownVersion = -1;
+  };
+  const unsubscribe = service.subscribe((e) => {
+    if (e.type === 'slice') {
+      const p = e.progress;
+      if (e.engine.version !== shownVersion && (p.lit || p.done)) showMaps(e.engine);
+      events.onProgress({ fraction: p.fraction, done: p.done, lit: p.lit, ...counters() });
+    } else if (e.type === 'engine') {
       shownVersion = -1;
-      events.onContext('restored');
-      slicer.queue();
-    },
-    onError: events.onError,
+      syncObjects();
+    } else if (e.type === 'context') events.onContext(e.state);
+    else if (e.type === 'error') events.onError(e.message);
   });
-  const slicer = createBakeSlicer({
-    engine: () => bake.engine,
-    onSlice(engine: RelightEngine, p: EngineProgress) {
-      if (engine.version !== shownVersion && (p.lit || p.done)) showMaps(engine);
-      events.onProgress({ fraction: p.fraction, done: p.done, lit: p.lit, ...bake.counters() });
-    },
-    onError: events.onError,
-  });
+  if (service.error) queueMicrotask(() => events.onError(service.error!));
 
   return {
     /** A new scene (any change of the configuration): bakes only new or moved groups, relights the rest. */
@@ -121,17 +123,17 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
       ids = luminaireIds;
       fixtures = nextFixtures;
       view.setFixtures(nextFixtures);
-      const nextPrepared = prepareFor(next.objects, bake.engine?.settings ?? resolveBakeSettings(VIEWER_BAKE_SETTINGS));
-      if (nextPrepared !== prepared) {
-        // New or moved objects: their old light belongs to another atlas; they show again with the new bake's first maps.
-        prepared = nextPrepared;
-        view.setObjects(prepared);
-        shownVersion = -1;
-      }
+      syncObjects();
       camera.setRoom(next.room);
-      bake.engine?.setScene(lit(next));
+      if (live) applyOverlay();
+      // The engine's maps for this scene, at once when it has them (a view opened again after no change: no bake, no wait).
+      const engine = service.engine;
+      if (engine && service.scene === next) {
+        const p = engine.progress;
+        if (engine.version !== shownVersion && (p.lit || p.done)) showMaps(engine);
+        events.onProgress({ fraction: p.fraction, done: p.done, lit: p.lit, ...counters() });
+      }
       frames.request();
-      slicer.run();
     },
     /**
      * Live control's levels over the configuration's dimming (null: the configuration's own
@@ -140,8 +142,7 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
     setLiveLevels(levels: ReadonlyMap<string, LiveLevel> | null) {
       live = levels;
       if (!scene) return;
-      bake.engine?.setScene(lit(scene));
-      slicer.run();
+      applyOverlay();
     },
     setExposureEv(ev: number) {
       maps.setExposureEv(ev);
@@ -172,13 +173,14 @@ export function createViewerController(canvas: HTMLCanvasElement, events: Viewer
       renderer.setSize(camera.size.width, camera.size.height, false);
       frames.request();
     },
+    /** Frees the display only: the service keeps its engine, maps and pending work. */
     dispose() {
+      unsubscribe();
+      if (live) service.setOverlay(null);
       frames.stop();
-      slicer.stop();
       stopTaps();
       controls.dispose();
       view.dispose();
-      bake.dispose();
       renderer.dispose();
       display.dispose();
     },

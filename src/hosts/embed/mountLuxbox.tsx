@@ -13,10 +13,12 @@ import { SHARE_HASH_PREFIX, resolveStartup } from './startup';
 import { createUiStore, showStatus } from '../../core/store/uiStore';
 import { createFootprintSource } from '../../ui/planner/footprintSource';
 import type { LuxboxInstance, LuxboxOptions } from './types';
+import { isQualityLevel, QUALITY_LEVEL_NAMES } from '../../engines/relight/qualityLevels';
 import { EmbedOptionsError, resolveCatalog } from './resolveCatalog';
 
 export { EmbedOptionsError };
 import { getViewerStatus } from '../../ui/viewer/viewerStatus';
+import { createBakeHost } from '../../ui/viewer/bakeHost';
 
 /** Class on the element luxbox renders into: the scope of its stylesheet and its size container. */
 const ROOT_CLASS = 'luxbox';
@@ -32,6 +34,8 @@ function currentHash(): string {
 export function mountLuxbox(element: Element, options: LuxboxOptions = {}): LuxboxInstance {
   if (typeof Element === 'undefined' || !(element instanceof Element)) throw new EmbedOptionsError('mountLuxbox needs a DOM element to mount into');
   const catalog = resolveCatalog(options);
+  if (options.quality !== undefined && !isQualityLevel(options.quality)) throw new EmbedOptionsError(`options.quality: '${String(options.quality)}' is not a quality level (expected ${QUALITY_LEVEL_NAMES.join(', ')})`);
+  const quality = options.quality;
   const storageKey = options.storageKey || null;
   const saved = storageKey ? readLocal(storageKey) : null;
   const start = resolveStartup({ catalog, hash: options.shareLinks ? currentHash() : '', saved, room: options.room, demo: options.demo });
@@ -93,6 +97,8 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
   };
 
   const footprints = createFootprintSource(options.assetBase ?? import.meta.env.BASE_URL);
+  // The 3D bake lives as long as this configurator (started in idle time once the plan shows).
+  const bakeHost = createBakeHost(store, footprints.loadPhotometry, { quality: quality ?? null });
   // The class scopes every luxbox style rule to this element and makes it the container whose
   // width the layout's breakpoints query (app.css); a class the host put there itself stays on destroy.
   const hadRootClass = element.classList.contains(ROOT_CLASS);
@@ -170,6 +176,7 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
       unsubscribeStore();
       listeners.clear();
       root.unmount();
+      bakeHost.dispose();
       if (!hadRootClass) element.classList.remove(ROOT_CLASS);
     },
   };

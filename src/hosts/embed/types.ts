@@ -1,6 +1,7 @@
 import type { ActionName } from '../../core/model/actionDefinitions';
 import type { BillOfMaterials } from '../../core/model/billOfMaterials';
 import type { ViewerStatus } from '../../ui/viewer/viewerStatus';
+import type { QualityLevel } from '../../engines/relight/qualityLevels';
 
 /** Options of mountLuxbox (docs/embedding.md). */
 export interface LuxboxOptions {
@@ -22,6 +23,11 @@ export interface LuxboxOptions {
   assetBase?: string;
   /** Read a share link from location.hash at start (`#c=...`); default false. The standalone app turns it on. */
   shareLinks?: boolean;
+  /**
+   * Pins the 3D bake quality ('fast' | 'balanced' | 'best') over the user's stored choice
+   * (docs/viewer.md, "Quality levels"); the user can still switch in the 3D panel.
+   */
+  quality?: QualityLevel;
 }
 
 export interface LuxboxActionInfo {
@@ -53,7 +59,7 @@ export interface LuxboxInstance {
   getShareLink(): string;
   /** The lighting scene (version 1) the baker takes, for the current configuration. */
   getLightingScene(): unknown;
-  /** State of the 3D view (docs/viewer.md): bake progress, counters (group bakes vs relights), floor lux; `open: false` in 2D. */
+  /** State of the 3D view (docs/viewer.md): bake progress, counters (group bakes vs relights), floor lux; `open: false` in 2D; `bake`: the background bake service, also while 3D is closed. */
   view3d(): ViewerStatus;
   /** Unmounts and releases everything; the instance must not be used afterwards. */
   destroy(): void;

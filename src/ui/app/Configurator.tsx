@@ -1,7 +1,8 @@
-import { useState } from 'react';
+import { useEffect, useState } from 'react';
 import { useStore } from 'zustand';
 import { createConfiguration } from '../../core/model/configuration';
 import { firstImpression } from '../viewer/firstImpression';
+import { bakeHostOf } from '../viewer/bakeHost';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import { Planner } from '../planner/Planner';
 import type { FootprintSource } from '../planner/footprintSource';
@@ -27,6 +28,13 @@ export function Configurator({ store, ui, locale, onRestoreSaved, shareLink, foo
   const room = useStore(store, (s) => s.config.room);
   const catalog = useStore(store, (s) => s.catalog);
   const [shareNotice, setShareNotice] = useState<string | null>(null);
+
+  // Once the plan shows, the 3D bake service starts in idle time and bakes every change in the
+  // background, so the 3D view opens lit (docs/viewer.md, "Always ready: the bake service").
+  useEffect(() => {
+    if (phase !== 'planner') return;
+    return bakeHostOf(store)?.startWhenIdle();
+  }, [phase, store]);
 
   const startDemo = () => {
     const st = store.getState();

@@ -2,18 +2,14 @@ import { useEffect, useMemo, useRef, useState } from 'react';
 import { useStore } from 'zustand';
 import type { Photometry } from '../../core/photometry/types';
 import type { BakeScene } from '../../engines/bake/bakeScene';
-import { LuminairePhotometryError, resolveBakeScene, SceneObjectError } from '../../engines/bake/resolveBakeScene';
-import { configurationMeshLoader } from '../../engines/view/configurationMeshLoader';
+import { QUALITY_LEVEL_NAMES, type QualityLevel } from '../../engines/relight/qualityLevels';
 import { objectLightOf } from '../../engines/view/objectLight';
 import { objectStats } from '../../engines/view/objectStats';
 import { sourceName } from '../../core/model/objectGeometry';
-import { toLightingScene } from '../../core/model/toLightingScene';
-import { photometryWarnings } from '../../core/photometry/checks';
 import { PhotometryWarnings, type PhotometryNote } from '../shared/PhotometryWarnings';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import { CAMERA_PRESETS, type CameraPresetName } from '../../engines/view/cameraPresets';
 import { createViewerController, type ViewerController } from '../../engines/view/createViewerController';
-import { fixturesFromConfiguration } from '../../engines/view/fixtures';
 import { floorStats, workPlaneStats, type IlluminanceStats } from '../../engines/view/lightStats';
 import { DimmerRow } from './DimmerRow';
 import { IlluminanceTable } from './IlluminanceTable';
@@ -21,6 +17,8 @@ import { LiveControl } from './LiveControl';
 import { LuxLegend } from './LuxLegend';
 import type { ViewMode } from '../../engines/view/roomView';
 import { CLOSED_STATUS, setViewerStatus, type ViewerStatus } from './viewerStatus';
+import { bakeHostFor } from './bakeHost';
+import type { BakeFeed, ResolvedScene } from './startBakeFeed';
 import './viewer.css';
 
 export interface View3DProps {
@@ -31,11 +29,19 @@ export interface View3DProps {
 }
 
 const PRESET_LABEL: Record<CameraPresetName, string> = { eye: 'Eye height', top: 'Top', corner: 'Corner' };
+const QUALITY_LABEL: Record<QualityLevel, string> = { fast: 'Fast', balanced: 'Balanced', best: 'Best' };
 
-/** The 3D view (lazily loaded chunk: three.js and the baker). Reads the configuration, never changes it except through store actions. */
+/**
+ * The 3D view (lazily loaded chunk: three.js and the room view). The light comes from the
+ * configurator's bake service (bakeHost: it outlives the view and is fed every configuration
+ * change), so opening the view again after no change shows the baked light at once. Reads the
+ * configuration, never changes it except through store actions.
+ */
 export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
   const config = useStore(store, (s) => s.config);
-  const catalog = useStore(store, (s) => s.catalog);
+  const host = useMemo(() => bakeHostFor(store, loadPhotometry), [store, loadPhotometry]);
+  const [feed, setFeed] = useState<BakeFeed | null>(() => host.current());
+  const [quality, setQuality] = useState<QualityLevel>(host.quality);
   const selection = useStore(store, (s) => s.selection);
   const canvasRef = useRef<HTMLCanvasElement>(null);
   const wrapRef = useRef<HTMLDivElement>(null);
@@ -54,7 +60,7 @@ export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
   const [planeStats, setPlaneStats] = useState<IlluminanceStats | null>(null);
   const [lost, setLost] = useState(false);
   const [photometryNotes, setPhotometryNotes] = useState<PhotometryNote[]>([]);
-  const litRef = useRef<Parameters<Parameters<typeof createViewerController>[1]['onMaps']>[0] | null>(null);
+  const litRef = useRef<Parameters<Parameters<typeof createViewerController>[2]['onMaps']>[0] | null>(null);
   const [mapsVersion, setMapsVersion] = useState(0);
   const [liveState, setLiveState] = useState<NonNullable<ViewerStatus['live']>['state'] | null>(null);
 
@@ -65,11 +71,40 @@ export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
   };
 
   useEffect(() => {
-    const canvas = canvasRef.current!;
     mountedAt.current = performance.now();
+    publish({ open: true });
+    return () => {
+      status.current = { ...CLOSED_STATUS };
+      setViewerStatus(store, status.current);
+    };
+    // eslint-disable-next-line react-hooks/exhaustive-deps
+  }, [store]);
+
+  // The bake service: running already (started in idle time after the planner showed), or started now.
+  useEffect(() => {
+    if (feed) return;
+    let cancelled = false;
+    host
+      .get()
+      .then((f) => !cancelled && setFeed(f))
+      .catch((e: Error) => {
+        if (cancelled) return;
+        const message = `The 3D view could not start: ${e.message}`;
+        setError(message);
+        publish({ error: message });
+      });
+    return () => {
+      cancelled = true;
+    };
+    // eslint-disable-next-line react-hooks/exhaustive-deps
+  }, [host, feed]);
+
+  useEffect(() => {
+    if (!feed) return;
+    const canvas = canvasRef.current!;
     let controller: ViewerController;
     try {
-      controller = createViewerController(canvas, {
+      controller = createViewerController(canvas, feed.service, {
         onProgress: (p) => {
           setProgress({ fraction: p.fraction, done: p.done, lit: p.lit });
           publish({ progress: p.fraction, done: p.done, groupBakes: p.groupBakes, relightsOnly: p.relightsOnly });
@@ -117,50 +152,39 @@ export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
       controller.resize(Math.round(r.width), Math.round(r.height));
     });
     ro.observe(wrap);
-    publish({ open: true });
+    // Every configuration the feed resolved (and handed to the service): the room, fixtures and objects on screen.
+    const show = (r: ResolvedScene | null) => {
+      if (!r) return;
+      sceneRef.current = r.bake;
+      controller.setScene(r.bake, r.fixtures, r.ids);
+      setPhotometryNotes(r.notes);
+    };
+    show(feed.latest());
+    const failed = feed.error();
+    if (failed) queueMicrotask(() => setError(failed));
+    const unsubscribe = feed.subscribe(() => {
+      setError(feed.error());
+      if (!feed.error()) show(feed.latest());
+    });
     return () => {
+      unsubscribe();
       ro.disconnect();
+      // The display only: the service keeps the engine, the maps and any pending bake.
       controller.dispose();
       ctrl.current = null;
-      status.current = { ...CLOSED_STATUS };
-      setViewerStatus(store, status.current);
     };
     // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [store]);
+  }, [feed]);
 
-  // Every configuration change: new scene for the controller (it bakes only what changed).
-  useEffect(() => {
-    let cancelled = false;
-    const scene = toLightingScene(config, catalog);
-    // Objects' meshes come from the configuration itself (`object:<id>`, with their finishes).
-    resolveBakeScene(scene, loadPhotometry, configurationMeshLoader(config))
-      .then((bakeScene) => {
-        if (cancelled || !ctrl.current) return;
-        sceneRef.current = bakeScene;
-        // Module ids in luminaire order: the live overlay (LiveControl) addresses modules by id.
-        ctrl.current.setScene(bakeScene, fixturesFromConfiguration(config, catalog), scene.luminaires.map((l) => l.id ?? ''));
-        // Each file in use once, with its warnings (docs/photometry.md, "Warnings").
-        const files = new Map<string, PhotometryNote>();
-        scene.luminaires.forEach((l, i) => {
-          if (!files.has(l.photometry)) files.set(l.photometry, { file: l.photometry, warnings: photometryWarnings(bakeScene.luminaires[i].photometry) });
-        });
-        setPhotometryNotes([...files.values()]);
-      })
-      .catch((e: Error) => {
-        if (cancelled) return;
-        // The loader's own message names the file ("ies/a.ies: HTTP 404"); which luminaire asked is no news to the user.
-        if (e instanceof SceneObjectError) setError(`Could not prepare the furniture for the light calculation: ${e.message}`);
-        else setError(`Could not load the photometric data: ${e instanceof LuminairePhotometryError && e.cause instanceof Error ? e.cause.message : e.message}`);
-      });
-    return () => {
-      cancelled = true;
-    };
-  }, [config, catalog, loadPhotometry]);
+  const chooseQuality = (level: QualityLevel) => {
+    setQuality(level);
+    host.setQuality(level);
+  };
 
   // The selected object or module is highlighted in 3D too (the plan and the view share the store's selection).
   useEffect(() => {
     ctrl.current?.setSelection(selection);
-  }, [selection]);
+  }, [selection, feed]);
   const selectedLabel = useMemo(() => {
     if (!selection) return null;
     if (selection.kind === 'object') {
@@ -230,6 +254,14 @@ export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
           <button type="button" className={`btn${mode === 'lux' ? ' btn-primary' : ''}`} aria-pressed={mode === 'lux'} onClick={() => { setMode('lux'); ctrl.current?.setMode('lux'); }} data-testid="mode-lux">
             Lux
           </button>
+        </div>
+        <div className="viewer3d-group" role="group" aria-label="Quality">
+          <span className="viewer3d-group-label">Quality:</span>
+          {QUALITY_LEVEL_NAMES.map((q) => (
+            <button key={q} type="button" className={`btn${quality === q ? ' btn-primary' : ''}`} aria-pressed={quality === q} onClick={() => chooseQuality(q)} data-testid={`quality-${q}`}>
+              {QUALITY_LABEL[q]}
+            </button>
+          ))}
         </div>
         <label className="viewer3d-field">
           Exposure {ev > 0 ? '+' : ''}

@@ -1,3 +1,5 @@
+import type { BakeStatus } from '../../engines/view/createBakeService';
+
 /**
  * What the 3D view reports about itself, readable without loading three.js
  * (window.luxbox.view3d() in the app; the e2e tests wait on it). Keyed by the
@@ -40,19 +42,36 @@ export interface ViewerStatus {
    * (src/engines/view/objectStats.ts).
    */
   objects: { id: string; avg: number; top: number | null; floorUnder: number | null }[] | null;
+  /**
+   * The background bake service (docs/viewer.md, "Always ready: the bake service"), readable while
+   * 3D is closed: work pending and not paused, paused (page hidden), done, its counters since the
+   * configurator started, and the quality level.
+   */
+  bake: BakeStatus;
 }
 
 const statuses = new WeakMap<object, ViewerStatus>();
+const bakeSources = new WeakMap<object, () => BakeStatus>();
+
+/** The bake status before a service exists. */
+export const IDLE_BAKE: BakeStatus = { running: false, paused: false, done: false, groupBakes: 0, relightsOnly: 0, indirectSolves: 0, quality: 'balanced' };
 
 export const CLOSED_STATUS: ViewerStatus = {
   open: false, lit: false, done: false, progress: 0, groupBakes: 0, relightsOnly: 0, frames: 0,
-  firstLitMs: null, lastRelightMs: null, contextLosses: 0, error: null, floor: null, live: null, objects: null,
+  firstLitMs: null, lastRelightMs: null, contextLosses: 0, error: null, floor: null, live: null, objects: null, bake: IDLE_BAKE,
 };
 
 export function setViewerStatus(owner: object, status: ViewerStatus): void {
   statuses.set(owner, status);
 }
 
+/** Where the bake part of the status comes from (the bake host), or null to remove it. */
+export function setBakeStatusSource(owner: object, source: (() => BakeStatus) | null): void {
+  if (source) bakeSources.set(owner, source);
+  else bakeSources.delete(owner);
+}
+
 export function getViewerStatus(owner: object): ViewerStatus {
-  return { ...(statuses.get(owner) ?? CLOSED_STATUS) };
+  const bake = bakeSources.get(owner)?.() ?? IDLE_BAKE;
+  return { ...(statuses.get(owner) ?? CLOSED_STATUS), bake: { ...bake } };
 }

@@ -1,0 +1,214 @@
+import type { BakeScene } from '../bake/bakeScene';
+import { resolveBakeSettings } from '../bake/bakeSettings';
+import type { PreparedObjects } from '../bake/objects/preparedObjects';
+import type { EngineProgress, RelightEngine } from '../relight/createRelightEngine';
+import { QUALITY_LEVELS, type QualityLevel } from '../relight/qualityLevels';
+import { createBakeContext, type BakeCanvas, type BakeContext } from './createBakeContext';
+import { createBakeSlicer, glFence, type BakeSlicer, type GpuFence } from './createBakeSlicer';
+import { createObjectsMemo } from './createObjectsMemo';
+
+/** What a bake service tells its subscribers. */
+export type BakeEvent =
+  /** A slice ran (or a relight-only scene change arrived): new maps when `engine.version` moved. */
+  | { type: 'slice'; engine: RelightEngine; progress: EngineProgress }
+  /** The engine was replaced (quality change, context restore): maps on screen belong to the old one. */
+  | { type: 'engine'; engine: RelightEngine | null }
+  /** The bake context was lost or restored. */
+  | { type: 'context'; state: 'lost' | 'restored' }
+  | { type: 'error'; message: string }
+  /** Paused or resumed (the tab was hidden or shown). */
+  | { type: 'status' };
+
+/** The service's state for hosts and tests (window.luxbox.view3d().bake). */
+export interface BakeStatus {
+  /** Work is pending and not paused. */
+  running: boolean;
+  /** Paused because the page is hidden. */
+  paused: boolean;
+  /** Every basis is final for the current scene (false before any scene). */
+  done: boolean;
+  /** Group bakes, relight-only scene changes and shared indirect solves since the service started (across engines). */
+  groupBakes: number;
+  relightsOnly: number;
+  indirectSolves: number;
+  quality: QualityLevel;
+}
+
+export interface BakeService {
+  /** A new scene (any change of the configuration): replaces pending work; the engine keeps unchanged groups. */
+  setScene(scene: BakeScene): void;
+  readonly scene: BakeScene | null;
+  /**
+   * A transient change of the scene the engine lights (Live control's levels; only dimming and
+   * colour, so a relight), or null for the scene itself.
+   */
+  setOverlay(overlay: ((scene: BakeScene) => BakeScene) | null): void;
+  /** Another quality level: a fresh engine with QUALITY_LEVELS[level], which rebakes the scene. */
+  setQuality(level: QualityLevel): void;
+  readonly quality: QualityLevel;
+  /** The engine, or null while its context is lost or when none could be made. */
+  readonly engine: RelightEngine | null;
+  /** The scene's objects as the engine lays out their atlas (null: none). */
+  objects(): PreparedObjects | null;
+  status(): BakeStatus;
+  /** The last error (null: none). */
+  readonly error: string | null;
+  subscribe(listener: (event: BakeEvent) => void): () => void;
+  dispose(): void;
+}
+
+/** The page visibility the service follows (the document, or a test's stand-in). */
+export type VisibilitySource = Pick<Document, 'hidden' | 'addEventListener' | 'removeEventListener'>;
+
+export interface BakeServiceOptions {
+  quality?: QualityLevel;
+  /** Default: the page's document (no pausing without one). */
+  visibility?: VisibilitySource | null;
+  /** A new canvas for the bake context (default: a detached canvas). */
+  canvas?: () => BakeCanvas;
+  /** Fences after slices (default: glFence on the engine's context). */
+  fence?: ((gl: WebGL2RenderingContext) => GpuFence | null) | null;
+  /** setTimeout and performance.now, or a test's stand-ins. */
+  defer?: (callback: () => void, ms: number) => unknown;
+  now?: () => number;
+  /**
+   * Free the baker's GPU targets once the bake is done (they are only a cache for the next bake).
+   * Default: navigator.deviceMemory ≤ 2 (GB).
+   */
+  lowMemory?: boolean;
+}
+
+/** Engines that can free their pooled render targets between bakes. */
+type TrimmableEngine = RelightEngine & { releaseTargets?(): void };
+
+const pageLowMemory = (): boolean => {
+  const memory = typeof navigator === 'undefined' ? undefined : (navigator as Navigator & { deviceMemory?: number }).deviceMemory;
+  return typeof memory === 'number' && memory <= 2;
+};
+
+/**
+ * The 3D view's bake, living as long as the configurator rather than the view (docs/viewer.md,
+ * "Always ready: the bake service"): the bake context and its relight engine, the background
+ * slicer and the objects' atlas layout. Hosts feed it every configuration change; it bakes in
+ * fenced background slices whether or not the view is open, pauses while the page is hidden,
+ * and a new scene replaces the pending work. No three.js here: it is its own small chunk.
+ */
+export function createBakeService(options: BakeServiceOptions = {}): BakeService {
+  let quality: QualityLevel = options.quality ?? 'balanced';
+  const visibility = options.visibility !== undefined ? options.visibility : typeof document === 'undefined' ? null : document;
+  const lowMemory = options.lowMemory ?? pageLowMemory();
+  const listeners = new Set<(event: BakeEvent) => void>();
+  const emit = (event: BakeEvent) => {
+    for (const l of [...listeners]) l(event);
+  };
+  let scene: BakeScene | null = null;
+  let overlay: ((s: BakeScene) => BakeScene) | null = null;
+  let error: string | null = null;
+  let disposed = false;
+  const prepareFor = createObjectsMemo();
+  let prepared: PreparedObjects | null = null;
+  /** Targets freed for the engine version that finished (low memory), so the free runs once per bake. */
+  let trimmedAt = -1;
+
+  const lit = (s: BakeScene) => (overlay ? overlay(s) : s);
+  const settings = () => context.engine?.settings ?? resolveBakeSettings(QUALITY_LEVELS[quality]);
+  const reportError = (message: string) => {
+    error = message;
+    emit({ type: 'error', message });
+  };
+
+  const context: BakeContext = createBakeContext(
+    {
+      onLost: () => emit({ type: 'context', state: 'lost' }),
+      onRestored(engine) {
+        if (engine && scene) engine.setScene(lit(scene));
+        emit({ type: 'engine', engine });
+        emit({ type: 'context', state: 'restored' });
+        slicer.queue();
+      },
+      onError: reportError,
+    },
+    { settings: QUALITY_LEVELS[quality], canvas: options.canvas },
+  );
+
+  const makeFence = options.fence === undefined ? glFence : options.fence;
+  const slicer: BakeSlicer = createBakeSlicer({
+    engine: () => context.engine,
+    onSlice(engine, progress) {
+      if (progress.done && lowMemory && trimmedAt !== engine.version) {
+        trimmedAt = engine.version;
+        (engine as TrimmableEngine).releaseTargets?.();
+      }
+      emit({ type: 'slice', engine, progress });
+    },
+    onError: reportError,
+    defer: options.defer,
+    now: options.now,
+    fence: makeFence ? () => (context.gl ? makeFence(context.gl) : null) : undefined,
+  });
+
+  const onVisibility = () => {
+    if (!visibility) return;
+    slicer.setPaused(visibility.hidden);
+    emit({ type: 'status' });
+  };
+  if (visibility) {
+    visibility.addEventListener('visibilitychange', onVisibility);
+    slicer.setPaused(visibility.hidden);
+  }
+
+  return {
+    setScene(next) {
+      if (disposed) return;
+      scene = next;
+      prepared = prepareFor(next.objects, settings());
+      context.engine?.setScene(lit(next));
+      slicer.queue();
+    },
+    get scene() {
+      return scene;
+    },
+    setOverlay(next) {
+      overlay = next;
+      if (!scene || disposed) return;
+      context.engine?.setScene(lit(scene));
+      slicer.queue();
+    },
+    setQuality(level) {
+      if (level === quality || disposed) return;
+      quality = level;
+      const engine = context.setSettings(QUALITY_LEVELS[level]);
+      if (scene) prepared = prepareFor(scene.objects, settings());
+      if (engine && scene) engine.setScene(lit(scene));
+      emit({ type: 'engine', engine });
+      slicer.queue();
+    },
+    get quality() {
+      return quality;
+    },
+    get engine() {
+      return context.engine;
+    },
+    objects: () => prepared,
+    status() {
+      const engine = context.engine;
+      const done = scene !== null && engine !== null && engine.progress.done;
+      return { running: !done && !slicer.paused && scene !== null && engine !== null, paused: slicer.paused, done, ...context.counters(), quality };
+    },
+    get error() {
+      return error;
+    },
+    subscribe(listener) {
+      listeners.add(listener);
+      return () => listeners.delete(listener);
+    },
+    dispose() {
+      if (disposed) return;
+      disposed = true;
+      visibility?.removeEventListener('visibilitychange', onVisibility);
+      slicer.stop();
+      listeners.clear();
+      context.dispose();
+    },
+  };
+}

@@ -1,0 +1,31 @@
+import { isQualityLevel, type QualityLevel } from '../../engines/relight/qualityLevels';
+
+/** Where the user's choice of bake quality is kept (per browser, across configurations). */
+export const QUALITY_STORAGE_KEY = 'luxbox.quality';
+
+/** The user's stored choice, or null (none, unreadable, or no storage). */
+export function storedQuality(): QualityLevel | null {
+  try {
+    const v = typeof localStorage === 'undefined' ? null : localStorage.getItem(QUALITY_STORAGE_KEY);
+    return isQualityLevel(v) ? v : null;
+  } catch {
+    return null; // storage blocked (privacy settings, sandboxed frame)
+  }
+}
+
+export function storeQuality(level: QualityLevel): void {
+  try {
+    localStorage.setItem(QUALITY_STORAGE_KEY, level);
+  } catch {
+    // Storage blocked: the choice holds for this page only.
+  }
+}
+
+/**
+ * The quality the bake starts with: the host's pin (a `quality` URL parameter or embed option:
+ * tests pin 'balanced' so lux values stay deterministic), else the user's stored choice, else
+ * 'balanced' (the viewer's measured default, docs/viewer.md "Viewer bake quality").
+ */
+export function initialQuality(pinned: QualityLevel | null | undefined): QualityLevel {
+  return pinned ?? storedQuality() ?? 'balanced';
+}

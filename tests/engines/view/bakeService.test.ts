@@ -1,0 +1,270 @@
+/**
+ * The always-ready bake (docs/viewer.md, "Always ready: the bake service"): fence-limited slices
+ * (never more than one slice's GPU work in flight, slice size from JavaScript + GPU time), and the
+ * service on a real relight engine (headless-gl): paused while the page is hidden, resumed when
+ * visible, and a new scene replaces the pending work.
+ */
+import { describe, expect, it } from 'vitest';
+import type { BakeScene } from '../../../src/engines/bake/bakeScene';
+import type { EngineProgress, RelightEngine } from '../../../src/engines/relight/createRelightEngine';
+import { SLICE_MS } from '../../../src/engines/view/bakeSlice';
+import { createBakeService, type VisibilitySource } from '../../../src/engines/view/createBakeService';
+import { createBakeSlicer, glFence, type GpuFence } from '../../../src/engines/view/createBakeSlicer';
+import { createHeadlessGL } from '../../../src/hosts/node/createHeadlessGL';
+import { isotropic, uniformRoom } from '../bake/bakeTestKit';
+
+/** Blocks the thread for `ms` (a GPU behind a fence keeps working meanwhile). */
+const sleep = (ms: number) => Atomics.wait(new Int32Array(new SharedArrayBuffer(4)), 0, 0, ms);
+
+/**
+ * setTimeout stand-in: callbacks wait until run one at a time (each run may queue more). With
+ * `realDelays` a callback queued with a delay runs after sleeping that long, as a real timer
+ * would (fence polls on a real GPU need real time to pass).
+ */
+function manualQueue(realDelays = false) {
+  const pending: [() => void, number][] = [];
+  return {
+    defer: (f: () => void, ms = 0) => {
+      pending.push([f, ms]);
+    },
+    get size() {
+      return pending.length;
+    },
+    /** Runs queued callbacks (and those they queue) until none is left or `limit` ran; returns how many ran. */
+    drain(limit = 100_000) {
+      let n = 0;
+      while (pending.length > 0 && n < limit) {
+        const [f, ms] = pending.shift()!;
+        if (realDelays && ms > 0) sleep(ms);
+        f();
+        n++;
+      }
+      return n;
+    },
+  };
+}
+
+describe('fence-limited slices', () => {
+  /**
+   * A GPU-bound device: a step costs no JavaScript time at all (draws are queued, not run), the
+   * fake GPU executes each sample in GPU_MS after the previous work, and each poll of a fence
+   * advances the clock by POLL_MS. Without fences a slice could queue the whole bake at once.
+   */
+  const GPU_MS = 5;
+  const POLL_MS = 2;
+  function gpuBound(total: number) {
+    const clock = { t: 0 };
+    let issued = 0;
+    let gpuFreeAt = 0;
+    let outstanding = 0;
+    let maxOutstanding = 0;
+    let stepsWhileOutstanding = 0;
+    const slices: number[] = [];
+    let current = 0;
+    const progress = () => ({ groupsDone: 0, groups: 1, fraction: issued / total, done: issued >= total, lit: true }) as EngineProgress;
+    const engine = {
+      get progress() {
+        return progress();
+      },
+      settings: { samplesPerDraw: 8 } as RelightEngine['settings'],
+      step(n: number) {
+        if (outstanding > 0) stepsWhileOutstanding++;
+        issued = Math.min(total, issued + n);
+        gpuFreeAt = Math.max(gpuFreeAt, clock.t) + n * GPU_MS;
+        current += n;
+        return progress();
+      },
+    } as unknown as RelightEngine;
+    const fence = (): GpuFence => {
+      const at = gpuFreeAt;
+      outstanding++;
+      maxOutstanding = Math.max(maxOutstanding, outstanding);
+      slices.push(current);
+      current = 0;
+      let disposed = false;
+      return {
+        signalled: () => {
+          clock.t += POLL_MS;
+          return clock.t >= at;
+        },
+        dispose: () => {
+          if (!disposed) outstanding--;
+          disposed = true;
+        },
+      };
+    };
+    return { engine, fence, clock, slices, stats: () => ({ maxOutstanding, stepsWhileOutstanding, outstanding }) };
+  }
+
+  it('never has more than one slice in flight, and sizes slices by the time until the fence signalled', () => {
+    const q = manualQueue();
+    const d = gpuBound(400);
+    const slicer = createBakeSlicer({ engine: () => d.engine, onSlice: () => {}, onError: (m) => { throw new Error(m); }, defer: q.defer, now: () => d.clock.t, fence: d.fence });
+    slicer.run();
+    // A second request while the first slice is in flight only queues it behind the fence.
+    slicer.run();
+    slicer.queue();
+    expect(slicer.inFlight).toBe(1);
+    q.drain();
+    expect(d.engine.progress.done).toBe(true);
+    expect(d.stats()).toEqual({ maxOutstanding: 1, stepsWhileOutstanding: 0, outstanding: 0 });
+    // First slice: the starting guess, 1.5 ms per sample → floor(12 / 1.5) = 8 samples. The fence then
+    // reports ~5 ms per sample (GPU), so slices shrink to what fits 12 ms of GPU time: 2 samples.
+    expect(d.slices[0]).toBe(8);
+    const steady = d.slices.slice(-20);
+    for (const n of steady) expect(n * GPU_MS).toBeLessThanOrEqual(SLICE_MS);
+    expect(Math.max(...steady)).toBe(Math.floor(SLICE_MS / GPU_MS));
+    // The measured cost per sample converged near the GPU's (5 ms plus the polling's granularity).
+    expect(slicer.msPerSample).toBeGreaterThan(GPU_MS - 1e-9);
+    expect(slicer.msPerSample).toBeLessThan(GPU_MS + POLL_MS + 1);
+  });
+
+  it('runs nothing while paused and resumes where it stopped; stop ends the polling', () => {
+    const q = manualQueue();
+    const d = gpuBound(40);
+    const slicer = createBakeSlicer({ engine: () => d.engine, onSlice: () => {}, onError: () => {}, defer: q.defer, now: () => d.clock.t, fence: d.fence });
+    slicer.run();
+    slicer.setPaused(true);
+    q.drain();
+    const paused = d.engine.progress.fraction;
+    expect(paused).toBeGreaterThan(0);
+    expect(paused).toBeLessThan(1);
+    slicer.run();
+    slicer.queue();
+    expect(q.drain()).toBe(0);
+    expect(d.engine.progress.fraction).toBe(paused);
+    slicer.setPaused(false);
+    q.drain();
+    expect(d.engine.progress.done).toBe(true);
+    expect(d.stats().outstanding).toBe(0);
+  });
+
+  it('glFence on headless-gl signals after a flush and is deleted on dispose', () => {
+    const gl = createHeadlessGL();
+    try {
+      const f = glFence(gl)!;
+      expect(f).not.toBeNull();
+      let polls = 0;
+      while (!f.signalled() && polls < 1000) polls++;
+      expect(f.signalled()).toBe(true);
+      f.dispose();
+      expect(gl.getError()).toBe(gl.NO_ERROR);
+    } finally {
+      gl.destroy();
+    }
+  });
+});
+
+describe('createBakeService on a real engine (headless-gl)', () => {
+  const room = uniformRoom(3, 2.5, 3, 0.5);
+  const lum = (x: number, z: number) => ({ photometry: isotropic(300), position: [x, 2.3, z] as [number, number, number], yaw: 0, pitch: 0, roll: 0, dimming: 1, color: [1, 1, 1] as [number, number, number] });
+  const scene: BakeScene = { room, luminaires: [lum(1, 1), lum(2, 2)] };
+
+  function fakePage(hidden = false) {
+    const listeners = new Set<() => void>();
+    const page = {
+      hidden,
+      addEventListener: (_type: string, l: () => void) => listeners.add(l),
+      removeEventListener: (_type: string, l: () => void) => listeners.delete(l),
+      set(h: boolean) {
+        page.hidden = h;
+        for (const l of [...listeners]) l();
+      },
+      get listeners() {
+        return listeners.size;
+      },
+    };
+    return page;
+  }
+
+  /** A service on its own headless-gl context (disposing the service loses that context). */
+  function service(page: ReturnType<typeof fakePage>, q: ReturnType<typeof manualQueue>) {
+    const gl = createHeadlessGL();
+    const canvas = () => ({ getContext: () => gl, addEventListener: () => {}, removeEventListener: () => {} });
+    const s = createBakeService({ quality: 'fast', visibility: page as unknown as VisibilitySource, canvas, defer: q.defer, lowMemory: false });
+    return { s, dispose: () => { s.dispose(); gl.destroy(); } };
+  }
+
+  it('pauses while the page is hidden (counters and maps stay still, nothing queued) and resumes when visible', () => {
+    const page = fakePage();
+    const q = manualQueue(true);
+    const { s, dispose } = service(page, q);
+    try {
+      s.setScene(scene);
+      expect(s.status()).toMatchObject({ running: true, paused: false, done: false, quality: 'fast' });
+      q.drain(1); // one slice: the first group's direct basis
+      expect(s.status().groupBakes).toBe(1);
+      page.set(true);
+      expect(s.status()).toMatchObject({ paused: true, running: false });
+      q.drain();
+      const still = { ...s.status(), version: s.engine!.version, fraction: s.engine!.progress.fraction };
+      // Nothing is left queued while hidden (no polling either), and a new request waits too.
+      expect(q.size).toBe(0);
+      s.setScene(scene);
+      q.drain();
+      expect(s.engine!.progress.fraction).toBe(still.fraction);
+      expect(s.status().groupBakes).toBe(still.groupBakes);
+      expect(still.done).toBe(false);
+      page.set(false);
+      expect(s.status().paused).toBe(false);
+      q.drain();
+      expect(s.status()).toMatchObject({ running: false, paused: false, done: true, groupBakes: 2 });
+      expect(s.engine!.progress.done).toBe(true);
+    } finally {
+      dispose();
+    }
+    expect(page.listeners).toBe(0);
+  });
+
+  it('a new scene replaces the pending work: groups of the old scene not yet baked never are', () => {
+    const page = fakePage();
+    const q = manualQueue(true);
+    const { s, dispose } = service(page, q);
+    const events: string[] = [];
+    s.subscribe((e) => events.push(e.type));
+    try {
+      // Three groups in one room; after one slice, another room with one luminaire.
+      s.setScene({ room, luminaires: [lum(1, 1), lum(2, 2), lum(1.5, 0.5)] });
+      q.drain(1);
+      expect(s.status().groupBakes).toBe(1);
+      const other: BakeScene = { room: uniformRoom(2, 2.5, 2, 0.5), luminaires: [lum(1, 1)] };
+      s.setScene(other);
+      q.drain();
+      expect(s.engine!.progress).toMatchObject({ groups: 1, groupsDone: 1, done: true });
+      // One bake for the first scene's first group, one for the new scene: the other two were cancelled.
+      expect(s.status().groupBakes).toBe(2);
+      expect(s.scene).toBe(other);
+      // The same scene again is a relight at most: nothing is baked.
+      const before = s.status();
+      s.setScene({ ...other });
+      q.drain();
+      expect(s.status().groupBakes).toBe(before.groupBakes);
+      expect(s.status().indirectSolves).toBe(before.indirectSolves);
+      expect(events).toContain('slice');
+    } finally {
+      dispose();
+    }
+  });
+
+  it('a quality change makes a fresh engine with that level and rebakes; counters run on', () => {
+    const page = fakePage();
+    const q = manualQueue(true);
+    const { s, dispose } = service(page, q);
+    const events: string[] = [];
+    s.subscribe((e) => events.push(e.type));
+    try {
+      s.setScene(scene);
+      q.drain();
+      expect(s.status().groupBakes).toBe(2);
+      const first = s.engine;
+      s.setQuality('balanced');
+      expect(events).toContain('engine');
+      expect(s.engine).not.toBe(first);
+      expect(s.engine!.settings.texelSize).toBe(0.05);
+      q.drain();
+      expect(s.status()).toMatchObject({ done: true, groupBakes: 4, quality: 'balanced' });
+    } finally {
+      dispose();
+    }
+  });
+});
