@@ -1,12 +1,15 @@
 /**
- * Viewer benchmarks (docs/benchmarks.md, "Viewer"): relight vs full rebake
- * (headless-gl, same run), gzip sizes of the planner entry bundle and the 3D
- * chunk (from dist/, run `npx vite build` first), and toggle → first lit frame
- * in Chromium (SwiftShader) against `vite preview`.
- * Run: xvfb-run -a npx tsx scripts/benchViewer.ts
+ * Viewer benchmarks (docs/benchmarks.md, "Viewer" and "3D lifecycle"): relight vs full rebake
+ * (headless-gl, same run), bake cost against module count (scripts/bench/benchModuleCount.ts),
+ * time to first lit frame and to done per quality level with the device calibration
+ * (scripts/bench/benchQualityLevels.ts), gzip sizes of the planner entry bundle and the 3D
+ * chunk (from dist/, run `npx vite build` first), and in Chromium (SwiftShader) against
+ * `vite preview`: toggle → first lit frame, then 3D → 2D → 3D with no change (first lit frame
+ * of the second opening and the bakes it started). Part of `npm run bench`.
+ * Run alone: npx vite build && xvfb-run -a npx tsx scripts/benchViewer.ts [results.json]
  */
 import { spawn } from 'node:child_process';
-import { readFileSync } from 'node:fs';
+import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { gzipSync } from 'node:zlib';
 import { chromium } from 'playwright-core';
@@ -20,6 +23,9 @@ import { PUBLIC_DIR } from '../src/hosts/node/renderInput';
 import { createRelightEngine } from '../src/engines/relight/createRelightEngine';
 import { createConfiguratorStore } from '../src/core/store/createConfiguratorStore';
 import { chromiumArgs } from '../playwright.config';
+import { benchModuleCount } from './bench/benchModuleCount';
+import { benchQualityLevels } from './bench/benchQualityLevels';
+import { machineInfo } from '../src/hosts/bench/machineInfo';
 
 const median = (xs: number[]) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
 
@@ -94,12 +100,29 @@ function bundleSizes() {
   return { entry: sum(initial, gz), entryRaw: sum(initial, raw), view3d: sum(view, gz), view3dRaw: sum(view, raw) };
 }
 
-async function toggleToFirstLit(): Promise<{ firstLit: number; done: number }[]> {
+interface ToggleRun {
+  /** Click on the 3D toggle → first lit frame, ms (chunk, photometry, direct bases included). */
+  firstLit: number;
+  /** → progressive bake done, ms. */
+  done: number;
+  /** 3D → 2D → 3D with no change: click → first lit frame of the second opening, ms. */
+  secondFirstLit: number;
+  /** The status's own figure for the second opening (firstLitMs), when it reports one. */
+  secondFirstLitReported: number | null;
+  /** Group bakes counted by the status before the second opening and after it is lit and settled. */
+  bakesBefore: number;
+  bakesAfter: number;
+}
+
+type Status = { lit: boolean; done: boolean; open: boolean; groupBakes?: number; firstLitMs?: number | null };
+
+async function toggleToFirstLit(): Promise<ToggleRun[]> {
   const server = spawn('npx', ['vite', 'preview', '--port', '4178', '--strictPort'], { stdio: 'ignore', detached: true });
   try {
     await new Promise((r) => setTimeout(r, 2500));
     const browser = await chromium.launch({ executablePath: '/usr/bin/chromium', args: chromiumArgs });
-    const runs = [];
+    const runs: ToggleRun[] = [];
+    const status = (page: import('playwright-core').Page) => page.evaluate(() => window.luxbox!.view3d() as Status);
     for (let k = 0; k < 3; k++) {
       const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
       await page.goto('http://localhost:4178/');
@@ -109,7 +132,22 @@ async function toggleToFirstLit(): Promise<{ firstLit: number; done: number }[]>
       await page.waitForFunction(() => (window.luxbox!.view3d() as { lit: boolean }).lit, null, { timeout: 120_000, polling: 20 });
       const firstLit = Date.now() - t0;
       await page.waitForFunction(() => (window.luxbox!.view3d() as { done: boolean }).done, null, { timeout: 120_000, polling: 50 });
-      runs.push({ firstLit, done: Date.now() - t0 });
+      const done = Date.now() - t0;
+      // Back to the plan, nothing changed, and into 3D again.
+      await page.getByTestId('tool-3d').click();
+      await page.waitForFunction(() => !(window.luxbox!.view3d() as { open: boolean }).open, null, { timeout: 30_000, polling: 20 });
+      await page.waitForTimeout(500);
+      const bakesBefore = (await status(page)).groupBakes ?? 0;
+      const t1 = Date.now();
+      await page.getByTestId('tool-3d').click();
+      await page.waitForFunction(() => {
+        const s = window.luxbox!.view3d() as { open: boolean; lit: boolean };
+        return s.open && s.lit;
+      }, null, { timeout: 120_000, polling: 10 });
+      const secondFirstLit = Date.now() - t1;
+      await page.waitForFunction(() => (window.luxbox!.view3d() as { done: boolean }).done, null, { timeout: 120_000, polling: 50 });
+      const after = await status(page);
+      runs.push({ firstLit, done, secondFirstLit, secondFirstLitReported: typeof after.firstLitMs === 'number' ? after.firstLitMs : null, bakesBefore, bakesAfter: after.groupBakes ?? 0 });
       await page.close();
     }
     await browser.close();
@@ -119,10 +157,24 @@ async function toggleToFirstLit(): Promise<{ firstLit: number; done: number }[]>
   }
 }
 
-const results = { relight: ['single', 'corner-l', 'snake'].map(relightVsRebake), bundles: bundleSizes(), chromium: await toggleToFirstLit() };
-for (const r of results.relight) {
-  console.log(`${r.presetId}: ${r.modules} modules, ${r.texels} texels/basis; full rebake ${r.rebake.toFixed(0)} ms, relight ${r.relight.toFixed(2)} ms, ratio ${(r.rebake / r.relight).toFixed(0)}×`);
+const log = (line: string) => console.log(line);
+const machineGl = createHeadlessGL();
+const machine = machineInfo(machineGl);
+machineGl.destroy();
+log(`machine: ${machine.cpuModel}, ${machine.cores} cores, ${machine.memoryGiB} GiB; GL: ${machine.glRenderer}; ${machine.date}`);
+const relight = ['single', 'corner-l', 'snake'].map(relightVsRebake);
+for (const r of relight) {
+  log(`${r.presetId}: ${r.modules} modules, ${r.texels} texels/basis; full rebake ${r.rebake.toFixed(0)} ms, relight ${r.relight.toFixed(2)} ms, ratio ${(r.rebake / r.relight).toFixed(0)}×`);
 }
-const b = results.bundles;
-console.log(`bundles: planner entry ${(b.entry / 1024).toFixed(1)} KiB gzip (${(b.entryRaw / 1024).toFixed(0)} KiB raw), 3D chunk ${(b.view3d / 1024).toFixed(1)} KiB gzip (${(b.view3dRaw / 1024).toFixed(0)} KiB raw)`);
-console.log(`chromium toggle → first lit frame: ${results.chromium.map((r) => r.firstLit).join(', ')} ms; → bake done: ${results.chromium.map((r) => r.done).join(', ')} ms`);
+log('bake cost against module count (8 × 6 × 2.8 m, balanced):');
+const moduleCount = benchModuleCount(3, log);
+const at = (n: number) => moduleCount.find((r) => r.modules === n)!;
+for (const n of [11, 20]) log(`ratio ${n}:3 — lit ${(at(n).litMs / at(3).litMs).toFixed(2)}×, done ${(at(n).doneMs / at(3).doneMs).toFixed(2)}×`);
+log('quality levels:');
+const quality = benchQualityLevels(log);
+const bundles = bundleSizes();
+log(`bundles: planner entry ${(bundles.entry / 1024).toFixed(1)} KiB gzip (${(bundles.entryRaw / 1024).toFixed(0)} KiB raw), 3D chunk ${(bundles.view3d / 1024).toFixed(1)} KiB gzip (${(bundles.view3dRaw / 1024).toFixed(0)} KiB raw)`);
+const toggles = await toggleToFirstLit();
+log(`chromium toggle → first lit frame: ${toggles.map((r) => r.firstLit).join(', ')} ms; → bake done: ${toggles.map((r) => r.done).join(', ')} ms`);
+log(`chromium 3D → 2D → 3D, no change: first lit frame ${toggles.map((r) => r.secondFirstLit).join(', ')} ms (status firstLitMs ${toggles.map((r) => r.secondFirstLitReported ?? '–').join(', ')}); group bakes before → after: ${toggles.map((r) => `${r.bakesBefore} → ${r.bakesAfter}`).join(', ')}`);
+if (process.argv[2]) writeFileSync(process.argv[2], JSON.stringify({ machine, relight, moduleCount, quality, bundles, toggles }, null, 2));

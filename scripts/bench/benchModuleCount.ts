@@ -3,7 +3,7 @@
  * ('balanced' = VIEWER_BAKE_SETTINGS) settings, modules 1, 3, 6, 11, 20 in an empty 8 × 6 × 2.8 m
  * room (moduleCountScene). Each count runs `repeats` times, each on a fresh GL context (a first
  * toggle: programs compile inside the timing); the median is reported.
- * Run alone: xvfb-run -a npx tsx scripts/bench/benchModuleCount.ts [out.json] [repeats]
+ * Run alone: xvfb-run -a npx tsx scripts/bench/benchModuleCount.ts [out.json] [repeats] [counts, e.g. 3,20]
  */
 import { writeFileSync } from 'node:fs';
 import { pathToFileURL } from 'node:url';
@@ -24,9 +24,9 @@ export interface ModuleCountRow {
 
 const median = (xs: number[]) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
 
-export function benchModuleCount(repeats = 3, log: (line: string) => void = console.log): ModuleCountRow[] {
+export function benchModuleCount(repeats = 3, log: (line: string) => void = console.log, counts: readonly number[] = MODULE_COUNTS): ModuleCountRow[] {
   const rows: ModuleCountRow[] = [];
-  for (const modules of MODULE_COUNTS) {
+  for (const modules of counts) {
     const runs: EngineBakeTiming[] = [];
     for (let k = 0; k < repeats; k++) {
       const gl = createHeadlessGL();
@@ -44,6 +44,6 @@ export function benchModuleCount(repeats = 3, log: (line: string) => void = cons
 }
 
 if (import.meta.url === pathToFileURL(process.argv[1]).href) {
-  const rows = benchModuleCount(Number(process.argv[3] ?? 3));
+  const rows = benchModuleCount(Number(process.argv[3] ?? 3), console.log, process.argv[4] ? process.argv[4].split(',').map(Number) : MODULE_COUNTS);
   if (process.argv[2]) writeFileSync(process.argv[2], JSON.stringify({ date: new Date().toISOString(), rows }, null, 2));
 }

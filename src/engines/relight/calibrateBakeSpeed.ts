@@ -1,0 +1,162 @@
+import type { Photometry } from '../../core/photometry/types';
+import type { BakeScene } from '../bake/bakeScene';
+import type { BakeSettings } from '../bake/bakeSettings';
+import { resolveBakeSettings } from '../bake/bakeSettings';
+import { createBaker } from '../bake/createBaker';
+import { surfaceLayouts } from '../bake/surfaceLayout';
+import { QUALITY_LEVEL_NAMES, QUALITY_LEVELS, type QualityLevel } from './qualityLevels';
+
+/**
+ * How fast this device bakes (docs/viewer.md, "Quality levels"): measured once by a short
+ * calibration bake, then used by `chooseQuality` to predict each level's times.
+ */
+export interface BakeCalibration {
+  /** Indirect gather cost: ms per texel per sample per bounce (warm, GPU work included). */
+  msPerTexelSample: number;
+  /** Direct pass cost: ms per texel per point source (warm, GPU work included). */
+  msPerTexelSource: number;
+  /** What the first (cold) calibration bake cost more than the warm one: program compilation, ms. */
+  compileMs: number;
+  /** The GL renderer string (the cache key of a stored calibration). */
+  renderer: string;
+  /** The work the timed bake did (the same on every device: CALIBRATION_SCENE, CALIBRATION_SETTINGS). */
+  work: { texels: number; pointSources: number; samples: number; bounces: number };
+}
+
+/**
+ * The calibration scene: a 3 × 2.5 × 3 m room (ρ 0.5), one isotropic 100 cd point source
+ * (≈ 1 257 lm) 0.3 m under the middle of the ceiling, where a module hangs; 5 cm texels
+ * (19 200 texels, about half a viewer basis, so per-draw overheads weigh as they do there),
+ * 32 samples, 1 bounce, no blur, no bright patches (the gather alone). The direct pass
+ * supersamples near the source as every viewer bake does (default texelSupersampling).
+ * Fixed, so every device bakes the same work.
+ */
+export const CALIBRATION_SCENE: BakeScene = {
+  room: { width: 3, height: 2.5, depth: 3, reflectance: { floor: 0.5, ceiling: 0.5, north: 0.5, south: 0.5, west: 0.5, east: 0.5 } },
+  luminaires: [{ photometry: isotropicPhotometry(100), position: [1.5, 2.2, 1.5], yaw: 0, pitch: 0, roll: 0, dimming: 1, color: [1, 1, 1] }],
+};
+
+export const CALIBRATION_SETTINGS: Partial<BakeSettings> = {
+  texelSize: 0.05,
+  maxTextureSize: 128,
+  samples: 32,
+  bounces: 1,
+  samplesPerDraw: 8,
+  blurRadius: 0,
+  tail: false,
+  brightPatches: 0,
+  syncTimings: true,
+  seed: 1,
+};
+
+/** Constant intensity over the whole sphere (Φ = 4πI), absolute photometry. */
+function isotropicPhotometry(candela: number): Photometry {
+  return {
+    format: 'IES', version: 'calibration', manufacturer: '', luminaire: 'isotropic calibration source', catalogNumber: '', keywords: {},
+    photometricType: 'C', symmetry: 'rotational', verticalAngles: [0, 180], horizontalAngles: [0], candela: [[candela, candela]],
+    statedLumens: null, absolute: true, inputWatts: null, luminousOpening: { width: 0, length: 0, height: 0, shape: 'point' }, warnings: [],
+  };
+}
+
+/** Renderer string, unmasked where WEBGL_debug_renderer_info is offered. */
+export function glRenderer(gl: WebGL2RenderingContext): string {
+  const debug = gl.getExtension('WEBGL_debug_renderer_info') as { UNMASKED_RENDERER_WEBGL: number } | null;
+  return String(gl.getParameter(debug ? debug.UNMASKED_RENDERER_WEBGL : gl.RENDERER));
+}
+
+/**
+ * Bakes the calibration scene twice on `gl`: the first bake compiles the programs (its extra
+ * time over the second is `compileMs`), the second is timed per pass (`syncTimings`: each pass
+ * waits for the GPU). Costs are per unit of work, so they carry over to any room size.
+ * Takes ~0.2 s on a 2-core software renderer, a few ms on a GPU.
+ */
+export function calibrateBakeSpeed(gl: WebGL2RenderingContext): BakeCalibration {
+  const baker = createBaker(gl);
+  try {
+    const settings = resolveBakeSettings(CALIBRATION_SETTINGS);
+    const cold = baker.bake(CALIBRATION_SCENE, settings).report;
+    const warm = baker.bake(CALIBRATION_SCENE, settings).report;
+    const texels = warm.totalTexels;
+    const t = warm.timings_ms;
+    // A timer's resolution can be 0.1 ms or coarser (browsers): floor each cost at 1 µs of work.
+    const direct = Math.max(t.direct, 0.001);
+    const indirect = Math.max(t.indirect + t.blend, 0.001);
+    return {
+      msPerTexelSample: indirect / (texels * settings.samples * settings.bounces),
+      msPerTexelSource: direct / (texels * warm.pointSources),
+      compileMs: Math.max(0, cold.timings_ms.total - t.total),
+      renderer: glRenderer(gl),
+      work: { texels, pointSources: warm.pointSources, samples: settings.samples, bounces: settings.bounces },
+    };
+  } finally {
+    baker.dispose();
+  }
+}
+
+/** What `chooseQuality` predicts for: a room, its luminaire groups and their point sources. */
+export interface QualityScene {
+  room: { width: number; height: number; depth: number };
+  /** Luminaire groups (modules) that each get a direct basis before the first lit frame. */
+  groups: number;
+  /** Point sources per group (the split near field makes 1–64 per luminaire; docs/baker.md). */
+  pointSourcesPerGroup: number;
+  /** Indirect solves to finish: 1 when the engine shares one indirect solve, else one per group. */
+  indirectSolves: number;
+}
+
+/**
+ * The scene a first toggle is planned for when the caller knows none yet: the configurator's
+ * default 5 × 4 × 2.8 m room with the L-corner preset (6 modules); 16 point sources per module
+ * is the mean of the default catalog's modules under the split near field.
+ */
+export const TYPICAL_QUALITY_SCENE: QualityScene = { room: { width: 5, height: 2.8, depth: 4 }, groups: 6, pointSourcesPerGroup: 16, indirectSolves: 1 };
+
+/** Targets of the automatic choice (issue #15): first lit frame within 1 s, final light within a few seconds. */
+export const FIRST_LIT_TARGET_MS = 1000;
+export const SOLVE_TARGET_MS = 8000;
+
+export interface QualityPrediction {
+  level: QualityLevel;
+  texels: number;
+  /** Predicted time to the first lit frame (every group's direct basis; compilation included), ms. */
+  firstLitMs: number;
+  /** Predicted time of the indirect solve(s) after that, ms. */
+  solveMs: number;
+}
+
+/** Texels of one basis at a level's settings (the six surface maps, as the baker lays them out). */
+export function levelTexels(room: QualityScene['room'], level: QualityLevel): number {
+  const s = resolveBakeSettings(QUALITY_LEVELS[level]);
+  return surfaceLayouts(room, s.texelSize, s.maxTextureSize).reduce((n, l) => n + l.width * l.height, 0);
+}
+
+/**
+ * Each level's predicted cost on a calibrated device:
+ * firstLit = compileMs + groups × texels × pointSources × msPerTexelSource,
+ * solve = indirectSolves × texels × samples × bounces × msPerTexelSample.
+ */
+export function predictQuality(calibration: BakeCalibration, scene: QualityScene = TYPICAL_QUALITY_SCENE): QualityPrediction[] {
+  return QUALITY_LEVEL_NAMES.map((level) => {
+    const s = resolveBakeSettings(QUALITY_LEVELS[level]);
+    const texels = levelTexels(scene.room, level);
+    return {
+      level,
+      texels,
+      firstLitMs: calibration.compileMs + scene.groups * texels * scene.pointSourcesPerGroup * calibration.msPerTexelSource,
+      solveMs: scene.indirectSolves * texels * s.samples * Math.max(1, s.bounces) * calibration.msPerTexelSample,
+    };
+  });
+}
+
+/**
+ * The best level (best > balanced > fast) whose predicted first lit frame is within
+ * FIRST_LIT_TARGET_MS and whose solve is within SOLVE_TARGET_MS; 'fast' when none is.
+ * Monotone: each level's predictions grow with the per-unit costs, so a device that is at
+ * least as fast in every cost never gets a lower level.
+ */
+export function chooseQuality(calibration: BakeCalibration, scene: QualityScene = TYPICAL_QUALITY_SCENE): QualityLevel {
+  const fits = predictQuality(calibration, scene).filter((p) => p.firstLitMs <= FIRST_LIT_TARGET_MS && p.solveMs <= SOLVE_TARGET_MS);
+  let chosen: QualityLevel = 'fast';
+  for (const p of fits) if (QUALITY_LEVEL_NAMES.indexOf(p.level) > QUALITY_LEVEL_NAMES.indexOf(chosen)) chosen = p.level;
+  return chosen;
+}
