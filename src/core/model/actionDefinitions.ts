@@ -10,7 +10,8 @@ import { formatPath } from './catalogSchema';
 import type { Configuration } from './configuration';
 import { setRoom } from './actions/roomActions';
 import { setReflectance } from './actions/surfaceActions';
-import { deleteSystem, moveSystem, placePreset, rotateSystem, setSuspension } from './actions/systemActions';
+import { deleteSystem, moveSystem, placePreset, rotateSystem, setMounting, setSuspension } from './actions/systemActions';
+import { addFeed, moveFeed, removeFeed, setFeedDriver } from './actions/feedActions';
 import { addRail, removeRail, setDistribution, setRailLength } from './actions/railActions';
 import { addModule, removeModule, setModuleBeam, setModuleCct, setModuleDimming, setModuleType } from './actions/moduleActions';
 import { autoPatch, clearPatch, setModulePatch } from './actions/patchActions';
@@ -24,6 +25,11 @@ export const actionDefinitions = {
   moveSystem,
   rotateSystem,
   setSuspension,
+  setMounting,
+  addFeed,
+  moveFeed,
+  removeFeed,
+  setFeedDriver,
   setRailLength,
   setDistribution,
   addRail,

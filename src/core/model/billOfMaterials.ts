@@ -2,13 +2,15 @@
  * Bill of materials and price, computed live from the configuration.
  * Money is summed in integer cents so totals are exact; unit prices are the
  * catalog's, rails priced by length (base + perMetre·L, rounded to cents).
- * Counting rules (docs/model.md): per system one power feed and one suspension
- * kit per rail end point (rails + 1: both ends of the chain and every joint);
- * one connector per joint; one rail article per distinct length; one module
- * article per type, beam and colour temperature.
+ * Counting rules (docs/model.md): per system one feed kit and one driver (its
+ * article) per power feed; one suspension kit per derived suspension point, or
+ * one surface clip per clip point when the system is on the ceiling
+ * (suspensionPoints.ts); one connector per joint; one rail article per distinct
+ * length; one module article per type, beam and colour temperature.
  */
-import { findBeam, findConnector, findModuleType, type Catalog } from './catalogSchema';
+import { findBeam, findConnector, findDriver, findModuleType, type Catalog } from './catalogSchema';
 import type { Configuration } from './configuration';
+import { suspensionCoordinates } from './suspensionPoints';
 
 export interface BomLine {
   readonly article: string;
@@ -17,7 +19,7 @@ export interface BomLine {
   /** Currency units (catalog currency). */
   readonly unitPrice: number;
   readonly total: number;
-  readonly kind: 'rail' | 'connector' | 'suspension' | 'feed' | 'module';
+  readonly kind: 'rail' | 'connector' | 'suspension' | 'feed' | 'driver' | 'module';
 }
 
 export interface BillOfMaterials {
@@ -46,8 +48,13 @@ export function billOfMaterials(config: Configuration, catalog: Catalog): BillOf
   let watts = 0;
   let lumens = 0;
   for (const s of config.systems) {
-    add(catalog.powerFeed.article, catalog.powerFeed.name, catalog.powerFeed.price, 'feed');
-    add(catalog.suspension.article, catalog.suspension.name, catalog.suspension.price, 'suspension', s.rails.length + 1);
+    for (const f of s.feeds) {
+      add(catalog.feed.article, catalog.feed.name, catalog.feed.price, 'feed');
+      const driver = findDriver(catalog, f.driver);
+      add(driver.article, `${driver.name} driver, ${driver.capacity} W ${driver.output}`, driver.price, 'driver');
+    }
+    const fixing = s.mounting === 'surface' ? catalog.surfaceMount : catalog.suspension;
+    add(fixing.article, fixing.name, fixing.price, 'suspension', suspensionCoordinates(s, catalog).length);
     for (const j of s.joints) {
       const con = findConnector(catalog, j.connector);
       add(con.article, con.name, con.price, 'connector');
@@ -64,7 +71,7 @@ export function billOfMaterials(config: Configuration, catalog: Catalog): BillOf
       }
     }
   }
-  const order: BomLine['kind'][] = ['rail', 'connector', 'suspension', 'feed', 'module'];
+  const order: BomLine['kind'][] = ['rail', 'connector', 'suspension', 'feed', 'driver', 'module'];
   const out = [...lines.values()]
     .sort((a, b) => order.indexOf(a.kind) - order.indexOf(b.kind) || a.article.localeCompare(b.article))
     .map((l) => ({ article: l.article, name: l.name, count: l.count, unitPrice: l.unitCents / 100, total: (l.unitCents * l.count) / 100, kind: l.kind }));

@@ -10,6 +10,7 @@ import { InputError } from '../inputError';
 import { enablementOf, refuse, type ActionDefinition, type Outcome, type UserAction } from './action';
 import type { Catalog } from './catalogSchema';
 import type { Configuration } from './configuration';
+import { overloadReason } from './feedLoads';
 import { validateResult } from './validateResult';
 
 interface Decision {
@@ -32,7 +33,8 @@ function decide<P>(def: ActionDefinition<P>, state: Configuration, params: P, ca
   }
   const problems = validateResult(state, performed, catalog);
   if (problems.length === 0) return { state, outcome: { ok: true, next: performed }, performed };
-  const first = problems[0];
+  // An overloaded driver is worded once for every action (addModule, setModuleBeam, presets, moves…): how full it was.
+  const first = problems[0].code === 'feed-overload' ? { ...problems[0], message: overloadReason(state, performed, problems[0], catalog) } : problems[0];
   return { state, outcome: refuse(def.explain?.(first, state, params, catalog) ?? first.message), performed };
 }
 

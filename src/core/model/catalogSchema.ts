@@ -11,6 +11,9 @@ import { describeIssues, formatPath as formatFieldPath, jsonShapeProblem, oneLin
 export const DISTRIBUTIONS = ['start', 'end', 'inside-centred', 'outside-centred'] as const;
 export type Distribution = (typeof DISTRIBUTIONS)[number];
 
+/** Where the catalog lets power feeds sit: the chain's two ends, its connectors. */
+export const FEED_POSITION_KINDS = ['ends', 'joints'] as const;
+
 const positive = z.number().finite().positive();
 const price = z.number().finite().nonnegative();
 const nonEmpty = z.string().min(1);
@@ -104,8 +107,53 @@ export const catalogSchema = z
       /** The photometric centre must stay at least this high above the floor (head room), metres. */
       minHeightAboveFloor: positive,
       price,
+      /** Largest distance between two suspension points along the chain, metres (docs/model.md, "Suspension points"). */
+      maxSpacing: positive,
+      /** Largest overhang of a free chain end past its last suspension point, metres. */
+      maxOverhang: positive,
+      /** Where the mounting rules come from (free text). */
+      source: z.string().optional(),
     }),
-    powerFeed: z.strictObject({ article: nonEmpty, name: nonEmpty, price }),
+    /** Mounting the rail directly on the ceiling (setMounting 'surface'): clips instead of suspensions. */
+    surfaceMount: z.strictObject({
+      article: nonEmpty,
+      name: nonEmpty,
+      price,
+      /** Largest distance between two clips along the chain, metres. */
+      spacing: positive,
+      /** Largest overhang of a free chain end past its last clip, metres. */
+      maxOverhang: positive,
+      /** Ceiling to photometric centre of a surface-mounted system, metres. */
+      drop: positive,
+      source: z.string().optional(),
+    }),
+    /** Where power feeds may sit and the feed kit each one needs (docs/model.md, "Power feeds"). */
+    feed: z.strictObject({
+      article: nonEmpty,
+      name: nonEmpty,
+      price,
+      /** 'ends': the chain's start and end; 'joints': any connector. A one-rail system has no joints, so 'ends' is required. */
+      positions: z.array(z.enum(FEED_POSITION_KINDS)).min(1),
+      /** What the rail takes, e.g. '48 V DC'; every driver must supply it. */
+      output: nonEmpty,
+      /** Driver id a new system's feed gets. */
+      defaultDriver: nonEmpty,
+    }),
+    drivers: z
+      .array(
+        z.strictObject({
+          id: nonEmpty,
+          name: nonEmpty,
+          article: nonEmpty,
+          /** Rated output power, watts: the most module input power one feed may carry. */
+          capacity: positive,
+          /** Output, e.g. '48 V DC'; must equal feed.output. */
+          output: nonEmpty,
+          price,
+          source: z.string().optional(),
+        }),
+      )
+      .min(1),
     moduleTypes: z.array(moduleTypeSchema).min(1),
     presets: z.array(presetSchema),
   })
@@ -119,6 +167,15 @@ export const catalogSchema = z
     const s = c.suspension;
     if (s.min > s.max) ctx.addIssue({ code: 'custom', path: ['suspension', 'min'], message: 'must not exceed max' });
     if (s.default < s.min || s.default > s.max) ctx.addIssue({ code: 'custom', path: ['suspension', 'default'], message: 'must lie within min..max' });
+    if (!c.feed.positions.includes('ends')) ctx.addIssue({ code: 'custom', path: ['feed', 'positions'], message: "must include 'ends' (a one-rail system has no joints)" });
+    if (new Set(c.feed.positions).size !== c.feed.positions.length) ctx.addIssue({ code: 'custom', path: ['feed', 'positions'], message: 'must not repeat a position' });
+    if (!c.drivers.some((d) => d.id === c.feed.defaultDriver)) ctx.addIssue({ code: 'custom', path: ['feed', 'defaultDriver'], message: `'${c.feed.defaultDriver}' is not a driver id` });
+    c.drivers.forEach((d, i) => {
+      if (d.output !== c.feed.output) ctx.addIssue({ code: 'custom', path: ['drivers', i, 'output'], message: `'${d.output}' does not match feed.output '${c.feed.output}'` });
+    });
+    if (s.maxOverhang > s.maxSpacing) ctx.addIssue({ code: 'custom', path: ['suspension', 'maxOverhang'], message: 'must not exceed maxSpacing' });
+    if (c.surfaceMount.maxOverhang > c.surfaceMount.spacing) ctx.addIssue({ code: 'custom', path: ['surfaceMount', 'maxOverhang'], message: 'must not exceed spacing' });
+    uniqueIds(c.drivers, ['drivers'], ctx);
     uniqueIds(c.connectors, ['connectors'], ctx);
     uniqueIds(c.moduleTypes, ['moduleTypes'], ctx);
     uniqueIds(c.presets, ['presets'], ctx);
@@ -149,6 +206,7 @@ export type ConnectorSpec = Catalog['connectors'][number];
 export type ModuleTypeSpec = Catalog['moduleTypes'][number];
 export type BeamSpec = ModuleTypeSpec['beams'][number];
 export type PresetSpec = Catalog['presets'][number];
+export type DriverSpec = Catalog['drivers'][number];
 
 /** A catalog that does not match the format: the message names the field. */
 export class CatalogError extends InputError {
@@ -225,4 +283,10 @@ export function findConnector(catalog: Catalog, id: string): ConnectorSpec {
   const c = catalog.connectors.find((x) => x.id === id);
   if (!c) throw new InputError(`unknown connector '${id}' (catalog ${catalog.id})`);
   return c;
+}
+
+export function findDriver(catalog: Catalog, id: string): DriverSpec {
+  const d = catalog.drivers.find((x) => x.id === id);
+  if (!d) throw new InputError(`unknown driver '${id}' (catalog ${catalog.id})`);
+  return d;
 }

@@ -53,6 +53,25 @@ export interface Joint {
   readonly turn: number;
 }
 
+/**
+ * Where a power feed sits along its chain (docs/model.md, "Power feeds"): the start of the
+ * first rail, the end of the last one, or connector k (joints[k], between rails k and k+1).
+ */
+export type FeedAt = 'start' | 'end' | { readonly joint: number };
+
+/** A power feed: a feed kit on the rail with its driver (catalog `drivers`). */
+export interface Feed {
+  /** 'f12', from nextId. */
+  readonly id: string;
+  readonly at: FeedAt;
+  /** Catalog driver id. */
+  readonly driver: string;
+}
+
+/** How a system hangs: on wire suspensions (`suspension` below the ceiling) or clipped to the ceiling surface. */
+export const MOUNTINGS = ['suspended', 'surface'] as const;
+export type Mounting = (typeof MOUNTINGS)[number];
+
 export interface LightSystem {
   readonly id: string;
   /** Preset it was placed from (informational). */
@@ -67,6 +86,10 @@ export interface LightSystem {
   readonly rails: readonly Rail[];
   /** joints[i] joins rails[i] to rails[i+1]; length rails.length − 1. */
   readonly joints: readonly Joint[];
+  /** At least one; each module's load goes to the nearest feed along the chain (scene file version 4). */
+  readonly feeds: readonly Feed[];
+  /** 'surface': clipped to the ceiling, `suspension` is kept for switching back but not used (scene file version 4). */
+  readonly mounting: Mounting;
 }
 
 /** The four walls (docs/scene-format.md: north z = 0, south z = D, west x = 0, east x = W). */
@@ -133,7 +156,7 @@ export interface Configuration {
   readonly objects: readonly RoomObject[];
   /** Imported meshes by id ('i7'); each is used by at least one object. */
   readonly importedMeshes: Readonly<Record<string, ImportedMesh>>;
-  /** Next number for generated ids ('s7', 'r8', 'm9', 'o10', 'i11'); keeps ids unique and deterministic. */
+  /** Next number for generated ids ('s7', 'r8', 'm9', 'o10', 'i11', feeds 'f12'); keeps ids unique and deterministic. */
   readonly nextId: number;
 }
 

@@ -4,6 +4,7 @@
  */
 import { findBeam, findModuleType, type Catalog, type PresetSpec } from './catalogSchema';
 import type { Configuration, LightSystem, ModuleInstance } from './configuration';
+import { plannedFeeds } from './feedLoads';
 import { normaliseDegrees, systemBounds } from './geometry';
 import { systemProblems } from './validate';
 
@@ -49,8 +50,12 @@ export function instantiatePreset(config: Configuration, preset: PresetSpec, cat
       modules: r.modules.map((m) => newModule(catalog, id('m'), m.type, m.beam, m.cct)),
     })),
     joints: preset.joints.map((j) => ({ ...j })),
+    feeds: [],
+    mounting: 'suspended',
   };
-  return { ...config, systems: [...config.systems, system], nextId: next };
+  // One feed at the chain start with the catalog's default driver, or what the preset's load needs (plannedFeeds).
+  const feeds = plannedFeeds(system, catalog).map((f) => ({ id: id('f'), ...f }));
+  return { ...config, systems: [...config.systems, { ...system, feeds }], nextId: next };
 }
 
 /**

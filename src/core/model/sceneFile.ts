@@ -11,7 +11,8 @@
 import { z } from 'zod';
 import { InputError } from '../inputError';
 import { DISTRIBUTIONS, type Catalog } from './catalogSchema';
-import { DEFAULT_REFLECTANCE, MESH_UNITS, WALL_NAMES, type Configuration, type ImportedMesh, type RoomObject } from './configuration';
+import { plannedFeeds } from './feedLoads';
+import { DEFAULT_REFLECTANCE, MESH_UNITS, MOUNTINGS, WALL_NAMES, type Configuration, type LightSystem, type ImportedMesh, type RoomObject } from './configuration';
 import { decodeMesh, encodeMesh } from './meshCodec';
 import { sourceName } from './objectGeometry';
 import { SURFACE_NAMES, type Reflectance, type SurfaceName } from './lightingScene';
@@ -21,10 +22,11 @@ import { validate } from './validate';
 
 export const SCENE_FILE_FORMAT = 'luxbox-configuration';
 /**
+ * 4: systems carry power feeds (`feeds`) and their mounting (`mounting`), docs/model.md "Power feeds".
  * 3: objects (furniture, imported models) and imported meshes (docs/model.md, "Objects").
  * 2: modules may carry a DMX patch (`dmx`, docs/live-control.md). Older files are migrated on reading.
  */
-export const SCENE_FILE_VERSION = 3;
+export const SCENE_FILE_VERSION = 4;
 /** Share strings longer than this are refused before decoding (browsers cap URLs near 64k). */
 export const MAX_SHARE_STRING = 60_000;
 
@@ -86,6 +88,9 @@ const configurationSchema = z.strictObject({
         }),
       ),
       joints: z.array(z.strictObject({ connector: ref, turn: z.number() })),
+      // Version 4. Positions, drivers and loads are validate()'s rules (feed-position, unknown-driver, feed-overload).
+      feeds: z.array(z.strictObject({ id, at: z.union([z.literal('start'), z.literal('end'), z.strictObject({ joint: z.number() })]), driver: ref })),
+      mounting: z.enum(MOUNTINGS),
     }),
   ),
   // Version 3; optional so a hand-written file may leave them out (empty).
@@ -137,7 +142,7 @@ export type SceneFile = z.infer<typeof fileSchema>;
  * Migration hook: migrations[n] turns a version-n document into version n+1.
  * A future version adds its step here and bumps SCENE_FILE_VERSION.
  */
-export const migrations: Record<number, (doc: Record<string, unknown>) => Record<string, unknown>> = {
+export const migrations: Record<number, (doc: Record<string, unknown>, catalog: Catalog) => Record<string, unknown>> = {
   // 1 → 2: version 2 added the optional DMX patch per module; a version 1 module has none, so its
   // content reads as is. A `dmx` field in a version 1 file was never written by luxbox: refused.
   1(doc) {
@@ -147,6 +152,7 @@ export const migrations: Record<number, (doc: Record<string, unknown>) => Record
     for (const key of ['objects', 'importedMeshes']) {
       if (typeof c === 'object' && c !== null && key in c) throw new SceneFileError(`configuration.${key}: needs "version": 3 (this file says version 1)`);
     }
+    refuseV4Fields(doc, 1);
     return { ...doc, version: 2 };
   },
   // 2 → 3: version 3 added objects and imported meshes; a version 2 configuration has none.
@@ -155,9 +161,46 @@ export const migrations: Record<number, (doc: Record<string, unknown>) => Record
     for (const key of ['objects', 'importedMeshes']) {
       if (typeof c === 'object' && c !== null && key in c) throw new SceneFileError(`configuration.${key}: needs "version": 3 (this file says version 2)`);
     }
+    refuseV4Fields(doc, 2);
     return { ...doc, version: 3 };
   },
+  // 3 → 4: version 4 added power feeds and the mounting. An older system hung on suspensions and had
+  // one feed kit: it gets `mounting: 'suspended'` and the feeds a new system of its shape gets
+  // (plannedFeeds: one at the chain start with the catalog's default driver, or what its load needs),
+  // with ids from nextId. Anything the schema would refuse is left as it is, for the schema to name.
+  3(doc, catalog) {
+    const c = doc.configuration;
+    if (typeof c !== 'object' || c === null || !Array.isArray((c as Record<string, unknown>).systems)) return { ...doc, version: 4 };
+    refuseV4Fields(doc, 3);
+    const conf = c as Record<string, unknown>;
+    let nextId = typeof conf.nextId === 'number' && Number.isInteger(conf.nextId) ? conf.nextId : null;
+    const systems = (conf.systems as unknown[]).map((raw) => {
+      if (typeof raw !== 'object' || raw === null) return raw;
+      const sys = { ...(raw as Record<string, unknown>), mounting: 'suspended' };
+      if (nextId === null) return sys;
+      let feeds: { at: unknown; driver: string }[];
+      try {
+        feeds = plannedFeeds({ ...(sys as unknown as LightSystem), feeds: [] }, catalog);
+      } catch {
+        // Unknown connectors or module types: a plain default feed, and validate() names the real problem.
+        feeds = [{ at: 'start', driver: catalog.feed.defaultDriver }];
+      }
+      return { ...sys, feeds: feeds.map((f) => ({ id: `f${nextId!++}`, ...f })) };
+    });
+    return { ...doc, version: 4, configuration: { ...conf, systems, ...(nextId === null ? {} : { nextId }) } };
+  },
 };
+
+/** Feeds and mounting came with version 4: a file that says it is older and has them was not written by luxbox. */
+function refuseV4Fields(doc: Record<string, unknown>, version: number): void {
+  const c = doc.configuration;
+  const systems = typeof c === 'object' && c !== null && Array.isArray((c as Record<string, unknown>).systems) ? ((c as Record<string, unknown>).systems as unknown[]) : [];
+  systems.forEach((s, i) => {
+    for (const key of ['feeds', 'mounting']) {
+      if (typeof s === 'object' && s !== null && key in s) throw new SceneFileError(`configuration.systems[${i}].${key}: needs "version": 4 (this file says version ${version})`);
+    }
+  });
+}
 
 /** Path of the first module carrying `dmx` in a version 1 configuration (its shape is checked later, so every step looks before it leaps). */
 function v1PatchField(configuration: unknown): string | null {
@@ -176,12 +219,12 @@ function v1PatchField(configuration: unknown): string | null {
   return null;
 }
 
-export function migrateSceneFile(doc: Record<string, unknown>): Record<string, unknown> {
+export function migrateSceneFile(doc: Record<string, unknown>, catalog: Catalog): Record<string, unknown> {
   let d = doc;
   while (typeof d.version === 'number' && d.version < SCENE_FILE_VERSION) {
     const step = migrations[d.version];
     if (!step) throw new SceneFileError(`scene file version ${d.version} is no longer supported`);
-    d = step(d);
+    d = step(d, catalog);
   }
   return d;
 }
@@ -228,7 +271,7 @@ export function configurationFromData(data: unknown, catalog: Catalog, source = 
   if (doc.version > SCENE_FILE_VERSION) throw new SceneFileError(`${source} was made by a newer luxbox (version ${doc.version}; this one reads up to ${SCENE_FILE_VERSION})`);
   let migrated: Record<string, unknown>;
   try {
-    migrated = migrateSceneFile(doc);
+    migrated = migrateSceneFile(doc, catalog);
   } catch (e) {
     if (e instanceof SceneFileError) throw new SceneFileError(`${source}: ${e.message}`);
     throw e;

@@ -1,7 +1,7 @@
 /**
  * The configuration as the baker's input (LightingScene v1, or v2 with objects, docs/scene-format.md): one
  * luminaire per module, at its photometric centre (plan centre of the module,
- * y = ceiling − suspension), turned so C0 runs along its rail (yaw = rail
+ * y = ceiling − suspension, or − the surface mount's drop), turned so C0 runs along its rail (yaw = rail
  * heading) plus the optic's roll from the catalog, coloured by its CCT.
  */
 import { cctToLinearRgb } from '../photometry/cct';
@@ -10,6 +10,7 @@ import type { Configuration } from './configuration';
 import { modulePlacements } from './geometry';
 import type { LightingLuminaire, LightingObject, LightingScene, Rgb } from './lightingScene';
 import { objectPlacement } from './objectGeometry';
+import { moduleHeight } from './suspensionPoints';
 
 /** The mesh reference of a configuration's object in its lighting scene; objectMesh(config, id) resolves it. */
 export const OBJECT_MESH_PREFIX = 'object:';
@@ -23,7 +24,8 @@ export function toLightingScene(config: Configuration, catalog: Catalog, options
   const base = options.photometryBase ?? '';
   const luminaires: LightingLuminaire[] = [];
   for (const system of config.systems) {
-    const y = config.room.height - system.suspension;
+    // Suspended: ceiling − suspension; on the ceiling surface: ceiling − the surface mount's drop.
+    const y = moduleHeight(system, config.room, catalog);
     const byId = new Map(system.rails.flatMap((r) => r.modules).map((m) => [m.id, m]));
     for (const p of modulePlacements(system, catalog)) {
       const m = byId.get(p.moduleId)!;

@@ -5,7 +5,9 @@
  * tests/core/model checks it.
  */
 import { onGrid, type Catalog } from './catalogSchema';
-import { ROOM_LIMITS, withinRoomLimits, type Configuration, type LightSystem } from './configuration';
+import { MOUNTINGS, ROOM_LIMITS, withinRoomLimits, type Configuration, type LightSystem } from './configuration';
+import { describeFeedAt, feedLabel, feedLoads, formatWatts, isOverloaded, sameFeedAt } from './feedLoads';
+import { photometricDrop } from './suspensionPoints';
 import { SURFACE_NAMES } from './lightingScene';
 import { firstPatchOverlap, formatPatchRange, patchRangeProblem } from './dmxPatch';
 import { allObjectProblems } from './objectProblems';
@@ -220,6 +222,7 @@ export function idProblems(config: Configuration): Problem[] {
   Object.keys(config.importedMeshes).forEach((id) => check(id, `importedMeshes.${id}`));
   config.systems.forEach((s, i) => {
     check(s.id, `systems[${i}].id`);
+    s.feeds.forEach((f, k) => check(f.id, `systems[${i}].feeds[${k}].id`));
     s.rails.forEach((r, k) => {
       check(r.id, `systems[${i}].rails[${k}].id`);
       r.modules.forEach((m, n) => check(m.id, `systems[${i}].rails[${k}].modules[${n}].id`));
@@ -285,10 +288,14 @@ function ownProblems(s: LightSystem, at: string, roomHeight: number, catalog: Ca
   if (![s.x, s.z, s.rotation].every(Number.isFinite)) p('position', '', `system ${s.id} has a non-finite position or rotation`);
   else if (s.rotation < 0 || s.rotation >= 360) p('rotation', '.rotation', `rotation must be in [0, 360) degrees (got ${s.rotation})`);
   const susp = catalog.suspension;
-  if (!Number.isFinite(s.suspension) || s.suspension < susp.min - EPS || s.suspension > susp.max + EPS) {
-    p('suspension-range', '.suspension', `suspension must be between ${susp.min} and ${susp.max} m (got ${s.suspension})`);
-  } else if (roomHeight - s.suspension < susp.minHeightAboveFloor - EPS) {
-    p('suspension-floor', '.suspension', `modules would hang at ${fmt(roomHeight - s.suspension)} m, below the minimum ${susp.minHeightAboveFloor} m above the floor`);
+  const inRange = Number.isFinite(s.suspension) && s.suspension >= susp.min - EPS && s.suspension <= susp.max + EPS;
+  if (!inRange) p('suspension-range', '.suspension', `suspension must be between ${susp.min} and ${susp.max} m (got ${s.suspension})`);
+  if (!(MOUNTINGS as readonly string[]).includes(s.mounting)) p('mounting', '.mounting', `mounting must be ${MOUNTINGS.join(' or ')} (got ${String(s.mounting)})`);
+  else if ((inRange || s.mounting === 'surface') && roomHeight - photometricDrop(s, catalog) < susp.minHeightAboveFloor - EPS) {
+    // Head room from where the modules really are: the suspension, or the surface mount's drop below the ceiling.
+    const hang = fmt(roomHeight - photometricDrop(s, catalog));
+    const surface = s.mounting === 'surface';
+    p('suspension-floor', surface ? '.mounting' : '.suspension', `modules would hang at ${hang} m${surface ? ' on the ceiling' : ''}, below the minimum ${susp.minHeightAboveFloor} m above the floor`);
   }
   if (s.rails.length === 0) p('no-rails', '.rails', `system ${s.id} has no rails`);
   if (s.joints.length !== Math.max(0, s.rails.length - 1)) p('joint-count', '.joints', `${s.rails.length} rails need ${Math.max(0, s.rails.length - 1)} joints, found ${s.joints.length}`);
@@ -322,7 +329,29 @@ function ownProblems(s: LightSystem, at: string, roomHeight: number, catalog: Ca
       p('modules-do-not-fit', `${rp}.modules`, `the modules of rail ${r.id} do not fit its ${fmt(r.length)} m with distribution '${r.distribution}'`);
     }
   });
+  feedProblems(s, catalog, p);
+  if (out.length === 0) {
+    for (const l of feedLoads(s, catalog)) {
+      if (isOverloaded(l)) p('feed-overload', `.feeds[${l.index}]`, `${feedLabel(l.index)} carries ${formatWatts(l.load)} W, more than its ${formatWatts(l.capacity)} W driver (${l.driver.name})`);
+    }
+  }
   return out;
+}
+
+/** A system's feeds: at least one, known drivers, positions the catalog allows on this chain, no two at one spot. */
+function feedProblems(s: LightSystem, catalog: Catalog, p: (code: string, path: string, message: string) => void): void {
+  if (s.feeds.length === 0) p('no-feed', '.feeds', `system ${s.id} has no power feed`);
+  s.feeds.forEach((f, k) => {
+    const fp = `.feeds[${k}]`;
+    if (!catalog.drivers.some((d) => d.id === f.driver)) p('unknown-driver', `${fp}.driver`, `unknown driver '${f.driver}'`);
+    const at = f.at;
+    if (typeof at === 'object') {
+      if (!catalog.feed.positions.includes('joints')) p('feed-position', `${fp}.at`, `${catalog.name} feeds only at the chain ends, not at connectors`);
+      else if (!Number.isInteger(at.joint) || at.joint < 0 || at.joint >= s.joints.length) p('feed-position', `${fp}.at`, `${feedLabel(k)} is at connector ${at.joint + 1}, but the chain has ${s.joints.length} connector${s.joints.length === 1 ? '' : 's'}`);
+    } else if (at !== 'start' && at !== 'end') p('feed-position', `${fp}.at`, `a feed sits at 'start', 'end' or { joint: k } (got ${String(at)})`);
+    const twin = s.feeds.findIndex((g, j) => j < k && sameFeedAt(g.at, f.at));
+    if (twin >= 0) p('feed-duplicate', `${fp}.at`, `${feedLabel(twin)} and ${feedLabel(k)} both sit at ${describeFeedAt(f.at)}`);
+  });
 }
 
 function fmt(x: number): string {

@@ -11,12 +11,16 @@ describe('bill of materials', () => {
     expect(byArticle['LX-RAIL-2000']).toMatchObject({ count: 1, unitPrice: 160, total: 160 });
     expect(byArticle['LX-RAIL-1500']).toMatchObject({ count: 1, unitPrice: 130, total: 130 });
     expect(byArticle['LX-CON-90']).toMatchObject({ count: 1, unitPrice: 24 });
-    expect(byArticle['LX-SUSP']).toMatchObject({ count: 3, total: 54 }); // rails + 1
+    // suspension points (suspensionPoints.ts): 0.5 m in from the start (min(0.5, 2/4)), the corner point,
+    // 0.375 m before the end (min(0.5, 1.5/4)); gaps 1.55 and 1.175 m ≤ 2 m: 3 kits
+    expect(byArticle['LX-SUSP']).toMatchObject({ count: 3, total: 54 });
     expect(byArticle['LX-FEED']).toMatchObject({ count: 1, total: 65 });
+    // 234 W: more than the default 100.8 W driver, so the new system got the smallest that carries it
+    expect(byArticle['MW-HLG-240H-48']).toMatchObject({ count: 1, unitPrice: 84.9, total: 84.9, kind: 'driver' });
     expect(byArticle['LX-SPOT-N12-3000']).toMatchObject({ count: 2, total: 378 });
     expect(byArticle['LX-FLOOD-48-3000']).toMatchObject({ count: 2, total: 298 });
     expect(byArticle['LX-WASH-25-3000']).toMatchObject({ count: 2, total: 518 });
-    expect(bom.total).toBe(160 + 130 + 24 + 54 + 65 + 378 + 298 + 518);
+    expect(bom.total).toBe(1711.9); // 160 + 130 + 24 + 54 + 65 + 84.90 + 378 + 298 + 518
     expect(bom.currency).toBe('EUR');
     expect(bom.watts).toBe(2 * 43 + 2 * 50 + 2 * 24);
     expect(bom.lumens).toBe(2 * 2044 + 2 * 825 + 2 * 1615);

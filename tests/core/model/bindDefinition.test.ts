@@ -11,7 +11,7 @@ import { actionDefinitions } from '../../../src/core/model/actionDefinitions';
 import { bindDefinition } from '../../../src/core/model/bindDefinition';
 import type { Configuration } from '../../../src/core/model/configuration';
 import { validate } from '../../../src/core/model/validate';
-import { catalog, only, withPreset } from './helpers';
+import { catalog, only, powered, withPreset } from './helpers';
 
 const railParams = z.object({ railId: z.string() });
 
@@ -94,7 +94,7 @@ describe('the binding refuses what validate() would reject', () => {
 
 describe('perform runs once', () => {
   it('isEnabled then perform on the same state reuses the performed state', () => {
-    const s = withPreset('single', 1, 1);
+    const s = powered(withPreset('single', 1, 1));
     const perform = vi.fn(actionDefinitions.addModule.perform);
     const action = bindDefinition({ ...actionDefinitions.addModule, perform }, { railId: only(s).rails[0].id, type: 'spot' }, catalog);
     expect(action.isEnabled(s)).toBe(true);

@@ -40,7 +40,22 @@ export function hall(systems: number, railsPer: number, gap = 1): Configuration 
       suspension: catalog.suspension.default,
       rails: Array.from({ length: railsPer }, () => ({ id: `r${next++}`, length: 1, distribution: 'start' as const, modules: [] })),
       joints: Array.from({ length: railsPer - 1 }, () => ({ connector: 'straight', turn: 0 })),
+      feeds: [],
+      mounting: 'suspended',
     });
   }
-  return { ...createConfiguration({ width: 30, depth: 30, height: 3 }), systems: list, nextId: next };
+  // Feed ids after all the others, so systems and rails keep the numbers they had before feeds.
+  const fed = list.map((s) => ({ ...s, feeds: [{ id: `f${next++}`, at: 'start' as const, driver: catalog.feed.defaultDriver }] }));
+  return { ...createConfiguration({ width: 30, depth: 30, height: 3 }), systems: fed, nextId: next };
+}
+
+/** Every system fed from both chain ends by the catalog's largest driver (2 × 321.6 W): room for a full rail of spots. */
+export function powered(config: Configuration, cat: Catalog = catalog): Configuration {
+  const largest = [...cat.drivers].sort((a, b) => b.capacity - a.capacity)[0].id;
+  let s = config;
+  for (const sys of config.systems) {
+    for (const f of sys.feeds) s = run(s, 'setFeedDriver', { feedId: f.id, driver: largest }, cat);
+    if (!sys.feeds.some((f) => f.at === 'end')) s = run(s, 'addFeed', { systemId: sys.id, at: 'end', driver: largest }, cat);
+  }
+  return s;
 }

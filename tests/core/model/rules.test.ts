@@ -3,7 +3,7 @@ import { bindAction } from '../../../src/core/model/actionDefinitions';
 import { createConfiguration, type Configuration } from '../../../src/core/model/configuration';
 import { modulePlacements, systemBounds } from '../../../src/core/model/geometry';
 import { validate } from '../../../src/core/model/validate';
-import { catalog, enabled, only, run, withPreset } from './helpers';
+import { catalog, enabled, only, powered, run, withPreset } from './helpers';
 
 /** A refused action, performed anyway, must yield a state validate() rejects (or throw). */
 function expectRefusedAndInvalid(state: Configuration, name: string, params: unknown, reason: RegExp) {
@@ -21,7 +21,8 @@ function expectRefusedAndInvalid(state: Configuration, name: string, params: unk
 
 describe('plus button: add modules until the rail is full', () => {
   it('takes ten 0.15 m spots on a 1.5 m rail, then disables', () => {
-    let s = withPreset('single', 1, 1);
+    // Fed from both ends by 321.6 W drivers: ten 43 W spots (430 W) fit electrically, so the rail's length decides.
+    let s = powered(withPreset('single', 1, 1));
     const rail = only(s).rails[0].id;
     let added = 0;
     while (enabled(s, 'addModule', { railId: rail, type: 'spot' }) === true) {
@@ -33,7 +34,7 @@ describe('plus button: add modules until the rail is full', () => {
     expectRefusedAndInvalid(s, 'addModule', { railId: rail, type: 'spot' }, /no room for another Spot/);
   });
   it('inserts at an index and re-lays out', () => {
-    let s = withPreset('single', 1, 1);
+    let s = powered(withPreset('single', 1, 1));
     const rail = only(s).rails[0];
     s = run(s, 'addModule', { railId: rail.id, type: 'flood', index: 0 });
     expect(only(s).rails[0].modules.map((m) => m.type)).toEqual(['flood', 'spot', 'spot', 'spot']);
@@ -56,7 +57,7 @@ describe('distribution options', () => {
 
 describe('module type switch', () => {
   it('only to types that fit without clashing', () => {
-    let s = withPreset('single', 1, 1);
+    let s = powered(withPreset('single', 1, 1));
     const rail = only(s).rails[0];
     s = run(s, 'setDistribution', { railId: rail.id, distribution: 'start' });
     for (let i = 0; i < 6; i++) s = run(s, 'addModule', { railId: rail.id, type: 'spot' });
@@ -72,7 +73,7 @@ describe('module type switch', () => {
     const m = only(s).rails[0].modules[0].id;
     s = run(s, 'setModuleCct', { moduleId: m, cct: 2700 });
     expect(only(run(s, 'setModuleType', { moduleId: m, type: 'flood' })).rails[0].modules[0].cct).toBe(2700);
-    const onRailOfOwn = run(createConfiguration({ width: 8, depth: 6, height: 3 }), 'placePreset', { presetId: 'long-line', x: 1, z: 1 });
+    const onRailOfOwn = powered(run(createConfiguration({ width: 8, depth: 6, height: 3 }), 'placePreset', { presetId: 'long-line', x: 1, z: 1 }));
     const mm = only(onRailOfOwn).rails[0].modules[1].id; // a flood between linears on a 3 m rail
     expect(only(run(onRailOfOwn, 'setModuleType', { moduleId: mm, type: 'updown' })).rails[0].modules[1].cct).toBe(3000);
   });
@@ -92,7 +93,7 @@ describe('module settings', () => {
 
 describe('rail length', () => {
   it('snaps to the 0.1 m step and refuses lengths that cut off modules, naming the minimum', () => {
-    let s = withPreset('single', 1, 1);
+    let s = powered(withPreset('single', 1, 1));
     const rail = only(s).rails[0].id;
     s = run(s, 'setRailLength', { railId: rail, length: 2.04 });
     expect(only(s).rails[0].length).toBe(2);

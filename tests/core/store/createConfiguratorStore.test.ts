@@ -16,19 +16,22 @@ describe('configurator store', () => {
     expect(store.getState().dispatch('placePreset', { presetId: 'single' })).toEqual({ ok: true });
     const sys = store.getState().config.systems[0];
     const rail = sys.rails[0].id;
+    // Power for ten 43 W spots (issue 11): the largest driver at both ends, so the rail's length is the limit.
+    expect(store.getState().dispatch('setFeedDriver', { feedId: sys.feeds[0].id, driver: 'hlg-320h-48' })).toEqual({ ok: true });
+    expect(store.getState().dispatch('addFeed', { systemId: sys.id, at: 'end', driver: 'hlg-320h-48' })).toEqual({ ok: true });
     let adds = 0;
     while (store.getState().dispatch('addModule', { railId: rail, type: 'spot' }).ok) adds++;
     expect(adds).toBe(7);
     expect(store.getState().isEnabled('addModule', { railId: rail, type: 'spot' })).toEqual({ ok: false, reason: expect.stringMatching(/no room/) });
     const snapshots = [store.getState().config];
     expect(store.getState().canUndo).toBe(true);
-    for (let i = 0; i < 8; i++) {
+    for (let i = 0; i < 10; i++) {
       expect(store.getState().undo()).toBe(true);
       snapshots.push(store.getState().config);
     }
     expect(store.getState().config.systems).toEqual([]);
     expect(store.getState().undo()).toBe(false);
-    for (let i = 0; i < 8; i++) store.getState().redo();
+    for (let i = 0; i < 10; i++) store.getState().redo();
     expect(store.getState().config).toBe(snapshots[0]);
     expect(store.getState().canRedo).toBe(false);
     expect(seen.length).toBeGreaterThan(10);
@@ -75,6 +78,7 @@ describe('configurator store', () => {
   it('performs an action once when the UI asks isEnabled and then dispatches', () => {
     const store = fresh();
     store.getState().dispatch('placePreset', { presetId: 'single' });
+    store.getState().dispatch('addFeed', { systemId: store.getState().config.systems[0].id, at: 'end', driver: 'hlg-320h-48' });
     const params = { railId: store.getState().config.systems[0].rails[0].id, type: 'spot' };
     const spy = vi.spyOn(actionDefinitions.addModule, 'perform');
     try {

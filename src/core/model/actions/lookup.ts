@@ -3,7 +3,7 @@
  * throw InputError (the caller passed a stale or foreign id).
  */
 import { InputError } from '../../inputError';
-import type { Configuration, LightSystem, ModuleInstance, Rail } from '../configuration';
+import type { Configuration, Feed, LightSystem, ModuleInstance, Rail } from '../configuration';
 
 export interface RailRef {
   readonly systemIndex: number;
@@ -44,6 +44,22 @@ export function findModule(config: Configuration, moduleId: string): ModuleRef {
   throw new InputError(`no module with id '${moduleId}'`);
 }
 
+export interface FeedRef {
+  readonly systemIndex: number;
+  readonly feedIndex: number;
+  readonly system: LightSystem;
+  readonly feed: Feed;
+}
+
+export function findFeed(config: Configuration, feedId: string): FeedRef {
+  for (let s = 0; s < config.systems.length; s++) {
+    const system = config.systems[s];
+    const f = system.feeds.findIndex((x) => x.id === feedId);
+    if (f >= 0) return { systemIndex: s, feedIndex: f, system, feed: system.feeds[f] };
+  }
+  throw new InputError(`no feed with id '${feedId}'`);
+}
+
 export function replaceSystem(config: Configuration, index: number, system: LightSystem): Configuration {
   return { ...config, systems: config.systems.map((s, i) => (i === index ? system : s)) };
 }
@@ -73,6 +89,6 @@ export function updateModule(config: Configuration, moduleId: string, patch: Par
 }
 
 /** A fresh id with the given one-letter prefix and the configuration with its counter advanced. */
-export function takeId(config: Configuration, prefix: 's' | 'r' | 'm' | 'o' | 'i'): [string, Configuration] {
+export function takeId(config: Configuration, prefix: 's' | 'r' | 'm' | 'o' | 'i' | 'f'): [string, Configuration] {
   return [`${prefix}${config.nextId}`, { ...config, nextId: config.nextId + 1 }];
 }

@@ -96,9 +96,12 @@ export const removeRail: ActionDefinition<z.infer<typeof railIdParams>> = {
   perform(state, p) {
     const { systemIndex: si, system, railIndex } = findRail(state, p.railId);
     if (railIndex !== system.rails.length - 1) throw new InputError('only the last rail of a chain can be removed');
-    return replaceSystem(state, si, { ...system, rails: system.rails.slice(0, -1), joints: system.joints.slice(0, railIndex - 1) });
+    // The connector before the removed rail becomes the chain end: a feed there stays where it is, now at 'end'.
+    const feeds = system.feeds.map((f) => (typeof f.at === 'object' && f.at.joint === railIndex - 1 ? { ...f, at: 'end' as const } : f));
+    return replaceSystem(state, si, { ...system, rails: system.rails.slice(0, -1), joints: system.joints.slice(0, railIndex - 1), feeds });
   },
   explain(problem) {
+    if (problem.code === 'feed-duplicate') return 'a feed at the last connector and one at the chain end would meet; remove one of them first';
     return problem.code === 'no-rails' ? 'a system keeps at least one rail; delete the system instead' : problem.message;
   },
 };

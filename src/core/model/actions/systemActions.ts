@@ -7,7 +7,7 @@ import { z } from 'zod';
 import { InputError } from '../../inputError';
 import type { ActionDefinition } from '../action';
 import type { Catalog, PresetSpec } from '../catalogSchema';
-import type { Configuration } from '../configuration';
+import { MOUNTINGS, type Configuration } from '../configuration';
 import { normaliseDegrees, rotatePlan, systemBounds } from '../geometry';
 import { defaultSuspension, findPresetPlacement, instantiatePreset, type Placement } from '../presets';
 import { replaceSystem, systemIndex, updateSystem } from './lookup';
@@ -105,5 +105,21 @@ export const setSuspension: ActionDefinition<z.infer<typeof suspensionParams>> =
   params: suspensionParams,
   perform(state, p) {
     return updateSystem(state, p.systemId, { suspension: p.suspension });
+  },
+};
+
+const mountingParams = z.object({ systemId: z.string(), mounting: z.enum(MOUNTINGS) });
+
+/**
+ * Hangs a system on suspensions or clips it to the ceiling surface (docs/model.md, "Mounting").
+ * Its suspension length is kept for switching back; head room is checked at the height the
+ * modules really have (validate()).
+ */
+export const setMounting: ActionDefinition<z.infer<typeof mountingParams>> = {
+  name: 'setMounting',
+  label: 'Mounting',
+  params: mountingParams,
+  perform(state, p) {
+    return updateSystem(state, p.systemId, { mounting: p.mounting });
   },
 };

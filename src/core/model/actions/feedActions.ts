@@ -1,0 +1,96 @@
+/**
+ * Power feeds of a system (docs/model.md, "Power feeds"): add one at a position the catalog
+ * allows, move it, remove it (never the last: validate()'s `no-feed`), choose its driver.
+ * Whether every feed's load fits its driver is validate()'s rule (`feed-overload`), checked on
+ * the result where the action is bound, so a move that would overload a driver is refused too.
+ */
+import { z } from 'zod';
+import type { ActionDefinition } from '../action';
+import { findDriver } from '../catalogSchema';
+import type { FeedAt } from '../configuration';
+import { describeFeedAt, feedLabel, feedLoads, formatWatts } from '../feedLoads';
+import type { Problem } from '../validate';
+import { findFeed, replaceSystem, systemIndex, takeId } from './lookup';
+
+/** 'start', 'end' or { joint: k } (connector k, between rails k and k+1). */
+export const feedAtParams = z.union([z.literal('start'), z.literal('end'), z.strictObject({ joint: z.number().int().nonnegative() })]);
+
+function positionReason(problem: Problem, at: FeedAt): string {
+  if (problem.code === 'feed-duplicate') return `there is already a feed at ${describeFeedAt(at)}`;
+  return problem.message;
+}
+
+const addParams = z.object({
+  systemId: z.string(),
+  at: feedAtParams,
+  /** Catalog driver id; default: the catalog's defaultDriver. */
+  driver: z.string().optional(),
+});
+
+/** A second (third, …) feed: the modules nearer to it than to the other feeds move to it. */
+export const addFeed: ActionDefinition<z.infer<typeof addParams>> = {
+  name: 'addFeed',
+  label: 'Add feed',
+  params: addParams,
+  perform(state, p, catalog) {
+    const si = systemIndex(state, p.systemId);
+    const [id, next] = takeId(state, 'f');
+    const s = next.systems[si];
+    return replaceSystem(next, si, { ...s, feeds: [...s.feeds, { id, at: p.at, driver: p.driver ?? catalog.feed.defaultDriver }] });
+  },
+  explain(problem, _state, p) {
+    return positionReason(problem, p.at);
+  },
+};
+
+const moveParams = z.object({ feedId: z.string(), at: feedAtParams });
+
+export const moveFeed: ActionDefinition<z.infer<typeof moveParams>> = {
+  name: 'moveFeed',
+  label: 'Move feed',
+  params: moveParams,
+  perform(state, p) {
+    const ref = findFeed(state, p.feedId);
+    return replaceSystem(state, ref.systemIndex, { ...ref.system, feeds: ref.system.feeds.map((f, i) => (i === ref.feedIndex ? { ...f, at: p.at } : f)) });
+  },
+  explain(problem, _state, p) {
+    return positionReason(problem, p.at);
+  },
+};
+
+const feedIdParams = z.object({ feedId: z.string() });
+
+/** Removes a feed; its modules go to the nearest remaining feed. */
+export const removeFeed: ActionDefinition<z.infer<typeof feedIdParams>> = {
+  name: 'removeFeed',
+  label: 'Remove feed',
+  params: feedIdParams,
+  perform(state, p) {
+    const ref = findFeed(state, p.feedId);
+    return replaceSystem(state, ref.systemIndex, { ...ref.system, feeds: ref.system.feeds.filter((_, i) => i !== ref.feedIndex) });
+  },
+  explain(problem) {
+    return problem.code === 'no-feed' ? 'a system keeps at least one power feed' : problem.message;
+  },
+};
+
+const driverParams = z.object({ feedId: z.string(), driver: z.string() });
+
+/** Chooses a feed's driver; refused when the feed's load would not fit it. */
+export const setFeedDriver: ActionDefinition<z.infer<typeof driverParams>> = {
+  name: 'setFeedDriver',
+  label: 'Driver',
+  params: driverParams,
+  perform(state, p, catalog) {
+    const ref = findFeed(state, p.feedId);
+    const driver = findDriver(catalog, p.driver);
+    return replaceSystem(state, ref.systemIndex, { ...ref.system, feeds: ref.system.feeds.map((f, i) => (i === ref.feedIndex ? { ...f, driver: driver.id } : f)) });
+  },
+  explain(problem, state, p, catalog) {
+    if (problem.code !== 'feed-overload') return problem.message;
+    const ref = findFeed(state, p.feedId);
+    const load = feedLoads(ref.system, catalog)[ref.feedIndex].load;
+    const driver = findDriver(catalog, p.driver);
+    return `the ${formatWatts(driver.capacity)} W ${driver.name} cannot carry the ${formatWatts(load)} W on ${feedLabel(ref.feedIndex)}; choose a larger driver or add a feed`;
+  },
+};

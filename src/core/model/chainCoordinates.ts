@@ -1,0 +1,79 @@
+/**
+ * Distances along a system's chain (docs/model.md, "Power feeds" and "Suspension points"):
+ * the one coordinate the feed assignment and the suspension derivation share. s = 0 at the
+ * start of the first rail; each rail adds its length and each connector the length of the
+ * rail profile it bridges: a straight connector its gap (`arm`), a corner connector both
+ * arms (rail end → corner point → next rail start). A connector's own point (where its feed
+ * or suspension sits) is the middle of that bridge: the gap's centre, or the corner point.
+ */
+import { findConnector, type Catalog } from './catalogSchema';
+import type { FeedAt, LightSystem } from './configuration';
+import { railPlacements, type PlanVec } from './geometry';
+
+export interface ChainCoordinates {
+  /** s of each rail's start. */
+  readonly railStart: readonly number[];
+  /** s of each connector's point (joints[k]). */
+  readonly jointAt: readonly number[];
+  /** s of the end of the last rail. */
+  readonly length: number;
+}
+
+/** Length of profile a connector bridges between two rail ends: the straight gap, or both corner arms. */
+export function connectorSpan(catalog: Catalog, connector: string, turn: number): number {
+  const arm = findConnector(catalog, connector).arm;
+  return turn === 0 ? arm : 2 * arm;
+}
+
+export function chainCoordinates(system: LightSystem, catalog: Catalog): ChainCoordinates {
+  const railStart: number[] = [];
+  const jointAt: number[] = [];
+  let s = 0;
+  system.rails.forEach((rail, i) => {
+    railStart.push(s);
+    s += rail.length;
+    const joint = system.joints[i];
+    if (joint && i < system.rails.length - 1) {
+      const span = connectorSpan(catalog, joint.connector, joint.turn);
+      jointAt.push(s + span / 2);
+      s += span;
+    }
+  });
+  const last = system.rails.length - 1;
+  return { railStart, jointAt, length: last >= 0 ? railStart[last] + system.rails[last].length : 0 };
+}
+
+/** s of a feed position; NaN for a joint the chain does not have. */
+export function feedCoordinate(at: FeedAt, chain: ChainCoordinates): number {
+  if (at === 'start') return 0;
+  if (at === 'end') return chain.length;
+  return chain.jointAt[at.joint] ?? NaN;
+}
+
+/**
+ * The plan point at chain coordinate s: on a rail, its start plus s along it; on a connector,
+ * the gap's centre (straight) or the corner point. s outside the chain clamps to its ends.
+ */
+export function chainPoint(system: LightSystem, catalog: Catalog, s: number): PlanVec {
+  const chain = chainCoordinates(system, catalog);
+  const rails = railPlacements(system, catalog);
+  for (let i = 0; i < rails.length; i++) {
+    const r = rails[i];
+    const u = s - chain.railStart[i];
+    if (u <= r.length || i === rails.length - 1) {
+      const t = Math.max(0, Math.min(r.length, u));
+      return [r.start[0] + r.direction[0] * t, r.start[1] + r.direction[1] * t];
+    }
+    const next = rails[i + 1];
+    if (s < chain.railStart[i + 1]) {
+      // On the connector: its straight gap, or the two arms through the corner point.
+      const joint = system.joints[i];
+      const arm = findConnector(catalog, joint.connector).arm;
+      const along = u - r.length;
+      if (joint.turn === 0 || along <= arm) return [r.end[0] + r.direction[0] * along, r.end[1] + r.direction[1] * along];
+      const pivot: PlanVec = [r.end[0] + r.direction[0] * arm, r.end[1] + r.direction[1] * arm];
+      return [pivot[0] + next.direction[0] * (along - arm), pivot[1] + next.direction[1] * (along - arm)];
+    }
+  }
+  return [system.x, system.z];
+}

@@ -1,0 +1,162 @@
+/**
+ * Power feeds and their loads (docs/model.md, "Power feeds"). Every module's input power
+ * (the beam's `watts`, at full output: dimming is a setting, not a limit the driver may
+ * rely on) goes to the feed nearest to the module's centre along the chain
+ * (chainCoordinates.ts); a tie goes to the feed nearer the chain start. A feed is
+ * overloaded when its load exceeds its driver's rated output power.
+ */
+import { findBeam, findModuleType, type Catalog, type DriverSpec } from './catalogSchema';
+import type { Configuration, Feed, FeedAt, LightSystem } from './configuration';
+import { chainCoordinates, feedCoordinate, type ChainCoordinates } from './chainCoordinates';
+import { railModuleOffsets } from './geometry';
+
+/** Load sums are compared with a milliwatt of slack so 0.1 + 0.2 style float noise never refuses a fitting driver. */
+export const LOAD_EPS = 1e-6;
+
+export interface FeedLoad {
+  readonly feed: Feed;
+  /** Position in the system's feeds list (label "Feed index+1"). */
+  readonly index: number;
+  /** Chain coordinate of the feed, metres. */
+  readonly s: number;
+  readonly driver: DriverSpec;
+  /** Sum of the assigned modules' watts. */
+  readonly load: number;
+  readonly capacity: number;
+  readonly moduleIds: readonly string[];
+}
+
+/** "Feed 2": what the plan, the options panel and the refusals call a feed. */
+export function feedLabel(index: number): string {
+  return `Feed ${index + 1}`;
+}
+
+/** Watts for people: at most two decimals, no trailing zeros (96, 100.8, 137.56). */
+export function formatWatts(w: number): string {
+  return String(Math.round(w * 100) / 100);
+}
+
+/** A module's chain coordinate (centre) and watts, for the modules whose rails' layouts fit. */
+function moduleLoads(system: LightSystem, catalog: Catalog, chain: ChainCoordinates): { id: string; s: number; watts: number }[] {
+  const out: { id: string; s: number; watts: number }[] = [];
+  system.rails.forEach((rail, i) => {
+    const offsets = railModuleOffsets(rail, catalog);
+    if (!offsets) return;
+    rail.modules.forEach((m, k) => {
+      const type = findModuleType(catalog, m.type);
+      out.push({ id: m.id, s: chain.railStart[i] + offsets[k] + type.length / 2, watts: findBeam(type, m.beam).watts });
+    });
+  });
+  return out;
+}
+
+/** Index (into `coords`) of the nearest feed to s; ties to the one nearer the chain start. */
+export function nearestFeed(coords: readonly number[], s: number): number {
+  let best = 0;
+  for (let j = 1; j < coords.length; j++) {
+    const d = Math.abs(coords[j] - s);
+    const b = Math.abs(coords[best] - s);
+    if (d < b - 1e-12 || (Math.abs(d - b) <= 1e-12 && coords[j] < coords[best])) best = j;
+  }
+  return best;
+}
+
+/**
+ * Each feed's load and capacity. The system's references must be sound (known drivers,
+ * module types and beams, existing joints): validate() checks those first.
+ */
+export function feedLoads(system: LightSystem, catalog: Catalog): FeedLoad[] {
+  const chain = chainCoordinates(system, catalog);
+  const coords = system.feeds.map((f) => feedCoordinate(f.at, chain));
+  const loads = system.feeds.map(() => 0);
+  const ids: string[][] = system.feeds.map(() => []);
+  if (system.feeds.length > 0) {
+    for (const m of moduleLoads(system, catalog, chain)) {
+      const j = nearestFeed(coords, m.s);
+      loads[j] += m.watts;
+      ids[j].push(m.id);
+    }
+  }
+  return system.feeds.map((feed, index) => {
+    const driver = catalog.drivers.find((d) => d.id === feed.driver);
+    if (!driver) throw new Error(`feedLoads: unknown driver '${feed.driver}' (validate() reports it first)`);
+    return { feed, index, s: coords[index], driver, load: Math.round(loads[index] * 1e6) / 1e6, capacity: driver.capacity, moduleIds: ids[index] };
+  });
+}
+
+export function isOverloaded(l: FeedLoad): boolean {
+  return l.load > l.capacity + LOAD_EPS;
+}
+
+/** Same position along the chain. */
+export function sameFeedAt(a: FeedAt, b: FeedAt): boolean {
+  return typeof a === 'string' || typeof b === 'string' ? a === b : a.joint === b.joint;
+}
+
+/** 'the chain start', 'the chain end', 'connector 2' (joints[1]). */
+export function describeFeedAt(at: FeedAt): string {
+  return at === 'start' ? 'the chain start' : at === 'end' ? 'the chain end' : `connector ${at.joint + 1}`;
+}
+
+/** The feed positions the catalog allows on a system, in chain order. */
+export function allowedFeedPositions(system: LightSystem, catalog: Catalog): FeedAt[] {
+  const joints = catalog.feed.positions.includes('joints') ? system.joints.map((_, k) => ({ joint: k })) : [];
+  return ['start', ...joints, 'end'];
+}
+
+/** The drivers by rated power, smallest first (ties by id): the order a driver is picked for a load. */
+export function driversBySize(catalog: Catalog): DriverSpec[] {
+  return [...catalog.drivers].sort((a, b) => a.capacity - b.capacity || a.id.localeCompare(b.id));
+}
+
+/** The driver for a load: the catalog default when it carries it, else the smallest that does; null if none. */
+export function driverFor(load: number, catalog: Catalog): DriverSpec | null {
+  const preferred = catalog.drivers.find((d) => d.id === catalog.feed.defaultDriver);
+  if (preferred && load <= preferred.capacity + LOAD_EPS) return preferred;
+  return driversBySize(catalog).find((d) => load <= d.capacity + LOAD_EPS) ?? null;
+}
+
+/**
+ * Feeds for a system that has none yet (a placed preset, a scene file from before feeds):
+ * one feed at the chain start with the catalog's default driver when that carries the
+ * whole load; otherwise the smallest driver that does; otherwise n = 2, 3, … feeds spread
+ * over the allowed positions (position indices round(i·(P−1)/(n−1)): start and end first,
+ * then connectors between), each with the default driver or the smallest that carries its
+ * share. When even one feed at every position is not enough, one default feed: validate()
+ * then names the overload.
+ */
+export function plannedFeeds(system: LightSystem, catalog: Catalog): { at: FeedAt; driver: string }[] {
+  const positions = allowedFeedPositions(system, catalog);
+  for (let n = 1; n <= positions.length; n++) {
+    const chosen = n === 1 ? [positions[0]] : [...new Set(Array.from({ length: n }, (_, i) => Math.round((i * (positions.length - 1)) / (n - 1))))].map((k) => positions[k]);
+    const probe: LightSystem = { ...system, feeds: chosen.map((at, i) => ({ id: `probe${i}`, at, driver: catalog.feed.defaultDriver })) };
+    const drivers = feedLoads(probe, catalog).map((l) => driverFor(l.load, catalog));
+    if (drivers.every((d) => d !== null)) return chosen.map((at, i) => ({ at, driver: drivers[i]!.id }));
+  }
+  return [{ at: 'start', driver: catalog.feed.defaultDriver }];
+}
+
+/**
+ * The refusal sentence for a `feed-overload` problem of an action's result, in the shopper's
+ * terms: "the 100.8 W driver is full: 96 W used; add a second feed or choose a larger driver"
+ * (the feed's load before the action), or, when the feed was not there or already over before,
+ * what it would carry. bindDefinition hands it to every action's explain as the problem's message.
+ */
+export function overloadReason(before: Configuration, after: Configuration, problem: { path: string; message: string }, catalog: Catalog): string {
+  const m = /^systems\[(\d+)\]\.feeds\[(\d+)\]$/.exec(problem.path);
+  const system = m ? after.systems[Number(m[1])] : undefined;
+  const feed = system?.feeds[Number(m?.[2])];
+  if (!system || !feed) return problem.message;
+  const advice = 'add a second feed or choose a larger driver';
+  const now = feedLoads(system, catalog)[Number(m?.[2])];
+  const old = before.systems.find((s) => s.id === system.id);
+  const oldIndex = old?.feeds.findIndex((f) => f.id === feed.id && f.driver === feed.driver) ?? -1;
+  let was: FeedLoad | undefined;
+  try {
+    was = old && oldIndex >= 0 ? feedLoads(old, catalog)[oldIndex] : undefined;
+  } catch {
+    was = undefined; // the state before was not sound (a test's raw edit): say what the result would carry
+  }
+  if (was && !isOverloaded(was) && was.load < now.load) return `the ${formatWatts(now.capacity)} W driver is full: ${formatWatts(was.load)} W used; ${advice}`;
+  return `${feedLabel(now.index)} would carry ${formatWatts(now.load)} W, more than its ${formatWatts(now.capacity)} W driver; ${advice}`;
+}
