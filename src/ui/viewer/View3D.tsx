@@ -125,6 +125,7 @@ export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
           if (!status.current.lit && litRef.current) {
             patch.lit = true;
             patch.firstLitMs = performance.now() - mountedAt.current;
+            patch.firstLitFrame = frames;
           }
           publish(patch);
         },

@@ -22,6 +22,11 @@ export interface ViewerStatus {
   frames: number;
   /** Milliseconds from mounting the view to the first lit frame (null until then). */
   firstLitMs: number | null;
+  /**
+   * Which frame since mounting was the first lit one (null until then): 1 when the view opened on
+   * light the service had already baked (nothing was waited for).
+   */
+  firstLitFrame: number | null;
   /** Milliseconds of the last relight (weighted sum + texture upload). */
   lastRelightMs: number | null;
   /** WebGL contexts lost and recovered. */
@@ -58,7 +63,7 @@ export const IDLE_BAKE: BakeStatus = { running: false, paused: false, done: fals
 
 export const CLOSED_STATUS: ViewerStatus = {
   open: false, lit: false, done: false, progress: 0, groupBakes: 0, relightsOnly: 0, frames: 0,
-  firstLitMs: null, lastRelightMs: null, contextLosses: 0, error: null, floor: null, live: null, objects: null, bake: IDLE_BAKE,
+  firstLitMs: null, firstLitFrame: null, lastRelightMs: null, contextLosses: 0, error: null, floor: null, live: null, objects: null, bake: IDLE_BAKE,
 };
 
 export function setViewerStatus(owner: object, status: ViewerStatus): void {
