@@ -10,7 +10,7 @@ import { reflectanceRgb, type BakeScene } from '../../../src/engines/bake/bakeSc
 import { createBaker } from '../../../src/engines/bake/createBaker';
 import { texelArea } from '../../../src/engines/bake/surfaceLayout';
 import { createRelightEngine } from '../../../src/engines/relight/createRelightEngine';
-import { isotropic, spot, uniformRoom } from '../bake/bakeTestKit';
+import { isotropic, spot } from '../bake/bakeTestKit';
 import { withHeadlessGL } from '../bake/withHeadlessGL';
 import { compareWithBake, reflectedDirectFlux, shownIndirect } from './relightTestKit';
 
