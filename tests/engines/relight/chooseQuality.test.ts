@@ -12,7 +12,7 @@ import {
 } from '../../../src/engines/relight/calibrateBakeSpeed';
 import { QUALITY_LEVEL_NAMES, QUALITY_LEVELS } from '../../../src/engines/relight/qualityLevels';
 
-const device = (msPerTexelSample: number, msPerTexelSource: number, compileMs = 0): BakeCalibration => ({ msPerTexelSample, msPerTexelSource, compileMs, renderer: 'test', work: { texels: 19200, pointSources: 1, samples: 32, bounces: 1 } });
+const device = (msPerTexelSample: number, msPerTexelSource: number, directCompileMs = 0): BakeCalibration => ({ msPerTexelSample, msPerTexelSource, directCompileMs, compileMs: 300, renderer: 'test', work: { texels: 19200, pointSources: 1, samples: 32, bounces: 1 } });
 const rank = (level: string) => QUALITY_LEVEL_NAMES.indexOf(level as never);
 
 describe('quality levels: predicted cost', () => {
@@ -23,12 +23,12 @@ describe('quality levels: predicted cost', () => {
     expect(levelTexels(TYPICAL_QUALITY_SCENE.room, 'balanced')).toBe(2 * 8000 + 2 * 5600 + 2 * 4480);
   });
 
-  it('predicts first lit = groups × texels × sources × cost + compile, solve = solves × texels × samples × bounces × cost', () => {
+  it('predicts first lit = groups × (direct compile + texels × sources × cost), solve = solves × texels × samples × bounces × cost', () => {
     const cal = device(1e-4, 2e-5, 50);
     const scene = { room: { width: 4, height: 2.5, depth: 3 }, groups: 3, pointSourcesPerGroup: 5, indirectSolves: 2 };
     for (const p of predictQuality(cal, scene)) {
       const s = resolveBakeSettings(QUALITY_LEVELS[p.level]);
-      expect(p.firstLitMs).toBeCloseTo(50 + 3 * p.texels * 5 * 2e-5, 9);
+      expect(p.firstLitMs).toBeCloseTo(3 * (50 + p.texels * 5 * 2e-5), 9);
       expect(p.solveMs).toBeCloseTo(2 * p.texels * s.samples * s.bounces * 1e-4, 9);
     }
   });
