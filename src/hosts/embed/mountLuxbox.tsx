@@ -4,6 +4,7 @@ import { Globals } from '@react-spring/web';
 import { InputError } from '../../core/inputError';
 import { isActionName } from '../../core/model/actionDefinitions';
 import { billOfMaterials } from '../../core/model/billOfMaterials';
+import { installationNeeds } from '../../core/model/installationNeeds';
 import { configurationFromData, deserializeConfiguration, encodeShareLink, serializeConfiguration } from '../../core/model/sceneFile';
 import { toLightingScene } from '../../core/model/toLightingScene';
 import { createConfiguratorStore } from '../../core/store/createConfiguratorStore';
@@ -135,6 +136,10 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
     getBillOfMaterials() {
       alive();
       return billOfMaterials(store.getState().config, catalog);
+    },
+    getInstallationNeeds() {
+      alive();
+      return installationNeeds(store.getState().config, catalog);
     },
     listActions(paramsByName) {
       alive();

@@ -1,5 +1,6 @@
 import type { ActionName } from '../../core/model/actionDefinitions';
 import type { BillOfMaterials } from '../../core/model/billOfMaterials';
+import type { InstallationNeeds } from '../../core/model/installationNeeds';
 import type { ViewerStatus } from '../../ui/viewer/viewerStatus';
 import type { QualityLevel } from '../../engines/relight/qualityLevels';
 
@@ -49,6 +50,8 @@ export interface LuxboxInstance {
   /** Calls listener with the scene-file JSON after every change; returns the unsubscribe function. */
   subscribe(listener: (sceneFileJson: string) => void): () => void;
   getBillOfMaterials(): BillOfMaterials;
+  /** What the installer must know for the cart hand-off: feeds with load and capacity, ceiling fixings, total load (docs/model.md). */
+  getInstallationNeeds(): InstallationNeeds;
   /** Every action with its enabled state for the given parameters (per action name). */
   listActions(paramsByName?: Partial<Record<ActionName, unknown>>): LuxboxActionInfo[];
   /** Runs an action by name if the model allows it; never throws for bad names or parameters. */

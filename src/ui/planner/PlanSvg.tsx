@@ -2,6 +2,8 @@ import { memo, useId, useSyncExternalStore } from 'react';
 import type { Catalog } from '../../core/model/catalogSchema';
 import type { Configuration, LightSystem } from '../../core/model/configuration';
 import { modulePlacements, rectCorners, systemElements, type PlanRect } from '../../core/model/geometry';
+import { chainCoordinates, chainPoint, feedCoordinate } from '../../core/model/chainCoordinates';
+import { moduleHeight, suspensionPoints } from '../../core/model/suspensionPoints';
 import { moduleFootprint, modulePhotometryPath } from './moduleFootprint';
 import type { FootprintSource } from './footprintSource';
 import { cctTint } from './cctTint';
@@ -73,6 +75,36 @@ function SystemShape({ system, catalog, scale, selected, selectedRailId, selecte
             strokeWidth={m.moduleId === selectedModuleId ? 3 : 1}
             vectorEffect="non-scaling-stroke"
           />
+        );
+      })}
+      <FixingsAndFeeds system={system} catalog={catalog} scale={scale} />
+    </g>
+  );
+}
+
+/**
+ * The derived ceiling fixings (suspension points, or surface clips as hollow dots) as small dots
+ * 3 px in radius, and each power feed as a 5 px square marked with its number, on the rail line.
+ */
+function FixingsAndFeeds({ system, catalog, scale }: { system: LightSystem; catalog: Catalog; scale: number }) {
+  const r = 3 / scale;
+  const surface = system.mounting === 'surface';
+  const chain = chainCoordinates(system, catalog);
+  return (
+    <g pointerEvents="none">
+      {suspensionPoints(system, catalog).map((p, i) => (
+        <circle key={`fix-${i}`} cx={p.plan[0]} cy={p.plan[1]} r={r} fill={surface ? '#ffffff' : '#1d2330'} stroke="#1d2330" strokeWidth={1} vectorEffect="non-scaling-stroke" data-fixing={surface ? 'clip' : 'suspension'} />
+      ))}
+      {system.feeds.map((f, i) => {
+        const [x, z] = chainPoint(system, catalog, feedCoordinate(f.at, chain));
+        const h = 5 / scale;
+        return (
+          <g key={f.id} data-feed-id={f.id}>
+            <rect x={x - h} y={z - h} width={2 * h} height={2 * h} fill="#f2c200" stroke="#1d2330" strokeWidth={1} vectorEffect="non-scaling-stroke" />
+            <text x={x} y={z + h * 0.55} fontSize={h * 1.5} textAnchor="middle" fill="#1d2330">
+              {i + 1}
+            </text>
+          </g>
         );
       })}
     </g>
@@ -163,7 +195,8 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
         <g clipPath={`url(#${clipId})`} pointerEvents="none">
           {config.systems.map((s) => {
             const d = systemDrag?.systemId === s.id ? systemDrag.delta : { x: 0, z: 0 };
-            const h = height - s.suspension;
+            // Where the modules really are: the suspension, or the surface mount's drop below the ceiling.
+            const h = moduleHeight(s, { height }, catalog);
             return (
               <g key={s.id} transform={`translate(${d.x} ${d.z})`}>
                 {modulePlacements(s, catalog).map((m) => {

@@ -1,6 +1,7 @@
 import { useCallback, useEffect, useLayoutEffect, useMemo, useRef, useState, useSyncExternalStore, type DragEvent } from 'react';
 import { useStore } from 'zustand';
 import { billOfMaterials } from '../../core/model/billOfMaterials';
+import { installationNeeds } from '../../core/model/installationNeeds';
 import type { ConfiguratorStore, Selection } from '../../core/store/createConfiguratorStore';
 import type { UiStore } from '../../core/store/uiStore';
 import { BomPanel } from './BomPanel';
@@ -65,6 +66,7 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, shareNotice = n
   const path = selectionPath(config, selection);
   const select = useCallback((sel: Selection) => store.getState().select(sel), [store]);
   const bom = useMemo(() => billOfMaterials(config, catalog), [config, catalog]);
+  const needs = useMemo(() => installationNeeds(config, catalog), [config, catalog]);
 
   // Fit the room when the plan first gets its size and whenever the room's dimensions change.
   const roomKey = `${config.room.width}x${config.room.depth}`;
@@ -208,7 +210,7 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, shareNotice = n
             <ImportPanel onAdd={addImported} />
           </FurniturePanel>
           <SurfacesPanel room={config.room} finishes={defaultSurfaceFinishes} gate={gate} />
-          <BomPanel bom={bom} locale={locale} />
+          <BomPanel bom={bom} locale={locale} needs={needs} />
           <section className="panel-section">
             <div className="setup-actions">
               <button type="button" className="btn" onClick={() => explain(onShare())} data-testid="share">
