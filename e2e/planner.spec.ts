@@ -35,18 +35,16 @@ test('set up a room, place a preset, fill a rail, change a module, reload, undo'
   const plus = page.locator('[data-testid^="plus-"] button');
   await expect(plus).toHaveCount(1);
 
-  // Add modules until the plus button disables (1.5 m rail, 0.15 m spots: 10 fit).
-  for (let i = 0; i < 20 && (await plus.getAttribute('aria-disabled')) !== 'true'; i++) await plus.click();
+  // The preset's three 43 W spots (129 W) nearly fill its 153.6 W driver: the plus button is disabled and says why (issue 11).
   await expect(plus).toHaveAttribute('aria-disabled', 'true');
-  expect(await moduleCount(page)).toBe(10);
-  await expect(plus).toHaveAttribute('title', /no room for another Spot/);
+  await expect(plus).toHaveAttribute('title', /the 153\.6 W driver is full: 129 W used/);
   const priceFull = await total(page);
-  expect(priceFull).not.toBe(priceWithThree);
+  expect(priceFull).toBe(priceWithThree);
 
   // A disabled control does nothing but say why.
   await plus.click({ force: true });
-  await expect(page.getByRole('status')).toContainText('no room for another Spot');
-  expect(await moduleCount(page)).toBe(10);
+  await expect(page.getByRole('status')).toContainText('driver is full');
+  expect(await moduleCount(page)).toBe(3);
 
   // Open a module's settings: switching to the 0.6 m linear diffuser is disabled on a full rail.
   const firstModule = (await sceneFile(page)).configuration.systems[0].rails[0].modules[0];
