@@ -5,7 +5,7 @@ import { createBaker } from '../../../src/engines/bake/createBaker';
 import type { Rgb } from '../../../src/core/model/lightingScene';
 import { createRelightEngine } from '../../../src/engines/relight/createRelightEngine';
 import { groupLuminaires, groupWeight } from '../../../src/engines/relight/luminaireGroups';
-import { loadIes, uniformRoom } from '../bake/bakeTestKit';
+import { loadIes, spot as spotPhotometry, uniformRoom } from '../bake/bakeTestKit';
 import { boxMesh } from '../bake/objects/objectFixtures';
 import type { BakeObject } from '../../../src/engines/bake/bakeScene';
 import { compareWithBake } from './relightTestKit';
@@ -17,7 +17,9 @@ const SETTINGS = { texelSize: 0.1, maxTextureSize: 64, samples: 16, bounces: 2, 
 const spot = loadIes('bega_84693_narrow_spot.ies');
 const down = loadIes('bega_50975_downlight_lm1995_crlf.ies');
 const room = uniformRoom(3, 2.6, 3.4, 0.5);
-const OBJECT_SETTINGS = { texelSize: 0.2, bounces: 1, samples: 8, texelSupersampling: 2 };
+const OBJECT_SETTINGS = { texelSize: 0.15, bounces: 1 };
+const synthSpot = spotPhotometry(800, 30, 10, 2);
+const synthWide = spotPhotometry(600, 60, 15, 2);
 const table: BakeObject = { id: 'table', mesh: boxMesh(0.8, 0.7, 0.6, 0.6), position: [1.6, 0, 1.8], yaw: 20, scale: 1 };
 const lum = (photometry = spot, x = 1, z = 1, dimming = 1, color: Rgb = [1, 1, 1]) => ({ photometry, position: [x, 2.4, z] as [number, number, number], yaw: 30, pitch: 0, roll: 0, dimming, color });
 
@@ -59,8 +61,11 @@ describe('relighting = weighted direct bases + one shared indirect solve', () =>
     ];
     const scene: BakeScene = {
       room,
-      // With objects two narrow spots: each reaches few surfaces, so few object-aware direct shaders compile (slow on software GL).
-      luminaires: [lum(spot, 1, 1, ...weights[0]), lum(objects ? spot : down, 2.1, 2.5, ...weights[1])],
+      // With objects, synthetic point-source spots: a real file's luminous opening splits into
+      // many point sources, each traced against the objects per sub-sample (slow on software GL).
+      luminaires: objects
+        ? [lum(synthSpot, 1, 1, ...weights[0]), lum(synthWide, 2.1, 2.5, ...weights[1])]
+        : [lum(spot, 1, 1, ...weights[0]), lum(down, 2.1, 2.5, ...weights[1])],
       ...(objects ? { objects: [table] } : {}),
     };
     engine.setScene(scene);
