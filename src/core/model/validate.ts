@@ -6,7 +6,7 @@
  */
 import { onGrid, type Catalog } from './catalogSchema';
 import { MOUNTINGS, ROOM_LIMITS, withinRoomLimits, type Configuration, type LightSystem } from './configuration';
-import { describeFeedAt, feedLabel, feedLoads, formatWatts, isOverloaded, sameFeedAt } from './feedLoads';
+import { describeFeedAt, feedLabel, feedLoads, formatWatts, isOverloaded } from './feedLoads';
 import { photometricDrop } from './suspensionPoints';
 import { SURFACE_NAMES } from './lightingScene';
 import { firstPatchOverlap, formatPatchRange, patchRangeProblem } from './dmxPatch';
@@ -341,6 +341,8 @@ function ownProblems(s: LightSystem, at: string, roomHeight: number, catalog: Ca
 /** A system's feeds: at least one, known drivers, positions the catalog allows on this chain, no two at one spot. */
 function feedProblems(s: LightSystem, catalog: Catalog, p: (code: string, path: string, message: string) => void): void {
   if (s.feeds.length === 0) p('no-feed', '.feeds', `system ${s.id} has no power feed`);
+  // First feed at each position, keyed 'start' / 'end' / 'joint:k': one pass, even for a hostile file's thousands of feeds.
+  const first = new Map<string, number>();
   s.feeds.forEach((f, k) => {
     const fp = `.feeds[${k}]`;
     if (!catalog.drivers.some((d) => d.id === f.driver)) p('unknown-driver', `${fp}.driver`, `unknown driver '${f.driver}'`);
@@ -349,8 +351,10 @@ function feedProblems(s: LightSystem, catalog: Catalog, p: (code: string, path: 
       if (!catalog.feed.positions.includes('joints')) p('feed-position', `${fp}.at`, `${catalog.name} feeds only at the chain ends, not at connectors`);
       else if (!Number.isInteger(at.joint) || at.joint < 0 || at.joint >= s.joints.length) p('feed-position', `${fp}.at`, `${feedLabel(k)} is at connector ${at.joint + 1}, but the chain has ${s.joints.length} connector${s.joints.length === 1 ? '' : 's'}`);
     } else if (at !== 'start' && at !== 'end') p('feed-position', `${fp}.at`, `a feed sits at 'start', 'end' or { joint: k } (got ${String(at)})`);
-    const twin = s.feeds.findIndex((g, j) => j < k && sameFeedAt(g.at, f.at));
-    if (twin >= 0) p('feed-duplicate', `${fp}.at`, `${feedLabel(twin)} and ${feedLabel(k)} both sit at ${describeFeedAt(f.at)}`);
+    const key = typeof at === 'object' ? `joint:${at.joint}` : String(at);
+    const twin = first.get(key);
+    if (twin === undefined) first.set(key, k);
+    else p('feed-duplicate', `${fp}.at`, `${feedLabel(twin)} and ${feedLabel(k)} both sit at ${describeFeedAt(f.at)}`);
   });
 }
 
