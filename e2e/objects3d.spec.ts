@@ -21,7 +21,7 @@ const status = (page: Page): Promise<Status> => page.evaluate(() => window.luxbo
 const config = async (page: Page) => JSON.parse(await page.evaluate(() => window.luxbox!.getConfig())).configuration;
 
 async function furnishedIn3D(page: Page): Promise<string> {
-  await page.goto('/');
+  await page.goto('/?quality=balanced'); // lux values at a fixed bake quality (docs/viewer.md, "Quality levels")
   await page.getByRole('button', { name: 'Start planning' }).click();
   // The table through the same always-valid action the furniture panel runs, at the room centre.
   const placed = await page.evaluate(() =>
@@ -90,7 +90,7 @@ for (const [name, viewport] of Object.entries(SIZES)) {
 
 test('the demo opens the furnished living room; the preset panel opens the dining room (undoable)', async ({ page }) => {
   await page.setViewportSize(SIZES.desktop);
-  await page.goto('/');
+  await page.goto('/?quality=balanced'); // lux values at a fixed bake quality (docs/viewer.md, "Quality levels")
   await page.getByRole('button', { name: 'Try the demo' }).click();
   await expect(page.getByTestId('plan')).toBeVisible();
   const living = await config(page);

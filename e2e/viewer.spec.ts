@@ -16,7 +16,7 @@ function meanLevel(png: Buffer): number {
 
 async function openCornerL(page: Page): Promise<void> {
   // Configure in 2D through the UI: default room, then the L-corner preset from the side panel.
-  await page.goto('/');
+  await page.goto('/?quality=balanced'); // lux values at a fixed bake quality (docs/viewer.md, "Quality levels")
   await page.getByRole('button', { name: 'Start planning' }).click();
   await page.getByTestId('preset-corner-l').click();
   await expect.poll(async () => JSON.parse(await page.evaluate(() => window.luxbox!.getConfig())).configuration.systems.length).toBe(1);

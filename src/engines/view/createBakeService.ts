@@ -72,11 +72,25 @@ export interface BakeServiceOptions {
   defer?: (callback: () => void, ms: number) => unknown;
   now?: () => number;
   /**
+   * Where user input is watched (default: the window; null: nowhere). Bake work waits until the
+   * input has been quiet for inputQuietMs: a slice cannot be interrupted once issued, and on a
+   * slow GPU one step (a group's direct light with objects) can take seconds.
+   */
+  input?: Pick<EventTarget, 'addEventListener' | 'removeEventListener'> | null;
+  /** Default INPUT_QUIET_MS. */
+  inputQuietMs?: number;
+  /**
    * Free the baker's GPU targets once the bake is done (they are only a cache for the next bake).
    * Default: navigator.deviceMemory ≤ 2 (GB).
    */
   lowMemory?: boolean;
 }
+
+/** Quiet time after the last pointer, key or wheel input before bake work starts again, ms. */
+export const INPUT_QUIET_MS = 800;
+
+/** Input that means the user is interacting (a hovering pointer does not count). */
+const INPUT_EVENTS = ['pointerdown', 'pointermove', 'keydown', 'wheel', 'touchstart'] as const;
 
 /** Engines that can free their pooled render targets between bakes. */
 type TrimmableEngine = RelightEngine & { releaseTargets?(): void };
@@ -97,6 +111,15 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
   let quality: QualityLevel = options.quality ?? 'balanced';
   const visibility = options.visibility !== undefined ? options.visibility : typeof document === 'undefined' ? null : document;
   const lowMemory = options.lowMemory ?? pageLowMemory();
+  const input = options.input !== undefined ? options.input : typeof window === 'undefined' ? null : window;
+  const quietMs = options.inputQuietMs ?? INPUT_QUIET_MS;
+  const clock = options.now ?? (() => performance.now());
+  let lastInput = -Infinity;
+  const onInput = (e: Event) => {
+    if (e.type === 'pointermove' && (e as PointerEvent).buttons === 0) return;
+    lastInput = clock();
+  };
+  const listen = { capture: true, passive: true };
   const listeners = new Set<(event: BakeEvent) => void>();
   const emit = (event: BakeEvent) => {
     for (const l of [...listeners]) l(event);
@@ -145,7 +168,9 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
     defer: options.defer,
     now: options.now,
     fence: makeFence ? () => (context.gl ? makeFence(context.gl) : null) : undefined,
+    holdMs: () => Math.max(0, lastInput + quietMs - clock()),
   });
+  if (input) for (const type of INPUT_EVENTS) input.addEventListener(type, onInput, listen);
 
   const onVisibility = () => {
     if (!visibility) return;
@@ -206,6 +231,7 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
       if (disposed) return;
       disposed = true;
       visibility?.removeEventListener('visibilitychange', onVisibility);
+      if (input) for (const type of INPUT_EVENTS) input.removeEventListener(type, onInput, listen);
       slicer.stop();
       listeners.clear();
       context.dispose();

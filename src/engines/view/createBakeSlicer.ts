@@ -34,7 +34,8 @@ export function glFence(gl: WebGL2RenderingContext): GpuFence | null {
  * factory at most one slice is in flight on the GPU: after each slice a fence goes in, and the next
  * slice starts only once it has signalled (polled every FENCE_POLL_MS); the cost per sample is the
  * time from the slice's start until then (JavaScript + GPU), so the slice size follows the GPU, not
- * only the JavaScript time. Paused, it runs nothing until resumed.
+ * only the JavaScript time. Paused, it runs nothing until resumed; held (holdMs: the user is
+ * interacting), it reports and waits.
  */
 export interface BakeSlicer {
   /** One slice now (a new scene), or right after the slice in flight; nothing while paused (it runs on resume). */
@@ -64,9 +65,15 @@ export interface BakeSlicerOptions {
   now?: () => number;
   /** A fence after the slice's GPU commands (glFence on the engine's context); absent or null: unfenced slices. */
   fence?: () => GpuFence | null;
+  /**
+   * Milliseconds to hold bake work back (0: go), asked before each slice: the user is
+   * interacting. A held slice still reports (onSlice with the current progress, so a relight
+   * shows at once) and tries again after that long.
+   */
+  holdMs?: () => number;
 }
 
-export function createBakeSlicer({ engine, onSlice, onError, defer = (f, ms) => setTimeout(f, ms), now = () => performance.now(), fence }: BakeSlicerOptions): BakeSlicer {
+export function createBakeSlicer({ engine, onSlice, onError, defer = (f, ms) => setTimeout(f, ms), now = () => performance.now(), fence, holdMs }: BakeSlicerOptions): BakeSlicer {
   let msPerSample = FIRST_MS_PER_SAMPLE;
   let queued = false;
   let stopped = false;
@@ -86,6 +93,13 @@ export function createBakeSlicer({ engine, onSlice, onError, defer = (f, ms) => 
     again = false;
     const e = engine();
     if (!e) return;
+    const hold = holdMs?.() ?? 0;
+    if (hold > 0 && !e.progress.done) {
+      onSlice(e, e.progress);
+      queued = true;
+      defer(slice, hold);
+      return;
+    }
     const start = now();
     const fenced = fence !== undefined;
     let r: ReturnType<typeof bakeSlice>;

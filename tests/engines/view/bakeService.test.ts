@@ -139,6 +139,22 @@ describe('fence-limited slices', () => {
     expect(d.stats().outstanding).toBe(0);
   });
 
+  it('held while the user interacts: reports at once (a relight shows), steps only once the hold is over', () => {
+    const q = manualQueue();
+    const d = gpuBound(16);
+    let hold = 500;
+    const reports: number[] = [];
+    const slicer = createBakeSlicer({ engine: () => d.engine, onSlice: (_e, p) => reports.push(p.fraction), onError: () => {}, defer: q.defer, now: () => d.clock.t, fence: d.fence, holdMs: () => hold });
+    slicer.run();
+    expect(reports).toEqual([0]);
+    expect(d.engine.progress.fraction).toBe(0);
+    slicer.queue(); // already waiting for the hold: no second timer
+    expect(q.size).toBe(1);
+    hold = 0;
+    q.drain();
+    expect(d.engine.progress.done).toBe(true);
+  });
+
   it('glFence on headless-gl signals after a flush and is deleted on dispose', () => {
     const gl = createHeadlessGL();
     try {
@@ -181,7 +197,7 @@ describe('createBakeService on a real engine (headless-gl)', () => {
   function service(page: ReturnType<typeof fakePage>, q: ReturnType<typeof manualQueue>) {
     const gl = createHeadlessGL();
     const canvas = () => ({ getContext: () => gl, addEventListener: () => {}, removeEventListener: () => {} });
-    const s = createBakeService({ quality: 'fast', visibility: page as unknown as VisibilitySource, canvas, defer: q.defer, lowMemory: false });
+    const s = createBakeService({ quality: 'fast', visibility: page as unknown as VisibilitySource, input: null, canvas, defer: q.defer, lowMemory: false });
     return { s, dispose: () => { s.dispose(); gl.destroy(); } };
   }
 
