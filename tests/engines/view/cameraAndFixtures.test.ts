@@ -5,6 +5,7 @@ import { createConfiguration } from '../../../src/core/model/configuration';
 import { toLightingScene } from '../../../src/core/model/toLightingScene';
 import { createConfiguratorStore } from '../../../src/core/store/createConfiguratorStore';
 import { cameraPreset, CAMERA_PRESETS, parseCameraSpec } from '../../../src/engines/view/cameraPresets';
+import { suspensionPoints } from '../../../src/core/model/suspensionPoints';
 import { fixturesFromConfiguration, MODULE_HEIGHT, RAIL_HEIGHT } from '../../../src/engines/view/fixtures';
 
 const room = { width: 5, height: 2.8, depth: 4 };
@@ -70,7 +71,26 @@ describe('fixtures', () => {
     const y = scene.luminaires[0].position[1];
     expect(f.rails).toHaveLength(config.systems[0].rails.length);
     for (const r of f.rails) expect(r.start[1]).toBeCloseTo(y + MODULE_HEIGHT + RAIL_HEIGHT / 2, 12);
-    expect(f.cables).toHaveLength(config.systems[0].rails.length + 1);
-    for (const c of f.cables) expect(c.top[1]).toBe(config.room.height);
+    // Cables at the fixing points the bill of materials counts (spacing and overhang rules), ceiling to rail top.
+    const points = suspensionPoints(config.systems[0], defaultCatalog);
+    expect(f.cables).toHaveLength(points.length);
+    f.cables.forEach((c, i) => {
+      expect(c.top).toEqual([points[i].plan[0], config.room.height, points[i].plan[1]]);
+      expect(c.bottom[1]).toBeCloseTo(y + MODULE_HEIGHT + RAIL_HEIGHT, 12);
+    });
+  });
+
+  it('a ceiling-surface system: modules at the mount drop, rails under the ceiling, no cables', () => {
+    const store = createConfiguratorStore({ catalog: defaultCatalog, initial: createConfiguration() });
+    expect(store.getState().dispatch('placePreset', { presetId: 'single' })).toEqual({ ok: true });
+    const systemId = store.getState().config.systems[0].id;
+    expect(store.getState().dispatch('setMounting', { systemId, mounting: 'surface' })).toEqual({ ok: true });
+    const config = store.getState().config;
+    const f = fixturesFromConfiguration(config, defaultCatalog);
+    const H = config.room.height;
+    expect(f.cables).toEqual([]);
+    for (const m of f.modules) expect(m.centre[1]).toBeCloseTo(H - defaultCatalog.surfaceMount.drop, 12);
+    for (const m of f.modules) expect(m.centre[1]).toBe(toLightingScene(config, defaultCatalog).luminaires[0].position[1]);
+    for (const r of f.rails) expect(r.start[1] + RAIL_HEIGHT / 2).toBeLessThanOrEqual(H + 1e-12);
   });
 });
