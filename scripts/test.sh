@@ -6,7 +6,8 @@ bash scripts/setup.sh
 echo "== lint";       npx eslint .
 echo "== typecheck";  npx tsc --noEmit
 echo "== unit + headless WebGL (vitest under xvfb)"
-xvfb-run -a npx vitest run
+# Issue 11's bar: 10 000 seeded random action sequences in the always-valid property test.
+ALWAYS_VALID_RUNS=10000 xvfb-run -a npx vitest run
 echo "== build";      npx vite build
 echo "== e2e (Playwright, Debian chromium)"
 npx playwright test
