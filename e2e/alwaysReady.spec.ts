@@ -114,10 +114,20 @@ test('a hidden tab does not bake; visible again, the bake resumes and finishes',
   expect(resumed).toMatchObject({ paused: false, running: false, groupBakes: still.groupBakes + 3 });
 });
 
-test('the quality control switches the level, rebakes, and the choice is kept for the next visit', async ({ page }) => {
+test('with no level chosen, a calibration picks one and is kept per renderer', async ({ page }) => {
   await page.goto('/');
   await page.getByRole('button', { name: 'Start planning' }).click();
   await page.getByTestId('preset-single').click();
+  await expect.poll(async () => (await status(page)).bake.groupBakes, BAKE).toBe(3);
+  const cached = JSON.parse((await page.evaluate(() => localStorage.getItem('luxbox.calibration')))!);
+  expect(cached.msPerTexelSample).toBeGreaterThan(0);
+  expect(typeof cached.renderer).toBe('string');
+  expect(['fast', 'balanced', 'best']).toContain((await status(page)).bake.quality);
+  expect(await page.evaluate(() => localStorage.getItem('luxbox.quality'))).toBeNull();
+});
+
+test('the quality control switches the level, rebakes, and the choice is kept for the next visit', async ({ page }) => {
+  await singleRail(page);
   await open3d(page);
   await expect(page.getByTestId('quality-balanced')).toHaveAttribute('aria-pressed', 'true');
   const before = await status(page);
@@ -130,10 +140,12 @@ test('the quality control switches the level, rebakes, and the choice is kept fo
   expect((await status(page)).bake.quality).toBe('fast');
   expect(await page.evaluate(() => localStorage.getItem('luxbox.quality'))).toBe('fast');
 
-  // The next visit starts at the stored level; a ?quality= pin wins over it.
-  await page.reload();
+  // The next visit (no pin) starts at the stored level, without a calibration; a ?quality= pin wins over it.
+  await page.goto('/');
   await expect(page.getByTestId('plan')).toBeVisible();
+  await expect.poll(async () => (await status(page)).bake.groupBakes, BAKE).toBeGreaterThan(0);
   expect((await status(page)).bake.quality).toBe('fast');
+  expect(await page.evaluate(() => localStorage.getItem('luxbox.calibration'))).toBeNull();
   await page.goto('/?quality=best');
   await expect(page.getByTestId('plan')).toBeVisible();
   expect((await status(page)).bake.quality).toBe('best');

@@ -19,4 +19,4 @@ const params = new URLSearchParams(location.search);
 const demo = import.meta.env.DEV || params.has('demo');
 // `?quality=fast|balanced|best` pins the 3D bake quality (tests pin 'balanced' where they read lux values).
 const quality = params.get('quality');
-window.luxbox = mountLuxbox(root, { storageKey: 'luxbox.autosave.v1', shareLinks: true, demo, ...(isQualityLevel(quality) ? { quality } : {}) });
+window.luxbox = mountLuxbox(root, { storageKey: 'luxbox.autosave.v1', shareLinks: true, rememberQuality: true, demo, ...(isQualityLevel(quality) ? { quality } : {}) });

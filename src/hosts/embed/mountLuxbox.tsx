@@ -99,7 +99,7 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
 
   const footprints = createFootprintSource(options.assetBase ?? import.meta.env.BASE_URL);
   // The 3D bake lives as long as this configurator (started in idle time once the plan shows).
-  const bakeHost = createBakeHost(store, footprints.loadPhotometry, { quality: quality ?? null });
+  const bakeHost = createBakeHost(store, footprints.loadPhotometry, { quality: quality ?? null, remember: options.rememberQuality === true });
   // The class scopes every luxbox style rule to this element and makes it the container whose
   // width the layout's breakpoints query (app.css); a class the host put there itself stays on destroy.
   const hadRootClass = element.classList.contains(ROOT_CLASS);

@@ -29,6 +29,12 @@ export interface LuxboxOptions {
    * (docs/viewer.md, "Quality levels"); the user can still switch in the 3D panel.
    */
   quality?: QualityLevel;
+  /**
+   * Keep the user's quality choice and this device's bake calibration in localStorage
+   * ('luxbox.quality', 'luxbox.calibration'); default false (an embedded configurator writes only
+   * under storageKey). The standalone app turns it on.
+   */
+  rememberQuality?: boolean;
 }
 
 export interface LuxboxActionInfo {

@@ -161,6 +161,9 @@ export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
       setPhotometryNotes(r.notes);
     };
     show(feed.latest());
+    // The level the service runs at (the device's calibration picks it when nobody chose one).
+    const level = feed.service.quality;
+    queueMicrotask(() => setQuality(level));
     const failed = feed.error();
     if (failed) queueMicrotask(() => setError(failed));
     const unsubscribe = feed.subscribe(() => {

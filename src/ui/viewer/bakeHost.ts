@@ -5,6 +5,7 @@ import type { BakeStatus } from '../../engines/view/createBakeService';
 import type { BakeFeed } from './startBakeFeed';
 import { initialQuality, storeQuality } from './qualityPreference';
 import { setBakeStatusSource } from './viewerStatus';
+import { webglSupportProblem } from './webglSupport';
 
 /**
  * The planner bundle's handle on the 3D bake (docs/viewer.md, "Always ready: the bake service"):
@@ -21,7 +22,7 @@ export interface BakeHost {
   /** The running feed, or null (not started or still loading). */
   current(): BakeFeed | null;
   readonly quality: QualityLevel;
-  /** The user's choice: kept in localStorage ('luxbox.quality') and applied to the running service. */
+  /** The user's choice: applied to the running service, and kept in localStorage ('luxbox.quality') when the host allows. */
   setQuality(level: QualityLevel): void;
   dispose(): void;
 }
@@ -29,6 +30,8 @@ export interface BakeHost {
 export interface BakeHostOptions {
   /** A quality pinned by the page (URL parameter, embed option): it wins over the stored choice. */
   quality?: QualityLevel | null;
+  /** Keep the user's choice and the device calibration in localStorage (the standalone app; default false). */
+  remember?: boolean;
   /** requestIdleCallback, or a stand-in (browsers without it: a short timeout). */
   idle?: (callback: () => void) => () => void;
 }
@@ -47,7 +50,10 @@ const pageIdle = (callback: () => void): (() => void) => {
 
 /** Creates the bake host of a configurator store and registers it (bakeHostOf). */
 export function createBakeHost(store: ConfiguratorStore, loadPhotometry: (path: string) => Promise<Photometry>, options: BakeHostOptions = {}): BakeHost {
-  let quality = initialQuality(options.quality);
+  /** The level asked for ('device': the calibration's, once the service runs). */
+  const remember = options.remember === true;
+  let quality = initialQuality(options.quality, remember);
+  const level = (): QualityLevel => feed?.service.quality ?? (quality === 'device' ? 'balanced' : quality);
   let loading: Promise<BakeFeed> | null = null;
   let feed: BakeFeed | null = null;
   let disposed = false;
@@ -57,7 +63,7 @@ export function createBakeHost(store: ConfiguratorStore, loadPhotometry: (path: 
     if (!loading) {
       loading = import('./startBakeFeed').then(({ startBakeFeed }) => {
         if (disposed) throw new Error('the configurator was closed');
-        feed = startBakeFeed(store, loadPhotometry, quality);
+        feed = startBakeFeed(store, loadPhotometry, quality, remember);
         return feed;
       });
       // A failed chunk download is reported by the 3D view when it asks; a later get() tries again.
@@ -72,18 +78,19 @@ export function createBakeHost(store: ConfiguratorStore, loadPhotometry: (path: 
     startWhenIdle() {
       if (loading || disposed) return () => undefined;
       return idle(() => {
-        if (!disposed) get().catch(() => undefined);
+        // No WebGL2 or float targets: nothing to bake for (the 3D toggle says why), and no chunk to download.
+        if (!disposed && !loading && !webglSupportProblem()) get().catch(() => undefined);
       });
     },
     get,
     current: () => feed,
     get quality() {
-      return quality;
+      return level();
     },
-    setQuality(level) {
-      quality = level;
-      storeQuality(level);
-      feed?.service.setQuality(level);
+    setQuality(next) {
+      quality = next;
+      if (remember) storeQuality(next);
+      feed?.service.setQuality(next);
     },
     dispose() {
       if (disposed) return;
@@ -97,7 +104,7 @@ export function createBakeHost(store: ConfiguratorStore, loadPhotometry: (path: 
     },
   };
   hosts.set(store, host);
-  setBakeStatusSource(store, (): BakeStatus => feed?.service.status() ?? { running: false, paused: false, done: false, groupBakes: 0, relightsOnly: 0, indirectSolves: 0, quality });
+  setBakeStatusSource(store, (): BakeStatus => feed?.service.status() ?? { running: false, paused: false, done: false, groupBakes: 0, relightsOnly: 0, indirectSolves: 0, quality: level() });
   return host;
 }
 
@@ -106,7 +113,7 @@ export function bakeHostOf(store: ConfiguratorStore): BakeHost | null {
   return hosts.get(store) ?? null;
 }
 
-/** The store's bake host, created (with the stored quality) when there is none. */
+/** The store's bake host, created (nothing pinned or remembered) when there is none. */
 export function bakeHostFor(store: ConfiguratorStore, loadPhotometry: (path: string) => Promise<Photometry>): BakeHost {
   return hosts.get(store) ?? createBakeHost(store, loadPhotometry);
 }

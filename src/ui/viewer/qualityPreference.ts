@@ -23,9 +23,11 @@ export function storeQuality(level: QualityLevel): void {
 
 /**
  * The quality the bake starts with: the host's pin (a `quality` URL parameter or embed option:
- * tests pin 'balanced' so lux values stay deterministic), else the user's stored choice, else
- * 'balanced' (the viewer's measured default, docs/viewer.md "Viewer bake quality").
+ * tests pin 'balanced' so lux values stay deterministic), else the user's stored choice (when the
+ * host lets luxbox remember it), else
+ * 'device': the level the device's calibration picks once the bake chunk has loaded
+ * (deviceQuality; 'balanced' until then).
  */
-export function initialQuality(pinned: QualityLevel | null | undefined): QualityLevel {
-  return pinned ?? storedQuality() ?? 'balanced';
+export function initialQuality(pinned: QualityLevel | null | undefined, remember: boolean): QualityLevel | 'device' {
+  return pinned ?? (remember ? storedQuality() : null) ?? 'device';
 }

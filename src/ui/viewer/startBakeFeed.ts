@@ -11,6 +11,7 @@ import { configurationMeshLoader } from '../../engines/view/configurationMeshLoa
 import { createBakeService, type BakeService } from '../../engines/view/createBakeService';
 import { fixturesFromConfiguration, type Fixtures } from '../../engines/view/fixtures';
 import type { PhotometryNote } from '../shared/PhotometryWarnings';
+import { deviceQuality } from './deviceQuality';
 
 /** A configuration resolved for the baker, with what the view draws and shows next to it. */
 export interface ResolvedScene {
@@ -40,11 +41,13 @@ export interface BakeFeed {
  * Starts the bake service and keeps feeding it the store's configuration: every change is turned
  * into a lighting scene (toLightingScene), resolved with the page's photometry loader and the
  * configuration's own meshes (configurationMeshLoader) and handed over, so the light is baked in
- * the background while the plan is on screen. A slower resolve of an older configuration never
+ * the background while the plan is on screen. With no level chosen (`'device'`) the level comes
+ * from the device's calibration (deviceQuality). A slower resolve of an older configuration never
  * overwrites a newer one.
  */
-export function startBakeFeed(store: ConfiguratorStore, loadPhotometry: (path: string) => Promise<Photometry>, quality: QualityLevel): BakeFeed {
-  const service = createBakeService({ quality });
+export function startBakeFeed(store: ConfiguratorStore, loadPhotometry: (path: string) => Promise<Photometry>, quality: QualityLevel | 'device', remember = false): BakeFeed {
+  // 'device': neither the page nor the user chose a level; fit one to this device.
+  const service = createBakeService({ quality: quality === 'device' ? deviceQuality(remember) : quality });
   const listeners = new Set<() => void>();
   const notify = () => {
     for (const l of [...listeners]) l();
