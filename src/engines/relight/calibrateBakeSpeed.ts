@@ -28,19 +28,24 @@ export interface BakeCalibration {
   work: { texels: number; pointSources: number; samples: number; bounces: number };
 }
 
+/** Peak intensity of the calibration luminaire (cd, straight down). */
+export const CALIBRATION_PEAK_CD = 300;
+
 /**
- * The calibration scene: a 3 × 2.5 × 3 m room (ρ 0.5), one isotropic 100 cd point source
- * (≈ 1 257 lm) at its centre (1.25 m from floor and ceiling: a source hung 0.3 m under the
- * ceiling made the ceiling's supersampling dominate and predicted 3–5× the direct cost
- * measured in real rooms); 5 cm texels
- * (19 200 texels, about half a viewer basis, so per-draw overheads weigh as they do there),
- * 32 samples, 1 bounce, the viewer's blur and bright patches. The direct pass supersamples
- * near the source as every viewer bake does (default texelSupersampling). Fixed, so every
- * device bakes the same work.
+ * The calibration scene: a 3 × 2.5 × 3 m room (ρ 0.5) and one module-like luminaire at its
+ * centre, facing down: a cosine (Lambertian) distribution of 300 cd peak (≈ 942 lm) tabulated
+ * every 5° like a measured file, from a 0.24 × 0.09 m luminous opening that the split near
+ * field turns into 5 × 2 = 10 point sources (the mean of the catalog's modules), so its direct
+ * program, and the compile of it, is a typical group's. At the centre (1.25 m from floor and
+ * ceiling): a source hung 0.3 m under the ceiling made the ceiling's supersampling dominate and
+ * predicted 3–5× the direct cost measured in real rooms. 5 cm texels (19 200, about half a
+ * viewer basis, so per-draw overheads weigh as they do there), 32 samples, 1 bounce, the
+ * viewer's blur and bright patches; the direct pass supersamples near the sources as every
+ * viewer bake does. Fixed, so every device bakes the same work.
  */
 export const CALIBRATION_SCENE: BakeScene = {
   room: { width: 3, height: 2.5, depth: 3, reflectance: { floor: 0.5, ceiling: 0.5, north: 0.5, south: 0.5, west: 0.5, east: 0.5 } },
-  luminaires: [{ photometry: isotropicPhotometry(100), position: [1.5, 1.25, 1.5], yaw: 0, pitch: 0, roll: 0, dimming: 1, color: [1, 1, 1] }],
+  luminaires: [{ photometry: calibrationPhotometry(), position: [1.5, 1.25, 1.5], yaw: 0, pitch: 0, roll: 0, dimming: 1, color: [1, 1, 1] }],
 };
 
 export const CALIBRATION_SETTINGS: Partial<BakeSettings> = {
@@ -55,15 +60,17 @@ export const CALIBRATION_SETTINGS: Partial<BakeSettings> = {
   seed: 1,
 };
 
-/** The calibration source moved by `dx` m: a new group, hence a new direct program (its compile is timed). */
+/** The calibration luminaire moved by `dx` m: a new group, hence a new direct program (its compile is timed). */
 const movedScene = (dx: number): BakeScene => ({ ...CALIBRATION_SCENE, luminaires: [{ ...CALIBRATION_SCENE.luminaires[0], position: [1.5 + dx, 1.25, 1.5] }] });
 
-/** Constant intensity over the whole sphere (Φ = 4πI), absolute photometry. */
-function isotropicPhotometry(candela: number): Photometry {
+/** I(γ) = CALIBRATION_PEAK_CD · cos γ below the horizon, 0 above, every 5°; absolute photometry; 0.24 × 0.09 m opening. */
+function calibrationPhotometry(): Photometry {
+  const angles = Array.from({ length: 37 }, (_, i) => i * 5);
+  const candela = angles.map((g) => (g < 90 ? CALIBRATION_PEAK_CD * Math.cos((g * Math.PI) / 180) : 0));
   return {
-    format: 'IES', version: 'calibration', manufacturer: '', luminaire: 'isotropic calibration source', catalogNumber: '', keywords: {},
-    photometricType: 'C', symmetry: 'rotational', verticalAngles: [0, 180], horizontalAngles: [0], candela: [[candela, candela]],
-    statedLumens: null, absolute: true, inputWatts: null, luminousOpening: { width: 0, length: 0, height: 0, shape: 'point' }, warnings: [],
+    format: 'IES', version: 'calibration', manufacturer: '', luminaire: 'calibration downlight', catalogNumber: '', keywords: {},
+    photometricType: 'C', symmetry: 'rotational', verticalAngles: angles, horizontalAngles: [0], candela: [candela],
+    statedLumens: null, absolute: true, inputWatts: null, luminousOpening: { width: 0.24, length: 0.09, height: 0, shape: 'rectangular' }, warnings: [],
   };
 }
 
@@ -128,7 +135,8 @@ export interface QualityScene {
  * The scene a first toggle is planned for when the caller knows none yet: the configurator's
  * default 5 × 4 × 2.8 m room with the L-corner preset (6 modules); 10 point sources per module
  * is the mean over the default catalog's five module types under the split near field
- * (spot 9, flood 12, linear 16, washer 6, direct/indirect 8: the bake reports' pointSources).
+ * (spot 9, flood 12, linear 16, washer 6, direct/indirect 8: the bake reports' pointSources),
+ * as many as the calibration luminaire has.
  * The relight engine solves the indirect light once for all groups (createRelightEngine).
  */
 export const TYPICAL_QUALITY_SCENE: QualityScene = { room: { width: 5, height: 2.8, depth: 4 }, groups: 6, pointSourcesPerGroup: 10, indirectSolves: 1 };

@@ -12,7 +12,7 @@ import {
 } from '../../../src/engines/relight/calibrateBakeSpeed';
 import { QUALITY_LEVEL_NAMES, QUALITY_LEVELS } from '../../../src/engines/relight/qualityLevels';
 
-const device = (msPerTexelSample: number, msPerTexelSource: number, directCompileMs = 0): BakeCalibration => ({ msPerTexelSample, msPerTexelSource, directCompileMs, compileMs: 300, renderer: 'test', work: { texels: 19200, pointSources: 1, samples: 32, bounces: 1 } });
+const device = (msPerTexelSample: number, msPerTexelSource: number, directCompileMs = 0): BakeCalibration => ({ msPerTexelSample, msPerTexelSource, directCompileMs, compileMs: 300, renderer: 'test', work: { texels: 19200, pointSources: 10, samples: 32, bounces: 1 } });
 const rank = (level: string) => QUALITY_LEVEL_NAMES.indexOf(level as never);
 
 describe('quality levels: predicted cost', () => {
