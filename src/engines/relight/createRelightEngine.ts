@@ -99,13 +99,20 @@ export interface RelightEngine {
   readonly version: number;
   readonly counters: EngineCounters;
   readonly settings: BakeSettings;
+  /**
+   * Free the baker's pooled render targets (kept only to speed up the next bake; jobs under way
+   * keep theirs): the bake service calls it on low-memory devices once the bake is done. The
+   * bases and maps stay; the next bake allocates targets anew.
+   */
+  releaseTargets(): void;
   dispose(): void;
 }
 
 export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial<BakeSettings> = VIEWER_BAKE_SETTINGS): RelightEngine {
   const settings = resolveBakeSettings(partial);
   // A basis is the direct pass alone: with no bounces the baker skips the bright patches, the gather and the flux record.
-  const basisSettings: BakeSettings = { ...settings, bounces: 0 };
+  // Its lamps are uniforms: a moved module, or another of the same type, reuses the compiled programs.
+  const basisSettings: BakeSettings = { ...settings, bounces: 0, lampUniforms: true };
   const baker = createBaker(gl);
   let scene: BakeScene | null = null;
   let room = '';
@@ -269,6 +276,7 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
     },
     counters,
     settings,
+    releaseTargets: () => baker.dispose(),
     dispose() {
       dropSolve();
       solved = null;

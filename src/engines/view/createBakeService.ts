@@ -92,9 +92,6 @@ export const INPUT_QUIET_MS = 800;
 /** Input that means the user is interacting (a hovering pointer does not count). */
 const INPUT_EVENTS = ['pointerdown', 'pointermove', 'keydown', 'wheel', 'touchstart'] as const;
 
-/** Engines that can free their pooled render targets between bakes. */
-type TrimmableEngine = RelightEngine & { releaseTargets?(): void };
-
 const pageLowMemory = (): boolean => {
   const memory = typeof navigator === 'undefined' ? undefined : (navigator as Navigator & { deviceMemory?: number }).deviceMemory;
   return typeof memory === 'number' && memory <= 2;
@@ -160,7 +157,7 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
     onSlice(engine, progress) {
       if (progress.done && lowMemory && trimmedAt !== engine.version) {
         trimmedAt = engine.version;
-        (engine as TrimmableEngine).releaseTargets?.();
+        engine.releaseTargets();
       }
       emit({ type: 'slice', engine, progress });
     },

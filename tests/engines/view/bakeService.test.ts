@@ -173,7 +173,9 @@ describe('fence-limited slices', () => {
 
 describe('createBakeService on a real engine (headless-gl)', () => {
   const room = uniformRoom(3, 2.5, 3, 0.5);
-  const lum = (x: number, z: number) => ({ photometry: isotropic(300), position: [x, 2.3, z] as [number, number, number], yaw: 0, pitch: 0, roll: 0, dimming: 1, color: [1, 1, 1] as [number, number, number] });
+  // One photometry object: groups are keyed by photometry identity (luminaireGroups).
+  const source = isotropic(300);
+  const lum = (x: number, z: number) => ({ photometry: source, position: [x, 2.3, z] as [number, number, number], yaw: 0, pitch: 0, roll: 0, dimming: 1, color: [1, 1, 1] as [number, number, number] });
   const scene: BakeScene = { room, luminaires: [lum(1, 1), lum(2, 2)] };
 
   function fakePage(hidden = false) {
@@ -194,10 +196,10 @@ describe('createBakeService on a real engine (headless-gl)', () => {
   }
 
   /** A service on its own headless-gl context (disposing the service loses that context). */
-  function service(page: ReturnType<typeof fakePage>, q: ReturnType<typeof manualQueue>) {
+  function service(page: ReturnType<typeof fakePage>, q: ReturnType<typeof manualQueue>, lowMemory = false) {
     const gl = createHeadlessGL();
     const canvas = () => ({ getContext: () => gl, addEventListener: () => {}, removeEventListener: () => {} });
-    const s = createBakeService({ quality: 'fast', visibility: page as unknown as VisibilitySource, input: null, canvas, defer: q.defer, lowMemory: false });
+    const s = createBakeService({ quality: 'fast', visibility: page as unknown as VisibilitySource, input: null, canvas, defer: q.defer, lowMemory });
     return { s, dispose: () => { s.dispose(); gl.destroy(); } };
   }
 
@@ -281,6 +283,33 @@ describe('createBakeService on a real engine (headless-gl)', () => {
       expect(s.status()).toMatchObject({ done: true, groupBakes: 4, quality: 'balanced' });
     } finally {
       dispose();
+    }
+  });
+
+  it('on a low-memory device the baker pooled targets are freed once per finished bake, and the next bake still works', () => {
+    for (const lowMemory of [true, false]) {
+      const q = manualQueue(true);
+      const { s, dispose } = service(fakePage(), q, lowMemory);
+      try {
+        s.setScene(scene);
+        const engine = s.engine!;
+        let released = 0;
+        const release = engine.releaseTargets.bind(engine);
+        engine.releaseTargets = () => {
+          expect(engine.progress.done).toBe(true);
+          released++;
+          release();
+        };
+        q.drain();
+        expect(released).toBe(lowMemory ? 1 : 0);
+        // A moved luminaire: one more group, baked on freshly allocated targets.
+        s.setScene({ room, luminaires: [lum(1, 1), lum(2.2, 1.8)] });
+        q.drain();
+        expect(s.status()).toMatchObject({ done: true, groupBakes: 3 });
+        expect(released).toBe(lowMemory ? 2 : 0);
+      } finally {
+        dispose();
+      }
     }
   });
 });
