@@ -35,6 +35,13 @@ export interface BakeSettings {
   texelSupersampling: number;
   /** Wait for the GPU after each pass so timings_ms attributes time to passes (profiling; costs a pipeline stall per pass). */
   syncTimings: boolean;
+  /**
+   * Direct passes with the luminaires as uniforms instead of constants (docs/baker.md, "Lamps as
+   * uniforms"): a program then depends only on the surface, the photometry and the source count,
+   * so a moved luminaire compiles nothing. Unset or false: constants (the CLI's shaders). The
+   * relight engine sets it for its direct bases.
+   */
+  lampUniforms?: boolean;
 }
 
 export const DEFAULT_BAKE_SETTINGS: BakeSettings = {

@@ -6,7 +6,7 @@ import { combineTailPass } from '../../../shaders/combineTailPass.glsl';
 import type { BakeSettings } from './bakeSettings';
 import { chartBlurPass } from '../../../shaders/chartBlurPass.glsl';
 import { chartDilatePass } from '../../../shaders/chartDilatePass.glsl';
-import { generateDirectShader, generateShadowedDirectShader, type DirectLamp, type directUniforms } from './generateDirectShader';
+import { generateDirectShader, generateShadowedDirectShader, type DirectLamp, type DirectPass, type directUniforms } from './generateDirectShader';
 import {
   generateGatherShader,
   generateObjectAwareGatherShader,
@@ -22,7 +22,7 @@ import type { SurfaceLayout } from './surfaceLayout';
 /** Which passes a bake runs, known before any is drawn. */
 export interface BakePlan {
   /** Per surface: its direct pass, or null (no luminaire reaches it, or the direct maps are given). */
-  direct: (FragmentPass<typeof directUniforms> | null)[];
+  direct: (DirectPass<typeof directUniforms> | null)[];
   /** Whether any light enters the room and bounces (bounces > 0, some ρ > 0). */
   indirectEnabled: boolean;
   /** Per surface: its gather pass (empty when indirect is off). */
@@ -31,7 +31,7 @@ export interface BakePlan {
   /** Every fragment source the bake will use, to start their compiles together (glResources.startPrograms). */
   sources: string[];
   /** With objects: the atlas's direct pass (null without luminaires) and gather pass (null when indirect is off). */
-  objectDirect: FragmentPass<typeof objectDirectUniforms> | null;
+  objectDirect: DirectPass<typeof objectDirectUniforms> | null;
   objectGather: FragmentPass<typeof objectGatherUniforms> | null;
 }
 
@@ -62,11 +62,14 @@ export function planBakePasses(
     if (directOverride) return null;
     const reaching = lamps.filter((l) => lampReachesSurface(l.sources, l.rotation, l.profile.gammaMin, l.profile.gammaMax, layout));
     if (reaching.length === 0) return null;
+    // settings.lampUniforms (a relighting basis): lamps as uniforms, one program per surface and photometry.
+    const asUniforms = settings.lampUniforms === true;
     return objects
-      ? generateShadowedDirectShader(layout, reaching, settings.texelSupersampling, objects.bvhWidth)
-      : generateDirectShader(layout, reaching, settings.texelSupersampling);
+      ? generateShadowedDirectShader(layout, reaching, settings.texelSupersampling, objects.bvhWidth, asUniforms)
+      : generateDirectShader(layout, reaching, settings.texelSupersampling, asUniforms);
   });
-  const objectDirect = objects && !directOverride && lamps.length > 0 ? generateObjectDirectShader([...lamps], objects.bvhWidth) : null;
+  const objectDirect =
+    objects && !directOverride && lamps.length > 0 ? generateObjectDirectShader([...lamps], objects.bvhWidth, settings.lampUniforms === true) : null;
   const anyDirect = directOverride
     ? Object.values(directOverride).some((rgb) => rgb.some((v) => v > 0))
     : direct.some((pass) => pass !== null) || objectDirect !== null;

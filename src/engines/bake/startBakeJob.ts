@@ -97,7 +97,7 @@ export function startBakeJob(
     surfaces.forEach((st, s) => {
       const pass = plan.direct[s];
       // With objects the pass also takes the BVH (generateShadowedDirectShader).
-      const values = { uProfiles: dataTexture!, ...bvhSamplers };
+      const values = { uProfiles: dataTexture!, ...bvhSamplers, ...pass?.lampValues };
       if (directOverride) uploadRgb(gl, st.direct, directOverride[st.layout.name]);
       else if (pass) runPass(gl, compile(pass, 'direct', st.layout.name), st.direct, values);
       else {
@@ -114,6 +114,7 @@ export function startBakeJob(
           uBvhTriangles: objectInputs.bvhTriangles,
           uPoints: objectInputs.points,
           uNormals: objectInputs.normals,
+          ...plan.objectDirect.lampValues,
         });
       } else clearTarget(gl, atlasTargets.direct);
     }

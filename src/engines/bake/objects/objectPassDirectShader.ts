@@ -1,6 +1,6 @@
-import { fragmentPass, type FragmentPass } from '../../../../shaders/fragmentPass.glsl';
+import { fragmentPass } from '../../../../shaders/fragmentPass.glsl';
 import { objectTracing } from '../../../../shaders/objectTracing.glsl';
-import { directLampConstants, directPointSum, type DirectLamp } from '../generateDirectShader';
+import { directLampConstants, directPointSum, withLampSpec, type DirectLamp, type DirectPass } from '../generateDirectShader';
 
 /** The atlas direct pass's uniforms: the profile table, the BVH, and the G-buffer's points (a = coverage) and normals. */
 export const objectDirectUniforms = {
@@ -18,13 +18,16 @@ export const objectDirectUniforms = {
  * luminaire's point sources on the front side of the texel, each times its visibility (one shadow
  * ray through the BVH). Centre values: an atlas texel's sample point is its centre (or the nearest
  * point of its chart), and the texel-mean sub-sampling of the walls is not applied here.
- * Empty texels (coverage 0) do no work and stay 0.
+ * Empty texels (coverage 0) do no work and stay 0. With `withLampUniforms` the lamps are uniforms
+ * (generateDirectShader.ts lampUniforms, when they fit): the program then depends on the
+ * photometry and source counts only, and its `lampValues` are set with the other uniforms.
  */
-export function generateObjectDirectShader(lamps: DirectLamp[], bvhWidth: number): FragmentPass<typeof objectDirectUniforms> {
-  return fragmentPass(
-    objectDirectUniforms,
-    `// direct pass, objects' atlas, ${lamps.length} luminaire(s), shadowed by objects
-${objectTracing(bvhWidth)}${directLampConstants(lamps, false)}
+export function generateObjectDirectShader(lamps: DirectLamp[], bvhWidth: number, withLampUniforms = false): DirectPass<typeof objectDirectUniforms> {
+  const spec = withLampSpec(objectDirectUniforms, lamps, false, withLampUniforms);
+  const pass: DirectPass<typeof objectDirectUniforms> = fragmentPass(
+    spec.uniforms,
+    `// direct pass, objects' atlas, ${lamps.length} luminaire(s), shadowed by objects${spec.lamps ? ', lamps as uniforms' : ''}
+${objectTracing(bvhWidth)}${directLampConstants(lamps, false, spec.lamps !== null)}
 out vec4 outColor;
 void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy);
@@ -41,4 +44,6 @@ ${directPointSum(lamps, 'p', 'n', true)}
 }
 `,
   );
+  if (spec.lamps) pass.lampValues = spec.lamps.values;
+  return pass;
 }
