@@ -150,3 +150,27 @@ test('the quality control switches the level, rebakes, and the choice is kept fo
   await expect(page.getByTestId('plan')).toBeVisible();
   expect((await status(page)).bake.quality).toBe('best');
 });
+
+test('an embedded configurator bakes in the background too, and destroy() releases its bake context', async ({ page }) => {
+  // Keep a handle on the canvases the page creates (the baker's is never attached to the document).
+  await page.addInitScript(() => {
+    const created: HTMLCanvasElement[] = [];
+    (window as unknown as { __canvases: HTMLCanvasElement[] }).__canvases = created;
+    const original = document.createElement.bind(document);
+    document.createElement = ((tag: string, options?: ElementCreationOptions) => {
+      const el = original(tag, options);
+      if (tag.toLowerCase() === 'canvas') created.push(el as HTMLCanvasElement);
+      return el;
+    }) as typeof document.createElement;
+  });
+  await page.goto('/embed.html');
+  await page.getByTestId('host-action-single').click();
+  await expect.poll(() => page.evaluate(() => window.shopDemo!.instance!.view3d().bake.groupBakes), BAKE).toBe(3);
+  const live = () =>
+    page.evaluate(() => (window as unknown as { __canvases: HTMLCanvasElement[] }).__canvases.filter((c) => !c.isConnected && c.getContext('webgl2') && !c.getContext('webgl2')!.isContextLost()).length);
+  // The bake context is the one detached WebGL2 canvas still alive (the support checks and the calibration lose theirs).
+  expect(await live()).toBe(1);
+  await page.getByTestId('toggle-configurator').click();
+  expect(await page.evaluate(() => window.shopDemo!.instance)).toBeNull();
+  expect(await live()).toBe(0);
+});
