@@ -13,7 +13,7 @@ import { setReflectance } from './actions/surfaceActions';
 import { deleteSystem, moveSystem, placePreset, rotateSystem, setMounting, setSuspension } from './actions/systemActions';
 import { addFeed, moveFeed, removeFeed, setFeedDriver } from './actions/feedActions';
 import { addRail, removeRail, setDistribution, setRailLength } from './actions/railActions';
-import { addModule, removeModule, setModuleBeam, setModuleCct, setModuleDimming, setModuleType } from './actions/moduleActions';
+import { addModule, moveModule, removeModule, setModuleBeam, setModuleCct, setModuleDimming, setModuleType } from './actions/moduleActions';
 import { autoPatch, clearPatch, setModulePatch } from './actions/patchActions';
 import { addObject, moveObject, refinishObject, removeObject, resizeObject, rotateObject } from './actions/objectActions';
 
@@ -35,6 +35,7 @@ export const actionDefinitions = {
   addRail,
   removeRail,
   addModule,
+  moveModule,
   removeModule,
   setModuleType,
   setModuleCct,

@@ -80,6 +80,8 @@ export const catalogSchema = z
       defaultLength: positive,
       /** Profile width in plan, metres (for footprints and clash tests). */
       width: positive,
+      /** Grid a freely placed module's start snaps to, metres from the rail start (docs/model.md, "Free positions"); default: step. */
+      placementStep: positive.optional(),
       /** Unit price of a rail of length L: base + perMetre·L, rounded to cents. */
       price: z.strictObject({ base: price, perMetre: price }),
     }),

@@ -1,8 +1,8 @@
 /**
  * The configuration: everything the user builds, as plain immutable data.
- * Positions of modules along rails are not stored: they follow from the rail's
- * distribution (src/core/model/distribution.ts), so a configuration cannot hold
- * overlapping modules by construction of its layout rule.
+ * Positions of modules along rails follow from the rail's distribution
+ * (src/core/model/distribution.ts), or, on a rail the user arranged by hand, from each
+ * module's free `offset` (src/core/model/freePositions.ts); validate() judges both.
  */
 import type { Distribution } from './catalogSchema';
 import type { DmxPatch } from './dmxPatch';
@@ -34,6 +34,12 @@ export interface ModuleInstance {
   readonly dimming: number;
   /** Where a lighting console drives it (docs/live-control.md); absent: not patched. Scene file version 2. */
   readonly dmx?: DmxPatch;
+  /**
+   * Free position (docs/model.md, "Free positions"): distance from the rail start to the module's
+   * START, metres. Absent: the rail's distribution places it. A rail's modules are either all free
+   * or all distributed. Scene file version 5.
+   */
+  readonly offset?: number;
 }
 
 export interface Rail {
@@ -41,7 +47,7 @@ export interface Rail {
   /** Metres, on the catalog's step grid. */
   readonly length: number;
   readonly distribution: Distribution;
-  /** In order from the rail's start to its end. */
+  /** In order from the rail's start to its end (free positions too: ascending offsets). */
   readonly modules: readonly ModuleInstance[];
 }
 

@@ -7,6 +7,7 @@
 import { findConnector, findModuleType, type Catalog } from './catalogSchema';
 import type { LightSystem, Rail } from './configuration';
 import { layoutModules } from './distribution';
+import { freeOffsets, isFreeRail } from './freePositions';
 
 /** A point or vector in the plan: [x, z]. */
 export type PlanVec = readonly [number, number];
@@ -172,13 +173,10 @@ export function systemBounds(system: LightSystem, catalog: Catalog): PlanBounds 
   };
 }
 
-/** Module offsets of a rail from its distribution, or null if they do not fit. */
+/** Module offsets (starts) of a rail: its free positions, or its distribution's; null if they do not fit. */
 export function railModuleOffsets(rail: Rail, catalog: Catalog): number[] | null {
-  return layoutModules(
-    rail.modules.map((m) => findModuleType(catalog, m.type).length),
-    rail.length,
-    rail.distribution,
-  );
+  const lengths = rail.modules.map((m) => findModuleType(catalog, m.type).length);
+  return isFreeRail(rail) ? freeOffsets(rail, lengths) : layoutModules(lengths, rail.length, rail.distribution);
 }
 
 /** Placement of every module of a system (rails whose modules do not fit are skipped: validate() reports them). */

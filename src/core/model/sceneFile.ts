@@ -22,11 +22,12 @@ import { validate } from './validate';
 
 export const SCENE_FILE_FORMAT = 'luxbox-configuration';
 /**
+ * 5: modules may carry a free position along their rail (`offset`, docs/model.md "Free positions").
  * 4: systems carry power feeds (`feeds`) and their mounting (`mounting`), docs/model.md "Power feeds".
  * 3: objects (furniture, imported models) and imported meshes (docs/model.md, "Objects").
  * 2: modules may carry a DMX patch (`dmx`, docs/live-control.md). Older files are migrated on reading.
  */
-export const SCENE_FILE_VERSION = 4;
+export const SCENE_FILE_VERSION = 5;
 /** Share strings longer than this are refused before decoding (browsers cap URLs near 64k). */
 export const MAX_SHARE_STRING = 60_000;
 
@@ -83,6 +84,8 @@ const configurationSchema = z.strictObject({
               dimming: z.number(),
               // Ranges, the CCT channel's type and overlaps are validate()'s rules (dmx-range, dmx-overlap).
               dmx: z.strictObject({ universe: z.number(), address: z.number(), resolution: z.union([z.literal(8), z.literal(16)]), cct: z.boolean() }).optional(),
+              // Version 5: a free position (start, metres from the rail start); its rules are validate()'s (module-past-end, module-overlap).
+              offset: z.number().optional(),
             }),
           ),
         }),
@@ -153,6 +156,7 @@ export const migrations: Record<number, (doc: Record<string, unknown>, catalog: 
       if (typeof c === 'object' && c !== null && key in c) throw new SceneFileError(`configuration.${key}: needs "version": 3 (this file says version 1)`);
     }
     refuseV4Fields(doc, 1);
+    refuseV5Fields(doc, 1);
     return { ...doc, version: 2 };
   },
   // 2 → 3: version 3 added objects and imported meshes; a version 2 configuration has none.
@@ -162,6 +166,7 @@ export const migrations: Record<number, (doc: Record<string, unknown>, catalog: 
       if (typeof c === 'object' && c !== null && key in c) throw new SceneFileError(`configuration.${key}: needs "version": 3 (this file says version 2)`);
     }
     refuseV4Fields(doc, 2);
+    refuseV5Fields(doc, 2);
     return { ...doc, version: 3 };
   },
   // 3 → 4: version 4 added power feeds and the mounting. An older system hung on suspensions and had
@@ -172,6 +177,7 @@ export const migrations: Record<number, (doc: Record<string, unknown>, catalog: 
     const c = doc.configuration;
     if (typeof c !== 'object' || c === null || !Array.isArray((c as Record<string, unknown>).systems)) return { ...doc, version: 4 };
     refuseV4Fields(doc, 3);
+    refuseV5Fields(doc, 3);
     const conf = c as Record<string, unknown>;
     let nextId = typeof conf.nextId === 'number' && Number.isInteger(conf.nextId) ? conf.nextId : null;
     const systems = (conf.systems as unknown[]).map((raw) => {
@@ -189,7 +195,19 @@ export const migrations: Record<number, (doc: Record<string, unknown>, catalog: 
     });
     return { ...doc, version: 4, configuration: { ...conf, systems, ...(nextId === null ? {} : { nextId }) } };
   },
+  // 4 → 5: version 5 added free module positions; a version 4 module has none (its rail's
+  // distribution places it), so the content reads as is.
+  4(doc) {
+    refuseV5Fields(doc, 4);
+    return { ...doc, version: 5 };
+  },
 };
+
+/** Free positions came with version 5: a file that says it is older and has one was not written by luxbox. */
+function refuseV5Fields(doc: Record<string, unknown>, version: number): void {
+  const at = firstModuleWith(doc.configuration, 'offset');
+  if (at) throw new SceneFileError(`configuration.${at}: needs "version": 5 (this file says version ${version})`);
+}
 
 /** Feeds and mounting came with version 4: a file that says it is older and has them was not written by luxbox. */
 function refuseV4Fields(doc: Record<string, unknown>, version: number): void {
@@ -204,6 +222,11 @@ function refuseV4Fields(doc: Record<string, unknown>, version: number): void {
 
 /** Path of the first module carrying `dmx` in a version 1 configuration (its shape is checked later, so every step looks before it leaps). */
 function v1PatchField(configuration: unknown): string | null {
+  return firstModuleWith(configuration, 'dmx');
+}
+
+/** Path of the first module carrying `key` (its shape is checked later, so every step looks before it leaps). */
+function firstModuleWith(configuration: unknown, key: string): string | null {
   const list = (o: unknown, key: string): unknown[] => (typeof o === 'object' && o !== null && Array.isArray((o as Record<string, unknown>)[key]) ? ((o as Record<string, unknown>)[key] as unknown[]) : []);
   const systems = list(configuration, 'systems');
   for (let i = 0; i < systems.length; i++) {
@@ -212,7 +235,7 @@ function v1PatchField(configuration: unknown): string | null {
       const modules = list(rails[k], 'modules');
       for (let n = 0; n < modules.length; n++) {
         const m = modules[n];
-        if (typeof m === 'object' && m !== null && 'dmx' in m) return `systems[${i}].rails[${k}].modules[${n}].dmx`;
+        if (typeof m === 'object' && m !== null && key in m) return `systems[${i}].rails[${k}].modules[${n}].${key}`;
       }
     }
   }

@@ -4,7 +4,8 @@
  * state reachable through enabled actions is empty; the property test in
  * tests/core/model checks it.
  */
-import { onGrid, type Catalog } from './catalogSchema';
+import { findModuleType, onGrid, type Catalog } from './catalogSchema';
+import { freeRailProblem, isFreeRail } from './freePositions';
 import { MOUNTINGS, ROOM_LIMITS, withinRoomLimits, type Configuration, type LightSystem } from './configuration';
 import { describeFeedAt, feedLabel, feedLoads, formatWatts, isOverloaded } from './feedLoads';
 import { photometricDrop } from './suspensionPoints';
@@ -325,7 +326,9 @@ function ownProblems(s: LightSystem, at: string, roomHeight: number, catalog: Ca
       const patch = m.dmx ? patchRangeProblem(m.dmx, type) : null;
       if (patch) p('dmx-range', `${mp}.dmx`, patch);
     });
-    if (refsOk && Number.isFinite(r.length) && !railModuleOffsets(r, catalog)) {
+    const free = refsOk && Number.isFinite(r.length) && isFreeRail(r) ? freeRailProblem(r, r.modules.map((m) => findModuleType(catalog, m.type).length)) : null;
+    if (free) p(free.code, `${rp}.modules[${free.index}].offset`, free.message);
+    else if (refsOk && Number.isFinite(r.length) && !railModuleOffsets(r, catalog)) {
       p('modules-do-not-fit', `${rp}.modules`, `the modules of rail ${r.id} do not fit its ${fmt(r.length)} m with distribution '${r.distribution}'`);
     }
   });

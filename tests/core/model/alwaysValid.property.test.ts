@@ -2,7 +2,8 @@
  * The always-valid property (configurator paper §3.2): from any valid state, an enabled
  * action leads to a valid state, and a refused action, performed anyway,
  * either throws or leads to a state validate() rejects. Random sequences over
- * every action — rails, modules, patches, finishes and objects (furniture, imported meshes) mixed —
+ * every action — rails (removed at any index: splits), modules (moved to free positions), patches,
+ * finishes and objects (furniture, imported meshes) mixed —
  * seeded so failures reproduce.
  */
 import fc from 'fast-check';
@@ -45,7 +46,7 @@ interface Step {
 }
 
 const unit = fc.double({ min: 0, max: 1, noNaN: true });
-const step = fc.record({ kind: fc.nat(37), i: fc.nat(50), j: fc.nat(50), a: unit, b: unit, c: unit });
+const step = fc.record({ kind: fc.nat(41), i: fc.nat(50), j: fc.nat(50), a: unit, b: unit, c: unit });
 
 const pick = <T>(xs: readonly T[], i: number, fallback: T): T => (xs.length ? xs[i % xs.length] : fallback);
 
@@ -153,6 +154,20 @@ function toAction(s: Configuration, st: Step): [string, unknown] {
       return ['setFeedDriver', { feedId: feed, driver: st.c < 0.05 ? 'none' : driver }];
     case 37:
       return ['setMounting', { systemId: sys, mounting: st.b < 0.5 ? 'surface' : 'suspended' }];
+    case 38:
+    case 39:
+    case 40: {
+      // Free positions: anywhere from half a metre before the rail's start to half a metre past its end
+      // (from the integer fields mostly: the unit doubles cluster at their ends, i.e. out of range).
+      const railOf = s.systems.flatMap((x) => x.rails).find((r) => r.modules.some((m) => m.id === mod));
+      const u = st.i % 4 === 0 ? st.a : ((7 * st.j + st.i) % 41) / 40;
+      return ['moveModule', { moduleId: mod, offset: -0.5 + u * ((railOf?.length ?? 1) + 1) }];
+    }
+    case 41: {
+      // Middle rails of chains of three or more (splits), else any rail.
+      const middle = s.systems.flatMap((x) => x.rails.slice(1, -1).map((r) => r.id));
+      return ['removeRail', { railId: pick(middle.length ? middle : rails, st.j, 'none') }];
+    }
     default:
       return ['setRailLength', { railId: rail, length: 0.5 + 0.1 * (st.j % 26) }];
   }
@@ -171,6 +186,7 @@ describe('always-valid property', () => {
     const finishes = { enabled: 0, refused: 0 };
     const objects = { enabled: 0, refused: 0 };
     const power = { enabled: 0, refused: 0, overloads: 0, surface: 0 };
+    const free = { moves: 0, refusedMoves: 0, splits: 0, removals: 0, freeRails: 0 };
     let placed = 0;
     fc.assert(
       fc.property(unit, unit, unit, fc.array(step, { minLength: 5, maxLength: 30 }), (a, b, c, steps) => {
@@ -184,9 +200,13 @@ describe('always-valid property', () => {
           if (/Object$/.test(name)) objects[e === true ? 'enabled' : 'refused']++;
           if (/Feed|Mounting/.test(name)) power[e === true ? 'enabled' : 'refused']++;
           if (e !== true && /driver is full|would carry|cannot carry/.test(e.reason)) power.overloads++;
+          if (name === 'moveModule') free[e === true ? 'moves' : 'refusedMoves']++;
+          if (name === 'removeRail' && e === true) free.removals++;
           if (e === true) {
             counts.enabled++;
+            const systemsBefore = s.systems.length;
             s = action.perform(s);
+            if (name === 'removeRail' && s.systems.length > systemsBefore) free.splits++;
             const problems = validate(s, catalog);
             if (problems.length) throw new Error(`${name} ${JSON.stringify(params)} was enabled but left: ${problems[0].path}: ${problems[0].message}`);
           } else {
@@ -227,6 +247,7 @@ describe('always-valid property', () => {
           }
           for (const j of chain.jointAt) expect(pts.some((q) => Math.abs(q - j) < 1e-9)).toBe(true);
           if (sys.mounting === 'surface') power.surface++;
+          free.freeRails += sys.rails.filter((r) => r.modules.some((m) => m.offset !== undefined)).length;
         }
         // every object of a reachable state has a finite placement and a mesh whose reflectances the baker accepts
         placed += s.objects.length;
@@ -235,7 +256,7 @@ describe('always-valid property', () => {
       }),
       { seed: 20240917, numRuns: RUNS },
     );
-    console.log(`always-valid: ${RUNS} sequences, ${JSON.stringify({ counts, finishes, objects, power, placed })}`);
+    console.log(`always-valid: ${RUNS} sequences, ${JSON.stringify({ counts, finishes, objects, power, placed, free })}`);
     // both branches were exercised in bulk (at 2 000 sequences: 9 278 enabled, 15 157 refused steps;
     // 371 / 31 finishes, 2 561 / 1 172 object actions, 2 017 objects placed; bounds scale with RUNS)
     expect(counts.enabled).toBeGreaterThan(3 * RUNS);
@@ -250,5 +271,11 @@ describe('always-valid property', () => {
     expect(power.refused).toBeGreaterThan(RUNS / 2);
     expect(power.overloads).toBeGreaterThan(RUNS / 10);
     expect(power.surface).toBeGreaterThan(RUNS / 10);
+    // free positions and rail removals at any index (splits included), in bulk
+    expect(free.moves).toBeGreaterThan(RUNS / 10);
+    expect(free.refusedMoves).toBeGreaterThan(RUNS / 5);
+    expect(free.freeRails).toBeGreaterThan(RUNS / 10);
+    expect(free.removals).toBeGreaterThan(RUNS / 20);
+    expect(free.splits).toBeGreaterThan(RUNS / 100);
   }, 120_000);
 });

@@ -1,15 +1,17 @@
 /**
  * Light modules on a rail: the plus button, removal, type switches and settings.
  * Every change to a rail's module list is re-laid out by the rail's
- * distribution; whether the modules still fit (railModuleOffsets() is not null),
+ * distribution, or keeps the free positions of a freely arranged rail (moveModule); whether the modules still fit (railModuleOffsets() is not null),
  * offered CCTs and beams, and dimming are validate()'s rules, checked on the
  * result where the action is bound. These definitions word the refusals.
  */
 import { z } from 'zod';
 import { InputError } from '../../inputError';
 import type { ActionDefinition } from '../action';
-import { findModuleType } from '../catalogSchema';
-import type { ModuleInstance } from '../configuration';
+import { findModuleType, type Catalog } from '../catalogSchema';
+import type { Configuration, ModuleInstance, Rail } from '../configuration';
+import { isFreeRail, placeInLargestGap, placementStep, roundOffset, snapOffset } from '../freePositions';
+import { railModuleOffsets } from '../geometry';
 import { isTunable } from '../dmxPatch';
 import { newModule } from '../presets';
 import { findModule, findRail, replaceRail, takeId, updateModule } from './lookup';
@@ -21,7 +23,21 @@ const addParams = z.object({
   index: z.number().int().nonnegative().optional(),
 });
 
-/** The plus button: disabled once the module would not fit (the rail is full). */
+/** Problems that mean "the modules do not fit": a distribution that cannot hold them, or a free position that breaks a rule. */
+export const FIT_CODES: ReadonlySet<string> = new Set(['modules-do-not-fit', 'module-past-end', 'module-overlap']);
+
+/** [start, end) of each module of a rail, from its current layout (the state is valid, so it fits). */
+function occupied(rail: Rail, catalog: Catalog, skip = -1): [number, number][] {
+  const offsets = railModuleOffsets(rail, catalog);
+  if (!offsets) throw new InputError(`the modules of rail ${rail.id} do not fit it now`);
+  return rail.modules.flatMap((m, i) => (i === skip ? [] : [[offsets[i], offsets[i] + findModuleType(catalog, m.type).length] as [number, number]]));
+}
+
+/**
+ * The plus button: disabled once the module would not fit (the rail is full). On a freely arranged
+ * rail the new module goes, centred and snapped, into the largest free gap (`index` is then
+ * ignored: the position decides the order); with no gap long enough it is refused, naming the gap.
+ */
 export const addModule: ActionDefinition<z.infer<typeof addParams>> = {
   name: 'addModule',
   label: 'Add module',
@@ -31,15 +47,80 @@ export const addModule: ActionDefinition<z.infer<typeof addParams>> = {
     const [id, next] = takeId(state, 'm');
     const mods = [...ref.rail.modules];
     if (p.index !== undefined && p.index > mods.length) throw new InputError(`index ${p.index} is beyond the ${mods.length} modules of the rail`);
-    mods.splice(p.index ?? mods.length, 0, newModule(catalog, id, p.type));
-    return replaceRail(next, ref, { ...ref.rail, modules: mods });
+    const module = newModule(catalog, id, p.type);
+    if (!isFreeRail(ref.rail)) {
+      mods.splice(p.index ?? mods.length, 0, module);
+      return replaceRail(next, ref, { ...ref.rail, modules: mods });
+    }
+    const length = findModuleType(catalog, p.type).length;
+    const { offset } = placeInLargestGap(length, ref.rail.length, occupied(ref.rail, catalog), placementStep(catalog));
+    return replaceRail(next, ref, { ...ref.rail, modules: inRailOrder([...mods, { ...module, offset }]) });
   },
-  explain(problem, _state, p, catalog) {
-    if (problem.code !== 'modules-do-not-fit') return problem.message;
+  explain(problem, state, p, catalog) {
+    if (!FIT_CODES.has(problem.code)) return problem.message;
     const type = findModuleType(catalog, p.type);
+    const { rail } = findRail(state, p.railId);
+    if (isFreeRail(rail)) {
+      const { gap } = placeInLargestGap(type.length, rail.length, occupied(rail, catalog), placementStep(catalog));
+      return `no free gap on this rail holds a ${type.name} (${type.length} m): the largest is ${gap} m; move modules apart or choose a distribution`;
+    }
     return `no room for another ${type.name} (${type.length} m) on this rail`;
   },
 };
+
+/** Free modules sorted by offset (stable), so the list stays in rail order. */
+function inRailOrder(mods: readonly ModuleInstance[]): ModuleInstance[] {
+  return mods.map((m, i) => [m, i] as const).sort((a, b) => a[0].offset! - b[0].offset! || a[1] - b[1]).map(([m]) => m);
+}
+
+const moveParams = z.object({
+  moduleId: z.string(),
+  /** Requested start of the module, metres from its rail's start; snapped (freePositions.ts) before the rules are checked. */
+  offset: z.number(),
+});
+
+/**
+ * Moves a module along its rail to a free position (docs/model.md, "Free positions"). The rail
+ * becomes freely arranged: its other modules keep the positions their distribution gave them.
+ * The requested start snaps to the grid, the rail's ends and the neighbours' ends; a snapped
+ * position past an end or over another module is refused (never clamped), with the reason.
+ */
+export const moveModule: ActionDefinition<z.infer<typeof moveParams>> = {
+  name: 'moveModule',
+  label: 'Move module',
+  params: moveParams,
+  perform(state, p, catalog) {
+    const ref = findModule(state, p.moduleId);
+    const offset = snappedModuleOffset(state, p.moduleId, p.offset, catalog);
+    const now = railModuleOffsets(ref.rail, catalog);
+    if (!now) throw new InputError(`the modules of rail ${ref.rail.id} do not fit it now`);
+    const mods = ref.rail.modules.map((m, i) => ({ ...m, offset: i === ref.moduleIndex ? offset : roundOffset(now[i]) }));
+    return replaceRail(state, ref, { ...ref.rail, modules: inRailOrder(mods) });
+  },
+  explain(problem, state, p, catalog) {
+    if (!FIT_CODES.has(problem.code)) return problem.message;
+    const ref = findModule(state, p.moduleId);
+    const type = findModuleType(catalog, ref.module.type);
+    const offset = snappedModuleOffset(state, p.moduleId, p.offset, catalog);
+    const L = ref.rail.length;
+    const fmt = (x: number) => String(Math.round(x * 1000) / 1000);
+    if (offset < 0) return `${type.name} would start ${fmt(-offset)} m before the ${ref.railIndex > 0 ? 'connector at the ' : ''}start of this rail`;
+    if (offset + type.length > L) return `${type.name} would reach ${fmt(offset + type.length)} m, past the ${ref.railIndex < ref.system.rails.length - 1 ? 'connector at the ' : ''}end of this ${fmt(L)} m rail`;
+    const other = occupied(ref.rail, catalog, ref.moduleIndex).findIndex(([a, b]) => offset < b - 1e-9 && offset + type.length > a + 1e-9);
+    if (other >= 0) {
+      const m = ref.rail.modules.filter((_, i) => i !== ref.moduleIndex)[other];
+      return `${type.name} at ${fmt(offset)}–${fmt(offset + type.length)} m would overlap ${findModuleType(catalog, m.type).name} ${m.id}`;
+    }
+    return problem.message;
+  },
+};
+
+/** Where moveModule would put a module asked to start at `requested` (the planner's drag previews it). */
+export function snappedModuleOffset(state: Configuration, moduleId: string, requested: number, catalog: Catalog): number {
+  const ref = findModule(state, moduleId);
+  const length = findModuleType(catalog, ref.module.type).length;
+  return snapOffset(requested, length, ref.rail.length, occupied(ref.rail, catalog, ref.moduleIndex), placementStep(catalog));
+}
 
 const moduleIdParams = z.object({ moduleId: z.string() });
 
@@ -73,7 +154,7 @@ export const setModuleType: ActionDefinition<z.infer<typeof typeParams>> = {
     return updateModule(state, p.moduleId, { type: type.id, beam: type.defaultBeam, cct, ...(dmx ? { dmx } : {}) });
   },
   explain(problem, _state, p, catalog) {
-    if (problem.code !== 'modules-do-not-fit') return problem.message;
+    if (!FIT_CODES.has(problem.code)) return problem.message;
     const type = findModuleType(catalog, p.type);
     return `a ${type.name} (${type.length} m) does not fit here without clashing`;
   },

@@ -6,11 +6,13 @@
  * where the action is bound; these definitions only word the refusals.
  */
 import { z } from 'zod';
-import { InputError } from '../../inputError';
 import type { ActionDefinition } from '../action';
 import { DISTRIBUTIONS, findConnector, type Catalog } from '../catalogSchema';
-import type { Rail } from '../configuration';
-import { railModuleOffsets } from '../geometry';
+import type { Configuration, Feed, LightSystem, Rail } from '../configuration';
+import { plannedFeeds } from '../feedLoads';
+import { withoutOffsets } from '../freePositions';
+import { railModuleOffsets, railPlacements } from '../geometry';
+import { FIT_CODES } from './moduleActions';
 import { findRail, replaceSystem, systemIndex, takeId, updateRail } from './lookup';
 
 /** Nearest multiple of the catalog step, rounded to a micrometre so 1.3 stays 1.3. */
@@ -38,7 +40,7 @@ export const setRailLength: ActionDefinition<z.infer<typeof lengthParams>> = {
     return updateRail(state, p.railId, { length: snapRailLength(p.length, catalog) });
   },
   explain(problem, state, p, catalog) {
-    if (problem.code !== 'modules-do-not-fit') return problem.message;
+    if (!FIT_CODES.has(problem.code)) return problem.message;
     const { rail } = findRail(state, p.railId);
     const needed = minRailLength(rail, catalog) ?? catalog.rail.maxLength;
     return `${snapRailLength(p.length, catalog)} m would cut off modules; this rail needs at least ${needed} m (remove modules to shorten it)`;
@@ -51,8 +53,10 @@ export const setDistribution: ActionDefinition<z.infer<typeof distributionParams
   name: 'setDistribution',
   label: 'Distribution',
   params: distributionParams,
+  /** On a freely arranged rail this also clears the free positions: one step, undone as one. */
   perform(state, p) {
-    return updateRail(state, p.railId, { distribution: p.distribution });
+    const { rail } = findRail(state, p.railId);
+    return updateRail(state, p.railId, { distribution: p.distribution, modules: withoutOffsets(rail.modules) });
   },
   explain(problem, state, p) {
     return problem.code === 'modules-do-not-fit' ? `the modules do not fit '${p.distribution}' on this ${findRail(state, p.railId).rail.length} m rail` : problem.message;
@@ -88,20 +92,85 @@ export const addRail: ActionDefinition<z.infer<typeof addRailParams>> = {
 
 const railIdParams = z.object({ railId: z.string() });
 
-/** Removes the last rail of a snake (with its modules and joint); a system keeps at least one rail. */
+/**
+ * Removes any rail of a chain with its modules (docs/model.md, "Removing a rail"); a system keeps
+ * at least one rail. The last rail: the chain ends one connector earlier. The first rail: the
+ * chain starts at the next rail (the system's anchor and heading move there). A middle rail: the
+ * chain splits into two systems, each keeping its side's rails, joints, modules and feeds (see
+ * splitChain); refused when a part would be invalid.
+ */
 export const removeRail: ActionDefinition<z.infer<typeof railIdParams>> = {
   name: 'removeRail',
   label: 'Remove rail',
   params: railIdParams,
-  perform(state, p) {
+  perform(state, p, catalog) {
     const { systemIndex: si, system, railIndex } = findRail(state, p.railId);
-    if (railIndex !== system.rails.length - 1) throw new InputError('only the last rail of a chain can be removed');
-    // The connector before the removed rail becomes the chain end: a feed there stays where it is, now at 'end'.
-    const feeds = system.feeds.map((f) => (typeof f.at === 'object' && f.at.joint === railIndex - 1 ? { ...f, at: 'end' as const } : f));
-    return replaceSystem(state, si, { ...system, rails: system.rails.slice(0, -1), joints: system.joints.slice(0, railIndex - 1), feeds });
+    const n = system.rails.length;
+    if (n > 1 && railIndex === n - 1) {
+      // The connector before the removed rail becomes the chain end: a feed there stays where it is, now at 'end'.
+      const feeds = system.feeds.map((f) => (typeof f.at === 'object' && f.at.joint === railIndex - 1 ? { ...f, at: 'end' as const } : f));
+      return replaceSystem(state, si, { ...system, rails: system.rails.slice(0, -1), joints: system.joints.slice(0, railIndex - 1), feeds });
+    }
+    if (n > 1 && railIndex === 0) {
+      // The first connector becomes the chain start: a feed there stays where it is, now at 'start'; the others shift down one connector.
+      const placement = railPlacements(system, catalog)[1];
+      const feeds = system.feeds.map((f) => (typeof f.at === 'object' ? { ...f, at: f.at.joint === 0 ? ('start' as const) : { joint: f.at.joint - 1 } } : f));
+      return replaceSystem(state, si, { ...system, x: placement.start[0], z: placement.start[1], rotation: placement.heading, rails: system.rails.slice(1), joints: system.joints.slice(1), feeds });
+    }
+    if (n === 1) return replaceSystem(state, si, { ...system, rails: [], joints: [] });
+    return splitChain(state, si, railIndex, catalog);
   },
-  explain(problem) {
-    if (problem.code === 'feed-duplicate') return 'a feed at the last connector and one at the chain end would meet; remove one of them first';
-    return problem.code === 'no-rails' ? 'a system keeps at least one rail; delete the system instead' : problem.message;
+  explain(problem, state, p) {
+    const { system, railIndex } = findRail(state, p.railId);
+    if (problem.code === 'feed-duplicate') {
+      return railIndex === 0
+        ? 'a feed at the chain start and one at the first connector would meet; remove one of them first'
+        : 'a feed at the last connector and one at the chain end would meet; remove one of them first';
+    }
+    if (problem.code === 'no-rails') return 'a system keeps at least one rail; delete the system instead';
+    if (railIndex > 0 && railIndex < system.rails.length - 1 && problem.code !== 'feed-overload') return `splitting the chain here would leave an invalid part: ${problem.message}`;
+    return problem.message;
   },
 };
+
+/**
+ * Removes middle rail k of system si: rails 0…k−1 stay in the system (joints 0…k−2), rails k+1…
+ * become a new system (joints k+1…) anchored at rail k+1's start with its heading, same
+ * suspension and mounting. Feeds follow their position: connector k−1 becomes the first part's
+ * end, connector k the second part's start, the chain end stays the second part's end, connectors
+ * past k shift down by k+1. A part left without a feed gets the feeds a new system of its shape
+ * gets (plannedFeeds: the default driver at its start, or a driver that carries its load);
+ * when no driver can, validate() refuses the split with the overload.
+ */
+function splitChain(state: Configuration, si: number, k: number, catalog: Catalog): Configuration {
+  const system = state.systems[si];
+  const placement = railPlacements(system, catalog)[k + 1];
+  const firstFeeds: Feed[] = [];
+  const secondFeeds: Feed[] = [];
+  for (const f of system.feeds) {
+    if (f.at === 'start') firstFeeds.push(f);
+    else if (f.at === 'end') secondFeeds.push(f);
+    else if (f.at.joint < k - 1) firstFeeds.push(f);
+    else if (f.at.joint === k - 1) firstFeeds.push({ ...f, at: 'end' });
+    else if (f.at.joint === k) secondFeeds.push({ ...f, at: 'start' });
+    else secondFeeds.push({ ...f, at: { joint: f.at.joint - k - 1 } });
+  }
+  const [newId, withSystemId] = takeId(state, 's');
+  let next = withSystemId;
+  const first: LightSystem = { ...system, rails: system.rails.slice(0, k), joints: system.joints.slice(0, k - 1), feeds: firstFeeds };
+  const { presetId: _preset, ...rest } = system;
+  const second: LightSystem = { ...rest, id: newId, x: placement.start[0], z: placement.start[1], rotation: placement.heading, rails: system.rails.slice(k + 1), joints: system.joints.slice(k + 1), feeds: secondFeeds };
+  const withFeeds = (part: LightSystem): LightSystem => {
+    if (part.feeds.length > 0) return part;
+    const planned = plannedFeeds(part, catalog);
+    const feeds = planned.map((f) => {
+      let id: string;
+      [id, next] = takeId(next, 'f');
+      return { id, ...f };
+    });
+    return { ...part, feeds };
+  };
+  const a = withFeeds(first);
+  const b = withFeeds(second);
+  return { ...next, systems: [...next.systems.slice(0, si), a, b, ...next.systems.slice(si + 1)] };
+}
