@@ -1,3 +1,4 @@
+import { InputError } from '../../core/inputError';
 import type { Photometry } from '../../core/photometry/types';
 import type { BakeScene } from '../bake/bakeScene';
 import type { BakeSettings } from '../bake/bakeSettings';
@@ -168,6 +169,11 @@ export function levelTexels(room: QualityScene['room'], level: QualityLevel): nu
  * on its first bake, at every level alike.
  */
 export function predictQuality(calibration: BakeCalibration, scene: QualityScene = TYPICAL_QUALITY_SCENE): QualityPrediction[] {
+  // A stored calibration from another version, or a hand-edited one, must not turn into NaN predictions (NaN fits no target).
+  for (const key of ['msPerTexelSample', 'msPerTexelSource', 'directCompileMs'] as const) {
+    const v = calibration[key];
+    if (typeof v !== 'number' || !Number.isFinite(v) || v < 0) throw new InputError(`calibration: ${key} is ${String(v)}, not a finite number ≥ 0`);
+  }
   return QUALITY_LEVEL_NAMES.map((level) => {
     const s = resolveBakeSettings(QUALITY_LEVELS[level]);
     const texels = levelTexels(scene.room, level);

@@ -53,6 +53,13 @@ describe('chooseQuality', () => {
     expect(chooseQuality(device(perSample * 0.5 / ratio, perSource))).toBe('best');
   });
 
+  it('refuses a calibration without finite costs (a stored one from another version), naming the field', () => {
+    const stale = { ...device(1e-4, 1e-5), directCompileMs: undefined } as unknown as BakeCalibration;
+    expect(() => chooseQuality(stale)).toThrow(/directCompileMs is undefined/);
+    expect(() => chooseQuality(device(Number.NaN, 1e-5))).toThrow(/msPerTexelSample is NaN/);
+    expect(() => chooseQuality(device(1e-4, -1))).toThrow(/msPerTexelSource is -1/);
+  });
+
   it('never gives a device that is at least as fast in every cost a lower level (monotone)', () => {
     const cost = fc.double({ min: 1e-8, max: 1e-2, noNaN: true });
     const factor = fc.double({ min: 0, max: 1, noNaN: true });
