@@ -76,6 +76,7 @@ export function resolveBakeSettings(partial: Partial<BakeSettings> = {}): BakeSe
   check(Number.isInteger(s.seed) && s.seed >= 0, `seed ${s.seed} is not a non-negative integer`);
   check(Number.isFinite(s.sourceSpacing) && s.sourceSpacing >= 0, `sourceSpacing ${s.sourceSpacing} must be ≥ 0`);
   check(s.nearField === undefined || s.nearField === 'split' || s.nearField === 'point', `nearField "${String(s.nearField)}" is not split or point`);
+  check(s.lampUniforms === undefined || typeof s.lampUniforms === 'boolean', `lampUniforms ${String(s.lampUniforms)} is not true or false`);
   check(Number.isInteger(s.brightPatches) && s.brightPatches >= 0 && s.brightPatches <= 1024, `brightPatches ${s.brightPatches} is not an integer in 0..1024`);
   check(Number.isInteger(s.texelSupersampling) && s.texelSupersampling >= 1 && s.texelSupersampling <= 32, `texelSupersampling ${s.texelSupersampling} is not an integer in 1..32`);
   check(Number.isInteger(s.maxSourcesPerAxis) && s.maxSourcesPerAxis >= 1 && s.maxSourcesPerAxis <= 64, `maxSourcesPerAxis ${s.maxSourcesPerAxis} is not an integer in 1..64`);
