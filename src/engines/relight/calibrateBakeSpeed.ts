@@ -17,8 +17,10 @@ export interface BakeCalibration {
   /** Direct pass cost: ms per texel per point source (warm, GPU work included). */
   msPerTexelSource: number;
   /**
-   * What a new luminaire group costs before its direct pass can run: its direct program is
-   * generated with the group's point sources as constants, so every group compiles one (ms).
+   * What a group with a photometry not seen before costs before its direct pass can run: the
+   * relight engine's direct bases take the lamps as uniforms (`lampUniforms`), so a program is
+   * compiled per surface and photometry, and a moved or added module of a known type compiles
+   * nothing (ms).
    */
   directCompileMs: number;
   /** What the first (cold) calibration bake cost more than the warm one: every program compiled once, ms. */
@@ -61,13 +63,19 @@ export const CALIBRATION_SETTINGS: Partial<BakeSettings> = {
   seed: 1,
 };
 
-/** The calibration luminaire moved by `dx` m: a new group, hence a new direct program (its compile is timed). */
-const movedScene = (dx: number): BakeScene => ({ ...CALIBRATION_SCENE, luminaires: [{ ...CALIBRATION_SCENE.luminaires[0], position: [1.5 + dx, 1.25, 1.5] }] });
+/**
+ * A luminaire of a new type (photometry cos^`power` γ, a new direct program) at the centre moved
+ * by `dx` m: the relight engine's direct-basis bake of a group.
+ */
+const groupScene = (power: number, dx: number): BakeScene => ({
+  ...CALIBRATION_SCENE,
+  luminaires: [{ ...CALIBRATION_SCENE.luminaires[0], photometry: calibrationPhotometry(power), position: [1.5 + dx, 1.25, 1.5] }],
+});
 
-/** I(γ) = CALIBRATION_PEAK_CD · cos γ below the horizon, 0 above, every 5°; absolute photometry; 0.24 × 0.09 m opening. */
-function calibrationPhotometry(): Photometry {
+/** I(γ) = CALIBRATION_PEAK_CD · cos^power γ below the horizon, 0 above, every 5°; absolute photometry; 0.24 × 0.09 m opening. */
+function calibrationPhotometry(power = 1): Photometry {
   const angles = Array.from({ length: 37 }, (_, i) => i * 5);
-  const candela = angles.map((g) => (g < 90 ? CALIBRATION_PEAK_CD * Math.cos((g * Math.PI) / 180) : 0));
+  const candela = angles.map((g) => (g < 90 ? CALIBRATION_PEAK_CD * Math.cos((g * Math.PI) / 180) ** power : 0));
   return {
     format: 'IES', version: 'calibration', manufacturer: '', luminaire: 'calibration downlight', catalogNumber: '', keywords: {},
     photometricType: 'C', symmetry: 'rotational', verticalAngles: angles, horizontalAngles: [0], candela: [candela],
@@ -86,32 +94,34 @@ const atLeast = (ms: number) => Math.max(ms, 0.001);
 
 /**
  * Bakes the calibration scene on `gl`: once cold (compiles every program: `compileMs` is its
- * extra time over the fastest warm one), twice warm, timed per pass (`syncTimings`: each pass
- * waits for the GPU), then twice a new group (the source moved: a new direct program) direct-only,
- * each followed by the same group again warm: the difference is `directCompileMs`. Each figure
- * is the smaller of its two trials (other work on the device only ever adds time). Costs are per
- * unit of work, so they carry over to any room. About 1–4 s on a 2-core software renderer
- * (mostly the first compile), tens of ms on a GPU.
+ * extra time over the fastest warm one) and twice warm, timed per pass (`syncTimings`: each pass
+ * waits for the GPU) for the indirect cost; then, as the relight engine bakes a group's direct
+ * basis (direct only, lamps as uniforms), twice a luminaire of a new type (cos² and cos³
+ * distributions: a new program), each followed by the same type moved 10 cm (no compile): the
+ * difference is `directCompileMs`, the moved one's direct pass gives `msPerTexelSource`. Each
+ * figure is the smaller of its two trials (other work on the device only ever adds time). Costs
+ * are per unit of work, so they carry over to any room. About 0.5–4 s on a 2-core software
+ * renderer (mostly the first compile), tens of ms on a GPU.
  */
 export function calibrateBakeSpeed(gl: WebGL2RenderingContext): BakeCalibration {
   const baker = createBaker(gl);
   try {
     const settings = resolveBakeSettings(CALIBRATION_SETTINGS);
-    const directOnly = { ...settings, bounces: 0 };
+    const basis = { ...settings, bounces: 0, lampUniforms: true };
     const cold = baker.bake(CALIBRATION_SCENE, settings).report;
     const warm = [0, 1].map(() => baker.bake(CALIBRATION_SCENE, settings).report);
-    const compiles = [0.1, 0.2].map((dx) => {
-      const newGroup = baker.bake(movedScene(dx), directOnly).report.timings_ms.total;
-      const sameGroup = baker.bake(movedScene(dx), directOnly).report.timings_ms.total;
-      return Math.max(0, newGroup - sameGroup);
+    const groups = [2, 3].map((power) => {
+      const newType = baker.bake(groupScene(power, 0), basis).report;
+      const knownType = baker.bake(groupScene(power, 0.1), basis).report;
+      return { compile: Math.max(0, newType.timings_ms.total - knownType.timings_ms.total), direct: knownType.timings_ms.direct };
     });
     const texels = warm[0].totalTexels;
     const pointSources = warm[0].pointSources;
     const least = (f: (t: (typeof warm)[number]['timings_ms']) => number) => atLeast(Math.min(...warm.map((r) => f(r.timings_ms))));
     return {
       msPerTexelSample: least((t) => t.indirect + t.blend + t.blur) / (texels * settings.samples * settings.bounces),
-      msPerTexelSource: least((t) => t.direct) / (texels * pointSources),
-      directCompileMs: Math.min(...compiles),
+      msPerTexelSource: atLeast(Math.min(...groups.map((g) => g.direct))) / (texels * pointSources),
+      directCompileMs: Math.min(...groups.map((g) => g.compile)),
       compileMs: Math.max(0, cold.timings_ms.total - least((t) => t.total)),
       renderer: glRenderer(gl),
       work: { texels, pointSources, samples: settings.samples, bounces: settings.bounces },
@@ -128,6 +138,8 @@ export interface QualityScene {
   groups: number;
   /** Point sources per group (the split near field makes 1–64 per luminaire; docs/baker.md). */
   pointSourcesPerGroup: number;
+  /** Distinct photometries among the groups (module types and beams): each compiles its direct programs once. */
+  photometries: number;
   /** Indirect solves to finish: 1 when the engine shares one indirect solve, else one per group. */
   indirectSolves: number;
 }
@@ -137,10 +149,10 @@ export interface QualityScene {
  * default 5 × 4 × 2.8 m room with the L-corner preset (6 modules); 10 point sources per module
  * is the mean over the default catalog's five module types under the split near field
  * (spot 9, flood 12, linear 16, washer 6, direct/indirect 8: the bake reports' pointSources),
- * as many as the calibration luminaire has.
+ * as many as the calibration luminaire has; corner-l has 3 photometries (spot, flood, washer).
  * The relight engine solves the indirect light once for all groups (createRelightEngine).
  */
-export const TYPICAL_QUALITY_SCENE: QualityScene = { room: { width: 5, height: 2.8, depth: 4 }, groups: 6, pointSourcesPerGroup: 10, indirectSolves: 1 };
+export const TYPICAL_QUALITY_SCENE: QualityScene = { room: { width: 5, height: 2.8, depth: 4 }, groups: 6, pointSourcesPerGroup: 10, photometries: 3, indirectSolves: 1 };
 
 /** Targets of the automatic choice (issue #15): first lit frame within 1 s, final light within a few seconds. */
 export const FIRST_LIT_TARGET_MS = 1000;
@@ -149,7 +161,7 @@ export const SOLVE_TARGET_MS = 8000;
 export interface QualityPrediction {
   level: QualityLevel;
   texels: number;
-  /** Predicted time to the first lit frame (every group's direct basis, its program's compile included), ms. */
+  /** Predicted time to the first lit frame (every group's direct basis, each photometry's program compile included), ms. */
   firstLitMs: number;
   /** Predicted time of the indirect solve(s) after that, ms. */
   solveMs: number;
@@ -163,7 +175,7 @@ export function levelTexels(room: QualityScene['room'], level: QualityLevel): nu
 
 /**
  * Each level's predicted cost on a calibrated device:
- * firstLit = groups × (directCompileMs + texels × pointSources × msPerTexelSource),
+ * firstLit = photometries × directCompileMs + groups × texels × pointSources × msPerTexelSource,
  * solve = indirectSolves × texels × samples × bounces × msPerTexelSample.
  * The one-time compile of the shared programs (compileMs) is left out: a device pays it once,
  * on its first bake, at every level alike.
@@ -180,7 +192,7 @@ export function predictQuality(calibration: BakeCalibration, scene: QualityScene
     return {
       level,
       texels,
-      firstLitMs: scene.groups * (calibration.directCompileMs + texels * scene.pointSourcesPerGroup * calibration.msPerTexelSource),
+      firstLitMs: scene.photometries * calibration.directCompileMs + scene.groups * texels * scene.pointSourcesPerGroup * calibration.msPerTexelSource,
       solveMs: scene.indirectSolves * texels * s.samples * Math.max(1, s.bounces) * calibration.msPerTexelSample,
     };
   });

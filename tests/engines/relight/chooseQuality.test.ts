@@ -23,12 +23,12 @@ describe('quality levels: predicted cost', () => {
     expect(levelTexels(TYPICAL_QUALITY_SCENE.room, 'balanced')).toBe(2 * 8000 + 2 * 5600 + 2 * 4480);
   });
 
-  it('predicts first lit = groups × (direct compile + texels × sources × cost), solve = solves × texels × samples × bounces × cost', () => {
+  it('predicts first lit = photometries × direct compile + groups × texels × sources × cost, solve = solves × texels × samples × bounces × cost', () => {
     const cal = device(1e-4, 2e-5, 50);
-    const scene = { room: { width: 4, height: 2.5, depth: 3 }, groups: 3, pointSourcesPerGroup: 5, indirectSolves: 2 };
+    const scene = { room: { width: 4, height: 2.5, depth: 3 }, groups: 3, pointSourcesPerGroup: 5, photometries: 2, indirectSolves: 2 };
     for (const p of predictQuality(cal, scene)) {
       const s = resolveBakeSettings(QUALITY_LEVELS[p.level]);
-      expect(p.firstLitMs).toBeCloseTo(3 * (50 + p.texels * 5 * 2e-5), 9);
+      expect(p.firstLitMs).toBeCloseTo(2 * 50 + 3 * p.texels * 5 * 2e-5, 9);
       expect(p.solveMs).toBeCloseTo(2 * p.texels * s.samples * s.bounces * 1e-4, 9);
     }
   });
@@ -65,7 +65,7 @@ describe('chooseQuality', () => {
     const factor = fc.double({ min: 0, max: 1, noNaN: true });
     fc.assert(
       fc.property(cost, cost, fc.double({ min: 0, max: 2000, noNaN: true }), factor, factor, factor, fc.integer({ min: 1, max: 20 }), fc.integer({ min: 1, max: 64 }), (a, b, compile, fa, fb, fc2, groups, sources) => {
-        const scene = { ...TYPICAL_QUALITY_SCENE, groups, pointSourcesPerGroup: sources };
+        const scene = { ...TYPICAL_QUALITY_SCENE, groups, pointSourcesPerGroup: sources, photometries: Math.min(groups, 5) };
         const slow = device(a, b, compile);
         const fast = device(a * fa, b * fb, compile * fc2);
         expect(rank(chooseQuality(fast, scene))).toBeGreaterThanOrEqual(rank(chooseQuality(slow, scene)));
