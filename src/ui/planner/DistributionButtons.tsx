@@ -11,11 +11,12 @@ export const DISTRIBUTION_LABELS: Record<Distribution, { short: string; long: st
 
 /**
  * The four distribution options of a rail (configurator paper, fig. 9): each enabled
- * exactly when the model's `setDistribution` would accept it. `compact` shows
+ * exactly when the model's `setDistribution` would accept it. `current` is null on a
+ * freely arranged rail (none is pressed; choosing one clears the free positions). `compact` shows
  * the pictogram (in the plan, next to the rail); otherwise the option's name
  * (options panel). The long label is always the accessible name.
  */
-export function DistributionButtons({ railId, current, gate, compact = false }: { railId: string; current: Distribution; gate: ActionGate; compact?: boolean }) {
+export function DistributionButtons({ railId, current, gate, compact = false }: { railId: string; current: Distribution | null; gate: ActionGate; compact?: boolean }) {
   return (
     <>
       {DISTRIBUTIONS.map((d) => (

@@ -1,6 +1,7 @@
 import type { CSSProperties, ReactNode } from 'react';
 import type { Catalog } from '../../core/model/catalogSchema';
 import type { Configuration, LightSystem } from '../../core/model/configuration';
+import { isFreeRail } from '../../core/model/freePositions';
 import { modulePlacements, railPlacements, type PlanVec } from '../../core/model/geometry';
 import { ActionButton } from './ActionButton';
 import { DistributionButtons } from './DistributionButtons';
@@ -154,7 +155,7 @@ function ModuleLevelControls({ system, catalog, view, viewport, selection, gate,
       if (visible(distPos, viewport)) {
         out.push(
           <Positioned key={`dist-${rail.id}`} at={distPos} className="chip-row" testId={`distribution-${rail.id}`}>
-            <DistributionButtons railId={rail.id} current={rail.distribution} gate={gate} compact />
+            <DistributionButtons railId={rail.id} current={isFreeRail(rail) ? null : rail.distribution} gate={gate} compact />
           </Positioned>,
         );
       }

@@ -173,6 +173,9 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
     })),
   );
   const systemDrag = drag && 'systemId' in drag ? drag : null;
+  // A module dragged along its rail: its system is drawn as it would be with the module there.
+  const moved = drag && 'moduleId' in drag ? drag : null;
+  const systems = moved ? config.systems.map((s) => (s.id === moved.preview.id ? moved.preview : s)) : config.systems;
   const { width, depth, height } = config.room;
   const step = gridStep(view.scale);
   const gridLines: { x1: number; z1: number; x2: number; z2: number; major: boolean }[] = [];
@@ -193,7 +196,7 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
         ))}
         <ObjectShapes config={config} selectedId={selection.objectId} drag={drag} />
         <g clipPath={`url(#${clipId})`} pointerEvents="none">
-          {config.systems.map((s) => {
+          {systems.map((s) => {
             const d = systemDrag?.systemId === s.id ? systemDrag.delta : { x: 0, z: 0 };
             // Where the modules really are: the suspension, or the surface mount's drop below the ceiling.
             const h = moduleHeight(s, { height }, catalog);
@@ -233,11 +236,12 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
           })}
         </g>
         <rect x={0} y={0} width={width} height={depth} fill="none" stroke="#1d2330" strokeWidth={3} vectorEffect="non-scaling-stroke" />
-        {config.systems.map((s) => {
+        {systems.map((s) => {
           const d = systemDrag?.systemId === s.id ? systemDrag.delta : { x: 0, z: 0 };
           const refused = systemDrag?.systemId === s.id && systemDrag.invalid;
+          const moduleRefused = moved?.preview.id === s.id && moved.invalid;
           return (
-            <g key={s.id} transform={`translate(${d.x} ${d.z})`} opacity={refused ? 0.4 : 1} data-drop-refused={refused || undefined}>
+            <g key={s.id} transform={`translate(${d.x} ${d.z})`} opacity={refused ? 0.4 : 1} data-drop-refused={refused || undefined} data-module-drag-refused={moduleRefused || undefined}>
               <SystemShape
                 system={s}
                 catalog={catalog}

@@ -5,7 +5,9 @@ import { detailLevel } from './detailLevel';
 import { type KeyChord, findByChord } from './keyChord';
 import { type PlanHit, planHitTest } from './planHitTest';
 import type { ActionParams } from '../../core/model/actionDefinitions';
-import type { MeshUnits, ObjectPlacement } from '../../core/model/configuration';
+import { attemptAction } from '../../core/model/actionDefinitions';
+import type { LightSystem, MeshUnits, ObjectPlacement } from '../../core/model/configuration';
+import { type ModuleOnRail, alongRail, moduleOnRail } from './moduleMoves';
 import { findFurnitureItem } from '../../core/model/furniture/furnitureLibrary';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
 import { followableDelta, movedPlacement, wallPlacementNear } from './objectMoves';
@@ -28,7 +30,23 @@ import {
  * A system or an object being dragged: drawn offset by `delta` (metres) until dropped; `invalid`
  * where it may not be dropped. A wall item's delta is only the part along its wall.
  */
-export type DragPreview = { systemId: string; delta: PlanPoint; invalid: boolean } | { objectId: string; delta: PlanPoint; invalid: boolean };
+export type DragPreview =
+  | { systemId: string; delta: PlanPoint; invalid: boolean }
+  | { objectId: string; delta: PlanPoint; invalid: boolean }
+  | ModuleDragPreview;
+
+/**
+ * A module being dragged along its rail: its system as it would be with the module at `offset`,
+ * the last position moveModule accepts (snapped); `invalid` while the pointer is at a refused one
+ * (the reason is in the status line and the module stays at `offset`).
+ */
+export interface ModuleDragPreview {
+  moduleId: string;
+  /** The module's system with the module at `offset` (what the plan draws in its place). */
+  preview: LightSystem;
+  offset: number;
+  invalid: boolean;
+}
 
 /** What changed: the view (animated for buttons, wheel and keys; at once for fingers), or the drag preview. */
 export type PlannerEvent = { kind: 'view'; animate: boolean } | { kind: 'drag' };
@@ -50,6 +68,7 @@ type Gesture =
   | { mode: 'pan'; last: ScreenPoint }
   | { mode: 'system'; id: string; down: ScreenPoint; startScale: number }
   | { mode: 'object'; id: string; down: ScreenPoint; startScale: number }
+  | { mode: 'module'; id: string; on: ModuleOnRail; grab: number; lastValid: number; lastReason: string | null }
   | { mode: 'pinch'; view: PlanView; world: PlanPoint; d0: number };
 
 /**
@@ -216,7 +235,12 @@ export class PlannerController implements CommandContext {
     if (g.mode === 'pending') {
       // Below the threshold the press may still be a tap: nothing moves yet.
       if (Math.abs(at.sx - g.down.sx) < DRAG_THRESHOLD_PX && Math.abs(at.sy - g.down.sy) < DRAG_THRESHOLD_PX) return;
-      if (g.hit.systemId) {
+      const on = g.hit.moduleId && detailLevel(this.view.scale) === 'module' ? this.moduleOn(g.hit.moduleId) : null;
+      if (g.hit.moduleId && on) {
+        // Zoomed in to modules: the module slides along its rail (the pointer projected onto it).
+        this.gesture = { mode: 'module', id: g.hit.moduleId, on, grab: alongRail(on, screenToWorld(this.view, g.down)) - on.offset, lastValid: on.offset, lastReason: null };
+        if (this.store.getState().selection?.id !== g.hit.moduleId) this.store.getState().select({ kind: 'module', id: g.hit.moduleId });
+      } else if (g.hit.systemId) {
         this.gesture = { mode: 'system', id: g.hit.systemId, down: g.down, startScale: this.view.scale };
         if (this.store.getState().selection?.id !== g.hit.systemId) this.store.getState().select({ kind: 'system', id: g.hit.systemId });
       } else if (g.hit.objectId) {
@@ -238,6 +262,8 @@ export class PlannerController implements CommandContext {
       const s = this.store.getState().config.systems.find((x) => x.id === cur.id);
       const invalid = !s || this.store.getState().isEnabled('moveSystem', { systemId: cur.id, x: s.x + delta.x, z: s.z + delta.z }) !== true;
       this.setDrag({ systemId: cur.id, delta, invalid });
+    } else if (cur?.mode === 'module') {
+      this.moduleDragTo(cur, alongRail(cur.on, screenToWorld(this.view, at)) - cur.grab);
     } else if (cur?.mode === 'object') {
       const o = this.store.getState().config.objects.find((x) => x.id === cur.id);
       if (!o) return;
@@ -255,6 +281,42 @@ export class PlannerController implements CommandContext {
     if (g?.mode === 'pending') this.tap(g.hit);
     else if (g?.mode === 'system') this.drop(g.id, this.pointerDelta(g, at));
     else if (g?.mode === 'object') this.dropObject(g.id, this.pointerDelta(g, at));
+    else if (g?.mode === 'module') this.dropModule(g);
+  }
+
+  private moduleOn(moduleId: string): ModuleOnRail | null {
+    const { config, catalog } = this.store.getState();
+    return moduleOnRail(config, catalog, moduleId);
+  }
+
+  /**
+   * The dragged module asked to start at `requested` metres along its rail: previewed there
+   * (snapped) when moveModule accepts it; otherwise it stays at the last accepted position and
+   * the reason is shown (once per new reason, not on every pointer move).
+   */
+  private moduleDragTo(g: Extract<Gesture, { mode: 'module' }>, requested: number): void {
+    const { config, catalog } = this.store.getState();
+    const outcome = attemptAction(config, 'moveModule', { moduleId: g.id, offset: requested }, catalog);
+    const systemOf = (c: typeof config) => c.systems.find((x) => x.id === g.on.systemId);
+    if (outcome.ok) {
+      const on = moduleOnRail(outcome.next, catalog, g.id);
+      const preview = systemOf(outcome.next);
+      if (!on || !preview) return;
+      this.gesture = { ...g, lastValid: on.offset, lastReason: null };
+      this.setDrag({ moduleId: g.id, preview, offset: on.offset, invalid: false });
+      return;
+    }
+    if (outcome.reason !== g.lastReason) this.explain(outcome.reason);
+    this.gesture = { ...g, lastReason: outcome.reason };
+    const kept = this.drag && 'moduleId' in this.drag ? this.drag.preview : systemOf(config);
+    if (kept) this.setDrag({ moduleId: g.id, preview: kept, offset: g.lastValid, invalid: true });
+  }
+
+  /** One undoable moveModule to the last accepted position, when it differs from where the module was. */
+  private dropModule(g: Extract<Gesture, { mode: 'module' }>): void {
+    this.setDrag(null);
+    if (Math.abs(g.lastValid - g.on.offset) < 1e-9) return;
+    this.run('moveModule', { moduleId: g.id, offset: g.lastValid });
   }
 
   /** The press was taken over (a second finger, the browser): a drag is dropped without moving anything. */

@@ -1,5 +1,6 @@
 import type { Catalog } from '../../core/model/catalogSchema';
 import type { LightSystem, Rail } from '../../core/model/configuration';
+import { isFreeRail } from '../../core/model/freePositions';
 import type { ActionGate } from './actionGate';
 import { DistributionButtons } from './DistributionButtons';
 import { GatedButton } from './GatedButton';
@@ -7,10 +8,9 @@ import { OptionChips } from './OptionChips';
 import { OptionsSection } from './OptionsSection';
 import { RailLengthField } from './RailLengthField';
 
-/** A selected rail's settings: length, module distribution, add modules, and removing it when it is the chain's last. */
+/** A selected rail's settings: length, module distribution, add modules, and removing it (any rail of a chain of two or more: a middle one splits the chain). */
 export function RailOptions({ rail, system, catalog, gate, onClose }: { rail: Rail; system: LightSystem; catalog: Catalog; gate: ActionGate; onClose: () => void }) {
   const railIndex = system.rails.indexOf(rail);
-  const last = railIndex === system.rails.length - 1;
   return (
     <OptionsSection title={`Rail ${railIndex + 1}`} onClose={onClose}>
       <div className="field">
@@ -21,7 +21,7 @@ export function RailOptions({ rail, system, catalog, gate, onClose }: { rail: Ra
         </span>
       </div>
       <OptionChips title="Module distribution">
-        <DistributionButtons railId={rail.id} current={rail.distribution} gate={gate} />
+        <DistributionButtons railId={rail.id} current={isFreeRail(rail) ? null : rail.distribution} gate={gate} />
       </OptionChips>
       <OptionChips title="Add a module">
         {catalog.moduleTypes.map((t) => (
@@ -30,7 +30,7 @@ export function RailOptions({ rail, system, catalog, gate, onClose }: { rail: Ra
           </GatedButton>
         ))}
       </OptionChips>
-      {last && system.rails.length > 1 && <GatedButton gate={gate} action="removeRail" params={{ railId: rail.id }} label="Remove this rail" />}
+      {system.rails.length > 1 && <GatedButton gate={gate} action="removeRail" params={{ railId: rail.id }} label="Remove this rail" />}
     </OptionsSection>
   );
 }

@@ -3,6 +3,8 @@ import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore
 import type { UiStore } from '../../core/store/uiStore';
 import { deleteTarget } from './deleteTarget';
 import type { KeySpec } from './keyChord';
+import { placementStep } from '../../core/model/freePositions';
+import { moduleOnRail, stepAlongRail } from './moduleMoves';
 import { followableDelta, movedPlacement } from './objectMoves';
 import { selectionPath } from './selection';
 
@@ -124,6 +126,16 @@ function rotateCommand(id: string, label: string, keys: KeySpec[], systemBy: num
  * across the wall is refused with the reason).
  */
 function stepped(c: CommandContext, dx: number, dz: number): { name: ActionName; params: Record<string, unknown> } | { reason: string } {
+  const { config, catalog, selection } = c.store.getState();
+  const moduleId = selectionPath(config, selection).moduleId;
+  if (moduleId) {
+    // A selected module slides along its rail by one snap step (docs/planner.md, "Moving a module").
+    const on = moduleOnRail(config, catalog, moduleId);
+    if (!on) return { reason: 'this module has no position on its rail now' };
+    const sign = stepAlongRail(on, dx, dz);
+    if (sign === 0) return { reason: 'a module slides along its rail: use the arrows along it' };
+    return { name: 'moveModule', params: { moduleId, offset: on.offset + sign * placementStep(catalog) } };
+  }
   const o = selectedObject(c);
   if (o) {
     const d = followableDelta(o.placement, { x: dx, z: dz });

@@ -272,10 +272,11 @@ describe('always-valid property', () => {
     expect(power.overloads).toBeGreaterThan(RUNS / 10);
     expect(power.surface).toBeGreaterThan(RUNS / 10);
     // free positions and rail removals at any index (splits included), in bulk
+    // (at 5 000 sequences: 739 / 2 419 moves, 598 free rails at the ends, 213 removals, 72 splits)
     expect(free.moves).toBeGreaterThan(RUNS / 10);
-    expect(free.refusedMoves).toBeGreaterThan(RUNS / 5);
-    expect(free.freeRails).toBeGreaterThan(RUNS / 10);
-    expect(free.removals).toBeGreaterThan(RUNS / 20);
-    expect(free.splits).toBeGreaterThan(RUNS / 100);
+    expect(free.refusedMoves).toBeGreaterThan(RUNS / 4);
+    expect(free.freeRails).toBeGreaterThan(RUNS / 15);
+    expect(free.removals).toBeGreaterThan(RUNS / 40);
+    expect(free.splits).toBeGreaterThan(RUNS / 200);
   }, 120_000);
 });

@@ -167,11 +167,11 @@ describe('objects in scene files and share links', () => {
     return run(s, 'addObject', { source: { kind: 'library', item: 'picture' } });
   };
 
-  it('round-trips objects and imported meshes (base64 typed arrays) through a version 4 file', () => {
+  it('round-trips objects and imported meshes (base64 typed arrays) through a version 5 file', () => {
     const s = furnished();
     const text = serializeConfiguration(s, catalog);
     const file = JSON.parse(text);
-    expect(file.version).toBe(4);
+    expect(file.version).toBe(5);
     expect(typeof file.configuration.importedMeshes.i2.positions).toBe('string');
     // 8 vertices × 3 Float32 = 96 bytes → 128 base64 characters
     expect(file.configuration.importedMeshes.i2.positions.length).toBe(128);
