@@ -141,21 +141,50 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
   /** No light (key '') has exactly no indirect light: nothing to solve. */
   const isExact = (key: string) => key === '' || (solved !== null && solved.final && solved.key === key);
 
-  // Direct bases for every new group first, one group per call (a caller slicing the work over frames stays responsive).
+  /**
+   * A direct basis whose passes are issued but not read back yet. A basis takes two steps: the
+   * first issues the GPU work (draws return at once: in a browser the GPU process runs them), the
+   * second reads the maps back. The caller's slicer fences between steps (createBakeSlicer), so
+   * the read-back finds the work done instead of blocking the page while a software GPU runs a
+   * furnished room's shadowed direct passes (seconds on SwiftShader).
+   */
+  let pendingBasis: { key: string; job: BakeJob } | null = null;
+  const dropPendingBasis = () => {
+    pendingBasis?.job.dispose();
+    pendingBasis = null;
+  };
+
+  // Direct bases for every new group first, one group per two calls (issue, then read back), so a caller slicing the work stays responsive.
   const bakeDirectBasis = (): boolean => {
+    if (pendingBasis) {
+      const { key, job } = pendingBasis;
+      pendingBasis = null;
+      try {
+        const st = states.get(key);
+        if (st && !st.basis) {
+          const d = job.readDirect();
+          atlas = d.objects?.atlas ?? null;
+          const flux = reflectedFlux(d.surfaces, layouts, reflectanceRgb(scene!.room), atlas, d.objects?.emitted ?? null);
+          st.basis = { ...d, flux };
+          version++;
+        }
+      } finally {
+        job.dispose();
+      }
+      return true;
+    }
     const st = order.find((s) => !s.basis);
     if (!st) return false;
     counters.groupBakes++;
-    const j = baker.start(groupScene(scene!, st.group), basisSettings);
+    const job = baker.start(groupScene(scene!, st.group), basisSettings);
     try {
-      const d = j.readDirect();
-      atlas = d.objects?.atlas ?? null;
-      const flux = reflectedFlux(d.surfaces, layouts, reflectanceRgb(scene!.room), atlas, d.objects?.emitted ?? null);
-      st.basis = { ...d, flux };
-    } finally {
-      j.dispose();
+      // Everything up to the read-back (objects: chart dilation of the atlas) is issued now.
+      job.finalize();
+    } catch (error) {
+      job.dispose();
+      throw error;
     }
-    version++;
+    pendingBasis = { key: st.group.key, job };
     return true;
   };
 
@@ -220,6 +249,7 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
       const nextRoom = roomKey(next.room) + objectsKey(next.objects);
       if (nextRoom !== room) {
         dropSolve();
+        dropPendingBasis();
         solved = null;
         atlas = null;
         states = new Map();
@@ -241,6 +271,8 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
       }
       states = kept;
       order = groups.map((g) => kept.get(g.key)!);
+      // A basis under way for a group that is gone (moved, removed) is of no use.
+      if (pendingBasis && !kept.has(pendingBasis.key)) dropPendingBasis();
       // A solve under way for other weights is of no use any more (the shown one stays until the new solve is done).
       if (solve && solve.key !== weightsKey()) dropSolve();
       if (bake === 0) counters.relightsOnly++;
@@ -279,6 +311,7 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
     releaseTargets: () => baker.dispose(),
     dispose() {
       dropSolve();
+      dropPendingBasis();
       solved = null;
       states.clear();
       order = [];

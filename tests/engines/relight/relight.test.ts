@@ -133,10 +133,31 @@ describe('relighting = weighted direct bases + one shared indirect solve', () =>
     engine.dispose();
   });
 
+  it('a basis issued but not read back is dropped when its module moves: the moved one bakes, nothing stale shows', () => {
+    const engine = createRelightEngine(gl, SETTINGS);
+    engine.setScene({ room, luminaires: [lum(spot, 1.5, 1.7)] });
+    engine.step(8); // issues the first basis
+    engine.setScene({ room, luminaires: [lum(spot, 0.9, 1.7)] });
+    engine.finish();
+    expect(engine.counters.groupBakes).toBe(2);
+    const fresh = createRelightEngine(gl, SETTINGS);
+    fresh.setScene({ room, luminaires: [lum(spot, 0.9, 1.7)] });
+    fresh.finish();
+    const floor = (e: typeof engine) => e.maps().maps.floor.direct;
+    expect(Array.from(floor(engine))).toEqual(Array.from(floor(fresh)));
+    engine.dispose();
+    fresh.dispose();
+  });
+
   it('shows light before the indirect work is done, and refines progressively', () => {
     const engine = createRelightEngine(gl, SETTINGS);
     engine.setScene({ room, luminaires: [lum(spot, 1.5, 1.7)] });
-    let p = engine.step(8); // first call: the direct-only basis
+    // The direct-only basis takes two calls: the first issues its passes (no read-back, so a
+    // browser's slicer can fence before reading), the second reads the maps back.
+    let p = engine.step(8);
+    expect(p.lit).toBe(false);
+    expect(engine.counters.groupBakes).toBe(1);
+    p = engine.step(8);
     expect(p.lit).toBe(true);
     expect(p.done).toBe(false);
     const ceilingEarly = engine.maps().maps.ceiling.total.reduce((a, b) => a + b, 0);
