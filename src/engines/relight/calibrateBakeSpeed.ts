@@ -16,6 +16,8 @@ export interface BakeCalibration {
   msPerTexelSample: number;
   /** Direct pass cost: ms per texel per point source (warm, GPU work included). */
   msPerTexelSource: number;
+  /** The rest of a direct basis: combine, read-back to the CPU and allocation, ms per texel (warm). */
+  msPerTexelBasis: number;
   /**
    * What a group with a photometry not seen before costs before its direct pass can run: the
    * relight engine's direct bases take the lamps as uniforms (`lampUniforms`), so a program is
@@ -64,17 +66,18 @@ export const CALIBRATION_SETTINGS: Partial<BakeSettings> = {
 };
 
 /**
- * A luminaire of a new type (photometry cos^`power` γ, a new direct program) at the centre moved
- * by `dx` m: the relight engine's direct-basis bake of a group.
+ * A luminaire of a new type at the centre moved by `dx` m: the relight engine's direct-basis bake
+ * of a group. Types differ in distribution (cos^`power` γ) and in table size (every `step`°), as
+ * two catalog files do, so each compiles its own direct programs.
  */
-const groupScene = (power: number, dx: number): BakeScene => ({
+const groupScene = (power: number, step: number, dx: number): BakeScene => ({
   ...CALIBRATION_SCENE,
-  luminaires: [{ ...CALIBRATION_SCENE.luminaires[0], photometry: calibrationPhotometry(power), position: [1.5 + dx, 1.25, 1.5] }],
+  luminaires: [{ ...CALIBRATION_SCENE.luminaires[0], photometry: calibrationPhotometry(power, step), position: [1.5 + dx, 1.25, 1.5] }],
 });
 
-/** I(γ) = CALIBRATION_PEAK_CD · cos^power γ below the horizon, 0 above, every 5°; absolute photometry; 0.24 × 0.09 m opening. */
-function calibrationPhotometry(power = 1): Photometry {
-  const angles = Array.from({ length: 37 }, (_, i) => i * 5);
+/** I(γ) = CALIBRATION_PEAK_CD · cos^power γ below the horizon, 0 above, every `step`° (a divisor of 180); absolute photometry; 0.24 × 0.09 m opening. */
+function calibrationPhotometry(power = 1, step = 5): Photometry {
+  const angles = Array.from({ length: 180 / step + 1 }, (_, i) => i * step);
   const candela = angles.map((g) => (g < 90 ? CALIBRATION_PEAK_CD * Math.cos((g * Math.PI) / 180) ** power : 0));
   return {
     format: 'IES', version: 'calibration', manufacturer: '', luminaire: 'calibration downlight', catalogNumber: '', keywords: {},
@@ -96,9 +99,10 @@ const atLeast = (ms: number) => Math.max(ms, 0.001);
  * Bakes the calibration scene on `gl`: once cold (compiles every program: `compileMs` is its
  * extra time over the fastest warm one) and twice warm, timed per pass (`syncTimings`: each pass
  * waits for the GPU) for the indirect cost; then, as the relight engine bakes a group's direct
- * basis (direct only, lamps as uniforms), twice a luminaire of a new type (cos² and cos³
- * distributions: a new program), each followed by the same type moved 10 cm (no compile): the
- * difference is `directCompileMs`, the moved one's direct pass gives `msPerTexelSource`. Each
+ * basis (direct only, lamps as uniforms), twice a luminaire of a new type (cos² every 2.5°, cos³
+ * every 2°: new programs), each followed by the same type moved 10 cm (no compile): the
+ * difference is `directCompileMs`, the moved one's direct pass gives `msPerTexelSource` and the
+ * rest of its bake (combine, read-back) `msPerTexelBasis`. Each
  * figure is the smaller of its two trials (other work on the device only ever adds time). Costs
  * are per unit of work, so they carry over to any room. About 0.5–4 s on a 2-core software
  * renderer (mostly the first compile), tens of ms on a GPU.
@@ -110,10 +114,14 @@ export function calibrateBakeSpeed(gl: WebGL2RenderingContext): BakeCalibration 
     const basis = { ...settings, bounces: 0, lampUniforms: true };
     const cold = baker.bake(CALIBRATION_SCENE, settings).report;
     const warm = [0, 1].map(() => baker.bake(CALIBRATION_SCENE, settings).report);
-    const groups = [2, 3].map((power) => {
-      const newType = baker.bake(groupScene(power, 0), basis).report;
-      const knownType = baker.bake(groupScene(power, 0.1), basis).report;
-      return { compile: Math.max(0, newType.timings_ms.total - knownType.timings_ms.total), direct: knownType.timings_ms.direct };
+    const groups = [
+      [2, 2.5],
+      [3, 2],
+    ].map(([power, step]) => {
+      const newType = baker.bake(groupScene(power, step, 0), basis).report;
+      const knownType = baker.bake(groupScene(power, step, 0.1), basis).report;
+      const t = knownType.timings_ms;
+      return { compile: Math.max(0, newType.timings_ms.total - t.total), direct: t.direct, rest: t.total - t.direct };
     });
     const texels = warm[0].totalTexels;
     const pointSources = warm[0].pointSources;
@@ -121,6 +129,7 @@ export function calibrateBakeSpeed(gl: WebGL2RenderingContext): BakeCalibration 
     return {
       msPerTexelSample: least((t) => t.indirect + t.blend + t.blur) / (texels * settings.samples * settings.bounces),
       msPerTexelSource: atLeast(Math.min(...groups.map((g) => g.direct))) / (texels * pointSources),
+      msPerTexelBasis: atLeast(Math.min(...groups.map((g) => g.rest))) / texels,
       directCompileMs: Math.min(...groups.map((g) => g.compile)),
       compileMs: Math.max(0, cold.timings_ms.total - least((t) => t.total)),
       renderer: glRenderer(gl),
@@ -175,14 +184,14 @@ export function levelTexels(room: QualityScene['room'], level: QualityLevel): nu
 
 /**
  * Each level's predicted cost on a calibrated device:
- * firstLit = photometries × directCompileMs + groups × texels × pointSources × msPerTexelSource,
+ * firstLit = compileMs + photometries × directCompileMs + groups × texels × (pointSources × msPerTexelSource + msPerTexelBasis),
  * solve = indirectSolves × texels × samples × bounces × msPerTexelSample.
- * The one-time compile of the shared programs (compileMs) is left out: a device pays it once,
- * on its first bake, at every level alike.
+ * compileMs stands for the first bake on a fresh context (the bake service's own), which compiles
+ * its programs there.
  */
 export function predictQuality(calibration: BakeCalibration, scene: QualityScene = TYPICAL_QUALITY_SCENE): QualityPrediction[] {
   // A stored calibration from another version, or a hand-edited one, must not turn into NaN predictions (NaN fits no target).
-  for (const key of ['msPerTexelSample', 'msPerTexelSource', 'directCompileMs'] as const) {
+  for (const key of ['msPerTexelSample', 'msPerTexelSource', 'msPerTexelBasis', 'directCompileMs', 'compileMs'] as const) {
     const v = calibration[key];
     if (typeof v !== 'number' || !Number.isFinite(v) || v < 0) throw new InputError(`calibration: ${key} is ${String(v)}, not a finite number ≥ 0`);
   }
@@ -192,7 +201,10 @@ export function predictQuality(calibration: BakeCalibration, scene: QualityScene
     return {
       level,
       texels,
-      firstLitMs: scene.photometries * calibration.directCompileMs + scene.groups * texels * scene.pointSourcesPerGroup * calibration.msPerTexelSource,
+      firstLitMs:
+        calibration.compileMs +
+        scene.photometries * calibration.directCompileMs +
+        scene.groups * texels * (scene.pointSourcesPerGroup * calibration.msPerTexelSource + calibration.msPerTexelBasis),
       solveMs: scene.indirectSolves * texels * s.samples * Math.max(1, s.bounces) * calibration.msPerTexelSample,
     };
   });

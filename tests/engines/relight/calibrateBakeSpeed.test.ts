@@ -16,6 +16,7 @@ describe('calibrateBakeSpeed on headless-gl', () => {
       expect(Number.isFinite(c.msPerTexelSource) && c.msPerTexelSource > 0).toBe(true);
       expect(Number.isFinite(c.compileMs) && c.compileMs >= 0).toBe(true);
       expect(Number.isFinite(c.directCompileMs) && c.directCompileMs >= 0).toBe(true);
+      expect(Number.isFinite(c.msPerTexelBasis) && c.msPerTexelBasis > 0).toBe(true);
       expect(c.renderer.length).toBeGreaterThan(0);
       expect(QUALITY_LEVEL_NAMES).toContain(chooseQuality(c));
     }

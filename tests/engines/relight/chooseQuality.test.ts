@@ -12,7 +12,7 @@ import {
 } from '../../../src/engines/relight/calibrateBakeSpeed';
 import { QUALITY_LEVEL_NAMES, QUALITY_LEVELS } from '../../../src/engines/relight/qualityLevels';
 
-const device = (msPerTexelSample: number, msPerTexelSource: number, directCompileMs = 0): BakeCalibration => ({ msPerTexelSample, msPerTexelSource, directCompileMs, compileMs: 300, renderer: 'test', work: { texels: 19200, pointSources: 10, samples: 32, bounces: 1 } });
+const device = (msPerTexelSample: number, msPerTexelSource: number, directCompileMs = 0, msPerTexelBasis = 0, compileMs = 0): BakeCalibration => ({ msPerTexelSample, msPerTexelSource, msPerTexelBasis, directCompileMs, compileMs, renderer: 'test', work: { texels: 19200, pointSources: 10, samples: 32, bounces: 1 } });
 const rank = (level: string) => QUALITY_LEVEL_NAMES.indexOf(level as never);
 
 describe('quality levels: predicted cost', () => {
@@ -23,12 +23,12 @@ describe('quality levels: predicted cost', () => {
     expect(levelTexels(TYPICAL_QUALITY_SCENE.room, 'balanced')).toBe(2 * 8000 + 2 * 5600 + 2 * 4480);
   });
 
-  it('predicts first lit = photometries × direct compile + groups × texels × sources × cost, solve = solves × texels × samples × bounces × cost', () => {
-    const cal = device(1e-4, 2e-5, 50);
+  it('predicts first lit = compile + photometries × direct compile + groups × texels × (sources × cost + basis cost), solve = solves × texels × samples × bounces × cost', () => {
+    const cal = device(1e-4, 2e-5, 50, 3e-4, 120);
     const scene = { room: { width: 4, height: 2.5, depth: 3 }, groups: 3, pointSourcesPerGroup: 5, photometries: 2, indirectSolves: 2 };
     for (const p of predictQuality(cal, scene)) {
       const s = resolveBakeSettings(QUALITY_LEVELS[p.level]);
-      expect(p.firstLitMs).toBeCloseTo(2 * 50 + 3 * p.texels * 5 * 2e-5, 9);
+      expect(p.firstLitMs).toBeCloseTo(120 + 2 * 50 + 3 * p.texels * (5 * 2e-5 + 3e-4), 9);
       expect(p.solveMs).toBeCloseTo(2 * p.texels * s.samples * s.bounces * 1e-4, 9);
     }
   });
@@ -64,10 +64,10 @@ describe('chooseQuality', () => {
     const cost = fc.double({ min: 1e-8, max: 1e-2, noNaN: true });
     const factor = fc.double({ min: 0, max: 1, noNaN: true });
     fc.assert(
-      fc.property(cost, cost, fc.double({ min: 0, max: 2000, noNaN: true }), factor, factor, factor, fc.integer({ min: 1, max: 20 }), fc.integer({ min: 1, max: 64 }), (a, b, compile, fa, fb, fc2, groups, sources) => {
+      fc.property(cost, cost, fc.double({ min: 0, max: 2000, noNaN: true }), cost, factor, factor, factor, factor, fc.integer({ min: 1, max: 20 }), fc.integer({ min: 1, max: 64 }), (a, b, compile, c, fa, fb, fc2, fd, groups, sources) => {
         const scene = { ...TYPICAL_QUALITY_SCENE, groups, pointSourcesPerGroup: sources, photometries: Math.min(groups, 5) };
-        const slow = device(a, b, compile);
-        const fast = device(a * fa, b * fb, compile * fc2);
+        const slow = device(a, b, compile, c, compile);
+        const fast = device(a * fa, b * fb, compile * fc2, c * fd, compile * fc2);
         expect(rank(chooseQuality(fast, scene))).toBeGreaterThanOrEqual(rank(chooseQuality(slow, scene)));
       }),
       { seed: 15, numRuns: 500 },
