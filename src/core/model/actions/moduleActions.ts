@@ -60,7 +60,7 @@ export const addModule: ActionDefinition<z.infer<typeof addParams>> = {
     if (!FIT_CODES.has(problem.code)) return problem.message;
     const type = findModuleType(catalog, p.type);
     const { rail } = findRail(state, p.railId);
-    if (isFreeRail(rail)) {
+    if (isFreeRail(rail) && railModuleOffsets(rail, catalog)) {
       const { gap } = placeInLargestGap(type.length, rail.length, occupied(rail, catalog), placementStep(catalog));
       return `no free gap on this rail holds a ${type.name} (${type.length} m): the largest is ${gap} m; move modules apart or choose a distribution`;
     }
@@ -98,8 +98,9 @@ export const moveModule: ActionDefinition<z.infer<typeof moveParams>> = {
     return replaceRail(state, ref, { ...ref.rail, modules: inRailOrder(mods) });
   },
   explain(problem, state, p, catalog) {
-    if (!FIT_CODES.has(problem.code)) return problem.message;
     const ref = findModule(state, p.moduleId);
+    // Worded from the rail as it is now; a state whose rail does not fit (never reached through actions) keeps validate()'s words.
+    if (!FIT_CODES.has(problem.code) || !railModuleOffsets(ref.rail, catalog)) return problem.message;
     const type = findModuleType(catalog, ref.module.type);
     const offset = snappedModuleOffset(state, p.moduleId, p.offset, catalog);
     const L = ref.rail.length;
