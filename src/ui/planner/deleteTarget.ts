@@ -2,7 +2,7 @@ import type { ActionName } from '../../core/model/actionDefinitions';
 import type { SelectionPath } from './selection';
 
 /**
- * What Delete removes for a selection: the module, the (last) rail, the whole system, or the
+ * What Delete removes for a selection: the module, the rail (any: a middle one splits the chain), the whole system, or the
  * selected object. null with a reason when nothing is selected. The action's own isEnabled
  * still decides.
  */
