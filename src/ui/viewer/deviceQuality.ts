@@ -4,12 +4,16 @@ import type { QualityLevel } from '../../engines/relight/qualityLevels';
 /** Where this browser's calibration is kept, keyed by the GL renderer it was measured on. */
 export const CALIBRATION_STORAGE_KEY = 'luxbox.calibration';
 
-function readCached(renderer: string): BakeCalibration | null {
+/** The calibration kept for `renderer`, or null: none, another renderer's, unreadable, or outdated (refused by chooseQuality). */
+export function readCachedCalibration(renderer: string): BakeCalibration | null {
   try {
     const parsed = JSON.parse(localStorage.getItem(CALIBRATION_STORAGE_KEY) ?? 'null') as BakeCalibration | null;
-    return parsed && parsed.renderer === renderer && Number.isFinite(parsed.msPerTexelSample) && Number.isFinite(parsed.msPerTexelSource) ? parsed : null;
+    if (!parsed || parsed.renderer !== renderer) return null;
+    // An entry an older luxbox wrote may lack fields chooseQuality needs: it refuses it, and we calibrate again.
+    chooseQuality(parsed);
+    return parsed;
   } catch {
-    return null; // storage blocked or an unreadable entry: calibrate again
+    return null; // storage blocked, an unreadable or outdated entry: calibrate again
   }
 }
 
@@ -26,7 +30,7 @@ export function deviceQuality(remember: boolean): QualityLevel {
   if (!gl) return 'balanced';
   try {
     const renderer = glRenderer(gl);
-    let calibration = remember ? readCached(renderer) : null;
+    let calibration = remember ? readCachedCalibration(renderer) : null;
     if (!calibration) {
       calibration = calibrateBakeSpeed(gl);
       if (remember) {
