@@ -13,6 +13,7 @@ import { setReflectance } from './actions/surfaceActions';
 import { deleteSystem, moveSystem, placePreset, rotateSystem, setMounting, setSuspension } from './actions/systemActions';
 import { addFeed, moveFeed, removeFeed, setFeedDriver } from './actions/feedActions';
 import { addRail, removeRail, setDistribution, setRailLength } from './actions/railActions';
+import { moveFixingPoint, setJointTurn } from './actions/chainShapeActions';
 import { addModule, moveModule, removeModule, setModuleBeam, setModuleCct, setModuleDimming, setModuleType } from './actions/moduleActions';
 import { autoPatch, clearPatch, setModulePatch } from './actions/patchActions';
 import { addObject, moveObject, refinishObject, removeObject, resizeObject, rotateObject } from './actions/objectActions';
@@ -34,6 +35,8 @@ export const actionDefinitions = {
   setDistribution,
   addRail,
   removeRail,
+  setJointTurn,
+  moveFixingPoint,
   addModule,
   moveModule,
   removeModule,

@@ -91,11 +91,17 @@ export const catalogSchema = z
           id: nonEmpty,
           article: nonEmpty,
           name: nonEmpty,
-          /** 0 for a straight connector, otherwise the corner angle in degrees (used turning left or right). */
+          /** 0 for a straight connector, otherwise the corner angle in degrees (used turning left or right); a flexible connector: the turn a new joint gets. */
           angle: z.number().finite().min(0).lt(180),
-          /** Straight: gap between the joined rail ends. Corner: distance from each rail end to the corner point. Metres. */
+          /** Straight: gap between the joined rail ends. Corner or flexible: distance from each rail end to the hinge (corner) point. Metres. */
           arm: z.number().finite().nonnegative(),
           price,
+          /**
+           * A flexible-angle (hinge) connector (docs/catalog-format.md): it turns by any multiple of
+           * `step` degrees from −maxAngle to +maxAngle, 0 included; setJointTurn adjusts a joint's turn.
+           */
+          flex: z.strictObject({ maxAngle: z.number().finite().positive().lt(180), step: z.number().finite().positive() }).optional(),
+          source: z.string().optional(),
         }),
       )
       .min(1),
@@ -177,6 +183,11 @@ export const catalogSchema = z
     });
     if (s.maxOverhang > s.maxSpacing) ctx.addIssue({ code: 'custom', path: ['suspension', 'maxOverhang'], message: 'must not exceed maxSpacing' });
     if (c.surfaceMount.maxOverhang > c.surfaceMount.spacing) ctx.addIssue({ code: 'custom', path: ['surfaceMount', 'maxOverhang'], message: 'must not exceed spacing' });
+    c.connectors.forEach((con, i) => {
+      if (!con.flex) return;
+      if (!onGrid(con.flex.maxAngle, con.flex.step)) ctx.addIssue({ code: 'custom', path: ['connectors', i, 'flex', 'maxAngle'], message: `must be a multiple of step ${con.flex.step}` });
+      if (!allowedTurn(con, con.angle)) ctx.addIssue({ code: 'custom', path: ['connectors', i, 'angle'], message: `a flexible connector's angle (its default turn) must be a multiple of ${con.flex.step} up to ${con.flex.maxAngle}` });
+    });
     uniqueIds(c.drivers, ['drivers'], ctx);
     uniqueIds(c.connectors, ['connectors'], ctx);
     uniqueIds(c.moduleTypes, ['moduleTypes'], ctx);
@@ -186,7 +197,7 @@ export const catalogSchema = z
       p.joints.forEach((j, k) => {
         const con = c.connectors.find((x) => x.id === j.connector);
         if (!con) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints', k, 'connector'], message: `unknown connector '${j.connector}'` });
-        else if (Math.abs(j.turn) !== con.angle) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints', k, 'turn'], message: `must be ±${con.angle} for connector '${con.id}'` });
+        else if (!allowedTurn(con, j.turn)) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints', k, 'turn'], message: `${turnRange(con)} for connector '${con.id}'` });
       });
       p.rails.forEach((rail, k) =>
         rail.modules.forEach((m, n) => {
@@ -266,6 +277,29 @@ function uniqueIds(items: readonly { id: string }[], path: PropertyKey[], ctx: z
     if (seen.has(it.id)) ctx.addIssue({ code: 'custom', path: [...path, i, 'id'], message: `duplicate id '${it.id}'` });
     seen.add(it.id);
   });
+}
+
+/**
+ * Whether a connector may turn by `turn` degrees: a fixed one by exactly ±angle (0 for straight),
+ * a flexible one by a multiple of its step within ±maxAngle.
+ */
+export function allowedTurn(con: Pick<ConnectorSpec, 'angle' | 'flex'>, turn: number): boolean {
+  if (!Number.isFinite(turn)) return false;
+  if (!con.flex) return Math.abs(turn) === con.angle;
+  return Math.abs(turn) <= con.flex.maxAngle + 1e-9 && onGrid(turn, con.flex.step);
+}
+
+/** The turns a connector allows, in words ('must be ±90', 'must be a multiple of 5 within ±90'). */
+export function turnRange(con: Pick<ConnectorSpec, 'angle' | 'flex'>): string {
+  return con.flex ? `must be a multiple of ${con.flex.step}° within ±${con.flex.maxAngle}°` : `must be ±${con.angle}`;
+}
+
+/**
+ * True when a connector bridges its rails with two arms through a hinge (corner) point: a corner
+ * or a flexible connector, whatever its turn (a flexible one at 0° is still two arms long).
+ */
+export function twoArmed(con: Pick<ConnectorSpec, 'angle' | 'flex'>): boolean {
+  return con.angle !== 0 || con.flex !== undefined;
 }
 
 /** Lookups that throw InputError with a clear message instead of returning undefined. */

@@ -2,11 +2,11 @@
  * Distances along a system's chain (docs/model.md, "Power feeds" and "Suspension points"):
  * the one coordinate the feed assignment and the suspension derivation share. s = 0 at the
  * start of the first rail; each rail adds its length and each connector the length of the
- * rail profile it bridges: a straight connector its gap (`arm`), a corner connector both
+ * rail profile it bridges: a straight connector its gap (`arm`), a corner or flexible connector both
  * arms (rail end → corner point → next rail start). A connector's own point (where its feed
  * or suspension sits) is the middle of that bridge: the gap's centre, or the corner point.
  */
-import { findConnector, type Catalog } from './catalogSchema';
+import { findConnector, twoArmed, type Catalog } from './catalogSchema';
 import type { FeedAt, LightSystem } from './configuration';
 import { railPlacements, type PlanVec } from './geometry';
 
@@ -19,10 +19,10 @@ export interface ChainCoordinates {
   readonly length: number;
 }
 
-/** Length of profile a connector bridges between two rail ends: the straight gap, or both corner arms. */
-export function connectorSpan(catalog: Catalog, connector: string, turn: number): number {
-  const arm = findConnector(catalog, connector).arm;
-  return turn === 0 ? arm : 2 * arm;
+/** Length of profile a connector bridges between two rail ends: the straight gap, or both arms of a corner or flexible connector (at any turn). */
+export function connectorSpan(catalog: Catalog, connector: string): number {
+  const con = findConnector(catalog, connector);
+  return twoArmed(con) ? 2 * con.arm : con.arm;
 }
 
 export function chainCoordinates(system: LightSystem, catalog: Catalog): ChainCoordinates {
@@ -34,7 +34,7 @@ export function chainCoordinates(system: LightSystem, catalog: Catalog): ChainCo
     s += rail.length;
     const joint = system.joints[i];
     if (joint && i < system.rails.length - 1) {
-      const span = connectorSpan(catalog, joint.connector, joint.turn);
+      const span = connectorSpan(catalog, joint.connector);
       jointAt.push(s + span / 2);
       s += span;
     }
@@ -68,9 +68,10 @@ export function chainPoint(system: LightSystem, catalog: Catalog, s: number): Pl
     if (s < chain.railStart[i + 1]) {
       // On the connector: its straight gap, or the two arms through the corner point.
       const joint = system.joints[i];
-      const arm = findConnector(catalog, joint.connector).arm;
+      const con = findConnector(catalog, joint.connector);
+      const arm = con.arm;
       const along = u - r.length;
-      if (joint.turn === 0 || along <= arm) return [r.end[0] + r.direction[0] * along, r.end[1] + r.direction[1] * along];
+      if (!twoArmed(con) || along <= arm) return [r.end[0] + r.direction[0] * along, r.end[1] + r.direction[1] * along];
       const pivot: PlanVec = [r.end[0] + r.direction[0] * arm, r.end[1] + r.direction[1] * arm];
       return [pivot[0] + next.direction[0] * (along - arm), pivot[1] + next.direction[1] * (along - arm)];
     }

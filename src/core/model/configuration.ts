@@ -55,7 +55,10 @@ export interface Rail {
 export interface Joint {
   /** Catalog connector id. */
   readonly connector: string;
-  /** Degrees, counterclockwise seen from above positive (a left turn); ±angle of the connector, 0 for straight. */
+  /**
+   * Degrees, counterclockwise seen from above positive (a left turn); ±angle of the connector, 0 for
+   * straight; a flexible connector: a multiple of its step within ±maxAngle (setJointTurn, scene file version 6).
+   */
   readonly turn: number;
 }
 
@@ -96,6 +99,12 @@ export interface LightSystem {
   readonly feeds: readonly Feed[];
   /** 'surface': clipped to the ceiling, `suspension` is kept for switching back but not used (scene file version 4). */
   readonly mounting: Mounting;
+  /**
+   * Fixing points the user moved (docs/model.md, "Moving fixing points"): the chain coordinate of
+   * EVERY suspension or clip point, ascending, replacing the derived ones (suspensionPoints.ts);
+   * absent: derived. Scene file version 6.
+   */
+  readonly fixings?: readonly number[];
 }
 
 /** The four walls (docs/scene-format.md: north z = 0, south z = D, west x = 0, east x = W). */

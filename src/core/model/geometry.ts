@@ -4,7 +4,7 @@
  * so a heading h points along (cos h, 0, −sin h) = Ry(h)·(+x): the same rotation
  * as the luminaire yaw, which makes C0 run along the rail.
  */
-import { findConnector, findModuleType, type Catalog } from './catalogSchema';
+import { findConnector, findModuleType, twoArmed, type Catalog } from './catalogSchema';
 import type { LightSystem, Rail } from './configuration';
 import { layoutModules } from './distribution';
 import { freeOffsets, isFreeRail } from './freePositions';
@@ -81,10 +81,11 @@ export function railPlacements(system: LightSystem, catalog: Catalog): RailPlace
     out.push({ railId: rail.id, index: i, start, end, heading: normaliseDegrees(heading), direction, length: rail.length });
     const joint = system.joints[i];
     if (joint) {
-      const arm = findConnector(catalog, joint.connector).arm;
-      const pivot = add(end, direction, arm);
+      const con = findConnector(catalog, joint.connector);
+      const pivot = add(end, direction, con.arm);
       heading += joint.turn;
-      start = joint.turn === 0 ? pivot : add(pivot, headingVector(heading), arm);
+      // A corner or flexible connector: the next rail starts one arm past the hinge, along its own heading.
+      start = twoArmed(con) ? add(pivot, headingVector(heading), con.arm) : pivot;
     }
   });
   return out;
@@ -113,10 +114,11 @@ export function systemElements(system: LightSystem, catalog: Catalog): PlanRect[
     const joint = system.joints[i];
     const next = rails[i + 1];
     if (!joint || !next) return;
-    if (joint.turn === 0) {
+    const con = findConnector(catalog, joint.connector);
+    if (!twoArmed(con)) {
       out.push([segmentRect(r.end, next.start, w)]);
     } else {
-      const arm = findConnector(catalog, joint.connector).arm;
+      const arm = con.arm;
       const pivot = add(r.end, r.direction, arm);
       out.push([segmentRect(r.end, add(pivot, r.direction, w / 2), w), segmentRect(add(pivot, next.direction, -w / 2), next.start, w)]);
     }

@@ -22,12 +22,14 @@ import { validate } from './validate';
 
 export const SCENE_FILE_FORMAT = 'luxbox-configuration';
 /**
+ * 6: systems may carry moved fixing points (`fixings`) and joints may use a flexible-angle connector
+ *    (any turn within its range), docs/model.md "Flexible connectors", "Moving fixing points".
  * 5: modules may carry a free position along their rail (`offset`, docs/model.md "Free positions").
  * 4: systems carry power feeds (`feeds`) and their mounting (`mounting`), docs/model.md "Power feeds".
  * 3: objects (furniture, imported models) and imported meshes (docs/model.md, "Objects").
  * 2: modules may carry a DMX patch (`dmx`, docs/live-control.md). Older files are migrated on reading.
  */
-export const SCENE_FILE_VERSION = 5;
+export const SCENE_FILE_VERSION = 6;
 /** Share strings longer than this are refused before decoding (browsers cap URLs near 64k). */
 export const MAX_SHARE_STRING = 60_000;
 
@@ -94,6 +96,8 @@ const configurationSchema = z.strictObject({
       // Version 4. Positions, drivers and loads are validate()'s rules (feed-position, unknown-driver, feed-overload).
       feeds: z.array(z.strictObject({ id, at: z.union([z.literal('start'), z.literal('end'), z.strictObject({ joint: z.number() })]), driver: ref })),
       mounting: z.enum(MOUNTINGS),
+      // Version 6: moved fixing points (chain coordinates); their rules are validate()'s (fixing-*).
+      fixings: z.array(z.number()).optional(),
     }),
   ),
   // Version 3; optional so a hand-written file may leave them out (empty).
@@ -157,6 +161,7 @@ export const migrations: Record<number, (doc: Record<string, unknown>, catalog: 
     }
     refuseV4Fields(doc, 1);
     refuseV5Fields(doc, 1);
+    refuseV6Fields(doc, 1);
     return { ...doc, version: 2 };
   },
   // 2 → 3: version 3 added objects and imported meshes; a version 2 configuration has none.
@@ -167,6 +172,7 @@ export const migrations: Record<number, (doc: Record<string, unknown>, catalog: 
     }
     refuseV4Fields(doc, 2);
     refuseV5Fields(doc, 2);
+    refuseV6Fields(doc, 2);
     return { ...doc, version: 3 };
   },
   // 3 → 4: version 4 added power feeds and the mounting. An older system hung on suspensions and had
@@ -178,6 +184,7 @@ export const migrations: Record<number, (doc: Record<string, unknown>, catalog: 
     if (typeof c !== 'object' || c === null || !Array.isArray((c as Record<string, unknown>).systems)) return { ...doc, version: 4 };
     refuseV4Fields(doc, 3);
     refuseV5Fields(doc, 3);
+    refuseV6Fields(doc, 3);
     const conf = c as Record<string, unknown>;
     let nextId = typeof conf.nextId === 'number' && Number.isInteger(conf.nextId) ? conf.nextId : null;
     const systems = (conf.systems as unknown[]).map((raw) => {
@@ -199,9 +206,25 @@ export const migrations: Record<number, (doc: Record<string, unknown>, catalog: 
   // distribution places it), so the content reads as is.
   4(doc) {
     refuseV5Fields(doc, 4);
+    refuseV6Fields(doc, 4);
     return { ...doc, version: 5 };
   },
+  // 5 → 6: version 6 added moved fixing points and flexible connectors; a version 5 system's
+  // fixing points are the derived ones and its joints turn by a fixed angle, so it reads as is.
+  5(doc) {
+    refuseV6Fields(doc, 5);
+    return { ...doc, version: 6 };
+  },
 };
+
+/** Moved fixing points came with version 6: a file that says it is older and has them was not written by luxbox. */
+function refuseV6Fields(doc: Record<string, unknown>, version: number): void {
+  const c = doc.configuration;
+  const systems = typeof c === 'object' && c !== null && Array.isArray((c as Record<string, unknown>).systems) ? ((c as Record<string, unknown>).systems as unknown[]) : [];
+  systems.forEach((s, i) => {
+    if (typeof s === 'object' && s !== null && 'fixings' in s) throw new SceneFileError(`configuration.systems[${i}].fixings: needs "version": 6 (this file says version ${version})`);
+  });
+}
 
 /** Free positions came with version 5: a file that says it is older and has one was not written by luxbox. */
 function refuseV5Fields(doc: Record<string, unknown>, version: number): void {

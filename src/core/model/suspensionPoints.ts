@@ -10,7 +10,9 @@
  *  - between a and b, k = ⌈(b − a)/spacing⌉ − 1 interior points evenly, so no gap exceeds
  *    the spacing and the gaps are equal.
  * So a system is always fixable by construction (no action can break it); the count goes to
- * the bill of materials and the ceiling-fixing count of installationNeeds.
+ * the bill of materials and the ceiling-fixing count of installationNeeds. Points the user
+ * moved (`system.fixings`, moveFixingPoint) replace the derived ones; fixingRules.ts states
+ * the rules they keep.
  */
 import type { Catalog } from './catalogSchema';
 import type { LightSystem, Room } from './configuration';
@@ -40,8 +42,18 @@ export function mountingRule(system: LightSystem, catalog: Catalog): MountingRul
     : { spacing: catalog.suspension.maxSpacing, maxOverhang: catalog.suspension.maxOverhang };
 }
 
-/** Chain coordinates of the fixing points (see the rule above), with the connector each sits at. */
+/** Chain coordinates of the fixing points: the user's moved ones, or else the derived ones; with the connector each sits at. */
 export function suspensionCoordinates(system: LightSystem, catalog: Catalog): { s: number; joint: number | null }[] {
+  if (system.fixings === undefined) return derivedSuspensionCoordinates(system, catalog);
+  const chain = chainCoordinates(system, catalog);
+  return system.fixings.map((s) => {
+    const k = chain.jointAt.findIndex((at) => Math.abs(at - s) <= 1e-6);
+    return { s, joint: k >= 0 ? k : null };
+  });
+}
+
+/** Chain coordinates of the derived fixing points (see the rule above), with the connector each sits at. */
+export function derivedSuspensionCoordinates(system: LightSystem, catalog: Catalog): { s: number; joint: number | null }[] {
   const rule = mountingRule(system, catalog);
   const chain = chainCoordinates(system, catalog);
   const last = system.rails.length - 1;

@@ -4,7 +4,8 @@
  * state reachable through enabled actions is empty; the property test in
  * tests/core/model checks it.
  */
-import { findModuleType, onGrid, type Catalog } from './catalogSchema';
+import { allowedTurn, findModuleType, onGrid, type Catalog } from './catalogSchema';
+import { fixingProblem } from './fixingRules';
 import { freeRailProblem, isFreeRail } from './freePositions';
 import { MOUNTINGS, ROOM_LIMITS, withinRoomLimits, type Configuration, type LightSystem } from './configuration';
 import { describeFeedAt, feedLabel, feedLoads, formatWatts, isOverloaded } from './feedLoads';
@@ -303,7 +304,7 @@ function ownProblems(s: LightSystem, at: string, roomHeight: number, catalog: Ca
   s.joints.forEach((j, i) => {
     const con = catalog.connectors.find((c) => c.id === j.connector);
     if (!con) p('unknown-connector', `.joints[${i}].connector`, `unknown connector '${j.connector}'`);
-    else if (Math.abs(j.turn) !== con.angle) p('bad-turn', `.joints[${i}].turn`, `connector '${con.id}' turns by ±${con.angle}°, not ${j.turn}°`);
+    else if (!allowedTurn(con, j.turn)) p('bad-turn', `.joints[${i}].turn`, con.flex ? `connector '${con.id}' turns by a multiple of ${con.flex.step}° within ±${con.flex.maxAngle}°, not ${j.turn}°` : `connector '${con.id}' turns by ±${con.angle}°, not ${j.turn}°`);
   });
   const rail = catalog.rail;
   s.rails.forEach((r, k) => {
@@ -337,6 +338,11 @@ function ownProblems(s: LightSystem, at: string, roomHeight: number, catalog: Ca
     for (const l of feedLoads(s, catalog)) {
       if (isOverloaded(l)) p('feed-overload', `.feeds[${l.index}]`, `${feedLabel(l.index)} carries ${formatWatts(l.load)} W, more than its ${formatWatts(l.capacity)} W driver (${l.driver.name})`);
     }
+  }
+  // Moved fixing points (fixingRules.ts), once the chain itself is sound.
+  if (out.length === 0 && s.fixings !== undefined) {
+    const f = Array.isArray(s.fixings) ? fixingProblem(s, s.fixings, catalog) : { code: 'fixing-order', index: 0, message: 'fixings must be a list of chain coordinates' };
+    if (f) p(f.code, `.fixings[${f.index}]`, f.message);
   }
   return out;
 }

@@ -147,7 +147,7 @@ describe('scene file version 5', () => {
   it('saves and reads free positions', () => {
     const c = run(twoRails(), 'moveModule', { moduleId: 'm4', offset: 0.83 });
     const file = JSON.parse(serializeConfiguration(c, catalog));
-    expect(file.version).toBe(5);
+    expect(file.version).toBe(6);
     expect(file.configuration.systems[0].rails[0].modules[1].offset).toBe(0.85);
     expect(deserializeConfiguration(serializeConfiguration(c, catalog), catalog)).toEqual(c);
   });

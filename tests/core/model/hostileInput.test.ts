@@ -48,7 +48,7 @@ describe('configuration files', () => {
   });
 
   it('says a newer version was made by a newer luxbox', () => {
-    expect(refusal(JSON.stringify({ ...file(), version: 6, configuration: { hologram: true } }))).toBe('a.json was made by a newer luxbox (version 6; this one reads up to 5)');
+    expect(refusal(JSON.stringify({ ...file(), version: 7, configuration: { hologram: true } }))).toBe('a.json was made by a newer luxbox (version 7; this one reads up to 6)');
   });
 
   it('keeps syntax errors to one short line (no excerpt of the text)', () => {

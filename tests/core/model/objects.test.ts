@@ -171,7 +171,7 @@ describe('objects in scene files and share links', () => {
     const s = furnished();
     const text = serializeConfiguration(s, catalog);
     const file = JSON.parse(text);
-    expect(file.version).toBe(5);
+    expect(file.version).toBe(6);
     expect(typeof file.configuration.importedMeshes.i2.positions).toBe('string');
     // 8 vertices × 3 Float32 = 96 bytes → 128 base64 characters
     expect(file.configuration.importedMeshes.i2.positions.length).toBe(128);

@@ -10,6 +10,7 @@ import type { ActionDefinition } from '../action';
 import { DISTRIBUTIONS, findConnector, type Catalog } from '../catalogSchema';
 import type { Configuration, Feed, LightSystem, Rail } from '../configuration';
 import { plannedFeeds } from '../feedLoads';
+import { keepFixingsIfValid, withoutFixings } from '../fixingRules';
 import { withoutOffsets } from '../freePositions';
 import { railModuleOffsets, railPlacements } from '../geometry';
 import { FIT_CODES } from './moduleActions';
@@ -36,8 +37,11 @@ export const setRailLength: ActionDefinition<z.infer<typeof lengthParams>> = {
   name: 'setRailLength',
   label: 'Rail length',
   params: lengthParams,
+  /** Moved fixing points stay only when they keep the rules on the new length (fixingRules.ts). */
   perform(state, p, catalog) {
-    return updateRail(state, p.railId, { length: snapRailLength(p.length, catalog) });
+    const next = updateRail(state, p.railId, { length: snapRailLength(p.length, catalog) });
+    const si = findRail(next, p.railId).systemIndex;
+    return replaceSystem(next, si, keepFixingsIfValid(next.systems[si], catalog));
   },
   explain(problem, state, p, catalog) {
     if (!FIT_CODES.has(problem.code)) return problem.message;
@@ -81,11 +85,13 @@ export const addRail: ActionDefinition<z.infer<typeof addRailParams>> = {
     const [id, next] = takeId(state, 'r');
     const s = next.systems[si];
     const rail: Rail = { id, length: snapRailLength(p.length ?? catalog.rail.defaultLength, catalog), distribution: 'inside-centred', modules: [] };
-    return replaceSystem(next, si, { ...s, rails: [...s.rails, rail], joints: [...s.joints, { connector: p.connector, turn: p.turn }] });
+    // Moved fixing points stay only when they keep the rules on the longer chain (fixingRules.ts).
+    return replaceSystem(next, si, keepFixingsIfValid({ ...s, rails: [...s.rails, rail], joints: [...s.joints, { connector: p.connector, turn: p.turn }] }, catalog));
   },
   explain(problem, _state, p, catalog) {
     if (problem.code !== 'bad-turn') return problem.message;
     const con = findConnector(catalog, p.connector);
+    if (con.flex) return `the ${con.name} turns by a multiple of ${con.flex.step}° within ±${con.flex.maxAngle}°`;
     return con.angle === 0 ? `${con.name} does not turn` : `${con.name} turns by ±${con.angle}°`;
   },
 };
@@ -104,7 +110,10 @@ export const removeRail: ActionDefinition<z.infer<typeof railIdParams>> = {
   label: 'Remove rail',
   params: railIdParams,
   perform(state, p, catalog) {
-    const { systemIndex: si, system, railIndex } = findRail(state, p.railId);
+    // Removing a rail renumbers the chain's coordinates: moved fixing points go back to the derived ones.
+    const ref = findRail(state, p.railId);
+    const { systemIndex: si, railIndex } = ref;
+    const system = withoutFixings(ref.system);
     const n = system.rails.length;
     if (n > 1 && railIndex === n - 1) {
       // The connector before the removed rail becomes the chain end: a feed there stays where it is, now at 'end'.
@@ -143,7 +152,7 @@ export const removeRail: ActionDefinition<z.infer<typeof railIdParams>> = {
  * when no driver can, validate() refuses the split with the overload.
  */
 function splitChain(state: Configuration, si: number, k: number, catalog: Catalog): Configuration {
-  const system = state.systems[si];
+  const system = withoutFixings(state.systems[si]);
   const placement = railPlacements(system, catalog)[k + 1];
   const firstFeeds: Feed[] = [];
   const secondFeeds: Feed[] = [];

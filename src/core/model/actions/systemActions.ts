@@ -10,6 +10,7 @@ import type { Catalog, PresetSpec } from '../catalogSchema';
 import { MOUNTINGS, type Configuration } from '../configuration';
 import { normaliseDegrees, rotatePlan, systemBounds } from '../geometry';
 import { defaultSuspension, findPresetPlacement, instantiatePreset, type Placement } from '../presets';
+import { keepFixingsIfValid } from '../fixingRules';
 import { replaceSystem, systemIndex, updateSystem } from './lookup';
 
 function findPreset(catalog: Catalog, id: string): PresetSpec {
@@ -113,13 +114,15 @@ const mountingParams = z.object({ systemId: z.string(), mounting: z.enum(MOUNTIN
 /**
  * Hangs a system on suspensions or clips it to the ceiling surface (docs/model.md, "Mounting").
  * Its suspension length is kept for switching back; head room is checked at the height the
- * modules really have (validate()).
+ * modules really have (validate()). Moved fixing points stay when they keep the new mounting's
+ * spacing and overhang, otherwise they go back to the derived ones (fixingRules.ts).
  */
 export const setMounting: ActionDefinition<z.infer<typeof mountingParams>> = {
   name: 'setMounting',
   label: 'Mounting',
   params: mountingParams,
-  perform(state, p) {
-    return updateSystem(state, p.systemId, { mounting: p.mounting });
+  perform(state, p, catalog) {
+    const i = systemIndex(state, p.systemId);
+    return replaceSystem(state, i, keepFixingsIfValid({ ...state.systems[i], mounting: p.mounting }, catalog));
   },
 };

@@ -1,0 +1,97 @@
+/**
+ * Adjusting a chain's shape in place: the turn of a flexible-angle connector (setJointTurn) and
+ * the position of a fixing point (moveFixingPoint), docs/model.md "Flexible connectors" and
+ * "Moving fixing points". Range, walls, clashes and the fixing rules are validate()'s, checked
+ * on the result where the action is bound; these definitions snap the input and word refusals.
+ */
+import { z } from 'zod';
+import { InputError } from '../../inputError';
+import type { ActionDefinition } from '../action';
+import { findConnector, type Catalog, type ConnectorSpec } from '../catalogSchema';
+import type { Configuration, LightSystem } from '../configuration';
+import { suspensionCoordinates } from '../suspensionPoints';
+import { replaceSystem, systemIndex } from './lookup';
+
+/** Grid a moved fixing point snaps to along the chain, metres (a centimetre: what a fitter marks). */
+export const FIXING_STEP = 0.01;
+
+/** Nearest multiple of the connector's step, without −0. */
+export function snapTurn(degrees: number, con: ConnectorSpec): number {
+  const step = con.flex?.step ?? 1;
+  const t = Math.round(Math.round(degrees / step) * step * 1e6) / 1e6;
+  return t === 0 ? 0 : t;
+}
+
+/** Nearest centimetre, rounded to a micrometre so 1.3 stays 1.3. */
+export function snapFixing(s: number): number {
+  return Math.round(Math.round(s / FIXING_STEP) * FIXING_STEP * 1e6) / 1e6;
+}
+
+function jointOf(state: Configuration, systemId: string, joint: number, catalog: Catalog): { si: number; system: LightSystem; con: ConnectorSpec } {
+  const si = systemIndex(state, systemId);
+  const system = state.systems[si];
+  const j = system.joints[joint];
+  if (!j) throw new InputError(`system ${systemId} has no connector ${joint + 1}`);
+  return { si, system, con: findConnector(catalog, j.connector) };
+}
+
+const turnParams = z.object({ systemId: z.string(), joint: z.number().int().min(0), degrees: z.number() });
+
+/** Sets the turn of a flexible connector (joints[joint]), snapped to its step. */
+export const setJointTurn: ActionDefinition<z.infer<typeof turnParams>> = {
+  name: 'setJointTurn',
+  label: 'Connector angle',
+  params: turnParams,
+  isEnabled(state, p, catalog) {
+    const { con } = jointOf(state, p.systemId, p.joint, catalog);
+    return con.flex ? true : { ok: false, reason: `the ${con.name} has a fixed angle; only a flexible connector can be turned` };
+  },
+  perform(state, p, catalog) {
+    const { si, system, con } = jointOf(state, p.systemId, p.joint, catalog);
+    const turn = snapTurn(p.degrees, con);
+    // The chain's coordinates do not depend on a flexible connector's turn (it always bridges two arms), so moved fixing points stay valid.
+    return replaceSystem(state, si, { ...system, joints: system.joints.map((j, k) => (k === p.joint ? { ...j, turn } : j)) });
+  },
+  explain(problem, state, p, catalog) {
+    const { con } = jointOf(state, p.systemId, p.joint, catalog);
+    const turn = snapTurn(p.degrees, con);
+    if (problem.code === 'bad-turn') return `the ${con.name} turns at most ±${con.flex?.maxAngle ?? con.angle}°`;
+    if (problem.code === 'outside-room') return `at ${turn}° the chain would reach outside the room`;
+    if (problem.code === 'self-overlap') return `at ${turn}° the chain would run into itself`;
+    if (problem.code === 'system-overlap') return `at ${turn}° ${problem.message.replace(/^system \S+ /, 'the chain ')}`;
+    return problem.message;
+  },
+};
+
+const fixingParams = z.object({ systemId: z.string(), index: z.number().int().min(0), s: z.number() });
+
+/**
+ * Moves fixing point `index` (suspension or clip, in chain order) to chain coordinate `s`,
+ * snapped to FIXING_STEP. The system then stores all its points (`fixings`); a point on a
+ * connector does not move (a connector is always a support).
+ */
+export const moveFixingPoint: ActionDefinition<z.infer<typeof fixingParams>> = {
+  name: 'moveFixingPoint',
+  label: 'Move fixing point',
+  params: fixingParams,
+  isEnabled(state, p, catalog) {
+    const system = state.systems[systemIndex(state, p.systemId)];
+    const points = suspensionCoordinates(system, catalog);
+    const point = points[p.index];
+    if (!point) return { ok: false, reason: `system ${p.systemId} has ${points.length} fixing points, not ${p.index + 1}` };
+    if (point.joint !== null) return { ok: false, reason: `this point holds connector ${point.joint + 1}; a connector is always a support` };
+    return true;
+  },
+  perform(state, p, catalog) {
+    const si = systemIndex(state, p.systemId);
+    const system = state.systems[si];
+    const points = suspensionCoordinates(system, catalog).map((x) => x.s);
+    if (p.index >= points.length) throw new InputError(`system ${p.systemId} has ${points.length} fixing points, not ${p.index + 1}`);
+    const fixings = points.map((s, i) => (i === p.index ? snapFixing(p.s) : s));
+    return replaceSystem(state, si, { ...system, fixings });
+  },
+  explain(problem, _state, p) {
+    if (problem.code.startsWith('fixing-')) return `cannot move the point to ${snapFixing(p.s)} m: ${problem.message}`;
+    return problem.message;
+  },
+};
