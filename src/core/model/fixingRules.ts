@@ -71,16 +71,14 @@ export function fixingProblem(system: LightSystem, points: readonly number[], ca
  */
 export function keepFixingsIfValid(system: LightSystem, catalog: Catalog): LightSystem {
   if (system.fixings === undefined) return system;
-  let ok = false;
+  let ok: boolean;
   try {
     ok = fixingProblem(system, system.fixings, catalog) === null;
   } catch {
     // An unknown connector on the changed chain: validate() refuses the change; drop the points meanwhile.
     ok = false;
   }
-  if (ok) return system;
-  const { fixings: _dropped, ...rest } = system;
-  return rest;
+  return ok ? system : withoutFixings(system);
 }
 
 /** The system without moved fixing points (removing a rail renumbers the chain's coordinates). */

@@ -2,6 +2,7 @@ import type { Catalog } from '../../core/model/catalogSchema';
 import { MOUNTINGS, type LightSystem } from '../../core/model/configuration';
 import { allowedFeedPositions, describeFeedAt, driversBySize, feedLabel, feedLoads, formatWatts, sameFeedAt } from '../../core/model/feedLoads';
 import type { ActionGate } from './actionGate';
+import { ChainShapeOptions } from './ChainShapeOptions';
 import { CommitField } from './CommitField';
 import { GatedButton } from './GatedButton';
 import { OptionChips } from './OptionChips';
@@ -12,12 +13,13 @@ const ROTATIONS = [-90, -15, 15, 90] as const;
 
 const MOUNTING_LABELS: Record<(typeof MOUNTINGS)[number], string> = { suspended: 'Suspended', surface: 'On the ceiling' };
 
-/** A selected system's settings: suspension or surface mounting, power feeds, rotation, extending the chain with a rail, delete. */
+/** A selected system's settings: suspension or surface mounting, power feeds, rotation, extending the chain with a rail, connector angles and fixing points, delete. */
 export function SystemOptions({ system, catalog, gate, onClose }: { system: LightSystem; catalog: Catalog; gate: ActionGate; onClose: () => void }) {
   const systemId = system.id;
+  // A flexible connector is offered at its default turn (its `angle`) either way; its angle is then adjusted below.
   const turns = catalog.connectors.flatMap((c) => (c.angle === 0 ? [{ c, turn: 0, label: `Add rail straight (${c.name})` }] : [
-    { c, turn: c.angle, label: `Add rail turning left ${c.angle}°` },
-    { c, turn: -c.angle, label: `Add rail turning right ${c.angle}°` },
+    { c, turn: c.angle, label: `Add rail turning left ${c.angle}°${c.flex ? ` (${c.name})` : ''}` },
+    { c, turn: -c.angle, label: `Add rail turning right ${c.angle}°${c.flex ? ` (${c.name})` : ''}` },
   ]));
   return (
     <OptionsSection title="Lighting system" onClose={onClose}>
@@ -47,10 +49,11 @@ export function SystemOptions({ system, catalog, gate, onClose }: { system: Ligh
       <OptionChips title="Extend the chain">
         {turns.map(({ c, turn, label }) => (
           <GatedButton key={`${c.id}${turn}`} gate={gate} action="addRail" params={{ systemId, connector: c.id, turn }} label={label}>
-            {turn === 0 ? '→' : turn > 0 ? '↰' : '↱'} rail
+            {turn === 0 ? '→' : turn > 0 ? '↰' : '↱'} rail{c.flex ? ` ${c.angle}°` : ''}
           </GatedButton>
         ))}
       </OptionChips>
+      <ChainShapeOptions system={system} catalog={catalog} gate={gate} />
       <GatedButton gate={gate} action="deleteSystem" params={{ systemId }} label="Delete system" />
     </OptionsSection>
   );

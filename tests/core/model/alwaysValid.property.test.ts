@@ -299,7 +299,7 @@ describe('always-valid property', () => {
     expect(finishes.enabled).toBeGreaterThan(0.15 * RUNS);
     expect(finishes.refused).toBeGreaterThan(0.007 * RUNS);
     expect(objects.enabled).toBeGreaterThan(0.8 * RUNS);
-    expect(objects.refused).toBeGreaterThan(RUNS / 2);
+    expect(objects.refused).toBeGreaterThan(0.4 * RUNS);
     expect(placed).toBeGreaterThan(0.75 * RUNS);
     // the power and mounting actions, and refusals for an overloaded driver, in bulk
     expect(power.enabled).toBeGreaterThan(RUNS / 4);
@@ -321,6 +321,7 @@ describe('always-valid property', () => {
     expect(shape.refusedFixingMoves).toBeGreaterThan(RUNS / 20);
     expect(shape.movedSystems).toBeGreaterThan(RUNS / 40);
     expect(shape.turned).toBeGreaterThan(RUNS / 100);
-    // (three more action kinds thinned the others: object actions 0.8·RUNS, refused finishes 0.007·RUNS)
+    // (five more action kinds thinned the others: object actions 0.8·RUNS and 0.4·RUNS, refused finishes 0.007·RUNS;
+    // at 5 000 sequences: 66 / 50 turns, 242 / 1 664 fixing moves, 205 systems with moved points, 97 turned)
   }, 120_000);
 });

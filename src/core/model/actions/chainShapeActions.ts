@@ -74,20 +74,14 @@ export const moveFixingPoint: ActionDefinition<z.infer<typeof fixingParams>> = {
   name: 'moveFixingPoint',
   label: 'Move fixing point',
   params: fixingParams,
-  isEnabled(state, p, catalog) {
-    const system = state.systems[systemIndex(state, p.systemId)];
-    const points = suspensionCoordinates(system, catalog);
-    const point = points[p.index];
-    if (!point) return { ok: false, reason: `system ${p.systemId} has ${points.length} fixing points, not ${p.index + 1}` };
-    if (point.joint !== null) return { ok: false, reason: `this point holds connector ${point.joint + 1}; a connector is always a support` };
-    return true;
-  },
   perform(state, p, catalog) {
     const si = systemIndex(state, p.systemId);
     const system = state.systems[si];
-    const points = suspensionCoordinates(system, catalog).map((x) => x.s);
-    if (p.index >= points.length) throw new InputError(`system ${p.systemId} has ${points.length} fixing points, not ${p.index + 1}`);
-    const fixings = points.map((s, i) => (i === p.index ? snapFixing(p.s) : s));
+    const current = suspensionCoordinates(system, catalog);
+    const point = current[p.index];
+    if (!point) throw new InputError(`system ${p.systemId} has ${current.length} fixing points, not ${p.index + 1}`);
+    if (point.joint !== null) throw new InputError(`this point holds connector ${point.joint + 1}; a connector is always a support`);
+    const fixings = current.map((x, i) => (i === p.index ? snapFixing(p.s) : x.s));
     return replaceSystem(state, si, { ...system, fixings });
   },
   explain(problem, _state, p) {
