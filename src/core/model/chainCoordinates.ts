@@ -78,3 +78,19 @@ export function chainPoint(system: LightSystem, catalog: Catalog, s: number): Pl
   }
   return [system.x, system.z];
 }
+
+/**
+ * The chain coordinate of the rail point nearest to a plan point (the orthogonal projection onto
+ * each rail segment, clamped to it; the nearest rail wins, the earlier one on a tie): where a
+ * dragged fixing point goes. Connector bridges are left out, since only rails carry moved points.
+ */
+export function chainCoordinateAt(system: LightSystem, catalog: Catalog, point: PlanVec): number {
+  const chain = chainCoordinates(system, catalog);
+  let best = { d: Infinity, s: 0 };
+  railPlacements(system, catalog).forEach((r, i) => {
+    const t = Math.max(0, Math.min(r.length, (point[0] - r.start[0]) * r.direction[0] + (point[1] - r.start[1]) * r.direction[1]));
+    const d = Math.hypot(point[0] - (r.start[0] + r.direction[0] * t), point[1] - (r.start[1] + r.direction[1] * t));
+    if (d < best.d) best = { d, s: chain.railStart[i] + t };
+  });
+  return best.s;
+}

@@ -174,7 +174,8 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
   );
   const systemDrag = drag && 'systemId' in drag ? drag : null;
   // A module dragged along its rail: its system is drawn as it would be with the module there.
-  const moved = drag && 'moduleId' in drag ? drag : null;
+  // A dragged module or fixing point: its system drawn as the drag would leave it.
+  const moved = drag && 'preview' in drag ? drag : null;
   const systems = moved ? config.systems.map((s) => (s.id === moved.preview.id ? moved.preview : s)) : config.systems;
   const { width, depth, height } = config.room;
   const step = gridStep(view.scale);

@@ -1,4 +1,6 @@
 import { systemBounds } from '../../core/model/geometry';
+import { chainCoordinateAt } from '../../core/model/chainCoordinates';
+import { suspensionCoordinates } from '../../core/model/suspensionPoints';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import { type UiStore, showStatus } from '../../core/store/uiStore';
 import { detailLevel } from './detailLevel';
@@ -33,7 +35,20 @@ import {
 export type DragPreview =
   | { systemId: string; delta: PlanPoint; invalid: boolean }
   | { objectId: string; delta: PlanPoint; invalid: boolean }
-  | ModuleDragPreview;
+  | ModuleDragPreview
+  | FixingDragPreview;
+
+/**
+ * A fixing point being dragged along its chain (system level, its system selected): the system as
+ * it would be with the point at `s`, the last position moveFixingPoint accepts (snapped to 1 cm);
+ * `invalid` while the pointer is at a refused one (the reason is in the status line).
+ */
+export interface FixingDragPreview {
+  fixingIndex: number;
+  preview: LightSystem;
+  s: number;
+  invalid: boolean;
+}
 
 /**
  * A module being dragged along its rail: its system as it would be with the module at `offset`,
@@ -63,12 +78,16 @@ export const DEFAULT_VIEWPORT: Viewport = { width: 800, height: 600 };
 /** Dropped systems and objects land on whole centimetres, so the fields show clean numbers. */
 export const DROP_SNAP = 0.01;
 
+/** A plan point as the model's [x, z] vector. */
+const worldVec = (p: PlanPoint): readonly [number, number] => [p.x, p.z];
+
 type Gesture =
   | { mode: 'pending'; down: ScreenPoint; hit: PlanHit }
   | { mode: 'pan'; last: ScreenPoint }
   | { mode: 'system'; id: string; down: ScreenPoint; startScale: number }
   | { mode: 'object'; id: string; down: ScreenPoint; startScale: number }
   | { mode: 'module'; id: string; on: ModuleOnRail; grab: number; lastValid: number; lastReason: string | null }
+  | { mode: 'fixing'; systemId: string; index: number; start: number; grab: number; lastValid: number; lastReason: string | null }
   | { mode: 'pinch'; view: PlanView; world: PlanPoint; d0: number };
 
 /**
@@ -236,7 +255,14 @@ export class PlannerController implements CommandContext {
       // Below the threshold the press may still be a tap: nothing moves yet.
       if (Math.abs(at.sx - g.down.sx) < DRAG_THRESHOLD_PX && Math.abs(at.sy - g.down.sy) < DRAG_THRESHOLD_PX) return;
       const on = g.hit.moduleId && detailLevel(this.view.scale) === 'module' ? this.moduleOn(g.hit.moduleId) : null;
-      if (g.hit.moduleId && on) {
+      const fixingSystem = g.hit.fixing !== undefined && detailLevel(this.view.scale) !== 'module' && this.store.getState().selection?.id === g.hit.systemId ? this.systemById(g.hit.systemId) : null;
+      if (fixingSystem && g.hit.fixing !== undefined) {
+        // At system level, on a selected system: its fixing dot slides along the chain (the pointer projected onto the rails).
+        const { catalog } = this.store.getState();
+        const start = suspensionCoordinates(fixingSystem, catalog)[g.hit.fixing].s;
+        const grab = chainCoordinateAt(fixingSystem, catalog, worldVec(screenToWorld(this.view, g.down))) - start;
+        this.gesture = { mode: 'fixing', systemId: fixingSystem.id, index: g.hit.fixing, start, grab, lastValid: start, lastReason: null };
+      } else if (g.hit.moduleId && on) {
         // Zoomed in to modules: the module slides along its rail (the pointer projected onto it).
         this.gesture = { mode: 'module', id: g.hit.moduleId, on, grab: alongRail(on, screenToWorld(this.view, g.down)) - on.offset, lastValid: on.offset, lastReason: null };
         if (this.store.getState().selection?.id !== g.hit.moduleId) this.store.getState().select({ kind: 'module', id: g.hit.moduleId });
@@ -264,6 +290,9 @@ export class PlannerController implements CommandContext {
       this.setDrag({ systemId: cur.id, delta, invalid });
     } else if (cur?.mode === 'module') {
       this.moduleDragTo(cur, alongRail(cur.on, screenToWorld(this.view, at)) - cur.grab);
+    } else if (cur?.mode === 'fixing') {
+      const system = this.systemById(cur.systemId);
+      if (system) this.fixingDragTo(cur, chainCoordinateAt(system, this.store.getState().catalog, worldVec(screenToWorld(this.view, at))) - cur.grab);
     } else if (cur?.mode === 'object') {
       const o = this.store.getState().config.objects.find((x) => x.id === cur.id);
       if (!o) return;
@@ -282,6 +311,40 @@ export class PlannerController implements CommandContext {
     else if (g?.mode === 'system') this.drop(g.id, this.pointerDelta(g, at));
     else if (g?.mode === 'object') this.dropObject(g.id, this.pointerDelta(g, at));
     else if (g?.mode === 'module') this.dropModule(g);
+    else if (g?.mode === 'fixing') this.dropFixing(g);
+  }
+
+  private systemById(id: string | undefined): LightSystem | null {
+    return this.store.getState().config.systems.find((s) => s.id === id) ?? null;
+  }
+
+  /**
+   * The dragged fixing point asked to sit at chain coordinate `requested`: previewed there (snapped)
+   * when moveFixingPoint accepts it; otherwise it stays at the last accepted position and the
+   * reason is shown (once per new reason), as a dragged module does.
+   */
+  private fixingDragTo(g: Extract<Gesture, { mode: 'fixing' }>, requested: number): void {
+    const { config, catalog } = this.store.getState();
+    const outcome = attemptAction(config, 'moveFixingPoint', { systemId: g.systemId, index: g.index, s: requested }, catalog);
+    if (outcome.ok) {
+      const preview = outcome.next.systems.find((x) => x.id === g.systemId);
+      if (!preview) return;
+      const s = suspensionCoordinates(preview, catalog)[g.index].s;
+      this.gesture = { ...g, lastValid: s, lastReason: null };
+      this.setDrag({ fixingIndex: g.index, preview, s, invalid: false });
+      return;
+    }
+    if (outcome.reason !== g.lastReason) this.explain(outcome.reason);
+    this.gesture = { ...g, lastReason: outcome.reason };
+    const kept = this.drag && 'fixingIndex' in this.drag ? this.drag.preview : this.systemById(g.systemId);
+    if (kept) this.setDrag({ fixingIndex: g.index, preview: kept, s: g.lastValid, invalid: true });
+  }
+
+  /** One undoable moveFixingPoint to the last accepted position, when it differs from where the point was. */
+  private dropFixing(g: Extract<Gesture, { mode: 'fixing' }>): void {
+    this.setDrag(null);
+    if (Math.abs(g.lastValid - g.start) < 1e-9) return;
+    this.run('moveFixingPoint', { systemId: g.systemId, index: g.index, s: g.lastValid });
   }
 
   private moduleOn(moduleId: string): ModuleOnRail | null {

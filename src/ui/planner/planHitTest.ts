@@ -1,6 +1,7 @@
 import type { Catalog } from '../../core/model/catalogSchema';
 import type { Configuration } from '../../core/model/configuration';
 import { modulePlacements, systemElements, type PlanRect } from '../../core/model/geometry';
+import { suspensionPoints } from '../../core/model/suspensionPoints';
 import { objectPolygons } from './objectShapes';
 import { type PlanPoint, type PlanView, type ScreenPoint, screenToWorld } from './viewTransform';
 
@@ -11,7 +12,12 @@ export interface PlanHit {
   moduleId?: string;
   /** A piece of furniture or an imported model (found only where no system is). */
   objectId?: string;
+  /** Index of a movable fixing point (suspension or clip on a rail, not on a connector) within FIXING_HIT_PX, with its system. */
+  fixing?: number;
 }
+
+/** A fixing point's dot takes a press this close to its centre (pixels). */
+export const FIXING_HIT_PX = 8;
 
 /** Module symbols are drawn wider than the rail profile so they read as separate parts. */
 export const MODULE_WIDTH_FACTOR = 1.8;
@@ -92,14 +98,22 @@ export function objectAt(config: Configuration, x: number, z: number, margin: nu
  */
 export function planHitTest(config: Configuration, catalog: Catalog, view: PlanView, point: ScreenPoint): PlanHit {
   const { x, z } = screenToWorld(view, point);
+  // The nearest movable fixing dot of the hit system within FIXING_HIT_PX, added to the hit (what a tap selects is unchanged).
+  const withFixing = (hit: PlanHit & { systemId: string }): PlanHit => {
+    const system = config.systems.find((s) => s.id === hit.systemId);
+    if (!system) return hit;
+    const dots = suspensionPoints(system, catalog).map((p, i) => ({ i, joint: p.joint, d: Math.hypot(p.plan[0] - x, p.plan[1] - z) }));
+    const dot = dots.filter((q) => q.joint === null && q.d * view.scale <= FIXING_HIT_PX).sort((a, b) => a.d - b.d)[0];
+    return dot ? { ...hit, fixing: dot.i } : hit;
+  };
   for (const system of [...config.systems].reverse()) {
     const module = [...modulePlacements(system, catalog)].reverse().find((m) => inside(moduleSymbol(m.footprint), x, z));
-    if (module) return { systemId: system.id, moduleId: module.moduleId };
+    if (module) return withFixing({ systemId: system.id, moduleId: module.moduleId });
     const elements = systemElements(system, catalog);
     for (const widen of [false, true]) {
       for (let i = elements.length - 1; i >= 0; i--) {
         if (elements[i].some((r) => inside(widen ? hitStrip(r, view.scale) : r, x, z))) {
-          return { systemId: system.id, railId: i % 2 === 0 ? system.rails[i / 2]?.id : undefined };
+          return withFixing({ systemId: system.id, railId: i % 2 === 0 ? system.rails[i / 2]?.id : undefined });
         }
       }
     }
