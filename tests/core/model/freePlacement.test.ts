@@ -8,34 +8,29 @@ import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { bindAction } from '../../../src/core/model/actionDefinitions';
 import type { Catalog } from '../../../src/core/model/catalogSchema';
-import { createConfiguration, type Configuration, type LightSystem } from '../../../src/core/model/configuration';
+import type { Configuration } from '../../../src/core/model/configuration';
 import { freeGaps, placeInLargestGap, snapOffset } from '../../../src/core/model/freePositions';
 import { modulePlacements } from '../../../src/core/model/geometry';
 import { newModule } from '../../../src/core/model/presets';
 import { deserializeConfiguration, serializeConfiguration } from '../../../src/core/model/sceneFile';
 import { validate } from '../../../src/core/model/validate';
-import { catalog, enabled, run } from './helpers';
+import { catalog, enabled, run, systemAtOneOne } from './helpers';
 
 /** The default catalog with a 0.1 m placement grid, so the neighbours' ends (0.15 m spots) fall between grid points. */
 const coarse: Catalog = { ...catalog, rail: { ...catalog.rail, placementStep: 0.1 } };
 
 /** One system at (1, 1) heading +x: rail r2 of 1.5 m ('start': spot m3 at 0–0.15, linear m4 at 0.15–0.75), then r5 (1 m, empty) through a straight connector. */
 function twoRails(): Configuration {
-  const system: LightSystem = {
-    id: 's1',
-    x: 1,
-    z: 1,
-    rotation: 0,
-    suspension: catalog.suspension.default,
-    rails: [
+  return systemAtOneOne(
+    [
       { id: 'r2', length: 1.5, distribution: 'start', modules: [newModule(catalog, 'm3', 'spot'), newModule(catalog, 'm4', 'linear')] },
       { id: 'r5', length: 1, distribution: 'start', modules: [] },
     ],
-    joints: [{ connector: 'straight', turn: 0 }],
-    feeds: [{ id: 'f6', at: 'start', driver: catalog.feed.defaultDriver }],
-    mounting: 'suspended',
-  };
-  return { ...createConfiguration({ width: 8, depth: 6, height: 3 }), systems: [system], nextId: 7 };
+    [{ connector: 'straight', turn: 0 }],
+    'f6',
+    7,
+    { width: 8, depth: 6, height: 3 },
+  );
 }
 
 const rail0 = (c: Configuration) => c.systems[0].rails[0];

@@ -1,7 +1,7 @@
 import { defaultCatalog } from '../../../src/core/catalog/defaultCatalog';
 import type { Catalog } from '../../../src/core/model/catalogSchema';
 import { bindAction } from '../../../src/core/model/actionDefinitions';
-import { createConfiguration, type Configuration, type LightSystem } from '../../../src/core/model/configuration';
+import { createConfiguration, type Configuration, type Joint, type LightSystem, type Rail, type Room } from '../../../src/core/model/configuration';
 
 export const catalog: Catalog = defaultCatalog;
 
@@ -58,4 +58,24 @@ export function powered(config: Configuration, cat: Catalog = catalog): Configur
     if (!sys.feeds.some((f) => f.at === 'end')) s = run(s, 'addFeed', { systemId: sys.id, at: 'end', driver: largest }, cat);
   }
   return s;
+}
+
+/**
+ * A configuration with one suspended system 's1' at (1, 1) heading +x: the given rails and
+ * joints, one feed `feedId` at the chain start with the catalog's default driver; `nextId` the
+ * next free id number (the fixtures of the free-placement, drag and fixing-point tests).
+ */
+export function systemAtOneOne(rails: Rail[], joints: Joint[], feedId: string, nextId: number, room: Partial<Room> = {}): Configuration {
+  const system: LightSystem = {
+    id: 's1',
+    x: 1,
+    z: 1,
+    rotation: 0,
+    suspension: catalog.suspension.default,
+    rails,
+    joints,
+    feeds: [{ id: feedId, at: 'start', driver: catalog.feed.defaultDriver }],
+    mounting: 'suspended',
+  };
+  return { ...createConfiguration(room), systems: [system], nextId };
 }

@@ -7,30 +7,15 @@
  * Positions by hand, metres along the chain; tolerance 1e-9 m.
  */
 import { describe, expect, it } from 'vitest';
-import { createConfiguration, type Configuration } from '../../../src/core/model/configuration';
+import type { Configuration } from '../../../src/core/model/configuration';
+import { systemAtOneOne } from '../../core/model/helpers';
 import { suspensionCoordinates } from '../../../src/core/model/suspensionPoints';
 import { detailLevel } from '../../../src/ui/planner/detailLevel';
 import { TestPlanner, catalog } from './testPlanner';
 
 /** System s1 at (1, 1) heading +x, one 2.5 m rail: suspensions at 0.5 and 2.0 m (inset min(0.5, 2.5/4), no point between: 1.5 ≤ 2). */
 function oneRail(): Configuration {
-  return {
-    ...createConfiguration(),
-    systems: [
-      {
-        id: 's1',
-        x: 1,
-        z: 1,
-        rotation: 0,
-        suspension: catalog.suspension.default,
-        rails: [{ id: 'r2', length: 2.5, distribution: 'start', modules: [] }],
-        joints: [],
-        feeds: [{ id: 'f3', at: 'start', driver: catalog.feed.defaultDriver }],
-        mounting: 'suspended',
-      },
-    ],
-    nextId: 4,
-  };
+  return systemAtOneOne([{ id: 'r2', length: 2.5, distribution: 'start', modules: [] }], [], 'f3', 4);
 }
 
 const points = (t: TestPlanner) => suspensionCoordinates(t.system(), catalog).map((p) => p.s);

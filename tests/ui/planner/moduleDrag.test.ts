@@ -6,7 +6,8 @@
  * Positions by hand, metres from the rail start; tolerance 1e-9 m.
  */
 import { describe, expect, it } from 'vitest';
-import { createConfiguration, type Configuration } from '../../../src/core/model/configuration';
+import type { Configuration } from '../../../src/core/model/configuration';
+import { systemAtOneOne } from '../../core/model/helpers';
 import { newModule } from '../../../src/core/model/presets';
 import { detailLevel } from '../../../src/ui/planner/detailLevel';
 import { zoomAt } from '../../../src/ui/planner/viewTransform';
@@ -14,26 +15,15 @@ import { TestPlanner, catalog } from './testPlanner';
 
 /** System s1 at (1, 1) heading +x: rail r2 of 1.5 m packed from the start (spot m3 0–0.15, linear m4 0.15–0.75), then rail r5. */
 function rails(): Configuration {
-  return {
-    ...createConfiguration(),
-    systems: [
-      {
-        id: 's1',
-        x: 1,
-        z: 1,
-        rotation: 0,
-        suspension: catalog.suspension.default,
-        rails: [
-          { id: 'r2', length: 1.5, distribution: 'start', modules: [newModule(catalog, 'm3', 'spot'), newModule(catalog, 'm4', 'linear')] },
-          { id: 'r5', length: 1, distribution: 'start', modules: [] },
-        ],
-        joints: [{ connector: 'straight', turn: 0 }],
-        feeds: [{ id: 'f6', at: 'start', driver: catalog.feed.defaultDriver }],
-        mounting: 'suspended',
-      },
+  return systemAtOneOne(
+    [
+      { id: 'r2', length: 1.5, distribution: 'start', modules: [newModule(catalog, 'm3', 'spot'), newModule(catalog, 'm4', 'linear')] },
+      { id: 'r5', length: 1, distribution: 'start', modules: [] },
     ],
-    nextId: 7,
-  };
+    [{ connector: 'straight', turn: 0 }],
+    'f6',
+    7,
+  );
 }
 
 function zoomedIn(): TestPlanner {
