@@ -48,9 +48,12 @@ test('2D → 3D → 2D → 3D without a change bakes nothing and opens lit on it
   expect(first.firstLitFrame).toBe(1);
   expect(first.done).toBe(true);
   expect(first.floor!.avg).toBeGreaterThan(0);
+  const framesBefore = (await status(page)).frames;
   await back2d(page);
   await open3d(page);
   const second = await status(page);
+  // The same display, kept hidden behind the plan (its frame count runs on), not a rebuilt one.
+  expect(second.frames).toBeGreaterThan(framesBefore);
   // Nothing baked across the toggles: no group bake, no indirect solve.
   expect(second.bake.groupBakes).toBe(baked.bake.groupBakes);
   expect(second.bake.indirectSolves).toBe(baked.bake.indirectSolves);

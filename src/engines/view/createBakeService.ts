@@ -6,6 +6,7 @@ import { QUALITY_LEVELS, type QualityLevel } from '../relight/qualityLevels';
 import { createBakeContext, type BakeCanvas, type BakeContext } from './createBakeContext';
 import { createBakeSlicer, glFence, type BakeSlicer, type GpuFence } from './createBakeSlicer';
 import { createObjectsMemo } from './createObjectsMemo';
+import { lowMemoryDevice } from './lowMemoryDevice';
 
 /** What a bake service tells its subscribers. */
 export type BakeEvent =
@@ -92,11 +93,6 @@ export const INPUT_QUIET_MS = 800;
 /** Input that means the user is interacting (a hovering pointer does not count). */
 const INPUT_EVENTS = ['pointerdown', 'pointermove', 'keydown', 'wheel', 'touchstart'] as const;
 
-const pageLowMemory = (): boolean => {
-  const memory = typeof navigator === 'undefined' ? undefined : (navigator as Navigator & { deviceMemory?: number }).deviceMemory;
-  return typeof memory === 'number' && memory <= 2;
-};
-
 /**
  * The 3D view's bake, living as long as the configurator rather than the view (docs/viewer.md,
  * "Always ready: the bake service"): the bake context and its relight engine, the background
@@ -107,7 +103,7 @@ const pageLowMemory = (): boolean => {
 export function createBakeService(options: BakeServiceOptions = {}): BakeService {
   let quality: QualityLevel = options.quality ?? 'balanced';
   const visibility = options.visibility !== undefined ? options.visibility : typeof document === 'undefined' ? null : document;
-  const lowMemory = options.lowMemory ?? pageLowMemory();
+  const lowMemory = options.lowMemory ?? lowMemoryDevice();
   const input = options.input !== undefined ? options.input : typeof window === 'undefined' ? null : window;
   const quietMs = options.inputQuietMs ?? INPUT_QUIET_MS;
   const clock = options.now ?? (() => performance.now());

@@ -76,7 +76,9 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
       frames.request();
     },
   });
-  const frames = createFrameScheduler({ draw: () => view.render(renderer), canDraw: () => !display.lost, onFrame: events.onFrame });
+  /** False while the view is kept but hidden (the 2D plan is on screen): no frames are drawn. */
+  let active = true;
+  const frames = createFrameScheduler({ draw: () => view.render(renderer), canDraw: () => active && !display.lost, onFrame: events.onFrame });
   controls.addEventListener('change', frames.request);
   const camera = createCameraRig(controls, view);
   const stopTaps = watchTaps(canvas, (x, y) => events.onPick?.(view.pick(x, y)));
@@ -172,6 +174,15 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
       camera.resize(width, height);
       renderer.setSize(camera.size.width, camera.size.height, false);
       frames.request();
+    },
+    /**
+     * Shown or hidden without being disposed (the planner keeps the view while the 2D plan is on
+     * screen, so the next 2D → 3D toggle costs one frame): hidden, nothing is drawn; shown again,
+     * one frame with the maps it holds.
+     */
+    setActive(next: boolean) {
+      active = next;
+      if (active) frames.request();
     },
     /** Frees the display only: the service keeps its engine, maps and pending work. */
     dispose() {

@@ -17,6 +17,7 @@ import { FilePanel } from './FilePanel';
 import { SurfacesPanel } from './SurfacesPanel';
 import { defaultSurfaceFinishes } from '../../core/catalog/surfaceFinishes';
 import { LazyView3D } from '../viewer/LazyView3D';
+import { lowMemoryDevice } from '../../engines/view/lowMemoryDevice';
 import { createActionGate } from './actionGate';
 import { detailLevel } from './detailLevel';
 import { formatMoney } from './formatMoney';
@@ -106,6 +107,11 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, shareNotice = n
 
   usePlanGestures(wrapRef, controller);
   usePlannerKeys(controller, mode === '2d');
+  // Once opened, the 3D view stays mounted (hidden) behind the plan, so going back to 3D draws one
+  // frame instead of building a renderer and uploading the maps again; not on low-memory devices.
+  const [keep3d, setKeep3d] = useState(false);
+  // Adjusting state while rendering (React's pattern for state that follows another value): no extra effect pass.
+  if (mode === '3d' && !keep3d && !lowMemoryDevice()) setKeep3d(true);
   const level = detailLevel(view.scale);
 
   // A library item tapped in the panel goes to the middle of the visible plan; the drawer closes to show it.
@@ -187,9 +193,9 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, shareNotice = n
                 </div>
               )}
             </div>
-          ) : (
-            <LazyView3D store={store} loadPhotometry={footprints.loadPhotometry} onBack={() => ui.setState({ mode: '2d' })} />
-          )}
+          ) : null}
+          {/* One place in the tree, so the view survives the 2D plan: kept hidden once opened (keep3d), shown again at the next toggle. */}
+          {(mode === '3d' || keep3d) && <LazyView3D store={store} loadPhotometry={footprints.loadPhotometry} onBack={() => ui.setState({ mode: '2d' })} visible={mode === '3d'} />}
           <BottomBar controller={controller} mode={mode} />
         </div>
         <aside ref={panelRef} className={`side-panel${panelOpen ? ' open' : ''}`} aria-label="Presets and price">

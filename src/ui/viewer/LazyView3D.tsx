@@ -12,6 +12,11 @@ export interface LazyView3DProps {
   /** The host's photometry loader (catalog paths relative to its asset folder, `assetBase` when embedded). */
   loadPhotometry: (path: string) => Promise<Photometry>;
   onBack: () => void;
+  /**
+   * False while the planner keeps the view hidden behind the 2D plan (docs/viewer.md, "Always
+   * ready"): nothing of it shows, no frames are drawn, and the next 2D → 3D toggle costs one frame.
+   */
+  visible?: boolean;
 }
 
 function Message({ text, onBack, testId }: { text: string; onBack: () => void; testId: string }) {
@@ -28,28 +33,28 @@ function Message({ text, onBack, testId }: { text: string; onBack: () => void; t
 }
 
 /** A failed chunk download or a crash inside the 3D view must not take the planner down. */
-class ViewerBoundary extends Component<{ onBack: () => void; children: ReactNode }, { error: string | null }> {
+class ViewerBoundary extends Component<{ onBack: () => void; visible: boolean; children: ReactNode }, { error: string | null }> {
   override state = { error: null as string | null };
   static getDerivedStateFromError(error: Error) {
     return { error: error.message || 'unknown error' };
   }
   override render() {
-    if (this.state.error) return <Message text={`The 3D view could not be loaded (${this.state.error}). Your configuration is unchanged.`} onBack={this.props.onBack} testId="view3d-error" />;
+    if (this.state.error) return !this.props.visible ? null : <Message text={`The 3D view could not be loaded (${this.state.error}). Your configuration is unchanged.`} onBack={this.props.onBack} testId="view3d-error" />;
     return this.props.children;
   }
 }
 
 /** What the 2D/3D toggle shows in 3D: a support check, then the lazily loaded viewer. */
-export function LazyView3D({ store, loadPhotometry, onBack }: LazyView3DProps) {
+export function LazyView3D({ store, loadPhotometry, onBack, visible = true }: LazyView3DProps) {
   const problem = useMemo(() => webglSupportProblem(), []);
   if (problem) {
     setViewerStatus(store, { ...CLOSED_STATUS, error: problem });
-    return <Message text={problem} onBack={onBack} testId="view3d-unsupported" />;
+    return visible ? <Message text={problem} onBack={onBack} testId="view3d-unsupported" /> : null;
   }
   return (
-    <ViewerBoundary onBack={onBack}>
-      <Suspense fallback={<Message text="Loading the 3D view…" onBack={onBack} testId="view3d-loading" />}>
-        <View3D store={store} loadPhotometry={loadPhotometry} onBack={onBack} />
+    <ViewerBoundary onBack={onBack} visible={visible}>
+      <Suspense fallback={visible ? <Message text="Loading the 3D view…" onBack={onBack} testId="view3d-loading" /> : null}>
+        <View3D store={store} loadPhotometry={loadPhotometry} onBack={onBack} visible={visible} />
       </Suspense>
     </ViewerBoundary>
   );

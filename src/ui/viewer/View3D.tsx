@@ -26,6 +26,8 @@ export interface View3DProps {
   /** The host's photometry loader (the plan's footprints load through the same one and cache). */
   loadPhotometry: (path: string) => Promise<Photometry>;
   onBack: () => void;
+  /** False while the planner keeps the view hidden behind the 2D plan: no frames, status closed (LazyView3D). */
+  visible?: boolean;
 }
 
 const PRESET_LABEL: Record<CameraPresetName, string> = { eye: 'Eye height', top: 'Top', corner: 'Corner' };
@@ -37,7 +39,7 @@ const QUALITY_LABEL: Record<QualityLevel, string> = { fast: 'Fast', balanced: 'B
  * change), so opening the view again after no change shows the baked light at once. Reads the
  * configuration, never changes it except through store actions.
  */
-export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
+export default function View3D({ store, loadPhotometry, onBack, visible = true }: View3DProps) {
   const config = useStore(store, (s) => s.config);
   const host = useMemo(() => bakeHostFor(store, loadPhotometry), [store, loadPhotometry]);
   const [feed, setFeed] = useState<BakeFeed | null>(() => host.current());
@@ -49,6 +51,10 @@ export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
   const sceneRef = useRef<BakeScene | null>(null);
   const status = useRef<ViewerStatus>({ ...CLOSED_STATUS, open: true });
   const mountedAt = useRef(0);
+  /** The controller's frame count when the view was last shown (firstLitFrame counts from there). */
+  const framesAtShow = useRef(0);
+  const visibleRef = useRef(visible);
+  const unmounted = useRef(false);
   const [progress, setProgress] = useState({ fraction: 0, done: false, lit: false });
   const [error, setError] = useState<string | null>(null);
   const [mode, setMode] = useState<ViewMode>('light');
@@ -64,21 +70,39 @@ export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
   const [mapsVersion, setMapsVersion] = useState(0);
   const [liveState, setLiveState] = useState<NonNullable<ViewerStatus['live']>['state'] | null>(null);
 
+  // The view's own record is kept while it is hidden behind the plan; hosts see a closed view then.
   const publish = (patch: Partial<ViewerStatus>) => {
-    if (!status.current.open && !('open' in patch)) return; // late events after unmount
+    if (unmounted.current) return; // late events after unmount
     status.current = { ...status.current, ...patch };
-    setViewerStatus(store, status.current);
+    if (visibleRef.current) setViewerStatus(store, status.current);
   };
 
   useEffect(() => {
-    mountedAt.current = performance.now();
-    publish({ open: true });
+    unmounted.current = false;
     return () => {
+      unmounted.current = true;
       status.current = { ...CLOSED_STATUS };
       setViewerStatus(store, status.current);
     };
-    // eslint-disable-next-line react-hooks/exhaustive-deps
   }, [store]);
+
+  // Shown (first mount or back from the plan): a new opening, lit on its first frame when the maps are there; hidden: closed, no frames.
+  useEffect(() => {
+    visibleRef.current = visible;
+    if (visible) {
+      mountedAt.current = performance.now();
+      framesAtShow.current = status.current.frames;
+      status.current = { ...status.current, open: true, lit: false, firstLitMs: null, firstLitFrame: null };
+      setViewerStatus(store, status.current);
+      const wrap = wrapRef.current;
+      const r = wrap?.getBoundingClientRect();
+      if (r && r.width > 0 && r.height > 0) ctrl.current?.resize(Math.round(r.width), Math.round(r.height));
+      ctrl.current?.setActive(true);
+    } else {
+      ctrl.current?.setActive(false);
+      setViewerStatus(store, { ...CLOSED_STATUS });
+    }
+  }, [visible, store]);
 
   // The bake service: running already (started in idle time after the planner showed), or started now.
   useEffect(() => {
@@ -125,7 +149,7 @@ export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
           if (!status.current.lit && litRef.current) {
             patch.lit = true;
             patch.firstLitMs = performance.now() - mountedAt.current;
-            patch.firstLitFrame = frames;
+            patch.firstLitFrame = frames - framesAtShow.current;
           }
           publish(patch);
         },
@@ -147,10 +171,13 @@ export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
       return;
     }
     ctrl.current = controller;
+    // Made while hidden (the feed arrived after the user went back to the plan): no frames until shown.
+    controller.setActive(visibleRef.current);
     const wrap = wrapRef.current!;
     const ro = new ResizeObserver(() => {
       const r = wrap.getBoundingClientRect();
-      controller.resize(Math.round(r.width), Math.round(r.height));
+      // Hidden behind the plan the box is 0 × 0: keep the last size (the next show resizes anyway).
+      if (r.width > 0 && r.height > 0) controller.resize(Math.round(r.width), Math.round(r.height));
     });
     ro.observe(wrap);
     // Every configuration the feed resolved (and handed to the service): the room, fixtures and objects on screen.
@@ -218,7 +245,7 @@ export default function View3D({ store, loadPhotometry, onBack }: View3DProps) {
   const maxPlane = config.room.height - 0.1;
 
   return (
-    <section className="viewer3d" aria-label="3D light view" data-testid="view3d">
+    <section className="viewer3d" aria-label="3D light view" data-testid="view3d" hidden={!visible}>
       <div className="viewer3d-canvas-wrap" ref={wrapRef}>
         <canvas ref={canvasRef} className="viewer3d-canvas" data-testid="view3d-canvas" />
         {!progress.done && !error && (
