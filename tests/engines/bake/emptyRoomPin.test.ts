@@ -14,15 +14,11 @@ import { SURFACE_NAMES } from '../../../src/core/model/lightingScene';
 import type { BakeScene } from '../../../src/engines/bake/bakeScene';
 import { createBaker } from '../../../src/engines/bake/createBaker';
 import { basePhotometry, isotropic, spot } from './bakeTestKit';
+import { recordShaderSources } from './recordShaderSources';
 import { withHeadlessGL } from './withHeadlessGL';
 
 const gl = withHeadlessGL();
-const compiled: string[] = [];
-const shaderSource = gl.shaderSource.bind(gl);
-gl.shaderSource = (shader: WebGLShader, source: string) => {
-  compiled.push(source);
-  shaderSource(shader, source);
-};
+const compiled = recordShaderSources(gl);
 const baker = createBaker(gl);
 
 const room: BakeScene['room'] = {

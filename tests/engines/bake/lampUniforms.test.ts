@@ -20,15 +20,11 @@ import { surfaceLayouts } from '../../../src/engines/bake/surfaceLayout';
 import { createRelightEngine } from '../../../src/engines/relight/createRelightEngine';
 import { boxMesh } from './objects/objectFixtures';
 import { basePhotometry, spot, uniformRoom } from './bakeTestKit';
+import { recordShaderSources } from './recordShaderSources';
 import { withHeadlessGL } from './withHeadlessGL';
 
 const gl = withHeadlessGL();
-const compiled: string[] = [];
-const shaderSource = gl.shaderSource.bind(gl);
-gl.shaderSource = (shader: WebGLShader, source: string) => {
-  compiled.push(source);
-  shaderSource(shader, source);
-};
+const compiled = recordShaderSources(gl);
 const baker = createBaker(gl);
 
 /** A tall opening (10 cm > sourceSpacing): two 4×4 grids, the bottom one emitting down, the top one up. */
