@@ -1,5 +1,6 @@
 import { expect, test, type Page } from '@playwright/test';
 import type { ViewerStatus as Status } from '../src/ui/viewer/viewerStatus';
+import { trackCanvases, type CanvasTracking } from './helpers';
 
 /**
  * The 3D view is always ready (issue #15, docs/viewer.md "Always ready: the bake service"): the
@@ -155,22 +156,12 @@ test('the quality control switches the level, rebakes, and the choice is kept fo
 });
 
 test('an embedded configurator bakes in the background too, and destroy() releases its bake context', async ({ page }) => {
-  // Keep a handle on the canvases the page creates (the baker's is never attached to the document).
-  await page.addInitScript(() => {
-    const created: HTMLCanvasElement[] = [];
-    (window as unknown as { __canvases: HTMLCanvasElement[] }).__canvases = created;
-    const original = document.createElement.bind(document);
-    document.createElement = ((tag: string, options?: ElementCreationOptions) => {
-      const el = original(tag, options);
-      if (tag.toLowerCase() === 'canvas') created.push(el as HTMLCanvasElement);
-      return el;
-    }) as typeof document.createElement;
-  });
+  await trackCanvases(page);
   await page.goto('/embed.html');
   await page.getByTestId('host-action-single').click();
   await expect.poll(() => page.evaluate(() => window.shopDemo!.instance!.view3d().bake.groupBakes), BAKE).toBe(3);
   const live = () =>
-    page.evaluate(() => (window as unknown as { __canvases: HTMLCanvasElement[] }).__canvases.filter((c) => !c.isConnected && c.getContext('webgl2') && !c.getContext('webgl2')!.isContextLost()).length);
+    page.evaluate(() => (window as unknown as CanvasTracking).__detachedWebgl2().length);
   // The bake context is the one detached WebGL2 canvas still alive (the support checks and the calibration lose theirs).
   expect(await live()).toBe(1);
   await page.getByTestId('toggle-configurator').click();

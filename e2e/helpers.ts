@@ -27,3 +27,25 @@ export async function zoomToModuleLevel(page: Page): Promise<void> {
   }
   await expect(plan).toHaveAttribute('data-level', 'module');
 }
+
+/** In-page handle installed by trackCanvases. */
+export type CanvasTracking = { __detachedWebgl2: () => HTMLCanvasElement[] };
+
+/**
+ * Records every canvas the page creates from now on (call before `goto`): the baker's own canvas
+ * is never attached to the document, so it is found only this way. In the page,
+ * `window.__detachedWebgl2()` lists the detached canvases whose WebGL2 context is still alive,
+ * oldest first (the support checks and the calibration lose theirs).
+ */
+export async function trackCanvases(page: Page): Promise<void> {
+  await page.addInitScript(() => {
+    const created: HTMLCanvasElement[] = [];
+    (window as unknown as CanvasTracking).__detachedWebgl2 = () => created.filter((c) => !c.isConnected && c.getContext('webgl2') && !c.getContext('webgl2')!.isContextLost());
+    const original = document.createElement.bind(document);
+    document.createElement = ((tag: string, options?: ElementCreationOptions) => {
+      const el = original(tag, options);
+      if (tag.toLowerCase() === 'canvas') created.push(el as HTMLCanvasElement);
+      return el;
+    }) as typeof document.createElement;
+  });
+}

@@ -1,6 +1,7 @@
 import { expect, test, type Page } from '@playwright/test';
 import { PNG } from 'pngjs';
 import type { ViewerStatus as Status } from '../src/ui/viewer/viewerStatus';
+import { trackCanvases, type CanvasTracking } from './helpers';
 
 test.use({ reducedMotion: 'reduce', viewport: { width: 1280, height: 800 } });
 
@@ -94,23 +95,12 @@ test('lux mode shows a legend and floor statistics; context loss recovers withou
 });
 
 test('losing the bake context rebakes every group after the restore; the configuration is untouched', async ({ page }) => {
-  // Keep a handle on canvases the page creates (the baker's is never attached to the document).
-  await page.addInitScript(() => {
-    const created: HTMLCanvasElement[] = [];
-    (window as unknown as { __canvases: HTMLCanvasElement[] }).__canvases = created;
-    const original = document.createElement.bind(document);
-    document.createElement = ((tag: string, options?: ElementCreationOptions) => {
-      const el = original(tag, options);
-      if (tag.toLowerCase() === 'canvas') created.push(el as HTMLCanvasElement);
-      return el;
-    }) as typeof document.createElement;
-  });
+  await trackCanvases(page);
   await openCornerL(page);
   const config = await page.evaluate(() => window.luxbox!.getConfig());
   const before = await status(page);
   const lost = await page.evaluate(() => {
-    const canvases = (window as unknown as { __canvases: HTMLCanvasElement[] }).__canvases;
-    const bake = canvases.filter((c) => !c.isConnected && c.getContext('webgl2') && !c.getContext('webgl2')!.isContextLost()).pop();
+    const bake = (window as unknown as CanvasTracking).__detachedWebgl2().pop();
     if (!bake) return false;
     const ext = bake.getContext('webgl2')!.getExtension('WEBGL_lose_context')!;
     ext.loseContext();
