@@ -40,6 +40,45 @@ export interface ModuleInstance {
    * or all distributed. Scene file version 5.
    */
   readonly offset?: number;
+  /** Switched off (keeps its level for switching back on); absent: on. Scene file version 7, docs/model.md "Light scenes". */
+  readonly on?: boolean;
+  /** Catalog colour filter (gel) id in front of the module; absent: none. Scene file version 7, docs/colour-filters.md. */
+  readonly filter?: string;
+  /** Aim of an adjustable module relative to its rail; absent: straight down. Scene file version 7, docs/model.md "Aiming". */
+  readonly aim?: ModuleAim;
+}
+
+/**
+ * Aim of an adjustable module (catalog `adjustable` limits). Rotation turns the module about the
+ * vertical, relative to the rail's direction; tilt swings its optical axis away from straight down.
+ */
+export interface ModuleAim {
+  /** Degrees in [0, 360), counterclockwise seen from above, 0 = tilting toward the rail's direction (+u). */
+  readonly rotation: number;
+  /** Degrees from straight down, within the type's tilt range. */
+  readonly tilt: number;
+}
+
+/** What a light scene stores for one module (docs/model.md, "Light scenes"). */
+export interface ModuleLook {
+  readonly on: boolean;
+  /** 0..1, as ModuleInstance.dimming. */
+  readonly level: number;
+  /** Kelvin; one of the type's ccts. */
+  readonly cct: number;
+  /** Catalog filter id; absent: none. */
+  readonly filter?: string;
+}
+
+/** A named light scene (a cue): a stored look of every module, recalled with a crossfade. */
+export interface LightScene {
+  /** 'q12', from nextId. */
+  readonly id: string;
+  readonly name: string;
+  /** Crossfade time when recalled, seconds in [0, 30]. */
+  readonly fade: number;
+  /** Module id → look; a module not listed keeps its state when the scene is recalled. */
+  readonly looks: Readonly<Record<string, ModuleLook>>;
 }
 
 export interface Rail {
@@ -171,6 +210,8 @@ export interface Configuration {
   readonly objects: readonly RoomObject[];
   /** Imported meshes by id ('i7'); each is used by at least one object. */
   readonly importedMeshes: Readonly<Record<string, ImportedMesh>>;
+  /** Light scenes in playback order (scene file version 7); absent or empty: none recorded. */
+  readonly lightScenes?: readonly LightScene[];
   /** Next number for generated ids ('s7', 'r8', 'm9', 'o10', 'i11', feeds 'f12'); keeps ids unique and deterministic. */
   readonly nextId: number;
 }

@@ -22,6 +22,8 @@ import { validate } from './validate';
 
 export const SCENE_FILE_FORMAT = 'luxbox-configuration';
 /**
+ * 7: modules may be switched off (`on`), carry a colour filter (`filter`) and an aim (`aim`); the
+ *    configuration may hold light scenes (`lightScenes`), docs/model.md "Light scenes", "Aiming".
  * 6: systems may carry moved fixing points (`fixings`) and joints may use a flexible-angle connector
  *    (any turn within its range), docs/model.md "Flexible connectors", "Moving fixing points".
  * 5: modules may carry a free position along their rail (`offset`, docs/model.md "Free positions").
@@ -29,7 +31,7 @@ export const SCENE_FILE_FORMAT = 'luxbox-configuration';
  * 3: objects (furniture, imported models) and imported meshes (docs/model.md, "Objects").
  * 2: modules may carry a DMX patch (`dmx`, docs/live-control.md). Older files are migrated on reading.
  */
-export const SCENE_FILE_VERSION = 6;
+export const SCENE_FILE_VERSION = 7;
 /** Share strings longer than this are refused before decoding (browsers cap URLs near 64k). */
 export const MAX_SHARE_STRING = 60_000;
 
@@ -88,6 +90,10 @@ const configurationSchema = z.strictObject({
               dmx: z.strictObject({ universe: z.number(), address: z.number(), resolution: z.union([z.literal(8), z.literal(16)]), cct: z.boolean() }).optional(),
               // Version 5: a free position (start, metres from the rail start); its rules are validate()'s (module-past-end, module-overlap).
               offset: z.number().optional(),
+              // Version 7: on/off, colour filter and aim; their rules are validate()'s.
+              on: z.boolean().optional(),
+              filter: ref.optional(),
+              aim: z.strictObject({ rotation: z.number(), tilt: z.number() }).optional(),
             }),
           ),
         }),
@@ -131,6 +137,17 @@ const configurationSchema = z.strictObject({
       }),
     )
     .optional(),
+  // Version 7: light scenes (cues); names, fades, module ids and looks are validate()'s rules.
+  lightScenes: z
+    .array(
+      z.strictObject({
+        id,
+        name: z.string().max(200),
+        fade: z.number(),
+        looks: z.record(id, z.strictObject({ on: z.boolean(), level: z.number(), cct: z.number(), filter: ref.optional() })),
+      }),
+    )
+    .optional(),
   nextId: z.number().int().positive(),
 });
 
@@ -162,6 +179,7 @@ export const migrations: Record<number, (doc: Record<string, unknown>, catalog: 
     refuseV4Fields(doc, 1);
     refuseV5Fields(doc, 1);
     refuseV6Fields(doc, 1);
+    refuseV7Fields(doc, 1);
     return { ...doc, version: 2 };
   },
   // 2 → 3: version 3 added objects and imported meshes; a version 2 configuration has none.
@@ -173,6 +191,7 @@ export const migrations: Record<number, (doc: Record<string, unknown>, catalog: 
     refuseV4Fields(doc, 2);
     refuseV5Fields(doc, 2);
     refuseV6Fields(doc, 2);
+    refuseV7Fields(doc, 2);
     return { ...doc, version: 3 };
   },
   // 3 → 4: version 4 added power feeds and the mounting. An older system hung on suspensions and had
@@ -185,6 +204,7 @@ export const migrations: Record<number, (doc: Record<string, unknown>, catalog: 
     refuseV4Fields(doc, 3);
     refuseV5Fields(doc, 3);
     refuseV6Fields(doc, 3);
+    refuseV7Fields(doc, 3);
     const conf = c as Record<string, unknown>;
     let nextId = typeof conf.nextId === 'number' && Number.isInteger(conf.nextId) ? conf.nextId : null;
     const systems = (conf.systems as unknown[]).map((raw) => {
@@ -207,15 +227,33 @@ export const migrations: Record<number, (doc: Record<string, unknown>, catalog: 
   4(doc) {
     refuseV5Fields(doc, 4);
     refuseV6Fields(doc, 4);
+    refuseV7Fields(doc, 4);
     return { ...doc, version: 5 };
   },
   // 5 → 6: version 6 added moved fixing points and flexible connectors; a version 5 system's
   // fixing points are the derived ones and its joints turn by a fixed angle, so it reads as is.
   5(doc) {
     refuseV6Fields(doc, 5);
+    refuseV7Fields(doc, 5);
     return { ...doc, version: 6 };
   },
+  // 6 → 7: version 7 added on/off, filters and aims per module and light scenes; a version 6 module
+  // is on, unfiltered and points straight down, and there are no scenes, so the content reads as is.
+  6(doc) {
+    refuseV7Fields(doc, 6);
+    return { ...doc, version: 7 };
+  },
 };
+
+/** On/off, filters, aims and light scenes came with version 7: an older file that has them was not written by luxbox. */
+function refuseV7Fields(doc: Record<string, unknown>, version: number): void {
+  for (const key of ['on', 'filter', 'aim']) {
+    const at = firstModuleWith(doc.configuration, key);
+    if (at) throw new SceneFileError(`configuration.${at}: needs "version": 7 (this file says version ${version})`);
+  }
+  const c = doc.configuration;
+  if (typeof c === 'object' && c !== null && 'lightScenes' in c) throw new SceneFileError(`configuration.lightScenes: needs "version": 7 (this file says version ${version})`);
+}
 
 /** Moved fixing points came with version 6: a file that says it is older and has them was not written by luxbox. */
 function refuseV6Fields(doc: Record<string, unknown>, version: number): void {
@@ -283,6 +321,7 @@ export function toSceneFile(config: Configuration, catalog: Catalog): SceneFile 
     systems: config.systems,
     ...(config.objects.length > 0 ? { objects: config.objects } : {}),
     ...(Object.keys(importedMeshes).length > 0 ? { importedMeshes } : {}),
+    ...(config.lightScenes && config.lightScenes.length > 0 ? { lightScenes: config.lightScenes } : {}),
     nextId: config.nextId,
   };
   return { format: SCENE_FILE_FORMAT, version: SCENE_FILE_VERSION, catalog: catalog.id, configuration: configuration as SceneFile['configuration'] };

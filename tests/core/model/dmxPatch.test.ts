@@ -139,8 +139,7 @@ describe('DMX patch: scene file version 2', () => {
   it('is saved with the configuration, and round-trips through files and share links', () => {
     const c = patched();
     const file = JSON.parse(serializeConfiguration(c, catalog));
-    expect(SCENE_FILE_VERSION).toBe(6);
-    expect(file.version).toBe(6);
+        expect(file.version).toBe(SCENE_FILE_VERSION);
     expect(file.configuration.systems[0].rails[0].modules[0].dmx).toEqual({ universe: 7, address: 100, resolution: 16, cct: true });
     expect(deserializeConfiguration(serializeConfiguration(c, catalog), catalog)).toEqual(c);
     expect(decodeShareString(encodeShareString(c, catalog), catalog)).toEqual(c);
@@ -154,7 +153,7 @@ describe('DMX patch: scene file version 2', () => {
     // Saved again, it is a version 5 file with the same content, plus what version 4 added
     // (feeds.test.ts: each system hangs on suspensions and gets its planned feeds, ids from nextId).
     const again = JSON.parse(serializeConfiguration(c, catalog));
-    expect(again.version).toBe(6);
+    expect(again.version).toBe(SCENE_FILE_VERSION);
     const old = JSON.parse(text).configuration;
     const feeds = again.configuration.systems.flatMap((s: { feeds: unknown[] }) => s.feeds).length;
     expect(again.configuration.systems.map(({ feeds: _f, mounting: _m, ...rest }: Record<string, unknown>) => rest)).toEqual(old.systems);

@@ -13,7 +13,7 @@ import { chainCoordinates } from '../../../src/core/model/chainCoordinates';
 import { createConfiguration, type Configuration } from '../../../src/core/model/configuration';
 import { fixingProblem } from '../../../src/core/model/fixingRules';
 import { railPlacements } from '../../../src/core/model/geometry';
-import { deserializeConfiguration, serializeConfiguration } from '../../../src/core/model/sceneFile';
+import { deserializeConfiguration, serializeConfiguration, SCENE_FILE_VERSION } from '../../../src/core/model/sceneFile';
 import { suspensionCoordinates, suspensionPoints } from '../../../src/core/model/suspensionPoints';
 import { validate } from '../../../src/core/model/validate';
 import { catalog, enabled, run } from './helpers';
@@ -148,7 +148,7 @@ describe('moving fixing points', () => {
   it('scene file version 6 keeps moved points and turns; version 5 files migrate, with fixings refused', () => {
     const moved = run(run(c, 'moveFixingPoint', { systemId: 's1', index: 0, s: 0.4 }), 'setJointTurn', { systemId: 's1', joint: 0, degrees: -35 });
     const text = serializeConfiguration(moved, catalog);
-    expect(JSON.parse(text).version).toBe(6);
+    expect(JSON.parse(text).version).toBe(SCENE_FILE_VERSION);
     expect(deserializeConfiguration(text, catalog)).toEqual(moved);
     for (const version of [1, 2, 3, 4, 5]) {
       const old = JSON.parse(serializeConfiguration(flexChain(45), catalog));

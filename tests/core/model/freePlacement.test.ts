@@ -12,7 +12,7 @@ import type { Configuration } from '../../../src/core/model/configuration';
 import { freeGaps, placeInLargestGap, snapOffset } from '../../../src/core/model/freePositions';
 import { modulePlacements } from '../../../src/core/model/geometry';
 import { newModule } from '../../../src/core/model/presets';
-import { deserializeConfiguration, serializeConfiguration } from '../../../src/core/model/sceneFile';
+import { deserializeConfiguration, serializeConfiguration, SCENE_FILE_VERSION } from '../../../src/core/model/sceneFile';
 import { validate } from '../../../src/core/model/validate';
 import { catalog, enabled, run, systemAtOneOne } from './helpers';
 
@@ -142,7 +142,7 @@ describe('scene file version 5', () => {
   it('saves and reads free positions', () => {
     const c = run(twoRails(), 'moveModule', { moduleId: 'm4', offset: 0.83 });
     const file = JSON.parse(serializeConfiguration(c, catalog));
-    expect(file.version).toBe(6);
+    expect(file.version).toBe(SCENE_FILE_VERSION);
     expect(file.configuration.systems[0].rails[0].modules[1].offset).toBe(0.85);
     expect(deserializeConfiguration(serializeConfiguration(c, catalog), catalog)).toEqual(c);
   });

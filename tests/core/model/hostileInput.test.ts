@@ -1,7 +1,7 @@
 /** Issue 18: hostile and odd input to the configurator's formats — one short line, never a crash, never a dropped field. */
 import { describe, expect, it } from 'vitest';
 import { CatalogError, parseCatalog } from '../../../src/core/model/catalogSchema';
-import { SceneFileError, configurationFromData, decodeShareString, deserializeConfiguration, encodeShareString, serializeConfiguration } from '../../../src/core/model/sceneFile';
+import { SceneFileError, configurationFromData, decodeShareString, deserializeConfiguration, encodeShareString, serializeConfiguration, SCENE_FILE_VERSION } from '../../../src/core/model/sceneFile';
 import { duplicateKey, excerpt, jsonShapeProblem, oneLine, suggestField } from '../../../src/core/model/untrustedJson';
 import catalogData from '../../../src/core/catalog/default-catalog.json';
 import { catalog, withPreset } from './helpers';
@@ -48,7 +48,7 @@ describe('configuration files', () => {
   });
 
   it('says a newer version was made by a newer luxbox', () => {
-    expect(refusal(JSON.stringify({ ...file(), version: 7, configuration: { hologram: true } }))).toBe('a.json was made by a newer luxbox (version 7; this one reads up to 6)');
+    expect(refusal(JSON.stringify({ ...file(), version: SCENE_FILE_VERSION + 1, configuration: { hologram: true } }))).toBe(`a.json was made by a newer luxbox (version ${SCENE_FILE_VERSION + 1}; this one reads up to ${SCENE_FILE_VERSION})`);
   });
 
   it('keeps syntax errors to one short line (no excerpt of the text)', () => {

@@ -3,7 +3,7 @@ import { bindAction } from '../../../src/core/model/actionDefinitions';
 import { createConfiguration, type Configuration } from '../../../src/core/model/configuration';
 import { boxPart, composeParts, frustumPart } from '../../../src/core/model/furniture/meshParts';
 import { objectMesh, objectPlacement, placedBounds, sourceMesh } from '../../../src/core/model/objectGeometry';
-import { decodeShareString, deserializeConfiguration, encodeShareLink, encodeShareString, SceneFileError, serializeConfiguration } from '../../../src/core/model/sceneFile';
+import { decodeShareString, deserializeConfiguration, encodeShareLink, encodeShareString, SceneFileError, serializeConfiguration, SCENE_FILE_VERSION } from '../../../src/core/model/sceneFile';
 import { toLightingScene } from '../../../src/core/model/toLightingScene';
 import { validate } from '../../../src/core/model/validate';
 import type { TriangleMesh } from '../../../src/core/mesh/triangleMesh';
@@ -171,7 +171,7 @@ describe('objects in scene files and share links', () => {
     const s = furnished();
     const text = serializeConfiguration(s, catalog);
     const file = JSON.parse(text);
-    expect(file.version).toBe(6);
+    expect(file.version).toBe(SCENE_FILE_VERSION);
     expect(typeof file.configuration.importedMeshes.i2.positions).toBe('string');
     // 8 vertices × 3 Float32 = 96 bytes → 128 base64 characters
     expect(file.configuration.importedMeshes.i2.positions.length).toBe(128);
