@@ -1,0 +1,27 @@
+import en from './messages/en/index';
+import type { Language } from './languages';
+import type { MessageTree } from './messageTypes';
+
+// English ships in the first-screen bundle; every other language is its own lazy chunk, fetched
+// before the first render only when the locale asks for it (docs/i18n.md, "Bundles").
+const loaded: Partial<Record<Language, MessageTree>> = { en };
+
+const loaders: Record<Exclude<Language, 'en'>, () => Promise<{ default: MessageTree }>> = {
+  de: () => import('./messages/de/index'),
+  fr: () => import('./messages/fr/index'),
+  it: () => import('./messages/it/index'),
+};
+
+/** The messages of `language` if already loaded (English always is). */
+export function loadedMessages(language: Language): MessageTree | undefined {
+  return loaded[language];
+}
+
+/** Loads (once) and returns the messages of `language`. */
+export async function loadMessages(language: Language): Promise<MessageTree> {
+  const have = loaded[language];
+  if (have) return have;
+  const mod = await loaders[language as Exclude<Language, 'en'>]();
+  loaded[language] = mod.default;
+  return mod.default;
+}

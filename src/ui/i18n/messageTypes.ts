@@ -1,0 +1,33 @@
+import type en from './messages/en/index';
+
+/**
+ * A message that depends on a count: the CLDR plural category of `params.count` picks the text
+ * (Intl.PluralRules); `other` is required because every language has it.
+ */
+export interface PluralMessage {
+  zero?: string;
+  one?: string;
+  two?: string;
+  few?: string;
+  many?: string;
+  other: string;
+}
+
+/** English (the source) defines the keys; the message tree of every language has its shape. */
+export type SourceMessages = typeof en;
+
+export type Area = keyof SourceMessages & string;
+
+/** What one area of a translation must provide: every English key, a string for a string and a plural for a plural. */
+export type AreaMessages<T> = { [K in keyof T]: T[K] extends string ? string : PluralMessage };
+
+/** A whole language: every area of the English tree. */
+export type MessageTree = { [A in Area]: AreaMessages<SourceMessages[A]> };
+
+/** 'area.key' for every key English defines; a wrong key is a type error. */
+export type MessageKey = { [A in Area]: `${A}.${keyof SourceMessages[A] & string}` }[Area];
+
+/** Values for `{name}` placeholders; numbers are formatted for the locale, `count` also picks the plural. */
+export type MessageParams = Record<string, string | number>;
+
+export type Translate = (key: MessageKey, params?: MessageParams) => string;

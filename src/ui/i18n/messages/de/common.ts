@@ -1,0 +1,11 @@
+import type { AreaMessages } from '../../messageTypes';
+import type en from '../en/common';
+
+export default {
+  languageLabel: 'Sprache',
+  dismissMessage: 'Meldung schließen',
+  close: 'Schließen',
+  cancel: 'Abbrechen',
+  ok: 'OK',
+  loading: 'Wird geladen…',
+} satisfies AreaMessages<typeof en>;

@@ -1,0 +1,11 @@
+import type { AreaMessages } from '../../messageTypes';
+import type en from '../en/common';
+
+export default {
+  languageLabel: 'Langue',
+  dismissMessage: 'Fermer le message',
+  close: 'Fermer',
+  cancel: 'Annuler',
+  ok: 'OK',
+  loading: 'Chargement…',
+} satisfies AreaMessages<typeof en>;

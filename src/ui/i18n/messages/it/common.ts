@@ -1,0 +1,11 @@
+import type { AreaMessages } from '../../messageTypes';
+import type en from '../en/common';
+
+export default {
+  languageLabel: 'Lingua',
+  dismissMessage: 'Chiudi il messaggio',
+  close: 'Chiudi',
+  cancel: 'Annulla',
+  ok: 'OK',
+  loading: 'Caricamento…',
+} satisfies AreaMessages<typeof en>;
