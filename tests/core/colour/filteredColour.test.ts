@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { cctAndDuv } from '../../../src/core/colour/cctDuv';
-import { findColourFilter, transmissionOnCmfGrid } from '../../../src/core/colour/colourFilterLibrary';
+import { findColourFilter } from '../../../src/core/colour/colourFilterLibrary';
 import { filteredColour, xyzToLinearSrgb } from '../../../src/core/colour/filteredColour';
 import { moduleColour } from '../../../src/core/colour/moduleColour';
 import { cctToLinearRgb } from '../../../src/core/photometry/cct';
