@@ -15,6 +15,7 @@ import { addFeed, moveFeed, removeFeed, setFeedDriver } from './actions/feedActi
 import { addRail, removeRail, setDistribution, setRailLength } from './actions/railActions';
 import { moveFixingPoint, setJointTurn } from './actions/chainShapeActions';
 import { addModule, moveModule, removeModule, setModuleBeam, setModuleCct, setModuleDimming, setModuleType } from './actions/moduleActions';
+import { aimAt, setAim } from './actions/aimActions';
 import { autoPatch, clearPatch, setModulePatch } from './actions/patchActions';
 import { addObject, moveObject, refinishObject, removeObject, resizeObject, rotateObject } from './actions/objectActions';
 
@@ -44,6 +45,8 @@ export const actionDefinitions = {
   setModuleCct,
   setModuleBeam,
   setModuleDimming,
+  setAim,
+  aimAt,
   setModulePatch,
   autoPatch,
   clearPatch,

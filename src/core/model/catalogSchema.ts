@@ -5,6 +5,7 @@
  */
 import { z } from 'zod';
 import { InputError } from '../inputError';
+import { colourFilter } from '../colour/colourFilterLibrary';
 import { describeIssues, formatPath as formatFieldPath, jsonShapeProblem, oneLine, parseUntrustedJson, schemaFieldNames } from './untrustedJson';
 
 /** Module distributions along a rail; defined precisely in docs/model.md and src/core/model/distribution.ts. */
@@ -46,6 +47,8 @@ const moduleTypeSchema = z
     defaultCct: z.number().int(),
     beams: z.array(beamSchema).min(1),
     defaultBeam: nonEmpty,
+    /** Takes a colour filter (gel) from the catalog's `filters` (docs/colour-filters.md); absent: no holder. */
+    filterHolder: z.boolean().optional(),
   })
   .superRefine((t, ctx) => {
     if (!t.ccts.includes(t.defaultCct)) ctx.addIssue({ code: 'custom', path: ['defaultCct'], message: `${t.defaultCct} K is not one of ccts` });
@@ -164,6 +167,11 @@ export const catalogSchema = z
       .min(1),
     moduleTypes: z.array(moduleTypeSchema).min(1),
     presets: z.array(presetSchema),
+    /**
+     * Colour filters sold as accessories (docs/colour-filters.md): `id` names a filter of the library
+     * (src/core/catalog/colour-filters.json); modules of a type with `filterHolder` take one.
+     */
+    filters: z.array(z.strictObject({ id: nonEmpty, article: nonEmpty, price, source: z.string().optional() })).optional(),
   })
   .superRefine((c, ctx) => {
     const r = c.rail;
@@ -191,6 +199,10 @@ export const catalogSchema = z
     uniqueIds(c.drivers, ['drivers'], ctx);
     uniqueIds(c.connectors, ['connectors'], ctx);
     uniqueIds(c.moduleTypes, ['moduleTypes'], ctx);
+    uniqueIds(c.filters ?? [], ['filters'], ctx);
+    c.filters?.forEach((f, i) => {
+      if (!colourFilter(f.id)) ctx.addIssue({ code: 'custom', path: ['filters', i, 'id'], message: `'${f.id}' is not a filter of the colour-filter library` });
+    });
     uniqueIds(c.presets, ['presets'], ctx);
     c.presets.forEach((p, i) => {
       if (p.joints.length !== p.rails.length - 1) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints'], message: `needs ${p.rails.length - 1} joints for ${p.rails.length} rails` });

@@ -2,9 +2,10 @@
  * The configuration as the baker's input (LightingScene v1, or v2 with objects, docs/scene-format.md): one
  * luminaire per module, at its photometric centre (plan centre of the module,
  * y = ceiling − suspension, or − the surface mount's drop), turned so C0 runs along its rail (yaw = rail
- * heading) plus the optic's roll from the catalog, coloured by its CCT.
+ * heading) plus the optic's roll from the catalog, then aimed (adjustable modules, aim.ts), coloured by its CCT.
  */
 import { cctToLinearRgb } from '../photometry/cct';
+import { aimedOrientation } from './aim';
 import { findBeam, findModuleType, type Catalog } from './catalogSchema';
 import type { Configuration } from './configuration';
 import { modulePlacements } from './geometry';
@@ -30,13 +31,15 @@ export function toLightingScene(config: Configuration, catalog: Catalog, options
     for (const p of modulePlacements(system, catalog)) {
       const m = byId.get(p.moduleId)!;
       const beam = findBeam(findModuleType(catalog, m.type), m.beam);
+      // An aimed module turns about the vertical, then tilts (aim.ts derives the angles).
+      const { yaw, pitch, roll } = aimedOrientation(p.heading, beam.roll, m.aim);
       luminaires.push({
         id: m.id,
         photometry: base + beam.photometry,
         position: [p.centre[0], y, p.centre[1]],
-        yaw: p.heading,
-        pitch: 0,
-        roll: beam.roll,
+        yaw,
+        pitch,
+        roll,
         dimming: m.dimming,
         color: cctToLinearRgb(m.cct) as Rgb,
       });

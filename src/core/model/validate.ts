@@ -4,6 +4,7 @@
  * state reachable through enabled actions is empty; the property test in
  * tests/core/model checks it.
  */
+import { aimProblem } from './aim';
 import { allowedTurn, findModuleType, onGrid, type Catalog } from './catalogSchema';
 import { fixingProblem } from './fixingRules';
 import { freeRailProblem, isFreeRail } from './freePositions';
@@ -324,6 +325,8 @@ function ownProblems(s: LightSystem, at: string, roomHeight: number, catalog: Ca
       if (!type.beams.some((b) => b.id === m.beam)) p('unknown-beam', `${mp}.beam`, `${type.name} has no beam '${m.beam}'`);
       if (!type.ccts.includes(m.cct)) p('cct', `${mp}.cct`, `${type.name} is not available in ${m.cct} K (offered: ${type.ccts.join(', ')} K)`);
       if (!Number.isFinite(m.dimming) || m.dimming < 0 || m.dimming > 1) p('dimming', `${mp}.dimming`, `dimming must be between 0 and 1 (got ${m.dimming})`);
+      const aim = m.aim !== undefined ? aimProblem(m.aim, type) : null;
+      if (aim) p(aim.field === 'aim' ? 'aim-fixed' : 'aim-range', `${mp}.${aim.field}`, aim.message);
       const patch = m.dmx ? patchRangeProblem(m.dmx, type) : null;
       if (patch) p('dmx-range', `${mp}.dmx`, patch);
     });

@@ -3,7 +3,7 @@
  * action leads to a valid state, and a refused action, performed anyway,
  * either throws or leads to a state validate() rejects. Random sequences over
  * every action — rails (removed at any index: splits; flexible connectors turned; fixing points moved),
- * modules (moved to free positions), patches,
+ * modules (moved to free positions; aimed, in and out of their limits), patches,
  * finishes and objects (furniture, imported meshes) mixed —
  * seeded so failures reproduce.
  */
@@ -47,7 +47,7 @@ interface Step {
 }
 
 const unit = fc.double({ min: 0, max: 1, noNaN: true });
-const step = fc.record({ kind: fc.nat(46), i: fc.nat(50), j: fc.nat(50), a: unit, b: unit, c: unit });
+const step = fc.record({ kind: fc.nat(48), i: fc.nat(50), j: fc.nat(50), a: unit, b: unit, c: unit });
 
 const pick = <T>(xs: readonly T[], i: number, fallback: T): T => (xs.length ? xs[i % xs.length] : fallback);
 
@@ -196,6 +196,14 @@ function toAction(s: Configuration, st: Step): [string, unknown] {
       // Small steps near a point (mostly kept) or anywhere on the chain (mostly refused).
       return ['moveFixingPoint', { systemId: sys, index: st.j % (count + 1), s: st.c < 0.6 ? near - 0.5 + u : -0.5 + u * (length + 1) }];
     }
+    case 47: {
+      // Aims of any module (fixed types refused), mostly out of range: rotations across ±2 turns and the 355–360° gap, tilts −30…150°.
+      const rotation = st.c < 0.3 ? 355 + (st.i % 10) * 0.5 : -720 + 1440 * st.a;
+      return ['setAim', { moduleId: mod, aim: { rotation, tilt: st.b < 0.5 ? -30 + 4 * (st.j % 46) : -30 + 180 * st.b } }];
+    }
+    case 48:
+      // Points anywhere in and around the room, below, level with and above the modules (aimAt clamps).
+      return ['aimAt', { moduleId: mod, point: [-1 + st.a * (W + 2), st.c * 4.5, -1 + st.b * (D + 2)] }];
     default:
       return ['setRailLength', { railId: rail, length: 0.5 + 0.1 * (st.j % 26) }];
   }
@@ -216,6 +224,7 @@ describe('always-valid property', () => {
     const power = { enabled: 0, refused: 0, overloads: 0, surface: 0 };
     const free = { moves: 0, refusedMoves: 0, splits: 0, removals: 0, freeRails: 0 };
     const shape = { turns: 0, refusedTurns: 0, fixingMoves: 0, refusedFixingMoves: 0, movedSystems: 0, turned: 0 };
+    const aims = { enabled: 0, refused: 0, aimed: 0 };
     let placed = 0;
     fc.assert(
       fc.property(unit, unit, unit, fc.array(step, { minLength: 5, maxLength: 30 }), (a, b, c, steps) => {
@@ -233,6 +242,7 @@ describe('always-valid property', () => {
           if (name === 'removeRail' && e === true) free.removals++;
           if (name === 'setJointTurn') shape[e === true ? 'turns' : 'refusedTurns']++;
           if (name === 'moveFixingPoint') shape[e === true ? 'fixingMoves' : 'refusedFixingMoves']++;
+          if (name === 'setAim' || name === 'aimAt') aims[e === true ? 'enabled' : 'refused']++;
           if (e === true) {
             counts.enabled++;
             const systemsBefore = s.systems.length;
@@ -254,7 +264,17 @@ describe('always-valid property', () => {
         }
         // derived outputs of any reachable state are finite
         const scene = toLightingScene(s, catalog);
-        for (const l of scene.luminaires) expect([...l.position, l.yaw, l.roll].every(Number.isFinite)).toBe(true);
+        for (const l of scene.luminaires) expect([...l.position, l.yaw, l.pitch, l.roll].every(Number.isFinite)).toBe(true);
+        // every aim of a reachable state lies within its type's limits and on its stops (validate() says why otherwise)
+        for (const m of s.systems.flatMap((x) => x.rails.flatMap((r) => r.modules))) {
+          if (!m.aim) continue;
+          aims.aimed++;
+          const lim = catalog.moduleTypes.find((t) => t.id === m.type)!.adjustable!;
+          expect(m.aim.tilt).toBeGreaterThanOrEqual(lim.tilt.min);
+          expect(m.aim.tilt).toBeLessThanOrEqual(lim.tilt.max);
+          expect(m.aim.rotation).toBeGreaterThanOrEqual(lim.rotation.min);
+          expect(m.aim.rotation).toBeLessThanOrEqual(lim.rotation.max);
+        }
         for (const r of Object.values(scene.room.reflectance)) expect(reflectanceRgb(r).every((v) => v >= 0 && v <= MAX_REFLECTANCE)).toBe(true);
         expect(Number.isFinite(billOfMaterials(s, catalog).total)).toBe(true);
         // Installable by construction: every feed within its driver, the load all assigned, and the
@@ -291,7 +311,7 @@ describe('always-valid property', () => {
       }),
       { seed: 20240917, numRuns: RUNS },
     );
-    console.log(`always-valid: ${RUNS} sequences, ${JSON.stringify({ counts, finishes, objects, power, placed, free, shape })}`);
+    console.log(`always-valid: ${RUNS} sequences, ${JSON.stringify({ counts, finishes, objects, power, placed, free, shape, aims })}`);
     // both branches were exercised in bulk (at 2 000 sequences: 9 278 enabled, 15 157 refused steps;
     // 371 / 31 finishes, 2 561 / 1 172 object actions, 2 017 objects placed; bounds scale with RUNS)
     expect(counts.enabled).toBeGreaterThan(3 * RUNS);
@@ -303,7 +323,8 @@ describe('always-valid property', () => {
     expect(placed).toBeGreaterThan(0.75 * RUNS);
     // the power and mounting actions, and refusals for an overloaded driver, in bulk
     expect(power.enabled).toBeGreaterThan(RUNS / 4);
-    expect(power.refused).toBeGreaterThan(RUNS / 2);
+    // (two aim kinds thinned them: 466 at 1 000 sequences)
+    expect(power.refused).toBeGreaterThan(0.4 * RUNS);
     expect(power.overloads).toBeGreaterThan(RUNS / 10);
     expect(power.surface).toBeGreaterThan(RUNS / 10);
     // free positions and rail removals at any index (splits included), in bulk
@@ -321,6 +342,10 @@ describe('always-valid property', () => {
     expect(shape.refusedFixingMoves).toBeGreaterThan(RUNS / 20);
     expect(shape.movedSystems).toBeGreaterThan(RUNS / 40);
     expect(shape.turned).toBeGreaterThan(RUNS / 100);
+    // aims set and refused (fixed types) in bulk, and aimed modules in the final states
+    expect(aims.enabled).toBeGreaterThan(RUNS / 20);
+    expect(aims.refused).toBeGreaterThan(RUNS / 40);
+    expect(aims.aimed).toBeGreaterThan(RUNS / 40);
     // (five more action kinds thinned the others: object actions 0.8·RUNS and 0.4·RUNS, refused finishes 0.007·RUNS;
     // at 5 000 sequences: 66 / 50 turns, 242 / 1 664 fixing moves, 205 systems with moved points, 97 turned)
   }, 120_000);

@@ -13,6 +13,7 @@ import type { Configuration, ModuleInstance, Rail } from '../configuration';
 import { isFreeRail, placeInLargestGap, placementStep, roundOffset, snapOffset } from '../freePositions';
 import { railModuleOffsets } from '../geometry';
 import { isTunable } from '../dmxPatch';
+import { clampAim } from '../aim';
 import { newModule } from '../presets';
 import { findModule, findRail, replaceRail, takeId, updateModule } from './lookup';
 
@@ -141,7 +142,7 @@ export const removeModule: ActionDefinition<z.infer<typeof moduleIdParams>> = {
 
 const typeParams = z.object({ moduleId: z.string(), type: z.string() });
 
-/** Switches a module's type; only to types that fit without clashing. Keeps the CCT where the new type offers it, and the DMX patch (without a CCT channel when the new type has one CCT). */
+/** Switches a module's type; only to types that fit without clashing. Keeps the CCT where the new type offers it, the DMX patch (without a CCT channel when the new type has one CCT), and the aim within the new type's limits (none for a fixed type). */
 export const setModuleType: ActionDefinition<z.infer<typeof typeParams>> = {
   name: 'setModuleType',
   label: 'Module type',
@@ -152,7 +153,13 @@ export const setModuleType: ActionDefinition<z.infer<typeof typeParams>> = {
     const cct = type.ccts.includes(module.cct) ? module.cct : type.defaultCct;
     // A type with one CCT has no CCT channel: the patch keeps its level channels and shrinks, so it never meets a neighbour.
     const dmx = module.dmx?.cct && !isTunable(type) ? { ...module.dmx, cct: false } : module.dmx;
-    return updateModule(state, p.moduleId, { type: type.id, beam: type.defaultBeam, cct, ...(dmx ? { dmx } : {}) });
+    // An aim carries over within the new type's limits (clamped, docs/aiming.md); a fixed type points straight down.
+    const aim = module.aim && type.adjustable ? clampAim(module.aim, type.adjustable) : undefined;
+    const { aim: _dropped, ...rest } = module;
+    void _dropped;
+    const ref = findModule(state, p.moduleId);
+    const next: ModuleInstance = { ...rest, type: type.id, beam: type.defaultBeam, cct, ...(dmx ? { dmx } : {}), ...(aim ? { aim } : {}) };
+    return replaceRail(state, ref, { ...ref.rail, modules: ref.rail.modules.map((x, i) => (i === ref.moduleIndex ? next : x)) });
   },
   explain(problem, _state, p, catalog) {
     if (!FIT_CODES.has(problem.code)) return problem.message;
