@@ -37,6 +37,23 @@ const beamSchema = z.strictObject({
   source: z.string().optional(),
 });
 
+/**
+ * One axis of an adjustable head: min..max degrees (0 ≤ min ≤ max < `limit`; rotation is relative to the
+ * rail, tilt from straight down) and optional detents every `stops` degrees from 0, on which min and
+ * max must lie (and which divide 360 for rotation, so the circle closes on a stop).
+ */
+function aimRangeSchema(limit: number) {
+  return z
+    .strictObject({ min: z.number().finite().min(0).lt(limit), max: z.number().finite().min(0).lt(limit), stops: positive.max(90).optional() })
+    .superRefine((r, ctx) => {
+      if (r.min > r.max) ctx.addIssue({ code: 'custom', path: ['min'], message: 'must not exceed max' });
+      if (r.stops !== undefined) {
+        for (const key of ['min', 'max'] as const) if (!onGrid(r[key], r.stops)) ctx.addIssue({ code: 'custom', path: [key], message: `must be a multiple of stops ${r.stops}` });
+        if (limit === 360 && !onGrid(360, r.stops)) ctx.addIssue({ code: 'custom', path: ['stops'], message: 'must divide 360' });
+      }
+    });
+}
+
 const moduleTypeSchema = z
   .strictObject({
     id: nonEmpty,
@@ -49,6 +66,8 @@ const moduleTypeSchema = z
     defaultBeam: nonEmpty,
     /** Takes a colour filter (gel) from the catalog's `filters` (docs/colour-filters.md); absent: no holder. */
     filterHolder: z.boolean().optional(),
+    /** An adjustable head (docs/aiming.md): how far it turns and tilts, degrees; absent: fixed, straight down. */
+    adjustable: z.strictObject({ tilt: aimRangeSchema(180), rotation: aimRangeSchema(360) }).optional(),
   })
   .superRefine((t, ctx) => {
     if (!t.ccts.includes(t.defaultCct)) ctx.addIssue({ code: 'custom', path: ['defaultCct'], message: `${t.defaultCct} K is not one of ccts` });
