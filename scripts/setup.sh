@@ -7,6 +7,10 @@ cd "$(dirname "$0")/.."
 need_pkgs=()
 command -v chromium >/dev/null 2>&1 || need_pkgs+=(chromium)
 command -v xvfb-run >/dev/null 2>&1 || need_pkgs+=(xvfb xauth)
+# The cross-engine suite (e2e-engines/, docs/browsers.md): Firefox ESR driven over WebDriver BiDi,
+# and WebKitGTK's WebDriver (it pulls in libwebkit2gtk-4.1-0, whose MiniBrowser it drives).
+command -v firefox-esr >/dev/null 2>&1 || need_pkgs+=(firefox-esr)
+command -v WebKitWebDriver >/dev/null 2>&1 || need_pkgs+=(webkit2gtk-driver)
 # headless-gl's native binding is compiled with node-gyp against these; the fonts are
 # listed so screenshot goldens see the same glyphs on every machine. libvulkan1 +
 # mesa-vulkan-drivers give ANGLE's Vulkan back end (no X display; docs/gpu-server.md).

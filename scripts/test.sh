@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The whole test suite: lint, types, unit + headless-gl tests, build, e2e in Chromium.
+# The whole test suite: lint, types, unit + headless-gl tests, build, e2e in Chromium, then the
+# same scenario in Chromium, Firefox ESR and WebKitGTK (e2e-engines/, docs/browsers.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -11,3 +12,5 @@ ALWAYS_VALID_RUNS=10000 xvfb-run -a npx vitest run
 echo "== build";      npx vite build
 echo "== e2e (Playwright, Debian chromium)"
 npx playwright test
+echo "== cross-engine e2e (Chromium, Firefox ESR, WebKitGTK; xvfb)"
+xvfb-run -a npx vitest run -c e2e-engines/vitest.config.ts
