@@ -17,6 +17,7 @@ import { moveFixingPoint, setJointTurn } from './actions/chainShapeActions';
 import { addModule, moveModule, removeModule, setModuleBeam, setModuleCct, setModuleDimming, setModuleType } from './actions/moduleActions';
 import { aimAt, setAim } from './actions/aimActions';
 import { autoPatch, clearPatch, setModulePatch } from './actions/patchActions';
+import { deleteScene, recallScene, recordScene, renameScene, reorderScene, setModuleOn, setSceneFade, updateScene } from './actions/sceneActions';
 import { addObject, moveObject, refinishObject, removeObject, resizeObject, rotateObject } from './actions/objectActions';
 
 export const actionDefinitions = {
@@ -45,6 +46,7 @@ export const actionDefinitions = {
   setModuleCct,
   setModuleBeam,
   setModuleDimming,
+  setModuleOn,
   setAim,
   aimAt,
   setModulePatch,
@@ -56,6 +58,13 @@ export const actionDefinitions = {
   resizeObject,
   refinishObject,
   removeObject,
+  recordScene,
+  updateScene,
+  renameScene,
+  reorderScene,
+  deleteScene,
+  setSceneFade,
+  recallScene,
 } as const;
 
 export type ActionName = keyof typeof actionDefinitions;

@@ -11,6 +11,7 @@ import { enablementOf, refuse, type ActionDefinition, type Outcome, type UserAct
 import type { Catalog } from './catalogSchema';
 import type { Configuration } from './configuration';
 import { overloadReason } from './feedLoads';
+import { pruneLooks } from './lightScenes';
 import { validateResult } from './validateResult';
 
 interface Decision {
@@ -25,7 +26,8 @@ function decide<P>(def: ActionDefinition<P>, state: Configuration, params: P, ca
   try {
     const own = def.isEnabled?.(state, params, catalog) ?? true;
     if (own !== true) return { state, outcome: own };
-    performed = def.perform(state, params, catalog);
+    // Looks of modules the action removed leave every light scene with them (lightScenes.ts).
+    performed = pruneLooks(def.perform(state, params, catalog));
   } catch (e) {
     // Unknown ids, unknown catalog entries, nowhere to put it: bad input, not a bug.
     if (e instanceof InputError) return { state, outcome: refuse(e.message) };
@@ -54,6 +56,6 @@ export function bindDefinition<P>(def: ActionDefinition<P>, params: P, catalog: 
     params,
     attempt,
     isEnabled: (state) => enablementOf(attempt(state)),
-    perform: (state) => (last?.state === state && last.performed ? last.performed : def.perform(state, params, catalog)),
+    perform: (state) => (last?.state === state && last.performed ? last.performed : pruneLooks(def.perform(state, params, catalog))),
   };
 }

@@ -5,6 +5,7 @@
  */
 import { z } from 'zod';
 import { InputError } from '../inputError';
+import { dimmingCurveSchema } from './dimmingCurve';
 import { colourFilter } from '../colour/colourFilterLibrary';
 import { describeIssues, formatPath as formatFieldPath, jsonShapeProblem, oneLine, parseUntrustedJson, schemaFieldNames } from './untrustedJson';
 
@@ -68,8 +69,15 @@ const moduleTypeSchema = z
     filterHolder: z.boolean().optional(),
     /** An adjustable head (docs/aiming.md): how far it turns and tilts, degrees; absent: fixed, straight down. */
     adjustable: z.strictObject({ tilt: aimRangeSchema(180), rotation: aimRangeSchema(360) }).optional(),
+    /** How the CCT follows the level (dimmingCurve.ts, docs/catalog-format.md "Dimming curve"); omitted: constant-cct. */
+    dimming: dimmingCurveSchema.optional(),
   })
   .superRefine((t, ctx) => {
+    if (t.dimming?.curve === 'dim-to-warm') {
+      const d = t.dimming;
+      if (d.cctMin >= d.cctFull) ctx.addIssue({ code: 'custom', path: ['dimming', 'cctMin'], message: `${d.cctMin} K must be below cctFull (${d.cctFull} K)` });
+      if (t.ccts.length !== 1 || t.ccts[0] !== d.cctFull) ctx.addIssue({ code: 'custom', path: ['ccts'], message: `a dim-to-warm type offers exactly its cctFull (${d.cctFull} K)` });
+    }
     if (!t.ccts.includes(t.defaultCct)) ctx.addIssue({ code: 'custom', path: ['defaultCct'], message: `${t.defaultCct} K is not one of ccts` });
     if (!t.beams.some((b) => b.id === t.defaultBeam)) ctx.addIssue({ code: 'custom', path: ['defaultBeam'], message: `'${t.defaultBeam}' is not a beam id` });
     if (new Set(t.beams.map((b) => b.id)).size !== t.beams.length) ctx.addIssue({ code: 'custom', path: ['beams'], message: 'beam ids must be unique' });

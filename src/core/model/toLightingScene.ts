@@ -7,6 +7,7 @@
 import { cctToLinearRgb } from '../photometry/cct';
 import { aimedOrientation } from './aim';
 import { findBeam, findModuleType, type Catalog } from './catalogSchema';
+import { cctAtLevel } from './dimmingCurve';
 import type { Configuration } from './configuration';
 import { modulePlacements } from './geometry';
 import type { LightingLuminaire, LightingObject, LightingScene, Rgb } from './lightingScene';
@@ -30,7 +31,8 @@ export function toLightingScene(config: Configuration, catalog: Catalog, options
     const byId = new Map(system.rails.flatMap((r) => r.modules).map((m) => [m.id, m]));
     for (const p of modulePlacements(system, catalog)) {
       const m = byId.get(p.moduleId)!;
-      const beam = findBeam(findModuleType(catalog, m.type), m.beam);
+      const type = findModuleType(catalog, m.type);
+      const beam = findBeam(type, m.beam);
       // An aimed module turns about the vertical, then tilts (aim.ts derives the angles).
       const { yaw, pitch, roll } = aimedOrientation(p.heading, beam.roll, m.aim);
       luminaires.push({
@@ -40,8 +42,10 @@ export function toLightingScene(config: Configuration, catalog: Catalog, options
         yaw,
         pitch,
         roll,
-        dimming: m.dimming,
-        color: cctToLinearRgb(m.cct) as Rgb,
+        // Switched off: dimmed to 0, not left out, so the luminaire keeps its group and basis (a relight turns it back on).
+        dimming: m.on === false ? 0 : m.dimming,
+        // A dim-to-warm type's colour follows its level (dimmingCurve.ts); other types keep their CCT.
+        color: cctToLinearRgb(cctAtLevel(type.dimming, m.dimming, m.cct)) as Rgb,
       });
     }
   }

@@ -14,6 +14,7 @@ import { photometricDrop } from './suspensionPoints';
 import { SURFACE_NAMES } from './lightingScene';
 import { firstPatchOverlap, formatPatchRange, patchRangeProblem } from './dmxPatch';
 import { allObjectProblems } from './objectProblems';
+import { lightSceneProblems } from './lightScenes';
 import { reflectanceProblem } from './reflectance';
 import { rectCorners, rectsOverlap, systemElements, railModuleOffsets, type PlanRect } from './geometry';
 
@@ -55,6 +56,8 @@ export function validate(config: Configuration, catalog: Catalog, options: Valid
   problems.push(...idProblems(config));
   if (first && problems.length > 0) return problems;
   problems.push(...patchProblems(config));
+  if (first && problems.length > 0) return problems;
+  problems.push(...lightSceneProblems(config));
   if (first && problems.length > 0) return problems;
   const n = config.systems.length;
   const own = config.systems.map((s, i) => ownProblems(s, `systems[${i}]`, config.room.height, catalog));
@@ -222,6 +225,7 @@ export function idProblems(config: Configuration): Problem[] {
     if (m && Number(m[1]) >= config.nextId) out.push({ code: 'id-counter', path, message: `id '${id}' is not below nextId ${config.nextId}` });
   };
   config.objects.forEach((o, i) => check(o.id, `objects[${i}].id`));
+  (config.lightScenes ?? []).forEach((s, i) => check(s.id, `lightScenes[${i}].id`));
   Object.keys(config.importedMeshes).forEach((id) => check(id, `importedMeshes.${id}`));
   config.systems.forEach((s, i) => {
     check(s.id, `systems[${i}].id`);

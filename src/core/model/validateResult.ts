@@ -3,7 +3,7 @@
  * States are immutable and actions replace only the systems they touch (the
  * others stay the same objects), so when the state before was valid and the room
  * keeps its size, the result is valid exactly when its room finishes, ids and
- * DMX patch (no shared channels) are, and each new or replaced system passes systemProblems() (its own rules,
+ * DMX patch (no shared channels) and light scenes are, and each new or replaced system passes systemProblems() (its own rules,
  * the room bounds, self-crossing, clashes with every other system): an
  * untouched system keeps its own validity, and a pair of untouched systems
  * still does not clash. Anything else (a resized room, an invalid state
@@ -13,6 +13,7 @@
  */
 import type { Catalog } from './catalogSchema';
 import type { Configuration } from './configuration';
+import { lightSceneProblems } from './lightScenes';
 import { changedObjectProblems } from './objectProblems';
 import { idProblems, patchProblems, roomProblems, systemProblems, validate, type Problem } from './validate';
 
@@ -52,6 +53,11 @@ function changedProblems(before: Configuration, after: Configuration, catalog: C
   // The patch spans systems: a changed module's channels may meet an untouched system's (one sort over the patched modules).
   const patch = patchProblems(after);
   if (patch.length > 0) return patch;
+  // Light scenes: cheap (one pass over the looks), and any action may touch them (a removed module leaves every look).
+  if (after.lightScenes !== before.lightScenes || after.systems !== before.systems) {
+    const scenes = lightSceneProblems(after);
+    if (scenes.length > 0) return scenes;
+  }
   const untouched = new Set(before.systems);
   for (let i = 0; i < after.systems.length; i++) {
     if (untouched.has(after.systems[i])) continue;

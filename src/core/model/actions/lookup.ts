@@ -89,6 +89,6 @@ export function updateModule(config: Configuration, moduleId: string, patch: Par
 }
 
 /** A fresh id with the given one-letter prefix and the configuration with its counter advanced. */
-export function takeId(config: Configuration, prefix: 's' | 'r' | 'm' | 'o' | 'i' | 'f'): [string, Configuration] {
+export function takeId(config: Configuration, prefix: 's' | 'r' | 'm' | 'o' | 'i' | 'f' | 'q'): [string, Configuration] {
   return [`${prefix}${config.nextId}`, { ...config, nextId: config.nextId + 1 }];
 }
