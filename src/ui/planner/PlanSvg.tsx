@@ -207,7 +207,7 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
                   const module = s.rails.flatMap((r) => r.modules).find((x) => x.id === m.moduleId);
                   if (!module) return null;
                   const path = modulePhotometryPath(module, catalog);
-                  const f = moduleFootprint(m, module, catalog, h, path ? footprints.get(path) : null);
+                  const f = moduleFootprint(m, module, catalog, h, path ? footprints.get(path) : null, config.room);
                   if (!f) return null;
                   const paint = {
                     fill: cctTint(module.cct),

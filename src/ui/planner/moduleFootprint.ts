@@ -1,10 +1,15 @@
 import { findBeam, findModuleType, type BeamSpec, type Catalog } from '../../core/model/catalogSchema';
 import type { ModuleInstance } from '../../core/model/configuration';
+import { aimAxis } from '../../core/model/aim';
+import { coneRoomOutline, type RoomBox } from '../../core/model/coneOutline';
 import { rotatePlan, type ModulePlacement } from '../../core/model/geometry';
 import { beamFootprint, type FootprintEllipse } from './beamFootprint';
 import type { FloorFootprint } from './floorFootprint';
 import type { FootprintSource } from './footprintSource';
 import type { PlanPoint } from './viewTransform';
+
+/** Rays around a tilted beam cone: a smooth outline at plan zoom, cheap for dozens of modules. */
+export const FOOTPRINT_RAYS = 72;
 
 export type ModuleFootprintShape = { kind: 'polygon'; points: PlanPoint[] } | { kind: 'ellipse'; ellipse: FootprintEllipse };
 
@@ -26,7 +31,9 @@ export function modulePhotometryPath(module: ModuleInstance, catalog: Catalog): 
  * turns about the vertical, so a local point (u along C0, v toward C90 = local −z) lands at
  * centre + h · Ry(yaw + roll)·(u, −v) (docs/scene-format.md frames). Without it (still loading, or the
  * file failed) the catalog's beam angle gives the cone of beamFootprint; an optic with neither
- * draws nothing rather than a guess.
+ * draws nothing rather than a guess. An aimed module (docs/aiming.md): untilted, its rotation
+ * turns the footprint about the vertical; tilted, the catalog beam cone is traced to the room's
+ * surfaces (`room`, needed then) and drawn from above.
  */
 export function moduleFootprint(
   placement: ModulePlacement,
@@ -34,6 +41,7 @@ export function moduleFootprint(
   catalog: Catalog,
   heightAboveFloor: number,
   measured: FloorFootprint | null | undefined,
+  room?: RoomBox,
 ): ModuleFootprintShape | null {
   let beam: BeamSpec;
   try {
@@ -44,8 +52,17 @@ export function moduleFootprint(
   const { beamAngle, roll } = beam;
   const h = Math.max(0, heightAboveFloor);
   const [cx, cz] = placement.centre;
+  const aim = module.aim;
+  if (aim && aim.tilt !== 0) {
+    // A tilted head: the beam cone (catalog beam angle) traced to the room's surfaces, seen from
+    // above: the floor's ellipse (or hyperbola) where it lands there, clipped by the walls (coneOutline.ts).
+    if (beamAngle === undefined || !room) return null;
+    const hits = coneRoomOutline([cx, h, cz], aimAxis(placement.heading, aim), beamAngle / 2, room, FOOTPRINT_RAYS);
+    return { kind: 'polygon', points: hits.map(({ point }) => ({ x: point[0], z: point[2] })) };
+  }
   if (measured) {
-    const turn = placement.heading + roll;
+    // An untilted head turned by its rotation: the same footprint turned about the vertical.
+    const turn = placement.heading + (aim?.rotation ?? 0) + roll;
     return {
       kind: 'polygon',
       points: measured.polygon.map(([u, v]) => {
@@ -61,7 +78,7 @@ export function moduleFootprint(
       center: { x: cx, z: cz },
       // Headings are counterclockwise seen from above; the plan's y axis is +z (down on screen),
       // so the SVG angle from +x towards +z is the negated heading.
-      axisDeg: -placement.heading,
+      axisDeg: -(placement.heading + (aim?.rotation ?? 0)),
       length: 0,
       height: h,
       beamAlongDeg: beamAngle,
