@@ -150,6 +150,15 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
       maps.setExposureEv(ev);
       frames.request();
     },
+    /** Absolute exposure in EV100 (photographicExposure.ts), or null: automatic exposure again. */
+    setEv100(ev100: number | null) {
+      maps.setEv100(ev100);
+      frames.request();
+    },
+    /** EV100 of the exposure on screen now: "lock exposure" passes it to setEv100. */
+    currentEv100(): number {
+      return maps.currentEv100();
+    },
     setMode(m: ViewMode) {
       maps.setMode(m);
       frames.request();

@@ -1,15 +1,19 @@
-import { mkdirSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, statSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { InputError } from '../../core/inputError';
+import { oneLine } from '../../core/model/untrustedJson';
+import { parseCameraSpec } from '../../engines/view/cameraPresets';
+import { EV100_MAX, EV100_MIN } from '../../engines/view/photographicExposure';
 import { parseBakeCli } from '../node/bakeCliOptions';
 import { batchFolderNames } from '../node/batchFolderNames';
 import { prepareGl } from '../node/prepareGl';
+import { takeRenderCameras } from '../node/renderCameras';
 import { createRenderSession } from '../node/renderImage';
 import { loadRenderInput } from '../node/renderInput';
-import { parseCameraSpec } from '../../engines/view/cameraPresets';
+import { RENDER_SUMMARY_FORMAT, type RenderSummary, type RenderSummaryImage } from '../node/renderSummary';
 
 export const renderUsage =
-  'render <config-or-scene.json> [more.json …] --out image.png|<dir> [--camera eye|top|corner|<json>|eye,top,…] [--width 960 --height 600] [--exposure EV] [--mode light|lux] [--samples N --bounces N --texel m] [--gl vulkan|glx|auto]';
+  'render <config-or-scene.json> [more.json …] --out image.png|<dir>/ [--camera eye|top|corner|<json>|eye,top,… (repeatable)] [--cameras cameras.json] [--width 960 --height 600] [--ev EV100 | --exposure stops] [--mode light|lux] [--samples N --bounces N --texel m] [--gl vulkan|glx|auto]';
 
 function intOption(name: string, value: string | undefined, fallback: number, min: number, max: number): number {
   if (value === undefined) return fallback;
@@ -18,39 +22,50 @@ function intOption(name: string, value: string | undefined, fallback: number, mi
   return n;
 }
 
-/** `--camera`: one JSON pose, or one or more comma-separated names/presets. */
-function cameraSpecs(spec: string): { name: string; spec: string }[] {
-  const trimmed = spec.trim();
-  if (trimmed.startsWith('{')) return [{ name: 'camera', spec: trimmed }];
-  const names = trimmed.split(',').map((s) => s.trim()).filter(Boolean);
-  if (names.length === 0) throw new InputError('render: --camera needs a preset name or JSON');
-  return [...new Set(names)].map((name) => ({ name, spec: name }));
+/** `--ev` (absolute EV100) or `--exposure` (stops over the automatic exposure), not both. */
+function exposureOptions(options: Record<string, string>): { ev100: number | null; compensation: number } {
+  const ev = options['--ev'];
+  const comp = options['--exposure'];
+  if (ev !== undefined && comp !== undefined) throw new InputError('render: give either --ev (absolute EV100) or --exposure (stops over auto exposure), not both');
+  if (ev !== undefined) {
+    const n = Number(ev);
+    if (ev.trim() === '' || !Number.isFinite(n) || n < EV100_MIN || n > EV100_MAX) throw new InputError(`render: --ev must be an EV100 in ${EV100_MIN}..${EV100_MAX}, got "${ev}"`);
+    return { ev100: n, compensation: 0 };
+  }
+  const n = comp === undefined ? 0 : Number(comp);
+  if (!Number.isFinite(n) || Math.abs(n) > 20) throw new InputError(`render: --exposure must be a number of stops in -20..20, got "${comp}"`);
+  return { ev100: null, compensation: n };
 }
+
+const errorLine = (error: unknown) => oneLine(error instanceof Error ? error.message : String(error));
 
 /**
  * `luxbox render`: bake a configuration (scene-file JSON of the app) or a
  * lighting scene and write a PNG as the 3D viewer shows it (docs/viewer.md).
- * --exposure is compensation in stops over the automatic exposure (0 = auto).
- * One scene and one camera write the file --out; several scenes or cameras
- * render in one process on one GL context (shaders compiled once) into the
- * folder --out as <scene>-<camera>.png, one bake per scene.
+ * Exposure: automatic (with --exposure stops of compensation) or absolute with
+ * --ev EV100 (photographicExposure.ts), the same for every image of a batch.
+ *
+ * One scene and one camera write the file --out. Several scenes or cameras (or
+ * --out ending in / or naming a folder) are a batch: one process, one GL context
+ * (programs compiled for the first scene only), one bake per scene drawn from
+ * every camera, images <scene>-<camera>.png and summary.json in the folder.
+ * A scene that fails (unreadable, invalid, bake error) is reported on stderr
+ * and in the summary, the others still render; the exit code is then 1.
  */
 export async function run(args: string[]): Promise<number> {
-  const { positional, settings, options } = parseBakeCli('render', args, ['--out', '--camera', '--width', '--height', '--exposure', '--mode', '--gl']);
+  const { cameras, rest } = takeRenderCameras(args);
+  const { positional, settings, options } = parseBakeCli('render', rest, ['--out', '--width', '--height', '--exposure', '--ev', '--mode', '--gl']);
   if (positional.length === 0) throw new InputError(`render: expected a scene file (usage: luxbox ${renderUsage})`);
   const out = options['--out'];
   if (!out) throw new InputError(`render: --out <image.png> is required (usage: luxbox ${renderUsage})`);
   const width = intOption('--width', options['--width'], 960, 16, 4096);
   const height = intOption('--height', options['--height'], 600, 16, 4096);
-  const ev = options['--exposure'] === undefined ? 0 : Number(options['--exposure']);
-  if (!Number.isFinite(ev) || Math.abs(ev) > 20) throw new InputError(`render: --exposure must be a number of stops in -20..20, got "${options['--exposure']}"`);
+  const { ev100, compensation } = exposureOptions(options);
   const mode = options['--mode'] ?? 'light';
   if (mode !== 'light' && mode !== 'lux') throw new InputError(`render: --mode must be light or lux, got "${mode}"`);
-  const inputs = positional.map((p) => loadRenderInput(p));
-  const cameras = cameraSpecs(options['--camera'] ?? 'corner');
-  // Check every camera against every room before the first bake.
-  const poses = inputs.map((input) => cameras.map((c) => parseCameraSpec(c.spec, input.scene.room)));
-  const batch = inputs.length > 1 || cameras.length > 1;
+  const batch = positional.length > 1 || cameras.length > 1 || /[/\\]$/.test(out) || (existsSync(out) && statSync(out).isDirectory());
+  // A single render keeps the old contract: bad input is one line on stderr before any GL work.
+  const single = batch ? null : loadRenderInput(positional[0]);
   const sceneNames = batchFolderNames(positional);
   const { exit } = prepareGl(options['--gl']);
   if (exit !== null) return exit;
@@ -61,27 +76,73 @@ export async function run(args: string[]): Promise<number> {
       throw new InputError(`render: --out ${out}: cannot create the folder (${(error as NodeJS.ErrnoException).code ?? 'error'})`);
     }
   }
+  const started = performance.now();
+  const images: RenderSummaryImage[] = [];
+  const failed: RenderSummary['failed'] = [];
+  const linkedAfterScene: RenderSummary['programs_linked_after_scene'] = [];
   const session = createRenderSession(width, height);
   try {
-    inputs.forEach((input, i) => {
-      // One bake per scene, drawn from every camera.
-      const results = session.renderViews(input, { width, height, camera: poses[i][0], exposureEv: ev, mode, settings }, poses[i]);
+    positional.forEach((path, i) => {
+      let input;
+      let results;
+      try {
+        input = single ?? loadRenderInput(path);
+        const room = input.scene.room;
+        const poses = cameras.map((c) => parseCameraSpec(c.spec, room));
+        // One bake per scene, drawn from every camera.
+        results = session.renderViews(input, { width, height, camera: poses[0], exposureEv: compensation, ev100, mode, settings }, poses);
+      } catch (error) {
+        if (!batch) throw error;
+        failed.push({ file: path, error: errorLine(error) });
+        process.stderr.write(`luxbox render: ${path}: ${errorLine(error)}\n`);
+        return;
+      }
+      linkedAfterScene.push(session.programsLinked());
       cameras.forEach((camera, k) => {
         const result = results[k];
-        const file = batch ? join(out, `${sceneNames[i]}-${camera.name}.png`) : out;
+        const image = `${sceneNames[i]}-${camera.name}.png`;
+        const file = batch ? join(out, image) : out;
         try {
           writeFileSync(file, result.png);
         } catch (error) {
           throw new InputError(`render: --out ${file}: cannot write (${(error as NodeJS.ErrnoException).code ?? 'error'})`);
         }
         const f = result.floor;
+        images.push({
+          file: path,
+          scene: sceneNames[i],
+          camera: camera.name,
+          image,
+          ev100: result.ev100,
+          exposure: result.exposure,
+          floor: { avg: f.avg, min: f.min, u0: f.u0 },
+          bake_ms: k === 0 ? result.timings_ms.bake : 0,
+          render_ms: result.timings_ms.render,
+        });
         process.stdout.write(
-          `rendered ${positional[i]} → ${file} (${width}×${height}, bake ${Math.round(result.timings_ms.bake)} ms, render ${Math.round(result.timings_ms.render)} ms; floor Ē ${f.avg.toFixed(1)} lx, Emin ${f.min.toFixed(1)} lx, U0 ${f.u0.toFixed(2)})\n`,
+          `rendered ${path} → ${file} (${width}×${height}, EV100 ${result.ev100.toFixed(2)}${ev100 === null ? ' auto' : ''}, bake ${Math.round(result.timings_ms.bake)} ms, render ${Math.round(result.timings_ms.render)} ms; floor Ē ${f.avg.toFixed(1)} lx, Emin ${f.min.toFixed(1)} lx, U0 ${f.u0.toFixed(2)})\n`,
         );
       });
     });
+    if (batch) {
+      const summary: RenderSummary = {
+        format: RENDER_SUMMARY_FORMAT,
+        width,
+        height,
+        mode,
+        exposure: ev100 === null ? { mode: 'auto', compensation } : { mode: 'fixed', ev100 },
+        cameras: cameras.map((c) => ({ name: c.name, spec: c.spec })),
+        programs_linked: session.programsLinked(),
+        programs_linked_after_scene: linkedAfterScene,
+        total_ms: performance.now() - started,
+        images,
+        failed,
+      };
+      writeFileSync(join(out, 'summary.json'), JSON.stringify(summary, null, 2) + '\n');
+      process.stdout.write(`${images.length} images of ${positional.length - failed.length}/${positional.length} scenes × ${cameras.length} cameras in ${out} (summary.json; programs linked: ${session.programsLinked().baker} baker, ${session.programsLinked().view} view)\n`);
+    }
   } finally {
     session.destroy();
   }
-  return 0;
+  return failed.length > 0 ? 1 : 0;
 }

@@ -8,7 +8,8 @@ import { createRelightEngine, VIEWER_BAKE_SETTINGS } from '../../engines/relight
 import type { CameraPose } from '../../engines/view/cameraPresets';
 import { floorStats, type IlluminanceStats } from '../../engines/view/lightStats';
 import { presentMaps } from '../../engines/view/presentMaps';
-import { createRoomView, type ViewMode } from '../../engines/view/roomView';
+import { createRoomView, type RoomView, type ViewMode } from '../../engines/view/roomView';
+import { fullscreenVertex } from '../../../shaders/fullscreen.glsl';
 import { noContextMessage, NoWebGLError } from './createHeadlessGL';
 import type { RenderInput } from './renderInput';
 
@@ -18,6 +19,8 @@ export interface RenderOptions {
   camera: CameraPose;
   /** Exposure compensation in stops (EV) on top of the automatic exposure. */
   exposureEv: number;
+  /** Absolute exposure (EV100, photographicExposure.ts) instead of the automatic one; null/absent: automatic. */
+  ev100?: number | null;
   mode: ViewMode;
   settings: Partial<BakeSettings>;
 }
@@ -27,14 +30,27 @@ export interface RenderResult {
   /** RGBA, top row first. */
   pixels: Uint8Array;
   exposure: number;
+  /** EV100 of the exposure applied (the fixed one, or the automatic one's). */
+  ev100: number;
   floor: IlluminanceStats;
   timings_ms: { bake: number; render: number };
+}
+
+export interface ProgramsLinked {
+  baker: number;
+  view: number;
 }
 
 /** Several renders on one headless-gl context: the baker's and three's shader programs are compiled once for all. */
 export interface RenderSession {
   /** Bake the scene once, then draw it from each camera (options.camera is ignored; results in camera order). */
   renderViews(input: RenderInput, options: RenderOptions, cameras: CameraPose[]): RenderResult[];
+  /**
+   * Shader programs linked on this context so far: the baker's (their vertex shader is the
+   * fullscreen triangle; specialised per scene layout, e.g. per lamp source count, and cached per
+   * context) and the view's (three.js). A batch of scenes of one kind links them for its first only.
+   */
+  programsLinked(): ProgramsLinked;
   destroy(): void;
 }
 
@@ -51,7 +67,18 @@ export function createRenderSession(width: number, height: number): RenderSessio
   const canvas = { width, height, style: {}, addEventListener() {}, removeEventListener() {} } as unknown as HTMLCanvasElement;
   // headless-gl contexts have no canvas; three reads gl.canvas for the default scissor and viewport.
   Object.defineProperty(gl, 'canvas', { value: canvas, configurable: true });
+  // Count program links (every compile of a vertex + fragment pair ends in one) for the batch summary and its test.
+  const linked: ProgramsLinked = { baker: 0, view: 0 };
+  const linkProgram = gl.linkProgram.bind(gl);
+  gl.linkProgram = (program: WebGLProgram) => {
+    const baker = (gl.getAttachedShaders(program) ?? []).some((shader) => gl.getShaderSource(shader) === fullscreenVertex);
+    linked[baker ? 'baker' : 'view']++;
+    linkProgram(program);
+  };
   let renderer: THREE.WebGLRenderer | null = null;
+  // The last scene's view is disposed only after the next one has drawn: three.js frees a program when
+  // no material uses it, so disposing first would make every scene compile the same programs again.
+  let previousView: RoomView | null = null;
   return {
     renderViews(input, options, cameras) {
       if (options.width !== width || options.height !== height) throw new Error(`render session is ${width}×${height}, asked for ${options.width}×${options.height}`);
@@ -72,7 +99,7 @@ export function createRenderSession(width: number, height: number): RenderSessio
         // The objects' geometry on the atlas the baker lit (same objects, same texel size and limit).
         const objects = input.bakeScene.objects ?? [];
         view.setObjects(objects.length > 0 ? prepareObjects(objects, { texelSize: engine.settings.texelSize, maxAtlasSize: engine.settings.maxTextureSize }) : null);
-        const { exposure } = presentMaps(view, lit, reflectanceRgb(input.bakeScene.room), { exposureEv: options.exposureEv, mode: options.mode });
+        const { exposure, ev100 } = presentMaps(view, lit, reflectanceRgb(input.bakeScene.room), { exposureEv: options.exposureEv, ev100: options.ev100, mode: options.mode });
         const floor = floorStats(lit);
         view.setFixtures(input.fixtures);
         const results = cameras.map((camera): RenderResult => {
@@ -88,15 +115,21 @@ export function createRenderSession(width: number, height: number): RenderSessio
           for (let y = 0; y < height; y++) pixels.set(raw.subarray((height - 1 - y) * row, (height - y) * row), y * row);
           const png = new PNG({ width, height });
           png.data = Buffer.from(pixels);
-          return { png: PNG.sync.write(png), pixels, exposure, floor, timings_ms: { bake: t1 - t0, render: t3 - t2 } };
+          return { png: PNG.sync.write(png), pixels, exposure, ev100, floor, timings_ms: { bake: t1 - t0, render: t3 - t2 } };
         });
-        view.dispose();
+        previousView?.dispose();
+        previousView = view;
         return results;
       } finally {
         engine.dispose();
       }
     },
+    programsLinked() {
+      return { ...linked };
+    },
     destroy() {
+      previousView?.dispose();
+      previousView = null;
       renderer?.dispose();
       gl.getExtension('STACKGL_destroy_context')?.destroy();
     },

@@ -8,6 +8,7 @@ import { luxLevels, MAX_LEVELS, shaderLevels } from '../../../src/engines/view/f
 import { MODULE_HEIGHT, RAIL_HEIGHT } from '../../../src/engines/view/fixtures';
 import { hardwareBoxes } from '../../../src/engines/view/hardwareBoxes';
 import { luxScaleTop } from '../../../src/engines/view/luxScaleTop';
+import { ev100FromExposure } from '../../../src/engines/view/photographicExposure';
 import { presentMaps } from '../../../src/engines/view/presentMaps';
 import type { RoomView } from '../../../src/engines/view/roomView';
 import { surfaceQuad } from '../../../src/engines/view/surfaceQuad';
@@ -88,7 +89,7 @@ describe('presentMaps', () => {
     const shown = presentMaps(view, lit, reflectance, { exposureEv: -1, mode: 'lux' });
     const auto = autoExposure(lit, reflectance);
     const levels = luxLevels(luxScaleTop(lit));
-    expect(shown).toEqual({ autoExposure: auto, exposure: auto / 2, levels });
+    expect(shown).toEqual({ autoExposure: auto, exposure: auto / 2, ev100: ev100FromExposure(auto / 2), levels });
     expect(calls).toEqual([
       ['maps', lit, reflectance],
       ['objects', null],
