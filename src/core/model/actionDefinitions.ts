@@ -17,6 +17,7 @@ import { moveFixingPoint, setJointTurn } from './actions/chainShapeActions';
 import { addModule, moveModule, removeModule, setModuleBeam, setModuleCct, setModuleDimming, setModuleType } from './actions/moduleActions';
 import { aimAt, setAim } from './actions/aimActions';
 import { autoPatch, clearPatch, setModulePatch } from './actions/patchActions';
+import { setModuleFilter } from './actions/filterActions';
 import { deleteScene, recallScene, recordScene, renameScene, reorderScene, setModuleOn, setSceneFade, updateScene } from './actions/sceneActions';
 import { addObject, moveObject, refinishObject, removeObject, resizeObject, rotateObject } from './actions/objectActions';
 
@@ -46,6 +47,7 @@ export const actionDefinitions = {
   setModuleCct,
   setModuleBeam,
   setModuleDimming,
+  setModuleFilter,
   setModuleOn,
   setAim,
   aimAt,

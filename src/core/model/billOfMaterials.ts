@@ -6,11 +6,15 @@
  * article) per power feed; one suspension kit per derived suspension point, or
  * one surface clip per clip point when the system is on the ceiling
  * (suspensionPoints.ts); one connector per joint; one rail article per distinct
- * length; one module article per type, beam and colour temperature.
+ * length; one module article per type, beam and colour temperature; one filter article per colour
+ * filter in front of a module (docs/colour-filters.md).
  */
 import { findBeam, findConnector, findDriver, findModuleType, type Catalog } from './catalogSchema';
+import { findColourFilter } from '../colour/colourFilterLibrary';
+import { filterAccessory, filterLabel } from './moduleFilter';
 import type { Configuration } from './configuration';
 import { suspensionCoordinates } from './suspensionPoints';
+import { InputError } from '../inputError';
 
 export interface BomLine {
   readonly article: string;
@@ -19,7 +23,7 @@ export interface BomLine {
   /** Currency units (catalog currency). */
   readonly unitPrice: number;
   readonly total: number;
-  readonly kind: 'rail' | 'connector' | 'suspension' | 'feed' | 'driver' | 'module';
+  readonly kind: 'rail' | 'connector' | 'suspension' | 'feed' | 'driver' | 'module' | 'filter';
 }
 
 export interface BillOfMaterials {
@@ -66,12 +70,17 @@ export function billOfMaterials(config: Configuration, catalog: Catalog): BillOf
         const type = findModuleType(catalog, m.type);
         const beam = findBeam(type, m.beam);
         add(`${beam.article}-${m.cct}`, `${type.name}, ${beam.label}, ${m.cct} K`, beam.price, 'module');
+        if (m.filter !== undefined) {
+          const accessory = filterAccessory(catalog, m.filter);
+          if (!accessory) throw new InputError(`unknown colour filter '${m.filter}' (catalog ${catalog.id})`);
+          add(accessory.article, `${filterLabel(findColourFilter(m.filter))} colour filter`, accessory.price, 'filter');
+        }
         watts += beam.watts;
         lumens += beam.lumens;
       }
     }
   }
-  const order: BomLine['kind'][] = ['rail', 'connector', 'suspension', 'feed', 'driver', 'module'];
+  const order: BomLine['kind'][] = ['rail', 'connector', 'suspension', 'feed', 'driver', 'module', 'filter'];
   const out = [...lines.values()]
     .sort((a, b) => order.indexOf(a.kind) - order.indexOf(b.kind) || a.article.localeCompare(b.article))
     .map((l) => ({ article: l.article, name: l.name, count: l.count, unitPrice: l.unitCents / 100, total: (l.unitCents * l.count) / 100, kind: l.kind }));

@@ -5,6 +5,7 @@
  */
 import { z } from 'zod';
 import { InputError } from '../inputError';
+import { colourFilter } from '../colour/colourFilterLibrary';
 import { dimmingCurveSchema } from './dimmingCurve';
 import { colourFilter } from '../colour/colourFilterLibrary';
 import { describeIssues, formatPath as formatFieldPath, jsonShapeProblem, oneLine, parseUntrustedJson, schemaFieldNames } from './untrustedJson';
@@ -65,6 +66,8 @@ const moduleTypeSchema = z
     defaultCct: z.number().int(),
     beams: z.array(beamSchema).min(1),
     defaultBeam: nonEmpty,
+    /** Takes a colour filter (gel) from the catalog's `filters` (docs/colour-filters.md); absent: no holder. */
+    filterHolder: z.boolean().optional(),
     /** Takes a colour filter (gel) from the catalog's `filters` (docs/colour-filters.md); absent: no holder. */
     filterHolder: z.boolean().optional(),
     /** An adjustable head (docs/aiming.md): how far it turns and tilts, degrees; absent: fixed, straight down. */
@@ -199,6 +202,11 @@ export const catalogSchema = z
      * (src/core/catalog/colour-filters.json); modules of a type with `filterHolder` take one.
      */
     filters: z.array(z.strictObject({ id: nonEmpty, article: nonEmpty, price, source: z.string().optional() })).optional(),
+    /**
+     * Colour filters sold as accessories (docs/colour-filters.md): `id` names a filter of the library
+     * (src/core/catalog/colour-filters.json); modules of a type with `filterHolder` take one.
+     */
+    filters: z.array(z.strictObject({ id: nonEmpty, article: nonEmpty, price, source: z.string().optional() })).optional(),
   })
   .superRefine((c, ctx) => {
     const r = c.rail;
@@ -226,6 +234,10 @@ export const catalogSchema = z
     uniqueIds(c.drivers, ['drivers'], ctx);
     uniqueIds(c.connectors, ['connectors'], ctx);
     uniqueIds(c.moduleTypes, ['moduleTypes'], ctx);
+    uniqueIds(c.filters ?? [], ['filters'], ctx);
+    c.filters?.forEach((f, i) => {
+      if (!colourFilter(f.id)) ctx.addIssue({ code: 'custom', path: ['filters', i, 'id'], message: `'${f.id}' is not a filter of the colour-filter library` });
+    });
     uniqueIds(c.filters ?? [], ['filters'], ctx);
     c.filters?.forEach((f, i) => {
       if (!colourFilter(f.id)) ctx.addIssue({ code: 'custom', path: ['filters', i, 'id'], message: `'${f.id}' is not a filter of the colour-filter library` });

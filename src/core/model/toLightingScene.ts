@@ -4,12 +4,12 @@
  * y = ceiling − suspension, or − the surface mount's drop), turned so C0 runs along its rail (yaw = rail
  * heading) plus the optic's roll from the catalog, then aimed (adjustable modules, aim.ts), coloured by its CCT.
  */
-import { cctToLinearRgb } from '../photometry/cct';
 import { aimedOrientation } from './aim';
 import { findBeam, findModuleType, type Catalog } from './catalogSchema';
 import { cctAtLevel } from './dimmingCurve';
 import type { Configuration } from './configuration';
 import { modulePlacements } from './geometry';
+import { moduleLightColour } from './moduleFilter';
 import type { LightingLuminaire, LightingObject, LightingScene, Rgb } from './lightingScene';
 import { objectPlacement } from './objectGeometry';
 import { moduleHeight } from './suspensionPoints';
@@ -45,7 +45,8 @@ export function toLightingScene(config: Configuration, catalog: Catalog, options
         // Switched off: dimmed to 0, not left out, so the luminaire keeps its group and basis (a relight turns it back on).
         dimming: m.on === false ? 0 : m.dimming,
         // A dim-to-warm type's colour follows its level (dimmingCurve.ts); other types keep their CCT.
-        color: cctToLinearRgb(cctAtLevel(type.dimming, m.dimming, m.cct)) as Rgb,
+        // Through its colour filter, if any (moduleFilter.ts): the colour's luminance carries the filter's τ_v.
+        color: moduleLightColour({ cct: cctAtLevel(type.dimming, m.dimming, m.cct), filter: m.filter }).linearRgb as Rgb,
       });
     }
   }

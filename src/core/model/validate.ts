@@ -7,6 +7,7 @@
 import { aimProblem } from './aim';
 import { allowedTurn, findModuleType, onGrid, type Catalog } from './catalogSchema';
 import { fixingProblem } from './fixingRules';
+import { moduleFilterProblem } from './moduleFilter';
 import { freeRailProblem, isFreeRail } from './freePositions';
 import { MOUNTINGS, ROOM_LIMITS, withinRoomLimits, type Configuration, type LightSystem } from './configuration';
 import { describeFeedAt, feedLabel, feedLoads, formatWatts, isOverloaded } from './feedLoads';
@@ -329,6 +330,8 @@ function ownProblems(s: LightSystem, at: string, roomHeight: number, catalog: Ca
       if (!type.beams.some((b) => b.id === m.beam)) p('unknown-beam', `${mp}.beam`, `${type.name} has no beam '${m.beam}'`);
       if (!type.ccts.includes(m.cct)) p('cct', `${mp}.cct`, `${type.name} is not available in ${m.cct} K (offered: ${type.ccts.join(', ')} K)`);
       if (!Number.isFinite(m.dimming) || m.dimming < 0 || m.dimming > 1) p('dimming', `${mp}.dimming`, `dimming must be between 0 and 1 (got ${m.dimming})`);
+      const filter = m.filter !== undefined ? moduleFilterProblem(type, m.filter, catalog) : null;
+      if (filter) p(filter.code, `${mp}.filter`, filter.message);
       const aim = m.aim !== undefined ? aimProblem(m.aim, type) : null;
       if (aim) p(aim.field === 'aim' ? 'aim-fixed' : 'aim-range', `${mp}.${aim.field}`, aim.message);
       const patch = m.dmx ? patchRangeProblem(m.dmx, type) : null;

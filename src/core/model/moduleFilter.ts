@@ -1,0 +1,48 @@
+/**
+ * Colour filters (gels) as catalog accessories (docs/colour-filters.md): the catalog's `filters`
+ * name library filters (src/core/colour) with an article and a price; module types with
+ * `filterHolder: true` take one. The one rule validate() and setModuleFilter share, the catalog's
+ * own check, and the colour a module gives through its filter.
+ */
+import { colourFilter, type ColourFilter } from '../colour/colourFilterLibrary';
+import type { FilteredColour } from '../colour/filteredColour';
+import { moduleColour } from '../colour/moduleColour';
+import type { Catalog, ModuleTypeSpec } from './catalogSchema';
+import type { ModuleInstance } from './configuration';
+
+export type FilterAccessory = NonNullable<Catalog['filters']>[number];
+
+/** The catalog's filter accessory with this id, or undefined. */
+export function filterAccessory(catalog: Catalog, id: string): FilterAccessory | undefined {
+  return catalog.filters?.find((f) => f.id === id);
+}
+
+/** 'LEE 204 Full C.T. Orange': how lists, the BOM and messages name a library filter. */
+export function filterLabel(filter: Pick<ColourFilter, 'maker' | 'number' | 'name'>): string {
+  return `${filter.maker.split(' ')[0]} ${filter.number} ${filter.name}`;
+}
+
+/** The catalog's filters with their library data, in catalog order. */
+export function catalogFilters(catalog: Catalog): { accessory: FilterAccessory; filter: ColourFilter }[] {
+  return (catalog.filters ?? []).flatMap((accessory) => {
+    const filter = colourFilter(accessory.id);
+    return filter ? [{ accessory, filter }] : [];
+  });
+}
+
+export interface FilterProblem {
+  readonly code: 'unknown-filter' | 'no-filter-holder';
+  readonly message: string;
+}
+
+/** Why `filterId` cannot sit in front of a module of `type` (null: it can). */
+export function moduleFilterProblem(type: ModuleTypeSpec, filterId: string, catalog: Catalog): FilterProblem | null {
+  if (!filterAccessory(catalog, filterId) || !colourFilter(filterId)) return { code: 'unknown-filter', message: `unknown colour filter '${filterId}' (not among the catalog's filters)` };
+  if (type.filterHolder !== true) return { code: 'no-filter-holder', message: `${type.name} has no filter holder: it takes no colour filter` };
+  return null;
+}
+
+/** The colour (linear RGB with luminance τ_v, CIE x,y, CCT/Duv) of a module's light through its filter. */
+export function moduleLightColour(module: Pick<ModuleInstance, 'cct' | 'filter'>): FilteredColour {
+  return moduleColour(module.cct, module.filter);
+}
