@@ -14,6 +14,7 @@ const commands: Record<string, () => Promise<{ run: Command }>> = {
   bench: () => import('./benchCommand'),
   export: () => import('./exportCommand'),
   dmx: () => import('./dmxCommand'),
+  filters: () => import('./filtersCommand'),
 };
 
 const usage = `usage: luxbox <command> [...]
@@ -24,7 +25,8 @@ commands:
   render <config-or-scene.json> --out image.png [--camera eye|top|corner|json --width --height --exposure EV --mode light|lux]   3D image (docs/viewer.md)
   bench [--quick] [--out <dir>]   bake error vs time against the CPU reference (docs/benchmarks.md)
   export radiance <config-or-scene.json> --out <dir> [--near-field split|point]   Radiance scene folder (docs/radiance.md)
-  dmx [--artnet] [--sacn] [--port N] [--bind ADDR] [--universes 1-4]   Art-Net/sACN → WebSocket bridge for live control (docs/dmx.md)`;
+  dmx [--artnet] [--sacn] [--port N] [--bind ADDR] [--universes 1-4]   Art-Net/sACN → WebSocket bridge for live control (docs/dmx.md)
+  filters [--json] [--cct K]   colour-filter library: x, y, transmission (CCT, Duv near white) for a K source (docs/colour-filters.md)`;
 
 export async function main(argv: string[]): Promise<number> {
   const [name, ...rest] = argv;
