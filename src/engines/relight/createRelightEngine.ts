@@ -8,7 +8,7 @@ import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../core/model/ligh
 import { groupLuminaires, groupWeight, roomKey, type LuminaireGroup } from './luminaireGroups';
 import { objectsKey } from './objectsKey';
 import { indirectScale, reflectedFlux, weightedFlux } from './reflectedFlux';
-import { emptyLitMaps, relightMaps, sumDirect, type DirectBasis, type IndirectSolution, type LitMaps, type WeightedBasis } from './relightMaps';
+import { emptyLitMaps, relightMaps, sumDirect, type DirectBasis, type IndirectSolution, type IndirectTerm, type LitMaps, type WeightedBasis } from './relightMaps';
 
 /**
  * Quality of the viewer's bakes (direct bases and the shared indirect solve): coarser texels
@@ -68,6 +68,22 @@ interface SolveJob {
   lastPreview: number;
 }
 
+/**
+ * Finished indirect solutions kept, by weights key (least recently used dropped first): a recalled
+ * light scene whose weights were solved before is exact at once, and a crossfade between two solved
+ * scenes blends their solutions. One solution is the room's indirect maps (about 0.5 MB for a
+ * 5 × 4 m room at the viewer's 5 cm texels, plus the objects' atlas), so 8 stay well under 20 MB.
+ */
+export const SOLUTION_CACHE_SIZE = 8;
+
+/** A crossfade shown by the engine: weights (1 − e)·w_from + e·w_scene per group (docs/light-scenes.md). */
+export interface EngineFade {
+  /** The scene faded from: the same luminaires (geometry) as the current scene, other dimming and colour. */
+  from: BakeScene;
+  /** Fade fraction in [0, 1] (already eased): 0 shows `from`, 1 the scene. */
+  e: number;
+}
+
 /** Share of the progress fraction taken by the direct bases (cheap: no bounces), the rest is the shared solve. */
 const DIRECT_SHARE = 0.1;
 
@@ -84,6 +100,14 @@ const DIRECT_SHARE = 0.1;
  */
 export interface RelightEngine {
   setScene(scene: BakeScene): SetSceneResult;
+  /**
+   * Show a crossfade from `fade.from` to the current scene at fraction `fade.e`, or null for the scene
+   * itself: a relight, never a bake. The direct light is Σ_g ((1 − e)·w_from + e·w_scene)_g · direct_g;
+   * the indirect light is (1 − e)·I_from + e·I_scene exactly when both weights were solved (the
+   * solution cache), otherwise the last solve scaled by Φ. Only the scene's own weights (the end of
+   * the fade) are ever solved. Throws when `from` has other luminaires than the scene.
+   */
+  setFade(fade: EngineFade | null): void;
   /**
    * Advance pending work by one direct basis or up to `samples` indirect samples per texel; returns the progress.
    * With `preview` (default) the first solve of a room is read back and shown at most every PREVIEW_MS
@@ -122,24 +146,58 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
   let order: GroupState[] = [];
   let solve: SolveJob | null = null;
   let solved: IndirectSolution | null = null;
+  /** Finished solutions by weights key, oldest use first (SOLUTION_CACHE_SIZE). */
+  let finals = new Map<string, IndirectSolution>();
+  let fade: EngineFade | null = null;
   let out: LitMaps | null = null;
   let version = 0;
   let composedVersion = -1;
   const counters: EngineCounters = { groupBakes: 0, relightsOnly: 0, relights: 0, indirectSolves: 0 };
 
-  const weightOf = (s: GroupState) => groupWeight(s.group, scene!.luminaires);
-  /** The groups that are shown (basis baked) with their weights. */
-  const parts = (): WeightedBasis[] => order.filter((s) => s.basis).map((s) => ({ basis: s.basis!, weight: weightOf(s) }));
+  /** A group's weight in the scene itself (the end of a fade). */
+  const ownWeight = (s: GroupState) => groupWeight(s.group, scene!.luminaires);
+  const fromWeight = (s: GroupState) => groupWeight(s.group, fade!.from.luminaires);
+  /** The weight shown: the scene's, or during a fade (1 − e)·from + e·scene per channel. */
+  const weightOf = (s: GroupState): Rgb => {
+    const w = ownWeight(s);
+    if (!fade) return w;
+    const a = fromWeight(s);
+    const e = fade.e;
+    return [(1 - e) * a[0] + e * w[0], (1 - e) * a[1] + e * w[1], (1 - e) * a[2] + e * w[2]];
+  };
+  /** The groups that are shown (basis baked) with the given weights. */
+  const partsAt = (weight: (s: GroupState) => Rgb): WeightedBasis[] => order.filter((s) => s.basis).map((s) => ({ basis: s.basis!, weight: weight(s) }));
+  const parts = (): WeightedBasis[] => partsAt(weightOf);
   /** The weights the indirect light depends on: every lit group with its RGB weight (order-free; '' = no light at all). */
-  const weightsKey = (): string =>
+  const keyAt = (weight: (s: GroupState) => Rgb): string =>
     order
-      .map((s) => [s.group.key, weightOf(s)] as const)
+      .map((s) => [s.group.key, weight(s)] as const)
       .filter(([, w]) => w.some((v) => v > 0))
       .map(([k, w]) => `${k}=${w.join(',')}`)
       .sort()
       .join('|');
+  /** The key of what is shown, and of the scene itself (what a solve works toward). */
+  const weightsKey = (): string => keyAt(weightOf);
+  const targetKey = (): string => keyAt(ownWeight);
   /** No light (key '') has exactly no indirect light: nothing to solve. */
-  const isExact = (key: string) => key === '' || (solved !== null && solved.final && solved.key === key);
+  const isExact = (key: string) => key === '' || finals.has(key);
+  /** A finished solution at `key`, marked as the latest used (least-recently-used order); null for no light. */
+  const finalAt = (key: string): IndirectSolution | null | undefined => {
+    if (key === '') return null;
+    const sol = finals.get(key);
+    if (sol) {
+      finals.delete(key);
+      finals.set(key, sol);
+    }
+    return sol;
+  };
+  const remember = (sol: IndirectSolution) => {
+    finals.delete(sol.key);
+    finals.set(sol.key, sol);
+    while (finals.size > SOLUTION_CACHE_SIZE) finals.delete(finals.keys().next().value!);
+  };
+  /** The group keys of a luminaire list, in order: a fade's two scenes must have the same. */
+  const groupKeys = (sc: BakeScene) => groupLuminaires(sc.luminaires).map((g) => g.key).join('|');
 
   /**
    * A direct basis whose passes are issued but not read back yet. A basis takes two steps: the
@@ -192,14 +250,16 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
     const n = order.length;
     const based = order.filter((s) => s.basis).length;
     const lit = based === n;
-    const exact = lit && isExact(weightsKey());
-    let solveFraction = exact ? 1 : 0;
-    if (!exact && solve) {
+    // The pending work is the scene's own solve; during a fade the image is exact when both ends are solved.
+    const done = lit && isExact(targetKey());
+    const exact = done && (!fade || isExact(keyAt(fromWeight)));
+    let solveFraction = done ? 1 : 0;
+    if (!done && solve) {
       const p = solve.job.progress;
       solveFraction = p.done ? 1 : (p.bounce * settings.samples + p.samplesDone) / (Math.max(1, settings.bounces) * settings.samples);
     }
     const fraction = n === 0 ? 1 : DIRECT_SHARE * (based / n) + (1 - DIRECT_SHARE) * solveFraction;
-    return { groupsDone: based, groups: n, fraction: Math.min(1, fraction), done: exact, lit, exact };
+    return { groupsDone: based, groups: n, fraction: Math.min(1, fraction), done, lit, exact };
   };
 
   const readSolution = (s: SolveJob, final: boolean): IndirectSolution => {
@@ -209,7 +269,8 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
   };
 
   const startSolve = (key: string): SolveJob => {
-    const weighted = parts();
+    // The scene's own weights: a fade's intermediate weights are never solved (the blend of the ends is exact).
+    const weighted = partsAt(ownWeight);
     const direct = sumDirect(weighted, layouts, atlas);
     const objects = scene!.objects && scene!.objects.length > 0 && direct.objects ? { objects: scene!.objects, direct: direct.objects } : undefined;
     counters.indirectSolves++;
@@ -225,13 +286,14 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
 
   const step = (samples = settings.samplesPerDraw, preview = true): EngineProgress => {
     if (!scene || bakeDirectBasis()) return progress();
-    const key = weightsKey();
+    const key = targetKey();
     if (isExact(key)) return progress();
     if (solve && solve.key !== key) dropSolve();
     if (!solve) solve = startSolve(key);
     const p = solve.job.step(samples);
     if (p.done) {
       solved = readSolution(solve, true);
+      remember(solved);
       dropSolve();
       version++;
     } else if (preview && !solved?.final && performance.now() - solve.lastPreview > PREVIEW_MS) {
@@ -251,6 +313,7 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
         dropSolve();
         dropPendingBasis();
         solved = null;
+        finals = new Map();
         atlas = null;
         states = new Map();
         room = nextRoom;
@@ -273,11 +336,23 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
       order = groups.map((g) => kept.get(g.key)!);
       // A basis under way for a group that is gone (moved, removed) is of no use.
       if (pendingBasis && !kept.has(pendingBasis.key)) dropPendingBasis();
+      // A fade from a scene with other luminaires (a module added or moved meanwhile) cannot be shown: the scene is.
+      if (fade && groupKeys(fade.from) !== groups.map((g) => g.key).join('|')) fade = null;
       // A solve under way for other weights is of no use any more (the shown one stays until the new solve is done).
-      if (solve && solve.key !== weightsKey()) dropSolve();
+      if (solve && solve.key !== targetKey()) dropSolve();
       if (bake === 0) counters.relightsOnly++;
       version++;
       return { bake, reused: groups.length - bake };
+    },
+    setFade(next) {
+      if (next) {
+        if (!(next.e >= 0 && next.e <= 1)) throw new Error(`setFade: fraction ${next.e} is outside [0, 1]`);
+        if (!scene) throw new Error('setFade: no scene to fade to');
+        if (groupKeys(next.from) !== order.map((s) => s.group.key).join('|')) throw new Error('setFade: the scene faded from has other luminaires than the scene');
+      }
+      if (!next && !fade) return;
+      fade = next ? { from: next.from, e: next.e } : null;
+      version++;
     },
     step,
     finish() {
@@ -291,14 +366,22 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
       if (composedVersion === version || !scene) return out;
       const weighted = parts();
       const key = weightsKey();
-      let indirect: IndirectSolution | null = null;
-      let scale: Rgb = [0, 0, 0];
-      if (key !== '' && solved) {
-        indirect = solved;
-        // Solved at these weights (final or a preview of the first solve): as is; otherwise scaled by the reflected direct flux.
-        scale = solved.key === key ? [1, 1, 1] : indirectScale(weightedFlux(weighted.map((p) => ({ flux: p.basis.flux, weight: p.weight }))), solved.flux);
+      let terms: IndirectTerm[] = [];
+      if (key !== '') {
+        // A fade between two solved weightings: the indirect light is linear in the weights, so the blend is exact.
+        const ends = fade ? [finalAt(keyAt(fromWeight)), finalAt(targetKey())] : null;
+        const e = fade?.e ?? 1;
+        if (ends && ends[0] !== undefined && ends[1] !== undefined) {
+          const [a, b] = ends;
+          terms = [...(a ? [{ solution: a, scale: [1 - e, 1 - e, 1 - e] as Rgb }] : []), ...(b ? [{ solution: b, scale: [e, e, e] as Rgb }] : [])];
+        } else {
+          const exact = finalAt(key) ?? (solved?.key === key ? solved : null);
+          // Solved at these weights (final or a preview of the first solve): as is; otherwise the last solve scaled by the reflected direct flux.
+          if (exact) terms = [{ solution: exact, scale: [1, 1, 1] }];
+          else if (solved) terms = [{ solution: solved, scale: indirectScale(weightedFlux(weighted.map((p) => ({ flux: p.basis.flux, weight: p.weight }))), solved.flux) }];
+        }
       }
-      relightMaps(weighted, indirect, scale, atlas, out);
+      relightMaps(weighted, terms, atlas, out);
       counters.relights++;
       composedVersion = version;
       return out;
@@ -313,6 +396,8 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
       dropSolve();
       dropPendingBasis();
       solved = null;
+      finals.clear();
+      fade = null;
       states.clear();
       order = [];
       baker.dispose();

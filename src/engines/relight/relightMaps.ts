@@ -95,31 +95,39 @@ export function sumDirect(parts: readonly WeightedBasis[], layouts: readonly Sur
   return { surfaces, objects };
 }
 
+/** One indirect solution with its per-channel factor in the total. */
+export interface IndirectTerm {
+  solution: IndirectSolution;
+  scale: Rgb;
+}
+
 /**
- * out.direct = Σ_g w_g · direct_g (exact at any weights); out.total = out.direct + s ⊙ indirect,
- * with `s` the per-channel scale of the shared solution (1 when it was solved at these weights,
- * Φ_now/Φ_solve between a weight change and the re-solve; indirectScale in reflectedFlux.ts).
- * No solution yet: total = direct. Writes into `out` (no allocation but the atlas's first use).
+ * out.direct = Σ_g w_g · direct_g (exact at any weights); out.total = out.direct + Σ_k s_k ⊙ indirect_k.
+ * One term with s = 1 when the solution was solved at these weights, Φ_now/Φ_solve between a weight
+ * change and the re-solve (indirectScale in reflectedFlux.ts); during a crossfade from A to B with
+ * both solved, two terms (1 − e)·I_A + e·I_B (the indirect light is linear in the weights).
+ * No term: total = direct. Writes into `out` (no allocation but the atlas's first use).
  */
-export function relightMaps(parts: readonly WeightedBasis[], indirect: IndirectSolution | null, scale: Rgb, atlas: ObjectAtlas | null, out: LitMaps): LitMaps {
-  const addIndirect = (dst: DirectTotal, ind: Float32Array | undefined) => {
+export function relightMaps(parts: readonly WeightedBasis[], terms: readonly IndirectTerm[], atlas: ObjectAtlas | null, out: LitMaps): LitMaps {
+  const addIndirect = (dst: DirectTotal, pick: (s: IndirectSolution) => Float32Array | undefined) => {
     const { direct, total } = dst;
-    if (!ind) {
-      total.set(direct);
-      return;
-    }
-    if (ind.length !== total.length) throw new Error(`relightMaps: the indirect solution has ${ind.length / 3} texels, the output ${total.length / 3}`);
-    const [sr, sg, sb] = scale;
-    for (let i = 0; i < total.length; i += 3) {
-      total[i] = direct[i] + ind[i] * sr;
-      total[i + 1] = direct[i + 1] + ind[i + 1] * sg;
-      total[i + 2] = direct[i + 2] + ind[i + 2] * sb;
+    total.set(direct);
+    for (const { solution, scale } of terms) {
+      const ind = pick(solution);
+      if (!ind) continue;
+      if (ind.length !== total.length) throw new Error(`relightMaps: the indirect solution has ${ind.length / 3} texels, the output ${total.length / 3}`);
+      const [sr, sg, sb] = scale;
+      for (let i = 0; i < total.length; i += 3) {
+        total[i] += ind[i] * sr;
+        total[i + 1] += ind[i + 1] * sg;
+        total[i + 2] += ind[i + 2] * sb;
+      }
     }
   };
   for (const name of SURFACE_NAMES) {
     const dst = out.maps[name];
     weightedSum(name, dst.direct, parts, (b) => b.surfaces[name]);
-    addIndirect(dst, indirect?.surfaces[name]);
+    addIndirect(dst, (s) => s.surfaces[name]);
   }
   // The objects' atlas: every basis of one scene has the same atlas (the same objects, the same settings).
   if (atlas) {
@@ -129,7 +137,7 @@ export function relightMaps(parts: readonly WeightedBasis[], indirect: IndirectS
     }
     out.maps.objects.atlas = atlas;
     weightedSum('objects', out.maps.objects.direct, parts, (b) => b.objects?.shown);
-    addIndirect(out.maps.objects, indirect?.objects);
+    addIndirect(out.maps.objects, (s) => s.objects);
   } else delete out.maps.objects;
   return out;
 }

@@ -44,6 +44,13 @@ export interface BakeService {
    * colour, so a relight), or null for the scene itself.
    */
   setOverlay(overlay: ((scene: BakeScene) => BakeScene) | null): void;
+  /**
+   * A light-scene crossfade (docs/light-scenes.md): `from` turns the scene into the scene faded
+   * from (same luminaires, other dimming and colour), `e` the eased fraction; null ends it. Each call
+   * is a relight of the engine (no bake) and is announced as a slice at once, so the view draws it
+   * in the same frame.
+   */
+  setFade(fade: ServiceFade | null): void;
   /** Another quality level: a fresh engine with QUALITY_LEVELS[level], which rebakes the scene. */
   setQuality(level: QualityLevel): void;
   readonly quality: QualityLevel;
@@ -56,6 +63,12 @@ export interface BakeService {
   readonly error: string | null;
   subscribe(listener: (event: BakeEvent) => void): () => void;
   dispose(): void;
+}
+
+/** A crossfade as the service takes it: the scene faded from as a function of the (lit) scene. */
+export interface ServiceFade {
+  from: (scene: BakeScene) => BakeScene;
+  e: number;
 }
 
 /** The page visibility the service follows (the document, or a test's stand-in). */
@@ -119,6 +132,7 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
   };
   let scene: BakeScene | null = null;
   let overlay: ((s: BakeScene) => BakeScene) | null = null;
+  let fade: ServiceFade | null = null;
   let error: string | null = null;
   let disposed = false;
   const prepareFor = createObjectsMemo();
@@ -127,6 +141,19 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
   let trimmedAt = -1;
 
   const lit = (s: BakeScene) => (overlay ? overlay(s) : s);
+  /** The engine's scene and, during a fade, its fade; a fade whose scenes no longer match (a module added meanwhile) ends. */
+  const light = (engine: RelightEngine | null, s: BakeScene) => {
+    if (!engine) return;
+    const shown = lit(s);
+    engine.setScene(shown);
+    if (!fade) return;
+    try {
+      engine.setFade({ from: fade.from(shown), e: fade.e });
+    } catch {
+      fade = null;
+      engine.setFade(null);
+    }
+  };
   const settings = () => context.engine?.settings ?? resolveBakeSettings(QUALITY_LEVELS[quality]);
   const reportError = (message: string) => {
     error = message;
@@ -137,7 +164,7 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
     {
       onLost: () => emit({ type: 'context', state: 'lost' }),
       onRestored(engine) {
-        if (engine && scene) engine.setScene(lit(scene));
+        if (scene) light(engine, scene);
         emit({ type: 'engine', engine });
         emit({ type: 'context', state: 'restored' });
         slicer.queue();
@@ -180,7 +207,7 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
       if (disposed) return;
       scene = next;
       prepared = prepareFor(next.objects, settings());
-      context.engine?.setScene(lit(next));
+      light(context.engine, next);
       slicer.queue();
     },
     get scene() {
@@ -189,7 +216,26 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
     setOverlay(next) {
       overlay = next;
       if (!scene || disposed) return;
-      context.engine?.setScene(lit(scene));
+      light(context.engine, scene);
+      slicer.queue();
+    },
+    setFade(next) {
+      if (disposed || (next === null && fade === null)) return;
+      fade = next;
+      const engine = context.engine;
+      if (!engine || !scene) return;
+      if (!fade) engine.setFade(null);
+      else {
+        try {
+          engine.setFade({ from: fade.from(lit(scene)), e: fade.e });
+        } catch {
+          // The scene faded from does not match the one the engine holds (its luminaires changed): show the scene.
+          fade = null;
+          engine.setFade(null);
+        }
+      }
+      // Drawn now (a relight), not after the input-quiet hold of bake work; the end state's solve, if new, is queued.
+      emit({ type: 'slice', engine, progress: engine.progress });
       slicer.queue();
     },
     setQuality(level) {
@@ -197,7 +243,7 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
       quality = level;
       const engine = context.setSettings(QUALITY_LEVELS[level]);
       if (scene) prepared = prepareFor(scene.objects, settings());
-      if (engine && scene) engine.setScene(lit(scene));
+      if (scene) light(engine, scene);
       emit({ type: 'engine', engine });
       slicer.queue();
     },
