@@ -1,10 +1,44 @@
 /// <reference types="vitest/config" />
-import { defineConfig } from 'vite';
+import { readFileSync } from 'node:fs';
+import { defineConfig, type Plugin } from 'vite';
 import react from '@vitejs/plugin-react';
+
+/**
+ * zod 4 "classic" gives every schema a `toJSONSchema()` method and a Standard Schema
+ * `jsonSchema` pair, so its JSON Schema generator (core/to-json-schema.js and
+ * core/json-schema-processors.js, ~5 KiB gzip) rides along in the first screen although
+ * luxbox never generates JSON Schema (it only validates). In the browser build those two
+ * modules become stubs with the same exports that throw when called; `aggregateChecks`
+ * (the string `format`/`minLength` getters read it) stays the real one. Export names are
+ * read from the installed files, so a zod update with new names still builds, and the
+ * CLI and Vitest use the untouched package. docs/benchmarks.md, "First screen".
+ */
+function zodWithoutJsonSchema(): Plugin {
+  const STUBBED = /[\\/]zod[\\/]v4[\\/]core[\\/](to-json-schema|json-schema-processors)\.js$/;
+  const KEEP = new Set(['aggregateChecks']);
+  const exportNames = (source: string) =>
+    [...source.matchAll(/^export (?:function|const|let|class) (\w+)/gm), ...[...source.matchAll(/^export \{([^}]*)\}/gm)].flatMap((m) => m[1].split(',').map((s) => [s, s.trim().split(/\s+as\s+/).pop()!]))].map((m) => m[1]);
+  return {
+    name: 'luxbox-zod-without-json-schema',
+    apply: 'build',
+    load(id) {
+      if (!STUBBED.test(id) || id.includes('?')) return null;
+      const names = [...new Set(exportNames(readFileSync(id, 'utf8')))].filter(Boolean);
+      const message = JSON.stringify('zod JSON Schema generation is not part of the luxbox browser build (vite.config.ts)');
+      const lines = names.map((name) =>
+        KEEP.has(name)
+          ? `export { ${name} } from ${JSON.stringify(`${id}?real`)};`
+          : // createStandardJSONSchemaMethod / createToJSONSchemaMethod run when `~standard` is read: hand back a method that throws.
+            `export function ${name}() { if (${JSON.stringify(name)}.startsWith('create')) return () => { throw new Error(${message}); }; throw new Error(${message}); }`,
+      );
+      return lines.join('\n');
+    },
+  };
+}
 
 // One config for the app build and for Vitest (unit + headless-gl tests).
 export default defineConfig({
-  plugins: [react()],
+  plugins: [react(), zodWithoutJsonSchema()],
   server: { port: 5173, strictPort: false, host: true },
   preview: { port: 4173, strictPort: true },
   build: {

@@ -1,4 +1,3 @@
-import { createPhotometryLoader } from '../../core/photometry/createPhotometryLoader';
 import { PhotometryReadError } from '../../core/photometry/PhotometryReadError';
 import type { Photometry } from '../../core/photometry/types';
 
@@ -13,6 +12,8 @@ const loaders = new WeakMap<typeof fetch, Map<string, (path: string) => Promise<
  * to the page) and parses it. One loader, so one cache, per page for each
  * folder: the plan's footprints and the 3D view ask for the same files and
  * each is fetched once between them. An HTTP error is "<path>: HTTP <status>".
+ * The IES/LDT parsers load with the first file (a dynamic import): they are
+ * not part of the page's first download (docs/benchmarks.md, "First screen").
  */
 export function pagePhotometryLoader(baseUrl: string, fetchFn: typeof fetch = pageFetch): (path: string) => Promise<Photometry> {
   let byFolder = loaders.get(fetchFn);
@@ -20,11 +21,23 @@ export function pagePhotometryLoader(baseUrl: string, fetchFn: typeof fetch = pa
   const key = folderUrl(baseUrl);
   let load = byFolder.get(key);
   if (!load) {
-    load = createPhotometryLoader(async (path: string) => {
-      const response = await fetchFn(baseUrl + path);
-      if (!response.ok) throw new PhotometryReadError(path, `HTTP ${response.status}`);
-      return new Uint8Array(await response.arrayBuffer());
-    });
+    let parsing: Promise<(path: string) => Promise<Photometry>> | null = null;
+    load = (path: string) => {
+      parsing ??= import('../../core/photometry/createPhotometryLoader').then(
+        ({ createPhotometryLoader }) =>
+          createPhotometryLoader(async (file: string) => {
+            const response = await fetchFn(baseUrl + file);
+            if (!response.ok) throw new PhotometryReadError(file, `HTTP ${response.status}`);
+            return new Uint8Array(await response.arrayBuffer());
+          }),
+        (error: unknown) => {
+          // The parser chunk did not arrive (offline, deploy in between): the next load tries again.
+          parsing = null;
+          throw error;
+        },
+      );
+      return parsing.then((loader) => loader(path));
+    };
     byFolder.set(key, load);
   }
   return load;
