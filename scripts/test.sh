@@ -10,6 +10,7 @@ echo "== unit + headless WebGL (vitest under xvfb)"
 # Issue 11's bar: 10 000 seeded random action sequences in the always-valid property test.
 ALWAYS_VALID_RUNS=10000 xvfb-run -a npx vitest run
 echo "== build";      npx vite build
+echo "== first-screen download budget (docs/benchmarks.md)"; node scripts/firstScreenBudget.mjs dist
 echo "== e2e (Playwright, Debian chromium)"
 npx playwright test
 echo "== cross-engine e2e (Chromium, Firefox ESR, WebKitGTK; xvfb)"
