@@ -14,6 +14,7 @@ import { deleteSystem, moveSystem, placePreset, rotateSystem, setMounting, setSu
 import { addFeed, moveFeed, removeFeed, setFeedDriver } from './actions/feedActions';
 import { addRail, removeRail, setDistribution, setRailLength } from './actions/railActions';
 import { moveFixingPoint, setJointTurn } from './actions/chainShapeActions';
+import { addBranch, setConnector } from './actions/branchActions';
 import { addModule, moveModule, removeModule, setModuleBeam, setModuleCct, setModuleDimming, setModuleType } from './actions/moduleActions';
 import { aimAt, setAim } from './actions/aimActions';
 import { autoPatch, clearPatch, setModulePatch } from './actions/patchActions';
@@ -38,6 +39,8 @@ export const actionDefinitions = {
   setDistribution,
   addRail,
   removeRail,
+  addBranch,
+  setConnector,
   setJointTurn,
   moveFixingPoint,
   addModule,

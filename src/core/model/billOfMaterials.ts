@@ -5,7 +5,7 @@
  * Counting rules (docs/model.md): per system one feed kit and one driver (its
  * article) per power feed; one suspension kit per derived suspension point, or
  * one surface clip per clip point when the system is on the ceiling
- * (suspensionPoints.ts); one connector per joint; one rail article per distinct
+ * (suspensionPoints.ts); one connector per connector node (a T or X once for its branches); one rail article per distinct
  * length; one module article per type, beam and colour temperature; one filter article per colour
  * filter in front of a module (docs/colour-filters.md).
  */
@@ -13,6 +13,7 @@ import { findBeam, findConnector, findDriver, findModuleType, type Catalog } fro
 import { findColourFilter } from '../colour/colourFilterLibrary';
 import { filterAccessory, filterLabel } from './moduleFilter';
 import type { Configuration } from './configuration';
+import { jointParent, nodeJoints } from './railTree';
 import { suspensionCoordinates } from './suspensionPoints';
 import { InputError } from '../inputError';
 
@@ -59,10 +60,12 @@ export function billOfMaterials(config: Configuration, catalog: Catalog): BillOf
     }
     const fixing = s.mounting === 'surface' ? catalog.surfaceMount : catalog.suspension;
     add(fixing.article, fixing.name, fixing.price, 'suspension', suspensionCoordinates(s, catalog).length);
-    for (const j of s.joints) {
+    // One connector per node: the branches of a T or X share it (railTree.ts).
+    s.joints.forEach((j, k) => {
+      if (nodeJoints(s, jointParent(j, k))[0] !== k) return;
       const con = findConnector(catalog, j.connector);
       add(con.article, con.name, con.price, 'connector');
-    }
+    });
     for (const r of s.rails) {
       const mm = Math.round(r.length * 1000);
       add(`${catalog.rail.article}-${mm}`, `${catalog.rail.name} ${(mm / 1000).toFixed(2)} m`, railUnitPrice(r.length, catalog), 'rail');

@@ -94,7 +94,7 @@ const presetSchema = z.strictObject({
   rails: z
     .array(z.strictObject({ length: positive, distribution: z.enum(DISTRIBUTIONS), modules: z.array(presetModuleSchema) }))
     .min(1),
-  joints: z.array(z.strictObject({ connector: nonEmpty, turn: z.number().finite() })),
+  joints: z.array(z.strictObject({ connector: nonEmpty, turn: z.number().finite(), parent: z.number().int().nonnegative().optional() })),
 });
 
 export const catalogSchema = z
@@ -131,6 +131,11 @@ export const catalogSchema = z
           price,
           /**
            * A flexible-angle (hinge) connector (docs/catalog-format.md): it turns by any multiple of
+          /**
+           * Rail ends it joins (docs/catalog-format.md, "Connectors"): 2 (default) for straight, corner and
+           * flexible; 3 for a T, 4 for an X. A node of more than two ports takes branches at −angle, 0 and +angle.
+           */
+          ports: z.number().int().min(2).max(4).optional(),
            * `step` degrees from −maxAngle to +maxAngle, 0 included; setJointTurn adjusts a joint's turn.
            */
           flex: z.strictObject({ maxAngle: z.number().finite().positive().lt(180), step: z.number().finite().positive() }).optional(),
@@ -219,6 +224,7 @@ export const catalogSchema = z
     if (s.min > s.max) ctx.addIssue({ code: 'custom', path: ['suspension', 'min'], message: 'must not exceed max' });
     if (s.default < s.min || s.default > s.max) ctx.addIssue({ code: 'custom', path: ['suspension', 'default'], message: 'must lie within min..max' });
     if (!c.feed.positions.includes('ends')) ctx.addIssue({ code: 'custom', path: ['feed', 'positions'], message: "must include 'ends' (a one-rail system has no joints)" });
+      if (connectorPorts(con) > 2 && (con.flex || con.angle === 0)) ctx.addIssue({ code: 'custom', path: ['connectors', i, 'ports'], message: 'a T or X connector has a fixed branch angle (angle > 0, no flex)' });
     if (new Set(c.feed.positions).size !== c.feed.positions.length) ctx.addIssue({ code: 'custom', path: ['feed', 'positions'], message: 'must not repeat a position' });
     if (!c.drivers.some((d) => d.id === c.feed.defaultDriver)) ctx.addIssue({ code: 'custom', path: ['feed', 'defaultDriver'], message: `'${c.feed.defaultDriver}' is not a driver id` });
     c.drivers.forEach((d, i) => {
@@ -237,6 +243,7 @@ export const catalogSchema = z
     uniqueIds(c.filters ?? [], ['filters'], ctx);
     c.filters?.forEach((f, i) => {
       if (!colourFilter(f.id)) ctx.addIssue({ code: 'custom', path: ['filters', i, 'id'], message: `'${f.id}' is not a filter of the colour-filter library` });
+        if (j.parent !== undefined && j.parent > k) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints', k, 'parent'], message: `must be a rail before rail ${k + 2} (at most ${k})` });
     });
     uniqueIds(c.filters ?? [], ['filters'], ctx);
     c.filters?.forEach((f, i) => {
@@ -324,24 +331,31 @@ export function onGrid(x: number, step: number): boolean {
 
 function uniqueIds(items: readonly { id: string }[], path: PropertyKey[], ctx: z.RefinementCtx): void {
   const seen = new Set<string>();
+  if (connectorPorts(con) > 2) return turn === 0 || Math.abs(turn) === con.angle;
   items.forEach((it, i) => {
     if (seen.has(it.id)) ctx.addIssue({ code: 'custom', path: [...path, i, 'id'], message: `duplicate id '${it.id}'` });
     seen.add(it.id);
   });
+/** Rail ends a connector joins: 2 unless the catalog says 3 (T) or 4 (X); a node takes ports − 1 branches. */
+export function connectorPorts(con: Pick<ConnectorSpec, 'ports'>): number {
+  return con.ports ?? 2;
+}
+
 }
 
 /**
  * Whether a connector may turn by `turn` degrees: a fixed one by exactly ±angle (0 for straight),
  * a flexible one by a multiple of its step within ±maxAngle.
  */
-export function allowedTurn(con: Pick<ConnectorSpec, 'angle' | 'flex'>, turn: number): boolean {
+export function allowedTurn(con: Pick<ConnectorSpec, 'angle' | 'flex' | 'ports'>, turn: number): boolean {
   if (!Number.isFinite(turn)) return false;
   if (!con.flex) return Math.abs(turn) === con.angle;
   return Math.abs(turn) <= con.flex.maxAngle + 1e-9 && onGrid(turn, con.flex.step);
 }
 
 /** The turns a connector allows, in words ('must be ±90', 'must be a multiple of 5 within ±90'). */
-export function turnRange(con: Pick<ConnectorSpec, 'angle' | 'flex'>): string {
+export function turnRange(con: Pick<ConnectorSpec, 'angle' | 'flex' | 'ports'>): string {
+  if (connectorPorts(con) > 2) return `must be 0 or ±${con.angle}`;
   return con.flex ? `must be a multiple of ${con.flex.step}° within ±${con.flex.maxAngle}°` : `must be ±${con.angle}`;
 }
 

@@ -1,78 +1,196 @@
 /**
- * Distances along a system's chain (docs/model.md, "Power feeds" and "Suspension points"):
- * the one coordinate the feed assignment and the suspension derivation share. s = 0 at the
- * start of the first rail; each rail adds its length and each connector the length of the
- * rail profile it bridges: a straight connector its gap (`arm`), a corner or flexible connector both
- * arms (rail end → corner point → next rail start). A connector's own point (where its feed
- * or suspension sits) is the middle of that bridge: the gap's centre, or the corner point.
+ * Distances along a system's chain (docs/model.md, "Power feeds", "Suspension points" and
+ * "Trees of rails"): the one coordinate the feed assignment and the suspension derivation share.
+ *
+ * Chain coordinate s: the rails laid end to end in list order: s = 0 at the start of the first
+ * rail, each rail adds its length, then the length of rail profile the connector at its end
+ * bridges (a straight connector its gap `arm`, a corner, flexible, T or X connector both arms),
+ * then, when the next rail hangs on another node, that node's bridge once more (so every rail,
+ * node point and bridge has its own interval). A connector node's own point (where its feed or
+ * suspension sits) is the middle of that bridge: the gap's centre, or the hinge point. On a snake
+ * this is the distance along the chain; on a tree it is a bookkeeping order (each rail a disjoint
+ * interval), and distances use the tree: `treeDistance` runs along the rails and through the
+ * nodes, as the current does.
  */
 import { findConnector, twoArmed, type Catalog } from './catalogSchema';
 import type { FeedAt, LightSystem } from './configuration';
 import { railPlacements, type PlanVec } from './geometry';
+import { jointParent, railParents } from './railTree';
 
 export interface ChainCoordinates {
   /** s of each rail's start. */
   readonly railStart: readonly number[];
-  /** s of each connector's point (joints[k]). */
+  /** s of each joint's connector point (joints[k]: the node at the end of its parent rail). */
   readonly jointAt: readonly number[];
   /** s of the end of the last rail. */
   readonly length: number;
+  /** Each rail's length (its interval in s). */
+  readonly railLength: readonly number[];
+  /** Parent rail of each rail (−1: the root). */
+  readonly parent: readonly number[];
+  /** s of the node at the end of each rail; NaN where the end is free. */
+  readonly nodeAt: readonly number[];
+  /** Distance along the tree from the chain start to each rail's start. */
+  readonly depthStart: readonly number[];
+  /** Distance along the tree from the chain start to the node at each rail's end; NaN where free. */
+  readonly nodeDepth: readonly number[];
+  /** Distance from a rail's end to its node's point (half the connector's span); 0 where free. */
+  readonly nodeOut: readonly number[];
 }
 
-/** Length of profile a connector bridges between two rail ends: the straight gap, or both arms of a corner or flexible connector (at any turn). */
+/** Length of profile a connector bridges between two rail ends: the straight gap, or both arms of a corner, flexible, T or X connector (at any turn). */
 export function connectorSpan(catalog: Catalog, connector: string): number {
   const con = findConnector(catalog, connector);
   return twoArmed(con) ? 2 * con.arm : con.arm;
 }
 
 export function chainCoordinates(system: LightSystem, catalog: Catalog): ChainCoordinates {
+  const n = system.rails.length;
+  const parent = railParents(system);
   const railStart: number[] = [];
-  const jointAt: number[] = [];
+  // The connector at each rail's end (the first joint there names it).
+  const nodeConnector: (string | undefined)[] = system.rails.map(() => undefined);
+  system.joints.forEach((j, k) => {
+    const p = jointParent(j, k);
+    if (k < n - 1 && p >= 0 && p < n && nodeConnector[p] === undefined) nodeConnector[p] = j.connector;
+  });
   let s = 0;
   system.rails.forEach((rail, i) => {
     railStart.push(s);
     s += rail.length;
     const joint = system.joints[i];
-    if (joint && i < system.rails.length - 1) {
-      const span = connectorSpan(catalog, joint.connector);
-      jointAt.push(s + span / 2);
-      s += span;
-    }
+    if (!joint || i >= n - 1) return;
+    // After rail i: its own node's bridge, then (when rail i+1 hangs elsewhere) the bridge rail i+1
+    // comes through; on a snake both are joint i's, counted once.
+    const own = nodeConnector[i];
+    if (own !== undefined && jointParent(joint, i) !== i) s += connectorSpan(catalog, own);
+    s += connectorSpan(catalog, joint.connector);
   });
-  const last = system.rails.length - 1;
-  return { railStart, jointAt, length: last >= 0 ? railStart[last] + system.rails[last].length : 0 };
+  const nodeAt: number[] = system.rails.map(() => NaN);
+  const nodeOut: number[] = system.rails.map(() => 0);
+  const depthStart: number[] = system.rails.map(() => 0);
+  const nodeDepth: number[] = system.rails.map(() => NaN);
+  const jointAt: number[] = [];
+  system.joints.forEach((joint, k) => {
+    if (k >= n - 1) return;
+    const p = jointParent(joint, k);
+    if (!(p >= 0 && p <= k)) return jointAt.push(NaN);
+    // The first joint at a node fixes its point (validate() requires one connector per node).
+    if (Number.isNaN(nodeAt[p])) {
+      const half = connectorSpan(catalog, joint.connector) / 2;
+      nodeAt[p] = railStart[p] + system.rails[p].length + half;
+      nodeOut[p] = half;
+      nodeDepth[p] = depthStart[p] + system.rails[p].length + half;
+    }
+    depthStart[k + 1] = nodeDepth[p] + nodeOut[p];
+    jointAt.push(nodeAt[p]);
+  });
+  const last = n - 1;
+  return { railStart, jointAt, length: last >= 0 ? railStart[last] + system.rails[last].length : 0, railLength: system.rails.map((r) => r.length), parent, nodeAt, depthStart, nodeDepth, nodeOut };
 }
 
-/** s of a feed position; NaN for a joint the chain does not have. */
-export function feedCoordinate(at: FeedAt, chain: ChainCoordinates): number {
-  if (at === 'start') return 0;
-  if (at === 'end') return chain.length;
-  return chain.jointAt[at.joint] ?? NaN;
+/** A place on the tree: a rail and the distance from the chain start along the tree (a node: its rail's index and the node's depth). */
+export interface TreeLocation {
+  readonly rail: number;
+  readonly depth: number;
+}
+
+/** Where chain coordinate s lies on the tree: a node's point, else a rail (or a bridge: the rail it leads to). */
+export function locate(chain: ChainCoordinates, s: number): TreeLocation {
+  for (let p = 0; p < chain.nodeAt.length; p++) if (Math.abs(chain.nodeAt[p] - s) <= 1e-9) return { rail: p, depth: chain.nodeDepth[p] };
+  const n = chain.railStart.length;
+  for (let i = n - 1; i >= 0; i--) {
+    // A point on the bridge after rail i (only invalid fixing lists have one) counts as past rail i's end.
+    if (s >= chain.railStart[i] - 1e-9 || i === 0) return { rail: i, depth: chain.depthStart[i] + (s - chain.railStart[i]) };
+  }
+  return { rail: 0, depth: s };
+}
+
+/** Location of a point u metres from the start of rail i. */
+export function onRail(chain: ChainCoordinates, i: number, u: number): TreeLocation {
+  return { rail: i, depth: chain.depthStart[i] + u };
 }
 
 /**
- * The plan point at chain coordinate s: on a rail, its start plus s along it; on a connector,
- * the gap's centre (straight) or the corner point. s outside the chain clamps to its ends.
+ * Distance along the tree between two locations: along the rails and through the nodes (the
+ * path a current or a fitter's tape takes). Same rail: the difference in depth; otherwise both
+ * run up to where their paths meet (the node below their lowest common rail).
+ */
+export function treeDistance(chain: ChainCoordinates, a: TreeLocation, b: TreeLocation): number {
+  if (a.rail === b.rail) return Math.abs(a.depth - b.depth);
+  const above = new Set<number>();
+  for (let r = a.rail; r >= 0; r = chain.parent[r]) above.add(r);
+  let c = b.rail;
+  while (c >= 0 && !above.has(c)) c = chain.parent[c];
+  if (c < 0) return Infinity;
+  const meet = chain.nodeDepth[c];
+  return Math.abs(a.depth - meet) + Math.abs(b.depth - meet);
+}
+
+/** s of a feed position; NaN for a connector or rail the chain does not have. */
+export function feedCoordinate(at: FeedAt, chain: ChainCoordinates): number {
+  if (at === 'start') return 0;
+  if (at === 'end') return chain.length;
+  if ('joint' in at) return chain.jointAt[at.joint] ?? NaN;
+  const i = at.end;
+  return Number.isInteger(i) && i >= 0 && i < chain.railStart.length && Number.isNaN(chain.nodeAt[i]) ? chain.railStart[i] + railLength(chain, i) : NaN;
+}
+
+/** Location of a feed position on the tree (null for one the chain lacks). */
+export function feedLocation(at: FeedAt, chain: ChainCoordinates): TreeLocation | null {
+  const n = chain.railStart.length;
+  if (n === 0) return null;
+  if (at === 'start') return { rail: 0, depth: 0 };
+  if (at === 'end') return { rail: n - 1, depth: chain.depthStart[n - 1] + railLength(chain, n - 1) };
+  if ('joint' in at) {
+    const k = at.joint;
+    if (!(Number.isInteger(k) && k >= 0 && k < n - 1)) return null;
+    const p = chain.parent[k + 1];
+    return { rail: p, depth: chain.nodeDepth[p] };
+  }
+  const i = at.end;
+  if (!(Number.isInteger(i) && i >= 0 && i < n) || !Number.isNaN(chain.nodeAt[i])) return null;
+  return { rail: i, depth: chain.depthStart[i] + railLength(chain, i) };
+}
+
+function railLength(chain: ChainCoordinates, i: number): number {
+  return chain.railLength[i];
+}
+
+/**
+ * The plan point at chain coordinate s: a node's point (the gap's centre or the hinge); on a
+ * rail, its start plus s along it; on a bridge, along the parent rail's connector toward the
+ * rail it leads to. s outside the chain clamps to its ends.
  */
 export function chainPoint(system: LightSystem, catalog: Catalog, s: number): PlanVec {
   const chain = chainCoordinates(system, catalog);
   const rails = railPlacements(system, catalog);
-  for (let i = 0; i < rails.length; i++) {
+  if (rails.length === 0) return [system.x, system.z];
+  for (let p = 0; p < rails.length; p++) {
+    if (Math.abs(chain.nodeAt[p] - s) <= 1e-9) {
+      const r = rails[p];
+      const h = chain.nodeOut[p];
+      return [r.end[0] + r.direction[0] * h, r.end[1] + r.direction[1] * h];
+    }
+  }
+  for (let i = rails.length - 1; i >= 0; i--) {
     const r = rails[i];
     const u = s - chain.railStart[i];
-    if (u <= r.length || i === rails.length - 1) {
-      const t = Math.max(0, Math.min(r.length, u));
-      return [r.start[0] + r.direction[0] * t, r.start[1] + r.direction[1] * t];
-    }
-    const next = rails[i + 1];
-    if (s < chain.railStart[i + 1]) {
-      // On the connector: its straight gap, or the two arms through the corner point.
-      const joint = system.joints[i];
-      const con = findConnector(catalog, joint.connector);
+    if (u >= 0 || i === 0) {
+      if (u <= r.length || i === rails.length - 1) {
+        const t = Math.max(0, Math.min(r.length, u));
+        return [r.start[0] + r.direction[0] * t, r.start[1] + r.direction[1] * t];
+      }
+      // On the bridge after rail i: the connector from rail i+1's parent toward rail i+1.
+      const next = rails[i + 1];
+      const parent = rails[chain.parent[i + 1]];
+      const con = findConnector(catalog, system.joints[i].connector);
       const arm = con.arm;
-      const along = u - r.length;
-      if (!twoArmed(con) || along <= arm) return [r.end[0] + r.direction[0] * along, r.end[1] + r.direction[1] * along];
-      const pivot: PlanVec = [r.end[0] + r.direction[0] * arm, r.end[1] + r.direction[1] * arm];
+      // Measured from the start of rail i+1's own bridge (on a tree, rail i's node may come first).
+      const along = s - (chain.railStart[i + 1] - connectorSpan(catalog, system.joints[i].connector));
+      if (along < 0) return r.end;
+      if (!twoArmed(con) || along <= arm) return [parent.end[0] + parent.direction[0] * along, parent.end[1] + parent.direction[1] * along];
+      const pivot: PlanVec = [parent.end[0] + parent.direction[0] * arm, parent.end[1] + parent.direction[1] * arm];
       return [pivot[0] + next.direction[0] * (along - arm), pivot[1] + next.direction[1] * (along - arm)];
     }
   }

@@ -90,22 +90,33 @@ export interface Rail {
   readonly modules: readonly ModuleInstance[];
 }
 
-/** How rail i is joined to rail i+1. */
+/**
+ * How rail i+1 hangs on the chain (docs/model.md, "Trees of rails"): joints[i] joins rail i+1 to the
+ * connector node at the END of rail `parent` (absent: rail i, the snake). A node holds one connector;
+ * every joint at one node names that connector, and each takes one of its ports (a turn).
+ */
 export interface Joint {
   /** Catalog connector id. */
   readonly connector: string;
   /**
    * Degrees, counterclockwise seen from above positive (a left turn); ±angle of the connector, 0 for
-   * straight; a flexible connector: a multiple of its step within ±maxAngle (setJointTurn, scene file version 6).
+   * straight; a flexible connector: a multiple of its step within ±maxAngle (setJointTurn, scene file version 6);
+   * a T or X connector (catalog `ports` > 2): one of −angle, 0, +angle, each port once per node.
    */
   readonly turn: number;
+  /**
+   * Index of the rail whose end holds the connector this joint goes through, 0 ≤ parent ≤ i (rails are
+   * listed parents first); absent: i, the rail just before (a snake). Scene file version 8.
+   */
+  readonly parent?: number;
 }
 
 /**
  * Where a power feed sits along its chain (docs/model.md, "Power feeds"): the start of the
- * first rail, the end of the last one, or connector k (joints[k], between rails k and k+1).
+ * first rail, the end of the last one, the connector node joints[k] goes through, or the free
+ * end of rail i (a branch's end on a tree; scene file version 8).
  */
-export type FeedAt = 'start' | 'end' | { readonly joint: number };
+export type FeedAt = 'start' | 'end' | { readonly joint: number } | { readonly end: number };
 
 /** A power feed: a feed kit on the rail with its driver (catalog `drivers`). */
 export interface Feed {
@@ -132,7 +143,7 @@ export interface LightSystem {
   /** Ceiling to photometric centre of the modules, metres. */
   readonly suspension: number;
   readonly rails: readonly Rail[];
-  /** joints[i] joins rails[i] to rails[i+1]; length rails.length − 1. */
+  /** joints[i] joins rails[i+1] to the node at the end of rails[joints[i].parent ?? i]; length rails.length − 1 (a tree, docs/model.md). */
   readonly joints: readonly Joint[];
   /** At least one; each module's load goes to the nearest feed along the chain (scene file version 4). */
   readonly feeds: readonly Feed[];

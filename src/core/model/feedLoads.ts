@@ -1,13 +1,14 @@
 /**
  * Power feeds and their loads (docs/model.md, "Power feeds"). Every module's input power
  * (the beam's `watts`, at full output: dimming is a setting, not a limit the driver may
- * rely on) goes to the feed nearest to the module's centre along the chain
- * (chainCoordinates.ts); a tie goes to the feed nearer the chain start. A feed is
+ * rely on) goes to the feed nearest to the module's centre along the chain, on a tree along
+ * its branches (chainCoordinates.ts treeDistance); a tie goes to the feed nearer the chain start. A feed is
  * overloaded when its load exceeds its driver's rated output power.
  */
 import { findBeam, findModuleType, type Catalog, type DriverSpec } from './catalogSchema';
 import type { Configuration, Feed, FeedAt, LightSystem } from './configuration';
-import { chainCoordinates, feedCoordinate, type ChainCoordinates } from './chainCoordinates';
+import { chainCoordinates, feedCoordinate, feedLocation, onRail, treeDistance, type ChainCoordinates, type TreeLocation } from './chainCoordinates';
+import { isLeafRail, jointParent, nodeJoints } from './railTree';
 import { railModuleOffsets } from './geometry';
 
 /** Load sums are compared with a milliwatt of slack so 0.1 + 0.2 style float noise never refuses a fitting driver. */
@@ -36,26 +37,31 @@ export function formatWatts(w: number): string {
   return String(Math.round(w * 100) / 100);
 }
 
-/** A module's chain coordinate (centre) and watts, for the modules whose rails' layouts fit. */
-function moduleLoads(system: LightSystem, catalog: Catalog, chain: ChainCoordinates): { id: string; s: number; watts: number }[] {
-  const out: { id: string; s: number; watts: number }[] = [];
+/** A module's place on the tree (its centre) and watts, for the modules whose rails' layouts fit. */
+function moduleLoads(system: LightSystem, catalog: Catalog, chain: ChainCoordinates): { id: string; at: TreeLocation; watts: number }[] {
+  const out: { id: string; at: TreeLocation; watts: number }[] = [];
   system.rails.forEach((rail, i) => {
     const offsets = railModuleOffsets(rail, catalog);
     if (!offsets) return;
     rail.modules.forEach((m, k) => {
       const type = findModuleType(catalog, m.type);
-      out.push({ id: m.id, s: chain.railStart[i] + offsets[k] + type.length / 2, watts: findBeam(type, m.beam).watts });
+      out.push({ id: m.id, at: onRail(chain, i, offsets[k] + type.length / 2), watts: findBeam(type, m.beam).watts });
     });
   });
   return out;
 }
 
-/** Index (into `coords`) of the nearest feed to s; ties to the one nearer the chain start. */
+/** Index (into `coords`) of the nearest feed to s on a snake; ties to the one nearer the chain start. */
 export function nearestFeed(coords: readonly number[], s: number): number {
+  return nearestBy(coords.map((c) => Math.abs(c - s)), coords);
+}
+
+/** Index of the smallest distance; ties (1e-12) to the smaller chain coordinate. */
+function nearestBy(distances: readonly number[], coords: readonly number[]): number {
   let best = 0;
-  for (let j = 1; j < coords.length; j++) {
-    const d = Math.abs(coords[j] - s);
-    const b = Math.abs(coords[best] - s);
+  for (let j = 1; j < distances.length; j++) {
+    const d = distances[j];
+    const b = distances[best];
     if (d < b - 1e-12 || (Math.abs(d - b) <= 1e-12 && coords[j] < coords[best])) best = j;
   }
   return best;
@@ -68,11 +74,12 @@ export function nearestFeed(coords: readonly number[], s: number): number {
 export function feedLoads(system: LightSystem, catalog: Catalog): FeedLoad[] {
   const chain = chainCoordinates(system, catalog);
   const coords = system.feeds.map((f) => feedCoordinate(f.at, chain));
+  const places = system.feeds.map((f) => feedLocation(f.at, chain));
   const loads = system.feeds.map(() => 0);
   const ids: string[][] = system.feeds.map(() => []);
   if (system.feeds.length > 0) {
     for (const m of moduleLoads(system, catalog, chain)) {
-      const j = nearestFeed(coords, m.s);
+      const j = nearestBy(places.map((at) => (at ? treeDistance(chain, at, m.at) : Infinity)), coords);
       loads[j] += m.watts;
       ids[j].push(m.id);
     }
@@ -88,20 +95,30 @@ export function isOverloaded(l: FeedLoad): boolean {
   return l.load > l.capacity + LOAD_EPS;
 }
 
-/** Same position along the chain. */
+/** Same position as written (the planner's controls; validate() also knows that the joints of one node share a spot). */
 export function sameFeedAt(a: FeedAt, b: FeedAt): boolean {
-  return typeof a === 'string' || typeof b === 'string' ? a === b : a.joint === b.joint;
+  if (typeof a === 'string' || typeof b === 'string') return a === b;
+  if ('joint' in a) return 'joint' in b && a.joint === b.joint;
+  return 'end' in b && a.end === b.end;
 }
 
-/** 'the chain start', 'the chain end', 'connector 2' (joints[1]). */
+/** 'the chain start', 'the chain end', 'connector 2' (joints[1]), 'the end of rail 3'. */
 export function describeFeedAt(at: FeedAt): string {
-  return at === 'start' ? 'the chain start' : at === 'end' ? 'the chain end' : `connector ${at.joint + 1}`;
+  if (at === 'start') return 'the chain start';
+  if (at === 'end') return 'the chain end';
+  return 'joint' in at ? `connector ${at.joint + 1}` : `the end of rail ${at.end + 1}`;
 }
 
-/** The feed positions the catalog allows on a system, in chain order. */
+/**
+ * The feed positions the catalog allows on a system, in chain order: the start, each connector
+ * node once (through its first joint), each free rail end but the last, and the chain end. On a
+ * snake: start, connectors 1…n−1, end.
+ */
 export function allowedFeedPositions(system: LightSystem, catalog: Catalog): FeedAt[] {
-  const joints = catalog.feed.positions.includes('joints') ? system.joints.map((_, k) => ({ joint: k })) : [];
-  return ['start', ...joints, 'end'];
+  const nodes = catalog.feed.positions.includes('joints') ? system.joints.flatMap((j, k) => (nodeJoints(system, jointParent(j, k))[0] === k ? [{ joint: k }] : [])) : [];
+  const n = system.rails.length;
+  const ends = system.rails.flatMap((_, i) => (i < n - 1 && isLeafRail(system, i) ? [{ end: i }] : []));
+  return ['start', ...nodes, ...ends, 'end'];
 }
 
 /** The drivers by rated power, smallest first (ties by id): the order a driver is picked for a load. */
@@ -143,10 +160,15 @@ export function plannedFeeds(system: LightSystem, catalog: Catalog): { at: FeedA
  * what it would carry. bindDefinition hands it to every action's explain as the problem's message.
  */
 export function overloadReason(before: Configuration, after: Configuration, problem: { path: string; message: string }, catalog: Catalog): string {
+  return overloadRefusal(before, after, problem, catalog).reason;
+}
+
+/** overloadReason with its stable code and parameters ('driverFull' or 'feedOverload'; docs/i18n.md). */
+export function overloadRefusal(before: Configuration, after: Configuration, problem: { path: string; message: string }, catalog: Catalog): { reason: string; code?: string; params?: Record<string, string | number> } {
   const m = /^systems\[(\d+)\]\.feeds\[(\d+)\]$/.exec(problem.path);
   const system = m ? after.systems[Number(m[1])] : undefined;
   const feed = system?.feeds[Number(m?.[2])];
-  if (!system || !feed) return problem.message;
+  if (!system || !feed) return { reason: problem.message };
   const advice = 'add a second feed or choose a larger driver';
   const now = feedLoads(system, catalog)[Number(m?.[2])];
   const old = before.systems.find((s) => s.id === system.id);
@@ -157,6 +179,12 @@ export function overloadReason(before: Configuration, after: Configuration, prob
   } catch {
     was = undefined; // the state before was not sound (a test's raw edit): say what the result would carry
   }
-  if (was && !isOverloaded(was) && was.load < now.load) return `the ${formatWatts(now.capacity)} W driver is full: ${formatWatts(was.load)} W used; ${advice}`;
-  return `${feedLabel(now.index)} would carry ${formatWatts(now.load)} W, more than its ${formatWatts(now.capacity)} W driver; ${advice}`;
+  if (was && !isOverloaded(was) && was.load < now.load) {
+    return { reason: `the ${formatWatts(now.capacity)} W driver is full: ${formatWatts(was.load)} W used; ${advice}`, code: 'driverFull', params: { capacity: Number(formatWatts(now.capacity)), used: Number(formatWatts(was.load)) } };
+  }
+  return {
+    reason: `${feedLabel(now.index)} would carry ${formatWatts(now.load)} W, more than its ${formatWatts(now.capacity)} W driver; ${advice}`,
+    code: 'feedOverload',
+    params: { n: now.index + 1, load: Number(formatWatts(now.load)), capacity: Number(formatWatts(now.capacity)) },
+  };
 }

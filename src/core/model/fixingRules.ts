@@ -5,15 +5,17 @@
  * the change or fall back to the derived ones. The derived points (suspensionPoints.ts) keep
  * these rules by construction.
  *  - finite and strictly ascending (points keep their order; no two at one spot);
- *  - the free chain ends overhang their outermost point by at most maxOverhang, and no point
- *    lies past a chain end;
- *  - consecutive points are at most `spacing` apart along the chain;
- *  - every connector carries a point at its own coordinate (a joint is always supported);
+ *  - the free chain ends (the start, and every rail end without a connector: on a tree each
+ *    branch's) overhang their outermost point by at most maxOverhang, and no point lies past one;
+ *  - consecutive points are at most `spacing` apart along each rail, a branch counted from the
+ *    node it hangs on (distances along the tree);
+ *  - every connector node carries a point at its own coordinate (a joint is always supported);
  *  - any other point lies on a rail, not inside a connector's bridge.
  */
 import type { Catalog } from './catalogSchema';
 import type { LightSystem } from './configuration';
-import { chainCoordinates } from './chainCoordinates';
+import { chainCoordinates, locate } from './chainCoordinates';
+import { nodeJoints } from './railTree';
 import { mountingRule } from './suspensionPoints';
 
 /** Float noise allowed when comparing chain coordinates: a micrometre (stored points are rounded to it). */
@@ -39,27 +41,49 @@ export function fixingProblem(system: LightSystem, points: readonly number[], ca
     if (!Number.isFinite(s)) return { code: 'fixing-order', index: i, message: `${what} point ${i + 1} is not a number` };
     if (i > 0 && !(s > points[i - 1] + FIXING_EPS)) return { code: 'fixing-order', index: i, message: `${what} point ${i + 1} must lie past point ${i} along the chain` };
   }
-  const first = points[0];
-  const last = points[points.length - 1];
-  if (first < -FIXING_EPS || first > rule.maxOverhang + FIXING_EPS) return { code: 'fixing-overhang', index: 0, message: `the chain start would overhang its first ${what} by ${fmt(first)} m (at most ${rule.maxOverhang} m)` };
-  const tail = chain.length - last;
-  if (tail < -FIXING_EPS || tail > rule.maxOverhang + FIXING_EPS) return { code: 'fixing-overhang', index: points.length - 1, message: `the chain end would overhang its last ${what} by ${fmt(tail)} m (at most ${rule.maxOverhang} m)` };
-  for (let i = 1; i < points.length; i++) {
-    const gap = points[i] - points[i - 1];
-    if (gap > rule.spacing + FIXING_EPS) return { code: 'fixing-spacing', index: i, message: `${what} points ${i} and ${i + 1} would be ${fmt(gap)} m apart (at most ${rule.spacing} m)` };
+  const n = system.rails.length;
+  // Each point's rail and depth along the tree (a node's point: the rail it ends), grouped per rail in depth order.
+  const located = points.map((s) => locate(chain, s));
+  const onRail: { depth: number; index: number }[][] = system.rails.map(() => []);
+  located.forEach((l, index) => onRail[l.rail]?.push({ depth: l.depth, index }));
+  const nodePoint = (p: number): number => points.findIndex((s) => Math.abs(s - chain.nodeAt[p]) <= FIXING_EPS);
+  // Free ends: the chain start, and the end of every rail without a node (the last rail's: "the chain end").
+  const first = onRail[0].length > 0 ? onRail[0][0].depth : located[0].depth;
+  if (points[0] < -FIXING_EPS || first > rule.maxOverhang + FIXING_EPS) return { code: 'fixing-overhang', index: 0, message: `the chain start would overhang its first ${what} by ${fmt(Math.max(first, points[0]))} m (at most ${rule.maxOverhang} m)` };
+  for (let i = 0; i < n; i++) {
+    if (!Number.isNaN(chain.nodeAt[i])) continue;
+    const mine = onRail[i];
+    const p = chain.parent[i];
+    const lastDepth = mine.length > 0 ? mine[mine.length - 1].depth : p >= 0 ? chain.nodeDepth[p] : -Infinity;
+    const tail = chain.depthStart[i] + chain.railLength[i] - lastDepth;
+    const index = mine.length > 0 ? mine[mine.length - 1].index : points.length - 1;
+    const end = i === n - 1 ? 'the chain end' : `the end of rail ${i + 1}`;
+    if (tail < -FIXING_EPS || tail > rule.maxOverhang + FIXING_EPS) return { code: 'fixing-overhang', index, message: `${end} would overhang its last ${what} by ${fmt(tail)} m (at most ${rule.maxOverhang} m)` };
   }
-  // Two pointers: both lists ascend.
-  let k = 0;
-  for (let j = 0; j < chain.jointAt.length; j++) {
-    const at = chain.jointAt[j];
-    while (k < points.length && points[k] < at - FIXING_EPS) k++;
-    if (k >= points.length || Math.abs(points[k] - at) > FIXING_EPS) return { code: 'fixing-joint', index: Math.min(k, points.length - 1), message: `connector ${j + 1} must keep its ${what} (a connector is always a support)` };
+  // Spacing along each rail, from the node it hangs on (if any) through its points.
+  for (let i = 0; i < n; i++) {
+    const p = chain.parent[i];
+    const seq = p >= 0 ? [{ depth: chain.nodeDepth[p], index: nodePoint(p) }, ...onRail[i]] : onRail[i];
+    for (let k = 1; k < seq.length; k++) {
+      const gap = seq[k].depth - seq[k - 1].depth;
+      if (gap > rule.spacing + FIXING_EPS) {
+        const a = seq[k - 1].index;
+        return { code: 'fixing-spacing', index: seq[k].index, message: `${what} points ${a >= 0 ? a + 1 : `at connector`} and ${seq[k].index + 1} would be ${fmt(gap)} m apart (at most ${rule.spacing} m)` };
+      }
+    }
+  }
+  // Every connector node keeps its point.
+  for (let p = 0; p < n; p++) {
+    if (Number.isNaN(chain.nodeAt[p]) || nodePoint(p) >= 0) continue;
+    const j = nodeJoints(system, p)[0];
+    const k = points.findIndex((s) => s >= chain.nodeAt[p] - FIXING_EPS);
+    return { code: 'fixing-joint', index: k >= 0 ? k : points.length - 1, message: `connector ${j + 1} must keep its ${what} (a connector is always a support)` };
   }
   for (let i = 0; i < points.length; i++) {
     const s = points[i];
-    if (chain.jointAt.some((at) => Math.abs(s - at) <= FIXING_EPS)) continue;
-    const onRail = chain.railStart.some((r0, r) => s >= r0 - FIXING_EPS && s <= r0 + system.rails[r].length + FIXING_EPS);
-    if (!onRail) return { code: 'fixing-off-rail', index: i, message: `${what} point ${i + 1} would sit inside a connector, not on a rail` };
+    if (chain.nodeAt.some((at) => Math.abs(s - at) <= FIXING_EPS)) continue;
+    const onARail = chain.railStart.some((r0, r) => s >= r0 - FIXING_EPS && s <= r0 + system.rails[r].length + FIXING_EPS);
+    if (!onARail) return { code: 'fixing-off-rail', index: i, message: `${what} point ${i + 1} would sit inside a connector, not on a rail` };
   }
   return null;
 }

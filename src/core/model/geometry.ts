@@ -8,6 +8,7 @@ import { findConnector, findModuleType, twoArmed, type Catalog } from './catalog
 import type { LightSystem, Rail } from './configuration';
 import { layoutModules } from './distribution';
 import { freeOffsets, isFreeRail } from './freePositions';
+import { jointParent } from './railTree';
 
 /** A point or vector in the plan: [x, z]. */
 export type PlanVec = readonly [number, number];
@@ -70,23 +71,29 @@ export function rotatePlan(v: PlanVec, deg: number): PlanVec {
 
 const add = (a: PlanVec, b: PlanVec, k = 1): PlanVec => [a[0] + k * b[0], a[1] + k * b[1]];
 
-/** Start, end and heading of every rail of a system, following the chain of joints. */
+/**
+ * Start, end and heading of every rail of a system, following the tree of joints (docs/model.md,
+ * "Trees of rails"): rail i+1 starts where its connector puts it past the end of its parent rail.
+ */
 export function railPlacements(system: LightSystem, catalog: Catalog): RailPlacement[] {
   const out: RailPlacement[] = [];
-  let start: PlanVec = [system.x, system.z];
-  let heading = system.rotation;
+  const headings: number[] = [];
   system.rails.forEach((rail, i) => {
+    let start: PlanVec = [system.x, system.z];
+    let heading = system.rotation;
+    const joint = i > 0 ? system.joints[i - 1] : undefined;
+    const parent = joint ? out[jointParent(joint, i - 1)] : undefined;
+    if (joint && parent) {
+      const con = findConnector(catalog, joint.connector);
+      const pivot = add(parent.end, parent.direction, con.arm);
+      heading = headings[jointParent(joint, i - 1)] + joint.turn;
+      // A corner, flexible, T or X connector: the rail starts one arm past the hinge, along its own heading.
+      start = twoArmed(con) ? add(pivot, headingVector(heading), con.arm) : pivot;
+    }
+    headings.push(heading);
     const direction = headingVector(heading);
     const end = add(start, direction, rail.length);
     out.push({ railId: rail.id, index: i, start, end, heading: normaliseDegrees(heading), direction, length: rail.length });
-    const joint = system.joints[i];
-    if (joint) {
-      const con = findConnector(catalog, joint.connector);
-      const pivot = add(end, direction, con.arm);
-      heading += joint.turn;
-      // A corner or flexible connector: the next rail starts one arm past the hinge, along its own heading.
-      start = twoArmed(con) ? add(pivot, headingVector(heading), con.arm) : pivot;
-    }
   });
   return out;
 }
@@ -100,30 +107,79 @@ function segmentRect(from: PlanVec, to: PlanVec, width: number): PlanRect {
 }
 
 /**
- * The plan footprint of a system as a chain of elements: rail 0, connector 0,
- * rail 1, … Each element is one or two rectangles (a corner connector is two
- * arms, each reaching half a profile width past the corner point so the corner
- * is covered).
+ * The plan footprint of a system as elements in list order: rail 0, the connector node at its
+ * end (if any), rail 1, its node, … (a snake: rail 0, connector 0, rail 1, …). Each element is
+ * one or more rectangles: a rail; a straight connector's gap; a two-armed node (corner, flexible,
+ * T, X) its incoming arm and one arm per branch, each reaching half a profile width past the
+ * hinge point so the corner is covered.
  */
 export function systemElements(system: LightSystem, catalog: Catalog): PlanRect[][] {
+  return systemElementTree(system, catalog).elements;
+}
+
+/** What an element is: rail i, or the connector node at the end of rail i. */
+export type ElementKind = { readonly kind: 'rail' | 'node'; readonly rail: number };
+
+export interface SystemElementTree {
+  readonly elements: PlanRect[][];
+  /** For each element, the elements it may touch (itself included). */
+  readonly near: Set<number>[];
+  readonly kinds: ElementKind[];
+}
+
+/**
+ * The elements (systemElements) and, for each, the elements that touch it by design: a rail and
+ * the nodes at its two ends, and everything within two such steps (a rail and the next rail
+ * through their connector, two branches of one node, two nodes at a short rail's ends). The
+ * self-overlap rule skips exactly these pairs; on a snake they are the elements less than three
+ * apart in chain order.
+ */
+export function systemElementTree(system: LightSystem, catalog: Catalog): SystemElementTree {
   const w = catalog.rail.width;
   const rails = railPlacements(system, catalog);
-  const out: PlanRect[][] = [];
+  const elements: PlanRect[][] = [];
+  const railElement: number[] = [];
+  const nodeElement = new Map<number, number>();
+  const links: number[][] = [];
+  const link = (a: number, b: number) => (links[a].push(b), links[b].push(a));
   rails.forEach((r, i) => {
-    out.push([segmentRect(r.start, r.end, w)]);
-    const joint = system.joints[i];
-    const next = rails[i + 1];
-    if (!joint || !next) return;
-    const con = findConnector(catalog, joint.connector);
+    railElement[i] = elements.length;
+    elements.push([segmentRect(r.start, r.end, w)]);
+    links.push([]);
+    const branches: number[] = [];
+    system.joints.forEach((j, k) => {
+      if (jointParent(j, k) === i && rails[k + 1]) branches.push(k);
+    });
+    if (branches.length === 0) return;
+    const con = findConnector(catalog, system.joints[branches[0]].connector);
+    const group: PlanRect[] = [];
     if (!twoArmed(con)) {
-      out.push([segmentRect(r.end, next.start, w)]);
+      for (const k of branches) group.push(segmentRect(r.end, rails[k + 1].start, w));
     } else {
-      const arm = con.arm;
-      const pivot = add(r.end, r.direction, arm);
-      out.push([segmentRect(r.end, add(pivot, r.direction, w / 2), w), segmentRect(add(pivot, next.direction, -w / 2), next.start, w)]);
+      const pivot = add(r.end, r.direction, con.arm);
+      group.push(segmentRect(r.end, add(pivot, r.direction, w / 2), w));
+      for (const k of branches) group.push(segmentRect(add(pivot, rails[k + 1].direction, -w / 2), rails[k + 1].start, w));
     }
+    nodeElement.set(i, elements.length);
+    elements.push(group);
+    links.push([]);
+    link(railElement[i], elements.length - 1);
   });
-  return out;
+  system.joints.forEach((j, k) => {
+    const node = nodeElement.get(jointParent(j, k));
+    if (node !== undefined && railElement[k + 1] !== undefined) link(node, railElement[k + 1]);
+  });
+  const near = links.map((ls, a) => {
+    const set = new Set<number>([a, ...ls]);
+    for (const b of ls) for (const c of links[b]) set.add(c);
+    return set;
+  });
+  const kinds = elements.map((_, e): ElementKind => {
+    const rail = railElement.indexOf(e);
+    if (rail >= 0) return { kind: 'rail', rail };
+    return { kind: 'node', rail: [...nodeElement].find(([, v]) => v === e)![0] };
+  });
+  return { elements, near, kinds };
 }
 
 export function rectCorners(r: PlanRect): PlanVec[] {

@@ -22,6 +22,8 @@ import { validate } from './validate';
 
 export const SCENE_FILE_FORMAT = 'luxbox-configuration';
 /**
+ * 8: a system's rails form a tree: a joint may name the rail it hangs on (`parent`, T and X
+ *    connectors), a feed may sit at a branch's free end (`{ end: i }`), docs/model.md "Trees of rails".
  * 7: modules may be switched off (`on`), carry a colour filter (`filter`) and an aim (`aim`); the
  *    configuration may hold light scenes (`lightScenes`), docs/model.md "Light scenes", "Aiming".
  * 6: systems may carry moved fixing points (`fixings`) and joints may use a flexible-angle connector
@@ -31,7 +33,7 @@ export const SCENE_FILE_FORMAT = 'luxbox-configuration';
  * 3: objects (furniture, imported models) and imported meshes (docs/model.md, "Objects").
  * 2: modules may carry a DMX patch (`dmx`, docs/live-control.md). Older files are migrated on reading.
  */
-export const SCENE_FILE_VERSION = 7;
+export const SCENE_FILE_VERSION = 8;
 /** Share strings longer than this are refused before decoding (browsers cap URLs near 64k). */
 export const MAX_SHARE_STRING = 60_000;
 
@@ -98,9 +100,10 @@ const configurationSchema = z.strictObject({
           ),
         }),
       ),
-      joints: z.array(z.strictObject({ connector: ref, turn: z.number() })),
-      // Version 4. Positions, drivers and loads are validate()'s rules (feed-position, unknown-driver, feed-overload).
-      feeds: z.array(z.strictObject({ id, at: z.union([z.literal('start'), z.literal('end'), z.strictObject({ joint: z.number() })]), driver: ref })),
+      // Version 8: `parent`, the rail whose end the joint's connector sits on; tree rules are validate()'s (joint-parent, node-*).
+      joints: z.array(z.strictObject({ connector: ref, turn: z.number(), parent: z.number().optional() })),
+      // Version 4 (`{ end: i }` version 8). Positions, drivers and loads are validate()'s rules (feed-position, unknown-driver, feed-overload).
+      feeds: z.array(z.strictObject({ id, at: z.union([z.literal('start'), z.literal('end'), z.strictObject({ joint: z.number() }), z.strictObject({ end: z.number() })]), driver: ref })),
       mounting: z.enum(MOUNTINGS),
       // Version 6: moved fixing points (chain coordinates); their rules are validate()'s (fixing-*).
       fixings: z.array(z.number()).optional(),
@@ -180,6 +183,7 @@ export const migrations: Record<number, (doc: Record<string, unknown>, catalog: 
     refuseV5Fields(doc, 1);
     refuseV6Fields(doc, 1);
     refuseV7Fields(doc, 1);
+    refuseV8Fields(doc, 1);
     return { ...doc, version: 2 };
   },
   // 2 → 3: version 3 added objects and imported meshes; a version 2 configuration has none.
@@ -192,6 +196,7 @@ export const migrations: Record<number, (doc: Record<string, unknown>, catalog: 
     refuseV5Fields(doc, 2);
     refuseV6Fields(doc, 2);
     refuseV7Fields(doc, 2);
+    refuseV8Fields(doc, 2);
     return { ...doc, version: 3 };
   },
   // 3 → 4: version 4 added power feeds and the mounting. An older system hung on suspensions and had
@@ -205,6 +210,7 @@ export const migrations: Record<number, (doc: Record<string, unknown>, catalog: 
     refuseV5Fields(doc, 3);
     refuseV6Fields(doc, 3);
     refuseV7Fields(doc, 3);
+    refuseV8Fields(doc, 3);
     const conf = c as Record<string, unknown>;
     let nextId = typeof conf.nextId === 'number' && Number.isInteger(conf.nextId) ? conf.nextId : null;
     const systems = (conf.systems as unknown[]).map((raw) => {
@@ -228,6 +234,7 @@ export const migrations: Record<number, (doc: Record<string, unknown>, catalog: 
     refuseV5Fields(doc, 4);
     refuseV6Fields(doc, 4);
     refuseV7Fields(doc, 4);
+    refuseV8Fields(doc, 4);
     return { ...doc, version: 5 };
   },
   // 5 → 6: version 6 added moved fixing points and flexible connectors; a version 5 system's
@@ -235,15 +242,39 @@ export const migrations: Record<number, (doc: Record<string, unknown>, catalog: 
   5(doc) {
     refuseV6Fields(doc, 5);
     refuseV7Fields(doc, 5);
+    refuseV8Fields(doc, 5);
     return { ...doc, version: 6 };
   },
   // 6 → 7: version 7 added on/off, filters and aims per module and light scenes; a version 6 module
   // is on, unfiltered and points straight down, and there are no scenes, so the content reads as is.
   6(doc) {
     refuseV7Fields(doc, 6);
+    refuseV8Fields(doc, 6);
     return { ...doc, version: 7 };
   },
+  // 7 → 8: version 8 made a system a tree of rails; a version 7 system is a snake, which is a tree
+  // whose every joint hangs on the rail before it (no `parent`) and whose feeds sit at the start,
+  // the end or a connector, so the content reads as is, exactly.
+  7(doc) {
+    refuseV8Fields(doc, 7);
+    return { ...doc, version: 8 };
+  },
 };
+
+/** Branches (a joint's `parent`) and feeds at a branch end came with version 8: an older file that has them was not written by luxbox. */
+function refuseV8Fields(doc: Record<string, unknown>, version: number): void {
+  const c = doc.configuration;
+  const list = (o: unknown, key: string): unknown[] => (typeof o === 'object' && o !== null && Array.isArray((o as Record<string, unknown>)[key]) ? ((o as Record<string, unknown>)[key] as unknown[]) : []);
+  list(c, 'systems').forEach((sys, i) => {
+    list(sys, 'joints').forEach((j, k) => {
+      if (typeof j === 'object' && j !== null && 'parent' in j) throw new SceneFileError(`configuration.systems[${i}].joints[${k}].parent: needs "version": 8 (this file says version ${version})`);
+    });
+    list(sys, 'feeds').forEach((f, k) => {
+      const at = typeof f === 'object' && f !== null ? (f as Record<string, unknown>).at : undefined;
+      if (typeof at === 'object' && at !== null && 'end' in at) throw new SceneFileError(`configuration.systems[${i}].feeds[${k}].at.end: needs "version": 8 (this file says version ${version})`);
+    });
+  });
+}
 
 /** On/off, filters, aims and light scenes came with version 7: an older file that has them was not written by luxbox. */
 function refuseV7Fields(doc: Record<string, unknown>, version: number): void {

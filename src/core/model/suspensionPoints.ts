@@ -3,12 +3,14 @@
  * the catalog's rules, never stored: suspensions (`suspension.maxSpacing`, `maxOverhang`)
  * when the system hangs, clips (`surfaceMount.spacing`, `maxOverhang`) when it is on the
  * ceiling. Deterministic rule, per rail from its start support a to its end support b:
- *  - every connector is a support (at its point: the gap's centre or the corner point);
- *  - a free chain end (start of the first rail, end of the last) has its support
+ *  - every connector node is a support (at its point: the gap's centre or the hinge point), one
+ *    point however many branches it holds;
+ *  - a free chain end (start of the first rail, end of any rail without a node: the last rail's
+ *    and every branch's) has its support
  *    e = min(maxOverhang, L/4) inside the rail (L that rail's length): the overhang never
  *    exceeds the rule, and a short rail still gets two points at its quarter points;
  *  - between a and b, k = ⌈(b − a)/spacing⌉ − 1 interior points evenly, so no gap exceeds
- *    the spacing and the gaps are equal.
+ *    the spacing and the gaps are equal (b − a along the tree: a branch starts at its node).
  * So a system is always fixable by construction (no action can break it); the count goes to
  * the bill of materials and the ceiling-fixing count of installationNeeds. Points the user
  * moved (`system.fixings`, moveFixingPoint) replace the derived ones; fixingRules.ts states
@@ -17,6 +19,7 @@
 import type { Catalog } from './catalogSchema';
 import type { LightSystem, Room } from './configuration';
 import { chainCoordinates, chainPoint } from './chainCoordinates';
+import { nodeJoints } from './railTree';
 import type { PlanVec } from './geometry';
 
 export interface MountingRule {
@@ -56,17 +59,20 @@ export function suspensionCoordinates(system: LightSystem, catalog: Catalog): { 
 export function derivedSuspensionCoordinates(system: LightSystem, catalog: Catalog): { s: number; joint: number | null }[] {
   const rule = mountingRule(system, catalog);
   const chain = chainCoordinates(system, catalog);
-  const last = system.rails.length - 1;
   const out: { s: number; joint: number | null }[] = [];
   system.rails.forEach((rail, i) => {
     const inset = Math.min(rule.maxOverhang, rail.length / 4);
-    const a = i === 0 ? chain.railStart[0] + inset : chain.jointAt[i - 1];
-    const b = i === last ? chain.railStart[i] + rail.length - inset : chain.jointAt[i];
+    const node = nodeJoints(system, i)[0];
+    const p = chain.parent[i];
+    // In chain coordinates; a branch that is not its node's first has its node elsewhere in s, so
+    // its start support is placed by the tree distance (nodeOut) before its start.
+    const a = i === 0 ? chain.railStart[0] + inset : p === i - 1 ? chain.nodeAt[p] : chain.railStart[i] - chain.nodeOut[p];
+    const b = node === undefined ? chain.railStart[i] + rail.length - inset : chain.nodeAt[i];
     if (i === 0) out.push({ s: a, joint: null });
     // 1e-9: a gap of exactly the spacing (float noise aside) needs no extra point.
     const k = Math.max(0, Math.ceil((b - a) / rule.spacing - 1e-9) - 1);
     for (let j = 1; j <= k; j++) out.push({ s: a + ((b - a) * j) / (k + 1), joint: null });
-    out.push({ s: b, joint: i === last ? null : i });
+    out.push({ s: b, joint: node ?? null });
   });
   return out;
 }

@@ -17,7 +17,8 @@ import { firstPatchOverlap, formatPatchRange, patchRangeProblem } from './dmxPat
 import { allObjectProblems } from './objectProblems';
 import { lightSceneProblems } from './lightScenes';
 import { reflectanceProblem } from './reflectance';
-import { rectCorners, rectsOverlap, systemElements, railModuleOffsets, type PlanRect } from './geometry';
+import { rectCorners, rectsOverlap, systemElementTree, railModuleOffsets, type PlanRect, type SystemElementTree } from './geometry';
+import { isLeafRail, jointParent, treeProblem } from './railTree';
 
 export interface Problem {
   /** Stable machine-readable code, e.g. 'outside-room'. */
@@ -67,7 +68,8 @@ export function validate(config: Configuration, catalog: Catalog, options: Valid
     if (bad) return [...problems, ...bad];
   }
   // Geometry only for systems whose own rules hold (it needs sound references and numbers).
-  const elements = config.systems.map((s, i) => (own[i].length === 0 ? systemElements(s, catalog) : null));
+  const trees: (SystemElementTree | null)[] = config.systems.map((s, i) => (own[i].length === 0 ? systemElementTree(s, catalog) : null));
+  const elements = trees.map((t) => t?.elements ?? null);
   const outside = config.systems.map((s, i) => {
     const el = elements[i];
     return el !== null && outsideRoom(el, config.room.width, config.room.depth) ? outsideProblem(s, i, config.room) : null;
@@ -77,7 +79,7 @@ export function validate(config: Configuration, catalog: Catalog, options: Valid
     if (out) return [...problems, out];
   }
   // One grid over every element of every sound system: self-crossings (same
-  // system, chain elements more than one apart) and clashes between systems.
+  // system, elements that do not touch by design: SystemElementTree.near) and clashes between systems.
   const rects: PlanRect[] = [];
   const owner: number[] = [];
   const chainIndex: number[] = [];
@@ -87,7 +89,7 @@ export function validate(config: Configuration, catalog: Catalog, options: Valid
   forEachOverlap(rects, stats, (p, q) => {
     const [i, j] = [owner[p], owner[q]];
     if (i === j) {
-      if (Math.abs(chainIndex[p] - chainIndex[q]) < 3 || selfCrossing.has(i)) return 'skip';
+      if (trees[i]!.near[chainIndex[p]].has(chainIndex[q]) || selfCrossing.has(i)) return 'skip';
       selfCrossing.add(i);
     } else {
       if (clashes[i].has(j)) return 'skip';
@@ -98,7 +100,7 @@ export function validate(config: Configuration, catalog: Catalog, options: Valid
   }, (p, q) => {
     // Cheap pre-filter: pairs whose answer is already known need no exact test.
     const [i, j] = [owner[p], owner[q]];
-    return i === j ? Math.abs(chainIndex[p] - chainIndex[q]) >= 3 && !selfCrossing.has(i) : !clashes[i].has(j);
+    return i === j ? !trees[i]!.near[chainIndex[p]].has(chainIndex[q]) && !selfCrossing.has(i) : !clashes[i].has(j);
   });
   config.systems.forEach((s, i) => {
     if (own[i].length > 0) return problems.push(...own[i]);
@@ -261,20 +263,21 @@ export function systemProblems(config: Configuration, index: number, catalog: Ca
   const at = `systems[${index}]`;
   const out = ownProblems(s, at, config.room.height, catalog);
   if (out.length > 0) return out; // geometry needs sound references and numbers
-  const elements = systemElements(s, catalog);
+  const tree = systemElementTree(s, catalog);
+  const elements = tree.elements;
   if (outsideRoom(elements, config.room.width, config.room.depth)) out.push(outsideProblem(s, index, config.room));
   const stats = { pairTests: 0 };
-  // Neighbours in the chain touch by design; anything further apart must not overlap.
+  // Neighbours in the tree touch by design; anything further apart must not overlap.
   const rects = elements.flat();
   const chainIndex = elements.flatMap((group, a) => group.map(() => a));
   let crosses = false;
-  forEachOverlap(rects, stats, () => ((crosses = true), 'stop'), (p, q) => Math.abs(chainIndex[p] - chainIndex[q]) >= 3);
+  forEachOverlap(rects, stats, () => ((crosses = true), 'stop'), (p, q) => !tree.near[chainIndex[p]].has(chainIndex[q]));
   if (crosses) out.push({ code: 'self-overlap', path: at, message: `system ${s.id} runs into itself` });
   const mine = rects.map(boxOf);
   const box = mine.reduce((u, b) => ({ minX: Math.min(u.minX, b.minX), minZ: Math.min(u.minZ, b.minZ), maxX: Math.max(u.maxX, b.maxX), maxZ: Math.max(u.maxZ, b.maxZ) }), { minX: Infinity, minZ: Infinity, maxX: -Infinity, maxZ: -Infinity });
   config.systems.forEach((other, j) => {
     if (j === index || ownProblems(other, '', config.room.height, catalog).length > 0) return;
-    const theirs = systemElements(other, catalog).flat().filter((rb) => {
+    const theirs = systemElementTree(other, catalog).elements.flat().filter((rb) => {
       const b = boxOf(rb);
       return b.minX < box.maxX && box.minX < b.maxX && b.minZ < box.maxZ && box.minZ < b.maxZ;
     });
@@ -312,6 +315,11 @@ function ownProblems(s: LightSystem, at: string, roomHeight: number, catalog: Ca
     if (!con) p('unknown-connector', `.joints[${i}].connector`, `unknown connector '${j.connector}'`);
     else if (!allowedTurn(con, j.turn)) p('bad-turn', `.joints[${i}].turn`, con.flex ? `connector '${con.id}' turns by a multiple of ${con.flex.step}° within ±${con.flex.maxAngle}°, not ${j.turn}°` : `connector '${con.id}' turns by ±${con.angle}°, not ${j.turn}°`);
   });
+  if (out.length === 0) {
+    // The tree (railTree.ts): parents before children, one connector per node, its ports.
+    const t = treeProblem(s, catalog);
+    if (t) p(t.code, `.joints[${t.joint}].${t.field}`, t.message);
+  }
   const rail = catalog.rail;
   s.rails.forEach((r, k) => {
     const rp = `.rails[${k}]`;
@@ -366,11 +374,15 @@ function feedProblems(s: LightSystem, catalog: Catalog, p: (code: string, path: 
     const fp = `.feeds[${k}]`;
     if (!catalog.drivers.some((d) => d.id === f.driver)) p('unknown-driver', `${fp}.driver`, `unknown driver '${f.driver}'`);
     const at = f.at;
-    if (typeof at === 'object') {
+    if (typeof at === 'object' && 'joint' in at) {
       if (!catalog.feed.positions.includes('joints')) p('feed-position', `${fp}.at`, `${catalog.name} feeds only at the chain ends, not at connectors`);
       else if (!Number.isInteger(at.joint) || at.joint < 0 || at.joint >= s.joints.length) p('feed-position', `${fp}.at`, `${feedLabel(k)} is at connector ${at.joint + 1}, but the chain has ${s.joints.length} connector${s.joints.length === 1 ? '' : 's'}`);
-    } else if (at !== 'start' && at !== 'end') p('feed-position', `${fp}.at`, `a feed sits at 'start', 'end' or { joint: k } (got ${String(at)})`);
-    const key = typeof at === 'object' ? `joint:${at.joint}` : String(at);
+    } else if (typeof at === 'object' && 'end' in at) {
+      if (!Number.isInteger(at.end) || at.end < 0 || at.end >= s.rails.length) p('feed-position', `${fp}.at`, `${feedLabel(k)} is at the end of rail ${at.end + 1}, but the system has ${s.rails.length} rail${s.rails.length === 1 ? '' : 's'}`);
+      else if (!isLeafRail(s, at.end)) p('feed-position', `${fp}.at`, `${feedLabel(k)} is at the end of rail ${at.end + 1}, but a connector sits there (feed at the connector instead)`);
+    } else if (at !== 'start' && at !== 'end') p('feed-position', `${fp}.at`, `a feed sits at 'start', 'end', { joint: k } or { end: i } (got ${String(at)})`);
+    // One key per physical position: the joints of one node share it, and 'end' is the last rail's end.
+    const key = typeof at !== 'object' ? (at === 'end' ? `end:${s.rails.length - 1}` : String(at)) : 'joint' in at ? `node:${s.joints[at.joint] ? jointParent(s.joints[at.joint], at.joint) : `?${at.joint}`}` : `end:${at.end}`;
     const twin = first.get(key);
     if (twin === undefined) first.set(key, k);
     else p('feed-duplicate', `${fp}.at`, `${feedLabel(twin)} and ${feedLabel(k)} both sit at ${describeFeedAt(f.at)}`);

@@ -12,8 +12,8 @@ import { describeFeedAt, feedLabel, feedLoads, formatWatts } from '../feedLoads'
 import type { Problem } from '../validate';
 import { findFeed, replaceSystem, systemIndex, takeId } from './lookup';
 
-/** 'start', 'end' or { joint: k } (connector k, between rails k and k+1). */
-export const feedAtParams = z.union([z.literal('start'), z.literal('end'), z.strictObject({ joint: z.number().int().nonnegative() })]);
+/** 'start', 'end', { joint: k } (the connector joints[k] goes through) or { end: i } (rail i's free end, a branch). */
+export const feedAtParams = z.union([z.literal('start'), z.literal('end'), z.strictObject({ joint: z.number().int().nonnegative() }), z.strictObject({ end: z.number().int().nonnegative() })]);
 
 function positionReason(problem: Problem, at: FeedAt): string {
   if (problem.code === 'feed-duplicate') return `there is already a feed at ${describeFeedAt(at)}`;
@@ -91,6 +91,10 @@ export const setFeedDriver: ActionDefinition<z.infer<typeof driverParams>> = {
     const ref = findFeed(state, p.feedId);
     const load = feedLoads(ref.system, catalog)[ref.feedIndex].load;
     const driver = findDriver(catalog, p.driver);
-    return `the ${formatWatts(driver.capacity)} W ${driver.name} cannot carry the ${formatWatts(load)} W on ${feedLabel(ref.feedIndex)}; choose a larger driver or add a feed`;
+    return {
+      reason: `the ${formatWatts(driver.capacity)} W ${driver.name} cannot carry the ${formatWatts(load)} W on ${feedLabel(ref.feedIndex)}; choose a larger driver or add a feed`,
+      code: 'driverTooSmall',
+      params: { capacity: Number(formatWatts(driver.capacity)), driver: driver.name, load: Number(formatWatts(load)), n: ref.feedIndex + 1 },
+    };
   },
 };

@@ -8,11 +8,13 @@
 import { z } from 'zod';
 import type { ActionDefinition } from '../action';
 import { DISTRIBUTIONS, findConnector, type Catalog } from '../catalogSchema';
-import type { Configuration, Feed, LightSystem, Rail } from '../configuration';
+import type { Rail } from '../configuration';
 import { plannedFeeds } from '../feedLoads';
 import { keepFixingsIfValid, withoutFixings } from '../fixingRules';
 import { withoutOffsets } from '../freePositions';
-import { railModuleOffsets, railPlacements } from '../geometry';
+import { railModuleOffsets } from '../geometry';
+import { isLeafRail } from '../railTree';
+import { cutRail, piecesWithout } from '../treeEdits';
 import { FIT_CODES } from './moduleActions';
 import { findRail, replaceSystem, systemIndex, takeId, updateRail } from './lookup';
 
@@ -75,7 +77,7 @@ const addRailParams = z.object({
   length: z.number().optional(),
 });
 
-/** Appends an empty rail to the end of the snake through a connector. */
+/** Appends an empty rail at the end of the last rail through a connector (addBranch grows any other end or node). */
 export const addRail: ActionDefinition<z.infer<typeof addRailParams>> = {
   name: 'addRail',
   label: 'Add rail',
@@ -85,8 +87,11 @@ export const addRail: ActionDefinition<z.infer<typeof addRailParams>> = {
     const [id, next] = takeId(state, 'r');
     const s = next.systems[si];
     const rail: Rail = { id, length: snapRailLength(p.length ?? catalog.rail.defaultLength, catalog), distribution: 'inside-centred', modules: [] };
+    // A feed at the last rail's free end written { end: i } moves on to the new end, as 'end' does.
+    const last = s.rails.length - 1;
+    const feeds = s.feeds.map((f) => (typeof f.at === 'object' && 'end' in f.at && f.at.end === last ? { ...f, at: 'end' as const } : f));
     // Moved fixing points stay only when they keep the rules on the longer chain (fixingRules.ts).
-    return replaceSystem(next, si, keepFixingsIfValid({ ...s, rails: [...s.rails, rail], joints: [...s.joints, { connector: p.connector, turn: p.turn }] }, catalog));
+    return replaceSystem(next, si, keepFixingsIfValid({ ...s, rails: [...s.rails, rail], joints: [...s.joints, { connector: p.connector, turn: p.turn }], feeds }, catalog));
   },
   explain(problem, _state, p, catalog) {
     if (problem.code !== 'bad-turn') return problem.message;
@@ -99,11 +104,13 @@ export const addRail: ActionDefinition<z.infer<typeof addRailParams>> = {
 const railIdParams = z.object({ railId: z.string() });
 
 /**
- * Removes any rail of a chain with its modules (docs/model.md, "Removing a rail"); a system keeps
- * at least one rail. The last rail: the chain ends one connector earlier. The first rail: the
- * chain starts at the next rail (the system's anchor and heading move there). A middle rail: the
- * chain splits into two systems, each keeping its side's rails, joints, modules and feeds (see
- * splitChain); refused when a part would be invalid.
+ * Removes any rail of a system with its modules (docs/model.md, "Removing a rail"); a system keeps
+ * at least one rail. The tree falls into the pieces that remain (treeEdits.ts cutRail): the rest
+ * of the tree keeps the system (a removed first rail: the first branch's piece keeps it, its
+ * anchor and heading moving there), each branch below the removed rail becomes a new system.
+ * Feeds stay where they are; a piece left without one gets the feeds a new system of its shape
+ * gets (plannedFeeds). Refused when a piece would be invalid (feeds that would meet, a driver
+ * that cannot carry its part).
  */
 export const removeRail: ActionDefinition<z.infer<typeof railIdParams>> = {
   name: 'removeRail',
@@ -114,72 +121,37 @@ export const removeRail: ActionDefinition<z.infer<typeof railIdParams>> = {
     const ref = findRail(state, p.railId);
     const { systemIndex: si, railIndex } = ref;
     const system = withoutFixings(ref.system);
-    const n = system.rails.length;
-    if (n > 1 && railIndex === n - 1) {
-      // The connector before the removed rail becomes the chain end: a feed there stays where it is, now at 'end'.
-      const feeds = system.feeds.map((f) => (typeof f.at === 'object' && f.at.joint === railIndex - 1 ? { ...f, at: 'end' as const } : f));
-      return replaceSystem(state, si, { ...system, rails: system.rails.slice(0, -1), joints: system.joints.slice(0, railIndex - 1), feeds });
+    if (system.rails.length === 1) return replaceSystem(state, si, { ...system, rails: [], joints: [] });
+    const count = piecesWithout(system, railIndex).length;
+    let next = state;
+    const newIds: string[] = [];
+    for (let i = 1; i < count; i++) {
+      let id: string;
+      [id, next] = takeId(next, 's');
+      newIds.push(id);
     }
-    if (n > 1 && railIndex === 0) {
-      // The first connector becomes the chain start: a feed there stays where it is, now at 'start'; the others shift down one connector.
-      const placement = railPlacements(system, catalog)[1];
-      const feeds = system.feeds.map((f) => (typeof f.at === 'object' ? { ...f, at: f.at.joint === 0 ? ('start' as const) : { joint: f.at.joint - 1 } } : f));
-      return replaceSystem(state, si, { ...system, x: placement.start[0], z: placement.start[1], rotation: placement.heading, rails: system.rails.slice(1), joints: system.joints.slice(1), feeds });
-    }
-    if (n === 1) return replaceSystem(state, si, { ...system, rails: [], joints: [] });
-    return splitChain(state, si, railIndex, catalog);
+    const parts = cutRail(system, catalog, railIndex, newIds).map((part) => {
+      if (part.feeds.length > 0) return part;
+      const feeds = plannedFeeds(part, catalog).map((f) => {
+        let id: string;
+        [id, next] = takeId(next, 'f');
+        return { id, ...f };
+      });
+      return { ...part, feeds };
+    });
+    return { ...next, systems: [...next.systems.slice(0, si), ...parts, ...next.systems.slice(si + 1)] };
   },
   explain(problem, state, p) {
     const { system, railIndex } = findRail(state, p.railId);
     if (problem.code === 'feed-duplicate') {
       return railIndex === 0
         ? 'a feed at the chain start and one at the first connector would meet; remove one of them first'
-        : 'a feed at the last connector and one at the chain end would meet; remove one of them first';
+        : isLeafRail(system, railIndex)
+          ? 'a feed at the last connector and one at the chain end would meet; remove one of them first'
+          : `two feeds would meet where the chain splits: ${problem.message}; remove one of them first`;
     }
     if (problem.code === 'no-rails') return 'a system keeps at least one rail; delete the system instead';
-    if (railIndex > 0 && railIndex < system.rails.length - 1 && problem.code !== 'feed-overload') return `splitting the chain here would leave an invalid part: ${problem.message}`;
+    if (railIndex > 0 && !isLeafRail(system, railIndex) && problem.code !== 'feed-overload') return `splitting the chain here would leave an invalid part: ${problem.message}`;
     return problem.message;
   },
 };
-
-/**
- * Removes middle rail k of system si: rails 0…k−1 stay in the system (joints 0…k−2), rails k+1…
- * become a new system (joints k+1…) anchored at rail k+1's start with its heading, same
- * suspension and mounting. Feeds follow their position: connector k−1 becomes the first part's
- * end, connector k the second part's start, the chain end stays the second part's end, connectors
- * past k shift down by k+1. A part left without a feed gets the feeds a new system of its shape
- * gets (plannedFeeds: the default driver at its start, or a driver that carries its load);
- * when no driver can, validate() refuses the split with the overload.
- */
-function splitChain(state: Configuration, si: number, k: number, catalog: Catalog): Configuration {
-  const system = withoutFixings(state.systems[si]);
-  const placement = railPlacements(system, catalog)[k + 1];
-  const firstFeeds: Feed[] = [];
-  const secondFeeds: Feed[] = [];
-  for (const f of system.feeds) {
-    if (f.at === 'start') firstFeeds.push(f);
-    else if (f.at === 'end') secondFeeds.push(f);
-    else if (f.at.joint < k - 1) firstFeeds.push(f);
-    else if (f.at.joint === k - 1) firstFeeds.push({ ...f, at: 'end' });
-    else if (f.at.joint === k) secondFeeds.push({ ...f, at: 'start' });
-    else secondFeeds.push({ ...f, at: { joint: f.at.joint - k - 1 } });
-  }
-  const [newId, withSystemId] = takeId(state, 's');
-  let next = withSystemId;
-  const first: LightSystem = { ...system, rails: system.rails.slice(0, k), joints: system.joints.slice(0, k - 1), feeds: firstFeeds };
-  const { presetId: _preset, ...rest } = system;
-  const second: LightSystem = { ...rest, id: newId, x: placement.start[0], z: placement.start[1], rotation: placement.heading, rails: system.rails.slice(k + 1), joints: system.joints.slice(k + 1), feeds: secondFeeds };
-  const withFeeds = (part: LightSystem): LightSystem => {
-    if (part.feeds.length > 0) return part;
-    const planned = plannedFeeds(part, catalog);
-    const feeds = planned.map((f) => {
-      let id: string;
-      [id, next] = takeId(next, 'f');
-      return { id, ...f };
-    });
-    return { ...part, feeds };
-  };
-  const a = withFeeds(first);
-  const b = withFeeds(second);
-  return { ...next, systems: [...next.systems.slice(0, si), a, b, ...next.systems.slice(si + 1)] };
-}
