@@ -30,6 +30,15 @@ export function catalogFilters(catalog: Catalog): { accessory: FilterAccessory; 
   });
 }
 
+/**
+ * The picker's search: every word of the query (case-insensitive) found in the filter's number,
+ * name or maker, so '204', 'orange', 'lee blue' and 'C.T. Blue' all find what a user means.
+ */
+export function filterMatches(filter: Pick<ColourFilter, 'maker' | 'number' | 'name'>, query: string): boolean {
+  const text = `${filter.number} ${filter.name} ${filter.maker}`.toLowerCase();
+  return query.toLowerCase().split(/\s+/).filter(Boolean).every((word) => text.includes(word));
+}
+
 export interface FilterProblem {
   readonly code: 'unknown-filter' | 'no-filter-holder';
   readonly message: string;

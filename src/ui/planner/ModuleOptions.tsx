@@ -8,6 +8,7 @@ import { GatedButton } from './GatedButton';
 import { modulePhotometryPath } from './moduleFootprint';
 import { OptionChips } from './OptionChips';
 import { OptionsSection } from './OptionsSection';
+import { FilterPicker } from './FilterPicker';
 
 /** Dimming levels offered as touch-sized choices (the 3D view relights instantly on a change). */
 export const DIMMING_STEPS = [0.25, 0.5, 0.75, 1] as const;
@@ -60,6 +61,7 @@ export function ModuleOptions({ module, catalog, gate, onClose, footprints }: Mo
           return <GatedButton key={d} gate={gate} action="setModuleDimming" params={{ moduleId, dimming: d }} label={`${percent} %`} current={Math.abs(module.dimming - d) < 1e-9} testId={`dimming-${percent}`} />;
         })}
       </OptionChips>
+      {type?.filterHolder && <FilterPicker module={module} catalog={catalog} gate={gate} />}
       <GatedButton gate={gate} action="removeModule" params={{ moduleId }} label="Remove module" />
     </OptionsSection>
   );

@@ -6,7 +6,7 @@ import { chainCoordinates, chainPoint, feedCoordinate } from '../../core/model/c
 import { moduleHeight, suspensionPoints } from '../../core/model/suspensionPoints';
 import { moduleFootprint, modulePhotometryPath } from './moduleFootprint';
 import type { FootprintSource } from './footprintSource';
-import { cctTint } from './cctTint';
+import { moduleTint } from './moduleTint';
 import { floorTint } from './finishColour';
 import { defaultSurfaceFinishes } from '../../core/catalog/surfaceFinishes';
 import { gridStep } from './detailLevel';
@@ -70,7 +70,7 @@ function SystemShape({ system, catalog, scale, selected, selectedRailId, selecte
             key={m.moduleId}
             points={points(rect)}
             data-module-id={m.moduleId}
-            fill={module ? cctTint(module.cct) : '#fff'}
+            fill={module ? moduleTint(module) : '#fff'}
             stroke={m.moduleId === selectedModuleId ? '#c0392b' : '#1d2330'}
             strokeWidth={m.moduleId === selectedModuleId ? 3 : 1}
             vectorEffect="non-scaling-stroke"
@@ -210,7 +210,7 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
                   const f = moduleFootprint(m, module, catalog, h, path ? footprints.get(path) : null, config.room);
                   if (!f) return null;
                   const paint = {
-                    fill: cctTint(module.cct),
+                    fill: moduleTint(module),
                     fillOpacity: 0.2,
                     stroke: '#c98a1c',
                     strokeOpacity: 0.7,

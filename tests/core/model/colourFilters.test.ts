@@ -67,12 +67,12 @@ describe('colour filters on modules', () => {
     const lum = toLightingScene(s, catalog).luminaires;
     expect(lum[0].color).toEqual(cctToLinearRgb(3000));
     const tau = moduleLightColour({ cct: 3000, filter: 'lee-209' }).transmission;
-    expect(luminance(lum[1].color)).toBeCloseTo(tau, 12);
+    expect(luminance(lum[1].color!)).toBeCloseTo(tau, 12);
     // LEE states 50.0 % for 0.3ND under its tungsten source (dataset src_a Y); measured at 3000 K: 0.4990.
     expect(Math.abs(tau - findColourFilter('lee-209').stated.sourceA!.Y / 100)).toBeLessThan(0.007);
     // A deep colour: LEE 106 Primary Red passes ≈ 13 % and the light is red.
     s = run(s, 'setModuleFilter', { moduleId: ids[2], filter: 'lee-106' });
-    const red = toLightingScene(s, catalog).luminaires[2].color;
+    const red = toLightingScene(s, catalog).luminaires[2].color!;
     expect(red[0]).toBeGreaterThan(10 * red[1]);
     expect(luminance(red)).toBeCloseTo(moduleLightColour({ cct: 3000, filter: 'lee-106' }).transmission, 12);
   });

@@ -1,6 +1,8 @@
 // English: the source of every key. One line per area; de, fr and it register the same areas.
 import common from './common';
+import filters from './filters';
 
 export default {
   common,
+  filters,
 };

@@ -1,0 +1,21 @@
+import type { AreaMessages } from '../../messageTypes';
+import type en from '../en/filters';
+
+export default {
+  title: 'Filtro colore',
+  none: 'Nessun filtro',
+  search: 'Cerca filtri per nome o numero',
+  searchPlaceholder: 'Nome o numero',
+  noMatch: 'Nessun filtro corrisponde a «{query}»',
+  swatch: 'Colore della luce attraverso il filtro',
+  unfiltered: 'Senza filtro, {cct} K',
+  chromaticity: 'CIE x {x}, y {y}',
+  transmission: 'Trasmissione {percent}',
+  white: 'Temperatura di colore {cct} K, Duv {duv}',
+  notWhite: 'Luce colorata: nessuna temperatura di colore',
+  choose: 'Filtro {name}: x {x}, y {y}, trasmissione {percent}',
+  kind_cto: 'Riscaldante (CTO)',
+  kind_ctb: 'Raffreddante (CTB)',
+  kind_nd: 'Densità neutra',
+  kind_colour: 'Colori',
+} satisfies AreaMessages<typeof en>;
