@@ -1,5 +1,6 @@
 import { falseColorGlsl, type FalseColorScaleFacts } from './falseColor.glsl';
 import { toneMapGlsl } from './toneMap.glsl';
+import { spotPreviewGlsl, type CandelaGridFacts } from './spotPreview.glsl';
 
 /** A room surface's vertex shader (three.js GLSL3 material): the light map's uv and the world position (for the view angle). */
 export const roomSurfaceVertex = /* glsl */ `
@@ -19,9 +20,10 @@ void main() {
  * around the point (four bilinear taps one texel off diagonally): the fill
  * keeps every texel's value, the lines do not wiggle with the noise of the
  * indirect light (falseColor.glsl.ts). `scale` is the false-colour scale's
- * facts (falseColorScale.ts), passed on to the false-colour chunk.
+ * facts (falseColorScale.ts), passed on to the false-colour chunk. With `preview` (the candela
+ * grid's size), one aimed lamp's direct light is added per fragment (spotPreview.glsl.ts, docs/aiming.md).
  */
-export const roomSurfaceFragment = (scale: FalseColorScaleFacts): string => /* glsl */ `
+export const roomSurfaceFragment = (scale: FalseColorScaleFacts, preview?: CandelaGridFacts): string => /* glsl */ `
 precision highp float;
 in vec2 vUv;
 in vec3 vWorld;
@@ -33,13 +35,14 @@ uniform int uMode;
 out vec4 fragColor;
 ${toneMapGlsl}
 ${falseColorGlsl(scale)}
+${preview ? spotPreviewGlsl(preview) : ''}
 void main() {
-  vec3 E = max(texture(uIlluminance, vUv).rgb, 0.0);
+  vec3 E = max(texture(uIlluminance, vUv).rgb, 0.0);${preview ? '\n  E += spotPreviewE(vWorld, uNormal);' : ''}
   if (uMode == 1) {
     const vec3 Y = vec3(0.2126, 0.7152, 0.0722);
     vec2 t = 1.0 / vec2(textureSize(uIlluminance, 0));
     vec3 Es = texture(uIlluminance, vUv + vec2(t.x, t.y)).rgb + texture(uIlluminance, vUv + vec2(-t.x, t.y)).rgb
-            + texture(uIlluminance, vUv + vec2(t.x, -t.y)).rgb + texture(uIlluminance, vUv - t).rgb;
+            + texture(uIlluminance, vUv + vec2(t.x, -t.y)).rgb + texture(uIlluminance, vUv - t).rgb;${preview ? '\n    Es += 4.0 * spotPreviewE(vWorld, uNormal);' : ''}
     float facing = abs(dot(uNormal, normalize(cameraPosition - vWorld)));
     fragColor = vec4(luxFalseColor(dot(E, Y), max(dot(Es, Y), 0.0) * 0.25, facing), 1.0);
   } else {

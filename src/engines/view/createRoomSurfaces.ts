@@ -5,6 +5,7 @@ import type { SurfaceLayout } from '../bake/surfaceLayout';
 import type { LitMaps } from '../relight/relightMaps';
 import { MAX_LEVELS, shaderLevels, TURBO_B, TURBO_G, TURBO_R } from './falseColorScale';
 import { surfaceQuad } from './surfaceQuad';
+import { CANDELA_C_SAMPLES, CANDELA_GAMMA_SAMPLES, createSpotPreviewUniforms, type SpotPreviewUniforms } from './spotPreview';
 
 export type ViewMode = 'light' | 'lux';
 
@@ -16,7 +17,7 @@ export interface SharedDisplayUniforms {
   uLevelCount: { value: number };
 }
 
-const fragmentShader = roomSurfaceFragment({ maxLevels: MAX_LEVELS, turbo: [TURBO_R, TURBO_G, TURBO_B] });
+const fragmentShader = roomSurfaceFragment({ maxLevels: MAX_LEVELS, turbo: [TURBO_R, TURBO_G, TURBO_B] }, { cSamples: CANDELA_C_SAMPLES, gammaSamples: CANDELA_GAMMA_SAMPLES });
 
 /** The six room surfaces showing the relit light maps, and the display settings all six share (exposure, mode, lux levels). */
 export interface RoomSurfaces {
@@ -26,6 +27,8 @@ export interface RoomSurfaces {
   setMode(mode: ViewMode, levels?: readonly number[]): void;
   /** The exposure, mode and level uniforms every surface shares (the objects' material shares them too). */
   readonly display: SharedDisplayUniforms;
+  /** The aiming preview's lamp (spotPreview.ts), shared by all six surfaces; off unless a head is being dragged. */
+  readonly preview: SpotPreviewUniforms;
   dispose(): void;
 }
 
@@ -55,6 +58,7 @@ export function createRoomSurfaces(scene: THREE.Scene, renderer: THREE.WebGLRend
   const levelCount = { value: 0 };
   const exposure = { value: 1 };
   const mode = { value: 0 };
+  const preview = createSpotPreviewUniforms();
 
   const release = (s: Surface) => {
     s.mesh.geometry.dispose();
@@ -82,6 +86,7 @@ export function createRoomSurfaces(scene: THREE.Scene, renderer: THREE.WebGLRend
         uMode: mode,
         uLevels: levelUniform,
         uLevelCount: levelCount,
+        ...preview,
       },
       side: THREE.FrontSide,
     });
@@ -95,6 +100,7 @@ export function createRoomSurfaces(scene: THREE.Scene, renderer: THREE.WebGLRend
 
   return {
     display: { uExposure: exposure, uMode: mode, uLevels: levelUniform, uLevelCount: levelCount },
+    preview,
     setMaps(lit, reflectance) {
       for (const name of SURFACE_NAMES) {
         const layout = lit.layouts[name];

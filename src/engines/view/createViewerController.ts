@@ -14,6 +14,9 @@ import { createRoomView, type PickTarget, type RoomView, type ViewMode } from '.
 import { watchContextLoss } from './watchContextLoss';
 import type { PreparedObjects } from '../bake/objects/preparedObjects';
 import { watchTaps } from './watchTaps';
+import { createSpotlight, withoutModule, type SpotlightTarget } from './createSpotlight';
+import type { ModuleAim } from '../../core/model/configuration';
+import type { Vec3 } from '../../core/model/lightingScene';
 
 export interface ViewerEvents {
   /** Bake progress and counters changed. */
@@ -25,6 +28,10 @@ export interface ViewerEvents {
   onError(message: string): void;
   /** A tap or click picked an object or a module (null: nothing, or only the room). */
   onPick?(target: PickTarget | null): void;
+  /** A drag in the spotlight view ended on a new aim (docs/aiming.md): the host dispatches setAim. */
+  onAim?(moduleId: string, aim: ModuleAim): void;
+  /** In aim-at mode, a tap hit this world point of the room or an object: the host dispatches aimAt. */
+  onAimAt?(point: Vec3): void;
 }
 
 /**
@@ -50,7 +57,19 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
   /** Live control's levels over the scene's own dimming (transient: never in the configuration), or null. */
   let live: ReadonlyMap<string, LiveLevel> | null = null;
   /** The service lights the scene with the live overlay, if any (a relight: only dimming and colour change). */
-  const applyOverlay = () => service.setOverlay(live ? (s: BakeScene) => applyLiveLevels(s, ids, live!) : null);
+  /** The module the spotlight view's preview lights from the shader while it is dragged (out of the relit maps), or null. */
+  let dimmed: string | null = null;
+  const applyOverlay = () =>
+    service.setOverlay(
+      live || dimmed
+        ? (s: BakeScene) => {
+            const levels = live ? applyLiveLevels(s, ids, live) : s;
+            return dimmed ? withoutModule(levels, ids, dimmed) : levels;
+          }
+        : null,
+    );
+  /** Aim-at mode: the next tap aims the selected module at the point instead of picking. */
+  let aimAt = false;
   let fixtures: Fixtures | null = null;
   /** The engine version on screen; -1 forces the next slice to show the maps. */
   let shownVersion = -1;
@@ -70,6 +89,7 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
       view.setObjects(prepared);
       view.setSelectedObject(selectedObject);
       view.setSelectedModule(selectedModule);
+      spotlight.reattach();
       shownVersion = -1;
       if (service.engine) showMaps(service.engine);
       events.onContext('restored');
@@ -81,7 +101,37 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
   const frames = createFrameScheduler({ draw: () => view.render(renderer), canDraw: () => active && !display.lost, onFrame: events.onFrame });
   controls.addEventListener('change', frames.request);
   const camera = createCameraRig(controls, view);
-  const stopTaps = watchTaps(canvas, (x, y) => events.onPick?.(view.pick(x, y)));
+  const stopTaps = watchTaps(canvas, (x, y) => {
+    if (aimAt) {
+      const point = view.pickPoint(x, y);
+      if (point) events.onAimAt?.(point);
+      return;
+    }
+    // In the spotlight view a tap ends a drag of the head; it selects nothing.
+    if (!spotlight.active()) events.onPick?.(view.pick(x, y));
+  });
+  const spotlight = createSpotlight({
+    canvas,
+    view: () => view,
+    controls,
+    request: () => frames.request(),
+    room: () => scene?.room ?? null,
+    lamp(moduleId) {
+      const i = ids.indexOf(moduleId);
+      const l = i >= 0 ? scene?.luminaires[i] : undefined;
+      if (!l) return null;
+      const d = Math.max(0, l.dimming ?? 1);
+      const c = l.color ?? [1, 1, 1];
+      return { photometry: l.photometry, weight: [d * c[0], d * c[1], d * c[2]] };
+    },
+    setDimmed(moduleId) {
+      if (moduleId === dimmed) return;
+      dimmed = moduleId;
+      if (scene) applyOverlay();
+    },
+    onAim: (moduleId, aim) => events.onAim?.(moduleId, aim),
+    linearFloat: renderer.extensions.has('OES_texture_float_linear'),
+  });
   const maps = createMapDisplay(() => view, events.onMaps);
 
   const showMaps = (engine: RelightEngine) => {
@@ -109,6 +159,7 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
     if (e.type === 'slice') {
       const p = e.progress;
       if (e.engine.version !== shownVersion && (p.lit || p.done)) showMaps(e.engine);
+      spotlight.bakeProgress(p.done);
       events.onProgress({ fraction: p.fraction, done: p.done, lit: p.lit, ...counters() });
     } else if (e.type === 'engine') {
       shownVersion = -1;
@@ -127,7 +178,8 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
       view.setFixtures(nextFixtures);
       syncObjects();
       camera.setRoom(next.room);
-      if (live) applyOverlay();
+      if (live || dimmed) applyOverlay();
+      spotlight.sceneChanged();
       // The engine's maps for this scene, at once when it has them (a view opened again after no change: no bake, no wait).
       const engine = service.engine;
       if (engine && service.scene === next) {
@@ -175,6 +227,18 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
       view.setSelectedModule(selectedModule);
       frames.request();
     },
+    /**
+     * The spotlight view of an adjustable module (docs/aiming.md), following its aim as the store
+     * changes it; null leaves it (the orbit camera comes back where it was).
+     */
+    setSpotlight(target: SpotlightTarget | null) {
+      spotlight.set(target);
+      frames.request();
+    },
+    /** Aim-at mode: the next taps report world points (onAimAt) instead of picking. */
+    setAimAt(on: boolean) {
+      aimAt = on;
+    },
     setPreset(name: CameraPresetName) {
       camera.setPreset(name);
       frames.request();
@@ -199,6 +263,7 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
       if (live) service.setOverlay(null);
       frames.stop();
       stopTaps();
+      spotlight.dispose();
       controls.dispose();
       view.dispose();
       renderer.dispose();

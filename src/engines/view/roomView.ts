@@ -1,5 +1,5 @@
 import * as THREE from 'three';
-import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../core/model/lightingScene';
+import { SURFACE_NAMES, type Rgb, type SurfaceName, type Vec3 } from '../../core/model/lightingScene';
 import type { LitMaps } from '../relight/relightMaps';
 import type { CameraPose } from './cameraPresets';
 import type { PreparedObjects } from '../bake/objects/preparedObjects';
@@ -8,6 +8,7 @@ import { createRoomObjects, OBJECTS_MESH_NAME } from './createRoomObjects';
 import { createRoomSurfaces, type ViewMode } from './createRoomSurfaces';
 import type { Fixtures } from './fixtures';
 import type { ObjectLight } from './objectLight';
+import type { SpotPreviewUniforms } from './spotPreview';
 
 export type { ViewMode } from './createRoomSurfaces';
 
@@ -34,6 +35,10 @@ export interface RoomView {
   setSelectedModule(id: string | null): void;
   /** The nearest object or module under a point of the view (normalised device coordinates, −1…1, y up), or null. */
   pick(ndcX: number, ndcY: number): PickTarget | null;
+  /** The world point of the room's surfaces or the objects under a point of the view (aim at, docs/aiming.md), or null. */
+  pickPoint(ndcX: number, ndcY: number): Vec3 | null;
+  /** The aiming preview's lamp uniforms, shared by the room's surfaces (spotPreview.ts). */
+  readonly preview: SpotPreviewUniforms;
   setExposure(exposure: number): void;
   setMode(mode: ViewMode, levels?: readonly number[]): void;
   setFixtures(fixtures: Fixtures): void;
@@ -79,6 +84,15 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
         return id ? { kind: 'object', id } : null;
       }
       return hit.object.name.startsWith('module:') ? { kind: 'module', id: hit.object.name.slice('module:'.length) } : null;
+    },
+    preview: surfaces.preview,
+    pickPoint(ndcX, ndcY) {
+      scene.updateMatrixWorld();
+      camera.updateMatrixWorld();
+      raycaster.setFromCamera(new THREE.Vector2(ndcX, ndcY), camera);
+      const targets = [...scene.children.filter((c) => (SURFACE_NAMES as readonly string[]).includes(c.name)), ...objects.group.children.filter((c) => c.name === OBJECTS_MESH_NAME && c.visible)];
+      const hit = raycaster.intersectObjects(targets, false)[0];
+      return hit ? [hit.point.x, hit.point.y, hit.point.z] : null;
     },
     setCamera(pose, aspect) {
       camera.fov = pose.fov;
