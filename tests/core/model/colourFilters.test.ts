@@ -43,6 +43,17 @@ describe('colour filters on modules', () => {
     expect(problems[0].path).toMatch(/^systems\[0\]\.rails\[\d\]\.modules\[\d\]\.filter$/);
   });
 
+  it('a filtered spot cannot become a type without a holder until the filter is out', () => {
+    const s = withPreset('single', 1, 1);
+    const [m] = moduleIds(s);
+    const f = run(s, 'setModuleFilter', { moduleId: m, filter: 'lee-106' });
+    expect(enabled(f, 'setModuleType', { moduleId: m, type: 'flood' })).toEqual({ ok: false, reason: 'Wide flood has no filter holder: it takes no colour filter' });
+    // The warm-dim spot has a holder too: the filter stays.
+    expect(only(run(f, 'setModuleType', { moduleId: m, type: 'spot-warmdim' })).rails[0].modules[0].filter).toBe('lee-106');
+    const out = run(f, 'setModuleFilter', { moduleId: m, filter: null });
+    expect(enabled(out, 'setModuleType', { moduleId: m, type: 'flood' })).toBe(true);
+  });
+
   it('the bill of materials has one line per filter article, priced to the cent', () => {
     let s = withPreset('single', 1, 1);
     const ids = moduleIds(s);
