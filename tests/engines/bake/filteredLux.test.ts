@@ -6,6 +6,7 @@ import { resolveBakeSettings } from '../../../src/engines/bake/bakeSettings';
 import { directAtPoint } from '../../../src/engines/bake/directAtPoint';
 import { resolveBakeSceneSync } from '../../../src/engines/bake/resolveBakeScene';
 import { scenePointSources } from '../../../src/engines/bake/scenePointSources';
+import { groupLuminaires, groupWeight } from '../../../src/engines/relight/luminaireGroups';
 import { createNodePhotometryLoader } from '../../../src/hosts/node/createNodePhotometryLoader';
 import { catalog, only, run, withPreset } from '../../core/model/helpers';
 
@@ -28,5 +29,19 @@ describe('a colour filter in the light that reaches the floor', () => {
       const tau = moduleLightColour({ cct: 3000, filter }).transmission;
       floorLux(s).forEach((e, i) => expect(e / ref[i]).toBeCloseTo(tau, 9));
     }
+  });
+
+  it('changing a filter is a relight: the same luminaire groups (bases), only the weights change, by τ_v in luminance', () => {
+    const plain = withPreset('single', 1, 1);
+    const [m] = only(plain).rails[0].modules.map((x) => x.id);
+    const gel = run(plain, 'setModuleFilter', { moduleId: m, filter: 'lee-201' });
+    const load = createNodePhotometryLoader();
+    const lum = (s: typeof plain) => resolveBakeSceneSync(toLightingScene(s, catalog, { photometryBase: 'public/' }), load).luminaires;
+    const [a, b] = [lum(plain), lum(gel)];
+    const [ga, gb] = [groupLuminaires(a), groupLuminaires(b)];
+    expect(gb.map((g) => g.key)).toEqual(ga.map((g) => g.key));
+    const tau = moduleLightColour({ cct: 3000, filter: 'lee-201' }).transmission;
+    const g0 = ga.findIndex((g) => g.members.includes(0));
+    expect(lux(groupWeight(gb[g0], b)) / lux(groupWeight(ga[g0], a))).toBeCloseTo(tau, 12);
   });
 });
