@@ -2,6 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { findColourFilter } from '../../../src/core/colour/colourFilterLibrary';
 import { billOfMaterials } from '../../../src/core/model/billOfMaterials';
 import { parseCatalog } from '../../../src/core/model/catalogSchema';
+import { decodeShareString, deserializeConfiguration, encodeShareString, serializeConfiguration } from '../../../src/core/model/sceneFile';
 import { moduleLightColour } from '../../../src/core/model/moduleFilter';
 import { toLightingScene } from '../../../src/core/model/toLightingScene';
 import { validate } from '../../../src/core/model/validate';
@@ -86,6 +87,18 @@ describe('colour filters on modules', () => {
     const red = toLightingScene(s, catalog).luminaires[2].color!;
     expect(red[0]).toBeGreaterThan(10 * red[1]);
     expect(luminance(red)).toBeCloseTo(moduleLightColour({ cct: 3000, filter: 'lee-106' }).transmission, 12);
+  });
+
+  it('a filter travels in scene files and share links; a file naming a filter a flood cannot take is refused', () => {
+    const s = withPreset('corner-l', 1, 3);
+    const spot = only(s).rails.flatMap((r) => r.modules).find((m) => m.type === 'spot')!;
+    const f = run(s, 'setModuleFilter', { moduleId: spot.id, filter: 'lee-205' });
+    expect(deserializeConfiguration(serializeConfiguration(f, catalog), catalog)).toEqual(f);
+    expect(decodeShareString(encodeShareString(f, catalog), catalog)).toEqual(f);
+    const flood = only(s).rails.flatMap((r) => r.modules).find((m) => m.type === 'flood')!;
+    const text = serializeConfiguration(f, catalog).replace(`"id": "${flood.id}",`, `"id": "${flood.id}",\n"filter": "lee-205",`);
+    expect(text).toContain('"filter": "lee-205",');
+    expect(() => deserializeConfiguration(text, catalog)).toThrow(/filter.*Wide flood has no filter holder/);
   });
 
   it('a catalog naming a filter the library lacks, or one twice, is refused naming the field', () => {
