@@ -38,6 +38,9 @@ export function ev100FromExposure(exposure: number): number {
   return Math.log2(1 / (SATURATION_LUMINANCE_EV0 * exposure));
 }
 
+/** How a view exposes: 'auto' (key value over the log-average luminance, autoExposure.ts) or a fixed EV100. */
+export type ExposureSetting = 'auto' | number;
+
 /** True when `ev` is a finite EV100 in EV100_MIN..EV100_MAX. */
 export function isEv100(ev: unknown): ev is number {
   return typeof ev === 'number' && Number.isFinite(ev) && ev >= EV100_MIN && ev <= EV100_MAX;

@@ -15,6 +15,7 @@ import { createUiStore, showStatus } from '../../core/store/uiStore';
 import { createFootprintSource } from '../../ui/planner/footprintSource';
 import type { LuxboxInstance, LuxboxOptions } from './types';
 import { isQualityLevel, QUALITY_LEVEL_NAMES } from '../../engines/relight/qualityLevels';
+import { EV100_MAX, EV100_MIN, isEv100 } from '../../engines/view/photographicExposure';
 import { EmbedOptionsError, resolveCatalog } from './resolveCatalog';
 
 export { EmbedOptionsError };
@@ -37,6 +38,9 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
   const catalog = resolveCatalog(options);
   if (options.quality !== undefined && !isQualityLevel(options.quality)) throw new EmbedOptionsError(`options.quality: '${String(options.quality)}' is not a quality level (expected ${QUALITY_LEVEL_NAMES.join(', ')})`);
   const quality = options.quality;
+  if (options.exposure !== undefined && options.exposure !== 'auto' && !isEv100(options.exposure)) {
+    throw new EmbedOptionsError(`options.exposure: ${JSON.stringify(options.exposure)} is neither 'auto' nor an EV100 number in ${EV100_MIN}..${EV100_MAX}`);
+  }
   const storageKey = options.storageKey || null;
   const saved = storageKey ? readLocal(storageKey) : null;
   const start = resolveStartup({ catalog, hash: options.shareLinks ? currentHash() : '', saved, room: options.room, demo: options.demo });
@@ -99,7 +103,7 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
 
   const footprints = createFootprintSource(options.assetBase ?? import.meta.env.BASE_URL);
   // The 3D bake lives as long as this configurator (started in idle time once the plan shows).
-  const bakeHost = createBakeHost(store, footprints.loadPhotometry, { quality: quality ?? null, remember: options.rememberQuality === true });
+  const bakeHost = createBakeHost(store, footprints.loadPhotometry, { quality: quality ?? null, remember: options.rememberQuality === true, exposure: options.exposure ?? 'auto' });
   // The class scopes every luxbox style rule to this element and makes it the container whose
   // width the layout's breakpoints query (app.css); a class the host put there itself stays on destroy.
   const hadRootClass = element.classList.contains(ROOT_CLASS);

@@ -35,6 +35,12 @@ export interface LuxboxOptions {
    * under storageKey). The standalone app turns it on.
    */
   rememberQuality?: boolean;
+  /**
+   * How the 3D view exposes (docs/viewer.md, "Exposure"): 'auto' (default; every configuration shown at the
+   * same mean brightness) or a fixed EV100 in -6..20 (e.g. 5.5), so a dimmed configuration looks darker.
+   * The user can still switch to auto or lock another value in the 3D panel.
+   */
+  exposure?: 'auto' | number;
 }
 
 export interface LuxboxActionInfo {

@@ -12,6 +12,7 @@ import { CAMERA_PRESETS, type CameraPresetName } from '../../engines/view/camera
 import { createViewerController, type ViewerController } from '../../engines/view/createViewerController';
 import { floorStats, workPlaneStats, type IlluminanceStats } from '../../engines/view/lightStats';
 import { DimmerRow } from './DimmerRow';
+import { ExposureControl } from './ExposureControl';
 import { IlluminanceTable } from './IlluminanceTable';
 import { LiveControl } from './LiveControl';
 import { LuxLegend } from './LuxLegend';
@@ -58,7 +59,6 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
   const [progress, setProgress] = useState({ fraction: 0, done: false, lit: false });
   const [error, setError] = useState<string | null>(null);
   const [mode, setMode] = useState<ViewMode>('light');
-  const [ev, setEv] = useState(0);
   const [preset, setPreset] = useState<CameraPresetName>('corner');
   const [levels, setLevels] = useState<number[]>([]);
   const [floor, setFloor] = useState<IlluminanceStats | null>(null);
@@ -170,6 +170,8 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
       queueMicrotask(() => setError(message));
       return;
     }
+    // A fixed EV100 from the page (embed option `exposure`) holds from the first frame.
+    if (typeof host.exposure === 'number') controller.setEv100(host.exposure);
     ctrl.current = controller;
     // Made while hidden (the feed arrived after the user went back to the plan): no frames until shown.
     controller.setActive(visibleRef.current);
@@ -294,14 +296,7 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
             </button>
           ))}
         </div>
-        <label className="viewer3d-field">
-          Exposure {ev > 0 ? '+' : ''}
-          {ev.toFixed(1)} EV
-          <input type="range" min={-4} max={4} step={0.5} value={ev} onChange={(e) => { const v = Number(e.target.value); setEv(v); ctrl.current?.setExposureEv(v); }} data-testid="exposure" />
-        </label>
-        <button type="button" className="btn" disabled={ev === 0} onClick={() => { setEv(0); ctrl.current?.setExposureEv(0); }}>
-          Auto exposure
-        </button>
+        <ExposureControl initial={host.exposure} target={() => ctrl.current} />
         {selectedLabel && (
           <p className="viewer3d-selected" data-testid="view3d-selected" data-kind={selection?.kind} data-id={selection?.id}>
             Selected: {selectedLabel}

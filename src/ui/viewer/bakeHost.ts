@@ -1,6 +1,7 @@
 import type { Photometry } from '../../core/photometry/types';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import type { QualityLevel } from '../../engines/relight/qualityLevels';
+import type { ExposureSetting } from '../../engines/view/photographicExposure';
 import type { BakeStatus } from '../../engines/view/createBakeService';
 import type { BakeFeed } from './startBakeFeed';
 import { initialQuality, storeQuality } from './qualityPreference';
@@ -22,6 +23,8 @@ export interface BakeHost {
   /** The running feed, or null (not started or still loading). */
   current(): BakeFeed | null;
   readonly quality: QualityLevel;
+  /** How the 3D view starts exposing: 'auto' or a fixed EV100 (embed option `exposure`, docs/viewer.md "Exposure"). */
+  readonly exposure: ExposureSetting;
   /** The user's choice: applied to the running service, and kept in localStorage ('luxbox.quality') when the host allows. */
   setQuality(level: QualityLevel): void;
   dispose(): void;
@@ -30,6 +33,8 @@ export interface BakeHost {
 export interface BakeHostOptions {
   /** A quality pinned by the page (URL parameter, embed option): it wins over the stored choice. */
   quality?: QualityLevel | null;
+  /** The 3D view's starting exposure: 'auto' (default) or a fixed EV100 (photographicExposure.ts). */
+  exposure?: ExposureSetting;
   /** Keep the user's choice and the device calibration in localStorage (the standalone app; default false). */
   remember?: boolean;
   /** requestIdleCallback, or a stand-in (browsers without it: a short timeout). */
@@ -87,6 +92,7 @@ export function createBakeHost(store: ConfiguratorStore, loadPhotometry: (path: 
     get quality() {
       return level();
     },
+    exposure: options.exposure ?? 'auto',
     setQuality(next) {
       quality = next;
       if (remember) storeQuality(next);

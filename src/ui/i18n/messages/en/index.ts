@@ -1,8 +1,10 @@
 // English: the source of every key. One line per area; de, fr and it register the same areas.
 import common from './common';
+import exposure from './exposure';
 import filters from './filters';
 
 export default {
   common,
+  exposure,
   filters,
 };
