@@ -1,0 +1,39 @@
+import { expect, test } from '@playwright/test';
+import { footprintsReady, sceneFile, zoomToModuleLevel } from './helpers';
+
+test.use({ reducedMotion: 'reduce', viewport: { width: 1440, height: 900 } });
+
+// Issue #12, colour filters: pick a gel for a spot, see its colour and numbers, the price and the plan follow.
+test('a spot takes a colour filter: readout, search, BOM line, plan tint, saved', async ({ page }) => {
+  await page.goto('/');
+  await page.getByRole('button', { name: 'Start planning' }).click();
+  await page.getByTestId('preset-single').click();
+  await footprintsReady(page);
+  await zoomToModuleLevel(page);
+  const moduleId = (await sceneFile(page)).configuration.systems[0].rails[0].modules[0].id;
+  await page.getByTestId(`module-${moduleId}`).getByRole('button').click();
+  const picker = page.getByTestId('filter-picker');
+  await expect(picker).toBeVisible();
+  await expect(picker.getByTestId('filter-readout')).toContainText('Unfiltered, 3000 K');
+  await expect(picker.getByTestId('filter-none')).toHaveAttribute('aria-pressed', 'true');
+
+  // Search narrows the list to the full CTO.
+  await picker.getByTestId('filter-search').fill('204');
+  await expect(picker.locator('[data-testid^="filter-lee-"]')).toHaveCount(1);
+  await picker.getByTestId('filter-lee-204').click();
+  await expect(picker.getByTestId('filter-lee-204')).toHaveAttribute('aria-pressed', 'true');
+  await expect(picker.getByTestId('filter-readout')).toContainText('LEE 204 Full C.T. Orange');
+  await expect(picker.getByTestId('filter-readout')).toContainText(/Transmission 62\.6%/);
+  await expect(picker.getByTestId('filter-readout')).toContainText(/CCT 2,0\d\d K/);
+  expect((await sceneFile(page)).configuration.systems[0].rails[0].modules[0]).toMatchObject({ filter: 'lee-204' });
+  await expect(page.getByTestId('bom')).toContainText('LX-GEL-204');
+
+  // The plan's footprint of that module takes the filtered light's colour.
+  const swatch = await picker.getByTestId('filter-swatch').getAttribute('data-colour');
+  await expect(page.locator(`[data-footprint-for="${moduleId}"]`)).toHaveAttribute('fill', swatch!);
+  await page.screenshot({ path: 'test-results/colour-filter-picker.png' });
+
+  // No filter again.
+  await picker.getByTestId('filter-none').click();
+  expect('filter' in (await sceneFile(page)).configuration.systems[0].rails[0].modules[0]).toBe(false);
+});
