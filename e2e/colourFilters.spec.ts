@@ -31,7 +31,6 @@ test('a spot takes a colour filter: readout, search, BOM line, plan tint, saved'
   // The plan's footprint of that module takes the filtered light's colour.
   const swatch = await picker.getByTestId('filter-swatch').getAttribute('data-colour');
   await expect(page.locator(`[data-footprint-for="${moduleId}"]`)).toHaveAttribute('fill', swatch!);
-  await page.screenshot({ path: 'test-results/colour-filter-picker.png' });
 
   // No filter again.
   await picker.getByTestId('filter-none').click();
