@@ -1,0 +1,39 @@
+import { useEffect, useRef, useState } from 'react';
+import type { ConfiguratorState, ConfiguratorStore } from '../../core/store/createConfiguratorStore';
+import { useI18n } from '../i18n/useI18n';
+import { announcement, type AnnouncedState, type AnnounceContext } from './planAnnouncement';
+// The touch-target and screen-reader-only rules (docs/accessibility.md) load with the planner.
+import '../app/accessibility.css';
+
+const snapshot = (s: ConfiguratorState): AnnouncedState => ({ config: s.config, selection: s.selection, past: s.history.past.length, future: s.history.future.length });
+
+/**
+ * A polite live region that tells screen-reader users what is selected on the plan and what
+ * their last action changed (planAnnouncement.ts). It is always in the document, so assistive
+ * technology is already watching it when the text changes; visually hidden, since sighted users
+ * see the same on the plan.
+ */
+export function PlanAnnouncer({ store }: { store: ConfiguratorStore }) {
+  const { t, format, language } = useI18n();
+  const [message, setMessage] = useState('');
+  const context = useRef<AnnounceContext>({ catalog: store.getState().catalog, t, format, language });
+  useEffect(() => {
+    context.current = { catalog: store.getState().catalog, t, format, language };
+  }, [store, t, format, language]);
+  useEffect(() => {
+    let prev = snapshot(store.getState());
+    return store.subscribe((state) => {
+      const next = snapshot(state);
+      const text = announcement(prev, next, context.current);
+      prev = next;
+      // The same sentence twice in a row (e.g. selecting one module again) is still spoken: a
+      // changed text node is what live regions react to, so alternate a trailing no-break space.
+      if (text) setMessage((old) => (old === text ? `${text}\u00a0` : text));
+    });
+  }, [store]);
+  return (
+    <div className="sr-only" role="status" aria-live="polite" aria-atomic="true" data-testid="plan-announcer">
+      {message}
+    </div>
+  );
+}
