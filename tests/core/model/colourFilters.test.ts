@@ -33,9 +33,9 @@ describe('colour filters on modules', () => {
   it('refuses a type without a holder and an unknown filter, with the reason; validate() names the field', () => {
     const s = withPreset('corner-l', 1, 3);
     const flood = only(s).rails.flatMap((r) => r.modules).find((m) => m.type === 'flood')!;
-    expect(enabled(s, 'setModuleFilter', { moduleId: flood.id, filter: 'lee-201' })).toEqual({ ok: false, reason: 'Wide flood has no filter holder: it takes no colour filter' });
+    expect(enabled(s, 'setModuleFilter', { moduleId: flood.id, filter: 'lee-201' })).toMatchObject({ ok: false, reason: 'Wide flood has no filter holder: it takes no colour filter' });
     const spot = only(s).rails.flatMap((r) => r.modules).find((m) => m.type === 'spot')!;
-    expect(enabled(s, 'setModuleFilter', { moduleId: spot.id, filter: 'lee-999' })).toEqual({ ok: false, reason: "unknown colour filter 'lee-999' (not among the catalog's filters)" });
+    expect(enabled(s, 'setModuleFilter', { moduleId: spot.id, filter: 'lee-999' })).toMatchObject({ ok: false, reason: "unknown colour filter 'lee-999' (not among the catalog's filters)" });
     // A state built by hand (a file) is judged the same way.
     const bad = { ...s, systems: [{ ...only(s), rails: only(s).rails.map((r) => ({ ...r, modules: r.modules.map((m) => (m.id === flood.id ? { ...m, filter: 'lee-201' } : m)) })) }] };
     const problems = validate(bad, catalog);
@@ -48,7 +48,7 @@ describe('colour filters on modules', () => {
     const s = withPreset('single', 1, 1);
     const [m] = moduleIds(s);
     const f = run(s, 'setModuleFilter', { moduleId: m, filter: 'lee-106' });
-    expect(enabled(f, 'setModuleType', { moduleId: m, type: 'flood' })).toEqual({ ok: false, reason: 'Wide flood has no filter holder: it takes no colour filter' });
+    expect(enabled(f, 'setModuleType', { moduleId: m, type: 'flood' })).toMatchObject({ ok: false, reason: 'Wide flood has no filter holder: it takes no colour filter' });
     // The warm-dim spot has a holder too: the filter stays.
     expect(only(run(f, 'setModuleType', { moduleId: m, type: 'spot-warmdim' })).rails[0].modules[0].filter).toBe('lee-106');
     const out = run(f, 'setModuleFilter', { moduleId: m, filter: null });
