@@ -27,7 +27,14 @@ export interface PlanSvgProps {
   drag: DragPreview | null;
   /** Measured floor footprints per photometric file. */
   footprints: FootprintSource;
+  /** Each module's level shown during a light-scene crossfade (scene player; off = 0); absent: the configuration's. */
+  levels?: ReadonlyMap<string, number> | null;
 }
+
+/** A module's shown level: the fade's, else its own (0 when switched off). */
+const shownLevel = (levels: ReadonlyMap<string, number> | null | undefined, m: { id: string; on?: boolean; dimming: number }) => levels?.get(m.id) ?? (m.on === false ? 0 : m.dimming);
+/** Module symbols fade with their level (docs/light-scenes.md), never below a quarter so an off module stays visible. */
+const levelOpacity = (level: number) => 0.25 + 0.75 * level;
 
 const points = (r: PlanRect) => {
   // rectCorners returns the corners in (−,−), (−,+), (+,−), (+,+) order; reorder to a loop.
@@ -35,7 +42,7 @@ const points = (r: PlanRect) => {
   return [c[0], c[1], c[3], c[2]].map((p) => `${p[0]},${p[1]}`).join(' ');
 };
 
-function SystemShape({ system, catalog, scale, selected, selectedRailId, selectedModuleId }: { system: LightSystem; catalog: Catalog; scale: number; selected: boolean; selectedRailId?: string; selectedModuleId?: string }) {
+function SystemShape({ system, catalog, scale, selected, selectedRailId, selectedModuleId, levels }: { system: LightSystem; catalog: Catalog; scale: number; selected: boolean; selectedRailId?: string; selectedModuleId?: string; levels?: ReadonlyMap<string, number> | null }) {
   const elements = systemElements(system, catalog);
   const modules = modulePlacements(system, catalog);
   const railIds = system.rails.map((r) => r.id);
@@ -70,7 +77,9 @@ function SystemShape({ system, catalog, scale, selected, selectedRailId, selecte
             key={m.moduleId}
             points={points(rect)}
             data-module-id={m.moduleId}
+            data-level={module ? shownLevel(levels, module).toFixed(3) : undefined}
             fill={module ? moduleTint(module) : '#fff'}
+            fillOpacity={module ? levelOpacity(shownLevel(levels, module)) : 1}
             stroke={m.moduleId === selectedModuleId ? '#c0392b' : '#1d2330'}
             strokeWidth={m.moduleId === selectedModuleId ? 3 : 1}
             vectorEffect="non-scaling-stroke"
@@ -161,7 +170,7 @@ const ObjectShapes = memo(function ObjectShapes({ config, selectedId, drag }: { 
  * only draws: what a pointer hits is found from the same shapes by planHitTest, and input goes
  * to the PlannerController.
  */
-export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection, drag, footprints }: PlanSvgProps) {
+export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection, drag, footprints, levels }: PlanSvgProps) {
   const clipId = useId();
   // Re-render when a photometric file arrives.
   useSyncExternalStore(footprints.subscribe, footprints.version);
@@ -211,7 +220,7 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
                   if (!f) return null;
                   const paint = {
                     fill: moduleTint(module),
-                    fillOpacity: 0.2,
+                    fillOpacity: 0.2 * shownLevel(levels, module),
                     stroke: '#c98a1c',
                     strokeOpacity: 0.7,
                     strokeWidth: 1,
@@ -250,6 +259,7 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
                 selected={selection.systemId === s.id}
                 selectedRailId={selection.systemId === s.id ? selection.railId : undefined}
                 selectedModuleId={selection.systemId === s.id ? selection.moduleId : undefined}
+                levels={levels}
               />
             </g>
           );

@@ -31,6 +31,9 @@ import { DEFAULT_VIEWPORT, PlannerController } from './PlannerController';
 import type { FootprintSource } from './footprintSource';
 import { requestFootprints } from './moduleFootprint';
 import { usePlannerKeys } from './usePlannerKeys';
+import { ScenePanel } from '../scenes/ScenePanel';
+import { scenePlayerFor } from '../scenes/createScenePlayer';
+import { fadeLevels } from '../../core/model/sceneFade';
 
 export interface PlannerProps {
   store: ConfiguratorStore;
@@ -105,6 +108,11 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, shareNotice = n
     if (optionsOpen && panelRef.current) panelRef.current.scrollTop = 0;
   }, [optionsOpen, selection]);
 
+  // A light-scene crossfade: the plan shows each module's level as it fades (docs/light-scenes.md).
+  const player = scenePlayerFor(store);
+  const fading = useSyncExternalStore(player.subscribe, () => player.getState().fading);
+  const fadeLevelsShown = useMemo(() => (fading ? fadeLevels(fading.from, fading.to, fading.e) : null), [fading]);
+
   usePlanGestures(wrapRef, controller);
   usePlannerKeys(controller, mode === '2d');
   // Once opened, the 3D view stays mounted (hidden) behind the plan, so going back to 3D draws one
@@ -164,7 +172,7 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, shareNotice = n
         <div className="stage">
           {mode === '2d' ? (
             <div className="plan-wrap" ref={wrapRef} data-testid="plan" data-scale={view.scale.toFixed(3)} data-level={level} onDragOver={dragOver} onDrop={drop}>
-              <PlanSvg config={config} catalog={catalog} view={view} selection={path} drag={drag} footprints={footprints} />
+              <PlanSvg config={config} catalog={catalog} view={view} selection={path} drag={drag} footprints={footprints} levels={fadeLevelsShown} />
               <PlanControls
                 config={config}
                 catalog={catalog}
@@ -215,6 +223,7 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, shareNotice = n
           <FurniturePanel gate={gate} onAdd={addFurniture}>
             <ImportPanel onAdd={addImported} />
           </FurniturePanel>
+          <ScenePanel store={store} />
           <SurfacesPanel room={config.room} finishes={defaultSurfaceFinishes} gate={gate} />
           <BomPanel bom={bom} locale={locale} needs={needs} />
           <section className="panel-section">

@@ -1,0 +1,158 @@
+import { useEffect, useState, useSyncExternalStore } from 'react';
+import { useStore } from 'zustand';
+import { FADE_LIMITS } from '../../core/model/lightScenes';
+import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
+import { useI18n } from '../i18n/useI18n';
+import { scenePlayerFor } from './createScenePlayer';
+import { useSceneKeys } from './useSceneKeys';
+import './scenes.css';
+
+/**
+ * Light scenes in the side panel (docs/light-scenes.md), in 2D and 3D: GO / BACK like a lighting
+ * console (next / previous in list order, each with its own fade), tap a scene to recall it, and
+ * record, update, rename, reorder, delete and set the fade time. Space is GO, Shift+Space BACK.
+ * Every change is a store action (undoable); the fade itself is the scene player's.
+ */
+export function ScenePanel({ store }: { store: ConfiguratorStore }) {
+  const { t, format } = useI18n();
+  const scenes = useStore(store, (s) => s.config.lightScenes) ?? [];
+  const player = scenePlayerFor(store);
+  const playback = useSyncExternalStore(player.subscribe, player.getState);
+  const [name, setName] = useState('');
+  const [renaming, setRenaming] = useState<{ id: string; name: string } | null>(null);
+  const [note, setNote] = useState<string | null>(null);
+  useSceneKeys(player);
+
+  // A note (a refusal) goes after a few seconds, as the plan's status line does.
+  useEffect(() => {
+    if (!note) return;
+    const id = window.setTimeout(() => setNote(null), 4000);
+    return () => window.clearTimeout(id);
+  }, [note]);
+
+  const act = (action: string, params: unknown): boolean => {
+    const r = store.getState().dispatch(action, params);
+    if (!r.ok) setNote(r.reason);
+    return r.ok;
+  };
+  const play = (p: Promise<{ ok: boolean; reason?: string }>) => {
+    void p.then((r) => {
+      if (!r.ok && r.reason) setNote(r.reason);
+    });
+  };
+  const record = () => {
+    const n = name.trim() || t('scenes.defaultName', { n: scenes.length + 1 });
+    if (act('recordScene', { name: n })) setName('');
+  };
+  const commitRename = () => {
+    if (renaming && act('renameScene', { sceneId: renaming.id, name: renaming.name })) setRenaming(null);
+  };
+  const next = player.next();
+  const previous = player.previous();
+  const fading = playback.fading;
+
+  return (
+    <section className="panel-section scene-panel" aria-labelledby="scenes-title" data-testid="scene-panel">
+      <h2 id="scenes-title">{t('scenes.title')}</h2>
+      <div className="scene-transport">
+        <button type="button" className="btn" disabled={!previous} onClick={() => play(player.back())} data-testid="scene-back" aria-keyshortcuts="Shift+Space">
+          {t('scenes.back')}
+        </button>
+        <button type="button" className="btn btn-primary scene-go" disabled={!next} onClick={() => play(player.go())} data-testid="scene-go" aria-keyshortcuts="Space">
+          {next ? t('scenes.goTo', { name: next.name }) : t('scenes.go')}
+        </button>
+      </div>
+      {fading && (
+        <div className="scene-fade" role="progressbar" aria-label={t('scenes.fading')} aria-valuemin={0} aria-valuemax={100} aria-valuenow={Math.round(fading.t * 100)} data-testid="scene-fade">
+          <div className="scene-fade-bar" style={{ width: `${Math.round(fading.t * 100)}%` }} />
+        </div>
+      )}
+      {scenes.length === 0 ? (
+        <p className="scene-empty">{t('scenes.empty')}</p>
+      ) : (
+        <ol className="scene-list">
+          {scenes.map((s, i) => (
+            <li key={s.id} className={s.id === playback.current ? 'current' : undefined} data-testid="scene-row" data-scene-id={s.id} aria-current={s.id === playback.current || undefined}>
+              {renaming?.id === s.id ? (
+                <input
+                  className="scene-name-input"
+                  value={renaming.name}
+                  autoFocus
+                  aria-label={t('scenes.nameLabel')}
+                  onChange={(e) => setRenaming({ id: s.id, name: e.target.value })}
+                  onKeyDown={(e) => {
+                    if (e.key === 'Enter') commitRename();
+                    if (e.key === 'Escape') setRenaming(null);
+                  }}
+                  onBlur={commitRename}
+                  data-testid="scene-rename-input"
+                />
+              ) : (
+                <button type="button" className="btn scene-recall" onClick={() => play(player.recall(s.id))} data-testid="scene-recall" title={t('scenes.recallHint', { name: s.name, seconds: format.number(s.fade) })}>
+                  {s.name}
+                </button>
+              )}
+              <label className="scene-fade-field">
+                <input
+                  type="number"
+                  min={FADE_LIMITS.min}
+                  max={FADE_LIMITS.max}
+                  step={0.5}
+                  defaultValue={s.fade}
+                  key={`${s.id}-${s.fade}`}
+                  aria-label={t('scenes.fadeLabel', { name: s.name })}
+                  onBlur={(e) => {
+                    const v = Number(e.target.value);
+                    if (v !== s.fade && !act('setSceneFade', { sceneId: s.id, fade: v })) e.target.value = String(s.fade);
+                  }}
+                  onKeyDown={(e) => {
+                    if (e.key === 'Enter') (e.target as HTMLInputElement).blur();
+                  }}
+                  data-testid="scene-fade-input"
+                />
+                {t('scenes.seconds')}
+              </label>
+              <span className="scene-tools">
+                <button type="button" className="btn" onClick={() => act('updateScene', { sceneId: s.id })} title={t('scenes.updateHint')} aria-label={t('scenes.updateLabel', { name: s.name })} data-testid="scene-update">
+                  {t('scenes.update')}
+                </button>
+                <button type="button" className="btn" onClick={() => setRenaming({ id: s.id, name: s.name })} aria-label={t('scenes.renameLabel', { name: s.name })} data-testid="scene-rename">
+                  {t('scenes.rename')}
+                </button>
+                <button type="button" className="btn" disabled={i === 0} onClick={() => act('reorderScene', { sceneId: s.id, index: i - 1 })} aria-label={t('scenes.moveUp', { name: s.name })}>
+                  ↑
+                </button>
+                <button type="button" className="btn" disabled={i === scenes.length - 1} onClick={() => act('reorderScene', { sceneId: s.id, index: i + 1 })} aria-label={t('scenes.moveDown', { name: s.name })}>
+                  ↓
+                </button>
+                <button type="button" className="btn" onClick={() => act('deleteScene', { sceneId: s.id })} aria-label={t('scenes.deleteLabel', { name: s.name })} data-testid="scene-delete">
+                  ✕
+                </button>
+              </span>
+            </li>
+          ))}
+        </ol>
+      )}
+      <div className="scene-record">
+        <input
+          value={name}
+          placeholder={t('scenes.namePlaceholder')}
+          aria-label={t('scenes.nameLabel')}
+          onChange={(e) => setName(e.target.value)}
+          onKeyDown={(e) => {
+            if (e.key === 'Enter') record();
+          }}
+          data-testid="scene-name"
+        />
+        <button type="button" className="btn" onClick={record} data-testid="scene-record">
+          {t('scenes.record')}
+        </button>
+      </div>
+      {note && (
+        <p className="scene-note" role="status" data-testid="scene-note">
+          {note}
+        </p>
+      )}
+    </section>
+  );
+}

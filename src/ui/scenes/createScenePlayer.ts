@@ -1,0 +1,200 @@
+/**
+ * Light-scene playback (docs/light-scenes.md, "Playback"): recall a scene with its crossfade, GO
+ * and BACK through the list like a lighting console. Recalling is one undoable action
+ * (recallScene: the configuration jumps to the end state at once); the fade is playback, not
+ * configuration: for its duration the plan shows each module's level at the eased fraction
+ * (fadeLevels) and the 3D view is relit every frame from the two scenes' weights (the bake
+ * service's setFade: no bake). One player per configurator store, shared by the scene panel, the
+ * keyboard and the embedding API.
+ */
+import type { Catalog } from '../../core/model/catalogSchema';
+import type { Configuration, LightScene } from '../../core/model/configuration';
+import type { Rgb } from '../../core/model/lightingScene';
+import { fadeFraction, fadeLevels, luminousOutput } from '../../core/model/sceneFade';
+import { toLightingScene } from '../../core/model/toLightingScene';
+import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
+import type { BakeScene } from '../../engines/bake/bakeScene';
+import type { BakeFeed } from '../viewer/startBakeFeed';
+
+export interface SceneFadeState {
+  readonly sceneId: string;
+  readonly from: Configuration;
+  readonly to: Configuration;
+  /** Time fraction 0..1 and the eased fade fraction e(t) (sceneFade.ts). */
+  readonly t: number;
+  readonly e: number;
+  /** Fade time, seconds. */
+  readonly seconds: number;
+}
+
+export interface ScenePlayerState {
+  /** The scene recalled last (GO and BACK step from it); null before any. */
+  readonly current: string | null;
+  readonly fading: SceneFadeState | null;
+}
+
+export type RecallResult = { readonly ok: true } | { readonly ok: false; readonly reason: string };
+
+export interface ScenePlayer {
+  getState(): ScenePlayerState;
+  subscribe(listener: () => void): () => void;
+  /** Recalls a scene with a fade of `fade` seconds (default: the scene's own); resolves when the fade ends (or is cut short). */
+  recall(sceneId: string, options?: { fade?: number }): Promise<RecallResult>;
+  /** The next scene in list order after the current one (the first when none was recalled), or null at the end. */
+  next(): LightScene | null;
+  /** The previous scene in list order, or null at the start. */
+  previous(): LightScene | null;
+  go(): Promise<RecallResult>;
+  back(): Promise<RecallResult>;
+  /** Each module's shown output level during a fade (off = 0), null when no fade runs. */
+  levels(): ReadonlyMap<string, number> | null;
+  /** Ends a running fade at its end state now. */
+  finish(): void;
+  dispose(): void;
+}
+
+export interface ScenePlayerOptions {
+  /** The running bake feed, if any (the 3D view's light); null: the fade is shown in the plan only. */
+  feed?: () => BakeFeed | null;
+  /** requestAnimationFrame and performance.now, or a test's stand-ins. */
+  frame?: (callback: () => void) => () => void;
+  now?: () => number;
+}
+
+const pageFrame = (callback: () => void): (() => void) => {
+  if (typeof requestAnimationFrame === 'function') {
+    const id = requestAnimationFrame(() => callback());
+    return () => cancelAnimationFrame(id);
+  }
+  const id = setTimeout(callback, 16);
+  return () => clearTimeout(id);
+};
+
+/** Dimming and colour per module id of a configuration's lighting scene (what the baker gets for it). */
+function lightsOf(config: Configuration, catalog: Catalog): Map<string, { dimming: number; color: Rgb }> {
+  return new Map(toLightingScene(config, catalog).luminaires.map((l) => [l.id ?? '', { dimming: l.dimming ?? 1, color: (l.color ?? [1, 1, 1]) as Rgb }]));
+}
+
+/** The scene faded from: the lit scene's luminaires with the earlier state's dimming and colour (by module id). */
+function fromScene(scene: BakeScene, ids: readonly string[], lights: ReadonlyMap<string, { dimming: number; color: Rgb }>): BakeScene {
+  return {
+    ...scene,
+    luminaires: scene.luminaires.map((l, i) => {
+      const f = lights.get(ids[i]);
+      return f ? { ...l, dimming: f.dimming, color: f.color } : l;
+    }),
+  };
+}
+
+export function createScenePlayer(store: ConfiguratorStore, options: ScenePlayerOptions = {}): ScenePlayer {
+  const frame = options.frame ?? pageFrame;
+  const now = options.now ?? (() => performance.now());
+  const listeners = new Set<() => void>();
+  let state: ScenePlayerState = { current: null, fading: null };
+  let run: { start: number; yFrom: number; yTo: number; cancelFrame: () => void; resolve: (r: RecallResult) => void; lights: Map<string, { dimming: number; color: Rgb }> } | null = null;
+  const set = (next: ScenePlayerState) => {
+    state = next;
+    for (const l of [...listeners]) l();
+  };
+  const scenes = () => store.getState().config.lightScenes ?? [];
+  const feed = () => options.feed?.() ?? null;
+
+  const showFade = (f: SceneFadeState) => {
+    const bake = feed();
+    if (!bake || !run) return;
+    const lights = run.lights;
+    bake.service.setFade({ from: (scene) => fromScene(scene, bake.latest()?.ids ?? [], lights), e: f.e });
+  };
+
+  const end = () => {
+    if (!run) return;
+    const r = run;
+    run = null;
+    r.cancelFrame();
+    feed()?.service.setFade(null);
+    set({ ...state, fading: null });
+    r.resolve({ ok: true });
+  };
+
+  const tick = () => {
+    if (!run || !state.fading) return;
+    const f = state.fading;
+    const t = f.seconds > 0 ? (now() - run.start) / (f.seconds * 1000) : 1;
+    if (t >= 1) return end();
+    const next = { ...f, t, e: fadeFraction(t, run.yFrom, run.yTo) };
+    set({ ...state, fading: next });
+    showFade(next);
+    run.cancelFrame = frame(tick);
+  };
+
+  // Any other change of the configuration (an edit, undo) during a fade ends it: the plan and the view show the configuration.
+  const unsubscribe = store.subscribe((s, prev) => {
+    if (s.config !== prev.config && state.fading && s.config !== state.fading.to) end();
+  });
+
+  const player: ScenePlayer = {
+    getState: () => state,
+    subscribe(listener) {
+      listeners.add(listener);
+      return () => listeners.delete(listener);
+    },
+    recall(sceneId, opts = {}) {
+      end();
+      const { catalog, config: from } = store.getState();
+      const scene = scenes().find((s) => s.id === sceneId);
+      const result = store.getState().dispatch('recallScene', { sceneId });
+      if (!result.ok) return Promise.resolve({ ok: false, reason: result.reason });
+      const to = store.getState().config;
+      const seconds = opts.fade ?? scene?.fade ?? 0;
+      if (!(seconds > 0) || to === from) {
+        set({ current: sceneId, fading: null });
+        return Promise.resolve({ ok: true });
+      }
+      return new Promise<RecallResult>((resolve) => {
+        run = { start: now(), yFrom: luminousOutput(from, catalog), yTo: luminousOutput(to, catalog), cancelFrame: () => undefined, resolve, lights: lightsOf(from, catalog) };
+        const fading: SceneFadeState = { sceneId, from, to, t: 0, e: 0, seconds };
+        set({ current: sceneId, fading });
+        showFade(fading);
+        run.cancelFrame = frame(tick);
+      });
+    },
+    next() {
+      const list = scenes();
+      const i = list.findIndex((s) => s.id === state.current);
+      return list[i + 1] ?? null;
+    },
+    previous() {
+      const list = scenes();
+      const i = list.findIndex((s) => s.id === state.current);
+      return i > 0 ? list[i - 1] : null;
+    },
+    go() {
+      const s = player.next();
+      return s ? player.recall(s.id) : Promise.resolve({ ok: false, reason: 'no next scene' });
+    },
+    back() {
+      const s = player.previous();
+      return s ? player.recall(s.id) : Promise.resolve({ ok: false, reason: 'no previous scene' });
+    },
+    levels() {
+      const f = state.fading;
+      return f ? fadeLevels(f.from, f.to, f.e) : null;
+    },
+    finish: end,
+    dispose() {
+      end();
+      unsubscribe();
+      listeners.clear();
+    },
+  };
+  return player;
+}
+
+const players = new WeakMap<ConfiguratorStore, ScenePlayer>();
+
+/** The store's scene player, created on first use (the panel, the keys and the embedding API share it). */
+export function scenePlayerFor(store: ConfiguratorStore, options?: ScenePlayerOptions): ScenePlayer {
+  let p = players.get(store);
+  if (!p) players.set(store, (p = createScenePlayer(store, options)));
+  return p;
+}
