@@ -21,6 +21,8 @@ import { EmbedOptionsError, resolveCatalog } from './resolveCatalog';
 export { EmbedOptionsError };
 import { getViewerStatus } from '../../ui/viewer/viewerStatus';
 import { createBakeHost } from '../../ui/viewer/bakeHost';
+import { scenePlayerFor } from '../../ui/scenes/createScenePlayer';
+import { FADE_LIMITS, sceneByName } from '../../core/model/lightScenes';
 
 /** Class on the element luxbox renders into: the scope of its stylesheet and its size container. */
 const ROOT_CLASS = 'luxbox';
@@ -104,6 +106,8 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
   const footprints = createFootprintSource(options.assetBase ?? import.meta.env.BASE_URL);
   // The 3D bake lives as long as this configurator (started in idle time once the plan shows).
   const bakeHost = createBakeHost(store, footprints.loadPhotometry, { quality: quality ?? null, remember: options.rememberQuality === true, exposure: options.exposure ?? 'auto' });
+  // Light-scene playback, shared by the scene panel, the keyboard and the API below; fades relight the bake host's engine.
+  const scenePlayer = scenePlayerFor(store, { feed: () => bakeHost.current() });
   // The class scopes every luxbox style rule to this element and makes it the container whose
   // width the layout's breakpoints query (app.css); a class the host put there itself stays on destroy.
   const hadRootClass = element.classList.contains(ROOT_CLASS);
@@ -175,6 +179,24 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
       alive();
       return toLightingScene(store.getState().config, catalog);
     },
+    scenes() {
+      alive();
+      const current = scenePlayer.getState().current;
+      return (store.getState().config.lightScenes ?? []).map((s) => ({ id: s.id, name: s.name, fade: s.fade, current: s.id === current }));
+    },
+    recordScene(name) {
+      alive();
+      const r = store.getState().dispatch('recordScene', { name });
+      return r.ok ? { ok: true } : { ok: false, reason: r.reason };
+    },
+    recall(name, options = {}) {
+      alive();
+      const scene = typeof name === 'string' ? sceneByName(store.getState().config, name) : undefined;
+      if (!scene) return Promise.resolve({ ok: false, reason: `no light scene named '${String(name)}'` });
+      if (options.fade !== undefined && !(Number.isFinite(options.fade) && options.fade >= FADE_LIMITS.min && options.fade <= FADE_LIMITS.max))
+        return Promise.resolve({ ok: false, reason: `fade must be between ${FADE_LIMITS.min} and ${FADE_LIMITS.max} s (got ${String(options.fade)})` });
+      return scenePlayer.recall(scene.id, { fade: options.fade }).then((r) => (r.ok ? { ok: true as const } : { ok: false as const, reason: r.reason }));
+    },
     view3d() {
       alive();
       return getViewerStatus(store);
@@ -185,6 +207,7 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
       unsubscribeStore();
       listeners.clear();
       root.unmount();
+      scenePlayer.dispose();
       bakeHost.dispose();
       if (!hadRootClass) element.classList.remove(ROOT_CLASS);
     },

@@ -51,6 +51,16 @@ export interface LuxboxActionInfo {
   reason: string | null;
 }
 
+/** A light scene as the embedding API lists it. */
+export interface LuxboxSceneInfo {
+  id: string;
+  name: string;
+  /** Crossfade time, seconds. */
+  fade: number;
+  /** The scene recalled last (GO / BACK step from it). */
+  current: boolean;
+}
+
 export type LuxboxRunResult = { ok: true } | { ok: false; reason: string };
 
 /** A mounted configurator. */
@@ -76,6 +86,15 @@ export interface LuxboxInstance {
   getLightingScene(): unknown;
   /** State of the 3D view (docs/viewer.md): bake progress, counters (group bakes vs relights), floor lux; `open: false` in 2D; `bake`: the background bake service, also while 3D is closed. */
   view3d(): ViewerStatus;
+  /** The configuration's light scenes in playback order (docs/light-scenes.md). */
+  scenes(): LuxboxSceneInfo[];
+  /** Records every module's current on/off, level, colour temperature and filter as a new scene (undoable). */
+  recordScene(name: string): LuxboxRunResult;
+  /**
+   * Recalls a scene by name (case-insensitive) with a crossfade of `fade` seconds (default: the
+   * scene's own); resolves when the fade has ended, with `ok: false` and the reason if refused.
+   */
+  recall(name: string, options?: { fade?: number }): Promise<LuxboxRunResult>;
   /** Unmounts and releases everything; the instance must not be used afterwards. */
   destroy(): void;
 }
