@@ -12,6 +12,7 @@ import { aimAxis, aimedOrientation, type AimLimits } from '../../core/model/aim'
 import { coneRoomOutline, type RoomBox } from '../../core/model/coneOutline';
 import type { ModuleAim } from '../../core/model/configuration';
 import type { Rgb, Vec3 } from '../../core/model/lightingScene';
+import { beamAndField } from '../../core/photometry/beam';
 import type { Photometry } from '../../core/photometry/types';
 import type { BakeScene } from '../bake/bakeScene';
 import { luminaireRotation } from '../bake/luminaireRotation';
@@ -33,6 +34,21 @@ export interface SpotlightTarget {
   /** Full beam (50 %) and field (10 %) angles of the optic, degrees (photometry/beam.ts). */
   beamDeg: number;
   fieldDeg: number;
+}
+
+/** What the host knows of the module (the controller adds beam and field from the scene's photometry). */
+export type SpotlightRequest = Omit<SpotlightTarget, 'beamDeg' | 'fieldDeg'>;
+
+const angles = new WeakMap<Photometry, { beamDeg: number; fieldDeg: number }>();
+/** Full beam and field angles of a photometry, the mean of its C0–C180 and C90–C270 planes (photometry/beam.ts); cached per file. */
+export function beamAndFieldDeg(ph: Photometry): { beamDeg: number; fieldDeg: number } {
+  let a = angles.get(ph);
+  if (!a) {
+    const { c0, c90 } = beamAndField(ph);
+    a = { beamDeg: (c0.beam + c90.beam) / 2, fieldDeg: (c0.field + c90.field) / 2 };
+    angles.set(ph, a);
+  }
+  return a;
 }
 
 /** Outline colours: beam (50 %) warm yellow, field (10 %) orange, both readable on light and dark surfaces. */

@@ -14,7 +14,7 @@ import { createRoomView, type PickTarget, type RoomView, type ViewMode } from '.
 import { watchContextLoss } from './watchContextLoss';
 import type { PreparedObjects } from '../bake/objects/preparedObjects';
 import { watchTaps } from './watchTaps';
-import { createSpotlight, withoutModule, type SpotlightTarget } from './createSpotlight';
+import { beamAndFieldDeg, createSpotlight, withoutModule, type SpotlightRequest } from './createSpotlight';
 import type { ModuleAim } from '../../core/model/configuration';
 import type { Vec3 } from '../../core/model/lightingScene';
 
@@ -70,6 +70,14 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
     );
   /** Aim-at mode: the next tap aims the selected module at the point instead of picking. */
   let aimAt = false;
+  /** The spotlight view the host asked for; shown once the scene has the module's luminaire (its beam and field come from its photometry). */
+  let spotRequest: SpotlightRequest | null = null;
+  const syncSpotlight = () => {
+    const i = spotRequest ? ids.indexOf(spotRequest.moduleId) : -1;
+    const l = i >= 0 ? scene?.luminaires[i] : undefined;
+    spotlight.set(spotRequest && l ? { ...spotRequest, ...beamAndFieldDeg(l.photometry) } : null);
+    frames.request();
+  };
   let fixtures: Fixtures | null = null;
   /** The engine version on screen; -1 forces the next slice to show the maps. */
   let shownVersion = -1;
@@ -180,6 +188,7 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
       camera.setRoom(next.room);
       if (live || dimmed) applyOverlay();
       spotlight.sceneChanged();
+      if (spotRequest) syncSpotlight();
       // The engine's maps for this scene, at once when it has them (a view opened again after no change: no bake, no wait).
       const engine = service.engine;
       if (engine && service.scene === next) {
@@ -231,9 +240,9 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
      * The spotlight view of an adjustable module (docs/aiming.md), following its aim as the store
      * changes it; null leaves it (the orbit camera comes back where it was).
      */
-    setSpotlight(target: SpotlightTarget | null) {
-      spotlight.set(target);
-      frames.request();
+    setSpotlight(target: SpotlightRequest | null) {
+      spotRequest = target;
+      syncSpotlight();
     },
     /** Aim-at mode: the next taps report world points (onAimAt) instead of picking. */
     setAimAt(on: boolean) {

@@ -8,6 +8,8 @@ import { GatedButton } from './GatedButton';
 import { modulePhotometryPath } from './moduleFootprint';
 import { OptionChips } from './OptionChips';
 import { OptionsSection } from './OptionsSection';
+import { AimOptions } from './AimOptions';
+import type { AimAtMode } from '../shared/aimAtMode';
 import { FilterPicker } from './FilterPicker';
 
 /** Dimming levels offered as touch-sized choices (the 3D view relights instantly on a change). */
@@ -26,10 +28,12 @@ export interface ModuleOptionsProps {
   onClose: () => void;
   /** The plan's photometry loader: the module's file warnings are shown from it. */
   footprints?: FootprintSource;
+  /** Aim-at mode shared with the 3D view; absent: no aim options (docs/aiming.md). */
+  aimMode?: AimAtMode;
 }
 
 /** A selected module's settings (configurator paper, fig. 10, 11): type, beam, photometry notes, colour temperature, dimming, remove. */
-export function ModuleOptions({ module, catalog, gate, onClose, footprints }: ModuleOptionsProps) {
+export function ModuleOptions({ module, catalog, gate, onClose, footprints, aimMode }: ModuleOptionsProps) {
   const type = catalog.moduleTypes.find((t) => t.id === module.type);
   const photometryPath = modulePhotometryPath(module, catalog);
   const moduleId = module.id;
@@ -62,6 +66,7 @@ export function ModuleOptions({ module, catalog, gate, onClose, footprints }: Mo
         })}
       </OptionChips>
       {type?.filterHolder && <FilterPicker module={module} catalog={catalog} gate={gate} />}
+      {aimMode && <AimOptions module={module} catalog={catalog} gate={gate} aimMode={aimMode} />}
       <GatedButton gate={gate} action="removeModule" params={{ moduleId }} label="Remove module" />
     </OptionsSection>
   );

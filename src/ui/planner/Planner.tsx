@@ -6,6 +6,7 @@ import type { ConfiguratorStore, Selection } from '../../core/store/createConfig
 import type { UiStore } from '../../core/store/uiStore';
 import { BomPanel } from './BomPanel';
 import { OptionsPanel } from './OptionsPanel';
+import { aimAtMode } from '../shared/aimAtMode';
 import { PlanControls } from './PlanControls';
 import { PlanSvg } from './PlanSvg';
 import { PresetPanel } from './PresetPanel';
@@ -207,7 +208,7 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, shareNotice = n
           <BottomBar controller={controller} mode={mode} />
         </div>
         <aside ref={panelRef} className={`side-panel${panelOpen ? ' open' : ''}`} aria-label="Presets and price">
-          {optionsOpen && <OptionsPanel config={config} catalog={catalog} path={path} gate={gate} onClose={() => ui.setState({ optionsOpen: false })} footprints={footprints} />}
+          {optionsOpen && <OptionsPanel config={config} catalog={catalog} path={path} gate={gate} onClose={() => ui.setState({ optionsOpen: false })} footprints={footprints} aimMode={aimAtMode(store)} />}
           <PresetPanel
             catalog={catalog}
             gate={gate}

@@ -14,6 +14,7 @@ import { findFurnitureItem } from '../../core/model/furniture/furnitureLibrary';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
 import { followableDelta, movedPlacement, wallPlacementNear } from './objectMoves';
 import { selectionPath } from './selection';
+import { aimAtMode } from '../shared/aimAtMode';
 import { type CommandContext, type PlannerCommand, PLANNER_COMMANDS, plannerCommand, runCommand } from './plannerCommands';
 import {
   type PlanPoint,
@@ -307,8 +308,9 @@ export class PlannerController implements CommandContext {
     this.pointerMove(at);
     const g = this.gesture;
     this.gesture = null;
-    if (g?.mode === 'pending') this.tap(g.hit);
-    else if (g?.mode === 'system') this.drop(g.id, this.pointerDelta(g, at));
+    if (g?.mode === 'pending') {
+      if (!this.aimAtTap(g.down)) this.tap(g.hit);
+    } else if (g?.mode === 'system') this.drop(g.id, this.pointerDelta(g, at));
     else if (g?.mode === 'object') this.dropObject(g.id, this.pointerDelta(g, at));
     else if (g?.mode === 'module') this.dropModule(g);
     else if (g?.mode === 'fixing') this.dropFixing(g);
@@ -455,6 +457,20 @@ export class PlannerController implements CommandContext {
   /** The plan point at the middle of the plan, kept inside the room: where a tapped library item goes. */
   visibleCentre(): PlanPoint {
     return this.insideRoom(screenToWorld(this.view, { sx: this.viewport.width / 2, sy: this.viewport.height / 2 }));
+  }
+
+  /**
+   * Aim-at mode (docs/aiming.md): a tap aims the module at that floor point (one undoable aimAt,
+   * the nearest reachable aim) and ends the mode. False when the mode is off (the tap selects).
+   */
+  aimAtTap(at: ScreenPoint): boolean {
+    const mode = aimAtMode(this.store);
+    const moduleId = mode.get();
+    if (!moduleId) return false;
+    const p = screenToWorld(this.view, at);
+    this.run('aimAt', { moduleId, point: [p.x, 0, p.z] });
+    mode.set(null);
+    return true;
   }
 
   /**

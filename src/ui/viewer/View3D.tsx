@@ -20,6 +20,7 @@ import type { ViewMode } from '../../engines/view/roomView';
 import { CLOSED_STATUS, setViewerStatus, type ViewerStatus } from './viewerStatus';
 import { bakeHostFor } from './bakeHost';
 import type { BakeFeed, ResolvedScene } from './startBakeFeed';
+import { aimEvents, SpotlightControls } from './SpotlightControls';
 import './viewer.css';
 
 export interface View3DProps {
@@ -68,6 +69,8 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
   const [photometryNotes, setPhotometryNotes] = useState<PhotometryNote[]>([]);
   const litRef = useRef<Parameters<Parameters<typeof createViewerController>[2]['onMaps']>[0] | null>(null);
   const [mapsVersion, setMapsVersion] = useState(0);
+  /** Counts controllers made, so the aiming controls hand their modes to a new one (its effects run after theirs). */
+  const [controllerVersion, setControllerVersion] = useState(0);
   const [liveState, setLiveState] = useState<NonNullable<ViewerStatus['live']>['state'] | null>(null);
 
   // The view's own record is kept while it is hidden behind the plan; hosts see a closed view then.
@@ -163,6 +166,8 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
         },
         // A tap on an object or a module selects it, as a tap in the plan does; a tap on the room clears the selection.
         onPick: (target) => store.getState().select(target),
+        // Aiming (docs/aiming.md): a drag in the spotlight view, a tap in aim-at mode.
+        ...aimEvents(store),
       });
     } catch (e) {
       const message = `The 3D view could not start: ${(e as Error).message}`;
@@ -173,6 +178,7 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
     // A fixed EV100 from the page (embed option `exposure`) holds from the first frame.
     if (typeof host.exposure === 'number') controller.setEv100(host.exposure);
     ctrl.current = controller;
+    queueMicrotask(() => setControllerVersion((v) => v + 1));
     // Made while hidden (the feed arrived after the user went back to the plan): no frames until shown.
     controller.setActive(visibleRef.current);
     const wrap = wrapRef.current!;
@@ -302,6 +308,7 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
             Selected: {selectedLabel}
           </p>
         )}
+        <SpotlightControls store={store} controllerRef={ctrl} ready={controllerVersion} />
         <IlluminanceTable floor={floor} plane={plane.on ? { height: plane.height, stats: planeStats } : null} />
         <label className="viewer3d-field viewer3d-inline">
           <input type="checkbox" checked={plane.on} onChange={(e) => setPlane({ ...plane, on: e.target.checked })} data-testid="plane-on" /> Work plane at
