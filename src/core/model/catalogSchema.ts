@@ -7,7 +7,6 @@ import { z } from 'zod';
 import { InputError } from '../inputError';
 import { colourFilter } from '../colour/colourFilterLibrary';
 import { dimmingCurveSchema } from './dimmingCurve';
-import { colourFilter } from '../colour/colourFilterLibrary';
 import { describeIssues, formatPath as formatFieldPath, jsonShapeProblem, oneLine, parseUntrustedJson, schemaFieldNames } from './untrustedJson';
 
 /** Module distributions along a rail; defined precisely in docs/model.md and src/core/model/distribution.ts. */
@@ -66,8 +65,6 @@ const moduleTypeSchema = z
     defaultCct: z.number().int(),
     beams: z.array(beamSchema).min(1),
     defaultBeam: nonEmpty,
-    /** Takes a colour filter (gel) from the catalog's `filters` (docs/colour-filters.md); absent: no holder. */
-    filterHolder: z.boolean().optional(),
     /** Takes a colour filter (gel) from the catalog's `filters` (docs/colour-filters.md); absent: no holder. */
     filterHolder: z.boolean().optional(),
     /** An adjustable head (docs/aiming.md): how far it turns and tilts, degrees; absent: fixed, straight down. */
@@ -131,14 +128,14 @@ export const catalogSchema = z
           price,
           /**
            * A flexible-angle (hinge) connector (docs/catalog-format.md): it turns by any multiple of
+           * `step` degrees from −maxAngle to +maxAngle, 0 included; setJointTurn adjusts a joint's turn.
+           */
+          flex: z.strictObject({ maxAngle: z.number().finite().positive().lt(180), step: z.number().finite().positive() }).optional(),
           /**
            * Rail ends it joins (docs/catalog-format.md, "Connectors"): 2 (default) for straight, corner and
            * flexible; 3 for a T, 4 for an X. A node of more than two ports takes branches at −angle, 0 and +angle.
            */
           ports: z.number().int().min(2).max(4).optional(),
-           * `step` degrees from −maxAngle to +maxAngle, 0 included; setJointTurn adjusts a joint's turn.
-           */
-          flex: z.strictObject({ maxAngle: z.number().finite().positive().lt(180), step: z.number().finite().positive() }).optional(),
           source: z.string().optional(),
         }),
       )
@@ -207,11 +204,6 @@ export const catalogSchema = z
      * (src/core/catalog/colour-filters.json); modules of a type with `filterHolder` take one.
      */
     filters: z.array(z.strictObject({ id: nonEmpty, article: nonEmpty, price, source: z.string().optional() })).optional(),
-    /**
-     * Colour filters sold as accessories (docs/colour-filters.md): `id` names a filter of the library
-     * (src/core/catalog/colour-filters.json); modules of a type with `filterHolder` take one.
-     */
-    filters: z.array(z.strictObject({ id: nonEmpty, article: nonEmpty, price, source: z.string().optional() })).optional(),
   })
   .superRefine((c, ctx) => {
     const r = c.rail;
@@ -224,7 +216,6 @@ export const catalogSchema = z
     if (s.min > s.max) ctx.addIssue({ code: 'custom', path: ['suspension', 'min'], message: 'must not exceed max' });
     if (s.default < s.min || s.default > s.max) ctx.addIssue({ code: 'custom', path: ['suspension', 'default'], message: 'must lie within min..max' });
     if (!c.feed.positions.includes('ends')) ctx.addIssue({ code: 'custom', path: ['feed', 'positions'], message: "must include 'ends' (a one-rail system has no joints)" });
-      if (connectorPorts(con) > 2 && (con.flex || con.angle === 0)) ctx.addIssue({ code: 'custom', path: ['connectors', i, 'ports'], message: 'a T or X connector has a fixed branch angle (angle > 0, no flex)' });
     if (new Set(c.feed.positions).size !== c.feed.positions.length) ctx.addIssue({ code: 'custom', path: ['feed', 'positions'], message: 'must not repeat a position' });
     if (!c.drivers.some((d) => d.id === c.feed.defaultDriver)) ctx.addIssue({ code: 'custom', path: ['feed', 'defaultDriver'], message: `'${c.feed.defaultDriver}' is not a driver id` });
     c.drivers.forEach((d, i) => {
@@ -233,6 +224,7 @@ export const catalogSchema = z
     if (s.maxOverhang > s.maxSpacing) ctx.addIssue({ code: 'custom', path: ['suspension', 'maxOverhang'], message: 'must not exceed maxSpacing' });
     if (c.surfaceMount.maxOverhang > c.surfaceMount.spacing) ctx.addIssue({ code: 'custom', path: ['surfaceMount', 'maxOverhang'], message: 'must not exceed spacing' });
     c.connectors.forEach((con, i) => {
+      if (connectorPorts(con) > 2 && (con.flex || con.angle === 0)) ctx.addIssue({ code: 'custom', path: ['connectors', i, 'ports'], message: 'a T or X connector has a fixed branch angle (angle > 0, no flex)' });
       if (!con.flex) return;
       if (!onGrid(con.flex.maxAngle, con.flex.step)) ctx.addIssue({ code: 'custom', path: ['connectors', i, 'flex', 'maxAngle'], message: `must be a multiple of step ${con.flex.step}` });
       if (!allowedTurn(con, con.angle)) ctx.addIssue({ code: 'custom', path: ['connectors', i, 'angle'], message: `a flexible connector's angle (its default turn) must be a multiple of ${con.flex.step} up to ${con.flex.maxAngle}` });
@@ -240,11 +232,6 @@ export const catalogSchema = z
     uniqueIds(c.drivers, ['drivers'], ctx);
     uniqueIds(c.connectors, ['connectors'], ctx);
     uniqueIds(c.moduleTypes, ['moduleTypes'], ctx);
-    uniqueIds(c.filters ?? [], ['filters'], ctx);
-    c.filters?.forEach((f, i) => {
-      if (!colourFilter(f.id)) ctx.addIssue({ code: 'custom', path: ['filters', i, 'id'], message: `'${f.id}' is not a filter of the colour-filter library` });
-        if (j.parent !== undefined && j.parent > k) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints', k, 'parent'], message: `must be a rail before rail ${k + 2} (at most ${k})` });
-    });
     uniqueIds(c.filters ?? [], ['filters'], ctx);
     c.filters?.forEach((f, i) => {
       if (!colourFilter(f.id)) ctx.addIssue({ code: 'custom', path: ['filters', i, 'id'], message: `'${f.id}' is not a filter of the colour-filter library` });
@@ -256,6 +243,7 @@ export const catalogSchema = z
         const con = c.connectors.find((x) => x.id === j.connector);
         if (!con) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints', k, 'connector'], message: `unknown connector '${j.connector}'` });
         else if (!allowedTurn(con, j.turn)) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints', k, 'turn'], message: `${turnRange(con)} for connector '${con.id}'` });
+        if (j.parent !== undefined && j.parent > k) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints', k, 'parent'], message: `must be a rail before rail ${k + 2} (at most ${k})` });
       });
       p.rails.forEach((rail, k) =>
         rail.modules.forEach((m, n) => {
@@ -331,16 +319,10 @@ export function onGrid(x: number, step: number): boolean {
 
 function uniqueIds(items: readonly { id: string }[], path: PropertyKey[], ctx: z.RefinementCtx): void {
   const seen = new Set<string>();
-  if (connectorPorts(con) > 2) return turn === 0 || Math.abs(turn) === con.angle;
   items.forEach((it, i) => {
     if (seen.has(it.id)) ctx.addIssue({ code: 'custom', path: [...path, i, 'id'], message: `duplicate id '${it.id}'` });
     seen.add(it.id);
   });
-/** Rail ends a connector joins: 2 unless the catalog says 3 (T) or 4 (X); a node takes ports − 1 branches. */
-export function connectorPorts(con: Pick<ConnectorSpec, 'ports'>): number {
-  return con.ports ?? 2;
-}
-
 }
 
 /**
@@ -349,8 +331,14 @@ export function connectorPorts(con: Pick<ConnectorSpec, 'ports'>): number {
  */
 export function allowedTurn(con: Pick<ConnectorSpec, 'angle' | 'flex' | 'ports'>, turn: number): boolean {
   if (!Number.isFinite(turn)) return false;
+  if (connectorPorts(con) > 2) return turn === 0 || Math.abs(turn) === con.angle;
   if (!con.flex) return Math.abs(turn) === con.angle;
   return Math.abs(turn) <= con.flex.maxAngle + 1e-9 && onGrid(turn, con.flex.step);
+}
+
+/** Rail ends a connector joins: 2 unless the catalog says 3 (T) or 4 (X); a node takes ports − 1 branches. */
+export function connectorPorts(con: Pick<ConnectorSpec, 'ports'>): number {
+  return con.ports ?? 2;
 }
 
 /** The turns a connector allows, in words ('must be ±90', 'must be a multiple of 5 within ±90'). */
