@@ -5,7 +5,14 @@
  */
 export class InputError extends Error {
   override name = 'InputError';
-  constructor(message: string) {
+  /** A stable code and its parameters, for UIs that show the message in another language (docs/i18n.md); absent for most errors. */
+  readonly code?: string;
+  readonly params?: Readonly<Record<string, string | number>>;
+  constructor(message: string, coded?: { code: string; params?: Record<string, string | number> }) {
     super(message);
+    if (coded) {
+      this.code = coded.code;
+      this.params = coded.params;
+    }
   }
 }

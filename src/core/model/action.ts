@@ -16,8 +16,18 @@ import type { Problem } from './validate';
 
 export interface Refusal {
   readonly ok: false;
-  /** One human-readable sentence: why the action is not possible now. */
+  /** One human-readable sentence: why the action is not possible now (English: the CLI, logs, the embedding API). */
   readonly reason: string;
+  /** A stable code for the reason and its parameters, so a UI can show it in the user's language (docs/i18n.md, "Messages from the core"); absent where none is given yet. */
+  readonly code?: string;
+  readonly params?: Readonly<Record<string, string | number>>;
+}
+
+/** A refusal sentence with its stable code: what `explain` and coded InputErrors carry. */
+export interface CodedReason {
+  readonly reason: string;
+  readonly code: string;
+  readonly params?: Readonly<Record<string, string | number>>;
 }
 
 /** `true` when the action may run, otherwise a refusal with the reason. */
@@ -26,8 +36,8 @@ export type Enablement = true | Refusal;
 /** What running an action on a state gives: the next state, or why not. */
 export type Outcome = { readonly ok: true; readonly next: Configuration } | Refusal;
 
-export function refuse(reason: string): Refusal {
-  return { ok: false, reason };
+export function refuse(reason: string, coded?: { code?: string; params?: Readonly<Record<string, string | number>> }): Refusal {
+  return coded?.code ? { ok: false, reason, code: coded.code, ...(coded.params ? { params: coded.params } : {}) } : { ok: false, reason };
 }
 
 /** Just the verdict of an outcome. */
@@ -56,7 +66,7 @@ export interface ActionDefinition<P> {
    * The refusal sentence for the first validation problem of the result, in the
    * action's words (e.g. "no room for another Spot"). Omitted: the problem's message.
    */
-  explain?(problem: Problem, state: Configuration, params: P, catalog: Catalog): string;
+  explain?(problem: Problem, state: Configuration, params: P, catalog: Catalog): string | CodedReason;
 }
 
 /** An action bound to its parameters and catalog: the configurator paper's `{ isEnabled(state), perform(state) }`. */

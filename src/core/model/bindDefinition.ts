@@ -10,7 +10,7 @@ import { InputError } from '../inputError';
 import { enablementOf, refuse, type ActionDefinition, type Outcome, type UserAction } from './action';
 import type { Catalog } from './catalogSchema';
 import type { Configuration } from './configuration';
-import { overloadReason } from './feedLoads';
+import { overloadRefusal } from './feedLoads';
 import { pruneLooks } from './lightScenes';
 import { validateResult } from './validateResult';
 
@@ -30,14 +30,18 @@ function decide<P>(def: ActionDefinition<P>, state: Configuration, params: P, ca
     performed = pruneLooks(def.perform(state, params, catalog));
   } catch (e) {
     // Unknown ids, unknown catalog entries, nowhere to put it: bad input, not a bug.
-    if (e instanceof InputError) return { state, outcome: refuse(e.message) };
+    if (e instanceof InputError) return { state, outcome: refuse(e.message, e) };
     throw e;
   }
   const problems = validateResult(state, performed, catalog);
   if (problems.length === 0) return { state, outcome: { ok: true, next: performed }, performed };
   // An overloaded driver is worded once for every action (addModule, setModuleBeam, presets, moves…): how full it was.
-  const first = problems[0].code === 'feed-overload' ? { ...problems[0], message: overloadReason(state, performed, problems[0], catalog) } : problems[0];
-  return { state, outcome: refuse(def.explain?.(first, state, params, catalog) ?? first.message), performed };
+  const overload = problems[0].code === 'feed-overload' ? overloadRefusal(state, performed, problems[0], catalog) : null;
+  const first = overload ? { ...problems[0], message: overload.reason } : problems[0];
+  const explained = def.explain?.(first, state, params, catalog) ?? first.message;
+  // The code travels with the sentence it names: the action's own coded reason, or the overload's when the action kept its wording.
+  if (typeof explained !== 'string') return { state, outcome: refuse(explained.reason, explained), performed };
+  return { state, outcome: refuse(explained, explained === overload?.reason ? overload : undefined), performed };
 }
 
 /**

@@ -1,6 +1,16 @@
 import { createStore, type StoreApi } from 'zustand/vanilla';
 
 /**
+ * A message for people: the English `text` (logs, the embedding API, tests) and, where the UI
+ * translates it, a stable `code` with its `params` (docs/i18n.md, "Messages from the core").
+ */
+export interface UiMessage {
+  text: string;
+  code?: string;
+  params?: Record<string, string | number>;
+}
+
+/**
  * UI state that is not part of the configuration (so undo/redo never touch it): which screen
  * is shown, panels, the message banner and the transient status line. A plain vanilla store so
  * the embedding API can drive it (setConfig leaves the room-setup screen) without React.
@@ -13,9 +23,9 @@ export interface UiState {
   /** The side panel on narrow screens (always shown on wide ones). */
   panelOpen: boolean;
   /** A persistent message (e.g. a broken share link) until dismissed. */
-  banner: { text: string; canRestore: boolean } | null;
+  banner: (UiMessage & { canRestore: boolean }) | null;
   /** A short message (why a control is disabled); `seq` lets a repeated message re-trigger. */
-  status: { text: string; seq: number } | null;
+  status: (UiMessage & { seq: number }) | null;
   /** The last share link created, shown so it can be copied by hand. */
   shareLink: string | null;
 }
@@ -35,7 +45,7 @@ export function createUiStore(initial: Partial<UiState> = {}): UiStore {
   }));
 }
 
-export function showStatus(ui: UiStore, text: string): void {
+export function showStatus(ui: UiStore, text: string, coded?: Omit<UiMessage, 'text'>): void {
   const seq = (ui.getState().status?.seq ?? 0) + 1;
-  ui.setState({ status: { text, seq } });
+  ui.setState({ status: { text, seq, ...coded } });
 }

@@ -1,6 +1,9 @@
 import { mountLuxbox } from '../embed/mountLuxbox';
 import type { LuxboxInstance } from '../embed/types';
 import { isQualityLevel } from '../../engines/relight/qualityLevels';
+import { readLocal, writeLocal } from '../embed/localStore';
+import { isLanguage } from '../../ui/i18n/languages';
+import { preferLanguage } from '../../ui/i18n/resolveLocale';
 import '../../ui/app/page.css';
 
 declare global {
@@ -19,4 +22,19 @@ const params = new URLSearchParams(location.search);
 const demo = import.meta.env.DEV || params.has('demo');
 // `?quality=fast|balanced|best` pins the 3D bake quality (tests pin 'balanced' where they read lux values).
 const quality = params.get('quality');
-window.luxbox = mountLuxbox(root, { storageKey: 'luxbox.autosave.v1', shareLinks: true, rememberQuality: true, demo, ...(isQualityLevel(quality) ? { quality } : {}) });
+// The language: `?lang=de` overrides the user's stored choice, which overrides the browser's
+// navigator.languages; an explicit choice keeps the browser's region ('de' + de-CH → Swiss formatting).
+const LANGUAGE_KEY = 'luxbox.language';
+const asked = params.get('lang');
+const chosen = isLanguage(asked) ? asked : readLocal(LANGUAGE_KEY);
+const locale = isLanguage(chosen) ? preferLanguage(chosen, navigator.languages) : navigator.languages;
+window.luxbox = mountLuxbox(root, {
+  storageKey: 'luxbox.autosave.v1',
+  shareLinks: true,
+  rememberQuality: true,
+  demo,
+  locale,
+  languageSwitch: true,
+  onLanguageChange: (language) => writeLocal(LANGUAGE_KEY, language),
+  ...(isQualityLevel(quality) ? { quality } : {}),
+});

@@ -23,6 +23,21 @@ import { getViewerStatus } from '../../ui/viewer/viewerStatus';
 import { createBakeHost } from '../../ui/viewer/bakeHost';
 import { scenePlayerFor } from '../../ui/scenes/createScenePlayer';
 import { FADE_LIMITS, sceneByName } from '../../core/model/lightScenes';
+import { createI18n } from '../../ui/i18n/createI18n';
+import { I18nProvider } from '../../ui/i18n/I18nProvider';
+import { isLanguage, LANGUAGES } from '../../ui/i18n/languages';
+import { isLocaleTag } from '../../ui/i18n/resolveLocale';
+
+/** options.locale checked: a string must be a BCP 47 tag; a list (navigator.languages) may hold tags resolveLocale skips. */
+function checkLocale(locale: unknown): string | readonly string[] | undefined {
+  if (locale === undefined) return typeof navigator === 'undefined' ? undefined : navigator.languages;
+  if (typeof locale === 'string') {
+    if (!isLocaleTag(locale)) throw new EmbedOptionsError(`options.locale: '${locale}' is not a BCP 47 language tag (e.g. 'de-CH')`);
+    return locale;
+  }
+  if (Array.isArray(locale) && locale.every((t) => typeof t === 'string')) return locale;
+  throw new EmbedOptionsError('options.locale must be a BCP 47 tag such as \'de-CH\' or a list of them');
+}
 
 /** Class on the element luxbox renders into: the scope of its stylesheet and its size container. */
 const ROOT_CLASS = 'luxbox';
@@ -43,6 +58,7 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
   if (options.exposure !== undefined && options.exposure !== 'auto' && !isEv100(options.exposure)) {
     throw new EmbedOptionsError(`options.exposure: ${JSON.stringify(options.exposure)} is neither 'auto' nor an EV100 number in ${EV100_MIN}..${EV100_MAX}`);
   }
+  const i18n = createI18n({ locale: checkLocale(options.locale), currency: catalog.currency, onLanguageChange: options.onLanguageChange });
   const storageKey = options.storageKey || null;
   const saved = storageKey ? readLocal(storageKey) : null;
   const start = resolveStartup({ catalog, hash: options.shareLinks ? currentHash() : '', saved, room: options.room, demo: options.demo });
@@ -84,7 +100,8 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
       store.getState().load(deserializeConfiguration(text, catalog, 'saved configuration'));
       ui.setState({ banner: null, phase: 'planner' });
     } catch (e) {
-      ui.setState({ banner: { text: `Your saved configuration could not be read (${e instanceof InputError ? e.message : 'unexpected error'}).`, canRestore: false } });
+      const problem = e instanceof InputError ? e.message : 'unexpected error';
+      ui.setState({ banner: { text: `Your saved configuration could not be read (${problem}).`, code: 'savedUnreadable', params: { problem }, canRestore: false } });
     }
   };
 
@@ -92,7 +109,7 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
     const base = typeof location === 'undefined' ? '' : location.origin + location.pathname + location.search;
     // Imported models are not in links (they can be megabytes): say so instead of dropping them silently.
     const link = encodeShareLink(store.getState().config, catalog);
-    if (link.notice) showStatus(ui, `Share link: ${link.notice}`);
+    if (link.notice) showStatus(ui, `Share link: ${link.notice}`, { code: 'shareLinkNotice', params: { notice: link.notice } });
     return `${base}${SHARE_HASH_PREFIX}${link.text}`;
   };
 
@@ -100,7 +117,7 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
   const shareLinkForUi = () => {
     const link = encodeShareLink(store.getState().config, catalog);
     const base = typeof location === 'undefined' ? '' : location.origin + location.pathname + location.search;
-    return { link: `${base}${SHARE_HASH_PREFIX}${link.text}`, notice: link.notice };
+    return { link: `${base}${SHARE_HASH_PREFIX}${link.text}`, leftOut: [...new Set(link.leftOut.map((o) => o.name))] };
   };
 
   const footprints = createFootprintSource(options.assetBase ?? import.meta.env.BASE_URL);
@@ -115,7 +132,9 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
   const root = createRoot(element);
   root.render(
     <StrictMode>
-      <Configurator store={store} ui={ui} locale={options.locale} onRestoreSaved={restoreSaved} shareLink={shareLinkForUi} footprints={footprints} />
+      <I18nProvider i18n={i18n}>
+        <Configurator store={store} ui={ui} languageSwitch={options.languageSwitch === true} onRestoreSaved={restoreSaved} shareLink={shareLinkForUi} footprints={footprints} />
+      </I18nProvider>
     </StrictMode>,
   );
 
@@ -200,6 +219,16 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
     view3d() {
       alive();
       return getViewerStatus(store);
+    },
+    getLanguage() {
+      alive();
+      const { language, locale } = i18n.getSnapshot();
+      return { language, locale };
+    },
+    setLanguage(language) {
+      alive();
+      if (!isLanguage(language)) throw new InputError(`setLanguage: '${String(language)}' is not a luxbox language (expected ${LANGUAGES.join(', ')})`);
+      return i18n.setLanguage(language);
     },
     destroy() {
       if (destroyed) return;

@@ -3,6 +3,7 @@ import { createConfiguration, type Configuration } from '../../core/model/config
 import { decodeShareString, deserializeConfiguration } from '../../core/model/sceneFile';
 import { InputError } from '../../core/inputError';
 import { firstImpression } from '../../ui/viewer/firstImpression';
+import type { UiMessage } from '../../core/store/uiStore';
 
 /** The URL hash prefix of a share link: `#c=<base64url scene file>` (src/core/model/sceneFile.ts). */
 export const SHARE_HASH_PREFIX = '#c=';
@@ -23,7 +24,7 @@ export interface Startup {
   config: Configuration;
   phase: 'setup' | 'planner';
   /** A message to show until dismissed (broken link, unreadable autosave). */
-  banner: { text: string; canRestore: boolean } | null;
+  banner: (UiMessage & { canRestore: boolean }) | null;
   /** Whether to write `config` to the autosave right away (a valid share link was opened). */
   saveNow: boolean;
   /** Whether the hash was consumed and should be removed from the address bar. */
@@ -60,7 +61,7 @@ export function resolveStartup({ catalog, hash, saved, room, demo }: StartupInpu
         return {
           config: createConfiguration(),
           phase: 'planner',
-          banner: { text: `This link could not be opened: ${message(e)}. Showing an empty room instead.`, canRestore: savedConfig !== null },
+          banner: { text: `This link could not be opened: ${message(e)}. Showing an empty room instead.`, code: 'linkBroken', params: { problem: message(e) }, canRestore: savedConfig !== null },
           saveNow: false,
           clearHash: true,
         };
@@ -69,14 +70,14 @@ export function resolveStartup({ catalog, hash, saved, room, demo }: StartupInpu
     return {
       config: createConfiguration(),
       phase: 'planner',
-      banner: { text: 'This link does not contain a luxbox configuration. Showing an empty room instead.', canRestore: savedConfig !== null },
+      banner: { text: 'This link does not contain a luxbox configuration. Showing an empty room instead.', code: 'linkForeign', canRestore: savedConfig !== null },
       saveNow: false,
       clearHash: true,
     };
   }
 
   if (savedConfig) return { config: savedConfig, phase: 'planner', banner: null, saveNow: false, clearHash: false };
-  const banner = savedError ? { text: `Your saved configuration could not be read (${savedError}).`, canRestore: false } : null;
+  const banner = savedError ? { text: `Your saved configuration could not be read (${savedError}).`, code: 'savedUnreadable', params: { problem: savedError }, canRestore: false } : null;
   if (room) return { config: createConfiguration(room), phase: 'planner', banner, saveNow: false, clearHash: false };
   if (demo) return { config: firstImpression(catalog), phase: 'planner', banner, saveNow: false, clearHash: false };
   return { config: createConfiguration(), phase: 'setup', banner, saveNow: false, clearHash: false };

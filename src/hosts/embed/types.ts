@@ -3,6 +3,7 @@ import type { BillOfMaterials } from '../../core/model/billOfMaterials';
 import type { InstallationNeeds } from '../../core/model/installationNeeds';
 import type { ViewerStatus } from '../../ui/viewer/viewerStatus';
 import type { QualityLevel } from '../../engines/relight/qualityLevels';
+import type { Language } from '../../ui/i18n/languages';
 
 /** Options of mountLuxbox (docs/embedding.md). */
 export interface LuxboxOptions {
@@ -10,8 +11,16 @@ export interface LuxboxOptions {
   catalog?: unknown;
   /** Start directly on the plan of this room (metres) instead of the room-setup screen. */
   room?: { width: number; depth: number; height: number };
-  /** BCP 47 locale for numbers and prices, e.g. 'de-CH'; default: the browser's. */
-  locale?: string;
+  /**
+   * BCP 47 tag or preference list choosing the UI language (en, de, fr, it) and the formatting
+   * of numbers, prices and dates, e.g. 'de-CH' (German texts, Swiss formatting); default: the
+   * browser's navigator.languages (docs/i18n.md, "Locale resolution").
+   */
+  locale?: string | readonly string[];
+  /** Show the language switch in the top bar; default false (the shop chooses the locale). The standalone app turns it on. */
+  languageSwitch?: boolean;
+  /** Called after the user switched the language with the switch or setLanguage (the standalone app stores it). */
+  onLanguageChange?: (language: Language) => void;
   /** ISO 4217 code the shop expects; must equal the catalog's currency (prices are never converted). */
   currency?: string;
   /** Called with the scene-file JSON after every change of the configuration. */
@@ -86,6 +95,10 @@ export interface LuxboxInstance {
   getLightingScene(): unknown;
   /** State of the 3D view (docs/viewer.md): bake progress, counters (group bakes vs relights), floor lux; `open: false` in 2D; `bake`: the background bake service, also while 3D is closed. */
   view3d(): ViewerStatus;
+  /** The UI language and the formatting locale in use, e.g. { language: 'de', locale: 'de-CH' }. */
+  getLanguage(): { language: Language; locale: string };
+  /** Switches the UI language (en, de, fr, it) without touching the configuration; resolves once the new texts show. Throws an InputError for another value. */
+  setLanguage(language: Language): Promise<void>;
   /** The configuration's light scenes in playback order (docs/light-scenes.md). */
   scenes(): LuxboxSceneInfo[];
   /** Records every module's current on/off, level, colour temperature and filter as a new scene (undoable). */

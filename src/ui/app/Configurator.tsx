@@ -8,26 +8,32 @@ import { Planner } from '../planner/Planner';
 import type { FootprintSource } from '../planner/footprintSource';
 import { RoomSetup } from './RoomSetup';
 import type { UiStore } from '../../core/store/uiStore';
+import { useI18n } from '../i18n/useI18n';
+import { LanguageSwitch } from '../i18n/LanguageSwitch';
+import { translateCoded } from '../i18n/translateCoded';
 import './app.css';
 
 export interface ConfiguratorProps {
   store: ConfiguratorStore;
   ui: UiStore;
-  locale?: string;
+  /** Show the language switch in the top bar (the standalone app; an embedding shop chooses the locale). */
+  languageSwitch?: boolean;
   /** Loads the autosaved configuration (offered after a broken link). */
   onRestoreSaved: () => void;
-  /** The share link of the current configuration, and the sentence saying what it leaves out (imported models), or null. */
-  shareLink: () => { link: string; notice: string | null };
+  /** The share link of the current configuration, and the names of the imported models it leaves out. */
+  shareLink: () => { link: string; leftOut: readonly string[] };
   footprints: FootprintSource;
 }
 
 /** The configurator's top-level component: room setup first, then the planner (configurator paper §3.2). */
-export function Configurator({ store, ui, locale, onRestoreSaved, shareLink, footprints }: ConfiguratorProps) {
+export function Configurator({ store, ui, languageSwitch = false, onRestoreSaved, shareLink, footprints }: ConfiguratorProps) {
+  const { t, locale } = useI18n();
   const phase = useStore(ui, (s) => s.phase);
   const banner = useStore(ui, (s) => s.banner);
   const room = useStore(store, (s) => s.config.room);
   const catalog = useStore(store, (s) => s.catalog);
-  const [shareNotice, setShareNotice] = useState<string | null>(null);
+  const [leftOut, setLeftOut] = useState<readonly string[]>([]);
+  const shareNotice = leftOut.length === 0 ? null : t('app.shareLeftOut', { count: leftOut.length, names: leftOut.map((n) => `'${n}'`).join(', ') });
 
   // Once the plan shows, the 3D bake service starts in idle time and bakes every change in the
   // background, so the 3D view opens lit (docs/viewer.md, "Always ready: the bake service").
@@ -45,25 +51,25 @@ export function Configurator({ store, ui, locale, onRestoreSaved, shareLink, foo
   };
 
   const share = () => {
-    const { link, notice } = shareLink();
+    const { link, leftOut: names } = shareLink();
     // The clipboard needs a secure context and permission; the link is also shown as text.
     void navigator.clipboard?.writeText(link).catch(() => undefined);
-    setShareNotice(notice);
+    setLeftOut(names);
     ui.setState({ shareLink: link });
-    return notice ? 'Share link created without the imported models: see the side panel.' : 'Share link created: copy it from the side panel.';
+    return names.length > 0 ? t('app.shareCreatedWithoutModels') : t('app.shareCreated');
   };
 
   return (
     <div className="app" lang={locale}>
       {banner && (
         <div className="banner" role="alert" data-testid="banner">
-          <span className="banner-text">{banner.text}</span>
+          <span className="banner-text">{translateCoded(t, 'app', banner)}</span>
           {banner.canRestore && (
             <button type="button" className="btn" onClick={onRestoreSaved}>
-              Open my saved configuration
+              {t('app.openSaved')}
             </button>
           )}
-          <button type="button" className="btn" aria-label="Dismiss message" onClick={() => ui.setState({ banner: null })}>
+          <button type="button" className="btn" aria-label={t('common.dismissMessage')} onClick={() => ui.setState({ banner: null })}>
             ✕
           </button>
         </div>
@@ -72,7 +78,9 @@ export function Configurator({ store, ui, locale, onRestoreSaved, shareLink, foo
         <>
           <header className="app-header">
             <h1>luxbox</h1>
-            <span className="room-label">Lighting configurator</span>
+            <span className="room-label">{t('app.tagline')}</span>
+            <span className="spacer" />
+            {languageSwitch && <LanguageSwitch />}
           </header>
           <RoomSetup
             initial={room}
@@ -87,7 +95,7 @@ export function Configurator({ store, ui, locale, onRestoreSaved, shareLink, foo
         <Planner
           store={store}
           ui={ui}
-          locale={locale}
+          languageSwitch={languageSwitch}
           onNewRoom={() => ui.setState({ phase: 'setup', optionsOpen: false, panelOpen: false })}
           onShare={share}
           shareNotice={shareNotice}

@@ -4,6 +4,9 @@ import { DEFAULT_REFLECTANCE, DEFAULT_ROOM, ROOM_LIMITS, withinRoomLimits } from
 import type { Reflectance, SurfaceName } from '../../core/model/lightingScene';
 import { WALL_NAMES, sameReflectance, targetSurfaces, type SurfaceTarget } from '../../core/model/reflectance';
 import { FinishSelect } from '../planner/FinishSelect';
+import { useI18n } from '../i18n/useI18n';
+import { ENGLISH } from '../i18n/english';
+import type { MessageKey, Translate } from '../i18n/messageTypes';
 
 export interface RoomDimensions {
   width: number;
@@ -13,10 +16,10 @@ export interface RoomDimensions {
 
 type Field = keyof RoomDimensions;
 
-const FIELDS: { key: Field; label: string; hint: string }[] = [
-  { key: 'width', label: 'Width', hint: 'west to east wall' },
-  { key: 'depth', label: 'Depth', hint: 'north to south wall' },
-  { key: 'height', label: 'Height', hint: 'floor to ceiling' },
+const FIELDS: { key: Field; labelKey: MessageKey; hintKey: MessageKey; nameKey: MessageKey }[] = [
+  { key: 'width', labelKey: 'app.width', hintKey: 'app.widthHint', nameKey: 'app.widthName' },
+  { key: 'depth', labelKey: 'app.depth', hintKey: 'app.depthHint', nameKey: 'app.depthName' },
+  { key: 'height', labelKey: 'app.height', hintKey: 'app.heightHint', nameKey: 'app.heightName' },
 ];
 
 /**
@@ -24,13 +27,14 @@ const FIELDS: { key: Field; label: string; hint: string }[] = [
  * form refuses exactly the rooms the model would refuse. Decimal commas are accepted because
  * many shoppers type "2,8".
  */
-export function roomFieldError(key: Field, raw: string): string | null {
+export function roomFieldError(key: Field, raw: string, t: Translate = ENGLISH.t): string | null {
   const text = raw.trim().replace(',', '.');
-  if (text === '') return `Enter the room ${key} in metres.`;
+  const field = t(FIELDS.find((f) => f.key === key)!.nameKey);
+  if (text === '') return t('app.roomFieldEmpty', { field });
   const v = Number(text);
-  if (!Number.isFinite(v)) return `The ${key} "${raw.trim()}" is not a number.`;
+  if (!Number.isFinite(v)) return t('app.roomFieldNotNumber', { field, value: raw.trim() });
   const { min, max } = ROOM_LIMITS[key];
-  if (!withinRoomLimits(key, v)) return `The ${key} must be between ${min} and ${max} m.`;
+  if (!withinRoomLimits(key, v)) return t('app.roomFieldRange', { field, min, max });
   return null;
 }
 
@@ -50,6 +54,7 @@ export interface RoomSetupProps {
 /** The first page (configurator paper §3.2): room dimensions with validation, then the main screen. */
 export function RoomSetup({ initial, onSubmit, onDemo, onResume }: RoomSetupProps) {
   const id = useId();
+  const { t } = useI18n();
   const [values, setValues] = useState<Record<Field, string>>({
     width: String(initial?.width ?? DEFAULT_ROOM.width),
     depth: String(initial?.depth ?? DEFAULT_ROOM.depth),
@@ -61,9 +66,9 @@ export function RoomSetup({ initial, onSubmit, onDemo, onResume }: RoomSetupProp
     setReflectance((r) => ({ ...r, ...Object.fromEntries(targetSurfaces(target).map((s) => [s, f.reflectance])) }));
   const [touched, setTouched] = useState<Record<Field, boolean>>({ width: false, depth: false, height: false });
   const errors: Record<Field, string | null> = {
-    width: roomFieldError('width', values.width),
-    depth: roomFieldError('depth', values.depth),
-    height: roomFieldError('height', values.height),
+    width: roomFieldError('width', values.width, t),
+    depth: roomFieldError('depth', values.depth, t),
+    height: roomFieldError('height', values.height, t),
   };
   const valid = !errors.width && !errors.depth && !errors.height;
 
@@ -81,16 +86,14 @@ export function RoomSetup({ initial, onSubmit, onDemo, onResume }: RoomSetupProp
           onSubmit({ width: num('width'), depth: num('depth'), height: num('height'), reflectance });
         }}
       >
-        <h2 id={`${id}-title`}>Your room</h2>
-        <p>Enter the inside dimensions of the room in metres and pick its finishes. You can place lighting systems in the next step.</p>
+        <h2 id={`${id}-title`}>{t('app.yourRoom')}</h2>
+        <p>{t('app.setupIntro')}</p>
         <div className="setup-fields">
-          {FIELDS.map(({ key, label, hint }) => {
+          {FIELDS.map(({ key, labelKey, hintKey }) => {
             const err = touched[key] ? errors[key] : null;
             return (
               <div className="field" key={key}>
-                <label htmlFor={`${id}-${key}`}>
-                  {label} (m)
-                </label>
+                <label htmlFor={`${id}-${key}`}>{t('app.fieldInMetres', { field: t(labelKey) })}</label>
                 <input
                   id={`${id}-${key}`}
                   name={key}
@@ -106,31 +109,31 @@ export function RoomSetup({ initial, onSubmit, onDemo, onResume }: RoomSetupProp
                   }}
                 />
                 <span id={`${id}-${key}-msg`} className={err ? 'error' : 'empty-note'} role={err ? 'alert' : undefined}>
-                  {err ?? hint}
+                  {err ?? t(hintKey)}
                 </span>
               </div>
             );
           })}
         </div>
         <fieldset className="setup-finishes">
-          <legend>Surfaces</legend>
+          <legend>{t('app.surfaces')}</legend>
           <div className="finish-list">
-            <FinishSelect id={`${id}-floor`} label="Floor" use="floor" value={reflectance.floor} finishes={defaultSurfaceFinishes} onChoose={chooseFinish('floor')} testId="setup-finish-floor" />
-            <FinishSelect id={`${id}-walls`} label="Walls" use="walls" value={wallsAlike ? reflectance.north : null} finishes={defaultSurfaceFinishes} onChoose={chooseFinish('walls')} testId="setup-finish-walls" />
-            <FinishSelect id={`${id}-ceiling`} label="Ceiling" use="ceiling" value={reflectance.ceiling} finishes={defaultSurfaceFinishes} onChoose={chooseFinish('ceiling')} testId="setup-finish-ceiling" />
+            <FinishSelect id={`${id}-floor`} label={t('app.floor')} use="floor" value={reflectance.floor} finishes={defaultSurfaceFinishes} onChoose={chooseFinish('floor')} testId="setup-finish-floor" />
+            <FinishSelect id={`${id}-walls`} label={t('app.walls')} use="walls" value={wallsAlike ? reflectance.north : null} finishes={defaultSurfaceFinishes} onChoose={chooseFinish('walls')} testId="setup-finish-walls" />
+            <FinishSelect id={`${id}-ceiling`} label={t('app.ceiling')} use="ceiling" value={reflectance.ceiling} finishes={defaultSurfaceFinishes} onChoose={chooseFinish('ceiling')} testId="setup-finish-ceiling" />
           </div>
         </fieldset>
         <div className="setup-actions">
           <button type="submit" className="btn btn-primary" aria-disabled={!valid || undefined}>
-            Start planning
+            {t('app.startPlanning')}
           </button>
           <button type="button" className="btn" onClick={onDemo}>
-            Try the demo
+            {t('app.tryDemo')}
           </button>
         </div>
         {onResume && (
           <button type="button" className="btn btn-link" onClick={onResume}>
-            Continue your saved configuration
+            {t('app.continueSaved')}
           </button>
         )}
       </form>

@@ -30,4 +30,4 @@ export type MessageKey = { [A in Area]: `${A}.${keyof SourceMessages[A] & string
 /** Values for `{name}` placeholders; numbers are formatted for the locale, `count` also picks the plural. */
 export type MessageParams = Record<string, string | number>;
 
-export type Translate = (key: MessageKey, params?: MessageParams) => string;
+export type Translate = (key: MessageKey, params?: Readonly<MessageParams>) => string;

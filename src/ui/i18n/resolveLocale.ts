@@ -48,3 +48,21 @@ export function localeForLanguage(language: Language, current: string): string {
   }
   return language;
 }
+
+/**
+ * The tag to use when the user picked `language` explicitly (`?lang=de`, a stored choice): the
+ * browser's own tag for that language when it has one, so the region's formatting survives
+ * ('de' with navigator.languages ['de-CH', 'en'] → 'de-CH'), else the language alone.
+ */
+export function preferLanguage(language: Language, browserTags: readonly string[] | null | undefined): string {
+  for (const tag of browserTags ?? []) {
+    const c = typeof tag === 'string' ? canonical(tag) : null;
+    if (c && c.split('-')[0].toLowerCase() === language) return c;
+  }
+  return language;
+}
+
+/** Whether Intl accepts `tag` as a BCP 47 language tag. */
+export function isLocaleTag(tag: string): boolean {
+  return canonical(tag) !== null;
+}

@@ -1,36 +1,39 @@
 import type { BillOfMaterials } from '../../core/model/billOfMaterials';
 import type { InstallationNeeds } from '../../core/model/installationNeeds';
 import { formatWatts } from '../../core/model/feedLoads';
+import { useI18n } from '../i18n/useI18n';
 import { formatMoney } from './formatMoney';
 
 export interface BomPanelProps {
   bom: BillOfMaterials;
+  /** Formats prices for this locale instead of the UI's (a panel rendered on its own, in a test); the texts stay the UI language's. */
   locale?: string;
   /** The installer's summary before the cart hand-off (feeds, ceiling fixings, load); omitted: not shown. */
   needs?: InstallationNeeds;
 }
 
 /** Live bill of materials with prices (the configurator paper's planned live price): article, count, unit price, total. */
-export function BomPanel({ bom, locale, needs }: BomPanelProps) {
-  const money = (x: number) => formatMoney(x, bom.currency, locale);
+export function BomPanel({ bom, needs, locale }: BomPanelProps) {
+  const { t, format } = useI18n();
+  const money = (x: number) => (locale ? formatMoney(x, bom.currency, locale) : format.money(x, bom.currency));
   return (
     <section className="panel-section" aria-labelledby="bom-title" data-testid="bom">
-      <h2 id="bom-title">Bill of materials</h2>
+      <h2 id="bom-title">{t('planner.bomTitle')}</h2>
       {bom.lines.length === 0 ? (
-        <p className="empty-note">Nothing placed yet. Choose a preset above.</p>
+        <p className="empty-note">{t('planner.bomEmpty')}</p>
       ) : (
         <table className="bom-table">
           <thead>
             <tr>
-              <th scope="col">Article</th>
+              <th scope="col">{t('planner.bomArticle')}</th>
               <th scope="col" className="num">
-                Qty
+                {t('planner.bomQuantity')}
               </th>
               <th scope="col" className="num">
-                Unit
+                {t('planner.bomUnitPrice')}
               </th>
               <th scope="col" className="num">
-                Total
+                {t('planner.bomLineTotal')}
               </th>
             </tr>
           </thead>
@@ -41,7 +44,7 @@ export function BomPanel({ bom, locale, needs }: BomPanelProps) {
                   <div>{l.name}</div>
                   <div className="preset-detail">{l.article}</div>
                 </td>
-                <td className="num">{l.count}</td>
+                <td className="num">{format.number(l.count)}</td>
                 <td className="num">{money(l.unitPrice)}</td>
                 <td className="num">{money(l.total)}</td>
               </tr>
@@ -49,7 +52,7 @@ export function BomPanel({ bom, locale, needs }: BomPanelProps) {
           </tbody>
           <tfoot>
             <tr>
-              <td colSpan={3}>Total ({bom.currency})</td>
+              <td colSpan={3}>{t('planner.bomTotal', { currency: bom.currency })}</td>
               <td className="num" data-testid="bom-total">
                 {money(bom.total)}
               </td>
@@ -59,7 +62,7 @@ export function BomPanel({ bom, locale, needs }: BomPanelProps) {
       )}
       {bom.lines.length > 0 && (
         <p className="preset-detail">
-          {Math.round(bom.watts * 10) / 10} W, {Math.round(bom.lumens)} lm in total
+          {t('planner.bomPowerAndFlux', { watts: Math.round(bom.watts * 10) / 10, lumens: Math.round(bom.lumens) })}
         </p>
       )}
       {needs && needs.systems.length > 0 && <InstallationNeedsSummary needs={needs} />}
@@ -69,17 +72,19 @@ export function BomPanel({ bom, locale, needs }: BomPanelProps) {
 
 /** "Installation needs": what the electrician and the fitter must know, per system and in total. */
 function InstallationNeedsSummary({ needs }: { needs: InstallationNeeds }) {
+  const { t } = useI18n();
+  const watts = (w: number) => Number(formatWatts(w));
   return (
     <div data-testid="installation-needs">
-      <h3>Installation needs</h3>
+      <h3>{t('planner.installationNeeds')}</h3>
       <p className="preset-detail" data-testid="installation-totals">
-        {needs.feeds} power feed{needs.feeds === 1 ? '' : 's'}, {needs.ceilingFixings} ceiling fixing{needs.ceilingFixings === 1 ? '' : 's'}, {formatWatts(needs.totalLoad)} W in total
+        {t('planner.installationFeeds', { count: needs.feeds })}, {t('planner.installationFixings', { count: needs.ceilingFixings })}, {t('planner.installationLoad', { watts: watts(needs.totalLoad) })}
       </p>
       <ul className="installation-needs">
         {needs.systems.map((s, i) => (
           <li key={s.systemId}>
-            System {i + 1} ({s.mounting === 'surface' ? 'on the ceiling' : 'suspended'}, {s.ceilingFixings} fixings):{' '}
-            {s.feeds.map((f) => `${f.label}: ${formatWatts(f.load)} / ${formatWatts(f.capacity)} W (${f.driver.name}, ${f.driver.output})`).join('; ')}
+            {t(s.mounting === 'surface' ? 'planner.installationSystemSurface' : 'planner.installationSystemSuspended', { n: i + 1, count: s.ceilingFixings })}{' '}
+            {s.feeds.map((f, k) => t('planner.installationFeed', { n: k + 1, load: watts(f.load), capacity: watts(f.capacity), driver: f.driver.name, output: f.driver.output })).join('; ')}
           </li>
         ))}
       </ul>

@@ -5,6 +5,7 @@ import type { ActionGate } from './actionGate';
 import { CommitField } from './CommitField';
 import { GatedButton } from './GatedButton';
 import { OptionChips } from './OptionChips';
+import { useI18n } from '../i18n/useI18n';
 
 /**
  * A selected system's adjustable shape (docs/planner.md, "Connector angles and fixing points"):
@@ -19,50 +20,50 @@ export function ChainShapeOptions({ system, catalog, gate }: { system: LightSyst
     const con = catalog.connectors.find((c) => c.id === j.connector);
     return con?.flex ? [{ joint: k, turn: j.turn, con, step: con.flex.step, max: con.flex.maxAngle }] : [];
   });
+  const { t, format } = useI18n();
   const points = suspensionCoordinates(system, catalog);
-  const what = system.mounting === 'surface' ? 'Clip' : 'Suspension';
+  const surface = system.mounting === 'surface';
   return (
     <>
       {flexJoints.map(({ joint, turn, con, step, max }) => (
         <div className="field" key={joint} data-testid={`joint-angle-${joint}`}>
-          <h3>
-            Connector {joint + 1} angle (°, left +)
-          </h3>
-          <CommitField label={`Connector ${joint + 1} angle (°)`} value={turn} decimals={0} onCommit={(degrees) => gate.attempt('setJointTurn', { systemId, joint, degrees })} onRefused={gate.explain} testId={`joint-angle-field-${joint}`} />
-          <OptionChips title={`Connector ${joint + 1} angle`}>
-            <GatedButton gate={gate} action="setJointTurn" params={{ systemId, joint, degrees: turn + step }} label={`Turn connector ${joint + 1} left ${step}°`} testId={`joint-left-${joint}`}>
+          <h3>{t('options.connectorAngleHeading', { n: joint + 1 })}</h3>
+          <CommitField label={t('options.connectorAngleField', { n: joint + 1 })} value={turn} decimals={0} onCommit={(degrees) => gate.attempt('setJointTurn', { systemId, joint, degrees })} onRefused={gate.explain} testId={`joint-angle-field-${joint}`} />
+          <OptionChips title={t('options.connectorAngle', { n: joint + 1 })}>
+            <GatedButton gate={gate} action="setJointTurn" params={{ systemId, joint, degrees: turn + step }} label={t('options.turnConnectorLeft', { n: joint + 1, step })} testId={`joint-left-${joint}`}>
               ↰ {step}°
             </GatedButton>
-            <GatedButton gate={gate} action="setJointTurn" params={{ systemId, joint, degrees: 0 }} label={`Connector ${joint + 1} straight`} current={turn === 0} testId={`joint-straight-${joint}`}>
+            <GatedButton gate={gate} action="setJointTurn" params={{ systemId, joint, degrees: 0 }} label={t('options.connectorStraight', { n: joint + 1 })} current={turn === 0} testId={`joint-straight-${joint}`}>
               0°
             </GatedButton>
-            <GatedButton gate={gate} action="setJointTurn" params={{ systemId, joint, degrees: turn - step }} label={`Turn connector ${joint + 1} right ${step}°`} testId={`joint-right-${joint}`}>
+            <GatedButton gate={gate} action="setJointTurn" params={{ systemId, joint, degrees: turn - step }} label={t('options.turnConnectorRight', { n: joint + 1, step })} testId={`joint-right-${joint}`}>
               ↱ {step}°
             </GatedButton>
           </OptionChips>
           <span className="empty-note">
-            {con.name}: ±{max}° in steps of {step}°
+            {t('options.connectorRange', { name: con.name, max, step })}
           </span>
         </div>
       ))}
       <div className="field" data-testid="fixing-points">
-        <h3>{what} points along the chain (m)</h3>
+        <h3>{t(surface ? 'options.clipPointsHeading' : 'options.suspensionPointsHeading')}</h3>
         {points.map((p, index) => (
           <p key={index} className="fixing-point" data-testid={`fixing-${index}`}>
-            {what} {index + 1}:{' '}
+            {t(surface ? 'options.clipN' : 'options.suspensionN', { n: index + 1 })}{' '}
             {p.joint !== null ? (
               <span className="preset-detail">
-                {p.s.toFixed(2)} m, at connector {p.joint + 1} (a connector is always a support)
+                {t('options.fixingAtConnector', { position: format.metres(p.s), n: p.joint + 1 })}
               </span>
             ) : (
-              <CommitField label={`${what} ${index + 1} position (m)`} value={p.s} onCommit={(s) => gate.attempt('moveFixingPoint', { systemId, index, s })} onRefused={gate.explain} testId={`fixing-field-${index}`} />
+              <CommitField label={t(surface ? 'options.clipPosition' : 'options.suspensionPosition', { n: index + 1 })} value={p.s} onCommit={(s) => gate.attempt('moveFixingPoint', { systemId, index, s })} onRefused={gate.explain} testId={`fixing-field-${index}`} />
             )}
           </p>
         ))}
         <span className="empty-note">
-          {system.fixings ? 'moved by hand; a change to the chain that breaks the rules puts them back' : 'placed by the rules'}: at most{' '}
-          {system.mounting === 'surface' ? catalog.surfaceMount.spacing : catalog.suspension.maxSpacing} m apart, ends overhang at most{' '}
-          {system.mounting === 'surface' ? catalog.surfaceMount.maxOverhang : catalog.suspension.maxOverhang} m
+          {t(system.fixings ? 'options.fixingsByHand' : 'options.fixingsByRules', {
+            spacing: surface ? catalog.surfaceMount.spacing : catalog.suspension.maxSpacing,
+            overhang: surface ? catalog.surfaceMount.maxOverhang : catalog.suspension.maxOverhang,
+          })}
         </span>
       </div>
     </>

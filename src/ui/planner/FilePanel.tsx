@@ -8,6 +8,7 @@ import { downloadRadiance } from './downloadRadiance';
 import { downloadText } from './downloadText';
 import { readSceneFile } from './readSceneFile';
 import { sceneFileName } from './sceneFileName';
+import { useI18n } from '../i18n/useI18n';
 
 export interface FilePanelProps {
   store: ConfiguratorStore;
@@ -24,21 +25,22 @@ export interface FilePanelProps {
  * long message about a file can be read in full).
  */
 export function FilePanel({ store, ui, loadPhotometry }: FilePanelProps) {
+  const { t } = useI18n();
   const save = () => {
     const { config, catalog } = store.getState();
     const name = sceneFileName(config);
     downloadText(name, `${serializeConfiguration(config, catalog)}\n`);
-    showStatus(ui, `Saved ${name}`);
+    showStatus(ui, t('files.saved', { name }));
   };
 
   const radiance = async () => {
     const { config, catalog } = store.getState();
     try {
       const name = await downloadRadiance(config, catalog, loadPhotometry);
-      showStatus(ui, `Saved ${name} (unpack, then sh render.sh)`);
+      showStatus(ui, t('files.savedRadiance', { name }));
     } catch (err) {
       // The configuration is untouched; the message names the file that could not be read.
-      ui.setState({ banner: { text: `The Radiance export failed: ${err instanceof Error ? err.message : String(err)}`, canRestore: false } });
+      ui.setState({ banner: { text: t('files.radianceFailed', { problem: err instanceof Error ? err.message : String(err) }), canRestore: false } });
     }
   };
 
@@ -51,11 +53,11 @@ export function FilePanel({ store, ui, loadPhotometry }: FilePanelProps) {
     try {
       const config = await readSceneFile(file, store.getState().catalog);
       const r = store.getState().load(config);
-      if (!r.ok) throw new InputError(`“${file.name}” cannot be opened: ${r.reason}`);
+      if (!r.ok) throw new InputError(t('files.cannotOpen', { name: file.name, problem: r.reason }));
       ui.setState({ banner: null, optionsOpen: false, panelOpen: false });
-      showStatus(ui, `Opened ${file.name}`);
+      showStatus(ui, t('files.opened', { name: file.name }));
     } catch (err) {
-      const text = err instanceof InputError ? err.message : `“${file.name}” could not be opened (${err instanceof Error ? err.message : String(err)})`;
+      const text = err instanceof InputError ? err.message : t('files.couldNotOpen', { name: file.name, problem: err instanceof Error ? err.message : String(err) });
       ui.setState({ banner: { text, canRestore: false } });
     }
   };
@@ -63,7 +65,7 @@ export function FilePanel({ store, ui, loadPhotometry }: FilePanelProps) {
   return (
     <div className="setup-actions file-actions">
       <button type="button" className="btn" onClick={save} data-testid="save-file">
-        Save file
+        {t('files.saveFile')}
       </button>
       {/* A label is the one element that opens a file picker on click or tap without script;
           the input inside stays focusable (visually hidden, not display:none) for the keyboard. */}
@@ -75,10 +77,10 @@ export function FilePanel({ store, ui, loadPhotometry }: FilePanelProps) {
           onChange={(e) => void open(e)}
           data-testid="open-file"
         />
-        Open file…
+        {t('files.openFile')}
       </label>
-      <button type="button" className="btn btn-export" onClick={() => void radiance()} data-testid="download-radiance" title="A folder for the Radiance renderer: scene, luminaires, views, render.sh">
-        Download for Radiance
+      <button type="button" className="btn btn-export" onClick={() => void radiance()} data-testid="download-radiance" title={t('files.radianceTitle')}>
+        {t('files.downloadRadiance')}
       </button>
     </div>
   );

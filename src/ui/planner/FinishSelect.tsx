@@ -2,6 +2,8 @@ import type { Reflectance } from '../../core/model/lightingScene';
 import { luminousReflectance } from '../../core/model/reflectance';
 import { finishesFor, matchFinish, type FinishUse, type SurfaceFinish } from '../../core/model/surfaceFinish';
 import { finishColour } from './finishColour';
+import { useI18n } from '../i18n/useI18n';
+import { localName } from '../i18n/localName';
 
 export interface FinishSelectProps {
   id: string;
@@ -24,6 +26,8 @@ const CURRENT = '';
  * (an older file, the embedding API) shows as "Custom" with its luminous reflectance.
  */
 export function FinishSelect({ id, label, use, value, finishes, onChoose, disabledReason, testId }: FinishSelectProps) {
+  const { t, format, language } = useI18n();
+  const rho = (r: Reflectance) => format.number(luminousReflectance(r), { minimumFractionDigits: 2, maximumFractionDigits: 2 });
   const offered = finishesFor(finishes, use);
   const current = value === null ? null : matchFinish(offered, value);
   const swatch = value === null ? 'repeating-linear-gradient(45deg, #ffffff 0 4px, #c8ccd3 4px 8px)' : finishColour(value, finishes);
@@ -42,14 +46,14 @@ export function FinishSelect({ id, label, use, value, finishes, onChoose, disabl
       >
         {!current && (
           <option value={CURRENT} disabled>
-            {value === null ? 'Mixed (per wall)' : `Custom (ρ ${luminousReflectance(value).toFixed(2)})`}
+            {value === null ? t('options.finishMixed') : t('options.finishCustom', { rho: rho(value) })}
           </option>
         )}
         {offered.map((f) => {
           const reason = disabledReason?.(f) ?? null;
           return (
             <option key={f.id} value={f.id} disabled={reason !== null} title={reason ?? undefined}>
-              {f.name} (ρ {luminousReflectance(f.reflectance).toFixed(2)})
+              {t('options.finishOption', { name: localName(f, language), rho: rho(f.reflectance) })}
             </option>
           );
         })}

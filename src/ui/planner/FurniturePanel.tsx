@@ -3,18 +3,22 @@ import { FURNITURE_LIBRARY, type FurnitureItem } from '../../core/model/furnitur
 import { ActionButton } from './ActionButton';
 import type { ActionGate } from './actionGate';
 import { libraryItemOutline } from './objectShapes';
+import { useI18n } from '../i18n/useI18n';
+import { ENGLISH } from '../i18n/english';
+import type { Format } from '../i18n/createFormat';
+import { furnitureName } from '../i18n/catalogNames';
 
 /** The drag-and-drop data type carrying a library item id from the panel onto the plan. */
 export const FURNITURE_DRAG_TYPE = 'application/x-luxbox-furniture';
 
-/** Centimetres, as furniture is sized in shops: 1.8 m → "180". */
-export function centimetres(metres: number): string {
-  return String(Math.round(metres * 1000) / 10);
+/** Centimetres, as furniture is sized in shops: 1.8 m → "180" (in the locale: 0.455 m → "45,5" in German). */
+export function centimetres(metres: number, format: Pick<Format, 'number'> = ENGLISH.format): string {
+  return format.number(Math.round(metres * 1000) / 10, { useGrouping: false });
 }
 
 /** "180 × 90 × 75 cm" (width × depth × height) for an item at a scale. */
-export function itemDimensions(size: { width: number; depth: number; height: number }, scale = 1): string {
-  return `${centimetres(size.width * scale)} × ${centimetres(size.depth * scale)} × ${centimetres(size.height * scale)} cm`;
+export function itemDimensions(size: { width: number; depth: number; height: number }, scale = 1, format: Pick<Format, 'number'> = ENGLISH.format): string {
+  return `${centimetres(size.width * scale, format)} × ${centimetres(size.depth * scale, format)} × ${centimetres(size.height * scale, format)} cm`;
 }
 
 /**
@@ -47,9 +51,10 @@ export interface FurniturePanelProps {
  * Disabled, with the model's reason, where it cannot fit in this room at all.
  */
 export function FurniturePanel({ gate, onAdd, children }: FurniturePanelProps) {
+  const { t, format } = useI18n();
   return (
     <section className="panel-section" aria-labelledby="furniture-title" data-testid="furniture-panel">
-      <h2 id="furniture-title">Furniture</h2>
+      <h2 id="furniture-title">{t('planner.furniture')}</h2>
       <ul className="furniture-grid">
         {FURNITURE_LIBRARY.map((item) => (
           <li
@@ -61,7 +66,7 @@ export function FurniturePanel({ gate, onAdd, children }: FurniturePanelProps) {
             }}
           >
             <ActionButton
-              label={`Add ${item.name}, ${itemDimensions(item)}`}
+              label={t('planner.addFurniture', { name: furnitureName(t, item), size: itemDimensions(item, 1, format) })}
               disabledReason={gate.reason('addObject', { source: { kind: 'library', item: item.id } })}
               onPress={() => onAdd(item.id)}
               onDisabledPress={gate.explain}
@@ -69,8 +74,8 @@ export function FurniturePanel({ gate, onAdd, children }: FurniturePanelProps) {
             >
               <ItemThumbnail item={item} />
               <span>
-                <span className="preset-name">{item.name}</span>
-                <span className="preset-detail">{itemDimensions(item)}</span>
+                <span className="preset-name">{furnitureName(t, item)}</span>
+                <span className="preset-detail">{itemDimensions(item, 1, format)}</span>
               </span>
             </ActionButton>
           </li>

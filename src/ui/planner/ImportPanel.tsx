@@ -4,11 +4,13 @@ import { MESH_UNITS, type MeshUnits } from '../../core/model/configuration';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
 import type { ImportedMesh, MeshFile } from '../../engines/meshImport/importedMesh';
 import { itemDimensions } from './FurniturePanel';
+import { useI18n } from '../i18n/useI18n';
+import type { MessageKey } from '../i18n/messageTypes';
 
 /** What the file picker offers: an OBJ with its MTL (picked together), a glTF (with its .bin buffers) or a GLB. */
 export const IMPORT_ACCEPT = '.obj,.mtl,.gltf,.glb,.bin';
 
-const UNIT_NAMES: Record<MeshUnits, string> = { m: 'metres (m)', cm: 'centimetres (cm)', mm: 'millimetres (mm)', in: 'inches (in)' };
+const UNIT_NAMES: Record<MeshUnits, MessageKey> = { m: 'files.unitMetres', cm: 'files.unitCentimetres', mm: 'files.unitMillimetres', in: 'files.unitInches' };
 
 /**
  * Reads the picked files with the mesh importer (src/engines/meshImport), loaded on first use:
@@ -32,6 +34,7 @@ export interface ImportPanelProps {
  * until the user adds the model.
  */
 export function ImportPanel({ onAdd }: ImportPanelProps) {
+  const { t, format } = useI18n();
   const [files, setFiles] = useState<MeshFile[] | null>(null);
   const [model, setModel] = useState<ImportedMesh | null>(null);
   const [error, setError] = useState<string | null>(null);
@@ -51,7 +54,7 @@ export function ImportPanel({ onAdd }: ImportPanelProps) {
       if (mine !== seq.current) return;
       setModel(null);
       const names = picked.map((f) => f.name).join(', ');
-      setError(err instanceof InputError ? err.message : `${names}: could not be read (${err instanceof Error ? err.message : String(err)})`);
+      setError(err instanceof InputError ? err.message : t('files.modelUnreadable', { names, problem: err instanceof Error ? err.message : String(err) }));
     } finally {
       if (mine === seq.current) setBusy(false);
     }
@@ -79,7 +82,7 @@ export function ImportPanel({ onAdd }: ImportPanelProps) {
   const add = () => {
     if (!model) return;
     const refused = onAdd(model.name, model.mesh, model.units);
-    if (refused) setError(`${model.name} cannot be added: ${refused}`);
+    if (refused) setError(t('files.modelRefused', { name: model.name, reason: refused }));
     else cancel();
   };
 
@@ -88,10 +91,14 @@ export function ImportPanel({ onAdd }: ImportPanelProps) {
     <div className="import-model" data-testid="import-panel">
       <label className="btn import-file-button">
         <input type="file" multiple accept={IMPORT_ACCEPT} className="file-input" onChange={(e) => void pick(e)} data-testid="import-file" />
-        Import model…
+        {t('files.importModel')}
       </label>
-      <p className="empty-note">An .obj with its .mtl (pick both), a .gltf or a .glb.</p>
-      {busy && <p className="empty-note" role="status">Reading the model…</p>}
+      <p className="empty-note">{t('files.importHint')}</p>
+      {busy && (
+        <p className="empty-note" role="status">
+          {t('files.readingModel')}
+        </p>
+      )}
       {error && (
         <p className="import-error" role="alert" data-testid="import-error">
           {error}
@@ -101,21 +108,20 @@ export function ImportPanel({ onAdd }: ImportPanelProps) {
         <div className="import-preview" data-testid="import-preview">
           <p className="preset-name">{model.name}</p>
           <p className="preset-detail" data-testid="import-triangles">
-            {model.triangleCount.toLocaleString('en')} triangles · {itemDimensions({ width: b.max[0] - b.min[0], depth: b.max[2] - b.min[2], height: b.max[1] - b.min[1] })}
+            {t('files.triangles', { count: model.triangleCount })} · {itemDimensions({ width: b.max[0] - b.min[0], depth: b.max[2] - b.min[2], height: b.max[1] - b.min[1] }, 1, format)}
           </p>
           <div className="field">
-            <label htmlFor="import-units">Units of the file (detected: {model.detectedUnits})</label>
+            <label htmlFor="import-units">{t('files.unitsOfFile', { detected: model.detectedUnits })}</label>
             <select id="import-units" value={model.units} data-testid="import-units" onChange={(e) => void read(files, e.target.value as MeshUnits)}>
               {MESH_UNITS.map((u) => (
                 <option key={u} value={u}>
-                  {UNIT_NAMES[u]}
-                  {u === model.detectedUnits ? ' — detected' : ''}
+                  {u === model.detectedUnits ? t('files.unitDetected', { unit: t(UNIT_NAMES[u]) }) : t(UNIT_NAMES[u])}
                 </option>
               ))}
             </select>
           </div>
           {model.warnings.length > 0 && (
-            <ul className="import-warnings" aria-label="Import warnings">
+            <ul className="import-warnings" aria-label={t('files.importWarnings')}>
               {model.warnings.map((w) => (
                 <li key={w}>{w}</li>
               ))}
@@ -123,10 +129,10 @@ export function ImportPanel({ onAdd }: ImportPanelProps) {
           )}
           <div className="setup-actions">
             <button type="button" className="btn btn-primary" onClick={add} disabled={busy} data-testid="import-add">
-              Add to room
+              {t('files.addToRoom')}
             </button>
             <button type="button" className="btn" onClick={cancel}>
-              Cancel
+              {t('common.cancel')}
             </button>
           </div>
         </div>

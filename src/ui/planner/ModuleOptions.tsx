@@ -11,6 +11,8 @@ import { OptionsSection } from './OptionsSection';
 import { AimOptions } from './AimOptions';
 import type { AimAtMode } from '../shared/aimAtMode';
 import { FilterPicker } from './FilterPicker';
+import { useI18n } from '../i18n/useI18n';
+import { localLabel, localName } from '../i18n/localName';
 
 /** Dimming levels offered as touch-sized choices (the 3D view relights instantly on a change). */
 export const DIMMING_STEPS = [0.25, 0.5, 0.75, 1] as const;
@@ -34,40 +36,41 @@ export interface ModuleOptionsProps {
 
 /** A selected module's settings (configurator paper, fig. 10, 11): type, beam, photometry notes, colour temperature, dimming, remove. */
 export function ModuleOptions({ module, catalog, gate, onClose, footprints, aimMode }: ModuleOptionsProps) {
-  const type = catalog.moduleTypes.find((t) => t.id === module.type);
+  const { t, format, language } = useI18n();
+  const type = catalog.moduleTypes.find((m) => m.id === module.type);
   const photometryPath = modulePhotometryPath(module, catalog);
   const moduleId = module.id;
   return (
-    <OptionsSection title={`Module: ${type?.name ?? module.type}`} onClose={onClose}>
-      <OptionChips title="Module type">
-        {catalog.moduleTypes.map((t) => (
-          <GatedButton key={t.id} gate={gate} action="setModuleType" params={{ moduleId, type: t.id }} label={t.name} current={t.id === module.type} testId={`type-${t.id}`} />
+    <OptionsSection title={t('options.moduleTitle', { name: type ? localName(type, language) : module.type })} onClose={onClose}>
+      <OptionChips title={t('options.moduleType')}>
+        {catalog.moduleTypes.map((m) => (
+          <GatedButton key={m.id} gate={gate} action="setModuleType" params={{ moduleId, type: m.id }} label={localName(m, language)} current={m.id === module.type} testId={`type-${m.id}`} />
         ))}
       </OptionChips>
       {type && type.beams.length > 0 && (
-        <OptionChips title="Beam">
+        <OptionChips title={t('options.beam')}>
           {type.beams.map((b) => (
-            <GatedButton key={b.id} gate={gate} action="setModuleBeam" params={{ moduleId, beam: b.id }} label={b.label} current={b.id === module.beam} testId={`beam-${b.id}`} />
+            <GatedButton key={b.id} gate={gate} action="setModuleBeam" params={{ moduleId, beam: b.id }} label={localLabel(b, language)} current={b.id === module.beam} testId={`beam-${b.id}`} />
           ))}
         </OptionChips>
       )}
       {footprints && photometryPath && <ModulePhotometryNote source={footprints} path={photometryPath} />}
       {type && (
-        <OptionChips title="Colour temperature">
+        <OptionChips title={t('options.colourTemperature')}>
           {type.ccts.map((k) => (
-            <GatedButton key={k} gate={gate} action="setModuleCct" params={{ moduleId, cct: k }} label={`${k} K`} current={k === module.cct} testId={`cct-${k}`} />
+            <GatedButton key={k} gate={gate} action="setModuleCct" params={{ moduleId, cct: k }} label={t('options.kelvin', { k: String(k) })} current={k === module.cct} testId={`cct-${k}`} />
           ))}
         </OptionChips>
       )}
-      <OptionChips title="Dimming">
+      <OptionChips title={t('options.dimming')}>
         {DIMMING_STEPS.map((d) => {
           const percent = Math.round(d * 100);
-          return <GatedButton key={d} gate={gate} action="setModuleDimming" params={{ moduleId, dimming: d }} label={`${percent} %`} current={Math.abs(module.dimming - d) < 1e-9} testId={`dimming-${percent}`} />;
+          return <GatedButton key={d} gate={gate} action="setModuleDimming" params={{ moduleId, dimming: d }} label={format.percent(d)} current={Math.abs(module.dimming - d) < 1e-9} testId={`dimming-${percent}`} />;
         })}
       </OptionChips>
       {type?.filterHolder && <FilterPicker module={module} catalog={catalog} gate={gate} />}
       {aimMode && <AimOptions module={module} catalog={catalog} gate={gate} aimMode={aimMode} />}
-      <GatedButton gate={gate} action="removeModule" params={{ moduleId }} label="Remove module" />
+      <GatedButton gate={gate} action="removeModule" params={{ moduleId }} label={t('options.removeModule')} />
     </OptionsSection>
   );
 }

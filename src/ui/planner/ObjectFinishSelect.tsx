@@ -3,6 +3,8 @@ import type { ObjectFinish } from '../../core/model/configuration';
 import type { Rgb } from '../../core/model/lightingScene';
 import { luminousReflectance } from '../../core/model/reflectance';
 import { rgbColour } from './finishColour';
+import { useI18n } from '../i18n/useI18n';
+import { finishName } from '../i18n/catalogNames';
 
 export interface ObjectFinishSelectProps {
   id: string;
@@ -29,6 +31,8 @@ const CUSTOM = '#custom';
  * colour set as RGB (a file, the embedding API) shows as "Custom" with its luminous reflectance.
  */
 export function ObjectFinishSelect({ id, material, value, defaultRgb, defaultName, onChoose, disabledReason, testId }: ObjectFinishSelectProps) {
+  const { t, format } = useI18n();
+  const rho = (r: Rgb | number) => format.number(luminousReflectance(r as Rgb), { minimumFractionDigits: 2, maximumFractionDigits: 2 });
   const custom = Array.isArray(value);
   const current = value === undefined ? DEFAULT : custom ? CUSTOM : (value as string);
   const known = typeof value === 'string' ? findObjectFinish(value) : undefined;
@@ -52,16 +56,16 @@ export function ObjectFinishSelect({ id, material, value, defaultRgb, defaultNam
         }}
       >
         <option value={DEFAULT} {...option(null)}>
-          Default: {defaultName} (ρ {luminousReflectance(defaultRgb).toFixed(2)})
+          {t('options.finishDefault', { name: defaultName, rho: rho(defaultRgb) })}
         </option>
         {custom && (
           <option value={CUSTOM} disabled>
-            Custom (ρ {luminousReflectance(value as Rgb).toFixed(2)})
+            {t('options.finishCustom', { rho: rho(value as Rgb) })}
           </option>
         )}
         {OBJECT_FINISHES.map((f) => (
           <option key={f.id} value={f.id} {...option(f.id)}>
-            {f.name} (ρ {luminousReflectance(f.reflectance).toFixed(2)})
+            {t('options.finishOption', { name: finishName(t, f), rho: rho(f.reflectance) })}
           </option>
         ))}
       </select>

@@ -11,6 +11,8 @@ import { GatedButton } from './GatedButton';
 import { ObjectFinishSelect } from './ObjectFinishSelect';
 import { OptionChips } from './OptionChips';
 import { OptionsSection } from './OptionsSection';
+import { useI18n } from '../i18n/useI18n';
+import { finishName, furnitureName } from '../i18n/catalogNames';
 
 /** Turns offered for a floor object, degrees (positive: counterclockwise seen from above, "left"). */
 const TURNS = [-90, -15, 15, 90] as const;
@@ -21,38 +23,39 @@ const TURNS = [-90, -15, 15, 90] as const;
  * change goes through the action gate: refused choices are disabled with the model's reason.
  */
 export function ObjectOptions({ config, object, gate, onClose }: { config: Configuration; object: RoomObject; gate: ActionGate; onClose: () => void }) {
+  const { t, format } = useI18n();
   const objectId = object.id;
   const mesh = sourceMesh(config, object.source);
   const bounds = useMemo(() => (mesh ? positionBounds(mesh.positions) : null), [mesh]);
   const item = object.source.kind === 'library' ? findFurnitureItem(object.source.item) : undefined;
   const limits = OBJECT_SCALE_LIMITS[object.source.kind];
-  const name = sourceName(config, object.source);
+  const name = item ? furnitureName(t, item) : sourceName(config, object.source);
   const p = object.placement;
   const size = bounds ? { width: bounds.max[0] - bounds.min[0], depth: bounds.max[2] - bounds.min[2], height: bounds.max[1] - bounds.min[1] } : null;
   return (
     <OptionsSection title={name} onClose={onClose}>
       <div className="field">
-        <h3>Size</h3>
+        <h3>{t('options.size')}</h3>
         {size && (
           <p className="object-size" data-testid="object-size">
-            {itemDimensions(size, object.scale)} <span className="empty-note">(width × depth × height)</span>
+            {itemDimensions(size, object.scale, format)} <span className="empty-note">{t('options.sizeOrder')}</span>
           </p>
         )}
-        <CommitField label="Scale (× real size)" value={object.scale} onCommit={(scale) => gate.attempt('resizeObject', { objectId, scale })} onRefused={gate.explain} testId="object-scale" />
+        <CommitField label={t('options.scale')} value={object.scale} onCommit={(scale) => gate.attempt('resizeObject', { objectId, scale })} onRefused={gate.explain} testId="object-scale" />
         <span className="empty-note">
-          {limits.min}–{limits.max} × {object.source.kind === 'library' ? 'its real size' : 'the size it was imported at'}
+          {t(object.source.kind === 'library' ? 'options.scaleRangeLibrary' : 'options.scaleRangeImported', { min: limits.min, max: limits.max })}
         </span>
-        {object.scale !== 1 && <GatedButton gate={gate} action="resizeObject" params={{ objectId, scale: 1 }} label="Back to real size" />}
+        {object.scale !== 1 && <GatedButton gate={gate} action="resizeObject" params={{ objectId, scale: 1 }} label={t('options.backToRealSize')} />}
       </div>
       {p.on === 'floor' ? (
         <>
           <div className="field">
-            <h3>Rotation (°)</h3>
-            <CommitField label="Rotation (°)" value={object.yaw} decimals={0} onCommit={(yaw) => gate.attempt('rotateObject', { objectId, yaw })} onRefused={gate.explain} testId="object-yaw" />
+            <h3>{t('options.rotation')}</h3>
+            <CommitField label={t('options.rotation')} value={object.yaw} decimals={0} onCommit={(yaw) => gate.attempt('rotateObject', { objectId, yaw })} onRefused={gate.explain} testId="object-yaw" />
           </div>
-          <OptionChips title="Rotate">
+          <OptionChips title={t('options.rotate')}>
             {TURNS.map((by) => (
-              <GatedButton key={by} gate={gate} action="rotateObject" params={{ objectId, by }} label={`Rotate ${by > 0 ? 'left' : 'right'} ${Math.abs(by)}°`} testId={`object-rotate-${by}`}>
+              <GatedButton key={by} gate={gate} action="rotateObject" params={{ objectId, by }} label={t(by > 0 ? 'options.rotateLeft' : 'options.rotateRight', { degrees: Math.abs(by) })} testId={`object-rotate-${by}`}>
                 {by > 0 ? '⟲' : '⟳'} {Math.abs(by)}°
               </GatedButton>
             ))}
@@ -60,25 +63,25 @@ export function ObjectOptions({ config, object, gate, onClose }: { config: Confi
         </>
       ) : (
         <>
-          <OptionChips title="Wall">
+          <OptionChips title={t('options.wall')}>
             {WALL_NAMES.map((wall) => {
               const along = wall === 'north' || wall === 'south' ? config.room.width : config.room.depth;
               return (
-                <GatedButton key={wall} gate={gate} action="moveObject" params={{ objectId, placement: { on: 'wall', wall, u: along / 2, y: p.y } }} label={`Hang on the ${wall} wall`} current={p.wall === wall}>
-                  {wall}
+                <GatedButton key={wall} gate={gate} action="moveObject" params={{ objectId, placement: { on: 'wall', wall, u: along / 2, y: p.y } }} label={t('options.hangOnWall', { wall: t(`options.wall_${wall}`) })} current={p.wall === wall}>
+                  {t(`options.wall_${wall}`)}
                 </GatedButton>
               );
             })}
           </OptionChips>
           <div className="field">
-            <h3>Height of its centre above the floor (m)</h3>
-            <CommitField label="Height (m)" value={p.y} onCommit={(y) => gate.attempt('moveObject', { objectId, placement: { ...p, y } })} onRefused={gate.explain} testId="object-height" />
+            <h3>{t('options.centreHeight')}</h3>
+            <CommitField label={t('options.heightField')} value={p.y} onCommit={(y) => gate.attempt('moveObject', { objectId, placement: { ...p, y } })} onRefused={gate.explain} testId="object-height" />
           </div>
         </>
       )}
       {mesh && (
         <div className="field finish-list">
-          <h3>Finishes</h3>
+          <h3>{t('options.finishes')}</h3>
           {mesh.materials.map((m, i) => {
             const defaultId = item?.finishes[m.name];
             const finish = Object.prototype.hasOwnProperty.call(object.finishes, m.name) ? object.finishes[m.name] : undefined;
@@ -89,7 +92,7 @@ export function ObjectOptions({ config, object, gate, onClose }: { config: Confi
                 material={m.name}
                 value={finish}
                 defaultRgb={m.reflectance}
-                defaultName={defaultId ? (findObjectFinish(defaultId)?.name ?? defaultId) : 'colour from the file'}
+                defaultName={defaultId ? finishName(t, findObjectFinish(defaultId) ?? { id: defaultId, name: defaultId }) : t('options.colourFromFile')}
                 onChoose={(f) => gate.run('refinishObject', { objectId, material: m.name, finish: f })}
                 disabledReason={(f) => gate.reason('refinishObject', { objectId, material: m.name, finish: f })}
                 testId={`object-finish-${m.name}`}
@@ -98,7 +101,7 @@ export function ObjectOptions({ config, object, gate, onClose }: { config: Confi
           })}
         </div>
       )}
-      <GatedButton gate={gate} action="removeObject" params={{ objectId }} label={`Remove ${name}`} testId="object-remove" />
+      <GatedButton gate={gate} action="removeObject" params={{ objectId }} label={t('options.removeObject', { name })} testId="object-remove" />
     </OptionsSection>
   );
 }

@@ -13,6 +13,8 @@ import type { DetailLevel } from './detailLevel';
 import type { Selection } from '../../core/store/createConfiguratorStore';
 import type { SelectionPath } from './selection';
 import { type PlanView, type Viewport, worldToScreen } from './viewTransform';
+import { useI18n } from '../i18n/useI18n';
+import { localName } from '../i18n/localName';
 
 export interface PlanControlsProps {
   config: Configuration;
@@ -80,6 +82,7 @@ function visible(p: { sx: number; sy: number }, viewport: Viewport): boolean {
 
 /** Figure 6: red fields move the system (anchor x, z), blue fields set each rail's length. */
 function SystemLevelControls({ system, catalog, view, viewport, gate }: { system: LightSystem; catalog: Catalog; view: PlanView; viewport: Viewport; gate: ActionGate }) {
+  const { t } = useI18n();
   const rails = railPlacements(system, catalog);
   const anchor = worldToScreen(view, { x: system.x, z: system.z });
   const first = rails[0];
@@ -93,14 +96,14 @@ function SystemLevelControls({ system, catalog, view, viewport, gate }: { system
         <Positioned at={movePos} className="move-field" testId={`move-${system.id}`}>
           <span aria-hidden>x</span>
           <CommitField
-            label="System position x (m)"
+            label={t('planner.systemPositionX')}
             value={system.x}
             onCommit={(x) => gate.attempt('moveSystem', { systemId: system.id, x, z: system.z })}
             onRefused={gate.explain}
           />
           <span aria-hidden>z</span>
           <CommitField
-            label="System position z (m)"
+            label={t('planner.systemPositionZ')}
             value={system.z}
             onCommit={(z) => gate.attempt('moveSystem', { systemId: system.id, x: system.x, z })}
             onRefused={gate.explain}
@@ -130,6 +133,7 @@ function SystemLevelControls({ system, catalog, view, viewport, gate }: { system
 
 /** Figures 7–10: plus buttons above rails, distribution options, type switches below modules. */
 function ModuleLevelControls({ system, catalog, view, viewport, selection, gate, onSelect, onOpenOptions }: { system: LightSystem; catalog: Catalog; view: PlanView; viewport: Viewport; selection: SelectionPath; gate: ActionGate; onSelect: (s: Selection) => void; onOpenOptions: () => void }) {
+  const { t, language } = useI18n();
   const rails = railPlacements(system, catalog);
   const modules = modulePlacements(system, catalog);
   const out: ReactNode[] = [];
@@ -140,11 +144,12 @@ function ModuleLevelControls({ system, catalog, view, viewport, selection, gate,
     const plusPos = { sx: mid.sx + nn.nx * NEAR_PX, sy: mid.sy + nn.ny * NEAR_PX };
     // The plus button adds another module like the rail's last one (the catalog's first type on an empty rail).
     const typeId = rail.modules[rail.modules.length - 1]?.type ?? catalog.moduleTypes[0].id;
-    const typeName = catalog.moduleTypes.find((t) => t.id === typeId)?.name ?? typeId;
+    const plusType = catalog.moduleTypes.find((m) => m.id === typeId);
+    const typeName = plusType ? localName(plusType, language) : typeId;
     if (visible(plusPos, viewport)) {
       out.push(
         <Positioned key={`plus-${rail.id}`} at={plusPos} className="plus-button" testId={`plus-${rail.id}`}>
-          <GatedButton gate={gate} action="addModule" params={{ railId: rail.id, type: typeId }} label={`Add ${typeName} to rail ${i + 1}`} onRan={() => onSelect({ kind: 'rail', id: rail.id })}>
+          <GatedButton gate={gate} action="addModule" params={{ railId: rail.id, type: typeId }} label={t('planner.addModuleToRail', { name: typeName, n: i + 1 })} onRan={() => onSelect({ kind: 'rail', id: rail.id })}>
             +
           </GatedButton>
         </Positioned>,
@@ -171,12 +176,13 @@ function ModuleLevelControls({ system, catalog, view, viewport, selection, gate,
     const c = worldToScreen(view, { x: m.centre[0], z: m.centre[1] });
     const pos = { sx: c.sx - nn.nx * NEAR_PX, sy: c.sy - nn.ny * NEAR_PX };
     if (!visible(pos, viewport)) continue;
-    const type = catalog.moduleTypes.find((t) => t.id === module.type);
+    const type = catalog.moduleTypes.find((m) => m.id === module.type);
+    const name = type ? localName(type, language) : module.type;
     const selected = selection.moduleId === module.id;
     out.push(
       <Positioned key={`type-${module.id}`} at={pos} className="type-switch" testId={`module-${module.id}`}>
         <ActionButton
-          label={`Module settings: ${type?.name ?? module.type}, ${module.cct} K`}
+          label={t('planner.moduleSettings', { name, cct: String(module.cct) })}
           pressed={selected}
           disabledReason={null}
           onPress={() => {
@@ -184,7 +190,7 @@ function ModuleLevelControls({ system, catalog, view, viewport, selection, gate,
             onOpenOptions();
           }}
         >
-          {typeShortName(type?.name ?? module.type)}
+          {typeShortName(name)}
         </ActionButton>
       </Positioned>,
     );

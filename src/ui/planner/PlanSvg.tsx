@@ -1,7 +1,7 @@
 import { memo, useId, useSyncExternalStore } from 'react';
 import type { Catalog } from '../../core/model/catalogSchema';
 import type { Configuration, LightSystem } from '../../core/model/configuration';
-import { modulePlacements, rectCorners, systemElements, type PlanRect } from '../../core/model/geometry';
+import { modulePlacements, rectCorners, systemElementTree, type PlanRect } from '../../core/model/geometry';
 import { chainCoordinates, chainPoint, feedCoordinate } from '../../core/model/chainCoordinates';
 import { moduleHeight, suspensionPoints } from '../../core/model/suspensionPoints';
 import { moduleFootprint, modulePhotometryPath } from './moduleFootprint';
@@ -17,6 +17,7 @@ import { objectPolygons } from './objectShapes';
 import { hitStrip, moduleSymbol } from './planHitTest';
 import type { DragPreview } from './PlannerController';
 import type { SelectionPath } from './selection';
+import { useI18n } from '../i18n/useI18n';
 
 export interface PlanSvgProps {
   config: Configuration;
@@ -43,26 +44,27 @@ const points = (r: PlanRect) => {
 };
 
 function SystemShape({ system, catalog, scale, selected, selectedRailId, selectedModuleId, levels }: { system: LightSystem; catalog: Catalog; scale: number; selected: boolean; selectedRailId?: string; selectedModuleId?: string; levels?: ReadonlyMap<string, number> | null }) {
-  const elements = systemElements(system, catalog);
+  const { elements, kinds } = systemElementTree(system, catalog);
   const modules = modulePlacements(system, catalog);
   const railIds = system.rails.map((r) => r.id);
   return (
     <g data-system-id={system.id} className="plan-system" style={{ cursor: 'move' }}>
       {elements.map((rects, i) =>
         rects.map((r, k) => (
-          <polygon key={`hit-${i}-${k}`} points={points(hitStrip(r, scale))} data-rail-id={i % 2 === 0 ? railIds[i / 2] : undefined} fill="transparent" />
+          <polygon key={`hit-${i}-${k}`} points={points(hitStrip(r, scale))} data-rail-id={railIds[kinds[i].rail]} fill="transparent" />
         )),
       )}
       {elements.map((rects, i) => {
-        // Elements alternate rail, connector, rail, ... (systemElements' contract).
-        const isRail = i % 2 === 0;
-        const railId = isRail ? railIds[i / 2] : undefined;
+        // A rail, or the connector node at a rail's end (a T or X: its incoming arm and one arm per branch); a node selects the rail it ends.
+        const isRail = kinds[i].kind === 'rail';
+        const railId = railIds[kinds[i].rail];
         return rects.map((r, k) => (
           <polygon
             key={`${i}-${k}`}
             points={points(r)}
             data-rail-id={railId}
-            fill={isRail ? (railId === selectedRailId ? '#3b7be0' : '#1f5fbf') : '#6b7280'}
+            data-connector-of={isRail ? undefined : railId}
+            fill={isRail ? (railId === selectedRailId ? '#3b7be0' : '#1f5fbf') : railId === selectedRailId ? '#9ca3af' : '#6b7280'}
             stroke={selected ? '#c0392b' : '#0f2f5f'}
             strokeWidth={selected ? 3 : 1}
             vectorEffect="non-scaling-stroke"
@@ -172,6 +174,7 @@ const ObjectShapes = memo(function ObjectShapes({ config, selectedId, drag }: { 
  */
 export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection, drag, footprints, levels }: PlanSvgProps) {
   const clipId = useId();
+  const { t } = useI18n();
   // Re-render when a photometric file arrives.
   useSyncExternalStore(footprints.subscribe, footprints.version);
   // Every optic in use has its measured footprint (or failed to load): tests wait for this.
@@ -193,7 +196,7 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
   for (let i = 1; i * step < depth - 1e-9; i++) gridLines.push({ x1: 0, z1: i * step, x2: width, z2: i * step, major: Math.abs(i * step - Math.round(i * step)) < 1e-9 });
 
   return (
-    <svg className="plan-svg" role="img" aria-label={`Room plan, ${width} by ${depth} m, ${config.systems.length} lighting systems, ${config.objects.length} objects`} data-testid="plan-svg" data-footprints={footprintsReady ? 'ready' : 'loading'}>
+    <svg className="plan-svg" role="img" aria-label={t('planner.planLabel', { width, depth, systems: t('planner.systemCount', { count: config.systems.length }), objects: t('planner.objectCount', { count: config.objects.length }) })} data-testid="plan-svg" data-footprints={footprintsReady ? 'ready' : 'loading'}>
       <defs>
         <clipPath id={clipId}>
           <rect x={0} y={0} width={width} height={depth} />

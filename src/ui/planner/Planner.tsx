@@ -21,7 +21,9 @@ import { LazyView3D } from '../viewer/LazyView3D';
 import { lowMemoryDevice } from '../../engines/view/lowMemoryDevice';
 import { createActionGate } from './actionGate';
 import { detailLevel } from './detailLevel';
-import { formatMoney } from './formatMoney';
+import { useI18n } from '../i18n/useI18n';
+import { LanguageSwitch } from '../i18n/LanguageSwitch';
+import { translateCoded } from '../i18n/translateCoded';
 import { selectionPath } from './selection';
 import { usePlanGestures } from './usePlanGestures';
 import { usePlanView } from './usePlanView';
@@ -35,11 +37,13 @@ import { usePlannerKeys } from './usePlannerKeys';
 import { ScenePanel } from '../scenes/ScenePanel';
 import { scenePlayerFor } from '../scenes/createScenePlayer';
 import { fadeLevels } from '../../core/model/sceneFade';
+import { PlanAnnouncer } from './PlanAnnouncer';
 
 export interface PlannerProps {
   store: ConfiguratorStore;
   ui: UiStore;
-  locale?: string;
+  /** Show the language switch in the top bar. */
+  languageSwitch?: boolean;
   /** Shows the room-setup screen again. */
   onNewRoom: () => void;
   /** Copies a share link; returns the message to show. */
@@ -50,7 +54,8 @@ export interface PlannerProps {
 }
 
 /** The main screen (configurator paper, fig. 6): the plan, side panel with presets and price, bottom bar. */
-export function Planner({ store, ui, locale, onNewRoom, onShare, shareNotice = null, footprints }: PlannerProps) {
+export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare, shareNotice = null, footprints }: PlannerProps) {
+  const { t, format } = useI18n();
   const config = useStore(store, (s) => s.config);
   const catalog = useStore(store, (s) => s.catalog);
   const selection = useStore(store, (s) => s.selection);
@@ -64,10 +69,12 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, shareNotice = n
   const [viewport, setViewport] = useState<Viewport>(DEFAULT_VIEWPORT);
   // Everything the plan does with input lives in the controller; React draws what it holds.
   const controller = useMemo(() => new PlannerController(store, ui), [store, ui]);
+  // Before the command buttons below render: their labels and reasons come in this language.
+  controller.setTranslator(t);
   const view = usePlanView(controller);
   const drag = useSyncExternalStore(controller.subscribe, () => controller.drag);
   const { explain, run } = controller;
-  const gate = useMemo(() => createActionGate(config, catalog, run, explain), [config, catalog, run, explain]);
+  const gate = useMemo(() => createActionGate(config, catalog, run, explain, (r) => translateCoded(t, 'notices', r)), [config, catalog, run, explain, t]);
   const path = selectionPath(config, selection);
   const select = useCallback((sel: Selection) => store.getState().select(sel), [store]);
   const bom = useMemo(() => billOfMaterials(config, catalog), [config, catalog]);
@@ -156,17 +163,17 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, shareNotice = n
 
   return (
     <div className="app-body">
+      <PlanAnnouncer store={store} />
       <div className="app-header">
         <h1>luxbox</h1>
-        <span className="room-label">
-          Room {config.room.width} × {config.room.depth} × {config.room.height} m
-        </span>
+        <span className="room-label">{t('planner.roomSize', { width: config.room.width, depth: config.room.depth, height: config.room.height })}</span>
         <span className="spacer" />
-        <span className="total" data-testid="header-total" aria-label="Total price">
-          {formatMoney(bom.total, bom.currency, locale)}
+        {languageSwitch && <LanguageSwitch />}
+        <span className="total" data-testid="header-total" aria-label={t('planner.totalPrice')}>
+          {format.money(bom.total, bom.currency)}
         </span>
         <button type="button" className="btn panel-toggle" aria-expanded={panelOpen} onClick={() => ui.setState({ panelOpen: !panelOpen })}>
-          {panelOpen ? 'Close' : 'Presets'}
+          {panelOpen ? t('common.close') : t('planner.presetsToggle')}
         </button>
       </div>
       <div className="workspace">
@@ -198,7 +205,7 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, shareNotice = n
               </div>
               {status && (
                 <div className="status-line" role="status" key={status.seq}>
-                  {status.text}
+                  {translateCoded(t, 'notices', status)}
                 </div>
               )}
             </div>
@@ -207,7 +214,7 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, shareNotice = n
           {(mode === '3d' || keep3d) && <LazyView3D store={store} loadPhotometry={footprints.loadPhotometry} onBack={() => ui.setState({ mode: '2d' })} visible={mode === '3d'} />}
           <BottomBar controller={controller} mode={mode} />
         </div>
-        <aside ref={panelRef} className={`side-panel${panelOpen ? ' open' : ''}`} aria-label="Presets and price">
+        <aside ref={panelRef} className={`side-panel${panelOpen ? ' open' : ''}`} aria-label={t('planner.sidePanel')}>
           {optionsOpen && <OptionsPanel config={config} catalog={catalog} path={path} gate={gate} onClose={() => ui.setState({ optionsOpen: false })} footprints={footprints} aimMode={aimAtMode(store)} />}
           <PresetPanel
             catalog={catalog}
@@ -226,24 +233,24 @@ export function Planner({ store, ui, locale, onNewRoom, onShare, shareNotice = n
           </FurniturePanel>
           <ScenePanel store={store} />
           <SurfacesPanel room={config.room} finishes={defaultSurfaceFinishes} gate={gate} />
-          <BomPanel bom={bom} locale={locale} needs={needs} />
+          <BomPanel bom={bom} needs={needs} />
           <section className="panel-section">
             <div className="setup-actions">
               <button type="button" className="btn" onClick={() => explain(onShare())} data-testid="share">
-                Share link
+                {t('planner.shareLink')}
               </button>
               <button type="button" className="btn" onClick={onNewRoom}>
-                New room
+                {t('planner.newRoom')}
               </button>
             </div>
             <FilePanel store={store} ui={ui} loadPhotometry={footprints.loadPhotometry} />
             {shareLink && (
               <div className="field" style={{ marginTop: 8 }}>
-                <label htmlFor="share-link">Link to this configuration</label>
+                <label htmlFor="share-link">{t('planner.linkToConfiguration')}</label>
                 <input id="share-link" readOnly value={shareLink} onFocus={(e) => e.target.select()} data-testid="share-link" />
                 {shareNotice && (
                   <p className="share-notice" role="note" data-testid="share-notice">
-                    ⚠ {shareNotice.charAt(0).toUpperCase() + shareNotice.slice(1)}.
+                    ⚠ {shareNotice}
                   </p>
                 )}
               </div>

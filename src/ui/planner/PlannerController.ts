@@ -28,6 +28,8 @@ import {
   worldToScreen,
   zoomAt,
 } from './viewTransform';
+import { ENGLISH } from '../i18n/english';
+import type { Translate } from '../i18n/messageTypes';
 
 /**
  * A system or an object being dragged: drawn offset by `delta` (metres) until dropped; `invalid`
@@ -109,12 +111,23 @@ export class PlannerController implements CommandContext {
   private gesture: Gesture | null = null;
   private fittedFor: string | null = null;
   private readonly listeners = new Set<(e: PlannerEvent) => void>();
+  private translate: Translate = ENGLISH.t;
 
   constructor(store: ConfiguratorStore, ui: UiStore, viewport: Viewport = DEFAULT_VIEWPORT) {
     this.store = store;
     this.ui = ui;
     this.currentViewport = viewport;
     this.currentView = fitRoom(store.getState().config.room, viewport);
+  }
+
+  /** The UI language's texts for the commands' labels and reasons (CommandContext.tr); English until the planner sets it. */
+  get tr(): Translate {
+    return this.translate;
+  }
+
+  /** Called by the planner on every render, so the command buttons rendered after it use the current language. */
+  setTranslator(t: Translate): void {
+    this.translate = t;
   }
 
   /** The view the plan is heading to (changed through setView, gestures and commands). */
@@ -165,9 +178,14 @@ export class PlannerController implements CommandContext {
 
   explain = (reason: string): void => showStatus(this.ui, reason);
 
+  /** A refusal in the status line with its code, so the planner shows it in the UI language (docs/i18n.md). */
+  private explainRefusal(r: { reason: string; code?: string; params?: Readonly<Record<string, string | number>> }): void {
+    showStatus(this.ui, r.reason, r.code ? { code: r.code, params: r.params ? { ...r.params } : undefined } : undefined);
+  }
+
   run = (name: string, params: unknown): void => {
     const r = this.store.getState().dispatch(name, params);
-    if (!r.ok) this.explain(r.reason);
+    if (!r.ok) this.explainRefusal(r);
   };
 
   /** Runs a command of the table by id (or explains why it may not run). */
@@ -336,7 +354,7 @@ export class PlannerController implements CommandContext {
       this.setDrag({ fixingIndex: g.index, preview, s, invalid: false });
       return;
     }
-    if (outcome.reason !== g.lastReason) this.explain(outcome.reason);
+    if (outcome.reason !== g.lastReason) this.explainRefusal(outcome);
     this.gesture = { ...g, lastReason: outcome.reason };
     const kept = this.drag && 'fixingIndex' in this.drag ? this.drag.preview : this.systemById(g.systemId);
     if (kept) this.setDrag({ fixingIndex: g.index, preview: kept, s: g.lastValid, invalid: true });
@@ -371,7 +389,7 @@ export class PlannerController implements CommandContext {
       this.setDrag({ moduleId: g.id, preview, offset: on.offset, invalid: false });
       return;
     }
-    if (outcome.reason !== g.lastReason) this.explain(outcome.reason);
+    if (outcome.reason !== g.lastReason) this.explainRefusal(outcome);
     this.gesture = { ...g, lastReason: outcome.reason };
     const kept = this.drag && 'moduleId' in this.drag ? this.drag.preview : systemOf(config);
     if (kept) this.setDrag({ moduleId: g.id, preview: kept, offset: g.lastValid, invalid: true });
@@ -423,7 +441,7 @@ export class PlannerController implements CommandContext {
    */
   addLibraryItem(itemId: string, at?: ScreenPoint): string | null {
     const item = findFurnitureItem(itemId);
-    if (!item) return this.refused(`no furniture item '${itemId}' in the library`);
+    if (!item) return this.refused({ reason: `no furniture item '${itemId}' in the library` });
     const p = at ? this.insideRoom(screenToWorld(this.view, at)) : this.visibleCentre();
     const { room } = this.store.getState().config;
     const placement: ObjectPlacement = item.mount === 'wall' ? wallPlacementNear(room, p, Math.min(item.hangHeight ?? room.height / 2, room.height - item.height / 2)) : { on: 'floor', x: p.x, z: p.z };
@@ -438,15 +456,15 @@ export class PlannerController implements CommandContext {
 
   private addObject(params: ActionParams<'addObject'>): string | null {
     const r = this.store.getState().dispatch('addObject', params);
-    if (!r.ok) return this.refused(r.reason);
+    if (!r.ok) return this.refused(r);
     const objects = this.store.getState().config.objects;
     this.store.getState().select({ kind: 'object', id: objects[objects.length - 1].id });
     return null;
   }
 
-  private refused(reason: string): string {
-    this.explain(reason);
-    return reason;
+  private refused(r: { reason: string; code?: string; params?: Readonly<Record<string, string | number>> }): string {
+    this.explainRefusal(r);
+    return r.reason;
   }
 
   private insideRoom(p: PlanPoint): PlanPoint {

@@ -6,6 +6,9 @@ import { rectCorners, systemBounds, systemElements } from '../../core/model/geom
 import { instantiatePreset } from '../../core/model/presets';
 import { ActionButton } from './ActionButton';
 import type { ActionGate } from './actionGate';
+import { useI18n } from '../i18n/useI18n';
+import { localDescription, localName } from '../i18n/localName';
+import { roomName } from '../i18n/catalogNames';
 
 /** A small drawing of a preset's rails, computed from the model's own geometry (not an image). */
 const PresetThumbnail = memo(function PresetThumbnail({ preset, catalog }: { preset: PresetSpec; catalog: Catalog }) {
@@ -40,14 +43,15 @@ export interface PresetPanelProps {
 
 /** The configurator paper's right-hand bar: presets placed into the room at a free spot the model finds. */
 export function PresetPanel({ catalog, gate, onPlaced, onLoadRoom }: PresetPanelProps) {
+  const { t, language } = useI18n();
   return (
     <section className="panel-section" aria-labelledby="presets-title">
-      <h2 id="presets-title">Presets</h2>
+      <h2 id="presets-title">{t('planner.presets')}</h2>
       <ul className="preset-list">
         {catalog.presets.map((p) => (
           <li key={p.id}>
             <ActionButton
-              label={`Place preset ${p.name}`}
+              label={t('planner.placePreset', { name: localName(p, language) })}
               disabledReason={gate.reason('placePreset', { presetId: p.id })}
               onPress={() => {
                 gate.run('placePreset', { presetId: p.id });
@@ -58,8 +62,8 @@ export function PresetPanel({ catalog, gate, onPlaced, onLoadRoom }: PresetPanel
             >
               <PresetThumbnail preset={p} catalog={catalog} />
               <span>
-                <span className="preset-name">{p.name}</span>
-                <span className="preset-detail">{p.description}</span>
+                <span className="preset-name">{localName(p, language)}</span>
+                <span className="preset-detail">{localDescription(p, language)}</span>
               </span>
             </ActionButton>
           </li>
@@ -67,12 +71,12 @@ export function PresetPanel({ catalog, gate, onPlaced, onLoadRoom }: PresetPanel
       </ul>
       {onLoadRoom && (
         <>
-          <h3 id="rooms-title">Furnished rooms</h3>
+          <h3 id="rooms-title">{t('planner.furnishedRooms')}</h3>
           <ul className="preset-list" aria-labelledby="rooms-title">
             {FURNISHED_PRESETS.map((room) => (
               <li key={room.id}>
                 <ActionButton
-                  label={`Open the furnished ${room.name.toLowerCase()} (replaces the current room; undo brings it back)`}
+                  label={t('planner.openFurnishedRoom', { name: roomName(t, room) })}
                   disabledReason={null}
                   onPress={() => {
                     // Built from this catalog's presets through the model's actions; a catalog without them cannot build it.
@@ -80,7 +84,7 @@ export function PresetPanel({ catalog, gate, onPlaced, onLoadRoom }: PresetPanel
                     try {
                       config = room.build(catalog);
                     } catch (e) {
-                      gate.explain(`The ${room.name.toLowerCase()} cannot be built from this catalog (${(e as Error).message}).`);
+                      gate.explain(t('planner.furnishedRoomUnbuildable', { name: roomName(t, room), problem: (e as Error).message }));
                       return;
                     }
                     onLoadRoom(config);
@@ -89,8 +93,8 @@ export function PresetPanel({ catalog, gate, onPlaced, onLoadRoom }: PresetPanel
                   testId={`room-${room.id}`}
                 >
                   <span>
-                    <span className="preset-name">{room.name}</span>
-                    <span className="preset-detail">Furnished, with its lights: replaces the current room</span>
+                    <span className="preset-name">{roomName(t, room)}</span>
+                    <span className="preset-detail">{t('planner.furnishedRoomDetail')}</span>
                   </span>
                 </ActionButton>
               </li>

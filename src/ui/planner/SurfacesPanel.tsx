@@ -4,6 +4,8 @@ import { WALL_NAMES, sameReflectance, type SurfaceTarget } from '../../core/mode
 import type { SurfaceFinish } from '../../core/model/surfaceFinish';
 import type { ActionGate } from './actionGate';
 import { FinishSelect } from './FinishSelect';
+import { useI18n } from '../i18n/useI18n';
+import type { MessageKey } from '../i18n/messageTypes';
 
 export interface SurfacesPanelProps {
   room: Room;
@@ -11,13 +13,14 @@ export interface SurfacesPanelProps {
   gate: ActionGate;
 }
 
-const WALL_LABELS: Record<(typeof WALL_NAMES)[number], string> = { north: 'North wall', south: 'South wall', west: 'West wall', east: 'East wall' };
+const WALL_LABELS: Record<(typeof WALL_NAMES)[number], MessageKey> = { north: 'options.northWall', south: 'options.southWall', west: 'options.westWall', east: 'options.eastWall' };
 
 /**
  * The room's own finishes (floor, ceiling, the walls together or one by one): each choice is one
  * undoable setReflectance, so the 3D view rebakes with the new reflectances.
  */
 export function SurfacesPanel({ room, finishes, gate }: SurfacesPanelProps) {
+  const { t } = useI18n();
   const r = room.reflectance;
   const wallsAlike = WALL_NAMES.every((w) => sameReflectance(r[w], r.north));
   const choose = (surface: SurfaceTarget) => (f: SurfaceFinish) => gate.run('setReflectance', { surface, value: f.reflectance });
@@ -27,15 +30,15 @@ export function SurfacesPanel({ room, finishes, gate }: SurfacesPanelProps) {
   );
   return (
     <section className="panel-section" aria-labelledby="surfaces-title" data-testid="surfaces">
-      <h2 id="surfaces-title">Surfaces</h2>
+      <h2 id="surfaces-title">{t('app.surfaces')}</h2>
       <div className="finish-list">
-        {row('floor', 'Floor')}
-        <FinishSelect id="finish-walls" label="Walls" use="walls" value={wallsAlike ? r.north : null} finishes={finishes} onChoose={choose('walls')} disabledReason={reason('walls')} testId="finish-walls" />
-        {row('ceiling', 'Ceiling')}
+        {row('floor', t('app.floor'))}
+        <FinishSelect id="finish-walls" label={t('app.walls')} use="walls" value={wallsAlike ? r.north : null} finishes={finishes} onChoose={choose('walls')} disabledReason={reason('walls')} testId="finish-walls" />
+        {row('ceiling', t('app.ceiling'))}
       </div>
       <details className="finish-walls">
-        <summary>Walls one by one</summary>
-        <div className="finish-list">{WALL_NAMES.map((w) => row(w, WALL_LABELS[w]))}</div>
+        <summary>{t('options.wallsOneByOne')}</summary>
+        <div className="finish-list">{WALL_NAMES.map((w) => row(w, t(WALL_LABELS[w])))}</div>
       </details>
     </section>
   );

@@ -1,60 +1,65 @@
 import type { Catalog } from '../../core/model/catalogSchema';
 import { MOUNTINGS, type LightSystem } from '../../core/model/configuration';
-import { allowedFeedPositions, describeFeedAt, driversBySize, feedLabel, feedLoads, formatWatts, sameFeedAt } from '../../core/model/feedLoads';
+import { allowedFeedPositions, driversBySize, feedLoads, formatWatts, sameFeedAt } from '../../core/model/feedLoads';
 import type { ActionGate } from './actionGate';
 import { ChainShapeOptions } from './ChainShapeOptions';
 import { CommitField } from './CommitField';
 import { GatedButton } from './GatedButton';
 import { OptionChips } from './OptionChips';
 import { OptionsSection } from './OptionsSection';
+import { useI18n } from '../i18n/useI18n';
+import type { MessageKey } from '../i18n/messageTypes';
+import { feedAtText } from '../i18n/feedText';
 
 /** Rotation steps offered for a selected system, in degrees (positive: counterclockwise, "left"). */
 const ROTATIONS = [-90, -15, 15, 90] as const;
 
-const MOUNTING_LABELS: Record<(typeof MOUNTINGS)[number], string> = { suspended: 'Suspended', surface: 'On the ceiling' };
+const MOUNTING_LABELS: Record<(typeof MOUNTINGS)[number], MessageKey> = { suspended: 'options.mountingSuspended', surface: 'options.mountingSurface' };
 
 /** A selected system's settings: suspension or surface mounting, power feeds, rotation, extending the chain with a rail, connector angles and fixing points, delete. */
 export function SystemOptions({ system, catalog, gate, onClose }: { system: LightSystem; catalog: Catalog; gate: ActionGate; onClose: () => void }) {
+  const { t } = useI18n();
   const systemId = system.id;
   // A flexible connector is offered at its default turn (its `angle`) either way; its angle is then adjusted below.
-  const turns = catalog.connectors.flatMap((c) => (c.angle === 0 ? [{ c, turn: 0, label: `Add rail straight (${c.name})` }] : [
-    { c, turn: c.angle, label: `Add rail turning left ${c.angle}°${c.flex ? ` (${c.name})` : ''}` },
-    { c, turn: -c.angle, label: `Add rail turning right ${c.angle}°${c.flex ? ` (${c.name})` : ''}` },
+  const turns = catalog.connectors.flatMap((c) => (c.angle === 0 ? [{ c, turn: 0, label: t('options.addRailStraight', { name: c.name }) }] : [
+    { c, turn: c.angle, label: t(c.flex ? 'options.addRailLeftFlex' : 'options.addRailLeft', { angle: c.angle, name: c.name }) },
+    { c, turn: -c.angle, label: t(c.flex ? 'options.addRailRightFlex' : 'options.addRailRight', { angle: c.angle, name: c.name }) },
   ]));
   return (
-    <OptionsSection title="Lighting system" onClose={onClose}>
+    <OptionsSection title={t('options.systemTitle')} onClose={onClose}>
       <div className="field">
-        <h3>Suspension: ceiling to light (m)</h3>
-        <CommitField label="Suspension (m)" value={system.suspension} onCommit={(suspension) => gate.attempt('setSuspension', { systemId, suspension })} onRefused={gate.explain} />
+        <h3>{t('options.suspensionHeading')}</h3>
+        <CommitField label={t('options.suspensionField')} value={system.suspension} onCommit={(suspension) => gate.attempt('setSuspension', { systemId, suspension })} onRefused={gate.explain} />
         <span className="empty-note">
-          {catalog.suspension.min}–{catalog.suspension.max} m; lights stay {catalog.suspension.minHeightAboveFloor} m above the floor
-          {system.mounting === 'surface' ? `; on the ceiling now (lights ${catalog.surfaceMount.drop} m below it), kept for hanging it again` : ''}
+          {t('options.suspensionRange', { min: catalog.suspension.min, max: catalog.suspension.max, above: catalog.suspension.minHeightAboveFloor })}
+          {system.mounting === 'surface' ? t('options.suspensionKept', { drop: catalog.surfaceMount.drop }) : ''}
         </span>
       </div>
-      <OptionChips title="Mounting">
+      <OptionChips title={t('options.mounting')}>
         {MOUNTINGS.map((mounting) => (
-          <GatedButton key={mounting} gate={gate} action="setMounting" params={{ systemId, mounting }} label={`Mounting: ${MOUNTING_LABELS[mounting]}`} current={system.mounting === mounting} testId={`mounting-${mounting}`}>
-            {MOUNTING_LABELS[mounting]}
+          <GatedButton key={mounting} gate={gate} action="setMounting" params={{ systemId, mounting }} label={t('options.mountingLabel', { mounting: t(MOUNTING_LABELS[mounting]) })} current={system.mounting === mounting} testId={`mounting-${mounting}`}>
+            {t(MOUNTING_LABELS[mounting])}
           </GatedButton>
         ))}
       </OptionChips>
       <PowerFeeds system={system} catalog={catalog} gate={gate} />
-      <OptionChips title="Rotate">
+      <OptionChips title={t('options.rotate')}>
         {ROTATIONS.map((by) => (
-          <GatedButton key={by} gate={gate} action="rotateSystem" params={{ systemId, by }} label={`Rotate ${by > 0 ? 'left' : 'right'} ${Math.abs(by)}°`}>
+          <GatedButton key={by} gate={gate} action="rotateSystem" params={{ systemId, by }} label={t(by > 0 ? 'options.rotateLeft' : 'options.rotateRight', { degrees: Math.abs(by) })}>
             {by > 0 ? '⟲' : '⟳'} {Math.abs(by)}°
           </GatedButton>
         ))}
       </OptionChips>
-      <OptionChips title="Extend the chain">
+      <OptionChips title={t('options.extendChain')}>
         {turns.map(({ c, turn, label }) => (
           <GatedButton key={`${c.id}${turn}`} gate={gate} action="addRail" params={{ systemId, connector: c.id, turn }} label={label}>
-            {turn === 0 ? '→' : turn > 0 ? '↰' : '↱'} rail{c.flex ? ` ${c.angle}°` : ''}
+            {turn === 0 ? '→' : turn > 0 ? '↰' : '↱'} {t('options.railChip')}
+            {c.flex ? ` ${c.angle}°` : ''}
           </GatedButton>
         ))}
       </OptionChips>
       <ChainShapeOptions system={system} catalog={catalog} gate={gate} />
-      <GatedButton gate={gate} action="deleteSystem" params={{ systemId }} label="Delete system" />
+      <GatedButton gate={gate} action="deleteSystem" params={{ systemId }} label={t('options.deleteSystem')} />
     </OptionsSection>
   );
 }
@@ -65,39 +70,38 @@ export function SystemOptions({ system, catalog, gate, onClose }: { system: Ligh
  * carry the model's reason ("the 60 W … cannot carry the 129 W on Feed 1; …").
  */
 function PowerFeeds({ system, catalog, gate }: { system: LightSystem; catalog: Catalog; gate: ActionGate }) {
+  const { t, format } = useI18n();
+  // Watts as the core rounds them (two decimals at most), written in the locale.
+  const watts = (w: number) => Number(formatWatts(w));
   const systemId = system.id;
   const loads = feedLoads(system, catalog);
   const free = allowedFeedPositions(system, catalog).filter((at) => !system.feeds.some((f) => sameFeedAt(f.at, at)));
   return (
     <div className="field" data-testid="power-feeds">
-      <h3>Power</h3>
+      <h3>{t('options.power')}</h3>
       {loads.map((l) => (
         <div key={l.feed.id} data-testid={`feed-${l.feed.id}`}>
           <p className="feed-load" data-testid={`feed-load-${l.feed.id}`}>
-            <strong>
-              {feedLabel(l.index)}: {formatWatts(l.load)} / {formatWatts(l.capacity)} W
-            </strong>{' '}
-            <span className="preset-detail">
-              at {describeFeedAt(l.feed.at)}, {formatWatts(l.capacity - l.load)} W left
-            </span>
+            <strong>{t('options.feedLoad', { n: l.index + 1, load: watts(l.load), capacity: watts(l.capacity) })}</strong>{' '}
+            <span className="preset-detail">{t('options.feedWhere', { at: feedAtText(t, l.feed.at), left: watts(l.capacity - l.load) })}</span>
           </p>
-          <OptionChips title={`${feedLabel(l.index)} driver`}>
+          <OptionChips title={t('options.feedDriver', { n: l.index + 1 })}>
             {driversBySize(catalog).map((d) => (
-              <GatedButton key={d.id} gate={gate} action="setFeedDriver" params={{ feedId: l.feed.id, driver: d.id }} label={`${d.name}, ${formatWatts(d.capacity)} W`} current={l.feed.driver === d.id} testId={`driver-${l.feed.id}-${d.id}`}>
-                {formatWatts(d.capacity)} W
+              <GatedButton key={d.id} gate={gate} action="setFeedDriver" params={{ feedId: l.feed.id, driver: d.id }} label={t('options.driverChoice', { name: d.name, watts: watts(d.capacity) })} current={l.feed.driver === d.id} testId={`driver-${l.feed.id}-${d.id}`}>
+                {format.number(watts(d.capacity))} W
               </GatedButton>
             ))}
-            <GatedButton gate={gate} action="removeFeed" params={{ feedId: l.feed.id }} label={`Remove ${feedLabel(l.index)}`} testId={`remove-feed-${l.feed.id}`}>
-              Remove
+            <GatedButton gate={gate} action="removeFeed" params={{ feedId: l.feed.id }} label={t('options.removeFeed', { n: l.index + 1 })} testId={`remove-feed-${l.feed.id}`}>
+              {t('options.remove')}
             </GatedButton>
           </OptionChips>
         </div>
       ))}
       {free.length > 0 && (
-        <OptionChips title="Add a feed">
+        <OptionChips title={t('options.addFeed')}>
           {free.map((at) => (
-            <GatedButton key={JSON.stringify(at)} gate={gate} action="addFeed" params={{ systemId, at }} label={`Add a feed at ${describeFeedAt(at)}`} testId={`add-feed-${typeof at === 'string' ? at : `joint-${at.joint}`}`}>
-              + {describeFeedAt(at)}
+            <GatedButton key={JSON.stringify(at)} gate={gate} action="addFeed" params={{ systemId, at }} label={t('options.addFeedAt', { at: feedAtText(t, at) })} testId={`add-feed-${typeof at === 'string' ? at : `joint-${at.joint}`}`}>
+              + {feedAtText(t, at)}
             </GatedButton>
           ))}
         </OptionChips>

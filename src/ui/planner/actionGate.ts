@@ -1,6 +1,7 @@
 import { checkAction, type ActionName, type ActionParams } from '../../core/model/actionDefinitions';
 import type { Catalog } from '../../core/model/catalogSchema';
 import type { Configuration } from '../../core/model/configuration';
+import type { Refusal } from '../../core/model/action';
 
 /**
  * How the planner asks the model whether an action may run and runs it. Every control's
@@ -23,10 +24,12 @@ export function createActionGate(
   catalog: Catalog,
   run: (name: ActionName, params: unknown) => void,
   explain: (reason: string) => void,
+  /** The refusal as shown: the planner passes the UI language's wording of its code (docs/i18n.md); default its English reason. */
+  describe: (refusal: Refusal) => string = (r) => r.reason,
 ): ActionGate {
   const reason = (name: ActionName, params: unknown): string | null => {
     const e = checkAction(config, name, params, catalog);
-    return e === true ? null : e.reason;
+    return e === true ? null : describe(e);
   };
   return {
     reason,

@@ -7,6 +7,9 @@ import { placementStep } from '../../core/model/freePositions';
 import { moduleOnRail, stepAlongRail } from './moduleMoves';
 import { followableDelta, movedPlacement } from './objectMoves';
 import { selectionPath } from './selection';
+import { ENGLISH } from '../i18n/english';
+import type { MessageKey, Translate } from '../i18n/messageTypes';
+import { translateCoded } from '../i18n/translateCoded';
 
 /** What a command may use: the stores, the action runner and the view. The PlannerController provides it. */
 export interface CommandContext {
@@ -18,7 +21,11 @@ export interface CommandContext {
   zoom(factor: number): void;
   /** Show the whole room. */
   fit(): void;
+  /** The UI language's texts for labels and reasons (docs/i18n.md); English when absent. */
+  readonly tr?: Translate;
 }
+
+const tr = (c: CommandContext): Translate => c.tr ?? ENGLISH.t;
 
 /**
  * One UI command, used alike by the bottom bar, the zoom buttons and the keyboard, so a
@@ -71,7 +78,7 @@ function selectedObject(c: CommandContext) {
 function refusal(c: CommandContext, name: ActionName, params: unknown): string | null {
   const { config, catalog } = c.store.getState();
   const e = checkAction(config, name, params, catalog);
-  return e === true ? null : e.reason;
+  return e === true ? null : translateCoded(tr(c), 'notices', e);
 }
 
 function deleteCommand(): PlannerCommand {
@@ -81,11 +88,12 @@ function deleteCommand(): PlannerCommand {
   };
   return {
     id: 'delete',
-    label: 'Delete',
+    label: (c) => tr(c)('commands.delete'),
     keys: ['Delete', 'Backspace'],
     disabledReason: (c) => {
       const t = target(c);
-      return 'reason' in t ? t.reason : refusal(c, t.name, t.params);
+      // deleteTarget's only reason: nothing is selected.
+      return 'reason' in t ? tr(c)('commands.selectAnythingFirst') : refusal(c, t.name, t.params);
     },
     action: (c) => {
       const t = target(c);
@@ -98,7 +106,7 @@ function deleteCommand(): PlannerCommand {
  * Turns the selected system by `systemBy` or the selected object by `objectBy` degrees
  * (counterclockwise seen from above positive), as the model's rotateSystem / rotateObject.
  */
-function rotateCommand(id: string, label: string, keys: KeySpec[], systemBy: number, objectBy: number): PlannerCommand {
+function rotateCommand(id: string, label: MessageKey, keys: KeySpec[], systemBy: number, objectBy: number): PlannerCommand {
   const target = (c: CommandContext): { name: ActionName; params: Record<string, unknown> } | null => {
     const o = selectedObject(c);
     if (o) return { name: 'rotateObject', params: { objectId: o.id, by: objectBy } };
@@ -107,11 +115,11 @@ function rotateCommand(id: string, label: string, keys: KeySpec[], systemBy: num
   };
   return {
     id,
-    label,
+    label: (c) => tr(c)(label, { degrees: Math.abs(objectBy) }),
     keys,
     disabledReason: (c) => {
       const t = target(c);
-      return t ? refusal(c, t.name, t.params) : 'select a system or an object first';
+      return t ? refusal(c, t.name, t.params) : tr(c)('commands.selectFirst');
     },
     action: (c) => {
       const t = target(c);
@@ -125,25 +133,25 @@ function rotateCommand(id: string, label: string, keys: KeySpec[], systemBy: num
  * gather float noise: the system, or the object (a wall item only along its wall; an arrow
  * across the wall is refused with the reason).
  */
-function stepped(c: CommandContext, dx: number, dz: number): { name: ActionName; params: Record<string, unknown> } | { reason: string } {
+function stepped(c: CommandContext, dx: number, dz: number): { name: ActionName; params: Record<string, unknown> } | { reason: MessageKey } {
   const { config, catalog, selection } = c.store.getState();
   const moduleId = selectionPath(config, selection).moduleId;
   if (moduleId) {
     // A selected module slides along its rail by one snap step (docs/planner.md, "Moving a module").
     const on = moduleOnRail(config, catalog, moduleId);
-    if (!on) return { reason: 'this module has no position on its rail now' };
+    if (!on) return { reason: 'commands.moduleOffRail' };
     const sign = stepAlongRail(on, dx, dz);
-    if (sign === 0) return { reason: 'a module slides along its rail: use the arrows along it' };
+    if (sign === 0) return { reason: 'commands.moduleAlongRail' };
     return { name: 'moveModule', params: { moduleId, offset: on.offset + sign * placementStep(catalog) } };
   }
   const o = selectedObject(c);
   if (o) {
     const d = followableDelta(o.placement, { x: dx, z: dz });
-    if (d.x === 0 && d.z === 0) return { reason: 'a wall item slides along its wall: use the arrows along it' };
+    if (d.x === 0 && d.z === 0) return { reason: 'commands.wallItemAlongWall' };
     return { name: 'moveObject', params: { objectId: o.id, placement: movedPlacement(o.placement, d, KEY_SNAP) } };
   }
   const s = selectedSystem(c);
-  if (!s) return { reason: 'select a system or an object first' };
+  if (!s) return { reason: 'commands.selectFirst' };
   const round = (v: number) => Math.round(v * 1000) / 1000;
   return { name: 'moveSystem', params: { systemId: s.id, x: dx ? round(s.x + dx) : s.x, z: dz ? round(s.z + dz) : s.z } };
 }
@@ -155,11 +163,11 @@ function moveCommand(key: string, dx: number, dz: number, fine: boolean): Planne
   const step = fine ? KEY_MOVE_STEP / 10 : KEY_MOVE_STEP;
   return {
     id: `move-${key}${fine ? '-fine' : ''}`,
-    label: `Move the selection ${step} m ${key.replace('Arrow', '').toLowerCase()}`,
+    label: (c) => tr(c)(MOVE_LABELS[key], { step }),
     keys: [fine ? `Shift+${key}` : key],
     disabledReason: (c) => {
       const t = stepped(c, dx * step, dz * step);
-      return 'reason' in t ? t.reason : refusal(c, t.name, t.params);
+      return 'reason' in t ? tr(c)(t.reason) : refusal(c, t.name, t.params);
     },
     action: (c) => {
       const t = stepped(c, dx * step, dz * step);
@@ -168,6 +176,8 @@ function moveCommand(key: string, dx: number, dz: number, fine: boolean): Planne
   };
 }
 
+const MOVE_LABELS: Record<string, MessageKey> = { ArrowLeft: 'commands.moveLeft', ArrowRight: 'commands.moveRight', ArrowUp: 'commands.moveUp', ArrowDown: 'commands.moveDown' };
+
 const ARROWS: [string, number, number][] = [
   ['ArrowLeft', -1, 0],
   ['ArrowRight', 1, 0],
@@ -175,14 +185,14 @@ const ARROWS: [string, number, number][] = [
   ['ArrowDown', 0, 1],
 ];
 
-function historyCommand(id: 'undo' | 'redo', label: string, keys: KeySpec[]): PlannerCommand {
+function historyCommand(id: 'undo' | 'redo', keys: KeySpec[]): PlannerCommand {
   return {
     id,
-    label,
+    label: (c) => tr(c)(id === 'undo' ? 'commands.undo' : 'commands.redo'),
     keys,
     disabledReason: (c) => {
       const st = c.store.getState();
-      return (id === 'undo' ? st.canUndo : st.canRedo) ? null : `nothing to ${id}`;
+      return (id === 'undo' ? st.canUndo : st.canRedo) ? null : tr(c)(id === 'undo' ? 'commands.nothingToUndo' : 'commands.nothingToRedo');
     },
     action: (c) => void c.store.getState()[id](),
   };
@@ -196,11 +206,11 @@ export const PLANNER_COMMANDS: readonly PlannerCommand[] = [
   deleteCommand(),
   {
     id: 'select-next',
-    label: 'Select next system or object',
+    label: (c) => tr(c)('commands.selectNext'),
     keys: [],
     disabledReason: (c) => {
       const { systems, objects } = c.store.getState().config;
-      return systems.length + objects.length === 0 ? 'place a preset or a piece of furniture first' : null;
+      return systems.length + objects.length === 0 ? tr(c)('commands.placeSomethingFirst') : null;
     },
     action: (c) => {
       // Systems first, then objects, round and round.
@@ -213,32 +223,32 @@ export const PLANNER_COMMANDS: readonly PlannerCommand[] = [
   },
   {
     id: 'options',
-    label: 'Options',
+    label: (c) => tr(c)('commands.options'),
     keys: [],
     disabledReason: always,
     pressed: (c) => c.ui.getState().optionsOpen,
     action: (c) => c.ui.setState((s) => ({ optionsOpen: !s.optionsOpen, panelOpen: !s.optionsOpen })),
   },
-  rotateCommand('rotate', 'Rotate', ['r'], ROTATE_STEP, OBJECT_ROTATE_STEP),
-  rotateCommand('rotate-back', 'Rotate back', ['Shift+r'], -ROTATE_STEP, -OBJECT_ROTATE_STEP),
-  rotateCommand('rotate-left-fine', `Rotate left ${OBJECT_ROTATE_STEP}°`, ['['], OBJECT_ROTATE_STEP, OBJECT_ROTATE_STEP),
-  rotateCommand('rotate-right-fine', `Rotate right ${OBJECT_ROTATE_STEP}°`, [']'], -OBJECT_ROTATE_STEP, -OBJECT_ROTATE_STEP),
-  historyCommand('undo', 'Undo', ['Mod+z']),
-  historyCommand('redo', 'Redo', ['Mod+Shift+z', 'Mod+y']),
+  rotateCommand('rotate', 'commands.rotate', ['r'], ROTATE_STEP, OBJECT_ROTATE_STEP),
+  rotateCommand('rotate-back', 'commands.rotateBack', ['Shift+r'], -ROTATE_STEP, -OBJECT_ROTATE_STEP),
+  rotateCommand('rotate-left-fine', 'commands.rotateLeftFine', ['['], OBJECT_ROTATE_STEP, OBJECT_ROTATE_STEP),
+  rotateCommand('rotate-right-fine', 'commands.rotateRightFine', [']'], -OBJECT_ROTATE_STEP, -OBJECT_ROTATE_STEP),
+  historyCommand('undo', ['Mod+z']),
+  historyCommand('redo', ['Mod+Shift+z', 'Mod+y']),
   {
     id: 'toggle-3d',
-    label: (c) => (c.ui.getState().mode === '2d' ? 'Show 3D view' : 'Show 2D plan'),
+    label: (c) => tr(c)(c.ui.getState().mode === '2d' ? 'commands.show3d' : 'commands.show2d'),
     keys: [],
     disabledReason: always,
     pressed: (c) => c.ui.getState().mode === '3d',
     action: (c) => c.ui.setState((s) => ({ mode: s.mode === '2d' ? '3d' : '2d' })),
   },
-  { id: 'zoom-in', label: 'Zoom in', keys: ['+', '='], disabledReason: always, action: (c) => c.zoom(ZOOM_STEP) },
-  { id: 'zoom-out', label: 'Zoom out', keys: ['-', '_'], disabledReason: always, action: (c) => c.zoom(1 / ZOOM_STEP) },
-  { id: 'zoom-fit', label: 'Fit room', keys: [], disabledReason: always, action: (c) => c.fit() },
+  { id: 'zoom-in', label: (c) => tr(c)('commands.zoomIn'), keys: ['+', '='], disabledReason: always, action: (c) => c.zoom(ZOOM_STEP) },
+  { id: 'zoom-out', label: (c) => tr(c)('commands.zoomOut'), keys: ['-', '_'], disabledReason: always, action: (c) => c.zoom(1 / ZOOM_STEP) },
+  { id: 'zoom-fit', label: (c) => tr(c)('commands.zoomFit'), keys: [], disabledReason: always, action: (c) => c.fit() },
   {
     id: 'deselect',
-    label: 'Deselect',
+    label: (c) => tr(c)('commands.deselect'),
     keys: ['Escape'],
     disabledReason: always,
     action: (c) => {

@@ -1,3 +1,4 @@
+import { useI18n } from '../i18n/useI18n';
 /** A photometric file and its warnings (photometryWarnings: one line each, without the file name). */
 export interface PhotometryNote {
   /** The file as the catalog names it (a path such as `ies/x.ies`; its last part is shown). */
@@ -20,6 +21,7 @@ function breakable(name: string): React.ReactNode[] {
  * `collapsed`: one summary line ("⚠ Photometric data: 2 warnings") that opens to the text.
  */
 export function PhotometryWarnings({ notes, testId = 'photometry-warnings', collapsed = false }: { notes: readonly PhotometryNote[]; testId?: string; collapsed?: boolean }) {
+  const { t } = useI18n();
   const shown = notes.filter((n) => n.warnings.length > 0);
   if (shown.length === 0) return null;
   const body = shown.map((n) => (
@@ -37,18 +39,18 @@ export function PhotometryWarnings({ notes, testId = 'photometry-warnings', coll
   ));
   if (!collapsed) {
     return (
-      <div className="photometry-warnings" role="note" aria-label="Photometric data warnings" data-testid={testId}>
+      <div className="photometry-warnings" role="note" aria-label={t('shared.photometryWarnings')} data-testid={testId}>
         {body}
       </div>
     );
   }
   const count = shown.reduce((n, s) => n + s.warnings.length, 0);
   return (
-    <div className="photometry-warnings" role="note" aria-label="Photometric data warnings" data-testid={testId}>
+    <div className="photometry-warnings" role="note" aria-label={t('shared.photometryWarnings')} data-testid={testId}>
       <details>
         <summary>
           <span aria-hidden="true">⚠ </span>
-          Photometric data: {count} {count === 1 ? 'warning' : 'warnings'}
+          {t('shared.photometryWarningCount', { count })}
         </summary>
         <div className="photometry-warnings-body">{body}</div>
       </details>

@@ -1,23 +1,28 @@
 import type { IlluminanceStats } from '../../engines/view/lightStats';
+import { useI18n } from '../i18n/useI18n';
 
-const fmt = (v: number) => (v >= 100 ? v.toFixed(0) : v >= 10 ? v.toFixed(1) : v.toFixed(2));
+/** Lux with as many decimals as a meter shows: 0 from 100 lx, 1 from 10 lx, else 2. */
+const digits = (v: number) => (v >= 100 ? 0 : v >= 10 ? 1 : 2);
 
 function StatsRow({ label, s, testId }: { label: string; s: IlluminanceStats | null; testId: string }) {
+  const { format } = useI18n();
+  const fmt = (v: number) => format.number(v, { minimumFractionDigits: digits(v), maximumFractionDigits: digits(v), useGrouping: false });
   return (
     <tr data-testid={testId}>
       <th scope="row">{label}</th>
       <td>{s ? fmt(s.avg) : '–'}</td>
       <td>{s ? fmt(s.min) : '–'}</td>
       <td>{s ? fmt(s.max) : '–'}</td>
-      <td>{s ? s.u0.toFixed(2) : '–'}</td>
+      <td>{s ? format.number(s.u0, { minimumFractionDigits: 2, maximumFractionDigits: 2 }) : '–'}</td>
     </tr>
   );
 }
 
 /** Ē, Emin, Emax, U0 of the floor and, when shown, the work plane ('–' until computed). */
 export function IlluminanceTable({ floor, plane }: { floor: IlluminanceStats | null; plane: { height: number; stats: IlluminanceStats | null } | null }) {
+  const { t, format } = useI18n();
   return (
-    <table className="viewer3d-stats" aria-label="Illuminance">
+    <table className="viewer3d-stats" aria-label={t('viewer.illuminance')}>
       <thead>
         <tr>
           <th />
@@ -28,8 +33,8 @@ export function IlluminanceTable({ floor, plane }: { floor: IlluminanceStats | n
         </tr>
       </thead>
       <tbody>
-        <StatsRow label="Floor" s={floor} testId="stats-floor" />
-        {plane && <StatsRow label={`Plane ${plane.height.toFixed(2)} m`} s={plane.stats} testId="stats-plane" />}
+        <StatsRow label={t('app.floor')} s={floor} testId="stats-floor" />
+        {plane && <StatsRow label={t('viewer.planeAt', { height: format.metres(plane.height) })} s={plane.stats} testId="stats-plane" />}
       </tbody>
     </table>
   );

@@ -2,7 +2,9 @@ import { Component, lazy, Suspense, useMemo, type ReactNode } from 'react';
 import type { Photometry } from '../../core/photometry/types';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import { setViewerStatus, CLOSED_STATUS } from './viewerStatus';
-import { webglSupportProblem } from './webglSupport';
+import { webglSupportIssue } from './webglSupport';
+import { useI18n } from '../i18n/useI18n';
+import { translateCoded } from '../i18n/translateCoded';
 
 // The 3D chunk (three.js, the baker, the relight engine) is downloaded only when 3D is first opened.
 const View3D = lazy(() => import('./View3D'));
@@ -20,16 +22,22 @@ export interface LazyView3DProps {
 }
 
 function Message({ text, onBack, testId }: { text: string; onBack: () => void; testId: string }) {
+  const { t } = useI18n();
   return (
     <section className="view3d-message" role="alert" data-testid={testId}>
       <div>
         <p>{text}</p>
         <button type="button" className="btn btn-primary" onClick={onBack}>
-          Back to 2D plan
+          {t('viewer.backTo2d')}
         </button>
       </div>
     </section>
   );
+}
+
+function LoadFailed({ error, onBack }: { error: string; onBack: () => void }) {
+  const { t } = useI18n();
+  return <Message text={t('viewer.loadFailed', { problem: error })} onBack={onBack} testId="view3d-error" />;
 }
 
 /** A failed chunk download or a crash inside the 3D view must not take the planner down. */
@@ -39,21 +47,22 @@ class ViewerBoundary extends Component<{ onBack: () => void; visible: boolean; c
     return { error: error.message || 'unknown error' };
   }
   override render() {
-    if (this.state.error) return !this.props.visible ? null : <Message text={`The 3D view could not be loaded (${this.state.error}). Your configuration is unchanged.`} onBack={this.props.onBack} testId="view3d-error" />;
+    if (this.state.error) return !this.props.visible ? null : <LoadFailed error={this.state.error} onBack={this.props.onBack} />;
     return this.props.children;
   }
 }
 
 /** What the 2D/3D toggle shows in 3D: a support check, then the lazily loaded viewer. */
 export function LazyView3D({ store, loadPhotometry, onBack, visible = true }: LazyView3DProps) {
-  const problem = useMemo(() => webglSupportProblem(), []);
-  if (problem) {
-    setViewerStatus(store, { ...CLOSED_STATUS, error: problem });
-    return visible ? <Message text={problem} onBack={onBack} testId="view3d-unsupported" /> : null;
+  const { t } = useI18n();
+  const issue = useMemo(() => webglSupportIssue(), []);
+  if (issue) {
+    setViewerStatus(store, { ...CLOSED_STATUS, error: issue.text });
+    return visible ? <Message text={translateCoded(t, 'viewer', issue)} onBack={onBack} testId="view3d-unsupported" /> : null;
   }
   return (
     <ViewerBoundary onBack={onBack} visible={visible}>
-      <Suspense fallback={visible ? <Message text="Loading the 3D view…" onBack={onBack} testId="view3d-loading" /> : null}>
+      <Suspense fallback={visible ? <Message text={t('viewer.loading')} onBack={onBack} testId="view3d-loading" /> : null}>
         <View3D store={store} loadPhotometry={loadPhotometry} onBack={onBack} visible={visible} />
       </Suspense>
     </ViewerBoundary>

@@ -9,6 +9,9 @@ import { BRIDGE_RETRY_S, createBridgeClient, type BridgeState } from './createBr
 import { createFrameLatch, type FrameLatch } from './createFrameLatch';
 import { PatchRow } from './PatchRow';
 import type { ViewerStatus } from './viewerStatus';
+import { useI18n } from '../i18n/useI18n';
+import type { Translate } from '../i18n/messageTypes';
+import { localName } from '../i18n/localName';
 
 export const DEFAULT_BRIDGE_PORT = 9090;
 
@@ -20,20 +23,21 @@ export interface LiveControlProps {
   onStatus(live: ViewerStatus['live']): void;
 }
 
-function describe(state: BridgeState, url: string): string {
+function describe(t: Translate, state: BridgeState, url: string): string {
   switch (state.kind) {
     case 'connecting':
-      return `Connecting to ${url}…`;
+      return t('live.connecting', { url });
     case 'connected': {
       const s = state.status;
-      if (!s) return `Connected to ${url}`;
-      const universes = s.universes.length > 0 ? `universe${s.universes.length > 1 ? 's' : ''} ${s.universes.join(', ')}` : 'no universe yet';
-      return `Connected · ${[s.protocols.join(', ') || 'no protocol', universes, `${s.sources} source${s.sources === 1 ? '' : 's'}`].join(' · ')}`;
+      if (!s) return t('live.connected', { url });
+      const universes = s.universes.length > 0 ? t('live.universes', { count: s.universes.length, list: s.universes.join(', ') }) : t('live.noUniverse');
+      const parts = [s.protocols.join(', ') || t('live.noProtocol'), universes, t('live.sources', { count: s.sources })];
+      return t('live.connectedStatus', { details: parts.join(' · ') });
     }
     case 'no-bridge':
-      return `No bridge at ${url}: start it with “npx luxbox dmx”. Retrying every ${BRIDGE_RETRY_S} s.`;
+      return t('live.noBridge', { url, seconds: BRIDGE_RETRY_S });
     case 'lost':
-      return `Bridge lost: the view keeps the last levels received. Retrying every ${BRIDGE_RETRY_S} s.`;
+      return t('live.bridgeLost', { seconds: BRIDGE_RETRY_S });
   }
 }
 
@@ -45,6 +49,7 @@ function describe(state: BridgeState, url: string): string {
  * configuration's (saved with it) and is edited here through undoable actions.
  */
 export function LiveControl({ store, onLevels, onStatus }: LiveControlProps) {
+  const { t, language } = useI18n();
   const config = useStore(store, (s) => s.config);
   const catalog = useStore(store, (s) => s.catalog);
   const [on, setOn] = useState(false);
@@ -106,9 +111,9 @@ export function LiveControl({ store, onLevels, onStatus }: LiveControlProps) {
     () =>
       modulesInOrder(config).map(({ module }) => {
         const type = findModuleType(catalog, module.type);
-        return { id: module.id, typeName: type.name, tunable: isTunable(type), patch: module.dmx };
+        return { id: module.id, typeName: localName(type, language), tunable: isTunable(type), patch: module.dmx };
       }),
-    [config, catalog],
+    [config, catalog, language],
   );
   const dispatch = (name: string, params: unknown): string | null => {
     const r = store.getState().dispatch(name, params);
@@ -123,12 +128,12 @@ export function LiveControl({ store, onLevels, onStatus }: LiveControlProps) {
   return (
     <div className="viewer3d-live" data-testid="live-control">
       <label className="viewer3d-field viewer3d-inline">
-        <input type="checkbox" checked={on} onChange={(e) => setOn(e.target.checked)} data-testid="live-on" /> Live control (DMX)
+        <input type="checkbox" checked={on} onChange={(e) => setOn(e.target.checked)} data-testid="live-on" /> {t('live.title')}
       </label>
       {on && (
         <>
           <label className="viewer3d-field viewer3d-inline">
-            Bridge port
+            {t('live.bridgePort')}
             <input
               type="number"
               min={1}
@@ -139,27 +144,27 @@ export function LiveControl({ store, onLevels, onStatus }: LiveControlProps) {
               onChange={(e) => setPortText(e.target.value)}
               onBlur={commitPort}
               onKeyDown={(e) => e.key === 'Enter' && commitPort()}
-              aria-label="DMX bridge port"
+              aria-label={t('live.bridgePortLabel')}
               data-testid="live-port"
             />
           </label>
           <p className={`viewer3d-live-state viewer3d-live-${bridge.kind}`} role="status" data-testid="live-state" data-state={bridge.kind}>
-            {describe(bridge, url)}
+            {describe(t, bridge, url)}
           </p>
-          <p className="viewer3d-dim">Levels from the console light the view only: the configuration and its undo history stay as they are.</p>
+          <p className="viewer3d-dim">{t('live.viewOnly')}</p>
           <AutoPatchForm
             onAutoPatch={(p) => dispatch('autoPatch', p)}
             onClear={() => dispatch('clearPatch', {})}
             canClear={rows.some((r) => r.patch)}
           />
           {rows.length > 0 ? (
-            <ul className="viewer3d-patch" aria-label="DMX patch">
+            <ul className="viewer3d-patch" aria-label={t('live.patch')}>
               {rows.map((r) => (
                 <PatchRow key={r.id} {...r} live={levels.get(r.id)} onPatch={(patch: DmxPatch | null) => dispatch('setModulePatch', { moduleId: r.id, patch })} />
               ))}
             </ul>
           ) : (
-            <p className="viewer3d-dim">No modules to patch.</p>
+            <p className="viewer3d-dim">{t('live.nothingToPatch')}</p>
           )}
         </>
       )}

@@ -1,15 +1,17 @@
 import { legendPosition, turbo } from '../../engines/view/falseColorScale';
+import { useI18n } from '../i18n/useI18n';
 
 /** The false-colour legend: each level (highest first) with the colour the shader gives it. */
 export function LuxLegend({ levels }: { levels: readonly number[] }) {
+  const { t, format } = useI18n();
   return (
-    <div className="viewer3d-legend" aria-label="Illuminance legend (lux)" data-testid="view3d-legend">
+    <div className="viewer3d-legend" aria-label={t('viewer.legend')} data-testid="view3d-legend">
       {[...levels].reverse().map((v) => {
         const [r, g, b] = turbo(legendPosition(v, levels));
         return (
           <div key={v} className="viewer3d-legend-row">
             <span className="viewer3d-swatch" style={{ background: `rgb(${r * 255}, ${g * 255}, ${b * 255})` }} />
-            {v} lx
+            {format.number(v)} lx
           </div>
         );
       })}

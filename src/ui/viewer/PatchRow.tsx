@@ -1,6 +1,7 @@
 import { useState } from 'react';
 import type { DmxPatch } from '../../core/model/dmxPatch';
 import type { LiveLevel } from '../../engines/view/liveLevels';
+import { useI18n } from '../i18n/useI18n';
 
 export interface PatchRowProps {
   id: string;
@@ -19,6 +20,7 @@ export interface PatchRowProps {
  * reason and the fields fall back to the stored patch.
  */
 export function PatchRow({ id, typeName, tunable, patch, live, onPatch }: PatchRowProps) {
+  const { t, format } = useI18n();
   const [draft, setDraft] = useState<{ universe: string; address: string } | null>(null);
   const [reason, setReason] = useState<string | null>(null);
   const universe = draft?.universe ?? String(patch?.universe ?? '');
@@ -47,12 +49,12 @@ export function PatchRow({ id, typeName, tunable, patch, live, onPatch }: PatchR
           {typeName} <span className="viewer3d-dim">{id}</span>
         </span>
         <span className="viewer3d-live-value" data-testid={`live-${id}`}>
-          {live ? `${Math.round(live.dimming * 100)} %${live.cct !== null ? ` · ${Math.round(live.cct)} K` : ''}` : patch ? '–' : ''}
+          {live ? `${format.percent(live.dimming)}${live.cct !== null ? ` · ${Math.round(live.cct)} K` : ''}` : patch ? '–' : ''}
         </span>
       </div>
       <div className="viewer3d-patch-fields">
         <select
-          aria-label={`DMX mode of ${id}`}
+          aria-label={t('live.modeOf', { id })}
           value={patch ? String(patch.resolution) : 'off'}
           onChange={(e) => {
             const v = e.target.value;
@@ -62,23 +64,23 @@ export function PatchRow({ id, typeName, tunable, patch, live, onPatch }: PatchR
           }}
           data-testid={`patch-mode-${id}`}
         >
-          <option value="off">Not patched</option>
-          <option value="8">8-bit</option>
-          <option value="16">16-bit</option>
+          <option value="off">{t('live.notPatched')}</option>
+          <option value="8">{t('live.eightBit')}</option>
+          <option value="16">{t('live.sixteenBit')}</option>
         </select>
         {patch && (
           <>
             <label className="viewer3d-patch-num">
-              U
-              <input type="number" min={1} step={1} inputMode="numeric" value={universe} aria-label={`DMX universe of ${id}`} onChange={(e) => edit('universe', e.target.value)} onBlur={commitNumbers} onKeyDown={onKey} data-testid={`patch-universe-${id}`} />
+              {t('live.universeShort')}
+              <input type="number" min={1} step={1} inputMode="numeric" value={universe} aria-label={t('live.universeOf', { id })} onChange={(e) => edit('universe', e.target.value)} onBlur={commitNumbers} onKeyDown={onKey} data-testid={`patch-universe-${id}`} />
             </label>
             <label className="viewer3d-patch-num">
               @
-              <input type="number" min={1} max={512} step={1} inputMode="numeric" value={address} aria-label={`DMX address of ${id}`} onChange={(e) => edit('address', e.target.value)} onBlur={commitNumbers} onKeyDown={onKey} data-testid={`patch-address-${id}`} />
+              <input type="number" min={1} max={512} step={1} inputMode="numeric" value={address} aria-label={t('live.addressOf', { id })} onChange={(e) => edit('address', e.target.value)} onBlur={commitNumbers} onKeyDown={onKey} data-testid={`patch-address-${id}`} />
             </label>
             {tunable && (
               <label className="viewer3d-patch-cct">
-                <input type="checkbox" checked={patch.cct} onChange={(e) => attempt({ ...patch, cct: e.target.checked })} aria-label={`CCT channel for ${id}`} /> CCT
+                <input type="checkbox" checked={patch.cct} onChange={(e) => attempt({ ...patch, cct: e.target.checked })} aria-label={t('live.cctOf', { id })} /> {t('live.cct')}
               </label>
             )}
           </>

@@ -22,6 +22,9 @@ import { bakeHostFor } from './bakeHost';
 import type { BakeFeed, ResolvedScene } from './startBakeFeed';
 import { aimEvents, SpotlightControls } from './SpotlightControls';
 import './viewer.css';
+import { useI18n } from '../i18n/useI18n';
+import type { MessageKey } from '../i18n/messageTypes';
+import { viewerErrorText } from './viewerErrorText';
 
 export interface View3DProps {
   store: ConfiguratorStore;
@@ -32,8 +35,8 @@ export interface View3DProps {
   visible?: boolean;
 }
 
-const PRESET_LABEL: Record<CameraPresetName, string> = { eye: 'Eye height', top: 'Top', corner: 'Corner' };
-const QUALITY_LABEL: Record<QualityLevel, string> = { fast: 'Fast', balanced: 'Balanced', best: 'Best' };
+const PRESET_LABEL: Record<CameraPresetName, MessageKey> = { eye: 'viewer.cameraEye', top: 'viewer.cameraTop', corner: 'viewer.cameraCorner' };
+const QUALITY_LABEL: Record<QualityLevel, MessageKey> = { fast: 'viewer.qualityFast', balanced: 'viewer.qualityBalanced', best: 'viewer.qualityBest' };
 
 /**
  * The 3D view (lazily loaded chunk: three.js and the room view). The light comes from the
@@ -42,6 +45,7 @@ const QUALITY_LABEL: Record<QualityLevel, string> = { fast: 'Fast', balanced: 'B
  * configuration, never changes it except through store actions.
  */
 export default function View3D({ store, loadPhotometry, onBack, visible = true }: View3DProps) {
+  const { t, format } = useI18n();
   const config = useStore(store, (s) => s.config);
   const host = useMemo(() => bakeHostFor(store, loadPhotometry), [store, loadPhotometry]);
   const [feed, setFeed] = useState<BakeFeed | null>(() => host.current());
@@ -231,10 +235,10 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
       return o ? sourceName(config, o.source) : null;
     }
     if (selection.kind === 'module') {
-      for (const s of config.systems) for (const r of s.rails) for (const m of r.modules) if (m.id === selection.id) return `Module ${m.type}`;
+      for (const s of config.systems) for (const r of s.rails) for (const m of r.modules) if (m.id === selection.id) return t('viewer.selectedModule', { type: m.type });
     }
     return null;
-  }, [selection, config]);
+  }, [selection, config, t]);
 
   // Work plane: recomputed when the maps settle or the height changes (direct part on the CPU).
   useEffect(() => {
@@ -253,71 +257,75 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
   const maxPlane = config.room.height - 0.1;
 
   return (
-    <section className="viewer3d" aria-label="3D light view" data-testid="view3d" hidden={!visible}>
+    <section className="viewer3d" aria-label={t('viewer.view')} data-testid="view3d" hidden={!visible}>
       <div className="viewer3d-canvas-wrap" ref={wrapRef}>
         <canvas ref={canvasRef} className="viewer3d-canvas" data-testid="view3d-canvas" />
         {!progress.done && !error && (
-          <div className="viewer3d-progress" role="progressbar" aria-label="Light calculation" aria-valuemin={0} aria-valuemax={100} aria-valuenow={Math.round(progress.fraction * 100)} data-testid="view3d-progress">
+          <div className="viewer3d-progress" role="progressbar" aria-label={t('viewer.lightCalculation')} aria-valuemin={0} aria-valuemax={100} aria-valuenow={Math.round(progress.fraction * 100)} data-testid="view3d-progress">
             <div className="viewer3d-progress-bar" style={{ width: `${Math.round(progress.fraction * 100)}%` }} />
-            <span>{progress.lit ? 'Refining indirect light' : 'Computing light'} {Math.round(progress.fraction * 100)} %</span>
+            <span>{t(progress.lit ? 'viewer.refining' : 'viewer.computing', { percent: format.percent(progress.fraction) })}</span>
           </div>
         )}
-        {lost && <div className="viewer3d-note" role="status">Graphics were reset by the system; restoring the view…</div>}
+        {lost && (
+          <div className="viewer3d-note" role="status">
+            {t('viewer.contextLost')}
+          </div>
+        )}
         {error && (
           <div className="viewer3d-error" role="alert" data-testid="view3d-error">
-            <p>{error}</p>
+            <p>{viewerErrorText(t, error)}</p>
             <button type="button" className="btn btn-primary" onClick={onBack}>
-              Back to 2D plan
+              {t('viewer.backTo2d')}
             </button>
           </div>
         )}
         {mode === 'lux' && levels.length > 1 && <LuxLegend levels={levels} />}
         {(liveState === 'lost' || liveState === 'no-bridge') && (
           <div className="viewer3d-note viewer3d-live-note" role="status" data-testid="live-note">
-            {liveState === 'lost' ? 'Live control: bridge lost, showing the last levels received' : 'Live control: no bridge'}
+            {liveState === 'lost' ? t('viewer.liveLost') : t('viewer.liveNoBridge')}
           </div>
         )}
       </div>
       <div className="viewer3d-panel">
-        <div className="viewer3d-group" role="group" aria-label="Camera">
+        <div className="viewer3d-group" role="group" aria-label={t('viewer.camera')}>
           {CAMERA_PRESETS.map((p) => (
             <button key={p} type="button" className={`btn${preset === p ? ' btn-primary' : ''}`} aria-pressed={preset === p} onClick={() => { setPreset(p); ctrl.current?.setPreset(p); }} data-testid={`camera-${p}`}>
-              {PRESET_LABEL[p]}
+              {t(PRESET_LABEL[p])}
             </button>
           ))}
         </div>
-        <div className="viewer3d-group" role="group" aria-label="View mode">
+        <div className="viewer3d-group" role="group" aria-label={t('viewer.viewMode')}>
           <button type="button" className={`btn${mode === 'light' ? ' btn-primary' : ''}`} aria-pressed={mode === 'light'} onClick={() => { setMode('light'); ctrl.current?.setMode('light'); }}>
-            Light
+            {t('viewer.modeLight')}
           </button>
           <button type="button" className={`btn${mode === 'lux' ? ' btn-primary' : ''}`} aria-pressed={mode === 'lux'} onClick={() => { setMode('lux'); ctrl.current?.setMode('lux'); }} data-testid="mode-lux">
-            Lux
+            {t('viewer.modeLux')}
           </button>
         </div>
-        <div className="viewer3d-group" role="group" aria-label="Quality">
-          <span className="viewer3d-group-label">Quality:</span>
+        <div className="viewer3d-group" role="group" aria-label={t('viewer.quality')}>
+          <span className="viewer3d-group-label">{t('viewer.qualityLabel')}</span>
           {QUALITY_LEVEL_NAMES.map((q) => (
             <button key={q} type="button" className={`btn${quality === q ? ' btn-primary' : ''}`} aria-pressed={quality === q} onClick={() => chooseQuality(q)} data-testid={`quality-${q}`}>
-              {QUALITY_LABEL[q]}
+              {t(QUALITY_LABEL[q])}
             </button>
           ))}
         </div>
         <ExposureControl initial={host.exposure} target={() => ctrl.current} />
         {selectedLabel && (
           <p className="viewer3d-selected" data-testid="view3d-selected" data-kind={selection?.kind} data-id={selection?.id}>
-            Selected: {selectedLabel}
+            {t('viewer.selected', { name: selectedLabel })}
           </p>
         )}
         <SpotlightControls store={store} controllerRef={ctrl} ready={controllerVersion} />
         <IlluminanceTable floor={floor} plane={plane.on ? { height: plane.height, stats: planeStats } : null} />
         <label className="viewer3d-field viewer3d-inline">
-          <input type="checkbox" checked={plane.on} onChange={(e) => setPlane({ ...plane, on: e.target.checked })} data-testid="plane-on" /> Work plane at
-          <input type="number" min={0.1} max={maxPlane} step={0.05} value={plane.height} onChange={(e) => { const h = Number(e.target.value); if (Number.isFinite(h) && h >= 0.1 && h <= maxPlane) setPlane({ ...plane, height: h }); }} aria-label="Work plane height in metres" /> m
+          <input type="checkbox" checked={plane.on} onChange={(e) => setPlane({ ...plane, on: e.target.checked })} data-testid="plane-on" /> {t('viewer.workPlaneAt')}
+          <input type="number" min={0.1} max={maxPlane} step={0.05} value={plane.height} onChange={(e) => { const h = Number(e.target.value); if (Number.isFinite(h) && h >= 0.1 && h <= maxPlane) setPlane({ ...plane, height: h }); }} aria-label={t('viewer.workPlaneHeight')} /> m
         </label>
         <PhotometryWarnings notes={photometryNotes} testId="view3d-photometry-warnings" collapsed />
         {modules.length > 0 && (
           <details className="viewer3d-modules">
-            <summary>Dimming ({modules.length} modules)</summary>
+            <summary>{t('viewer.dimmingModules', { count: modules.length })}</summary>
             {modules.map((m) => (
               <DimmerRow key={m.id} id={m.id} type={m.type} dimming={m.dimming} onCommit={(d) => store.getState().dispatch('setModuleDimming', { moduleId: m.id, dimming: d })} />
             ))}
@@ -332,7 +340,7 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
           }}
         />
         <button type="button" className="btn" onClick={onBack} data-testid="back-2d">
-          Back to 2D plan
+          {t('viewer.backTo2d')}
         </button>
       </div>
     </section>

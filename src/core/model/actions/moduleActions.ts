@@ -7,7 +7,7 @@
  */
 import { z } from 'zod';
 import { InputError } from '../../inputError';
-import type { ActionDefinition } from '../action';
+import type { ActionDefinition, CodedReason } from '../action';
 import { findModuleType, type Catalog } from '../catalogSchema';
 import type { Configuration, ModuleInstance, Rail } from '../configuration';
 import { isFreeRail, placeInLargestGap, placementStep, roundOffset, snapOffset } from '../freePositions';
@@ -57,15 +57,15 @@ export const addModule: ActionDefinition<z.infer<typeof addParams>> = {
     const { offset } = placeInLargestGap(length, ref.rail.length, occupied(ref.rail, catalog), placementStep(catalog));
     return replaceRail(next, ref, { ...ref.rail, modules: inRailOrder([...mods, { ...module, offset }]) });
   },
-  explain(problem, state, p, catalog) {
+  explain(problem, state, p, catalog): string | CodedReason {
     if (!FIT_CODES.has(problem.code)) return problem.message;
     const type = findModuleType(catalog, p.type);
     const { rail } = findRail(state, p.railId);
     if (isFreeRail(rail) && railModuleOffsets(rail, catalog)) {
       const { gap } = placeInLargestGap(type.length, rail.length, occupied(rail, catalog), placementStep(catalog));
-      return `no free gap on this rail holds a ${type.name} (${type.length} m): the largest is ${gap} m; move modules apart or choose a distribution`;
+      return { reason: `no free gap on this rail holds a ${type.name} (${type.length} m): the largest is ${gap} m; move modules apart or choose a distribution`, code: 'noFreeGap', params: { name: type.name, typeId: type.id, length: type.length, gap } };
     }
-    return `no room for another ${type.name} (${type.length} m) on this rail`;
+    return { reason: `no room for another ${type.name} (${type.length} m) on this rail`, code: 'noRoomForModule', params: { name: type.name, typeId: type.id, length: type.length } };
   },
 };
 

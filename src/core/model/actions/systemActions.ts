@@ -36,7 +36,7 @@ function presetPlacement(state: Configuration, p: PlacePresetParams, catalog: Ca
   if (suspension === null) throw new InputError(`the room is too low: modules must hang at least ${catalog.suspension.minHeightAboveFloor} m above the floor`);
   if (p.x !== undefined && p.z !== undefined) return { placement: { x: p.x, z: p.z, rotation: p.rotation ?? 0 }, suspension };
   const placement = findPresetPlacement(state, preset, catalog, suspension);
-  if (!placement) throw new InputError(`no free space for '${preset.name}' in this room`);
+  if (!placement) throw new InputError(`no free space for '${preset.name}' in this room`, { code: 'noFreeSpace', params: { name: preset.name, presetId: preset.id } });
   return { placement, suspension };
 }
 

@@ -1,14 +1,40 @@
 import type { MessageTree } from '../../messageTypes';
+import a11y from './a11y';
 import aim from './aim';
+import app from './app';
+import commands from './commands';
 import common from './common';
 import exposure from './exposure';
+import files from './files';
 import filters from './filters';
+import finishes from './finishes';
+import furniture from './furniture';
+import live from './live';
+import notices from './notices';
+import options from './options';
+import planner from './planner';
+import rooms from './rooms';
 import scenes from './scenes';
+import shared from './shared';
+import viewer from './viewer';
 
 export default {
+  a11y,
   aim,
+  app,
+  commands,
   common,
   exposure,
+  files,
   filters,
+  finishes,
+  furniture,
+  live,
+  notices,
+  options,
+  planner,
+  rooms,
   scenes,
+  shared,
+  viewer,
 } satisfies MessageTree;

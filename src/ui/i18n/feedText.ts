@@ -1,0 +1,15 @@
+import type { Translate } from './messageTypes';
+
+/**
+ * Where a power feed sits, in words (the UI's counterpart of the core's English describeFeedAt):
+ * the chain start or end, a connector, or the free end of a rail.
+ */
+export function feedAtText(t: Translate, at: unknown): string {
+  if (at === 'start') return t('options.feedAtStart');
+  if (at === 'end') return t('options.feedAtEnd');
+  if (typeof at === 'object' && at !== null) {
+    if ('joint' in at && typeof at.joint === 'number') return t('options.feedAtConnector', { n: at.joint + 1 });
+    if ('end' in at && typeof at.end === 'number') return t('options.feedAtRailEnd', { n: at.end + 1 });
+  }
+  return String(at);
+}

@@ -1,0 +1,32 @@
+import type { AreaMessages } from '../../messageTypes';
+import type en from '../en/commands';
+
+export default {
+  delete: 'Löschen',
+  selectAnythingFirst: 'wählen Sie zuerst ein System, ein Modul oder ein Objekt',
+  selectFirst: 'wählen Sie zuerst ein System oder ein Objekt',
+  moduleOffRail: 'dieses Modul hat gerade keine Position auf seiner Schiene',
+  moduleAlongRail: 'ein Modul gleitet entlang seiner Schiene: nutzen Sie die Pfeiltasten in Schienenrichtung',
+  wallItemAlongWall: 'ein Wandobjekt gleitet entlang seiner Wand: nutzen Sie die Pfeiltasten in Wandrichtung',
+  moveLeft: 'Auswahl um {step} m nach links verschieben',
+  moveRight: 'Auswahl um {step} m nach rechts verschieben',
+  moveUp: 'Auswahl um {step} m nach oben verschieben',
+  moveDown: 'Auswahl um {step} m nach unten verschieben',
+  undo: 'Rückgängig',
+  redo: 'Wiederholen',
+  nothingToUndo: 'nichts rückgängig zu machen',
+  nothingToRedo: 'nichts zu wiederholen',
+  selectNext: 'Nächstes System oder Objekt auswählen',
+  placeSomethingFirst: 'platzieren Sie zuerst eine Vorlage oder ein Möbelstück',
+  options: 'Optionen',
+  rotate: 'Drehen',
+  rotateBack: 'Zurückdrehen',
+  rotateLeftFine: '{degrees}° nach links drehen',
+  rotateRightFine: '{degrees}° nach rechts drehen',
+  show3d: '3D-Ansicht zeigen',
+  show2d: '2D-Plan zeigen',
+  zoomIn: 'Vergrößern',
+  zoomOut: 'Verkleinern',
+  zoomFit: 'Raum einpassen',
+  deselect: 'Auswahl aufheben',
+} satisfies AreaMessages<typeof en>;

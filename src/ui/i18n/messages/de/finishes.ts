@@ -1,0 +1,32 @@
+import type { AreaMessages } from '../../messageTypes';
+import type en from '../en/finishes';
+
+export default {
+  'white-paint': 'Weiße Farbe',
+  'warm-white': 'Warmweiße Farbe',
+  'light-grey': 'Hellgrau',
+  'mid-grey': 'Mittelgrau',
+  'sage-green': 'Salbeigrüne Farbe',
+  'light-oak': 'Heller Eichenboden',
+  concrete: 'Beton',
+  'grey-carpet': 'Grauer Teppich',
+  'dark-walnut': 'Dunkler Nussbaumboden',
+  'dark-slate': 'Dunkler Schiefer',
+  'white-lacquer': 'Weißer Lack',
+  'oak-veneer': 'Eichenfurnier',
+  'walnut-veneer': 'Nussbaumfurnier',
+  'black-metal': 'Schwarze Pulverbeschichtung',
+  'brushed-steel': 'Gebürsteter Stahl',
+  'grey-fabric': 'Grauer Stoff',
+  'beige-linen': 'Beiges Leinen',
+  'navy-fabric': 'Marineblauer Stoff',
+  'white-linen': 'Weiße Bettwäsche',
+  'leaf-green': 'Blätter',
+  terracotta: 'Terrakotta',
+  'book-spines': 'Buchrücken',
+  'canvas-print': 'Leinwanddruck',
+  skin: 'Haut',
+  denim: 'Jeansstoff',
+  'stone-worktop': 'Heller Stein',
+  'mid-grey-paint': 'Mittelgraue Farbe',
+} satisfies AreaMessages<typeof en>;

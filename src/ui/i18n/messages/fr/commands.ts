@@ -1,0 +1,32 @@
+import type { AreaMessages } from '../../messageTypes';
+import type en from '../en/commands';
+
+export default {
+  delete: 'Supprimer',
+  selectAnythingFirst: 'sélectionnez d’abord un système, un module ou un objet',
+  selectFirst: 'sélectionnez d’abord un système ou un objet',
+  moduleOffRail: 'ce module n’a pas de position sur son rail pour l’instant',
+  moduleAlongRail: 'un module glisse le long de son rail : utilisez les flèches dans le sens du rail',
+  wallItemAlongWall: 'un objet mural glisse le long de son mur : utilisez les flèches dans le sens du mur',
+  moveLeft: 'Déplacer la sélection de {step} m vers la gauche',
+  moveRight: 'Déplacer la sélection de {step} m vers la droite',
+  moveUp: 'Déplacer la sélection de {step} m vers le haut',
+  moveDown: 'Déplacer la sélection de {step} m vers le bas',
+  undo: 'Annuler',
+  redo: 'Rétablir',
+  nothingToUndo: 'rien à annuler',
+  nothingToRedo: 'rien à rétablir',
+  selectNext: 'Sélectionner le système ou l’objet suivant',
+  placeSomethingFirst: 'placez d’abord un modèle ou un meuble',
+  options: 'Options',
+  rotate: 'Pivoter',
+  rotateBack: 'Pivoter en arrière',
+  rotateLeftFine: 'Pivoter de {degrees}° à gauche',
+  rotateRightFine: 'Pivoter de {degrees}° à droite',
+  show3d: 'Afficher la vue 3D',
+  show2d: 'Afficher le plan 2D',
+  zoomIn: 'Zoom avant',
+  zoomOut: 'Zoom arrière',
+  zoomFit: 'Ajuster à la pièce',
+  deselect: 'Désélectionner',
+} satisfies AreaMessages<typeof en>;

@@ -1,0 +1,32 @@
+import type { AreaMessages } from '../../messageTypes';
+import type en from '../en/finishes';
+
+export default {
+  'white-paint': 'Peinture blanche',
+  'warm-white': 'Peinture blanc chaud',
+  'light-grey': 'Gris clair',
+  'mid-grey': 'Gris moyen',
+  'sage-green': 'Peinture vert sauge',
+  'light-oak': 'Parquet chêne clair',
+  concrete: 'Béton',
+  'grey-carpet': 'Moquette grise',
+  'dark-walnut': 'Parquet noyer foncé',
+  'dark-slate': 'Ardoise foncée',
+  'white-lacquer': 'Laque blanche',
+  'oak-veneer': 'Placage chêne',
+  'walnut-veneer': 'Placage noyer',
+  'black-metal': 'Thermolaquage noir',
+  'brushed-steel': 'Acier brossé',
+  'grey-fabric': 'Tissu gris',
+  'beige-linen': 'Lin beige',
+  'navy-fabric': 'Tissu bleu marine',
+  'white-linen': 'Linge de lit blanc',
+  'leaf-green': 'Feuilles',
+  terracotta: 'Terre cuite',
+  'book-spines': 'Dos de livres',
+  'canvas-print': 'Impression sur toile',
+  skin: 'Peau',
+  denim: 'Toile de jean',
+  'stone-worktop': 'Pierre claire',
+  'mid-grey-paint': 'Peinture gris moyen',
+} satisfies AreaMessages<typeof en>;

@@ -1,0 +1,32 @@
+import type { AreaMessages } from '../../messageTypes';
+import type en from '../en/commands';
+
+export default {
+  delete: 'Elimina',
+  selectAnythingFirst: 'seleziona prima un sistema, un modulo o un oggetto',
+  selectFirst: 'seleziona prima un sistema o un oggetto',
+  moduleOffRail: 'questo modulo al momento non ha una posizione sul suo binario',
+  moduleAlongRail: 'un modulo scorre lungo il suo binario: usa le frecce nella direzione del binario',
+  wallItemAlongWall: 'un oggetto a parete scorre lungo la sua parete: usa le frecce nella direzione della parete',
+  moveLeft: 'Sposta la selezione di {step} m a sinistra',
+  moveRight: 'Sposta la selezione di {step} m a destra',
+  moveUp: 'Sposta la selezione di {step} m in alto',
+  moveDown: 'Sposta la selezione di {step} m in basso',
+  undo: 'Annulla',
+  redo: 'Ripeti',
+  nothingToUndo: 'niente da annullare',
+  nothingToRedo: 'niente da ripetere',
+  selectNext: 'Seleziona il sistema o l’oggetto successivo',
+  placeSomethingFirst: 'posiziona prima un modello o un arredo',
+  options: 'Opzioni',
+  rotate: 'Ruota',
+  rotateBack: 'Ruota indietro',
+  rotateLeftFine: 'Ruota di {degrees}° a sinistra',
+  rotateRightFine: 'Ruota di {degrees}° a destra',
+  show3d: 'Mostra la vista 3D',
+  show2d: 'Mostra la pianta 2D',
+  zoomIn: 'Ingrandisci',
+  zoomOut: 'Riduci',
+  zoomFit: 'Adatta alla stanza',
+  deselect: 'Deseleziona',
+} satisfies AreaMessages<typeof en>;

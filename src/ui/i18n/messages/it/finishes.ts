@@ -1,0 +1,32 @@
+import type { AreaMessages } from '../../messageTypes';
+import type en from '../en/finishes';
+
+export default {
+  'white-paint': 'Pittura bianca',
+  'warm-white': 'Pittura bianco caldo',
+  'light-grey': 'Grigio chiaro',
+  'mid-grey': 'Grigio medio',
+  'sage-green': 'Pittura verde salvia',
+  'light-oak': 'Pavimento in rovere chiaro',
+  concrete: 'Cemento',
+  'grey-carpet': 'Moquette grigia',
+  'dark-walnut': 'Pavimento in noce scuro',
+  'dark-slate': 'Ardesia scura',
+  'white-lacquer': 'Laccato bianco',
+  'oak-veneer': 'Impiallacciatura rovere',
+  'walnut-veneer': 'Impiallacciatura noce',
+  'black-metal': 'Verniciatura a polvere nera',
+  'brushed-steel': 'Acciaio spazzolato',
+  'grey-fabric': 'Tessuto grigio',
+  'beige-linen': 'Lino beige',
+  'navy-fabric': 'Tessuto blu navy',
+  'white-linen': 'Biancheria da letto bianca',
+  'leaf-green': 'Foglie',
+  terracotta: 'Terracotta',
+  'book-spines': 'Dorsi di libri',
+  'canvas-print': 'Stampa su tela',
+  skin: 'Pelle',
+  denim: 'Tessuto jeans',
+  'stone-worktop': 'Pietra chiara',
+  'mid-grey-paint': 'Pittura grigio medio',
+} satisfies AreaMessages<typeof en>;

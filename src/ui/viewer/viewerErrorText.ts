@@ -1,0 +1,18 @@
+import type { MessageKey, Translate } from '../i18n/messageTypes';
+
+/**
+ * The 3D view's errors are English sentences (they also go to window.luxbox.view3d().error, which
+ * scripts and tests read); on screen the known ones are shown in the UI language: the sentence's
+ * fixed English opening is replaced by its translation, and the engine's detail after it (a file
+ * name, a WebGL message) is kept as it is.
+ */
+const KNOWN: readonly [prefix: string, key: MessageKey][] = [
+  ['The 3D view could not start: ', 'viewer.couldNotStart'],
+  ['Could not prepare the furniture for the light calculation: ', 'viewer.furnitureFailed'],
+  ['Could not load the photometric data: ', 'viewer.photometryFailed'],
+];
+
+export function viewerErrorText(t: Translate, english: string): string {
+  for (const [prefix, key] of KNOWN) if (english.startsWith(prefix)) return t(key, { problem: english.slice(prefix.length) });
+  return english;
+}
