@@ -1,6 +1,6 @@
 import type { Catalog } from '../../core/model/catalogSchema';
 import type { Configuration } from '../../core/model/configuration';
-import { modulePlacements, systemElements, type PlanRect } from '../../core/model/geometry';
+import { modulePlacements, systemElementTree, type PlanRect } from '../../core/model/geometry';
 import { suspensionPoints } from '../../core/model/suspensionPoints';
 import { objectPolygons } from './objectShapes';
 import { type PlanPoint, type PlanView, type ScreenPoint, screenToWorld } from './viewTransform';
@@ -93,8 +93,8 @@ export function objectAt(config: Configuration, x: number, z: number, margin: nu
 /**
  * The plan element under a screen point, found the way the drawn SVG stacks them (PlanSvg):
  * later systems above earlier ones; inside a system the module symbols on top, then the
- * visible rails and connectors, then the wide hit strips; objects come last, under every system. Elements alternate rail, connector,
- * rail, … (systemElements' contract), so only even ones name a rail.
+ * visible rails and connectors, then the wide hit strips; objects come last, under every system. A rail names
+ * itself; a connector node names the rail it ends (selecting it shows that node's branches and ports).
  */
 export function planHitTest(config: Configuration, catalog: Catalog, view: PlanView, point: ScreenPoint): PlanHit {
   const { x, z } = screenToWorld(view, point);
@@ -109,11 +109,11 @@ export function planHitTest(config: Configuration, catalog: Catalog, view: PlanV
   for (const system of [...config.systems].reverse()) {
     const module = [...modulePlacements(system, catalog)].reverse().find((m) => inside(moduleSymbol(m.footprint), x, z));
     if (module) return withFixing({ systemId: system.id, moduleId: module.moduleId });
-    const elements = systemElements(system, catalog);
+    const { elements, kinds } = systemElementTree(system, catalog);
     for (const widen of [false, true]) {
       for (let i = elements.length - 1; i >= 0; i--) {
         if (elements[i].some((r) => inside(widen ? hitStrip(r, view.scale) : r, x, z))) {
-          return withFixing({ systemId: system.id, railId: i % 2 === 0 ? system.rails[i / 2]?.id : undefined });
+          return withFixing({ systemId: system.id, railId: system.rails[kinds[i].rail]?.id });
         }
       }
     }

@@ -27,13 +27,13 @@ const branchParams = z.object({
 });
 type BranchParams = z.infer<typeof branchParams>;
 
-/** The connector a branch at this rail's end goes through: the node's own, else the one asked for. */
+/** The connector a branch at this rail's end goes through: the one asked for, else the node's own (another than the node's makes the node invalid: validate()'s node-connector). */
 function branchConnector(state: Configuration, p: BranchParams): string {
+  if (p.connector !== undefined) return p.connector;
   const { system, railIndex } = findRail(state, p.railId);
   const at = nodeJoints(system, railIndex);
   if (at.length > 0) return system.joints[at[0]].connector;
-  if (p.connector === undefined) throw new InputError('a branch at a free rail end needs a connector');
-  return p.connector;
+  throw new InputError('a branch at a free rail end needs a connector');
 }
 
 /**
@@ -107,6 +107,7 @@ export const setConnector: ActionDefinition<z.infer<typeof connectorParams>> = {
   perform(state, p, catalog) {
     const { systemIndex: si, system, railIndex } = findRail(state, p.railId);
     findConnector(catalog, p.connector);
+    if (nodeJoints(system, railIndex).length === 0) throw new InputError('no connector sits at the end of this rail; add a rail or a branch there');
     const joints = system.joints.map((j, k) => (jointParent(j, k) === railIndex ? { ...j, connector: p.connector } : j));
     // The connector's span can change: moved fixing points stay only when they keep the rules.
     return replaceSystem(state, si, keepFixingsIfValid({ ...system, joints }, catalog));

@@ -4,6 +4,7 @@ import aim from './aim';
 import app from './app';
 import commands from './commands';
 import common from './common';
+import connectors from './connectors';
 import exposure from './exposure';
 import files from './files';
 import filters from './filters';
@@ -24,6 +25,7 @@ export default {
   app,
   commands,
   common,
+  connectors,
   exposure,
   files,
   filters,
