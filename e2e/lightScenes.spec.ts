@@ -1,0 +1,79 @@
+import { expect, test, type Page } from '@playwright/test';
+import { sceneFile } from './helpers';
+
+/**
+ * Light scenes in the browser (docs/light-scenes.md): record two scenes in the panel, GO with a 1 s
+ * fade (the plan's module levels pass through intermediate values to the end state), Space and
+ * Shift+Space, and a share link that keeps the scenes.
+ */
+
+const levelOf = (page: Page, id: string) => page.locator(`[data-module-id="${id}"]`).first().getAttribute('data-level');
+
+test('record two scenes, GO with a 1 s fade, plan levels fade, Space / Shift+Space, share link keeps scenes', async ({ page, browser }) => {
+  await page.goto('/');
+  await page.getByRole('button', { name: 'Try the demo' }).click();
+  await page.getByTestId('preset-single').click();
+  const modules = (await sceneFile(page)).configuration.systems.flatMap((s) => s.rails.flatMap((r) => r.modules));
+  expect(modules.length).toBeGreaterThan(1);
+  const first = modules[0].id;
+  const panel = page.getByTestId('scene-panel');
+
+  // "Day": everything as placed (full level).
+  await panel.getByTestId('scene-name').fill('Day');
+  await panel.getByTestId('scene-record').click();
+  // "Evening": every module at 20 %.
+  await page.evaluate((ids) => ids.forEach((moduleId) => window.luxbox!.runAction('setModuleDimming', { moduleId, dimming: 0.2 })), modules.map((m) => m.id));
+  await panel.getByTestId('scene-name').fill('Evening');
+  await panel.getByTestId('scene-record').click();
+  await expect(panel.getByTestId('scene-row')).toHaveCount(2);
+  const fade = panel.getByTestId('scene-fade-input').nth(1);
+  await fade.fill('1');
+  await fade.press('Enter');
+  await expect.poll(() => page.evaluate(() => window.luxbox!.scenes().map((s) => [s.name, s.fade]))).toEqual([['Day', 3], ['Evening', 1]]);
+
+  // Back to Day at once; the plan shows full level.
+  expect(await page.evaluate(() => window.luxbox!.recall('Day', { fade: 0 }))).toEqual({ ok: true });
+  await expect.poll(() => levelOf(page, first)).toBe('1.000');
+
+  // Every level the plan shows for the first module, recorded from now on.
+  await page.evaluate((id) => {
+    const seen: string[] = [];
+    (window as unknown as { __levels: string[] }).__levels = seen;
+    new MutationObserver(() => {
+      const v = document.querySelector(`[data-module-id="${id}"]`)?.getAttribute('data-level');
+      if (v && seen[seen.length - 1] !== v) seen.push(v);
+    }).observe(document.querySelector('[data-testid="plan-svg"]')!, { attributes: true, subtree: true, attributeFilter: ['data-level'] });
+  }, first);
+  const go = panel.getByTestId('scene-go');
+  await expect(go).toHaveText('GO: Evening');
+  await go.click();
+  await expect.poll(() => levelOf(page, first)).toBe('0.200');
+  const seen = (await page.evaluate(() => (window as unknown as { __levels: string[] }).__levels)).map(Number);
+  // The fade passed through levels between the two scenes, falling monotonically.
+  expect(seen.filter((v) => v > 0.2 && v < 1).length).toBeGreaterThan(0);
+  for (let i = 1; i < seen.length; i++) expect(seen[i]).toBeLessThanOrEqual(seen[i - 1]);
+  expect(seen[seen.length - 1]).toBe(0.2);
+
+  // Shift+Space = BACK (Day, 3 s), Space = GO (Evening), with focus on no field.
+  await page.evaluate(() => (document.activeElement as HTMLElement | null)?.blur());
+  await page.keyboard.press('Shift+Space');
+  await expect.poll(() => page.evaluate(() => window.luxbox!.scenes().find((s) => s.current)?.name)).toBe('Day');
+  await expect.poll(() => levelOf(page, first), { timeout: 15_000 }).toBe('1.000');
+  await page.keyboard.press('Space');
+  await expect.poll(() => page.evaluate(() => window.luxbox!.scenes().find((s) => s.current)?.name)).toBe('Evening');
+  await expect.poll(() => levelOf(page, first)).toBe('0.200');
+  // Space while typing in a field types a space.
+  await panel.getByTestId('scene-name').fill('Late');
+  await panel.getByTestId('scene-name').press('Space');
+  await expect(panel.getByTestId('scene-name')).toHaveValue('Late ');
+
+  // A share link opened in a fresh browser keeps the scenes.
+  const link = await page.evaluate(() => window.luxbox!.getShareLink());
+  const other = await browser.newContext();
+  const p2 = await other.newPage();
+  await p2.goto(link.replace(/^https?:\/\/[^/]+/, new URL(page.url()).origin));
+  await expect(p2.getByTestId('plan')).toBeVisible();
+  expect(await p2.evaluate(() => window.luxbox!.scenes().map((s) => [s.name, s.fade]))).toEqual([['Day', 3], ['Evening', 1]]);
+  await expect(p2.getByTestId('scene-row')).toHaveCount(2);
+  await other.close();
+});
