@@ -19,10 +19,16 @@ export const FEED_POSITION_KINDS = ['ends', 'joints'] as const;
 const positive = z.number().finite().positive();
 const price = z.number().finite().nonnegative();
 const nonEmpty = z.string().min(1);
+/**
+ * A catalog text in the UI's other languages (docs/catalog-format.md, "Translations"): the entry's
+ * own `name`/`label`/`description` is the fallback for a language not given.
+ */
+const translations = z.strictObject({ en: nonEmpty.optional(), de: nonEmpty.optional(), fr: nonEmpty.optional(), it: nonEmpty.optional() }).optional();
 
 const beamSchema = z.strictObject({
   id: nonEmpty,
   label: nonEmpty,
+  labels: translations,
   /** Full beam angle (degrees) where the optic has one; omitted for diffusers and washers. */
   beamAngle: positive.optional(),
   article: nonEmpty,
@@ -59,6 +65,7 @@ const moduleTypeSchema = z
   .strictObject({
     id: nonEmpty,
     name: nonEmpty,
+    names: translations,
     /** Length of rail the module occupies, metres. */
     length: positive,
     ccts: z.array(z.number().int().min(1000).max(20000)).min(1),
@@ -87,7 +94,9 @@ const presetModuleSchema = z.strictObject({ type: nonEmpty, beam: nonEmpty.optio
 const presetSchema = z.strictObject({
   id: nonEmpty,
   name: nonEmpty,
+  names: translations,
   description: z.string(),
+  descriptions: translations,
   rails: z
     .array(z.strictObject({ length: positive, distribution: z.enum(DISTRIBUTIONS), modules: z.array(presetModuleSchema) }))
     .min(1),
@@ -104,6 +113,7 @@ export const catalogSchema = z
     rail: z.strictObject({
       article: nonEmpty,
       name: nonEmpty,
+      names: translations,
       minLength: positive,
       maxLength: positive,
       step: positive,
@@ -121,6 +131,7 @@ export const catalogSchema = z
           id: nonEmpty,
           article: nonEmpty,
           name: nonEmpty,
+          names: translations,
           /** 0 for a straight connector, otherwise the corner angle in degrees (used turning left or right); a flexible connector: the turn a new joint gets. */
           angle: z.number().finite().min(0).lt(180),
           /** Straight: gap between the joined rail ends. Corner or flexible: distance from each rail end to the hinge (corner) point. Metres. */
@@ -143,6 +154,7 @@ export const catalogSchema = z
     suspension: z.strictObject({
       article: nonEmpty,
       name: nonEmpty,
+      names: translations,
       /** Ceiling to photometric centre, metres. */
       min: positive,
       max: positive,
@@ -161,6 +173,7 @@ export const catalogSchema = z
     surfaceMount: z.strictObject({
       article: nonEmpty,
       name: nonEmpty,
+      names: translations,
       price,
       /** Largest distance between two clips along the chain, metres. */
       spacing: positive,
@@ -174,6 +187,7 @@ export const catalogSchema = z
     feed: z.strictObject({
       article: nonEmpty,
       name: nonEmpty,
+      names: translations,
       price,
       /** 'ends': the chain's start and end; 'joints': any connector. A one-rail system has no joints, so 'ends' is required. */
       positions: z.array(z.enum(FEED_POSITION_KINDS)).min(1),

@@ -3,9 +3,13 @@ import type { InstallationNeeds } from '../../core/model/installationNeeds';
 import { formatWatts } from '../../core/model/feedLoads';
 import { useI18n } from '../i18n/useI18n';
 import { formatMoney } from './formatMoney';
+import type { Catalog } from '../../core/model/catalogSchema';
+import { bomLineName } from '../i18n/bomLineName';
 
 export interface BomPanelProps {
   bom: BillOfMaterials;
+  /** The catalog the lines come from: their names are shown in the UI language (bomLineName); without it, as the BOM has them. */
+  catalog?: Catalog;
   /** Formats prices for this locale instead of the UI's (a panel rendered on its own, in a test); the texts stay the UI language's. */
   locale?: string;
   /** The installer's summary before the cart hand-off (feeds, ceiling fixings, load); omitted: not shown. */
@@ -13,8 +17,8 @@ export interface BomPanelProps {
 }
 
 /** Live bill of materials with prices (the configurator paper's planned live price): article, count, unit price, total. */
-export function BomPanel({ bom, needs, locale }: BomPanelProps) {
-  const { t, format } = useI18n();
+export function BomPanel({ bom, needs, locale, catalog }: BomPanelProps) {
+  const { t, format, language } = useI18n();
   const money = (x: number) => (locale ? formatMoney(x, bom.currency, locale) : format.money(x, bom.currency));
   return (
     <section className="panel-section" aria-labelledby="bom-title" data-testid="bom">
@@ -41,7 +45,7 @@ export function BomPanel({ bom, needs, locale }: BomPanelProps) {
             {bom.lines.map((l) => (
               <tr key={l.article}>
                 <td>
-                  <div>{l.name}</div>
+                  <div>{catalog ? bomLineName(l, catalog, language, t, format) : l.name}</div>
                   <div className="preset-detail">{l.article}</div>
                 </td>
                 <td className="num">{format.number(l.count)}</td>

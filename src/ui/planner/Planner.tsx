@@ -233,7 +233,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
           </FurniturePanel>
           <ScenePanel store={store} />
           <SurfacesPanel room={config.room} finishes={defaultSurfaceFinishes} gate={gate} />
-          <BomPanel bom={bom} needs={needs} />
+          <BomPanel bom={bom} needs={needs} catalog={catalog} />
           <section className="panel-section">
             <div className="setup-actions">
               <button type="button" className="btn" onClick={() => explain(onShare())} data-testid="share">

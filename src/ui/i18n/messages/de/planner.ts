@@ -48,4 +48,6 @@ export default {
   openFurnishedRoom: 'Eingerichteten Raum „{name}“ öffnen (ersetzt den aktuellen Raum; Rückgängig holt ihn zurück)',
   furnishedRoomUnbuildable: 'Der Raum „{name}“ lässt sich aus diesem Katalog nicht aufbauen ({problem}).',
   furnishedRoomDetail: 'Eingerichtet, mit Beleuchtung: ersetzt den aktuellen Raum',
+  bomModule: '{type}, {beam}, {cct} K',
+  bomDriver: 'Treiber {name}, {capacity} W {output}',
 } satisfies AreaMessages<typeof en>;

@@ -46,4 +46,6 @@ export default {
   openFurnishedRoom: 'Open the furnished room “{name}” (replaces the current room; undo brings it back)',
   furnishedRoomUnbuildable: 'The room “{name}” cannot be built from this catalog ({problem}).',
   furnishedRoomDetail: 'Furnished, with its lights: replaces the current room',
+  bomModule: '{type}, {beam}, {cct} K',
+  bomDriver: '{name} driver, {capacity} W {output}',
 };

@@ -48,4 +48,6 @@ export default {
   openFurnishedRoom: 'Ouvrir la pièce meublée « {name} » (remplace la pièce actuelle ; Annuler la rétablit)',
   furnishedRoomUnbuildable: 'La pièce « {name} » ne peut pas être construite avec ce catalogue ({problem}).',
   furnishedRoomDetail: 'Meublée, avec son éclairage : remplace la pièce actuelle',
+  bomModule: '{type}, {beam}, {cct} K',
+  bomDriver: 'Driver {name}, {capacity} W {output}',
 } satisfies AreaMessages<typeof en>;

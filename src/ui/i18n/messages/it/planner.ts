@@ -48,4 +48,6 @@ export default {
   openFurnishedRoom: 'Apri la stanza arredata «{name}» (sostituisce la stanza attuale; Annulla la ripristina)',
   furnishedRoomUnbuildable: 'La stanza «{name}» non può essere costruita con questo catalogo ({problem}).',
   furnishedRoomDetail: 'Arredata, con le sue luci: sostituisce la stanza attuale',
+  bomModule: '{type}, {beam}, {cct} K',
+  bomDriver: 'Driver {name}, {capacity} W {output}',
 } satisfies AreaMessages<typeof en>;
