@@ -36,6 +36,8 @@ export interface ChainCoordinates {
   readonly nodeDepth: readonly number[];
   /** Distance from a rail's end to its node's point (half the connector's span); 0 where free. */
   readonly nodeOut: readonly number[];
+  /** Every rail hangs on the one before: distances along the tree are differences of depth. */
+  readonly snake: boolean;
 }
 
 /** Length of profile a connector bridges between two rail ends: the straight gap, or both arms of a corner, flexible, T or X connector (at any turn). */
@@ -86,7 +88,7 @@ export function chainCoordinates(system: LightSystem, catalog: Catalog): ChainCo
     jointAt.push(nodeAt[p]);
   });
   const last = n - 1;
-  return { railStart, jointAt, length: last >= 0 ? railStart[last] + system.rails[last].length : 0, railLength: system.rails.map((r) => r.length), parent, nodeAt, depthStart, nodeDepth, nodeOut };
+  return { railStart, jointAt, length: last >= 0 ? railStart[last] + system.rails[last].length : 0, railLength: system.rails.map((r) => r.length), parent, nodeAt, depthStart, nodeDepth, nodeOut, snake: parent.every((p, i) => p === i - 1) };
 }
 
 /** A place on the tree: a rail and the distance from the chain start along the tree (a node: its rail's index and the node's depth). */
@@ -117,7 +119,7 @@ export function onRail(chain: ChainCoordinates, i: number, u: number): TreeLocat
  * run up to where their paths meet (the node below their lowest common rail).
  */
 export function treeDistance(chain: ChainCoordinates, a: TreeLocation, b: TreeLocation): number {
-  if (a.rail === b.rail) return Math.abs(a.depth - b.depth);
+  if (a.rail === b.rail || chain.snake) return Math.abs(a.depth - b.depth);
   const above = new Set<number>();
   for (let r = a.rail; r >= 0; r = chain.parent[r]) above.add(r);
   let c = b.rail;

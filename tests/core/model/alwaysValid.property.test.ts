@@ -23,6 +23,7 @@ import { WALL_NAMES } from '../../../src/core/model/configuration';
 import { objectMesh } from '../../../src/core/model/objectGeometry';
 import type { TriangleMesh } from '../../../src/core/mesh/triangleMesh';
 import { catalog } from './helpers';
+import { headingVector, railPlacements } from '../../../src/core/model/geometry';
 import { chainCoordinates } from '../../../src/core/model/chainCoordinates';
 import { feedLoads } from '../../../src/core/model/feedLoads';
 import { mountingRule, suspensionCoordinates } from '../../../src/core/model/suspensionPoints';
@@ -47,7 +48,7 @@ interface Step {
 }
 
 const unit = fc.double({ min: 0, max: 1, noNaN: true });
-const step = fc.record({ kind: fc.nat(48), i: fc.nat(50), j: fc.nat(50), a: unit, b: unit, c: unit });
+const step = fc.record({ kind: fc.nat(54), i: fc.nat(50), j: fc.nat(50), a: unit, b: unit, c: unit });
 
 const pick = <T>(xs: readonly T[], i: number, fallback: T): T => (xs.length ? xs[i % xs.length] : fallback);
 
@@ -69,7 +70,8 @@ function toAction(s: Configuration, st: Step): [string, unknown] {
   const feeds = s.systems.flatMap((x) => x.feeds.map((f) => f.id));
   const feed = pick(feeds, st.j, 'none');
   // Positions on both sides of what the chain has: ends, existing connectors, one past the last.
-  const at = st.a < 0.3 ? 'start' : st.a < 0.6 ? 'end' : { joint: st.j % 5 };
+  // Branch ends too (a leaf, a rail with a connector, one past the last rail).
+  const at = st.a < 0.3 ? 'start' : st.a < 0.5 ? 'end' : st.a < 0.8 ? { joint: st.j % 5 } : { end: st.j % 5 };
   const driver = pick(catalog.drivers.map((d) => d.id), st.i, 'none');
   switch (kind) {
     case 0:
@@ -204,6 +206,36 @@ function toAction(s: Configuration, st: Step): [string, unknown] {
     case 48:
       // Points anywhere in and around the room, below, level with and above the modules (aimAt clamps).
       return ['aimAt', { moduleId: mod, point: [-1 + st.a * (W + 2), st.c * 4.5, -1 + st.b * (D + 2)] }];
+    case 49:
+    case 50:
+    case 53:
+    case 54: {
+      // Branches: at any rail's end, through a T or X mostly (some corners, straights, flexible ones,
+      // or none: the node's own), at every port and at turns no port has; lengths up to 2.5 m.
+      // At a rail that already carries a connector, mostly its own (another one is refused).
+      const connectors = ['tee', 'cross', 'tee', 'cross', 'corner90', 'straight', 'flex'];
+      const hasNode = s.systems.some((x) => x.joints.some((j, k) => x.rails[j.parent ?? k].id === rail));
+      // (From the integer fields: the unit doubles cluster at their ends.)
+      const connector = (hasNode && st.j % 10 !== 0) || (!hasNode && st.j % 20 === 0) ? {} : { connector: connectors[st.j % connectors.length] };
+      // Mostly toward the room's centre (so branches fit and trees grow), else any port or none.
+      const owner = s.systems.find((x) => x.rails.some((r) => r.id === rail));
+      const placed = owner ? railPlacements(owner, catalog).find((r) => r.railId === rail) : undefined;
+      const inward = placed
+        ? [0, 90, -90].map((t) => ({ t, d: headingVector(placed.heading + t) })).sort((p, q) => (q.d[0] * (W / 2 - placed.end[0]) + q.d[1] * (D / 2 - placed.end[1])) - (p.d[0] * (W / 2 - placed.end[0]) + p.d[1] * (D / 2 - placed.end[1])))[(st.i % 5) % 2].t
+        : 0;
+      const turn = st.i % 4 === 3 ? [0, 90, -90, 45][st.j % 4] : inward;
+      return ['addBranch', { railId: rail, ...connector, turn, length: 0.5 + 0.1 * ((st.i * 7 + st.j) % (st.b < 0.5 ? 6 : 16)) }];
+    }
+    case 51: {
+      // Connector changes at rails that carry one (mostly), to every kind.
+      const withNode = s.systems.flatMap((x) => x.joints.map((j, k) => x.rails[j.parent ?? k].id));
+      return ['setConnector', { railId: st.b < 0.8 ? pick(withNode, st.i, rail) : rail, connector: pick(catalog.connectors, st.j, catalog.connectors[0]).id }];
+    }
+    case 52: {
+      // Inner rails of trees: rails that carry a connector node (splits into two, three or four pieces).
+      const inner = s.systems.flatMap((x) => x.joints.map((j, k) => x.rails[j.parent ?? k].id));
+      return ['removeRail', { railId: pick(inner.length ? inner : rails, st.j, 'none') }];
+    }
     default:
       return ['setRailLength', { railId: rail, length: 0.5 + 0.1 * (st.j % 26) }];
   }
@@ -211,7 +243,8 @@ function toAction(s: Configuration, st: Step): [string, unknown] {
 
 /**
  * Sequences per run. Issue 11 asks for 10 000 in CI: scripts/test.sh (the README's test command,
- * so CI) sets ALWAYS_VALID_RUNS=10000 (80 s on the shared 2-core machine); a plain `vitest run`
+ * so CI) sets ALWAYS_VALID_RUNS=10000 (80 s on the shared 2-core machine before trees; 341 s with trees while
+ * about seven agents shared it, 20 s per 1 000 then); a plain `vitest run`
  * while developing takes 5 000 (42 s).
  */
 const RUNS = Number(process.env.ALWAYS_VALID_RUNS ?? 5000);
@@ -224,6 +257,7 @@ describe('always-valid property', () => {
     const power = { enabled: 0, refused: 0, overloads: 0, surface: 0 };
     const free = { moves: 0, refusedMoves: 0, splits: 0, removals: 0, freeRails: 0 };
     const shape = { turns: 0, refusedTurns: 0, fixingMoves: 0, refusedFixingMoves: 0, movedSystems: 0, turned: 0 };
+    const trees = { branches: 0, refusedBranches: 0, connectorChanges: 0, branched: 0, tees: 0, crosses: 0, maxPieces: 0 };
     const aims = { enabled: 0, refused: 0, aimed: 0 };
     let placed = 0;
     fc.assert(
@@ -243,11 +277,14 @@ describe('always-valid property', () => {
           if (name === 'setJointTurn') shape[e === true ? 'turns' : 'refusedTurns']++;
           if (name === 'moveFixingPoint') shape[e === true ? 'fixingMoves' : 'refusedFixingMoves']++;
           if (name === 'setAim' || name === 'aimAt') aims[e === true ? 'enabled' : 'refused']++;
+          if (name === 'addBranch') trees[e === true ? 'branches' : 'refusedBranches']++;
+          if (name === 'setConnector' && e === true) trees.connectorChanges++;
           if (e === true) {
             counts.enabled++;
             const systemsBefore = s.systems.length;
             s = action.perform(s);
             if (name === 'removeRail' && s.systems.length > systemsBefore) free.splits++;
+            if (name === 'removeRail') trees.maxPieces = Math.max(trees.maxPieces, s.systems.length - systemsBefore + 1);
             const problems = validate(s, catalog);
             if (problems.length) throw new Error(`${name} ${JSON.stringify(params)} was enabled but left: ${problems[0].path}: ${problems[0].message}`);
           } else {
@@ -292,15 +329,31 @@ describe('always-valid property', () => {
           const tol = sys.fixings ? 1e-6 : 1e-9;
           if (sys.fixings) shape.movedSystems++;
           if (sys.joints.some((j) => j.turn !== 0 && Math.abs(j.turn) !== 90)) shape.turned++;
-          expect(pts[0]).toBeGreaterThan(-tol);
-          expect(pts[0]).toBeLessThanOrEqual(rule.maxOverhang + tol);
-          expect(chain.length - pts[pts.length - 1]).toBeGreaterThan(-tol);
-          expect(chain.length - pts[pts.length - 1]).toBeLessThanOrEqual(rule.maxOverhang + tol);
-          for (let k = 1; k < pts.length; k++) {
-            expect(pts[k] - pts[k - 1]).toBeGreaterThan(0);
-            expect(pts[k] - pts[k - 1]).toBeLessThanOrEqual(rule.spacing + tol);
-          }
-          for (const j of chain.jointAt) expect(pts.some((q) => Math.abs(q - j) < tol)).toBe(true);
+          // Per rail, along the tree (independent of fixingRules.ts): the supports in order are the
+          // node it hangs on, the points on it, and the node at its end; a free end (the chain start,
+          // any rail end without a connector) overhangs its outermost support by at most maxOverhang.
+          const nodeOf = (p: number) => pts.findIndex((q) => Math.abs(q - chain.nodeAt[p]) < tol);
+          for (let p = 0; p < sys.rails.length; p++) if (!Number.isNaN(chain.nodeAt[p])) expect(nodeOf(p)).toBeGreaterThanOrEqual(0);
+          for (let k = 1; k < pts.length; k++) expect(pts[k] - pts[k - 1]).toBeGreaterThan(0);
+          const covered = new Set<number>();
+          sys.rails.forEach((r, i) => {
+            const u0 = chain.railStart[i];
+            const on = pts.flatMap((q, k) => (q >= u0 - tol && q <= u0 + r.length + tol ? [k] : []));
+            on.forEach((k) => covered.add(k));
+            const depths = on.map((k) => chain.depthStart[i] + pts[k] - u0);
+            const p = chain.parent[i];
+            const startSupport = p >= 0 ? [chain.nodeDepth[p]] : [];
+            const endSupport = Number.isNaN(chain.nodeAt[i]) ? [] : [chain.nodeDepth[i]];
+            const seq = [...startSupport, ...depths, ...endSupport];
+            for (let k = 1; k < seq.length; k++) expect(seq[k] - seq[k - 1]).toBeLessThanOrEqual(rule.spacing + tol);
+            if (p < 0) expect(seq[0] - chain.depthStart[i]).toBeLessThanOrEqual(rule.maxOverhang + tol);
+            if (endSupport.length === 0) expect(chain.depthStart[i] + r.length - seq[seq.length - 1]).toBeLessThanOrEqual(rule.maxOverhang + tol);
+          });
+          // Every point is on a rail or at a connector node.
+          pts.forEach((q, k) => expect(covered.has(k) || chain.nodeAt.some((at) => Math.abs(at - q) < tol)).toBe(true));
+          if (sys.joints.some((j, k) => (j.parent ?? k) !== k)) trees.branched++;
+          trees.tees += sys.joints.filter((j) => j.connector === 'tee').length;
+          trees.crosses += sys.joints.filter((j) => j.connector === 'cross').length;
           if (sys.mounting === 'surface') power.surface++;
           free.freeRails += sys.rails.filter((r) => r.modules.some((m) => m.offset !== undefined)).length;
         }
@@ -311,16 +364,16 @@ describe('always-valid property', () => {
       }),
       { seed: 20240917, numRuns: RUNS },
     );
-    console.log(`always-valid: ${RUNS} sequences, ${JSON.stringify({ counts, finishes, objects, power, placed, free, shape, aims })}`);
+    console.log(`always-valid: ${RUNS} sequences, ${JSON.stringify({ counts, finishes, objects, power, placed, free, shape, aims, trees })}`);
     // both branches were exercised in bulk (at 2 000 sequences: 9 278 enabled, 15 157 refused steps;
     // 371 / 31 finishes, 2 561 / 1 172 object actions, 2 017 objects placed; bounds scale with RUNS)
     expect(counts.enabled).toBeGreaterThan(3 * RUNS);
     expect(counts.refused).toBeGreaterThan(3 * RUNS);
-    expect(finishes.enabled).toBeGreaterThan(0.15 * RUNS);
+    expect(finishes.enabled).toBeGreaterThan(0.12 * RUNS);
     expect(finishes.refused).toBeGreaterThan(0.007 * RUNS);
     expect(objects.enabled).toBeGreaterThan(0.8 * RUNS);
-    expect(objects.refused).toBeGreaterThan(0.4 * RUNS);
-    expect(placed).toBeGreaterThan(0.75 * RUNS);
+    expect(objects.refused).toBeGreaterThan(0.33 * RUNS);
+    expect(placed).toBeGreaterThan(0.68 * RUNS);
     // the power and mounting actions, and refusals for an overloaded driver, in bulk
     expect(power.enabled).toBeGreaterThan(RUNS / 4);
     // (two aim kinds thinned them: 466 at 1 000 sequences)
@@ -329,7 +382,7 @@ describe('always-valid property', () => {
     expect(power.surface).toBeGreaterThan(RUNS / 10);
     // free positions and rail removals at any index (splits included), in bulk
     // (at 5 000 sequences: 739 / 2 419 moves, 598 free rails at the ends, 213 removals, 72 splits)
-    expect(free.moves).toBeGreaterThan(RUNS / 10);
+    expect(free.moves).toBeGreaterThan(RUNS / 12);
     expect(free.refusedMoves).toBeGreaterThan(RUNS / 4);
     expect(free.freeRails).toBeGreaterThan(RUNS / 15);
     expect(free.removals).toBeGreaterThan(RUNS / 40);
@@ -338,15 +391,26 @@ describe('always-valid property', () => {
     // (at 2 000 sequences: 20 / 26 turns, 101 / 657 fixing moves, 84 systems ending with moved points, 41 with a flexible turn)
     expect(shape.turns).toBeGreaterThan(RUNS / 200);
     expect(shape.refusedTurns).toBeGreaterThan(RUNS / 200);
-    expect(shape.fixingMoves).toBeGreaterThan(RUNS / 30);
+    expect(shape.fixingMoves).toBeGreaterThan(RUNS / 40);
     expect(shape.refusedFixingMoves).toBeGreaterThan(RUNS / 20);
-    expect(shape.movedSystems).toBeGreaterThan(RUNS / 40);
+    expect(shape.movedSystems).toBeGreaterThan(RUNS / 50);
     expect(shape.turned).toBeGreaterThan(RUNS / 100);
     // aims set and refused (fixed types) in bulk, and aimed modules in the final states
     expect(aims.enabled).toBeGreaterThan(RUNS / 20);
     expect(aims.refused).toBeGreaterThan(RUNS / 40);
     expect(aims.aimed).toBeGreaterThan(RUNS / 40);
+    // trees (issue 11): branches through T and X connectors grown and refused, connector changes, branched systems
+    // reached, inner rails removed (at 5 000 sequences: 1 687 / 1 638 branches, 168 changes, 53 branched end states,
+    // 445 T and 478 X joints; the six tree kinds thinned the others: finishes 671, refused object actions 1 889,
+    // 3 875 objects placed, 514 free moves, 185 fixing moves, 128 systems with moved points; at 10 000: 3 340 / 3 278
+    // branches, 332 changes, 102 branched end states, 343 fixing moves)
+    expect(trees.branches).toBeGreaterThan(RUNS / 5);
+    expect(trees.refusedBranches).toBeGreaterThan(RUNS / 5);
+    expect(trees.connectorChanges).toBeGreaterThan(RUNS / 50);
+    expect(trees.branched).toBeGreaterThan(RUNS / 200);
+    expect(trees.tees).toBeGreaterThan(RUNS / 20);
+    expect(trees.crosses).toBeGreaterThan(RUNS / 20);
     // (five more action kinds thinned the others: object actions 0.8·RUNS and 0.4·RUNS, refused finishes 0.007·RUNS;
     // at 5 000 sequences: 66 / 50 turns, 242 / 1 664 fixing moves, 205 systems with moved points, 97 turned)
-  }, 120_000);
+  }, Math.max(120_000, 60 * RUNS)); // 60 ms a sequence: 10 000 took 341 s (34 ms each) on the shared machine under load
 });
