@@ -251,7 +251,7 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
   }, [plane, mapsVersion, progress.done]);
 
   const modules = useMemo(
-    () => config.systems.flatMap((s) => s.rails.flatMap((r) => r.modules.map((m) => ({ id: m.id, type: m.type, dimming: m.dimming })))),
+    () => config.systems.flatMap((s) => s.rails.flatMap((r) => r.modules.map((m) => ({ id: m.id, type: m.type, dimming: m.dimming, on: m.on })))),
     [config],
   );
   const maxPlane = config.room.height - 0.1;
@@ -327,7 +327,15 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
           <details className="viewer3d-modules">
             <summary>{t('viewer.dimmingModules', { count: modules.length })}</summary>
             {modules.map((m) => (
-              <DimmerRow key={m.id} id={m.id} type={m.type} dimming={m.dimming} onCommit={(d) => store.getState().dispatch('setModuleDimming', { moduleId: m.id, dimming: d })} />
+              <DimmerRow
+                key={m.id}
+                id={m.id}
+                type={m.type}
+                dimming={m.dimming}
+                onCommit={(d) => store.getState().dispatch('setModuleDimming', { moduleId: m.id, dimming: d })}
+                on={m.on !== false}
+                onSwitch={(on) => store.getState().dispatch('setModuleOn', { moduleId: m.id, on })}
+              />
             ))}
           </details>
         )}

@@ -22,5 +22,6 @@ export default {
   renameLabel: '{name} umbenennen',
   moveUp: '{name} nach oben',
   moveDown: '{name} nach unten',
+  moduleOn: 'Modul {id} ein',
   deleteLabel: '{name} löschen',
 } satisfies AreaMessages<typeof en>;

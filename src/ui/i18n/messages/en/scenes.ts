@@ -20,5 +20,6 @@ export default {
   renameLabel: 'Rename {name}',
   moveUp: 'Move {name} up',
   moveDown: 'Move {name} down',
+  moduleOn: 'Module {id} on',
   deleteLabel: 'Delete {name}',
 };

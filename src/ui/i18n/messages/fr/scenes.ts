@@ -22,5 +22,6 @@ export default {
   renameLabel: 'Renommer {name}',
   moveUp: 'Monter {name}',
   moveDown: 'Descendre {name}',
+  moduleOn: 'Module {id} allumé',
   deleteLabel: 'Supprimer {name}',
 } satisfies AreaMessages<typeof en>;

@@ -22,5 +22,6 @@ export default {
   renameLabel: 'Rinomina {name}',
   moveUp: 'Sposta su {name}',
   moveDown: 'Sposta giù {name}',
+  moduleOn: 'Modulo {id} acceso',
   deleteLabel: 'Elimina {name}',
 } satisfies AreaMessages<typeof en>;
