@@ -124,6 +124,23 @@ describe('trees of rails', () => {
     expect(validate(after, catalog)).toEqual([]);
   });
 
+  it('removing a rail with a parent and two branches leaves three systems', () => {
+    // A (1.5 m) → straight → R (1 m) → T → B (1 m, through) and C (1 m, left). By hand: R from (2.52, 3)
+    // to (3.52, 3); T pivot (3.57, 3); B from (3.62, 3), C from (3.57, 2.95) heading 90°.
+    let s = withPreset('single', 1, 3);
+    s = run(s, 'addRail', { systemId: only(s).id, connector: 'straight', turn: 0, length: 1 });
+    const r = only(s).rails[1].id;
+    s = run(s, 'addBranch', { railId: r, connector: 'tee', turn: 0, length: 1 });
+    s = run(s, 'addBranch', { railId: r, turn: 90, length: 1 });
+    const after = run(s, 'removeRail', { railId: r });
+    expect(after.systems.map((x) => x.rails.map((q) => q.id))).toEqual([[only(s).rails[0].id], [only(s).rails[2].id], [only(s).rails[3].id]]);
+    close([after.systems[1].x, after.systems[1].z, after.systems[1].rotation], [3.62, 3, 0]);
+    close([after.systems[2].x, after.systems[2].z, after.systems[2].rotation], [3.57, 2.95, 90]);
+    // The start feed stays with A; each branch gets its own planned feed.
+    expect(after.systems.map((x) => x.feeds.map((f) => f.at))).toEqual([['start'], ['start'], ['start']]);
+    expect(validate(after, catalog)).toEqual([]);
+  });
+
   it('judges moved fixing points per branch', () => {
     const sys = only(tee());
     expect(fixingProblem(sys, [0.375, 1.55, 2.35, 3.45], catalog)).toBeNull();
