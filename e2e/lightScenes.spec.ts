@@ -77,3 +77,32 @@ test('record two scenes, GO with a 1 s fade, plan levels fade, Space / Shift+Spa
   await expect(p2.getByTestId('scene-row')).toHaveCount(2);
   await other.close();
 });
+
+test('in 3D a crossfade between two solved scenes is relights only: frames drawn, no group bake, no indirect solve', async ({ page }) => {
+  type Status = { lit: boolean; frames: number; bake: { done: boolean; groupBakes: number; indirectSolves: number } };
+  const status = (): Promise<Status> => page.evaluate(() => window.luxbox!.view3d() as unknown as Status);
+  const BAKE = { timeout: 90_000, intervals: [250] };
+  await page.goto('/?quality=fast');
+  await page.getByRole('button', { name: 'Start planning' }).click();
+  await page.getByTestId('preset-single').click();
+  await expect.poll(async () => (await status()).bake.done, BAKE).toBe(true);
+  const ids = (await sceneFile(page)).configuration.systems.flatMap((s) => s.rails.flatMap((r) => r.modules.map((m) => m.id)));
+  await page.evaluate(() => window.luxbox!.recordScene('Day'));
+  await page.evaluate((list) => list.forEach((moduleId, k) => window.luxbox!.runAction('setModuleDimming', { moduleId, dimming: k === 0 ? 0.1 : 0.4 })), ids);
+  await page.evaluate(() => window.luxbox!.recordScene('Evening'));
+  // Evening's light is solved in the background; Day's solution is kept, so going back solves nothing.
+  await expect.poll(async () => (await status()).bake.done, BAKE).toBe(true);
+  const solved = (await status()).bake;
+  expect(await page.evaluate(() => window.luxbox!.recall('Day', { fade: 0 }))).toEqual({ ok: true });
+  await expect.poll(async () => (await status()).bake.done, BAKE).toBe(true);
+  expect((await status()).bake).toMatchObject({ groupBakes: solved.groupBakes, indirectSolves: solved.indirectSolves });
+
+  await page.getByTestId('tool-3d').click();
+  await expect.poll(async () => (await status()).lit, BAKE).toBe(true);
+  const before = await status();
+  expect(await page.evaluate(() => window.luxbox!.recall('Evening', { fade: 1 }))).toEqual({ ok: true });
+  const after = await status();
+  // Frames were drawn during the fade (a relight each), and nothing was baked or solved.
+  expect(after.frames).toBeGreaterThan(before.frames + 2);
+  expect(after.bake).toMatchObject({ groupBakes: before.bake.groupBakes, indirectSolves: before.bake.indirectSolves, done: true });
+});
