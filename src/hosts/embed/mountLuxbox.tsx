@@ -1,6 +1,5 @@
 import { StrictMode } from 'react';
 import { createRoot } from 'react-dom/client';
-import { Globals } from '@react-spring/web';
 import { InputError } from '../../core/inputError';
 import { isActionName } from '../../core/model/actionDefinitions';
 import { billOfMaterials } from '../../core/model/billOfMaterials';
@@ -73,9 +72,6 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
 
   if (start.clearHash && typeof history !== 'undefined') history.replaceState(null, '', location.pathname + location.search);
   if (storageKey && start.saveNow) writeLocal(storageKey, serializeConfiguration(start.config, catalog));
-
-  // Users who ask their system for less motion get instant zooms (also makes screenshots deterministic).
-  if (typeof matchMedia !== 'undefined' && matchMedia('(prefers-reduced-motion: reduce)').matches) Globals.assign({ skipAnimation: true });
 
   const listeners = new Set<(json: string) => void>();
   if (options.onChange) listeners.add(options.onChange);
