@@ -100,7 +100,7 @@ function PowerFeeds({ system, catalog, gate }: { system: LightSystem; catalog: C
       {free.length > 0 && (
         <OptionChips title={t('options.addFeed')}>
           {free.map((at) => (
-            <GatedButton key={JSON.stringify(at)} gate={gate} action="addFeed" params={{ systemId, at }} label={t('options.addFeedAt', { at: feedAtText(t, at) })} testId={`add-feed-${typeof at === 'string' ? at : `joint-${at.joint}`}`}>
+            <GatedButton key={JSON.stringify(at)} gate={gate} action="addFeed" params={{ systemId, at }} label={t('options.addFeedAt', { at: feedAtText(t, at) })} testId={`add-feed-${typeof at === 'string' ? at : 'joint' in at ? `joint-${at.joint}` : `end-${at.end}`}`}>
               + {feedAtText(t, at)}
             </GatedButton>
           ))}
