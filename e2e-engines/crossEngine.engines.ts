@@ -16,7 +16,8 @@ const QUALITY = process.env.LUXBOX_ENGINES_QUALITY ?? 'fast';
 const BAKE_TIMEOUT_MS = 150_000;
 /** Largest relative spread of a floor statistic across the engines (issue 13). */
 const TOLERANCE = 0.005;
-const OUT_DIR = 'test-results/engines';
+/** Screenshots, saved scene files and report.json (LUXBOX_ENGINES_OUT, else test-results/engines). */
+const OUT_DIR = process.env.LUXBOX_ENGINES_OUT ?? 'test-results/engines';
 
 let server: PreviewServer;
 const reports = new Map<EngineName, EngineReport>();
@@ -29,6 +30,7 @@ beforeAll(async () => {
 
 afterAll(async () => {
   await server?.stop();
+  await mkdir(OUT_DIR, { recursive: true });
   await writeFile(join(OUT_DIR, 'report.json'), JSON.stringify(Object.fromEntries(reports), null, 2));
 });
 

@@ -1,4 +1,4 @@
-import { writeFile } from 'node:fs/promises';
+import { mkdir, writeFile } from 'node:fs/promises';
 import { join } from 'node:path';
 import type { EngineDriver, EngineName } from './engineDriver';
 
@@ -20,8 +20,11 @@ export interface EngineReport {
   /** UNMASKED_RENDERER_WEBGL where the engine exposes it, else RENDERER; the supported WebGL2 extensions. */
   webgl: { renderer: string; extensions: string[] };
   viewport: [number, number];
-  /** The body's computed font stack and the rendered width (px) of the header title, a proxy for the font actually used. */
-  font: { family: string; titleWidth: number };
+  /**
+   * The header title's computed font stack, its rendered width (px), and the width the same text
+   * would have in candidate fonts (canvas measureText): which face the engine really picked.
+   */
+  font: { family: string; titleWidth: number; candidates: Record<string, number> };
   /** The header's total price after placing the L-corner preset, as shown. */
   price: string;
   /** The room the form produced from the typed "5", "4", "2,8". */
@@ -113,7 +116,13 @@ export async function runCrossEngineScenario(d: EngineDriver, baseUrl: string, o
   const font = await d.evaluate<EngineReport['font']>(`(() => {
     const h = document.querySelector('.luxbox h1') || document.querySelector('h1');
     const r = document.createRange(); r.selectNodeContents(h);
-    return { family: getComputedStyle(h).fontFamily, titleWidth: Math.round(r.getBoundingClientRect().width * 10) / 10 };
+    const ctx = document.createElement('canvas').getContext('2d');
+    const width = (family) => { ctx.font = getComputedStyle(h).fontWeight + ' ' + getComputedStyle(h).fontSize + ' ' + family; return Math.round(ctx.measureText(h.textContent).width * 10) / 10; };
+    return {
+      family: getComputedStyle(h).fontFamily,
+      titleWidth: Math.round(r.getBoundingClientRect().width * 10) / 10,
+      candidates: { 'system-ui': width('system-ui'), 'DejaVu Sans': width('"DejaVu Sans"'), 'Liberation Sans': width('"Liberation Sans"') },
+    };
   })()`);
   const price = await until(`${engine}: price shown`, () => d.evaluate<string>(`document.querySelector('${sel('header-total')}').textContent.trim()`), (p) => /\d/.test(p));
 
@@ -128,6 +137,7 @@ export async function runCrossEngineScenario(d: EngineDriver, baseUrl: string, o
   const shots: string[] = [];
   const shot = async (name: string) => {
     const path = join(outDir, `${engine}-${name}.png`);
+    await mkdir(outDir, { recursive: true });
     await d.screenshot(path);
     shots.push(path);
   };
@@ -154,6 +164,7 @@ export async function runCrossEngineScenario(d: EngineDriver, baseUrl: string, o
   // Scene file round trip: the JSON the app saves, the system deleted, the file opened through the UI.
   const savedText = await d.evaluate<string>('window.luxbox.getConfig()');
   const savedPath = join(outDir, `${engine}.luxbox.json`);
+  await mkdir(outDir, { recursive: true });
   await writeFile(savedPath, savedText);
   await d.click(sel('back-2d'));
   await until(`${engine}: back on the plan`, () => d.evaluate<boolean>(`!!document.querySelector('${sel('plan')}')`), (v) => v);

@@ -6,8 +6,8 @@ export const FIREFOX_PATH = process.env.FIREFOX_PATH ?? '/usr/bin/firefox-esr';
 
 /**
  * Debian's Firefox ESR through puppeteer-core over WebDriver BiDi (Playwright cannot fetch its
- * own Firefox build here). Headed under xvfb-run: that is the WebGL2 path a desktop user gets
- * (llvmpipe through GLX), where headless Firefox would pick another one.
+ * own Firefox build here). Headed under xvfb-run, as a desktop user runs it: WebGL2 on Mesa's
+ * llvmpipe through the X server.
  */
 export async function launchFirefox(): Promise<EngineDriver> {
   const browser = await puppeteer.launch({

@@ -17,6 +17,10 @@ export interface PreviewServer {
 export async function startPreview(): Promise<PreviewServer> {
   const port = Number(process.env.LUXBOX_ENGINES_PORT ?? Number(process.env.LUXBOX_E2E_PORT ?? 4173) + 1);
   const outDir = process.env.LUXBOX_ENGINES_OUTDIR ?? 'dist';
+  const url = `http://localhost:${port}`;
+  // Something already answering there would be tested instead of this tree's build: refuse.
+  const taken = await fetch(url).then(() => true, () => false);
+  if (taken) throw new Error(`port ${port} is already in use; set LUXBOX_ENGINES_PORT to a free port`);
   const child = spawn('npx', ['vite', 'preview', '--port', String(port), '--strictPort', '--outDir', outDir], {
     cwd: repoRoot,
     stdio: ['ignore', 'ignore', 'pipe'],
@@ -24,7 +28,6 @@ export async function startPreview(): Promise<PreviewServer> {
   });
   let stderr = '';
   child.stderr!.on('data', (d) => (stderr += String(d)));
-  const url = `http://localhost:${port}`;
   const end = Date.now() + 60_000;
   for (;;) {
     if (child.exitCode !== null) throw new Error(`vite preview exited (${child.exitCode}) before serving ${url}: ${stderr.trim()}`);
