@@ -129,6 +129,50 @@ export function treeDistance(chain: ChainCoordinates, a: TreeLocation, b: TreeLo
   return Math.abs(a.depth - meet) + Math.abs(b.depth - meet);
 }
 
+/**
+ * Distances along the tree from one location to every place at once, in time linear in the rails
+ * (feedLoads asks it once per feed instead of treeDistance once per module and feed, so a hostile
+ * file's deep tree stays cheap). Returns a function giving the distance to any location: the walk
+ * enters a rail through its start or through the node at its end, whichever is shorter (on a tree
+ * the path to a rail the source is not on passes one of them).
+ */
+export function distancesFrom(chain: ChainCoordinates, from: TreeLocation): (to: TreeLocation) => number {
+  const n = chain.railStart.length;
+  if (chain.snake) return (to) => Math.abs(to.depth - from.depth);
+  const end = (i: number) => chain.depthStart[i] + chain.railLength[i];
+  // Vertices: 2i = start of rail i, 2i + 1 = the node at its end (or its free end).
+  const adj: [number, number][][] = Array.from({ length: 2 * n }, () => []);
+  const link = (a: number, b: number, w: number) => (adj[a].push([b, w]), adj[b].push([a, w]));
+  for (let i = 0; i < n; i++) {
+    link(2 * i, 2 * i + 1, Number.isNaN(chain.nodeAt[i]) ? chain.railLength[i] : chain.nodeDepth[i] - chain.depthStart[i]);
+    const p = chain.parent[i];
+    if (p >= 0 && p < n) link(2 * p + 1, 2 * i, chain.depthStart[i] - chain.nodeDepth[p]);
+  }
+  const dist = new Float64Array(2 * n).fill(Infinity);
+  const r = from.rail;
+  const atNode = !Number.isNaN(chain.nodeAt[r]) && Math.abs(from.depth - chain.nodeDepth[r]) <= 1e-12;
+  dist[2 * r] = Math.abs(from.depth - chain.depthStart[r]);
+  dist[2 * r + 1] = atNode ? 0 : Math.abs((Number.isNaN(chain.nodeAt[r]) ? end(r) : chain.nodeDepth[r]) - from.depth);
+  const stack = [2 * r, 2 * r + 1];
+  const seen = new Uint8Array(2 * n);
+  seen[2 * r] = seen[2 * r + 1] = 1;
+  while (stack.length > 0) {
+    const v = stack.pop()!;
+    for (const [w, len] of adj[v]) {
+      if (seen[w]) continue;
+      seen[w] = 1;
+      dist[w] = dist[v] + len;
+      stack.push(w);
+    }
+  }
+  return (to) => {
+    if (to.rail === r) return Math.abs(to.depth - from.depth);
+    const i = to.rail;
+    const top = Number.isNaN(chain.nodeAt[i]) ? end(i) : chain.nodeDepth[i];
+    return Math.min(dist[2 * i] + (to.depth - chain.depthStart[i]), dist[2 * i + 1] + Math.abs(top - to.depth));
+  };
+}
+
 /** s of a feed position; NaN for a connector or rail the chain does not have. */
 export function feedCoordinate(at: FeedAt, chain: ChainCoordinates): number {
   if (at === 'start') return 0;

@@ -2,12 +2,12 @@
  * Power feeds and their loads (docs/model.md, "Power feeds"). Every module's input power
  * (the beam's `watts`, at full output: dimming is a setting, not a limit the driver may
  * rely on) goes to the feed nearest to the module's centre along the chain, on a tree along
- * its branches (chainCoordinates.ts treeDistance); a tie goes to the feed nearer the chain start. A feed is
+ * its branches (chainCoordinates.ts distancesFrom, treeDistance); a tie goes to the feed nearer the chain start. A feed is
  * overloaded when its load exceeds its driver's rated output power.
  */
 import { findBeam, findModuleType, type Catalog, type DriverSpec } from './catalogSchema';
 import type { Configuration, Feed, FeedAt, LightSystem } from './configuration';
-import { chainCoordinates, feedCoordinate, feedLocation, onRail, treeDistance, type ChainCoordinates, type TreeLocation } from './chainCoordinates';
+import { chainCoordinates, distancesFrom, feedCoordinate, feedLocation, onRail, type ChainCoordinates, type TreeLocation } from './chainCoordinates';
 import { isLeafRail, jointParent, nodeJoints } from './railTree';
 import { railModuleOffsets } from './geometry';
 
@@ -74,12 +74,16 @@ function nearestBy(distances: readonly number[], coords: readonly number[]): num
 export function feedLoads(system: LightSystem, catalog: Catalog): FeedLoad[] {
   const chain = chainCoordinates(system, catalog);
   const coords = system.feeds.map((f) => feedCoordinate(f.at, chain));
-  const places = system.feeds.map((f) => feedLocation(f.at, chain));
+  // One distance field per feed (linear in the rails), then one lookup per module and feed.
+  const fields = system.feeds.map((f) => {
+    const at = feedLocation(f.at, chain);
+    return at ? distancesFrom(chain, at) : null;
+  });
   const loads = system.feeds.map(() => 0);
   const ids: string[][] = system.feeds.map(() => []);
   if (system.feeds.length > 0) {
     for (const m of moduleLoads(system, catalog, chain)) {
-      const j = nearestBy(places.map((at) => (at ? treeDistance(chain, at, m.at) : Infinity)), coords);
+      const j = nearestBy(fields.map((d) => (d ? d(m.at) : Infinity)), coords);
       loads[j] += m.watts;
       ids[j].push(m.id);
     }

@@ -13,7 +13,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import { billOfMaterials } from '../../../src/core/model/billOfMaterials';
-import { chainCoordinates, feedLocation, onRail, treeDistance } from '../../../src/core/model/chainCoordinates';
+import { chainCoordinates, distancesFrom, feedLocation, onRail, treeDistance } from '../../../src/core/model/chainCoordinates';
 import type { Configuration } from '../../../src/core/model/configuration';
 import { allowedFeedPositions, feedLoads } from '../../../src/core/model/feedLoads';
 import { fixingProblem } from '../../../src/core/model/fixingRules';
@@ -57,6 +57,20 @@ describe('trees of rails', () => {
     expect(treeDistance(c, onRail(c, 0, 0.75), onRail(c, 2, 1))).toBeCloseTo(1.85, 9);
     expect(allowedFeedPositions(sys, catalog)).toEqual(['start', { joint: 0 }, { end: 1 }, 'end']);
     expect(feedLocation({ joint: 1 }, c)).toEqual(feedLocation({ joint: 0 }, c));
+  });
+
+  it('the per-feed distance field agrees with the pairwise tree distance on an X tree', () => {
+    let s = tee();
+    const a = only(s).rails[0].id;
+    s = run(run(s, 'setConnector', { railId: a, connector: 'cross' }), 'addBranch', { railId: a, turn: -90, length: 1 });
+    s = run(s, 'addBranch', { railId: only(s).rails[2].id, connector: 'tee', turn: -90, length: 0.5 });
+    const c = chainCoordinates(only(s), catalog);
+    const places = only(s).rails.flatMap((r, i) => [0, 0.3, r.length].map((u) => onRail(c, i, u)));
+    places.push(...only(s).rails.flatMap((_, i) => (Number.isNaN(c.nodeAt[i]) ? [] : [{ rail: i, depth: c.nodeDepth[i] }])));
+    for (const from of places) {
+      const field = distancesFrom(c, from);
+      for (const to of places) expect(field(to)).toBeCloseTo(treeDistance(c, from, to), 9);
+    }
   });
 
   it('derives a suspension on every branch and one at the connector', () => {
