@@ -3,6 +3,7 @@ import { useStore } from 'zustand';
 import { FADE_LIMITS } from '../../core/model/lightScenes';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import { useI18n } from '../i18n/useI18n';
+import { translateCoded } from '../i18n/translateCoded';
 import { scenePlayerFor } from './createScenePlayer';
 import { useSceneKeys } from './useSceneKeys';
 import './scenes.css';
@@ -32,7 +33,7 @@ export function ScenePanel({ store }: { store: ConfiguratorStore }) {
 
   const act = (action: string, params: unknown): boolean => {
     const r = store.getState().dispatch(action, params);
-    if (!r.ok) setNote(r.reason);
+    if (!r.ok) setNote(translateCoded(t, 'scenes', r));
     return r.ok;
   };
   const play = (p: Promise<{ ok: boolean; reason?: string }>) => {

@@ -56,6 +56,11 @@ describe('scene actions', () => {
     const [full, ev] = evening.lightScenes!;
     expect(refusal(evening, 'renameScene', { sceneId: ev.id, name: ' full ' })).toBe("a light scene named 'Full' exists already");
     expect(refusal(evening, 'recordScene', { name: '  ' })).toMatch(/needs a name/);
+    // Coded for the scene panel's translation (i18n area 'scenes').
+    expect(enabled(evening, 'renameScene', { sceneId: ev.id, name: 'FULL' })).toMatchObject({ code: 'nameTaken', params: { name: 'Full' } });
+    expect(enabled(evening, 'renameScene', { sceneId: ev.id, name: 'EVENING' })).toBe(true);
+    expect(enabled(evening, 'setSceneFade', { sceneId: ev.id, fade: 40 })).toMatchObject({ code: 'fadeRange', params: { min: 0, max: 30 } });
+    expect(enabled(evening, 'reorderScene', { sceneId: ev.id, index: 5 })).toMatchObject({ code: 'positionOutside', params: { position: 6, count: 2 } });
     expect(refusal(evening, 'setSceneFade', { sceneId: ev.id, fade: 31 })).toBe('a fade takes 0 to 30 s');
     expect(refusal(evening, 'setSceneFade', { sceneId: ev.id, fade: -0.1 })).toBe('a fade takes 0 to 30 s');
     expect(refusal(evening, 'recallScene', { sceneId: 'q999' })).toBe("no light scene with id 'q999'");

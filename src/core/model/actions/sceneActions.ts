@@ -5,9 +5,10 @@
  */
 import { z } from 'zod';
 import { InputError } from '../../inputError';
-import type { ActionDefinition } from '../action';
+import { refuse, type ActionDefinition, type CodedReason } from '../action';
 import type { Configuration, LightScene } from '../configuration';
-import { FADE_LIMITS, findScene, looksOf, recallLooks } from '../lightScenes';
+import { FADE_LIMITS, findScene, looksOf, recallLooks, SCENE_NAME_MAX, sceneByName } from '../lightScenes';
+import type { Problem } from '../validate';
 import { findModule, replaceRail, takeId } from './lookup';
 
 function sceneIndex(state: Configuration, sceneId: string): number {
@@ -19,6 +20,23 @@ function sceneIndex(state: Configuration, sceneId: string): number {
 function replaceScene(state: Configuration, sceneId: string, patch: Partial<LightScene>): Configuration {
   const i = sceneIndex(state, sceneId);
   return { ...state, lightScenes: state.lightScenes!.map((s, k) => (k === i ? { ...s, ...patch } : s)) };
+}
+
+/**
+ * A scene-name problem in the user's words, with a stable code the scene panel translates
+ * (i18n area 'scenes'): the name is missing, too long, or taken by another scene.
+ */
+function explainName(problem: Problem, state: Configuration, name: string): string | CodedReason {
+  if (problem.code === 'scene-name-taken') {
+    const taken = sceneByName(state, name)?.name ?? name.trim();
+    return { reason: `a light scene named '${taken}' exists already`, code: 'nameTaken', params: { name: taken } };
+  }
+  if (problem.code === 'scene-name') {
+    return name.trim() === ''
+      ? { reason: 'a light scene needs a name', code: 'nameMissing' }
+      : { reason: `a light scene name has at most ${SCENE_NAME_MAX} characters`, code: 'nameTooLong', params: { max: SCENE_NAME_MAX } };
+  }
+  return problem.message;
 }
 
 /** The default fade of a new scene, seconds: a calm change, as a console's default cue time (ETC Eos: 5 s; we take 3 s, issue #12's example). */
@@ -36,6 +54,7 @@ export const recordScene: ActionDefinition<z.infer<typeof recordParams>> = {
     const scene: LightScene = { id, name: p.name.trim(), fade: p.fade ?? DEFAULT_FADE, looks: looksOf(state) };
     return { ...next, lightScenes: [...(state.lightScenes ?? []), scene] };
   },
+  explain: (problem, state, p) => explainName(problem, state, p.name),
 };
 
 const sceneIdParams = z.object({ sceneId: z.string() });
@@ -55,6 +74,8 @@ export const renameScene: ActionDefinition<z.infer<typeof renameParams>> = {
   label: 'Rename scene',
   params: renameParams,
   perform: (state, p) => replaceScene(state, p.sceneId, { name: p.name.trim() }),
+  // The scene itself has the name already: renaming to its own name (other case) is not a clash.
+  explain: (problem, state, p) => explainName(problem, { ...state, lightScenes: state.lightScenes?.filter((s) => s.id !== p.sceneId) }, p.name),
 };
 
 const reorderParams = z.object({ sceneId: z.string(), index: z.number().int() });
@@ -66,7 +87,7 @@ export const reorderScene: ActionDefinition<z.infer<typeof reorderParams>> = {
   params: reorderParams,
   isEnabled(state, p) {
     const n = state.lightScenes?.length ?? 0;
-    if (p.index < 0 || p.index >= n) return { ok: false, reason: `position ${p.index + 1} is outside the list of ${n} scenes` };
+    if (p.index < 0 || p.index >= n) return refuse(`position ${p.index + 1} is outside the list of ${n} scenes`, { code: 'positionOutside', params: { position: p.index + 1, count: n } });
     return true;
   },
   perform(state, p) {
@@ -98,7 +119,8 @@ export const setSceneFade: ActionDefinition<z.infer<typeof fadeParams>> = {
   label: 'Fade time',
   params: fadeParams,
   perform: (state, p) => replaceScene(state, p.sceneId, { fade: p.fade }),
-  explain: (problem) => (problem.code === 'scene-fade' ? `a fade takes ${FADE_LIMITS.min} to ${FADE_LIMITS.max} s` : problem.message),
+  explain: (problem) =>
+    problem.code === 'scene-fade' ? { reason: `a fade takes ${FADE_LIMITS.min} to ${FADE_LIMITS.max} s`, code: 'fadeRange', params: { min: FADE_LIMITS.min, max: FADE_LIMITS.max } } : problem.message,
 };
 
 /**

@@ -24,4 +24,9 @@ export default {
   moveDown: '{name} nach unten',
   moduleOn: 'Modul {id} ein',
   deleteLabel: '{name} löschen',
+  nameTaken: 'Eine Lichtszene namens „{name}“ gibt es schon',
+  nameMissing: 'Eine Lichtszene braucht einen Namen',
+  nameTooLong: 'Ein Szenenname hat höchstens {max} Zeichen',
+  positionOutside: 'Position {position} liegt außerhalb der Liste mit {count} Szenen',
+  fadeRange: 'Eine Überblendung dauert {min} bis {max} s',
 } satisfies AreaMessages<typeof en>;

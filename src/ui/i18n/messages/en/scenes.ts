@@ -22,4 +22,10 @@ export default {
   moveDown: 'Move {name} down',
   moduleOn: 'Module {id} on',
   deleteLabel: 'Delete {name}',
+  // Refusals of the scene actions (codes from src/core/model/actions/sceneActions.ts).
+  nameTaken: 'A light scene named “{name}” exists already',
+  nameMissing: 'A light scene needs a name',
+  nameTooLong: 'A light scene name has at most {max} characters',
+  positionOutside: 'Position {position} is outside the list of {count} scenes',
+  fadeRange: 'A fade takes {min} to {max} s',
 };

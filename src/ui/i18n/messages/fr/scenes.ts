@@ -24,4 +24,9 @@ export default {
   moveDown: 'Descendre {name}',
   moduleOn: 'Module {id} allumé',
   deleteLabel: 'Supprimer {name}',
+  nameTaken: 'Une scène nommée « {name} » existe déjà',
+  nameMissing: 'Une scène lumineuse doit avoir un nom',
+  nameTooLong: 'Un nom de scène compte au plus {max} caractères',
+  positionOutside: 'La position {position} est hors de la liste de {count} scènes',
+  fadeRange: 'Un fondu dure de {min} à {max} s',
 } satisfies AreaMessages<typeof en>;

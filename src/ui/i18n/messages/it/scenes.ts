@@ -24,4 +24,9 @@ export default {
   moveDown: 'Sposta giù {name}',
   moduleOn: 'Modulo {id} acceso',
   deleteLabel: 'Elimina {name}',
+  nameTaken: 'Esiste già una scena chiamata «{name}»',
+  nameMissing: 'Una scena luminosa ha bisogno di un nome',
+  nameTooLong: 'Il nome di una scena ha al massimo {max} caratteri',
+  positionOutside: 'La posizione {position} è fuori dall’elenco di {count} scene',
+  fadeRange: 'Una dissolvenza dura da {min} a {max} s',
 } satisfies AreaMessages<typeof en>;
