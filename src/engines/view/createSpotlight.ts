@@ -172,6 +172,8 @@ export function createSpotlight(deps: SpotlightDeps) {
   };
   const onUp = (e: PointerEvent) => {
     if (!drag || e.pointerId !== drag.id || !target || !aim) return;
+    // The release's own position counts: the last move before it may have been coalesced away.
+    if (e.type !== 'pointercancel') onMove(e);
     const start = drag.start;
     drag = null;
     if (aim.rotation === start.rotation && aim.tilt === start.tilt) {
