@@ -33,8 +33,9 @@ test('mounts with the host room and locale; the host total follows actions run b
   await page.goto('/embed.html');
   // The room passed as an option, not the configurator's default and not its room-setup page.
   await expect(page.getByTestId('plan')).toBeVisible();
-  await expect(page.locator('.room-label')).toHaveText('Room 5.5 × 4.2 × 2.7 m');
-  await expect(page.getByTestId('plan-svg')).toHaveAttribute('aria-label', /^Room plan, 5\.5 by 4\.2 m/);
+  // The German storefront (de-DE) gets a German configurator with German number formatting.
+  await expect(page.locator('.room-label')).toHaveText('Raum 5,5 × 4,2 × 2,7 m');
+  await expect(page.getByTestId('plan-svg')).toHaveAttribute('aria-label', /^Raumplan, 5,5 mal 4,2 m/);
   expect(plain(await page.getByTestId('header-total').textContent())).toBe('0,00 €');
   expect(await text(page, 'host-total')).toBe('0,00 €');
 
@@ -185,7 +186,7 @@ test('setConfig with a corrupt scene file throws a clear InputError and changes 
   expect(result.unchanged).toBe(true);
   expect(result.changes).toBe(0);
   expect(await text(page, 'host-total')).toBe('857,90 €');
-  await expect(page.locator('.room-label')).toHaveText('Room 5.5 × 4.2 × 2.7 m');
+  await expect(page.locator('.room-label')).toHaveText('Raum 5,5 × 4,2 × 2,7 m');
 });
 
 test("a shop's own catalog priced in CHF changes the prices shown (de-CH)", async ({ page }) => {
@@ -277,14 +278,14 @@ test('in the 860 px box on a 1440 px window the layout follows the box: side pan
   expect(await host.evaluate((el) => el.clientWidth)).toBe(860);
   // Narrow layout (the one the standalone app has in a window this wide): the panel is a drawer
   // behind the header's Presets button, and it opens inside the box.
-  const toggle = page.locator('.panel-toggle'); // reads 'Presets', then 'Close' while the drawer is open
-  const panel = page.getByRole('complementary', { name: 'Presets and price' });
+  const toggle = page.locator('.panel-toggle'); // reads 'Vorlagen' (Presets), then 'Schließen' (Close) while the drawer is open: the German storefront
+  const panel = page.getByRole('complementary', { name: 'Vorlagen und Preis' });
   await expect(toggle).toBeVisible();
-  await expect(toggle).toHaveText('Presets');
+  await expect(toggle).toHaveText('Vorlagen');
   await expect(panel).toBeHidden();
   await toggle.click();
   await expect(panel).toBeVisible();
-  await expect(toggle).toHaveText('Close');
+  await expect(toggle).toHaveText('Schließen');
   const [pb, hb] = [(await panel.boundingBox())!, (await host.boundingBox())!];
   expect(pb.x).toBeGreaterThanOrEqual(hb.x);
   expect(pb.x + pb.width).toBeLessThanOrEqual(hb.x + hb.width + 0.5);

@@ -129,7 +129,8 @@ function open(): void {
   closedNote.hidden = true;
   instance = mountLuxbox(host, {
     room: SHOP_ROOM,
-    locale: shop.locale,
+    // The storefront's locale picks the configurator's language and formatting (de-DE: German); `?locale=fr-CH` tries another.
+    locale: new URLSearchParams(location.search).get('locale') ?? shop.locale,
     currency: shop.currency,
     catalog: shop.catalog,
     storageKey: shop.storageKey,

@@ -1,0 +1,105 @@
+import { expect, test, type Page } from '@playwright/test';
+import { sceneFile, zoomToModuleLevel } from './helpers';
+
+// Languages (issue #13, docs/i18n.md): the browser's language, `?lang=`, the visible switch, and
+// the embedding option `locale`. The default Playwright browser language is en-US.
+test.use({ reducedMotion: 'reduce', viewport: { width: 1440, height: 900 } });
+
+/** Intl's no-break spaces (U+00A0, U+202F) as plain spaces. */
+const plain = (s: string | null) => (s ?? '').replace(/[\u00a0\u202f]/g, ' ').trim();
+
+/**
+ * Records, from the first byte on, whether an English text of the room setup or the plan was
+ * ever in the document: a German page must never flash English while its texts load.
+ */
+async function watchForEnglish(page: Page): Promise<void> {
+  await page.addInitScript(() => {
+    const w = window as unknown as { __sawEnglish: string[] };
+    w.__sawEnglish = [];
+    new MutationObserver(() => {
+      const text = document.body?.innerText ?? '';
+      for (const english of ['Start planning', 'Your room', 'Bill of materials', 'Presets and price']) if (text.includes(english) && !w.__sawEnglish.includes(english)) w.__sawEnglish.push(english);
+    }).observe(document, { subtree: true, childList: true, characterData: true });
+  });
+}
+
+const sawEnglish = (page: Page) => page.evaluate(() => (window as unknown as { __sawEnglish: string[] }).__sawEnglish);
+
+test('?lang=de gives German texts in the room setup and the plan, with no English first frame', async ({ page }) => {
+  await watchForEnglish(page);
+  await page.goto('/?lang=de');
+  await expect(page.getByRole('heading', { name: 'Ihr Raum' })).toBeVisible();
+  await expect(page.locator('.app')).toHaveAttribute('lang', 'de');
+  // Validation messages in German, numbers with a decimal comma.
+  const width = page.getByLabel('Breite (m)');
+  await width.fill('45');
+  await expect(page.getByText('Die Breite muss zwischen 1 und 30 m liegen.')).toBeVisible();
+  await width.fill('6');
+  await page.getByLabel('Tiefe (m)').fill('4,5');
+  await page.getByRole('button', { name: 'Planung beginnen' }).click();
+  await expect(page.getByTestId('plan')).toBeVisible();
+  await expect(page.locator('.room-label')).toHaveText(/^Raum 6 × 4,5 × \d(,\d+)? m$/);
+  await page.getByTestId('preset-single').click();
+  const bom = page.getByTestId('bom');
+  await expect(bom.getByRole('heading', { name: 'Stückliste' })).toBeVisible();
+  // Catalog names come from the catalog's translations; prices follow the German locale.
+  await expect(bom).toContainText('Tragschiene 1,50 m');
+  await expect(bom).toContainText('Strahler, Enger Spot 12°, 3000 K');
+  expect(plain(await page.getByTestId('header-total').textContent())).toMatch(/^\d{1,3}(\.\d{3})*,\d{2} €$/);
+  await expect(page.getByTestId('tool-delete')).toContainText('Löschen');
+  // A refusal from the model, translated by its code: three 43 W spots nearly fill the 153.6 W driver (issue 11).
+  await zoomToModuleLevel(page);
+  await expect(page.locator('[data-testid^="plus-"] button')).toHaveAttribute('title', /: der 153,6-W-Treiber ist voll: 129 W belegt; /);
+  expect(await page.evaluate(() => window.luxbox!.getLanguage())).toEqual({ language: 'de', locale: 'de' });
+  expect(await sawEnglish(page)).toEqual([]);
+});
+
+test('the language switch changes the language and keeps the configuration; the choice is remembered', async ({ page }) => {
+  await page.goto('/?demo');
+  await expect(page.getByTestId('plan')).toBeVisible();
+  const before = await sceneFile(page);
+  const bomTitle = page.getByTestId('bom').getByRole('heading', { level: 2 });
+  await expect(bomTitle).toHaveText('Bill of materials');
+  const select = page.getByTestId('language-switch');
+  await expect(select).toHaveAccessibleName('Language');
+  // Keyboard reachable: focus it and pick French with the keyboard's value change.
+  await select.focus();
+  await select.selectOption('fr');
+  await expect(bomTitle).toHaveText('Nomenclature');
+  await expect(select).toHaveAccessibleName('Langue');
+  await expect(page.getByTestId('tool-undo')).toContainText('Annuler');
+  expect(await sceneFile(page)).toEqual(before);
+  expect(await page.evaluate(() => window.luxbox!.getLanguage().language)).toBe('fr');
+  expect(await page.evaluate(() => localStorage.getItem('luxbox.language'))).toBe('fr');
+  // Stored: the next visit opens in French (the demo scene again, so the plan is there to read).
+  await page.goto('/?demo');
+  await expect(page.getByTestId('bom').getByRole('heading', { level: 2 })).toHaveText('Nomenclature');
+  expect((await sceneFile(page)).configuration).toEqual(before.configuration);
+  // The API switches too, and says so.
+  await page.evaluate(() => window.luxbox!.setLanguage('it'));
+  await expect(page.getByTestId('bom').getByRole('heading', { level: 2 })).toHaveText('Distinta materiali');
+});
+
+test.describe('browser language', () => {
+  test.use({ locale: 'it-CH' });
+  test("an Italian-Swiss browser gets Italian texts and Swiss formatting", async ({ page }) => {
+    await page.goto('/?demo');
+    await expect(page.getByTestId('plan')).toBeVisible();
+    expect(await page.evaluate(() => window.luxbox!.getLanguage())).toEqual({ language: 'it', locale: 'it-CH' });
+    await expect(page.getByTestId('bom').getByRole('heading', { level: 2 })).toHaveText('Distinta materiali');
+    // it-CH writes a decimal point (CLDR; four-digit amounts are not grouped there), the euro sign in front.
+    expect(plain(await page.getByTestId('header-total').textContent())).toMatch(/^€ ?\d{1,3}(['’]?\d{3})*\.\d{2}$/);
+  });
+});
+
+test("the shop page embeds with locale 'fr-CH': French texts, Swiss-French formatting, prices in the catalog's currency", async ({ page }) => {
+  await page.goto('/embed.html?locale=fr-CH');
+  await expect(page.getByTestId('plan')).toBeVisible();
+  expect(await page.evaluate(() => window.shopDemo!.instance!.getLanguage())).toEqual({ language: 'fr', locale: 'fr-CH' });
+  await expect(page.locator('.room-label')).toHaveText('Pièce 5,5 × 4,2 × 2,7 m');
+  await expect(page.getByTestId('tool-delete')).toContainText('Supprimer');
+  // The German storefront's catalog is priced in EUR: French-Swiss formatting, never another currency.
+  expect(plain(await page.getByTestId('header-total').textContent())).toMatch(/€/);
+  // The shop chooses the language: no switch inside the embedded configurator.
+  await expect(page.getByTestId('language-switch')).toHaveCount(0);
+});
