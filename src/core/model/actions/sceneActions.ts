@@ -5,7 +5,7 @@
  */
 import { z } from 'zod';
 import { InputError } from '../../inputError';
-import { refuse, type ActionDefinition, type CodedReason } from '../action';
+import type { ActionDefinition, CodedReason } from '../action';
 import type { Configuration, LightScene } from '../configuration';
 import { FADE_LIMITS, findScene, looksOf, recallLooks, SCENE_NAME_MAX, sceneByName } from '../lightScenes';
 import type { Problem } from '../validate';
@@ -85,12 +85,10 @@ export const reorderScene: ActionDefinition<z.infer<typeof reorderParams>> = {
   name: 'reorderScene',
   label: 'Move scene',
   params: reorderParams,
-  isEnabled(state, p) {
-    const n = state.lightScenes?.length ?? 0;
-    if (p.index < 0 || p.index >= n) return refuse(`position ${p.index + 1} is outside the list of ${n} scenes`, { code: 'positionOutside', params: { position: p.index + 1, count: n } });
-    return true;
-  },
   perform(state, p) {
+    // Thrown, not a refusal in isEnabled: a refused action's perform must not produce a valid state (the always-valid property).
+    const n = state.lightScenes?.length ?? 0;
+    if (p.index < 0 || p.index >= n) throw new InputError(`position ${p.index + 1} is outside the list of ${n} scenes`, { code: 'positionOutside', params: { position: p.index + 1, count: n } });
     const i = sceneIndex(state, p.sceneId);
     const list = [...state.lightScenes!];
     const [scene] = list.splice(i, 1);
