@@ -7,7 +7,8 @@ import { objectLightOf } from '../../engines/view/objectLight';
 import { objectStats } from '../../engines/view/objectStats';
 import { sourceName } from '../../core/model/objectGeometry';
 import { PhotometryWarnings, type PhotometryNote } from '../shared/PhotometryWarnings';
-import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
+import type { ConfiguratorStore, Selection } from '../../core/store/createConfiguratorStore';
+import type { Configuration } from '../../core/model/configuration';
 import { CAMERA_PRESETS, type CameraPresetName } from '../../engines/view/cameraPresets';
 import { createViewerController, type ViewerController } from '../../engines/view/createViewerController';
 import { floorStats, workPlaneStats, type IlluminanceStats } from '../../engines/view/lightStats';
@@ -25,6 +26,7 @@ import './viewer.css';
 import { useI18n } from '../i18n/useI18n';
 import type { MessageKey } from '../i18n/messageTypes';
 import { viewerErrorText } from './viewerErrorText';
+import type { Translate } from '../i18n/messageTypes';
 
 export interface View3DProps {
   store: ConfiguratorStore;
@@ -44,6 +46,19 @@ const QUALITY_LABEL: Record<QualityLevel, MessageKey> = { fast: 'viewer.qualityF
  * change), so opening the view again after no change shows the baked light at once. Reads the
  * configuration, never changes it except through store actions.
  */
+/** The selected object's name or "Module <type>" for the panel ('Selected: …'), null when nothing of those is selected. */
+function selectionLabel(t: Translate, config: Configuration, selection: Selection): string | null {
+  if (!selection) return null;
+  if (selection.kind === 'object') {
+    const o = config.objects.find((x) => x.id === selection.id);
+    return o ? sourceName(config, o.source) : null;
+  }
+  if (selection.kind === 'module') {
+    for (const s of config.systems) for (const r of s.rails) for (const m of r.modules) if (m.id === selection.id) return t('viewer.selectedModule', { type: m.type });
+  }
+  return null;
+}
+
 export default function View3D({ store, loadPhotometry, onBack, visible = true }: View3DProps) {
   const { t, format } = useI18n();
   const config = useStore(store, (s) => s.config);
@@ -228,17 +243,7 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
   useEffect(() => {
     ctrl.current?.setSelection(selection);
   }, [selection, feed]);
-  const selectedLabel = useMemo(() => {
-    if (!selection) return null;
-    if (selection.kind === 'object') {
-      const o = config.objects.find((x) => x.id === selection.id);
-      return o ? sourceName(config, o.source) : null;
-    }
-    if (selection.kind === 'module') {
-      for (const s of config.systems) for (const r of s.rails) for (const m of r.modules) if (m.id === selection.id) return t('viewer.selectedModule', { type: m.type });
-    }
-    return null;
-  }, [selection, config, t]);
+  const selectedLabel = selectionLabel(t, config, selection);
 
   // Work plane: recomputed when the maps settle or the height changes (direct part on the CPU).
   useEffect(() => {
