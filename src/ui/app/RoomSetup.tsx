@@ -54,12 +54,14 @@ export interface RoomSetupProps {
 /** The first page (configurator paper §3.2): room dimensions with validation, then the main screen. */
 export function RoomSetup({ initial, onSubmit, onDemo, onResume }: RoomSetupProps) {
   const id = useId();
-  const { t } = useI18n();
-  const [values, setValues] = useState<Record<Field, string>>({
-    width: String(initial?.width ?? DEFAULT_ROOM.width),
-    depth: String(initial?.depth ?? DEFAULT_ROOM.depth),
-    height: String(initial?.height ?? DEFAULT_ROOM.height),
-  });
+  const { t, format } = useI18n();
+  // Shown with the locale's decimal separator ("2,7" in German); both separators are accepted back.
+  const shown = (v: number) => format.number(v, { useGrouping: false, maximumFractionDigits: 3 });
+  const [values, setValues] = useState<Record<Field, string>>(() => ({
+    width: shown(initial?.width ?? DEFAULT_ROOM.width),
+    depth: shown(initial?.depth ?? DEFAULT_ROOM.depth),
+    height: shown(initial?.height ?? DEFAULT_ROOM.height),
+  }));
   const [reflectance, setReflectance] = useState<Record<SurfaceName, Reflectance>>({ ...DEFAULT_REFLECTANCE, ...initial?.reflectance });
   const wallsAlike = WALL_NAMES.every((w) => sameReflectance(reflectance[w], reflectance.north));
   const chooseFinish = (target: SurfaceTarget) => (f: { reflectance: Reflectance }) =>

@@ -1,4 +1,5 @@
 import { useRef, useState } from 'react';
+import { useI18n } from '../i18n/useI18n';
 
 export interface CommitFieldProps {
   label: string;
@@ -18,9 +19,11 @@ export interface CommitFieldProps {
  * Decimal commas are accepted ("1,5").
  */
 export function CommitField({ label, value, decimals = 2, onCommit, onRefused, testId }: CommitFieldProps) {
+  const { t, format } = useI18n();
   const [draft, setDraft] = useState<string | null>(null);
   const cancelled = useRef(false);
-  const shown = draft ?? value.toFixed(decimals);
+  // In the UI's locale ("1,50" in German); typing either separator works, as parsing accepts both.
+  const shown = draft ?? format.number(value, { minimumFractionDigits: decimals, maximumFractionDigits: decimals, useGrouping: false });
 
   // Committing happens only on blur (Enter blurs), so a value is never committed twice.
   const commit = () => {
@@ -34,7 +37,7 @@ export function CommitField({ label, value, decimals = 2, onCommit, onRefused, t
     setDraft(null);
     const v = Number(text);
     if (text === '' || !Number.isFinite(v)) {
-      onRefused(`${label}: "${draft.trim()}" is not a number`);
+      onRefused(t('common.notANumber', { label, value: draft.trim() }));
       return;
     }
     if (Math.abs(v - value) < 1e-9) return;

@@ -8,4 +8,5 @@ export default {
   cancel: 'Abbrechen',
   ok: 'OK',
   loading: 'Wird geladen…',
+  notANumber: '{label}: „{value}“ ist keine Zahl',
 } satisfies AreaMessages<typeof en>;

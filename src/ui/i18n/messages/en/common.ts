@@ -6,4 +6,5 @@ export default {
   cancel: 'Cancel',
   ok: 'OK',
   loading: 'Loading…',
+  notANumber: '{label}: "{value}" is not a number',
 };

@@ -8,4 +8,5 @@ export default {
   cancel: 'Annuler',
   ok: 'OK',
   loading: 'Chargement…',
+  notANumber: '{label} : « {value} » n’est pas un nombre',
 } satisfies AreaMessages<typeof en>;

@@ -8,4 +8,5 @@ export default {
   cancel: 'Annulla',
   ok: 'OK',
   loading: 'Caricamento…',
+  notANumber: '{label}: «{value}» non è un numero',
 } satisfies AreaMessages<typeof en>;
