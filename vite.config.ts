@@ -1,5 +1,6 @@
 /// <reference types="vitest/config" />
 import { readFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
 import { defineConfig, type Plugin } from 'vite';
 import react from '@vitejs/plugin-react';
 
@@ -36,9 +37,18 @@ function zodWithoutJsonSchema(): Plugin {
   };
 }
 
+/**
+ * `zod` → src/core/zodClassicOnMini.ts (classic's API on zod/mini, −10 KiB gzip of the first
+ * screen) in the browser build, and in Vitest when LUXBOX_ZOD_MINI=1 (to run the model's tests
+ * against it: `LUXBOX_ZOD_MINI=1 npx vitest run tests/core/model`).
+ */
+const zodOnMini = (command: string) =>
+  command === 'build' || process.env.LUXBOX_ZOD_MINI === '1' ? [{ find: /^zod$/, replacement: fileURLToPath(new URL('./src/core/zodClassicOnMini.ts', import.meta.url)) }] : [];
+
 // One config for the app build and for Vitest (unit + headless-gl tests).
-export default defineConfig({
+export default defineConfig(({ command }) => ({
   plugins: [react(), zodWithoutJsonSchema()],
+  resolve: { alias: zodOnMini(command) },
   server: { port: 5173, strictPort: false, host: true },
   preview: { port: 4173, strictPort: true },
   build: {
@@ -58,4 +68,4 @@ export default defineConfig({
     testTimeout: 120_000,
     hookTimeout: 120_000,
   },
-});
+}));
