@@ -1,4 +1,5 @@
 import type { CSSProperties, ReactNode } from 'react';
+import { useI18n } from '../i18n/useI18n';
 
 export interface ActionButtonProps {
   /** Accessible name (also the visible label when no icon is given). */
@@ -22,6 +23,7 @@ export interface ActionButtonProps {
  */
 export function ActionButton(props: ActionButtonProps) {
   const { label, disabledReason, onPress, onDisabledPress, children, className, style, pressed, testId } = props;
+  const { t } = useI18n();
   const disabled = disabledReason !== null;
   return (
     <button
@@ -31,7 +33,7 @@ export function ActionButton(props: ActionButtonProps) {
       aria-label={label}
       aria-disabled={disabled || undefined}
       aria-pressed={pressed}
-      title={disabled ? `${label}: ${disabledReason}` : label}
+      title={disabled ? t('common.labelWithReason', { label, reason: disabledReason }) : label}
       data-testid={testId}
       onPointerDown={(e) => e.stopPropagation()}
       onClick={(e) => {

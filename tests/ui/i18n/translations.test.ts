@@ -21,9 +21,9 @@ const placeholders = (v: string | PluralMessage) => [...new Set(forms(v).flatMap
  * same way (checked by hand). Anything else equal to English is an untranslated string.
  */
 const SAME_AS_ENGLISH: Record<string, readonly string[]> = {
-  de: ['common.ok', 'app.fieldInMetres', 'options.kelvin', 'options.finishOption', 'options.driverChoice', 'live.cct', 'live.universeShort', 'viewer.modeLux', 'planner.bomModule', 'options.clipN', 'a11y.system', 'filters.chromaticity', 'filters.transmission', 'furniture.sideboard', 'scenes.go', 'scenes.goTo', 'scenes.seconds'],
+  de: ['common.ok', 'common.labelWithReason', 'app.fieldInMetres', 'options.kelvin', 'options.finishOption', 'options.driverChoice', 'live.cct', 'live.universeShort', 'viewer.modeLux', 'planner.bomModule', 'options.clipN', 'a11y.system', 'filters.chromaticity', 'filters.transmission', 'furniture.sideboard', 'scenes.go', 'scenes.goTo', 'scenes.seconds'],
   fr: ['common.ok', 'app.fieldInMetres', 'options.kelvin', 'options.finishOption', 'options.driverChoice', 'live.cct', 'live.universeShort', 'viewer.modeLux', 'planner.bomModule', 'planner.bomLineTotal', 'planner.bomArticle', 'options.panel', 'commands.options', 'app.surfaces', 'options.rotation', 'options.railTitle', 'options.suspensionField', 'options.mounting', 'options.railChip', 'files.triangles', 'live.sources', 'live.connectedStatus', 'viewer.selectedModule', 'furniture.sofa', 'planner.bomTotal', 'planner.toolOptions', 'a11y.railCount', 'a11y.moduleCount', 'aim.rotation', 'filters.chromaticity', 'filters.transmission', 'scenes.go', 'scenes.seconds'],
-  it: ['common.ok', 'app.fieldInMetres', 'options.kelvin', 'options.finishOption', 'options.driverChoice', 'live.cct', 'live.universeShort', 'viewer.modeLux', 'planner.bomModule', 'finishes.terracotta', 'options.clipN', 'exposure.ev100', 'filters.chromaticity', 'scenes.go', 'scenes.goTo', 'scenes.seconds'],
+  it: ['common.ok', 'common.labelWithReason', 'app.fieldInMetres', 'options.kelvin', 'options.finishOption', 'options.driverChoice', 'live.cct', 'live.universeShort', 'viewer.modeLux', 'planner.bomModule', 'finishes.terracotta', 'options.clipN', 'exposure.ev100', 'filters.chromaticity', 'scenes.go', 'scenes.goTo', 'scenes.seconds'],
 };
 
 describe('translations', async () => {

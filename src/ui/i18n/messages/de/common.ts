@@ -9,4 +9,5 @@ export default {
   ok: 'OK',
   loading: 'Wird geladen…',
   notANumber: '{label}: „{value}“ ist keine Zahl',
+  labelWithReason: '{label}: {reason}',
 } satisfies AreaMessages<typeof en>;

@@ -7,4 +7,5 @@ export default {
   ok: 'OK',
   loading: 'Loading…',
   notANumber: '{label}: "{value}" is not a number',
+  labelWithReason: '{label}: {reason}',
 };

@@ -9,4 +9,5 @@ export default {
   ok: 'OK',
   loading: 'Chargement…',
   notANumber: '{label} : « {value} » n’est pas un nombre',
+  labelWithReason: '{label} : {reason}',
 } satisfies AreaMessages<typeof en>;

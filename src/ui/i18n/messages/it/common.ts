@@ -9,4 +9,5 @@ export default {
   ok: 'OK',
   loading: 'Caricamento…',
   notANumber: '{label}: «{value}» non è un numero',
+  labelWithReason: '{label}: {reason}',
 } satisfies AreaMessages<typeof en>;
