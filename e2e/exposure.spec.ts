@@ -1,0 +1,61 @@
+import { expect, test, type Page } from '@playwright/test';
+import { PNG } from 'pngjs';
+import type { ViewerStatus as Status } from '../src/ui/viewer/viewerStatus';
+
+// The 3D view's exposure (docs/viewer.md, "Exposure: automatic or a fixed EV100"): with the exposure
+// locked, dimming every module makes the image darker; with auto exposure it looks about the same.
+test.use({ reducedMotion: 'reduce', viewport: { width: 1280, height: 800 } });
+
+const status = (page: Page): Promise<Status> => page.evaluate(() => window.luxbox!.view3d() as Status);
+
+/** Mean sRGB value (0..255) of a PNG screenshot. */
+function meanLevel(png: Buffer): number {
+  const img = PNG.sync.read(png);
+  let sum = 0;
+  for (let i = 0; i < img.data.length; i += 4) sum += (img.data[i] + img.data[i + 1] + img.data[i + 2]) / 3;
+  return sum / (img.width * img.height);
+}
+
+/** Every module of the configuration to `dimming` through the embed API; waits for the relit floor. */
+async function dimAll(page: Page, dimming: number, floorBelow: number): Promise<void> {
+  await page.evaluate((d) => {
+    const config = JSON.parse(window.luxbox!.getConfig());
+    for (const system of config.configuration.systems) for (const rail of system.rails) for (const m of rail.modules) window.luxbox!.runAction('setModuleDimming', { moduleId: m.id, dimming: d });
+  }, dimming);
+  await expect.poll(async () => (await status(page)).floor!.avg, { timeout: 30_000 }).toBeLessThan(floorBelow);
+  await expect.poll(async () => (await status(page)).done, { timeout: 60_000, intervals: [250] }).toBe(true);
+}
+
+test('lock exposure: dimming to 25 % darkens the image; back on auto it is re-exposed to about the same brightness', async ({ page }) => {
+  await page.goto('/?quality=fast');
+  await page.getByRole('button', { name: 'Start planning' }).click();
+  await page.getByTestId('preset-corner-l').click();
+  await page.getByTestId('tool-3d').click();
+  const canvas = page.getByTestId('view3d-canvas');
+  await expect(canvas).toBeVisible();
+  await expect.poll(async () => (await status(page)).done, { timeout: 90_000, intervals: [250] }).toBe(true);
+  const full = await status(page);
+  const autoFull = meanLevel(await canvas.screenshot());
+  expect(autoFull).toBeGreaterThan(25);
+
+  // Lock at what auto exposure chose: the control shows the EV100 and keeps it.
+  const control = page.getByTestId('exposure-control');
+  await expect(control).toHaveAttribute('data-ev100', 'auto');
+  await page.getByTestId('exposure-lock').click();
+  await expect(control).not.toHaveAttribute('data-ev100', 'auto');
+  const locked = Number(await control.getAttribute('data-ev100'));
+  expect(locked).toBeGreaterThan(0);
+  expect(locked).toBeLessThan(12);
+  await expect(page.getByTestId('exposure-ev100')).toBeVisible();
+
+  await dimAll(page, 0.25, full.floor!.avg * 0.3);
+  const lockedDim = meanLevel(await canvas.screenshot());
+  // A quarter of the light at the same exposure: clearly darker (two stops through the ACES curve and sRGB).
+  expect(lockedDim).toBeLessThan(autoFull * 0.75);
+  expect(Number(await control.getAttribute('data-ev100'))).toBe(locked);
+
+  // Auto again: the view exposes the dim room up to about the full room's brightness.
+  await page.getByTestId('exposure-auto').click();
+  await expect(control).toHaveAttribute('data-ev100', 'auto');
+  await expect.poll(async () => meanLevel(await canvas.screenshot()), { timeout: 10_000 }).toBeGreaterThan(autoFull * 0.9);
+});
