@@ -36,8 +36,18 @@ export type Enablement = true | Refusal;
 /** What running an action on a state gives: the next state, or why not. */
 export type Outcome = { readonly ok: true; readonly next: Configuration } | Refusal;
 
+/**
+ * A refusal. Its `code` and `params` are readable but not enumerable: metadata for a UI that words
+ * the reason in another language, while the refusal's data — what JSON, spreads and deep equality
+ * see — stays `{ ok: false, reason }`.
+ */
 export function refuse(reason: string, coded?: { code?: string; params?: Readonly<Record<string, string | number>> }): Refusal {
-  return coded?.code ? { ok: false, reason, code: coded.code, ...(coded.params ? { params: coded.params } : {}) } : { ok: false, reason };
+  const refusal: Refusal = { ok: false, reason };
+  if (coded?.code) {
+    Object.defineProperty(refusal, 'code', { value: coded.code, enumerable: false });
+    if (coded.params) Object.defineProperty(refusal, 'params', { value: coded.params, enumerable: false });
+  }
+  return refusal;
 }
 
 /** Just the verdict of an outcome. */

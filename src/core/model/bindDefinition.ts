@@ -41,7 +41,9 @@ function decide<P>(def: ActionDefinition<P>, state: Configuration, params: P, ca
   const explained = def.explain?.(first, state, params, catalog) ?? first.message;
   // The code travels with the sentence it names: the action's own coded reason, or the overload's when the action kept its wording.
   if (typeof explained !== 'string') return { state, outcome: refuse(explained.reason, explained), performed };
-  return { state, outcome: refuse(explained, explained === overload?.reason ? overload : undefined), performed };
+  // When the action kept the problem's own sentence, the problem's code and params name it.
+  const coded = overload && explained === overload.reason ? overload : explained === first.message ? first : undefined;
+  return { state, outcome: refuse(explained, coded), performed };
 }
 
 /**

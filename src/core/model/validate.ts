@@ -23,8 +23,10 @@ import { isLeafRail, jointParent, treeProblem } from './railTree';
 export interface Problem {
   /** Stable machine-readable code, e.g. 'outside-room'. */
   readonly code: string;
-  /** One sentence for people. */
+  /** One sentence for people (English: CLI, logs, the embedding API). */
   readonly message: string;
+  /** The values in `message`, for UIs that word it in another language by `code` (docs/i18n.md); absent where none are given yet. */
+  readonly params?: Readonly<Record<string, string | number>>;
   /** Where: e.g. 'systems[1].rails[0].modules[2].cct'. */
   readonly path: string;
 }
@@ -106,8 +108,8 @@ export function validate(config: Configuration, catalog: Catalog, options: Valid
     if (own[i].length > 0) return problems.push(...own[i]);
     const at = `systems[${i}]`;
     if (outside[i]) problems.push(outside[i]);
-    if (selfCrossing.has(i)) problems.push({ code: 'self-overlap', path: at, message: `system ${s.id} runs into itself` });
-    [...clashes[i]].sort((a, b) => a - b).forEach((j) => problems.push({ code: 'system-overlap', path: at, message: `system ${s.id} overlaps system ${config.systems[j].id}` }));
+    if (selfCrossing.has(i)) problems.push({ code: 'self-overlap', path: at, message: `system ${s.id} runs into itself`, params: { id: s.id } });
+    [...clashes[i]].sort((a, b) => a - b).forEach((j) => problems.push({ code: 'system-overlap', path: at, message: `system ${s.id} overlaps system ${config.systems[j].id}`, params: { id: s.id, other: config.systems[j].id } }));
   });
   if (first && problems.length > 0) return problems;
   // Objects last: they never clash with systems or each other (overlapping furniture is the user's business).
@@ -120,7 +122,7 @@ function outsideRoom(elements: PlanRect[][], width: number, depth: number): bool
 }
 
 function outsideProblem(s: LightSystem, index: number, room: Configuration['room']): Problem {
-  return { code: 'outside-room', path: `systems[${index}]`, message: `system ${s.id} reaches outside the ${room.width} × ${room.depth} m room` };
+  return { code: 'outside-room', path: `systems[${index}]`, message: `system ${s.id} reaches outside the ${room.width} × ${room.depth} m room`, params: { id: s.id, width: room.width, depth: room.depth } };
 }
 
 interface Box {
@@ -207,7 +209,7 @@ export function roomProblems(config: Configuration): Problem[] {
     const v = config.room[key];
     if (!withinRoomLimits(key, v)) {
       const { min, max } = ROOM_LIMITS[key];
-      out.push({ code: 'room-dimension', path: `room.${key}`, message: `room ${key} must be between ${min} and ${max} m (got ${v})` });
+      out.push({ code: 'room-dimension', path: `room.${key}`, message: `room ${key} must be between ${min} and ${max} m (got ${v})`, params: { dimension: key, min, max, value: v } });
     }
   }
   const reflectance = (config.room.reflectance ?? {}) as Record<string, unknown>;
@@ -272,7 +274,7 @@ export function systemProblems(config: Configuration, index: number, catalog: Ca
   const chainIndex = elements.flatMap((group, a) => group.map(() => a));
   let crosses = false;
   forEachOverlap(rects, stats, () => ((crosses = true), 'stop'), (p, q) => !tree.near[chainIndex[p]].has(chainIndex[q]));
-  if (crosses) out.push({ code: 'self-overlap', path: at, message: `system ${s.id} runs into itself` });
+  if (crosses) out.push({ code: 'self-overlap', path: at, message: `system ${s.id} runs into itself`, params: { id: s.id } });
   const mine = rects.map(boxOf);
   const box = mine.reduce((u, b) => ({ minX: Math.min(u.minX, b.minX), minZ: Math.min(u.minZ, b.minZ), maxX: Math.max(u.maxX, b.maxX), maxZ: Math.max(u.maxZ, b.maxZ) }), { minX: Infinity, minZ: Infinity, maxX: -Infinity, maxZ: -Infinity });
   config.systems.forEach((other, j) => {
@@ -287,7 +289,7 @@ export function systemProblems(config: Configuration, index: number, catalog: Ca
       const a = mine[p];
       return a.minX < b.maxX && b.minX < a.maxX && a.minZ < b.maxZ && b.minZ < a.maxZ && rectsOverlap(ra, rb);
     }))) {
-      out.push({ code: 'system-overlap', path: at, message: `system ${s.id} overlaps system ${other.id}` });
+      out.push({ code: 'system-overlap', path: at, message: `system ${s.id} overlaps system ${other.id}`, params: { id: s.id, other: other.id } });
     }
   });
   return out;
@@ -295,18 +297,18 @@ export function systemProblems(config: Configuration, index: number, catalog: Ca
 
 function ownProblems(s: LightSystem, at: string, roomHeight: number, catalog: Catalog): Problem[] {
   const out: Problem[] = [];
-  const p = (code: string, path: string, message: string) => out.push({ code, path: `${at}${path}`, message });
+  const p = (code: string, path: string, message: string, params?: Record<string, string | number>) => out.push({ code, path: `${at}${path}`, message, ...(params ? { params } : {}) });
   if (![s.x, s.z, s.rotation].every(Number.isFinite)) p('position', '', `system ${s.id} has a non-finite position or rotation`);
   else if (s.rotation < 0 || s.rotation >= 360) p('rotation', '.rotation', `rotation must be in [0, 360) degrees (got ${s.rotation})`);
   const susp = catalog.suspension;
   const inRange = Number.isFinite(s.suspension) && s.suspension >= susp.min - EPS && s.suspension <= susp.max + EPS;
-  if (!inRange) p('suspension-range', '.suspension', `suspension must be between ${susp.min} and ${susp.max} m (got ${s.suspension})`);
+  if (!inRange) p('suspension-range', '.suspension', `suspension must be between ${susp.min} and ${susp.max} m (got ${s.suspension})`, { min: susp.min, max: susp.max, value: s.suspension });
   if (!(MOUNTINGS as readonly string[]).includes(s.mounting)) p('mounting', '.mounting', `mounting must be ${MOUNTINGS.join(' or ')} (got ${String(s.mounting)})`);
   else if ((inRange || s.mounting === 'surface') && roomHeight - photometricDrop(s, catalog) < susp.minHeightAboveFloor - EPS) {
     // Head room from where the modules really are: the suspension, or the surface mount's drop below the ceiling.
     const hang = fmt(roomHeight - photometricDrop(s, catalog));
     const surface = s.mounting === 'surface';
-    p('suspension-floor', surface ? '.mounting' : '.suspension', `modules would hang at ${hang} m${surface ? ' on the ceiling' : ''}, below the minimum ${susp.minHeightAboveFloor} m above the floor`);
+    p('suspension-floor', surface ? '.mounting' : '.suspension', `modules would hang at ${hang} m${surface ? ' on the ceiling' : ''}, below the minimum ${susp.minHeightAboveFloor} m above the floor`, { hang: Number(hang), min: susp.minHeightAboveFloor });
   }
   if (s.rails.length === 0) p('no-rails', '.rails', `system ${s.id} has no rails`);
   if (s.joints.length !== Math.max(0, s.rails.length - 1)) p('joint-count', '.joints', `${s.rails.length} rails need ${Math.max(0, s.rails.length - 1)} joints, found ${s.joints.length}`);
@@ -324,8 +326,8 @@ function ownProblems(s: LightSystem, at: string, roomHeight: number, catalog: Ca
   s.rails.forEach((r, k) => {
     const rp = `.rails[${k}]`;
     if (!Number.isFinite(r.length) || r.length < rail.minLength - EPS || r.length > rail.maxLength + EPS) {
-      p('rail-length-range', `${rp}.length`, `rail length must be between ${rail.minLength} and ${rail.maxLength} m (got ${r.length})`);
-    } else if (!onGrid(r.length, rail.step)) p('rail-length-grid', `${rp}.length`, `rail length must be a multiple of ${rail.step} m (got ${r.length})`);
+      p('rail-length-range', `${rp}.length`, `rail length must be between ${rail.minLength} and ${rail.maxLength} m (got ${r.length})`, { min: rail.minLength, max: rail.maxLength, value: r.length });
+    } else if (!onGrid(r.length, rail.step)) p('rail-length-grid', `${rp}.length`, `rail length must be a multiple of ${rail.step} m (got ${r.length})`, { step: rail.step, value: r.length });
     let refsOk = true;
     r.modules.forEach((m, n) => {
       const mp = `${rp}.modules[${n}]`;
@@ -348,7 +350,7 @@ function ownProblems(s: LightSystem, at: string, roomHeight: number, catalog: Ca
     const free = refsOk && Number.isFinite(r.length) && isFreeRail(r) ? freeRailProblem(r, r.modules.map((m) => findModuleType(catalog, m.type).length)) : null;
     if (free) p(free.code, `${rp}.modules[${free.index}].offset`, free.message);
     else if (refsOk && Number.isFinite(r.length) && !railModuleOffsets(r, catalog)) {
-      p('modules-do-not-fit', `${rp}.modules`, `the modules of rail ${r.id} do not fit its ${fmt(r.length)} m with distribution '${r.distribution}'`);
+      p('modules-do-not-fit', `${rp}.modules`, `the modules of rail ${r.id} do not fit its ${fmt(r.length)} m with distribution '${r.distribution}'`, { rail: r.id, length: Number(fmt(r.length)), distribution: r.distribution });
     }
   });
   feedProblems(s, catalog, p);

@@ -7,4 +7,12 @@ export default {
   noFreeSpace: "no free space for '{name}' in this room",
   noRoomForModule: 'no room for another {name} ({length} m) on this rail',
   noFreeGap: 'no free gap on this rail holds a {name} ({length} m): the largest is {gap} m; move modules apart or choose a distribution',
+  'outside-room': 'system {id} reaches outside the {width} × {depth} m room',
+  'self-overlap': 'system {id} runs into itself',
+  'system-overlap': 'system {id} overlaps system {other}',
+  'suspension-range': 'suspension must be between {min} and {max} m (got {value})',
+  'suspension-floor': 'modules would hang at {hang} m, below the minimum {min} m above the floor',
+  'rail-length-range': 'rail length must be between {min} and {max} m (got {value})',
+  'rail-length-grid': 'rail length must be a multiple of {step} m (got {value})',
+  'modules-do-not-fit': "the modules of rail {rail} do not fit its {length} m with distribution '{distribution}'",
 };

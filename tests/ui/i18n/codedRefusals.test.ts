@@ -1,0 +1,45 @@
+import { describe, expect, it } from 'vitest';
+import { checkAction } from '../../../src/core/model/actionDefinitions';
+import { createConfiguration } from '../../../src/core/model/configuration';
+import { createFormat } from '../../../src/ui/i18n/createFormat';
+import { createTranslator } from '../../../src/ui/i18n/createTranslator';
+import { loadMessages } from '../../../src/ui/i18n/loadMessages';
+import { translateCoded } from '../../../src/ui/i18n/translateCoded';
+import { catalog, only, run, withPreset } from '../../core/model/helpers';
+
+// The core refuses in English (CLI, logs, API); the refusal carries a code and params that the
+// UI words in the user's language (docs/i18n.md, "Messages from the core").
+describe('coded refusals', async () => {
+  const de = createTranslator(await loadMessages('de'), 'de', (x) => createFormat('de').number(x));
+
+  it('a move out of the room: English reason for the API, German from the code, same numbers', () => {
+    const s = withPreset('single', 1, 1);
+    const sys = only(s);
+    const r = checkAction(s, 'moveSystem', { systemId: sys.id, x: 40, z: sys.z }, catalog);
+    expect(r).not.toBe(true);
+    if (r === true) return;
+    expect(r.reason).toBe(`system ${sys.id} reaches outside the ${s.room.width} × ${s.room.depth} m room`);
+    // Deep equality and JSON see only { ok, reason }: the code is metadata.
+    expect(JSON.parse(JSON.stringify(r))).toEqual({ ok: false, reason: r.reason });
+    expect(r.code).toBe('outside-room');
+    expect(translateCoded(de, 'notices', r)).toBe(`System ${sys.id} ragt aus dem Raum (${String(s.room.width).replace('.', ',')} × ${String(s.room.depth).replace('.', ',')} m)`);
+  });
+
+  it('a preset with no free space (an InputError with a code) and a full driver (the overload wording)', () => {
+    const small = createConfiguration({ width: 3, depth: 2, height: 3 });
+    const none = checkAction(small, 'placePreset', { presetId: 'long-line' }, catalog);
+    expect(none !== true && translateCoded(de, 'notices', none)).toBe('kein freier Platz für „Long line“ in diesem Raum');
+    // Three 43 W spots on the preset's 153.6 W driver: a fourth is refused with the load before.
+    const s = withPreset('single', 1, 1);
+    const full = checkAction(s, 'addModule', { railId: only(s).rails[0].id, type: 'spot' }, catalog);
+    expect(full !== true && full.code).toBe('driverFull');
+    expect(full !== true && translateCoded(de, 'notices', full)).toBe('der 153,6-W-Treiber ist voll: 129 W belegt; fügen Sie eine zweite Einspeisung hinzu oder wählen Sie einen größeren Treiber');
+  });
+
+  it('an uncoded refusal falls back to its English sentence, never a key', () => {
+    const s = run(withPreset('single', 1, 1), 'setRailLength', { railId: only(withPreset('single', 1, 1)).rails[0].id, length: 1.5 });
+    const r = checkAction(s, 'removeRail', { railId: only(s).rails[0].id }, catalog);
+    expect(r !== true && r.code).toBeUndefined();
+    expect(r !== true && translateCoded(de, 'notices', r)).toBe(r !== true && r.reason);
+  });
+});
