@@ -1,6 +1,7 @@
 import { mountLuxbox } from '../embed/mountLuxbox';
 import type { LuxboxInstance } from '../embed/types';
 import { isQualityLevel } from '../../engines/relight/qualityLevels';
+import { isEv100 } from '../../engines/view/photographicExposure';
 import { readLocal, writeLocal } from '../embed/localStore';
 import { isLanguage } from '../../ui/i18n/languages';
 import { preferLanguage } from '../../ui/i18n/resolveLocale';
@@ -28,6 +29,9 @@ const LANGUAGE_KEY = 'luxbox.language';
 const asked = params.get('lang');
 const chosen = isLanguage(asked) ? asked : readLocal(LANGUAGE_KEY);
 const locale = isLanguage(chosen) ? preferLanguage(chosen, navigator.languages) : navigator.languages;
+// `?exposure=5.5` starts the 3D view locked at that EV100, `?exposure=auto` as by default (docs/viewer.md, "Exposure"); anything else is ignored.
+const exposureParam = params.get('exposure');
+const exposure = exposureParam === 'auto' ? 'auto' : exposureParam !== null && exposureParam.trim() !== '' && isEv100(Number(exposureParam)) ? Number(exposureParam) : undefined;
 window.luxbox = mountLuxbox(root, {
   storageKey: 'luxbox.autosave.v1',
   shareLinks: true,
@@ -35,6 +39,12 @@ window.luxbox = mountLuxbox(root, {
   demo,
   locale,
   languageSwitch: true,
-  onLanguageChange: (language) => writeLocal(LANGUAGE_KEY, language),
+  onLanguageChange: (language) => {
+    writeLocal(LANGUAGE_KEY, language);
+    document.documentElement.lang = language;
+  },
   ...(isQualityLevel(quality) ? { quality } : {}),
+  ...(exposure !== undefined ? { exposure } : {}),
 });
+// The page's own language follows the configurator's (screen readers and hyphenation read it from <html>).
+document.documentElement.lang = window.luxbox.getLanguage().language;
