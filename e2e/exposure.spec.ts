@@ -59,3 +59,14 @@ test('lock exposure: dimming to 25 % darkens the image; back on auto it is re-ex
   await expect(control).toHaveAttribute('data-ev100', 'auto');
   await expect.poll(async () => meanLevel(await canvas.screenshot()), { timeout: 10_000 }).toBeGreaterThan(autoFull * 0.9);
 });
+
+test('?exposure=5 (the embed option exposure: 5): the 3D view opens locked at EV100 5', async ({ page }) => {
+  await page.goto('/?quality=fast&exposure=5');
+  await page.getByRole('button', { name: 'Start planning' }).click();
+  await page.getByTestId('preset-corner-l').click();
+  await page.getByTestId('tool-3d').click();
+  await expect.poll(async () => (await status(page)).lit, { timeout: 90_000, intervals: [250] }).toBe(true);
+  await expect(page.getByTestId('exposure-control')).toHaveAttribute('data-ev100', '5');
+  await expect(page.getByTestId('exposure-ev100')).toHaveValue('5');
+  expect(meanLevel(await page.getByTestId('view3d-canvas').screenshot())).toBeGreaterThan(10);
+});
