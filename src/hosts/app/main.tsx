@@ -2,7 +2,6 @@ import { mountLuxbox } from '../embed/mountLuxbox';
 import type { LuxboxInstance } from '../embed/types';
 import { isQualityLevel } from '../../engines/relight/qualityLevels';
 import { isEv100 } from '../../engines/view/photographicExposure';
-import { isEv100 } from '../../engines/view/photographicExposure';
 import { readLocal, writeLocal } from '../embed/localStore';
 import { isLanguage } from '../../ui/i18n/languages';
 import { preferLanguage } from '../../ui/i18n/resolveLocale';
@@ -33,9 +32,6 @@ const locale = isLanguage(chosen) ? preferLanguage(chosen, navigator.languages) 
 // `?exposure=5.5` starts the 3D view locked at that EV100, `?exposure=auto` as by default (docs/viewer.md, "Exposure"); anything else is ignored.
 const exposureParam = params.get('exposure');
 const exposure = exposureParam === 'auto' ? 'auto' : exposureParam !== null && exposureParam.trim() !== '' && isEv100(Number(exposureParam)) ? Number(exposureParam) : undefined;
-// `?exposure=5.5` starts the 3D view locked at that EV100, `?exposure=auto` as by default (docs/viewer.md, "Exposure"); anything else is ignored.
-const exposureParam = params.get('exposure');
-const exposure = exposureParam === 'auto' ? 'auto' : exposureParam !== null && exposureParam.trim() !== '' && isEv100(Number(exposureParam)) ? Number(exposureParam) : undefined;
 window.luxbox = mountLuxbox(root, {
   storageKey: 'luxbox.autosave.v1',
   shareLinks: true,
@@ -48,7 +44,6 @@ window.luxbox = mountLuxbox(root, {
     document.documentElement.lang = language;
   },
   ...(isQualityLevel(quality) ? { quality } : {}),
-  ...(exposure !== undefined ? { exposure } : {}),
   ...(exposure !== undefined ? { exposure } : {}),
 });
 // The page's own language follows the configurator's (screen readers and hyphenation read it from <html>).
