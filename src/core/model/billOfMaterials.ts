@@ -13,7 +13,7 @@ import { findBeam, findConnector, findDriver, findModuleType, type Catalog } fro
 import { findColourFilter } from '../colour/colourFilterLibrary';
 import { filterAccessory, filterLabel } from './moduleFilter';
 import type { Configuration } from './configuration';
-import { jointParent, nodeJoints } from './railTree';
+import { firstNodeJoints, jointParent } from './railTree';
 import { suspensionCoordinates } from './suspensionPoints';
 import { InputError } from '../inputError';
 
@@ -61,8 +61,9 @@ export function billOfMaterials(config: Configuration, catalog: Catalog): BillOf
     const fixing = s.mounting === 'surface' ? catalog.surfaceMount : catalog.suspension;
     add(fixing.article, fixing.name, fixing.price, 'suspension', suspensionCoordinates(s, catalog).length);
     // One connector per node: the branches of a T or X share it (railTree.ts).
+    const first = firstNodeJoints(s);
     s.joints.forEach((j, k) => {
-      if (nodeJoints(s, jointParent(j, k))[0] !== k) return;
+      if (first[jointParent(j, k)] !== k) return;
       const con = findConnector(catalog, j.connector);
       add(con.article, con.name, con.price, 'connector');
     });

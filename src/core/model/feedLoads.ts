@@ -8,7 +8,7 @@
 import { findBeam, findModuleType, type Catalog, type DriverSpec } from './catalogSchema';
 import type { Configuration, Feed, FeedAt, LightSystem } from './configuration';
 import { chainCoordinates, distancesFrom, feedCoordinate, feedLocation, onRail, type ChainCoordinates, type TreeLocation } from './chainCoordinates';
-import { isLeafRail, jointParent, nodeJoints } from './railTree';
+import { firstNodeJoints, jointParent } from './railTree';
 import { railModuleOffsets } from './geometry';
 
 /** Load sums are compared with a milliwatt of slack so 0.1 + 0.2 style float noise never refuses a fitting driver. */
@@ -119,9 +119,10 @@ export function describeFeedAt(at: FeedAt): string {
  * snake: start, connectors 1…n−1, end.
  */
 export function allowedFeedPositions(system: LightSystem, catalog: Catalog): FeedAt[] {
-  const nodes = catalog.feed.positions.includes('joints') ? system.joints.flatMap((j, k) => (nodeJoints(system, jointParent(j, k))[0] === k ? [{ joint: k }] : [])) : [];
+  const first = firstNodeJoints(system);
+  const nodes = catalog.feed.positions.includes('joints') ? system.joints.flatMap((j, k) => (first[jointParent(j, k)] === k ? [{ joint: k }] : [])) : [];
   const n = system.rails.length;
-  const ends = system.rails.flatMap((_, i) => (i < n - 1 && isLeafRail(system, i) ? [{ end: i }] : []));
+  const ends = system.rails.flatMap((_, i) => (i < n - 1 && first[i] === undefined ? [{ end: i }] : []));
   return ['start', ...nodes, ...ends, 'end'];
 }
 

@@ -142,14 +142,17 @@ export function systemElementTree(system: LightSystem, catalog: Catalog): System
   const nodeElement = new Map<number, number>();
   const links: number[][] = [];
   const link = (a: number, b: number) => (links[a].push(b), links[b].push(a));
+  // Branches per rail in one pass (a hostile file's long chain stays linear).
+  const branchesOf: number[][] = rails.map(() => []);
+  system.joints.forEach((j, k) => {
+    const p = jointParent(j, k);
+    if (rails[k + 1] && branchesOf[p]) branchesOf[p].push(k);
+  });
   rails.forEach((r, i) => {
     railElement[i] = elements.length;
     elements.push([segmentRect(r.start, r.end, w)]);
     links.push([]);
-    const branches: number[] = [];
-    system.joints.forEach((j, k) => {
-      if (jointParent(j, k) === i && rails[k + 1]) branches.push(k);
-    });
+    const branches = branchesOf[i];
     if (branches.length === 0) return;
     const con = findConnector(catalog, system.joints[branches[0]].connector);
     const group: PlanRect[] = [];
@@ -174,11 +177,9 @@ export function systemElementTree(system: LightSystem, catalog: Catalog): System
     for (const b of ls) for (const c of links[b]) set.add(c);
     return set;
   });
-  const kinds = elements.map((_, e): ElementKind => {
-    const rail = railElement.indexOf(e);
-    if (rail >= 0) return { kind: 'rail', rail };
-    return { kind: 'node', rail: [...nodeElement].find(([, v]) => v === e)![0] };
-  });
+  const kinds: ElementKind[] = [];
+  railElement.forEach((e, rail) => (kinds[e] = { kind: 'rail', rail }));
+  nodeElement.forEach((e, rail) => (kinds[e] = { kind: 'node', rail }));
   return { elements, near, kinds };
 }
 

@@ -28,6 +28,16 @@ export function nodeJoints(system: Pick<LightSystem, 'joints'>, p: number): numb
   return out;
 }
 
+/** The first joint at each rail's end (undefined: a free end), in one pass. */
+export function firstNodeJoints(system: Pick<LightSystem, 'rails' | 'joints'>): (number | undefined)[] {
+  const out: (number | undefined)[] = system.rails.map(() => undefined);
+  system.joints.forEach((j, k) => {
+    const p = jointParent(j, k);
+    if (p >= 0 && p < out.length && out[p] === undefined) out[p] = k;
+  });
+  return out;
+}
+
 /** Whether rail i's end is free (no connector node there). */
 export function isLeafRail(system: Pick<LightSystem, 'joints'>, i: number): boolean {
   return !system.joints.some((j, k) => jointParent(j, k) === i);
@@ -75,7 +85,9 @@ export function treeProblem(system: Pick<LightSystem, 'rails' | 'joints'>, catal
   const byNode = new Map<number, number[]>();
   system.joints.forEach((j, k) => {
     const p = jointParent(j, k);
-    byNode.set(p, [...(byNode.get(p) ?? []), k]);
+    const list = byNode.get(p);
+    if (list) list.push(k);
+    else byNode.set(p, [k]);
   });
   for (const [p, ks] of byNode) {
     const first = system.joints[ks[0]];

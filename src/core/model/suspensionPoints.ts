@@ -19,7 +19,7 @@
 import type { Catalog } from './catalogSchema';
 import type { LightSystem, Room } from './configuration';
 import { chainCoordinates, chainPoint } from './chainCoordinates';
-import { nodeJoints } from './railTree';
+import { firstNodeJoints } from './railTree';
 import type { PlanVec } from './geometry';
 
 export interface MountingRule {
@@ -60,9 +60,10 @@ export function derivedSuspensionCoordinates(system: LightSystem, catalog: Catal
   const rule = mountingRule(system, catalog);
   const chain = chainCoordinates(system, catalog);
   const out: { s: number; joint: number | null }[] = [];
+  const firstJoint = firstNodeJoints(system);
   system.rails.forEach((rail, i) => {
     const inset = Math.min(rule.maxOverhang, rail.length / 4);
-    const node = nodeJoints(system, i)[0];
+    const node = firstJoint[i];
     const p = chain.parent[i];
     // In chain coordinates; a branch that is not its node's first has its node elsewhere in s, so
     // its start support is placed by the tree distance (nodeOut) before its start.

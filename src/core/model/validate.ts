@@ -18,7 +18,7 @@ import { allObjectProblems } from './objectProblems';
 import { lightSceneProblems } from './lightScenes';
 import { reflectanceProblem } from './reflectance';
 import { rectCorners, rectsOverlap, systemElementTree, railModuleOffsets, type PlanRect, type SystemElementTree } from './geometry';
-import { isLeafRail, jointParent, treeProblem } from './railTree';
+import { firstNodeJoints, jointParent, treeProblem } from './railTree';
 
 export interface Problem {
   /** Stable machine-readable code, e.g. 'outside-room'. */
@@ -371,6 +371,7 @@ function ownProblems(s: LightSystem, at: string, roomHeight: number, catalog: Ca
 function feedProblems(s: LightSystem, catalog: Catalog, p: (code: string, path: string, message: string) => void): void {
   if (s.feeds.length === 0) p('no-feed', '.feeds', `system ${s.id} has no power feed`);
   // First feed at each position, keyed 'start' / 'end' / 'joint:k': one pass, even for a hostile file's thousands of feeds.
+  const firstJoint = firstNodeJoints(s);
   const first = new Map<string, number>();
   s.feeds.forEach((f, k) => {
     const fp = `.feeds[${k}]`;
@@ -381,7 +382,7 @@ function feedProblems(s: LightSystem, catalog: Catalog, p: (code: string, path: 
       else if (!Number.isInteger(at.joint) || at.joint < 0 || at.joint >= s.joints.length) p('feed-position', `${fp}.at`, `${feedLabel(k)} is at connector ${at.joint + 1}, but the chain has ${s.joints.length} connector${s.joints.length === 1 ? '' : 's'}`);
     } else if (typeof at === 'object' && 'end' in at) {
       if (!Number.isInteger(at.end) || at.end < 0 || at.end >= s.rails.length) p('feed-position', `${fp}.at`, `${feedLabel(k)} is at the end of rail ${at.end + 1}, but the system has ${s.rails.length} rail${s.rails.length === 1 ? '' : 's'}`);
-      else if (!isLeafRail(s, at.end)) p('feed-position', `${fp}.at`, `${feedLabel(k)} is at the end of rail ${at.end + 1}, but a connector sits there (feed at the connector instead)`);
+      else if (firstJoint[at.end] !== undefined) p('feed-position', `${fp}.at`, `${feedLabel(k)} is at the end of rail ${at.end + 1}, but a connector sits there (feed at the connector instead)`);
     } else if (at !== 'start' && at !== 'end') p('feed-position', `${fp}.at`, `a feed sits at 'start', 'end', { joint: k } or { end: i } (got ${String(at)})`);
     // One key per physical position: the joints of one node share it, and 'end' is the last rail's end.
     const key = typeof at !== 'object' ? (at === 'end' ? `end:${s.rails.length - 1}` : String(at)) : 'joint' in at ? `node:${s.joints[at.joint] ? jointParent(s.joints[at.joint], at.joint) : `?${at.joint}`}` : `end:${at.end}`;
