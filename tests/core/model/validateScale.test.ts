@@ -26,7 +26,7 @@ describe('validate at scale', () => {
     expect(problems[0].message).toBe("id 's1' is used twice");
     expect(stats.pairTests).toBe(0);
     const clash = validate(config, catalog, { firstOnly: true, stats });
-    expect(clash[0]).toEqual({ code: 'system-overlap', path: 'systems[0]', message: 'system s1 overlaps system s3' });
+    expect(clash[0]).toEqual({ code: 'system-overlap', path: 'systems[0]', message: 'system s1 overlaps system s3', params: { id: 's1', other: 's3' } });
     expect(stats.pairTests).toBe(1);
   });
 });
