@@ -23,7 +23,7 @@ import { createActionGate } from './actionGate';
 import { detailLevel } from './detailLevel';
 import { useI18n } from '../i18n/useI18n';
 import { LanguageSwitch } from '../i18n/LanguageSwitch';
-import { translateCoded } from '../i18n/translateCoded';
+import { noticeText } from '../i18n/noticeText';
 import { selectionPath } from './selection';
 import { usePlanGestures } from './usePlanGestures';
 import { usePlanView } from './usePlanView';
@@ -55,7 +55,7 @@ export interface PlannerProps {
 
 /** The main screen (configurator paper, fig. 6): the plan, side panel with presets and price, bottom bar. */
 export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare, shareNotice = null, footprints }: PlannerProps) {
-  const { t, format } = useI18n();
+  const { t, format, language } = useI18n();
   const config = useStore(store, (s) => s.config);
   const catalog = useStore(store, (s) => s.catalog);
   const selection = useStore(store, (s) => s.selection);
@@ -74,7 +74,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
   const view = usePlanView(controller);
   const drag = useSyncExternalStore(controller.subscribe, () => controller.drag);
   const { explain, run } = controller;
-  const gate = useMemo(() => createActionGate(config, catalog, run, explain, (r) => translateCoded(t, 'notices', r)), [config, catalog, run, explain, t]);
+  const gate = useMemo(() => createActionGate(config, catalog, run, explain, (r) => noticeText(t, language, catalog, r)), [config, catalog, run, explain, t, language]);
   const path = selectionPath(config, selection);
   const select = useCallback((sel: Selection) => store.getState().select(sel), [store]);
   const bom = useMemo(() => billOfMaterials(config, catalog), [config, catalog]);
@@ -205,7 +205,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
               </div>
               {status && (
                 <div className="status-line" role="status" key={status.seq}>
-                  {translateCoded(t, 'notices', status)}
+                  {noticeText(t, language, catalog, status)}
                 </div>
               )}
             </div>

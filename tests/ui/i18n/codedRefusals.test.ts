@@ -6,6 +6,7 @@ import { createTranslator } from '../../../src/ui/i18n/createTranslator';
 import { loadMessages } from '../../../src/ui/i18n/loadMessages';
 import { translateCoded } from '../../../src/ui/i18n/translateCoded';
 import { catalog, only, run, withPreset } from '../../core/model/helpers';
+import { noticeText } from '../../../src/ui/i18n/noticeText';
 
 // The core refuses in English (CLI, logs, API); the refusal carries a code and params that the
 // UI words in the user's language (docs/i18n.md, "Messages from the core").
@@ -29,6 +30,8 @@ describe('coded refusals', async () => {
     const small = createConfiguration({ width: 3, depth: 2, height: 3 });
     const none = checkAction(small, 'placePreset', { presetId: 'long-line' }, catalog);
     expect(none !== true && translateCoded(de, 'notices', none)).toBe('kein freier Platz für „Long line“ in diesem Raum');
+    // The planner names the preset from the catalog's translations.
+    expect(none !== true && noticeText(de, 'de', catalog, none)).toBe('kein freier Platz für „Lange Linie“ in diesem Raum');
     // Three 43 W spots on the preset's 153.6 W driver: a fourth is refused with the load before.
     const s = withPreset('single', 1, 1);
     const full = checkAction(s, 'addModule', { railId: only(s).rails[0].id, type: 'spot' }, catalog);
