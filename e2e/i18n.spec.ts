@@ -51,6 +51,10 @@ test('?lang=de gives German texts in the room setup and the plan, with no Englis
   await zoomToModuleLevel(page);
   await expect(page.locator('[data-testid^="plus-"] button')).toHaveAttribute('title', /: der 153,6-W-Treiber ist voll: 129 W belegt; /);
   expect(await page.evaluate(() => window.luxbox!.getLanguage())).toEqual({ language: 'de', locale: 'de' });
+  // The 3D view's texts come with its chunk: German too.
+  await page.getByTestId('tool-3d').click();
+  await expect(page.getByRole('group', { name: 'Kamera' })).toBeVisible();
+  await expect(page.getByTestId('back-2d')).toHaveText('Zurück zum 2D-Plan');
   expect(await sawEnglish(page)).toEqual([]);
 });
 

@@ -3,7 +3,7 @@ import type { MessageKey, MessageParams, MessageTree, PluralMessage, Translate }
 
 type Lookup = Record<string, Record<string, string | PluralMessage>>;
 
-function lookup(tree: MessageTree, key: string): string | PluralMessage | undefined {
+function lookup(tree: Partial<MessageTree>, key: string): string | PluralMessage | undefined {
   const dot = key.indexOf('.');
   if (dot < 0) return undefined;
   return (tree as unknown as Lookup)[key.slice(0, dot)]?.[key.slice(dot + 1)];
@@ -25,7 +25,7 @@ export function isMessageKey(key: string): key is MessageKey {
  * locale, e.g. 2.5 → "2,5" in German). A placeholder without a value stays visible as `{name}`
  * so a missing parameter is noticed, never silently dropped.
  */
-export function createTranslator(tree: MessageTree, locale: string, formatNumber: (x: number) => string): Translate {
+export function createTranslator(tree: Partial<MessageTree>, locale: string, formatNumber: (x: number) => string): Translate {
   let plurals: Intl.PluralRules | null = null;
   return (key, params) => {
     const value = lookup(tree, key) ?? lookup(en, key);

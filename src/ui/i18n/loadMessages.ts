@@ -3,8 +3,18 @@ import type { Language } from './languages';
 import type { MessageTree } from './messageTypes';
 
 // English ships in the first-screen bundle; every other language is its own lazy chunk, fetched
-// before the first render only when the locale asks for it (docs/i18n.md, "Bundles").
-const loaded: Partial<Record<Language, MessageTree>> = { en };
+// before the first render only when the locale asks for it (docs/i18n.md, "Bundles"). English's
+// 3D-only areas join the tree when the 3D chunk registers them (registerEnglishAreas).
+const english = en as MessageTree;
+const loaded: Partial<Record<Language, MessageTree>> = { en: english };
+
+/**
+ * Adds English areas that ship in a lazy chunk (the 3D view's) to the English tree, which is
+ * also every language's fallback; idempotent. Called by that chunk before it renders.
+ */
+export function registerEnglishAreas(areas: Partial<MessageTree>): void {
+  Object.assign(english, areas);
+}
 
 const loaders: Record<Exclude<Language, 'en'>, () => Promise<{ default: MessageTree }>> = {
   de: () => import('./messages/de/index'),

@@ -1,4 +1,5 @@
 import type en from './messages/en/index';
+import type enLazy from './messages/en/lazy';
 
 /**
  * A message that depends on a count: the CLDR plural category of `params.count` picks the text
@@ -13,8 +14,11 @@ export interface PluralMessage {
   other: string;
 }
 
-/** English (the source) defines the keys; the message tree of every language has its shape. */
-export type SourceMessages = typeof en;
+/**
+ * English (the source) defines the keys; the message tree of every language has its shape. Its
+ * 3D-only areas (messages/en/lazy.ts) are part of the type but arrive at run time with the 3D chunk.
+ */
+export type SourceMessages = typeof en & typeof enLazy;
 
 export type Area = keyof SourceMessages & string;
 

@@ -1,6 +1,7 @@
 import { useState } from 'react';
 import { DMX_CHANNELS, DMX_UNIVERSE_MAX, DMX_UNIVERSE_MIN } from '../../core/model/dmxPatch';
 import { useI18n } from '../i18n/useI18n';
+import './registerView3dEnglish';
 
 export interface AutoPatchParams {
   universe: number;

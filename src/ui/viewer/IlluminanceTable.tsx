@@ -1,5 +1,6 @@
 import type { IlluminanceStats } from '../../engines/view/lightStats';
 import { useI18n } from '../i18n/useI18n';
+import './registerView3dEnglish';
 
 /** Lux with as many decimals as a meter shows: 0 from 100 lx, 1 from 10 lx, else 2. */
 const digits = (v: number) => (v >= 100 ? 0 : v >= 10 ? 1 : 2);
@@ -22,7 +23,7 @@ function StatsRow({ label, s, testId }: { label: string; s: IlluminanceStats | n
 export function IlluminanceTable({ floor, plane }: { floor: IlluminanceStats | null; plane: { height: number; stats: IlluminanceStats | null } | null }) {
   const { t, format } = useI18n();
   return (
-    <table className="viewer3d-stats" aria-label={t('viewer.illuminance')}>
+    <table className="viewer3d-stats" aria-label={t('view3d.illuminance')}>
       <thead>
         <tr>
           <th />
@@ -34,7 +35,7 @@ export function IlluminanceTable({ floor, plane }: { floor: IlluminanceStats | n
       </thead>
       <tbody>
         <StatsRow label={t('app.floor')} s={floor} testId="stats-floor" />
-        {plane && <StatsRow label={t('viewer.planeAt', { height: format.metres(plane.height) })} s={plane.stats} testId="stats-plane" />}
+        {plane && <StatsRow label={t('view3d.planeAt', { height: format.metres(plane.height) })} s={plane.stats} testId="stats-plane" />}
       </tbody>
     </table>
   );

@@ -12,6 +12,7 @@ import type { ViewerStatus } from './viewerStatus';
 import { useI18n } from '../i18n/useI18n';
 import type { Translate } from '../i18n/messageTypes';
 import { localName } from '../i18n/localName';
+import './registerView3dEnglish';
 
 export const DEFAULT_BRIDGE_PORT = 9090;
 

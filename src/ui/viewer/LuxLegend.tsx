@@ -1,11 +1,12 @@
 import { legendPosition, turbo } from '../../engines/view/falseColorScale';
 import { useI18n } from '../i18n/useI18n';
+import './registerView3dEnglish';
 
 /** The false-colour legend: each level (highest first) with the colour the shader gives it. */
 export function LuxLegend({ levels }: { levels: readonly number[] }) {
   const { t, format } = useI18n();
   return (
-    <div className="viewer3d-legend" aria-label={t('viewer.legend')} data-testid="view3d-legend">
+    <div className="viewer3d-legend" aria-label={t('view3d.legend')} data-testid="view3d-legend">
       {[...levels].reverse().map((v) => {
         const [r, g, b] = turbo(legendPosition(v, levels));
         return (

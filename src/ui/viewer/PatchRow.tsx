@@ -2,6 +2,7 @@ import { useState } from 'react';
 import type { DmxPatch } from '../../core/model/dmxPatch';
 import type { LiveLevel } from '../../engines/view/liveLevels';
 import { useI18n } from '../i18n/useI18n';
+import './registerView3dEnglish';
 
 export interface PatchRowProps {
   id: string;

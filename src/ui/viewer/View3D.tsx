@@ -27,6 +27,7 @@ import { useI18n } from '../i18n/useI18n';
 import type { MessageKey } from '../i18n/messageTypes';
 import { viewerErrorText } from './viewerErrorText';
 import type { Translate } from '../i18n/messageTypes';
+import './registerView3dEnglish';
 
 export interface View3DProps {
   store: ConfiguratorStore;
@@ -37,8 +38,8 @@ export interface View3DProps {
   visible?: boolean;
 }
 
-const PRESET_LABEL: Record<CameraPresetName, MessageKey> = { eye: 'viewer.cameraEye', top: 'viewer.cameraTop', corner: 'viewer.cameraCorner' };
-const QUALITY_LABEL: Record<QualityLevel, MessageKey> = { fast: 'viewer.qualityFast', balanced: 'viewer.qualityBalanced', best: 'viewer.qualityBest' };
+const PRESET_LABEL: Record<CameraPresetName, MessageKey> = { eye: 'view3d.cameraEye', top: 'view3d.cameraTop', corner: 'view3d.cameraCorner' };
+const QUALITY_LABEL: Record<QualityLevel, MessageKey> = { fast: 'view3d.qualityFast', balanced: 'view3d.qualityBalanced', best: 'view3d.qualityBest' };
 
 /**
  * The 3D view (lazily loaded chunk: three.js and the room view). The light comes from the
@@ -54,7 +55,7 @@ function selectionLabel(t: Translate, config: Configuration, selection: Selectio
     return o ? sourceName(config, o.source) : null;
   }
   if (selection.kind === 'module') {
-    for (const s of config.systems) for (const r of s.rails) for (const m of r.modules) if (m.id === selection.id) return t('viewer.selectedModule', { type: m.type });
+    for (const s of config.systems) for (const r of s.rails) for (const m of r.modules) if (m.id === selection.id) return t('view3d.selectedModule', { type: m.type });
   }
   return null;
 }
@@ -262,18 +263,18 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
   const maxPlane = config.room.height - 0.1;
 
   return (
-    <section className="viewer3d" aria-label={t('viewer.view')} data-testid="view3d" hidden={!visible}>
+    <section className="viewer3d" aria-label={t('view3d.view')} data-testid="view3d" hidden={!visible}>
       <div className="viewer3d-canvas-wrap" ref={wrapRef}>
         <canvas ref={canvasRef} className="viewer3d-canvas" data-testid="view3d-canvas" />
         {!progress.done && !error && (
-          <div className="viewer3d-progress" role="progressbar" aria-label={t('viewer.lightCalculation')} aria-valuemin={0} aria-valuemax={100} aria-valuenow={Math.round(progress.fraction * 100)} data-testid="view3d-progress">
+          <div className="viewer3d-progress" role="progressbar" aria-label={t('view3d.lightCalculation')} aria-valuemin={0} aria-valuemax={100} aria-valuenow={Math.round(progress.fraction * 100)} data-testid="view3d-progress">
             <div className="viewer3d-progress-bar" style={{ width: `${Math.round(progress.fraction * 100)}%` }} />
-            <span>{t(progress.lit ? 'viewer.refining' : 'viewer.computing', { percent: format.percent(progress.fraction) })}</span>
+            <span>{t(progress.lit ? 'view3d.refining' : 'view3d.computing', { percent: format.percent(progress.fraction) })}</span>
           </div>
         )}
         {lost && (
           <div className="viewer3d-note" role="status">
-            {t('viewer.contextLost')}
+            {t('view3d.contextLost')}
           </div>
         )}
         {error && (
@@ -287,28 +288,28 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
         {mode === 'lux' && levels.length > 1 && <LuxLegend levels={levels} />}
         {(liveState === 'lost' || liveState === 'no-bridge') && (
           <div className="viewer3d-note viewer3d-live-note" role="status" data-testid="live-note">
-            {liveState === 'lost' ? t('viewer.liveLost') : t('viewer.liveNoBridge')}
+            {liveState === 'lost' ? t('view3d.liveLost') : t('view3d.liveNoBridge')}
           </div>
         )}
       </div>
       <div className="viewer3d-panel">
-        <div className="viewer3d-group" role="group" aria-label={t('viewer.camera')}>
+        <div className="viewer3d-group" role="group" aria-label={t('view3d.camera')}>
           {CAMERA_PRESETS.map((p) => (
             <button key={p} type="button" className={`btn${preset === p ? ' btn-primary' : ''}`} aria-pressed={preset === p} onClick={() => { setPreset(p); ctrl.current?.setPreset(p); }} data-testid={`camera-${p}`}>
               {t(PRESET_LABEL[p])}
             </button>
           ))}
         </div>
-        <div className="viewer3d-group" role="group" aria-label={t('viewer.viewMode')}>
+        <div className="viewer3d-group" role="group" aria-label={t('view3d.viewMode')}>
           <button type="button" className={`btn${mode === 'light' ? ' btn-primary' : ''}`} aria-pressed={mode === 'light'} onClick={() => { setMode('light'); ctrl.current?.setMode('light'); }}>
-            {t('viewer.modeLight')}
+            {t('view3d.modeLight')}
           </button>
           <button type="button" className={`btn${mode === 'lux' ? ' btn-primary' : ''}`} aria-pressed={mode === 'lux'} onClick={() => { setMode('lux'); ctrl.current?.setMode('lux'); }} data-testid="mode-lux">
-            {t('viewer.modeLux')}
+            {t('view3d.modeLux')}
           </button>
         </div>
-        <div className="viewer3d-group" role="group" aria-label={t('viewer.quality')}>
-          <span className="viewer3d-group-label">{t('viewer.qualityLabel')}</span>
+        <div className="viewer3d-group" role="group" aria-label={t('view3d.quality')}>
+          <span className="viewer3d-group-label">{t('view3d.qualityLabel')}</span>
           {QUALITY_LEVEL_NAMES.map((q) => (
             <button key={q} type="button" className={`btn${quality === q ? ' btn-primary' : ''}`} aria-pressed={quality === q} onClick={() => chooseQuality(q)} data-testid={`quality-${q}`}>
               {t(QUALITY_LABEL[q])}
@@ -318,19 +319,19 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
         <ExposureControl initial={host.exposure} target={() => ctrl.current} />
         {selectedLabel && (
           <p className="viewer3d-selected" data-testid="view3d-selected" data-kind={selection?.kind} data-id={selection?.id}>
-            {t('viewer.selected', { name: selectedLabel })}
+            {t('view3d.selected', { name: selectedLabel })}
           </p>
         )}
         <SpotlightControls store={store} controllerRef={ctrl} ready={controllerVersion} />
         <IlluminanceTable floor={floor} plane={plane.on ? { height: plane.height, stats: planeStats } : null} />
         <label className="viewer3d-field viewer3d-inline">
-          <input type="checkbox" checked={plane.on} onChange={(e) => setPlane({ ...plane, on: e.target.checked })} data-testid="plane-on" /> {t('viewer.workPlaneAt')}
-          <input type="number" min={0.1} max={maxPlane} step={0.05} value={plane.height} onChange={(e) => { const h = Number(e.target.value); if (Number.isFinite(h) && h >= 0.1 && h <= maxPlane) setPlane({ ...plane, height: h }); }} aria-label={t('viewer.workPlaneHeight')} /> m
+          <input type="checkbox" checked={plane.on} onChange={(e) => setPlane({ ...plane, on: e.target.checked })} data-testid="plane-on" /> {t('view3d.workPlaneAt')}
+          <input type="number" min={0.1} max={maxPlane} step={0.05} value={plane.height} onChange={(e) => { const h = Number(e.target.value); if (Number.isFinite(h) && h >= 0.1 && h <= maxPlane) setPlane({ ...plane, height: h }); }} aria-label={t('view3d.workPlaneHeight')} /> m
         </label>
         <PhotometryWarnings notes={photometryNotes} testId="view3d-photometry-warnings" collapsed />
         {modules.length > 0 && (
           <details className="viewer3d-modules">
-            <summary>{t('viewer.dimmingModules', { count: modules.length })}</summary>
+            <summary>{t('view3d.dimmingModules', { count: modules.length })}</summary>
             {modules.map((m) => (
               <DimmerRow
                 key={m.id}

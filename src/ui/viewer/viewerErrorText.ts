@@ -1,4 +1,5 @@
 import type { MessageKey, Translate } from '../i18n/messageTypes';
+import './registerView3dEnglish';
 
 /**
  * The 3D view's errors are English sentences (they also go to window.luxbox.view3d().error, which
@@ -7,9 +8,9 @@ import type { MessageKey, Translate } from '../i18n/messageTypes';
  * name, a WebGL message) is kept as it is.
  */
 const KNOWN: readonly [prefix: string, key: MessageKey][] = [
-  ['The 3D view could not start: ', 'viewer.couldNotStart'],
-  ['Could not prepare the furniture for the light calculation: ', 'viewer.furnitureFailed'],
-  ['Could not load the photometric data: ', 'viewer.photometryFailed'],
+  ['The 3D view could not start: ', 'view3d.couldNotStart'],
+  ['Could not prepare the furniture for the light calculation: ', 'view3d.furnitureFailed'],
+  ['Could not load the photometric data: ', 'view3d.photometryFailed'],
 ];
 
 export function viewerErrorText(t: Translate, english: string): string {

@@ -10,7 +10,7 @@ import en from '../../../src/ui/i18n/messages/en/index';
 import type { MessageTree } from '../../../src/ui/i18n/messageTypes';
 import { announcement, describeSelection, type AnnouncedState, type AnnounceContext } from '../../../src/ui/planner/planAnnouncement';
 
-function context(tree: MessageTree, locale: string, language: Language): AnnounceContext {
+function context(tree: Partial<MessageTree>, locale: string, language: Language): AnnounceContext {
   const format = createFormat(locale, 'EUR');
   return { catalog: defaultCatalog, t: createTranslator(tree, locale, (x) => format.number(x)), format, language };
 }

@@ -1,4 +1,5 @@
 // English: the source of every key. One line per area; de, fr and it register the same areas.
+// The 3D view's own areas (live, view3d) are in ./lazy.ts: they ship with the 3D chunk (docs/i18n.md, "Bundles").
 import a11y from './a11y';
 import aim from './aim';
 import app from './app';
@@ -10,7 +11,6 @@ import files from './files';
 import filters from './filters';
 import finishes from './finishes';
 import furniture from './furniture';
-import live from './live';
 import notices from './notices';
 import options from './options';
 import planner from './planner';
@@ -31,7 +31,6 @@ export default {
   filters,
   finishes,
   furniture,
-  live,
   notices,
   options,
   planner,

@@ -17,6 +17,7 @@ import planner from './planner';
 import rooms from './rooms';
 import scenes from './scenes';
 import shared from './shared';
+import view3d from './view3d';
 import viewer from './viewer';
 
 export default {
@@ -38,5 +39,6 @@ export default {
   rooms,
   scenes,
   shared,
+  view3d,
   viewer,
 } satisfies MessageTree;
