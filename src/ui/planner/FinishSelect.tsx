@@ -3,7 +3,7 @@ import { luminousReflectance } from '../../core/model/reflectance';
 import { finishesFor, matchFinish, type FinishUse, type SurfaceFinish } from '../../core/model/surfaceFinish';
 import { finishColour } from './finishColour';
 import { useI18n } from '../i18n/useI18n';
-import { localName } from '../i18n/localName';
+import { finishName } from '../i18n/catalogNames';
 
 export interface FinishSelectProps {
   id: string;
@@ -26,7 +26,7 @@ const CURRENT = '';
  * (an older file, the embedding API) shows as "Custom" with its luminous reflectance.
  */
 export function FinishSelect({ id, label, use, value, finishes, onChoose, disabledReason, testId }: FinishSelectProps) {
-  const { t, format, language } = useI18n();
+  const { t, format } = useI18n();
   const rho = (r: Reflectance) => format.number(luminousReflectance(r), { minimumFractionDigits: 2, maximumFractionDigits: 2 });
   const offered = finishesFor(finishes, use);
   const current = value === null ? null : matchFinish(offered, value);
@@ -53,7 +53,7 @@ export function FinishSelect({ id, label, use, value, finishes, onChoose, disabl
           const reason = disabledReason?.(f) ?? null;
           return (
             <option key={f.id} value={f.id} disabled={reason !== null} title={reason ?? undefined}>
-              {t('options.finishOption', { name: localName(f, language), rho: rho(f.reflectance) })}
+              {t('options.finishOption', { name: finishName(t, f), rho: rho(f.reflectance) })}
             </option>
           );
         })}
