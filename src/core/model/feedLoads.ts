@@ -8,7 +8,7 @@
 import { findBeam, findModuleType, type Catalog, type DriverSpec } from './catalogSchema';
 import type { Configuration, Feed, FeedAt, LightSystem } from './configuration';
 import { chainCoordinates, distancesFrom, feedCoordinate, feedLocation, onRail, type ChainCoordinates, type TreeLocation } from './chainCoordinates';
-import { firstNodeJoints, jointParent } from './railTree';
+import { firstNodeJoints, jointParent, treeProblem } from './railTree';
 import { railModuleOffsets } from './geometry';
 
 /** Load sums are compared with a milliwatt of slack so 0.1 + 0.2 style float noise never refuses a fitting driver. */
@@ -68,6 +68,41 @@ function nearestBy(distances: readonly number[], coords: readonly number[]): num
 }
 
 /**
+ * nearestBy for a snake, where the distance is |depth − feed depth|: the feeds sorted by depth and
+ * a binary search, so a module costs O(log feeds) instead of a pass over every feed (plannedFeeds
+ * tries many feed counts on long chains). Candidates are the feeds whose depth is within 1e-9 of the
+ * two neighbours of the module's depth; nearestBy over them in index order gives the same feed as
+ * over all (the others are farther by more than its 1e-12 tie window). Feeds without a place (NaN)
+ * are never nearest, as Infinity in nearestBy.
+ */
+function snakeNearest(depths: readonly number[], coords: readonly number[]): (depth: number) => number {
+  const order = depths.map((_, j) => j).filter((j) => !Number.isNaN(depths[j])).sort((a, b) => depths[a] - depths[b] || a - b);
+  if (order.length === 0) return () => 0;
+  return (x) => {
+    let lo = 0;
+    let hi = order.length;
+    while (lo < hi) {
+      const mid = (lo + hi) >> 1;
+      if (depths[order[mid]] < x) lo = mid + 1;
+      else hi = mid;
+    }
+    const picked = new Set<number>();
+    for (const p of [lo - 1, lo]) {
+      if (p < 0 || p >= order.length) continue;
+      const d = depths[order[p]];
+      for (let q = p; q >= 0 && Math.abs(depths[order[q]] - d) <= 1e-9; q--) picked.add(order[q]);
+      for (let q = p + 1; q < order.length && Math.abs(depths[order[q]] - d) <= 1e-9; q++) picked.add(order[q]);
+    }
+    const candidates = [...picked].sort((a, b) => a - b);
+    const best = nearestBy(
+      candidates.map((j) => Math.abs(x - depths[j])),
+      candidates.map((j) => coords[j]),
+    );
+    return candidates[best];
+  };
+}
+
+/**
  * Each feed's load and capacity. The system's references must be sound (known drivers,
  * module types and beams, existing joints): validate() checks those first.
  */
@@ -82,8 +117,9 @@ export function feedLoads(system: LightSystem, catalog: Catalog): FeedLoad[] {
   const loads = system.feeds.map(() => 0);
   const ids: string[][] = system.feeds.map(() => []);
   if (system.feeds.length > 0) {
+    const nearestOnSnake = chain.snake ? snakeNearest(system.feeds.map((f) => feedLocation(f.at, chain)?.depth ?? NaN), coords) : null;
     for (const m of moduleLoads(system, catalog, chain)) {
-      const j = nearestBy(fields.map((d) => (d ? d(m.at) : Infinity)), coords);
+      const j = nearestOnSnake ? nearestOnSnake(m.at.depth) : nearestBy(fields.map((d) => (d ? d(m.at) : Infinity)), coords);
       loads[j] += m.watts;
       ids[j].push(m.id);
     }
@@ -148,8 +184,19 @@ export function driverFor(load: number, catalog: Catalog): DriverSpec | null {
  * then names the overload.
  */
 export function plannedFeeds(system: LightSystem, catalog: Catalog): { at: FeedAt; driver: string }[] {
+  // A system whose tree is broken (a hostile or corrupt file: joints not one per rail after the first,
+  // a bad parent or node) gets the one default feed: validate() refuses the file and names the real
+  // problem, and the search below never walks a structure that is not a tree.
+  if (system.joints.length !== Math.max(0, system.rails.length - 1) || treeProblem(system, catalog)) return [{ at: 'start', driver: catalog.feed.defaultDriver }];
   const positions = allowedFeedPositions(system, catalog);
-  for (let n = 1; n <= positions.length; n++) {
+  // Fewer feeds than total load / largest driver can never carry the load (some feed would exceed
+  // every driver), so the search starts there: the result is the same, and a hostile file with
+  // hundreds of rails does not try hundreds of hopeless feed counts (each a feedLoads pass).
+  const largest = Math.max(...catalog.drivers.map((d) => d.capacity));
+  const chain = chainCoordinates(system, catalog);
+  const total = moduleLoads(system, catalog, chain).reduce((sum, m) => sum + m.watts, 0);
+  const fewest = Math.max(1, Math.ceil(total / largest - LOAD_EPS));
+  for (let n = fewest; n <= positions.length; n++) {
     const chosen = n === 1 ? [positions[0]] : [...new Set(Array.from({ length: n }, (_, i) => Math.round((i * (positions.length - 1)) / (n - 1))))].map((k) => positions[k]);
     const probe: LightSystem = { ...system, feeds: chosen.map((at, i) => ({ id: `probe${i}`, at, driver: catalog.feed.defaultDriver })) };
     const drivers = feedLoads(probe, catalog).map((l) => driverFor(l.load, catalog));
