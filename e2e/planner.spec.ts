@@ -43,7 +43,7 @@ test('set up a room, place a preset, fill a rail, change a module, reload, undo'
 
   // A disabled control does nothing but say why.
   await plus.click({ force: true });
-  await expect(page.getByRole('status')).toContainText('driver is full');
+  await expect(page.getByTestId('status-line')).toContainText('driver is full');
   expect(await moduleCount(page)).toBe(3);
 
   // Open a module's settings: switching to the 0.6 m linear diffuser is disabled on a full rail.
@@ -54,7 +54,7 @@ test('set up a room, place a preset, fill a rail, change a module, reload, undo'
   const linear = options.getByTestId('type-linear');
   await expect(linear).toHaveAttribute('aria-disabled', 'true');
   await linear.click({ force: true });
-  await expect(page.getByRole('status')).toContainText('Linear diffuser');
+  await expect(page.getByTestId('status-line')).toContainText('Linear diffuser');
   expect((await sceneFile(page)).configuration.systems[0].rails[0].modules[0].type).toBe('spot');
 
   // Change its colour temperature.
@@ -154,7 +154,7 @@ test('dragging a system moves it; dragging the background pans; the wheel zooms'
   await page.mouse.move(from.x - scale * 4, from.y, { steps: 5 });
   await expect(page.locator('[data-drop-refused]')).toHaveCount(1);
   await page.mouse.up();
-  await expect(page.getByRole('status')).toContainText(/room|wall|outside/i);
+  await expect(page.getByTestId('status-line')).toContainText(/room|wall|outside/i);
   expect((await sceneFile(page)).configuration.systems[0]).toEqual(after);
   await expect(page.locator('[data-drop-refused]')).toHaveCount(0);
 

@@ -26,7 +26,7 @@ test('Save file, New room, Open file restores the configuration; Undo returns to
   expect(empty.configuration.systems).toHaveLength(0);
 
   await page.getByTestId('open-file').setInputFiles(savedPath);
-  await expect(page.getByRole('status')).toContainText('Opened');
+  await expect(page.getByTestId('status-line')).toContainText('Opened');
   expect(await sceneFile(page)).toEqual(original);
 
   await page.getByTestId('tool-undo').click();
@@ -89,6 +89,6 @@ test('Download for Radiance: a zip with the scene, one light per module, the dis
   expect(rad.match(/ light lum\d+_light/g)).toHaveLength(3);
   for (const dat of rad.matchAll(/corr (\S+) source\.cal/g)) expect(files[`luxbox-5x4x2.8-radiance/${dat[1]}`]).toBeDefined();
   expect(strFromU8(files['luxbox-5x4x2.8-radiance/render.sh'])).toContain('oconv scene.rad > scene.oct');
-  await expect(page.getByRole('status')).toContainText('Saved luxbox-5x4x2.8-radiance.zip');
+  await expect(page.getByTestId('status-line')).toContainText('Saved luxbox-5x4x2.8-radiance.zip');
   expect(await sceneFile(page)).toEqual(before);
 });

@@ -204,7 +204,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
                 </CommandButton>
               </div>
               {status && (
-                <div className="status-line" role="status" key={status.seq}>
+                <div className="status-line" role="status" data-testid="status-line" key={status.seq}>
                   {noticeText(t, language, catalog, status)}
                 </div>
               )}
