@@ -45,10 +45,30 @@ function zodWithoutJsonSchema(): Plugin {
 const zodOnMini = (command: string) =>
   command === 'build' || process.env.LUXBOX_ZOD_MINI === '1' ? [{ find: /^zod$/, replacement: fileURLToPath(new URL('./src/core/zodClassicOnMini.ts', import.meta.url)) }] : [];
 
+/**
+ * React → preact/compat in the browser build only (−55 KiB gzip of the first screen: react-dom's
+ * client is 62 KiB, preact with compat and hooks about 7). The code uses createRoot, hooks
+ * (useSyncExternalStore, useId, also through zustand), memo, lazy/Suspense, StrictMode and
+ * @use-gesture/react, all in preact/compat. Vitest and the dev server keep real React, so the unit
+ * tests run the components on React and the Playwright suite runs them on preact
+ * (docs/architecture.md, "React in tests, preact in the browser build").
+ */
+const reactOnPreact = (command: string) =>
+  command === 'build'
+    ? [
+        { find: /^react-dom\/client$/, replacement: 'preact/compat/client' },
+        { find: /^react\/jsx-runtime$/, replacement: 'preact/compat/jsx-runtime' },
+        { find: /^react\/jsx-dev-runtime$/, replacement: 'preact/compat/jsx-dev-runtime' },
+        { find: /^react\/compiler-runtime$/, replacement: 'preact/compat/compiler-runtime' },
+        { find: /^react-dom$/, replacement: 'preact/compat' },
+        { find: /^react$/, replacement: 'preact/compat' },
+      ]
+    : [];
+
 // One config for the app build and for Vitest (unit + headless-gl tests).
 export default defineConfig(({ command }) => ({
   plugins: [react(), zodWithoutJsonSchema()],
-  resolve: { alias: zodOnMini(command) },
+  resolve: { alias: [...zodOnMini(command), ...reactOnPreact(command)] },
   server: { port: 5173, strictPort: false, host: true },
   preview: { port: 4173, strictPort: true },
   build: {

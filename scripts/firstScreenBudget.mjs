@@ -13,11 +13,12 @@ import { gzipSync } from 'node:zlib';
 
 /**
  * KiB (1024 B) of gzip. Issue 13's target is 120 KiB; the build is not there yet (docs/benchmarks.md,
- * "First screen": what is in it and what has to become lazy), so the check enforces a ceiling a little
- * over today's size (190.6 KiB on 2026-11-23, with ~5 KiB for the languages and the last commits) and must only ever be lowered towards the target.
+ * "First screen": what is in it and what has to become lazy), so the check enforces a ceiling 3 KiB
+ * over today's larger page (embed.html, 130.7 KiB on 2026-11-23 with preact in the browser build and
+ * the options panel lazy; was 190.6 KiB) and must only ever be lowered towards the target.
  */
 export const FIRST_SCREEN_TARGET_KIB = 120;
-export const FIRST_SCREEN_BUDGET_KIB = 197;
+export const FIRST_SCREEN_BUDGET_KIB = 134;
 
 /** The pages a shopper opens: the standalone app and the shop-page embedding example. */
 export const PAGES = ['index.html', 'embed.html'];

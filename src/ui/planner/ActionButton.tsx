@@ -35,7 +35,6 @@ export function ActionButton(props: ActionButtonProps) {
       aria-pressed={pressed}
       title={disabled ? t('common.labelWithReason', { label, reason: disabledReason }) : label}
       data-testid={testId}
-      onPointerDown={(e) => e.stopPropagation()}
       onClick={(e) => {
         e.stopPropagation();
         if (disabled) onDisabledPress?.(disabledReason);

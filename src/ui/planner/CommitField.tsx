@@ -53,7 +53,6 @@ export function CommitField({ label, value, decimals = 2, onCommit, onRefused, t
       autoComplete="off"
       data-testid={testId}
       value={shown}
-      onPointerDown={(e) => e.stopPropagation()}
       onFocus={(e) => e.target.select()}
       onChange={(e) => setDraft(e.target.value)}
       onBlur={commit}

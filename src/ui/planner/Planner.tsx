@@ -5,7 +5,7 @@ import { installationNeeds } from '../../core/model/installationNeeds';
 import type { ConfiguratorStore, Selection } from '../../core/store/createConfiguratorStore';
 import type { UiStore } from '../../core/store/uiStore';
 import { BomPanel } from './BomPanel';
-import { OptionsPanel } from './OptionsPanel';
+import { LazyOptionsPanel as OptionsPanel } from './LazyOptionsPanel';
 import { aimAtMode } from '../shared/aimAtMode';
 import { PlanControls } from './PlanControls';
 import { PlanSvg } from './PlanSvg';

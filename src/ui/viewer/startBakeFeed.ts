@@ -34,6 +34,8 @@ export interface BakeFeed {
   error(): string | null;
   /** Called after every resolved configuration or failure. */
   subscribe(listener: () => void): () => void;
+  /** True while the newest configuration is still being resolved (the service bakes an older one, or none). */
+  pending(): boolean;
   dispose(): void;
 }
 
@@ -55,6 +57,8 @@ export function startBakeFeed(store: ConfiguratorStore, loadPhotometry: (path: s
   let latest: ResolvedScene | null = null;
   let error: string | null = null;
   let sequence = 0;
+  /** The sequence number of the newest configuration resolved or refused. */
+  let settled = 0;
   let disposed = false;
 
   const feed = (config: Configuration, catalog: Catalog) => {
@@ -64,6 +68,7 @@ export function startBakeFeed(store: ConfiguratorStore, loadPhotometry: (path: s
     resolveBakeScene(scene, loadPhotometry, configurationMeshLoader(config))
       .then((bake) => {
         if (n !== sequence || disposed) return;
+        settled = n;
         const files = new Map<string, PhotometryNote>();
         scene.luminaires.forEach((l, i) => {
           if (!files.has(l.photometry)) files.set(l.photometry, { file: l.photometry, warnings: photometryWarnings(bake.luminaires[i].photometry) });
@@ -75,6 +80,7 @@ export function startBakeFeed(store: ConfiguratorStore, loadPhotometry: (path: s
       })
       .catch((e: Error) => {
         if (n !== sequence || disposed) return;
+        settled = n;
         // The loader's own message names the file ("ies/a.ies: HTTP 404"); which luminaire asked is no news to the user.
         if (e instanceof SceneObjectError) error = `Could not prepare the furniture for the light calculation: ${e.message}`;
         else error = `Could not load the photometric data: ${e instanceof LuminairePhotometryError && e.cause instanceof Error ? e.cause.message : e.message}`;
@@ -94,6 +100,7 @@ export function startBakeFeed(store: ConfiguratorStore, loadPhotometry: (path: s
     service,
     latest: () => latest,
     error: () => error,
+    pending: () => settled !== sequence,
     subscribe(listener) {
       listeners.add(listener);
       return () => listeners.delete(listener);
