@@ -131,7 +131,7 @@ test('dragging a system moves it; dragging the background pans; the wheel zooms'
   await footprintsReady(page);
   const before = (await sceneFile(page)).configuration.systems[0];
   const railId = before.rails[0].id;
-  const rail = page.locator(`polygon[data-rail-id="${railId}"]`).last();
+  const rail = page.locator(`polygon[data-rail-id="${railId}"]:not([data-connector-of])`).last();
   const box = (await rail.boundingBox())!;
   const scale = Number(await page.getByTestId('plan').getAttribute('data-scale'));
   const start = { x: box.x + box.width / 2, y: box.y + box.height / 2 };
