@@ -9,6 +9,13 @@ import { useSceneKeys } from './useSceneKeys';
 import './scenes.css';
 
 /**
+ * Focuses the rename field when it appears. Not `autoFocus`: React focuses such an element on mount,
+ * but preact (the browser build, docs/architecture.md) only sets the attribute, which browsers
+ * honour once per page. A module-level callback, so it runs on mount only, not on every keystroke.
+ */
+const focusOnMount = (input: HTMLInputElement | null) => input?.focus();
+
+/**
  * Light scenes in the side panel (docs/light-scenes.md), in 2D and 3D: GO / BACK like a lighting
  * console (next / previous in list order, each with its own fade), tap a scene to recall it, and
  * record, update, rename, reorder, delete and set the fade time. Space is GO, Shift+Space BACK.
@@ -78,7 +85,7 @@ export function ScenePanel({ store }: { store: ConfiguratorStore }) {
                 <input
                   className="scene-name-input"
                   value={renaming.name}
-                  autoFocus
+                  ref={focusOnMount}
                   aria-label={t('scenes.nameLabel')}
                   onChange={(e) => setRenaming({ id: s.id, name: e.target.value })}
                   onKeyDown={(e) => {
