@@ -1,4 +1,4 @@
-import { useEffect, useMemo, useRef, useState } from 'react';
+import { useEffect, useLayoutEffect, useMemo, useRef, useState } from 'react';
 import { useStore } from 'zustand';
 import type { Photometry } from '../../core/photometry/types';
 import type { BakeScene } from '../../engines/bake/bakeScene';
@@ -110,7 +110,9 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
   }, [store]);
 
   // Shown (first mount or back from the plan): a new opening, lit on its first frame when the maps are there; hidden: closed, no frames.
-  useEffect(() => {
+  // A layout effect, so the status changes with the screen: React flushes passive effects of a click
+  // before the next event, preact (the browser build) only after the next frame.
+  useLayoutEffect(() => {
     visibleRef.current = visible;
     if (visible) {
       mountedAt.current = performance.now();
