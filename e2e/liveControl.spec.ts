@@ -162,14 +162,14 @@ test('a console dims a module through the real bridge: the 3D view relights live
   await expect(page.getByTestId('live-state')).toHaveAttribute('data-state', 'connected', { timeout: 15_000 });
   await expect(page.getByTestId('live-state')).toContainText(/sACN · universe 1 · 1 source/, { timeout: 10_000 });
   await expect.poll(async () => (await status(page)).live?.applied ?? 0).toBeGreaterThan(0);
-  await expect(page.getByTestId(`live-${modules[0].id}`)).toHaveText(/^100 % · 30\d\d K$/);
+  await expect(page.getByTestId(`live-${modules[0].id}`)).toHaveText(/^100% · 30\d\d K$/);
   const atFull = await status(page);
   // Grey finishes: a CCT at unit luminance leaves the floor's illuminance (photometric Y) as it was.
   expect(atFull.floor!.avg).toBeCloseTo(baked.floor!.avg, 0);
 
   // The console dims the first module to 20 %: the floor darkens at once, without any bake.
   console_.set({ 1: 51 });
-  await expect(page.getByTestId(`live-${modules[0].id}`)).toHaveText(/^20 % · /);
+  await expect(page.getByTestId(`live-${modules[0].id}`)).toHaveText(/^20% · /);
   await expect.poll(async () => (await status(page)).floor!.avg, { timeout: 10_000 }).toBeLessThan(atFull.floor!.avg * 0.97);
   const dimmed = await status(page);
   expect(dimmed.groupBakes).toBe(6);
@@ -178,7 +178,7 @@ test('a console dims a module through the real bridge: the 3D view relights live
   // A fader move faster than the view: 40 levels in a burst. Only the latest frame counts, applied
   // at most once per animation frame, so the view ends at the last level with no backlog.
   for (let v = 60; v < 100; v++) console_.set({ 3: v });
-  await expect(page.getByTestId(`live-${modules[1].id}`)).toHaveText(/^39 % · /); // 99/255
+  await expect(page.getByTestId(`live-${modules[1].id}`)).toHaveText(/^39% · /); // 99/255
   const burst = await status(page);
   expect(burst.live!.received - dimmed.live!.received).toBeGreaterThanOrEqual(2);
   expect(burst.live!.applied - dimmed.live!.applied).toBeLessThan(burst.live!.received - dimmed.live!.received);
