@@ -1,11 +1,9 @@
 import { expect, test, type Page } from '@playwright/test';
 import { PNG } from 'pngjs';
-import type { ViewerStatus as Status } from '../src/ui/viewer/viewerStatus';
-import { footprintsReady, sceneFile, zoomToModuleLevel } from './helpers';
+import { footprintsReady, sceneFile, zoomToModuleLevel, viewerStatus as status } from './helpers';
 
 test.use({ reducedMotion: 'reduce', viewport: { width: 1440, height: 900 } });
 
-const status = (page: Page): Promise<Status> => page.evaluate(() => window.luxbox!.view3d() as Status);
 const aimOf = async (page: Page, id: string) => (await sceneFile(page)).configuration.systems.flatMap((s) => s.rails.flatMap((r) => r.modules)).find((m) => m.id === id) as { aim?: { rotation: number; tilt: number } } | undefined;
 
 /** Share of pixels whose RGB differs by more than 8 levels between two PNG screenshots of the same size. */

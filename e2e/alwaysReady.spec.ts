@@ -1,6 +1,5 @@
 import { expect, test, type Page } from '@playwright/test';
-import type { ViewerStatus as Status } from '../src/ui/viewer/viewerStatus';
-import { trackCanvases, type CanvasTracking } from './helpers';
+import { trackCanvases, type CanvasTracking, viewerStatus as status } from './helpers';
 
 /**
  * The 3D view is always ready (issue #15, docs/viewer.md "Always ready: the bake service"): the
@@ -13,7 +12,6 @@ import { trackCanvases, type CanvasTracking } from './helpers';
  */
 test.use({ reducedMotion: 'reduce', viewport: { width: 1024, height: 768 } });
 
-const status = (page: Page): Promise<Status> => page.evaluate(() => window.luxbox!.view3d() as Status);
 const config = async (page: Page) => JSON.parse(await page.evaluate(() => window.luxbox!.getConfig())).configuration;
 const BAKE = { timeout: 90_000, intervals: [250] };
 

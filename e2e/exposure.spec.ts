@@ -1,20 +1,11 @@
 import { expect, test, type Page } from '@playwright/test';
-import { PNG } from 'pngjs';
-import type { ViewerStatus as Status } from '../src/ui/viewer/viewerStatus';
+import { viewerStatus as status, meanLevel } from './helpers';
 
 // The 3D view's exposure (docs/viewer.md, "Exposure: automatic or a fixed EV100"): with the exposure
 // locked, dimming every module makes the image darker; with auto exposure it looks about the same.
 test.use({ reducedMotion: 'reduce', viewport: { width: 1280, height: 800 } });
 
-const status = (page: Page): Promise<Status> => page.evaluate(() => window.luxbox!.view3d() as Status);
 
-/** Mean sRGB value (0..255) of a PNG screenshot. */
-function meanLevel(png: Buffer): number {
-  const img = PNG.sync.read(png);
-  let sum = 0;
-  for (let i = 0; i < img.data.length; i += 4) sum += (img.data[i] + img.data[i + 1] + img.data[i + 2]) / 3;
-  return sum / (img.width * img.height);
-}
 
 /** Every module of the configuration to `dimming` through the embed API; waits for the relit floor. */
 async function dimAll(page: Page, dimming: number, floorBelow: number): Promise<void> {

@@ -1,3 +1,5 @@
+import { PNG } from 'pngjs';
+import type { ViewerStatus } from '../src/ui/viewer/viewerStatus';
 import { expect, type Page } from '@playwright/test';
 
 /** The running app's embedding API (window.luxbox), called in the page. */
@@ -48,4 +50,17 @@ export async function trackCanvases(page: Page): Promise<void> {
       return el;
     }) as typeof document.createElement;
   });
+}
+
+/** The 3D view's status as `window.luxbox.view3d()` reports it (bake progress, counters, quality). */
+export function viewerStatus(page: Page): Promise<ViewerStatus> {
+  return page.evaluate(() => window.luxbox!.view3d() as ViewerStatus);
+}
+
+/** Mean sRGB value (0..255) of a PNG screenshot. */
+export function meanLevel(png: Buffer): number {
+  const img = PNG.sync.read(png);
+  let sum = 0;
+  for (let i = 0; i < img.data.length; i += 4) sum += (img.data[i] + img.data[i + 1] + img.data[i + 2]) / 3;
+  return sum / (img.width * img.height);
 }

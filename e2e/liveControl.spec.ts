@@ -9,11 +9,10 @@ import { spawn, type ChildProcess } from 'node:child_process';
 import { createSocket } from 'node:dgram';
 import { createServer } from 'node:net';
 import { expect, test, type Page } from '@playwright/test';
-import type { ViewerStatus as Status } from '../src/ui/viewer/viewerStatus';
+import { viewerStatus as status } from './helpers';
 
 test.use({ reducedMotion: 'reduce', viewport: { width: 1280, height: 800 } });
 
-const status = (page: Page): Promise<Status> => page.evaluate(() => window.luxbox!.view3d() as Status);
 const getConfig = (page: Page): Promise<string> => page.evaluate(() => window.luxbox!.getConfig());
 
 /** A TCP port nothing listens on (bound, then released). */

@@ -1,6 +1,6 @@
 import { mkdirSync } from 'node:fs';
 import { expect, test, type Page } from '@playwright/test';
-import type { ViewerStatus as Status } from '../src/ui/viewer/viewerStatus';
+import { viewerStatus as status } from './helpers';
 
 /**
  * Objects in the 3D view (issue #10): a dining table placed through the model's action, a rail
@@ -17,7 +17,6 @@ const SIZES = {
   desktop: { width: 1280, height: 800 },
 } as const;
 
-const status = (page: Page): Promise<Status> => page.evaluate(() => window.luxbox!.view3d() as Status);
 const config = async (page: Page) => JSON.parse(await page.evaluate(() => window.luxbox!.getConfig())).configuration;
 
 async function furnishedIn3D(page: Page): Promise<string> {

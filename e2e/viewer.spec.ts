@@ -1,19 +1,9 @@
 import { expect, test, type Page } from '@playwright/test';
-import { PNG } from 'pngjs';
-import type { ViewerStatus as Status } from '../src/ui/viewer/viewerStatus';
-import { trackCanvases, type CanvasTracking } from './helpers';
+import { trackCanvases, type CanvasTracking, viewerStatus as status, meanLevel } from './helpers';
 
 test.use({ reducedMotion: 'reduce', viewport: { width: 1280, height: 800 } });
 
-const status = (page: Page): Promise<Status> => page.evaluate(() => window.luxbox!.view3d() as Status);
 
-/** Mean sRGB value (0..255) of a PNG screenshot. */
-function meanLevel(png: Buffer): number {
-  const img = PNG.sync.read(png);
-  let sum = 0;
-  for (let i = 0; i < img.data.length; i += 4) sum += (img.data[i] + img.data[i + 1] + img.data[i + 2]) / 3;
-  return sum / (img.width * img.height);
-}
 
 async function openCornerL(page: Page): Promise<void> {
   // Configure in 2D through the UI: default room, then the L-corner preset from the side panel.
