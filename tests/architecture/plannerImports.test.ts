@@ -41,7 +41,9 @@ describe('planner bundle', () => {
     expect([...packages].filter((p) => p === 'three' || p.startsWith('three'))).toEqual([]);
     // What the planner does use, so the walk is known to work.
     expect(packages).toContain('react');
-    expect(packages).toContain('@use-gesture/react');
+    expect(packages).toContain('zustand');
+    // The plan's gestures are written out (planGestureRecognizer.ts): @use-gesture is not in the first download.
+    expect(packages).not.toContain('@use-gesture/react');
     // The plan's zoom spring is written out (viewSpring.ts): React Spring is not in the first download.
     expect(packages).not.toContain('@react-spring/web');
   });
