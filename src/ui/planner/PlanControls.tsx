@@ -14,6 +14,8 @@ import type { Selection } from '../../core/store/createConfiguratorStore';
 import type { SelectionPath } from './selection';
 import { type PlanView, type Viewport, worldToScreen } from './viewTransform';
 import { useI18n } from '../i18n/useI18n';
+import { drawnSystems } from './drawnSystems';
+import type { DragPreview } from './PlannerController';
 import { localName } from '../i18n/localName';
 
 export interface PlanControlsProps {
@@ -27,6 +29,8 @@ export interface PlanControlsProps {
   onSelect: (sel: Selection) => void;
   /** Opens the options panel for the current selection. */
   onOpenOptions: () => void;
+  /** The drag in progress (PlannerController.drag): controls follow the systems as drawn (drawnSystems). */
+  drag?: DragPreview | null;
 }
 
 /** Distance of on-plan controls from a rail's centre line, in screen pixels (constant while zooming). */
@@ -204,14 +208,15 @@ function ModuleLevelControls({ system, catalog, view, viewport, selection, gate,
  * depends on the zoom level, like detail on a map.
  */
 export function PlanControls(props: PlanControlsProps) {
-  const { config, catalog, view, viewport, level, selection, gate, onSelect, onOpenOptions } = props;
+  const { config, catalog, view, viewport, level, selection, gate, onSelect, onOpenOptions, drag = null } = props;
+  const systems = drawnSystems(config, drag);
   if (level === 'system') {
-    const system = config.systems.find((s) => s.id === selection.systemId);
+    const system = systems.find((s) => s.id === selection.systemId);
     return <div className="plan-overlay">{system && <SystemLevelControls system={system} catalog={catalog} view={view} viewport={viewport} gate={gate} />}</div>;
   }
   return (
     <div className="plan-overlay">
-      {config.systems.map((s) => (
+      {systems.map((s) => (
         <ModuleLevelControls key={s.id} system={s} catalog={catalog} view={view} viewport={viewport} selection={selection} gate={gate} onSelect={onSelect} onOpenOptions={onOpenOptions} />
       ))}
     </div>
