@@ -71,7 +71,7 @@ export type PlannerEvent = { kind: 'view'; animate: boolean } | { kind: 'drag' }
 
 /**
  * Pixels a pointer must travel on either axis before a press becomes a drag; less is a tap.
- * The same as @use-gesture's tap threshold, which the React side uses to tell them apart.
+ * PlanGestureRecognizer uses the same threshold to tell them apart (docs/planner.md, "Gestures").
  */
 export const DRAG_THRESHOLD_PX = 3;
 
