@@ -48,9 +48,10 @@ const zodOnMini = (command: string) =>
 /**
  * React → preact/compat in the browser build only (−55 KiB gzip of the first screen: react-dom's
  * client is 62 KiB, preact with compat and hooks about 7). The code uses createRoot, hooks
- * (useSyncExternalStore, useId, also through zustand), memo, lazy/Suspense, StrictMode and
- * @use-gesture/react, all in preact/compat. Vitest and the dev server keep real React, so the unit
- * tests run the components on React and the Playwright suite runs them on preact
+ * (useSyncExternalStore, useId, also through zustand), memo, lazy/Suspense and StrictMode, all
+ * in preact/compat (the plan's gestures are its own pointer listeners, usePlanGestures.ts).
+ * Vitest and the dev server keep real React, so the unit tests run the components on React and
+ * the Playwright suite runs them on preact
  * (docs/architecture.md, "React in tests, preact in the browser build").
  */
 const reactOnPreact = (command: string) =>
