@@ -12,7 +12,11 @@ import { resolve } from 'node:path';
 
 const root = resolve(new URL('..', import.meta.url).pathname);
 const input = process.argv[2] ?? '/tmp/pipdl/lf/dataset/filters.json';
-const output = resolve(root, 'src/core/catalog/colour-filters.json');
+// Two files (docs/colour-filters.md, "Two files"): the index (ids and names: the planner's first screen
+// needs it to validate and list filters) and the spectra with their provenance (loaded when a
+// colour is computed, so the first screen does not carry ~10 KiB of curves).
+const indexOutput = resolve(root, 'src/core/catalog/colour-filters.json');
+const spectraOutput = resolve(root, 'src/core/catalog/colour-filter-spectra.json');
 
 /** Dataset key → kind. CTO/CTB in every strength LEE sells, neutral densities, and common colours. */
 const PICK = {
@@ -72,7 +76,11 @@ for (const [kind, keys] of Object.entries(PICK)) {
   }
 }
 
-const out = {
+const index = {
+  formatVersion: 2,
+  filters: filters.map(({ id, maker, number, name, kind }) => ({ id, maker, number, name, kind })),
+};
+const spectra = {
   formatVersion: 1,
   dataset: {
     name: 'lighting_filters 0.1.1 (PyPI), dataset/filters.json',
@@ -80,9 +88,10 @@ const out = {
     licence: 'MIT, Copyright (c) 2025 Reid Sox-Harris; filter data owned by the manufacturers (LEE Filters), publicly provided to end users',
     sha256: createHash('sha256').update(text).digest('hex'),
   },
-  filters,
+  spectra: filters.map(({ id, startNm, stepNm, transmission, stated, source, datasetKey }) => ({ id, startNm, stepNm, transmission, stated, source, datasetKey })),
 };
 // One filter's curve on one line: the file stays readable and diffs name the filter that changed.
-const json = JSON.stringify(out, null, 1).replace(/\[\n\s*([-\d.,\s]+?)\n\s*\]/g, (_, body) => `[${body.split(/,\s*/).join(', ')}]`);
-writeFileSync(output, `${json}\n`);
-console.log(`wrote ${filters.length} filters to ${output}`);
+const write = (path, data) => writeFileSync(path, `${JSON.stringify(data, null, 1).replace(/\[\n\s*([-\d.,\s]+?)\n\s*\]/g, (_, body) => `[${body.split(/,\s*/).join(', ')}]`)}\n`);
+write(indexOutput, index);
+write(spectraOutput, spectra);
+console.log(`wrote ${filters.length} filters to ${indexOutput} and ${spectraOutput}`);

@@ -1,8 +1,10 @@
 /**
  * The colour a module at `cct` gives through the library filter `filterId` (none: undefined):
  * the one place the model, the plan, the CLI and the filter picker turn a filter id into light.
+ * With a filter it needs the loaded spectra (./colourFilterSpectra.ts): before that it throws
+ * ColourFilterSpectraPending; `needsColourFilterSpectra` tells a host when to load them first.
  */
-import { findColourFilter, transmissionOnCmfGrid } from './colourFilterLibrary';
+import { colourFilterSpectraLoaded, filterSpectrum, transmissionOnCmfGrid } from './colourFilterSpectra';
 import { filteredColour, type FilteredColour } from './filteredColour';
 
 const grids = new Map<string, number[]>();
@@ -11,8 +13,15 @@ export function moduleColour(cct: number, filterId: string | undefined): Filtere
   if (filterId === undefined) return filteredColour(cct, null);
   let grid = grids.get(filterId);
   if (!grid) {
-    grid = transmissionOnCmfGrid(findColourFilter(filterId));
+    grid = transmissionOnCmfGrid(filterSpectrum(filterId));
     grids.set(filterId, grid);
   }
   return filteredColour(cct, grid);
+}
+
+/** Whether computing the colour of these filters (ids, undefined = none) must wait for the spectra. */
+export function needsColourFilterSpectra(filterIds: Iterable<string | undefined>): boolean {
+  if (colourFilterSpectraLoaded()) return false;
+  for (const id of filterIds) if (id !== undefined) return true;
+  return false;
 }

@@ -8,7 +8,7 @@ import { colourFilter, type ColourFilter } from '../colour/colourFilterLibrary';
 import type { FilteredColour } from '../colour/filteredColour';
 import { moduleColour } from '../colour/moduleColour';
 import type { Catalog, ModuleTypeSpec } from './catalogSchema';
-import type { ModuleInstance } from './configuration';
+import type { Configuration, ModuleInstance } from './configuration';
 
 export type FilterAccessory = NonNullable<Catalog['filters']>[number];
 
@@ -54,4 +54,15 @@ export function moduleFilterProblem(type: ModuleTypeSpec, filterId: string, cata
 /** The colour (linear RGB with luminance τ_v, CIE x,y, CCT/Duv) of a module's light through its filter. */
 export function moduleLightColour(module: Pick<ModuleInstance, 'cct' | 'filter'>): FilteredColour {
   return moduleColour(module.cct, module.filter);
+}
+
+/**
+ * Every filter id a configuration uses: its modules' and its light scenes' looks (a recalled look
+ * needs its filter's colour too). Hosts load the colour-filter spectra when this is not empty.
+ */
+export function configurationFilterIds(config: Pick<Configuration, 'systems' | 'lightScenes'>): string[] {
+  const ids = new Set<string>();
+  for (const s of config.systems) for (const r of s.rails) for (const m of r.modules) if (m.filter !== undefined) ids.add(m.filter);
+  for (const scene of config.lightScenes ?? []) for (const look of Object.values(scene.looks)) if (look.filter !== undefined) ids.add(look.filter);
+  return [...ids];
 }

@@ -1,5 +1,6 @@
 import { InputError } from '../../core/inputError';
 import { COLOUR_FILTER_LIBRARY, type FilterKind } from '../../core/colour/colourFilterLibrary';
+import { loadColourFilterSpectra } from '../../core/colour/colourFilterSpectra';
 import { moduleColour } from '../../core/colour/moduleColour';
 import { CCT_MAX_K, CCT_MIN_K } from '../../core/photometry/cct';
 
@@ -34,7 +35,7 @@ export interface FiltersListing {
   filters: FilterRow[];
 }
 
-/** The library seen through a Planckian source at `sourceCct` (docs/colour-filters.md). */
+/** The library seen through a Planckian source at `sourceCct` (docs/colour-filters.md); the spectra must be loaded. */
 export function listFilters(sourceCct: number): FiltersListing {
   const round = (v: number, digits: number) => Number(v.toFixed(digits));
   const filters = COLOUR_FILTER_LIBRARY.filters.map((f): FilterRow => {
@@ -57,6 +58,7 @@ export function listFilters(sourceCct: number): FiltersListing {
 
 /** `luxbox filters [--json] [--cct K]`: lists the colour-filter library with x, y and transmission. */
 export async function run(args: string[]): Promise<number> {
+  await loadColourFilterSpectra();
   let json = false;
   let cct = DEFAULT_SOURCE_CCT;
   for (let i = 0; i < args.length; i++) {

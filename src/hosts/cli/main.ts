@@ -1,5 +1,6 @@
 import { InputError } from '../../core/inputError';
 import { oneLine } from '../../core/model/untrustedJson';
+import { loadColourFilterSpectra } from '../../core/colour/colourFilterSpectra';
 
 /** A subcommand: receives the arguments after its name, returns the exit code. */
 export type Command = (args: string[]) => Promise<number>;
@@ -40,7 +41,9 @@ export async function main(argv: string[]): Promise<number> {
     return 2;
   }
   try {
-    const { run } = await load();
+    // Every command may compute a colour through a filter (a configuration's modules, `filters`):
+    // the spectra load with the command (docs/colour-filters.md, "Two files").
+    const [{ run }] = await Promise.all([load(), loadColourFilterSpectra()]);
     return await run(rest);
   } catch (error) {
     if (error instanceof InputError) {

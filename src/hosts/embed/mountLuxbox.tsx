@@ -16,6 +16,8 @@ import type { LuxboxInstance, LuxboxOptions } from './types';
 import { isQualityLevel, QUALITY_LEVEL_NAMES } from '../../engines/relight/qualityLevels';
 import { EV100_MAX, EV100_MIN, isEv100 } from '../../engines/view/photographicExposure';
 import { EmbedOptionsError, resolveCatalog } from './resolveCatalog';
+import { keepColourFilterSpectra } from './keepColourFilterSpectra';
+import { ColourFilterSpectraPending } from '../../core/colour/colourFilterSpectra';
 
 export { EmbedOptionsError };
 import { getViewerStatus } from '../../ui/viewer/viewerStatus';
@@ -88,6 +90,9 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
       }
     }
   });
+
+  // The filters' spectra load when the configuration first uses a filter (not with the first screen).
+  const colourData = keepColourFilterSpectra(store);
 
   const restoreSaved = () => {
     const text = storageKey ? readLocal(storageKey) : null;
@@ -192,7 +197,16 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
     },
     getLightingScene() {
       alive();
-      return toLightingScene(store.getState().config, catalog);
+      try {
+        return toLightingScene(store.getState().config, catalog);
+      } catch (e) {
+        if (e instanceof ColourFilterSpectraPending) throw new InputError('getLightingScene: the colour filters\' spectra are still loading; await whenReady() first');
+        throw e;
+      }
+    },
+    whenReady() {
+      alive();
+      return colourData.ready();
     },
     scenes() {
       alive();
@@ -230,6 +244,7 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
       if (destroyed) return;
       destroyed = true;
       unsubscribeStore();
+      colourData.stop();
       listeners.clear();
       root.unmount();
       scenePlayer.dispose();

@@ -7,6 +7,7 @@ import type { Catalog } from '../../core/model/catalogSchema';
 import type { ModuleInstance } from '../../core/model/configuration';
 import { catalogFilters, filterLabel, filterMatches } from '../../core/model/moduleFilter';
 import { useI18n } from '../i18n/useI18n';
+import { useColourFilterSpectra } from './useColourFilterSpectra';
 import type { ActionGate } from './actionGate';
 import { GatedButton } from './GatedButton';
 import { OptionChips } from './OptionChips';
@@ -35,7 +36,21 @@ const swatchStyle = (colour: FilteredColour, size: string) => ({
  * number, and the catalog's filters grouped by kind, each with the swatch of the light it gives
  * this module. Choosing one is setModuleFilter: a relight in 3D, never a rebake.
  */
-export function FilterPicker({ module, catalog, gate }: FilterPickerProps) {
+export function FilterPicker(props: FilterPickerProps) {
+  const { t } = useI18n();
+  // The swatches need the spectra (loaded on first need, docs/colour-filters.md "Two files").
+  if (!useColourFilterSpectra(true)) {
+    return (
+      <div className="field" role="group" aria-label={t('filters.title')} aria-busy="true" data-testid="filter-picker">
+        <h3>{t('filters.title')}</h3>
+        <p>{t('filters.loading')}</p>
+      </div>
+    );
+  }
+  return <LoadedFilterPicker {...props} />;
+}
+
+function LoadedFilterPicker({ module, catalog, gate }: FilterPickerProps) {
   const { t, format } = useI18n();
   const [query, setQuery] = useState('');
   const moduleId = module.id;

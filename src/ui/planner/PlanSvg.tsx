@@ -6,6 +6,8 @@ import { chainCoordinates, chainPoint, feedCoordinate } from '../../core/model/c
 import { moduleHeight, suspensionPoints } from '../../core/model/suspensionPoints';
 import { moduleFootprint, modulePhotometryPath } from './moduleFootprint';
 import type { FootprintSource } from './footprintSource';
+import { useColourFilterSpectra } from './useColourFilterSpectra';
+import { configurationFilterIds } from '../../core/model/moduleFilter';
 import { moduleTint } from './moduleTint';
 import { floorTint } from './finishColour';
 import { defaultSurfaceFinishes } from '../../core/catalog/surfaceFinishes';
@@ -177,6 +179,8 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
   const { t } = useI18n();
   // Re-render when a photometric file arrives.
   useSyncExternalStore(footprints.subscribe, footprints.version);
+  // ... and when the colour-filter spectra do: filtered modules are tinted with their light's colour.
+  useColourFilterSpectra(configurationFilterIds(config).length > 0);
   // Every optic in use has its measured footprint (or failed to load): tests wait for this.
   const footprintsReady = config.systems.every((s) =>
     s.rails.every((r) => r.modules.every((m) => {

@@ -1,5 +1,6 @@
 import type { Catalog } from '../../core/model/catalogSchema';
 import type { Configuration } from '../../core/model/configuration';
+import { loadColourFilterSpectra } from '../../core/colour/colourFilterSpectra';
 import { toLightingScene } from '../../core/model/toLightingScene';
 import type { Photometry } from '../../core/photometry/types';
 import { downloadBlob } from './downloadText';
@@ -15,6 +16,7 @@ export async function downloadRadiance(config: Configuration, catalog: Catalog, 
     import('../../engines/bake/resolveBakeScene'),
     import('../../engines/radiance/exportRadiance'),
     import('../../engines/radiance/radianceZip'),
+    loadColourFilterSpectra(), // a filtered module's colour (docs/colour-filters.md, "Two files")
   ]);
   const stem = sceneFileName(config).replace(/\.json$/i, '').replace(/\.luxbox$/i, '');
   const scene = await resolveBakeScene(toLightingScene(config, catalog), loadPhotometry);

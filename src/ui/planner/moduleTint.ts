@@ -13,7 +13,8 @@ export function moduleTint(module: Pick<ModuleInstance, 'cct' | 'filter'>): stri
   try {
     return swatchCss(moduleLightColour(module).linearRgb);
   } catch {
-    // A filter the library lacks (validate() reports it) draws as the unfiltered module.
+    // A filter the library lacks (validate() reports it), or spectra still loading (PlanSvg
+    // re-renders when they arrive), draws as the unfiltered module.
     return cctTint(module.cct);
   }
 }

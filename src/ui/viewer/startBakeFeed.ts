@@ -1,3 +1,6 @@
+import { loadColourFilterSpectra } from '../../core/colour/colourFilterSpectra';
+import { needsColourFilterSpectra } from '../../core/colour/moduleColour';
+import { configurationFilterIds } from '../../core/model/moduleFilter';
 import type { Catalog } from '../../core/model/catalogSchema';
 import type { Configuration } from '../../core/model/configuration';
 import { toLightingScene } from '../../core/model/toLightingScene';
@@ -63,6 +66,21 @@ export function startBakeFeed(store: ConfiguratorStore, loadPhotometry: (path: s
 
   const feed = (config: Configuration, catalog: Catalog) => {
     const n = ++sequence;
+    // A filter's colour needs the spectra (loaded on first need): wait for them, then feed this configuration unless a newer one came.
+    if (needsColourFilterSpectra(configurationFilterIds(config))) {
+      loadColourFilterSpectra().then(
+        () => {
+          if (n === sequence && !disposed) feed(config, catalog);
+        },
+        (e: Error) => {
+          if (n !== sequence || disposed) return;
+          settled = n;
+          error = `Could not load the colour filters' spectra: ${e.message}`;
+          notify();
+        },
+      );
+      return;
+    }
     const scene = toLightingScene(config, catalog);
     // Objects' meshes come from the configuration itself (`object:<id>`, with their finishes).
     resolveBakeScene(scene, loadPhotometry, configurationMeshLoader(config))

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { cctAndDuv } from '../../../src/core/colour/cctDuv';
-import { findColourFilter } from '../../../src/core/colour/colourFilterLibrary';
+import { filterSpectrum } from '../../../src/core/colour/colourFilterSpectra';
 import { filteredColour, xyzToLinearSrgb } from '../../../src/core/colour/filteredColour';
 import { moduleColour } from '../../../src/core/colour/moduleColour';
 import { cctToLinearRgb } from '../../../src/core/photometry/cct';
@@ -60,7 +60,7 @@ describe('filtered colour (CIE 15:2004 colorimetry)', () => {
   it('CTO/CTB under 3200 K land on LEE\'s stated tungsten chromaticities within 0.003 (their stated tungsten source fits 3200 K)', () => {
     for (const id of ['lee-204', 'lee-205', 'lee-206', 'lee-285', 'lee-201', 'lee-202', 'lee-203', 'lee-281', 'lee-106']) {
       const c = moduleColour(3200, id);
-      const s = findColourFilter(id).stated.sourceA!;
+      const s = filterSpectrum(id).stated.sourceA!;
       expect(Math.abs(c.x - s.x)).toBeLessThan(0.003);
       expect(Math.abs(c.y - s.y)).toBeLessThan(0.003);
     }
@@ -70,7 +70,7 @@ describe('filtered colour (CIE 15:2004 colorimetry)', () => {
     const cases: [string, number][] = [['lee-209', 0.3], ['lee-210', 0.6], ['lee-211', 0.9]];
     for (const [id, density] of cases) {
       const tau = moduleColour(3200, id).transmission;
-      expect(Math.abs(tau - findColourFilter(id).stated.sourceA!.Y / 100)).toBeLessThan(0.007);
+      expect(Math.abs(tau - filterSpectrum(id).stated.sourceA!.Y / 100)).toBeLessThan(0.007);
       expect(Math.abs(tau - 10 ** -density)).toBeLessThan(0.012); // measured at 3200 K: 0.0021 / 0.0113 / 0.0011
     }
   });

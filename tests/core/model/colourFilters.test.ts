@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { findColourFilter } from '../../../src/core/colour/colourFilterLibrary';
+import { filterSpectrum } from '../../../src/core/colour/colourFilterSpectra';
 import { billOfMaterials } from '../../../src/core/model/billOfMaterials';
 import { parseCatalog } from '../../../src/core/model/catalogSchema';
 import { decodeShareString, deserializeConfiguration, encodeShareString, serializeConfiguration } from '../../../src/core/model/sceneFile';
@@ -81,7 +81,7 @@ describe('colour filters on modules', () => {
     const tau = moduleLightColour({ cct: 3000, filter: 'lee-209' }).transmission;
     expect(luminance(lum[1].color!)).toBeCloseTo(tau, 12);
     // LEE states 50.0 % for 0.3ND under its tungsten source (dataset src_a Y); measured at 3000 K: 0.4990.
-    expect(Math.abs(tau - findColourFilter('lee-209').stated.sourceA!.Y / 100)).toBeLessThan(0.007);
+    expect(Math.abs(tau - filterSpectrum('lee-209').stated.sourceA!.Y / 100)).toBeLessThan(0.007);
     // A deep colour: LEE 106 Primary Red passes ≈ 13 % and the light is red.
     s = run(s, 'setModuleFilter', { moduleId: ids[2], filter: 'lee-106' });
     const red = toLightingScene(s, catalog).luminaires[2].color!;

@@ -3,6 +3,7 @@ import type en from '../en/filters';
 
 export default {
   title: 'Farbfilter',
+  loading: 'Filterspektren werden geladen…',
   none: 'Kein Filter',
   search: 'Filter nach Name oder Nummer suchen',
   searchPlaceholder: 'Name oder Nummer',

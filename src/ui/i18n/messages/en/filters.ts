@@ -2,6 +2,7 @@
 // numbers are the maker's and stay as published.
 export default {
   title: 'Colour filter',
+  loading: 'Loading the filters’ spectra…',
   none: 'No filter',
   search: 'Search filters by name or number',
   searchPlaceholder: 'Name or number',

@@ -3,6 +3,7 @@ import type en from '../en/filters';
 
 export default {
   title: 'Filtre de couleur',
+  loading: 'Chargement des spectres des filtres…',
   none: 'Sans filtre',
   search: 'Chercher un filtre par nom ou numéro',
   searchPlaceholder: 'Nom ou numéro',

@@ -3,6 +3,7 @@ import type en from '../en/filters';
 
 export default {
   title: 'Filtro colore',
+  loading: 'Caricamento degli spettri dei filtri…',
   none: 'Nessun filtro',
   search: 'Cerca filtri per nome o numero',
   searchPlaceholder: 'Nome o numero',

@@ -1,0 +1,66 @@
+/**
+ * The schema of src/core/catalog/colour-filter-spectra.json (docs/colour-filters.md, "Two files"):
+ * validated when loaded, so a broken file fails naming the filter and field, and checked against
+ * the index (colour-filters.json): one curve per library filter, no other. Loaded with the data by
+ * loadColourFilterSpectra() (./colourFilterSpectra.ts), outside the planner's first screen.
+ */
+import { z } from 'zod';
+import { InputError } from '../inputError';
+import { CIE1931_2DEG, CIE1931_START_NM, CIE1931_STEP_NM } from '../photometry/cieCmf1931';
+import { COLOUR_FILTER_LIBRARY, FILTER_ID_PATTERN } from './colourFilterLibrary';
+
+const LAST_NM = CIE1931_START_NM + CIE1931_STEP_NM * (CIE1931_2DEG.length - 1);
+
+const statedSchema = z.strictObject({ x: z.number().min(0).max(1), y: z.number().min(0).max(1), Y: z.number().min(0).max(100) });
+
+const spectrumSchema = z
+  .strictObject({
+    id: z.string().regex(FILTER_ID_PATTERN),
+    /** First wavelength of `transmission`, nm; on the CMF grid (380 + 5k). */
+    startNm: z.number().int(),
+    stepNm: z.literal(5),
+    /** Spectral transmittance τ(λ), 0..1, from startNm in 5 nm steps, as published. */
+    transmission: z.array(z.number().min(0).max(1)).min(2),
+    /** CIE x, y, Y (Y in per cent) the dataset states under its source A and source C. */
+    stated: z.strictObject({ sourceA: statedSchema.optional(), sourceC: statedSchema.optional() }),
+    source: z.string().url(),
+    datasetKey: z.string().min(1),
+  })
+  .superRefine((f, ctx) => {
+    const end = f.startNm + f.stepNm * (f.transmission.length - 1);
+    if ((f.startNm - CIE1931_START_NM) % CIE1931_STEP_NM !== 0 || f.startNm < CIE1931_START_NM) ctx.addIssue({ code: 'custom', path: ['startNm'], message: 'must lie on the 380–780 nm, 5 nm grid' });
+    if (end > LAST_NM) ctx.addIssue({ code: 'custom', path: ['transmission'], message: `reaches ${end} nm, past ${LAST_NM} nm` });
+  });
+
+const spectraSchema = z.strictObject({
+  formatVersion: z.literal(1),
+  dataset: z.strictObject({ name: z.string(), url: z.string().url(), licence: z.string(), sha256: z.string().regex(/^[0-9a-f]{64}$/) }),
+  spectra: z.array(spectrumSchema).min(1),
+});
+
+export type FilterSpectrum = z.infer<typeof spectrumSchema>;
+export type ColourFilterSpectra = z.infer<typeof spectraSchema>;
+
+/**
+ * Parses spectra data (the JSON file, or a test's) and checks it against the index: one curve per
+ * library filter, no other. Throws InputError naming the filter and field.
+ */
+export function parseColourFilterSpectra(data: unknown): ColourFilterSpectra {
+  const r = spectraSchema.safeParse(data);
+  if (!r.success) {
+    const issue = r.error.issues[0];
+    throw new InputError(`colour-filter-spectra.json: ${issue.path.join('.')}: ${issue.message}`);
+  }
+  const seen = new Set<string>();
+  for (const s of r.data.spectra) {
+    if (seen.has(s.id)) throw new InputError(`colour-filter-spectra.json: duplicate filter id '${s.id}'`);
+    seen.add(s.id);
+  }
+  for (const f of COLOUR_FILTER_LIBRARY.filters) {
+    if (!seen.has(f.id)) throw new InputError(`colour-filter-spectra.json: no curve for filter '${f.id}' of colour-filters.json`);
+    seen.delete(f.id);
+  }
+  if (seen.size > 0) throw new InputError(`colour-filter-spectra.json: curve for '${[...seen][0]}', which colour-filters.json does not list`);
+  return r.data;
+}
+
