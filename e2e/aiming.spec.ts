@@ -79,6 +79,15 @@ test('aim at from the plan, spotlight view drag: image and footprint follow, one
   const moved = changed(before, after);
   console.info(`aiming e2e: ${(100 * moved).toFixed(2)} % of the orbit view's pixels changed`);
   expect(moved).toBeGreaterThan(0.003);
+  // A camera preset leaves the spotlight view: the button and the presets follow the camera (issue #13).
+  await page.getByTestId('spotlight-view').click();
+  await expect(page.getByTestId('spotlight-view')).toHaveAttribute('aria-pressed', 'true');
+  await expect(page.getByTestId('camera-corner')).toHaveAttribute('aria-pressed', 'false');
+  await page.getByTestId('camera-top').click();
+  await expect(page.getByTestId('spotlight-view')).toHaveText('Spotlight view');
+  await expect(page.getByTestId('spotlight-view')).toHaveAttribute('aria-pressed', 'false');
+  await expect(page.getByTestId('spotlight-hint')).toHaveCount(0);
+  await expect(page.getByTestId('camera-top')).toHaveAttribute('aria-pressed', 'true');
   // Back in the plan the footprint followed the aim.
   await page.getByTestId('back-2d').click();
   await expect.poll(() => footprint.evaluate((e) => e.outerHTML)).not.toBe(plannedFootprint);

@@ -1,4 +1,4 @@
-import { useEffect, useMemo, useState } from 'react';
+import { useEffect, useMemo } from 'react';
 import { useStore } from 'zustand';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import type { ModuleAim } from '../../core/model/configuration';
@@ -7,6 +7,7 @@ import type { ViewerController } from '../../engines/view/createViewerController
 import { useI18n } from '../i18n/useI18n';
 import { aimAtMode, useAimAt } from '../shared/aimAtMode';
 import { spotlightRequest } from './spotlightRequest';
+import type { CameraModeEvent } from './cameraMode';
 
 /**
  * The viewer's events for aiming (docs/aiming.md): a released drag in the spotlight view sets the
@@ -33,6 +34,10 @@ export interface SpotlightControlsProps {
   controllerRef: { readonly current: ViewerController | null };
   /** Changes when a new controller exists (the feed arrived), so the modes are handed to it again. */
   ready: unknown;
+  /** The module whose spotlight view the camera shows (the view's CameraMode), or null. */
+  spotlight: string | null;
+  /** Enter or leave the spotlight view, or report the selection's adjustable module (cameraMode.ts). */
+  onCameraMode: (event: CameraModeEvent) => void;
 }
 
 /**
@@ -40,15 +45,17 @@ export interface SpotlightControlsProps {
  * (a camera at the module along its axis; dragging pans and tilts it) and aim at a tapped point.
  * Nothing for other selections; the spotlight view ends when the selection leaves the module.
  */
-export function SpotlightControls({ store, controllerRef, ready }: SpotlightControlsProps) {
+export function SpotlightControls({ store, controllerRef, ready, spotlight, onCameraMode }: SpotlightControlsProps) {
   const { t } = useI18n();
   const config = useStore(store, (s) => s.config);
   const catalog = useStore(store, (s) => s.catalog);
   const selection = useStore(store, (s) => s.selection);
   const aimAt = useAimAt(store);
-  const [spot, setSpot] = useState<string | null>(null);
   const target = useMemo(() => (selection?.kind === 'module' ? spotlightRequest(config, catalog, selection.id) : null), [selection, config, catalog]);
-  const spotOn = spot !== null && target?.moduleId === spot;
+  const spotOn = spotlight !== null && target?.moduleId === spotlight;
+  // The selection left the module (or it is no longer adjustable): its spotlight view ends, in the state too.
+  const targetId = target?.moduleId ?? null;
+  useEffect(() => onCameraMode({ kind: 'selection', moduleId: targetId }), [targetId, onCameraMode]);
   useEffect(() => {
     controllerRef.current?.setSpotlight(spotOn ? target : null);
   }, [spotOn, target, controllerRef, ready]);
@@ -59,7 +66,7 @@ export function SpotlightControls({ store, controllerRef, ready }: SpotlightCont
   const aimingHere = aimAt === target.moduleId;
   return (
     <div className="viewer3d-group" role="group" aria-label={t('aim.title')} data-testid="view3d-aim">
-      <button type="button" className={`btn${spotOn ? ' btn-primary' : ''}`} aria-pressed={spotOn} title={t('aim.spotlightHint')} onClick={() => setSpot(spotOn ? null : target.moduleId)} data-testid="spotlight-view">
+      <button type="button" className={`btn${spotOn ? ' btn-primary' : ''}`} aria-pressed={spotOn} title={t('aim.spotlightHint')} onClick={() => onCameraMode({ kind: 'spotlight', moduleId: spotOn ? null : target.moduleId })} data-testid="spotlight-view">
         {spotOn ? t('aim.spotlightLeave') : t('aim.spotlightView')}
       </button>
       <button type="button" className={`btn${aimingHere ? ' btn-primary' : ''}`} aria-pressed={aimingHere} title={t('aim.aimAtHint')} onClick={() => aimAtMode(store).set(aimingHere ? null : target.moduleId)} data-testid="view3d-aim-at">

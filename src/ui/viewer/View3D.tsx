@@ -1,4 +1,4 @@
-import { useEffect, useLayoutEffect, useMemo, useRef, useState } from 'react';
+import { useCallback, useEffect, useLayoutEffect, useMemo, useRef, useState } from 'react';
 import { useStore } from 'zustand';
 import type { Photometry } from '../../core/photometry/types';
 import type { BakeScene } from '../../engines/bake/bakeScene';
@@ -22,6 +22,7 @@ import { CLOSED_STATUS, setViewerStatus, type ViewerStatus } from './viewerStatu
 import { bakeHostFor } from './bakeHost';
 import type { BakeFeed, ResolvedScene } from './startBakeFeed';
 import { aimEvents, SpotlightControls } from './SpotlightControls';
+import { INITIAL_CAMERA_MODE, nextCameraMode, presetPressed, type CameraMode, type CameraModeEvent } from './cameraMode';
 import './viewer.css';
 import { useI18n } from '../i18n/useI18n';
 import type { MessageKey } from '../i18n/messageTypes';
@@ -80,7 +81,9 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
   const [progress, setProgress] = useState({ fraction: 0, done: false, lit: false });
   const [error, setError] = useState<string | null>(null);
   const [mode, setMode] = useState<ViewMode>('light');
-  const [preset, setPreset] = useState<CameraPresetName>('corner');
+  // The camera's mode (a preset's orbit or a module's spotlight view): one state for both sets of buttons.
+  const [camera, setCamera] = useState<CameraMode>(INITIAL_CAMERA_MODE);
+  const cameraEvent = useCallback((e: CameraModeEvent) => setCamera((m) => nextCameraMode(m, e)), []);
   const [levels, setLevels] = useState<number[]>([]);
   const [floor, setFloor] = useState<IlluminanceStats | null>(null);
   const [plane, setPlane] = useState<{ on: boolean; height: number }>({ on: false, height: 0.75 });
@@ -297,7 +300,19 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
       <div className="viewer3d-panel">
         <div className="viewer3d-group" role="group" aria-label={t('view3d.camera')}>
           {CAMERA_PRESETS.map((p) => (
-            <button key={p} type="button" className={`btn${preset === p ? ' btn-primary' : ''}`} aria-pressed={preset === p} onClick={() => { setPreset(p); ctrl.current?.setPreset(p); }} data-testid={`camera-${p}`}>
+            <button
+              key={p}
+              type="button"
+              className={`btn${presetPressed(camera, p) ? ' btn-primary' : ''}`}
+              aria-pressed={presetPressed(camera, p)}
+              onClick={() => {
+                setCamera((m) => nextCameraMode(m, { kind: 'preset', name: p }));
+                // A preset leaves the spotlight view first (its orbit pose comes back), then moves the orbit camera.
+                ctrl.current?.setSpotlight(null);
+                ctrl.current?.setPreset(p);
+              }}
+              data-testid={`camera-${p}`}
+            >
               {t(PRESET_LABEL[p])}
             </button>
           ))}
@@ -324,7 +339,7 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
             {t('view3d.selected', { name: selectedLabel })}
           </p>
         )}
-        <SpotlightControls store={store} controllerRef={ctrl} ready={controllerVersion} />
+        <SpotlightControls store={store} controllerRef={ctrl} ready={controllerVersion} spotlight={camera.spotlight} onCameraMode={cameraEvent} />
         <IlluminanceTable floor={floor} plane={plane.on ? { height: plane.height, stats: planeStats } : null} />
         <label className="viewer3d-field viewer3d-inline">
           <input type="checkbox" checked={plane.on} onChange={(e) => setPlane({ ...plane, on: e.target.checked })} data-testid="plane-on" /> {t('view3d.workPlaneAt')}
