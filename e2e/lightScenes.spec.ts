@@ -62,6 +62,14 @@ test('record two scenes, GO with a 1 s fade, plan levels fade, Space / Shift+Spa
   await page.keyboard.press('Space');
   await expect.poll(() => page.evaluate(() => window.luxbox!.scenes().find((s) => s.current)?.name)).toBe('Evening');
   await expect.poll(() => levelOf(page, first)).toBe('0.200');
+  // GO at the last scene does not wrap round to the first, as a console stops at the end of its cue
+  // list: the button says why (aria-disabled with the reason as its title) and Space says it in the panel.
+  await expect(go).toHaveAttribute('aria-disabled', 'true');
+  await expect(go).toHaveAttribute('title', 'Evening is the last scene: GO stops at the end of the list');
+  await page.keyboard.press('Space');
+  await expect(panel.getByTestId('scene-note')).toHaveText('Evening is the last scene: GO stops at the end of the list');
+  expect(await page.evaluate(() => window.luxbox!.scenes().find((s) => s.current)?.name)).toBe('Evening');
+  await expect(panel.getByTestId('scene-back')).toHaveAttribute('aria-disabled', 'false');
   // Space while typing in a field types a space.
   await panel.getByTestId('scene-name').fill('Late');
   await panel.getByTestId('scene-name').press('Space');

@@ -20,6 +20,7 @@
 import { findBeam, findModuleType, type Catalog } from './catalogSchema';
 import type { Configuration } from './configuration';
 import { allModules } from './lightScenes';
+import type { Rgb } from './lightingScene';
 
 const DELTA = 6 / 29;
 
@@ -37,9 +38,23 @@ export function luminanceOfLightness(l: number): number {
 
 /** Total luminous output of a configuration, lumens: Σ over modules that are on of level × the beam's lumens. */
 export function luminousOutput(config: Configuration, catalog: Catalog): number {
+  return levelsOutput(outputLevels(config), config, catalog);
+}
+
+/**
+ * Total luminous output of shown levels (module id → output level, as outputLevels or mixLevels
+ * give), lumens: Σ level × the beam's lumens of the configuration's module of that id. Linear in
+ * the levels, so the output of a mix is the same mix of the outputs.
+ */
+export function levelsOutput(levels: ReadonlyMap<string, number>, config: Configuration, catalog: Catalog): number {
   let y = 0;
-  for (const m of allModules(config)) if (m.on !== false) y += m.dimming * findBeam(findModuleType(catalog, m.type), m.beam).lumens;
+  for (const m of allModules(config)) y += (levels.get(m.id) ?? 0) * findBeam(findModuleType(catalog, m.type), m.beam).lumens;
   return y;
+}
+
+/** Each module's output level: its dimming, 0 when switched off. */
+export function outputLevels(config: Configuration): Map<string, number> {
+  return new Map(allModules(config).map((m) => [m.id, m.on === false ? 0 : m.dimming]));
 }
 
 /** The fade fraction e at time fraction t ∈ [0, 1] between outputs yFrom and yTo (lumens): even steps of L*. */
@@ -54,12 +69,44 @@ export function fadeFraction(t: number, yFrom: number, yTo: number): number {
 
 /** Each module's output level (0 when off) shown at fade fraction e: (1 − e)·from + e·to; modules of `to` only. */
 export function fadeLevels(from: Configuration, to: Configuration, e: number): Map<string, number> {
-  const before = new Map(allModules(from).map((m) => [m.id, m.on === false ? 0 : m.dimming]));
+  return mixLevels(outputLevels(from), outputLevels(to), e);
+}
+
+/**
+ * Output levels at fade fraction e between two sets of levels: (1 − e)·from + e·to for every
+ * module of `to` (one missing from `from` holds its `to` level). A fade that starts from what is
+ * shown in the middle of another fade starts from such a mix (a console's cue fades from the
+ * current state of the stage, not from the end of the interrupted cue).
+ */
+export function mixLevels(from: ReadonlyMap<string, number>, to: ReadonlyMap<string, number>, e: number): Map<string, number> {
   const out = new Map<string, number>();
-  for (const m of allModules(to)) {
-    const b = m.on === false ? 0 : m.dimming;
-    const a = before.get(m.id) ?? b;
-    out.set(m.id, (1 - e) * a + e * b);
+  for (const [id, b] of to) {
+    const a = from.get(id) ?? b;
+    out.set(id, (1 - e) * a + e * b);
+  }
+  return out;
+}
+
+/** A module's light as the baker weights it: dimming (0..1) and colour (linear RGB, relative). */
+export interface ModuleLight {
+  readonly dimming: number;
+  readonly color: Rgb;
+}
+
+/**
+ * The lights shown at fade fraction e between two sets of module lights, per module id of `to`.
+ * The baker's weight of a module is dimming × colour (RGB), and the crossfade mixes the weights
+ * linearly (docs/light-scenes.md), so the mix has weight (1 − e)·d_a·c_a + e·d_b·c_b; it is
+ * returned as dimming d = (1 − e)·d_a + e·d_b and colour weight / d (the `to` colour when d = 0,
+ * where the colour does not show). A module missing from `from` holds its `to` light.
+ */
+export function mixLights(from: ReadonlyMap<string, ModuleLight>, to: ReadonlyMap<string, ModuleLight>, e: number): Map<string, ModuleLight> {
+  const out = new Map<string, ModuleLight>();
+  for (const [id, b] of to) {
+    const a = from.get(id) ?? b;
+    const d = (1 - e) * a.dimming + e * b.dimming;
+    const w = [0, 1, 2].map((k) => (1 - e) * a.dimming * a.color[k] + e * b.dimming * b.color[k]);
+    out.set(id, { dimming: d, color: d > 0 ? [w[0] / d, w[1] / d, w[2] / d] : b.color });
   }
   return out;
 }

@@ -36,7 +36,7 @@ import { requestFootprints } from './moduleFootprint';
 import { usePlannerKeys } from './usePlannerKeys';
 import { ScenePanel } from '../scenes/ScenePanel';
 import { scenePlayerFor } from '../scenes/createScenePlayer';
-import { fadeLevels } from '../../core/model/sceneFade';
+import { mixLevels, outputLevels } from '../../core/model/sceneFade';
 import { PlanAnnouncer } from './PlanAnnouncer';
 
 export interface PlannerProps {
@@ -119,7 +119,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
   // A light-scene crossfade: the plan shows each module's level as it fades (docs/light-scenes.md).
   const player = scenePlayerFor(store);
   const fading = useSyncExternalStore(player.subscribe, () => player.getState().fading);
-  const fadeLevelsShown = useMemo(() => (fading ? fadeLevels(fading.from, fading.to, fading.e) : null), [fading]);
+  const fadeLevelsShown = useMemo(() => (fading ? mixLevels(fading.fromLevels, outputLevels(fading.to), fading.e) : null), [fading]);
 
   usePlanGestures(wrapRef, controller);
   usePlannerKeys(controller, mode === '2d');

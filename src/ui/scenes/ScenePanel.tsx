@@ -1,10 +1,10 @@
-import { useEffect, useState, useSyncExternalStore } from 'react';
+import { useCallback, useEffect, useState, useSyncExternalStore } from 'react';
 import { useStore } from 'zustand';
 import { FADE_LIMITS } from '../../core/model/lightScenes';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import { useI18n } from '../i18n/useI18n';
 import { translateCoded } from '../i18n/translateCoded';
-import { scenePlayerFor } from './createScenePlayer';
+import { scenePlayerFor, type RecallResult, type TransportStop } from './createScenePlayer';
 import { useSceneKeys } from './useSceneKeys';
 import './scenes.css';
 
@@ -29,7 +29,6 @@ export function ScenePanel({ store }: { store: ConfiguratorStore }) {
   const [name, setName] = useState('');
   const [renaming, setRenaming] = useState<{ id: string; name: string } | null>(null);
   const [note, setNote] = useState<string | null>(null);
-  useSceneKeys(player);
 
   // A note (a refusal) goes after a few seconds, as the plan's status line does.
   useEffect(() => {
@@ -43,11 +42,22 @@ export function ScenePanel({ store }: { store: ConfiguratorStore }) {
     if (!r.ok) setNote(translateCoded(t, 'scenes', r));
     return r.ok;
   };
-  const play = (p: Promise<{ ok: boolean; reason?: string }>) => {
-    void p.then((r) => {
-      if (!r.ok && r.reason) setNote(r.reason);
-    });
-  };
+  const currentName = scenes.find((s) => s.id === playback.current)?.name ?? '';
+  /** A transport stop worded for the user: GO at the last scene, BACK at the first, … */
+  const stopText = useCallback(
+    (stop: TransportStop): string => (stop === 'lastScene' || stop === 'firstScene' ? t(`scenes.${stop}`, { name: currentName }) : t(`scenes.${stop}`)),
+    [t, currentName],
+  );
+  const play = useCallback(
+    (p: Promise<RecallResult>) => {
+      void p.then((r) => {
+        // GO at the last scene, BACK at the first: said, not silently ignored (a console stops at the end of its list).
+        if (!r.ok) setNote(r.code ? stopText(r.code) : r.reason);
+      });
+    },
+    [stopText],
+  );
+  useSceneKeys(player, play);
   const record = () => {
     const n = name.trim() || t('scenes.defaultName', { n: scenes.length + 1 });
     if (act('recordScene', { name: n })) setName('');
@@ -56,17 +66,21 @@ export function ScenePanel({ store }: { store: ConfiguratorStore }) {
     if (renaming && act('renameScene', { sceneId: renaming.id, name: renaming.name })) setRenaming(null);
   };
   const next = player.next();
-  const previous = player.previous();
+  const goStopCode = player.stop('go');
+  const backStopCode = player.stop('back');
+  const goStop = goStopCode && stopText(goStopCode);
+  const backStop = backStopCode && stopText(backStopCode);
   const fading = playback.fading;
 
   return (
     <section className="panel-section scene-panel" aria-labelledby="scenes-title" data-testid="scene-panel">
       <h2 id="scenes-title">{t('scenes.title')}</h2>
       <div className="scene-transport">
-        <button type="button" className="btn" disabled={!previous} onClick={() => play(player.back())} data-testid="scene-back" aria-keyshortcuts="Shift+Space">
+        {/* aria-disabled, not disabled: the button stays focusable and a tap says why (as every disabled control in luxbox). */}
+        <button type="button" className="btn" aria-disabled={backStop !== null} title={backStop ?? undefined} onClick={() => (backStop ? setNote(backStop) : play(player.back()))} data-testid="scene-back" aria-keyshortcuts="Shift+Space">
           {t('scenes.back')}
         </button>
-        <button type="button" className="btn btn-primary scene-go" disabled={!next} onClick={() => play(player.go())} data-testid="scene-go" aria-keyshortcuts="Space">
+        <button type="button" className="btn btn-primary scene-go" aria-disabled={goStop !== null} title={goStop ?? undefined} onClick={() => (goStop ? setNote(goStop) : play(player.go()))} data-testid="scene-go" aria-keyshortcuts="Space">
           {next ? t('scenes.goTo', { name: next.name }) : t('scenes.go')}
         </button>
       </div>

@@ -10,7 +10,7 @@
 import type { Catalog } from '../../core/model/catalogSchema';
 import type { Configuration, LightScene } from '../../core/model/configuration';
 import type { Rgb } from '../../core/model/lightingScene';
-import { fadeFraction, fadeLevels, luminousOutput } from '../../core/model/sceneFade';
+import { fadeFraction, levelsOutput, mixLevels, mixLights, outputLevels, type ModuleLight } from '../../core/model/sceneFade';
 import { toLightingScene } from '../../core/model/toLightingScene';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import type { BakeScene } from '../../engines/bake/bakeScene';
@@ -18,7 +18,11 @@ import type { BakeFeed } from '../viewer/startBakeFeed';
 
 export interface SceneFadeState {
   readonly sceneId: string;
-  readonly from: Configuration;
+  /**
+   * Each module's output level when the fade began (module id → level, off = 0): the configuration
+   * before the recall, or, when the recall interrupted another fade, that fade's mix at that instant.
+   */
+  readonly fromLevels: ReadonlyMap<string, number>;
   readonly to: Configuration;
   /** Time fraction 0..1 and the eased fade fraction e(t) (sceneFade.ts). */
   readonly t: number;
@@ -33,12 +37,24 @@ export interface ScenePlayerState {
   readonly fading: SceneFadeState | null;
 }
 
-export type RecallResult = { readonly ok: true } | { readonly ok: false; readonly reason: string };
+/** A refused recall: the reason in English, and for GO / BACK at the ends of the list a code the panel words (scenes.lastScene, …). */
+export type RecallResult = { readonly ok: true } | { readonly ok: false; readonly reason: string; readonly code?: TransportStop };
+
+/**
+ * Why GO or BACK has nothing to recall, like a console at the end of its cue list (GO at the last
+ * cue does not wrap round to the first): no scenes, GO at the last scene, BACK at the first, BACK
+ * before any scene was recalled.
+ */
+export type TransportStop = 'noScenes' | 'lastScene' | 'firstScene' | 'nothingRecalled';
 
 export interface ScenePlayer {
   getState(): ScenePlayerState;
   subscribe(listener: () => void): () => void;
-  /** Recalls a scene with a fade of `fade` seconds (default: the scene's own); resolves when the fade ends (or is cut short). */
+  /**
+   * Recalls a scene with a fade of `fade` seconds (default: the scene's own); resolves when the fade
+   * ends (or is cut short). During another fade the new one starts from the look shown at that
+   * instant (the running fade's mix), as a console's cue fades from the stage's current state.
+   */
   recall(sceneId: string, options?: { fade?: number }): Promise<RecallResult>;
   /** The next scene in list order after the current one (the first when none was recalled), or null at the end. */
   next(): LightScene | null;
@@ -46,6 +62,8 @@ export interface ScenePlayer {
   previous(): LightScene | null;
   go(): Promise<RecallResult>;
   back(): Promise<RecallResult>;
+  /** Why GO (`'go'`) or BACK (`'back'`) would do nothing now, or null when it recalls a scene. */
+  stop(direction: 'go' | 'back'): TransportStop | null;
   /** Each module's shown output level during a fade (off = 0), null when no fade runs. */
   levels(): ReadonlyMap<string, number> | null;
   /** Ends a running fade at its end state now. */
@@ -71,17 +89,17 @@ const pageFrame = (callback: () => void): (() => void) => {
 };
 
 /** Dimming and colour per module id of a configuration's lighting scene (what the baker gets for it). */
-function lightsOf(config: Configuration, catalog: Catalog): Map<string, { dimming: number; color: Rgb }> {
+function lightsOf(config: Configuration, catalog: Catalog): Map<string, ModuleLight> {
   return new Map(toLightingScene(config, catalog).luminaires.map((l) => [l.id ?? '', { dimming: l.dimming ?? 1, color: (l.color ?? [1, 1, 1]) as Rgb }]));
 }
 
 /** The scene faded from: the lit scene's luminaires with the earlier state's dimming and colour (by module id). */
-function fromScene(scene: BakeScene, ids: readonly string[], lights: ReadonlyMap<string, { dimming: number; color: Rgb }>): BakeScene {
+function fromScene(scene: BakeScene, ids: readonly string[], lights: ReadonlyMap<string, ModuleLight>): BakeScene {
   return {
     ...scene,
     luminaires: scene.luminaires.map((l, i) => {
       const f = lights.get(ids[i]);
-      return f ? { ...l, dimming: f.dimming, color: f.color } : l;
+      return f ? { ...l, dimming: f.dimming, color: [...f.color] as Rgb } : l;
     }),
   };
 }
@@ -91,7 +109,7 @@ export function createScenePlayer(store: ConfiguratorStore, options: ScenePlayer
   const now = options.now ?? (() => performance.now());
   const listeners = new Set<() => void>();
   let state: ScenePlayerState = { current: null, fading: null };
-  let run: { start: number; yFrom: number; yTo: number; cancelFrame: () => void; resolve: (r: RecallResult) => void; lights: Map<string, { dimming: number; color: Rgb }> } | null = null;
+  let run: { start: number; yFrom: number; yTo: number; cancelFrame: () => void; resolve: (r: RecallResult) => void; lights: ReadonlyMap<string, ModuleLight> } | null = null;
   const set = (next: ScenePlayerState) => {
     state = next;
     for (const l of [...listeners]) l();
@@ -116,12 +134,26 @@ export function createScenePlayer(store: ConfiguratorStore, options: ScenePlayer
     r.resolve({ ok: true });
   };
 
+  /** The running fade's time fraction and eased fraction at this instant. */
+  const position = (f: SceneFadeState, r: NonNullable<typeof run>) => {
+    const t = f.seconds > 0 ? Math.min(1, (now() - r.start) / (f.seconds * 1000)) : 1;
+    return { t, e: fadeFraction(t, r.yFrom, r.yTo) };
+  };
+
+  /** The look shown now, as levels (the plan) and lights (the 3D view): the running fade's mix at this instant, else the configuration's. */
+  const shownLook = (config: Configuration, catalog: Catalog) => {
+    const f = state.fading;
+    if (!run || !f) return { levels: outputLevels(config), lights: lightsOf(config, catalog), fading: false };
+    const { e } = position(f, run);
+    return { levels: mixLevels(f.fromLevels, outputLevels(f.to), e), lights: mixLights(run.lights, lightsOf(f.to, catalog), e), fading: true };
+  };
+
   const tick = () => {
     if (!run || !state.fading) return;
     const f = state.fading;
-    const t = f.seconds > 0 ? (now() - run.start) / (f.seconds * 1000) : 1;
+    const { t, e } = position(f, run);
     if (t >= 1) return end();
-    const next = { ...f, t, e: fadeFraction(t, run.yFrom, run.yTo) };
+    const next = { ...f, t, e };
     set({ ...state, fading: next });
     showFade(next);
     run.cancelFrame = frame(tick);
@@ -139,20 +171,22 @@ export function createScenePlayer(store: ConfiguratorStore, options: ScenePlayer
       return () => listeners.delete(listener);
     },
     recall(sceneId, opts = {}) {
-      end();
       const { catalog, config: from } = store.getState();
+      // Taken before the running fade ends: a recall during a fade starts from the mix on screen.
+      const shown = shownLook(from, catalog);
+      end();
       const scene = scenes().find((s) => s.id === sceneId);
       const result = store.getState().dispatch('recallScene', { sceneId });
       if (!result.ok) return Promise.resolve({ ok: false, reason: result.reason });
       const to = store.getState().config;
       const seconds = opts.fade ?? scene?.fade ?? 0;
-      if (!(seconds > 0) || to === from) {
+      if (!(seconds > 0) || (to === from && !shown.fading)) {
         set({ current: sceneId, fading: null });
         return Promise.resolve({ ok: true });
       }
       return new Promise<RecallResult>((resolve) => {
-        run = { start: now(), yFrom: luminousOutput(from, catalog), yTo: luminousOutput(to, catalog), cancelFrame: () => undefined, resolve, lights: lightsOf(from, catalog) };
-        const fading: SceneFadeState = { sceneId, from, to, t: 0, e: 0, seconds };
+        run = { start: now(), yFrom: levelsOutput(shown.levels, to, catalog), yTo: levelsOutput(outputLevels(to), to, catalog), cancelFrame: () => undefined, resolve, lights: shown.lights };
+        const fading: SceneFadeState = { sceneId, fromLevels: shown.levels, to, t: 0, e: 0, seconds };
         set({ current: sceneId, fading });
         showFade(fading);
         run.cancelFrame = frame(tick);
@@ -170,15 +204,24 @@ export function createScenePlayer(store: ConfiguratorStore, options: ScenePlayer
     },
     go() {
       const s = player.next();
-      return s ? player.recall(s.id) : Promise.resolve({ ok: false, reason: 'no next scene' });
+      const code = player.stop('go');
+      return s ? player.recall(s.id) : Promise.resolve({ ok: false, reason: code === 'noScenes' ? 'no light scenes' : 'no next scene', code: code ?? 'lastScene' });
     },
     back() {
       const s = player.previous();
-      return s ? player.recall(s.id) : Promise.resolve({ ok: false, reason: 'no previous scene' });
+      const code = player.stop('back');
+      return s ? player.recall(s.id) : Promise.resolve({ ok: false, reason: code === 'noScenes' ? 'no light scenes' : 'no previous scene', code: code ?? 'firstScene' });
+    },
+    stop(direction) {
+      const list = scenes();
+      if (list.length === 0) return 'noScenes';
+      if (direction === 'go') return player.next() ? null : 'lastScene';
+      if (player.previous()) return null;
+      return list.some((s) => s.id === state.current) ? 'firstScene' : 'nothingRecalled';
     },
     levels() {
       const f = state.fading;
-      return f ? fadeLevels(f.from, f.to, f.e) : null;
+      return f ? mixLevels(f.fromLevels, outputLevels(f.to), f.e) : null;
     },
     finish: end,
     dispose() {

@@ -100,13 +100,25 @@ describe('scene player', () => {
     expect(await player.go()).toEqual({ ok: true }); // Day: 0 s, at once
     expect(player.getState().current).toBe(day.id);
     expect(player.previous()).toBeNull();
-    expect(await player.back()).toEqual({ ok: false, reason: 'no previous scene' });
+    expect(player.stop('back')).toBe('firstScene');
+    expect(await player.back()).toEqual({ ok: false, reason: 'no previous scene', code: 'firstScene' });
     const going = player.go();
     expect(player.getState().fading?.seconds).toBe(evening.fade);
     clock.advance(evening.fade * 1000);
     expect(await going).toEqual({ ok: true });
     expect(player.next()).toBeNull();
-    expect(await player.go()).toEqual({ ok: false, reason: 'no next scene' });
+    // GO at the last scene does not wrap round to the first (a console stops at the end of its cue list); it says why.
+    expect(player.stop('go')).toBe('lastScene');
+    expect(await player.go()).toEqual({ ok: false, reason: 'no next scene', code: 'lastScene' });
+    expect(player.getState().current).toBe(evening.id);
+  });
+
+  it('GO / BACK stops: no scenes, nothing recalled yet', async () => {
+    const empty = createScenePlayer(createConfiguratorStore({ catalog, initial: withPreset('single', 1, 1) }));
+    expect([empty.stop('go'), empty.stop('back')]).toEqual(['noScenes', 'noScenes']);
+    expect(await empty.go()).toEqual({ ok: false, reason: 'no light scenes', code: 'noScenes' });
+    const fresh = createScenePlayer(createConfiguratorStore({ catalog, initial: twoScenes() }));
+    expect([fresh.stop('go'), fresh.stop('back')]).toEqual([null, 'nothingRecalled']);
   });
 
   it('an edit during a fade ends it (the plan shows the configuration); a refused recall says why', async () => {
@@ -120,5 +132,48 @@ describe('scene player', () => {
     expect(await fading).toEqual({ ok: true });
     expect(player.getState().fading).toBeNull();
     expect(await player.recall('q999')).toEqual({ ok: false, reason: "no light scene with id 'q999'" });
+  });
+
+  it('a recall during a fade starts from the look on screen (the mix at that instant), not from the end of the running fade', async () => {
+    // Three spots: A = m1 only, B = m2 only (equal output: the old fade is linear, e = t), C = m2 and m3.
+    let c = withPreset('single', 1, 1);
+    const [m1, m2, m3] = allModules(c).map((m) => m.id);
+    const look = (on: [boolean, boolean, boolean]) => [m1, m2, m3].forEach((id, i) => (c = run(c, 'setModuleOn', { moduleId: id, on: on[i] })));
+    look([true, false, false]);
+    c = run(c, 'recordScene', { name: 'A', fade: 2 });
+    look([false, true, false]);
+    c = run(c, 'recordScene', { name: 'B', fade: 2 });
+    look([false, true, true]);
+    c = run(c, 'recordScene', { name: 'C', fade: 2 });
+    const [a, b, cue] = c.lightScenes!;
+    c = run(c, 'recallScene', { sceneId: a.id });
+    const store = createConfiguratorStore({ catalog, initial: c });
+    const clock = manualFrames();
+    const { feed, fades } = recordingFeed([m1, m2, m3]);
+    const player = createScenePlayer(store, { frame: clock.frame, now: clock.now, feed: () => feed });
+    const levels = () => [m1, m2, m3].map((id) => player.levels()?.get(id));
+
+    const first = player.recall(b.id);
+    clock.advance(1000); // half of A → B: m1 0.5, m2 0.5, m3 0
+    expect(levels()).toEqual([0.5, 0.5, 0]);
+    const second = player.recall(cue.id);
+    expect(await first).toEqual({ ok: true }); // the interrupted fade's promise resolves
+    // t = 0 of the new fade: exactly what was on screen (before the fix: B's end state 0, 1, 0).
+    expect(levels()).toEqual([0.5, 0.5, 0]);
+    // The 3D view's scene faded from carries the same mix (dimming; the colours are equal here).
+    const lit: BakeScene = { room: { width: 1, height: 1, depth: 1, reflectance: {} as BakeScene['room']['reflectance'] }, luminaires: [0, 1, 2].map(() => ({ dimming: 1 }) as BakeScene['luminaires'][number]) };
+    expect(fades[fades.length - 1]!.from(lit).luminaires.map((l) => l.dimming)).toEqual([0.5, 0.5, 0]);
+    // t = 0.5: from output L to 2 L, e = 0.442746 (tests/core/model/sceneFade.test.ts, by hand):
+    // m1 0.5·(1 − e) = 0.278627, m2 0.5 + 0.5·e = 0.721373, m3 e = 0.442746.
+    clock.advance(1000);
+    const half = levels();
+    expect(half[0]).toBeCloseTo(0.278627, 6);
+    expect(half[1]).toBeCloseTo(0.721373, 6);
+    expect(half[2]).toBeCloseTo(0.442746, 6);
+    // t = 1: C, and the fade is over; the configuration is C throughout.
+    clock.advance(1000);
+    expect(await second).toEqual({ ok: true });
+    expect(player.levels()).toBeNull();
+    expect(allModules(store.getState().config).map((m) => m.on !== false)).toEqual([false, true, true]);
   });
 });
