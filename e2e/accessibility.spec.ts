@@ -5,14 +5,25 @@ import { sceneFile } from './helpers';
 // Springs skipped (prefers-reduced-motion) so each zoom lands at once; a fixed bake quality for the 3D view.
 test.use({ reducedMotion: 'reduce', viewport: { width: 1280, height: 800 } });
 
-/** axe-core's findings of impact serious or critical (WCAG 2.0–2.2 A/AA and best practices), as readable lines. */
-async function seriousViolations(page: Page, include?: string): Promise<string[]> {
+/** axe-core's findings of every impact, minor to critical (WCAG 2.0–2.2 A/AA and best practices), as readable lines. */
+async function violations(page: Page, include?: string): Promise<string[]> {
   const builder = new AxeBuilder({ page });
   if (include) builder.include(include);
-  const { violations } = await builder.analyze();
-  return violations
-    .filter((v) => v.impact === 'serious' || v.impact === 'critical')
-    .flatMap((v) => v.nodes.map((n) => `${v.impact} ${v.id} (${v.help}): ${n.target.join(' ')}`));
+  const result = await builder.analyze();
+  return result.violations.flatMap((v) => v.nodes.map((n) => `${v.impact} ${v.id} (${v.help}): ${n.target.join(' ')}`));
+}
+
+/** The page-level landmarks among them (the side panel's named sections are regions inside them). */
+const pageLandmarks = (found: string[]) => found.filter((l) => /^(banner|main|complementary)\b/.test(l));
+
+/** The page's landmarks as role and name, in document order (what a screen reader's landmark list shows). */
+async function landmarks(page: Page): Promise<string[]> {
+  const tree = await page.locator('body').ariaSnapshot();
+  return tree
+    .split('\n')
+    .map((line) => /^\s*- (banner|main|complementary|region|navigation|contentinfo)(?: "([^"]*)")?/.exec(line))
+    .filter((m): m is RegExpExecArray => m !== null)
+    .map((m) => (m[2] ? `${m[1]} ${m[2]}` : m[1]));
 }
 
 /**
@@ -41,9 +52,11 @@ const announcer = (page: Page) => page.getByTestId('plan-announcer');
 /** The beam of the first module of the first rail (e2e/helpers' sceneFile type leaves beams out). */
 const firstBeam = (page: Page): Promise<string> => page.evaluate(() => JSON.parse(window.luxbox!.getConfig()).configuration.systems[0].rails[0].modules[0].beam);
 
-test('axe: room setup, plan with a selection, side panel, 3D view controls — no serious or critical violations', async ({ page }) => {
+test('axe: room setup, plan with a selection, side panel, 3D view controls — no violations of any impact', async ({ page }) => {
   await page.goto('/?quality=fast');
-  expect(await seriousViolations(page)).toEqual([]);
+  expect(await violations(page)).toEqual([]);
+  // The standalone app is the whole page: its header is the banner, the room setup the one main.
+  expect(pageLandmarks(await landmarks(page))).toEqual(['banner', 'main']);
 
   await page.locator('form.setup-card button[type="submit"]').click();
   await page.getByTestId('preset-corner-l').click();
@@ -57,14 +70,16 @@ test('axe: room setup, plan with a selection, side panel, 3D view controls — n
   }
   await page.getByTestId(`module-${module.id}`).getByRole('button').click();
   await expect(page.getByTestId('options-panel')).toBeVisible();
-  expect(await seriousViolations(page)).toEqual([]);
+  expect(await violations(page)).toEqual([]);
+  // The plan (with the bottom bar) is the main, the side panel an aside beside it.
+  expect(pageLandmarks(await landmarks(page))).toEqual(['banner', 'main', 'complementary Presets and price']);
 
   await page.getByTestId('tool-3d').click();
   await expect(page.getByTestId('view3d-canvas')).toBeVisible();
   await page.locator('details.viewer3d-modules > summary').click();
-  expect(await seriousViolations(page, '[data-testid="view3d"]')).toEqual([]);
+  expect(await violations(page, '[data-testid="view3d"]')).toEqual([]);
   await page.getByTestId('mode-lux').click();
-  expect(await seriousViolations(page, '[data-testid="view3d"]')).toEqual([]);
+  expect(await violations(page, '[data-testid="view3d"]')).toEqual([]);
 
   // Phone: the side panel is a drawer behind the header's button.
   await page.getByTestId('tool-3d').click();
@@ -72,7 +87,19 @@ test('axe: room setup, plan with a selection, side panel, 3D view controls — n
   await page.setViewportSize({ width: 375, height: 667 });
   if (!(await page.locator('.side-panel.open').isVisible())) await page.locator('.panel-toggle').click();
   await expect(page.locator('.side-panel.open')).toBeVisible();
-  expect(await seriousViolations(page)).toEqual([]);
+  expect(await violations(page)).toEqual([]);
+});
+
+test('axe: the configurator embedded in the shop page — no violations, and the shop keeps its own banner and main', async ({ page }) => {
+  await page.goto('/embed.html');
+  await expect(page.getByTestId('configurator-host').locator('.app')).toBeVisible();
+  expect(await violations(page)).toEqual([]);
+  const found = await landmarks(page);
+  // One banner and one main, the shop's: luxbox is one named region inside them and adds neither.
+  expect(found.filter((l) => l === 'banner')).toHaveLength(1);
+  expect(found.filter((l) => l === 'main')).toHaveLength(1);
+  // The shop page speaks German (its locale option): the region is named in the UI language.
+  expect(found).toContain('region luxbox Lichtkonfigurator');
 });
 
 test('keyboard only: Tab to a preset, place it, select a module, change its beam, 3D and back; each step announced', async ({ page }) => {

@@ -39,6 +39,8 @@ window.luxbox = mountLuxbox(root, {
   demo,
   locale,
   languageSwitch: true,
+  // The app is the whole page: its header is the banner, the plan the main landmark.
+  landmarks: 'page',
   onLanguageChange: (language) => {
     writeLocal(LANGUAGE_KEY, language);
     document.documentElement.lang = language;

@@ -59,6 +59,9 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
   if (options.exposure !== undefined && options.exposure !== 'auto' && !isEv100(options.exposure)) {
     throw new EmbedOptionsError(`options.exposure: ${JSON.stringify(options.exposure)} is neither 'auto' nor an EV100 number in ${EV100_MIN}..${EV100_MAX}`);
   }
+  if (options.landmarks !== undefined && options.landmarks !== 'page' && options.landmarks !== 'region') {
+    throw new EmbedOptionsError(`options.landmarks: ${JSON.stringify(options.landmarks)} is neither 'page' nor 'region'`);
+  }
   const i18n = createI18n({ locale: checkLocale(options.locale), currency: catalog.currency, onLanguageChange: options.onLanguageChange });
   const storageKey = options.storageKey || null;
   const saved = storageKey ? readLocal(storageKey) : null;
@@ -134,7 +137,7 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
   root.render(
     <StrictMode>
       <I18nProvider i18n={i18n}>
-        <Configurator store={store} ui={ui} languageSwitch={options.languageSwitch === true} onRestoreSaved={restoreSaved} shareLink={shareLinkForUi} footprints={footprints} />
+        <Configurator store={store} ui={ui} languageSwitch={options.languageSwitch === true} onRestoreSaved={restoreSaved} shareLink={shareLinkForUi} footprints={footprints} landmarks={options.landmarks ?? 'region'} />
       </I18nProvider>
     </StrictMode>,
   );

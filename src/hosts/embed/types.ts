@@ -19,6 +19,12 @@ export interface LuxboxOptions {
   locale?: string | readonly string[];
   /** Show the language switch in the top bar; default false (the shop chooses the locale). The standalone app turns it on. */
   languageSwitch?: boolean;
+  /**
+   * 'region' (default): luxbox is one region landmark named "luxbox lighting configurator" inside the
+   * host's page, which keeps its own banner and main. 'page': luxbox is the whole page (the standalone
+   * app): its header is the banner and the plan the main (docs/accessibility.md, "Landmarks").
+   */
+  landmarks?: 'page' | 'region';
   /** Called after the user switched the language with the switch or setLanguage (the standalone app stores it). */
   onLanguageChange?: (language: Language) => void;
   /** ISO 4217 code the shop expects; must equal the catalog's currency (prices are never converted). */

@@ -11,6 +11,7 @@ import type { UiStore } from '../../core/store/uiStore';
 import { useI18n } from '../i18n/useI18n';
 import { LanguageSwitch } from '../i18n/LanguageSwitch';
 import { translateCoded } from '../i18n/translateCoded';
+import type { Landmarks } from '../shared/landmarks';
 import './app.css';
 
 export interface ConfiguratorProps {
@@ -23,10 +24,17 @@ export interface ConfiguratorProps {
   /** The share link of the current configuration, and the names of the imported models it leaves out. */
   shareLink: () => { link: string; leftOut: readonly string[] };
   footprints: FootprintSource;
+  /**
+   * Which landmarks luxbox draws (docs/accessibility.md, "Landmarks"): 'page' when it is the whole
+   * page (the standalone app: its header is the page's banner, the plan or room setup its one main),
+   * 'region' when it is embedded (default): one region named "luxbox lighting configurator" around all of
+   * it, so the host page keeps its own banner and main.
+   */
+  landmarks?: Landmarks;
 }
 
 /** The configurator's top-level component: room setup first, then the planner (configurator paper §3.2). */
-export function Configurator({ store, ui, languageSwitch = false, onRestoreSaved, shareLink, footprints }: ConfiguratorProps) {
+export function Configurator({ store, ui, languageSwitch = false, onRestoreSaved, shareLink, footprints, landmarks = 'region' }: ConfiguratorProps) {
   const { t, locale } = useI18n();
   const phase = useStore(ui, (s) => s.phase);
   const banner = useStore(ui, (s) => s.banner);
@@ -59,8 +67,11 @@ export function Configurator({ store, ui, languageSwitch = false, onRestoreSaved
     return names.length > 0 ? t('app.shareCreatedWithoutModels') : t('app.shareCreated');
   };
 
+  // Embedded: a named section is a region landmark, and a <header> inside it is no banner (HTML-AAM),
+  // so nothing of luxbox competes with the host page's own banner and main.
+  const Root = landmarks === 'page' ? 'div' : 'section';
   return (
-    <div className="app" lang={locale}>
+    <Root className="app" lang={locale} aria-label={landmarks === 'page' ? undefined : t('app.regionLabel')}>
       {banner && (
         <div className="banner" role="alert" data-testid="banner">
           <span className="banner-text">{translateCoded(t, 'app', banner)}</span>
@@ -89,6 +100,7 @@ export function Configurator({ store, ui, languageSwitch = false, onRestoreSaved
               ui.setState({ phase: 'planner', mode: '2d' });
             }}
             onDemo={startDemo}
+            landmarks={landmarks}
           />
         </>
       ) : (
@@ -100,8 +112,9 @@ export function Configurator({ store, ui, languageSwitch = false, onRestoreSaved
           onShare={share}
           shareNotice={shareNotice}
           footprints={footprints}
+          landmarks={landmarks}
         />
       )}
-    </div>
+    </Root>
   );
 }

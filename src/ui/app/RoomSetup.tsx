@@ -7,6 +7,7 @@ import { FinishSelect } from '../planner/FinishSelect';
 import { useI18n } from '../i18n/useI18n';
 import { ENGLISH } from '../i18n/english';
 import type { MessageKey, Translate } from '../i18n/messageTypes';
+import type { Landmarks } from '../shared/landmarks';
 
 export interface RoomDimensions {
   width: number;
@@ -49,10 +50,12 @@ export interface RoomSetupProps {
   onDemo: () => void;
   /** Present when a saved configuration exists. */
   onResume?: () => void;
+  /** 'page': the form is the page's main landmark (the standalone app); 'region': a plain box inside the embed's region. */
+  landmarks?: Landmarks;
 }
 
 /** The first page (configurator paper §3.2): room dimensions with validation, then the main screen. */
-export function RoomSetup({ initial, onSubmit, onDemo, onResume }: RoomSetupProps) {
+export function RoomSetup({ initial, onSubmit, onDemo, onResume, landmarks = 'region' }: RoomSetupProps) {
   const id = useId();
   const { t, format } = useI18n();
   // Shown with the locale's decimal separator ("2,7" in German); both separators are accepted back.
@@ -74,8 +77,9 @@ export function RoomSetup({ initial, onSubmit, onDemo, onResume }: RoomSetupProp
   };
   const valid = !errors.width && !errors.depth && !errors.height;
 
+  const Root = landmarks === 'page' ? 'main' : 'div';
   return (
-    <div className="setup">
+    <Root className="setup">
       <form
         className="setup-card"
         noValidate
@@ -139,6 +143,6 @@ export function RoomSetup({ initial, onSubmit, onDemo, onResume }: RoomSetupProp
           </button>
         )}
       </form>
-    </div>
+    </Root>
   );
 }

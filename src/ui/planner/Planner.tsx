@@ -38,6 +38,7 @@ import { ScenePanel } from '../scenes/ScenePanel';
 import { scenePlayerFor } from '../scenes/createScenePlayer';
 import { mixLevels, outputLevels } from '../../core/model/sceneFade';
 import { PlanAnnouncer } from './PlanAnnouncer';
+import type { Landmarks } from '../shared/landmarks';
 
 export interface PlannerProps {
   store: ConfiguratorStore;
@@ -51,10 +52,12 @@ export interface PlannerProps {
   /** What the last share link left out (imported models), shown next to it; null when it is complete. */
   shareNotice?: string | null;
   footprints: FootprintSource;
+  /** 'page': the header is the page's banner and the plan its main (the standalone app); 'region': inside the embed's region. */
+  landmarks?: Landmarks;
 }
 
 /** The main screen (configurator paper, fig. 6): the plan, side panel with presets and price, bottom bar. */
-export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare, shareNotice = null, footprints }: PlannerProps) {
+export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare, shareNotice = null, footprints, landmarks = 'region' }: PlannerProps) {
   const { t, format, language } = useI18n();
   const config = useStore(store, (s) => s.config);
   const catalog = useStore(store, (s) => s.catalog);
@@ -161,10 +164,12 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
     ui.setState({ panelOpen: false });
   };
 
+  // The plan, the 3D view and the bottom bar are the main landmark of a page; the side panel an aside beside it.
+  const WorkArea = landmarks === 'page' ? 'main' : 'div';
   return (
     <div className="app-body">
       <PlanAnnouncer store={store} />
-      <div className="app-header">
+      <header className="app-header">
         <h1>luxbox</h1>
         <span className="room-label">{t('planner.roomSize', { width: config.room.width, depth: config.room.depth, height: config.room.height })}</span>
         <span className="spacer" />
@@ -175,9 +180,9 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
         <button type="button" className="btn panel-toggle" aria-expanded={panelOpen} onClick={() => ui.setState({ panelOpen: !panelOpen })}>
           {panelOpen ? t('common.close') : t('planner.presetsToggle')}
         </button>
-      </div>
+      </header>
       <div className="workspace">
-        <div className="stage">
+        <WorkArea className="stage">
           {mode === '2d' ? (
             <div className="plan-wrap" ref={wrapRef} data-testid="plan" data-scale={view.scale.toFixed(3)} data-level={level} onDragOver={dragOver} onDrop={drop}>
               <PlanSvg config={config} catalog={catalog} view={view} selection={path} drag={drag} footprints={footprints} levels={fadeLevelsShown} />
@@ -191,6 +196,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
                 gate={gate}
                 onSelect={select}
                 onOpenOptions={() => ui.setState({ optionsOpen: true, panelOpen: true })}
+                drag={drag}
               />
               <div className="zoom-controls" data-plan-control>
                 <CommandButton controller={controller} id="zoom-in" testId="zoom-in">
@@ -213,7 +219,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
           {/* One place in the tree, so the view survives the 2D plan: kept hidden once opened (keep3d), shown again at the next toggle. */}
           {(mode === '3d' || keep3d) && <LazyView3D store={store} loadPhotometry={footprints.loadPhotometry} onBack={() => ui.setState({ mode: '2d' })} visible={mode === '3d'} />}
           <BottomBar controller={controller} mode={mode} />
-        </div>
+        </WorkArea>
         <aside ref={panelRef} className={`side-panel${panelOpen ? ' open' : ''}`} aria-label={t('planner.sidePanel')}>
           {optionsOpen && <OptionsPanel config={config} catalog={catalog} path={path} gate={gate} onClose={() => ui.setState({ optionsOpen: false })} footprints={footprints} aimMode={aimAtMode(store)} />}
           <PresetPanel

@@ -26,7 +26,10 @@ export function IlluminanceTable({ floor, plane }: { floor: IlluminanceStats | n
     <table className="viewer3d-stats" aria-label={t('view3d.illuminance')}>
       <thead>
         <tr>
-          <th />
+          {/* The corner cell heads the column of row names (floor, plane): named for screen readers, not shown. */}
+          <th scope="col">
+            <span className="sr-only">{t('view3d.statsSurface')}</span>
+          </th>
           <th scope="col">Ē lx</th>
           <th scope="col">Emin</th>
           <th scope="col">Emax</th>

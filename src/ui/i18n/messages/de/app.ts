@@ -3,6 +3,7 @@ import type en from '../en/app';
 
 export default {
   tagline: 'Lichtkonfigurator',
+  regionLabel: 'luxbox Lichtkonfigurator',
   openSaved: 'Meine gespeicherte Konfiguration öffnen',
   shareCreated: 'Link zum Teilen erstellt: Sie können ihn in der Seitenleiste kopieren.',
   shareCreatedWithoutModels: 'Link zum Teilen ohne die importierten Modelle erstellt: siehe Seitenleiste.',

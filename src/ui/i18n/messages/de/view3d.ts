@@ -3,6 +3,7 @@ import type en from '../en/view3d';
 
 export default {
   illuminance: 'Beleuchtungsstärke',
+  statsSurface: 'Messfläche',
   planeAt: 'Ebene {height}',
   legend: 'Legende der Beleuchtungsstärke (Lux)',
   couldNotStart: 'Die 3D-Ansicht konnte nicht starten: {problem}',

@@ -1,6 +1,7 @@
 // The configurator shell: banners, the room-setup page, the header.
 export default {
   tagline: 'Lighting configurator',
+  regionLabel: 'luxbox lighting configurator',
   openSaved: 'Open my saved configuration',
   shareCreated: 'Share link created: copy it from the side panel.',
   shareCreatedWithoutModels: 'Share link created without the imported models: see the side panel.',

@@ -1,6 +1,7 @@
 // The 3D view's panel, statistics and errors: English ships in the 3D chunk (registerView3dEnglish.ts), the other languages in their own chunks.
 export default {
   illuminance: 'Illuminance',
+  statsSurface: 'Measured surface',
   planeAt: 'Plane {height}',
   legend: 'Illuminance legend (lux)',
   couldNotStart: 'The 3D view could not start: {problem}',

@@ -3,6 +3,7 @@ import type en from '../en/app';
 
 export default {
   tagline: 'Configurateur d’éclairage',
+  regionLabel: 'Configurateur d’éclairage luxbox',
   openSaved: 'Ouvrir ma configuration enregistrée',
   shareCreated: 'Lien de partage créé : copiez-le dans le panneau latéral.',
   shareCreatedWithoutModels: 'Lien de partage créé sans les modèles importés : voir le panneau latéral.',

@@ -3,6 +3,7 @@ import type en from '../en/view3d';
 
 export default {
   illuminance: 'Éclairement',
+  statsSurface: 'Surface mesurée',
   planeAt: 'Plan {height}',
   legend: 'Légende de l’éclairement (lux)',
   couldNotStart: 'La vue 3D n’a pas pu démarrer : {problem}',

@@ -3,6 +3,7 @@ import type en from '../en/app';
 
 export default {
   tagline: 'Configuratore di illuminazione',
+  regionLabel: 'Configuratore di illuminazione luxbox',
   openSaved: 'Apri la mia configurazione salvata',
   shareCreated: 'Link di condivisione creato: copialo dal pannello laterale.',
   shareCreatedWithoutModels: 'Link di condivisione creato senza i modelli importati: vedi il pannello laterale.',

@@ -3,6 +3,7 @@ import type en from '../en/view3d';
 
 export default {
   illuminance: 'Illuminamento',
+  statsSurface: 'Superficie misurata',
   planeAt: 'Piano {height}',
   legend: 'Legenda dell’illuminamento (lux)',
   couldNotStart: 'Non è stato possibile avviare la vista 3D: {problem}',
