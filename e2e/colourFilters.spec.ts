@@ -36,3 +36,30 @@ test('a spot takes a colour filter: readout, search, BOM line, plan tint, saved'
   await picker.getByTestId('filter-none').click();
   expect('filter' in (await sceneFile(page)).configuration.systems[0].rails[0].modules[0]).toBe(false);
 });
+
+// The spectra are not part of the first screen (docs/colour-filters.md, "Two files"): a plan without
+// filters never fetches them; a filter set through the embedding API fetches them, whenReady() waits
+// for them, and the lighting scene then carries the filtered colour (LEE 106 Primary Red: red ≫ green).
+test('the filter spectra load only when a filter is used; whenReady() before getLightingScene', async ({ page }) => {
+  const spectraRequests: string[] = [];
+  page.on('request', (r) => {
+    if (/colour-filter-spectra|parseColourFilterSpectra/.test(r.url())) spectraRequests.push(r.url());
+  });
+  await page.goto('/');
+  await page.getByRole('button', { name: 'Start planning' }).click();
+  await page.getByTestId('preset-single').click();
+  await footprintsReady(page);
+  expect(spectraRequests).toEqual([]);
+  const result = await page.evaluate(async () => {
+    const lx = window.luxbox!;
+    const moduleId = (JSON.parse(lx.getConfig()) as { configuration: { systems: { rails: { modules: { id: string }[] }[] }[] } }).configuration.systems[0].rails[0].modules[0].id;
+    const set = lx.runAction('setModuleFilter', { moduleId, filter: 'lee-106' });
+    await lx.whenReady();
+    const scene = lx.getLightingScene() as { luminaires: { id?: string; color?: number[] }[] };
+    return { set, color: scene.luminaires.find((l) => l.id === moduleId)?.color };
+  });
+  expect(result.set).toEqual({ ok: true });
+  expect(spectraRequests.length).toBeGreaterThan(0);
+  const [r, g] = result.color!;
+  expect(r).toBeGreaterThan(10 * g);
+});
