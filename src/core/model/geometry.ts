@@ -9,6 +9,7 @@ import type { LightSystem, Rail } from './configuration';
 import { layoutModules } from './distribution';
 import { freeOffsets, isFreeRail } from './freePositions';
 import { jointParent } from './railTree';
+import { perCatalog } from './perCatalog';
 
 /** A point or vector in the plan: [x, z]. */
 export type PlanVec = readonly [number, number];
@@ -135,6 +136,18 @@ export interface SystemElementTree {
  * apart in chain order.
  */
 export function systemElementTree(system: LightSystem, catalog: Catalog): SystemElementTree {
+  return elementTrees(system, catalog);
+}
+
+/**
+ * Once per system object and catalog (perCatalog.ts): validate() and the checks of an action's
+ * result ask for every other system's footprint again and again (each placement a preset search
+ * tries, each clash test), and a system that an action left alone is the same object. Callers
+ * read the tree and never change it.
+ */
+const elementTrees = perCatalog(buildElementTree);
+
+function buildElementTree(system: LightSystem, catalog: Catalog): SystemElementTree {
   const w = catalog.rail.width;
   const rails = railPlacements(system, catalog);
   const elements: PlanRect[][] = [];

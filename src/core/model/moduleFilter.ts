@@ -51,9 +51,24 @@ export function moduleFilterProblem(type: ModuleTypeSpec, filterId: string, cata
   return null;
 }
 
-/** The colour (linear RGB with luminance τ_v, CIE x,y, CCT/Duv) of a module's light through its filter. */
+/**
+ * Colours already worked out, by CCT and filter: moduleColour is a pure function of the two, and
+ * each call sums Planck's law over the CMF grid and searches the locus for CCT/Duv (about 0.1 ms),
+ * which toLightingScene pays per module per call (the always-valid test: a sixth of its time).
+ * Bounded, so a dim-to-warm sweep through many CCTs cannot grow it without end.
+ */
+const colours = new Map<string, FilteredColour>();
+const MAX_COLOURS = 4096;
+
+/** The colour (linear RGB with luminance τ_v, CIE x,y, CCT/Duv) of a module's light through its filter. Shared: callers copy before changing. */
 export function moduleLightColour(module: Pick<ModuleInstance, 'cct' | 'filter'>): FilteredColour {
-  return moduleColour(module.cct, module.filter);
+  const key = module.filter === undefined ? String(module.cct) : `${module.cct}|${module.filter}`;
+  const known = colours.get(key);
+  if (known) return known;
+  const colour = moduleColour(module.cct, module.filter);
+  if (colours.size >= MAX_COLOURS) colours.clear();
+  colours.set(key, colour);
+  return colour;
 }
 
 /**

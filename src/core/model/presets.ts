@@ -5,8 +5,9 @@
 import { findBeam, findModuleType, type Catalog, type PresetSpec } from './catalogSchema';
 import type { Configuration, LightSystem, ModuleInstance } from './configuration';
 import { plannedFeeds } from './feedLoads';
-import { normaliseDegrees, systemBounds } from './geometry';
-import { systemProblems } from './validate';
+import { normaliseDegrees, systemBounds, type PlanBounds } from './geometry';
+import { perCatalog } from './perCatalog';
+import { systemFitsAt, systemOwnProblems } from './validate';
 
 export interface Placement {
   readonly x: number;
@@ -36,7 +37,14 @@ export function defaultSuspension(catalog: Catalog, roomHeight: number): number 
 export function instantiatePreset(config: Configuration, preset: PresetSpec, catalog: Catalog, placement: Placement, suspension: number): Configuration {
   let next = config.nextId;
   const id = (p: string) => `${p}${next++}`;
-  const system: LightSystem = {
+  const system = presetSystem(preset, catalog, placement, suspension, id);
+  // One feed at the chain start with the catalog's default driver, or what the preset's load needs (plannedFeeds).
+  const feeds = presetFeeds(preset, catalog).map((f) => ({ id: id('f'), ...f }));
+  return { ...config, systems: [...config.systems, { ...system, feeds }], nextId: next };
+}
+
+function presetSystem(preset: PresetSpec, catalog: Catalog, placement: Placement, suspension: number, id: (prefix: string) => string): LightSystem {
+  return {
     id: id('s'),
     presetId: preset.id,
     x: placement.x,
@@ -53,9 +61,43 @@ export function instantiatePreset(config: Configuration, preset: PresetSpec, cat
     feeds: [],
     mounting: 'suspended',
   };
-  // One feed at the chain start with the catalog's default driver, or what the preset's load needs (plannedFeeds).
-  const feeds = plannedFeeds(system, catalog).map((f) => ({ id: id('f'), ...f }));
-  return { ...config, systems: [...config.systems, { ...system, feeds }], nextId: next };
+}
+
+/**
+ * plannedFeeds of a preset's system, once per preset and catalog (perCatalog.ts): it reads the
+ * chain (rails, joints, the modules' types and beams), never the ids, the placement or the
+ * suspension that instantiatePreset fills in, and the placement search instantiates every preset
+ * it tries twice.
+ */
+const presetFeeds = perCatalog((preset: PresetSpec, catalog: Catalog) => {
+  let n = 0;
+  return plannedFeeds(presetSystem(preset, catalog, { x: 0, z: 0, rotation: 0 }, catalog.suspension.default, (p) => `${p}${n++}`), catalog);
+});
+
+/**
+ * A preset's system at the origin with a heading, hung at a suspension in a room of a height: its
+ * bounds and whether its own rules hold (validate.ts systemOwnProblems). Neither reads the ids
+ * (which follow the configuration's counter) nor anything else of the configuration, so the
+ * placement search works them out once per preset, heading, suspension and room height.
+ */
+interface ProbeFacts {
+  readonly bounds: PlanBounds;
+  readonly ownRulesHold: boolean;
+}
+const probeFacts = perCatalog((_preset: PresetSpec) => new Map<string, ProbeFacts>());
+/** Distinct headings, suspensions and room heights remembered per preset before starting over. */
+const MAX_PROBES = 256;
+
+function factsOf(placed: LightSystem, preset: PresetSpec, catalog: Catalog, roomHeight: number): ProbeFacts {
+  const known = probeFacts(preset, catalog);
+  const key = `${placed.rotation}|${placed.suspension}|${roomHeight}`;
+  let facts = known.get(key);
+  if (!facts) {
+    facts = { bounds: systemBounds(placed, catalog), ownRulesHold: systemOwnProblems(placed, roomHeight, catalog).length === 0 };
+    if (known.size >= MAX_PROBES) known.clear();
+    known.set(key, facts);
+  }
+  return facts;
 }
 
 /**
@@ -69,17 +111,26 @@ export function findPresetPlacement(config: Configuration, preset: PresetSpec, c
   for (const rotation of [0, 90]) {
     const probe = instantiatePreset(config, preset, catalog, { x: 0, z: 0, rotation }, suspension);
     const index = probe.systems.length - 1;
-    const b = systemBounds(probe.systems[index], catalog);
+    const placed = probe.systems[index];
+    const { bounds: b, ownRulesHold } = factsOf(placed, preset, catalog, config.room.height);
+    // The system's own rules do not depend on where it stands (but for a finite x and z): once per heading.
+    if (!ownRulesHold) continue;
     const hx = (b.maxX - b.minX) / 2;
     const hz = (b.maxZ - b.minZ) / 2;
     const xs = range(hx, width - hx, step);
     const zs = range(hz, depth - hz, step);
-    const centres = xs.flatMap((x) => zs.map((z) => [x, z] as const));
-    centres.sort((a, b2) => Math.hypot(a[0] - width / 2, a[1] - depth / 2) - Math.hypot(b2[0] - width / 2, b2[1] - depth / 2));
-    for (const [cx, cz] of centres) {
+    // Nearest the room centre first (a stable sort, so equal distances keep grid order).
+    const centres = xs.flatMap((x) => zs.map((z) => ({ x, z, d: Math.hypot(x - width / 2, z - depth / 2) })));
+    centres.sort((a, b2) => a.d - b2.d);
+    for (const { x: cx, z: cz } of centres) {
       const placement = { x: cx - (b.minX + b.maxX) / 2, z: cz - (b.minZ + b.maxZ) / 2, rotation };
-      const candidate = instantiatePreset(config, preset, catalog, placement, suspension);
-      if (systemProblems(candidate, index, catalog).length === 0) return placement;
+      if (!Number.isFinite(placement.x) || !Number.isFinite(placement.z)) continue;
+      // What instantiatePreset(config, preset, catalog, placement, suspension) gives: the probe moved
+      // to x, z (same ids, same keys; its feeds, plannedFeeds, follow the chain, not where it hangs),
+      // without planning the feeds again for each of up to 1 600 centres. systemFitsAt is
+      // systemProblems(candidate, index, catalog) being empty, the own rules checked above.
+      const candidate: Configuration = { ...probe, systems: [...config.systems, { ...placed, x: placement.x, z: placement.z }] };
+      if (systemFitsAt(candidate, index, catalog)) return placement;
     }
   }
   return null;

@@ -46,7 +46,7 @@ export function toLightingScene(config: Configuration, catalog: Catalog, options
         dimming: m.on === false ? 0 : m.dimming,
         // A dim-to-warm type's colour follows its level (dimmingCurve.ts); other types keep their CCT.
         // Through its colour filter, if any (moduleFilter.ts): the colour's luminance carries the filter's τ_v.
-        color: moduleLightColour({ cct: cctAtLevel(type.dimming, m.dimming, m.cct), filter: m.filter }).linearRgb as Rgb,
+        color: [...moduleLightColour({ cct: cctAtLevel(type.dimming, m.dimming, m.cct), filter: m.filter }).linearRgb] as Rgb,
       });
     }
   }

@@ -19,6 +19,7 @@ import { lightSceneProblems } from './lightScenes';
 import { reflectanceProblem } from './reflectance';
 import { rectCorners, rectsOverlap, systemElementTree, railModuleOffsets, type PlanRect, type SystemElementTree } from './geometry';
 import { firstNodeJoints, jointParent, treeProblem } from './railTree';
+import { perCatalog } from './perCatalog';
 
 export interface Problem {
   /** Stable machine-readable code, e.g. 'outside-room'. */
@@ -268,34 +269,88 @@ export function systemProblems(config: Configuration, index: number, catalog: Ca
   const tree = systemElementTree(s, catalog);
   const elements = tree.elements;
   if (outsideRoom(elements, config.room.width, config.room.depth)) out.push(outsideProblem(s, index, config.room));
-  const stats = { pairTests: 0 };
-  // Neighbours in the tree touch by design; anything further apart must not overlap.
-  const rects = elements.flat();
-  const chainIndex = elements.flatMap((group, a) => group.map(() => a));
-  let crosses = false;
-  forEachOverlap(rects, stats, () => ((crosses = true), 'stop'), (p, q) => !tree.near[chainIndex[p]].has(chainIndex[q]));
-  if (crosses) out.push({ code: 'self-overlap', path: at, message: `system ${s.id} runs into itself`, params: { id: s.id } });
-  const mine = rects.map(boxOf);
-  const box = mine.reduce((u, b) => ({ minX: Math.min(u.minX, b.minX), minZ: Math.min(u.minZ, b.minZ), maxX: Math.max(u.maxX, b.maxX), maxZ: Math.max(u.maxZ, b.maxZ) }), { minX: Infinity, minZ: Infinity, maxX: -Infinity, maxZ: -Infinity });
+  if (crossesItself(tree)) out.push({ code: 'self-overlap', path: at, message: `system ${s.id} runs into itself`, params: { id: s.id } });
+  const mine = footprintOf(s, catalog);
   config.systems.forEach((other, j) => {
-    if (j === index || ownProblems(other, '', config.room.height, catalog).length > 0) return;
-    const theirs = systemElementTree(other, catalog).elements.flat().filter((rb) => {
-      const b = boxOf(rb);
-      return b.minX < box.maxX && box.minX < b.maxX && b.minZ < box.maxZ && box.minZ < b.maxZ;
-    });
-    if (theirs.length === 0) return;
-    if (rects.some((ra, p) => theirs.some((rb) => {
-      const b = boxOf(rb);
-      const a = mine[p];
-      return a.minX < b.maxX && b.minX < a.maxX && a.minZ < b.maxZ && b.minZ < a.maxZ && rectsOverlap(ra, rb);
-    }))) {
+    if (j !== index && clashes(mine, other, config.room.height, catalog)) {
       out.push({ code: 'system-overlap', path: at, message: `system ${s.id} overlaps system ${other.id}`, params: { id: s.id, other: other.id } });
     }
   });
   return out;
 }
 
+/** A system's own rules, with paths relative to the system ('.rails[0].length'): the part of systemProblems that does not depend on where it stands, but for a finite x and z. */
+export function systemOwnProblems(s: LightSystem, roomHeight: number, catalog: Catalog): Problem[] {
+  return ownProblems(s, '', roomHeight, catalog);
+}
+
+/**
+ * Whether systemProblems(config, index, catalog) would be empty, for a system whose own rules
+ * (systemOwnProblems) the caller already knows to hold and whose x and z are finite: the preset
+ * placement search tries up to 1 600 spots of one system, and stops at the first problem, the
+ * cheap ones first (room bounds, clashes by bounding boxes, then self-crossing).
+ */
+export function systemFitsAt(config: Configuration, index: number, catalog: Catalog): boolean {
+  const s = config.systems[index];
+  const tree = systemElementTree(s, catalog);
+  if (outsideRoom(tree.elements, config.room.width, config.room.depth)) return false;
+  const mine = footprintOf(s, catalog);
+  if (config.systems.some((other, j) => j !== index && clashes(mine, other, config.room.height, catalog))) return false;
+  return !crossesItself(tree);
+}
+
+/** Neighbours in the tree touch by design; anything further apart must not overlap. */
+function crossesItself(tree: SystemElementTree): boolean {
+  const rects = tree.elements.flat();
+  const chainIndex = tree.elements.flatMap((group, a) => group.map(() => a));
+  let crosses = false;
+  forEachOverlap(rects, { pairTests: 0 }, () => ((crosses = true), 'stop'), (p, q) => !tree.near[chainIndex[p]].has(chainIndex[q]));
+  return crosses;
+}
+
+interface Footprint {
+  readonly rects: readonly PlanRect[];
+  readonly boxes: readonly Box[];
+  /** The union of the boxes. */
+  readonly box: Box;
+}
+
+/** A sound system's rectangles and their boxes, once per system object (perCatalog.ts). */
+const footprintOf = perCatalog((s: LightSystem, catalog: Catalog): Footprint => {
+  const rects = systemElementTree(s, catalog).elements.flat();
+  const boxes = rects.map(boxOf);
+  const box = boxes.reduce((u, b) => ({ minX: Math.min(u.minX, b.minX), minZ: Math.min(u.minZ, b.minZ), maxX: Math.max(u.maxX, b.maxX), maxZ: Math.max(u.maxZ, b.maxZ) }), { minX: Infinity, minZ: Infinity, maxX: -Infinity, maxZ: -Infinity });
+  return { rects, boxes, box };
+});
+
+const boxesMeet = (a: Box, b: Box) => a.minX < b.maxX && b.minX < a.maxX && a.minZ < b.maxZ && b.minZ < a.maxZ;
+
+/** Whether a sound system's footprint overlaps `other`'s (none when other breaks its own rules: it has no geometry to clash with). */
+function clashes(mine: Footprint, other: LightSystem, roomHeight: number, catalog: Catalog): boolean {
+  if (ownProblems(other, '', roomHeight, catalog).length > 0) return false;
+  const theirs = footprintOf(other, catalog);
+  if (!boxesMeet(mine.box, theirs.box)) return false;
+  // Only their rectangles whose boxes meet my whole footprint's box, then pair by pair: boxes first, then the exact test.
+  const near = theirs.rects.flatMap((rb, q) => (boxesMeet(theirs.boxes[q], mine.box) ? [q] : []));
+  return mine.rects.some((ra, p) => near.some((q) => boxesMeet(mine.boxes[p], theirs.boxes[q]) && rectsOverlap(ra, theirs.rects[q])));
+}
+
+/**
+ * A system's own problems, worked out once per system object, catalog and room height
+ * (perCatalog.ts) with paths relative to the system: validate() after every action, and the clash
+ * checks against every other system, ask again for the systems the action left alone.
+ */
+const ownByHeight = perCatalog((_s: LightSystem) => new Map<number, readonly Problem[]>());
+
 function ownProblems(s: LightSystem, at: string, roomHeight: number, catalog: Catalog): Problem[] {
+  const known = ownByHeight(s, catalog);
+  let list = known.get(roomHeight);
+  if (!list) known.set(roomHeight, (list = computeOwnProblems(s, roomHeight, catalog)));
+  return list.map((q) => ({ ...q, path: `${at}${q.path}` }));
+}
+
+function computeOwnProblems(s: LightSystem, roomHeight: number, catalog: Catalog): Problem[] {
+  const at = '';
   const out: Problem[] = [];
   const p = (code: string, path: string, message: string, params?: Record<string, string | number>) => out.push({ code, path: `${at}${path}`, message, ...(params ? { params } : {}) });
   if (![s.x, s.z, s.rotation].every(Number.isFinite)) p('position', '', `system ${s.id} has a non-finite position or rotation`);
