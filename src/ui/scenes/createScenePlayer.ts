@@ -7,6 +7,9 @@
  * service's setFade: no bake). One player per configurator store, shared by the scene panel, the
  * keyboard and the embedding API.
  */
+import { loadColourFilterSpectra } from '../../core/colour/colourFilterSpectra';
+import { needsColourFilterSpectra } from '../../core/colour/moduleColour';
+import { configurationFilterIds } from '../../core/model/moduleFilter';
 import type { Catalog } from '../../core/model/catalogSchema';
 import type { Configuration, LightScene } from '../../core/model/configuration';
 import type { Rgb } from '../../core/model/lightingScene';
@@ -171,6 +174,13 @@ export function createScenePlayer(store: ConfiguratorStore, options: ScenePlayer
       return () => listeners.delete(listener);
     },
     recall(sceneId, opts = {}) {
+      // The fade weights each module's light by its colour: a filter's needs the spectra (docs/colour-filters.md, "Two files").
+      if (needsColourFilterSpectra(configurationFilterIds(store.getState().config))) {
+        return loadColourFilterSpectra().then(
+          () => player.recall(sceneId, opts),
+          (e: Error) => ({ ok: false, reason: `the colour filters' spectra could not be loaded (${e.message})` }),
+        );
+      }
       const { catalog, config: from } = store.getState();
       // Taken before the running fade ends: a recall during a fade starts from the mix on screen.
       const shown = shownLook(from, catalog);
