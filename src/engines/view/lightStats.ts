@@ -8,6 +8,8 @@ import type { Vec3 } from '../../core/model/lightingScene';
 import type { LitMaps } from '../relight/relightMaps';
 import { createObjectRayCaster } from '../bake/objects/createObjectRayCaster';
 import type { PreparedObjects } from '../bake/objects/preparedObjects';
+import type { SurfaceLayout } from '../bake/surfaceLayout';
+import { objectRenderGeometry } from './objectRenderGeometry';
 
 /** Shadow rays toward the lamps start this far above the work plane (metres): clear of a table top lying in it. */
 const SHADOW_RAY_OFFSET = 1e-4;
@@ -42,11 +44,68 @@ export function statsOf(values: ArrayLike<number>): IlluminanceStats {
   return { avg, min, max, u0: avg > 0 ? min / avg : 0, points: n };
 }
 
-/** Floor statistics from the relit floor map: texel centres are an equal-area grid. */
-export function floorStats(lit: LitMaps): IlluminanceStats {
+/**
+ * An object stands on the floor when its lowest point is at most this far above it (metres): a
+ * sofa, a table on its legs, a bed. Its plan silhouette hides floor; a shelf or a picture hung on
+ * a wall does not (the floor under it is in plain view).
+ */
+export const FLOOR_CONTACT_M = 0.01;
+
+/**
+ * Which floor texels lie under furniture: 1 where the texel's centre is inside the plan silhouette
+ * (the union of its triangles projected onto the floor, as the plan draws objects) of an object
+ * that stands on the floor (FLOOR_CONTACT_M), else 0; row-major like the floor map. The triangles
+ * come from the prepared objects the baker lit (objectRenderGeometry). Cost: one pass over each
+ * standing object's triangles with a point-in-triangle test per texel of its plan bounding box.
+ */
+export function floorUnderObjects(floor: SurfaceLayout, objects: PreparedObjects | null): Uint8Array {
+  const covered = new Uint8Array(floor.width * floor.height);
+  if (!objects || objects.triangleCount === 0) return covered;
+  const standing = objects.objects.map((o) => o.bounds.min[1] <= FLOOR_CONTACT_M);
+  if (!standing.some(Boolean)) return covered;
+  const geometry = objectRenderGeometry(objects);
+  const p = geometry.positions;
+  // Texel (i, j) has its centre at u = (i + 0.5)·du, v = (j + 0.5)·dv on the floor (x = u, z = v).
+  const du = floor.lengthU / floor.width;
+  const dv = floor.lengthV / floor.height;
+  const [ou, ov] = [floor.origin[floor.uAxisIndex], floor.origin[floor.vAxisIndex]];
+  for (let t = 0; t < geometry.triangleCount; t++) {
+    if (!standing[geometry.objectOfTriangle[t]]) continue;
+    const o = t * 9;
+    const ax = p[o], az = p[o + 2], bx = p[o + 3], bz = p[o + 5], cx = p[o + 6], cz = p[o + 8];
+    const area = (bx - ax) * (cz - az) - (bz - az) * (cx - ax);
+    if (Math.abs(area) < 1e-12) continue; // a side face, seen edge-on from above: its neighbours cover the plan
+    const i0 = Math.max(0, Math.ceil((Math.min(ax, bx, cx) - ou) / du - 0.5));
+    const i1 = Math.min(floor.width - 1, Math.floor((Math.max(ax, bx, cx) - ou) / du - 0.5));
+    const j0 = Math.max(0, Math.ceil((Math.min(az, bz, cz) - ov) / dv - 0.5));
+    const j1 = Math.min(floor.height - 1, Math.floor((Math.max(az, bz, cz) - ov) / dv - 0.5));
+    const sign = Math.sign(area);
+    for (let j = j0; j <= j1; j++) {
+      const z = ov + (j + 0.5) * dv;
+      for (let i = i0; i <= i1; i++) {
+        const x = ou + (i + 0.5) * du;
+        // Inside (edges included) when the three edge functions share the triangle's orientation.
+        const w0 = ((bx - ax) * (z - az) - (bz - az) * (x - ax)) * sign;
+        const w1 = ((cx - bx) * (z - bz) - (cz - bz) * (x - bx)) * sign;
+        const w2 = ((ax - cx) * (z - cz) - (az - cz) * (x - cx)) * sign;
+        if (w0 >= 0 && w1 >= 0 && w2 >= 0) covered[j * floor.width + i] = 1;
+      }
+    }
+  }
+  return covered;
+}
+
+/**
+ * Floor statistics from the relit floor map: texel centres are an equal-area grid. With the
+ * scene's prepared objects, the texels under furniture that stands on the floor are left out
+ * (floorUnderObjects): the floor a person sees, as EN 12464-1 task and surrounding areas leave out
+ * the area furniture occupies. `points` counts the texels taken.
+ */
+export function floorStats(lit: LitMaps, objects: PreparedObjects | null = null): IlluminanceStats {
   const rgb = lit.maps.floor.total;
-  const lux = new Float32Array(rgb.length / 3);
-  for (let i = 0; i < lux.length; i++) lux[i] = Y(rgb[i * 3], rgb[i * 3 + 1], rgb[i * 3 + 2]);
+  const covered = floorUnderObjects(lit.layouts.floor, objects);
+  const lux: number[] = [];
+  for (let i = 0; i < covered.length; i++) if (!covered[i]) lux.push(Y(rgb[i * 3], rgb[i * 3 + 1], rgb[i * 3 + 2]));
   return statsOf(lux);
 }
 

@@ -98,9 +98,11 @@ export function createRenderSession(width: number, height: number): RenderSessio
         const view = createRoomView(renderer);
         // The objects' geometry on the atlas the baker lit (same objects, same texel size and limit).
         const objects = input.bakeScene.objects ?? [];
-        view.setObjects(objects.length > 0 ? prepareObjects(objects, { texelSize: engine.settings.texelSize, maxAtlasSize: engine.settings.maxTextureSize }) : null);
+        const prepared = objects.length > 0 ? prepareObjects(objects, { texelSize: engine.settings.texelSize, maxAtlasSize: engine.settings.maxTextureSize }) : null;
+        view.setObjects(prepared);
         const { exposure, ev100 } = presentMaps(view, lit, reflectanceRgb(input.bakeScene.room), { exposureEv: options.exposureEv, ev100: options.ev100, mode: options.mode });
-        const floor = floorStats(lit);
+        // The floor a person sees: texels under furniture standing on it left out (docs/viewer.md).
+        const floor = floorStats(lit, prepared);
         view.setFixtures(input.fixtures);
         const results = cameras.map((camera): RenderResult => {
           const t2 = performance.now();

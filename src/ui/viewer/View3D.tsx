@@ -164,10 +164,11 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
         onMaps: (lit, info) => {
           litRef.current = lit;
           setLevels(info.levels);
-          const f = floorStats(lit);
+          const prepared = ctrl.current?.objects() ?? null;
+          // The floor a person sees: the texels under furniture standing on it are left out (docs/viewer.md).
+          const f = floorStats(lit, prepared);
           setFloor(f);
           setMapsVersion((v) => v + 1);
-          const prepared = ctrl.current?.objects() ?? null;
           const light = objectLightOf(lit);
           const objects = prepared && light && light.atlas.width === prepared.atlas.width && light.atlas.height === prepared.atlas.height ? objectStats(lit, prepared, light) : null;
           publish({ lastRelightMs: info.relightMs, floor: { avg: f.avg, min: f.min, max: f.max, u0: f.u0 }, objects });

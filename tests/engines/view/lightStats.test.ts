@@ -4,7 +4,7 @@ import { surfaceLayouts } from '../../../src/engines/bake/surfaceLayout';
 import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../../src/core/model/lightingScene';
 import { emptyLitMaps } from '../../../src/engines/relight/relightMaps';
 import { AUTO_EXPOSURE_KEY, autoExposure } from '../../../src/engines/view/autoExposure';
-import { floorStats, statsOf, workPlaneStats } from '../../../src/engines/view/lightStats';
+import { floorStats, floorUnderObjects, statsOf, workPlaneStats } from '../../../src/engines/view/lightStats';
 import { luxScaleTop } from '../../../src/engines/view/luxScaleTop';
 import { isotropic, uniformRoom } from '../bake/bakeTestKit';
 import { boxMesh } from '../bake/objects/objectFixtures';
@@ -133,5 +133,56 @@ describe('false-colour scale top', () => {
     expect(top).toBeGreaterThanOrEqual(300);
     expect(top).toBeLessThan(300 * 10 ** (1 / 16) * 1.0001);
     expect(luxScaleTop(emptyLitMaps(surfaceLayouts({ width: 1, height: 1, depth: 1 }, 0.5, 8)))).toBeLessThan(0.01);
+  });
+});
+
+describe('floor statistics leave out the floor under furniture that stands on it', () => {
+  // A 3 × 3.5 m floor at 0.1 m texels (30 × 35); texel (i, j) lit with a grey of 10 + i + 100·j lux,
+  // so every texel has its own value and a wrongly kept or dropped texel changes the numbers.
+  const room = uniformRoom(3, 2.8, 3.5, 0);
+  const litFloor = () => {
+    const lit = emptyLitMaps(surfaceLayouts(room, 0.1, 64));
+    const f = lit.layouts.floor;
+    for (let j = 0; j < f.height; j++) for (let i = 0; i < f.width; i++) lit.maps.floor.total.fill(10 + i + 100 * j, (j * f.width + i) * 3, (j * f.width + i) * 3 + 3);
+    return lit;
+  };
+  /** Stats by hand over the texels whose centre (x, z) `hidden` does not claim. */
+  const byHand = (hidden: (x: number, z: number) => boolean) => {
+    const kept: number[] = [];
+    for (let j = 0; j < 35; j++) for (let i = 0; i < 30; i++) if (!hidden((i + 0.5) * 0.1, (j + 0.5) * 0.1)) kept.push(10 + i + 100 * j);
+    return { kept, avg: kept.reduce((a, b) => a + b, 0) / kept.length, min: Math.min(...kept), max: Math.max(...kept) };
+  };
+
+  it('a 1 × 0.5 × 1 m box on the floor: the 10 × 10 texels under it are left out, the stats are the rest by hand', () => {
+    const lit = litFloor();
+    // Centred at (1.5, 1.7): it covers x 1.0–2.0 (texel centres 1.05…1.95, i = 10…19), z 1.2–2.2 (j = 12…21).
+    const box = { id: 'box', mesh: boxMesh(1, 0.5, 1), position: [1.5, 0, 1.7] as [number, number, number], yaw: 0, scale: 1 };
+    const prepared = prepareObjects([box], { texelSize: 0.1 });
+    expect(floorUnderObjects(lit.layouts.floor, prepared).reduce((a, b) => a + b, 0)).toBe(100);
+    const hand = byHand((x, z) => Math.abs(x - 1.5) < 0.5 && Math.abs(z - 1.7) < 0.5);
+    expect(hand.kept).toHaveLength(30 * 35 - 100);
+    const s = floorStats(lit, prepared);
+    expect(s.points).toBe(950);
+    expect(s.avg).toBeCloseTo(hand.avg, 3);
+    expect(s.min).toBeCloseTo(hand.min, 9);
+    expect(s.max).toBeCloseTo(hand.max, 9);
+    expect(s.u0).toBeCloseTo(hand.min / hand.avg, 6);
+    // Without the objects every texel counts (the map itself is the same).
+    expect(floorStats(lit).points).toBe(1050);
+    expect(floorStats(lit).avg).toBeCloseTo(byHand(() => false).avg, 3);
+  });
+
+  it('a box turned 45°: the texels whose centres lie in the turned square; a box hung 1 m up hides nothing', () => {
+    const lit = litFloor();
+    const turned = { id: 'turned', mesh: boxMesh(1, 0.4, 1), position: [1.5, 0, 1.7] as [number, number, number], yaw: 45, scale: 1 };
+    const hung = { id: 'hung', mesh: boxMesh(0.8, 0.3, 0.4), position: [0.6, 1, 0.6] as [number, number, number], yaw: 0, scale: 1 };
+    const prepared = prepareObjects([turned, hung], { texelSize: 0.1 });
+    // A unit square turned 45° about (1.5, 1.7): |dx| + |dz| ≤ √2 / 2 (a diamond).
+    const hand = byHand((x, z) => Math.abs(x - 1.5) + Math.abs(z - 1.7) <= Math.SQRT1_2);
+    const s = floorStats(lit, prepared);
+    expect(s.points).toBe(hand.kept.length);
+    expect(s.avg).toBeCloseTo(hand.avg, 3);
+    expect(s.min).toBeCloseTo(hand.min, 9);
+    expect(s.max).toBeCloseTo(hand.max, 9);
   });
 });
