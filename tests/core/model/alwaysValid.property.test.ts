@@ -52,6 +52,16 @@ const step = fc.record({ kind: fc.nat(55), i: fc.nat(50), j: fc.nat(50), a: unit
 
 const pick = <T>(xs: readonly T[], i: number, fallback: T): T => (xs.length ? xs[i % xs.length] : fallback);
 
+/**
+ * The checks inside the property. Vitest's expect() copies its matcher state on every call, and a
+ * sequence makes about a hundred checks after its steps: a plain comparison that throws an Error
+ * naming the check and its values (fast-check reports it with the failing sequence) keeps every
+ * check at a fraction of the cost (docs/benchmarks.md, "Test suite time").
+ */
+function holds(ok: boolean, what: string, ...values: unknown[]): void {
+  if (!ok) throw new Error(`${what}: ${values.map((v) => JSON.stringify(v)).join(', ')}`);
+}
+
 /** Interprets a random step as an action with params against the current state (ids chosen from it). */
 function toAction(s: Configuration, st: Step): [string, unknown] {
   const systems = s.systems.map((x) => x.id);
@@ -282,7 +292,7 @@ describe('always-valid property', () => {
     fc.assert(
       fc.property(unit, unit, unit, fc.array(step, { minLength: 5, maxLength: 30 }), (a, b, c, steps) => {
         let s = createConfiguration({ width: 2 + a * 8, depth: 2 + b * 8, height: 2.4 + c * 2 });
-        expect(validate(s, catalog)).toEqual([]);
+        holds(validate(s, catalog).length === 0, 'a new room is valid');
         for (const st of steps) {
           const [name, params] = toAction(s, st);
           const action = bindAction(name, params, catalog);
@@ -310,7 +320,7 @@ describe('always-valid property', () => {
             if (problems.length) throw new Error(`${name} ${JSON.stringify(params)} was enabled but left: ${problems[0].path}: ${problems[0].message}`);
           } else {
             counts.refused++;
-            expect(e.reason.length).toBeGreaterThan(0);
+            holds(e.reason.length > 0, `${name} is refused with a reason`);
             let broken: Configuration;
             try {
               broken = action.perform(s);
@@ -322,28 +332,30 @@ describe('always-valid property', () => {
         }
         // derived outputs of any reachable state are finite
         const scene = toLightingScene(s, catalog);
-        for (const l of scene.luminaires) expect([...l.position, l.yaw, l.pitch, l.roll].every(Number.isFinite)).toBe(true);
+        for (const l of scene.luminaires) holds([...l.position, l.yaw, l.pitch, l.roll].every(Number.isFinite), 'luminaire placement is finite', l.id);
         // every aim of a reachable state lies within its type's limits and on its stops (validate() says why otherwise)
         for (const m of s.systems.flatMap((x) => x.rails.flatMap((r) => r.modules))) {
           if (!m.aim) continue;
           aims.aimed++;
           const lim = catalog.moduleTypes.find((t) => t.id === m.type)!.adjustable!;
-          expect(m.aim.tilt).toBeGreaterThanOrEqual(lim.tilt.min);
-          expect(m.aim.tilt).toBeLessThanOrEqual(lim.tilt.max);
-          expect(m.aim.rotation).toBeGreaterThanOrEqual(lim.rotation.min);
-          expect(m.aim.rotation).toBeLessThanOrEqual(lim.rotation.max);
+          holds(m.aim.tilt >= lim.tilt.min, 'tilt ≥ its minimum', m.id, m.aim.tilt, lim.tilt.min);
+          holds(m.aim.tilt <= lim.tilt.max, 'tilt ≤ its maximum', m.id, m.aim.tilt, lim.tilt.max);
+          holds(m.aim.rotation >= lim.rotation.min, 'rotation ≥ its minimum', m.id, m.aim.rotation, lim.rotation.min);
+          holds(m.aim.rotation <= lim.rotation.max, 'rotation ≤ its maximum', m.id, m.aim.rotation, lim.rotation.max);
         }
-        for (const r of Object.values(scene.room.reflectance)) expect(reflectanceRgb(r).every((v) => v >= 0 && v <= MAX_REFLECTANCE)).toBe(true);
-        expect(Number.isFinite(billOfMaterials(s, catalog).total)).toBe(true);
+        for (const r of Object.values(scene.room.reflectance)) holds(reflectanceRgb(r).every((v) => v >= 0 && v <= MAX_REFLECTANCE), 'reflectance within 0…MAX_REFLECTANCE', r);
+        holds(Number.isFinite(billOfMaterials(s, catalog).total), 'the bill of materials has a finite total');
         // Installable by construction: every feed within its driver, the load all assigned, and the
         // fixing points (derived or moved) within the mounting's rules (first and last within the
         // overhang of the chain ends, no gap above the spacing, one at every connector); moved
         // points are judged to FIXING_EPS (a micrometre), derived ones hold to float noise.
         for (const sys of s.systems) {
           const loads = feedLoads(sys, catalog);
-          for (const l of loads) expect(l.load).toBeLessThanOrEqual(l.capacity + 1e-6);
+          for (const l of loads) holds(l.load <= l.capacity + 1e-6, 'a feed within its driver', sys.id, l.index, l.load, l.capacity);
           const watts = sys.rails.flatMap((r) => r.modules).reduce((a, m) => a + catalog.moduleTypes.find((x) => x.id === m.type)!.beams.find((b) => b.id === m.beam)!.watts, 0);
-          expect(loads.reduce((a, l) => a + l.load, 0)).toBeCloseTo(watts, 6);
+          // toBeCloseTo(watts, 6): within half a microwatt
+          const assigned = loads.reduce((a, l) => a + l.load, 0);
+          holds(Math.abs(assigned - watts) < 10 ** -6 / 2, 'the feeds carry every module', sys.id, assigned, watts);
           const rule = mountingRule(sys, catalog);
           const chain = chainCoordinates(sys, catalog);
           const pts = suspensionCoordinates(sys, catalog).map((q) => q.s);
@@ -354,8 +366,8 @@ describe('always-valid property', () => {
           // node it hangs on, the points on it, and the node at its end; a free end (the chain start,
           // any rail end without a connector) overhangs its outermost support by at most maxOverhang.
           const nodeOf = (p: number) => pts.findIndex((q) => Math.abs(q - chain.nodeAt[p]) < tol);
-          for (let p = 0; p < sys.rails.length; p++) if (!Number.isNaN(chain.nodeAt[p])) expect(nodeOf(p)).toBeGreaterThanOrEqual(0);
-          for (let k = 1; k < pts.length; k++) expect(pts[k] - pts[k - 1]).toBeGreaterThan(0);
+          for (let p = 0; p < sys.rails.length; p++) if (!Number.isNaN(chain.nodeAt[p])) holds(nodeOf(p) >= 0, 'a fixing point at every connector node', sys.id, p);
+          for (let k = 1; k < pts.length; k++) holds(pts[k] - pts[k - 1] > 0, 'fixing points in increasing order', sys.id, pts);
           const covered = new Set<number>();
           sys.rails.forEach((r, i) => {
             const u0 = chain.railStart[i];
@@ -366,12 +378,12 @@ describe('always-valid property', () => {
             const startSupport = p >= 0 ? [chain.nodeDepth[p]] : [];
             const endSupport = Number.isNaN(chain.nodeAt[i]) ? [] : [chain.nodeDepth[i]];
             const seq = [...startSupport, ...depths, ...endSupport];
-            for (let k = 1; k < seq.length; k++) expect(seq[k] - seq[k - 1]).toBeLessThanOrEqual(rule.spacing + tol);
-            if (p < 0) expect(seq[0] - chain.depthStart[i]).toBeLessThanOrEqual(rule.maxOverhang + tol);
-            if (endSupport.length === 0) expect(chain.depthStart[i] + r.length - seq[seq.length - 1]).toBeLessThanOrEqual(rule.maxOverhang + tol);
+            for (let k = 1; k < seq.length; k++) holds(seq[k] - seq[k - 1] <= rule.spacing + tol, 'supports within the spacing', sys.id, i, seq, rule.spacing);
+            if (p < 0) holds(seq[0] - chain.depthStart[i] <= rule.maxOverhang + tol, 'chain start within the overhang', sys.id, seq, rule.maxOverhang);
+            if (endSupport.length === 0) holds(chain.depthStart[i] + r.length - seq[seq.length - 1] <= rule.maxOverhang + tol, 'free rail end within the overhang', sys.id, i, seq, rule.maxOverhang);
           });
           // Every point is on a rail or at a connector node.
-          pts.forEach((q, k) => expect(covered.has(k) || chain.nodeAt.some((at) => Math.abs(at - q) < tol)).toBe(true));
+          pts.forEach((q, k) => holds(covered.has(k) || chain.nodeAt.some((at) => Math.abs(at - q) < tol), 'every fixing point on a rail or at a node', sys.id, q));
           if (sys.joints.some((j, k) => (j.parent ?? k) !== k)) trees.branched++;
           trees.tees += sys.joints.filter((j) => j.connector === 'tee').length;
           trees.crosses += sys.joints.filter((j) => j.connector === 'cross').length;
@@ -381,13 +393,13 @@ describe('always-valid property', () => {
         // every look of a reachable state's light scenes names a module that exists (removals pruned them)
         const ids = new Set(s.systems.flatMap((x) => x.rails.flatMap((r) => r.modules.map((m) => m.id))));
         for (const q of s.lightScenes ?? []) {
-          for (const id of Object.keys(q.looks)) expect(ids.has(id)).toBe(true);
+          for (const id of Object.keys(q.looks)) holds(ids.has(id), 'a look names an existing module', q.id, id);
           scenes.looks += Object.keys(q.looks).length;
         }
         // every object of a reachable state has a finite placement and a mesh whose reflectances the baker accepts
         placed += s.objects.length;
-        for (const o of scene.objects ?? []) expect([...o.position, o.yaw, o.scale].every(Number.isFinite)).toBe(true);
-        for (const o of s.objects) expect(objectMesh(s, o.id).materials.every((m) => m.reflectance.every((c) => c >= 0 && c < 1))).toBe(true);
+        for (const o of scene.objects ?? []) holds([...o.position, o.yaw, o.scale].every(Number.isFinite), 'object placement is finite', o.id);
+        for (const o of s.objects) holds(objectMesh(s, o.id).materials.every((m) => m.reflectance.every((c) => c >= 0 && c < 1)), 'object reflectances within [0, 1)', o.id);
       }),
       { seed: 20240917, numRuns: RUNS },
     );
