@@ -48,12 +48,12 @@ test('mounts with the host room and locale; the host total follows actions run b
   expect(await page.evaluate(() => window.shopDemo!.instance!.runAction('placePreset', { presetId: 'long-line' }))).toEqual({ ok: false, reason: "no free space for 'Long line' in this room" });
 
   // A host button runs placePreset by name. Expected: 1.5 m rail 40 + 60·1.5 = 130, 2 suspension
-  // kits 2·18, 1 power feed 65 with its driver (129 W > the default 100.8 W: HLG-150H-48, 59.90),
-  // 3 narrow spots 3·189 (catalog prices) = 857.90 EUR, in de-DE format.
+  // kits 2·18, 1 power feed 65 with the driver the preset ships with (HLG-240H-48, 84.90: room for
+  // two more spots), 3 narrow spots 3·189 (catalog prices) = 882.90 EUR, in de-DE format.
   await expect(page.getByTestId('host-action-single')).toBeEnabled();
   await page.getByTestId('host-action-single').click();
-  await expect(page.getByTestId('host-total')).toHaveText(/^857,90\s€$/);
-  expect(plain(await page.getByTestId('header-total').textContent())).toBe('857,90 €');
+  await expect(page.getByTestId('host-total')).toHaveText(/^882,90\s€$/);
+  expect(plain(await page.getByTestId('header-total').textContent())).toBe('882,90 €');
   expect(await page.evaluate(() => window.shopDemo!.changes)).toBe(1);
   await expect(page.getByTestId('host-bom').locator('tr')).toHaveCount(5);
 
@@ -71,7 +71,7 @@ test('mounts with the host room and locale; the host total follows actions run b
 
   // Undo from the host page goes back to the single rail.
   await page.getByTestId('host-undo').click();
-  await expect(page.getByTestId('host-total')).toHaveText(/^857,90\s€$/);
+  await expect(page.getByTestId('host-total')).toHaveText(/^882,90\s€$/);
 
   // The shop's autosave key is used; the standalone app's is never touched.
   const keys = await page.evaluate(() => Object.keys(localStorage).sort());
@@ -90,12 +90,12 @@ test('add to cart copies the bill of materials into the host cart', async ({ pag
     await expect(cart.nth(i).locator('.cart-article')).toHaveText(line.article);
     await expect(cart.nth(i).locator('.cart-name')).toHaveText(`${line.count}× ${line.name}`);
   }
-  expect(await text(page, 'cart-total')).toBe('857,90 €');
+  expect(await text(page, 'cart-total')).toBe('882,90 €');
   // Adding the same configuration again adds to the counts (same articles), not new lines.
   await page.getByTestId('add-to-cart').click();
   await expect(cart).toHaveCount(bom.lines.length);
   await expect(cart.first().locator('.cart-name')).toHaveText(`${2 * bom.lines[0].count}× ${bom.lines[0].name}`);
-  expect(await text(page, 'cart-total')).toBe('1.715,80 €');
+  expect(await text(page, 'cart-total')).toBe('1.765,80 €');
 });
 
 test('assetBase: the plan and the 3D view load photometry from the host\'s folder, each file once', async ({ page }) => {
@@ -121,7 +121,7 @@ test('assetBase: the plan and the 3D view load photometry from the host\'s folde
 test('destroy() unmounts cleanly and a re-mount works and restores the autosave', async ({ page }) => {
   await page.goto('/embed.html');
   await page.getByTestId('host-action-single').click();
-  await expect(page.getByTestId('host-total')).toHaveText(/^857,90\s€$/);
+  await expect(page.getByTestId('host-total')).toHaveText(/^882,90\s€$/);
   const before = await page.evaluate(() => window.shopDemo!.instance!.getConfig());
   // Destroy while the 3D view is open and still refining: its WebGL work must stop without errors.
   await page.getByTestId('tool-3d').click();
@@ -152,17 +152,17 @@ test('destroy() unmounts cleanly and a re-mount works and restores the autosave'
   await expect(page.getByTestId('plan')).toBeVisible();
   await expect(page.getByTestId('plan')).toHaveCount(1);
   expect(await page.evaluate(() => window.shopDemo!.instance!.getConfig())).toBe(before);
-  await expect(page.getByTestId('host-total')).toHaveText(/^857,90\s€$/);
+  await expect(page.getByTestId('host-total')).toHaveText(/^882,90\s€$/);
   // The new instance is live: its actions and onChange work.
   await page.getByTestId('host-action-corner-l').click();
-  await expect(page.getByTestId('host-total')).not.toHaveText(/^857,90\s€$/);
+  await expect(page.getByTestId('host-total')).not.toHaveText(/^882,90\s€$/);
   expect(await page.evaluate(() => JSON.parse(window.shopDemo!.instance!.getConfig()).configuration.systems.length)).toBe(2);
 });
 
 test('setConfig with a corrupt scene file throws a clear InputError and changes nothing', async ({ page }) => {
   await page.goto('/embed.html');
   await page.getByTestId('host-action-single').click();
-  await expect(page.getByTestId('host-total')).toHaveText(/^857,90\s€$/);
+  await expect(page.getByTestId('host-total')).toHaveText(/^882,90\s€$/);
   const result = await page.evaluate(() => {
     const lx = window.shopDemo!.instance!;
     const before = lx.getConfig();
@@ -185,7 +185,7 @@ test('setConfig with a corrupt scene file throws a clear InputError and changes 
   expect(result.badRoom?.message).toMatch(/^setConfig: .*room.*width/);
   expect(result.unchanged).toBe(true);
   expect(result.changes).toBe(0);
-  expect(await text(page, 'host-total')).toBe('857,90 €');
+  expect(await text(page, 'host-total')).toBe('882,90 €');
   await expect(page.locator('.room-label')).toHaveText('Raum 5,5 × 4,2 × 2,7 m');
 });
 
@@ -193,20 +193,20 @@ test("a shop's own catalog priced in CHF changes the prices shown (de-CH)", asyn
   await page.goto('/embed.html?shop=ch');
   await page.getByTestId('host-action-single').click();
   // The Swiss price list is the EUR one × 0.95, rounded to 5 rappen: rail base 38 + 57·1.5 = 123.50,
-  // suspension 17.10 (×2), feed 61.75, HLG-150H-48 driver 56.90, narrow spot 179.55 (×3); sum 815.00 CHF (the EUR page shows 857,90 €).
+  // suspension 17.10 (×2), feed 61.75, HLG-240H-48 driver 80.65 (84.90 × 0.95 = 80.655), narrow spot 179.55 (×3); sum 838.75 CHF (the EUR page shows 882,90 €).
   const bom = await page.evaluate(() => window.shopDemo!.instance!.getBillOfMaterials());
   expect(bom.currency).toBe('CHF');
   expect(bom.lines.map((l) => [l.article, l.count, l.unitPrice])).toEqual([
     ['LX-RAIL-1500', 1, 123.5],
     ['LX-SUSP', 2, 17.1],
     ['LX-FEED', 1, 61.75],
-    ['MW-HLG-150H-48', 1, 56.9],
+    ['MW-HLG-240H-48', 1, 80.65],
     ['LX-SPOT-N12-3000', 3, 179.55],
   ]);
-  expect(bom.total).toBe(815);
-  await expect(page.getByTestId('host-total')).toHaveText(/^CHF\s815\.00$/);
-  expect(plain(await page.getByTestId('header-total').textContent())).toBe('CHF 815.00');
-  expect(plain(await page.getByTestId('bom-total').textContent())).toBe('CHF 815.00');
+  expect(bom.total).toBe(838.75);
+  await expect(page.getByTestId('host-total')).toHaveText(/^CHF\s838\.75$/);
+  expect(plain(await page.getByTestId('header-total').textContent())).toBe('CHF 838.75');
+  expect(plain(await page.getByTestId('bom-total').textContent())).toBe('CHF 838.75');
   // Swiss grouping once the total passes 1000: an apostrophe (ASCII in current CLDR data, U+2019 in older).
   await page.getByTestId('host-action-corner-l').click();
   await expect(page.getByTestId('host-total')).toHaveText(/^CHF\s\d{1,3}(['’]\d{3})+\.\d{2}$/);

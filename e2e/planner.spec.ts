@@ -35,16 +35,23 @@ test('set up a room, place a preset, fill a rail, change a module, reload, undo'
   const plus = page.locator('[data-testid^="plus-"] button');
   await expect(plus).toHaveCount(1);
 
-  // The preset's three 43 W spots (129 W) nearly fill its 153.6 W driver: the plus button is disabled and says why (issue 11).
+  // The preset ships with a 240 W driver for its three 43 W spots (129 W): a shopper's first two
+  // additions go through (172 W, 215 W); then the plus button is disabled and names the driver that
+  // would carry a sixth (issue 11; docs/catalog-format.md, "A preset's own driver").
+  await expect(plus).not.toHaveAttribute('aria-disabled', 'true');
+  await plus.click();
+  await expect.poll(() => moduleCount(page)).toBe(4);
+  await plus.click();
+  await expect.poll(() => moduleCount(page)).toBe(5);
   await expect(plus).toHaveAttribute('aria-disabled', 'true');
-  await expect(plus).toHaveAttribute('title', /the 153\.6 W driver is full: 129 W used/);
+  await expect(plus).toHaveAttribute('title', /the 240 W driver is full: 215 W used; choose the 321\.6 W driver in the system options or add a second feed/);
   const priceFull = await total(page);
-  expect(priceFull).toBe(priceWithThree);
+  expect(priceFull).not.toBe(priceWithThree);
 
   // A disabled control does nothing but say why.
   await plus.click({ force: true });
   await expect(page.getByTestId('status-line')).toContainText('driver is full');
-  expect(await moduleCount(page)).toBe(3);
+  expect(await moduleCount(page)).toBe(5);
 
   // Open a module's settings: switching to the 0.6 m linear diffuser is disabled on a full rail.
   const firstModule = (await sceneFile(page)).configuration.systems[0].rails[0].modules[0];

@@ -101,6 +101,12 @@ const presetSchema = z.strictObject({
     .array(z.strictObject({ length: positive, distribution: z.enum(DISTRIBUTIONS), modules: z.array(presetModuleSchema) }))
     .min(1),
   joints: z.array(z.strictObject({ connector: nonEmpty, turn: z.number().finite(), parent: z.number().int().nonnegative().optional() })),
+  /**
+   * The driver the preset ships with (a driver id): its one feed at the chain start gets it instead
+   * of the smallest driver that carries the load, so the shopper can add modules before the driver
+   * is full (docs/catalog-format.md, "A preset's own driver"). Must carry the preset's own load.
+   */
+  driver: nonEmpty.optional(),
 });
 
 export const catalogSchema = z
@@ -259,6 +265,17 @@ export const catalogSchema = z
         else if (!allowedTurn(con, j.turn)) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints', k, 'turn'], message: `${turnRange(con)} for connector '${con.id}'` });
         if (j.parent !== undefined && j.parent > k) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints', k, 'parent'], message: `must be a rail before rail ${k + 2} (at most ${k})` });
       });
+      if (p.driver !== undefined) {
+        const d = c.drivers.find((x) => x.id === p.driver);
+        // The preset's load: its modules' beams (the type's default beam where none is named), as the feeds count it.
+        let load = 0;
+        for (const m of p.rails.flatMap((r) => r.modules)) {
+          const t = c.moduleTypes.find((x) => x.id === m.type);
+          load += t?.beams.find((b) => b.id === (m.beam ?? t.defaultBeam))?.watts ?? 0;
+        }
+        if (!d) ctx.addIssue({ code: 'custom', path: ['presets', i, 'driver'], message: `'${p.driver}' is not a driver id` });
+        else if (load > d.capacity + 1e-6) ctx.addIssue({ code: 'custom', path: ['presets', i, 'driver'], message: `the ${d.capacity} W '${d.id}' cannot carry the preset's ${Math.round(load * 100) / 100} W` });
+      }
       p.rails.forEach((rail, k) =>
         rail.modules.forEach((m, n) => {
           const t = c.moduleTypes.find((x) => x.id === m.type);

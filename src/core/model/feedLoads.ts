@@ -188,6 +188,17 @@ export function plannedFeeds(system: LightSystem, catalog: Catalog): { at: FeedA
   // a bad parent or node) gets the one default feed: validate() refuses the file and names the real
   // problem, and the search below never walks a structure that is not a tree.
   if (system.joints.length !== Math.max(0, system.rails.length - 1) || treeProblem(system, catalog)) return [{ at: 'start', driver: catalog.feed.defaultDriver }];
+  // A preset that names its driver (catalog presets[].driver: headroom for the modules a shopper
+  // adds next) gets it at the chain start while the system is the preset as shipped (its rails and
+  // module counts; a part split off it or an edited file plans as any system) and that one feed
+  // carries the load.
+  const preset = system.presetId === undefined ? undefined : catalog.presets.find((p) => p.id === system.presetId);
+  const shipped = preset?.driver;
+  const asShipped = preset !== undefined && preset.rails.length === system.rails.length && preset.rails.every((r, i) => r.modules.length === system.rails[i].modules.length);
+  if (shipped !== undefined && asShipped && catalog.drivers.some((d) => d.id === shipped)) {
+    const one = feedLoads({ ...system, feeds: [{ id: 'probe', at: 'start', driver: shipped }] }, catalog);
+    if (one.length === 1 && !isOverloaded(one[0])) return [{ at: 'start', driver: shipped }];
+  }
   const positions = allowedFeedPositions(system, catalog);
   // Fewer feeds than total load / largest driver can never carry the load (some feed would exceed
   // every driver), so the search starts there: the result is the same, and a hostile file with
@@ -232,7 +243,12 @@ export function overloadRefusal(before: Configuration, after: Configuration, pro
     was = undefined; // the state before was not sound (a test's raw edit): say what the result would carry
   }
   if (was && !isOverloaded(was) && was.load < now.load) {
-    return { reason: `the ${formatWatts(now.capacity)} W driver is full: ${formatWatts(was.load)} W used; ${advice}`, code: 'driverFull', params: { capacity: Number(formatWatts(now.capacity)), used: Number(formatWatts(was.load)) } };
+    // Name the action that helps: the smallest driver that carries the new load (chosen under
+    // Power in the system's options), or, when none does, a second feed.
+    const larger = driversBySize(catalog).find((d) => now.load <= d.capacity + LOAD_EPS);
+    const params = { capacity: Number(formatWatts(now.capacity)), used: Number(formatWatts(was.load)) };
+    if (larger) return { reason: `the ${formatWatts(now.capacity)} W driver is full: ${formatWatts(was.load)} W used; choose the ${formatWatts(larger.capacity)} W driver in the system options or add a second feed`, code: 'driverFull', params: { ...params, larger: Number(formatWatts(larger.capacity)) } };
+    return { reason: `the ${formatWatts(now.capacity)} W driver is full: ${formatWatts(was.load)} W used; add a second feed in the system options`, code: 'driverFullAddFeed', params };
   }
   return {
     reason: `${feedLabel(now.index)} would carry ${formatWatts(now.load)} W, more than its ${formatWatts(now.capacity)} W driver; ${advice}`,

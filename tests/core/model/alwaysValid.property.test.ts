@@ -424,7 +424,10 @@ describe('always-valid property', () => {
     expect(power.enabled).toBeGreaterThan(RUNS / 4);
     // (two aim kinds thinned them: 466 at 1 000 sequences)
     expect(power.refused).toBeGreaterThan(0.4 * RUNS);
-    expect(power.overloads).toBeGreaterThan(RUNS / 10);
+    // (97 at 5 000 sequences since the Single rail preset ships with a 240 W driver, room for two
+    // more spots: a random sequence now needs three additions on its rail to fill it; it came one
+    // spot from full on its 153.6 W driver before, > 500)
+    expect(power.overloads).toBeGreaterThan(RUNS / 100);
     expect(power.surface).toBeGreaterThan(RUNS / 10);
     // free positions and rail removals at any index (splits included), in bulk
     // (at 5 000 sequences: 739 / 2 419 moves, 598 free rails at the ends, 213 removals, 72 splits)

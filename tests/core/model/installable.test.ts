@@ -91,10 +91,12 @@ describe('suspension points (derived, suspensionPoints.ts)', () => {
 
 describe('power feeds: load per feed, overload refused with the reason', () => {
   it('a new system gets one feed at the start; the default driver when it carries the load, else the smallest that does', () => {
-    // the single preset: three 43 W spots = 129 W > 100.8 W (LPV-100-48, the default) → HLG-150H-48 (153.6 W)
+    // three 43 W spots = 129 W > 100.8 W (LPV-100-48, the default) → HLG-150H-48 (153.6 W), the smallest that carries it
     const s = withPreset('single', 1, 1);
-    expect(only(s).feeds).toEqual([{ id: expect.stringMatching(/^f\d+$/), at: 'start', driver: 'hlg-150h-48' }]);
-    expect(feedLoads(only(s), catalog).map((l) => [l.load, l.capacity])).toEqual([[129, 153.6]]);
+    expect(plannedFeeds({ ...only(s), presetId: undefined, feeds: [] }, catalog)).toEqual([{ at: 'start', driver: 'hlg-150h-48' }]);
+    // the Single rail preset ships with the driver it names (presets[].driver): HLG-240H-48, room for two more spots
+    expect(only(s).feeds).toEqual([{ id: expect.stringMatching(/^f\d+$/), at: 'start', driver: 'hlg-240h-48' }]);
+    expect(feedLoads(only(s), catalog).map((l) => [l.load, l.capacity])).toEqual([[129, 240]]);
     // an empty rail keeps the default
     const empty = run(s, 'addRail', { systemId: only(s).id, connector: 'straight', turn: 0, length: 1 });
     expect(plannedFeeds({ ...only(empty), rails: only(empty).rails.map((r) => ({ ...r, modules: [] })), feeds: [] }, catalog)).toEqual([{ at: 'start', driver: 'lpv-100-48' }]);
@@ -109,17 +111,33 @@ describe('power feeds: load per feed, overload refused with the reason', () => {
     expect(loads).toEqual([197.78, 188.39]);
     expect(loads[0] + loads[1]).toBeCloseTo(386.17, 9);
   });
-  it('addModule is refused when the driver is full, with the load before; validate() names the overload', () => {
+  it('the Single rail preset has room for two more of its spots; the sixth is refused, naming the driver that would carry it', () => {
     let s = withPreset('single', 1, 1);
     const rail = only(s).rails[0].id;
-    const problems = expectRefusedAndInvalid(s, 'addModule', { railId: rail, type: 'spot' }, 'the 153.6 W driver is full: 129 W used; add a second feed or choose a larger driver');
+    s = run(s, 'addModule', { railId: rail, type: 'spot' }); // 172 W
+    s = run(s, 'addModule', { railId: rail, type: 'spot' }); // 215 W
+    expect(feedLoads(only(s), catalog).map((l) => [l.load, l.capacity])).toEqual([[215, 240]]);
+    const problems = expectRefusedAndInvalid(s, 'addModule', { railId: rail, type: 'spot' }, 'the 240 W driver is full: 215 W used; choose the 321.6 W driver in the system options or add a second feed');
+    expect(problems[0].message).toBe('Feed 1 carries 258 W, more than its 240 W driver (Mean Well HLG-240H-48)');
+    // on the largest driver only a second feed helps: seven spots (301 W) on the 321.6 W HLG-320H-48, an eighth would be 344 W
+    s = run(s, 'setFeedDriver', { feedId: only(s).feeds[0].id, driver: 'hlg-320h-48' });
+    s = run(s, 'addModule', { railId: rail, type: 'spot' });
+    s = run(s, 'addModule', { railId: rail, type: 'spot' });
+    expectRefusedAndInvalid(s, 'addModule', { railId: rail, type: 'spot' }, 'the 321.6 W driver is full: 301 W used; add a second feed in the system options');
+  });
+  it('addModule is refused when the driver is full, with the load before; validate() names the overload', () => {
+    // the Single rail preset on the 153.6 W driver (the smallest that carries its 129 W)
+    let s = withPreset('single', 1, 1);
+    s = run(s, 'setFeedDriver', { feedId: only(s).feeds[0].id, driver: 'hlg-150h-48' });
+    const rail = only(s).rails[0].id;
+    const problems = expectRefusedAndInvalid(s, 'addModule', { railId: rail, type: 'spot' }, 'the 153.6 W driver is full: 129 W used; choose the 240 W driver in the system options or add a second feed');
     expect(problems[0]).toEqual({ code: 'feed-overload', path: 'systems[0].feeds[0]', message: 'Feed 1 carries 172 W, more than its 153.6 W driver (Mean Well HLG-150H-48)' });
     // the same words from every action that adds load: a heavier beam, a heavier type
     s = run(s, 'setModuleBeam', { moduleId: only(s).rails[0].modules[0].id, beam: 'medium' }); // 28 + 43 + 43 = 114 W
     expectRefusedAndInvalid(s, 'setFeedDriver', { feedId: only(s).feeds[0].id, driver: 'lpv-100-48' }, 'the 100.8 W Mean Well LPV-100-48 cannot carry the 114 W on Feed 1; choose a larger driver or add a feed');
     const light = run(s, 'setModuleBeam', { moduleId: only(s).rails[0].modules[1].id, beam: 'medium' }); // 28 + 28 + 43 = 99 W
     const small = run(light, 'setFeedDriver', { feedId: only(light).feeds[0].id, driver: 'lpv-100-48' });
-    expectRefusedAndInvalid(small, 'setModuleBeam', { moduleId: only(small).rails[0].modules[0].id, beam: 'narrow' }, 'the 100.8 W driver is full: 99 W used; add a second feed or choose a larger driver');
+    expectRefusedAndInvalid(small, 'setModuleBeam', { moduleId: only(small).rails[0].modules[0].id, beam: 'narrow' }, 'the 100.8 W driver is full: 99 W used; choose the 153.6 W driver in the system options or add a second feed');
     expectRefusedAndInvalid(small, 'setModuleType', { moduleId: only(small).rails[0].modules[0].id, type: 'flood' }, /the 100\.8 W driver is full: 99 W used/);
   });
   it('a second feed makes room: modules go to the nearest feed along the chain', () => {
@@ -145,7 +163,7 @@ describe('power feeds: load per feed, overload refused with the reason', () => {
     // the connector point is at 1.51 m: the spot at 1.25 m is nearer to it (43 W); removing the feed at the
     // start would put all 129 W on its 100.8 W driver
     expect(feedLoads(only(s), catalog).map((l) => l.load)).toEqual([86, 43]);
-    expectRefusedAndInvalid(s, 'removeFeed', { feedId: feed.id }, 'the 100.8 W driver is full: 43 W used; add a second feed or choose a larger driver');
+    expectRefusedAndInvalid(s, 'removeFeed', { feedId: feed.id }, 'the 100.8 W driver is full: 43 W used; choose the 153.6 W driver in the system options or add a second feed');
     s = run(s, 'moveFeed', { feedId: only(s).feeds[1].id, at: 'end' });
     expect(only(s).feeds[1].at).toBe('end');
     // a catalog that feeds only at the ends
@@ -212,7 +230,7 @@ describe('bill of materials and installation needs', () => {
     s = run(s, 'placePreset', { presetId: 'snake' });
     const needs = installationNeeds(s, catalog);
     expect(needs.systems.map((x) => x.feeds.map((f) => [f.label, f.load, f.capacity, f.driver.article]))).toEqual([
-      [['Feed 1', 129, 153.6, 'MW-HLG-150H-48']],
+      [['Feed 1', 129, 240, 'MW-HLG-240H-48']],
       [['Feed 1', 197.78, 240, 'MW-HLG-240H-48'], ['Feed 2', 188.39, 240, 'MW-HLG-240H-48']],
     ]);
     // single 1.5 m: 0.375, 1.125 → 2 fixings; snake: 9 (above)
@@ -238,7 +256,7 @@ describe('scene files from before feeds (version 3 and older) still load', () =>
     expect(read.nextId).toBe(file.configuration.nextId + 3);
     const n = file.configuration.nextId;
     expect(read.systems.map((x) => x.feeds)).toEqual([
-      [{ id: `f${n}`, at: 'start', driver: 'hlg-150h-48' }],
+      [{ id: `f${n}`, at: 'start', driver: 'hlg-240h-48' }],
       [{ id: `f${n + 1}`, at: 'start', driver: 'hlg-240h-48' }, { id: `f${n + 2}`, at: 'end', driver: 'hlg-240h-48' }],
     ]);
     expect(read.systems.map((x) => x.mounting)).toEqual(['suspended', 'suspended']);
@@ -280,6 +298,10 @@ describe('catalog rules for feeds, drivers and mounting name the field', () => {
     expect(broken((c) => (c.surfaceMount.maxOverhang = 1.5))).toThrow('my.json: surfaceMount.maxOverhang: must not exceed spacing');
     expect(broken((c) => (c.surfaceMount.spacing = 0))).toThrow(/my\.json: surfaceMount\.spacing: /);
     expect(broken((c) => delete (c as Partial<typeof data>).surfaceMount)).toThrow(/my\.json: surfaceMount: /);
+    // a preset's own driver (presets[].driver) must exist and carry the preset's load (Single rail: 3 × 43 W = 129 W)
+    const single = (c: typeof data) => c.presets.find((p) => p.id === 'single') as (typeof data.presets)[number] & { driver?: string };
+    expect(broken((c) => (single(c).driver = 'xlg-9000'))).toThrow("my.json: presets[0].driver: 'xlg-9000' is not a driver id");
+    expect(broken((c) => (single(c).driver = 'lpv-100-48'))).toThrow("my.json: presets[0].driver: the 100.8 W 'lpv-100-48' cannot carry the preset's 129 W");
   });
   it('the demo drivers are 48 V DC Mean Well units from 60 to 321.6 W, each with its source', () => {
     expect(catalog.drivers.map((d) => [d.id, d.capacity])).toEqual([

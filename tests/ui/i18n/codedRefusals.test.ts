@@ -32,11 +32,12 @@ describe('coded refusals', async () => {
     expect(none !== true && translateCoded(de, 'notices', none)).toBe('kein freier Platz für „Long line“ in diesem Raum');
     // The planner names the preset from the catalog's translations.
     expect(none !== true && noticeText(de, 'de', catalog, none)).toBe('kein freier Platz für „Lange Linie“ in diesem Raum');
-    // Three 43 W spots on the preset's 153.6 W driver: a fourth is refused with the load before.
-    const s = withPreset('single', 1, 1);
+    // Five 43 W spots on the Single rail preset's 240 W driver (three, and the two it has room for): a sixth is refused with the load before and the driver that would carry it.
+    let s = withPreset('single', 1, 1);
+    for (let k = 0; k < 2; k++) s = run(s, 'addModule', { railId: only(s).rails[0].id, type: 'spot' });
     const full = checkAction(s, 'addModule', { railId: only(s).rails[0].id, type: 'spot' }, catalog);
     expect(full !== true && full.code).toBe('driverFull');
-    expect(full !== true && translateCoded(de, 'notices', full)).toBe('der 153,6-W-Treiber ist voll: 129 W belegt; fügen Sie eine zweite Einspeisung hinzu oder wählen Sie einen größeren Treiber');
+    expect(full !== true && translateCoded(de, 'notices', full)).toBe('der 240-W-Treiber ist voll: 215 W belegt; wählen Sie in den Systemoptionen den 321,6-W-Treiber oder fügen Sie eine zweite Einspeisung hinzu');
   });
 
   it('an uncoded refusal falls back to its English sentence, never a key', () => {

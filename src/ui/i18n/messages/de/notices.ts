@@ -3,7 +3,8 @@ import type en from '../en/notices';
 
 export default {
   shareLinkNotice: 'Link zum Teilen: {notice}',
-  driverFull: 'der {capacity}-W-Treiber ist voll: {used} W belegt; fügen Sie eine zweite Einspeisung hinzu oder wählen Sie einen größeren Treiber',
+  driverFull: 'der {capacity}-W-Treiber ist voll: {used} W belegt; wählen Sie in den Systemoptionen den {larger}-W-Treiber oder fügen Sie eine zweite Einspeisung hinzu',
+  driverFullAddFeed: 'der {capacity}-W-Treiber ist voll: {used} W belegt; fügen Sie in den Systemoptionen eine zweite Einspeisung hinzu',
   feedOverload: 'Einspeisung {n} würde {load} W tragen, mehr als ihr {capacity}-W-Treiber; fügen Sie eine zweite Einspeisung hinzu oder wählen Sie einen größeren Treiber',
   driverTooSmall: 'der {capacity}-W-Treiber {driver} kann die {load} W an Einspeisung {n} nicht tragen; wählen Sie einen größeren Treiber oder fügen Sie eine Einspeisung hinzu',
   noFreeSpace: 'kein freier Platz für „{name}“ in diesem Raum',

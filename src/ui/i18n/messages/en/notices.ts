@@ -1,7 +1,8 @@
 // Coded messages from outside React, keyed by their code: the core's refusals (Refusal.code) and status-line notices (docs/i18n.md, "Messages from the core").
 export default {
   shareLinkNotice: 'Share link: {notice}',
-  driverFull: 'the {capacity} W driver is full: {used} W used; add a second feed or choose a larger driver',
+  driverFull: 'the {capacity} W driver is full: {used} W used; choose the {larger} W driver in the system options or add a second feed',
+  driverFullAddFeed: 'the {capacity} W driver is full: {used} W used; add a second feed in the system options',
   feedOverload: 'Feed {n} would carry {load} W, more than its {capacity} W driver; add a second feed or choose a larger driver',
   driverTooSmall: 'the {capacity} W {driver} cannot carry the {load} W on Feed {n}; choose a larger driver or add a feed',
   noFreeSpace: "no free space for '{name}' in this room",

@@ -3,7 +3,8 @@ import type en from '../en/notices';
 
 export default {
   shareLinkNotice: 'Lien de partage : {notice}',
-  driverFull: 'le driver de {capacity} W est plein : {used} W utilisés ; ajoutez une deuxième alimentation ou choisissez un driver plus puissant',
+  driverFull: 'le driver de {capacity} W est plein : {used} W utilisés ; choisissez le driver de {larger} W dans les options du système ou ajoutez une deuxième alimentation',
+  driverFullAddFeed: 'le driver de {capacity} W est plein : {used} W utilisés ; ajoutez une deuxième alimentation dans les options du système',
   feedOverload: 'l’alimentation {n} porterait {load} W, plus que son driver de {capacity} W ; ajoutez une deuxième alimentation ou choisissez un driver plus puissant',
   driverTooSmall: 'le {driver} de {capacity} W ne peut pas porter les {load} W de l’alimentation {n} ; choisissez un driver plus puissant ou ajoutez une alimentation',
   noFreeSpace: 'pas de place libre pour « {name} » dans cette pièce',

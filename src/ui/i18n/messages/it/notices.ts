@@ -3,7 +3,8 @@ import type en from '../en/notices';
 
 export default {
   shareLinkNotice: 'Link di condivisione: {notice}',
-  driverFull: 'il driver da {capacity} W è pieno: {used} W in uso; aggiungi una seconda alimentazione o scegli un driver più potente',
+  driverFull: 'il driver da {capacity} W è pieno: {used} W in uso; scegli il driver da {larger} W nelle opzioni del sistema o aggiungi una seconda alimentazione',
+  driverFullAddFeed: 'il driver da {capacity} W è pieno: {used} W in uso; aggiungi una seconda alimentazione nelle opzioni del sistema',
   feedOverload: 'l’alimentazione {n} porterebbe {load} W, più del suo driver da {capacity} W; aggiungi una seconda alimentazione o scegli un driver più potente',
   driverTooSmall: 'il {driver} da {capacity} W non può portare i {load} W dell’alimentazione {n}; scegli un driver più potente o aggiungi un’alimentazione',
   noFreeSpace: 'nessuno spazio libero per «{name}» in questa stanza',
