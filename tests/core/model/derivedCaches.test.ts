@@ -88,8 +88,10 @@ function referencePlacement(config: Configuration, preset: PresetSpec, cat: Cata
     const n = Math.ceil((b - a) / step);
     return Array.from({ length: n + 1 }, (_, i) => a + ((b - a) * i) / n);
   };
+  // A clone: no cache has seen its systems (the first candidates fill the caches for it, as the search did before).
+  const fresh = structuredClone(config);
   for (const rotation of [0, 90]) {
-    const probe = instantiatePreset(config, preset, cat, { x: 0, z: 0, rotation }, suspension);
+    const probe = instantiatePreset(fresh, preset, cat, { x: 0, z: 0, rotation }, suspension);
     const index = probe.systems.length - 1;
     const b = systemBounds(structuredClone(probe.systems[index]), cat);
     const hx = (b.maxX - b.minX) / 2;
@@ -98,8 +100,7 @@ function referencePlacement(config: Configuration, preset: PresetSpec, cat: Cata
     centres.sort((a, b2) => Math.hypot(a[0] - width / 2, a[1] - depth / 2) - Math.hypot(b2[0] - width / 2, b2[1] - depth / 2));
     for (const [cx, cz] of centres) {
       const placement = { x: cx - (b.minX + b.maxX) / 2, z: cz - (b.minZ + b.maxZ) / 2, rotation };
-      // A clone: no cache has seen any of its systems.
-      const candidate = structuredClone(instantiatePreset(config, preset, cat, placement, suspension));
+      const candidate = instantiatePreset(fresh, preset, cat, placement, suspension);
       if (systemProblems(candidate, index, cat).length === 0) return placement;
     }
   }
@@ -129,11 +130,11 @@ describe('perCatalog', () => {
 });
 
 describe('cached derived data equals a fresh computation', () => {
-  const states = randomStates(20261123, 400);
+  const states = randomStates(20261123, 240);
 
   it('the walks reach many systems, invalid states and full rooms', () => {
-    expect(states.filter((s) => s.systems.length >= 2).length).toBeGreaterThan(100);
-    expect(states.filter((s) => validate(s, catalog).length > 0).length).toBeGreaterThan(20);
+    expect(states.filter((s) => s.systems.length >= 2).length).toBeGreaterThan(60);
+    expect(states.filter((s) => validate(s, catalog).length > 0).length).toBeGreaterThan(12);
   });
 
   it('validate() and systemProblems(): asked twice (cache hits) as on a clone (no cache has seen it)', () => {
@@ -176,7 +177,7 @@ describe('cached derived data equals a fresh computation', () => {
 
   it('the preset placement search finds what the uncached search finds', () => {
     const rng = createRng(7);
-    const rooms = states.filter((_, k) => k % 16 === 0);
+    const rooms = states.filter((_, k) => k % 10 === 0);
     let found = 0;
     let none = 0;
     for (const s of rooms) {
