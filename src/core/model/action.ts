@@ -11,6 +11,7 @@
  */
 import type { z } from 'zod';
 import type { Catalog } from './catalogSchema';
+import type { CodedText, MessageParams } from '../inputError';
 import type { Configuration } from './configuration';
 import type { Problem } from './validate';
 
@@ -20,14 +21,17 @@ export interface Refusal {
   readonly reason: string;
   /** A stable code for the reason and its parameters, so a UI can show it in the user's language (docs/i18n.md, "Messages from the core"); absent where none is given yet. */
   readonly code?: string;
-  readonly params?: Readonly<Record<string, string | number>>;
+  readonly params?: MessageParams;
+  /** The coded sentence the reason quotes ("cannot move it there: <the problem>"), worded first by a UI. */
+  readonly detail?: CodedText;
 }
 
 /** A refusal sentence with its stable code: what `explain` and coded InputErrors carry. */
 export interface CodedReason {
   readonly reason: string;
   readonly code: string;
-  readonly params?: Readonly<Record<string, string | number>>;
+  readonly params?: MessageParams;
+  readonly detail?: CodedText;
 }
 
 /** `true` when the action may run, otherwise a refusal with the reason. */
@@ -41,11 +45,12 @@ export type Outcome = { readonly ok: true; readonly next: Configuration } | Refu
  * the reason in another language, while the refusal's data — what JSON, spreads and deep equality
  * see — stays `{ ok: false, reason }`.
  */
-export function refuse(reason: string, coded?: { code?: string; params?: Readonly<Record<string, string | number>> }): Refusal {
+export function refuse(reason: string, coded?: { code?: string; params?: MessageParams; detail?: CodedText }): Refusal {
   const refusal: Refusal = { ok: false, reason };
   if (coded?.code) {
     Object.defineProperty(refusal, 'code', { value: coded.code, enumerable: false });
     if (coded.params) Object.defineProperty(refusal, 'params', { value: coded.params, enumerable: false });
+    if (coded.detail) Object.defineProperty(refusal, 'detail', { value: coded.detail, enumerable: false });
   }
   return refusal;
 }

@@ -8,6 +8,7 @@
  * −y, and world = Ry(yaw)·Rx(pitch)·Ry(roll)·local.
  */
 import type { ModuleTypeSpec } from './catalogSchema';
+import { keyed } from './coding';
 import type { ModuleAim } from './configuration';
 import type { Vec3 } from './lightingScene';
 
@@ -66,22 +67,29 @@ function onStop(value: number, stops: number | undefined): boolean {
   return Math.abs(k - Math.round(k)) * stops < EPS;
 }
 
-function rangeProblem(value: number, r: AimRange, what: string): string | null {
-  if (!Number.isFinite(value)) return `${what} must be a number of degrees (got ${String(value)})`;
-  if (value < r.min - EPS || value > r.max + EPS) return `${what} must be between ${r.min}° and ${r.max}° (got ${value}°)`;
-  if (!onStop(value, r.stops)) return `${what} must be a multiple of ${r.stops}° (got ${value}°)`;
+/** The sentence keys of each angle's rules (docs/i18n.md). */
+const RANGE_KEYS = {
+  rotation: { notNumber: 'aimRotationNotNumber', range: 'aimRotationRange', stops: 'aimRotationStops' },
+  tilt: { notNumber: 'aimTiltNotNumber', range: 'aimTiltRange', stops: 'aimTiltStops' },
+} as const;
+
+function rangeProblem(value: number, r: AimRange, what: 'rotation' | 'tilt'): { key: string; message: string; params: Record<string, string | number> } | null {
+  const keys = RANGE_KEYS[what];
+  if (!Number.isFinite(value)) return { key: keys.notNumber, message: `${what} must be a number of degrees (got ${String(value)})`, params: { value: String(value) } };
+  if (value < r.min - EPS || value > r.max + EPS) return { key: keys.range, message: `${what} must be between ${r.min}° and ${r.max}° (got ${value}°)`, params: { min: r.min, max: r.max, value } };
+  if (!onStop(value, r.stops)) return { key: keys.stops, message: `${what} must be a multiple of ${r.stops}° (got ${value}°)`, params: { step: r.stops ?? 0, value } };
   return null;
 }
 
 /** validate()'s rule for a module's aim: null when valid, else the problem's field and sentence. */
 export function aimProblem(aim: ModuleAim, type: ModuleTypeSpec): { field: 'aim' | 'aim.rotation' | 'aim.tilt'; message: string } | null {
-  if (!type.adjustable) return { field: 'aim', message: `${type.name} is fixed: it cannot be aimed` };
-  if (typeof aim !== 'object' || aim === null) return { field: 'aim', message: 'aim must be { rotation, tilt }' };
-  if (Number.isFinite(aim.rotation) && (aim.rotation < 0 || aim.rotation >= 360)) return { field: 'aim.rotation', message: `rotation must be in [0, 360) degrees (got ${aim.rotation}°)` };
+  if (!type.adjustable) return keyed({ field: 'aim', message: `${type.name} is fixed: it cannot be aimed` }, 'aimFixed', { name: type.name, typeId: type.id });
+  if (typeof aim !== 'object' || aim === null) return keyed({ field: 'aim', message: 'aim must be { rotation, tilt }' }, 'aimShape');
+  if (Number.isFinite(aim.rotation) && (aim.rotation < 0 || aim.rotation >= 360)) return keyed({ field: 'aim.rotation', message: `rotation must be in [0, 360) degrees (got ${aim.rotation}°)` }, 'aimRotationTurn', { value: aim.rotation });
   const r = rangeProblem(aim.rotation, type.adjustable.rotation, 'rotation');
-  if (r) return { field: 'aim.rotation', message: r };
+  if (r) return keyed({ field: 'aim.rotation', message: r.message }, r.key, r.params);
   const t = rangeProblem(aim.tilt, type.adjustable.tilt, 'tilt');
-  return t ? { field: 'aim.tilt', message: t } : null;
+  return t ? keyed({ field: 'aim.tilt', message: t.message }, t.key, t.params) : null;
 }
 
 /**

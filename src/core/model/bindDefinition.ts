@@ -10,6 +10,7 @@ import { InputError } from '../inputError';
 import { enablementOf, refuse, type ActionDefinition, type Outcome, type UserAction } from './action';
 import type { Catalog } from './catalogSchema';
 import type { Configuration } from './configuration';
+import { keyed, problemText } from './coding';
 import { overloadRefusal } from './feedLoads';
 import { pruneLooks } from './lightScenes';
 import { validateResult } from './validateResult';
@@ -37,12 +38,13 @@ function decide<P>(def: ActionDefinition<P>, state: Configuration, params: P, ca
   if (problems.length === 0) return { state, outcome: { ok: true, next: performed }, performed };
   // An overloaded driver is worded once for every action (addModule, setModuleBeam, presets, moves…): how full it was.
   const overload = problems[0].code === 'feed-overload' ? overloadRefusal(state, performed, problems[0], catalog) : null;
-  const first = overload ? { ...problems[0], message: overload.reason } : problems[0];
+  // The overload's coding goes with its sentence, so an action that quotes the problem quotes it coded.
+  const first = overload ? (overload.code ? keyed({ ...problems[0], message: overload.reason }, overload.code, overload.params) : { ...problems[0], message: overload.reason }) : problems[0];
   const explained = def.explain?.(first, state, params, catalog) ?? first.message;
   // The code travels with the sentence it names: the action's own coded reason, or the overload's when the action kept its wording.
   if (typeof explained !== 'string') return { state, outcome: refuse(explained.reason, explained), performed };
   // When the action kept the problem's own sentence, the problem's code and params name it.
-  const coded = overload && explained === overload.reason ? overload : explained === first.message ? first : undefined;
+  const coded = explained === first.message ? problemText(first) : undefined;
   return { state, outcome: refuse(explained, coded), performed };
 }
 

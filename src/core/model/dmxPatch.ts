@@ -7,6 +7,7 @@
  * removes its patch by construction, and it is saved with the configuration.
  */
 import type { ModuleTypeSpec } from './catalogSchema';
+import { keyed, type Keyed } from './coding';
 import type { Configuration, ModuleInstance } from './configuration';
 
 export const DMX_CHANNELS = 512;
@@ -47,12 +48,17 @@ export function formatPatchRange(p: Pick<DmxPatch, 'universe' | 'address' | 'res
 
 /** A patch's own problem (ranges, fit in the universe, CCT on a tunable type), or null. */
 export function patchRangeProblem(p: DmxPatch, type: Pick<ModuleTypeSpec, 'ccts' | 'name'>): string | null {
-  if (!Number.isInteger(p.universe) || p.universe < DMX_UNIVERSE_MIN || p.universe > DMX_UNIVERSE_MAX) return `DMX universe must be an integer in ${DMX_UNIVERSE_MIN}..${DMX_UNIVERSE_MAX} (got ${p.universe})`;
-  if (!Number.isInteger(p.address) || p.address < 1 || p.address > DMX_CHANNELS) return `DMX address must be an integer in 1..${DMX_CHANNELS} (got ${p.address})`;
-  if (p.resolution !== 8 && p.resolution !== 16) return `DMX resolution must be 8 or 16 bits (got ${String(p.resolution)})`;
-  if (p.cct && !isTunable(type)) return `${type.name} has one colour temperature only: no CCT channel`;
+  return patchRangeIssue(p, type)?.message ?? null;
+}
+
+/** patchRangeProblem with its sentence's code and params (docs/i18n.md). */
+export function patchRangeIssue(p: DmxPatch, type: Pick<ModuleTypeSpec, 'ccts' | 'name'> & { id?: string }): ({ message: string } & Keyed) | null {
+  if (!Number.isInteger(p.universe) || p.universe < DMX_UNIVERSE_MIN || p.universe > DMX_UNIVERSE_MAX) return keyed({ message: `DMX universe must be an integer in ${DMX_UNIVERSE_MIN}..${DMX_UNIVERSE_MAX} (got ${p.universe})` }, 'dmxUniverseRange', { min: DMX_UNIVERSE_MIN, max: DMX_UNIVERSE_MAX, value: String(p.universe) });
+  if (!Number.isInteger(p.address) || p.address < 1 || p.address > DMX_CHANNELS) return keyed({ message: `DMX address must be an integer in 1..${DMX_CHANNELS} (got ${p.address})` }, 'dmxAddressRange', { max: DMX_CHANNELS, value: String(p.address) });
+  if (p.resolution !== 8 && p.resolution !== 16) return keyed({ message: `DMX resolution must be 8 or 16 bits (got ${String(p.resolution)})` }, 'dmxResolution', { value: String(p.resolution) });
+  if (p.cct && !isTunable(type)) return keyed({ message: `${type.name} has one colour temperature only: no CCT channel` }, 'dmxNoCctChannel', { name: type.name, typeId: type.id ?? '' });
   const last = p.address + patchWidth(p) - 1;
-  if (last > DMX_CHANNELS) return `channels ${p.address}–${last} would run past ${DMX_CHANNELS}`;
+  if (last > DMX_CHANNELS) return keyed({ message: `channels ${p.address}–${last} would run past ${DMX_CHANNELS}` }, 'dmxPastEnd', { first: p.address, last, max: DMX_CHANNELS });
   return null;
 }
 

@@ -149,6 +149,12 @@ export function describeFeedAt(at: FeedAt): string {
   return 'joint' in at ? `connector ${at.joint + 1}` : `the end of rail ${at.end + 1}`;
 }
 
+/** A feed position as one message parameter: 'start', 'end', 'joint:k' or 'rail:i' (indices from 0); a UI words it (docs/i18n.md). */
+export function feedAtParam(at: FeedAt): string {
+  if (at === 'start' || at === 'end') return at;
+  return 'joint' in at ? `joint:${at.joint}` : `rail:${at.end}`;
+}
+
 /**
  * The feed positions the catalog allows on a system, in chain order: the start, each connector
  * node once (through its first joint), each free rail end but the last, and the chain end. On a

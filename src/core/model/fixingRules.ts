@@ -12,6 +12,7 @@
  *  - every connector node carries a point at its own coordinate (a joint is always supported);
  *  - any other point lies on a rail, not inside a connector's bridge.
  */
+import { keyed } from './coding';
 import type { Catalog } from './catalogSchema';
 import type { LightSystem } from './configuration';
 import { chainCoordinates, locate } from './chainCoordinates';
@@ -30,16 +31,18 @@ export interface FixingProblem {
 
 const fmt = (x: number) => String(Math.round(x * 1000) / 1000);
 
+
 /** The first rule a fixing list breaks on this system's chain, or null when it keeps them all. */
 export function fixingProblem(system: LightSystem, points: readonly number[], catalog: Catalog): FixingProblem | null {
   const rule = mountingRule(system, catalog);
   const chain = chainCoordinates(system, catalog);
   const what = system.mounting === 'surface' ? 'clip' : 'suspension';
-  if (points.length === 0) return { code: 'fixing-overhang', index: 0, message: `system ${system.id} has no ${what} points` };
+  // `what` is a parameter ('suspension' or 'clip'): a UI words it (docs/i18n.md).
+  if (points.length === 0) return keyed({ code: 'fixing-overhang', index: 0, message: `system ${system.id} has no ${what} points` }, 'fixingNone', { id: system.id, what });
   for (let i = 0; i < points.length; i++) {
     const s = points[i];
-    if (!Number.isFinite(s)) return { code: 'fixing-order', index: i, message: `${what} point ${i + 1} is not a number` };
-    if (i > 0 && !(s > points[i - 1] + FIXING_EPS)) return { code: 'fixing-order', index: i, message: `${what} point ${i + 1} must lie past point ${i} along the chain` };
+    if (!Number.isFinite(s)) return keyed({ code: 'fixing-order', index: i, message: `${what} point ${i + 1} is not a number` }, 'fixingNotNumber', { what, n: i + 1 });
+    if (i > 0 && !(s > points[i - 1] + FIXING_EPS)) return keyed({ code: 'fixing-order', index: i, message: `${what} point ${i + 1} must lie past point ${i} along the chain` }, 'fixingOrder', { what, n: i + 1, prev: i });
   }
   const n = system.rails.length;
   // Each point's rail and depth along the tree (a node's point: the rail it ends), grouped per rail in depth order.
@@ -49,7 +52,7 @@ export function fixingProblem(system: LightSystem, points: readonly number[], ca
   const nodePoint = (p: number): number => points.findIndex((s) => Math.abs(s - chain.nodeAt[p]) <= FIXING_EPS);
   // Free ends: the chain start, and the end of every rail without a node (the last rail's: "the chain end").
   const first = onRail[0].length > 0 ? onRail[0][0].depth : located[0].depth;
-  if (points[0] < -FIXING_EPS || first > rule.maxOverhang + FIXING_EPS) return { code: 'fixing-overhang', index: 0, message: `the chain start would overhang its first ${what} by ${fmt(Math.max(first, points[0]))} m (at most ${rule.maxOverhang} m)` };
+  if (points[0] < -FIXING_EPS || first > rule.maxOverhang + FIXING_EPS) return keyed({ code: 'fixing-overhang', index: 0, message: `the chain start would overhang its first ${what} by ${fmt(Math.max(first, points[0]))} m (at most ${rule.maxOverhang} m)` }, 'fixingOverhangStart', { what, by: Number(fmt(Math.max(first, points[0]))), max: rule.maxOverhang });
   for (let i = 0; i < n; i++) {
     if (!Number.isNaN(chain.nodeAt[i])) continue;
     const mine = onRail[i];
@@ -58,7 +61,8 @@ export function fixingProblem(system: LightSystem, points: readonly number[], ca
     const tail = chain.depthStart[i] + chain.railLength[i] - lastDepth;
     const index = mine.length > 0 ? mine[mine.length - 1].index : points.length - 1;
     const end = i === n - 1 ? 'the chain end' : `the end of rail ${i + 1}`;
-    if (tail < -FIXING_EPS || tail > rule.maxOverhang + FIXING_EPS) return { code: 'fixing-overhang', index, message: `${end} would overhang its last ${what} by ${fmt(tail)} m (at most ${rule.maxOverhang} m)` };
+    const key = i === n - 1 ? 'fixingOverhangEnd' : 'fixingOverhangRailEnd';
+    if (tail < -FIXING_EPS || tail > rule.maxOverhang + FIXING_EPS) return keyed({ code: 'fixing-overhang', index, message: `${end} would overhang its last ${what} by ${fmt(tail)} m (at most ${rule.maxOverhang} m)` }, key, { what, rail: i + 1, by: Number(fmt(tail)), max: rule.maxOverhang });
   }
   // Spacing along each rail, from the node it hangs on (if any) through its points.
   for (let i = 0; i < n; i++) {
@@ -68,7 +72,8 @@ export function fixingProblem(system: LightSystem, points: readonly number[], ca
       const gap = seq[k].depth - seq[k - 1].depth;
       if (gap > rule.spacing + FIXING_EPS) {
         const a = seq[k - 1].index;
-        return { code: 'fixing-spacing', index: seq[k].index, message: `${what} points ${a >= 0 ? a + 1 : `at connector`} and ${seq[k].index + 1} would be ${fmt(gap)} m apart (at most ${rule.spacing} m)` };
+        const params = { what, a: a + 1, b: seq[k].index + 1, gap: Number(fmt(gap)), max: rule.spacing };
+        return keyed({ code: 'fixing-spacing', index: seq[k].index, message: `${what} points ${a >= 0 ? a + 1 : `at connector`} and ${seq[k].index + 1} would be ${fmt(gap)} m apart (at most ${rule.spacing} m)` }, a >= 0 ? 'fixingSpacing' : 'fixingSpacingFromConnector', params);
       }
     }
   }
@@ -77,13 +82,13 @@ export function fixingProblem(system: LightSystem, points: readonly number[], ca
     if (Number.isNaN(chain.nodeAt[p]) || nodePoint(p) >= 0) continue;
     const j = nodeJoints(system, p)[0];
     const k = points.findIndex((s) => s >= chain.nodeAt[p] - FIXING_EPS);
-    return { code: 'fixing-joint', index: k >= 0 ? k : points.length - 1, message: `connector ${j + 1} must keep its ${what} (a connector is always a support)` };
+    return keyed({ code: 'fixing-joint', index: k >= 0 ? k : points.length - 1, message: `connector ${j + 1} must keep its ${what} (a connector is always a support)` }, 'fixingJoint', { what, n: j + 1 });
   }
   for (let i = 0; i < points.length; i++) {
     const s = points[i];
     if (chain.nodeAt.some((at) => Math.abs(s - at) <= FIXING_EPS)) continue;
     const onARail = chain.railStart.some((r0, r) => s >= r0 - FIXING_EPS && s <= r0 + system.rails[r].length + FIXING_EPS);
-    if (!onARail) return { code: 'fixing-off-rail', index: i, message: `${what} point ${i + 1} would sit inside a connector, not on a rail` };
+    if (!onARail) return keyed({ code: 'fixing-off-rail', index: i, message: `${what} point ${i + 1} would sit inside a connector, not on a rail` }, 'fixingOffRail', { what, n: i + 1 });
   }
   return null;
 }

@@ -2,6 +2,7 @@
  * Light scenes (cues): their rules, what recording and recalling do, and how a module's state
  * becomes a look (docs/light-scenes.md, docs/model.md "Light scenes").
  */
+import { keyed } from './coding';
 import { findModuleType, type Catalog } from './catalogSchema';
 import type { Configuration, LightScene, ModuleInstance, ModuleLook } from './configuration';
 import type { Problem } from './validate';
@@ -96,17 +97,17 @@ export function lightSceneProblems(config: Configuration): Problem[] {
   const ids = new Set(allModules(config).map((m) => m.id));
   scenes.forEach((s, i) => {
     const at = `lightScenes[${i}]`;
-    if (s.name.trim() === '') out.push({ code: 'scene-name', path: `${at}.name`, message: `light scene ${s.id} needs a name` });
-    else if (s.name.length > SCENE_NAME_MAX) out.push({ code: 'scene-name', path: `${at}.name`, message: `light scene name is longer than ${SCENE_NAME_MAX} characters` });
+    if (s.name.trim() === '') out.push(keyed({ code: 'scene-name', path: `${at}.name`, message: `light scene ${s.id} needs a name` }, 'sceneNeedsName', { id: s.id }));
+    else if (s.name.length > SCENE_NAME_MAX) out.push(keyed({ code: 'scene-name', path: `${at}.name`, message: `light scene name is longer than ${SCENE_NAME_MAX} characters` }, 'sceneNameLong', { max: SCENE_NAME_MAX }));
     const twin = scenes.findIndex((o, k) => k < i && sameSceneName(o.name, s.name));
-    if (twin >= 0 && s.name.trim() !== '') out.push({ code: 'scene-name-taken', path: `${at}.name`, message: `a light scene named '${scenes[twin].name}' exists already` });
+    if (twin >= 0 && s.name.trim() !== '') out.push(keyed({ code: 'scene-name-taken', path: `${at}.name`, message: `a light scene named '${scenes[twin].name}' exists already` }, 'sceneNameTaken', { name: scenes[twin].name }));
     if (!Number.isFinite(s.fade) || s.fade < FADE_LIMITS.min || s.fade > FADE_LIMITS.max)
-      out.push({ code: 'scene-fade', path: `${at}.fade`, message: `fade time must be between ${FADE_LIMITS.min} and ${FADE_LIMITS.max} s (got ${s.fade})` });
+      out.push(keyed({ code: 'scene-fade', path: `${at}.fade`, message: `fade time must be between ${FADE_LIMITS.min} and ${FADE_LIMITS.max} s (got ${s.fade})` }, 'sceneFadeRange', { min: FADE_LIMITS.min, max: FADE_LIMITS.max, value: s.fade }));
     for (const [moduleId, look] of Object.entries(s.looks)) {
       const lp = `${at}.looks.${moduleId}`;
-      if (!ids.has(moduleId)) out.push({ code: 'scene-module', path: lp, message: `light scene '${s.name}' has a look for module ${moduleId}, which does not exist` });
-      if (!Number.isFinite(look.level) || look.level < 0 || look.level > 1) out.push({ code: 'scene-level', path: `${lp}.level`, message: `level must be between 0 and 1 (got ${look.level})` });
-      if (!Number.isFinite(look.cct) || look.cct < 1000 || look.cct > 20000) out.push({ code: 'scene-cct', path: `${lp}.cct`, message: `colour temperature must be between 1000 and 20000 K (got ${look.cct})` });
+      if (!ids.has(moduleId)) out.push(keyed({ code: 'scene-module', path: lp, message: `light scene '${s.name}' has a look for module ${moduleId}, which does not exist` }, 'sceneModuleMissing', { name: s.name, id: moduleId }));
+      if (!Number.isFinite(look.level) || look.level < 0 || look.level > 1) out.push(keyed({ code: 'scene-level', path: `${lp}.level`, message: `level must be between 0 and 1 (got ${look.level})` }, 'sceneLevelRange', { value: look.level }));
+      if (!Number.isFinite(look.cct) || look.cct < 1000 || look.cct > 20000) out.push(keyed({ code: 'scene-cct', path: `${lp}.cct`, message: `colour temperature must be between 1000 and 20000 K (got ${look.cct})` }, 'sceneCctRange', { min: '1000', max: '20000', value: String(look.cct) }));
     }
   });
   return out;

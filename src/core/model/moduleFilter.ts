@@ -4,6 +4,7 @@
  * `filterHolder: true` take one. The one rule validate() and setModuleFilter share, the catalog's
  * own check, and the colour a module gives through its filter.
  */
+import { keyed } from './coding';
 import { colourFilter, type ColourFilter } from '../colour/colourFilterLibrary';
 import type { FilteredColour } from '../colour/filteredColour';
 import { moduleColour } from '../colour/moduleColour';
@@ -46,8 +47,8 @@ export interface FilterProblem {
 
 /** Why `filterId` cannot sit in front of a module of `type` (null: it can). */
 export function moduleFilterProblem(type: ModuleTypeSpec, filterId: string, catalog: Catalog): FilterProblem | null {
-  if (!filterAccessory(catalog, filterId) || !colourFilter(filterId)) return { code: 'unknown-filter', message: `unknown colour filter '${filterId}' (not among the catalog's filters)` };
-  if (type.filterHolder !== true) return { code: 'no-filter-holder', message: `${type.name} has no filter holder: it takes no colour filter` };
+  if (!filterAccessory(catalog, filterId) || !colourFilter(filterId)) return keyed({ code: 'unknown-filter', message: `unknown colour filter '${filterId}' (not among the catalog's filters)` }, 'unknownFilter', { id: filterId });
+  if (type.filterHolder !== true) return keyed({ code: 'no-filter-holder', message: `${type.name} has no filter holder: it takes no colour filter` }, 'noFilterHolder', { name: type.name, typeId: type.id });
   return null;
 }
 

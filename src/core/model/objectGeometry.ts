@@ -82,8 +82,11 @@ export const OBJECT_EPS = 1e-6;
  */
 export function fitPlacement(object: RoomObject, mesh: TriangleMesh, room: Room, label: string): RoomObject {
   const b = placedBounds(object, mesh, room);
-  const shift = (lo: number, hi: number, max: number, what: string): number => {
-    if (hi - lo > max + OBJECT_EPS) throw new InputError(`the ${label} (${fmt(hi - lo)} m ${what}) does not fit in this ${fmt(max)} m room`);
+  // The object as parameters (docs/i18n.md): a UI names library furniture by its id in its own language.
+  const named = { name: label, ...(object.source.kind === 'library' ? { furnitureId: object.source.item } : {}) };
+  const shift = (lo: number, hi: number, max: number, what: 'along x' | 'along z' | 'high'): number => {
+    const key = what === 'along x' ? 'objectTooWide' : what === 'along z' ? 'objectTooDeep' : 'objectTooHigh';
+    if (hi - lo > max + OBJECT_EPS) throw new InputError(`the ${label} (${fmt(hi - lo)} m ${what}) does not fit in this ${fmt(max)} m room`, { code: key, params: { ...named, size: Number(fmt(hi - lo)), room: Number(fmt(max)) } });
     return lo < 0 ? -lo : hi > max ? max - hi : 0;
   };
   const dx = shift(b.min[0], b.max[0], room.width, 'along x');
@@ -91,13 +94,13 @@ export function fitPlacement(object: RoomObject, mesh: TriangleMesh, room: Room,
   const dy = shift(b.min[1], b.max[1], room.height, 'high');
   const p = object.placement;
   if (p.on === 'floor') {
-    if (dy !== 0) throw new InputError(`the ${label} does not fit between floor and ceiling (${fmt(b.min[1])} … ${fmt(b.max[1])} m; room height ${fmt(room.height)} m)`);
+    if (dy !== 0) throw new InputError(`the ${label} does not fit between floor and ceiling (${fmt(b.min[1])} … ${fmt(b.max[1])} m; room height ${fmt(room.height)} m)`, { code: 'objectNotBetweenFloorAndCeiling', params: { ...named, bottom: Number(fmt(b.min[1])), top: Number(fmt(b.max[1])), height: Number(fmt(room.height)) } });
     return { ...object, placement: { on: 'floor', x: p.x + dx, z: p.z + dz } };
   }
   // Along the wall the shift moves u; across it (the depth into the room) nothing can help.
   const along = p.wall === 'north' || p.wall === 'south' ? dx : dz;
   const across = p.wall === 'north' || p.wall === 'south' ? dz : dx;
-  if (Math.abs(across) > OBJECT_EPS) throw new InputError(`the ${label} reaches across the room from the ${p.wall} wall`);
+  if (Math.abs(across) > OBJECT_EPS) throw new InputError(`the ${label} reaches across the room from the ${p.wall} wall`, { code: 'objectAcrossRoom', params: { ...named, wall: p.wall } });
   return { ...object, placement: { on: 'wall', wall: p.wall, u: p.u + along, y: p.y + dy } };
 }
 
@@ -112,7 +115,7 @@ export function finishRgb(finish: ObjectFinish): Rgb {
  */
 export function objectMesh(config: Configuration, objectId: string): TriangleMesh {
   const object = config.objects.find((o) => o.id === objectId);
-  if (!object) throw new InputError(`no object with id '${objectId}'`);
+  if (!object) throw new InputError(`no object with id '${objectId}'`, { code: 'unknownObject', params: { id: objectId } });
   const mesh = sourceMesh(config, object.source);
   if (!mesh) throw new InputError(`object ${objectId}: its ${object.source.kind === 'library' ? `library item '${object.source.item}'` : `imported mesh '${object.source.mesh}'`} does not exist`);
   if (Object.keys(object.finishes).length === 0) return mesh;

@@ -6,8 +6,9 @@
  * the floor, at or below the ceiling, never through a wall. Overlapping objects are allowed (the
  * user's business). An imported mesh is well formed and used by at least one object.
  */
+import { keyed } from './coding';
 import type { TriangleMesh } from '../mesh/triangleMesh';
-import { OBJECT_SCALE_LIMITS, WALL_NAMES, type Configuration, type ImportedMesh } from './configuration';
+import { OBJECT_SCALE_LIMITS, WALL_NAMES, type Configuration, type ImportedMesh, type ObjectSource } from './configuration';
 import { findFurnitureItem } from './furniture/furnitureLibrary';
 import { findObjectFinish } from './furniture/objectFinishes';
 import { fmt, OBJECT_EPS, placedBounds, sourceMesh, sourceName } from './objectGeometry';
@@ -52,36 +53,42 @@ function computeMeshProblem(mesh: TriangleMesh): string | null {
   return null;
 }
 
+/** A library object's furniture id as a parameter (a UI names it from its own messages); nothing for an imported model. */
+function furnitureOf(source: ObjectSource): { furnitureId: string } | Record<string, never> {
+  return source.kind === 'library' ? { furnitureId: source.item } : {};
+}
+
 /** Problems of one object (its own rules, then whether it lies inside the room). */
 export function objectProblems(config: Configuration, index: number): Problem[] {
   const o = config.objects[index];
   const at = `objects[${index}]`;
   const out: Problem[] = [];
-  const p = (code: string, path: string, message: string) => out.push({ code, path: `${at}${path}`, message });
+  // `key` and `params`: the sentence's own code and values, non-enumerable (docs/i18n.md).
+  const p = (code: string, path: string, message: string, key?: string, params?: Record<string, string | number>) => out.push(key ? keyed({ code, path: `${at}${path}`, message }, key, params) : { code, path: `${at}${path}`, message });
   const mesh = sourceMesh(config, o.source);
   if (!mesh) {
-    if (o.source.kind === 'library') p('unknown-furniture', '.source.item', `object ${o.id}: no furniture item '${o.source.item}' in the library`);
-    else p('unknown-mesh', '.source.mesh', `object ${o.id}: no imported mesh '${o.source.mesh}'`);
+    if (o.source.kind === 'library') p('unknown-furniture', '.source.item', `object ${o.id}: no furniture item '${o.source.item}' in the library`, 'objectUnknownFurniture', { id: o.id, item: o.source.item });
+    else p('unknown-mesh', '.source.mesh', `object ${o.id}: no imported mesh '${o.source.mesh}'`, 'objectUnknownMesh', { id: o.id, mesh: o.source.mesh });
     return out;
   }
   const item = o.source.kind === 'library' ? findFurnitureItem(o.source.item) : undefined;
-  if (item && item.mount !== o.placement.on) p('object-mount', '.placement.on', `a ${item.name} goes on ${item.mount === 'wall' ? 'a wall' : 'the floor'}`);
+  if (item && item.mount !== o.placement.on) p('object-mount', '.placement.on', `a ${item.name} goes on ${item.mount === 'wall' ? 'a wall' : 'the floor'}`, item.mount === 'wall' ? 'objectGoesOnWall' : 'objectGoesOnFloor', { name: item.name, furnitureId: item.id });
   const limits = OBJECT_SCALE_LIMITS[o.source.kind];
   if (!Number.isFinite(o.scale) || o.scale < limits.min || o.scale > limits.max) {
-    p('object-scale', '.scale', `scale must be between ${limits.min} and ${limits.max} for ${o.source.kind === 'library' ? 'library furniture' : 'imported models'} (got ${o.scale})`);
+    p('object-scale', '.scale', `scale must be between ${limits.min} and ${limits.max} for ${o.source.kind === 'library' ? 'library furniture' : 'imported models'} (got ${o.scale})`, o.source.kind === 'library' ? 'objectScaleFurniture' : 'objectScaleImported', { min: limits.min, max: limits.max, value: o.scale });
   }
-  if (!Number.isFinite(o.yaw) || o.yaw < 0 || o.yaw >= 360) p('object-yaw', '.yaw', `yaw must be in [0, 360) degrees (got ${o.yaw})`);
-  else if (o.placement.on === 'wall' && o.yaw !== 0) p('object-yaw', '.yaw', `an object on a wall faces into the room and does not turn (yaw must be 0, got ${o.yaw})`);
+  if (!Number.isFinite(o.yaw) || o.yaw < 0 || o.yaw >= 360) p('object-yaw', '.yaw', `yaw must be in [0, 360) degrees (got ${o.yaw})`, 'objectYawRange', { value: o.yaw });
+  else if (o.placement.on === 'wall' && o.yaw !== 0) p('object-yaw', '.yaw', `an object on a wall faces into the room and does not turn (yaw must be 0, got ${o.yaw})`, 'objectYawOnWall', { value: o.yaw });
   const pl = o.placement;
   if (pl.on === 'floor' ? ![pl.x, pl.z].every(Number.isFinite) : !(WALL_NAMES as readonly string[]).includes(pl.wall) || ![pl.u, pl.y].every(Number.isFinite)) {
-    p('object-position', '.placement', `object ${o.id} has a non-finite position or an unknown wall`);
+    p('object-position', '.placement', `object ${o.id} has a non-finite position or an unknown wall`, 'objectPosition', { id: o.id });
   }
   const materials = new Set(mesh.materials.map((m) => m.name));
   for (const [material, finish] of Object.entries(o.finishes)) {
     if (!materials.has(material)) {
-      p('unknown-material', `.finishes.${material}`, `${sourceName(config, o.source)} has no material '${material}' (it has: ${[...materials].join(', ')})`);
+      p('unknown-material', `.finishes.${material}`, `${sourceName(config, o.source)} has no material '${material}' (it has: ${[...materials].join(', ')})`, 'unknownMaterial', { name: sourceName(config, o.source), ...furnitureOf(o.source), material, materials: [...materials].join(', ') });
     } else if (typeof finish === 'string') {
-      if (!findObjectFinish(finish)) p('unknown-finish', `.finishes.${material}`, `unknown finish '${finish}'`);
+      if (!findObjectFinish(finish)) p('unknown-finish', `.finishes.${material}`, `unknown finish '${finish}'`, 'unknownFinish', { id: finish });
     } else {
       const problem = Array.isArray(finish) ? reflectanceProblem(finish) : 'a finish is a finish id or linear RGB [r, g, b]';
       if (problem) p('object-finish', `.finishes.${material}`, problem);
@@ -91,14 +98,22 @@ export function objectProblems(config: Configuration, index: number): Problem[] 
   const b = placedBounds(o, mesh, config.room);
   const { width: W, depth: D, height: H } = config.room;
   const name = `${sourceName(config, o.source)} ${o.id}`;
-  const through: string[] = [];
-  if (b.min[0] < -OBJECT_EPS) through.push('the west wall');
-  if (b.max[0] > W + OBJECT_EPS) through.push('the east wall');
-  if (b.min[2] < -OBJECT_EPS) through.push('the north wall');
-  if (b.max[2] > D + OBJECT_EPS) through.push('the south wall');
-  if (through.length > 0) p('object-outside', '.placement', `${name} passes through ${through.join(' and ')} (${fmt(W)} × ${fmt(D)} m room)`);
-  if (b.max[1] > H + OBJECT_EPS) p('object-outside', '.placement', `${name} reaches ${fmt(b.max[1])} m, above the ${fmt(H)} m ceiling`);
-  if (b.min[1] < -OBJECT_EPS) p('object-outside', '.placement', `${name} reaches ${fmt(-b.min[1])} m below the floor`);
+  // The object as parameters: its name (a UI names library furniture in its language), id and item.
+  const named = { name: sourceName(config, o.source), id: o.id, ...furnitureOf(o.source) };
+  const walls: string[] = [];
+  if (b.min[0] < -OBJECT_EPS) walls.push('west');
+  if (b.max[0] > W + OBJECT_EPS) walls.push('east');
+  if (b.min[2] < -OBJECT_EPS) walls.push('north');
+  if (b.max[2] > D + OBJECT_EPS) walls.push('south');
+  const through = walls.map((w) => `the ${w} wall`);
+  if (through.length > 0) {
+    const message = `${name} passes through ${through.join(' and ')} (${fmt(W)} × ${fmt(D)} m room)`;
+    const params = { ...named, wall: walls[0], width: Number(fmt(W)), depth: Number(fmt(D)) };
+    // An object passes at most two walls (one in x, one in z): one sentence each way.
+    p('object-outside', '.placement', message, walls.length > 1 ? 'objectThroughWalls' : 'objectThroughWall', walls.length > 1 ? { ...params, wall2: walls[1] } : params);
+  }
+  if (b.max[1] > H + OBJECT_EPS) p('object-outside', '.placement', `${name} reaches ${fmt(b.max[1])} m, above the ${fmt(H)} m ceiling`, 'objectAboveCeiling', { ...named, top: Number(fmt(b.max[1])), height: Number(fmt(H)) });
+  if (b.min[1] < -OBJECT_EPS) p('object-outside', '.placement', `${name} reaches ${fmt(-b.min[1])} m below the floor`, 'objectBelowFloor', { ...named, depth: Number(fmt(-b.min[1])) });
   return out;
 }
 
@@ -108,8 +123,8 @@ export function importedMeshProblems(config: Configuration): Problem[] {
   const used = new Set(config.objects.flatMap((o) => (o.source.kind === 'imported' ? [o.source.mesh] : [])));
   for (const [id, entry] of Object.entries(config.importedMeshes) as [string, ImportedMesh][]) {
     const problem = meshDataProblem(entry.mesh);
-    if (problem) out.push({ code: 'mesh-data', path: `importedMeshes.${id}.mesh`, message: `imported model '${entry.name}': ${problem}` });
-    else if (!used.has(id)) out.push({ code: 'unused-mesh', path: `importedMeshes.${id}`, message: `imported model '${entry.name}' (${id}) is used by no object` });
+    if (problem) out.push(keyed({ code: 'mesh-data', path: `importedMeshes.${id}.mesh`, message: `imported model '${entry.name}': ${problem}` }, 'importedModelBroken', { name: entry.name, problem }));
+    else if (!used.has(id)) out.push(keyed({ code: 'unused-mesh', path: `importedMeshes.${id}`, message: `imported model '${entry.name}' (${id}) is used by no object` }, 'unusedMesh', { name: entry.name, id }));
   }
   return out;
 }

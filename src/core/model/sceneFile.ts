@@ -9,7 +9,7 @@
  * one line of at most 200 characters.
  */
 import { z } from 'zod';
-import { InputError } from '../inputError';
+import { codedText, InputError, type CodedText, type Coding } from '../inputError';
 import { DISTRIBUTIONS, type Catalog } from './catalogSchema';
 import { plannedFeeds } from './feedLoads';
 import { DEFAULT_REFLECTANCE, MESH_UNITS, MOUNTINGS, WALL_NAMES, type Configuration, type LightSystem, type ImportedMesh, type RoomObject } from './configuration';
@@ -17,7 +17,8 @@ import { decodeMesh, encodeMesh } from './meshCodec';
 import { sourceName } from './objectGeometry';
 import { SURFACE_NAMES, type Reflectance, type SurfaceName } from './lightingScene';
 import { capReflectance } from './reflectance';
-import { describeIssues, excerpt, INPUT_LIMITS, jsonShapeProblem, oneLine, parseUntrustedJson, schemaFieldNames } from './untrustedJson';
+import { describeIssueCoded, excerpt, INPUT_LIMITS, jsonShapeIssue, oneLine, parseUntrustedJson, schemaFieldNames, unquoted } from './untrustedJson';
+import { problemText } from './coding';
 import { validate } from './validate';
 
 export const SCENE_FILE_FORMAT = 'luxbox-configuration';
@@ -42,9 +43,19 @@ export const MAX_SCENE_FILE_TEXT = INPUT_LIMITS.maxTextLength;
 
 export class SceneFileError extends InputError {
   override name = 'SceneFileError';
-  constructor(message: string) {
-    super(oneLine(message));
+  constructor(message: string, coded?: Coding) {
+    super(oneLine(message), coded);
   }
+}
+
+/** A field a later scene-file version added, in a file that says it is older (coded: docs/i18n.md). */
+function needsVersion(path: string, needed: number, version: number): SceneFileError {
+  return new SceneFileError(`${path}: needs "version": ${needed} (this file says version ${version})`, { code: 'fileNeedsVersion', params: { path, needed, version } });
+}
+
+/** An error of the file named `source`, quoting a coded sentence (the problem found at a path). */
+function fileProblem(source: string, detail: CodedText): SceneFileError {
+  return new SceneFileError(`${source}: ${detail.text}`, { code: 'fileProblem', params: { name: unquoted(source) }, detail });
 }
 
 /**
@@ -174,10 +185,10 @@ export const migrations: Record<number, (doc: Record<string, unknown>, catalog: 
   // content reads as is. A `dmx` field in a version 1 file was never written by luxbox: refused.
   1(doc) {
     const at = v1PatchField(doc.configuration);
-    if (at) throw new SceneFileError(`configuration.${at}: needs "version": 2 (this file says version 1)`);
+    if (at) throw needsVersion(`configuration.${at}`, 2, 1);
     const c = doc.configuration;
     for (const key of ['objects', 'importedMeshes']) {
-      if (typeof c === 'object' && c !== null && key in c) throw new SceneFileError(`configuration.${key}: needs "version": 3 (this file says version 1)`);
+      if (typeof c === 'object' && c !== null && key in c) throw needsVersion(`configuration.${key}`, 3, 1);
     }
     refuseV4Fields(doc, 1);
     refuseV5Fields(doc, 1);
@@ -190,7 +201,7 @@ export const migrations: Record<number, (doc: Record<string, unknown>, catalog: 
   2(doc) {
     const c = doc.configuration;
     for (const key of ['objects', 'importedMeshes']) {
-      if (typeof c === 'object' && c !== null && key in c) throw new SceneFileError(`configuration.${key}: needs "version": 3 (this file says version 2)`);
+      if (typeof c === 'object' && c !== null && key in c) throw needsVersion(`configuration.${key}`, 3, 2);
     }
     refuseV4Fields(doc, 2);
     refuseV5Fields(doc, 2);
@@ -267,11 +278,11 @@ function refuseV8Fields(doc: Record<string, unknown>, version: number): void {
   const list = (o: unknown, key: string): unknown[] => (typeof o === 'object' && o !== null && Array.isArray((o as Record<string, unknown>)[key]) ? ((o as Record<string, unknown>)[key] as unknown[]) : []);
   list(c, 'systems').forEach((sys, i) => {
     list(sys, 'joints').forEach((j, k) => {
-      if (typeof j === 'object' && j !== null && 'parent' in j) throw new SceneFileError(`configuration.systems[${i}].joints[${k}].parent: needs "version": 8 (this file says version ${version})`);
+      if (typeof j === 'object' && j !== null && 'parent' in j) throw needsVersion(`configuration.systems[${i}].joints[${k}].parent`, 8, version);
     });
     list(sys, 'feeds').forEach((f, k) => {
       const at = typeof f === 'object' && f !== null ? (f as Record<string, unknown>).at : undefined;
-      if (typeof at === 'object' && at !== null && 'end' in at) throw new SceneFileError(`configuration.systems[${i}].feeds[${k}].at.end: needs "version": 8 (this file says version ${version})`);
+      if (typeof at === 'object' && at !== null && 'end' in at) throw needsVersion(`configuration.systems[${i}].feeds[${k}].at.end`, 8, version);
     });
   });
 }
@@ -280,10 +291,10 @@ function refuseV8Fields(doc: Record<string, unknown>, version: number): void {
 function refuseV7Fields(doc: Record<string, unknown>, version: number): void {
   for (const key of ['on', 'filter', 'aim']) {
     const at = firstModuleWith(doc.configuration, key);
-    if (at) throw new SceneFileError(`configuration.${at}: needs "version": 7 (this file says version ${version})`);
+    if (at) throw needsVersion(`configuration.${at}`, 7, version);
   }
   const c = doc.configuration;
-  if (typeof c === 'object' && c !== null && 'lightScenes' in c) throw new SceneFileError(`configuration.lightScenes: needs "version": 7 (this file says version ${version})`);
+  if (typeof c === 'object' && c !== null && 'lightScenes' in c) throw needsVersion(`configuration.lightScenes`, 7, version);
 }
 
 /** Moved fixing points came with version 6: a file that says it is older and has them was not written by luxbox. */
@@ -291,14 +302,14 @@ function refuseV6Fields(doc: Record<string, unknown>, version: number): void {
   const c = doc.configuration;
   const systems = typeof c === 'object' && c !== null && Array.isArray((c as Record<string, unknown>).systems) ? ((c as Record<string, unknown>).systems as unknown[]) : [];
   systems.forEach((s, i) => {
-    if (typeof s === 'object' && s !== null && 'fixings' in s) throw new SceneFileError(`configuration.systems[${i}].fixings: needs "version": 6 (this file says version ${version})`);
+    if (typeof s === 'object' && s !== null && 'fixings' in s) throw needsVersion(`configuration.systems[${i}].fixings`, 6, version);
   });
 }
 
 /** Free positions came with version 5: a file that says it is older and has one was not written by luxbox. */
 function refuseV5Fields(doc: Record<string, unknown>, version: number): void {
   const at = firstModuleWith(doc.configuration, 'offset');
-  if (at) throw new SceneFileError(`configuration.${at}: needs "version": 5 (this file says version ${version})`);
+  if (at) throw needsVersion(`configuration.${at}`, 5, version);
 }
 
 /** Feeds and mounting came with version 4: a file that says it is older and has them was not written by luxbox. */
@@ -307,7 +318,7 @@ function refuseV4Fields(doc: Record<string, unknown>, version: number): void {
   const systems = typeof c === 'object' && c !== null && Array.isArray((c as Record<string, unknown>).systems) ? ((c as Record<string, unknown>).systems as unknown[]) : [];
   systems.forEach((s, i) => {
     for (const key of ['feeds', 'mounting']) {
-      if (typeof s === 'object' && s !== null && key in s) throw new SceneFileError(`configuration.systems[${i}].${key}: needs "version": 4 (this file says version ${version})`);
+      if (typeof s === 'object' && s !== null && key in s) throw needsVersion(`configuration.systems[${i}].${key}`, 4, version);
     }
   });
 }
@@ -338,7 +349,7 @@ export function migrateSceneFile(doc: Record<string, unknown>, catalog: Catalog)
   let d = doc;
   while (typeof d.version === 'number' && d.version < SCENE_FILE_VERSION) {
     const step = migrations[d.version];
-    if (!step) throw new SceneFileError(`scene file version ${d.version} is no longer supported`);
+    if (!step) throw new SceneFileError(`scene file version ${d.version} is no longer supported`, { code: 'fileVersionUnsupported', params: { version: d.version } });
     d = step(d, catalog);
   }
   return d;
@@ -365,7 +376,7 @@ export function serializeConfiguration(config: Configuration, catalog: Catalog, 
 
 /** Reads a scene file's text; throws SceneFileError (an InputError) saying what is wrong and where. */
 export function deserializeConfiguration(text: string, catalog: Catalog, source = 'scene file'): Configuration {
-  const data = parseUntrustedJson(text, source, (m) => new SceneFileError(m), {
+  const data = parseUntrustedJson(text, source, (m, coding) => new SceneFileError(m, coding), {
     tooLarge: (size) => `${source} is too large to be a luxbox configuration (${size}; at most ${MAX_SCENE_FILE_TEXT / 1e6} MB)`,
     invalidJson: (where, reason) => `${source} is not valid JSON (${where}${reason})`,
   });
@@ -374,30 +385,38 @@ export function deserializeConfiguration(text: string, catalog: Catalog, source 
 
 /** Like deserializeConfiguration, for already parsed JSON (e.g. from a host page). */
 export function configurationFromData(data: unknown, catalog: Catalog, source = 'scene file'): Configuration {
-  if (typeof data !== 'object' || data === null || Array.isArray(data)) throw new SceneFileError(`${source} is not a luxbox configuration (expected a JSON object)`);
+  // Every refusal carries a code and params (docs/i18n.md): `name` is the file as the user named it.
+  const name = unquoted(source);
+  if (typeof data !== 'object' || data === null || Array.isArray(data)) throw new SceneFileError(`${source} is not a luxbox configuration (expected a JSON object)`, { code: 'fileNotObject', params: { name } });
   // Depth and length first (a host page may hand over anything): nothing below may recurse into a hostile value.
-  const shape = jsonShapeProblem(data);
-  if (shape) throw new SceneFileError(`${source}: ${shape}`);
+  const shape = jsonShapeIssue(data);
+  if (shape) throw fileProblem(source, shape);
   const doc = data as Record<string, unknown>;
   if (doc.format !== SCENE_FILE_FORMAT) {
-    if ('luminaires' in doc) throw new SceneFileError(`${source} is a lighting scene (input of luxbox bake), not a configuration file`);
-    throw new SceneFileError(`${source} is not a luxbox configuration (format must be '${SCENE_FILE_FORMAT}')`);
+    if ('luminaires' in doc) throw new SceneFileError(`${source} is a lighting scene (input of luxbox bake), not a configuration file`, { code: 'fileIsLightingScene', params: { name } });
+    throw new SceneFileError(`${source} is not a luxbox configuration (format must be '${SCENE_FILE_FORMAT}')`, { code: 'fileWrongFormat', params: { name, format: SCENE_FILE_FORMAT } });
   }
-  if (typeof doc.version !== 'number' || !Number.isInteger(doc.version) || doc.version < 1) throw new SceneFileError(`${source}: version must be a positive integer`);
-  if (doc.version > SCENE_FILE_VERSION) throw new SceneFileError(`${source} was made by a newer luxbox (version ${doc.version}; this one reads up to ${SCENE_FILE_VERSION})`);
+  if (typeof doc.version !== 'number' || !Number.isInteger(doc.version) || doc.version < 1) throw new SceneFileError(`${source}: version must be a positive integer`, { code: 'fileVersionInvalid', params: { name } });
+  if (doc.version > SCENE_FILE_VERSION) throw new SceneFileError(`${source} was made by a newer luxbox (version ${doc.version}; this one reads up to ${SCENE_FILE_VERSION})`, { code: 'fileTooNew', params: { name, version: doc.version, max: SCENE_FILE_VERSION } });
   let migrated: Record<string, unknown>;
   try {
     migrated = migrateSceneFile(doc, catalog);
   } catch (e) {
-    if (e instanceof SceneFileError) throw new SceneFileError(`${source}: ${e.message}`);
+    if (e instanceof SceneFileError) throw fileProblem(source, codedText(e.message, e));
     throw e;
   }
   const r = fileSchema.safeParse(migrated);
-  if (!r.success) throw new SceneFileError(`${source}: ${describeIssues(r.error.issues, FIELD_NAMES)}`);
-  if (r.data.catalog !== catalog.id) throw new SceneFileError(`${source} was made for catalog ${excerpt(r.data.catalog).replace(/^"|"$/g, "'")}, but this configurator uses '${catalog.id}'`);
+  if (!r.success) throw fileProblem(source, describeIssueCoded(r.error.issues, FIELD_NAMES));
+  if (r.data.catalog !== catalog.id) {
+    const theirs = excerpt(r.data.catalog).replace(/^"|"$/g, "'");
+    throw new SceneFileError(`${source} was made for catalog ${theirs}, but this configurator uses '${catalog.id}'`, { code: 'fileOtherCatalog', params: { name, catalog: theirs.replace(/^'|'$/g, ''), ours: catalog.id } });
+  }
   const config = normaliseRoom(r.data.configuration, source);
   const problems = validate(config, catalog, { firstOnly: true });
-  if (problems.length > 0) throw new SceneFileError(`${source}: configuration.${problems[0].path}: ${problems[0].message}`);
+  if (problems.length > 0) {
+    const path = `configuration.${problems[0].path}`;
+    throw new SceneFileError(`${source}: ${path}: ${problems[0].message}`, { code: 'fileInvalidAt', params: { name, path }, detail: problemText(problems[0]) });
+  }
   return config;
 }
 
@@ -411,7 +430,7 @@ function normaliseRoom(data: SceneFile['configuration'], source: string): Config
   const importedMeshes: Record<string, ImportedMesh> = {};
   for (const [key, m] of Object.entries(data.importedMeshes ?? {})) {
     const mesh = decodeMesh(m);
-    if ('problem' in mesh) throw new SceneFileError(`${source}: configuration.importedMeshes.${key}.${mesh.field}: ${mesh.problem}`);
+    if ('problem' in mesh) throw new SceneFileError(`${source}: configuration.importedMeshes.${key}.${mesh.field}: ${mesh.problem}`, { code: 'fileMeshField', params: { name: unquoted(source), path: `configuration.importedMeshes.${key}.${mesh.field}`, problem: mesh.problem } });
     importedMeshes[key] = { name: m.name, units: m.units, mesh };
   }
   const { objects, importedMeshes: _encoded, ...rest } = data;
@@ -463,16 +482,16 @@ function encodeShareBytes(json: string): string {
 }
 
 export function decodeShareString(s: string, catalog: Catalog): Configuration {
-  if (s.length === 0) throw new SceneFileError('share link is empty');
-  if (s.length > MAX_SHARE_STRING) throw new SceneFileError(`share link is too long (${s.length} characters, at most ${MAX_SHARE_STRING})`);
-  if (!/^[A-Za-z0-9_-]+$/.test(s)) throw new SceneFileError('share link is damaged (characters outside base64url)');
-  if (s.length % 4 === 1) throw new SceneFileError('share link is damaged (truncated)');
+  if (s.length === 0) throw new SceneFileError('share link is empty', { code: 'shareLinkEmpty' });
+  if (s.length > MAX_SHARE_STRING) throw new SceneFileError(`share link is too long (${s.length} characters, at most ${MAX_SHARE_STRING})`, { code: 'shareLinkTooLong', params: { length: s.length, max: MAX_SHARE_STRING } });
+  if (!/^[A-Za-z0-9_-]+$/.test(s)) throw new SceneFileError('share link is damaged (characters outside base64url)', { code: 'shareLinkCharacters' });
+  if (s.length % 4 === 1) throw new SceneFileError('share link is damaged (truncated)', { code: 'shareLinkTruncated' });
   const bin = atob(s.replace(/-/g, '+').replace(/_/g, '/') + '='.repeat((4 - (s.length % 4)) % 4));
   let text: string;
   try {
     text = new TextDecoder('utf-8', { fatal: true }).decode(Uint8Array.from(bin, (c) => c.charCodeAt(0)));
   } catch {
-    throw new SceneFileError('share link is damaged (not UTF-8 text)');
+    throw new SceneFileError('share link is damaged (not UTF-8 text)', { code: 'shareLinkNotUtf8' });
   }
   return deserializeConfiguration(text, catalog, 'share link');
 }

@@ -8,6 +8,7 @@
  * Limits are documented in docs/scene-format.md and docs/model.md.
  */
 import type { z } from 'zod';
+import type { CodedText, Coding } from '../inputError';
 
 export const INPUT_LIMITS = {
   /** Largest scene, configuration or catalog text, in characters (UTF-16 code units ≈ bytes for JSON). */
@@ -128,12 +129,36 @@ export function schemaFieldNames(schema: z.ZodType): Set<string> {
  * missing), then the first issue in document order.
  */
 export function describeIssues(issues: readonly z.core.$ZodIssue[], known: Iterable<string>, pathPrefix: readonly PropertyKey[] = []): string {
+  return describeIssueCoded(issues, known, pathPrefix).text;
+}
+
+/**
+ * describeIssues with a code and params for a UI (docs/i18n.md): a missing field, a value of the
+ * wrong type, an unknown field (with its suggestion), a number out of range, a value not among
+ * those allowed; any other issue is `fieldInvalid` with zod's (or the schema's) English words.
+ */
+export function describeIssueCoded(issues: readonly z.core.$ZodIssue[], known: Iterable<string>, pathPrefix: readonly PropertyKey[] = []): CodedText {
   const unknown = issues.find((i) => i.code === 'unrecognized_keys');
   const issue = unknown ?? issues[0];
   const where = formatPath([...pathPrefix, ...issue.path]);
   const problem = issue.code === 'unrecognized_keys' ? unknownFieldMessage(String(issue.keys[0]), known) : issue.message;
   const path = issue.code === 'unrecognized_keys' ? formatPath([...pathPrefix, ...issue.path, String(issue.keys[0])]) : where;
-  return `${path || '(root)'}: ${problem}`;
+  const text = `${path || '(root)'}: ${problem}`;
+  const at = path || '(root)';
+  if (issue.code === 'unrecognized_keys') {
+    const field = excerpt(String(issue.keys[0])).replace(/^"|"$/g, '');
+    const hint = suggestField(String(issue.keys[0]), known);
+    return hint ? { text, code: 'fieldUnknownHint', params: { path: at, field, hint } } : { text, code: 'fieldUnknown', params: { path: at, field } };
+  }
+  if (issue.code === 'invalid_type') {
+    // zod 4 reports a missing field as an invalid type whose input is undefined.
+    if (issue.input === undefined) return { text, code: 'fieldMissing', params: { path: at, expected: String(issue.expected) } };
+    return { text, code: 'fieldWrongType', params: { path: at, expected: String(issue.expected) } };
+  }
+  if (issue.code === 'too_small' && typeof issue.minimum === 'number' && issue.origin === 'number') return { text, code: 'fieldTooSmall', params: { path: at, min: issue.minimum } };
+  if (issue.code === 'too_big' && typeof issue.maximum === 'number' && issue.origin === 'number') return { text, code: 'fieldTooBig', params: { path: at, max: issue.maximum } };
+  if (issue.code === 'invalid_value') return { text, code: 'fieldNotAllowed', params: { path: at, allowed: issue.values.map((v) => excerpt(v)).join(', ') } };
+  return { text, code: 'fieldInvalid', params: { path: at, problem } };
 }
 
 /**
@@ -141,6 +166,11 @@ export function describeIssues(issues: readonly z.core.$ZodIssue[], known: Itera
  * depth and array length. Returns `path: problem` or null.
  */
 export function jsonShapeProblem(value: unknown, limits: { maxDepth?: number; maxArrayLength?: number } = {}): string | null {
+  return jsonShapeIssue(value, limits)?.text ?? null;
+}
+
+/** jsonShapeProblem with a code and params for a UI (docs/i18n.md). */
+export function jsonShapeIssue(value: unknown, limits: { maxDepth?: number; maxArrayLength?: number } = {}): CodedText | null {
   const maxDepth = limits.maxDepth ?? INPUT_LIMITS.maxDepth;
   const maxArray = limits.maxArrayLength ?? INPUT_LIMITS.maxArrayLength;
   // Each stack entry keeps its parent's index so the path is rebuilt only for the report.
@@ -156,13 +186,13 @@ export function jsonShapeProblem(value: unknown, limits: { maxDepth?: number; ma
     const { value: v, depth } = nodes[n];
     if (typeof v !== 'object' || v === null) continue;
     const at = () => formatPath(pathOf(n)) || '(root)';
-    if (depth >= maxDepth) return `${at()}: nested deeper than ${maxDepth} levels`;
+    if (depth >= maxDepth) return { text: `${at()}: nested deeper than ${maxDepth} levels`, code: 'jsonTooDeep', params: { path: at(), max: maxDepth } };
     if (Array.isArray(v)) {
-      if (v.length > maxArray) return `${at()}: array of ${v.length} entries (at most ${maxArray})`;
+      if (v.length > maxArray) return { text: `${at()}: array of ${v.length} entries (at most ${maxArray})`, code: 'jsonArrayTooLong', params: { path: at(), count: v.length, max: maxArray } };
       for (let i = v.length - 1; i >= 0; i--) push(v[i], i, n, depth + 1);
     } else {
       const keys = Object.keys(v);
-      if (keys.length > maxArray) return `${at()}: object with ${keys.length} fields (at most ${maxArray})`;
+      if (keys.length > maxArray) return { text: `${at()}: object with ${keys.length} fields (at most ${maxArray})`, code: 'jsonTooManyFields', params: { path: at(), count: keys.length, max: maxArray } };
       for (let i = keys.length - 1; i >= 0; i--) push((v as Record<string, unknown>)[keys[i]], keys[i], n, depth + 1);
     }
   }
@@ -176,6 +206,12 @@ export function jsonShapeProblem(value: unknown, limits: { maxDepth?: number; ma
 
 /** Line and column (1-based) of a character offset. */
 export function lineColumn(text: string, offset: number): string {
+  const { line, column } = lineAndColumn(text, offset);
+  return `line ${line}, column ${column}`;
+}
+
+/** lineColumn as numbers, for a message's params. */
+export function lineAndColumn(text: string, offset: number): { line: number; column: number } {
   let line = 1;
   let last = -1;
   for (let i = 0; i < offset && i < text.length; i++) {
@@ -184,7 +220,7 @@ export function lineColumn(text: string, offset: number): string {
       last = i;
     }
   }
-  return `line ${line}, column ${offset - last}`;
+  return { line, column: offset - last };
 }
 
 /**
@@ -248,11 +284,14 @@ export interface JsonMessages {
  * array length. Returns the value, or throws `makeError(message)` with a
  * one-line message naming `source`.
  */
-export function parseUntrustedJson(text: string, source: string, makeError: (message: string) => Error, messages: JsonMessages = {}): unknown {
-  const fail = (message: string) => makeError(oneLine(message));
+export function parseUntrustedJson(text: string, source: string, makeError: (message: string, coding?: Coding) => Error, messages: JsonMessages = {}): unknown {
+  // Codes for a UI (docs/i18n.md): `name` is the source without the quotes a reader put round a file name.
+  const name = unquoted(source);
+  const fail = (message: string, coding?: Coding) => makeError(oneLine(message), coding);
   if (text.length > INPUT_LIMITS.maxTextLength) {
     const size = `${(text.length / 1e6).toFixed(1)} MB`;
-    throw fail(messages.tooLarge?.(size) ?? `${source}: file is too large (${size}; at most ${INPUT_LIMITS.maxTextLength / 1e6} MB)`);
+    const params = { name, size: Number((text.length / 1e6).toFixed(1)), max: INPUT_LIMITS.maxTextLength / 1e6 };
+    throw fail(messages.tooLarge?.(size) ?? `${source}: file is too large (${size}; at most ${INPUT_LIMITS.maxTextLength / 1e6} MB)`, { code: messages.tooLarge ? 'fileTooLargeForConfiguration' : 'fileTooLarge', params });
   }
   let value: unknown;
   try {
@@ -264,11 +303,24 @@ export function parseUntrustedJson(text: string, source: string, makeError: (mes
     // V8 appends a quoted excerpt of the text ('Unexpected token 'x', "xyz..." is not valid JSON'); keep only the reason.
     const full = message.replace(/ in JSON at position \d+.*$/s, '').replace(/, (?:\.\.\.)?".*"(?:\.\.\.)? is not valid JSON$/s, '');
     const reason = full.length > 80 ? `${full.slice(0, 80)}…` : full;
-    throw fail(messages.invalidJson?.(where, reason) ?? `${source}: ${where}invalid JSON (${reason})`);
+    // The parser's reason stays the engine's words (a parameter); the sentence and the line and column are coded.
+    const lc = position ? lineAndColumn(text, Number(position[1])) : null;
+    const scene = messages.invalidJson !== undefined;
+    const coding: Coding = lc ? { code: scene ? 'fileNotJsonAt' : 'fileInvalidJsonAt', params: { name, line: lc.line, column: lc.column, reason } } : { code: scene ? 'fileNotJson' : 'fileInvalidJson', params: { name, reason } };
+    throw fail(messages.invalidJson?.(where, reason) ?? `${source}: ${where}invalid JSON (${reason})`, coding);
   }
   const dup = duplicateKey(text);
-  if (dup) throw fail(`${source}: ${lineColumn(text, dup.offset)}: field ${excerpt(dup.key).replace(/^"|"$/g, "'")} appears twice in one object`);
-  const shape = jsonShapeProblem(value);
-  if (shape) throw fail(`${source}: ${shape}`);
+  if (dup) {
+    const lc = lineAndColumn(text, dup.offset);
+    throw fail(`${source}: ${lineColumn(text, dup.offset)}: field ${excerpt(dup.key).replace(/^"|"$/g, "'")} appears twice in one object`, { code: 'fileDuplicateField', params: { name, line: lc.line, column: lc.column, field: excerpt(dup.key).replace(/^"|"$/g, '') } });
+  }
+  const shape = jsonShapeIssue(value);
+  if (shape) throw fail(`${source}: ${shape.text}`, { code: 'fileProblem', params: { name }, detail: shape });
   return value;
+}
+
+/** A source as a message parameter: the file name without the quotes “…” a reader put round it. */
+export function unquoted(source: string): string {
+  const m = /^“(.*)”$/s.exec(source);
+  return m ? m[1] : source;
 }

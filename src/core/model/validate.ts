@@ -5,6 +5,8 @@
  * tests/core/model checks it.
  */
 import { aimProblem } from './aim';
+import { keyed, type Keyed } from './coding';
+import { feedAtParam } from './feedLoads';
 import { allowedTurn, findModuleType, onGrid, type Catalog } from './catalogSchema';
 import { fixingProblem } from './fixingRules';
 import { moduleFilterProblem } from './moduleFilter';
@@ -13,7 +15,7 @@ import { MOUNTINGS, ROOM_LIMITS, withinRoomLimits, type Configuration, type Ligh
 import { describeFeedAt, feedLabel, feedLoads, formatWatts, isOverloaded } from './feedLoads';
 import { photometricDrop } from './suspensionPoints';
 import { SURFACE_NAMES } from './lightingScene';
-import { firstPatchOverlap, formatPatchRange, patchRangeProblem } from './dmxPatch';
+import { firstPatchOverlap, formatPatchRange, patchRangeIssue } from './dmxPatch';
 import { allObjectProblems } from './objectProblems';
 import { lightSceneProblems } from './lightScenes';
 import { reflectanceProblem } from './reflectance';
@@ -210,13 +212,13 @@ export function roomProblems(config: Configuration): Problem[] {
     const v = config.room[key];
     if (!withinRoomLimits(key, v)) {
       const { min, max } = ROOM_LIMITS[key];
-      out.push({ code: 'room-dimension', path: `room.${key}`, message: `room ${key} must be between ${min} and ${max} m (got ${v})`, params: { dimension: key, min, max, value: v } });
+      out.push(keyed({ code: 'room-dimension', path: `room.${key}`, message: `room ${key} must be between ${min} and ${max} m (got ${v})`, params: { dimension: key, min, max, value: v } }, ROOM_KEYS[key]));
     }
   }
   const reflectance = (config.room.reflectance ?? {}) as Record<string, unknown>;
   for (const surface of SURFACE_NAMES) {
     const problem = reflectanceProblem(reflectance[surface]);
-    if (problem) out.push({ code: 'reflectance', path: `room.reflectance.${surface}`, message: problem });
+    if (problem) out.push(subProblem('reflectance', `room.reflectance.${surface}`, problem));
   }
   return out;
 }
@@ -225,10 +227,10 @@ export function idProblems(config: Configuration): Problem[] {
   const out: Problem[] = [];
   const seen = new Set<string>();
   const check = (id: string, path: string) => {
-    if (seen.has(id)) out.push({ code: 'duplicate-id', path, message: `id '${id}' is used twice` });
+    if (seen.has(id)) out.push(keyed({ code: 'duplicate-id', path, message: `id '${id}' is used twice` }, 'duplicateId', { id }));
     seen.add(id);
     const m = /^[a-z](\d+)$/.exec(id);
-    if (m && Number(m[1]) >= config.nextId) out.push({ code: 'id-counter', path, message: `id '${id}' is not below nextId ${config.nextId}` });
+    if (m && Number(m[1]) >= config.nextId) out.push(keyed({ code: 'id-counter', path, message: `id '${id}' is not below nextId ${config.nextId}` }, 'idCounter', { id, next: config.nextId }));
   };
   config.objects.forEach((o, i) => check(o.id, `objects[${i}].id`));
   (config.lightScenes ?? []).forEach((s, i) => check(s.id, `lightScenes[${i}].id`));
@@ -253,7 +255,7 @@ export function patchProblems(config: Configuration): Problem[] {
   const hit = firstPatchOverlap(config);
   if (!hit) return [];
   const { at, other } = hit;
-  return [{ code: 'dmx-overlap', path: `${at.path}.dmx`, message: `DMX ${formatPatchRange(at.patch)} of module ${at.module.id} overlaps module ${other.module.id} (${formatPatchRange(other.patch)})` }];
+  return [keyed({ code: 'dmx-overlap', path: `${at.path}.dmx`, message: `DMX ${formatPatchRange(at.patch)} of module ${at.module.id} overlaps module ${other.module.id} (${formatPatchRange(other.patch)})` }, 'dmxOverlap', { range: formatPatchRange(at.patch), id: at.module.id, other: other.module.id, otherRange: formatPatchRange(other.patch) })];
 }
 
 /**
@@ -352,30 +354,40 @@ function ownProblems(s: LightSystem, at: string, roomHeight: number, catalog: Ca
 function computeOwnProblems(s: LightSystem, roomHeight: number, catalog: Catalog): Problem[] {
   const at = '';
   const out: Problem[] = [];
-  const p = (code: string, path: string, message: string, params?: Record<string, string | number>) => out.push({ code, path: `${at}${path}`, message, ...(params ? { params } : {}) });
-  if (![s.x, s.z, s.rotation].every(Number.isFinite)) p('position', '', `system ${s.id} has a non-finite position or rotation`);
-  else if (s.rotation < 0 || s.rotation >= 360) p('rotation', '.rotation', `rotation must be in [0, 360) degrees (got ${s.rotation})`);
+  // `key`: the sentence's own code where the rule has several (docs/i18n.md); its params then travel non-enumerable.
+  const p = (code: string, path: string, message: string, params?: Record<string, string | number>, key?: string) =>
+    out.push(key ? keyed({ code, path: `${at}${path}`, message }, key, params) : { code, path: `${at}${path}`, message, ...(params ? { params } : {}) });
+  // A sub-rule's problem (fixing points, free positions, the tree, aim, filter, patch) with its own coding.
+  const sub = (code: string, path: string, found: { message: string } & Keyed) => p(code, path, found.message, found.params, found.key);
+  if (![s.x, s.z, s.rotation].every(Number.isFinite)) p('position', '', `system ${s.id} has a non-finite position or rotation`, { id: s.id }, 'systemPosition');
+  else if (s.rotation < 0 || s.rotation >= 360) p('rotation', '.rotation', `rotation must be in [0, 360) degrees (got ${s.rotation})`, { value: s.rotation }, 'rotationRange');
   const susp = catalog.suspension;
   const inRange = Number.isFinite(s.suspension) && s.suspension >= susp.min - EPS && s.suspension <= susp.max + EPS;
   if (!inRange) p('suspension-range', '.suspension', `suspension must be between ${susp.min} and ${susp.max} m (got ${s.suspension})`, { min: susp.min, max: susp.max, value: s.suspension });
-  if (!(MOUNTINGS as readonly string[]).includes(s.mounting)) p('mounting', '.mounting', `mounting must be ${MOUNTINGS.join(' or ')} (got ${String(s.mounting)})`);
+  if (!(MOUNTINGS as readonly string[]).includes(s.mounting)) p('mounting', '.mounting', `mounting must be ${MOUNTINGS.join(' or ')} (got ${String(s.mounting)})`, { value: String(s.mounting) }, 'mountingUnknown');
   else if ((inRange || s.mounting === 'surface') && roomHeight - photometricDrop(s, catalog) < susp.minHeightAboveFloor - EPS) {
     // Head room from where the modules really are: the suspension, or the surface mount's drop below the ceiling.
     const hang = fmt(roomHeight - photometricDrop(s, catalog));
     const surface = s.mounting === 'surface';
-    p('suspension-floor', surface ? '.mounting' : '.suspension', `modules would hang at ${hang} m${surface ? ' on the ceiling' : ''}, below the minimum ${susp.minHeightAboveFloor} m above the floor`, { hang: Number(hang), min: susp.minHeightAboveFloor });
+    const message = `modules would hang at ${hang} m${surface ? ' on the ceiling' : ''}, below the minimum ${susp.minHeightAboveFloor} m above the floor`;
+    // The pendant wording keeps the rule's code as its key (coded before the surface mount's own).
+    if (surface) p('suspension-floor', '.mounting', message, { hang: Number(hang), min: susp.minHeightAboveFloor }, 'suspensionFloorSurface');
+    else p('suspension-floor', '.suspension', message, { hang: Number(hang), min: susp.minHeightAboveFloor });
   }
-  if (s.rails.length === 0) p('no-rails', '.rails', `system ${s.id} has no rails`);
-  if (s.joints.length !== Math.max(0, s.rails.length - 1)) p('joint-count', '.joints', `${s.rails.length} rails need ${Math.max(0, s.rails.length - 1)} joints, found ${s.joints.length}`);
+  if (s.rails.length === 0) p('no-rails', '.rails', `system ${s.id} has no rails`, { id: s.id }, 'noRails');
+  if (s.joints.length !== Math.max(0, s.rails.length - 1)) p('joint-count', '.joints', `${s.rails.length} rails need ${Math.max(0, s.rails.length - 1)} joints, found ${s.joints.length}`, { rails: s.rails.length, needed: Math.max(0, s.rails.length - 1), found: s.joints.length }, 'jointCount');
   s.joints.forEach((j, i) => {
     const con = catalog.connectors.find((c) => c.id === j.connector);
-    if (!con) p('unknown-connector', `.joints[${i}].connector`, `unknown connector '${j.connector}'`);
-    else if (!allowedTurn(con, j.turn)) p('bad-turn', `.joints[${i}].turn`, con.flex ? `connector '${con.id}' turns by a multiple of ${con.flex.step}° within ±${con.flex.maxAngle}°, not ${j.turn}°` : `connector '${con.id}' turns by ±${con.angle}°, not ${j.turn}°`);
+    if (!con) p('unknown-connector', `.joints[${i}].connector`, `unknown connector '${j.connector}'`, { id: j.connector }, 'unknownConnector');
+    else if (!allowedTurn(con, j.turn)) {
+      if (con.flex) p('bad-turn', `.joints[${i}].turn`, `connector '${con.id}' turns by a multiple of ${con.flex.step}° within ±${con.flex.maxAngle}°, not ${j.turn}°`, { id: con.id, connectorId: con.id, step: con.flex.step, max: con.flex.maxAngle, turn: j.turn }, 'badTurnFlex');
+      else p('bad-turn', `.joints[${i}].turn`, `connector '${con.id}' turns by ±${con.angle}°, not ${j.turn}°`, { id: con.id, connectorId: con.id, angle: con.angle, turn: j.turn }, 'badTurn');
+    }
   });
   if (out.length === 0) {
     // The tree (railTree.ts): parents before children, one connector per node, its ports.
     const t = treeProblem(s, catalog);
-    if (t) p(t.code, `.joints[${t.joint}].${t.field}`, t.message);
+    if (t) sub(t.code, `.joints[${t.joint}].${t.field}`, t);
   }
   const rail = catalog.rail;
   s.rails.forEach((r, k) => {
@@ -389,21 +401,22 @@ function computeOwnProblems(s: LightSystem, roomHeight: number, catalog: Catalog
       const type = catalog.moduleTypes.find((t) => t.id === m.type);
       if (!type) {
         refsOk = false;
-        p('unknown-module-type', `${mp}.type`, `unknown module type '${m.type}'`);
+        p('unknown-module-type', `${mp}.type`, `unknown module type '${m.type}'`, { id: m.type }, 'unknownModuleType');
         return;
       }
-      if (!type.beams.some((b) => b.id === m.beam)) p('unknown-beam', `${mp}.beam`, `${type.name} has no beam '${m.beam}'`);
-      if (!type.ccts.includes(m.cct)) p('cct', `${mp}.cct`, `${type.name} is not available in ${m.cct} K (offered: ${type.ccts.join(', ')} K)`);
-      if (!Number.isFinite(m.dimming) || m.dimming < 0 || m.dimming > 1) p('dimming', `${mp}.dimming`, `dimming must be between 0 and 1 (got ${m.dimming})`);
+      const named = { name: type.name, typeId: type.id };
+      if (!type.beams.some((b) => b.id === m.beam)) p('unknown-beam', `${mp}.beam`, `${type.name} has no beam '${m.beam}'`, { ...named, beam: m.beam }, 'unknownBeam');
+      if (!type.ccts.includes(m.cct)) p('cct', `${mp}.cct`, `${type.name} is not available in ${m.cct} K (offered: ${type.ccts.join(', ')} K)`, { ...named, cct: String(m.cct), ccts: type.ccts.join(', ') }, 'cctNotOffered');
+      if (!Number.isFinite(m.dimming) || m.dimming < 0 || m.dimming > 1) p('dimming', `${mp}.dimming`, `dimming must be between 0 and 1 (got ${m.dimming})`, { value: m.dimming }, 'dimmingRange');
       const filter = m.filter !== undefined ? moduleFilterProblem(type, m.filter, catalog) : null;
-      if (filter) p(filter.code, `${mp}.filter`, filter.message);
+      if (filter) sub(filter.code, `${mp}.filter`, filter);
       const aim = m.aim !== undefined ? aimProblem(m.aim, type) : null;
-      if (aim) p(aim.field === 'aim' ? 'aim-fixed' : 'aim-range', `${mp}.${aim.field}`, aim.message);
-      const patch = m.dmx ? patchRangeProblem(m.dmx, type) : null;
-      if (patch) p('dmx-range', `${mp}.dmx`, patch);
+      if (aim) sub(aim.field === 'aim' ? 'aim-fixed' : 'aim-range', `${mp}.${aim.field}`, aim);
+      const patch = m.dmx ? patchRangeIssue(m.dmx, type) : null;
+      if (patch) sub('dmx-range', `${mp}.dmx`, patch);
     });
     const free = refsOk && Number.isFinite(r.length) && isFreeRail(r) ? freeRailProblem(r, r.modules.map((m) => findModuleType(catalog, m.type).length)) : null;
-    if (free) p(free.code, `${rp}.modules[${free.index}].offset`, free.message);
+    if (free) sub(free.code, `${rp}.modules[${free.index}].offset`, free);
     else if (refsOk && Number.isFinite(r.length) && !railModuleOffsets(r, catalog)) {
       p('modules-do-not-fit', `${rp}.modules`, `the modules of rail ${r.id} do not fit its ${fmt(r.length)} m with distribution '${r.distribution}'`, { rail: r.id, length: Number(fmt(r.length)), distribution: r.distribution });
     }
@@ -411,42 +424,51 @@ function computeOwnProblems(s: LightSystem, roomHeight: number, catalog: Catalog
   feedProblems(s, catalog, p);
   if (out.length === 0) {
     for (const l of feedLoads(s, catalog)) {
-      if (isOverloaded(l)) p('feed-overload', `.feeds[${l.index}]`, `${feedLabel(l.index)} carries ${formatWatts(l.load)} W, more than its ${formatWatts(l.capacity)} W driver (${l.driver.name})`);
+      if (isOverloaded(l)) p('feed-overload', `.feeds[${l.index}]`, `${feedLabel(l.index)} carries ${formatWatts(l.load)} W, more than its ${formatWatts(l.capacity)} W driver (${l.driver.name})`, { n: l.index + 1, load: Number(formatWatts(l.load)), capacity: Number(formatWatts(l.capacity)), driver: l.driver.name, driverId: l.driver.id }, 'feedCarries');
     }
   }
   // Moved fixing points (fixingRules.ts), once the chain itself is sound.
   if (out.length === 0 && s.fixings !== undefined) {
-    const f = Array.isArray(s.fixings) ? fixingProblem(s, s.fixings, catalog) : { code: 'fixing-order', index: 0, message: 'fixings must be a list of chain coordinates' };
-    if (f) p(f.code, `.fixings[${f.index}]`, f.message);
+    const f = Array.isArray(s.fixings) ? fixingProblem(s, s.fixings, catalog) : keyed({ code: 'fixing-order', index: 0, message: 'fixings must be a list of chain coordinates' }, 'fixingsNotList');
+    if (f) sub(f.code, `.fixings[${f.index}]`, f);
   }
   return out;
 }
 
 /** A system's feeds: at least one, known drivers, positions the catalog allows on this chain, no two at one spot. */
-function feedProblems(s: LightSystem, catalog: Catalog, p: (code: string, path: string, message: string) => void): void {
-  if (s.feeds.length === 0) p('no-feed', '.feeds', `system ${s.id} has no power feed`);
+function feedProblems(s: LightSystem, catalog: Catalog, p: (code: string, path: string, message: string, params?: Record<string, string | number>, key?: string) => void): void {
+  if (s.feeds.length === 0) p('no-feed', '.feeds', `system ${s.id} has no power feed`, { id: s.id }, 'noFeed');
   // First feed at each position, keyed 'start' / 'end' / 'joint:k': one pass, even for a hostile file's thousands of feeds.
   const firstJoint = firstNodeJoints(s);
   const first = new Map<string, number>();
   s.feeds.forEach((f, k) => {
     const fp = `.feeds[${k}]`;
-    if (!catalog.drivers.some((d) => d.id === f.driver)) p('unknown-driver', `${fp}.driver`, `unknown driver '${f.driver}'`);
+    if (!catalog.drivers.some((d) => d.id === f.driver)) p('unknown-driver', `${fp}.driver`, `unknown driver '${f.driver}'`, { id: f.driver }, 'unknownDriver');
     const at = f.at;
     if (typeof at === 'object' && 'joint' in at) {
-      if (!catalog.feed.positions.includes('joints')) p('feed-position', `${fp}.at`, `${catalog.name} feeds only at the chain ends, not at connectors`);
-      else if (!Number.isInteger(at.joint) || at.joint < 0 || at.joint >= s.joints.length) p('feed-position', `${fp}.at`, `${feedLabel(k)} is at connector ${at.joint + 1}, but the chain has ${s.joints.length} connector${s.joints.length === 1 ? '' : 's'}`);
+      if (!catalog.feed.positions.includes('joints')) p('feed-position', `${fp}.at`, `${catalog.name} feeds only at the chain ends, not at connectors`, { catalog: catalog.name }, 'feedOnlyAtEnds');
+      else if (!Number.isInteger(at.joint) || at.joint < 0 || at.joint >= s.joints.length) p('feed-position', `${fp}.at`, `${feedLabel(k)} is at connector ${at.joint + 1}, but the chain has ${s.joints.length} connector${s.joints.length === 1 ? '' : 's'}`, { n: k + 1, joint: at.joint + 1, count: s.joints.length }, 'feedAtMissingConnector');
     } else if (typeof at === 'object' && 'end' in at) {
-      if (!Number.isInteger(at.end) || at.end < 0 || at.end >= s.rails.length) p('feed-position', `${fp}.at`, `${feedLabel(k)} is at the end of rail ${at.end + 1}, but the system has ${s.rails.length} rail${s.rails.length === 1 ? '' : 's'}`);
-      else if (firstJoint[at.end] !== undefined) p('feed-position', `${fp}.at`, `${feedLabel(k)} is at the end of rail ${at.end + 1}, but a connector sits there (feed at the connector instead)`);
-    } else if (at !== 'start' && at !== 'end') p('feed-position', `${fp}.at`, `a feed sits at 'start', 'end', { joint: k } or { end: i } (got ${String(at)})`);
+      if (!Number.isInteger(at.end) || at.end < 0 || at.end >= s.rails.length) p('feed-position', `${fp}.at`, `${feedLabel(k)} is at the end of rail ${at.end + 1}, but the system has ${s.rails.length} rail${s.rails.length === 1 ? '' : 's'}`, { n: k + 1, rail: at.end + 1, count: s.rails.length }, 'feedAtMissingRail');
+      else if (firstJoint[at.end] !== undefined) p('feed-position', `${fp}.at`, `${feedLabel(k)} is at the end of rail ${at.end + 1}, but a connector sits there (feed at the connector instead)`, { n: k + 1, rail: at.end + 1 }, 'feedAtRailEndConnector');
+    } else if (at !== 'start' && at !== 'end') p('feed-position', `${fp}.at`, `a feed sits at 'start', 'end', { joint: k } or { end: i } (got ${String(at)})`, { value: String(at) }, 'feedPositionUnknown');
     // One key per physical position: the joints of one node share it, and 'end' is the last rail's end.
     const key = typeof at !== 'object' ? (at === 'end' ? `end:${s.rails.length - 1}` : String(at)) : 'joint' in at ? `node:${s.joints[at.joint] ? jointParent(s.joints[at.joint], at.joint) : `?${at.joint}`}` : `end:${at.end}`;
     const twin = first.get(key);
     if (twin === undefined) first.set(key, k);
-    else p('feed-duplicate', `${fp}.at`, `${feedLabel(twin)} and ${feedLabel(k)} both sit at ${describeFeedAt(f.at)}`);
+    else p('feed-duplicate', `${fp}.at`, `${feedLabel(twin)} and ${feedLabel(k)} both sit at ${describeFeedAt(f.at)}`, { n: twin + 1, other: k + 1, feedAt: feedAtParam(f.at) }, 'feedsBothAt');
   });
 }
 
 function fmt(x: number): string {
   return String(Math.round(x * 1000) / 1000);
+}
+
+/** The sentence key of each room dimension's range problem. */
+const ROOM_KEYS = { width: 'roomWidthRange', depth: 'roomDepthRange', height: 'roomHeightRange' } as const;
+
+/** A problem whose sentence a sub-rule wrote, with that rule's coding (reflectance.ts …). */
+function subProblem(code: string, path: string, found: string | ({ message: string } & Keyed)): Problem {
+  if (typeof found === 'string') return { code, path, message: found };
+  return found.key ? keyed({ code, path, message: found.message }, found.key, found.params) : { code, path, message: found.message };
 }

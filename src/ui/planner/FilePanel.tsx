@@ -9,6 +9,7 @@ import { downloadText } from './downloadText';
 import { readSceneFile } from './readSceneFile';
 import { sceneFileName } from './sceneFileName';
 import { useI18n } from '../i18n/useI18n';
+import { noticeText } from '../i18n/noticeText';
 
 export interface FilePanelProps {
   store: ConfiguratorStore;
@@ -25,7 +26,7 @@ export interface FilePanelProps {
  * long message about a file can be read in full).
  */
 export function FilePanel({ store, ui, loadPhotometry }: FilePanelProps) {
-  const { t } = useI18n();
+  const { t, language } = useI18n();
   const save = () => {
     const { config, catalog } = store.getState();
     const name = sceneFileName(config);
@@ -53,11 +54,12 @@ export function FilePanel({ store, ui, loadPhotometry }: FilePanelProps) {
     try {
       const config = await readSceneFile(file, store.getState().catalog);
       const r = store.getState().load(config);
-      if (!r.ok) throw new InputError(t('files.cannotOpen', { name: file.name, problem: r.reason }));
+      // The refusal and the file's own errors carry codes (docs/i18n.md): shown in the UI language.
+      if (!r.ok) throw new InputError(t('files.cannotOpen', { name: file.name, problem: noticeText(t, language, store.getState().catalog, r) }));
       ui.setState({ banner: null, optionsOpen: false, panelOpen: false });
       showStatus(ui, t('files.opened', { name: file.name }));
     } catch (err) {
-      const text = err instanceof InputError ? err.message : t('files.couldNotOpen', { name: file.name, problem: err instanceof Error ? err.message : String(err) });
+      const text = err instanceof InputError ? (err.code ? noticeText(t, language, store.getState().catalog, err) : err.message) : t('files.couldNotOpen', { name: file.name, problem: err instanceof Error ? err.message : String(err) });
       ui.setState({ banner: { text, canRestore: false } });
     }
   };

@@ -24,13 +24,17 @@ export interface NamedTextFile {
 export async function readSceneFile(file: NamedTextFile, catalog: Catalog): Promise<Configuration> {
   const source = `“${file.name}”`;
   if (file.size > MAX_SCENE_FILE_BYTES) {
-    throw new SceneFileError(`${source} is too large to be a luxbox configuration (${(file.size / 1e6).toFixed(1)} MB; at most ${MAX_SCENE_FILE_BYTES / 1e6} MB)`);
+    throw new SceneFileError(`${source} is too large to be a luxbox configuration (${(file.size / 1e6).toFixed(1)} MB; at most ${MAX_SCENE_FILE_BYTES / 1e6} MB)`, {
+      code: 'fileTooLargeForConfiguration',
+      params: { name: file.name, size: Number((file.size / 1e6).toFixed(1)), max: MAX_SCENE_FILE_BYTES / 1e6 },
+    });
   }
   let text: string;
   try {
     text = await file.text();
   } catch (e) {
-    throw new SceneFileError(`${source} could not be read (${e instanceof Error ? e.message : String(e)})`);
+    const problem = e instanceof Error ? e.message : String(e);
+    throw new SceneFileError(`${source} could not be read (${problem})`, { code: 'fileUnreadable', params: { name: file.name, problem } });
   }
   return deserializeConfiguration(text, catalog, source);
 }

@@ -1,3 +1,5 @@
+import { codePhotometryWarning } from '../../core/photometry/photometryCodes';
+import { translateCoded } from '../i18n/translateCoded';
 import { useI18n } from '../i18n/useI18n';
 /** A photometric file and its warnings (photometryWarnings: one line each, without the file name). */
 export interface PhotometryNote {
@@ -21,7 +23,9 @@ function breakable(name: string): React.ReactNode[] {
  * `collapsed`: one summary line ("⚠ Photometric data: 2 warnings") that opens to the text.
  */
 export function PhotometryWarnings({ notes, testId = 'photometry-warnings', collapsed = false }: { notes: readonly PhotometryNote[]; testId?: string; collapsed?: boolean }) {
-  const { t } = useI18n();
+  const { t, language } = useI18n();
+  // English shows the reader's own sentence (as the file report and `luxbox ies info` write it); other languages word its code.
+  const say = (w: string) => (language === 'en' ? w : translateCoded(t, 'photometry', codePhotometryWarning(w)));
   const shown = notes.filter((n) => n.warnings.length > 0);
   if (shown.length === 0) return null;
   const body = shown.map((n) => (
@@ -32,7 +36,7 @@ export function PhotometryWarnings({ notes, testId = 'photometry-warnings', coll
       </p>
       <ul>
         {n.warnings.map((w) => (
-          <li key={w}>{w}</li>
+          <li key={w}>{say(w)}</li>
         ))}
       </ul>
     </div>

@@ -1,4 +1,6 @@
+import { codePhotometryError } from '../../core/photometry/photometryCodes';
 import type { MessageKey, Translate } from '../i18n/messageTypes';
+import { translateCoded } from '../i18n/translateCoded';
 import './registerView3dEnglish';
 
 /**
@@ -14,6 +16,12 @@ const KNOWN: readonly [prefix: string, key: MessageKey][] = [
 ];
 
 export function viewerErrorText(t: Translate, english: string): string {
-  for (const [prefix, key] of KNOWN) if (english.startsWith(prefix)) return t(key, { problem: english.slice(prefix.length) });
+  for (const [prefix, key] of KNOWN) {
+    if (!english.startsWith(prefix)) continue;
+    const detail = english.slice(prefix.length);
+    // A photometric file's error names the file and line and says what is wrong: coded by its sentence (photometryCodes.ts).
+    const coded = key === 'view3d.photometryFailed' ? codePhotometryError(detail) : null;
+    return t(key, { problem: coded ? translateCoded(t, 'photometry', coded) : detail });
+  }
   return english;
 }

@@ -15,7 +15,7 @@ import { findModule, updateModule } from './lookup';
 
 function adjustableType(state: Configuration, moduleId: string, catalog: Catalog): ModuleTypeSpec & { adjustable: NonNullable<ModuleTypeSpec['adjustable']> } {
   const type = findModuleType(catalog, findModule(state, moduleId).module.type);
-  if (!type.adjustable) throw new InputError(`${type.name} is fixed: it cannot be aimed`);
+  if (!type.adjustable) throw new InputError(`${type.name} is fixed: it cannot be aimed`, { code: 'aimFixed', params: { name: type.name, typeId: type.id } });
   return type as ModuleTypeSpec & { adjustable: NonNullable<ModuleTypeSpec['adjustable']> };
 }
 
@@ -41,7 +41,7 @@ const aimAtParams = z.object({ moduleId: z.string(), point });
 export function modulePosition(state: Configuration, moduleId: string, catalog: Catalog): [number, number, number] {
   const { system } = findModule(state, moduleId);
   const placement = modulePlacements(system, catalog).find((q) => q.moduleId === moduleId);
-  if (!placement) throw new InputError(`module ${moduleId} has no place on its rail now`);
+  if (!placement) throw new InputError(`module ${moduleId} has no place on its rail now`, { code: 'moduleNoPlace', params: { id: moduleId } });
   return [placement.centre[0], moduleHeight(system, state.room, catalog), placement.centre[1]];
 }
 
@@ -58,7 +58,7 @@ export function aimAtPoint(state: Configuration, moduleId: string, target: reado
   const placement = modulePlacements(system, catalog).find((q) => q.moduleId === moduleId)!;
   const from = modulePosition(state, moduleId, catalog);
   const raw = aimToward(from, [target[0], target[1], target[2]], placement.heading, module.aim?.rotation ?? 0);
-  if (!raw) throw new InputError(`the point is the module's own position: no direction to aim at`);
+  if (!raw) throw new InputError(`the point is the module's own position: no direction to aim at`, { code: 'aimAtOwnPosition' });
   return clampAim(raw, type.adjustable);
 }
 

@@ -7,7 +7,7 @@
  */
 import { z } from 'zod';
 import { InputError } from '../../inputError';
-import type { ActionDefinition } from '../action';
+import { refuse, type ActionDefinition, type CodedReason, type Refusal } from '../action';
 import { allowedTurn, connectorPorts, findConnector, type Catalog } from '../catalogSchema';
 import type { Configuration, FeedAt, Rail } from '../configuration';
 import { keepFixingsIfValid } from '../fixingRules';
@@ -33,7 +33,7 @@ function branchConnector(state: Configuration, p: BranchParams): string {
   const { system, railIndex } = findRail(state, p.railId);
   const at = nodeJoints(system, railIndex);
   if (at.length > 0) return system.joints[at[0]].connector;
-  throw new InputError('a branch at a free rail end needs a connector');
+  throw new InputError('a branch at a free rail end needs a connector', { code: 'branchNeedsConnector' });
 }
 
 /**
@@ -50,7 +50,8 @@ export const addBranch: ActionDefinition<BranchParams> = {
     const { system, railIndex } = findRail(state, p.railId);
     const at = nodeJoints(system, railIndex);
     if (at.length > 0 && p.connector !== undefined && p.connector !== system.joints[at[0]].connector) {
-      return { ok: false, reason: `a connector already sits at the end of this rail ('${system.joints[at[0]].connector}'); change it first` };
+      const connector = system.joints[at[0]].connector;
+      return refuse(`a connector already sits at the end of this rail ('${connector}'); change it first`, { code: 'connectorAlreadyThere', params: { connector, connectorId: connector } });
     }
     return true;
   },
@@ -74,9 +75,14 @@ export const addBranch: ActionDefinition<BranchParams> = {
   },
   explain(problem, state, p, catalog) {
     const con = findConnector(catalog, branchConnector(state, p));
-    if (problem.code === 'bad-turn') return connectorPorts(con) > 2 ? `the ${con.name} takes branches straight on or at ±${con.angle}°` : con.flex ? `the ${con.name} turns by a multiple of ${con.flex.step}° within ±${con.flex.maxAngle}°` : con.angle === 0 ? `the ${con.name} does not turn` : `the ${con.name} turns by ±${con.angle}°`;
-    if (problem.code === 'node-ports') return `the ${con.name} at the end of this rail has no free port; change it to one with more ports`;
-    if (problem.code === 'node-port-taken') return `the ${con.name}'s port at ${p.turn}° is taken`;
+    const named = { name: con.name, connectorId: con.id };
+    if (problem.code === 'bad-turn') {
+      if (connectorPorts(con) > 2) return { reason: `the ${con.name} takes branches straight on or at ±${con.angle}°`, code: 'branchTurnNode', params: { ...named, angle: con.angle } };
+      if (con.flex) return { reason: `the ${con.name} turns by a multiple of ${con.flex.step}° within ±${con.flex.maxAngle}°`, code: 'connectorTurnFlex', params: { ...named, step: con.flex.step, max: con.flex.maxAngle } };
+      return con.angle === 0 ? { reason: `the ${con.name} does not turn`, code: 'branchNoTurn', params: named } : { reason: `the ${con.name} turns by ±${con.angle}°`, code: 'branchTurnAngle', params: { ...named, angle: con.angle } };
+    }
+    if (problem.code === 'node-ports') return { reason: `the ${con.name} at the end of this rail has no free port; change it to one with more ports`, code: 'nodeNoFreePort', params: named };
+    if (problem.code === 'node-port-taken') return { reason: `the ${con.name}'s port at ${p.turn}° is taken`, code: 'nodePortTaken', params: { ...named, turn: p.turn } };
     return branchReason(problem);
   },
 };
@@ -100,14 +106,14 @@ export const setConnector: ActionDefinition<z.infer<typeof connectorParams>> = {
   isEnabled(state, p, catalog) {
     const { system, railIndex } = findRail(state, p.railId);
     const at = nodeJoints(system, railIndex);
-    if (at.length === 0) return { ok: false, reason: 'no connector sits at the end of this rail; add a rail or a branch there' };
+    if (at.length === 0) return refuse('no connector sits at the end of this rail; add a rail or a branch there', { code: 'noConnectorAtEnd' });
     const con = findConnector(catalog, p.connector);
     return connectorFits(con, at.map((k) => system.joints[k].turn), catalog) ?? true;
   },
   perform(state, p, catalog) {
     const { systemIndex: si, system, railIndex } = findRail(state, p.railId);
     findConnector(catalog, p.connector);
-    if (nodeJoints(system, railIndex).length === 0) throw new InputError('no connector sits at the end of this rail; add a rail or a branch there');
+    if (nodeJoints(system, railIndex).length === 0) throw new InputError('no connector sits at the end of this rail; add a rail or a branch there', { code: 'noConnectorAtEnd' });
     const joints = system.joints.map((j, k) => (jointParent(j, k) === railIndex ? { ...j, connector: p.connector } : j));
     // The connector's span can change: moved fixing points stay only when they keep the rules.
     return replaceSystem(state, si, keepFixingsIfValid({ ...system, joints }, catalog));
@@ -118,21 +124,24 @@ export const setConnector: ActionDefinition<z.infer<typeof connectorParams>> = {
 };
 
 /** Why a connector cannot hold these branches (their turns), or null when it can. */
-export function connectorFits(con: ReturnType<typeof findConnector>, turns: readonly number[], _catalog: Catalog): { ok: false; reason: string } | null {
+export function connectorFits(con: ReturnType<typeof findConnector>, turns: readonly number[], _catalog: Catalog): Refusal | null {
   const ports = connectorPorts(con);
-  if (turns.length > ports - 1) return { ok: false, reason: `the ${con.name} joins ${ports} rail ends; ${turns.length} branches leave this connector` };
+  const named = { name: con.name, connectorId: con.id };
+  if (turns.length > ports - 1) return refuse(`the ${con.name} joins ${ports} rail ends; ${turns.length} branches leave this connector`, { code: 'connectorTooFewPorts', params: { ...named, ports, count: turns.length } });
   const bad = turns.find((t) => !allowedTurn(con, t));
   if (bad !== undefined) {
+    // One code per wording of the range, so a UI words the whole sentence.
     const range = ports > 2 ? `straight on or ±${con.angle}°` : con.flex ? `within ±${con.flex.maxAngle}° in ${con.flex.step}° steps` : con.angle === 0 ? 'straight on only' : `by ±${con.angle}° only`;
-    return { ok: false, reason: `the ${con.name} turns ${range}; a branch here turns ${bad}°` };
+    const code = ports > 2 ? 'connectorTurnsNode' : con.flex ? 'connectorTurnsFlex' : con.angle === 0 ? 'connectorTurnsStraight' : 'connectorTurnsAngle';
+    return refuse(`the ${con.name} turns ${range}; a branch here turns ${bad}°`, { code, params: { ...named, angle: con.angle, step: con.flex?.step ?? 0, max: con.flex?.maxAngle ?? con.angle, turn: bad } });
   }
   return null;
 }
 
 /** Walls, clashes and feeds in the shopper's words. */
-function branchReason(problem: Problem): string {
-  if (problem.code === 'outside-room') return 'the branch would reach outside the room';
-  if (problem.code === 'self-overlap') return 'the branch would run into the system itself';
-  if (problem.code === 'system-overlap') return problem.message.replace(/^system \S+ /, 'the branch ');
+function branchReason(problem: Problem): string | CodedReason {
+  if (problem.code === 'outside-room') return { reason: 'the branch would reach outside the room', code: 'branchOutsideRoom' };
+  if (problem.code === 'self-overlap') return { reason: 'the branch would run into the system itself', code: 'branchSelfOverlap' };
+  if (problem.code === 'system-overlap') return { reason: problem.message.replace(/^system \S+ /, 'the branch '), code: 'branchOverlap', params: { other: problem.params?.other ?? '' } };
   return problem.message;
 }

@@ -6,7 +6,8 @@
  */
 import { z } from 'zod';
 import { InputError } from '../../inputError';
-import type { ActionDefinition } from '../action';
+import { refuse, type ActionDefinition, type CodedReason } from '../action';
+import { quoting } from '../coding';
 import { findConnector, type Catalog, type ConnectorSpec } from '../catalogSchema';
 import type { Configuration, LightSystem } from '../configuration';
 import { suspensionCoordinates } from '../suspensionPoints';
@@ -31,7 +32,7 @@ function jointOf(state: Configuration, systemId: string, joint: number, catalog:
   const si = systemIndex(state, systemId);
   const system = state.systems[si];
   const j = system.joints[joint];
-  if (!j) throw new InputError(`system ${systemId} has no connector ${joint + 1}`);
+  if (!j) throw new InputError(`system ${systemId} has no connector ${joint + 1}`, { code: 'noSuchConnector', params: { id: systemId, n: joint + 1 } });
   return { si, system, con: findConnector(catalog, j.connector) };
 }
 
@@ -44,7 +45,7 @@ export const setJointTurn: ActionDefinition<z.infer<typeof turnParams>> = {
   params: turnParams,
   isEnabled(state, p, catalog) {
     const { con } = jointOf(state, p.systemId, p.joint, catalog);
-    return con.flex ? true : { ok: false, reason: `the ${con.name} has a fixed angle; only a flexible connector can be turned` };
+    return con.flex ? true : refuse(`the ${con.name} has a fixed angle; only a flexible connector can be turned`, { code: 'connectorFixedAngle', params: { name: con.name, connectorId: con.id } });
   },
   perform(state, p, catalog) {
     const { si, system, con } = jointOf(state, p.systemId, p.joint, catalog);
@@ -52,13 +53,13 @@ export const setJointTurn: ActionDefinition<z.infer<typeof turnParams>> = {
     // The chain's coordinates do not depend on a flexible connector's turn (it always bridges two arms), so moved fixing points stay valid.
     return replaceSystem(state, si, { ...system, joints: system.joints.map((j, k) => (k === p.joint ? { ...j, turn } : j)) });
   },
-  explain(problem, state, p, catalog) {
+  explain(problem, state, p, catalog): string | CodedReason {
     const { con } = jointOf(state, p.systemId, p.joint, catalog);
     const turn = snapTurn(p.degrees, con);
-    if (problem.code === 'bad-turn') return `the ${con.name} turns at most ±${con.flex?.maxAngle ?? con.angle}°`;
-    if (problem.code === 'outside-room') return `at ${turn}° the chain would reach outside the room`;
-    if (problem.code === 'self-overlap') return `at ${turn}° the chain would run into itself`;
-    if (problem.code === 'system-overlap') return `at ${turn}° ${problem.message.replace(/^system \S+ /, 'the chain ')}`;
+    if (problem.code === 'bad-turn') return { reason: `the ${con.name} turns at most ±${con.flex?.maxAngle ?? con.angle}°`, code: 'connectorTurnsAtMost', params: { name: con.name, connectorId: con.id, max: con.flex?.maxAngle ?? con.angle } };
+    if (problem.code === 'outside-room') return { reason: `at ${turn}° the chain would reach outside the room`, code: 'turnOutsideRoom', params: { turn } };
+    if (problem.code === 'self-overlap') return { reason: `at ${turn}° the chain would run into itself`, code: 'turnSelfOverlap', params: { turn } };
+    if (problem.code === 'system-overlap') return { reason: `at ${turn}° ${problem.message.replace(/^system \S+ /, 'the chain ')}`, code: 'turnOverlap', params: { turn, other: problem.params?.other ?? '' } };
     return problem.message;
   },
 };
@@ -79,13 +80,13 @@ export const moveFixingPoint: ActionDefinition<z.infer<typeof fixingParams>> = {
     const system = state.systems[si];
     const current = suspensionCoordinates(system, catalog);
     const point = current[p.index];
-    if (!point) throw new InputError(`system ${p.systemId} has ${current.length} fixing points, not ${p.index + 1}`);
-    if (point.joint !== null) throw new InputError(`this point holds connector ${point.joint + 1}; a connector is always a support`);
+    if (!point) throw new InputError(`system ${p.systemId} has ${current.length} fixing points, not ${p.index + 1}`, { code: 'noSuchFixingPoint', params: { id: p.systemId, count: current.length, n: p.index + 1 } });
+    if (point.joint !== null) throw new InputError(`this point holds connector ${point.joint + 1}; a connector is always a support`, { code: 'fixingHoldsConnector', params: { n: point.joint + 1 } });
     const fixings = current.map((x, i) => (i === p.index ? snapFixing(p.s) : x.s));
     return replaceSystem(state, si, { ...system, fixings });
   },
   explain(problem, _state, p) {
-    if (problem.code.startsWith('fixing-')) return `cannot move the point to ${snapFixing(p.s)} m: ${problem.message}`;
+    if (problem.code.startsWith('fixing-')) return quoting(`cannot move the point to ${snapFixing(p.s)} m: ${problem.message}`, 'fixingCannotMove', problem, { s: snapFixing(p.s) });
     return problem.message;
   },
 };

@@ -5,18 +5,18 @@
  * the result where the action is bound, so a move that would overload a driver is refused too.
  */
 import { z } from 'zod';
-import type { ActionDefinition } from '../action';
+import type { ActionDefinition, CodedReason } from '../action';
 import { findDriver } from '../catalogSchema';
 import type { FeedAt } from '../configuration';
-import { describeFeedAt, feedLabel, feedLoads, formatWatts } from '../feedLoads';
+import { describeFeedAt, feedAtParam, feedLabel, feedLoads, formatWatts } from '../feedLoads';
 import type { Problem } from '../validate';
 import { findFeed, replaceSystem, systemIndex, takeId } from './lookup';
 
 /** 'start', 'end', { joint: k } (the connector joints[k] goes through) or { end: i } (rail i's free end, a branch). */
 export const feedAtParams = z.union([z.literal('start'), z.literal('end'), z.strictObject({ joint: z.number().int().nonnegative() }), z.strictObject({ end: z.number().int().nonnegative() })]);
 
-function positionReason(problem: Problem, at: FeedAt): string {
-  if (problem.code === 'feed-duplicate') return `there is already a feed at ${describeFeedAt(at)}`;
+function positionReason(problem: Problem, at: FeedAt): string | CodedReason {
+  if (problem.code === 'feed-duplicate') return { reason: `there is already a feed at ${describeFeedAt(at)}`, code: 'feedAlreadyThere', params: { feedAt: feedAtParam(at) } };
   return problem.message;
 }
 
@@ -70,7 +70,7 @@ export const removeFeed: ActionDefinition<z.infer<typeof feedIdParams>> = {
     return replaceSystem(state, ref.systemIndex, { ...ref.system, feeds: ref.system.feeds.filter((_, i) => i !== ref.feedIndex) });
   },
   explain(problem) {
-    return problem.code === 'no-feed' ? 'a system keeps at least one power feed' : problem.message;
+    return problem.code === 'no-feed' ? { reason: 'a system keeps at least one power feed', code: 'keepOneFeed' } : problem.message;
   },
 };
 
@@ -94,7 +94,7 @@ export const setFeedDriver: ActionDefinition<z.infer<typeof driverParams>> = {
     return {
       reason: `the ${formatWatts(driver.capacity)} W ${driver.name} cannot carry the ${formatWatts(load)} W on ${feedLabel(ref.feedIndex)}; choose a larger driver or add a feed`,
       code: 'driverTooSmall',
-      params: { capacity: Number(formatWatts(driver.capacity)), driver: driver.name, load: Number(formatWatts(load)), n: ref.feedIndex + 1 },
+      params: { capacity: Number(formatWatts(driver.capacity)), driver: driver.name, driverId: driver.id, load: Number(formatWatts(load)), n: ref.feedIndex + 1 },
     };
   },
 };

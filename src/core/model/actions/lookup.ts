@@ -19,7 +19,7 @@ export interface ModuleRef extends RailRef {
 
 export function systemIndex(config: Configuration, systemId: string): number {
   const i = config.systems.findIndex((s) => s.id === systemId);
-  if (i < 0) throw new InputError(`no system with id '${systemId}'`);
+  if (i < 0) throw new InputError(`no system with id '${systemId}'`, { code: 'unknownSystem', params: { id: systemId } });
   return i;
 }
 
@@ -29,7 +29,7 @@ export function findRail(config: Configuration, railId: string): RailRef {
     const r = system.rails.findIndex((x) => x.id === railId);
     if (r >= 0) return { systemIndex: s, railIndex: r, system, rail: system.rails[r] };
   }
-  throw new InputError(`no rail with id '${railId}'`);
+  throw new InputError(`no rail with id '${railId}'`, { code: 'unknownRail', params: { id: railId } });
 }
 
 export function findModule(config: Configuration, moduleId: string): ModuleRef {
@@ -41,7 +41,7 @@ export function findModule(config: Configuration, moduleId: string): ModuleRef {
       if (m >= 0) return { systemIndex: s, railIndex: r, system, rail, moduleIndex: m, module: rail.modules[m] };
     }
   }
-  throw new InputError(`no module with id '${moduleId}'`);
+  throw new InputError(`no module with id '${moduleId}'`, { code: 'unknownModule', params: { id: moduleId } });
 }
 
 export interface FeedRef {
@@ -57,7 +57,7 @@ export function findFeed(config: Configuration, feedId: string): FeedRef {
     const f = system.feeds.findIndex((x) => x.id === feedId);
     if (f >= 0) return { systemIndex: s, feedIndex: f, system, feed: system.feeds[f] };
   }
-  throw new InputError(`no feed with id '${feedId}'`);
+  throw new InputError(`no feed with id '${feedId}'`, { code: 'unknownFeed', params: { id: feedId } });
 }
 
 export function replaceSystem(config: Configuration, index: number, system: LightSystem): Configuration {

@@ -30,7 +30,7 @@ export const FIT_CODES: ReadonlySet<string> = new Set(['modules-do-not-fit', 'mo
 /** [start, end) of each module of a rail, from its current layout (the state is valid, so it fits). */
 function occupied(rail: Rail, catalog: Catalog, skip = -1): [number, number][] {
   const offsets = railModuleOffsets(rail, catalog);
-  if (!offsets) throw new InputError(`the modules of rail ${rail.id} do not fit it now`);
+  if (!offsets) throw new InputError(`the modules of rail ${rail.id} do not fit it now`, { code: 'modulesDoNotFitNow', params: { rail: rail.id } });
   return rail.modules.flatMap((m, i) => (i === skip ? [] : [[offsets[i], offsets[i] + findModuleType(catalog, m.type).length] as [number, number]]));
 }
 
@@ -47,7 +47,7 @@ export const addModule: ActionDefinition<z.infer<typeof addParams>> = {
     const ref = findRail(state, p.railId);
     const [id, next] = takeId(state, 'm');
     const mods = [...ref.rail.modules];
-    if (p.index !== undefined && p.index > mods.length) throw new InputError(`index ${p.index} is beyond the ${mods.length} modules of the rail`);
+    if (p.index !== undefined && p.index > mods.length) throw new InputError(`index ${p.index} is beyond the ${mods.length} modules of the rail`, { code: 'moduleIndexBeyond', params: { index: p.index, count: mods.length } });
     const module = newModule(catalog, id, p.type);
     if (!isFreeRail(ref.rail)) {
       mods.splice(p.index ?? mods.length, 0, module);
@@ -94,11 +94,11 @@ export const moveModule: ActionDefinition<z.infer<typeof moveParams>> = {
     const ref = findModule(state, p.moduleId);
     const offset = snappedModuleOffset(state, p.moduleId, p.offset, catalog);
     const now = railModuleOffsets(ref.rail, catalog);
-    if (!now) throw new InputError(`the modules of rail ${ref.rail.id} do not fit it now`);
+    if (!now) throw new InputError(`the modules of rail ${ref.rail.id} do not fit it now`, { code: 'modulesDoNotFitNow', params: { rail: ref.rail.id } });
     const mods = ref.rail.modules.map((m, i) => ({ ...m, offset: i === ref.moduleIndex ? offset : roundOffset(now[i]) }));
     return replaceRail(state, ref, { ...ref.rail, modules: inRailOrder(mods) });
   },
-  explain(problem, state, p, catalog) {
+  explain(problem, state, p, catalog): string | CodedReason {
     const ref = findModule(state, p.moduleId);
     // Worded from the rail as it is now; a state whose rail does not fit (never reached through actions) keeps validate()'s words.
     if (!FIT_CODES.has(problem.code) || !railModuleOffsets(ref.rail, catalog)) return problem.message;
@@ -106,12 +106,20 @@ export const moveModule: ActionDefinition<z.infer<typeof moveParams>> = {
     const offset = snappedModuleOffset(state, p.moduleId, p.offset, catalog);
     const L = ref.rail.length;
     const fmt = (x: number) => String(Math.round(x * 1000) / 1000);
-    if (offset < 0) return `${type.name} would start ${fmt(-offset)} m before the ${ref.railIndex > 0 ? 'connector at the ' : ''}start of this rail`;
-    if (offset + type.length > L) return `${type.name} would reach ${fmt(offset + type.length)} m, past the ${ref.railIndex < ref.system.rails.length - 1 ? 'connector at the ' : ''}end of this ${fmt(L)} m rail`;
+    const named = { name: type.name, typeId: type.id };
+    if (offset < 0) {
+      const atConnector = ref.railIndex > 0;
+      return { reason: `${type.name} would start ${fmt(-offset)} m before the ${atConnector ? 'connector at the ' : ''}start of this rail`, code: atConnector ? 'moduleBeforeConnector' : 'moduleBeforeStart', params: { ...named, by: Number(fmt(-offset)) } };
+    }
+    if (offset + type.length > L) {
+      const atConnector = ref.railIndex < ref.system.rails.length - 1;
+      return { reason: `${type.name} would reach ${fmt(offset + type.length)} m, past the ${atConnector ? 'connector at the ' : ''}end of this ${fmt(L)} m rail`, code: atConnector ? 'modulePastConnector' : 'modulePastEnd', params: { ...named, reach: Number(fmt(offset + type.length)), length: Number(fmt(L)) } };
+    }
     const other = occupied(ref.rail, catalog, ref.moduleIndex).findIndex(([a, b]) => offset < b - 1e-9 && offset + type.length > a + 1e-9);
     if (other >= 0) {
       const m = ref.rail.modules.filter((_, i) => i !== ref.moduleIndex)[other];
-      return `${type.name} at ${fmt(offset)}–${fmt(offset + type.length)} m would overlap ${findModuleType(catalog, m.type).name} ${m.id}`;
+      const otherType = findModuleType(catalog, m.type);
+      return { reason: `${type.name} at ${fmt(offset)}–${fmt(offset + type.length)} m would overlap ${otherType.name} ${m.id}`, code: 'moduleWouldOverlap', params: { ...named, from: Number(fmt(offset)), to: Number(fmt(offset + type.length)), other: otherType.name, otherTypeId: otherType.id, otherId: m.id } };
     }
     return problem.message;
   },
@@ -136,7 +144,9 @@ export const removeModule: ActionDefinition<z.infer<typeof moduleIdParams>> = {
   },
   explain(problem, state, p) {
     // With outside-centred spacing and mixed lengths, taking one out can make neighbours collide.
-    return problem.code === 'modules-do-not-fit' ? `the other modules would not fit '${findModule(state, p.moduleId).rail.distribution}' without it` : problem.message;
+    if (problem.code !== 'modules-do-not-fit') return problem.message;
+    const distribution = findModule(state, p.moduleId).rail.distribution;
+    return { reason: `the other modules would not fit '${distribution}' without it`, code: 'othersWouldNotFit', params: { distribution } };
   },
 };
 
@@ -164,7 +174,7 @@ export const setModuleType: ActionDefinition<z.infer<typeof typeParams>> = {
   explain(problem, _state, p, catalog) {
     if (!FIT_CODES.has(problem.code)) return problem.message;
     const type = findModuleType(catalog, p.type);
-    return `a ${type.name} (${type.length} m) does not fit here without clashing`;
+    return { reason: `a ${type.name} (${type.length} m) does not fit here without clashing`, code: 'typeDoesNotFit', params: { name: type.name, typeId: type.id, length: type.length } };
   },
 };
 
@@ -180,7 +190,7 @@ export const setModuleCct: ActionDefinition<z.infer<typeof cctParams>> = {
   explain(problem, state, p, catalog) {
     if (problem.code !== 'cct') return problem.message;
     const type = findModuleType(catalog, findModule(state, p.moduleId).module.type);
-    return `${type.name} comes in ${type.ccts.join(', ')} K only`;
+    return { reason: `${type.name} comes in ${type.ccts.join(', ')} K only`, code: 'cctOnly', params: { name: type.name, typeId: type.id, ccts: type.ccts.join(', ') } };
   },
 };
 

@@ -7,7 +7,8 @@
 import { z } from 'zod';
 import { InputError } from '../../inputError';
 import type { TriangleMesh } from '../../mesh/triangleMesh';
-import type { ActionDefinition } from '../action';
+import { refuse, type ActionDefinition } from '../action';
+import { quoting } from '../coding';
 import { MESH_UNITS, OBJECT_SCALE_LIMITS, WALL_NAMES, type Configuration, type ImportedMesh, type ObjectFinish, type ObjectPlacement, type ObjectSource, type RoomObject } from '../configuration';
 import { findFurnitureItem } from '../furniture/furnitureLibrary';
 import { normaliseDegrees } from '../geometry';
@@ -42,7 +43,7 @@ const addParams = z.strictObject({
 
 export function findObject(config: Configuration, objectId: string): { index: number; object: RoomObject } {
   const index = config.objects.findIndex((o) => o.id === objectId);
-  if (index < 0) throw new InputError(`no object with id '${objectId}'`);
+  if (index < 0) throw new InputError(`no object with id '${objectId}'`, { code: 'unknownObject', params: { id: objectId } });
   return { index, object: config.objects[index] };
 }
 
@@ -72,19 +73,19 @@ export const addObject: ActionDefinition<z.infer<typeof addParams>> = {
     let source: ObjectSource;
     if (p.source.kind === 'import') {
       const problem = meshDataProblem(p.source.mesh);
-      if (problem) throw new InputError(`imported model '${p.source.name}': ${problem}`);
+      if (problem) throw new InputError(`imported model '${p.source.name}': ${problem}`, { code: 'importedModelBroken', params: { name: p.source.name, problem } });
       const [meshId, withMesh] = takeId(state, 'i');
       const entry: ImportedMesh = { name: p.source.name, mesh: p.source.mesh, units: p.source.units };
       next = { ...withMesh, importedMeshes: { ...state.importedMeshes, [meshId]: entry } };
       source = { kind: 'imported', mesh: meshId };
     } else if (p.source.kind === 'library') {
-      if (!findFurnitureItem(p.source.item)) throw new InputError(`no furniture item '${p.source.item}' in the library`);
+      if (!findFurnitureItem(p.source.item)) throw new InputError(`no furniture item '${p.source.item}' in the library`, { code: 'unknownFurniture', params: { item: p.source.item } });
       source = { kind: 'library', item: p.source.item };
     } else {
       source = { kind: 'imported', mesh: p.source.mesh };
     }
     const mesh = sourceMesh(next, source);
-    if (!mesh) throw new InputError(`no imported mesh '${(source as { mesh: string }).mesh}'`);
+    if (!mesh) throw new InputError(`no imported mesh '${(source as { mesh: string }).mesh}'`, { code: 'unknownMesh', params: { mesh: (source as { mesh: string }).mesh } });
     const [id, withId] = takeId(next, 'o');
     const placement = p.placement ?? defaultPlacement(state, source);
     const object: RoomObject = { id, source, placement, yaw: placement.on === 'wall' ? 0 : normaliseDegrees(p.yaw ?? 0), scale: p.scale ?? 1, finishes: {} };
@@ -108,7 +109,7 @@ export const moveObject: ActionDefinition<z.infer<typeof moveParams>> = {
     return updateObject(state, p.objectId, { placement: p.placement, yaw: p.placement.on === 'wall' ? 0 : object.yaw });
   },
   explain(problem) {
-    return problem.code === 'object-outside' ? `cannot move it there: ${problem.message}` : problem.message;
+    return problem.code === 'object-outside' ? quoting(`cannot move it there: ${problem.message}`, 'objectCannotMove', problem) : problem.message;
   },
 };
 
@@ -125,14 +126,14 @@ export const rotateObject: ActionDefinition<z.infer<typeof rotateParams>> = {
   label: 'Turn object',
   params: rotateParams,
   isEnabled(_state, p) {
-    return p.by === undefined && p.yaw === undefined ? { ok: false, reason: 'say how far to turn (by) or to which yaw' } : true;
+    return p.by === undefined && p.yaw === undefined ? refuse('say how far to turn (by) or to which yaw', { code: 'turnHowFar' }) : true;
   },
   perform(state, p) {
     const { object } = findObject(state, p.objectId);
     return updateObject(state, p.objectId, { yaw: normaliseDegrees(p.yaw ?? object.yaw + (p.by ?? 0)) });
   },
   explain(problem) {
-    return problem.code === 'object-outside' ? `cannot turn it here: ${problem.message}` : problem.message;
+    return problem.code === 'object-outside' ? quoting(`cannot turn it here: ${problem.message}`, 'objectCannotTurn', problem) : problem.message;
   },
 };
 
@@ -146,7 +147,7 @@ export const resizeObject: ActionDefinition<z.infer<typeof resizeParams>> = {
     return updateObject(state, p.objectId, { scale: p.scale });
   },
   explain(problem) {
-    return problem.code === 'object-outside' ? `cannot grow it here: ${problem.message}` : problem.message;
+    return problem.code === 'object-outside' ? quoting(`cannot grow it here: ${problem.message}`, 'objectCannotGrow', problem) : problem.message;
   },
 };
 

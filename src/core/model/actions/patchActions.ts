@@ -8,6 +8,7 @@
 import { z } from 'zod';
 import { InputError } from '../../inputError';
 import type { ActionDefinition } from '../action';
+import { quoting } from '../coding';
 import type { Catalog } from '../catalogSchema';
 import { findModuleType } from '../catalogSchema';
 import type { Configuration, ModuleInstance } from '../configuration';
@@ -54,7 +55,7 @@ export const setModulePatch: ActionDefinition<z.infer<typeof moduleParams>> = {
     return mapPatches(state, (m) => (m.id === p.moduleId ? (p.patch ?? undefined) : m.dmx));
   },
   explain(problem) {
-    return problem.code === 'dmx-overlap' || problem.code === 'dmx-range' ? problem.message : `cannot patch: ${problem.message}`;
+    return problem.code === 'dmx-overlap' || problem.code === 'dmx-range' ? problem.message : quoting(`cannot patch: ${problem.message}`, 'cannotPatch', problem);
   },
 };
 
@@ -83,7 +84,7 @@ export function autoPatchPlan(config: Configuration, catalog: Catalog, p: z.infe
       universe++;
       address = 1;
     }
-    if (universe > DMX_UNIVERSE_MAX) throw new InputError(`the modules do not fit below universe ${DMX_UNIVERSE_MAX}`);
+    if (universe > DMX_UNIVERSE_MAX) throw new InputError(`the modules do not fit below universe ${DMX_UNIVERSE_MAX}`, { code: 'patchBeyondUniverses', params: { max: DMX_UNIVERSE_MAX } });
     plan.set(module.id, { universe, address, ...patch });
     address += patchWidth(patch);
   }

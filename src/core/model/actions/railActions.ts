@@ -7,6 +7,7 @@
  */
 import { z } from 'zod';
 import type { ActionDefinition } from '../action';
+import { quoting } from '../coding';
 import { DISTRIBUTIONS, findConnector, type Catalog } from '../catalogSchema';
 import type { Rail } from '../configuration';
 import { plannedFeeds } from '../feedLoads';
@@ -49,7 +50,7 @@ export const setRailLength: ActionDefinition<z.infer<typeof lengthParams>> = {
     if (!FIT_CODES.has(problem.code)) return problem.message;
     const { rail } = findRail(state, p.railId);
     const needed = minRailLength(rail, catalog) ?? catalog.rail.maxLength;
-    return `${snapRailLength(p.length, catalog)} m would cut off modules; this rail needs at least ${needed} m (remove modules to shorten it)`;
+    return { reason: `${snapRailLength(p.length, catalog)} m would cut off modules; this rail needs at least ${needed} m (remove modules to shorten it)`, code: 'railWouldCutModules', params: { length: snapRailLength(p.length, catalog), needed } };
   },
 };
 
@@ -65,7 +66,9 @@ export const setDistribution: ActionDefinition<z.infer<typeof distributionParams
     return updateRail(state, p.railId, { distribution: p.distribution, modules: withoutOffsets(rail.modules) });
   },
   explain(problem, state, p) {
-    return problem.code === 'modules-do-not-fit' ? `the modules do not fit '${p.distribution}' on this ${findRail(state, p.railId).rail.length} m rail` : problem.message;
+    if (problem.code !== 'modules-do-not-fit') return problem.message;
+    const length = findRail(state, p.railId).rail.length;
+    return { reason: `the modules do not fit '${p.distribution}' on this ${length} m rail`, code: 'distributionDoesNotFit', params: { distribution: p.distribution, length } };
   },
 };
 
@@ -96,8 +99,9 @@ export const addRail: ActionDefinition<z.infer<typeof addRailParams>> = {
   explain(problem, _state, p, catalog) {
     if (problem.code !== 'bad-turn') return problem.message;
     const con = findConnector(catalog, p.connector);
-    if (con.flex) return `the ${con.name} turns by a multiple of ${con.flex.step}° within ±${con.flex.maxAngle}°`;
-    return con.angle === 0 ? `${con.name} does not turn` : `${con.name} turns by ±${con.angle}°`;
+    const named = { name: con.name, connectorId: con.id };
+    if (con.flex) return { reason: `the ${con.name} turns by a multiple of ${con.flex.step}° within ±${con.flex.maxAngle}°`, code: 'connectorTurnFlex', params: { ...named, step: con.flex.step, max: con.flex.maxAngle } };
+    return con.angle === 0 ? { reason: `${con.name} does not turn`, code: 'connectorNoTurn', params: named } : { reason: `${con.name} turns by ±${con.angle}°`, code: 'connectorTurnAngle', params: { ...named, angle: con.angle } };
   },
 };
 
@@ -145,13 +149,13 @@ export const removeRail: ActionDefinition<z.infer<typeof railIdParams>> = {
     const { system, railIndex } = findRail(state, p.railId);
     if (problem.code === 'feed-duplicate') {
       return railIndex === 0
-        ? 'a feed at the chain start and one at the first connector would meet; remove one of them first'
+        ? { reason: 'a feed at the chain start and one at the first connector would meet; remove one of them first', code: 'feedsMeetAtStart' }
         : isLeafRail(system, railIndex)
-          ? 'a feed at the last connector and one at the chain end would meet; remove one of them first'
-          : `two feeds would meet where the chain splits: ${problem.message}; remove one of them first`;
+          ? { reason: 'a feed at the last connector and one at the chain end would meet; remove one of them first', code: 'feedsMeetAtEnd' }
+          : quoting(`two feeds would meet where the chain splits: ${problem.message}; remove one of them first`, 'feedsMeetAtSplit', problem);
     }
-    if (problem.code === 'no-rails') return 'a system keeps at least one rail; delete the system instead';
-    if (railIndex > 0 && !isLeafRail(system, railIndex) && problem.code !== 'feed-overload') return `splitting the chain here would leave an invalid part: ${problem.message}`;
+    if (problem.code === 'no-rails') return { reason: 'a system keeps at least one rail; delete the system instead', code: 'keepOneRail' };
+    if (railIndex > 0 && !isLeafRail(system, railIndex) && problem.code !== 'feed-overload') return quoting(`splitting the chain here would leave an invalid part: ${problem.message}`, 'splitLeavesInvalidPart', problem);
     return problem.message;
   },
 };

@@ -4,6 +4,7 @@
  */
 import { z } from 'zod';
 import type { ActionDefinition } from '../action';
+import { quoting } from '../coding';
 
 const setRoomParams = z.object({ width: z.number(), depth: z.number(), height: z.number() });
 
@@ -15,6 +16,6 @@ export const setRoom: ActionDefinition<z.infer<typeof setRoomParams>> = {
     return { ...state, room: { ...state.room, width: p.width, depth: p.depth, height: p.height } };
   },
   explain(problem) {
-    return problem.path.startsWith('systems') ? `a placed system would not fit: ${problem.message}` : problem.message;
+    return problem.path.startsWith('systems') ? quoting(`a placed system would not fit: ${problem.message}`, 'placedSystemWouldNotFit', problem) : problem.message;
   },
 };

@@ -13,7 +13,7 @@ import { findModule, replaceRail, takeId } from './lookup';
 
 function sceneIndex(state: Configuration, sceneId: string): number {
   const i = (state.lightScenes ?? []).findIndex((s) => s.id === sceneId);
-  if (i < 0) throw new InputError(`no light scene with id '${sceneId}'`);
+  if (i < 0) throw new InputError(`no light scene with id '${sceneId}'`, { code: 'unknownScene', params: { id: sceneId } });
   return i;
 }
 
@@ -132,7 +132,7 @@ export const recallScene: ActionDefinition<z.infer<typeof sceneIdParams>> = {
   params: sceneIdParams,
   perform(state, p, catalog) {
     const scene = findScene(state, p.sceneId);
-    if (!scene) throw new InputError(`no light scene with id '${p.sceneId}'`);
+    if (!scene) throw new InputError(`no light scene with id '${p.sceneId}'`, { code: 'unknownScene', params: { id: p.sceneId } });
     return recallLooks(state, scene, catalog);
   },
 };

@@ -6,6 +6,7 @@
  */
 import { z } from 'zod';
 import type { ActionDefinition } from '../action';
+import { quoting } from '../coding';
 import type { Reflectance, SurfaceName } from '../lightingScene';
 import { SURFACE_TARGETS, targetSurfaces } from '../reflectance';
 
@@ -27,6 +28,6 @@ export const setReflectance: ActionDefinition<z.infer<typeof setReflectanceParam
   },
   explain(problem, _state, p) {
     // Name the surface as the user chose it ("walls"), not the first wall validate() reports.
-    return problem.code === 'reflectance' ? `${p.surface}: ${problem.message}` : problem.message;
+    return problem.code === 'reflectance' ? quoting(`${p.surface}: ${problem.message}`, 'surfaceProblem', problem, { surface: p.surface }) : problem.message;
   },
 };

@@ -6,6 +6,7 @@
 import { z } from 'zod';
 import { InputError } from '../../inputError';
 import type { ActionDefinition } from '../action';
+import { quoting } from '../coding';
 import type { Catalog, PresetSpec } from '../catalogSchema';
 import { MOUNTINGS, type Configuration } from '../configuration';
 import { normaliseDegrees, rotatePlan, systemBounds } from '../geometry';
@@ -15,7 +16,7 @@ import { replaceSystem, systemIndex, updateSystem } from './lookup';
 
 function findPreset(catalog: Catalog, id: string): PresetSpec {
   const p = catalog.presets.find((x) => x.id === id);
-  if (!p) throw new InputError(`unknown preset '${id}'`);
+  if (!p) throw new InputError(`unknown preset '${id}'`, { code: 'unknownPreset', params: { id } });
   return p;
 }
 
@@ -31,9 +32,9 @@ type PlacePresetParams = z.infer<typeof placePresetParams>;
 /** Where the preset goes and how low it hangs; throws InputError when it cannot go anywhere. */
 function presetPlacement(state: Configuration, p: PlacePresetParams, catalog: Catalog): { placement: Placement; suspension: number } {
   const preset = findPreset(catalog, p.presetId);
-  if ((p.x === undefined) !== (p.z === undefined)) throw new InputError('give both x and z, or neither');
+  if ((p.x === undefined) !== (p.z === undefined)) throw new InputError('give both x and z, or neither', { code: 'giveXAndZ' });
   const suspension = defaultSuspension(catalog, state.room.height);
-  if (suspension === null) throw new InputError(`the room is too low: modules must hang at least ${catalog.suspension.minHeightAboveFloor} m above the floor`);
+  if (suspension === null) throw new InputError(`the room is too low: modules must hang at least ${catalog.suspension.minHeightAboveFloor} m above the floor`, { code: 'roomTooLow', params: { min: catalog.suspension.minHeightAboveFloor } });
   if (p.x !== undefined && p.z !== undefined) return { placement: { x: p.x, z: p.z, rotation: p.rotation ?? 0 }, suspension };
   const placement = findPresetPlacement(state, preset, catalog, suspension);
   if (!placement) throw new InputError(`no free space for '${preset.name}' in this room`, { code: 'noFreeSpace', params: { name: preset.name, presetId: preset.id } });
@@ -94,7 +95,7 @@ export const rotateSystem: ActionDefinition<z.infer<typeof rotateParams>> = {
     return replaceSystem(state, i, { ...s, x: c[0] + d[0], z: c[1] + d[1], rotation: normaliseDegrees(s.rotation + p.by) });
   },
   explain(problem) {
-    return `cannot rotate here: ${problem.message}`;
+    return quoting(`cannot rotate here: ${problem.message}`, 'cannotRotate', problem);
   },
 };
 

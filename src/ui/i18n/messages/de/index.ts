@@ -6,6 +6,7 @@ import commands from './commands';
 import common from './common';
 import connectors from './connectors';
 import exposure from './exposure';
+import fileErrors from './fileErrors';
 import files from './files';
 import filters from './filters';
 import finishes from './finishes';
@@ -13,7 +14,9 @@ import furniture from './furniture';
 import live from './live';
 import notices from './notices';
 import options from './options';
+import photometry from './photometry';
 import planner from './planner';
+import refusals from './refusals';
 import rooms from './rooms';
 import scenes from './scenes';
 import shared from './shared';
@@ -28,6 +31,7 @@ export default {
   common,
   connectors,
   exposure,
+  fileErrors,
   files,
   filters,
   finishes,
@@ -35,7 +39,9 @@ export default {
   live,
   notices,
   options,
+  photometry,
   planner,
+  refusals,
   rooms,
   scenes,
   shared,

@@ -7,13 +7,16 @@ import commands from './commands';
 import common from './common';
 import connectors from './connectors';
 import exposure from './exposure';
+import fileErrors from './fileErrors';
 import files from './files';
 import filters from './filters';
 import finishes from './finishes';
 import furniture from './furniture';
 import notices from './notices';
 import options from './options';
+import photometry from './photometry';
 import planner from './planner';
+import refusals from './refusals';
 import rooms from './rooms';
 import scenes from './scenes';
 import shared from './shared';
@@ -27,13 +30,16 @@ export default {
   common,
   connectors,
   exposure,
+  fileErrors,
   files,
   filters,
   finishes,
   furniture,
   notices,
   options,
+  photometry,
   planner,
+  refusals,
   rooms,
   scenes,
   shared,
