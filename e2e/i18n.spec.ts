@@ -115,3 +115,43 @@ test("the shop page embeds with locale 'fr-CH': French texts, Swiss-French forma
   // The shop chooses the language: no switch inside the embedded configurator.
   await expect(page.getByTestId('language-switch')).toHaveCount(0);
 });
+
+test('a German shopper reads the core in German: a full driver, broken scene files, a malformed IES file', async ({ page }) => {
+  // The narrow spot's photometric file is served broken (no TILT= line: not an IES file at all).
+  await page.route('**/ies/bega_84693_narrow_spot.ies', (route) => route.fulfill({ status: 200, contentType: 'application/octet-stream', body: 'Lichtdaten folgen\n1 2 3\n' }));
+  await page.goto('/?lang=de');
+  await page.getByRole('button', { name: 'Planung beginnen' }).click();
+  await page.getByTestId('preset-single').click();
+  await expect(page.getByTestId('plan')).toBeVisible();
+  // A refusal of the model: spots until the driver is full, the reason in German from its code.
+  await zoomToModuleLevel(page);
+  const plus = page.locator('[data-testid^="plus-"] button');
+  for (let k = 0; k < 6 && (await plus.getAttribute('aria-disabled')) !== 'true'; k++) await plus.click();
+  await expect(plus).toHaveAttribute('aria-disabled', 'true');
+  const reason = (await plus.getAttribute('title')) ?? '';
+  expect(reason).toMatch(/Treiber ist voll|Einspeisung/);
+  expect(reason).not.toMatch(/driver|feed|would|choose/);
+
+  // Broken scene files: the file name and where in it, in German; the configuration is untouched.
+  const before = await sceneFile(page);
+  const banner = page.getByTestId('banner');
+  const file = JSON.parse(await page.evaluate(() => window.luxbox!.getConfig())) as { version: number; configuration: { systems: { suspension: number }[] } };
+  await page.getByTestId('open-file').setInputFiles({ name: 'neuer.json', mimeType: 'application/json', buffer: Buffer.from(JSON.stringify({ ...file, version: 99 })) });
+  await expect(banner).toContainText(/„neuer\.json“ kann nicht geöffnet werden|„neuer\.json“ wurde mit einer neueren luxbox erstellt \(Version 99; diese liest bis Version \d+\)/);
+  await expect(banner).not.toContainText('was made by');
+  await banner.getByRole('button', { name: /schließen|Meldung/i }).click();
+  const tooLow = { ...file, configuration: { ...file.configuration, systems: file.configuration.systems.map((s) => ({ ...s, suspension: 9.5 })) } };
+  await page.getByTestId('open-file').setInputFiles({ name: 'abhängung.json', mimeType: 'application/json', buffer: Buffer.from(JSON.stringify(tooLow)) });
+  await expect(banner).toContainText('„abhängung.json“: configuration.systems[0].suspension: die Abhängung muss zwischen');
+  await expect(banner).toContainText('(war 9,5)');
+  await expect(banner).not.toContainText('must be between');
+  expect(await sceneFile(page)).toEqual(before);
+
+  // The malformed IES file: the 3D view names the file and says what is wrong, in German.
+  await page.getByTestId('tool-3d').click();
+  const error = page.getByTestId('view3d-error');
+  await expect(error).toContainText('Die photometrischen Daten konnten nicht geladen werden', { timeout: 60_000 });
+  await expect(error).toContainText('bega_84693_narrow_spot.ies');
+  await expect(error).toContainText('keine Zeile „TILT=“ gefunden: keine IES-Datei nach LM-63');
+  await expect(error).not.toContainText('not an IES');
+});
