@@ -106,6 +106,23 @@ function factsOf(placed: LightSystem, preset: PresetSpec, catalog: Catalog, room
  * nearest to the room centre first, heading 0° before 90°. Null if none fits.
  */
 export function findPresetPlacement(config: Configuration, preset: PresetSpec, catalog: Catalog, suspension: number): Placement | null {
+  const known = placementsOf(config, catalog);
+  let bySuspension = known.get(preset);
+  if (!bySuspension) known.set(preset, (bySuspension = new Map()));
+  if (bySuspension.has(suspension)) return bySuspension.get(suspension)!;
+  const placement = searchPlacement(config, preset, catalog, suspension);
+  bySuspension.set(suspension, placement);
+  return placement;
+}
+
+/**
+ * Search results per configuration object (perCatalog.ts), preset and suspension: the planner asks
+ * whether each preset button is enabled on every render of one state, and a refused step leaves
+ * the state as it was for the next (the always-valid test: a refused placePreset is asked again).
+ */
+const placementsOf = perCatalog((_config: Configuration) => new Map<PresetSpec, Map<number, Placement | null>>());
+
+function searchPlacement(config: Configuration, preset: PresetSpec, catalog: Catalog, suspension: number): Placement | null {
   const { width, depth } = config.room;
   const step = Math.max(width, depth) / 40;
   for (const rotation of [0, 90]) {
