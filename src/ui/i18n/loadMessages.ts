@@ -27,11 +27,22 @@ export function loadedMessages(language: Language): MessageTree | undefined {
   return loaded[language];
 }
 
+/**
+ * English messages of the core's codes (messages/en/core.ts): an English page shows the core's own
+ * sentences, so they come with the first other language, whose lookups of `refusals.<code>` …
+ * they make known (isMessageKey); registered once.
+ */
+let coreEnglish: Promise<void> | undefined;
+export function loadCoreEnglish(): Promise<void> {
+  coreEnglish ??= import('./messages/en/core').then((m) => registerEnglishAreas(m.default as Partial<MessageTree>));
+  return coreEnglish;
+}
+
 /** Loads (once) and returns the messages of `language`. */
 export async function loadMessages(language: Language): Promise<MessageTree> {
   const have = loaded[language];
   if (have) return have;
-  const mod = await loaders[language as Exclude<Language, 'en'>]();
+  const [mod] = await Promise.all([loaders[language as Exclude<Language, 'en'>](), loadCoreEnglish()]);
   loaded[language] = mod.default;
   return mod.default;
 }

@@ -1,5 +1,6 @@
 import type en from './messages/en/index';
 import type enLazy from './messages/en/lazy';
+import type enCore from './messages/en/core';
 
 /**
  * A message that depends on a count: the CLDR plural category of `params.count` picks the text
@@ -16,9 +17,10 @@ export interface PluralMessage {
 
 /**
  * English (the source) defines the keys; the message tree of every language has its shape. Its
- * 3D-only areas (messages/en/lazy.ts) are part of the type but arrive at run time with the 3D chunk.
+ * 3D-only areas (messages/en/lazy.ts) are part of the type but arrive at run time with the 3D chunk,
+ * its core-code areas (messages/en/core.ts) with the first other language loaded.
  */
-export type SourceMessages = typeof en & typeof enLazy;
+export type SourceMessages = typeof en & typeof enLazy & typeof enCore;
 
 export type Area = keyof SourceMessages & string;
 

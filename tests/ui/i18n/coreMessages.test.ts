@@ -208,7 +208,7 @@ describe('the English catalogue has every code the core emits', () => {
     (readdirSyncRecursive(new URL(`../../../src/core/${dir}/`, import.meta.url)) as string[]).filter((f) => f.endsWith('.ts'));
   const source = ['model', 'photometry'].flatMap(files).concat([new URL('../../../src/core/inputError.ts', import.meta.url).pathname]);
   it('collects the codes given to refusals, InputErrors, keyed problems and photometry patterns', async () => {
-    const en = await loadMessages('en');
+    const en = { ...(await loadMessages('en')), refusals, fileErrors, photometry };
     const known = new Set(Object.values(en).flatMap((area) => Object.keys(area as object)));
     const found = new Set<string>();
     for (const file of source) {

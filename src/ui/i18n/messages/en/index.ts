@@ -1,5 +1,6 @@
 // English: the source of every key. One line per area; de, fr and it register the same areas.
 // The 3D view's own areas (live, view3d) are in ./lazy.ts: they ship with the 3D chunk (docs/i18n.md, "Bundles").
+// The core's codes (refusals, fileErrors, photometry) are in ./core.ts: fetched with another language (English shows the core's own sentences).
 import a11y from './a11y';
 import aim from './aim';
 import app from './app';
@@ -7,16 +8,13 @@ import commands from './commands';
 import common from './common';
 import connectors from './connectors';
 import exposure from './exposure';
-import fileErrors from './fileErrors';
 import files from './files';
 import filters from './filters';
 import finishes from './finishes';
 import furniture from './furniture';
 import notices from './notices';
 import options from './options';
-import photometry from './photometry';
 import planner from './planner';
-import refusals from './refusals';
 import rooms from './rooms';
 import scenes from './scenes';
 import shared from './shared';
@@ -30,16 +28,13 @@ export default {
   common,
   connectors,
   exposure,
-  fileErrors,
   files,
   filters,
   finishes,
   furniture,
   notices,
   options,
-  photometry,
   planner,
-  refusals,
   rooms,
   scenes,
   shared,
