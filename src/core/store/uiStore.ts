@@ -1,4 +1,5 @@
 import { createStore, type StoreApi } from 'zustand/vanilla';
+import type { CodedText } from '../inputError';
 
 /**
  * A message for people: the English `text` (logs, the embedding API, tests) and, where the UI
@@ -8,6 +9,8 @@ export interface UiMessage {
   text: string;
   code?: string;
   params?: Record<string, string | number>;
+  /** The coded sentence the message quotes (a link's or saved file's error): worded by the UI as `{problem}`. */
+  detail?: CodedText;
 }
 
 /**

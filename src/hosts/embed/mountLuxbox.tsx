@@ -1,6 +1,6 @@
 import { StrictMode } from 'react';
 import { createRoot } from 'react-dom/client';
-import { InputError } from '../../core/inputError';
+import { codedText, InputError } from '../../core/inputError';
 import { isActionName } from '../../core/model/actionDefinitions';
 import { billOfMaterials } from '../../core/model/billOfMaterials';
 import { installationNeeds } from '../../core/model/installationNeeds';
@@ -105,7 +105,8 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
       ui.setState({ banner: null, phase: 'planner' });
     } catch (e) {
       const problem = e instanceof InputError ? e.message : 'unexpected error';
-      ui.setState({ banner: { text: `Your saved configuration could not be read (${problem}).`, code: 'savedUnreadable', params: { problem }, canRestore: false } });
+      const detail = e instanceof InputError && e.code ? { detail: codedText(e.message, e) } : {};
+      ui.setState({ banner: { text: `Your saved configuration could not be read (${problem}).`, code: 'savedUnreadable', params: { problem }, ...detail, canRestore: false } });
     }
   };
 

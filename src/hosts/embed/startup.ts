@@ -1,7 +1,7 @@
 import type { Catalog } from '../../core/model/catalogSchema';
 import { createConfiguration, type Configuration } from '../../core/model/configuration';
 import { decodeShareString, deserializeConfiguration } from '../../core/model/sceneFile';
-import { InputError } from '../../core/inputError';
+import { codedText, InputError, type CodedText } from '../../core/inputError';
 import { firstImpression } from '../../ui/viewer/firstImpression';
 import type { UiMessage } from '../../core/store/uiStore';
 
@@ -35,6 +35,11 @@ function message(e: unknown): string {
   return e instanceof InputError ? e.message : 'unexpected error';
 }
 
+/** The error as a coded sentence, for a banner that quotes it (docs/i18n.md); nothing for an uncoded one. */
+function detail(e: unknown): { detail?: CodedText } {
+  return e instanceof InputError && e.code ? { detail: codedText(e.message, e) } : {};
+}
+
 /**
  * Decides what the configurator opens with, in order: a share link in the URL hash, the local
  * autosave, the host's room, the demo when asked for, else the room-setup screen. A broken or foreign link opens an
@@ -61,7 +66,7 @@ export function resolveStartup({ catalog, hash, saved, room, demo }: StartupInpu
         return {
           config: createConfiguration(),
           phase: 'planner',
-          banner: { text: `This link could not be opened: ${message(e)}. Showing an empty room instead.`, code: 'linkBroken', params: { problem: message(e) }, canRestore: savedConfig !== null },
+          banner: { text: `This link could not be opened: ${message(e)}. Showing an empty room instead.`, code: 'linkBroken', params: { problem: message(e) }, ...detail(e), canRestore: savedConfig !== null },
           saveNow: false,
           clearHash: true,
         };

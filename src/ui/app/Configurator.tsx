@@ -11,6 +11,7 @@ import type { UiStore } from '../../core/store/uiStore';
 import { useI18n } from '../i18n/useI18n';
 import { LanguageSwitch } from '../i18n/LanguageSwitch';
 import { translateCoded } from '../i18n/translateCoded';
+import { coreParams } from '../i18n/noticeText';
 import type { Landmarks } from '../shared/landmarks';
 import './app.css';
 
@@ -35,7 +36,7 @@ export interface ConfiguratorProps {
 
 /** The configurator's top-level component: room setup first, then the planner (configurator paper §3.2). */
 export function Configurator({ store, ui, languageSwitch = false, onRestoreSaved, shareLink, footprints, landmarks = 'region' }: ConfiguratorProps) {
-  const { t, locale } = useI18n();
+  const { t, locale, language } = useI18n();
   const phase = useStore(ui, (s) => s.phase);
   const banner = useStore(ui, (s) => s.banner);
   const room = useStore(store, (s) => s.config.room);
@@ -74,7 +75,7 @@ export function Configurator({ store, ui, languageSwitch = false, onRestoreSaved
     <Root className="app" lang={locale} aria-label={landmarks === 'page' ? undefined : t('app.regionLabel')}>
       {banner && (
         <div className="banner" role="alert" data-testid="banner">
-          <span className="banner-text">{translateCoded(t, 'app', banner)}</span>
+          <span className="banner-text">{translateCoded(t, 'app', banner, coreParams(t, language))}</span>
           {banner.canRestore && (
             <button type="button" className="btn" onClick={onRestoreSaved}>
               {t('app.openSaved')}

@@ -5,7 +5,10 @@ import { feedAtText } from './feedText';
 import type { Language } from './languages';
 import { localName } from './localName';
 import type { MessageKey, MessageParams, Translate } from './messageTypes';
+import { isMessageKey } from './createTranslator';
 import { translateCoded, type CodedMessage } from './translateCoded';
+
+const SOURCES: Record<string, MessageKey> = { 'share link': 'fileErrors.sourceShareLink', 'saved configuration': 'fileErrors.sourceSaved', 'scene file': 'fileErrors.sourceSceneFile' };
 
 /** A feed position parameter ('start', 'end', 'joint:k', 'rail:i'; core feedAtParam) as the FeedAt feedAtText words. */
 function feedAt(param: string): unknown {
@@ -44,6 +47,9 @@ export function coreParams(t: Translate, language: Language, catalog?: Catalog):
       const wall = id(key);
       if (wall && ['north', 'east', 'south', 'west'].includes(wall)) params[key] = t(`options.wall_${wall}` as MessageKey);
     }
+    // A source the core names in English words (a share link, the saved configuration) rather than by a file name.
+    const source = id('name') !== undefined ? SOURCES[id('name')!] : undefined;
+    if (source && isMessageKey(source)) params.name = t(source);
     const at = id('feedAt');
     if (at !== undefined) params.feedAt = feedAtText(t, feedAt(at));
     return params;

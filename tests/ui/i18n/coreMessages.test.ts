@@ -247,3 +247,23 @@ function readdirSyncRecursive(dir: URL): string[] {
   }
   return out;
 }
+
+describe('a broken share link in the startup banner', async () => {
+  const de = createTranslator(await loadMessages('de'), 'de-CH', (x) => createFormat('de-CH').number(x));
+  it('words the link and its problem in German (the link named in German; the parser'''s reason kept as read)', async () => {
+    const { decodeShareString } = await import('../../../src/core/model/sceneFile');
+    let error: unknown;
+    try {
+      // base64url of '{"format": oops}': not JSON, line 1.
+      decodeShareString(Buffer.from('{"format": oops}').toString('base64url'), catalog);
+    } catch (e) {
+      error = e;
+    }
+    expect(error).toBeInstanceOf(SceneFileError);
+    const e = error as SceneFileError;
+    const banner = { text: `This link could not be opened: ${e.message}. Showing an empty room instead.`, code: 'linkBroken', params: { problem: e.message }, detail: { text: e.message, code: e.code, params: e.params } };
+    const text = translateCoded(de, 'app', banner, coreParams(de, 'de', catalog));
+    expect(text).toContain('Dieser Link konnte nicht geöffnet werden: „Link zum Teilen“ ist kein gültiges JSON (');
+    expect(text).not.toContain('could not be opened');
+  });
+});

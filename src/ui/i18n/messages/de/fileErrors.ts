@@ -2,6 +2,9 @@ import type { AreaMessages } from '../../messageTypes';
 import type en from '../en/fileErrors';
 
 export default {
+  sourceShareLink: 'Link zum Teilen',
+  sourceSaved: 'gespeicherte Konfiguration',
+  sourceSceneFile: 'Szenendatei',
   fileTooLarge: '{name}: die Datei ist zu groß ({size} MB; höchstens {max} MB)',
   fileTooLargeForConfiguration: '„{name}“ ist zu groß für eine luxbox-Konfiguration ({size} MB; höchstens {max} MB)',
   fileUnreadable: '„{name}“ konnte nicht gelesen werden ({problem})',

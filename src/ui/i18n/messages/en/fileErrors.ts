@@ -2,6 +2,9 @@
 // by the core's code (docs/i18n.md, "Messages from the core"). `{name}` is the file's name, `{path}`
 // the field in it, `{line}` and `{column}` where in its text.
 export default {
+  sourceShareLink: 'share link',
+  sourceSaved: 'saved configuration',
+  sourceSceneFile: 'scene file',
   fileTooLarge: '{name}: file is too large ({size} MB; at most {max} MB)',
   fileTooLargeForConfiguration: '“{name}” is too large to be a luxbox configuration ({size} MB; at most {max} MB)',
   fileUnreadable: '“{name}” could not be read ({problem})',

@@ -2,6 +2,9 @@ import type { AreaMessages } from '../../messageTypes';
 import type en from '../en/fileErrors';
 
 export default {
+  sourceShareLink: 'lien de partage',
+  sourceSaved: 'configuration enregistrée',
+  sourceSceneFile: 'fichier de scène',
   fileTooLarge: '{name}\u00a0: le fichier est trop volumineux ({size} Mo\u202f; au plus {max} Mo)',
   fileTooLargeForConfiguration: '«\u00a0{name}\u00a0» est trop volumineux pour une configuration luxbox ({size} Mo\u202f; au plus {max} Mo)',
   fileUnreadable: '«\u00a0{name}\u00a0» n’a pas pu être lu ({problem})',

@@ -2,6 +2,9 @@ import type { AreaMessages } from '../../messageTypes';
 import type en from '../en/fileErrors';
 
 export default {
+  sourceShareLink: 'link di condivisione',
+  sourceSaved: 'configurazione salvata',
+  sourceSceneFile: 'file di scena',
   fileTooLarge: '{name}: il file è troppo grande ({size} MB; al massimo {max} MB)',
   fileTooLargeForConfiguration: '«{name}» è troppo grande per una configurazione luxbox ({size} MB; al massimo {max} MB)',
   fileUnreadable: 'impossibile leggere «{name}» ({problem})',
