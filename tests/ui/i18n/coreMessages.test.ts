@@ -250,7 +250,7 @@ function readdirSyncRecursive(dir: URL): string[] {
 
 describe('a broken share link in the startup banner', async () => {
   const de = createTranslator(await loadMessages('de'), 'de-CH', (x) => createFormat('de-CH').number(x));
-  it('words the link and its problem in German (the link named in German; the parser'''s reason kept as read)', async () => {
+  it('words the link and its problem in German (the link named in German, the parser’s reason kept as read)', async () => {
     const { decodeShareString } = await import('../../../src/core/model/sceneFile');
     let error: unknown;
     try {
