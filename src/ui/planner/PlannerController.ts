@@ -1,4 +1,5 @@
 import { systemBounds } from '../../core/model/geometry';
+import type { CodedText } from '../../core/inputError';
 import { chainCoordinateAt } from '../../core/model/chainCoordinates';
 import { suspensionCoordinates } from '../../core/model/suspensionPoints';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
@@ -179,8 +180,9 @@ export class PlannerController implements CommandContext {
   explain = (reason: string): void => showStatus(this.ui, reason);
 
   /** A refusal in the status line with its code, so the planner shows it in the UI language (docs/i18n.md). */
-  private explainRefusal(r: { reason: string; code?: string; params?: Readonly<Record<string, string | number>> }): void {
-    showStatus(this.ui, r.reason, r.code ? { code: r.code, params: r.params ? { ...r.params } : undefined } : undefined);
+  private explainRefusal(r: { reason: string; code?: string; params?: Readonly<Record<string, string | number>>; detail?: CodedText }): void {
+    // The quoted problem (a refusal's non-enumerable detail) goes along: the status line words it as {problem}.
+    showStatus(this.ui, r.reason, r.code ? { code: r.code, params: r.params ? { ...r.params } : undefined, ...(r.detail ? { detail: r.detail } : {}) } : undefined);
   }
 
   run = (name: string, params: unknown): void => {
