@@ -41,7 +41,10 @@ export function translateCoded(t: Translate, area: Area, msg: CodedMessage, loca
         if (isMessageKey(word)) params.what = t(word);
       }
       if (localise) params = localise(params);
-      return t(key as MessageKey, params);
+      const text = t(key as MessageKey, params);
+      // A parameter the message needs and the code did not bring (a quoted problem lost on the way): the English sentence, never "{problem}".
+      if (/\{\w+\}/.test(text)) break;
+      return text;
     }
   }
   return msg.text ?? msg.reason ?? msg.message ?? '';

@@ -267,3 +267,12 @@ describe('a broken share link in the startup banner', async () => {
     expect(text).not.toContain('could not be opened');
   });
 });
+
+describe('a coded message that lost a parameter', async () => {
+  const de = createTranslator(await loadMessages('de'), 'de', (x) => createFormat('de').number(x));
+  it('shows the English sentence rather than a placeholder', () => {
+    // objectCannotMove quotes its problem as detail; without it the German would read "…: {problem}".
+    expect(translateCoded(de, 'notices', { text: 'cannot move it there: Sofa o1 passes through the west wall', code: 'objectCannotMove' })).toBe('cannot move it there: Sofa o1 passes through the west wall');
+    expect(translateCoded(de, 'notices', { text: 'x', code: 'objectCannotMove', detail: { text: 'y' } })).toBe('lässt sich nicht dorthin verschieben: y');
+  });
+});
