@@ -140,7 +140,9 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
   const addImported = (name: string, mesh: TriangleMesh, units: MeshUnits) => {
     const refused = controller.addImported(name, mesh, units);
     if (refused === null) ui.setState({ panelOpen: false });
-    return refused;
+    // The refusal just went to the status line with its code: the import panel shows it in the same words.
+    const status = ui.getState().status;
+    return refused === null ? null : status?.text === refused ? noticeText(t, language, catalog, status) : refused;
   };
   // A library item dragged from the panel and dropped on the plan lands where it was dropped.
   const dragOver = (e: DragEvent) => {
