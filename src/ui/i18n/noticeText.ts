@@ -45,7 +45,7 @@ export function coreParams(t: Translate, language: Language, catalog?: Catalog):
     if (item) params.name = furnitureName(t, item);
     for (const key of ['wall', 'wall2']) {
       const wall = id(key);
-      if (wall && ['north', 'east', 'south', 'west'].includes(wall)) params[key] = t(`options.wall_${wall}` as MessageKey);
+      if (wall && ['north', 'east', 'south', 'west'].includes(wall)) params[key] = t(`planner.wall_${wall}` as MessageKey);
     }
     // A source the core names in English words (a share link, the saved configuration) rather than by a file name.
     const source = id('name') !== undefined ? SOURCES[id('name')!] : undefined;

@@ -1,3 +1,4 @@
+import './registerOptionsEnglish';
 import { useSyncExternalStore } from 'react';
 import type { Catalog } from '../../core/model/catalogSchema';
 import type { ModuleInstance } from '../../core/model/configuration';

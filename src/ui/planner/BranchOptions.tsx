@@ -1,3 +1,4 @@
+import './registerOptionsEnglish';
 import { connectorPorts, type Catalog, type ConnectorSpec } from '../../core/model/catalogSchema';
 import type { LightSystem, Rail } from '../../core/model/configuration';
 import { nodeJoints } from '../../core/model/railTree';

@@ -1,3 +1,4 @@
+import './registerOptionsEnglish';
 import type { Catalog } from '../../core/model/catalogSchema';
 import type { LightSystem } from '../../core/model/configuration';
 import { suspensionCoordinates } from '../../core/model/suspensionPoints';

@@ -1,3 +1,4 @@
+import './registerOptionsEnglish';
 import { useMemo, useState } from 'react';
 import { FILTER_KINDS } from '../../core/colour/colourFilterLibrary';
 import { swatchCss } from '../../core/colour/displaySwatch';

@@ -46,14 +46,14 @@ export function FinishSelect({ id, label, use, value, finishes, onChoose, disabl
       >
         {!current && (
           <option value={CURRENT} disabled>
-            {value === null ? t('options.finishMixed') : t('options.finishCustom', { rho: rho(value) })}
+            {value === null ? t('planner.finishMixed') : t('planner.finishCustom', { rho: rho(value) })}
           </option>
         )}
         {offered.map((f) => {
           const reason = disabledReason?.(f) ?? null;
           return (
             <option key={f.id} value={f.id} disabled={reason !== null} title={reason ?? undefined}>
-              {t('options.finishOption', { name: finishName(t, f), rho: rho(f.reflectance) })}
+              {t('planner.finishOption', { name: finishName(t, f), rho: rho(f.reflectance) })}
             </option>
           );
         })}

@@ -1,3 +1,4 @@
+import './registerOptionsEnglish';
 import { OBJECT_FINISHES, findObjectFinish } from '../../core/model/furniture/objectFinishes';
 import type { ObjectFinish } from '../../core/model/configuration';
 import type { Rgb } from '../../core/model/lightingScene';
@@ -60,12 +61,12 @@ export function ObjectFinishSelect({ id, material, value, defaultRgb, defaultNam
         </option>
         {custom && (
           <option value={CUSTOM} disabled>
-            {t('options.finishCustom', { rho: rho(value as Rgb) })}
+            {t('planner.finishCustom', { rho: rho(value as Rgb) })}
           </option>
         )}
         {OBJECT_FINISHES.map((f) => (
           <option key={f.id} value={f.id} {...option(f.id)}>
-            {t('options.finishOption', { name: finishName(t, f), rho: rho(f.reflectance) })}
+            {t('planner.finishOption', { name: finishName(t, f), rho: rho(f.reflectance) })}
           </option>
         ))}
       </select>

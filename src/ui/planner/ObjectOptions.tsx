@@ -1,3 +1,4 @@
+import './registerOptionsEnglish';
 import { useMemo } from 'react';
 import { OBJECT_SCALE_LIMITS, WALL_NAMES, type Configuration, type RoomObject } from '../../core/model/configuration';
 import { findFurnitureItem } from '../../core/model/furniture/furnitureLibrary';
@@ -67,8 +68,8 @@ export function ObjectOptions({ config, object, gate, onClose }: { config: Confi
             {WALL_NAMES.map((wall) => {
               const along = wall === 'north' || wall === 'south' ? config.room.width : config.room.depth;
               return (
-                <GatedButton key={wall} gate={gate} action="moveObject" params={{ objectId, placement: { on: 'wall', wall, u: along / 2, y: p.y } }} label={t('options.hangOnWall', { wall: t(`options.wall_${wall}`) })} current={p.wall === wall}>
-                  {t(`options.wall_${wall}`)}
+                <GatedButton key={wall} gate={gate} action="moveObject" params={{ objectId, placement: { on: 'wall', wall, u: along / 2, y: p.y } }} label={t('options.hangOnWall', { wall: t(`planner.wall_${wall}`) })} current={p.wall === wall}>
+                  {t(`planner.wall_${wall}`)}
                 </GatedButton>
               );
             })}

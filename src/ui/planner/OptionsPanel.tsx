@@ -1,3 +1,4 @@
+import './registerOptionsEnglish';
 import type { Catalog } from '../../core/model/catalogSchema';
 import type { Configuration } from '../../core/model/configuration';
 import type { ActionGate } from './actionGate';

@@ -1,3 +1,4 @@
+import './registerOptionsEnglish';
 import type { ReactNode } from 'react';
 import { useI18n } from '../i18n/useI18n';
 

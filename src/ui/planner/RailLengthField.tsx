@@ -11,7 +11,7 @@ export function RailLengthField({ railId, railNumber, length, gate }: { railId: 
   const { t } = useI18n();
   return (
     <CommitField
-      label={t('options.railLengthField', { n: railNumber })}
+      label={t('planner.railLengthField', { n: railNumber })}
       value={length}
       onCommit={(value) => gate.attempt('setRailLength', { railId, length: value })}
       onRefused={gate.explain}

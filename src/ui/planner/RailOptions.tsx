@@ -1,3 +1,4 @@
+import './registerOptionsEnglish';
 import type { Catalog } from '../../core/model/catalogSchema';
 import type { LightSystem, Rail } from '../../core/model/configuration';
 import { isFreeRail } from '../../core/model/freePositions';

@@ -1,3 +1,4 @@
+import './registerOptionsEnglish';
 import type { Room } from '../../core/model/configuration';
 import type { ActionGate } from './actionGate';
 import { CommitField } from './CommitField';

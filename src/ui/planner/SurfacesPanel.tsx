@@ -13,7 +13,7 @@ export interface SurfacesPanelProps {
   gate: ActionGate;
 }
 
-const WALL_LABELS: Record<(typeof WALL_NAMES)[number], MessageKey> = { north: 'options.northWall', south: 'options.southWall', west: 'options.westWall', east: 'options.eastWall' };
+const WALL_LABELS: Record<(typeof WALL_NAMES)[number], MessageKey> = { north: 'planner.northWall', south: 'planner.southWall', west: 'planner.westWall', east: 'planner.eastWall' };
 
 /**
  * The room's own finishes (floor, ceiling, the walls together or one by one): each choice is one
@@ -37,7 +37,7 @@ export function SurfacesPanel({ room, finishes, gate }: SurfacesPanelProps) {
         {row('ceiling', t('app.ceiling'))}
       </div>
       <details className="finish-walls">
-        <summary>{t('options.wallsOneByOne')}</summary>
+        <summary>{t('planner.wallsOneByOne')}</summary>
         <div className="finish-list">{WALL_NAMES.map((w) => row(w, t(WALL_LABELS[w])))}</div>
       </details>
     </section>

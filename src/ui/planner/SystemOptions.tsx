@@ -1,3 +1,4 @@
+import './registerOptionsEnglish';
 import type { Catalog } from '../../core/model/catalogSchema';
 import { MOUNTINGS, type LightSystem } from '../../core/model/configuration';
 import { allowedFeedPositions, driversBySize, feedLoads, formatWatts, sameFeedAt } from '../../core/model/feedLoads';

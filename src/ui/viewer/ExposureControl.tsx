@@ -1,3 +1,4 @@
+import './registerView3dEnglish';
 import { useState } from 'react';
 import { EV100_MAX, EV100_MIN, type ExposureSetting } from '../../engines/view/photographicExposure';
 import { useI18n } from '../i18n/useI18n';

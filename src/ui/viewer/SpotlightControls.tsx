@@ -1,3 +1,4 @@
+import './registerView3dEnglish';
 import { useEffect, useMemo } from 'react';
 import { useStore } from 'zustand';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';

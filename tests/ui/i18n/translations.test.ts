@@ -2,6 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { LANGUAGES } from '../../../src/ui/i18n/languages';
 import { loadCoreEnglish, loadMessages, registerEnglishAreas } from '../../../src/ui/i18n/loadMessages';
 import lazyEnglish from '../../../src/ui/i18n/messages/en/lazy';
+import optionsPanelEnglish from '../../../src/ui/i18n/messages/en/optionsPanel';
 import type { MessageTree, PluralMessage } from '../../../src/ui/i18n/messageTypes';
 import { hasWord } from './findHardCodedText';
 import defaultCatalog from '../../../src/core/catalog/default-catalog.json';
@@ -22,14 +23,15 @@ const placeholders = (v: string | PluralMessage) => [...new Set(forms(v).flatMap
  * same way (checked by hand). Anything else equal to English is an untranslated string.
  */
 const SAME_AS_ENGLISH: Record<string, readonly string[]> = {
-  de: ['common.ok', 'common.labelWithReason', 'app.fieldInMetres', 'options.kelvin', 'options.finishOption', 'options.driverChoice', 'live.cct', 'live.universeShort', 'view3d.modeLux', 'planner.bomModule', 'options.clipN', 'a11y.system', 'filters.chromaticity', 'filters.transmission', 'furniture.sideboard', 'scenes.go', 'scenes.goTo', 'scenes.seconds'],
-  fr: ['common.ok', 'app.fieldInMetres', 'options.kelvin', 'options.finishOption', 'options.driverChoice', 'live.cct', 'live.universeShort', 'view3d.modeLux', 'planner.bomModule', 'planner.bomLineTotal', 'planner.bomArticle', 'options.panel', 'commands.options', 'app.surfaces', 'options.rotation', 'options.railTitle', 'options.suspensionField', 'options.mounting', 'options.railChip', 'files.triangles', 'live.sources', 'live.connectedStatus', 'view3d.selectedModule', 'furniture.sofa', 'planner.bomTotal', 'planner.toolOptions', 'a11y.railCount', 'a11y.moduleCount', 'aim.rotation', 'filters.chromaticity', 'filters.transmission', 'scenes.go', 'scenes.seconds'],
-  it: ['common.ok', 'common.labelWithReason', 'app.fieldInMetres', 'options.kelvin', 'options.finishOption', 'options.driverChoice', 'live.cct', 'live.universeShort', 'view3d.modeLux', 'planner.bomModule', 'finishes.terracotta', 'options.clipN', 'exposure.ev100', 'filters.chromaticity', 'scenes.go', 'scenes.goTo', 'scenes.seconds'],
+  de: ['common.ok', 'common.labelWithReason', 'app.fieldInMetres', 'options.kelvin', 'planner.finishOption', 'options.driverChoice', 'live.cct', 'live.universeShort', 'view3d.modeLux', 'planner.bomModule', 'options.clipN', 'a11y.system', 'filters.chromaticity', 'filters.transmission', 'furniture.sideboard', 'scenes.go', 'scenes.goTo', 'scenes.seconds'],
+  fr: ['common.ok', 'app.fieldInMetres', 'options.kelvin', 'planner.finishOption', 'options.driverChoice', 'live.cct', 'live.universeShort', 'view3d.modeLux', 'planner.bomModule', 'planner.bomLineTotal', 'planner.bomArticle', 'options.panel', 'commands.options', 'app.surfaces', 'options.rotation', 'options.railTitle', 'options.suspensionField', 'options.mounting', 'options.railChip', 'files.triangles', 'live.sources', 'live.connectedStatus', 'view3d.selectedModule', 'furniture.sofa', 'planner.bomTotal', 'planner.toolOptions', 'a11y.railCount', 'a11y.moduleCount', 'aim.rotation', 'filters.chromaticity', 'filters.transmission', 'scenes.go', 'scenes.seconds'],
+  it: ['common.ok', 'common.labelWithReason', 'app.fieldInMetres', 'options.kelvin', 'planner.finishOption', 'options.driverChoice', 'live.cct', 'live.universeShort', 'view3d.modeLux', 'planner.bomModule', 'finishes.terracotta', 'options.clipN', 'exposure.ev100', 'filters.chromaticity', 'scenes.go', 'scenes.goTo', 'scenes.seconds'],
 };
 
 describe('translations', async () => {
   // The 3D chunk's English areas, as that chunk registers them.
   registerEnglishAreas(lazyEnglish);
+  registerEnglishAreas(optionsPanelEnglish);
   // And the English of the core's codes, which comes with the other languages (docs/i18n.md, "Bundles").
   await loadCoreEnglish();
   const en = flatten(await loadMessages('en'));
