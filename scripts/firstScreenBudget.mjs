@@ -12,13 +12,11 @@ import { join } from 'node:path';
 import { gzipSync } from 'node:zlib';
 
 /**
- * KiB (1024 B) of gzip. Issue 13's target is 120 KiB; the build is not there yet (docs/benchmarks.md,
- * "First screen": what is in it and what has to become lazy), so the check enforces a ceiling 3 KiB
- * over today's larger page (embed.html, 130.7 KiB on 2026-11-23 with preact in the browser build and
- * the options panel lazy; was 190.6 KiB) and must only ever be lowered towards the target.
+ * Issue 13: the first download at most "120 kB", kB as the issue and Vite's build report write it:
+ * 1000 bytes, so 120 000 bytes of gzip (117.2 KiB). The check fails above it; lower it when the
+ * first screen shrinks, never raise it (docs/benchmarks.md, "First screen").
  */
-export const FIRST_SCREEN_TARGET_KIB = 120;
-export const FIRST_SCREEN_BUDGET_KIB = 134;
+export const FIRST_SCREEN_BUDGET_BYTES = 120_000;
 
 /** The pages a shopper opens: the standalone app and the shop-page embedding example. */
 export const PAGES = ['index.html', 'embed.html'];
@@ -106,10 +104,10 @@ if (isMain) {
   let over = false;
   for (const r of results) {
     const kib = r.gzip / 1024;
-    const ok = kib <= FIRST_SCREEN_BUDGET_KIB;
+    const ok = r.gzip <= FIRST_SCREEN_BUDGET_BYTES;
     over ||= !ok;
     if (asJson) continue;
-    process.stdout.write(`${r.page}: first screen ${kib.toFixed(1)} KiB gzip -9 (${(r.raw / 1024).toFixed(0)} KiB raw) in ${r.files.length} files; ceiling ${FIRST_SCREEN_BUDGET_KIB} KiB: ${ok ? 'ok' : 'OVER'} (target ${FIRST_SCREEN_TARGET_KIB} KiB)\n`);
+    process.stdout.write(`${r.page}: first screen ${r.gzip} B = ${(r.gzip / 1000).toFixed(1)} kB = ${kib.toFixed(1)} KiB gzip -9 (${(r.raw / 1024).toFixed(0)} KiB raw) in ${r.files.length} files; budget ${FIRST_SCREEN_BUDGET_BYTES / 1000} kB: ${ok ? 'ok' : 'OVER'}\n`);
     for (const f of r.files) process.stdout.write(`  ${(f.gzip / 1024).toFixed(1).padStart(6)} KiB  ${f.file}\n`);
     process.stdout.write('  largest sources (each gzipped alone):\n');
     for (const b of r.breakdown.slice(0, 15)) process.stdout.write(`  ${(b.gzip / 1024).toFixed(1).padStart(6)} KiB  ${b.source}\n`);
