@@ -34,19 +34,27 @@ const librarySchema = z.strictObject({
 export type ColourFilter = z.infer<typeof filterSchema>;
 export type ColourFilterLibrary = z.infer<typeof librarySchema>;
 
-/** Parses index data (the JSON above, or a test's); throws InputError naming the filter and field. */
-export function parseColourFilterLibrary(data: unknown): ColourFilterLibrary {
-  const r = librarySchema.safeParse(data);
+/**
+ * Parses one of the library's files with its schema and checks that every id is used once; an
+ * InputError names the file and the field (`filters.2.kind: …`) or the repeated id.
+ */
+export function parseFilterFile<T>(file: string, schema: z.ZodType<T>, data: unknown, entries: (parsed: T) => readonly { id: string }[]): T {
+  const r = schema.safeParse(data);
   if (!r.success) {
     const issue = r.error.issues[0];
-    throw new InputError(`colour-filters.json: ${issue.path.join('.')}: ${issue.message}`);
+    throw new InputError(`${file}: ${issue.path.join('.')}: ${issue.message}`);
   }
   const seen = new Set<string>();
-  for (const f of r.data.filters) {
-    if (seen.has(f.id)) throw new InputError(`colour-filters.json: duplicate filter id '${f.id}'`);
-    seen.add(f.id);
+  for (const { id } of entries(r.data)) {
+    if (seen.has(id)) throw new InputError(`${file}: duplicate filter id '${id}'`);
+    seen.add(id);
   }
   return r.data;
+}
+
+/** Parses index data (the JSON above, or a test's); throws InputError naming the filter and field. */
+export function parseColourFilterLibrary(data: unknown): ColourFilterLibrary {
+  return parseFilterFile('colour-filters.json', librarySchema, data, (library) => library.filters);
 }
 
 /** The library shipped with luxbox. */

@@ -7,7 +7,7 @@
 import { z } from 'zod';
 import { InputError } from '../inputError';
 import { CIE1931_2DEG, CIE1931_START_NM, CIE1931_STEP_NM } from '../photometry/cieCmf1931';
-import { COLOUR_FILTER_LIBRARY, FILTER_ID_PATTERN } from './colourFilterLibrary';
+import { COLOUR_FILTER_LIBRARY, FILTER_ID_PATTERN, parseFilterFile } from './colourFilterLibrary';
 
 const LAST_NM = CIE1931_START_NM + CIE1931_STEP_NM * (CIE1931_2DEG.length - 1);
 
@@ -46,21 +46,12 @@ export type ColourFilterSpectra = z.infer<typeof spectraSchema>;
  * library filter, no other. Throws InputError naming the filter and field.
  */
 export function parseColourFilterSpectra(data: unknown): ColourFilterSpectra {
-  const r = spectraSchema.safeParse(data);
-  if (!r.success) {
-    const issue = r.error.issues[0];
-    throw new InputError(`colour-filter-spectra.json: ${issue.path.join('.')}: ${issue.message}`);
+  const parsed = parseFilterFile('colour-filter-spectra.json', spectraSchema, data, (file) => file.spectra);
+  const listed = new Set(COLOUR_FILTER_LIBRARY.filters.map((f) => f.id));
+  for (const id of listed) {
+    if (!parsed.spectra.some((s) => s.id === id)) throw new InputError(`colour-filter-spectra.json: no curve for filter '${id}' of colour-filters.json`);
   }
-  const seen = new Set<string>();
-  for (const s of r.data.spectra) {
-    if (seen.has(s.id)) throw new InputError(`colour-filter-spectra.json: duplicate filter id '${s.id}'`);
-    seen.add(s.id);
-  }
-  for (const f of COLOUR_FILTER_LIBRARY.filters) {
-    if (!seen.has(f.id)) throw new InputError(`colour-filter-spectra.json: no curve for filter '${f.id}' of colour-filters.json`);
-    seen.delete(f.id);
-  }
-  if (seen.size > 0) throw new InputError(`colour-filter-spectra.json: curve for '${[...seen][0]}', which colour-filters.json does not list`);
-  return r.data;
+  const extra = parsed.spectra.find((s) => !listed.has(s.id));
+  if (extra) throw new InputError(`colour-filter-spectra.json: curve for '${extra.id}', which colour-filters.json does not list`);
+  return parsed;
 }
-

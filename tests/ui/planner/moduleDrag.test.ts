@@ -6,28 +6,13 @@
  * Positions by hand, metres from the rail start; tolerance 1e-9 m.
  */
 import { describe, expect, it } from 'vitest';
-import type { Configuration } from '../../../src/core/model/configuration';
-import { systemAtOneOne } from '../../core/model/helpers';
-import { newModule } from '../../../src/core/model/presets';
 import { detailLevel } from '../../../src/ui/planner/detailLevel';
 import { zoomAt } from '../../../src/ui/planner/viewTransform';
-import { TestPlanner, catalog } from './testPlanner';
+import { TestPlanner, twoRailSystem } from './testPlanner';
 
-/** System s1 at (1, 1) heading +x: rail r2 of 1.5 m packed from the start (spot m3 0–0.15, linear m4 0.15–0.75), then rail r5. */
-function rails(): Configuration {
-  return systemAtOneOne(
-    [
-      { id: 'r2', length: 1.5, distribution: 'start', modules: [newModule(catalog, 'm3', 'spot'), newModule(catalog, 'm4', 'linear')] },
-      { id: 'r5', length: 1, distribution: 'start', modules: [] },
-    ],
-    [{ connector: 'straight', turn: 0 }],
-    'f6',
-    7,
-  );
-}
 
 function zoomedIn(): TestPlanner {
-  const t = new TestPlanner(rails());
+  const t = new TestPlanner(twoRailSystem());
   t.controller.setView(zoomAt(t.view, t.screenOf({ x: 1.75, z: 1 }), 2.5), false);
   expect(detailLevel(t.view.scale)).toBe('module');
   return t;
@@ -84,7 +69,7 @@ describe('dragging a module along its rail', () => {
   });
 
   it('zoomed out, a drag on a module still moves the whole system', () => {
-    const t = new TestPlanner(rails());
+    const t = new TestPlanner(twoRailSystem());
     expect(detailLevel(t.view.scale)).toBe('system');
     const from = t.moduleCentre(1);
     t.drag(from, { sx: from.sx + 0.5 * t.view.scale, sy: from.sy });

@@ -6,28 +6,13 @@
  */
 import { renderToStaticMarkup } from 'react-dom/server';
 import { describe, expect, it } from 'vitest';
-import type { Configuration } from '../../../src/core/model/configuration';
-import { newModule } from '../../../src/core/model/presets';
 import { createActionGate } from '../../../src/ui/planner/actionGate';
 import { detailLevel } from '../../../src/ui/planner/detailLevel';
 import { PlanControls } from '../../../src/ui/planner/PlanControls';
 import { selectionPath } from '../../../src/ui/planner/selection';
 import { zoomAt } from '../../../src/ui/planner/viewTransform';
-import { systemAtOneOne } from '../../core/model/helpers';
-import { TestPlanner, catalog } from './testPlanner';
+import { TestPlanner, catalog, twoRailSystem } from './testPlanner';
 
-/** System s1 at (1, 1) heading +x: rail r2 of 1.5 m packed from the start (spot m3 0–0.15, linear m4 0.15–0.75), then rail r5. */
-function rails(): Configuration {
-  return systemAtOneOne(
-    [
-      { id: 'r2', length: 1.5, distribution: 'start', modules: [newModule(catalog, 'm3', 'spot'), newModule(catalog, 'm4', 'linear')] },
-      { id: 'r5', length: 1, distribution: 'start', modules: [] },
-    ],
-    [{ connector: 'straight', turn: 0 }],
-    'f6',
-    7,
-  );
-}
 
 /** The controls as the planner renders them now, with the controller's drag. */
 function controls(t: TestPlanner): string {
@@ -48,7 +33,7 @@ function placedAt(html: string, testId: string): { sx: number; sy: number } {
 
 describe('on-plan controls during a drag', () => {
   it("a module's type button follows the module while it is dragged, before the release", () => {
-    const t = new TestPlanner(rails());
+    const t = new TestPlanner(twoRailSystem());
     t.controller.setView(zoomAt(t.view, t.screenOf({ x: 1.75, z: 1 }), 2.5), false);
     expect(detailLevel(t.view.scale)).toBe('module');
     const { scale, offsetX, offsetY } = t.view;
@@ -77,7 +62,7 @@ describe('on-plan controls during a drag', () => {
   });
 
   it("a dragged system's move fields go with it and show where it would land", () => {
-    const t = new TestPlanner(rails());
+    const t = new TestPlanner(twoRailSystem());
     t.store.getState().select({ kind: 'system', id: 's1' });
     expect(detailLevel(t.view.scale)).toBe('system');
     const before = placedAt(controls(t), 'move-s1');

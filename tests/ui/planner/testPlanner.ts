@@ -2,14 +2,29 @@ import { defaultCatalog } from '../../../src/core/catalog/defaultCatalog';
 import { demoConfiguration } from '../../../src/core/catalog/demoConfiguration';
 import type { Configuration, LightSystem } from '../../../src/core/model/configuration';
 import { modulePlacements, railPlacements } from '../../../src/core/model/geometry';
+import { newModule } from '../../../src/core/model/presets';
 import { validate } from '../../../src/core/model/validate';
 import { createConfiguratorStore } from '../../../src/core/store/createConfiguratorStore';
 import { createUiStore } from '../../../src/core/store/uiStore';
 import type { KeyChord } from '../../../src/ui/planner/keyChord';
 import { PlannerController } from '../../../src/ui/planner/PlannerController';
 import { type PlanPoint, type ScreenPoint, worldToScreen } from '../../../src/ui/planner/viewTransform';
+import { systemAtOneOne } from '../../core/model/helpers';
 
 export const catalog = defaultCatalog;
+
+/** System s1 at (1, 1) heading +x: rail r2 of 1.5 m packed from the start (spot m3 0–0.15, linear m4 0.15–0.75), then rail r5. */
+export function twoRailSystem(): Configuration {
+  return systemAtOneOne(
+    [
+      { id: 'r2', length: 1.5, distribution: 'start', modules: [newModule(catalog, 'm3', 'spot'), newModule(catalog, 'm4', 'linear')] },
+      { id: 'r5', length: 1, distribution: 'start', modules: [] },
+    ],
+    [{ connector: 'straight', turn: 0 }],
+    'f6',
+    7,
+  );
+}
 
 /**
  * A planner without React or a DOM, driven like a user would (in the manner of tldraw's
