@@ -83,6 +83,7 @@ function toAction(s: Configuration, st: Step): [string, unknown] {
   // Branch ends too (a leaf, a rail with a connector, one past the last rail).
   const at = st.a < 0.3 ? 'start' : st.a < 0.5 ? 'end' : st.a < 0.8 ? { joint: st.j % 5 } : { end: st.j % 5 };
   const driver = pick(catalog.drivers.map((d) => d.id), st.i, 'none');
+  const smallDrivers = [...catalog.drivers].sort((x, y) => x.capacity - y.capacity).slice(0, 3).map((d) => d.id);
   switch (kind) {
     case 0:
       return ['setRoom', { width: 0.5 + st.a * 11, depth: 0.5 + st.b * 11, height: 2 + st.c * 2.5 }];
@@ -164,7 +165,11 @@ function toAction(s: Configuration, st: Step): [string, unknown] {
     case 35:
       return ['removeFeed', { feedId: feed }];
     case 36:
-      return ['setFeedDriver', { feedId: feed, driver: st.c < 0.05 ? 'none' : driver }];
+      // Half the time one of the three smallest drivers: presets ship with headroom, so a driver that
+      // one more module fills (and one too small for the load) must be chosen to reach those refusals.
+      // Chosen by the integer fields: fast-check draws the unit doubles mostly at 0 (so a `c < 0.05`
+      // choice of 'none' took 717 of 734 draws at 5 000 sequences, and no driver was ever set).
+      return ['setFeedDriver', { feedId: feed, driver: st.i % 20 === 0 ? 'none' : st.i % 2 === 1 ? pick(smallDrivers, st.j, 'none') : driver }];
     case 37:
       return ['setMounting', { systemId: sys, mounting: st.b < 0.5 ? 'surface' : 'suspended' }];
     case 38:
@@ -423,12 +428,12 @@ describe('always-valid property', () => {
     expect(placed).toBeGreaterThan(0.68 * RUNS);
     // the power and mounting actions, and refusals for an overloaded driver, in bulk
     expect(power.enabled).toBeGreaterThan(RUNS / 4);
-    // (two aim kinds thinned them: 466 at 1 000 sequences)
-    expect(power.refused).toBeGreaterThan(0.4 * RUNS);
-    // (97 at 5 000 sequences since the Single rail preset ships with a 240 W driver, room for two
-    // more spots: a random sequence now needs three additions on its rail to fill it; it came one
-    // spot from full on its 153.6 W driver before, > 500)
-    expect(power.overloads).toBeGreaterThan(RUNS / 100);
+    // (1 856 at 5 000 and 3 710 at 10 000 sequences since setFeedDriver really sets drivers)
+    expect(power.refused).toBeGreaterThan(0.3 * RUNS);
+    // (473 at 5 000 and 913 at 10 000 sequences: setFeedDriver picks one of the three smallest drivers
+    // half the time, which one more module fills or which is too small for the load. The Single rail
+    // preset ships with a 240 W driver, so without that only 97 at 5 000 sequences filled one)
+    expect(power.overloads).toBeGreaterThan(RUNS / 15);
     expect(power.surface).toBeGreaterThan(RUNS / 10);
     // free positions and rail removals at any index (splits included), in bulk
     // (at 5 000 sequences: 739 / 2 419 moves, 598 free rails at the ends, 213 removals, 72 splits)
