@@ -47,7 +47,11 @@ interface Step {
   c: number;
 }
 
-const unit = fc.double({ min: 0, max: 1, noNaN: true });
+// Uniform in [0, 1) in steps of 1e-6. fc.double is biased towards 0 and the ends (good for finding
+// numeric edge cases, bad here): most draws were exactly 0, so every `a < 0.3`-style choice took one
+// branch and positions sat at the room's corner. Unbiased (2026-11-24), 5 000 sequences enable 34 417
+// steps instead of 23 151, split rails 648 times instead of 84 and fill a driver 1 911 times instead of 473.
+const unit = fc.noBias(fc.integer({ min: 0, max: 999_999 })).map((n) => n / 1_000_000);
 const step = fc.record({ kind: fc.nat(55), i: fc.nat(50), j: fc.nat(50), a: unit, b: unit, c: unit });
 
 const pick = <T>(xs: readonly T[], i: number, fallback: T): T => (xs.length ? xs[i % xs.length] : fallback);
@@ -167,8 +171,8 @@ function toAction(s: Configuration, st: Step): [string, unknown] {
     case 36:
       // Half the time one of the three smallest drivers: presets ship with headroom, so a driver that
       // one more module fills (and one too small for the load) must be chosen to reach those refusals.
-      // Chosen by the integer fields: fast-check draws the unit doubles mostly at 0 (so a `c < 0.05`
-      // choice of 'none' took 717 of 734 draws at 5 000 sequences, and no driver was ever set).
+      // Chosen by the integer fields (with the biased unit above, a `c < 0.05` choice of 'none' once
+      // took 717 of 734 draws at 5 000 sequences, and no driver was ever set).
       return ['setFeedDriver', { feedId: feed, driver: st.i % 20 === 0 ? 'none' : st.i % 2 === 1 ? pick(smallDrivers, st.j, 'none') : driver }];
     case 37:
       return ['setMounting', { systemId: sys, mounting: st.b < 0.5 ? 'surface' : 'suspended' }];
@@ -428,13 +432,14 @@ describe('always-valid property', () => {
     expect(placed).toBeGreaterThan(0.68 * RUNS);
     // the power and mounting actions, and refusals for an overloaded driver, in bulk
     expect(power.enabled).toBeGreaterThan(RUNS / 4);
-    // (1 856 at 5 000 and 3 710 at 10 000 sequences since setFeedDriver really sets drivers)
+    // (2 806 at 5 000 and 5 644 at 10 000 sequences)
     expect(power.refused).toBeGreaterThan(0.3 * RUNS);
-    // (473 at 5 000 and 913 at 10 000 sequences: setFeedDriver picks one of the three smallest drivers
-    // half the time, which one more module fills or which is too small for the load. The Single rail
-    // preset ships with a 240 W driver, so without that only 97 at 5 000 sequences filled one)
+    // (1 911 at 5 000 and 3 770 at 10 000 sequences: setFeedDriver picks one of the three smallest
+    // drivers half the time, which one more module fills or which is too small for the load. The
+    // Single rail preset ships with a 240 W driver, so without that only 97 at 5 000 filled one)
     expect(power.overloads).toBeGreaterThan(RUNS / 15);
-    expect(power.surface).toBeGreaterThan(RUNS / 10);
+    // (495 at 5 000 and 956 at 10 000 sequences)
+    expect(power.surface).toBeGreaterThan(RUNS / 15);
     // free positions and rail removals at any index (splits included), in bulk
     // (at 5 000 sequences: 739 / 2 419 moves, 598 free rails at the ends, 213 removals, 72 splits)
     expect(free.moves).toBeGreaterThan(RUNS / 12);
