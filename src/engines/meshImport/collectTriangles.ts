@@ -3,8 +3,20 @@ import { InputError } from '../../core/inputError';
 import type { MeshMaterial, TriangleMesh } from '../../core/mesh/triangleMesh';
 import { checkTriangleBudget } from './triangleBudget';
 
-/** What a loader's material becomes: the name and ρ the file gives it. */
-export type MaterialOf = (material: Material | undefined) => MeshMaterial;
+/** A material as the file gives it: name, ρ, and whether its surfaces are lit and seen from both sides. */
+export interface ImportMaterial extends MeshMaterial {
+  /** OBJ: always (the format has no sides); glTF: the material's `doubleSided` (spec §3.9.5). */
+  readonly twoSided: boolean;
+}
+
+/** What a loader's material becomes. */
+export type MaterialOf = (material: Material | undefined) => ImportMaterial;
+
+/** The triangles in the file's units and, per triangle, whether its material is two-sided (1) or not (0). */
+export interface CollectedTriangles {
+  mesh: TriangleMesh;
+  twoSided: Uint8Array;
+}
 
 /**
  * Every triangle of the meshes under `root` (three.js objects as OBJLoader or GLTFLoader build
@@ -14,12 +26,13 @@ export type MaterialOf = (material: Material | undefined) => MeshMaterial;
  * over shared edges), triangles whose corners weld together dropped. A transform with a negative
  * determinant (a mirror) reverses the winding back to counterclockwise-from-the-front.
  */
-export function collectTriangles(root: Object3D, file: string, materialOf: MaterialOf, warnings: string[]): TriangleMesh {
+export function collectTriangles(root: Object3D, file: string, materialOf: MaterialOf, warnings: string[]): CollectedTriangles {
   root.updateMatrixWorld(true);
   const positions: number[] = [];
   const indices: number[] = [];
   const materialOfTriangle: number[] = [];
   const materials: MeshMaterial[] = [];
+  const twoSidedOfMaterial: boolean[] = [];
   const materialIndex = new Map<string, number>();
   const weld = new Map<string, number>();
   let collapsed = 0;
@@ -44,12 +57,13 @@ export function collectTriangles(root: Object3D, file: string, materialOf: Mater
   };
   const materialSlot = (material: Material | undefined): number => {
     const m = materialOf(material);
-    const key = JSON.stringify([m.name, m.reflectance]);
+    const key = JSON.stringify([m.name, m.reflectance, m.twoSided]);
     let k = materialIndex.get(key);
     if (k === undefined) {
       if (materials.length >= 65535) throw new InputError(`${file}: more than 65 535 materials`);
       k = materials.length;
-      materials.push(m);
+      materials.push({ name: m.name, reflectance: m.reflectance });
+      twoSidedOfMaterial.push(m.twoSided);
       materialIndex.set(key, k);
     }
     return k;
@@ -100,10 +114,13 @@ export function collectTriangles(root: Object3D, file: string, materialOf: Mater
   if (collapsed > 0) warnings.push(`${file}: ${collapsed} triangle${collapsed === 1 ? '' : 's'} with coinciding corners dropped`);
   if (indices.length === 0) throw new InputError(`${file}: no triangles (luxbox needs a surface model)`);
   return {
-    positions: new Float32Array(positions),
-    indices: new Uint32Array(indices),
-    materialOfTriangle: new Uint16Array(materialOfTriangle),
-    materials,
+    mesh: {
+      positions: new Float32Array(positions),
+      indices: new Uint32Array(indices),
+      materialOfTriangle: new Uint16Array(materialOfTriangle),
+      materials,
+    },
+    twoSided: Uint8Array.from(materialOfTriangle, (m) => (twoSidedOfMaterial[m] ? 1 : 0)),
   };
 }
 

@@ -4,7 +4,7 @@ import { InputError } from '../../core/inputError';
 import { oneLine } from '../../core/model/untrustedJson';
 import type { Rgb } from '../../core/model/lightingScene';
 import { clampReflectance } from './clampReflectance';
-import { collectTriangles } from './collectTriangles';
+import { collectTriangles, type ImportMaterial } from './collectTriangles';
 import { finishImport, type ImportedMesh, type MeshFile, type MeshImportOptions } from './importedMesh';
 import { DEFAULT_MATERIAL_NAME, DEFAULT_REFLECTANCE } from './defaultMaterial';
 import { packGltf } from './packGltf';
@@ -31,7 +31,7 @@ export async function importGltfMesh(files: readonly MeshFile[], options: MeshIm
   }
   if (!gltf.scene) throw new InputError(`${name}: no scene`);
   const materials = Array.isArray(json.materials) ? json.materials : [];
-  const byIndex = new Map<number, { name: string; reflectance: Rgb }>();
+  const byIndex = new Map<number, ImportMaterial>();
   let unassigned = false;
   const fileMesh = collectTriangles(
     gltf.scene,
@@ -40,7 +40,7 @@ export async function importGltfMesh(files: readonly MeshFile[], options: MeshIm
       const index = material ? gltf.parser.associations.get(material)?.materials : undefined;
       if (index === undefined || !materials[index]) {
         unassigned = true;
-        return { name: DEFAULT_MATERIAL_NAME, reflectance: DEFAULT_REFLECTANCE };
+        return { name: DEFAULT_MATERIAL_NAME, reflectance: DEFAULT_REFLECTANCE, twoSided: false };
       }
       let known = byIndex.get(index);
       if (!known) {
@@ -55,7 +55,7 @@ export async function importGltfMesh(files: readonly MeshFile[], options: MeshIm
           warnings.push(`${name}: material '${shortName(label)}': baseColorFactor is not [r, g, b, a]; grey 0.5 used`);
           rgb = DEFAULT_REFLECTANCE;
         }
-        known = { name: label, reflectance: rgb };
+        known = { name: label, reflectance: rgb, twoSided: m.doubleSided === true };
         byIndex.set(index, known);
       }
       return known;

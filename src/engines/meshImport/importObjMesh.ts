@@ -64,7 +64,7 @@ export function importObjMesh(files: readonly MeshFile[], options: MeshImportOpt
       const materialName = material?.name || DEFAULT_MATERIAL_NAME;
       const rgb = kd.get(materialName);
       if (!rgb && material?.name) undefinedMaterials.add(materialName);
-      return { name: materialName, reflectance: rgb ?? DEFAULT_REFLECTANCE };
+      return { name: materialName, reflectance: rgb ?? DEFAULT_REFLECTANCE, twoSided: true };
     },
     warnings,
   );

@@ -1,4 +1,6 @@
+import { orientMesh, type OrientationSummary } from '../../core/mesh/orientMesh';
 import { positionBounds, type Bounds3, type TriangleMesh } from '../../core/mesh/triangleMesh';
+import type { CollectedTriangles } from './collectTriangles';
 import { checkTriangleBudget } from './triangleBudget';
 import { detectUnits, METRES_PER_UNIT, PLAUSIBLE_EXTENT_M, type MeshUnit, type MeshUnitsOption } from './meshUnits';
 
@@ -28,7 +30,10 @@ export interface ImportedMesh {
   units: MeshUnit;
   /** What 'auto' picks for this file (glTF: always 'm'), so the UI can show it and offer to override. */
   detectedUnits: MeshUnit;
+  /** Triangles the file has (what the budget counts); `mesh` also has `orientation.backTriangles` back sides, less `orientation.droppedCopies`. */
   triangleCount: number;
+  /** What orienting the parts did (closed parts turned outward, open ones given a back side; docs/furniture.md). */
+  orientation: OrientationSummary;
   /** Bounds of `mesh`, metres. */
   bounds: Bounds3;
   /** Problems that did not stop the import (missing MTL, textures ignored, clamped colours), one line each. */
@@ -36,12 +41,13 @@ export interface ImportedMesh {
 }
 
 /**
- * The last step of every import: unit detection and scaling, the triangle budget, the bounds.
+ * The last step of every import: unit detection and scaling, the triangle budget, orientation
+ * (orientMesh: closed parts outward, two-sided open parts with their back sides), the bounds.
  * `fixedUnit` is the unit the format itself defines (glTF: metres), else null (OBJ).
  */
-export function finishImport(name: string, fileMesh: TriangleMesh, fixedUnit: MeshUnit | null, options: MeshImportOptions, warnings: string[]): ImportedMesh {
-  const triangleCount = fileMesh.indices.length / 3;
-  checkTriangleBudget(name, triangleCount);
+export function finishImport(name: string, collected: CollectedTriangles, fixedUnit: MeshUnit | null, options: MeshImportOptions, warnings: string[]): ImportedMesh {
+  const fileMesh = collected.mesh;
+  checkTriangleBudget(name, fileMesh.indices.length / 3);
   const fileBounds = positionBounds(fileMesh.positions);
   const extent = Math.max(...fileBounds.max.map((hi, a) => hi - fileBounds.min[a]));
   const detected = fixedUnit ?? detectUnits(extent);
@@ -57,8 +63,14 @@ export function finishImport(name: string, fileMesh: TriangleMesh, fixedUnit: Me
     warnings.push(`${name}: ${round(metresExtent)} m across in ${units} — check the units`);
   }
   const positions = scale === 1 ? fileMesh.positions : fileMesh.positions.map((x) => x * scale);
-  const mesh: TriangleMesh = { ...fileMesh, positions };
-  return { name, mesh, units, detectedUnits, triangleCount, bounds: positionBounds(positions), warnings };
+  // After scaling: the back sides lie a fixed distance in metres behind their fronts.
+  const { mesh, summary } = orientMesh({ ...fileMesh, positions }, (t) => collected.twoSided[t] === 1);
+  // The budget counts the file's triangles; back sides add at most as many again (the baker's BVH and atlas take far more).
+  const triangleCount = fileMesh.indices.length / 3;
+  if (summary.undecided > 0) {
+    warnings.push(`${name}: ${summary.undecided} part${summary.undecided === 1 ? '' : 's'} with no clear inside (edges shared by three or more faces, or faces that cannot be wound alike) lit on both sides`);
+  }
+  return { name, mesh, units, detectedUnits, triangleCount, orientation: summary, bounds: positionBounds(mesh.positions), warnings };
 }
 
 function round(x: number): number {

@@ -113,7 +113,9 @@ describe('importMesh: materials', () => {
       `m.mtl: material 'white': Kd [1, 1, 1.2] clamped to [0, ${MAX_REFLECTANCE}] → [${MAX_REFLECTANCE}, ${MAX_REFLECTANCE}, ${MAX_REFLECTANCE}]`,
       "t.obj: material 'ghost' is not defined in m.mtl; grey 0.5 used",
     ]);
-    expect(Array.from(r.mesh.materialOfTriangle)).toEqual([0, 1]);
+    // Two open triangles from an OBJ (no sides in the format): their back sides follow with the same materials.
+    expect(Array.from(r.mesh.materialOfTriangle)).toEqual([0, 1, 0, 1]);
+    expect(r.orientation).toMatchObject({ twoSided: 1, backTriangles: 2 });
   });
 
   it('a glTF base-colour texture: the factor is used, with a warning', async () => {
@@ -199,6 +201,8 @@ describe('importMesh: the triangle budget (200 000)', () => {
   it('316² quads = 199 712 triangles load', async () => {
     const r = await importMesh([textFile('floor.obj', grid(316))]);
     expect(r.triangleCount).toBe(199_712);
+    // The budget counts the file's triangles; the open sheet's back side comes on top.
+    expect(r.mesh.indices.length / 3).toBe(2 * 199_712);
   }, 30_000);
 
   it('a glTF is counted from its JSON before any geometry is built', async () => {

@@ -1,0 +1,352 @@
+import type { TriangleMesh } from './triangleMesh';
+import { coincidentPairs } from './coincidentPairs';
+import { connectedParts, type ConnectedPart } from './connectedParts';
+import { meshEdges, type MeshEdges } from './meshEdges';
+
+/**
+ * How far behind an open surface its back side lies (m). The baker treats a triangle as lit and
+ * reflecting on its counterclockwise side only (docs/baker.md, "Objects: passes"); a two-sided
+ * surface therefore gets a second, reversed copy. Coincident copies would tie in the ray caster's
+ * closest hit (which side a ray meets would depend on rounding and on the BVH's order), so the
+ * copy sits 0.5 mm behind: 5× the 0.1 mm every ray starts off its surface (SURFACE_OFFSET in
+ * shaders/objectTracing.glsl.ts), far above float32 rounding at room scale (~0.3 µm at 5 m) and far
+ * below anything a light map resolves (texels are centimetres). It also stays apart in a 24-bit depth
+ * buffer at viewing distance, so the view never z-fights the two sides.
+ */
+export const BACK_SIDE_OFFSET = 5e-4;
+
+/** A closed part whose |signed volume| is below this fraction of its bounding box's volume has no inside to speak of. */
+const FLAT_VOLUME_FRACTION = 1e-6;
+
+/** What the orientation did, per mesh (the import summary shows it). */
+export interface OrientationSummary {
+  /** Edge-connected parts. */
+  parts: number;
+  /** Watertight, consistently orientable parts (each now wound outward: positive signed volume). */
+  closed: number;
+  /** Closed parts that had to be turned (some or all of their triangles faced inward). */
+  turnedOutward: number;
+  /** Triangles whose winding was reversed (in closed parts, and in open two-sided parts made consistent). */
+  trianglesReversed: number;
+  /** Open parts given a back side (lit and reflecting on both sides). */
+  twoSided: number;
+  /** Open parts kept one-sided as the file says (glTF materials without `doubleSided`). */
+  oneSided: number;
+  /** Parts whose inside and outside cannot be told (non-manifold edges, a Möbius-like winding, no volume): two-sided. */
+  undecided: number;
+  /** Triangles where two parts are glued face to face (coincident pairs inside a solid), wound one canonical way. */
+  enclosedFaces: number;
+  /** Second copies of triangles a file repeated the other way round to make a sheet two-sided, dropped (the sheet gets its own back side). */
+  droppedCopies: number;
+  /** Back-side triangles added. */
+  backTriangles: number;
+}
+
+export interface OrientedMesh {
+  mesh: TriangleMesh;
+  summary: OrientationSummary;
+}
+
+/**
+ * Orient what a file gives so that the light does not depend on its winding (issue #35,
+ * docs/furniture.md "Which side of a face is lit"):
+ * - a **closed** part (every edge shared by exactly two of its triangles) is made consistent across
+ *   its shared edges (neighbours traverse an edge in opposite directions) and then turned so that
+ *   its signed volume (divergence theorem, Σ v0·(v1 × v2)/6) is positive: counterclockwise seen
+ *   from outside;
+ * - an **open** part is two-sided when `twoSided` says so for any of its triangles (OBJ has no
+ *   notion of sides; glTF's `doubleSided`): made consistent, turned so that its area-weighted normal
+ *   points along + of its largest axis (the same answer for a file and its inside-out copy), and
+ *   given a reversed back copy BACK_SIDE_OFFSET behind, moved along the part's vertex normals;
+ *   otherwise it is left exactly as the file winds it (glTF: counterclockwise is the front,
+ *   spec §3.7.2.1, and a one-sided material is not seen from behind);
+ * - a part that cannot be oriented (an edge three or more of its own triangles share, a winding
+ *   that cannot be made consistent, a closed part without volume) is two-sided, each triangle's
+ *   copy moved along its own normal;
+ * - **coincident triangles** (two on the same three corners) are left out of the parts: where two
+ *   solids are glued face to face (a cushion against its neighbour), the rest of both is one closed
+ *   surface and the glued faces lie inside it, where no light reaches (each pair is wound one
+ *   canonical way and its partner the other); a sheet a file makes two-sided by repeating its
+ *   triangles the other way round keeps one copy of each, made two-sided as above.
+ * Vertices are compared by exact position (importers weld identical corners). Triangles keep their
+ * order and materials (less the dropped copies); back sides follow them, with new vertices after
+ * the existing ones.
+ */
+export function orientMesh(mesh: TriangleMesh, twoSided: (triangle: number) => boolean): OrientedMesh {
+  const { positions, indices } = mesh;
+  const count = indices.length / 3;
+  const all = meshEdges(mesh);
+  const pairs = coincidentPairs(mesh, all.vertexId);
+  const glued = new Uint8Array(count);
+  for (const [a, b] of pairs) glued[a] = glued[b] = 1;
+  const isGlued = (t: number) => glued[t] === 1;
+  const adjacency = pairs.length > 0 ? meshEdges(mesh, isGlued) : all;
+  const parts = connectedParts(mesh, adjacency, isGlued);
+  const out = Uint32Array.from(indices);
+  const summary: OrientationSummary = {
+    parts: parts.length, closed: 0, turnedOutward: 0, trianglesReversed: 0, twoSided: 0, oneSided: 0, undecided: 0, enclosedFaces: 0, droppedCopies: 0, backTriangles: 0,
+  };
+  const back: BackPart[] = [];
+  const inClosed = new Uint8Array(count);
+  const turnPart = (part: ConnectedPart, turn: boolean): number => {
+    let reversed = 0;
+    part.triangles.forEach((t, k) => {
+      if (part.flip![k] !== turn) {
+        reverse(out, t);
+        reversed++;
+      }
+    });
+    return reversed;
+  };
+  for (const part of parts) {
+    if (part.flip === null) {
+      summary.undecided++;
+      back.push({ part, smooth: false });
+      continue;
+    }
+    if (part.closed) {
+      const volume = signedVolume(positions, indices, part);
+      if (!(Math.abs(volume) > FLAT_VOLUME_FRACTION * boxVolume(positions, indices, part))) {
+        summary.undecided++;
+        back.push({ part, smooth: false });
+        continue;
+      }
+      // flip[k] is relative to the part's first triangle; turn the whole part when that orientation encloses negative volume.
+      const reversed = turnPart(part, volume < 0);
+      for (const t of part.triangles) inClosed[t] = 1;
+      summary.closed++;
+      if (reversed > 0) summary.turnedOutward++;
+      summary.trianglesReversed += reversed;
+      continue;
+    }
+    if (!part.triangles.some((t) => twoSided(t))) {
+      summary.oneSided++;
+      continue;
+    }
+    summary.trianglesReversed += turnPart(part, canonicalTurn(positions, indices, part));
+    summary.twoSided++;
+    back.push({ part, smooth: true });
+  }
+  const drop = new Uint8Array(count);
+  if (pairs.length > 0) {
+    const sheets = orientCoincidentPairs(mesh, out, pairs, all, inClosed, drop, summary);
+    for (const part of connectedParts(mesh, meshEdges(mesh, (t) => !sheets.has(t)), (t) => !sheets.has(t))) {
+      summary.parts++;
+      if (part.flip === null) {
+        summary.undecided++;
+        back.push({ part, smooth: false });
+      } else {
+        summary.trianglesReversed += turnPart(part, canonicalTurn(positions, indices, part));
+        summary.twoSided++;
+        back.push({ part, smooth: true });
+      }
+    }
+  }
+  const result = assemble(mesh, out, drop, back);
+  summary.backTriangles = result.indices.length / 3 - (count - summary.droppedCopies);
+  return { mesh: result, summary };
+}
+
+/**
+ * The coincident pairs: a group of them (connected over shared edges) whose every edge is an edge
+ * of a closed part or of the group itself lies inside the solids it separates: each pair wound one
+ * canonical way (normal along + of its largest axis) and its partner the other. Any other group is
+ * a sheet the file made two-sided: the partners are dropped (marked in `drop`) and the first
+ * triangles returned, to be given back sides like an open two-sided part.
+ */
+function orientCoincidentPairs(
+  mesh: TriangleMesh, out: Uint32Array, pairs: ReadonlyArray<[number, number]>, all: MeshEdges, inClosed: Uint8Array, drop: Uint8Array, summary: OrientationSummary,
+): Set<number> {
+  const { positions } = mesh;
+  const partner = new Map<number, number>();
+  for (const [a, b] of pairs) {
+    partner.set(a, b);
+    partner.set(b, a);
+  }
+  const group = new Map<number, number>();
+  const sheets = new Set<number>();
+  for (const [seed] of pairs) {
+    if (group.has(seed)) continue;
+    const members = [seed];
+    group.set(seed, seed);
+    let enclosed = true;
+    let touchesSolid = false;
+    for (let q = 0; q < members.length; q++) {
+      for (const key of all.edgesOf[members[q]]) {
+        for (const e of all.edges.get(key)!) {
+          const u = Math.abs(e) - 1;
+          if (partner.has(u)) {
+            if (!group.has(u)) {
+              group.set(u, seed);
+              members.push(u);
+            }
+          } else if (inClosed[u] === 1) {
+            touchesSolid = true;
+          } else {
+            enclosed = false;
+          }
+        }
+      }
+    }
+    for (const t of members) {
+      const p = partner.get(t)!;
+      if (p < t) continue;
+      if (enclosed && touchesSolid) {
+        if (!canonicalFacing(crossOf(positions, out, t))) reverse(out, t);
+        if (dot(crossOf(positions, out, t), crossOf(positions, out, p)) > 0) reverse(out, p);
+        summary.enclosedFaces += 2;
+      } else {
+        drop[p] = 1;
+        summary.droppedCopies++;
+        sheets.add(t);
+      }
+    }
+  }
+  return sheets;
+}
+
+/** Whether an oriented part must turn so that its area-weighted normal points along + of its largest axis; the majority of the file's windings when the normals cancel. */
+function canonicalTurn(p: Float32Array, indices: Uint32Array, part: ConnectedPart): boolean {
+  const sum = [0, 0, 0];
+  let area = 0;
+  part.triangles.forEach((t, k) => {
+    const n = crossOf(p, indices, t);
+    const s = part.flip![k] ? -1 : 1;
+    for (let a = 0; a < 3; a++) sum[a] += s * n[a];
+    area += Math.hypot(n[0], n[1], n[2]);
+  });
+  if (Math.hypot(sum[0], sum[1], sum[2]) > 1e-6 * area) return !canonicalFacing(sum as [number, number, number]);
+  return part.flip!.filter(Boolean).length * 2 > part.flip!.length;
+}
+
+/** True when the vector's largest component (x before y before z on ties) is positive. */
+function canonicalFacing(n: readonly number[]): boolean {
+  let axis = 0;
+  for (let a = 1; a < 3; a++) if (Math.abs(n[a]) > Math.abs(n[axis])) axis = a;
+  return n[axis] > 0;
+}
+
+function dot(a: readonly number[], b: readonly number[]): number {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+interface BackPart {
+  part: ConnectedPart;
+  /** Offset along area-weighted vertex normals (a consistently wound part: the copy stays connected) or per triangle. */
+  smooth: boolean;
+}
+
+function reverse(indices: Uint32Array, t: number): void {
+  const b = indices[3 * t + 1];
+  indices[3 * t + 1] = indices[3 * t + 2];
+  indices[3 * t + 2] = b;
+}
+
+/** Σ (v0 − c)·((v1 − c) × (v2 − c))/6 over the part's triangles as the file winds them, relative to the flip of the first: the volume with the seed's orientation. */
+function signedVolume(p: Float32Array, indices: Uint32Array, part: ConnectedPart): number {
+  // Relative to a corner of the part: keeps the sum's terms small for a part far from the origin.
+  const o = 3 * indices[3 * part.triangles[0]];
+  const cx = p[o], cy = p[o + 1], cz = p[o + 2];
+  let sum = 0;
+  part.triangles.forEach((t, k) => {
+    const a = 3 * indices[3 * t], b = 3 * indices[3 * t + 1], c = 3 * indices[3 * t + 2];
+    const ax = p[a] - cx, ay = p[a + 1] - cy, az = p[a + 2] - cz;
+    const bx = p[b] - cx, by = p[b + 1] - cy, bz = p[b + 2] - cz;
+    const qx = p[c] - cx, qy = p[c + 1] - cy, qz = p[c + 2] - cz;
+    const v = ax * (by * qz - bz * qy) - ay * (bx * qz - bz * qx) + az * (bx * qy - by * qx);
+    sum += part.flip![k] ? -v : v;
+  });
+  return sum / 6;
+}
+
+function boxVolume(p: Float32Array, indices: Uint32Array, part: ConnectedPart): number {
+  const min = [Infinity, Infinity, Infinity];
+  const max = [-Infinity, -Infinity, -Infinity];
+  for (const t of part.triangles) {
+    for (let c = 0; c < 3; c++) {
+      const v = 3 * indices[3 * t + c];
+      for (let a = 0; a < 3; a++) {
+        min[a] = Math.min(min[a], p[v + a]);
+        max[a] = Math.max(max[a], p[v + a]);
+      }
+    }
+  }
+  return (max[0] - min[0]) * (max[1] - min[1]) * (max[2] - min[2]);
+}
+
+/** Unnormalised normal (e1 × e2) of triangle t as `indices` winds it. */
+function crossOf(p: Float32Array, indices: Uint32Array, t: number): [number, number, number] {
+  const a = 3 * indices[3 * t], b = 3 * indices[3 * t + 1], c = 3 * indices[3 * t + 2];
+  const e1x = p[b] - p[a], e1y = p[b + 1] - p[a + 1], e1z = p[b + 2] - p[a + 2];
+  const e2x = p[c] - p[a], e2y = p[c + 1] - p[a + 1], e2z = p[c + 2] - p[a + 2];
+  return [e1y * e2z - e1z * e2y, e1z * e2x - e1x * e2z, e1x * e2y - e1y * e2x];
+}
+
+function unit(v: [number, number, number]): [number, number, number] | null {
+  const len = Math.hypot(v[0], v[1], v[2]);
+  return len > 0 && Number.isFinite(len) ? [v[0] / len, v[1] / len, v[2] / len] : null;
+}
+
+/**
+ * The oriented mesh: the kept triangles (`drop` left out) in their order, then a reversed copy of
+ * every triangle of the back parts, BACK_SIDE_OFFSET behind it. Smooth parts move each vertex along
+ * its area-weighted normal (the copy keeps the part's shared edges, so the baker's charts grow over
+ * it as over the front); a vertex whose normals cancel, and every vertex of a per-triangle part,
+ * moves along its own triangle's normal.
+ */
+function assemble(mesh: TriangleMesh, indices: Uint32Array, drop: Uint8Array, back: readonly BackPart[]): TriangleMesh {
+  const p = mesh.positions;
+  const added: number[] = [];
+  const outIndices: number[] = [];
+  const outMaterials: number[] = [];
+  for (let t = 0; t < drop.length; t++) {
+    if (drop[t] === 1) continue;
+    outIndices.push(indices[3 * t], indices[3 * t + 1], indices[3 * t + 2]);
+    outMaterials.push(mesh.materialOfTriangle[t]);
+  }
+  let next = p.length / 3;
+  const push = (v: number, n: [number, number, number]): number => {
+    added.push(p[3 * v] - n[0] * BACK_SIDE_OFFSET, p[3 * v + 1] - n[1] * BACK_SIDE_OFFSET, p[3 * v + 2] - n[2] * BACK_SIDE_OFFSET);
+    return next++;
+  };
+  for (const { part, smooth } of back) {
+    const vertexNormal = new Map<number, [number, number, number]>();
+    if (smooth) {
+      for (const t of part.triangles) {
+        const n = crossOf(p, indices, t);
+        for (let c = 0; c < 3; c++) {
+          const v = indices[3 * t + c];
+          const sum = vertexNormal.get(v) ?? [0, 0, 0];
+          vertexNormal.set(v, [sum[0] + n[0], sum[1] + n[1], sum[2] + n[2]]);
+        }
+      }
+    }
+    const copyOf = new Map<number, number>();
+    for (const t of part.triangles) {
+      const own = unit(crossOf(p, indices, t));
+      if (!own) continue; // No area: nothing to light on either side.
+      const corner = [0, 0, 0];
+      for (let c = 0; c < 3; c++) {
+        const v = indices[3 * t + c];
+        const shared = smooth ? unit(vertexNormal.get(v)!) : null;
+        if (shared) {
+          let k = copyOf.get(v);
+          if (k === undefined) {
+            k = push(v, shared);
+            copyOf.set(v, k);
+          }
+          corner[c] = k;
+        } else {
+          corner[c] = push(v, own);
+        }
+      }
+      outIndices.push(corner[0], corner[2], corner[1]);
+      outMaterials.push(mesh.materialOfTriangle[t]);
+    }
+  }
+  if (added.length === 0 && outIndices.length === indices.length) return { ...mesh, indices };
+  const positions = new Float32Array(p.length + added.length);
+  positions.set(p);
+  positions.set(added, p.length);
+  return { positions, indices: Uint32Array.from(outIndices), materialOfTriangle: Uint16Array.from(outMaterials), materials: mesh.materials };
+}

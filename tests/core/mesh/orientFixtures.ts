@@ -1,0 +1,49 @@
+/** Small meshes for the orientation tests (issue #35): an attic wedge, a quad, inside-out copies. */
+import type { TriangleMesh } from '../../../src/core/mesh/triangleMesh';
+
+const grey = [{ name: 'm', reflectance: [0.8, 0.8, 0.8] as [number, number, number] }];
+
+/**
+ * The attic wedge of issue #35 in a `w`-wide room: a closed prism under a roof slope, its
+ * triangular section in the x–y plane (corners (0, 0), (w, 0), (0, h)) extruded along z over
+ * [0, d]. 6 corners, 8 triangles, each counterclockwise seen from outside.
+ */
+export function wedgeMesh(w = 1.5, h = 1, d = 4): TriangleMesh {
+  const positions = new Float32Array([0, 0, 0, w, 0, 0, 0, h, 0, 0, 0, d, w, 0, d, 0, h, d]);
+  const indices = [
+    0, 2, 1, // z = 0 end (normal −z)
+    3, 4, 5, // z = d end (normal +z)
+    0, 1, 4, 0, 4, 3, // floor side (normal −y)
+    0, 3, 5, 0, 5, 2, // wall side (normal −x)
+    1, 2, 5, 1, 5, 4, // the slope (normal up and toward +x)
+  ];
+  return { positions, indices: Uint32Array.from(indices), materialOfTriangle: new Uint16Array(8), materials: grey };
+}
+
+/** A 1 × 1 m horizontal quad at `origin`, two triangles counterclockwise seen from above (normal +y), materials 0 and 1. */
+export function quadMesh(origin: [number, number, number] = [0, 0, 0]): TriangleMesh {
+  const [x, y, z] = origin;
+  const positions = new Float32Array([x, y, z, x, y, z + 1, x + 1, y, z + 1, x + 1, y, z]);
+  return {
+    positions,
+    indices: Uint32Array.from([0, 1, 2, 0, 2, 3]),
+    materialOfTriangle: Uint16Array.from([0, 1]),
+    materials: [...grey, { name: 'n', reflectance: [0.5, 0.5, 0.5] }],
+  };
+}
+
+/** The same mesh with every triangle's winding reversed (corners 1 and 2 swapped), optionally moved. */
+export function insideOut(mesh: TriangleMesh, move: [number, number, number] = [0, 0, 0]): TriangleMesh {
+  const idx = Array.from(mesh.indices);
+  for (let t = 0; t < idx.length; t += 3) [idx[t + 1], idx[t + 2]] = [idx[t + 2], idx[t + 1]];
+  return { ...mesh, positions: mesh.positions.map((v, i) => v + move[i % 3]), indices: Uint32Array.from(idx) };
+}
+
+/** OBJ text of a mesh (1-based faces as the indices wind them), with an optional material library. */
+export function objText(mesh: TriangleMesh, mtl?: { lib: string; material: string }): string {
+  const lines: string[] = [];
+  if (mtl) lines.push(`mtllib ${mtl.lib}`, `usemtl ${mtl.material}`);
+  for (let v = 0; v < mesh.positions.length; v += 3) lines.push(`v ${mesh.positions[v]} ${mesh.positions[v + 1]} ${mesh.positions[v + 2]}`);
+  for (let t = 0; t < mesh.indices.length; t += 3) lines.push(`f ${mesh.indices[t] + 1} ${mesh.indices[t + 1] + 1} ${mesh.indices[t + 2] + 1}`);
+  return `${lines.join('\n')}\n`;
+}
