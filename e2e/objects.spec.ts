@@ -97,12 +97,25 @@ test.describe('desktop', () => {
     await expect(page.getByTestId('import-error')).toContainText('broken.obj');
     expect(await page.evaluate(() => window.luxbox!.getConfig())).toBe(before);
 
+    // Winding (issue #35): an inside-out box is turned outward, a single quad is lit on both sides,
+    // and the preview says so before anything is added.
+    const cube = ['v 0 0 0', 'v 1 0 0', 'v 0 1 0', 'v 1 1 0', 'v 0 0 1', 'v 1 0 1', 'v 0 1 1', 'v 1 1 1'];
+    const outward = [[1, 5, 7], [1, 7, 3], [2, 4, 8], [2, 8, 6], [1, 2, 6], [1, 6, 5], [3, 7, 8], [3, 8, 4], [1, 3, 4], [1, 4, 2], [5, 6, 8], [5, 8, 7]];
+    const insideOut = [...cube, ...outward.map(([a, b, c]) => `f ${a} ${c} ${b}`)].join('\n');
+    await page.getByTestId('import-file').setInputFiles({ name: 'mirrored.obj', mimeType: 'text/plain', buffer: Buffer.from(`${insideOut}\n`) });
+    await expect(page.getByTestId('import-orientation')).toHaveText('1 closed part faced inward and was turned outward');
+    await page.getByTestId('import-file').setInputFiles({ name: 'sheet.obj', mimeType: 'text/plain', buffer: Buffer.from('v 0 0 0\nv 0 0 1\nv 1 0 1\nv 1 0 0\nf 1 2 3 4\n') });
+    await expect(page.getByTestId('import-orientation')).toHaveText('1 open surface is lit and reflects on both sides');
+    await expect(page.getByTestId('import-triangles')).toContainText('2 triangles');
+    expect(await page.evaluate(() => window.luxbox!.getConfig())).toBe(before);
+
     // Import the OBJ fixture with its MTL: units, triangle count and size shown before adding.
     await page.getByTestId('import-file').setInputFiles([fixture('table.obj'), fixture('table.mtl')]);
     const preview = page.getByTestId('import-preview');
     await expect(preview).toContainText('table.obj');
     await expect(page.getByTestId('import-triangles')).toContainText('120 × 80 × 75 cm');
     await expect(page.getByTestId('import-units')).toHaveValue('m');
+    await expect(page.getByTestId('import-orientation')).toHaveText('Every part is closed and faces outward');
     // Overriding the unit reads the file again: in centimetres the table is 1.2 cm long.
     await page.getByTestId('import-units').selectOption('cm');
     await expect(page.getByTestId('import-triangles')).toContainText('60 triangles · 1.2 × 0.8 ×');

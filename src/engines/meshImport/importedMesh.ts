@@ -67,9 +67,6 @@ export function finishImport(name: string, collected: CollectedTriangles, fixedU
   const { mesh, summary } = orientMesh({ ...fileMesh, positions }, (t) => collected.twoSided[t] === 1);
   // The budget counts the file's triangles; back sides add at most as many again (the baker's BVH and atlas take far more).
   const triangleCount = fileMesh.indices.length / 3;
-  if (summary.undecided > 0) {
-    warnings.push(`${name}: ${summary.undecided} part${summary.undecided === 1 ? '' : 's'} with no clear inside (edges shared by three or more faces, or faces that cannot be wound alike) lit on both sides`);
-  }
   return { name, mesh, units, detectedUnits, triangleCount, orientation: summary, bounds: positionBounds(mesh.positions), warnings };
 }
 

@@ -20,7 +20,7 @@ function objectsOutput(loaded: LoadedLightingScene): SceneObjectsOutput {
     ids: (loaded.bakeScene.objects ?? []).map((o) => o.id),
     sources: objects.map((o) => {
       const imported = loaded.meshes.get(o.mesh);
-      return { mesh: o.mesh, triangles: imported?.triangleCount ?? 0, units: imported?.units ?? 'm' };
+      return { mesh: o.mesh, triangles: imported?.triangleCount ?? 0, units: imported?.units ?? 'm', ...(imported ? { orientation: imported.orientation } : {}) };
     }),
   };
 }

@@ -1,3 +1,4 @@
+import type { OrientationSummary } from '../../core/mesh/orientMesh';
 import { SURFACE_NAMES, type SurfaceName } from '../../core/model/lightingScene';
 import { luxOf, type BakedMaps } from '../../engines/bake/bakedMaps';
 import type { BakeReport } from '../../engines/bake/createBaker';
@@ -50,12 +51,14 @@ export interface ObjectSource {
   triangles: number;
   /** The unit the import applied ('m' for glTF, detected for OBJ). */
   units: string;
+  /** What orienting the mesh did (closed parts turned outward, open surfaces given back sides; docs/furniture.md). */
+  orientation?: OrientationSummary;
 }
 
 /**
  * report.json: the contract fields first, then the baker's own report (`bake`, which keeps its
  * `objects` too). `objects` (scenes with objects) is the baker's per-object statistics, each with
- * its mesh path, triangle count and units.
+ * its mesh path, triangle count, units and orientation.
  */
 export function reportJson(scenePath: string, maps: BakedMaps, report: BakeReport, sources: readonly ObjectSource[] = []) {
   const { settings, timings_ms, ...bake } = report;

@@ -1,6 +1,7 @@
 import { useRef, useState, type ChangeEvent } from 'react';
 import { InputError } from '../../core/inputError';
 import { MESH_UNITS, type MeshUnits } from '../../core/model/configuration';
+import type { OrientationSummary } from '../../core/mesh/orientMesh';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
 import type { ImportedMesh, MeshFile } from '../../engines/meshImport/importedMesh';
 import { itemDimensions } from './FurniturePanel';
@@ -19,6 +20,26 @@ const UNIT_NAMES: Record<MeshUnits, MessageKey> = { m: 'files.unitMetres', cm: '
 async function readModel(files: readonly MeshFile[], units: 'auto' | MeshUnits): Promise<ImportedMesh> {
   const { importMesh } = await import('../../engines/meshImport/importMesh');
   return importMesh(files, { units });
+}
+
+/**
+ * What orienting the model did (docs/furniture.md, "Which side of a face is lit"): closed parts
+ * turned outward, open surfaces lit on both sides or from their front only; or that every part was
+ * closed and faced outward. Parts with no clear inside are listed with the warnings.
+ */
+function OrientationSummaryLine({ orientation: o }: { orientation: OrientationSummary }) {
+  const { t } = useI18n();
+  const lines: string[] = [];
+  if (o.turnedOutward > 0) lines.push(t('files.orientTurned', { count: o.turnedOutward }));
+  if (o.twoSided > 0) lines.push(t('files.orientTwoSided', { count: o.twoSided }));
+  if (o.oneSided > 0) lines.push(t('files.orientOneSided', { count: o.oneSided }));
+  if (lines.length === 0 && o.undecided === 0) lines.push(t('files.orientClosed'));
+  if (lines.length === 0) return null;
+  return (
+    <p className="preset-detail" data-testid="import-orientation">
+      {lines.join(' · ')}
+    </p>
+  );
 }
 
 export interface ImportPanelProps {
@@ -120,8 +141,10 @@ export function ImportPanel({ onAdd }: ImportPanelProps) {
               ))}
             </select>
           </div>
-          {model.warnings.length > 0 && (
+          <OrientationSummaryLine orientation={model.orientation} />
+          {(model.warnings.length > 0 || model.orientation.undecided > 0) && (
             <ul className="import-warnings" aria-label={t('files.importWarnings')}>
+              {model.orientation.undecided > 0 && <li data-testid="import-undecided">{t('files.orientUndecided', { count: model.orientation.undecided })}</li>}
               {model.warnings.map((w) => (
                 <li key={w}>{w}</li>
               ))}

@@ -47,3 +47,24 @@ export function objText(mesh: TriangleMesh, mtl?: { lib: string; material: strin
   for (let t = 0; t < mesh.indices.length; t += 3) lines.push(`f ${mesh.indices[t] + 1} ${mesh.indices[t + 1] + 1} ${mesh.indices[t + 2] + 1}`);
   return `${lines.join('\n')}\n`;
 }
+
+/** A Möbius strip of `n` segments around a unit circle (its cross-section turns by 180°): no consistent winding exists. */
+export function mobiusMesh(n = 6): TriangleMesh {
+  const positions: number[] = [];
+  for (let i = 0; i < n; i++) {
+    const phi = (2 * Math.PI * i) / n;
+    const turn = phi / 2;
+    for (const s of [-0.2, 0.2]) {
+      const r = 1 + s * Math.cos(turn);
+      positions.push(r * Math.cos(phi), s * Math.sin(turn), r * Math.sin(phi));
+    }
+  }
+  const idx: number[] = [];
+  for (let i = 0; i < n; i++) {
+    const a = 2 * i, b = 2 * i + 1;
+    // The last segment joins the first with its two edges swapped (the half turn).
+    const [c, d] = i === n - 1 ? [1, 0] : [2 * i + 2, 2 * i + 3];
+    idx.push(a, c, b, b, c, d);
+  }
+  return { positions: new Float32Array(positions), indices: Uint32Array.from(idx), materialOfTriangle: new Uint16Array(2 * n), materials: grey };
+}

@@ -14,7 +14,7 @@ import { FURNITURE_LIBRARY, furnitureMesh } from '../../../src/core/model/furnit
 import { createRng } from '../../fuzz/mutate';
 import { boxMesh } from '../../engines/bake/objects/objectFixtures';
 import { isClosedAndConsistent, signedVolume } from '../../engines/meshImport/modelFixtures';
-import { wedgeMesh, insideOut, quadMesh } from './orientFixtures';
+import { wedgeMesh, insideOut, mobiusMesh, quadMesh } from './orientFixtures';
 
 const never = () => false;
 const always = () => true;
@@ -193,25 +193,8 @@ describe('parts that cannot be oriented', () => {
   });
 
   it('a Möbius strip has no consistent winding: two-sided', () => {
-    // 6 segments around a circle, the strip's cross-section turning by 180°.
-    const positions: number[] = [];
     const n = 6;
-    for (let i = 0; i < n; i++) {
-      const phi = (2 * Math.PI * i) / n;
-      const turn = phi / 2;
-      for (const s of [-0.2, 0.2]) {
-        const r = 1 + s * Math.cos(turn);
-        positions.push(r * Math.cos(phi), s * Math.sin(turn), r * Math.sin(phi));
-      }
-    }
-    const idx: number[] = [];
-    for (let i = 0; i < n; i++) {
-      const a = 2 * i, b = 2 * i + 1;
-      // The last segment joins the first with its two edges swapped (the half turn).
-      const [c, d] = i === n - 1 ? [1, 0] : [2 * i + 2, 2 * i + 3];
-      idx.push(a, c, b, b, c, d);
-    }
-    const mesh: TriangleMesh = { positions: new Float32Array(positions), indices: Uint32Array.from(idx), materialOfTriangle: new Uint16Array(2 * n), materials: [{ name: 'm', reflectance: [0.5, 0.5, 0.5] }] };
+    const mesh = mobiusMesh(n);
     const parts = connectedParts(mesh);
     expect(parts).toHaveLength(1);
     expect(parts[0].flip).toBeNull();

@@ -68,6 +68,8 @@ describe('luxbox bake: a furnished scene', () => {
     expect(report.bake.objects.map((o: { id: string }) => o.id)).toEqual(['dining-table', 'objects[1]']);
     for (const [k, o] of report.objects.entries()) {
       expect(o).toMatchObject({ mesh: ['table.obj', 'table.glb'][k], triangles: 60, units: 'm', texels: objects.objects[k].texels });
+      // Five closed boxes wound outward (docs/furniture.md, "Which side of a face is lit"): nothing turned, no back sides.
+      expect(o.orientation).toEqual({ parts: 5, closed: 5, turnedOutward: 0, trianglesReversed: 0, twoSided: 0, oneSided: 0, undecided: 0, enclosedFaces: 0, droppedCopies: 0, backTriangles: 0 });
       expect(o.area).toBeCloseTo(TABLE.area, 5);
       expect(o.minLux).toBeLessThanOrEqual(o.meanLux);
       expect(o.meanLux).toBeLessThanOrEqual(o.maxLux);
