@@ -4,11 +4,11 @@ import { connectedParts, type ConnectedPart } from './connectedParts';
 import { meshEdges, type MeshEdges } from './meshEdges';
 
 /**
- * How far behind an open surface its back side lies (m). The baker treats a triangle as lit and
- * reflecting on its counterclockwise side only (docs/baker.md, "Objects: passes"); a two-sided
+ * How far apart the two sides of a two-sided surface lie (m). The baker treats a triangle as lit
+ * and reflecting on its counterclockwise side only (docs/baker.md, "Objects: passes"); a two-sided
  * surface therefore gets a second, reversed copy. Coincident copies would tie in the ray caster's
  * closest hit (which side a ray meets would depend on rounding and on the BVH's order), so the
- * copy sits 0.5 mm behind: 5× the 0.1 mm every ray starts off its surface (SURFACE_OFFSET in
+ * front moves 0.5 mm forward off the back: 5× the 0.1 mm every ray starts off its surface (SURFACE_OFFSET in
  * shaders/objectTracing.glsl.ts), far above float32 rounding at room scale (~0.3 µm at 5 m) and far
  * below anything a light map resolves (texels are centimetres). It also stays apart in a 24-bit depth
  * buffer at viewing distance, so the view never z-fights the two sides.
@@ -57,7 +57,8 @@ export interface OrientedMesh {
  * - an **open** part is two-sided when `twoSided` says so for any of its triangles (OBJ has no
  *   notion of sides; glTF's `doubleSided`): made consistent, turned so that its area-weighted normal
  *   points along + of its largest axis (the same answer for a file and its inside-out copy), and
- *   given a reversed back copy BACK_SIDE_OFFSET behind, moved along the part's vertex normals;
+ *   given a reversed back copy at the file's corners, the front moved BACK_SIDE_OFFSET forward along
+ *   the part's vertex normals;
  *   otherwise it is left exactly as the file winds it (glTF: counterclockwise is the front,
  *   spec §3.7.2.1, and a one-sided material is not seen from behind);
  * - a part that cannot be oriented (an edge three or more of its own triangles share, a winding
@@ -232,7 +233,7 @@ function dot(a: readonly number[], b: readonly number[]): number {
 
 interface BackPart {
   part: ConnectedPart;
-  /** Offset along area-weighted vertex normals (a consistently wound part: the copy stays connected) or per triangle. */
+  /** Front moved along area-weighted vertex normals (a consistently wound part: it stays connected) or per triangle. */
   smooth: boolean;
 }
 
@@ -289,24 +290,23 @@ function unit(v: [number, number, number]): [number, number, number] | null {
 
 /**
  * The oriented mesh: the kept triangles (`drop` left out) in their order, then a reversed copy of
- * every triangle of the back parts, BACK_SIDE_OFFSET behind it. Smooth parts move each vertex along
- * its area-weighted normal (the copy keeps the part's shared edges, so the baker's charts grow over
- * it as over the front); a vertex whose normals cancel, and every vertex of a per-triangle part,
- * moves along its own triangle's normal.
+ * every triangle of the two-sided parts. The copy keeps the file's corners and the front moves
+ * BACK_SIDE_OFFSET forward, so the back side never reaches past the model where it faces: a rug's
+ * underside stays on the floor, a canvas's back against its wall (open parts face + of their
+ * largest axis, step 3 of orientMesh). Smooth parts move each vertex along its area-weighted
+ * normal (the front keeps its shared edges, so the baker's charts grow over it as before); a
+ * vertex whose normals cancel, and every vertex of a per-triangle part, moves along its own
+ * triangle's normal.
  */
 function assemble(mesh: TriangleMesh, indices: Uint32Array, drop: Uint8Array, back: readonly BackPart[]): TriangleMesh {
   const p = mesh.positions;
   const added: number[] = [];
-  const outIndices: number[] = [];
-  const outMaterials: number[] = [];
-  for (let t = 0; t < drop.length; t++) {
-    if (drop[t] === 1) continue;
-    outIndices.push(indices[3 * t], indices[3 * t + 1], indices[3 * t + 2]);
-    outMaterials.push(mesh.materialOfTriangle[t]);
-  }
+  const front = Uint32Array.from(indices);
+  const backIndices: number[] = [];
+  const backMaterials: number[] = [];
   let next = p.length / 3;
-  const push = (v: number, n: [number, number, number]): number => {
-    added.push(p[3 * v] - n[0] * BACK_SIDE_OFFSET, p[3 * v + 1] - n[1] * BACK_SIDE_OFFSET, p[3 * v + 2] - n[2] * BACK_SIDE_OFFSET);
+  const moved = (v: number, n: [number, number, number]): number => {
+    added.push(p[3 * v] + n[0] * BACK_SIDE_OFFSET, p[3 * v + 1] + n[1] * BACK_SIDE_OFFSET, p[3 * v + 2] + n[2] * BACK_SIDE_OFFSET);
     return next++;
   };
   for (const { part, smooth } of back) {
@@ -321,32 +321,42 @@ function assemble(mesh: TriangleMesh, indices: Uint32Array, drop: Uint8Array, ba
         }
       }
     }
-    const copyOf = new Map<number, number>();
+    const movedOf = new Map<number, number>();
     for (const t of part.triangles) {
       const own = unit(crossOf(p, indices, t));
       if (!own) continue; // No area: nothing to light on either side.
-      const corner = [0, 0, 0];
       for (let c = 0; c < 3; c++) {
         const v = indices[3 * t + c];
         const shared = smooth ? unit(vertexNormal.get(v)!) : null;
         if (shared) {
-          let k = copyOf.get(v);
+          let k = movedOf.get(v);
           if (k === undefined) {
-            k = push(v, shared);
-            copyOf.set(v, k);
+            k = moved(v, shared);
+            movedOf.set(v, k);
           }
-          corner[c] = k;
+          front[3 * t + c] = k;
         } else {
-          corner[c] = push(v, own);
+          front[3 * t + c] = moved(v, own);
         }
       }
-      outIndices.push(corner[0], corner[2], corner[1]);
-      outMaterials.push(mesh.materialOfTriangle[t]);
+      backIndices.push(indices[3 * t], indices[3 * t + 2], indices[3 * t + 1]);
+      backMaterials.push(mesh.materialOfTriangle[t]);
     }
   }
-  if (added.length === 0 && outIndices.length === indices.length) return { ...mesh, indices };
+  const kept = drop.length - drop.reduce((n, d) => n + d, 0);
+  if (added.length === 0 && kept === drop.length && backMaterials.length === 0) return { ...mesh, indices };
+  const outIndices = new Uint32Array(3 * (kept + backMaterials.length));
+  const outMaterials = new Uint16Array(kept + backMaterials.length);
+  let k = 0;
+  for (let t = 0; t < drop.length; t++) {
+    if (drop[t] === 1) continue;
+    outIndices.set(front.subarray(3 * t, 3 * t + 3), 3 * k);
+    outMaterials[k++] = mesh.materialOfTriangle[t];
+  }
+  outIndices.set(backIndices, 3 * k);
+  outMaterials.set(backMaterials, k);
   const positions = new Float32Array(p.length + added.length);
   positions.set(p);
   positions.set(added, p.length);
-  return { positions, indices: Uint32Array.from(outIndices), materialOfTriangle: Uint16Array.from(outMaterials), materials: mesh.materials };
+  return { positions, indices: outIndices, materialOfTriangle: outMaterials, materials: mesh.materials };
 }

@@ -34,7 +34,7 @@ export interface ImportedMesh {
   triangleCount: number;
   /** What orienting the parts did (closed parts turned outward, open ones given a back side; docs/furniture.md). */
   orientation: OrientationSummary;
-  /** Bounds of `mesh`, metres. */
+  /** Bounds of the file's geometry in metres (the fronts of two-sided surfaces lie up to BACK_SIDE_OFFSET, 0.5 mm, beyond). */
   bounds: Bounds3;
   /** Problems that did not stop the import (missing MTL, textures ignored, clamped colours), one line each. */
   warnings: string[];
@@ -67,7 +67,7 @@ export function finishImport(name: string, collected: CollectedTriangles, fixedU
   const { mesh, summary } = orientMesh({ ...fileMesh, positions }, (t) => collected.twoSided[t] === 1);
   // The budget counts the file's triangles; back sides add at most as many again (the baker's BVH and atlas take far more).
   const triangleCount = fileMesh.indices.length / 3;
-  return { name, mesh, units, detectedUnits, triangleCount, orientation: summary, bounds: positionBounds(mesh.positions), warnings };
+  return { name, mesh, units, detectedUnits, triangleCount, orientation: summary, bounds: positionBounds(positions), warnings };
 }
 
 function round(x: number): number {

@@ -129,7 +129,7 @@ describe('the furniture library', () => {
 });
 
 describe('open parts', () => {
-  it('a two-sided quad gets a reversed copy 0.5 mm behind, with the same materials', () => {
+  it('a two-sided quad: the back is a reversed copy on the file’s corners, the front moves 0.5 mm forward, materials kept', () => {
     const quad = quadMesh();
     const { mesh: out, summary } = orientMesh(quad, always);
     expect(summary).toMatchObject({ parts: 1, closed: 0, twoSided: 1, oneSided: 0, backTriangles: 2, trianglesReversed: 0 });
@@ -141,8 +141,11 @@ describe('open parts', () => {
       expect(front[1]).toBeCloseTo(1, 12);
       expect(backNormal[1]).toBeCloseTo(-1, 12);
     }
+    // The back on the original vertices (the lowest point of the model stays where the file has it).
+    expect(Array.from(out.indices.subarray(6))).toEqual([0, 2, 1, 0, 3, 2]);
+    expect(out.positions.subarray(0, 12)).toEqual(quad.positions);
     for (let v = 4; v < 8; v++) {
-      expect(out.positions[3 * v + 1]).toBeCloseTo(quad.positions[3 * (v - 4) + 1] - BACK_SIDE_OFFSET, 7);
+      expect(out.positions[3 * v + 1]).toBeCloseTo(quad.positions[3 * (v - 4) + 1] + BACK_SIDE_OFFSET, 7);
       expect(out.positions[3 * v]).toBe(quad.positions[3 * (v - 4)]);
     }
     expect(Array.from(out.materialOfTriangle)).toEqual([0, 1, 0, 1]);

@@ -28,8 +28,8 @@ describe('importMesh: broken files are InputErrors naming the file (and the OBJ 
   it('negative (relative) indices and quads with texture/normal references read correctly', async () => {
     const r = await importMesh([textFile('ok.obj', `${TRI}vt 0 0\nvn 0 1 0\nf -3/1/1 -1/1/1 -2/1/1\n`)]);
     expect(r.triangleCount).toBe(1);
-    // The triangle as the file gives it, then its back side (an OBJ surface is two-sided).
-    expect(Array.from(r.mesh.indices)).toEqual([0, 1, 2, 3, 5, 4]);
+    // The front (moved 0.5 mm forward onto new vertices), then the back side on the file's corners (an OBJ surface is two-sided).
+    expect(Array.from(r.mesh.indices)).toEqual([3, 4, 5, 0, 2, 1]);
   });
 
   it('statements luxbox does not use are named in one warning', async () => {
