@@ -97,6 +97,24 @@ describe('angles and bounds at the ends of the double range', () => {
     expect(luminaireRotation(yaw, -1e308, 1.7e308).every(Number.isFinite)).toBe(true);
   });
 
+  it('actions refuse an object placed at the ends of the double range (never placed with non-finite vertices)', () => {
+    const state = livingRoom(catalog);
+    for (const placement of [{ on: 'floor', x: 1e308, z: 1 }, { on: 'floor', x: 1, z: -1e308 }, { on: 'wall', wall: 'north', u: 1e308, y: 1 }]) {
+      const outcome = attemptAction(state, 'addObject', { source: { kind: 'library', item: 'dining-table' }, placement }, catalog);
+      expect(outcome.ok).toBe(false);
+    }
+    for (const params of [{ scale: 1e308 }, { yaw: Number.NaN }, { yaw: Infinity }]) {
+      expect(attemptAction(state, 'addObject', { source: { kind: 'library', item: 'dining-table' }, placement: { on: 'floor', x: 2, z: 2 }, ...params }, catalog).ok).toBe(false);
+    }
+    // A huge yaw is turned into [0, 360) by the action: accepted, with finite vertices.
+    const turned = attemptAction(state, 'addObject', { source: { kind: 'library', item: 'dining-table' }, placement: { on: 'floor', x: 2, z: 2 }, yaw: 1e308 }, catalog);
+    if (!turned.ok) throw new Error(turned.reason);
+    const added = turned.next.objects[turned.next.objects.length - 1];
+    expect(added.yaw).toBe(1e308 % 360);
+    const sceneObject = toLightingScene(turned.next, catalog).objects!.find((o) => o.id === added.id)!;
+    expect(firstNonFiniteVertex(placedPositions(objectMesh(turned.next, added.id), sceneObject))).toBe(-1);
+  });
+
   it('NaN is kept by positionBounds, so no bounds check can pass it', () => {
     const b = positionBounds([0, 0, 0, NaN, 1, 1, 2, 2, 2]);
     expect(b.min[0]).toBeNaN();
