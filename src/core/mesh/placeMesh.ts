@@ -5,6 +5,7 @@
  * object placement into world coordinates: the baker, the reference, the plan's outlines and
  * the 3D view all call it.
  */
+import { degreesToRadians } from '../degreesToRadians';
 import type { TriangleMesh } from './triangleMesh';
 
 /** x, y, z in metres; the same tuple as core/model's Vec3 (not imported: core/model imports core/mesh, and folders may not import each other, docs/architecture.md). */
@@ -21,7 +22,8 @@ export interface MeshPlacement {
 
 /** The placement as a function of one local point (x, y, z) → world [x, y, z]. */
 export function placementTransform(placement: MeshPlacement): (x: number, y: number, z: number) => Vec3 {
-  const t = (placement.yaw * Math.PI) / 180;
+  // Reduced before conversion: yaw·π overflows for |yaw| ≥ 5.7e307 and gave NaN vertices (issue 32).
+  const t = degreesToRadians(placement.yaw);
   const c = Math.cos(t);
   const s = Math.sin(t);
   const k = placement.scale;
@@ -40,4 +42,14 @@ export function placedPositions(mesh: TriangleMesh, placement: MeshPlacement): F
     out[i + 2] = w[2];
   }
   return out;
+}
+
+/**
+ * Index of the first vertex of placed positions with a non-finite coordinate, or −1. A position or
+ * scale near the double range overflows (Float32 above 3.4e38 is Infinity); every caller that takes
+ * a placement from outside checks this before any bounds test, since comparisons skip NaN.
+ */
+export function firstNonFiniteVertex(positions: ArrayLike<number>): number {
+  for (let i = 0; i < positions.length; i++) if (!Number.isFinite(positions[i])) return Math.floor(i / 3);
+  return -1;
 }

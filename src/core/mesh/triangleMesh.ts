@@ -35,13 +35,18 @@ export interface Bounds3 {
   readonly max: [number, number, number];
 }
 
-/** Axis-aligned bounds of a position array (x, y, z per vertex); empty input gives min = +∞, max = −∞. */
+/** Axis-aligned bounds of a position array (x, y, z per vertex); empty input gives min = +∞, max = −∞; a NaN coordinate makes that axis NaN. */
 export function positionBounds(positions: ArrayLike<number>): Bounds3 {
   const min: [number, number, number] = [Infinity, Infinity, Infinity];
   const max: [number, number, number] = [-Infinity, -Infinity, -Infinity];
   for (let i = 0; i < positions.length; i += 3) {
     for (let a = 0; a < 3; a++) {
       const v = positions[i + a];
+      // NaN is kept (sticky): a comparison would skip it and the bounds would pass a room check (issue 32).
+      if (Number.isNaN(v) || Number.isNaN(min[a])) {
+        min[a] = max[a] = NaN;
+        continue;
+      }
       if (v < min[a]) min[a] = v;
       if (v > max[a]) max[a] = v;
     }

@@ -82,6 +82,8 @@ export const OBJECT_EPS = 1e-6;
  */
 export function fitPlacement(object: RoomObject, mesh: TriangleMesh, room: Room, label: string): RoomObject {
   const b = placedBounds(object, mesh, room);
+  // A placement near the double range gives non-finite vertices, which no shift can bring inside (issue 32).
+  if (![...b.min, ...b.max].every(Number.isFinite)) throw new InputError(`object ${object.id} has a non-finite position or an unknown wall`, { code: 'objectPosition', params: { id: object.id } });
   // The object as parameters (docs/i18n.md): a UI names library furniture by its id in its own language.
   const named = { name: label, ...(object.source.kind === 'library' ? { furnitureId: object.source.item } : {}) };
   const shift = (lo: number, hi: number, max: number, what: 'along x' | 'along z' | 'high'): number => {

@@ -100,11 +100,17 @@ export function objectProblems(config: Configuration, index: number): Problem[] 
   const name = `${sourceName(config, o.source)} ${o.id}`;
   // The object as parameters: its name (a UI names library furniture in its language), id and item.
   const named = { name: sourceName(config, o.source), id: o.id, ...furnitureOf(o.source) };
+  // A placement near the double range overflows the Float32 vertices: name it before any bounds test (issue 32).
+  if (![...b.min, ...b.max].every(Number.isFinite)) {
+    p('object-position', '.placement', `object ${o.id} has a non-finite position or an unknown wall`, 'objectPosition', { id: o.id });
+    return out;
+  }
+  // Each test written so that NaN fails it (a comparison with NaN is false).
   const walls: string[] = [];
-  if (b.min[0] < -OBJECT_EPS) walls.push('west');
-  if (b.max[0] > W + OBJECT_EPS) walls.push('east');
-  if (b.min[2] < -OBJECT_EPS) walls.push('north');
-  if (b.max[2] > D + OBJECT_EPS) walls.push('south');
+  if (!(b.min[0] >= -OBJECT_EPS)) walls.push('west');
+  if (!(b.max[0] <= W + OBJECT_EPS)) walls.push('east');
+  if (!(b.min[2] >= -OBJECT_EPS)) walls.push('north');
+  if (!(b.max[2] <= D + OBJECT_EPS)) walls.push('south');
   const through = walls.map((w) => `the ${w} wall`);
   if (through.length > 0) {
     const message = `${name} passes through ${through.join(' and ')} (${fmt(W)} × ${fmt(D)} m room)`;
@@ -112,8 +118,8 @@ export function objectProblems(config: Configuration, index: number): Problem[] 
     // An object passes at most two walls (one in x, one in z): one sentence each way.
     p('object-outside', '.placement', message, walls.length > 1 ? 'objectThroughWalls' : 'objectThroughWall', walls.length > 1 ? { ...params, wall2: walls[1] } : params);
   }
-  if (b.max[1] > H + OBJECT_EPS) p('object-outside', '.placement', `${name} reaches ${fmt(b.max[1])} m, above the ${fmt(H)} m ceiling`, 'objectAboveCeiling', { ...named, top: Number(fmt(b.max[1])), height: Number(fmt(H)) });
-  if (b.min[1] < -OBJECT_EPS) p('object-outside', '.placement', `${name} reaches ${fmt(-b.min[1])} m below the floor`, 'objectBelowFloor', { ...named, depth: Number(fmt(-b.min[1])) });
+  if (!(b.max[1] <= H + OBJECT_EPS)) p('object-outside', '.placement', `${name} reaches ${fmt(b.max[1])} m, above the ${fmt(H)} m ceiling`, 'objectAboveCeiling', { ...named, top: Number(fmt(b.max[1])), height: Number(fmt(H)) });
+  if (!(b.min[1] >= -OBJECT_EPS)) p('object-outside', '.placement', `${name} reaches ${fmt(-b.min[1])} m below the floor`, 'objectBelowFloor', { ...named, depth: Number(fmt(-b.min[1])) });
   return out;
 }
 

@@ -117,6 +117,9 @@ const schema = z.strictObject({
     .max(SCENE_LIMITS.maxLuminaires, `more than ${SCENE_LIMITS.maxLuminaires} luminaires`),
 }, { error: 'a lighting scene must be a JSON object' });
 
+/** The structure zod checks (tests walk it to reach every numeric field). */
+export const lightingSceneSchema: z.ZodType = schema;
+
 const FIELD_NAMES = new Set([...schemaFieldNames(schema), 'sky']);
 
 /**
@@ -168,8 +171,9 @@ export function parseLightingScene(json: unknown, source: string): LightingScene
     for (let a = 0; a < 3; a++) {
       const v = l.position[a];
       const where = `${source}: luminaires[${i}].position[${a}]: ${v} m is`;
-      if (v < 0) throw new LightingSceneError(`${where} ${a === 1 ? 'below the' : 'outside the'} ${names[a][0]}: luminaires must be inside the room`);
-      if (v > bounds[a]) {
+      // Written so that NaN fails (zod refuses it already; a bounds check must never pass it): issue 32.
+      if (!(v >= 0)) throw new LightingSceneError(`${where} ${a === 1 ? 'below the' : 'outside the'} ${names[a][0]}: luminaires must be inside the room`);
+      if (!(v <= bounds[a])) {
         const limit = names[a][1].replace('%', `${bounds[a]} m`);
         throw new LightingSceneError(`${where} ${a === 1 ? 'above the' : 'beyond the'} ${limit}: luminaires must be inside the room`);
       }

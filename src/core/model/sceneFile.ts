@@ -172,6 +172,9 @@ const fileSchema = z.strictObject({
   configuration: configurationSchema,
 });
 
+/** The structure zod checks (tests walk it to reach every numeric field). */
+export const sceneFileSchema: z.ZodType = fileSchema;
+
 const FIELD_NAMES = schemaFieldNames(fileSchema);
 
 export type SceneFile = z.infer<typeof fileSchema>;

@@ -121,7 +121,8 @@ export function validate(config: Configuration, catalog: Catalog, options: Valid
 }
 
 function outsideRoom(elements: PlanRect[][], width: number, depth: number): boolean {
-  return elements.flat().flatMap(rectCorners).some(([x, z]) => x < -EPS || x > width + EPS || z < -EPS || z > depth + EPS);
+  // "Not inside" rather than "outside": a NaN corner fails every comparison and must count as outside (issue 32).
+  return elements.flat().flatMap(rectCorners).some(([x, z]) => !(x >= -EPS && x <= width + EPS && z >= -EPS && z <= depth + EPS));
 }
 
 function outsideProblem(s: LightSystem, index: number, room: Configuration['room']): Problem {

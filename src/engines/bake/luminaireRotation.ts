@@ -1,3 +1,4 @@
+import { degreesToRadians } from '../../core/degreesToRadians';
 import type { Vec3 } from '../../core/model/lightingScene';
 
 /** Row-major 3×3 matrix. */
@@ -5,16 +6,17 @@ export type Mat3 = [number, number, number, number, number, number, number, numb
 
 const DEG = Math.PI / 180;
 
+// Angles reduced before conversion (degreesToRadians): any finite angle turns exactly (issue 32).
 function ry(t: number): Mat3 {
-  const c = Math.cos(t * DEG);
-  const s = Math.sin(t * DEG);
+  const c = Math.cos(degreesToRadians(t));
+  const s = Math.sin(degreesToRadians(t));
   // Right-handed about +y: +x turns toward −z (counterclockwise seen from above).
   return [c, 0, s, 0, 1, 0, -s, 0, c];
 }
 
 function rx(t: number): Mat3 {
-  const c = Math.cos(t * DEG);
-  const s = Math.sin(t * DEG);
+  const c = Math.cos(degreesToRadians(t));
+  const s = Math.sin(degreesToRadians(t));
   // Right-handed about +x: +90° turns −y (the nadir) into −z.
   return [1, 0, 0, 0, c, -s, 0, s, c];
 }

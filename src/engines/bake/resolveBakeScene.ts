@@ -3,7 +3,7 @@ import type { LightingScene } from '../../core/model/lightingScene';
 import type { Photometry } from '../../core/photometry/types';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
 import { positionBounds } from '../../core/mesh/triangleMesh';
-import { placedPositions } from '../../core/mesh/placeMesh';
+import { firstNonFiniteVertex, placedPositions } from '../../core/mesh/placeMesh';
 import { OBJECT_ROOM_TOLERANCE } from '../../core/model/parseLightingScene';
 import type { BakeLuminaire, BakeObject, BakeScene } from './bakeScene';
 
@@ -77,12 +77,18 @@ function buildObjects(scene: LightingScene, byPath: ReadonlyMap<string, Triangle
   return (scene.objects ?? []).map((o, i): BakeObject => {
     const mesh = byPath.get(o.mesh)!;
     const placement = { position: o.position, yaw: o.yaw, scale: o.scale };
-    const { min, max } = positionBounds(placedPositions(mesh, placement));
+    const placed = placedPositions(mesh, placement);
+    const bad = firstNonFiniteVertex(placed);
+    if (bad >= 0) {
+      throw new SceneObjectError(i, `: placed vertex ${bad} is not finite (position [${o.position.join(', ')}], yaw ${o.yaw}, scale ${o.scale} put it beyond any number)`);
+    }
+    const { min, max } = positionBounds(placed);
     for (let a = 0; a < 3; a++) {
       const below = -min[a];
       const above = max[a] - dims[a];
       const [low, high, extent] = ROOM_SIDES[a];
-      if (below > OBJECT_ROOM_TOLERANCE || above > OBJECT_ROOM_TOLERANCE) {
+      // Written so that NaN fails (a comparison with NaN is false): issue 32.
+      if (!(below <= OBJECT_ROOM_TOLERANCE) || !(above <= OBJECT_ROOM_TOLERANCE)) {
         const side = below >= above ? low : high.replace('%', `${dims[a]} m`);
         const by = Math.max(below, above);
         throw new SceneObjectError(

@@ -9,7 +9,7 @@ export interface SliceResult {
   progress: RelightEngine['progress'];
   /** The cost per sample after this slice (unchanged in fenced mode: the caller measures it when the fence signals). */
   msPerSample: number;
-  /** Samples asked for in this slice (a step counts the samples it was asked for). */
+  /** Samples asked for in this slice (a step counts the samples it was asked for): at least one step's worth unless the bake was done before the slice. */
   samples: number;
   /** JavaScript time of the slice, ms. */
   ms: number;
@@ -29,6 +29,11 @@ export interface SliceResult {
  * waits. So a fenced slice issues a budget of samples, floor(SLICE_MS / msPerSample) (at least one
  * step), where msPerSample is measured by the caller from the slice's start until its fence
  * signalled (JavaScript + GPU time).
+ *
+ * Either way a slice of an unfinished bake takes **at least one step**, whatever the clock says: on
+ * a loaded machine the thread can lose SLICE_MS between the slice's first clock read and its time
+ * check, and a slice that then did nothing looked like a finished bake to the slicer, which stopped
+ * (issue 32: a bake stuck at 59.7 % for 11 minutes). Forward progress is per slice, not per ms.
  */
 export function bakeSlice(
   engine: Pick<RelightEngine, 'progress' | 'step' | 'settings'>,
@@ -40,12 +45,14 @@ export function bakeSlice(
   let p = engine.progress;
   let samples = 0;
   const budget = Math.max(1, Math.floor(SLICE_MS / msPerSample));
-  while (!p.done && now() - start < SLICE_MS && (!fenced || samples < budget)) {
+  // The time and budget checks come after a step (do … while): the first step runs unconditionally.
+  while (!p.done) {
     const n = Math.max(1, Math.min(engine.settings.samplesPerDraw, fenced ? budget - samples : Math.floor(SLICE_MS / msPerSample)));
     const t = now();
     p = engine.step(n);
     samples += n;
     if (!fenced) msPerSample = 0.7 * msPerSample + (0.3 * (now() - t)) / n;
+    if (!(now() - start < SLICE_MS) || (fenced && samples >= budget)) break;
   }
   return { progress: p, msPerSample, samples, ms: now() - start };
 }

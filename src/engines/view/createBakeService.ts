@@ -32,6 +32,8 @@ export interface BakeStatus {
   groupBakes: number;
   relightsOnly: number;
   indirectSolves: number;
+  /** Engines the service replaced because slices stopped moving the bake forward (STALL_SLICES); 0 on a healthy GPU. */
+  restarts: number;
   quality: QualityLevel;
 }
 
@@ -102,6 +104,14 @@ export interface BakeServiceOptions {
 
 /** Quiet time after the last pointer, key or wheel input before bake work starts again, ms. */
 export const INPUT_QUIET_MS = 800;
+
+/**
+ * Slices in a row that issued work but left the engine's progress (groups based, fraction) where it
+ * was, before the service replaces the engine and bakes the scene afresh. A healthy engine moves
+ * its progress on every step except the first half of a direct basis (issue, then read back), so
+ * two in a row never happen; this bound only trips on a broken engine or context (issue 32).
+ */
+export const STALL_SLICES = 20;
 
 /** Input that means the user is interacting (a hovering pointer does not count). */
 const INPUT_EVENTS = ['pointerdown', 'pointermove', 'keydown', 'wheel', 'touchstart'] as const;
@@ -174,15 +184,42 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
     { settings: QUALITY_LEVELS[quality], canvas: options.canvas },
   );
 
+  /**
+   * The service watches its own progress (issue 32): the slicer guarantees a step per slice and a
+   * next slice until done; this guards against steps that do not move the bake. After STALL_SLICES
+   * working slices without progress the engine is replaced (as a quality change would) and the
+   * scene baked afresh.
+   */
+  let restarts = 0;
+  let lastProgress = '';
+  let stalledSlices = 0;
+  const restart = () => {
+    restarts++;
+    stalledSlices = 0;
+    lastProgress = '';
+    const engine = context.setSettings(QUALITY_LEVELS[quality]);
+    if (scene) light(engine, scene);
+    emit({ type: 'engine', engine });
+    slicer.queue();
+  };
+  const watchProgress = (progress: EngineProgress, samples: number): boolean => {
+    if (samples === 0 || progress.done) return false;
+    const now = `${progress.groupsDone}/${progress.groups}:${progress.fraction}`;
+    stalledSlices = now === lastProgress ? stalledSlices + 1 : 0;
+    lastProgress = now;
+    return stalledSlices >= STALL_SLICES;
+  };
+
   const makeFence = options.fence === undefined ? glFence : options.fence;
   const slicer: BakeSlicer = createBakeSlicer({
     engine: () => context.engine,
-    onSlice(engine, progress) {
+    onSlice(engine, progress, samples) {
       if (progress.done && lowMemory && trimmedAt !== engine.version) {
         trimmedAt = engine.version;
         engine.releaseTargets();
       }
       emit({ type: 'slice', engine, progress });
+      if (watchProgress(progress, samples)) restart();
     },
     onError: reportError,
     defer: options.defer,
@@ -257,7 +294,7 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
     status() {
       const engine = context.engine;
       const done = scene !== null && engine !== null && engine.progress.done;
-      return { running: !done && !slicer.paused && scene !== null && engine !== null, paused: slicer.paused, done, ...context.counters(), quality };
+      return { running: !done && !slicer.paused && scene !== null && engine !== null, paused: slicer.paused, done, ...context.counters(), restarts, quality };
     },
     get error() {
       return error;

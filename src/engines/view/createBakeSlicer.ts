@@ -3,6 +3,12 @@ import { bakeSlice, FIRST_MS_PER_SAMPLE } from './bakeSlice';
 
 /** How often a slice's fence is polled, ms (browsers clamp nested timeouts to about 4 ms anyway). */
 export const FENCE_POLL_MS = 2;
+/**
+ * Longest wait for a slice's fence, ms: then the slice counts as finished and the bake goes on. A
+ * fence that never signals (a driver that drops it; WebGL 2 §5.27 promises no bound) must not stall
+ * the bake; one slice's GPU work is at most a few seconds even on a software rasteriser.
+ */
+export const FENCE_TIMEOUT_MS = 10_000;
 
 /** A GPU fence after a slice's commands: signalled once the GPU has executed them. */
 export interface GpuFence {
@@ -36,6 +42,10 @@ export function glFence(gl: WebGL2RenderingContext): GpuFence | null {
  * time from the slice's start until then (JavaScript + GPU), so the slice size follows the GPU, not
  * only the JavaScript time. Paused, it runs nothing until resumed; held (holdMs: the user is
  * interacting), it reports and waits.
+ *
+ * Liveness (issue 32): until the engine reports done, every slice steps at least once (bakeSlice),
+ * is followed by another slice or a fence poll, and a fence is waited for at most FENCE_TIMEOUT_MS;
+ * so an unpaused slicer with an unfinished bake always has a slice queued or in flight.
  */
 export interface BakeSlicer {
   /** One slice now (a new scene), or right after the slice in flight; nothing while paused (it runs on resume). */
@@ -56,8 +66,8 @@ export interface BakeSlicer {
 export interface BakeSlicerOptions {
   /** The engine to step, or null (none yet, or its context is lost): nothing to do. */
   engine(): RelightEngine | null;
-  /** After every slice that ran, with the engine it stepped and its progress. */
-  onSlice(engine: RelightEngine, progress: EngineProgress): void;
+  /** After every slice that ran, with the engine it stepped, its progress and the samples it issued (0: a held slice that only reports). */
+  onSlice(engine: RelightEngine, progress: EngineProgress, samples: number): void;
   onError(message: string): void;
   /** setTimeout, or a test's stand-in. */
   defer?: (callback: () => void, ms: number) => unknown;
@@ -95,7 +105,7 @@ export function createBakeSlicer({ engine, onSlice, onError, defer = (f, ms) => 
     if (!e) return;
     const hold = holdMs?.() ?? 0;
     if (hold > 0 && !e.progress.done) {
-      onSlice(e, e.progress);
+      onSlice(e, e.progress, 0);
       queued = true;
       defer(slice, hold);
       return;
@@ -109,8 +119,14 @@ export function createBakeSlicer({ engine, onSlice, onError, defer = (f, ms) => 
       onError(`Baking failed: ${(error as Error).message}`);
       return;
     }
-    onSlice(e, r.progress);
-    if (r.samples === 0) return; // nothing was issued: the bake is done
+    onSlice(e, r.progress, r.samples);
+    // Done is what the engine says, never "the slice issued nothing" (issue 32: a slice that lost its
+    // time to a loaded machine issued nothing and the bake stopped at 59.7 %). bakeSlice steps at
+    // least once, so nothing issued means done; if not, the bake goes on.
+    if (r.samples === 0) {
+      if (!r.progress.done) queue();
+      return;
+    }
     const f = fenced ? fence() : null;
     if (!f) {
       if (fenced) msPerSample = 0.7 * msPerSample + (0.3 * r.ms) / r.samples;
@@ -130,7 +146,7 @@ export function createBakeSlicer({ engine, onSlice, onError, defer = (f, ms) => 
         flight = null;
         return;
       }
-      if (!flight.fence.signalled()) {
+      if (!flight.fence.signalled() && now() - flight.start < FENCE_TIMEOUT_MS) {
         poll();
         return;
       }

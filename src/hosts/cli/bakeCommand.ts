@@ -8,6 +8,7 @@ import { prepareGl } from '../node/prepareGl';
 import { sceneWarnings } from '../node/sceneWarnings';
 import { writeBakeOutput, type SceneObjectsOutput } from '../node/writeBakeOutput';
 import { resolveBakeSettings } from '../../engines/bake/bakeSettings';
+import { cliReadableFolders } from '../node/cliReadableFolders';
 
 export const bakeUsage =
   'bake <scene.json> [more.json …] --out <dir> [--samples N --bounces N --texel m --blur texels --seed N --no-tail --gl vulkan|glx|auto]';
@@ -41,7 +42,7 @@ export async function run(args: string[]): Promise<number> {
   if (exit !== null) return exit;
 
   const loaded: LoadedLightingScene[] = [];
-  for (const p of positional) loaded.push(await loadLightingSceneFileAsync(p));
+  for (const p of positional) loaded.push(await loadLightingSceneFileAsync(p, { within: cliReadableFolders(p) }));
   // Suspicious-but-readable photometry (docs/photometry.md, "Warnings"): in each
   // report.json, and once per line on stderr (nothing on stderr when there are none).
   const warnings = loaded.map((scene, i) => sceneWarnings(scene, positional[i]));

@@ -1,4 +1,3 @@
-import { readFileSync, statSync } from 'node:fs';
 import { basename, dirname, join } from 'node:path';
 import { InputError } from '../../core/inputError';
 import {
@@ -11,6 +10,7 @@ import {
   PhotometryParseError,
   type Photometry,
 } from '../../core/photometry';
+import { readRegularFile, realFolders } from '../node/readRegularFile';
 
 /** A command-line usage problem (missing file argument, unknown option, unreadable file). */
 export class IesCommandError extends InputError {
@@ -61,17 +61,14 @@ export interface IesInfo {
 
 function readFile(path: string): Uint8Array {
   try {
-    const stat = statSync(path);
-    if (!stat.isFile()) throw new IesCommandError(`${path}: not a file`);
-    // Refused before reading: a multi-gigabyte file must not be loaded to find out.
-    if (stat.size > MAX_PHOTOMETRY_BYTES) {
-      throw new PhotometryParseError(basename(path), null, `the file is ${Math.round(stat.size / 104857.6) / 10} MB, over the ${MAX_PHOTOMETRY_BYTES / 1048576} MB limit for photometric files`);
-    }
-    return readFileSync(path);
+    // A regular file only, its size checked while reading (a device reports size 0; issue 32).
+    return readRegularFile(path, { maxBytes: MAX_PHOTOMETRY_BYTES });
   } catch (error) {
-    if (error instanceof InputError) throw error;
-    const code = (error as NodeJS.ErrnoException).code;
-    throw new IesCommandError(code === 'ENOENT' ? `${path}: no such file` : `${path}: cannot read (${code ?? 'error'})`);
+    if (!(error instanceof InputError)) throw error;
+    if (error.message.startsWith('file is too large')) {
+      throw new PhotometryParseError(basename(path), null, `${error.message.replace(/^file is too large/, 'the file is too large')}: over the ${MAX_PHOTOMETRY_BYTES / 1048576} MB limit for photometric files`);
+    }
+    throw new IesCommandError(error.message === 'no such file' ? `${path}: no such file` : `${path}: cannot read (${error.message})`);
   }
 }
 
@@ -80,7 +77,8 @@ export function describe(path: string): IesInfo {
     // TILT=<file> names a file next to the photometric file.
     resolveTilt: (name) => {
       try {
-        return readFileSync(join(dirname(path), name), 'latin1');
+        // Only next to the photometric file, and only a regular file (docs/scene-format.md, "Which files a scene may name").
+        return new TextDecoder('latin1').decode(readRegularFile(join(dirname(path), name), { maxBytes: MAX_PHOTOMETRY_BYTES, within: realFolders([dirname(path)]) }));
       } catch {
         return undefined;
       }

@@ -1,4 +1,3 @@
-import { readFileSync } from 'node:fs';
 import { basename } from 'node:path';
 import { z } from 'zod';
 import { InputError } from '../../core/inputError';
@@ -11,6 +10,9 @@ import { resolveBakeSettings } from '../../engines/bake/bakeSettings';
 import { prepareGl } from '../node/prepareGl';
 import { loadLightingSceneFileAsync, parseJsonText } from '../node/loadLightingSceneFile';
 import { describeIssues } from '../../core/model/untrustedJson';
+import { cliReadableFolders } from '../node/cliReadableFolders';
+import { INPUT_LIMITS } from '../../core/model/untrustedJson';
+import { readRegularFile } from '../node/readRegularFile';
 
 export const probeUsage = 'probe <scene.json> <points.json> [--samples N --bounces N --texel m --gl vulkan|glx|auto] (points [x, y, z] on a surface or [x, y, z, nx, ny, nz])';
 
@@ -41,9 +43,10 @@ export async function run(args: string[]): Promise<number> {
   const source = basename(pointsPath);
   let text: string;
   try {
-    text = readFileSync(pointsPath, 'utf8');
+    text = new TextDecoder('utf-8').decode(readRegularFile(pointsPath, { maxBytes: INPUT_LIMITS.maxTextLength }));
   } catch (error) {
-    throw new InputError(`${source}: cannot read ${pointsPath} (${(error as NodeJS.ErrnoException).code ?? 'error'})`);
+    if (!(error instanceof InputError)) throw error;
+    throw new InputError(`${source}: cannot read ${pointsPath} (${error.message})`);
   }
   const parsed = pointsSchema.safeParse(parseJsonText(text, source));
   if (!parsed.success) {
@@ -54,7 +57,7 @@ export async function run(args: string[]): Promise<number> {
     throw new InputError(`${source}: ${path ? `${path}: ` : ''}${issue.path.length ? issue.message : 'expected { "points": [[x, y, z], ...] }'}`);
   }
   resolveBakeSettings(settings);
-  const loaded = await loadLightingSceneFileAsync(scenePath);
+  const loaded = await loadLightingSceneFileAsync(scenePath, { within: cliReadableFolders(scenePath) });
   const room = loaded.scene.room;
   const dims = [room.width, room.height, room.depth];
   const points = parsed.data.points.map((p, i): { point: Vec3; normal?: Vec3 } => {

@@ -11,6 +11,7 @@ import { takeRenderCameras } from '../node/renderCameras';
 import { createRenderSession } from '../node/renderImage';
 import { loadRenderInput } from '../node/renderInput';
 import { RENDER_SUMMARY_FORMAT, type RenderSummary, type RenderSummaryImage } from '../node/renderSummary';
+import { cliReadableFolders } from '../node/cliReadableFolders';
 
 export const renderUsage =
   'render <config-or-scene.json> [more.json …] --out image.png|<dir>/ [--camera eye|top|corner|<json>|eye,top,… (repeatable)] [--cameras cameras.json] [--width 960 --height 600] [--ev EV100 | --exposure stops] [--mode light|lux] [--samples N --bounces N --texel m] [--gl vulkan|glx|auto]';
@@ -65,7 +66,7 @@ export async function run(args: string[]): Promise<number> {
   if (mode !== 'light' && mode !== 'lux') throw new InputError(`render: --mode must be light or lux, got "${mode}"`);
   const batch = positional.length > 1 || cameras.length > 1 || /[/\\]$/.test(out) || (existsSync(out) && statSync(out).isDirectory());
   // A single render keeps the old contract: bad input is one line on stderr before any GL work.
-  const single = batch ? null : loadRenderInput(positional[0]);
+  const single = batch ? null : loadRenderInput(positional[0], { within: cliReadableFolders(positional[0]) });
   const sceneNames = batchFolderNames(positional);
   const { exit } = prepareGl(options['--gl']);
   if (exit !== null) return exit;
@@ -86,7 +87,7 @@ export async function run(args: string[]): Promise<number> {
       let input;
       let results;
       try {
-        input = single ?? loadRenderInput(path);
+        input = single ?? loadRenderInput(path, { within: cliReadableFolders(path) });
         const room = input.scene.room;
         const poses = cameras.map((c) => parseCameraSpec(c.spec, room));
         // One bake per scene, drawn from every camera.

@@ -1,4 +1,3 @@
-import { readFileSync, statSync } from 'node:fs';
 import { basename, dirname, resolve } from 'node:path';
 import type { BakeScene } from '../../engines/bake/bakeScene';
 import { LuminairePhotometryError, resolveBakeScene, resolveBakeSceneSync, SceneObjectError } from '../../engines/bake/resolveBakeScene';
@@ -6,10 +5,12 @@ import type { ImportedMesh } from '../../engines/meshImport/importedMesh';
 import { LightingSceneError, parseLightingScene } from '../../core/model/parseLightingScene';
 import type { LightingScene } from '../../core/model/lightingScene';
 import { excerpt, INPUT_LIMITS, parseUntrustedJson } from '../../core/model/untrustedJson';
+import { InputError } from '../../core/inputError';
 import { PhotometryReadError } from '../../core/photometry/PhotometryReadError';
 import type { Photometry } from '../../core/photometry/types';
 import { createNodePhotometryLoader } from './createNodePhotometryLoader';
 import { createNodeMeshLoader } from './createNodeMeshLoader';
+import { readRegularFile } from './readRegularFile';
 
 export interface LoadedLightingScene {
   scene: LightingScene;
@@ -30,18 +31,19 @@ export function parseJsonText(text: string, source: string): unknown {
   return parseUntrustedJson(text, source, (message) => new LightingSceneError(message));
 }
 
+/** Where a scene's files may lie: `within` folders (absolute, real paths; absent: anywhere). The CLI passes cliReadableFolders. */
+export interface SceneFileAccess {
+  within?: readonly string[];
+}
+
 function readText(path: string, what: string): string {
   try {
-    // Refuse a huge file before reading it (a mistaken argument: a video, a disk image).
-    const size = statSync(path).size;
-    if (size > INPUT_LIMITS.maxTextLength) {
-      throw new LightingSceneError(`${what}: file is too large (${(size / 1e6).toFixed(1)} MB; at most ${INPUT_LIMITS.maxTextLength / 1e6} MB)`);
-    }
-    return readFileSync(path, 'utf8');
+    // A regular file, its size checked while reading: a mistaken argument (a video, /dev/zero) is refused, not read.
+    return new TextDecoder('utf-8').decode(readRegularFile(path, { maxBytes: INPUT_LIMITS.maxTextLength }));
   } catch (error) {
-    if (error instanceof LightingSceneError) throw error;
-    const code = (error as NodeJS.ErrnoException).code ?? 'read error';
-    throw new LightingSceneError(`${what}: cannot read ${path} (${code === 'ENOENT' ? 'no such file' : code})`);
+    if (!(error instanceof InputError)) throw error;
+    if (error.message.startsWith('file is too large')) throw new LightingSceneError(`${what}: ${error.message}`);
+    throw new LightingSceneError(`${what}: cannot read ${path} (${error.message})`);
   }
 }
 
@@ -51,17 +53,17 @@ function readText(path: string, what: string): string {
  * loadLightingSceneFileAsync). Paths are relative to the scene file's folder
  * (absolute paths are kept).
  */
-export function loadLightingSceneFile(path: string): LoadedLightingScene {
+export function loadLightingSceneFile(path: string, access: SceneFileAccess = {}): LoadedLightingScene {
   const source = basename(path);
   const scene = parseLightingScene(parseJsonText(readText(path, source), source), source);
-  return { scene, ...resolveSceneFiles(scene, dirname(resolve(path)), source) };
+  return { scene, ...resolveSceneFiles(scene, dirname(resolve(path)), source, access) };
 }
 
 /** loadLightingSceneFile for every mesh format (OBJ, glTF, GLB): what `luxbox bake`, `probe` and `render` use. */
-export async function loadLightingSceneFileAsync(path: string): Promise<LoadedLightingScene> {
+export async function loadLightingSceneFileAsync(path: string, access: SceneFileAccess = {}): Promise<LoadedLightingScene> {
   const source = basename(path);
   const scene = parseLightingScene(parseJsonText(readText(path, source), source), source);
-  return { scene, ...(await resolveSceneFilesAsync(scene, dirname(resolve(path)), source)) };
+  return { scene, ...(await resolveSceneFilesAsync(scene, dirname(resolve(path)), source, access)) };
 }
 
 /** A resolver failure as the one line the CLI prints: `<source>: luminaires[i].photometry: …` or `<source>: objects[i]…`. */
@@ -77,9 +79,9 @@ function photometriesOf(scene: LightingScene, folder: string, bakeScene: BakeSce
 }
 
 /** resolveSceneFiles for every mesh format (glTF is read asynchronously). */
-export async function resolveSceneFilesAsync(scene: LightingScene, folder: string, source: string): Promise<Omit<LoadedLightingScene, 'scene'>> {
-  const load = createNodePhotometryLoader();
-  const meshLoader = createNodeMeshLoader(folder);
+export async function resolveSceneFilesAsync(scene: LightingScene, folder: string, source: string, access: SceneFileAccess = {}): Promise<Omit<LoadedLightingScene, 'scene'>> {
+  const load = createNodePhotometryLoader(access);
+  const meshLoader = createNodeMeshLoader(folder, access);
   let bakeScene: BakeScene;
   try {
     bakeScene = await resolveBakeScene(scene, (p) => load(resolve(folder, p)), meshLoader.load);
@@ -96,9 +98,9 @@ export async function resolveSceneFilesAsync(scene: LightingScene, folder: strin
  * file)`, the path as the scene wrote it; one that does not parse is the
  * parser's own error (it names the file).
  */
-export function resolveSceneFiles(scene: LightingScene, folder: string, source: string): Omit<LoadedLightingScene, 'scene'> {
-  const load = createNodePhotometryLoader();
-  const meshLoader = createNodeMeshLoader(folder);
+export function resolveSceneFiles(scene: LightingScene, folder: string, source: string, access: SceneFileAccess = {}): Omit<LoadedLightingScene, 'scene'> {
+  const load = createNodePhotometryLoader(access);
+  const meshLoader = createNodeMeshLoader(folder, access);
   let bakeScene: BakeScene;
   try {
     bakeScene = resolveBakeSceneSync(scene, (p) => load(resolve(folder, p)), meshLoader.loadSync);

@@ -1,6 +1,7 @@
-import { readFileSync } from 'node:fs';
 import { InputError } from '../../core/inputError';
 import { parseCameraSpec } from '../../engines/view/cameraPresets';
+import { INPUT_LIMITS } from '../../core/model/untrustedJson';
+import { readRegularFile } from './readRegularFile';
 
 /** One camera of a render: its name (the image file's suffix) and its spec (a preset name or pose JSON for parseCameraSpec). */
 export interface RenderCamera {
@@ -69,10 +70,10 @@ export function takeRenderCameras(args: string[]): { cameras: RenderCamera[]; re
 function readCamerasFile(path: string): [string, string][] {
   let text: string;
   try {
-    text = readFileSync(path, 'utf8');
+    text = new TextDecoder('utf-8').decode(readRegularFile(path, { maxBytes: INPUT_LIMITS.maxTextLength }));
   } catch (error) {
-    const code = (error as NodeJS.ErrnoException).code;
-    throw new InputError(`render: --cameras ${path}: cannot read (${code === 'ENOENT' ? 'no such file' : code ?? 'read error'})`);
+    if (!(error instanceof InputError)) throw error;
+    throw new InputError(`render: --cameras ${path}: cannot read (${error.message})`);
   }
   let data: unknown;
   try {

@@ -1,4 +1,4 @@
-import { existsSync, readFileSync } from 'node:fs';
+import { existsSync } from 'node:fs';
 import { basename, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import type { BakeScene } from '../../engines/bake/bakeScene';
@@ -10,7 +10,10 @@ import type { LightingScene } from '../../core/model/lightingScene';
 import { configurationMeshLoader } from '../../engines/view/configurationMeshLoader';
 import { fixturesFromConfiguration, fixturesFromScene, type Fixtures } from '../../engines/view/fixtures';
 import { resolveBakeSceneSync, SceneObjectError } from '../../engines/bake/resolveBakeScene';
-import { loadLightingSceneFile, parseJsonText, resolveSceneFiles } from './loadLightingSceneFile';
+import { InputError } from '../../core/inputError';
+import { INPUT_LIMITS } from '../../core/model/untrustedJson';
+import { loadLightingSceneFile, parseJsonText, resolveSceneFiles, type SceneFileAccess } from './loadLightingSceneFile';
+import { readRegularFile } from './readRegularFile';
 
 /** What `luxbox render` draws: the baker's scene and the hardware to show. */
 export interface RenderInput {
@@ -37,21 +40,22 @@ function resolvePublicDir(): string {
 /**
  * Read a configurator scene file (format "luxbox-configuration", default
  * catalog, photometry from public/) or a lighting scene v1 (photometry
- * relative to the file), telling them apart by the format tag.
+ * relative to the file), telling them apart by the format tag. `access`: where a lighting
+ * scene's files may lie (the CLI passes cliReadableFolders).
  */
-export function loadRenderInput(path: string): RenderInput {
+export function loadRenderInput(path: string, access: SceneFileAccess = {}): RenderInput {
   const source = basename(path);
   let text: string;
   try {
-    text = readFileSync(path, 'utf8');
+    text = new TextDecoder('utf-8').decode(readRegularFile(path, { maxBytes: INPUT_LIMITS.maxTextLength }));
   } catch (error) {
-    const code = (error as NodeJS.ErrnoException).code;
-    throw new LightingSceneError(`${source}: cannot read ${path} (${code === 'ENOENT' ? 'no such file' : code ?? 'read error'})`);
+    if (!(error instanceof InputError)) throw error;
+    throw new LightingSceneError(error.message.startsWith('file is too large') ? `${source}: ${error.message}` : `${source}: cannot read ${path} (${error.message})`);
   }
   const data = parseJsonText(text, source);
   const isConfiguration = typeof data === 'object' && data !== null && (data as { format?: unknown }).format === SCENE_FILE_FORMAT;
   if (!isConfiguration) {
-    const loaded = loadLightingSceneFile(path);
+    const loaded = loadLightingSceneFile(path, access);
     return { scene: loaded.scene, bakeScene: loaded.bakeScene, fixtures: fixturesFromScene(loaded.scene), kind: 'lighting-scene' };
   }
   const config = deserializeConfiguration(text, defaultCatalog, source);

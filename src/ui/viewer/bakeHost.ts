@@ -111,7 +111,7 @@ export function createBakeHost(store: ConfiguratorStore, loadPhotometry: (path: 
   };
   hosts.set(store, host);
   setBakeStatusSource(store, (): BakeStatus => {
-    if (!feed) return { running: false, paused: false, done: false, groupBakes: 0, relightsOnly: 0, indirectSolves: 0, quality: level() };
+    if (!feed) return { running: false, paused: false, done: false, groupBakes: 0, relightsOnly: 0, indirectSolves: 0, restarts: 0, quality: level() };
     const status = feed.service.status();
     // A change still being resolved (photometric files, meshes) is not baked yet: not done, although the
     // service has finished the configuration before it (an empty room placed a moment ago, say).

@@ -59,7 +59,7 @@ const statuses = new WeakMap<object, ViewerStatus>();
 const bakeSources = new WeakMap<object, () => BakeStatus>();
 
 /** The bake status before a service exists. */
-export const IDLE_BAKE: BakeStatus = { running: false, paused: false, done: false, groupBakes: 0, relightsOnly: 0, indirectSolves: 0, quality: 'balanced' };
+export const IDLE_BAKE: BakeStatus = { running: false, paused: false, done: false, groupBakes: 0, relightsOnly: 0, indirectSolves: 0, restarts: 0, quality: 'balanced' };
 
 export const CLOSED_STATUS: ViewerStatus = {
   open: false, lit: false, done: false, progress: 0, groupBakes: 0, relightsOnly: 0, frames: 0,

@@ -21,7 +21,8 @@ const points = join(root, 'tests/fixtures/scenes/small-room.points.json');
 const quick = ['--texel', '0.1', '--samples', '16', '--bounces', '2'];
 
 function luxbox(args: string[], env: NodeJS.ProcessEnv = process.env) {
-  const r = spawnSync(process.execPath, [join(root, 'bin/luxbox.js'), ...args], { cwd: root, env, encoding: 'utf8' });
+  // The timeout turns a hang (a device read forever) into a failure.
+  const r = spawnSync(process.execPath, [join(root, 'bin/luxbox.js'), ...args], { cwd: root, env, encoding: 'utf8', timeout: 120_000 });
   return { status: r.status, stdout: r.stdout, stderr: r.stderr };
 }
 
@@ -104,6 +105,8 @@ describe('luxbox bake / probe', () => {
     ['lamp above the ceiling', JSON.stringify({ version: 1, room: { width: 3, height: 2.5, depth: 2, reflectance: { floor: 0.2, ceiling: 0.8, north: 0.5, south: 0.5, west: 0.5, east: 0.5 } }, luminaires: [{ photometry: 'x.ies', position: [1, 3.1, 1], yaw: 0, pitch: 0, roll: 0 }] }), [], /^luxbox bake: scene\.json: luminaires\[0\]\.position\[1\]: 3\.1 m is above the ceiling/],
     ['broken JSON', '{ "version": 1,\n  "room": { ', [], /^luxbox bake: scene\.json: line 2, column \d+: invalid JSON/],
     ['missing photometry file', JSON.stringify({ version: 1, room: { width: 3, height: 2.5, depth: 2, reflectance: { floor: 0.2, ceiling: 0.8, north: 0.5, south: 0.5, west: 0.5, east: 0.5 } }, luminaires: [{ photometry: 'nope.ies', position: [1, 2, 1] }] }), [], /^luxbox bake: scene\.json: luminaires\[0\]\.photometry: cannot read "nope\.ies" \(no such file\)\n$/],
+    // Issue 32: read forever before (a character device reports size 0).
+    ['photometry /dev/zero', JSON.stringify({ version: 1, room: { width: 3, height: 2.5, depth: 2, reflectance: { floor: 0.2, ceiling: 0.8, north: 0.5, south: 0.5, west: 0.5, east: 0.5 } }, luminaires: [{ photometry: '/dev/zero', position: [1, 2, 1] }] }), [], /^luxbox bake: scene\.json: luminaires\[0\]\.photometry: cannot read "\/dev\/zero" \(\/dev\/zero is outside the scene's folder and the current folder\)\n$/],
     ['bad flag value', JSON.stringify({ version: 1, room: { width: 3, height: 2.5, depth: 2, reflectance: { floor: 0.2, ceiling: 0.8, north: 0.5, south: 0.5, west: 0.5, east: 0.5 } }, luminaires: [] }), ['--samples', '0'], /^luxbox bake: samples 0 is not an integer in 1\.\.65536\n$/],
   ];
   for (const [name, text, extra, message] of bad) {

@@ -7,7 +7,7 @@ export type DmxProtocol = 'artnet' | 'sacn';
 
 /** Why an otherwise well-formed packet was not used. */
 export type StoreIgnoreReason =
-  /** Within the 20 sequence numbers before the last accepted one (E1.31-2018 §6.7.2). */
+  /** 1 to 19 sequence numbers behind the last accepted one (E1.31-2018 §6.7.2, an equal number accepted: isStaleSequence). */
   | 'stale-sequence'
   /** A universe beyond `maxUniverses`. */
   | 'universe-limit'
@@ -22,12 +22,20 @@ export const ARTNET_PRIORITY = 100;
 export const SACN_SOURCE_TIMEOUT_MS = 2500;
 /** Art-Net 4, ArtDmx merging: a source that sends nothing for 10 s leaves the merge. */
 export const ARTNET_SOURCE_TIMEOUT_MS = 10_000;
+/**
+ * A source none of whose packets was accepted for this long is followed again whatever its
+ * sequence number: a sender that restarted a little below its old number, or one that counts
+ * backwards, resumes within a second instead of freezing (issue 32). Out-of-order delivery on a
+ * network is a matter of milliseconds, far below this.
+ */
+export const SEQUENCE_RESYNC_MS = 1000;
 
 export interface UniverseStoreOptions {
   sacnTimeoutMs?: number;
   artnetTimeoutMs?: number;
   maxUniverses?: number;
   maxSourcesPerUniverse?: number;
+  sequenceResyncMs?: number;
 }
 
 export interface DmxSourceInfo {
@@ -88,6 +96,7 @@ export function createUniverseStore(options: UniverseStoreOptions = {}): Univers
   const artnetTimeout = options.artnetTimeoutMs ?? ARTNET_SOURCE_TIMEOUT_MS;
   const maxUniverses = options.maxUniverses ?? 512;
   const maxSources = options.maxSourcesPerUniverse ?? 16;
+  const resyncMs = options.sequenceResyncMs ?? SEQUENCE_RESYNC_MS;
   const table = new Map<number, UniverseState>();
 
   /** Recomputes the merge; returns whether the levels the app sees changed. */
@@ -124,7 +133,9 @@ export function createUniverseStore(options: UniverseStoreOptions = {}): Univers
     }
     // Art-Net 4 (ArtDmx, Sequence): 0 disables the check; in E1.31 0 is an ordinary sequence number.
     const sequenced = incoming.protocol === 'sacn' || (known?.sequence !== 0 && incoming.sequence !== 0);
-    if (known && sequenced && isStaleSequence(known.sequence, incoming.sequence)) {
+    // Written so that a NaN time resynchronises rather than freezing the source.
+    const recent = known !== undefined && now - known.lastSeen <= resyncMs;
+    if (known && sequenced && recent && isStaleSequence(known.sequence, incoming.sequence)) {
       return { ok: false, reason: 'stale-sequence' };
     }
     if (!known && state.sources.size >= maxSources) return { ok: false, reason: 'source-limit' };

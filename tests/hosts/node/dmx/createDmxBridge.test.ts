@@ -89,7 +89,7 @@ describe('createDmxBridge', () => {
     expect(h.channels.slice(0, 4)).toEqual([9, 0, 0, 0]);
   });
 
-  it('discards a packet within the 20 sequence numbers before the last accepted one (E1.31 §6.7.2), both protocols', async () => {
+  it('discards a packet 1 to 19 sequence numbers behind the last accepted one (E1.31 §6.7.2), both protocols', async () => {
     const { console: tc, client, sacnPort, artnetPort } = await start();
     await tc.send(buildE131({ cid: CID_A, sequence: 10, universe: 1, data: levels(10) }), sacnPort);
     await client.waitFor(at(1, 0, 10), 'seq 10');
@@ -106,6 +106,19 @@ describe('createDmxBridge', () => {
     const s = await client.status();
     expect(s.sacn.ignored['stale-sequence']).toBe(2);
     expect(s.artnet.ignored['stale-sequence']).toBe(1);
+  });
+
+  it('a sender stuck on one non-zero sequence number keeps being applied, Art-Net and sACN (issue 32)', async () => {
+    const { console: tc, client, sacnPort, artnetPort } = await start();
+    for (let v = 1; v <= 5; v++) {
+      await tc.send(buildE131({ cid: CID_A, sequence: 7, universe: 1, data: levels(v) }), sacnPort);
+      await client.waitFor(at(1, 0, v), `sACN look ${v}, sequence 7`);
+      await tc.send(buildArtDmx({ sequence: 7, universe: 4, data: levels(10 + v) }), artnetPort);
+      await client.waitFor(at(5, 0, 10 + v), `Art-Net look ${v}, sequence 7`);
+    }
+    const s = await client.status();
+    expect(s.sacn.ignored['stale-sequence'] ?? 0).toBe(0);
+    expect(s.artnet.ignored['stale-sequence'] ?? 0).toBe(0);
   });
 
   it('Stream_Terminated drops the source at once and the merge falls back; a silent source leaves after its timeout', async () => {

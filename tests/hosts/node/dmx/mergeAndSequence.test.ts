@@ -24,9 +24,10 @@ describe('mergeUniverse', () => {
   });
 });
 
-describe('isStaleSequence (E1.31-2018 §6.7.2)', () => {
-  it('discards 0 to 19 behind (mod 256), accepts everything else', () => {
-    expect(isStaleSequence(10, 10)).toBe(true);
+describe('isStaleSequence (E1.31-2018 §6.7.2, an equal number accepted)', () => {
+  it('discards 1 to 19 behind (mod 256), accepts everything else, the same number too (a sender that never increments)', () => {
+    expect(isStaleSequence(10, 10)).toBe(false);
+    expect(isStaleSequence(0, 0)).toBe(false);
     expect(isStaleSequence(10, 9)).toBe(true);
     expect(isStaleSequence(10, 247)).toBe(true); // -19
     expect(isStaleSequence(10, 246)).toBe(false); // -20: a restarted source
@@ -64,7 +65,7 @@ describe('createUniverseStore', () => {
   it('sequence 0 disables the check for Art-Net only; in sACN it is an ordinary number', () => {
     const s = createUniverseStore();
     s.acceptE131(sacn('a', 1, [1], { sequence: 0 }), 'x', 0);
-    expect(s.acceptE131(sacn('a', 1, [2], { sequence: 0 }), 'x', 0)).toEqual({ ok: false, reason: 'stale-sequence' });
+    expect(s.acceptE131(sacn('a', 1, [2], { sequence: 255 }), 'x', 0)).toEqual({ ok: false, reason: 'stale-sequence' });
     expect(s.acceptE131(sacn('a', 1, [2], { sequence: 1 }), 'x', 0)).toEqual({ ok: true, universe: 1, changed: true });
     const art = (sequence: number, v: number) => ({ sequence, physical: 0, portAddress: 0, data: u8(v) });
     s.acceptArtDmx(art(0, 1), 'y', 0);
@@ -72,6 +73,31 @@ describe('createUniverseStore', () => {
     expect(s.acceptArtDmx(art(9, 3), 'y', 0).ok).toBe(true);
     expect(s.acceptArtDmx(art(8, 4), 'y', 0)).toEqual({ ok: false, reason: 'stale-sequence' });
     expect(s.acceptArtDmx(art(0, 5), 'y', 0).ok).toBe(true);
+  });
+
+  it('a sender stuck on one non-zero sequence number keeps being applied, both protocols (issue 32)', () => {
+    const s = createUniverseStore();
+    const art = (v: number) => ({ sequence: 42, physical: 0, portAddress: 1, data: u8(v) });
+    for (let i = 1; i <= 50; i++) {
+      expect(s.acceptE131(sacn('a', 1, [i], { sequence: 42 }), 'x', i * 25)).toEqual({ ok: true, universe: 1, changed: true });
+      expect(s.acceptArtDmx(art(i), 'y', i * 25)).toEqual({ ok: true, universe: 2, changed: true });
+    }
+    expect(s.get(1)![0]).toBe(50);
+    expect(s.get(2)![0]).toBe(50);
+    // A late packet is still discarded while the source is live.
+    expect(s.acceptE131(sacn('a', 1, [7], { sequence: 41 }), 'x', 1300)).toEqual({ ok: false, reason: 'stale-sequence' });
+  });
+
+  it('a source whose packets were all discarded for SEQUENCE_RESYNC_MS is followed again whatever its number', () => {
+    const s = createUniverseStore({ sequenceResyncMs: 1000 });
+    s.acceptE131(sacn('a', 1, [1], { sequence: 100 }), 'x', 0);
+    // Restarted at 90 and counting on: 90..99 are behind 100, discarded for up to a second …
+    expect(s.acceptE131(sacn('a', 1, [2], { sequence: 90 }), 'x', 500).ok).toBe(false);
+    expect(s.acceptE131(sacn('a', 1, [2], { sequence: 95 }), 'x', 1000).ok).toBe(false);
+    // … then the source is followed from its current number.
+    expect(s.acceptE131(sacn('a', 1, [3], { sequence: 96 }), 'x', 1001)).toEqual({ ok: true, universe: 1, changed: true });
+    expect(s.acceptE131(sacn('a', 1, [4], { sequence: 97 }), 'x', 1002).ok).toBe(true);
+    expect(s.acceptE131(sacn('a', 1, [5], { sequence: 96 }), 'x', 1003).ok).toBe(false);
   });
 
   it('limits universes and sources per universe, and counts them as ignored', () => {
