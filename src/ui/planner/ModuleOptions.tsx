@@ -1,11 +1,12 @@
 import './registerOptionsEnglish';
-import { useSyncExternalStore } from 'react';
+import { useState, useSyncExternalStore } from 'react';
 import type { Catalog } from '../../core/model/catalogSchema';
 import type { ModuleInstance } from '../../core/model/configuration';
 import { PhotometryWarnings } from '../shared/PhotometryWarnings';
 import type { ActionGate } from './actionGate';
 import type { FootprintSource } from './footprintSource';
 import { GatedButton } from './GatedButton';
+import { beamChangeNote, type ModuleBeamState } from './beamChangeNote';
 import { modulePhotometryPath } from './moduleFootprint';
 import { OptionChips } from './OptionChips';
 import { OptionsSection } from './OptionsSection';
@@ -22,6 +23,22 @@ export const DIMMING_STEPS = [0.25, 0.5, 0.75, 1] as const;
 function ModulePhotometryNote({ source, path }: { source: FootprintSource; path: string }) {
   useSyncExternalStore(source.subscribe, source.version, source.version);
   return <PhotometryWarnings notes={[{ file: path, warnings: source.warnings(path) }]} testId="module-photometry-warnings" />;
+}
+
+/**
+ * After a type change that could not keep the module's beam (the new type has no beam of that id,
+ * beamForType took the nearest angle), says which beam was set instead; cleared by the next change
+ * or another module (state adjusted while rendering, React's pattern for a prop change).
+ */
+function useBeamChangeNote(module: ModuleInstance, catalog: Catalog): string | null {
+  const { t, language } = useI18n();
+  const [last, setLast] = useState<ModuleBeamState>({ id: module.id, type: module.type, beam: module.beam });
+  const [note, setNote] = useState<string | null>(null);
+  if (last.id !== module.id || last.type !== module.type || last.beam !== module.beam) {
+    setLast({ id: module.id, type: module.type, beam: module.beam });
+    setNote(beamChangeNote(last, module, catalog, t, language));
+  }
+  return note;
 }
 
 export interface ModuleOptionsProps {
@@ -41,6 +58,7 @@ export function ModuleOptions({ module, catalog, gate, onClose, footprints, aimM
   const type = catalog.moduleTypes.find((m) => m.id === module.type);
   const photometryPath = modulePhotometryPath(module, catalog);
   const moduleId = module.id;
+  const beamNote = useBeamChangeNote(module, catalog);
   return (
     <OptionsSection title={t('options.moduleTitle', { name: type ? localName(type, language) : module.type })} onClose={onClose}>
       <OptionChips title={t('options.moduleType')}>
@@ -54,6 +72,11 @@ export function ModuleOptions({ module, catalog, gate, onClose, footprints, aimM
             <GatedButton key={b.id} gate={gate} action="setModuleBeam" params={{ moduleId, beam: b.id }} label={localLabel(b, language)} current={b.id === module.beam} testId={`beam-${b.id}`} />
           ))}
         </OptionChips>
+      )}
+      {beamNote && (
+        <p className="empty-note" role="status" data-testid="beam-changed">
+          {beamNote}
+        </p>
       )}
       {footprints && photometryPath && <ModulePhotometryNote source={footprints} path={photometryPath} />}
       {type && (

@@ -15,6 +15,7 @@ import { railModuleOffsets } from '../geometry';
 import { isTunable } from '../dmxPatch';
 import { clampAim } from '../aim';
 import { newModule } from '../presets';
+import { beamForType } from '../beamForType';
 import { findModule, findRail, replaceRail, takeId, updateModule } from './lookup';
 
 const addParams = z.object({
@@ -152,7 +153,7 @@ export const removeModule: ActionDefinition<z.infer<typeof moduleIdParams>> = {
 
 const typeParams = z.object({ moduleId: z.string(), type: z.string() });
 
-/** Switches a module's type; only to types that fit without clashing. Keeps the CCT where the new type offers it, the DMX patch (without a CCT channel when the new type has one CCT), and the aim within the new type's limits (none for a fixed type). */
+/** Switches a module's type; only to types that fit without clashing. Keeps the beam (or the nearest beam angle, beamForType.ts) and the CCT where the new type offers them, the DMX patch (without a CCT channel when the new type has one CCT), and the aim within the new type's limits (none for a fixed type). */
 export const setModuleType: ActionDefinition<z.infer<typeof typeParams>> = {
   name: 'setModuleType',
   label: 'Module type',
@@ -160,6 +161,7 @@ export const setModuleType: ActionDefinition<z.infer<typeof typeParams>> = {
   perform(state, p, catalog) {
     const { module } = findModule(state, p.moduleId);
     const type = findModuleType(catalog, p.type);
+    const beam = beamForType(catalog.moduleTypes.find((t) => t.id === module.type), module.beam, type);
     const cct = type.ccts.includes(module.cct) ? module.cct : type.defaultCct;
     // A type with one CCT has no CCT channel: the patch keeps its level channels and shrinks, so it never meets a neighbour.
     const dmx = module.dmx?.cct && !isTunable(type) ? { ...module.dmx, cct: false } : module.dmx;
@@ -168,7 +170,7 @@ export const setModuleType: ActionDefinition<z.infer<typeof typeParams>> = {
     const { aim: _dropped, ...rest } = module;
     void _dropped;
     const ref = findModule(state, p.moduleId);
-    const next: ModuleInstance = { ...rest, type: type.id, beam: type.defaultBeam, cct, ...(dmx ? { dmx } : {}), ...(aim ? { aim } : {}) };
+    const next: ModuleInstance = { ...rest, type: type.id, beam, cct, ...(dmx ? { dmx } : {}), ...(aim ? { aim } : {}) };
     return replaceRail(state, ref, { ...ref.rail, modules: ref.rail.modules.map((x, i) => (i === ref.moduleIndex ? next : x)) });
   },
   explain(problem, _state, p, catalog) {

@@ -21,6 +21,7 @@ export default {
   moduleTitle: 'Modul: {name}',
   moduleType: 'Modultyp',
   beam: 'Ausstrahlung',
+  beamChanged: '{type} gibt es nicht mit „{old}“: die nächstliegende Ausstrahlung, „{beam}“, ist gewählt',
   colourTemperature: 'Farbtemperatur',
   kelvin: '{k} K',
   dimming: 'Dimmung',

@@ -19,6 +19,7 @@ export default {
   moduleTitle: 'Module: {name}',
   moduleType: 'Module type',
   beam: 'Beam',
+  beamChanged: '{type} has no “{old}”: the nearest beam, “{beam}”, is set',
   colourTemperature: 'Colour temperature',
   kelvin: '{k} K',
   dimming: 'Dimming',

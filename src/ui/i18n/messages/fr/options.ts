@@ -21,6 +21,7 @@ export default {
   moduleTitle: 'Module : {name}',
   moduleType: 'Type de module',
   beam: 'Faisceau',
+  beamChanged: '{type} n’existe pas en « {old} » : le faisceau le plus proche, « {beam} », est choisi',
   colourTemperature: 'Température de couleur',
   kelvin: '{k} K',
   dimming: 'Gradation',

@@ -21,6 +21,7 @@ export default {
   moduleTitle: 'Modulo: {name}',
   moduleType: 'Tipo di modulo',
   beam: 'Fascio',
+  beamChanged: '{type} non esiste con «{old}»: è scelto il fascio più vicino, «{beam}»',
   colourTemperature: 'Temperatura di colore',
   kelvin: '{k} K',
   dimming: 'Dimmerazione',
