@@ -50,3 +50,44 @@ test('a foreign link (a lighting scene, not a configuration) is refused with a c
   expect((await sceneFile(page)).configuration.systems).toHaveLength(0);
   await expect(page.getByTestId('banner').getByRole('button', { name: 'Open my saved configuration' })).toHaveCount(0);
 });
+
+// Issue #27, "Share": a copy button with a short confirmation, and the system share sheet where the browser has one.
+test.describe('copy and share the link', () => {
+  test.use({ permissions: ['clipboard-read', 'clipboard-write'] });
+
+  test('desktop, English: Copy puts the link on the clipboard and says so', async ({ page }) => {
+    await page.goto('/');
+    await page.getByRole('button', { name: 'Try the demo' }).click();
+    await page.getByTestId('share').click();
+    const link = await page.getByTestId('share-link').inputValue();
+    expect(link).toContain('#c=');
+    // No Web Share API in desktop Chromium here: no Share… button.
+    await expect(page.getByTestId('share-native')).toHaveCount(0);
+    await page.evaluate(() => navigator.clipboard.writeText('something else'));
+    await page.getByTestId('share-copy').click();
+    await expect(page.getByTestId('share-status')).toHaveText('Link copied.');
+    expect(await page.evaluate(() => navigator.clipboard.readText())).toBe(link);
+  });
+
+  test('phone with touch, German: Teilen… opens the share sheet with the link', async ({ browser }) => {
+    const context = await browser.newContext({ viewport: { width: 390, height: 844 }, hasTouch: true, isMobile: true, permissions: ['clipboard-read', 'clipboard-write'] });
+    const page = await context.newPage();
+    // A phone's Web Share API, recorded (headless Chromium on Linux has none).
+    await page.addInitScript(() => {
+      const calls: ShareData[] = [];
+      (window as unknown as { shareCalls: ShareData[] }).shareCalls = calls;
+      Object.defineProperty(navigator, 'share', { value: async (data: ShareData) => void calls.push(data), configurable: true });
+    });
+    await page.goto('/?lang=de');
+    await page.getByRole('button', { name: 'Demo ausprobieren' }).click();
+    await page.getByRole('button', { name: 'Vorlagen', exact: true }).click();
+    await page.getByTestId('share').click();
+    const link = await page.getByTestId('share-link').inputValue();
+    await page.getByTestId('share-native').tap();
+    await expect(page.getByTestId('share-status')).toHaveText('Link geteilt.');
+    expect(await page.evaluate(() => (window as unknown as { shareCalls: ShareData[] }).shareCalls)).toEqual([{ title: 'Meine Lichtplanung', url: link }]);
+    await page.getByTestId('share-copy').tap();
+    await expect(page.getByTestId('share-status')).toHaveText('Link kopiert.');
+    await context.close();
+  });
+});

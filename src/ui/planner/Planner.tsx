@@ -39,6 +39,7 @@ import { scenePlayerFor } from '../scenes/createScenePlayer';
 import { mixLevels, outputLevels } from '../../core/model/sceneFade';
 import { PlanAnnouncer } from './PlanAnnouncer';
 import type { Landmarks } from '../shared/landmarks';
+import { ShareLinkField } from './ShareLinkField';
 
 export interface PlannerProps {
   store: ConfiguratorStore;
@@ -252,17 +253,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
               </button>
             </div>
             <FilePanel store={store} ui={ui} loadPhotometry={footprints.loadPhotometry} />
-            {shareLink && (
-              <div className="field" style={{ marginTop: 8 }}>
-                <label htmlFor="share-link">{t('planner.linkToConfiguration')}</label>
-                <input id="share-link" readOnly value={shareLink} onFocus={(e) => e.target.select()} data-testid="share-link" />
-                {shareNotice && (
-                  <p className="share-notice" role="note" data-testid="share-notice">
-                    ⚠ {shareNotice}
-                  </p>
-                )}
-              </div>
-            )}
+            {shareLink && <ShareLinkField link={shareLink} notice={shareNotice} />}
           </section>
         </aside>
       </div>

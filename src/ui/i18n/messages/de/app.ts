@@ -5,7 +5,7 @@ export default {
   tagline: 'Lichtkonfigurator',
   regionLabel: 'luxbox Lichtkonfigurator',
   openSaved: 'Meine gespeicherte Konfiguration öffnen',
-  shareCreated: 'Link zum Teilen erstellt: Sie können ihn in der Seitenleiste kopieren.',
+  shareCreated: 'Link zum Teilen bereit: in der Seitenleiste kopieren oder teilen.',
   shareCreatedWithoutModels: 'Link zum Teilen ohne die importierten Modelle erstellt: siehe Seitenleiste.',
   linkBroken: 'Dieser Link konnte nicht geöffnet werden: {problem}. Stattdessen wird ein leerer Raum gezeigt.',
   linkForeign: 'Dieser Link enthält keine luxbox-Konfiguration. Stattdessen wird ein leerer Raum gezeigt.',

@@ -3,7 +3,7 @@ export default {
   tagline: 'Lighting configurator',
   regionLabel: 'luxbox lighting configurator',
   openSaved: 'Open my saved configuration',
-  shareCreated: 'Share link created: copy it from the side panel.',
+  shareCreated: 'Share link ready: copy or share it in the side panel.',
   shareCreatedWithoutModels: 'Share link created without the imported models: see the side panel.',
   linkBroken: 'This link could not be opened: {problem}. Showing an empty room instead.',
   linkForeign: 'This link does not contain a luxbox configuration. Showing an empty room instead.',

@@ -5,7 +5,7 @@ export default {
   tagline: 'Configurateur d’éclairage',
   regionLabel: 'Configurateur d’éclairage luxbox',
   openSaved: 'Ouvrir ma configuration enregistrée',
-  shareCreated: 'Lien de partage créé : copiez-le dans le panneau latéral.',
+  shareCreated: 'Lien de partage prêt : copiez-le ou partagez-le dans le panneau latéral.',
   shareCreatedWithoutModels: 'Lien de partage créé sans les modèles importés : voir le panneau latéral.',
   linkBroken: 'Ce lien n’a pas pu être ouvert : {problem}. Une pièce vide est affichée à la place.',
   linkForeign: 'Ce lien ne contient pas de configuration luxbox. Une pièce vide est affichée à la place.',

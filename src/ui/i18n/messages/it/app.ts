@@ -5,7 +5,7 @@ export default {
   tagline: 'Configuratore di illuminazione',
   regionLabel: 'Configuratore di illuminazione luxbox',
   openSaved: 'Apri la mia configurazione salvata',
-  shareCreated: 'Link di condivisione creato: copialo dal pannello laterale.',
+  shareCreated: 'Link di condivisione pronto: copialo o condividilo dal pannello laterale.',
   shareCreatedWithoutModels: 'Link di condivisione creato senza i modelli importati: vedi il pannello laterale.',
   linkBroken: 'Questo link non può essere aperto: {problem}. Al suo posto viene mostrata una stanza vuota.',
   linkForeign: 'Questo link non contiene una configurazione luxbox. Al suo posto viene mostrata una stanza vuota.',
