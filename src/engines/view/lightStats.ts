@@ -51,48 +51,79 @@ export function statsOf(values: ArrayLike<number>): IlluminanceStats {
  */
 export const FLOOR_CONTACT_M = 0.01;
 
+/** A regular grid of points on a horizontal plane: cell (i, j) has its centre at (x0 + (i + 0.5)·dx, z0 + (j + 0.5)·dz). */
+interface PlanGrid {
+  x0: number;
+  z0: number;
+  dx: number;
+  dz: number;
+  nx: number;
+  nz: number;
+}
+
 /**
- * Which floor texels lie under furniture: 1 where the texel's centre is inside the plan silhouette
- * (the union of its triangles projected onto the floor, as the plan draws objects) of an object
- * that stands on the floor (FLOOR_CONTACT_M), else 0; row-major like the floor map. The triangles
- * come from the prepared objects the baker lit (objectRenderGeometry). Cost: one pass over each
- * standing object's triangles with a point-in-triangle test per texel of its plan bounding box.
+ * 1 for each grid cell whose centre lies inside the plan silhouette (the union of the triangles
+ * projected onto the floor, as the plan draws objects) of an object standing on the floor
+ * (FLOOR_CONTACT_M); row-major. `above`: only faces lying wholly higher than this (metres) count,
+ * so a plane is covered where furniture rises through it, not where it only passes over a low
+ * table; null: every face. The triangles come from the prepared objects the baker lit
+ * (objectRenderGeometry). Cost: one pass over each standing object's triangles with a
+ * point-in-triangle test per cell of its plan bounding box.
  */
-export function floorUnderObjects(floor: SurfaceLayout, objects: PreparedObjects | null): Uint8Array {
-  const covered = new Uint8Array(floor.width * floor.height);
+function gridUnderObjects(grid: PlanGrid, objects: PreparedObjects | null, above: number | null): Uint8Array {
+  const covered = new Uint8Array(grid.nx * grid.nz);
   if (!objects || objects.triangleCount === 0) return covered;
   const standing = objects.objects.map((o) => o.bounds.min[1] <= FLOOR_CONTACT_M);
   if (!standing.some(Boolean)) return covered;
   const geometry = objectRenderGeometry(objects);
   const p = geometry.positions;
-  // Texel (i, j) has its centre at u = (i + 0.5)·du, v = (j + 0.5)·dv on the floor (x = u, z = v).
-  const du = floor.lengthU / floor.width;
-  const dv = floor.lengthV / floor.height;
-  const [ou, ov] = [floor.origin[floor.uAxisIndex], floor.origin[floor.vAxisIndex]];
+  const { x0, z0, dx, dz } = grid;
   for (let t = 0; t < geometry.triangleCount; t++) {
     if (!standing[geometry.objectOfTriangle[t]]) continue;
     const o = t * 9;
+    if (above !== null && !(Math.min(p[o + 1], p[o + 4], p[o + 7]) > above)) continue;
     const ax = p[o], az = p[o + 2], bx = p[o + 3], bz = p[o + 5], cx = p[o + 6], cz = p[o + 8];
     const area = (bx - ax) * (cz - az) - (bz - az) * (cx - ax);
     if (Math.abs(area) < 1e-12) continue; // a side face, seen edge-on from above: its neighbours cover the plan
-    const i0 = Math.max(0, Math.ceil((Math.min(ax, bx, cx) - ou) / du - 0.5));
-    const i1 = Math.min(floor.width - 1, Math.floor((Math.max(ax, bx, cx) - ou) / du - 0.5));
-    const j0 = Math.max(0, Math.ceil((Math.min(az, bz, cz) - ov) / dv - 0.5));
-    const j1 = Math.min(floor.height - 1, Math.floor((Math.max(az, bz, cz) - ov) / dv - 0.5));
+    const i0 = Math.max(0, Math.ceil((Math.min(ax, bx, cx) - x0) / dx - 0.5));
+    const i1 = Math.min(grid.nx - 1, Math.floor((Math.max(ax, bx, cx) - x0) / dx - 0.5));
+    const j0 = Math.max(0, Math.ceil((Math.min(az, bz, cz) - z0) / dz - 0.5));
+    const j1 = Math.min(grid.nz - 1, Math.floor((Math.max(az, bz, cz) - z0) / dz - 0.5));
     const sign = Math.sign(area);
     for (let j = j0; j <= j1; j++) {
-      const z = ov + (j + 0.5) * dv;
+      const z = z0 + (j + 0.5) * dz;
       for (let i = i0; i <= i1; i++) {
-        const x = ou + (i + 0.5) * du;
+        const x = x0 + (i + 0.5) * dx;
         // Inside (edges included) when the three edge functions share the triangle's orientation.
         const w0 = ((bx - ax) * (z - az) - (bz - az) * (x - ax)) * sign;
         const w1 = ((cx - bx) * (z - bz) - (cz - bz) * (x - bx)) * sign;
         const w2 = ((ax - cx) * (z - cz) - (az - cz) * (x - cx)) * sign;
-        if (w0 >= 0 && w1 >= 0 && w2 >= 0) covered[j * floor.width + i] = 1;
+        if (w0 >= 0 && w1 >= 0 && w2 >= 0) covered[j * grid.nx + i] = 1;
       }
     }
   }
   return covered;
+}
+
+/**
+ * Which floor texels lie under furniture: 1 where the texel's centre is inside the plan silhouette
+ * of an object that stands on the floor (FLOOR_CONTACT_M), else 0; row-major like the floor map.
+ */
+export function floorUnderObjects(floor: SurfaceLayout, objects: PreparedObjects | null): Uint8Array {
+  const dx = floor.lengthU / floor.width;
+  const dz = floor.lengthV / floor.height;
+  return gridUnderObjects({ x0: floor.origin[floor.uAxisIndex], z0: floor.origin[floor.vAxisIndex], dx, dz, nx: floor.width, nz: floor.height }, objects, null);
+}
+
+/**
+ * Which points of a work plane at `height` lie inside furniture: 1 where the point's plan position
+ * is under a face of a standing object lying wholly above height + FLOOR_CONTACT_M (the object
+ * rises through the plane there: a shelf, a sofa's back, a person), else 0. A table whose top is
+ * the work plane, or a coffee table below it, covers nothing: the plane over it is free. The same
+ * silhouette rule as the floor (floorUnderObjects), applied to what reaches above the plane.
+ */
+export function workPlaneUnderObjects(room: { width: number; depth: number }, nx: number, nz: number, height: number, objects: PreparedObjects | null): Uint8Array {
+  return gridUnderObjects({ x0: 0, z0: 0, dx: room.width / nx, dz: room.depth / nz, nx, nz }, objects, height + FLOOR_CONTACT_M);
 }
 
 /**
@@ -124,7 +155,11 @@ export function floorStats(lit: LitMaps, objects: PreparedObjects | null = null)
  * cosine test, as they should be. With `objects` (the scene's, prepared as the
  * baker lays them out) each point source counts only where a shadow ray from
  * the grid point reaches it past every object (the CPU ray caster over the
- * baker's BVH): the plane under a shelf board or inside a sofa is shaded.
+ * baker's BVH): the plane under a shelf board or inside a sofa is shaded; and the
+ * statistics leave out the points inside furniture standing on the floor
+ * (workPlaneUnderObjects), as the floor's leave out what furniture occupies
+ * (EN 12464-1). `values` keeps every point (0 where no light reaches); `covered`
+ * marks the points left out and `points` counts those taken.
  */
 export function workPlaneStats(
   scene: BakeScene,
@@ -133,7 +168,7 @@ export function workPlaneStats(
   spacing = 0.1,
   settings: Partial<BakeSettings> = {},
   objects: PreparedObjects | null = null,
-): IlluminanceStats & { values: Float32Array; nx: number; nz: number } {
+): IlluminanceStats & { values: Float32Array; covered: Uint8Array; nx: number; nz: number } {
   const { width, depth } = scene.room;
   const lamps = scenePointSources(scene, resolveBakeSettings(settings));
   const caster = objects && objects.triangleCount > 0 ? createObjectRayCaster(objects) : null;
@@ -167,5 +202,7 @@ export function workPlaneStats(
       values[k * nx + i] = Y(e[0], e[1], e[2]) + Math.max(0, Y(t[0] - d[0], t[1] - d[1], t[2] - d[2]));
     }
   }
-  return { ...statsOf(values), values, nx, nz };
+  const covered = workPlaneUnderObjects(scene.room, nx, nz, height, objects);
+  const taken = values.filter((_, k) => covered[k] === 0);
+  return { ...statsOf(taken), values, covered, nx, nz };
 }
