@@ -11,7 +11,7 @@ import type { ActionParams } from '../../core/model/actionDefinitions';
 import { attemptAction } from '../../core/model/actionDefinitions';
 import type { LightSystem, MeshUnits, ObjectPlacement } from '../../core/model/configuration';
 import { type ModuleOnRail, alongRail, moduleOnRail } from './moduleMoves';
-import { findFurnitureItem } from '../../core/model/furniture/furnitureLibrary';
+import { findFurnitureItem, furnitureMesh } from '../../core/model/furniture/furnitureLibrary';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
 import { followableDelta, movedPlacement, wallPlacementNear } from './objectMoves';
 import { selectionPath } from './selection';
@@ -31,6 +31,8 @@ import {
 } from './viewTransform';
 import { ENGLISH } from '../i18n/english';
 import type { Translate } from '../i18n/messageTypes';
+import { clampObjectDelta } from './clampObjectDelta';
+import { freeFloorSpot } from '../../core/model/freeFloorSpot';
 
 /**
  * A system or an object being dragged: drawn offset by `delta` (metres) until dropped; `invalid`
@@ -317,7 +319,8 @@ export class PlannerController implements CommandContext {
     } else if (cur?.mode === 'object') {
       const o = this.store.getState().config.objects.find((x) => x.id === cur.id);
       if (!o) return;
-      const delta = followableDelta(o.placement, this.pointerDelta(cur, at));
+      const { config } = this.store.getState();
+      const delta = clampObjectDelta(config, o, followableDelta(o.placement, this.pointerDelta(cur, at)), DROP_SNAP);
       const invalid = this.store.getState().isEnabled('moveObject', { objectId: cur.id, placement: movedPlacement(o.placement, delta, DROP_SNAP) }) !== true;
       this.setDrag({ objectId: cur.id, delta, invalid });
     }
@@ -430,14 +433,15 @@ export class PlannerController implements CommandContext {
     this.setDrag(null);
     const o = this.store.getState().config.objects.find((x) => x.id === objectId);
     if (!o) return;
-    const d = followableDelta(o.placement, delta);
+    const d = clampObjectDelta(this.store.getState().config, o, followableDelta(o.placement, delta), DROP_SNAP);
     if (d.x === 0 && d.z === 0) return;
     this.run('moveObject', { objectId, placement: movedPlacement(o.placement, d, DROP_SNAP) });
   }
 
   /**
    * Adds a furniture library item where it was dropped (`at`, plan pixels) or, tapped in the
-   * panel, at the middle of the visible plan; a wall item goes on the nearest wall at its
+   * panel, at the middle of the visible plan — a floor item at the nearest free floor there
+   * (freeFloorSpot: never inside another piece); a wall item goes on the nearest wall at its
    * hanging height. The model moves it to the nearest spot where it fits. The new object is
    * selected. Returns the refusal, if any (also shown in the status line).
    */
@@ -446,14 +450,16 @@ export class PlannerController implements CommandContext {
     if (!item) return this.refused({ reason: `no furniture item '${itemId}' in the library` });
     const p = at ? this.insideRoom(screenToWorld(this.view, at)) : this.visibleCentre();
     const { room } = this.store.getState().config;
-    const placement: ObjectPlacement = item.mount === 'wall' ? wallPlacementNear(room, p, Math.min(item.hangHeight ?? room.height / 2, room.height - item.height / 2)) : { on: 'floor', x: p.x, z: p.z };
+    const free = item.mount === 'wall' ? null : freeFloorSpot(this.store.getState().config, furnitureMesh(itemId), p);
+    const placement: ObjectPlacement = item.mount === 'wall' ? wallPlacementNear(room, p, Math.min(item.hangHeight ?? room.height / 2, room.height - item.height / 2)) : { on: 'floor', x: free?.x ?? p.x, z: free?.z ?? p.z };
     return this.addObject({ source: { kind: 'library', item: itemId }, placement });
   }
 
   /** Adds an imported model (already read and converted to metres) at the middle of the visible plan and selects it. */
   addImported(name: string, mesh: TriangleMesh, units: MeshUnits): string | null {
     const c = this.visibleCentre();
-    return this.addObject({ source: { kind: 'import', name, mesh, units }, placement: { on: 'floor', x: c.x, z: c.z } });
+    const free = freeFloorSpot(this.store.getState().config, mesh, c) ?? c;
+    return this.addObject({ source: { kind: 'import', name, mesh, units }, placement: { on: 'floor', x: free.x, z: free.z } });
   }
 
   private addObject(params: ActionParams<'addObject'>): string | null {

@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { checkAction } from '../../../src/core/model/actionDefinitions';
 import { createConfiguration, type Configuration, type RoomObject } from '../../../src/core/model/configuration';
 import { furnitureMesh } from '../../../src/core/model/furniture/furnitureLibrary';
-import { placedBounds } from '../../../src/core/model/objectGeometry';
+import { objectMesh, placedBounds } from '../../../src/core/model/objectGeometry';
 import { createConfiguratorStore } from '../../../src/core/store/createConfiguratorStore';
 import { planHitTest } from '../../../src/ui/planner/planHitTest';
 import { KEY_MOVE_STEP, OBJECT_ROTATE_STEP, plannerCommand } from '../../../src/ui/planner/plannerCommands';
@@ -57,23 +57,35 @@ describe('PlannerController: objects', () => {
     expect(object(t).placement).toEqual({ on: 'floor', x: 2.5, z: 2 });
   });
 
-  it('a drop through a wall is refused: faded while held, snaps back, the model reason shown, nothing recorded', () => {
+  it('a drag past a wall stops at the wall (issue #27): shown at the wall while held, dropped there as one undoable move', () => {
     const t = new TestPlanner(furnished([{ item: 'sofa', x: 2.5, z: 2 }]));
-    const before = t.config;
     const from = objectCentre(t);
-    // 2 m to the right puts the 2.1 m sofa's right end at 4.5 + 1.05 m, past the 5 m east wall.
+    // 2 m to the right would put the 2.1 m sofa's right end at 4.5 + 1.05 m, past the 5 m east wall: it stops with its end on the wall.
     const to = { sx: from.sx + t.view.scale * 2, sy: from.sy };
     t.controller.pointerDown(from);
     t.controller.pointerMove(to);
-    expect(t.controller.drag).toMatchObject({ objectId: object(t).id, invalid: true });
+    const held = t.controller.drag as { delta: { x: number; z: number }; invalid: boolean };
+    expect(held.invalid).toBe(false);
+    expect(held.delta.x).toBeCloseTo(1.45, 9);
     t.controller.pointerUp(to);
     expect(t.controller.drag).toBeNull();
-    expect(t.config).toBe(before);
-    const check = checkAction(before, 'moveObject', { objectId: object(t).id, placement: { on: 'floor', x: 4.5, z: 2 } }, catalog);
-    expect(check).not.toBe(true);
-    expect(t.status).toBe(check === true ? undefined : check.reason);
-    expect(t.store.getState().canUndo).toBe(false);
+    expect(object(t).placement).toEqual({ on: 'floor', x: 3.95, z: 2 });
+    expect(placedBounds(object(t), objectMesh(t.config, object(t).id), t.config.room).max[0]).toBeCloseTo(5, 6);
+    expect(t.store.getState().canUndo).toBe(true);
     expect(t.problems()).toEqual([]);
+  });
+
+  it('a drag toward a corner slides along both walls; a move that cannot fit anywhere is still refused with the model reason', () => {
+    const t = new TestPlanner(furnished([{ item: 'armchair', x: 2.5, z: 2 }]));
+    const from = objectCentre(t);
+    const to = { sx: from.sx - t.view.scale * 5, sy: from.sy - t.view.scale * 5 };
+    t.controller.pointerDown(from);
+    t.controller.pointerUp(to);
+    // Armchair 85 × 85 cm: its centre 0.425 m off the west and north walls.
+    expect(object(t).placement).toEqual({ on: 'floor', x: 0.43, z: 0.43 });
+    expect(t.problems()).toEqual([]);
+    const check = checkAction(t.config, 'moveObject', { objectId: object(t).id, placement: { on: 'floor', x: -3, z: 2 } }, catalog);
+    expect(check).not.toBe(true);
   });
 
   it('keys: R and [ turn it 15° left, Shift+R and ] right, arrows move it 0.1 m (Shift 0.01 m), Delete removes it; Undo brings it back', () => {
