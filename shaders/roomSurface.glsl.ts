@@ -31,6 +31,7 @@ uniform sampler2D uIlluminance;
 uniform vec3 uNormal;
 uniform vec3 uReflectance;
 uniform float uExposure;
+uniform mat3 uAdapt;
 uniform int uMode;
 out vec4 fragColor;
 ${toneMapGlsl}
