@@ -13,36 +13,14 @@
  * auto exposure puts at white: the log-average scene luminance L̄ (autoExposure.ts) is middle grey
  * (0.18), so L_w = L̄ / 0.18 and L_A = 0.2 · L̄ / 0.18 = 0.2 / autoExposure.
  */
-import { CCT_MAX_K, CCT_MIN_K, cctToLinearRgb } from '../../core/photometry/cct';
+import { cctToLinearRgb } from '../../core/photometry/cct';
+import type { AdaptationSetting } from './adaptationSetting';
 import { AUTO_EXPOSURE_KEY } from './autoExposure';
 import { cat16LinearSrgb, degreeOfAdaptation, IDENTITY3 } from './cat16';
 import type { Mat3, Vec3 } from './colourMatrices';
 
-export type AdaptationSetting = { kind: 'eye' } | { kind: 'camera'; cct: number } | { kind: 'none' };
-
-export const DEFAULT_ADAPTATION: AdaptationSetting = { kind: 'eye' };
-
 /** Share of the adapting white's luminance taken as L_A (CIECAM02 practice: 20 %). */
 export const ADAPTING_WHITE_SHARE = 0.2;
-
-/** True for a CCT camera white balance accepts (cctToLinearRgb's range, 1000–20 000 K). */
-export function isCameraCct(cct: unknown): cct is number {
-  return typeof cct === 'number' && Number.isFinite(cct) && cct >= CCT_MIN_K && cct <= CCT_MAX_K;
-}
-
-/** 'eye', 'none' or 'camera:<K>' (the CLI's `--adapt`, the app's `?adapt=`, the embed option); null for anything else. */
-export function parseAdaptation(text: string): AdaptationSetting | null {
-  const t = text.trim().toLowerCase();
-  if (t === 'eye' || t === 'none') return { kind: t };
-  const m = /^camera:(\d+(?:\.\d+)?)k?$/.exec(t);
-  if (m && isCameraCct(Number(m[1]))) return { kind: 'camera', cct: Number(m[1]) };
-  return null;
-}
-
-/** The inverse of parseAdaptation. */
-export function formatAdaptation(s: AdaptationSetting): string {
-  return s.kind === 'camera' ? `camera:${s.cct}` : s.kind;
-}
 
 /** L_A (cd/m²) for an automatic exposure `auto` (1/(cd/m²)): 0.2 × the white L̄/0.18 (see above). */
 export function adaptingLuminance(auto: number): number {

@@ -1,6 +1,6 @@
 import type { Rgb, SurfaceName } from '../../core/model/lightingScene';
 import type { LitMaps } from '../relight/relightMaps';
-import { DEFAULT_ADAPTATION, type AdaptationSetting } from './chromaticAdaptation';
+import { DEFAULT_ADAPTATION, type AdaptationSetting } from './adaptationSetting';
 import type { Vec3 } from './colourMatrices';
 import { createEyeAdaptation, type AdaptationState } from './eyeAdaptation';
 import { ev100FromExposure } from './photographicExposure';

@@ -7,7 +7,7 @@ import { createCameraRig } from './createCameraRig';
 import { createFrameScheduler } from './createFrameScheduler';
 import { createMapDisplay, type MapsListener } from './createMapDisplay';
 import { adoptedWhite } from './adoptedWhite';
-import type { AdaptationSetting } from './chromaticAdaptation';
+import type { AdaptationSetting } from './adaptationSetting';
 import { sceneGeometryKey } from './sceneGeometryKey';
 import type { CameraPresetName } from './cameraPresets';
 import type { Fixtures } from './fixtures';

@@ -1,7 +1,8 @@
 import type { Rgb, SurfaceName } from '../../core/model/lightingScene';
 import type { LitMaps } from '../relight/relightMaps';
 import { autoExposure } from './autoExposure';
-import { adaptationFor, adaptingLuminance, DEFAULT_ADAPTATION, type Adaptation, type AdaptationSetting } from './chromaticAdaptation';
+import { adaptationFor, adaptingLuminance, type Adaptation } from './chromaticAdaptation';
+import { DEFAULT_ADAPTATION, type AdaptationSetting } from './adaptationSetting';
 import type { Vec3 } from './colourMatrices';
 import { limitAutoExposure, type AdaptationState } from './eyeAdaptation';
 import { luxLevels } from './falseColorScale';

@@ -4,7 +4,7 @@ import { InputError } from '../../core/inputError';
 import { oneLine } from '../../core/model/untrustedJson';
 import { parseCameraSpec } from '../../engines/view/cameraPresets';
 import { EV100_MAX, EV100_MIN } from '../../engines/view/photographicExposure';
-import { DEFAULT_ADAPTATION, formatAdaptation, parseAdaptation, type AdaptationSetting } from '../../engines/view/chromaticAdaptation';
+import { DEFAULT_ADAPTATION, formatAdaptation, parseAdaptation, type AdaptationSetting } from '../../engines/view/adaptationSetting';
 import { CCT_MAX_K, CCT_MIN_K } from '../../core/photometry/cct';
 import { parseBakeCli } from '../node/bakeCliOptions';
 import { batchFolderNames } from '../node/batchFolderNames';

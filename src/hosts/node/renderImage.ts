@@ -9,7 +9,7 @@ import type { CameraPose } from '../../engines/view/cameraPresets';
 import { floorStats, type IlluminanceStats } from '../../engines/view/lightStats';
 import { presentMaps } from '../../engines/view/presentMaps';
 import { adoptedWhite } from '../../engines/view/adoptedWhite';
-import type { AdaptationSetting } from '../../engines/view/chromaticAdaptation';
+import type { AdaptationSetting } from '../../engines/view/adaptationSetting';
 import { createRoomView, type RoomView, type ViewMode } from '../../engines/view/roomView';
 import { fullscreenVertex } from '../../../shaders/fullscreen.glsl';
 import { noContextMessage, NoWebGLError } from './createHeadlessGL';

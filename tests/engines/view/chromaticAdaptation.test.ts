@@ -5,7 +5,8 @@ import { cctToLinearRgb } from '../../../src/core/photometry/cct';
 import type { BakeLuminaire } from '../../../src/engines/bake/bakeScene';
 import { adoptedWhite, isWhiteLight } from '../../../src/engines/view/adoptedWhite';
 import { cat16LinearSrgb, cat16Xyz, degreeOfAdaptation, IDENTITY3, M16, M16_INV } from '../../../src/engines/view/cat16';
-import { adaptationFor, adaptingLuminance, formatAdaptation, parseAdaptation } from '../../../src/engines/view/chromaticAdaptation';
+import { adaptationFor, adaptingLuminance } from '../../../src/engines/view/chromaticAdaptation';
+import { formatAdaptation, parseAdaptation } from '../../../src/engines/view/adaptationSetting';
 import { mul3, mulVec3, SRGB_TO_XYZ } from '../../../src/engines/view/colourMatrices';
 import { isotropic } from '../../reference/photometryFixtures';
 
