@@ -1,5 +1,5 @@
 /**
- * CAT16 chromatic adaptation (Li, Li, Wang, Zu, Luo, Cui, Melgosa, Brill, Pointer,
+ * CAT16 chromatic adaptation (Li, Li, Wang, Xu, Luo, Cui, Melgosa, Brill, Pointer,
  * "Comprehensive color solutions: CAM16, CAT16, and CAM16-UCS", Color Res. Appl. 42:703–718,
  * 2017): von Kries scaling in the sharpened cone space of M16, one step from the test white to
  * the reference white with the degree of adaptation D,
@@ -15,7 +15,7 @@
  */
 import { SRGB_TO_XYZ, XYZ_TO_SRGB, invert3, mul3, mulVec3, type Mat3, type Vec3 } from './colourMatrices';
 
-/** M16 (Li et al. 2017, eq. 4), rows: XYZ → sharpened RGB. */
+/** M16 (Li et al. 2017), rows: XYZ → sharpened RGB. */
 export const M16: Mat3 = [0.401288, 0.650173, -0.051461, -0.250268, 1.204414, 0.045854, -0.002079, 0.048952, 0.953127];
 /** Its inverse. */
 export const M16_INV: Mat3 = invert3(M16);
