@@ -1,4 +1,5 @@
 import { expect, test, type Page } from '@playwright/test';
+import { PNG } from 'pngjs';
 import { viewerStatus as status, meanLevel } from './helpers';
 
 // The 3D view's exposure (docs/viewer.md, "Exposure: automatic or a fixed EV100", "Exposure that compares"):
@@ -65,4 +66,33 @@ test('?exposure=5 (the embed option exposure: 5): the 3D view opens locked at EV
   await expect(page.getByTestId('exposure-control')).toHaveAttribute('data-ev100', '5');
   await expect(page.getByTestId('exposure-ev100')).toHaveValue('5');
   expect(meanLevel(await page.getByTestId('view3d-canvas').screenshot())).toBeGreaterThan(10);
+});
+
+/** Mean of R − B over a PNG's pixels (how warm the picture is). */
+function warmth(png: Buffer): number {
+  const img = PNG.sync.read(png);
+  let s = 0;
+  for (let i = 0; i < img.data.length; i += 4) s += img.data[i] - img.data[i + 2];
+  return s / (img.width * img.height);
+}
+
+test('?adapt=camera:3000 opens with camera white balance at 3000 K (neutral); None shows the physical orange, Eye a warm white between', async ({ page }) => {
+  await page.goto('/?quality=fast&adapt=camera:3000');
+  await page.getByRole('button', { name: 'Start planning' }).click();
+  await page.getByTestId('preset-corner-l').click();
+  await page.getByTestId('tool-3d').click();
+  await expect.poll(async () => (await status(page)).lit, { timeout: 90_000, intervals: [250] }).toBe(true);
+  const control = page.getByTestId('adaptation-control');
+  await expect(control).toHaveAttribute('data-adapt', 'camera:3000');
+  await expect(page.getByTestId('adapt-cct')).toHaveValue('3000');
+  const canvas = page.getByTestId('view3d-canvas');
+  const camera = warmth(await canvas.screenshot());
+  await page.getByTestId('adapt-none').click();
+  await expect(control).toHaveAttribute('data-adapt', 'none');
+  await expect.poll(async () => warmth(await canvas.screenshot()), { timeout: 10_000 }).toBeGreaterThan(camera + 20);
+  const none = warmth(await canvas.screenshot());
+  await page.getByTestId('adapt-eye').click();
+  await expect(control).toHaveAttribute('data-adapt', 'eye');
+  await expect.poll(async () => warmth(await canvas.screenshot()), { timeout: 10_000 }).toBeLessThan(none - 10);
+  expect(warmth(await canvas.screenshot())).toBeGreaterThan(camera);
 });
