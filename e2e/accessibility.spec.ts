@@ -146,7 +146,8 @@ test('keyboard only: Tab to a preset, place it, select a module, change its beam
   await tabTo(page, '[data-testid="tool-3d"]', { backwards: true });
   await page.keyboard.press('Enter');
   await expect(page.getByTestId('view3d-canvas')).toBeVisible();
-  await tabTo(page, '[data-testid="back-2d"]');
+  // The 3D panel's controls (camera, mode, quality, exposure with Re-adapt, colour adaptation, modules, …) come first.
+  await tabTo(page, '[data-testid="back-2d"]', { max: 160 });
   await page.keyboard.press('Enter');
   await expect(plan).toBeVisible();
   expect(await firstBeam(page)).toBe(beam!.slice('beam-'.length));

@@ -1,5 +1,5 @@
 import { expect, test, type Page } from '@playwright/test';
-import { sceneFile } from './helpers';
+import { meanLevel, sceneFile } from './helpers';
 
 /**
  * Light scenes in the browser (docs/light-scenes.md): record two scenes in the panel, GO with a 1 s
@@ -107,10 +107,15 @@ test('in 3D a crossfade between two solved scenes is relights only: frames drawn
 
   await page.getByTestId('tool-3d').click();
   await expect.poll(async () => (await status()).lit, BAKE).toBe(true);
+  const canvas = page.getByTestId('view3d-canvas');
+  const dayLevel = meanLevel(await canvas.screenshot());
   const before = await status();
   expect(await page.evaluate(() => window.luxbox!.recall('Evening', { fade: 1 }))).toEqual({ ok: true });
   const after = await status();
   // Frames were drawn during the fade (a relight each), and nothing was baked or solved.
   expect(after.frames).toBeGreaterThan(before.frames + 2);
   expect(after.bake).toMatchObject({ groupBakes: before.bake.groupBakes, indirectSolves: before.bake.indirectSolves, done: true });
+  // Under automatic exposure the eye stays adapted to Day (a crossfade is a relight): Evening looks darker (docs/viewer.md, "Exposure that compares").
+  await expect(page.getByTestId('exposure-control')).toHaveAttribute('data-ev100', 'auto');
+  await expect.poll(async () => meanLevel(await canvas.screenshot()), { timeout: 10_000 }).toBeLessThan(dayLevel * 0.8);
 });

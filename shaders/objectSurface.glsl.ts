@@ -27,7 +27,7 @@ void main() {
  * uv the baker rasterised it with (bilinear: the baker dilates each chart two texels into its
  * gutter, so taps at a chart border never read an empty texel); ρ comes from the atlas
  * G-buffer's reflectance, nearest texel (a material boundary inside a chart is as sharp as one
- * texel); luminance L = ρ·E/π per channel → exposure → ACES → sRGB, or false-colour lux of
+ * texel); luminance L = ρ·E/π per channel → exposure → adaptation → PBR Neutral → sRGB, or false-colour lux of
  * Y(E). The back of a surface is dark (the baker lights only the counterclockwise side; closed
  * meshes never show it). The isolines follow E itself (no 4-tap smoothing as on the walls: the
  * taps would cross into a neighbouring chart's gutter). The selected object (uSelected = its
@@ -42,6 +42,7 @@ flat in float vObject;
 uniform sampler2D uIlluminance;
 uniform sampler2D uReflectance;
 uniform float uExposure;
+uniform mat3 uAdapt;
 uniform int uMode;
 uniform float uSelected;
 out vec4 fragColor;
@@ -59,7 +60,7 @@ void main() {
     float lux = dot(E, Y);
     color = luxFalseColor(lux, lux, facing);
   } else {
-    color = luxDisplay(rho * E / 3.14159265358979, uExposure);
+    color = luxDisplay(rho * E / 3.14159265358979, uExposure, uAdapt);
   }
   if (abs(vObject - uSelected) < 0.5) color = mix(color, vec3(0.16, 0.56, 0.98), 0.3);
   fragColor = vec4(color, 1.0);

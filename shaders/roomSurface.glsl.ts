@@ -31,6 +31,7 @@ uniform sampler2D uIlluminance;
 uniform vec3 uNormal;
 uniform vec3 uReflectance;
 uniform float uExposure;
+uniform mat3 uAdapt;
 uniform int uMode;
 out vec4 fragColor;
 ${toneMapGlsl}
@@ -47,7 +48,7 @@ void main() {
     fragColor = vec4(luxFalseColor(dot(E, Y), max(dot(Es, Y), 0.0) * 0.25, facing), 1.0);
   } else {
     vec3 L = uReflectance * E / 3.14159265358979;
-    fragColor = vec4(luxDisplay(L, uExposure), 1.0);
+    fragColor = vec4(luxDisplay(L, uExposure, uAdapt), 1.0);
   }
 }
 `;

@@ -5,6 +5,7 @@ import type { SurfaceLayout } from '../bake/surfaceLayout';
 import type { LitMaps } from '../relight/relightMaps';
 import { MAX_LEVELS, shaderLevels, TURBO_B, TURBO_G, TURBO_R } from './falseColorScale';
 import { surfaceQuad } from './surfaceQuad';
+import type { Mat3 } from './colourMatrices';
 import { CANDELA_C_SAMPLES, CANDELA_GAMMA_SAMPLES, createSpotPreviewUniforms, type SpotPreviewUniforms } from './spotPreview';
 
 export type ViewMode = 'light' | 'lux';
@@ -12,6 +13,8 @@ export type ViewMode = 'light' | 'lux';
 /** The display uniforms the room's surfaces own; the objects' material shares the very objects, so one assignment updates both. */
 export interface SharedDisplayUniforms {
   uExposure: { value: number };
+  /** Chromatic adaptation on linear sRGB (cat16.ts), before the tone curve. */
+  uAdapt: { value: THREE.Matrix3 };
   uMode: { value: number };
   uLevels: { value: number[] };
   uLevelCount: { value: number };
@@ -24,6 +27,8 @@ export interface RoomSurfaces {
   /** Upload relit maps (RGB lux) and the room's reflectances; a surface whose layout changed is rebuilt. */
   setMaps(lit: LitMaps, reflectance: Record<SurfaceName, Rgb>): void;
   setExposure(exposure: number): void;
+  /** The chromatic adaptation (row-major 3×3 on linear sRGB, chromaticAdaptation.ts); a non-finite matrix counts as the identity. */
+  setAdaptation(matrix: Mat3): void;
   setMode(mode: ViewMode, levels?: readonly number[]): void;
   /** The exposure, mode and level uniforms every surface shares (the objects' material shares them too). */
   readonly display: SharedDisplayUniforms;
@@ -57,6 +62,7 @@ export function createRoomSurfaces(scene: THREE.Scene, renderer: THREE.WebGLRend
   const levelUniform = { value: new Array<number>(MAX_LEVELS).fill(1) };
   const levelCount = { value: 0 };
   const exposure = { value: 1 };
+  const adapt = { value: new THREE.Matrix3() };
   const mode = { value: 0 };
   const preview = createSpotPreviewUniforms();
 
@@ -83,6 +89,7 @@ export function createRoomSurfaces(scene: THREE.Scene, renderer: THREE.WebGLRend
         uNormal: { value: new THREE.Vector3(...layout.normal) },
         uReflectance: { value: new THREE.Vector3(0.5, 0.5, 0.5) },
         uExposure: exposure,
+        uAdapt: adapt,
         uMode: mode,
         uLevels: levelUniform,
         uLevelCount: levelCount,
@@ -99,7 +106,7 @@ export function createRoomSurfaces(scene: THREE.Scene, renderer: THREE.WebGLRend
   };
 
   return {
-    display: { uExposure: exposure, uMode: mode, uLevels: levelUniform, uLevelCount: levelCount },
+    display: { uExposure: exposure, uAdapt: adapt, uMode: mode, uLevels: levelUniform, uLevelCount: levelCount },
     preview,
     setMaps(lit, reflectance) {
       for (const name of SURFACE_NAMES) {
@@ -128,6 +135,11 @@ export function createRoomSurfaces(scene: THREE.Scene, renderer: THREE.WebGLRend
     },
     setExposure(value) {
       exposure.value = Number.isFinite(value) && value > 0 ? value : 1;
+    },
+    setAdaptation(m) {
+      // three's Matrix3.set takes rows; it stores (and uploads) columns, as GLSL's mat3 expects.
+      if (m.every((v) => Number.isFinite(v))) adapt.value.set(...m);
+      else adapt.value.identity();
     },
     setMode(m, levels = []) {
       mode.value = m === 'lux' ? 1 : 0;

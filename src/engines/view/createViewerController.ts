@@ -6,6 +6,9 @@ import type { BakeService } from './createBakeService';
 import { createCameraRig } from './createCameraRig';
 import { createFrameScheduler } from './createFrameScheduler';
 import { createMapDisplay, type MapsListener } from './createMapDisplay';
+import { adoptedWhite } from './adoptedWhite';
+import type { AdaptationSetting } from './adaptationSetting';
+import { sceneGeometryKey } from './sceneGeometryKey';
 import type { CameraPresetName } from './cameraPresets';
 import type { Fixtures } from './fixtures';
 import { applyLiveLevels } from './applyLiveLevels';
@@ -106,7 +109,15 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
   });
   /** False while the view is kept but hidden (the 2D plan is on screen): no frames are drawn. */
   let active = true;
-  const frames = createFrameScheduler({ draw: () => view.render(renderer), canDraw: () => active && !display.lost, onFrame: events.onFrame });
+  const frames = createFrameScheduler({
+    draw: () => {
+      // The eye adapting after a cut or a Re-adapt: one more frame while it moves (eyeAdaptation.ts).
+      if (maps.advance(performance.now())) frames.request();
+      view.render(renderer);
+    },
+    canDraw: () => active && !display.lost,
+    onFrame: events.onFrame,
+  });
   controls.addEventListener('change', frames.request);
   const camera = createCameraRig(controls, view);
   const stopTaps = watchTaps(canvas, (x, y) => {
@@ -145,7 +156,7 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
   const showMaps = (engine: RelightEngine) => {
     if (!scene) return;
     const t0 = performance.now();
-    maps.show(engine.maps(), reflectanceRgb(scene.room), t0);
+    maps.show(engine.maps(), reflectanceRgb(scene.room), t0, { white: adoptedWhite(scene.luminaires), key: sceneGeometryKey(scene), done: engine.progress.done });
     shownVersion = engine.version;
     frames.request();
   };
@@ -220,6 +231,20 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
     currentEv100(): number {
       return maps.currentEv100();
     },
+    /** Chromatic adaptation: eye (default), camera white balance at a CCT, none (chromaticAdaptation.ts). */
+    setAdaptation(setting: AdaptationSetting) {
+      maps.setAdaptation(setting);
+      frames.request();
+    },
+    /** Adapt the automatic exposure and white to the light on screen now (they hold while the light is only dimmed or recoloured). */
+    reAdapt() {
+      maps.reAdapt();
+      frames.request();
+    },
+    /** Whether the automatic exposure is held (relights keep it; a new room, a camera preset or reAdapt adapt again). */
+    exposureHeld(): boolean {
+      return maps.held();
+    },
     setMode(m: ViewMode) {
       maps.setMode(m);
       frames.request();
@@ -250,6 +275,8 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
     },
     setPreset(name: CameraPresetName) {
       camera.setPreset(name);
+      // A camera cut: the eye adapts to the room again.
+      maps.reAdapt();
       frames.request();
     },
     resize(width: number, height: number) {

@@ -11,7 +11,7 @@
  *
  * and with EV100 = log2(N²/t) at S = 100 this is L_max = 1.2 · 2^EV100 cd/m².
  * The viewer multiplies luminance (cd/m²) by its exposure before the display
- * curve (ACES filmic, then sRGB: toneMap.ts), so a fixed EV100 means the
+ * curve (adaptation, AgX, sRGB: toneMap.ts), so a fixed EV100 means the
  * exposure 1 / L_max: a surface at L_max gives the linear value 1.0 before the
  * curve. Reference points: EV100 0 → L_max 1.2 cd/m², EV100 5 → 38.4 cd/m².
  */

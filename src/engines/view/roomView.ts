@@ -1,4 +1,5 @@
 import * as THREE from 'three';
+import type { Mat3 } from './colourMatrices';
 import { SURFACE_NAMES, type Rgb, type SurfaceName, type Vec3 } from '../../core/model/lightingScene';
 import type { LitMaps } from '../relight/relightMaps';
 import type { CameraPose } from './cameraPresets';
@@ -40,6 +41,8 @@ export interface RoomView {
   /** The aiming preview's lamp uniforms, shared by the room's surfaces (spotPreview.ts). */
   readonly preview: SpotPreviewUniforms;
   setExposure(exposure: number): void;
+  /** Chromatic adaptation before the tone curve (row-major 3×3 on linear sRGB, chromaticAdaptation.ts). */
+  setAdaptation(matrix: Mat3): void;
   setMode(mode: ViewMode, levels?: readonly number[]): void;
   setFixtures(fixtures: Fixtures): void;
   setCamera(pose: CameraPose, aspect: number): void;
@@ -62,6 +65,7 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
     camera,
     setMaps: surfaces.setMaps,
     setExposure: surfaces.setExposure,
+    setAdaptation: surfaces.setAdaptation,
     setMode: surfaces.setMode,
     setFixtures: hardware.setFixtures,
     setObjects: objects.setGeometry,

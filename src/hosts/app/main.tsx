@@ -1,4 +1,5 @@
 import { mountLuxbox } from '../embed/mountLuxbox';
+import { parseAdaptation } from '../../engines/view/adaptationSetting';
 import type { LuxboxInstance } from '../embed/types';
 import { isQualityLevel } from '../../engines/relight/qualityLevels';
 import { isEv100 } from '../../engines/view/photographicExposure';
@@ -32,6 +33,9 @@ const locale = isLanguage(chosen) ? preferLanguage(chosen, navigator.languages) 
 // `?exposure=5.5` starts the 3D view locked at that EV100, `?exposure=auto` as by default (docs/viewer.md, "Exposure"); anything else is ignored.
 const exposureParam = params.get('exposure');
 const exposure = exposureParam === 'auto' ? 'auto' : exposureParam !== null && exposureParam.trim() !== '' && isEv100(Number(exposureParam)) ? Number(exposureParam) : undefined;
+// `?adapt=eye|none|camera:3000` starts the 3D view with that chromatic adaptation (docs/viewer.md, "Adaptation"); anything else is ignored.
+const adaptParam = params.get('adapt');
+const adapt = adaptParam !== null && parseAdaptation(adaptParam) ? adaptParam : undefined;
 window.luxbox = mountLuxbox(root, {
   storageKey: 'luxbox.autosave.v1',
   shareLinks: true,
@@ -47,6 +51,7 @@ window.luxbox = mountLuxbox(root, {
   },
   ...(isQualityLevel(quality) ? { quality } : {}),
   ...(exposure !== undefined ? { exposure } : {}),
+  ...(adapt !== undefined ? { adapt } : {}),
 });
 // The page's own language follows the configurator's (screen readers and hyphenation read it from <html>).
 document.documentElement.lang = window.luxbox.getLanguage().language;

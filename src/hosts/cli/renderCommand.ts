@@ -4,6 +4,8 @@ import { InputError } from '../../core/inputError';
 import { oneLine } from '../../core/model/untrustedJson';
 import { parseCameraSpec } from '../../engines/view/cameraPresets';
 import { EV100_MAX, EV100_MIN } from '../../engines/view/photographicExposure';
+import { DEFAULT_ADAPTATION, formatAdaptation, parseAdaptation, type AdaptationSetting } from '../../engines/view/adaptationSetting';
+import { CCT_MAX_K, CCT_MIN_K } from '../../core/photometry/cct';
 import { parseBakeCli } from '../node/bakeCliOptions';
 import { batchFolderNames } from '../node/batchFolderNames';
 import { prepareGl } from '../node/prepareGl';
@@ -14,7 +16,7 @@ import { RENDER_SUMMARY_FORMAT, type RenderSummary, type RenderSummaryImage } fr
 import { cliReadableFolders } from '../node/cliReadableFolders';
 
 export const renderUsage =
-  'render <config-or-scene.json> [more.json …] --out image.png|<dir>/ [--camera eye|top|corner|<json>|eye,top,… (repeatable)] [--cameras cameras.json] [--width 960 --height 600] [--ev EV100 | --exposure stops] [--mode light|lux] [--samples N --bounces N --texel m] [--gl vulkan|glx|auto]';
+  'render <config-or-scene.json> [more.json …] --out image.png|<dir>/ [--camera eye|top|corner|<json>|eye,top,… (repeatable)] [--cameras cameras.json] [--width 960 --height 600] [--ev EV100 | --exposure stops] [--adapt eye|none|camera:<K>] [--mode light|lux] [--samples N --bounces N --texel m] [--gl vulkan|glx|auto]';
 
 function intOption(name: string, value: string | undefined, fallback: number, min: number, max: number): number {
   if (value === undefined) return fallback;
@@ -38,13 +40,22 @@ function exposureOptions(options: Record<string, string>): { ev100: number | nul
   return { ev100: null, compensation: n };
 }
 
+/** `--adapt eye|none|camera:<K>` (chromaticAdaptation.ts); default eye. */
+function adaptationOption(value: string | undefined): AdaptationSetting {
+  if (value === undefined) return DEFAULT_ADAPTATION;
+  const parsed = parseAdaptation(value);
+  if (!parsed) throw new InputError(`render: --adapt must be eye, none or camera:<K> with K in ${CCT_MIN_K}..${CCT_MAX_K}, got "${value}"`);
+  return parsed;
+}
+
 const errorLine = (error: unknown) => oneLine(error instanceof Error ? error.message : String(error));
 
 /**
  * `luxbox render`: bake a configuration (scene-file JSON of the app) or a
  * lighting scene and write a PNG as the 3D viewer shows it (docs/viewer.md).
  * Exposure: automatic (with --exposure stops of compensation) or absolute with
- * --ev EV100 (photographicExposure.ts), the same for every image of a batch.
+ * --ev EV100 (photographicExposure.ts), the same for every image of a batch;
+ * chromatic adaptation with --adapt (eye by default, camera:<K> white balance, none).
  *
  * One scene and one camera write the file --out. Several scenes or cameras (or
  * --out ending in / or naming a folder) are a batch: one process, one GL context
@@ -55,13 +66,14 @@ const errorLine = (error: unknown) => oneLine(error instanceof Error ? error.mes
  */
 export async function run(args: string[]): Promise<number> {
   const { cameras, rest } = takeRenderCameras(args);
-  const { positional, settings, options } = parseBakeCli('render', rest, ['--out', '--width', '--height', '--exposure', '--ev', '--mode', '--gl']);
+  const { positional, settings, options } = parseBakeCli('render', rest, ['--out', '--width', '--height', '--exposure', '--ev', '--adapt', '--mode', '--gl']);
   if (positional.length === 0) throw new InputError(`render: expected a scene file (usage: luxbox ${renderUsage})`);
   const out = options['--out'];
   if (!out) throw new InputError(`render: --out <image.png> is required (usage: luxbox ${renderUsage})`);
   const width = intOption('--width', options['--width'], 960, 16, 4096);
   const height = intOption('--height', options['--height'], 600, 16, 4096);
   const { ev100, compensation } = exposureOptions(options);
+  const adaptation = adaptationOption(options['--adapt']);
   const mode = options['--mode'] ?? 'light';
   if (mode !== 'light' && mode !== 'lux') throw new InputError(`render: --mode must be light or lux, got "${mode}"`);
   const batch = positional.length > 1 || cameras.length > 1 || /[/\\]$/.test(out) || (existsSync(out) && statSync(out).isDirectory());
@@ -91,7 +103,7 @@ export async function run(args: string[]): Promise<number> {
         const room = input.scene.room;
         const poses = cameras.map((c) => parseCameraSpec(c.spec, room));
         // One bake per scene, drawn from every camera.
-        results = session.renderViews(input, { width, height, camera: poses[0], exposureEv: compensation, ev100, mode, settings }, poses);
+        results = session.renderViews(input, { width, height, camera: poses[0], exposureEv: compensation, ev100, mode, adaptation, settings }, poses);
       } catch (error) {
         if (!batch) throw error;
         failed.push({ file: path, error: errorLine(error) });
@@ -132,6 +144,7 @@ export async function run(args: string[]): Promise<number> {
         height,
         mode,
         exposure: ev100 === null ? { mode: 'auto', compensation } : { mode: 'fixed', ev100 },
+        adaptation: formatAdaptation(adaptation),
         cameras: cameras.map((c) => ({ name: c.name, spec: c.spec })),
         programs_linked: session.programsLinked(),
         programs_linked_after_scene: linkedAfterScene,

@@ -1,4 +1,5 @@
 import { StrictMode } from 'react';
+import { parseAdaptation } from '../../engines/view/adaptationSetting';
 import { createRoot } from 'react-dom/client';
 import { codedText, InputError } from '../../core/inputError';
 import { isActionName } from '../../core/model/actionDefinitions';
@@ -59,6 +60,8 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
   if (options.exposure !== undefined && options.exposure !== 'auto' && !isEv100(options.exposure)) {
     throw new EmbedOptionsError(`options.exposure: ${JSON.stringify(options.exposure)} is neither 'auto' nor an EV100 number in ${EV100_MIN}..${EV100_MAX}`);
   }
+  const adaptation = options.adapt === undefined ? undefined : parseAdaptation(String(options.adapt));
+  if (adaptation === null) throw new EmbedOptionsError(`options.adapt: ${JSON.stringify(options.adapt)} is neither 'eye', 'none' nor 'camera:<K>' with K in 1000..20000`);
   if (options.landmarks !== undefined && options.landmarks !== 'page' && options.landmarks !== 'region') {
     throw new EmbedOptionsError(`options.landmarks: ${JSON.stringify(options.landmarks)} is neither 'page' nor 'region'`);
   }
@@ -127,7 +130,7 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
 
   const footprints = createFootprintSource(options.assetBase ?? import.meta.env.BASE_URL);
   // The 3D bake lives as long as this configurator (started in idle time once the plan shows).
-  const bakeHost = createBakeHost(store, footprints.loadPhotometry, { quality: quality ?? null, remember: options.rememberQuality === true, exposure: options.exposure ?? 'auto' });
+  const bakeHost = createBakeHost(store, footprints.loadPhotometry, { quality: quality ?? null, remember: options.rememberQuality === true, exposure: options.exposure ?? 'auto', ...(adaptation ? { adaptation } : {}) });
   // Light-scene playback, shared by the scene panel, the keyboard and the API below; fades relight the bake host's engine.
   const scenePlayer = scenePlayerFor(store, { feed: () => bakeHost.current() });
   // The class scopes every luxbox style rule to this element and makes it the container whose

@@ -56,6 +56,13 @@ export interface LuxboxOptions {
    * The user can still switch to auto or lock another value in the 3D panel.
    */
   exposure?: 'auto' | number;
+  /**
+   * How the 3D view adapts to the colour of the light (docs/viewer.md, "Adaptation"): 'eye' (default;
+   * as a person in the room sees it, CAT16 with CAM16's degree of adaptation), 'camera:<K>' (a
+   * camera's white balance at that colour temperature, 1000..20000, e.g. 'camera:3000') or 'none'
+   * (the physical colour). The user can change it in the 3D panel.
+   */
+  adapt?: string;
 }
 
 export interface LuxboxActionInfo {

@@ -8,6 +8,8 @@ import { createRelightEngine, VIEWER_BAKE_SETTINGS } from '../../engines/relight
 import type { CameraPose } from '../../engines/view/cameraPresets';
 import { floorStats, type IlluminanceStats } from '../../engines/view/lightStats';
 import { presentMaps } from '../../engines/view/presentMaps';
+import { adoptedWhite } from '../../engines/view/adoptedWhite';
+import type { AdaptationSetting } from '../../engines/view/adaptationSetting';
 import { createRoomView, type RoomView, type ViewMode } from '../../engines/view/roomView';
 import { fullscreenVertex } from '../../../shaders/fullscreen.glsl';
 import { noContextMessage, NoWebGLError } from './createHeadlessGL';
@@ -22,6 +24,8 @@ export interface RenderOptions {
   /** Absolute exposure (EV100, photographicExposure.ts) instead of the automatic one; null/absent: automatic. */
   ev100?: number | null;
   mode: ViewMode;
+  /** Chromatic adaptation (chromaticAdaptation.ts); default eye. */
+  adaptation?: AdaptationSetting;
   settings: Partial<BakeSettings>;
 }
 
@@ -100,7 +104,13 @@ export function createRenderSession(width: number, height: number): RenderSessio
         const objects = input.bakeScene.objects ?? [];
         const prepared = objects.length > 0 ? prepareObjects(objects, { texelSize: engine.settings.texelSize, maxAtlasSize: engine.settings.maxTextureSize }) : null;
         view.setObjects(prepared);
-        const { exposure, ev100 } = presentMaps(view, lit, reflectanceRgb(input.bakeScene.room), { exposureEv: options.exposureEv, ev100: options.ev100, mode: options.mode });
+        const { exposure, ev100 } = presentMaps(view, lit, reflectanceRgb(input.bakeScene.room), {
+          exposureEv: options.exposureEv,
+          ev100: options.ev100,
+          mode: options.mode,
+          adaptation: options.adaptation,
+          white: adoptedWhite(input.bakeScene.luminaires),
+        });
         // The floor a person sees: texels under furniture standing on it left out (docs/viewer.md).
         const floor = floorStats(lit, prepared);
         view.setFixtures(input.fixtures);

@@ -25,6 +25,8 @@ export interface RenderSummary {
   height: number;
   mode: string;
   exposure: { mode: 'auto'; compensation: number } | { mode: 'fixed'; ev100: number };
+  /** Chromatic adaptation: eye, none or camera:<K> (`--adapt`, docs/viewer.md). */
+  adaptation: string;
   cameras: { name: string; spec: string }[];
   /**
    * Shader programs linked on the batch's one GL context: the baker's (specialised per scene layout,

@@ -8,6 +8,8 @@ export interface ExposureTarget {
   setExposureEv(ev: number): void;
   setEv100(ev100: number | null): void;
   currentEv100(): number;
+  /** Adapt the automatic exposure to the light on screen now (it holds while the light is only dimmed or recoloured). */
+  reAdapt(): void;
 }
 
 interface Props {
@@ -23,7 +25,8 @@ const SLIDER_MAX = 16;
 
 /**
  * Exposure of the 3D view (docs/viewer.md, "Exposure"): automatic with a
- * compensation in stops, or locked. "Lock exposure" keeps the EV100 on screen
+ * compensation in stops (adapting like an eye and held while the light is only dimmed or
+ * recoloured; "Re-adapt" adapts it to the light on screen), or locked. "Lock exposure" keeps the EV100 on screen
  * now, so comparing configurations or dimming keeps it and a dimmer room looks
  * darker; the EV100 slider then sets it (photographicExposure.ts).
  */
@@ -57,6 +60,9 @@ export function ExposureControl({ initial, target }: Props) {
           </label>
           <button type="button" className="btn" disabled={compensation === 0} onClick={() => { setCompensation(0); target()?.setExposureEv(0); }}>
             {t('exposure.resetCompensation')}
+          </button>
+          <button type="button" className="btn" title={t('exposure.reAdaptHint')} onClick={() => target()?.reAdapt()} data-testid="exposure-readapt">
+            {t('exposure.reAdapt')}
           </button>
         </>
       ) : (

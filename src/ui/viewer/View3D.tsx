@@ -13,6 +13,7 @@ import { CAMERA_PRESETS, type CameraPresetName } from '../../engines/view/camera
 import { createViewerController, type ViewerController } from '../../engines/view/createViewerController';
 import { floorStats, workPlaneStats, type IlluminanceStats } from '../../engines/view/lightStats';
 import { DimmerRow } from './DimmerRow';
+import { AdaptationControl } from './AdaptationControl';
 import { ExposureControl } from './ExposureControl';
 import { IlluminanceTable } from './IlluminanceTable';
 import { LiveControl } from './LiveControl';
@@ -203,6 +204,8 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
     }
     // A fixed EV100 from the page (embed option `exposure`) holds from the first frame.
     if (typeof host.exposure === 'number') controller.setEv100(host.exposure);
+    // The chromatic adaptation the page asked for (embed option `adapt`, default eye).
+    controller.setAdaptation(host.adaptation);
     ctrl.current = controller;
     queueMicrotask(() => setControllerVersion((v) => v + 1));
     // Made while hidden (the feed arrived after the user went back to the plan): no frames until shown.
@@ -335,6 +338,7 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
           ))}
         </div>
         <ExposureControl initial={host.exposure} target={() => ctrl.current} />
+        <AdaptationControl initial={host.adaptation} target={() => ctrl.current} />
         {selectedLabel && (
           <p className="viewer3d-selected" data-testid="view3d-selected" data-kind={selection?.kind} data-id={selection?.id}>
             {t('view3d.selected', { name: selectedLabel })}

@@ -1,4 +1,5 @@
 import type { Photometry } from '../../core/photometry/types';
+import { DEFAULT_ADAPTATION, type AdaptationSetting } from '../../engines/view/adaptationSetting';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import type { QualityLevel } from '../../engines/relight/qualityLevels';
 import type { ExposureSetting } from '../../engines/view/photographicExposure';
@@ -25,6 +26,8 @@ export interface BakeHost {
   readonly quality: QualityLevel;
   /** How the 3D view starts exposing: 'auto' or a fixed EV100 (embed option `exposure`, docs/viewer.md "Exposure"). */
   readonly exposure: ExposureSetting;
+  /** How the 3D view starts adapting to the light's colour (embed option `adapt`, docs/viewer.md "Adaptation"). */
+  readonly adaptation: AdaptationSetting;
   /** The user's choice: applied to the running service, and kept in localStorage ('luxbox.quality') when the host allows. */
   setQuality(level: QualityLevel): void;
   dispose(): void;
@@ -35,6 +38,8 @@ export interface BakeHostOptions {
   quality?: QualityLevel | null;
   /** The 3D view's starting exposure: 'auto' (default) or a fixed EV100 (photographicExposure.ts). */
   exposure?: ExposureSetting;
+  /** The 3D view's starting chromatic adaptation: eye (default), camera white balance at a CCT, none. */
+  adaptation?: AdaptationSetting;
   /** Keep the user's choice and the device calibration in localStorage (the standalone app; default false). */
   remember?: boolean;
   /** requestIdleCallback, or a stand-in (browsers without it: a short timeout). */
@@ -93,6 +98,7 @@ export function createBakeHost(store: ConfiguratorStore, loadPhotometry: (path: 
       return level();
     },
     exposure: options.exposure ?? 'auto',
+    adaptation: options.adaptation ?? DEFAULT_ADAPTATION,
     setQuality(next) {
       quality = next;
       if (remember) storeQuality(next);

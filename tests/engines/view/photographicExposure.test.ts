@@ -43,7 +43,7 @@ describe('EV100 → exposure (saturation-based)', () => {
 
   it('presentMaps: a fixed EV100 ignores the compensation and the maps; auto exposure follows them; ev100 reports the one applied', () => {
     const calls: number[] = [];
-    const view = { setMaps() {}, setObjectLight() {}, setMode() {}, setExposure: (x: number) => calls.push(x) } as unknown as RoomView;
+    const view = { setMaps() {}, setObjectLight() {}, setMode() {}, setAdaptation() {}, setExposure: (x: number) => calls.push(x) } as unknown as RoomView;
     const bright = uniformRoom(400);
     const dim = uniformRoom(100);
     const fixedBright = presentMaps(view, bright, grey, { exposureEv: 2, ev100: 5, mode: 'light' });
@@ -62,20 +62,27 @@ describe('EV100 → exposure (saturation-based)', () => {
 
   it('map display: lock at the current value keeps the exposure when the light changes (dimmed maps then show darker)', () => {
     let lastExposure = 0;
-    const view = { setMaps() {}, setObjectLight() {}, setMode() {}, setExposure: (x: number) => (lastExposure = x) } as unknown as RoomView;
+    const view = { setMaps() {}, setObjectLight() {}, setMode() {}, setAdaptation() {}, setExposure: (x: number) => (lastExposure = x) } as unknown as RoomView;
     const heard: number[] = [];
-    const display = createMapDisplay(() => view, (_lit, info) => heard.push(info.ev100));
-    display.show(uniformRoom(400), grey, 0);
+    let now = 0;
+    const display = createMapDisplay(() => view, (_lit, info) => heard.push(info.ev100), () => now);
+    const room = { white: null, key: 'room', done: true };
+    display.show(uniformRoom(400), grey, 0, room);
     const autoAt400 = lastExposure;
     // Lock: the EV100 of what auto chose for 400 lx.
     const locked = display.currentEv100();
     expect(locked).toBeCloseTo(ev100FromExposure(autoAt400), 12);
     display.setEv100(locked);
     expect(lastExposure).toBeCloseTo(autoAt400, 12);
-    display.show(uniformRoom(100), grey, 0);
+    display.show(uniformRoom(100), grey, 0, room);
     expect(lastExposure).toBeCloseTo(autoAt400, 12); // not re-exposed for a quarter of the light
-    // Back to auto: the 100 lx room gets 4× the exposure (log-average luminance ÷ 4).
+    // Back to auto: the same room only dimmed (a relight), so the eye still holds what it adapted to.
     display.setEv100(null);
+    expect(lastExposure).toBeCloseTo(autoAt400, 12);
+    // Re-adapt: after 10 τ the 100 lx room gets 4× the exposure (log-average luminance ÷ 4).
+    display.reAdapt();
+    now = 4000;
+    expect(display.advance(now)).toBe(false);
     expect(lastExposure / autoAt400).toBeCloseTo(4, 6);
     expect(heard.at(-1)).toBeCloseTo(locked - 2, 6);
   });
@@ -106,11 +113,14 @@ describe('uniform room on screen (three.js on headless-gl)', () => {
     return [px[0], px[1], px[2]];
   }
 
-  it('E = 100 lx, ρ = 0.5: L = ρE/π = 15.92 cd/m²; at EV100 4 (L_max 19.2) the pixel is ACES+sRGB of 0.829, by hand', () => {
+  it('E = 100 lx, ρ = 0.5: L = ρE/π = 15.92 cd/m²; at EV100 4 (L_max 19.2) the pixel is AgX+sRGB of 0.829 (no white lamp: no adaptation)', () => {
     const L = (0.5 * 100) / Math.PI;
     const x = L / (1.2 * 2 ** 4);
     expect(x).toBeCloseTo(0.82893, 4);
     const want = displayColor([x, x, x], 1).map((v) => v * 255);
+    // AgX's grey at 0.829 (log2 encoding (log2 0.829 + 12.47393)/16.5 = 0.73953, sigmoid, outset, 2.2 power, back to sRGB):
+    // linear 0.5455, sRGB 194.97 of 255, recomputed independently of toneMap.ts.
+    expect(want[1]).toBeCloseTo(194.96, 1);
     const got = centrePixel(100, 4);
     for (let k = 0; k < 3; k++) expect(Math.abs(got[k] - want[k])).toBeLessThanOrEqual(1.01);
     // A stop less light at a stop lower EV100: the same pixel (L·exposure unchanged).

@@ -1,5 +1,6 @@
 /** The pure parts of the room view: surface quads, hardware boxes, the shader's level array, presentMaps. */
 import { describe, expect, it } from 'vitest';
+import { IDENTITY3 } from '../../../src/engines/view/cat16';
 import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../../src/core/model/lightingScene';
 import { surfaceLayouts, texelCentre } from '../../../src/engines/bake/surfaceLayout';
 import { emptyLitMaps } from '../../../src/engines/relight/relightMaps';
@@ -83,17 +84,20 @@ describe('presentMaps', () => {
     const view = {
       setMaps: (...a: unknown[]) => calls.push(['maps', ...a]),
       setExposure: (...a: unknown[]) => calls.push(['exposure', ...a]),
+      setAdaptation: (...a: unknown[]) => calls.push(['adaptation', ...a]),
       setMode: (...a: unknown[]) => calls.push(['mode', ...a]),
       setObjectLight: (...a: unknown[]) => calls.push(['objects', ...a]),
     } as unknown as RoomView;
     const shown = presentMaps(view, lit, reflectance, { exposureEv: -1, mode: 'lux' });
     const auto = autoExposure(lit, reflectance);
     const levels = luxLevels(luxScaleTop(lit));
-    expect(shown).toEqual({ autoExposure: auto, exposure: auto / 2, ev100: ev100FromExposure(auto / 2), levels });
+    // No white lamp given: nothing to adapt to, the identity.
+    expect(shown).toEqual({ autoExposure: auto, target: { auto, white: null }, exposure: auto / 2, ev100: ev100FromExposure(auto / 2), adaptation: { matrix: IDENTITY3, d: 0, white: null }, levels });
     expect(calls).toEqual([
       ['maps', lit, reflectance],
       ['objects', null],
       ['exposure', auto / 2],
+      ['adaptation', IDENTITY3],
       ['mode', 'lux', levels],
     ]);
   });

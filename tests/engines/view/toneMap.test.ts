@@ -5,7 +5,14 @@ import { falseColorGlsl } from '../../../shaders/falseColor.glsl';
 import { legendPosition, luxLevels, MAX_LEVELS, turbo, TURBO_B, TURBO_G, TURBO_R } from '../../../src/engines/view/falseColorScale';
 
 const falseColorChunk = falseColorGlsl({ maxLevels: MAX_LEVELS, turbo: [TURBO_R, TURBO_G, TURBO_B] });
-import { acesFilmic, displayColor, linearToSrgb } from '../../../src/engines/view/toneMap';
+import { adaptedLinear, agxMaxRgb, displayColor, gamutMap, linearToSrgb } from '../../../src/engines/view/toneMap';
+import { degreeOfAdaptation, IDENTITY3 } from '../../../src/engines/view/cat16';
+import { adaptationFor, adaptingLuminance } from '../../../src/engines/view/chromaticAdaptation';
+import type { Mat3 } from '../../../src/engines/view/colourMatrices';
+import { cctToLinearRgb } from '../../../src/core/photometry/cct';
+import { chroma, hueAngle, hueDifference, hueOfChromaticity, linearSrgbToXyz, srgbToLinear, xyzToLab } from '../../../src/core/colour/cielab';
+import { loadColourFilterSpectra } from '../../../src/core/colour/colourFilterSpectra';
+import { moduleColour } from '../../../src/core/colour/moduleColour';
 import { toneMapGlsl } from '../../../shaders/toneMap.glsl';
 
 // The viewer's GLSL chunks compiled and run (three.js on headless-gl), checked against their TypeScript mirrors.
@@ -37,7 +44,7 @@ function runShader(inputs: number[], prelude: string, body: string, uniforms: Re
   return Array.from({ length: N }, (_, i) => [px[i * 4], px[i * 4 + 1], px[i * 4 + 2]]);
 }
 
-describe('display transform (exposure → ACES filmic → sRGB)', () => {
+describe('display transform (exposure → adaptation → gamut map → AgX on max(R,G,B) → sRGB)', () => {
   it('sRGB OETF hits the IEC 61966-2-1 reference points', () => {
     expect(linearToSrgb(0)).toBe(0);
     expect(linearToSrgb(1)).toBeCloseTo(1, 12);
@@ -45,30 +52,130 @@ describe('display transform (exposure → ACES filmic → sRGB)', () => {
     expect(linearToSrgb(0.18)).toBeCloseTo(0.4614, 4);
   });
 
-  it('ACES curve: black stays black, monotonic, saturates below 1, grey stays grey', () => {
-    expect(acesFilmic([0, 0, 0]).every((v) => Math.abs(v) < 1e-3)).toBe(true);
+  it('AgX on max(R,G,B): black stays black, strictly increasing to white, grey stays grey, a colour keeps its ratios', () => {
+    expect(agxMaxRgb([0, 0, 0])).toEqual([0, 0, 0]);
     let prev = -1;
-    for (let x = 0.01; x < 100; x *= 1.5) {
-      const [r, g, b] = acesFilmic([x, x, x]);
-      // Strictly increasing until it reaches the clamp at 1.
-      if (prev < 0.999) expect(r).toBeGreaterThan(prev);
-      else expect(r).toBeGreaterThanOrEqual(prev);
-      expect(Math.abs(r - g)).toBeLessThan(2e-3);
-      expect(Math.abs(g - b)).toBeLessThan(2e-3);
+    for (let x = 0.001; x < 20; x *= 1.5) {
+      const [r, g, b] = agxMaxRgb([x, x, x]);
+      expect(r).toBeGreaterThan(prev);
+      expect(Math.abs(r - g)).toBeLessThan(1e-12);
+      expect(Math.abs(g - b)).toBeLessThan(1e-12);
       prev = r;
     }
     expect(prev).toBeLessThanOrEqual(1);
-    expect(prev).toBeGreaterThan(0.95);
+    // Middle grey lands at sRGB 128 (AgX's anchor), as ACES did (127).
+    expect(Math.round(linearToSrgb(agxMaxRgb([0.18, 0.18, 0.18])[1]) * 255)).toBe(128);
+    const red = agxMaxRgb([3, 0.3, 0.03]);
+    expect(red[1] / red[0]).toBeCloseTo(0.1, 12);
+    expect(red[2] / red[0]).toBeCloseTo(0.01, 12);
   });
 
-  it('GLSL luxDisplay equals the TypeScript mirror within 1/255 (+ rounding)', () => {
-    const inputs = Array.from({ length: N }, (_, i) => 0.002 * 1.8 ** i);
-    const exposure = 0.7;
-    const got = runShader(inputs, toneMapGlsl, 'c = luxDisplay(vec3(x, 0.5 * x, 0.25 * x), 0.7);');
-    inputs.forEach((x, i) => {
-      const want = displayColor([x, 0.5 * x, 0.25 * x], exposure).map((v) => v * 255);
-      for (let k = 0; k < 3; k++) expect(Math.abs(got[i][k] - want[k])).toBeLessThanOrEqual(1.01);
-    });
+  it('gamut mapping lifts a negative component to 0 at the same luminance, towards grey (chromaticity on the line to white)', () => {
+    const c: [number, number, number] = [1.2, 0.3, -0.2];
+    const m = gamutMap(c);
+    const Y = (v: number[]) => 0.2126 * v[0] + 0.7152 * v[1] + 0.0722 * v[2];
+    expect(Math.min(...m)).toBeCloseTo(0, 12);
+    expect(Y(m)).toBeCloseTo(Y(c), 12);
+    // m − Y = t · (c − Y) with one t for all channels: the same direction from grey.
+    const t = (m[0] - Y(c)) / (c[0] - Y(c));
+    for (let k = 0; k < 3; k++) expect(m[k] - Y(c)).toBeCloseTo(t * (c[k] - Y(c)), 12);
+    expect(gamutMap([-1, -1, -1])).toEqual([0, 0, 0]);
+    expect(gamutMap([0.2, 0.3, 0.4])).toEqual([0.2, 0.3, 0.4]);
+  });
+
+  it('GLSL luxDisplay equals the TypeScript mirror within 1/255 (+ rounding) on a grid of levels, colours and adaptations', () => {
+    const inputs = Array.from({ length: N }, (_, i) => 0.002 * 1.9 ** i);
+    const adaptations: [string, Mat3][] = [
+      ['identity', IDENTITY3],
+      ['camera 3000 K', adaptationFor({ kind: 'camera', cct: 3000 }, null, 0).matrix],
+      ['eye 2700 K at L_A 20', adaptationFor({ kind: 'eye' }, cctToLinearRgb(2700), 20).matrix],
+      ['camera 6500 K', adaptationFor({ kind: 'camera', cct: 6500 }, null, 0).matrix],
+    ];
+    const colours: [number, number, number][] = [[1, 0.5, 0.25], [1.77, 0.84, 0.27], [4.7, 0, 0], [0, 1.2, 0.1], [0.2, 0.3, 1.5], [1, 1, 1]];
+    for (const [, m] of adaptations) {
+      for (const col of colours) {
+        const got = runShader(inputs, `uniform mat3 uAdapt;\n${toneMapGlsl}`, `c = luxDisplay(vec3(${col.map((v) => v.toFixed(6)).join(', ')}) * x, 0.7, uAdapt);`, { uAdapt: { value: new THREE.Matrix3().set(...m) } });
+        inputs.forEach((x, i) => {
+          const want = displayColor([col[0] * x, col[1] * x, col[2] * x], 0.7, m).map((v) => v * 255);
+          for (let k = 0; k < 3; k++) expect(Math.abs(got[i][k] - want[k])).toBeLessThanOrEqual(1.01);
+        });
+      }
+    }
+  });
+});
+
+describe('chromatic adaptation on the compiled GLSL (CAT16, docs/viewer.md "Adaptation")', () => {
+  // A grey card (ρ 0.5) under 3000 K light at 300 lx, exposed as auto exposure does a room of it: L̄ = 0.5·300/π.
+  const lamp = cctToLinearRgb(3000);
+  const E = 300;
+  const card = lamp.map((v) => (0.5 * E * v) / Math.PI) as [number, number, number];
+  const auto = 0.18 / ((0.5 * E) / Math.PI);
+  const glsl = (m: Mat3, L: [number, number, number], exposure: number) =>
+    runShader([1], `uniform mat3 uAdapt;\n${toneMapGlsl}`, `c = luxDisplay(vec3(${L.map((v) => v.toFixed(6)).join(', ')}) * x, ${exposure.toFixed(9)}, uAdapt);`, { uAdapt: { value: new THREE.Matrix3().set(...m) } })[0];
+  const labOf = (bytes: number[]) => xyzToLab(linearSrgbToXyz(bytes.map((v) => srgbToLinear(v / 255)) as [number, number, number]));
+
+  it('camera white balance 3000 K: the grey card is neutral within 1/255 per channel (GLSL and TypeScript)', () => {
+    const m = adaptationFor({ kind: 'camera', cct: 3000 }, null, 0).matrix;
+    const ts = displayColor(card, auto, m).map((v) => v * 255);
+    expect(Math.max(...ts) - Math.min(...ts)).toBeLessThanOrEqual(1);
+    const gl = glsl(m, card, auto);
+    expect(Math.max(...gl) - Math.min(...gl)).toBeLessThanOrEqual(1);
+    // Not black: a mid grey (ρ 0.5 at the key).
+    expect(gl[1]).toBeGreaterThan(100);
+  });
+
+  it('eye: D from L_A as CAM16 defines it, the card warm, its chroma strictly between camera (0) and none (physical)', () => {
+    // Hand-computed: D = 1 − (1/3.6)·exp((−L_A − 42)/92).
+    expect(degreeOfAdaptation(20)).toBeCloseTo(0.858414, 6); // e^(−62/92) = 0.509709
+    expect(degreeOfAdaptation(0)).toBeCloseTo(0.824032, 6); // e^(−42/92) = 0.633488
+    expect(degreeOfAdaptation(1000)).toBeCloseTo(0.999997, 6);
+    // L_A = 0.2 · L̄ / 0.18 = 0.2 / auto = 53.0516 cd/m² → D = 1 − 0.277778 · e^(−95.0516/92) = 0.901145.
+    const la = adaptingLuminance(auto);
+    expect(la).toBeCloseTo(53.0516, 3);
+    const eye = adaptationFor({ kind: 'eye' }, lamp, la);
+    expect(eye.d).toBeCloseTo(0.901145, 5);
+    // The adapted linear colour is exactly D·(camera-balanced) + (1 − D)·(physical): CAT16's one step is affine in D.
+    const full = adaptationFor({ kind: 'eye' }, lamp, 1e9).matrix; // D = 1 to the same white
+    const linEye = adaptedLinear(card, auto, eye.matrix);
+    const linFull = adaptedLinear(card, auto, full);
+    const linNone = adaptedLinear(card, auto);
+    for (let k = 0; k < 3; k++) expect(linEye[k]).toBeCloseTo(eye.d * linFull[k] + (1 - eye.d) * linNone[k], 9);
+    const cEye = glsl(eye.matrix, card, auto);
+    const cNone = glsl(IDENTITY3, card, auto);
+    const cCamera = glsl(adaptationFor({ kind: 'camera', cct: 3000 }, null, 0).matrix, card, auto);
+    const [lEye, lNone, lCamera] = [labOf(cEye), labOf(cNone), labOf(cCamera)];
+    expect(chroma(lCamera)).toBeLessThan(1.5);
+    expect(chroma(lEye)).toBeGreaterThan(chroma(lCamera) + 2);
+    expect(chroma(lEye)).toBeLessThan(chroma(lNone) - 10);
+    // Warm: red above blue, hue in the orange–yellow quadrant like the physical colour's.
+    expect(cEye[0]).toBeGreaterThan(cEye[2]);
+    expect(hueDifference(hueAngle(lEye), hueAngle(lNone))).toBeLessThan(15);
+  });
+
+  it('a LEE 106 primary red patch on a white wall at 300 lx keeps the gel\'s hue within 10° (not peach)', async () => {
+    await loadColourFilterSpectra();
+    const gel = moduleColour(3000, 'lee-106');
+    const want = hueOfChromaticity(gel.x, gel.y);
+    // The gel's light per lux, on a ρ 0.8 wall, in a room exposed for 300 lx on ρ 0.5; the gel is no white, so eye adaptation adapts to the room's 3000 K white.
+    const patch = gel.linearRgb.map((v) => (0.8 * 300 * v) / gel.transmission / Math.PI) as [number, number, number];
+    for (const m of [IDENTITY3, adaptationFor({ kind: 'eye' }, lamp, adaptingLuminance(auto)).matrix]) {
+      const px = glsl(m, patch, auto);
+      expect(hueDifference(hueAngle(labOf(px)), want)).toBeLessThan(10);
+      // Red, not peach: green and blue far below red.
+      expect(px[1]).toBeLessThan(0.35 * px[0]);
+      expect(px[2]).toBeLessThan(0.35 * px[0]);
+    }
+  });
+
+  it('highlight roll-off: a ρ 0.4/0.6 pattern under 5 000 and 9 000 lx keeps its texture (std-dev > 0 of 255, GLSL and TypeScript)', () => {
+    for (const lux of [5000, 9000]) {
+      const L = [0.4, 0.6].map((rho) => (rho * lux) / Math.PI);
+      const gl = L.map((l) => glsl(IDENTITY3, [l, l, l], auto)[1]);
+      const ts = L.map((l) => displayColor([l, l, l], auto)[1] * 255);
+      // docs/viewer.md "Choosing the tone curve": 4.27 at 5 000 lx and 2.76 at 9 000 lx (ACES: 2.11 and 1.14).
+      expect(Math.abs(ts[1] - ts[0]) / 2).toBeGreaterThan(lux === 5000 ? 4 : 2.5);
+      expect(Math.abs(gl[1] - gl[0]) / 2).toBeGreaterThan(1);
+    }
   });
 });
 

@@ -81,12 +81,35 @@ describe('luxbox render (golden images)', () => {
     expect(meanLevel(b)).toBeGreaterThan(meanLevel(a) + 5);
   });
 
+  it('--adapt: the warm room is most orange with none, neutral with camera white balance at its CCT, in between with eye (default)', () => {
+    const common = ['tests/fixtures/configurations/corner-l.luxbox.json', '--camera', 'eye', '--width', '96', '--height', '64', '--samples', '4', '--bounces', '1'];
+    const warmth = (args: string[]) => {
+      const file = join(OUT, `adapt-${args.join('-').replace(/[^a-z0-9]/gi, '')}.png`);
+      const r = render([...common, '--out', file, ...args]);
+      expect(r.stderr).toBe('');
+      expect(r.status).toBe(0);
+      const img = PNG.sync.read(readFileSync(file));
+      let s = 0;
+      for (let i = 0; i < img.data.length; i += 4) s += img.data[i] - img.data[i + 2];
+      return s / (img.width * img.height);
+    };
+    const none = warmth(['--adapt', 'none']);
+    const eye = warmth([]);
+    const camera = warmth(['--adapt', 'camera:3000']);
+    // corner-l's modules are 3000 K: the physical colour is strongly orange (R − B ≈ 100 of 255 on lit walls).
+    expect(none).toBeGreaterThan(40);
+    expect(eye).toBeLessThan(none - 20);
+    expect(eye).toBeGreaterThan(camera);
+    expect(Math.abs(camera)).toBeLessThan(6);
+  });
+
   it('bad input: one line on stderr naming the problem, exit 1, no image', () => {
     const out = join(OUT, 'never.png');
     const bad: [string[], RegExp][] = [
       [['tests/fixtures/configurations/corner-l.luxbox.json', '--out', out, '--camera', '{"position":[1,2]}'], /--camera: position must be three/],
       [['tests/fixtures/configurations/corner-l.luxbox.json', '--out', out, '--width', '0'], /--width must be an integer/],
       [['tests/fixtures/configurations/corner-l.luxbox.json', '--out', out, '--mode', 'xray'], /--mode must be light or lux/],
+      [['tests/fixtures/configurations/corner-l.luxbox.json', '--out', out, '--adapt', 'camera:500'], /--adapt must be eye, none or camera:<K> with K in 1000..20000, got "camera:500"/],
       [['tests/fixtures/configurations/corner-l.luxbox.json'], /--out <image.png> is required/],
       [['tests/fixtures/configurations/missing.json', '--out', out], /cannot read .*no such file/],
     ];

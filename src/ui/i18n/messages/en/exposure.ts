@@ -1,4 +1,4 @@
-// The 3D view's exposure control (docs/viewer.md, "Exposure"): automatic, or a fixed EV100.
+// The 3D view's exposure control (docs/viewer.md, "Exposure"): automatic, or a fixed EV100; the re-adapt button and the colour adaptation ("Adaptation").
 export default {
   group: 'Exposure',
   auto: 'Auto',
@@ -8,4 +8,14 @@ export default {
   resetCompensation: 'Reset',
   ev100: 'EV100 {ev}',
   ev100Field: 'Exposure value at ISO 100 (higher is darker)',
+  reAdapt: 'Re-adapt',
+  reAdaptHint: 'Adapt to the light on screen now. Automatic exposure holds while you dim, change filters or light scenes, so darker looks darker; a new room or camera view adapts again.',
+  adaptation: 'Colour adaptation',
+  adaptEye: 'Eye',
+  adaptEyeHint: 'As a person in the room sees it: the eye adapts to the colour of the light, mostly but not fully',
+  adaptCamera: 'Camera',
+  adaptCameraHint: 'A camera white-balanced to the colour temperature below',
+  adaptNone: 'None',
+  adaptNoneHint: 'The physical colour of the light, without adaptation',
+  whiteBalance: 'White balance {cct} K',
 };
