@@ -39,13 +39,18 @@ test('mounts with the host room and locale; the host total follows actions run b
   expect(plain(await page.getByTestId('header-total').textContent())).toBe('0,00 €');
   expect(await text(page, 'host-total')).toBe('0,00 €');
 
-  // Disabled action, reported with the model's reason: the 6 m line does not fit a 5.5 m room.
+  // The shop's brand in the configurator's header, not "luxbox" (issue #27).
+  await expect(page.locator('.app-header h1')).toHaveText('Lichtwerk');
+
+  // Disabled action, reported with the model's reason in the configurator's language (issue #27:
+  // the embed speaks one language): the 6 m line does not fit a 5.5 m room.
   const longLine = page.getByTestId('host-action-long-line');
   await expect(longLine).toBeDisabled();
-  await expect(page.getByTestId('host-action-note-long-line')).toHaveText("no free space for 'Long line' in this room");
+  const german = 'kein freier Platz für „Lange Linie“ in diesem Raum';
+  await expect(page.getByTestId('host-action-note-long-line')).toHaveText(german);
   const listed = await page.evaluate(() => window.shopDemo!.instance!.listActions({ placePreset: { presetId: 'long-line' } }).find((a) => a.name === 'placePreset'));
-  expect(listed).toEqual({ name: 'placePreset', label: expect.any(String), enabled: false, reason: "no free space for 'Long line' in this room" });
-  expect(await page.evaluate(() => window.shopDemo!.instance!.runAction('placePreset', { presetId: 'long-line' }))).toEqual({ ok: false, reason: "no free space for 'Long line' in this room" });
+  expect(listed).toEqual({ name: 'placePreset', label: expect.any(String), enabled: false, reason: german });
+  expect(await page.evaluate(() => window.shopDemo!.instance!.runAction('placePreset', { presetId: 'long-line' }))).toEqual({ ok: false, reason: german });
 
   // A host button runs placePreset by name. Expected: 1.5 m rail 40 + 60·1.5 = 130, 2 suspension
   // kits 2·18, 1 power feed 65 with the driver the preset ships with (HLG-240H-48, 84.90: room for
@@ -76,6 +81,29 @@ test('mounts with the host room and locale; the host total follows actions run b
   // The shop's autosave key is used; the standalone app's is never touched.
   const keys = await page.evaluate(() => Object.keys(localStorage).sort());
   expect(keys).toEqual(['lichtwerk.luxbox.de.v1']);
+});
+
+test('the API speaks the configurator\'s language (BOM names, reasons) unless apiLanguage is en; brand null shows none', async ({ page }) => {
+  await page.goto('/embed.html');
+  await page.getByTestId('host-action-single').click();
+  await page.evaluate(() => window.shopDemo!.instance!.whenReady());
+  const names = await page.evaluate(() => window.shopDemo!.instance!.getBillOfMaterials().lines.map((l) => l.name));
+  // German names of the catalog entries, as the planner's own bill of materials shows them (German number format).
+  expect(names).toEqual([
+    'Tragschiene 1,50 m',
+    'Abhängeset (Stahlseil, Deckenbaldachin)',
+    'Einspeiseset (End- oder Verbindereinspeisung, Treiberbox an der Decke)',
+    'Treiber Mean Well HLG-240H-48, 240 W 48 V DC',
+    'Strahler, Enger Spot 12°, 3000 K',
+  ]);
+
+  await page.goto('/embed.html?apiLanguage=en&brand=none');
+  await expect(page.getByTestId('plan')).toBeVisible();
+  await page.evaluate(() => window.shopDemo!.instance!.whenReady());
+  await expect(page.locator('.app-header h1')).toHaveCount(0);
+  // The configurator itself still speaks German; the API gives the core's English sentences.
+  await expect(page.locator('.room-label')).toHaveText('Raum 5,5 × 4,2 × 2,7 m');
+  expect(await page.evaluate(() => window.shopDemo!.instance!.runAction('placePreset', { presetId: 'long-line' }))).toEqual({ ok: false, reason: "no free space for 'Long line' in this room" });
 });
 
 test('add to cart copies the bill of materials into the host cart', async ({ page }) => {

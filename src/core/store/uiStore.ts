@@ -31,7 +31,20 @@ export interface UiState {
   status: (UiMessage & { seq: number }) | null;
   /** The last share link created, shown so it can be copied by hand. */
   shareLink: string | null;
+  /** What the header shows as the maker (a shop's or manufacturer's name and logo), or null for nothing; default luxbox. */
+  brand: Brand | null;
 }
+
+/** The brand in the configurator's header (docs/embedding.md, option `brand`). */
+export interface Brand {
+  /** Shown as the heading, and as the logo's text alternative. */
+  name: string;
+  /** An image URL (the shop's logo) shown instead of the name's text. */
+  logo?: string;
+}
+
+/** The header's brand when the host sets none. */
+export const DEFAULT_BRAND: Brand = { name: 'luxbox' };
 
 export type UiStore = StoreApi<UiState>;
 
@@ -44,6 +57,7 @@ export function createUiStore(initial: Partial<UiState> = {}): UiStore {
     banner: null,
     status: null,
     shareLink: null,
+    brand: DEFAULT_BRAND,
     ...initial,
   }));
 }

@@ -3,7 +3,7 @@ import { parseAdaptation } from '../../engines/view/adaptationSetting';
 import { createRoot } from 'react-dom/client';
 import { codedText, InputError } from '../../core/inputError';
 import { isActionName } from '../../core/model/actionDefinitions';
-import { billOfMaterials } from '../../core/model/billOfMaterials';
+import { billOfMaterials, type BillOfMaterials } from '../../core/model/billOfMaterials';
 import { installationNeeds } from '../../core/model/installationNeeds';
 import { configurationFromData, deserializeConfiguration, encodeShareLink, serializeConfiguration } from '../../core/model/sceneFile';
 import { toLightingScene } from '../../core/model/toLightingScene';
@@ -11,7 +11,7 @@ import { createConfiguratorStore } from '../../core/store/createConfiguratorStor
 import { Configurator } from '../../ui/app/Configurator';
 import { readLocal, writeLocal } from './localStore';
 import { SHARE_HASH_PREFIX, resolveStartup } from './startup';
-import { createUiStore, showStatus } from '../../core/store/uiStore';
+import { createUiStore, DEFAULT_BRAND, showStatus, type Brand } from '../../core/store/uiStore';
 import { createFootprintSource } from '../../ui/planner/footprintSource';
 import type { LuxboxInstance, LuxboxOptions } from './types';
 import { isQualityLevel, QUALITY_LEVEL_NAMES } from '../../engines/relight/qualityLevels';
@@ -29,6 +29,9 @@ import { createI18n } from '../../ui/i18n/createI18n';
 import { I18nProvider } from '../../ui/i18n/I18nProvider';
 import { isLanguage, LANGUAGES } from '../../ui/i18n/languages';
 import { isLocaleTag } from '../../ui/i18n/resolveLocale';
+import { noticeText } from '../../ui/i18n/noticeText';
+import { bomLineName } from '../../ui/i18n/bomLineName';
+import type { CodedMessage } from '../../ui/i18n/translateCoded';
 
 /** options.locale checked: a string must be a BCP 47 tag; a list (navigator.languages) may hold tags resolveLocale skips. */
 function checkLocale(locale: unknown): string | readonly string[] | undefined {
@@ -39,6 +42,18 @@ function checkLocale(locale: unknown): string | readonly string[] | undefined {
   }
   if (Array.isArray(locale) && locale.every((t) => typeof t === 'string')) return locale;
   throw new EmbedOptionsError('options.locale must be a BCP 47 tag such as \'de-CH\' or a list of them');
+}
+
+/** The header's brand from options.brand: absent → luxbox, null → none, else a name (1–80 characters) and an optional logo URL. */
+function checkBrand(brand: unknown): Brand | null {
+  if (brand === undefined) return DEFAULT_BRAND;
+  if (brand === null) return null;
+  const b = brand as { name?: unknown; logo?: unknown };
+  if (typeof brand !== 'object' || typeof b.name !== 'string' || b.name.trim() === '' || b.name.length > 80) {
+    throw new EmbedOptionsError('options.brand must be null or { name, logo? } with a name of 1 to 80 characters');
+  }
+  if (b.logo !== undefined && (typeof b.logo !== 'string' || b.logo === '')) throw new EmbedOptionsError('options.brand.logo must be an image URL');
+  return { name: b.name, ...(b.logo !== undefined ? { logo: b.logo as string } : {}) };
 }
 
 /** Class on the element luxbox renders into: the scope of its stylesheet and its size container. */
@@ -65,7 +80,20 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
   if (options.landmarks !== undefined && options.landmarks !== 'page' && options.landmarks !== 'region') {
     throw new EmbedOptionsError(`options.landmarks: ${JSON.stringify(options.landmarks)} is neither 'page' nor 'region'`);
   }
+  const brand = checkBrand(options.brand);
+  if (options.apiLanguage !== undefined && options.apiLanguage !== 'ui' && options.apiLanguage !== 'en') {
+    throw new EmbedOptionsError(`options.apiLanguage: ${JSON.stringify(options.apiLanguage)} is neither 'ui' nor 'en'`);
+  }
   const i18n = createI18n({ locale: checkLocale(options.locale), currency: catalog.currency, onLanguageChange: options.onLanguageChange });
+  /** A text the API returns, in the configurator's language unless the host asked for English (docs/embedding.md, `apiLanguage`). */
+  const apiText = (msg: CodedMessage): string => {
+    const english = msg.reason ?? msg.text ?? msg.message ?? '';
+    const { t, language, ready } = i18n.getSnapshot();
+    // Before the language's texts have loaded (whenReady() waits for them) the sentence stays whole, in English.
+    if (options.apiLanguage === 'en' || !ready) return english;
+    return noticeText(t, language, catalog, msg);
+  };
+
   const storageKey = options.storageKey || null;
   const saved = storageKey ? readLocal(storageKey) : null;
   const start = resolveStartup({ catalog, hash: options.shareLinks ? currentHash() : '', saved, room: options.room, demo: options.demo });
@@ -76,8 +104,13 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
     if (e instanceof InputError) throw new EmbedOptionsError(`options.room: ${e.message}`);
     throw e;
   }
-  const ui = createUiStore({ phase: start.phase, banner: start.banner });
-
+  const ui = createUiStore({ phase: start.phase, banner: start.banner, brand });
+  const apiBom = (): BillOfMaterials => {
+    const bom = billOfMaterials(store.getState().config, catalog);
+    const { t, language, format, ready } = i18n.getSnapshot();
+    if (options.apiLanguage === 'en' || language === 'en' || !ready) return bom;
+    return { ...bom, lines: bom.lines.map((line) => ({ ...line, name: bomLineName(line, catalog, language, t, format) })) };
+  };
   if (start.clearHash && typeof history !== 'undefined') history.replaceState(null, '', location.pathname + location.search);
   if (storageKey && start.saveNow) writeLocal(storageKey, serializeConfiguration(start.config, catalog));
 
@@ -170,7 +203,7 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
     },
     getBillOfMaterials() {
       alive();
-      return billOfMaterials(store.getState().config, catalog);
+      return apiBom();
     },
     getInstallationNeeds() {
       alive();
@@ -181,14 +214,14 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
       return store
         .getState()
         .listActions(paramsByName)
-        .map((a) => ({ name: a.name, label: a.label, enabled: a.enabled === true, reason: a.enabled === true ? null : a.enabled.reason }));
+        .map((a) => ({ name: a.name, label: a.label, enabled: a.enabled === true, reason: a.enabled === true ? null : apiText(a.enabled) }));
     },
     runAction(name, params = {}) {
       alive();
       if (!isActionName(name)) return { ok: false, reason: `unknown action '${name}'` };
       const r = store.getState().dispatch(name, params);
       if (r.ok && ui.getState().phase === 'setup') ui.setState({ phase: 'planner' });
-      return r.ok ? { ok: true } : { ok: false, reason: r.reason };
+      return r.ok ? { ok: true } : { ok: false, reason: apiText(r) };
     },
     undo() {
       alive();
@@ -213,7 +246,7 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
     },
     whenReady() {
       alive();
-      return colourData.ready();
+      return Promise.all([colourData.ready(), i18n.ready]).then(() => undefined);
     },
     scenes() {
       alive();
@@ -223,7 +256,7 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
     recordScene(name) {
       alive();
       const r = store.getState().dispatch('recordScene', { name });
-      return r.ok ? { ok: true } : { ok: false, reason: r.reason };
+      return r.ok ? { ok: true } : { ok: false, reason: apiText(r) };
     },
     recall(name, options = {}) {
       alive();
@@ -231,7 +264,7 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
       if (!scene) return Promise.resolve({ ok: false, reason: `no light scene named '${String(name)}'` });
       if (options.fade !== undefined && !(Number.isFinite(options.fade) && options.fade >= FADE_LIMITS.min && options.fade <= FADE_LIMITS.max))
         return Promise.resolve({ ok: false, reason: `fade must be between ${FADE_LIMITS.min} and ${FADE_LIMITS.max} s (got ${String(options.fade)})` });
-      return scenePlayer.recall(scene.id, { fade: options.fade }).then((r) => (r.ok ? { ok: true as const } : { ok: false as const, reason: r.reason }));
+      return scenePlayer.recall(scene.id, { fade: options.fade }).then((r) => (r.ok ? { ok: true as const } : { ok: false as const, reason: apiText(r) }));
     },
     view3d() {
       alive();

@@ -63,6 +63,17 @@ export interface LuxboxOptions {
    * (the physical colour). The user can change it in the 3D panel.
    */
   adapt?: string;
+  /**
+   * The maker shown in the configurator's header instead of "luxbox": `{ name }` or `{ name, logo }`
+   * (an image URL; the name is its text alternative), or null for no brand at all. Default luxbox.
+   */
+  brand?: { name: string; logo?: string } | null;
+  /**
+   * The language of the texts the API returns — bill-of-materials names, refusal reasons of
+   * runAction / listActions / recordScene / recall: 'ui' (default) the configurator's own language,
+   * so a German shop shows German everywhere; 'en' the core's English sentences (for logs).
+   */
+  apiLanguage?: 'ui' | 'en';
 }
 
 export interface LuxboxActionInfo {

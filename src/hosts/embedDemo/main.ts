@@ -136,6 +136,10 @@ function open(): void {
     storageKey: shop.storageKey,
     // A shop may serve the photometry from its own asset folder (?assetBase=/cdn/ tries it).
     assetBase: new URLSearchParams(location.search).get('assetBase') ?? undefined,
+    // The shop's own name in the configurator's header (`?brand=none` shows none); the API's texts in the
+    // configurator's language unless `?apiLanguage=en` asks for the core's English (docs/embedding.md).
+    brand: new URLSearchParams(location.search).get('brand') === 'none' ? null : { name: 'Lichtwerk' },
+    apiLanguage: new URLSearchParams(location.search).get('apiLanguage') === 'en' ? 'en' : 'ui',
     onChange: () => {
       // Everything the host shows is re-read through the API after each change.
       changes++;
@@ -144,6 +148,11 @@ function open(): void {
   });
   toggleButton.textContent = 'Close configurator';
   render();
+  // Once the configurator's language has loaded, the API's texts (reasons, BOM names) come in it: show them again.
+  const mounted = instance;
+  void mounted.whenReady().then(() => {
+    if (instance === mounted) render();
+  });
 }
 
 function close(): void {

@@ -1,4 +1,5 @@
 import { useEffect, useState } from 'react';
+import { BrandMark } from '../shared/BrandMark';
 import { useStore } from 'zustand';
 import { createConfiguration } from '../../core/model/configuration';
 import { firstImpression } from '../viewer/firstImpression';
@@ -89,7 +90,7 @@ export function Configurator({ store, ui, languageSwitch = false, onRestoreSaved
       {phase === 'setup' ? (
         <>
           <header className="app-header">
-            <h1>luxbox</h1>
+            <BrandMark ui={ui} />
             <span className="room-label">{t('app.tagline')}</span>
             <span className="spacer" />
             {languageSwitch && <LanguageSwitch />}

@@ -1,4 +1,5 @@
 import { useCallback, useEffect, useLayoutEffect, useMemo, useRef, useState, useSyncExternalStore, type DragEvent } from 'react';
+import { BrandMark } from '../shared/BrandMark';
 import { useStore } from 'zustand';
 import { billOfMaterials } from '../../core/model/billOfMaterials';
 import { installationNeeds } from '../../core/model/installationNeeds';
@@ -173,7 +174,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
     <div className="app-body">
       <PlanAnnouncer store={store} />
       <header className="app-header">
-        <h1>luxbox</h1>
+        <BrandMark ui={ui} />
         <span className="room-label">{t('planner.roomSize', { width: config.room.width, depth: config.room.depth, height: config.room.height })}</span>
         <span className="spacer" />
         {languageSwitch && <LanguageSwitch />}
