@@ -118,10 +118,11 @@ export interface LuxboxInstance {
   /** The lighting scene (version 1) the baker takes, for the current configuration. */
   getLightingScene(): unknown;
   /**
-   * Resolves once everything getLightingScene needs for the current configuration is loaded: the
+   * Resolves once the configurator's language is loaded (the API's texts then come in it, option
+   * apiLanguage) and everything getLightingScene needs for the current configuration is loaded: the
    * colour-filter spectra, fetched when a module or light scene first uses a filter (until then
    * getLightingScene of such a configuration throws an InputError saying so). Resolves at once
-   * for a configuration without filters.
+   * for English and a configuration without filters.
    */
   whenReady(): Promise<void>;
   /** State of the 3D view (docs/viewer.md): bake progress, counters (group bakes vs relights), floor lux; `open: false` in 2D; `bake`: the background bake service, also while 3D is closed. */
