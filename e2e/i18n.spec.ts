@@ -31,7 +31,7 @@ test('?lang=de gives German texts in the room setup and the plan, with no Englis
   await expect(page.getByRole('heading', { name: 'Ihr Raum' })).toBeVisible();
   await expect(page.locator('.app')).toHaveAttribute('lang', 'de');
   // Finish names by id, reflectances with a decimal comma; room sizes shown the German way.
-  await expect(page.getByTestId('setup-finish-floor')).toContainText('Grauer Teppich (ρ 0,20)');
+  await expect(page.getByTestId('setup-finish-floor')).toContainText('Grauer Teppich – reflektiert 20\u00a0%');
   await expect(page.getByLabel('Höhe (m)')).toHaveValue('2,8');
   // Validation messages in German, numbers with a decimal comma.
   const width = page.getByLabel('Breite (m)');

@@ -17,7 +17,7 @@ test('choose finishes on setup and in the Surfaces panel; undo, redo, reload kee
   await page.goto('/');
   await page.evaluate(() => localStorage.clear());
   await page.reload();
-  await page.getByTestId('setup-finish-walls').selectOption({ label: 'Sage green paint (ρ 0.45)' });
+  await page.getByTestId('setup-finish-walls').selectOption({ label: 'Sage green paint — reflects 45%' });
   await page.getByRole('button', { name: 'Start planning' }).click();
   await expect(page.getByTestId('plan')).toBeVisible();
   expect(await bakedReflectance(page)).toEqual({ floor: 0.2, ceiling: 0.8, north: SAGE, south: SAGE, west: SAGE, east: SAGE });

@@ -27,7 +27,8 @@ const CURRENT = '';
  */
 export function FinishSelect({ id, label, use, value, finishes, onChoose, disabledReason, testId }: FinishSelectProps) {
   const { t, format } = useI18n();
-  const rho = (r: Reflectance) => format.number(luminousReflectance(r), { minimumFractionDigits: 2, maximumFractionDigits: 2 });
+  // What a shopper reads: the share of light the finish reflects, in whole percent (its luminous reflectance).
+  const percent = (r: Reflectance) => format.percent(Math.round(luminousReflectance(r) * 100) / 100);
   const offered = finishesFor(finishes, use);
   const current = value === null ? null : matchFinish(offered, value);
   const swatch = value === null ? 'repeating-linear-gradient(45deg, #ffffff 0 4px, #c8ccd3 4px 8px)' : finishColour(value, finishes);
@@ -46,14 +47,14 @@ export function FinishSelect({ id, label, use, value, finishes, onChoose, disabl
       >
         {!current && (
           <option value={CURRENT} disabled>
-            {value === null ? t('planner.finishMixed') : t('planner.finishCustom', { rho: rho(value) })}
+            {value === null ? t('planner.finishMixed') : t('planner.finishCustom', { percent: percent(value) })}
           </option>
         )}
         {offered.map((f) => {
           const reason = disabledReason?.(f) ?? null;
           return (
             <option key={f.id} value={f.id} disabled={reason !== null} title={reason ?? undefined}>
-              {t('planner.finishOption', { name: finishName(t, f), rho: rho(f.reflectance) })}
+              {t('planner.finishOption', { name: finishName(t, f), percent: percent(f.reflectance) })}
             </option>
           );
         })}

@@ -33,7 +33,8 @@ const CUSTOM = '#custom';
  */
 export function ObjectFinishSelect({ id, material, value, defaultRgb, defaultName, onChoose, disabledReason, testId }: ObjectFinishSelectProps) {
   const { t, format } = useI18n();
-  const rho = (r: Rgb | number) => format.number(luminousReflectance(r as Rgb), { minimumFractionDigits: 2, maximumFractionDigits: 2 });
+  // What a shopper reads: the share of light the finish reflects, in whole percent (its luminous reflectance).
+  const percent = (r: Rgb | number) => format.percent(Math.round(luminousReflectance(r as Rgb) * 100) / 100);
   const custom = Array.isArray(value);
   const current = value === undefined ? DEFAULT : custom ? CUSTOM : (value as string);
   const known = typeof value === 'string' ? findObjectFinish(value) : undefined;
@@ -57,16 +58,16 @@ export function ObjectFinishSelect({ id, material, value, defaultRgb, defaultNam
         }}
       >
         <option value={DEFAULT} {...option(null)}>
-          {t('options.finishDefault', { name: defaultName, rho: rho(defaultRgb) })}
+          {t('options.finishDefault', { name: defaultName, percent: percent(defaultRgb) })}
         </option>
         {custom && (
           <option value={CUSTOM} disabled>
-            {t('planner.finishCustom', { rho: rho(value as Rgb) })}
+            {t('planner.finishCustom', { percent: percent(value as Rgb) })}
           </option>
         )}
         {OBJECT_FINISHES.map((f) => (
           <option key={f.id} value={f.id} {...option(f.id)}>
-            {t('planner.finishOption', { name: finishName(t, f), rho: rho(f.reflectance) })}
+            {t('planner.finishOption', { name: finishName(t, f), percent: percent(f.reflectance) })}
           </option>
         ))}
       </select>

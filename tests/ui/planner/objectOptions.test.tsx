@@ -34,7 +34,7 @@ describe('object options', () => {
     for (const m of ['frame', 'cushions', 'legs']) expect(html).toContain(`data-testid="object-finish-${m}"`);
     // The default is named after the library's finish; every object finish is offered.
     expect(html).toContain('Default: Grey fabric');
-    for (const f of OBJECT_FINISHES) expect(html).toContain(`>${f.name} (ρ `);
+    for (const f of OBJECT_FINISHES) expect(html).toContain(`>${f.name} — reflects `);
     expect(html).toContain('aria-label="Remove Sofa (three seats)"');
   });
 

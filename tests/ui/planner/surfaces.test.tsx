@@ -44,10 +44,10 @@ describe('finish colours', () => {
 describe('Surfaces panel', () => {
   it('shows the default room as its listed finishes', () => {
     const html = panel(createConfiguration());
-    expect(chosen(html, 'finish-floor')).toBe('Grey carpet (ρ 0.20)');
-    expect(chosen(html, 'finish-walls')).toBe('Mid grey (ρ 0.50)');
-    expect(chosen(html, 'finish-ceiling')).toBe('White paint (ρ 0.80)');
-    expect(chosen(html, 'finish-east')).toBe('Mid grey (ρ 0.50)');
+    expect(chosen(html, 'finish-floor')).toBe('Grey carpet — reflects 20%');
+    expect(chosen(html, 'finish-walls')).toBe('Mid grey — reflects 50%');
+    expect(chosen(html, 'finish-ceiling')).toBe('White paint — reflects 80%');
+    expect(chosen(html, 'finish-east')).toBe('Mid grey — reflects 50%');
     // floor picker offers floor finishes only
     const floor = /data-testid="finish-floor"[^>]*>(.*?)<\/select>/.exec(html)![1];
     expect(floor).toContain('Dark slate');
@@ -59,8 +59,8 @@ describe('Surfaces panel', () => {
     c = bindAction('setReflectance', { surface: 'floor', value: 0.42 }, defaultCatalog).perform(c);
     const html = panel(c);
     expect(chosen(html, 'finish-walls')).toBe('Mixed (per wall)');
-    expect(chosen(html, 'finish-east')).toBe('Dark slate (ρ 0.10)');
-    expect(chosen(html, 'finish-north')).toBe('Mid grey (ρ 0.50)');
-    expect(chosen(html, 'finish-floor')).toBe('Custom (ρ 0.42)');
+    expect(chosen(html, 'finish-east')).toBe('Dark slate — reflects 10%');
+    expect(chosen(html, 'finish-north')).toBe('Mid grey — reflects 50%');
+    expect(chosen(html, 'finish-floor')).toBe('Custom — reflects 42%');
   });
 });

@@ -26,7 +26,7 @@ export default {
   kelvin: '{k} K',
   dimming: 'Dimmung',
   removeModule: 'Modul entfernen',
-  finishDefault: 'Standard: {name} (ρ {rho})',
+  finishDefault: 'Standard: {name} – reflektiert {percent}',
   size: 'Größe',
   sizeOrder: '(Breite × Tiefe × Höhe)',
   scale: 'Maßstab (× Originalgröße)',

@@ -58,8 +58,8 @@ export default {
   bomDriver: 'Treiber {name}, {capacity} W {output}',
   // Surfaces, rail length and feed positions: shown by the first screen's panels and messages (the options area ships with the options panel).
   finishMixed: 'Gemischt (je Wand)',
-  finishCustom: 'Eigener Wert (ρ {rho})',
-  finishOption: '{name} (ρ {rho})',
+  finishCustom: 'Eigener Wert – reflektiert {percent}',
+  finishOption: '{name} – reflektiert {percent}',
   wall_north: 'Nord',
   wall_east: 'Ost',
   wall_south: 'Süd',

@@ -24,7 +24,7 @@ export default {
   kelvin: '{k} K',
   dimming: 'Dimming',
   removeModule: 'Remove module',
-  finishDefault: 'Default: {name} (ρ {rho})',
+  finishDefault: 'Default: {name} — reflects {percent}',
   size: 'Size',
   sizeOrder: '(width × depth × height)',
   scale: 'Scale (× real size)',

@@ -56,8 +56,8 @@ export default {
   bomDriver: '{name} driver, {capacity} W {output}',
   // Surfaces, rail length and feed positions: shown by the first screen's panels and messages (the options area ships with the options panel).
   finishMixed: 'Mixed (per wall)',
-  finishCustom: 'Custom (ρ {rho})',
-  finishOption: '{name} (ρ {rho})',
+  finishCustom: 'Custom — reflects {percent}',
+  finishOption: '{name} — reflects {percent}',
   wall_north: 'north',
   wall_east: 'east',
   wall_south: 'south',

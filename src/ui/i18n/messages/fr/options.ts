@@ -26,7 +26,7 @@ export default {
   kelvin: '{k} K',
   dimming: 'Gradation',
   removeModule: 'Retirer le module',
-  finishDefault: 'Par défaut : {name} (ρ {rho})',
+  finishDefault: 'Par défaut : {name} — réfléchit {percent}',
   size: 'Taille',
   sizeOrder: '(largeur × profondeur × hauteur)',
   scale: 'Échelle (× taille réelle)',

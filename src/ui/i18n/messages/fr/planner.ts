@@ -58,8 +58,8 @@ export default {
   bomDriver: 'Driver {name}, {capacity} W {output}',
   // Surfaces, rail length and feed positions: shown by the first screen's panels and messages (the options area ships with the options panel).
   finishMixed: 'Mixte (par mur)',
-  finishCustom: 'Personnalisé (ρ {rho})',
-  finishOption: '{name} (ρ {rho})',
+  finishCustom: 'Personnalisé — réfléchit {percent}',
+  finishOption: '{name} — réfléchit {percent}',
   wall_north: 'nord',
   wall_east: 'est',
   wall_south: 'sud',

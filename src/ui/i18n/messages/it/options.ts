@@ -26,7 +26,7 @@ export default {
   kelvin: '{k} K',
   dimming: 'Dimmerazione',
   removeModule: 'Rimuovi il modulo',
-  finishDefault: 'Predefinito: {name} (ρ {rho})',
+  finishDefault: 'Predefinito: {name} — riflette il {percent}',
   size: 'Dimensioni',
   sizeOrder: '(larghezza × profondità × altezza)',
   scale: 'Scala (× dimensione reale)',

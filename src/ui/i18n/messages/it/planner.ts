@@ -58,8 +58,8 @@ export default {
   bomDriver: 'Driver {name}, {capacity} W {output}',
   // Surfaces, rail length and feed positions: shown by the first screen's panels and messages (the options area ships with the options panel).
   finishMixed: 'Misto (per parete)',
-  finishCustom: 'Personalizzato (ρ {rho})',
-  finishOption: '{name} (ρ {rho})',
+  finishCustom: 'Personalizzato — riflette il {percent}',
+  finishOption: '{name} — riflette il {percent}',
   wall_north: 'nord',
   wall_east: 'est',
   wall_south: 'sud',
