@@ -1,5 +1,6 @@
 import { useCallback, useEffect, useLayoutEffect, useMemo, useRef, useState, useSyncExternalStore, type DragEvent } from 'react';
 import { BrandMark } from '../shared/BrandMark';
+import { sentenceStart } from '../i18n/sentenceStart';
 import { useStore } from 'zustand';
 import { billOfMaterials } from '../../core/model/billOfMaterials';
 import { installationNeeds } from '../../core/model/installationNeeds';
@@ -60,7 +61,7 @@ export interface PlannerProps {
 
 /** The main screen (configurator paper, fig. 6): the plan, side panel with presets and price, bottom bar. */
 export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare, shareNotice = null, footprints, landmarks = 'region' }: PlannerProps) {
-  const { t, format, language } = useI18n();
+  const { t, format, language, locale } = useI18n();
   const config = useStore(store, (s) => s.config);
   const catalog = useStore(store, (s) => s.catalog);
   const selection = useStore(store, (s) => s.selection);
@@ -215,7 +216,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
               </div>
               {status && (
                 <div className="status-line" role="status" data-testid="status-line" key={status.seq}>
-                  {noticeText(t, language, catalog, status)}
+                  {sentenceStart(noticeText(t, language, catalog, status), locale)}
                 </div>
               )}
             </div>

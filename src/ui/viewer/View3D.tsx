@@ -29,6 +29,11 @@ import { useI18n } from '../i18n/useI18n';
 import type { MessageKey } from '../i18n/messageTypes';
 import { viewerErrorText } from './viewerErrorText';
 import type { Translate } from '../i18n/messageTypes';
+import type { Language } from '../i18n/languages';
+import { localName } from '../i18n/localName';
+import { furnitureName } from '../i18n/catalogNames';
+import { findFurnitureItem } from '../../core/model/furniture/furnitureLibrary';
+import type { Catalog } from '../../core/model/catalogSchema';
 import './registerView3dEnglish';
 
 export interface View3DProps {
@@ -49,22 +54,37 @@ const QUALITY_LABEL: Record<QualityLevel, MessageKey> = { fast: 'view3d.qualityF
  * change), so opening the view again after no change shows the baked light at once. Reads the
  * configuration, never changes it except through store actions.
  */
-/** The selected object's name or "Module <type>" for the panel ('Selected: …'), null when nothing of those is selected. */
-function selectionLabel(t: Translate, config: Configuration, selection: Selection): string | null {
+/**
+ * The selected object's or module's name for the panel ('Selected: …') as a shopper knows it: a
+ * library piece by its name in the UI language, an imported model by its file name, a module by
+ * its catalog type's name (never an id); null when nothing of those is selected.
+ */
+function selectionLabel(t: Translate, language: Language, catalog: Catalog, config: Configuration, selection: Selection): string | null {
   if (!selection) return null;
   if (selection.kind === 'object') {
     const o = config.objects.find((x) => x.id === selection.id);
-    return o ? sourceName(config, o.source) : null;
+    if (!o) return null;
+    const item = o.source.kind === 'library' ? findFurnitureItem(o.source.item) : undefined;
+    return item ? furnitureName(t, item) : sourceName(config, o.source);
   }
   if (selection.kind === 'module') {
-    for (const s of config.systems) for (const r of s.rails) for (const m of r.modules) if (m.id === selection.id) return t('view3d.selectedModule', { type: m.type });
+    for (const s of config.systems) {
+      for (const r of s.rails) {
+        for (const m of r.modules) {
+          if (m.id !== selection.id) continue;
+          const type = catalog.moduleTypes.find((x) => x.id === m.type);
+          return t('view3d.selectedModule', { type: type ? localName(type, language) : m.type });
+        }
+      }
+    }
   }
   return null;
 }
 
 export default function View3D({ store, loadPhotometry, onBack, visible = true }: View3DProps) {
-  const { t, format } = useI18n();
+  const { t, format, language } = useI18n();
   const config = useStore(store, (s) => s.config);
+  const catalog = useStore(store, (s) => s.catalog);
   const host = useMemo(() => bakeHostFor(store, loadPhotometry), [store, loadPhotometry]);
   const [feed, setFeed] = useState<BakeFeed | null>(() => host.current());
   const [quality, setQuality] = useState<QualityLevel>(host.quality);
@@ -253,7 +273,7 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
   useEffect(() => {
     ctrl.current?.setSelection(selection);
   }, [selection, feed]);
-  const selectedLabel = selectionLabel(t, config, selection);
+  const selectedLabel = selectionLabel(t, language, catalog, config, selection);
 
   // Work plane: recomputed when the maps settle or the height changes (direct part on the CPU).
   useEffect(() => {
