@@ -85,3 +85,20 @@ export function anglesOf(l: Vec3): [number, number] {
   if (c < 0) c += 360;
   return [g, c];
 }
+
+/** Σ E·coverage·texel² over the objects' atlas (lm), from the Y channel. */
+export function atlasFlux(maps: BakedMaps, kind: 'direct' | 'indirect' | 'total'): number {
+  const o = maps.objects!;
+  const lux = luxOf(o[kind]);
+  let flux = 0;
+  for (let i = 0; i < lux.length; i++) flux += lux[i] * o.atlas.position[4 * i + 3];
+  return flux * o.atlas.texelSize * o.atlas.texelSize;
+}
+
+/** The objects' surface area the atlas covers (m²): Σ coverage·texel². */
+export function atlasArea(maps: BakedMaps): number {
+  const o = maps.objects!;
+  let c = 0;
+  for (let i = 0; i < o.atlas.width * o.atlas.height; i++) c += o.atlas.position[4 * i + 3];
+  return c * o.atlas.texelSize * o.atlas.texelSize;
+}

@@ -13,7 +13,7 @@ import { createBaker } from '../../../src/engines/bake/createBaker';
 import { probeScene } from '../../../src/engines/bake/probeMaps';
 import { texelCentre } from '../../../src/engines/bake/surfaceLayout';
 import { boxMesh } from './objects/objectFixtures';
-import { isotropic, spot, totalFlux, uniformRoom } from './bakeTestKit';
+import { atlasArea, atlasFlux, isotropic, spot, totalFlux, uniformRoom } from './bakeTestKit';
 import { withHeadlessGL } from './withHeadlessGL';
 
 const gl = withHeadlessGL();
@@ -21,22 +21,6 @@ const baker = createBaker(gl);
 
 function box(id: string, w: number, h: number, d: number, base: Vec3, reflectance: number): BakeObject {
   return { id, mesh: boxMesh(w, h, d, reflectance), position: base, yaw: 0, scale: 1, reflectance };
-}
-
-/** Σ E·coverage·texel² over the atlas (lm), from the Y channel. */
-function atlasFlux(maps: BakedMaps, kind: 'direct' | 'indirect' | 'total'): number {
-  const o = maps.objects!;
-  const lux = luxOf(o[kind]);
-  let flux = 0;
-  for (let i = 0; i < lux.length; i++) flux += lux[i] * o.atlas.position[4 * i + 3];
-  return flux * o.atlas.texelSize * o.atlas.texelSize;
-}
-
-function atlasArea(maps: BakedMaps): number {
-  const o = maps.objects!;
-  let c = 0;
-  for (let i = 0; i < o.atlas.width * o.atlas.height; i++) c += o.atlas.position[4 * i + 3];
-  return c * o.atlas.texelSize * o.atlas.texelSize;
 }
 
 function allFinite(maps: BakedMaps): boolean {
