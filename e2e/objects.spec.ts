@@ -48,14 +48,17 @@ test.describe('desktop', () => {
     let objs = await objects(page);
     expect(objs.map((o) => (o.source.kind === 'library' ? o.source.item : ''))).toEqual(['dining-table', 'sofa']);
     expect(objs[0].placement).toEqual({ on: 'floor', x: 2.5, z: 2 });
+    // The sofa goes to the free floor nearest the middle (issue #27): beside the table, not in it
+    // (table z 1.55…2.45, 2 cm apart, the sofa 90 cm deep, on the 5 cm lattice).
+    expect(objs[1].placement).toEqual({ on: 'floor', x: 2.5, z: 1.05 });
     await expect(page.locator('[data-object-id]')).toHaveCount(2);
 
     // The sofa is selected: arrows move it 0.1 m, R turns it 15°.
     await expect(page.locator(`[data-object-id="${objs[1].id}"]`)).toHaveAttribute('data-selected', 'true');
-    for (let i = 0; i < 12; i++) await page.keyboard.press('ArrowDown');
+    for (let i = 0; i < 20; i++) await page.keyboard.press('ArrowDown');
     await page.keyboard.press('r');
     objs = await objects(page);
-    expect(objs[1].placement).toEqual({ on: 'floor', x: 2.5, z: 3.2 });
+    expect(objs[1].placement).toEqual({ on: 'floor', x: 2.5, z: 3.05 });
     expect(objs[1].yaw).toBe(15);
 
     // Drag the table 120 px to the right with the mouse: 120 px / scale metres, snapped to the centimetre.

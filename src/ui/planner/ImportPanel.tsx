@@ -1,7 +1,6 @@
-import { useRef, useState, type ChangeEvent } from 'react';
+import { lazy, Suspense, useRef, useState, type ChangeEvent } from 'react';
 import { InputError } from '../../core/inputError';
 import { MESH_UNITS, type MeshUnits } from '../../core/model/configuration';
-import type { OrientationSummary } from '../../core/mesh/orientMesh';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
 import type { ImportedMesh, MeshFile } from '../../engines/meshImport/importedMesh';
 import { itemDimensions } from './FurniturePanel';
@@ -10,6 +9,9 @@ import type { MessageKey } from '../i18n/messageTypes';
 
 /** What the file picker offers: an OBJ with its MTL (picked together), a glTF (with its .bin buffers) or a GLB. */
 export const IMPORT_ACCEPT = '.obj,.mtl,.gltf,.glb,.bin';
+
+// The summary of how the model was oriented loads with the first preview (its texts ship with it).
+const ImportOrientation = lazy(() => import('./ImportOrientation'));
 
 const UNIT_NAMES: Record<MeshUnits, MessageKey> = { m: 'files.unitMetres', cm: 'files.unitCentimetres', mm: 'files.unitMillimetres', in: 'files.unitInches' };
 
@@ -20,26 +22,6 @@ const UNIT_NAMES: Record<MeshUnits, MessageKey> = { m: 'files.unitMetres', cm: '
 async function readModel(files: readonly MeshFile[], units: 'auto' | MeshUnits): Promise<ImportedMesh> {
   const { importMesh } = await import('../../engines/meshImport/importMesh');
   return importMesh(files, { units });
-}
-
-/**
- * What orienting the model did (docs/furniture.md, "Which side of a face is lit"): closed parts
- * turned outward, open surfaces lit on both sides or from their front only; or that every part was
- * closed and faced outward. Parts with no clear inside are listed with the warnings.
- */
-function OrientationSummaryLine({ orientation: o }: { orientation: OrientationSummary }) {
-  const { t } = useI18n();
-  const lines: string[] = [];
-  if (o.turnedOutward > 0) lines.push(t('files.orientTurned', { count: o.turnedOutward }));
-  if (o.twoSided > 0) lines.push(t('files.orientTwoSided', { count: o.twoSided }));
-  if (o.oneSided > 0) lines.push(t('files.orientOneSided', { count: o.oneSided }));
-  if (lines.length === 0 && o.undecided === 0) lines.push(t('files.orientClosed'));
-  if (lines.length === 0) return null;
-  return (
-    <p className="preset-detail" data-testid="import-orientation">
-      {lines.join(' · ')}
-    </p>
-  );
 }
 
 export interface ImportPanelProps {
@@ -141,10 +123,11 @@ export function ImportPanel({ onAdd }: ImportPanelProps) {
               ))}
             </select>
           </div>
-          <OrientationSummaryLine orientation={model.orientation} />
-          {(model.warnings.length > 0 || model.orientation.undecided > 0) && (
+          <Suspense fallback={null}>
+            <ImportOrientation orientation={model.orientation} />
+          </Suspense>
+          {model.warnings.length > 0 && (
             <ul className="import-warnings" aria-label={t('files.importWarnings')}>
-              {model.orientation.undecided > 0 && <li data-testid="import-undecided">{t('files.orientUndecided', { count: model.orientation.undecided })}</li>}
               {model.warnings.map((w) => (
                 <li key={w}>{w}</li>
               ))}

@@ -1,4 +1,4 @@
-import { useCallback, useEffect, useLayoutEffect, useMemo, useRef, useState, useSyncExternalStore, type DragEvent } from 'react';
+import { lazy, Suspense, useCallback, useEffect, useLayoutEffect, useMemo, useRef, useState, useSyncExternalStore, type DragEvent } from 'react';
 import { BrandMark } from '../shared/BrandMark';
 import { sentenceStart } from '../i18n/sentenceStart';
 import { useStore } from 'zustand';
@@ -20,6 +20,9 @@ import { FilePanel } from './FilePanel';
 import { SurfacesPanel } from './SurfacesPanel';
 import { defaultSurfaceFinishes } from '../../core/catalog/surfaceFinishes';
 import { LazyView3D } from '../viewer/LazyView3D';
+
+// The share link's copy and share buttons load once a link is made (not with the first screen).
+const ShareLinkField = lazy(() => import('./ShareLinkField'));
 import { lowMemoryDevice } from '../../engines/view/lowMemoryDevice';
 import { createActionGate } from './actionGate';
 import { detailLevel } from './detailLevel';
@@ -41,7 +44,6 @@ import { scenePlayerFor } from '../scenes/createScenePlayer';
 import { mixLevels, outputLevels } from '../../core/model/sceneFade';
 import { PlanAnnouncer } from './PlanAnnouncer';
 import type { Landmarks } from '../shared/landmarks';
-import { ShareLinkField } from './ShareLinkField';
 
 export interface PlannerProps {
   store: ConfiguratorStore;
@@ -255,7 +257,11 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
               </button>
             </div>
             <FilePanel store={store} ui={ui} loadPhotometry={footprints.loadPhotometry} />
-            {shareLink && <ShareLinkField link={shareLink} notice={shareNotice} />}
+            {shareLink && (
+              <Suspense fallback={null}>
+                <ShareLinkField link={shareLink} notice={shareNotice} />
+              </Suspense>
+            )}
           </section>
         </aside>
       </div>

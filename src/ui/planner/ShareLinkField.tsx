@@ -1,3 +1,4 @@
+import './registerPanelExtrasEnglish';
 import { useState } from 'react';
 import { useI18n } from '../i18n/useI18n';
 
@@ -40,7 +41,7 @@ async function copyText(text: string): Promise<boolean> {
  * or the reason to copy by hand), and **Share…** through the Web Share API where the browser has
  * it (phones and tablets: the system's share sheet). The link stays visible and selectable.
  */
-export function ShareLinkField({ link, notice }: ShareLinkFieldProps) {
+export default function ShareLinkField({ link, notice }: ShareLinkFieldProps) {
   const { t } = useI18n();
   const [outcome, setOutcome] = useState<{ link: string; what: Outcome }>({ link, what: null });
   const shown = outcome.link === link ? outcome.what : null;
@@ -49,7 +50,7 @@ export function ShareLinkField({ link, notice }: ShareLinkFieldProps) {
   const copy = async () => setOutcome({ link, what: (await copyText(link)) ? 'copied' : 'copyFailed' });
   const share = async () => {
     try {
-      await navigator.share({ title: t('planner.shareTitle'), url: link });
+      await navigator.share({ title: t('sharing.shareTitle'), url: link });
       setOutcome({ link, what: 'shared' });
     } catch {
       // Cancelled by the user, or refused: nothing to say, the link is still here.
@@ -62,16 +63,16 @@ export function ShareLinkField({ link, notice }: ShareLinkFieldProps) {
       <input id="share-link" readOnly value={link} onFocus={(e) => e.target.select()} data-testid="share-link" />
       <div className="setup-actions">
         <button type="button" className="btn" onClick={() => void copy()} data-testid="share-copy">
-          {t('planner.copyLink')}
+          {t('sharing.copyLink')}
         </button>
         {canShare && (
           <button type="button" className="btn" onClick={() => void share()} data-testid="share-native">
-            {t('planner.shareVia')}
+            {t('sharing.shareVia')}
           </button>
         )}
       </div>
       <p className="empty-note" role="status" data-testid="share-status">
-        {shown === 'copied' ? t('planner.linkCopied') : shown === 'copyFailed' ? t('planner.linkCopyFailed') : shown === 'shared' ? t('planner.linkShared') : ''}
+        {shown === 'copied' ? t('sharing.linkCopied') : shown === 'copyFailed' ? t('sharing.linkCopyFailed') : shown === 'shared' ? t('sharing.linkShared') : ''}
       </p>
       {notice && (
         <p className="share-notice" role="note" data-testid="share-notice">

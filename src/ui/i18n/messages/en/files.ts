@@ -22,11 +22,6 @@ export default {
   readingModel: 'Reading the model…',
   triangles: { one: '{count} triangle', other: '{count} triangles' },
   unitsOfFile: 'Units of the file (detected: {detected})',
-  orientTurned: { one: '{count} closed part faced inward and was turned outward', other: '{count} closed parts faced inward and were turned outward' },
-  orientTwoSided: { one: '{count} open surface is lit and reflects on both sides', other: '{count} open surfaces are lit and reflect on both sides' },
-  orientOneSided: { one: '{count} open surface is lit from its front only (one-sided in the file)', other: '{count} open surfaces are lit from their front only (one-sided in the file)' },
-  orientUndecided: { one: '{count} part has no clear inside (faces that cannot be wound alike): it is lit on both sides', other: '{count} parts have no clear inside (faces that cannot be wound alike): they are lit on both sides' },
-  orientClosed: 'Every part is closed and faces outward',
   importWarnings: 'Import warnings',
   addToRoom: 'Add to room',
 };

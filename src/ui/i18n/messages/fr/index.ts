@@ -8,6 +8,7 @@ import connectors from './connectors';
 import exposure from './exposure';
 import fileErrors from './fileErrors';
 import files from './files';
+import modelImport from './modelImport';
 import filters from './filters';
 import finishes from './finishes';
 import furniture from './furniture';
@@ -19,6 +20,7 @@ import planner from './planner';
 import refusals from './refusals';
 import rooms from './rooms';
 import scenes from './scenes';
+import sharing from './sharing';
 import shared from './shared';
 import view3d from './view3d';
 import viewer from './viewer';
@@ -33,6 +35,7 @@ export default {
   exposure,
   fileErrors,
   files,
+  modelImport,
   filters,
   finishes,
   furniture,
@@ -44,6 +47,7 @@ export default {
   refusals,
   rooms,
   scenes,
+  sharing,
   shared,
   view3d,
   viewer,
