@@ -157,6 +157,9 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
     if (!scene) return;
     const t0 = performance.now();
     maps.show(engine.maps(), reflectanceRgb(scene.room), t0, { white: adoptedWhite(scene.luminaires), key: sceneGeometryKey(scene), done: engine.progress.done });
+    // The glow follows the light shown (dimming, live levels, a crossfade's mix).
+    const weights = service.luminaireWeights();
+    if (weights) view.setModuleWeights(new Map(weights.flatMap((w, i) => (ids[i] ? [[ids[i], w] as const] : []))));
     shownVersion = engine.version;
     frames.request();
   };
