@@ -56,14 +56,18 @@ function partGeometry(p: LuminairePart): THREE.BufferGeometry {
   return g;
 }
 
-export function createRoomHardware(display: SharedDisplayUniforms): RoomHardware {
+/**
+ * `shading.linear`: the parts write adapt·(L·exposure), the value before the tone curve
+ * (luminaireShading.glsl.ts), for a float target; the view itself never sets it.
+ */
+export function createRoomHardware(display: SharedDisplayUniforms, shading: { linear?: boolean } = {}): RoomHardware {
   const group = new THREE.Group();
   const ambient = { value: new THREE.Vector3(0, 0, 0) };
   const material = (opts: { flat: Rgb; reflectance?: number; emitter?: boolean; selected?: boolean }) =>
     new THREE.ShaderMaterial({
       glslVersion: THREE.GLSL3,
       vertexShader: luminaireVertex,
-      fragmentShader: luminaireFragment(),
+      fragmentShader: luminaireFragment(shading),
       // Open parts (a wire, the rail's channel) show their inner side; the shader flips its normal.
       side: THREE.DoubleSide,
       uniforms: {
