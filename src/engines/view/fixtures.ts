@@ -6,7 +6,7 @@ import type { LightingScene, Rgb, Vec3 } from '../../core/model/lightingScene';
 import { moduleHeight, suspensionPoints } from '../../core/model/suspensionPoints';
 import type { Photometry } from '../../core/photometry/types';
 import type { BakeLuminaire } from '../bake/bakeScene';
-import { modelHeight } from './luminaires/buildLuminaireModel';
+import { modelHeight } from './luminaires/luminaireDimensions';
 import { hemisphereFlux } from './luminaires/emitterLuminance';
 import { kindOfLuminaire, kindOfModuleType, type LuminaireKind } from './luminaires/luminaireKind';
 

@@ -8,7 +8,7 @@ import { cameraPreset, CAMERA_PRESETS, parseCameraSpec } from '../../../src/engi
 import { suspensionPoints } from '../../../src/core/model/suspensionPoints';
 import { aimedOrientation } from '../../../src/core/model/aim';
 import { fixturesFromConfiguration, RAIL_HEIGHT } from '../../../src/engines/view/fixtures';
-import { modelHeight } from '../../../src/engines/view/luminaires/buildLuminaireModel';
+import { modelHeight } from '../../../src/engines/view/luminaires/luminaireDimensions';
 
 const room = { width: 5, height: 2.8, depth: 4 };
 

@@ -47,8 +47,3 @@ export function emitterPart(shape: 'round' | 'rectangular', x: number, z: number
   g.scale((x / 2) * k, (z / 2) * k, 1);
   return partFrom(g, 'emitter', frame, { at: [0, y, 0], rotate: turn }, side);
 }
-
-/** The radius of the n-gon emitterPart draws for an ellipse axis of `diameter`. */
-export function emitterRadius(diameter: number, segments = 32): number {
-  return (diameter / 2) * Math.sqrt((2 * Math.PI) / (segments * Math.sin((2 * Math.PI) / segments)));
-}
