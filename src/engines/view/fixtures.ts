@@ -40,6 +40,8 @@ export interface FixtureModule {
 export interface Fixtures {
   /** A rail's axis at the height of the profile's centre. */
   rails: { start: Vec3; end: Vec3 }[];
+  /** The rail profile's width (m): the catalog's `rail.width`. */
+  railWidth: number;
   /** Connector nodes (corner, T, X, straight couplers) as plan rectangles, at the rails' height. */
   connectors: { rect: PlanRect; y: number }[];
   modules: FixtureModule[];
@@ -68,7 +70,7 @@ export function moduleLight(l: BakeLuminaire | undefined): ModuleLight | null {
  * resolved luminaire) gives the openings and the glow.
  */
 export function fixturesFromConfiguration(config: Configuration, catalog: Catalog, lights: ReadonlyMap<string, BakeLuminaire> = new Map()): Fixtures {
-  const out: Fixtures = { rails: [], connectors: [], modules: [], cables: [] };
+  const out: Fixtures = { rails: [], railWidth: catalog.rail.width, connectors: [], modules: [], cables: [] };
   const H = config.room.height;
   for (const system of config.systems) {
     const y = moduleHeight(system, config.room, catalog);
@@ -104,6 +106,7 @@ export function fixturesFromConfiguration(config: Configuration, catalog: Catalo
 export function fixturesFromScene(scene: LightingScene, luminaires: readonly BakeLuminaire[] = []): Fixtures {
   return {
     rails: [],
+    railWidth: 0,
     connectors: [],
     cables: [],
     modules: scene.luminaires.map((l, i) => {

@@ -76,6 +76,7 @@ describe('fixtures', () => {
     const drop = Math.max(...f.modules.map((m) => modelHeight({ kind: m.kind, opening: null, length: m.length })));
     expect(f.modules.map((m) => m.kind)).toContain('spot');
     expect(f.rails).toHaveLength(config.systems[0].rails.length);
+    expect(f.railWidth).toBe(defaultCatalog.rail.width);
     for (const r of f.rails) expect(r.start[1]).toBeCloseTo(y + drop + RAIL_HEIGHT / 2, 12);
     for (const m of f.modules) expect(m.mount).toBeCloseTo(drop, 12);
     // Cables at the fixing points the bill of materials counts (spacing and overhang rules), ceiling to rail top.

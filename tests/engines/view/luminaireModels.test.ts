@@ -180,7 +180,7 @@ describe('the emitter on screen (three.js on headless-gl)', () => {
     mount: 0,
     light: { opening: ph.luminousOpening, flux: hemisphereFlux(ph), weight },
   });
-  const fixtures = (on: boolean): Fixtures => ({ rails: [], connectors: [], cables: [], modules: [module(on)] });
+  const fixtures = (on: boolean): Fixtures => ({ rails: [], railWidth: 0, connectors: [], cables: [], modules: [module(on)] });
   const L = hemisphereFlux(ph).down / (Math.PI * openingArea(ph.luminousOpening));
   const pose = { position: [0, 1.9, 0.002] as Vec3, target: [0, 2, 0] as Vec3, fov: 30 };
 

@@ -42,6 +42,7 @@ describe('trackPieces', () => {
   it('a rail is a U-channel of the catalog width and RAIL_HEIGHT along its run; a cable a wire from ceiling to rail top with canopy and gripper; none of zero length', () => {
     const pieces = trackPieces({
       rails: [{ start: [1, 2.2, 1], end: [1, 2.2, 3] }],
+      railWidth: 0.05,
       connectors: [],
       modules: [],
       cables: [

@@ -29,8 +29,9 @@ function placed(g: THREE.BufferGeometry, at: THREE.Vector3, yaw: number): THREE.
   return g;
 }
 
-export function trackPieces(f: Fixtures, railWidth = 0.05): TrackPiece[] {
+export function trackPieces(f: Fixtures): TrackPiece[] {
   const pieces: TrackPiece[] = [];
+  const railWidth = f.railWidth;
   for (const r of f.rails) {
     const dx = r.end[0] - r.start[0];
     const dz = r.end[2] - r.start[2];
