@@ -102,7 +102,7 @@ export function createRoomHardware(display: SharedDisplayUniforms, shading: { li
     modules = new Map();
   };
   const addModule = (m: FixtureModule) => {
-    const model = buildLuminaireModel({ kind: m.kind, opening: m.light?.opening ?? null, length: m.length, mount: m.mount });
+    const model = buildLuminaireModel({ kind: m.kind, opening: m.light?.opening ?? null, length: m.length, mount: m.mount, ...(m.stand ? { stand: m.stand } : {}) });
     const lum = m.light ? emitterLuminance(m.light.flux, model.emitterArea) : { down: 0, up: 0 };
     const entry = { meshes: [] as THREE.Mesh[], all: [] as THREE.Mesh[], emitters: [] as { material: THREE.ShaderMaterial; luminance: number }[] };
     const frames = new Map<PartFrame, THREE.Group>();

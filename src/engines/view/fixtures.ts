@@ -30,8 +30,10 @@ export interface FixtureModule {
   kind: LuminaireKind;
   /** The luminaire's orientation in degrees, exactly the lighting scene's (world = Ry(yaw)·Rx(pitch)·Ry(roll)·local). */
   orientation: { yaw: number; pitch: number; roll: number };
-  /** Height of the rail's underside above the photometric centre (m); 0: no rail. */
+  /** Height of the rail's underside (or, for a lighting scene's hung luminaire, the ceiling) above the photometric centre (m); 0: none. */
   mount: number;
+  /** A lighting scene's luminaire standing on the floor: its photometric centre's height above it (m). */
+  stand?: number;
   /** Null: its photometry is not known (nothing glows). */
   light: ModuleLight | null;
 }
@@ -102,8 +104,13 @@ export function fixturesFromConfiguration(config: Configuration, catalog: Catalo
   return out;
 }
 
-/** A lighting scene has no rails: each luminaire is drawn as its kind (from its photometry) at its position, turned as it is. */
+/**
+ * A lighting scene has no rails: each luminaire is drawn as its kind (from its photometry) at its
+ * position, turned as it is; one in the upper half of the room hangs from the ceiling (its stem
+ * reaches it), one in the lower half stands on the floor.
+ */
 export function fixturesFromScene(scene: LightingScene, luminaires: readonly BakeLuminaire[] = []): Fixtures {
+  const H = scene.room.height;
   return {
     rails: [],
     railWidth: 0,
@@ -112,6 +119,7 @@ export function fixturesFromScene(scene: LightingScene, luminaires: readonly Bak
     modules: scene.luminaires.map((l, i) => {
       const light = moduleLight(luminaires[i]);
       const kind = light ? kindOfLuminaire(light.opening, light.flux, l.pitch) : 'downlight';
+      const standing = l.position[1] < H / 2;
       return {
         id: l.id ?? `l${i}`,
         centre: l.position,
@@ -120,7 +128,8 @@ export function fixturesFromScene(scene: LightingScene, luminaires: readonly Bak
         on: (l.dimming ?? 1) > 0,
         kind,
         orientation: { yaw: l.yaw, pitch: l.pitch, roll: l.roll },
-        mount: 0,
+        mount: standing ? 0 : Math.max(0, H - l.position[1]),
+        ...(standing ? { stand: l.position[1] } : {}),
         light,
       };
     }),

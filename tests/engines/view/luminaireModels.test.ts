@@ -135,6 +135,19 @@ describe('the spot head turns with the aim', () => {
   });
 });
 
+describe('a standing spot (a lighting scene\'s luminaire in the lower half of the room)', () => {
+  it('its yoke is below the head, its base plate on the floor, the head still turns about its pivot', () => {
+    const ph = load('ies/erco_kubus_floor_washlight.ies');
+    const model = buildLuminaireModel({ kind: 'spot', opening: ph.luminousOpening, length: 0.12, mount: 0, stand: 0.1 });
+    const bottom = Math.min(...model.parts.flatMap((p) => Array.from(p.positions.filter((_, i) => i % 3 === 1))));
+    expect(bottom).toBeCloseTo(-0.1, 6);
+    for (const p of model.parts) expect(p.positions.every(Number.isFinite)).toBe(true);
+    const top = Math.max(...model.parts.filter((p) => p.frame !== 'aim').flatMap((p) => Array.from(p.positions.filter((_, i) => i % 3 === 1))));
+    // Nothing of the yoke reaches above the pivot by more than its boss.
+    expect(top).toBeLessThanOrEqual(model.pivot[1] + 0.021);
+  });
+});
+
 describe('glow luminance L = Φ / (π·A)', () => {
   it('per hemisphere, from the integrated flux; the halves add up to the whole; zero area or flux gives 0', () => {
     for (const { ph, model, type } of catalogModels) {

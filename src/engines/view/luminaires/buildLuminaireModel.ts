@@ -34,16 +34,28 @@ export function buildLuminaireModel(input: ModelInput): LuminaireModel {
       // The head: a closed cylinder from the face (y = 0) to its back, turning about its centre.
       parts.push(partFrom(new THREE.CylinderGeometry(head.radius, head.radius, head.length, 32, 1, false), 'housing', 'aim', { at: [0, head.length / 2, 0] }));
       parts.push(emitter(-PROUD, -1));
-      // The yoke (turns with the swivel only): two arms beside the head from the pivot to a crossbar above the swept sphere.
+      // The yoke (turns with the swivel only): two arms beside the head from the pivot to a crossbar
+      // clear of the swept sphere: above it when hung, below it on a standing luminaire.
       const armX = head.radius + YOKE.clearance + YOKE.strip / 2;
-      const armBottom = head.pivot - 0.02;
+      const standing = (input.stand ?? 0) > 0;
+      const reach = head.crossbar - head.pivot;
+      const [armFrom, armTo] = standing ? [head.pivot - reach, head.pivot + 0.02] : [head.pivot - 0.02, head.crossbar];
       for (const s of [-1, 1]) {
-        parts.push(boxPart([YOKE.strip, head.crossbar - armBottom, YOKE.depth], 'housing', 'swivel', [s * armX, (armBottom + head.crossbar) / 2, 0]));
+        parts.push(boxPart([YOKE.strip, armTo - armFrom, YOKE.depth], 'housing', 'swivel', [s * armX, (armFrom + armTo) / 2, 0]));
         // The pivot boss on the arm's outer side: a short cylinder along x.
         parts.push(partFrom(new THREE.CylinderGeometry(0.012, 0.012, 0.008, 16), 'housing', 'swivel', { at: [s * (armX + YOKE.strip / 2 + 0.004), head.pivot, 0], rotate: [0, 0, Math.PI / 2] }));
       }
-      parts.push(boxPart([2 * armX + YOKE.strip, YOKE.strip, YOKE.depth], 'housing', 'swivel', [0, head.crossbar + YOKE.strip / 2, 0]));
-      parts.push(...hanging(input.mount, head.crossbar + YOKE.strip, 'swivel'));
+      if (standing) {
+        const bar = head.pivot - reach - YOKE.strip;
+        parts.push(boxPart([2 * armX + YOKE.strip, YOKE.strip, YOKE.depth], 'housing', 'swivel', [0, bar + YOKE.strip / 2, 0]));
+        // A stem down to a base plate on the floor (Ø 160 × 10 mm, assumed).
+        const floor = -(input.stand ?? 0);
+        if (bar - floor > 0.012) parts.push(rodPart(STEM_RADIUS, floor + 0.01, bar, 'housing', 'swivel'));
+        parts.push(partFrom(new THREE.CylinderGeometry(0.08, 0.08, 0.01, 32), 'housing', 'mount', { at: [0, floor + 0.005, 0] }));
+      } else {
+        parts.push(boxPart([2 * armX + YOKE.strip, YOKE.strip, YOKE.depth], 'housing', 'swivel', [0, head.crossbar + YOKE.strip / 2, 0]));
+        parts.push(...hanging(input.mount, head.crossbar + YOKE.strip, 'swivel'));
+      }
       return { parts, pivot: [0, head.pivot, 0], emitterArea: o.area };
     }
     case 'downlight': {

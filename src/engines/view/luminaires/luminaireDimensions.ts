@@ -42,6 +42,12 @@ export interface ModelInput {
    * rail (the adapter sits above it, stem or hangers bridge the gap); 0: no rail (a lighting scene's luminaire).
    */
   mount: number;
+  /**
+   * A luminaire standing on the floor (a lighting scene's, in the lower half of the room): the
+   * photometric centre's height above the floor (m); its yoke stands on a stem and a base plate.
+   * Absent or 0: it hangs.
+   */
+  stand?: number;
 }
 
 /** The opening drawn: the photometry's (width along local x, length along local z, as the baker's point sources) or one for the kind. */
