@@ -1,4 +1,5 @@
 import type { BakeScene } from '../bake/bakeScene';
+import type { Rgb } from '../../core/model/lightingScene';
 import { resolveBakeSettings } from '../bake/bakeSettings';
 import type { PreparedObjects } from '../bake/objects/preparedObjects';
 import type { EngineProgress, RelightEngine } from '../relight/createRelightEngine';
@@ -53,6 +54,11 @@ export interface BakeService {
    * in the same frame.
    */
   setFade(fade: ServiceFade | null): void;
+  /**
+   * Each luminaire's weight (dimming × colour, linear RGB) in the light shown now: the scene with the
+   * overlay and, during a crossfade, (1 − e)·from + e·scene, as the engine mixes the bases. Null: no scene.
+   */
+  luminaireWeights(): Rgb[] | null;
   /** Another quality level: a fresh engine with QUALITY_LEVELS[level], which rebakes the scene. */
   setQuality(level: QualityLevel): void;
   readonly quality: QualityLevel;
@@ -249,6 +255,25 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
     },
     get scene() {
       return scene;
+    },
+    luminaireWeights() {
+      if (!scene) return null;
+      const shown = lit(scene);
+      const weight = (l: BakeScene['luminaires'][number]): Rgb => {
+        const d = Math.max(0, l.dimming ?? 1);
+        const c = l.color ?? [1, 1, 1];
+        return [d * c[0], d * c[1], d * c[2]];
+      };
+      const now = shown.luminaires.map(weight);
+      if (!fade) return now;
+      try {
+        const from = fade.from(shown).luminaires.map(weight);
+        if (from.length !== now.length) return now;
+        const e = fade.e;
+        return now.map((w, i) => w.map((c, k) => (1 - e) * from[i][k] + e * c) as Rgb);
+      } catch {
+        return now;
+      }
     },
     setOverlay(next) {
       overlay = next;

@@ -153,10 +153,28 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
   });
   const maps = createMapDisplay(() => view, events.onMaps);
 
+  /**
+   * The glow follows the light shown (dimming, live levels, a crossfade's mix: the service's
+   * weights), except the module the spotlight preview lights from the shader: the maps leave it
+   * out, its lamp still shines (its weight with the live levels).
+   */
+  const syncWeights = () => {
+    const weights = service.luminaireWeights();
+    if (!weights || !scene || service.scene !== scene) return;
+    const k = dimmed ? ids.indexOf(dimmed) : -1;
+    const own = k >= 0 ? (live ? applyLiveLevels(scene, ids, live) : scene).luminaires[k] : undefined;
+    if (own) {
+      const d = Math.max(0, own.dimming ?? 1);
+      const c = own.color ?? [1, 1, 1];
+      weights[k] = [d * c[0], d * c[1], d * c[2]];
+    }
+    view.setModuleWeights(new Map(weights.flatMap((w, i) => (ids[i] ? [[ids[i], w] as const] : []))));
+  };
   const showMaps = (engine: RelightEngine) => {
     if (!scene) return;
     const t0 = performance.now();
     maps.show(engine.maps(), reflectanceRgb(scene.room), t0, { white: adoptedWhite(scene.luminaires), key: sceneGeometryKey(scene), done: engine.progress.done });
+    syncWeights();
     shownVersion = engine.version;
     frames.request();
   };
@@ -195,6 +213,7 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
       ids = luminaireIds;
       fixtures = nextFixtures;
       view.setFixtures(nextFixtures);
+      syncWeights();
       syncObjects();
       camera.setRoom(next.room);
       if (live || dimmed) applyOverlay();

@@ -8,6 +8,7 @@ import { createRoomHardware } from './createRoomHardware';
 import { createRoomObjects, OBJECTS_MESH_NAME } from './createRoomObjects';
 import { createRoomSurfaces, type ViewMode } from './createRoomSurfaces';
 import type { Fixtures } from './fixtures';
+import { meanIlluminance } from './meanIlluminance';
 import type { ObjectLight } from './objectLight';
 import type { SpotPreviewUniforms } from './spotPreview';
 
@@ -32,6 +33,8 @@ export interface RoomView {
   setObjectLight(light: ObjectLight | null): void;
   /** Highlight an object by id (null: none). */
   setSelectedObject(id: string | null): void;
+  /** Each module's weight now (dimming × colour) by id: its glow follows (docs/viewer.md, "Luminaires"). */
+  setModuleWeights(weights: ReadonlyMap<string, Rgb>): void;
   /** Draw a module in the selection colour (null: none). */
   setSelectedModule(id: string | null): void;
   /** The nearest object or module under a point of the view (normalised device coordinates, −1…1, y up), or null. */
@@ -54,20 +57,25 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
   const scene = new THREE.Scene();
   scene.background = new THREE.Color(0x1d2126);
   const camera = new THREE.PerspectiveCamera(60, 1, 0.05, 500);
-  const hardware = createRoomHardware();
-  scene.add(hardware.group);
   const surfaces = createRoomSurfaces(scene, renderer);
+  // The luminaires share the surfaces' display uniforms: one exposure, adaptation and mode for the room and its glow.
+  const hardware = createRoomHardware(surfaces.display);
+  scene.add(hardware.group);
   const objects = createRoomObjects(surfaces.display, renderer);
   scene.add(objects.group);
   const raycaster = new THREE.Raycaster();
   return {
     scene,
     camera,
-    setMaps: surfaces.setMaps,
+    setMaps(lit, reflectance) {
+      surfaces.setMaps(lit, reflectance);
+      hardware.setAmbient(meanIlluminance(lit));
+    },
     setExposure: surfaces.setExposure,
     setAdaptation: surfaces.setAdaptation,
     setMode: surfaces.setMode,
     setFixtures: hardware.setFixtures,
+    setModuleWeights: hardware.setModuleWeights,
     setObjects: objects.setGeometry,
     setObjectLight: objects.setLight,
     setSelectedObject: objects.setSelected,
@@ -80,7 +88,7 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
       // The room's surfaces are no targets, but they hide what lies behind them. They are front-side
       // materials, which the raycaster honours: the walls the corner view looks through (back faces) do not block.
       const walls = scene.children.filter((c) => (SURFACE_NAMES as readonly string[]).includes(c.name));
-      const targets = [...walls, ...hardware.group.children.filter((c) => c.name.startsWith('module:')), ...objects.group.children.filter((c) => c.name === OBJECTS_MESH_NAME && c.visible)];
+      const targets = [...walls, ...hardware.moduleMeshes(), ...objects.group.children.filter((c) => c.name === OBJECTS_MESH_NAME && c.visible)];
       const hit = raycaster.intersectObjects(targets, false)[0];
       if (!hit) return null;
       if (hit.object.name === OBJECTS_MESH_NAME) {

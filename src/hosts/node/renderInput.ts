@@ -56,7 +56,7 @@ export function loadRenderInput(path: string, access: SceneFileAccess = {}): Ren
   const isConfiguration = typeof data === 'object' && data !== null && (data as { format?: unknown }).format === SCENE_FILE_FORMAT;
   if (!isConfiguration) {
     const loaded = loadLightingSceneFile(path, access);
-    return { scene: loaded.scene, bakeScene: loaded.bakeScene, fixtures: fixturesFromScene(loaded.scene), kind: 'lighting-scene' };
+    return { scene: loaded.scene, bakeScene: loaded.bakeScene, fixtures: fixturesFromScene(loaded.scene, loaded.bakeScene.luminaires), kind: 'lighting-scene' };
   }
   const config = deserializeConfiguration(text, defaultCatalog, source);
   const scene = toLightingScene(config, defaultCatalog);
@@ -70,5 +70,5 @@ export function loadRenderInput(path: string, access: SceneFileAccess = {}): Ren
   } catch (error) {
     throw error instanceof SceneObjectError ? new LightingSceneError(`${source}: ${error.message}`) : error;
   }
-  return { scene, bakeScene: objects ? { ...bakeScene, objects } : bakeScene, fixtures: fixturesFromConfiguration(config, defaultCatalog), kind: 'configuration' };
+  return { scene, bakeScene: objects ? { ...bakeScene, objects } : bakeScene, fixtures: fixturesFromConfiguration(config, defaultCatalog, new Map(scene.luminaires.map((l, i) => [l.id ?? '', bakeScene.luminaires[i]]))), kind: 'configuration' };
 }

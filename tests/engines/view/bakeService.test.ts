@@ -237,6 +237,27 @@ describe('createBakeService on a real engine (headless-gl)', () => {
     expect(page.listeners).toBe(0);
   });
 
+  it('luminaireWeights: the scene\'s dimming × colour, with the overlay, and during a crossfade (1 − e)·from + e·scene (the glow follows them)', () => {
+    const q = manualQueue();
+    const { s, dispose } = service(fakePage(), q);
+    try {
+      expect(s.luminaireWeights()).toBeNull();
+      const coloured: BakeScene = { ...scene, luminaires: [{ ...scene.luminaires[0], dimming: 0.5, color: [1, 0.8, 0.6] }, scene.luminaires[1]] };
+      s.setScene(coloured);
+      expect(s.luminaireWeights()).toEqual([[0.5, 0.4, 0.3], [1, 1, 1]]);
+      s.setOverlay((sc) => ({ ...sc, luminaires: sc.luminaires.map((l) => ({ ...l, dimming: 0 })) }));
+      expect(s.luminaireWeights()).toEqual([[0, 0, 0], [0, 0, 0]]);
+      s.setOverlay(null);
+      s.setFade({ from: (sc) => ({ ...sc, luminaires: sc.luminaires.map((l) => ({ ...l, dimming: 1, color: [1, 1, 1] as [number, number, number] })) }), e: 0.25 });
+      const w = s.luminaireWeights()!;
+      [0.75 + 0.25 * 0.5, 0.75 + 0.25 * 0.4, 0.75 + 0.25 * 0.3].forEach((v, k) => expect(w[0][k]).toBeCloseTo(v, 12));
+      expect(w[1]).toEqual([1, 1, 1]);
+      s.setFade(null);
+    } finally {
+      dispose();
+    }
+  });
+
   it('a new scene replaces the pending work: groups of the old scene not yet baked never are', () => {
     const page = fakePage();
     const q = manualQueue(true);

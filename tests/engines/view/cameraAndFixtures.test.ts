@@ -6,7 +6,9 @@ import { toLightingScene } from '../../../src/core/model/toLightingScene';
 import { createConfiguratorStore } from '../../../src/core/store/createConfiguratorStore';
 import { cameraPreset, CAMERA_PRESETS, parseCameraSpec } from '../../../src/engines/view/cameraPresets';
 import { suspensionPoints } from '../../../src/core/model/suspensionPoints';
-import { fixturesFromConfiguration, MODULE_HEIGHT, RAIL_HEIGHT } from '../../../src/engines/view/fixtures';
+import { aimedOrientation } from '../../../src/core/model/aim';
+import { fixturesFromConfiguration, RAIL_HEIGHT } from '../../../src/engines/view/fixtures';
+import { modelHeight } from '../../../src/engines/view/luminaires/luminaireDimensions';
 
 const room = { width: 5, height: 2.8, depth: 4 };
 
@@ -57,7 +59,7 @@ describe('camera presets and --camera', () => {
 });
 
 describe('fixtures', () => {
-  it('modules sit at the photometric centres the baker uses; rails above them; cables reach the ceiling', () => {
+  it('modules sit at the photometric centres the baker uses, turned as the baker turns them; rails above the tallest model; cables reach the ceiling', () => {
     const store = createConfiguratorStore({ catalog: defaultCatalog, initial: createConfiguration() });
     expect(store.getState().dispatch('placePreset', { presetId: 'corner-l' })).toEqual({ ok: true });
     const config = store.getState().config;
@@ -66,18 +68,39 @@ describe('fixtures', () => {
     expect(f.modules.map((m) => m.id)).toEqual(scene.luminaires.map((l) => l.id));
     f.modules.forEach((m, i) => {
       expect(m.centre).toEqual(scene.luminaires[i].position);
-      expect(m.heading).toBe(scene.luminaires[i].yaw);
+      const { yaw, pitch, roll } = scene.luminaires[i];
+      expect(m.orientation).toEqual({ yaw, pitch, roll });
     });
     const y = scene.luminaires[0].position[1];
+    // The rail's underside clears the tallest model (the spot's yoke and a 2 cm stem).
+    const drop = Math.max(...f.modules.map((m) => modelHeight({ kind: m.kind, opening: null, length: m.length })));
+    expect(f.modules.map((m) => m.kind)).toContain('spot');
     expect(f.rails).toHaveLength(config.systems[0].rails.length);
-    for (const r of f.rails) expect(r.start[1]).toBeCloseTo(y + MODULE_HEIGHT + RAIL_HEIGHT / 2, 12);
+    expect(f.railWidth).toBe(defaultCatalog.rail.width);
+    for (const r of f.rails) expect(r.start[1]).toBeCloseTo(y + drop + RAIL_HEIGHT / 2, 12);
+    for (const m of f.modules) expect(m.mount).toBeCloseTo(drop, 12);
     // Cables at the fixing points the bill of materials counts (spacing and overhang rules), ceiling to rail top.
     const points = suspensionPoints(config.systems[0], defaultCatalog);
     expect(f.cables).toHaveLength(points.length);
     f.cables.forEach((c, i) => {
       expect(c.top).toEqual([points[i].plan[0], config.room.height, points[i].plan[1]]);
-      expect(c.bottom[1]).toBeCloseTo(y + MODULE_HEIGHT + RAIL_HEIGHT, 12);
+      expect(c.bottom[1]).toBeCloseTo(y + drop + RAIL_HEIGHT, 12);
     });
+    // The corner connector's sleeve: its two arms (systemElementTree), at the rails' height.
+    expect(f.connectors).toHaveLength(2);
+    for (const c of f.connectors) expect(c.y).toBe(f.rails[0].start[1]);
+  });
+
+  it('an aimed module keeps the rail heading and takes the lighting scene\'s orientation', () => {
+    const store = createConfiguratorStore({ catalog: defaultCatalog, initial: createConfiguration() });
+    expect(store.getState().dispatch('placePreset', { presetId: 'corner-l' })).toEqual({ ok: true });
+    const c0 = store.getState().config;
+    const m = c0.systems[0].rails[0].modules[0];
+    const aim = { rotation: 30, tilt: 40 };
+    const config = { ...c0, systems: [{ ...c0.systems[0], rails: [{ ...c0.systems[0].rails[0], modules: [{ ...m, aim }, ...c0.systems[0].rails[0].modules.slice(1)] }, ...c0.systems[0].rails.slice(1)] }] };
+    const f = fixturesFromConfiguration(config, defaultCatalog);
+    expect(f.modules[0].orientation).toEqual(aimedOrientation(f.modules[0].heading, 0, aim));
+    expect(f.modules[0].orientation.pitch).toBe(40);
   });
 
   it('a ceiling-surface system: modules at the mount drop, rails under the ceiling, no cables', () => {

@@ -1,4 +1,4 @@
-/** The pure parts of the room view: surface quads, hardware boxes, the shader's level array, presentMaps. */
+/** The pure parts of the room view: surface quads, the track's pieces, the shader's level array, presentMaps. */
 import { describe, expect, it } from 'vitest';
 import { IDENTITY3 } from '../../../src/engines/view/cat16';
 import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../../src/core/model/lightingScene';
@@ -6,8 +6,8 @@ import { surfaceLayouts, texelCentre } from '../../../src/engines/bake/surfaceLa
 import { emptyLitMaps } from '../../../src/engines/relight/relightMaps';
 import { autoExposure } from '../../../src/engines/view/autoExposure';
 import { luxLevels, MAX_LEVELS, shaderLevels } from '../../../src/engines/view/falseColorScale';
-import { MODULE_HEIGHT, RAIL_HEIGHT } from '../../../src/engines/view/fixtures';
-import { hardwareBoxes } from '../../../src/engines/view/hardwareBoxes';
+import { RAIL_HEIGHT } from '../../../src/engines/view/fixtures';
+import { trackPieces } from '../../../src/engines/view/luminaires/trackParts';
 import { luxScaleTop } from '../../../src/engines/view/luxScaleTop';
 import { ev100FromExposure } from '../../../src/engines/view/photographicExposure';
 import { presentMaps } from '../../../src/engines/view/presentMaps';
@@ -38,31 +38,32 @@ describe('surfaceQuad', () => {
   });
 });
 
-describe('hardwareBoxes', () => {
-  it('rails along their run, modules on their photometric centre (turned by heading), cables ceiling to rail, none of zero length', () => {
-    const boxes = hardwareBoxes({
+describe('trackPieces', () => {
+  it('a rail is a U-channel of the catalog width and RAIL_HEIGHT along its run; a cable a wire from ceiling to rail top with canopy and gripper; none of zero length', () => {
+    const pieces = trackPieces({
       rails: [{ start: [1, 2.2, 1], end: [1, 2.2, 3] }],
-      modules: [
-        { id: 'm1', centre: [1, 2.1, 1.5], heading: 90, length: 0.3, on: true },
-        { id: 'm2', centre: [1, 2.1, 2.5], heading: 0, length: 0.02, on: false },
-      ],
+      railWidth: 0.05,
+      connectors: [],
+      modules: [],
       cables: [
         { top: [1, 2.5, 1], bottom: [1, 2.22, 1] },
         { top: [1, 2.5, 3], bottom: [1, 2.5, 3] },
       ],
     });
-    expect(boxes.map((b) => b.part)).toEqual(['rail', 'moduleOn', 'moduleOff', 'cable']);
-    const [rail, m1, m2, cable] = boxes;
-    expect(rail.size[0]).toBeCloseTo(2, 12);
-    expect(rail.size.slice(1)).toEqual([RAIL_HEIGHT, 0.05]);
-    expect(rail.position).toEqual([1, 2.2, 2]);
-    expect(rail.yaw).toBeCloseTo(-Math.PI / 2, 12); // local x turned onto world +z
-    expect(m1).toMatchObject({ name: 'module:m1', yaw: Math.PI / 2 });
-    expect(m1.size[0]).toBeCloseTo(0.294, 12);
-    expect(m1.position[1]).toBeCloseTo(2.1 + MODULE_HEIGHT / 2, 12);
-    expect(m2.size[0]).toBe(0.03); // never thinner than 3 cm
-    expect(cable.size[1]).toBeCloseTo(0.28, 12);
-    expect(cable.position[1]).toBeCloseTo(2.36, 12);
+    expect(pieces.map((p) => p.role)).toEqual(['housing', 'housing', 'housing', 'cable', 'housing', 'cable']);
+    const box = (k: number) => {
+      pieces[k].geometry.computeBoundingBox();
+      return pieces[k].geometry.boundingBox!;
+    };
+    const rail = box(0).union(box(1)).union(box(2));
+    // Turned onto world +z: 2 m along z, 50 mm across x, RAIL_HEIGHT tall round y = 2.2.
+    expect(rail.max.z - rail.min.z).toBeCloseTo(2, 6);
+    expect(rail.max.x - rail.min.x).toBeCloseTo(0.05, 6);
+    expect(rail.max.y - rail.min.y).toBeCloseTo(RAIL_HEIGHT, 6);
+    expect((rail.max.y + rail.min.y) / 2).toBeCloseTo(2.2, 6);
+    const wire = box(3);
+    expect(wire.max.y - wire.min.y).toBeCloseTo(0.28, 6);
+    expect(wire.max.z - wire.min.z).toBeCloseTo(0.002, 6);
   });
 });
 
