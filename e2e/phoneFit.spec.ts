@@ -1,0 +1,106 @@
+import { expect, test, type Page } from '@playwright/test';
+
+// Every language fits every phone (issue 27, docs/accessibility.md "Narrow phones"): the header
+// and the bottom bar of the plan, in the standalone app and in the shop embed, at the narrowest
+// phones we support, in the languages with the longest words. Touch, springs skipped.
+test.use({ hasTouch: true, isMobile: true, reducedMotion: 'reduce' });
+
+const PHONES = [
+  { width: 360, height: 640 },
+  { width: 375, height: 667 },
+];
+const LANGUAGES = ['de', 'fr', 'it'] as const;
+const EMBED_LOCALE = { de: 'de-DE', fr: 'fr-CH', it: 'it-CH' } as const;
+
+interface Overflow {
+  what: string;
+  left: number;
+  right: number;
+  top: number;
+  bottom: number;
+}
+
+/**
+ * Every button, select, input and link of the header and the bottom bar whose box is not fully
+ * inside the viewport (or is hidden by the bar's overflow), and the bars themselves when their
+ * content is wider than they are.
+ */
+async function outside(page: Page, bars = '.luxbox .app-header, .luxbox .bottom-bar'): Promise<Overflow[]> {
+  return page.evaluate((bars) => {
+    const vw = document.documentElement.clientWidth;
+    const vh = window.innerHeight;
+    const out: Overflow[] = [];
+    for (const bar of document.querySelectorAll<HTMLElement>(bars)) {
+      const b = bar.getBoundingClientRect();
+      if (bar.scrollWidth > bar.clientWidth) out.push({ what: `${bar.className} scrollWidth ${bar.scrollWidth} > ${bar.clientWidth}`, left: b.left, right: b.right, top: b.top, bottom: b.bottom });
+      for (const el of bar.querySelectorAll<HTMLElement>('button, select, input, a, .total, h1')) {
+        const r = el.getBoundingClientRect();
+        const cs = getComputedStyle(el);
+        if (cs.display === 'none' || cs.visibility === 'hidden') continue;
+        const name = `${el.tagName.toLowerCase()} ${el.dataset.testid ?? el.getAttribute('aria-label') ?? el.textContent?.trim()}`;
+        // Inside the viewport and inside its bar (a bar that clips with overflow hides what sticks out).
+        const inside = r.width > 0 && r.height > 0 && r.left >= -0.5 && r.right <= vw + 0.5 && r.top >= -0.5 && r.bottom <= vh + 0.5 && r.left >= b.left - 0.5 && r.right <= b.right + 0.5;
+        // Text that does not fit its own box (clipped or ellipsed label).
+        const clipped = el.scrollWidth > el.clientWidth + 1 && el.tagName !== 'SELECT' && el.tagName !== 'INPUT';
+        if (!inside || clipped) out.push({ what: `${name}${clipped ? ` text ${el.scrollWidth} > ${el.clientWidth}` : ''}`, left: Math.round(r.left), right: Math.round(r.right), top: Math.round(r.top), bottom: Math.round(r.bottom) });
+      }
+    }
+    return out;
+  }, bars);
+}
+
+/** The bars' controls that are touch targets smaller than 44 px (docs/accessibility.md). */
+async function smallTargets(page: Page): Promise<string[]> {
+  return page.evaluate(() =>
+    [...document.querySelectorAll<HTMLElement>('.luxbox .app-header button, .luxbox .app-header select, .luxbox .bottom-bar button')]
+      .filter((el) => getComputedStyle(el).display !== 'none')
+      .map((el) => ({ el, r: el.getBoundingClientRect() }))
+      .filter(({ r }) => r.width < 44 - 0.5 || r.height < 44 - 0.5)
+      .map(({ el, r }) => `${el.dataset.testid ?? el.getAttribute('aria-label')} ${r.width.toFixed(0)}×${r.height.toFixed(0)}`),
+  );
+}
+
+/** The bottom bar's buttons: each has an accessible name (its full label) even where the visible text is shortened. */
+async function unnamedTools(page: Page): Promise<string[]> {
+  return page.evaluate(() => [...document.querySelectorAll<HTMLElement>('.luxbox .bottom-bar button')].filter((b) => !(b.getAttribute('aria-label') ?? '').trim()).map((b) => b.dataset.testid ?? '?'));
+}
+
+for (const phone of PHONES) {
+  for (const lang of LANGUAGES) {
+    test.describe(`${phone.width} × ${phone.height}, ${lang}`, () => {
+      test.use({ viewport: phone });
+
+      test('app: header and bottom bar fit, with a system selected', async ({ page }) => {
+        await page.goto(`/?demo&lang=${lang}`);
+        await expect(page.getByTestId('plan')).toBeVisible();
+        await page.getByTestId('tool-select').tap();
+        await expect(page.locator('[data-testid^="move-"]').first()).toBeAttached();
+        expect(await outside(page)).toEqual([]);
+        expect(await smallTargets(page)).toEqual([]);
+        expect(await unnamedTools(page)).toEqual([]);
+        // The same in the 3D view, whose toggle reads "2D".
+        await page.getByTestId('tool-3d').tap();
+        await expect(page.getByTestId('back-2d')).toBeVisible();
+        expect(await outside(page)).toEqual([]);
+      });
+
+      test('shop embed: the configurator\'s header and bottom bar fit, with a system selected', async ({ page }) => {
+        await page.goto(`/embed.html?locale=${EMBED_LOCALE[lang]}`);
+        await expect(page.getByTestId('plan')).toBeVisible();
+        expect(await page.evaluate(() => window.shopDemo!.instance!.runAction('placePreset', { presetId: 'single' }))).toEqual({ ok: true });
+        await page.getByTestId('tool-select').tap();
+        await expect(page.locator('[data-testid^="move-"]').first()).toBeAttached();
+        await page.getByTestId('configurator-host').scrollIntoViewIfNeeded();
+        const host = (await page.getByTestId('configurator-host').boundingBox())!;
+        expect(host.x).toBeGreaterThanOrEqual(0);
+        expect(host.x + host.width).toBeLessThanOrEqual(phone.width);
+        // The shop page scrolls: each bar is checked where it is on screen.
+        for (const bar of ['.luxbox .app-header', '.luxbox .bottom-bar']) {
+          await page.locator(bar).scrollIntoViewIfNeeded();
+          expect(await outside(page, bar), bar).toEqual([]);
+        }
+        expect(await smallTargets(page)).toEqual([]);
+      });
+    });
+  }
+}
