@@ -41,7 +41,7 @@ async function outside(page: Page, bars = '.luxbox .app-header, .luxbox .bottom-
         // Inside the viewport and inside its bar (a bar that clips with overflow hides what sticks out).
         const inside = r.width > 0 && r.height > 0 && r.left >= -0.5 && r.right <= vw + 0.5 && r.top >= -0.5 && r.bottom <= vh + 0.5 && r.left >= b.left - 0.5 && r.right <= b.right + 0.5;
         // Text that does not fit its own box (clipped or ellipsed label).
-        const clipped = el.scrollWidth > el.clientWidth + 1 && el.tagName !== 'SELECT' && el.tagName !== 'INPUT';
+        const clipped = el.scrollWidth > el.clientWidth && el.tagName !== 'SELECT' && el.tagName !== 'INPUT';
         if (!inside || clipped) out.push({ what: `${name}${clipped ? ` text ${el.scrollWidth} > ${el.clientWidth}` : ''}`, left: Math.round(r.left), right: Math.round(r.right), top: Math.round(r.top), bottom: Math.round(r.bottom) });
       }
     }

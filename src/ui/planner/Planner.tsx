@@ -34,6 +34,7 @@ import { DEFAULT_VIEWPORT, PlannerController } from './PlannerController';
 import type { FootprintSource } from './footprintSource';
 import { requestFootprints } from './moduleFootprint';
 import { usePlannerKeys } from './usePlannerKeys';
+import { useFitCompact } from './useFitCompact';
 import { ScenePanel } from '../scenes/ScenePanel';
 import { scenePlayerFor } from '../scenes/createScenePlayer';
 import { mixLevels, outputLevels } from '../../core/model/sceneFade';
@@ -125,6 +126,10 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
   const fading = useSyncExternalStore(player.subscribe, () => player.getState().fading);
   const fadeLevelsShown = useMemo(() => (fading ? mixLevels(fading.fromLevels, outputLevels(fading.to), fading.e) : null), [fading]);
 
+  // The header's texts at full length where they fit, the drawer toggle as an icon where they do not.
+  const headerRef = useRef<HTMLElement>(null);
+  useFitCompact(headerRef);
+
   usePlanGestures(wrapRef, controller);
   usePlannerKeys(controller, mode === '2d');
   // Once opened, the 3D view stays mounted (hidden) behind the plan, so going back to 3D draws one
@@ -172,7 +177,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
   return (
     <div className="app-body">
       <PlanAnnouncer store={store} />
-      <header className="app-header">
+      <header ref={headerRef} className="app-header">
         <h1>luxbox</h1>
         <span className="room-label">{t('planner.roomSize', { width: config.room.width, depth: config.room.depth, height: config.room.height })}</span>
         <span className="spacer" />
@@ -180,8 +185,8 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
         <span className="total" data-testid="header-total" aria-label={t('planner.totalPrice')}>
           {format.money(bom.total, bom.currency)}
         </span>
-        <button type="button" className="btn panel-toggle" aria-expanded={panelOpen} onClick={() => ui.setState({ panelOpen: !panelOpen })}>
-          {panelOpen ? t('common.close') : t('planner.presetsToggle')}
+        <button type="button" className="btn panel-toggle" aria-expanded={panelOpen} aria-label={panelOpen ? t('common.close') : t('planner.presetsToggle')} title={panelOpen ? t('common.close') : t('planner.presetsToggle')} data-testid="panel-toggle" onClick={() => ui.setState({ panelOpen: !panelOpen })}>
+          <span className="toggle-text">{panelOpen ? t('common.close') : t('planner.presetsToggle')}</span>
         </button>
       </header>
       <div className="workspace">
