@@ -104,3 +104,50 @@ for (const phone of PHONES) {
     });
   }
 }
+
+test.describe('phone drawer, 375 × 667', () => {
+  test.use({ viewport: { width: 375, height: 667 } });
+
+  test('closing the drawer by its toggle, a tap beside it, or the Options button leaves nothing pressed; the next tap on Options opens it', async ({ page }) => {
+    await page.goto('/?demo&lang=de');
+    await expect(page.getByTestId('plan')).toBeVisible();
+    const optionsButton = page.getByTestId('tool-options');
+    const toggle = page.getByTestId('panel-toggle');
+    const drawer = page.getByRole('complementary');
+    const panel = page.getByTestId('options-panel');
+    /** aria-pressed and the look agree: the accent fill only while pressed. */
+    const looksPressed = () => optionsButton.evaluate((b) => getComputedStyle(b).backgroundColor === 'rgb(31, 95, 191)');
+    const expectClosed = async () => {
+      await expect(drawer).toBeHidden();
+      await expect(optionsButton).toHaveAttribute('aria-pressed', 'false');
+      await expect(toggle).toHaveAttribute('aria-expanded', 'false');
+      expect(await looksPressed()).toBe(false);
+    };
+    const open = async () => {
+      await optionsButton.tap();
+      await expect(panel).toBeVisible();
+      await expect(optionsButton).toHaveAttribute('aria-pressed', 'true');
+      await expect(toggle).toHaveAttribute('aria-expanded', 'true');
+      expect(await looksPressed()).toBe(true);
+    };
+    await expectClosed();
+    // 1. The header's toggle (✕ while open).
+    await open();
+    await toggle.tap();
+    await expectClosed();
+    // 2. A tap beside the drawer, on the veiled plan (the drawer leaves a strip on the left).
+    await open();
+    const box = (await drawer.boundingBox())!;
+    expect(box.x).toBeGreaterThan(20);
+    await page.touchscreen.tap(box.x / 2, 300);
+    await expectClosed();
+    // 3. Closed twice in a row by the toggle: each next tap on Options opens it (it used to toggle a hidden state and show nothing).
+    await open();
+    await toggle.tap();
+    await expectClosed();
+    await open();
+    // The drawer covers the bottom bar's Options button (x ≈ 130 of 375): the toggle is the way to close it from there.
+    await toggle.tap();
+    await expectClosed();
+  });
+});
