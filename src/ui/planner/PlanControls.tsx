@@ -7,7 +7,7 @@ import { ActionButton } from './ActionButton';
 import { DistributionButtons } from './DistributionButtons';
 import { GatedButton } from './GatedButton';
 import { RailLengthField } from './RailLengthField';
-import { CommitField } from './CommitField';
+import { CommitField } from '../shared/CommitField';
 import type { ActionGate } from './actionGate';
 import type { DetailLevel } from './detailLevel';
 import type { Selection } from '../../core/store/createConfiguratorStore';
