@@ -50,6 +50,9 @@ for (const { lang, device } of CASES) {
       // A placed system's on-plan x field: "1,5" in, "1,50" shown; "2.25" in the same field works too.
       await page.evaluate(() => window.luxbox!.runAction('placePreset', { presetId: 'single' }));
       await page.getByTestId('tool-select').click();
+      // On the phone the fields are folded behind one button (docs/planner.md, "On-plan fields on a phone").
+      const unfold = page.locator('[data-testid^="fields-toggle-"]');
+      if (await unfold.isVisible()) await unfold.click();
       const x = page.locator('[data-testid^="move-"] input').first();
       await expect(x).toHaveValue(/^\d+,\d\d$/);
       await x.fill('1,5');
