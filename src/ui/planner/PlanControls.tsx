@@ -104,7 +104,10 @@ function SystemLevelControls({ system, catalog, view, viewport, gate }: { system
   const first = rails[0];
   const n = first ? upNormal(view, first.start, first.end) : { nx: 0, ny: -1 };
   // Put the move fields on the side opposite the length fields, just off the system's start.
-  const movePos = { sx: anchor.sx - n.nx * 44, sy: anchor.sy - n.ny * 44 };
+  const at = { sx: anchor.sx - n.nx * 44, sy: anchor.sy - n.ny * 44 };
+  // On a small plan the group (fold button and fields) is kept inside the plan's width rather than cut off at its edge.
+  const half = (expanded ? MOVE_FIELD_BOX.w + TOGGLE_BOX.w : TOGGLE_BOX.w) / 2 + 4;
+  const movePos = compact && viewport.width > 2 * half ? { sx: Math.min(viewport.width - half, Math.max(half, at.sx)), sy: at.sy } : at;
   const toggle = compact && (
     <button
       type="button"
