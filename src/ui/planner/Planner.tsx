@@ -35,7 +35,7 @@ import type { FootprintSource } from './footprintSource';
 import { requestFootprints } from './moduleFootprint';
 import { usePlannerKeys } from './usePlannerKeys';
 import { useFitCompact } from './useFitCompact';
-import { ScenePanel } from '../scenes/ScenePanel';
+import { LazyScenePanel as ScenePanel } from '../scenes/LazyScenePanel';
 import { scenePlayerFor } from '../scenes/createScenePlayer';
 import { mixLevels, outputLevels } from '../../core/model/sceneFade';
 import { PlanAnnouncer } from './PlanAnnouncer';
