@@ -108,7 +108,7 @@ for (const phone of PHONES) {
 test.describe('phone drawer, 375 × 667', () => {
   test.use({ viewport: { width: 375, height: 667 } });
 
-  test('closing the drawer by its toggle, a tap beside it, or the Options button leaves nothing pressed; the next tap on Options opens it', async ({ page }) => {
+  test('closing the drawer by its toggle or a tap beside it leaves nothing pressed; the next tap on Options opens it', async ({ page }) => {
     await page.goto('/?demo&lang=de');
     await expect(page.getByTestId('plan')).toBeVisible();
     const optionsButton = page.getByTestId('tool-options');
