@@ -25,6 +25,11 @@ export interface UiState {
   optionsOpen: boolean;
   /** The side panel on narrow screens (always shown on wide ones). */
   panelOpen: boolean;
+  /**
+   * Whether the side panel is a drawer (a narrow box, below 900 px: the planner measures it). In a
+   * drawer the options are shown only while the drawer is open, so closing it closes them too.
+   */
+  drawer: boolean;
   /** A persistent message (e.g. a broken share link) until dismissed. */
   banner: (UiMessage & { canRestore: boolean }) | null;
   /** A short message (why a control is disabled); `seq` lets a repeated message re-trigger. */
@@ -48,18 +53,31 @@ export const DEFAULT_BRAND: Brand = { name: 'luxbox' };
 
 export type UiStore = StoreApi<UiState>;
 
+/** Whether the options are on screen: open, and not inside a closed drawer. */
+export function optionsShown(s: Pick<UiState, 'optionsOpen' | 'panelOpen' | 'drawer'>): boolean {
+  return s.optionsOpen && (s.panelOpen || !s.drawer);
+}
+
 export function createUiStore(initial: Partial<UiState> = {}): UiStore {
-  return createStore<UiState>()(() => ({
+  const store = createStore<UiState>()(() => ({
     phase: 'setup',
     mode: '2d',
     optionsOpen: false,
     panelOpen: false,
+    drawer: false,
     banner: null,
     status: null,
     shareLink: null,
     brand: DEFAULT_BRAND,
     ...initial,
   }));
+  // One rule for every way a drawer closes (its toggle, a tap beside it, an action that closes it
+  // to show the plan): the options close with it, so the Options button never stays pressed over
+  // a closed drawer and its next tap opens them again.
+  store.subscribe((s, prev) => {
+    if (s.drawer && s.optionsOpen && !s.panelOpen && (prev.panelOpen || !prev.drawer)) store.setState({ optionsOpen: false });
+  });
+  return store;
 }
 
 export function showStatus(ui: UiStore, text: string, coded?: Omit<UiMessage, 'text'>): void {

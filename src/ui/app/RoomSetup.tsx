@@ -8,6 +8,7 @@ import { useI18n } from '../i18n/useI18n';
 import { ENGLISH } from '../i18n/english';
 import type { MessageKey, Translate } from '../i18n/messageTypes';
 import type { Landmarks } from '../shared/landmarks';
+import { decimalFieldFormat, parseDecimal } from '../i18n/decimalInput';
 
 export interface RoomDimensions {
   width: number;
@@ -25,14 +26,13 @@ const FIELDS: { key: Field; labelKey: MessageKey; hintKey: MessageKey; nameKey: 
 
 /**
  * One field's message, or null when valid. The check is the model's withinRoomLimits, so the
- * form refuses exactly the rooms the model would refuse. Decimal commas are accepted because
- * many shoppers type "2,8".
+ * form refuses exactly the rooms the model would refuse. "2,8" and "2.8" are both accepted in
+ * every language (parseDecimal, docs/i18n.md "Decimal input").
  */
 export function roomFieldError(key: Field, raw: string, t: Translate = ENGLISH.t): string | null {
-  const text = raw.trim().replace(',', '.');
   const field = t(FIELDS.find((f) => f.key === key)!.nameKey);
-  if (text === '') return t('app.roomFieldEmpty', { field });
-  const v = Number(text);
+  if (raw.trim() === '') return t('app.roomFieldEmpty', { field });
+  const v = parseDecimal(raw);
   if (!Number.isFinite(v)) return t('app.roomFieldNotNumber', { field, value: raw.trim() });
   const { min, max } = ROOM_LIMITS[key];
   if (!withinRoomLimits(key, v)) return t('app.roomFieldRange', { field, min, max });
@@ -59,7 +59,7 @@ export function RoomSetup({ initial, onSubmit, onDemo, onResume, landmarks = 're
   const id = useId();
   const { t, format } = useI18n();
   // Shown with the locale's decimal separator ("2,7" in German); both separators are accepted back.
-  const shown = (v: number) => format.number(v, { useGrouping: false, maximumFractionDigits: 3 });
+  const shown = (v: number) => format.number(v, decimalFieldFormat({ max: 3 }));
   const [values, setValues] = useState<Record<Field, string>>(() => ({
     width: shown(initial?.width ?? DEFAULT_ROOM.width),
     depth: shown(initial?.depth ?? DEFAULT_ROOM.depth),
@@ -88,7 +88,7 @@ export function RoomSetup({ initial, onSubmit, onDemo, onResume, landmarks = 're
           e.preventDefault();
           setTouched({ width: true, depth: true, height: true });
           if (!valid) return;
-          const num = (k: Field) => Number(values[k].trim().replace(',', '.'));
+          const num = (k: Field) => parseDecimal(values[k]);
           onSubmit({ width: num('width'), depth: num('depth'), height: num('height'), reflectance });
         }}
       >

@@ -3,7 +3,7 @@ import type { Catalog } from '../../core/model/catalogSchema';
 import type { LightSystem } from '../../core/model/configuration';
 import { suspensionCoordinates } from '../../core/model/suspensionPoints';
 import type { ActionGate } from './actionGate';
-import { CommitField } from './CommitField';
+import { CommitField } from '../shared/CommitField';
 import { GatedButton } from './GatedButton';
 import { OptionChips } from './OptionChips';
 import { useI18n } from '../i18n/useI18n';

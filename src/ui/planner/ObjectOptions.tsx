@@ -6,7 +6,7 @@ import { findObjectFinish } from '../../core/model/furniture/objectFinishes';
 import { sourceMesh, sourceName } from '../../core/model/objectGeometry';
 import { positionBounds } from '../../core/mesh/triangleMesh';
 import type { ActionGate } from './actionGate';
-import { CommitField } from './CommitField';
+import { CommitField } from '../shared/CommitField';
 import { itemDimensions } from './FurniturePanel';
 import { GatedButton } from './GatedButton';
 import { ObjectFinishSelect } from './ObjectFinishSelect';

@@ -1,4 +1,4 @@
-import type { CSSProperties, ReactNode } from 'react';
+import { useState, type CSSProperties, type ReactNode } from 'react';
 import type { Catalog } from '../../core/model/catalogSchema';
 import type { Configuration, LightSystem } from '../../core/model/configuration';
 import { isFreeRail } from '../../core/model/freePositions';
@@ -7,7 +7,7 @@ import { ActionButton } from './ActionButton';
 import { DistributionButtons } from './DistributionButtons';
 import { GatedButton } from './GatedButton';
 import { RailLengthField } from './RailLengthField';
-import { CommitField } from './CommitField';
+import { CommitField } from '../shared/CommitField';
 import type { ActionGate } from './actionGate';
 import type { DetailLevel } from './detailLevel';
 import type { Selection } from '../../core/store/createConfiguratorStore';
@@ -41,6 +41,15 @@ const MIN_RAIL_PX_FOR_FIELD = 110;
 /** Approximate on-screen sizes of the fields, for keeping them from covering each other. */
 const MOVE_FIELD_BOX = { w: 170, h: 50 };
 const LENGTH_FIELD_BOX = { w: 104, h: 50 };
+
+/**
+ * A plan whose short side is below this (px: a phone, upright or on its side) gets the selected
+ * system's position and length fields behind one 44 px button instead of over the plan
+ * (docs/planner.md, "On-plan fields on a phone").
+ */
+export const COMPACT_PLAN_PX = 520;
+/** The expand/collapse button in front of the move fields on a compact plan. */
+const TOGGLE_BOX = { w: 48, h: 50 };
 
 type Box = { sx: number; sy: number; w: number; h: number };
 const overlaps = (a: Box, b: Box) => Math.abs(a.sx - b.sx) * 2 < a.w + b.w && Math.abs(a.sy - b.sy) * 2 < a.h + b.h;
@@ -87,34 +96,63 @@ function visible(p: { sx: number; sy: number }, viewport: Viewport): boolean {
 /** Figure 6: red fields move the system (anchor x, z), blue fields set each rail's length. */
 function SystemLevelControls({ system, catalog, view, viewport, gate }: { system: LightSystem; catalog: Catalog; view: PlanView; viewport: Viewport; gate: ActionGate }) {
   const { t } = useI18n();
+  // On a phone the fields stay folded behind one button until asked for (PlanControls keys this by system: a new selection folds them again).
+  const compact = Math.min(viewport.width, viewport.height) < COMPACT_PLAN_PX;
+  const [expanded, setExpanded] = useState(false);
   const rails = railPlacements(system, catalog);
   const anchor = worldToScreen(view, { x: system.x, z: system.z });
   const first = rails[0];
   const n = first ? upNormal(view, first.start, first.end) : { nx: 0, ny: -1 };
   // Put the move fields on the side opposite the length fields, just off the system's start.
-  const movePos = { sx: anchor.sx - n.nx * 44, sy: anchor.sy - n.ny * 44 };
-  const placed: Box[] = [{ ...movePos, ...MOVE_FIELD_BOX }];
+  const at = { sx: anchor.sx - n.nx * 44, sy: anchor.sy - n.ny * 44 };
+  // On a small plan the group (fold button and fields) is kept inside the plan's width rather than cut off at its edge.
+  const half = (expanded ? MOVE_FIELD_BOX.w + TOGGLE_BOX.w : TOGGLE_BOX.w) / 2 + 4;
+  const movePos = compact && viewport.width > 2 * half ? { sx: Math.min(viewport.width - half, Math.max(half, at.sx)), sy: at.sy } : at;
+  const toggle = compact && (
+    <button
+      type="button"
+      className="action-button fields-toggle"
+      aria-expanded={expanded}
+      aria-label={expanded ? t('planner.hidePlacement') : t('planner.editPlacement')}
+      title={expanded ? t('planner.hidePlacement') : t('planner.editPlacement')}
+      data-testid={`fields-toggle-${system.id}`}
+      onClick={(e) => {
+        e.stopPropagation();
+        setExpanded(!expanded);
+      }}
+    >
+      <span aria-hidden>{expanded ? '✕' : '✎'}</span>
+    </button>
+  );
+  const folded = compact && !expanded;
+  const placed: Box[] = [{ ...movePos, ...MOVE_FIELD_BOX, w: MOVE_FIELD_BOX.w + (compact ? TOGGLE_BOX.w : 0) }];
   return (
     <>
+      {/* One element for both states, so the button keeps the focus when it unfolds or folds the fields. */}
       {visible(movePos, viewport) && (
-        <Positioned at={movePos} className="move-field" testId={`move-${system.id}`}>
-          <span aria-hidden>x</span>
-          <CommitField
-            label={t('planner.systemPositionX')}
-            value={system.x}
-            onCommit={(x) => gate.attempt('moveSystem', { systemId: system.id, x, z: system.z })}
-            onRefused={gate.explain}
-          />
-          <span aria-hidden>z</span>
-          <CommitField
-            label={t('planner.systemPositionZ')}
-            value={system.z}
-            onCommit={(z) => gate.attempt('moveSystem', { systemId: system.id, x: system.x, z })}
-            onRefused={gate.explain}
-          />
+        <Positioned at={movePos} className={folded ? 'fields-toggle-wrap' : 'move-field'} testId={folded ? `fields-${system.id}` : `move-${system.id}`}>
+          {toggle}
+          {!folded && (
+            <>
+              <span aria-hidden>x</span>
+              <CommitField
+                label={t('planner.systemPositionX')}
+                value={system.x}
+                onCommit={(x) => gate.attempt('moveSystem', { systemId: system.id, x, z: system.z })}
+                onRefused={gate.explain}
+              />
+              <span aria-hidden>z</span>
+              <CommitField
+                label={t('planner.systemPositionZ')}
+                value={system.z}
+                onCommit={(z) => gate.attempt('moveSystem', { systemId: system.id, x: system.x, z })}
+                onRefused={gate.explain}
+              />
+            </>
+          )}
         </Positioned>
       )}
-      {rails.map((r, i) => {
+      {!folded && rails.map((r, i) => {
         const mid = worldToScreen(view, { x: (r.start[0] + r.end[0]) / 2, z: (r.start[1] + r.end[1]) / 2 });
         const nn = upNormal(view, r.start, r.end);
         const pos = { sx: mid.sx + nn.nx * NEAR_PX, sy: mid.sy + nn.ny * NEAR_PX };
@@ -212,7 +250,7 @@ export function PlanControls(props: PlanControlsProps) {
   const systems = drawnSystems(config, drag);
   if (level === 'system') {
     const system = systems.find((s) => s.id === selection.systemId);
-    return <div className="plan-overlay">{system && <SystemLevelControls system={system} catalog={catalog} view={view} viewport={viewport} gate={gate} />}</div>;
+    return <div className="plan-overlay">{system && <SystemLevelControls key={system.id} system={system} catalog={catalog} view={view} viewport={viewport} gate={gate} />}</div>;
   }
   return (
     <div className="plan-overlay">

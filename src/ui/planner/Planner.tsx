@@ -39,7 +39,8 @@ import { DEFAULT_VIEWPORT, PlannerController } from './PlannerController';
 import type { FootprintSource } from './footprintSource';
 import { requestFootprints } from './moduleFootprint';
 import { usePlannerKeys } from './usePlannerKeys';
-import { ScenePanel } from '../scenes/ScenePanel';
+import { useFitCompact } from './useFitCompact';
+import { LazyScenePanel as ScenePanel } from '../scenes/LazyScenePanel';
 import { scenePlayerFor } from '../scenes/createScenePlayer';
 import { mixLevels, outputLevels } from '../../core/model/sceneFade';
 import { PlanAnnouncer } from './PlanAnnouncer';
@@ -60,6 +61,9 @@ export interface PlannerProps {
   /** 'page': the header is the page's banner and the plan its main (the standalone app); 'region': inside the embed's region. */
   landmarks?: Landmarks;
 }
+
+/** The box width (px) up to which the side panel is a drawer: `@container luxbox (max-width: 900px)` in app.css. */
+const DRAWER_MAX_WIDTH = 900;
 
 /** The main screen (configurator paper, fig. 6): the plan, side panel with presets and price, bottom bar. */
 export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare, shareNotice = null, footprints, landmarks = 'region' }: PlannerProps) {
@@ -129,6 +133,26 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
   const fading = useSyncExternalStore(player.subscribe, () => player.getState().fading);
   const fadeLevelsShown = useMemo(() => (fading ? mixLevels(fading.fromLevels, outputLevels(fading.to), fading.e) : null), [fading]);
 
+  // The header's texts at full length where they fit, the drawer toggle as an icon where they do not.
+  const headerRef = useRef<HTMLElement>(null);
+  useFitCompact(headerRef);
+
+  // Whether the side panel is a drawer: the same 900 px of the box as the container query in app.css.
+  const bodyRef = useRef<HTMLDivElement>(null);
+  useLayoutEffect(() => {
+    const el = bodyRef.current;
+    if (!el) return;
+    const measure = () => {
+      const drawer = el.getBoundingClientRect().width <= DRAWER_MAX_WIDTH;
+      if (ui.getState().drawer !== drawer) ui.setState({ drawer });
+    };
+    measure();
+    const ro = new ResizeObserver(measure);
+    ro.observe(el);
+    return () => ro.disconnect();
+  }, [ui]);
+  const closeDrawer = () => ui.setState({ panelOpen: false });
+
   usePlanGestures(wrapRef, controller);
   usePlannerKeys(controller, mode === '2d');
   // Once opened, the 3D view stays mounted (hidden) behind the plan, so going back to 3D draws one
@@ -174,9 +198,9 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
   // The plan, the 3D view and the bottom bar are the main landmark of a page; the side panel an aside beside it.
   const WorkArea = landmarks === 'page' ? 'main' : 'div';
   return (
-    <div className="app-body">
+    <div className="app-body" ref={bodyRef}>
       <PlanAnnouncer store={store} />
-      <header className="app-header">
+      <header ref={headerRef} className="app-header">
         <BrandMark ui={ui} />
         <span className="room-label">{t('planner.roomSize', { width: config.room.width, depth: config.room.depth, height: config.room.height })}</span>
         <span className="spacer" />
@@ -184,8 +208,8 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
         <span className="total" data-testid="header-total" aria-label={t('planner.totalPrice')}>
           {format.money(bom.total, bom.currency)}
         </span>
-        <button type="button" className="btn panel-toggle" aria-expanded={panelOpen} onClick={() => ui.setState({ panelOpen: !panelOpen })}>
-          {panelOpen ? t('common.close') : t('planner.presetsToggle')}
+        <button type="button" className="btn panel-toggle" aria-expanded={panelOpen} aria-label={panelOpen ? t('common.close') : t('planner.presetsToggle')} title={panelOpen ? t('common.close') : t('planner.presetsToggle')} data-testid="panel-toggle" onClick={() => (panelOpen ? closeDrawer() : ui.setState({ panelOpen: true }))}>
+          <span className="toggle-text">{panelOpen ? t('common.close') : t('planner.presetsToggle')}</span>
         </button>
       </header>
       <div className="workspace">
@@ -227,6 +251,8 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
           {(mode === '3d' || keep3d) && <LazyView3D store={store} loadPhotometry={footprints.loadPhotometry} onBack={() => ui.setState({ mode: '2d' })} visible={mode === '3d'} />}
           <BottomBar controller={controller} mode={mode} />
         </WorkArea>
+        {/* A tap beside the open drawer closes it (and only that: the plan under it is not touched). Keyboard users have the header's toggle. */}
+        {panelOpen && <div className="drawer-scrim" aria-hidden data-testid="drawer-scrim" onClick={closeDrawer} />}
         <aside ref={panelRef} className={`side-panel${panelOpen ? ' open' : ''}`} aria-label={t('planner.sidePanel')}>
           {optionsOpen && <OptionsPanel config={config} catalog={catalog} path={path} gate={gate} onClose={() => ui.setState({ optionsOpen: false })} footprints={footprints} aimMode={aimAtMode(store)} />}
           <PresetPanel

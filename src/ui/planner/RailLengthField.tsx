@@ -1,4 +1,4 @@
-import { CommitField } from './CommitField';
+import { CommitField } from '../shared/CommitField';
 import type { ActionGate } from './actionGate';
 import { useI18n } from '../i18n/useI18n';
 

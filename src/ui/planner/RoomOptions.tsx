@@ -1,7 +1,7 @@
 import './registerOptionsEnglish';
 import type { Room } from '../../core/model/configuration';
 import type { ActionGate } from './actionGate';
-import { CommitField } from './CommitField';
+import { CommitField } from '../shared/CommitField';
 import { OptionsSection } from './OptionsSection';
 import { useI18n } from '../i18n/useI18n';
 import type { MessageKey } from '../i18n/messageTypes';

@@ -4,7 +4,7 @@ import { MOUNTINGS, type LightSystem } from '../../core/model/configuration';
 import { allowedFeedPositions, driversBySize, feedLoads, formatWatts, sameFeedAt } from '../../core/model/feedLoads';
 import type { ActionGate } from './actionGate';
 import { ChainShapeOptions } from './ChainShapeOptions';
-import { CommitField } from './CommitField';
+import { CommitField } from '../shared/CommitField';
 import { GatedButton } from './GatedButton';
 import { OptionChips } from './OptionChips';
 import { OptionsSection } from './OptionsSection';

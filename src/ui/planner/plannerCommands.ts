@@ -1,6 +1,6 @@
 import { checkAction, type ActionName } from '../../core/model/actionDefinitions';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
-import type { UiStore } from '../../core/store/uiStore';
+import { optionsShown, type UiStore } from '../../core/store/uiStore';
 import { deleteTarget } from './deleteTarget';
 import type { KeySpec } from './keyChord';
 import { placementStep } from '../../core/model/freePositions';
@@ -226,8 +226,9 @@ export const PLANNER_COMMANDS: readonly PlannerCommand[] = [
     label: (c) => tr(c)('commands.options'),
     keys: [],
     disabledReason: always,
-    pressed: (c) => c.ui.getState().optionsOpen,
-    action: (c) => c.ui.setState((s) => ({ optionsOpen: !s.optionsOpen, panelOpen: !s.optionsOpen })),
+    // Pressed only while the options are on screen: in a closed drawer they are not (docs/planner.md, "Phone drawer").
+    pressed: (c) => optionsShown(c.ui.getState()),
+    action: (c) => c.ui.setState((s) => (optionsShown(s) ? { optionsOpen: false, panelOpen: false } : { optionsOpen: true, panelOpen: true })),
   },
   rotateCommand('rotate', 'commands.rotate', ['r'], ROTATE_STEP, OBJECT_ROTATE_STEP),
   rotateCommand('rotate-back', 'commands.rotateBack', ['Shift+r'], -ROTATE_STEP, -OBJECT_ROTATE_STEP),

@@ -1,8 +1,8 @@
 import { useCallback, useEffect, useState, useSyncExternalStore } from 'react';
 import { useStore } from 'zustand';
-import { FADE_LIMITS } from '../../core/model/lightScenes';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import { useI18n } from '../i18n/useI18n';
+import { decimalFieldFormat, parseDecimal } from '../i18n/decimalInput';
 import { translateCoded } from '../i18n/translateCoded';
 import { scenePlayerFor, type RecallResult, type TransportStop } from './createScenePlayer';
 import { useSceneKeys } from './useSceneKeys';
@@ -22,7 +22,8 @@ const focusOnMount = (input: HTMLInputElement | null) => input?.focus();
  * Every change is a store action (undoable); the fade itself is the scene player's.
  */
 export function ScenePanel({ store }: { store: ConfiguratorStore }) {
-  const { t, format } = useI18n();
+  const { t, format, locale } = useI18n();
+  const fadeShown = (seconds: number) => format.number(seconds, decimalFieldFormat({ max: 2 }));
   const scenes = useStore(store, (s) => s.config.lightScenes) ?? [];
   const player = scenePlayerFor(store);
   const playback = useSyncExternalStore(player.subscribe, player.getState);
@@ -115,17 +116,17 @@ export function ScenePanel({ store }: { store: ConfiguratorStore }) {
                 </button>
               )}
               <label className="scene-fade-field">
+                {/* Text with the locale's decimal mark ("1,5" in German), not type=number, which shows the browser's (docs/i18n.md, "Decimal input"). */}
                 <input
-                  type="number"
-                  min={FADE_LIMITS.min}
-                  max={FADE_LIMITS.max}
-                  step={0.5}
-                  defaultValue={s.fade}
-                  key={`${s.id}-${s.fade}`}
+                  inputMode="decimal"
+                  autoComplete="off"
+                  defaultValue={fadeShown(s.fade)}
+                  key={`${s.id}-${s.fade}-${locale}`}
                   aria-label={t('scenes.fadeLabel', { name: s.name })}
                   onBlur={(e) => {
-                    const v = Number(e.target.value);
-                    if (v !== s.fade && !act('setSceneFade', { sceneId: s.id, fade: v })) e.target.value = String(s.fade);
+                    const v = parseDecimal(e.target.value);
+                    if (v === s.fade) e.target.value = fadeShown(s.fade);
+                    else if (!Number.isFinite(v) || !act('setSceneFade', { sceneId: s.id, fade: v })) e.target.value = fadeShown(s.fade);
                   }}
                   onKeyDown={(e) => {
                     if (e.key === 'Enter') (e.target as HTMLInputElement).blur();

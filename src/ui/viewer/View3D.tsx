@@ -25,6 +25,7 @@ import type { BakeFeed, ResolvedScene } from './startBakeFeed';
 import { aimEvents, SpotlightControls } from './SpotlightControls';
 import { INITIAL_CAMERA_MODE, nextCameraMode, presetPressed, type CameraMode, type CameraModeEvent } from './cameraMode';
 import './viewer.css';
+import { CommitField } from '../shared/CommitField';
 import { useI18n } from '../i18n/useI18n';
 import type { MessageKey } from '../i18n/messageTypes';
 import { viewerErrorText } from './viewerErrorText';
@@ -368,7 +369,8 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
         <IlluminanceTable floor={floor} plane={plane.on ? { height: plane.height, stats: planeStats } : null} />
         <label className="viewer3d-field viewer3d-inline">
           <input type="checkbox" checked={plane.on} onChange={(e) => setPlane({ ...plane, on: e.target.checked })} data-testid="plane-on" /> {t('view3d.workPlaneAt')}
-          <input type="number" min={0.1} max={maxPlane} step={0.05} value={plane.height} onChange={(e) => { const h = Number(e.target.value); if (Number.isFinite(h) && h >= 0.1 && h <= maxPlane) setPlane({ ...plane, height: h }); }} aria-label={t('view3d.workPlaneHeight')} /> m
+          {/* In the locale's format ("0,75" in German), committed on Enter or blur; a height outside 0.1 m … ceiling − 0.1 m goes to the nearest one allowed. */}
+          <CommitField label={t('view3d.workPlaneHeight')} value={plane.height} onCommit={(h) => (setPlane({ ...plane, height: Math.min(maxPlane, Math.max(0.1, h)) }), null)} onRefused={() => undefined} testId="plane-height" /> m
         </label>
         <PhotometryWarnings notes={photometryNotes} testId="view3d-photometry-warnings" collapsed />
         {modules.length > 0 && (

@@ -105,3 +105,38 @@ describe('keys and buttons run the same commands', () => {
     expect(t.ui.getState().mode).toBe('3d');
   });
 });
+
+describe('the Options button and the phone drawer (issue 27)', () => {
+  const options = plannerCommand('options');
+  it('in a drawer: closing the drawer by any way closes the options, and the button is pressed exactly while they are on screen', () => {
+    const t = new TestPlanner();
+    t.ui.setState({ drawer: true });
+    const pressed = () => options.pressed!(t.controller);
+    expect(pressed()).toBe(false);
+    t.controller.command('options');
+    expect(t.ui.getState()).toMatchObject({ optionsOpen: true, panelOpen: true });
+    expect(pressed()).toBe(true);
+    // The header's toggle, a tap beside the drawer, a placed preset: each just closes the drawer.
+    t.ui.setState({ panelOpen: false });
+    expect(t.ui.getState().optionsOpen).toBe(false);
+    expect(pressed()).toBe(false);
+    // The next tap opens them again (it used to toggle a hidden state and show nothing).
+    t.controller.command('options');
+    expect(t.ui.getState()).toMatchObject({ optionsOpen: true, panelOpen: true });
+    t.controller.command('options');
+    expect(t.ui.getState()).toMatchObject({ optionsOpen: false, panelOpen: false });
+    expect(pressed()).toBe(false);
+  });
+
+  it('on a wide screen (no drawer) the options stay open when the drawer flag closes, and the box narrowing closes them', () => {
+    const t = new TestPlanner();
+    t.controller.command('options');
+    t.ui.setState({ panelOpen: false });
+    expect(t.ui.getState().optionsOpen).toBe(true);
+    expect(options.pressed!(t.controller)).toBe(true);
+    // The window narrows below 900 px: the options were in the side panel, which is now a closed drawer.
+    t.ui.setState({ drawer: true });
+    expect(t.ui.getState().optionsOpen).toBe(false);
+    expect(options.pressed!(t.controller)).toBe(false);
+  });
+});

@@ -37,6 +37,8 @@ export default {
   addFurniture: '{name} hinzufügen, {size}',
   systemPositionX: 'Systemposition x (m)',
   systemPositionZ: 'Systemposition z (m)',
+  editPlacement: 'Position und Längen bearbeiten',
+  hidePlacement: 'Positions- und Längenfelder ausblenden',
   addModuleToRail: '{name} zu Schiene {n} hinzufügen',
   moduleSettings: 'Moduleinstellungen: {name}, {cct} K',
   planLabel: 'Raumplan, {width} mal {depth} m, {systems}, {objects}',

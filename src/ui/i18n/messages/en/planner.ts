@@ -35,6 +35,8 @@ export default {
   addFurniture: 'Add {name}, {size}',
   systemPositionX: 'System position x (m)',
   systemPositionZ: 'System position z (m)',
+  editPlacement: 'Edit position and lengths',
+  hidePlacement: 'Hide the position and length fields',
   addModuleToRail: 'Add {name} to rail {n}',
   moduleSettings: 'Module settings: {name}, {cct} K',
   planLabel: 'Room plan, {width} by {depth} m, {systems}, {objects}',

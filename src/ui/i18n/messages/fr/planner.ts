@@ -37,6 +37,8 @@ export default {
   addFurniture: 'Ajouter {name}, {size}',
   systemPositionX: 'Position du système x (m)',
   systemPositionZ: 'Position du système z (m)',
+  editPlacement: 'Modifier la position et les longueurs',
+  hidePlacement: 'Masquer les champs de position et de longueur',
   addModuleToRail: 'Ajouter {name} au rail {n}',
   moduleSettings: 'Réglages du module : {name}, {cct} K',
   planLabel: 'Plan de la pièce, {width} sur {depth} m, {systems}, {objects}',

@@ -37,6 +37,8 @@ export default {
   addFurniture: 'Aggiungi {name}, {size}',
   systemPositionX: 'Posizione del sistema x (m)',
   systemPositionZ: 'Posizione del sistema z (m)',
+  editPlacement: 'Modifica posizione e lunghezze',
+  hidePlacement: 'Nascondi i campi di posizione e lunghezza',
   addModuleToRail: 'Aggiungi {name} al binario {n}',
   moduleSettings: 'Impostazioni del modulo: {name}, {cct} K',
   planLabel: 'Pianta della stanza, {width} per {depth} m, {systems}, {objects}',

@@ -1,5 +1,6 @@
 import { useRef, useState } from 'react';
 import { useI18n } from '../i18n/useI18n';
+import { decimalFieldFormat, parseDecimal } from '../i18n/decimalInput';
 
 export interface CommitFieldProps {
   label: string;
@@ -16,14 +17,14 @@ export interface CommitFieldProps {
  * A numeric field that edits locally and commits on Enter or blur: one undoable action per
  * edit instead of one per keystroke. A refused or unparsable value snaps back to the model's
  * value and the reason is reported, so the field can never show a state the model rejected.
- * Decimal commas are accepted ("1,5").
+ * Shown in the UI locale ("1,50" in German); "1,5" and "1.5" are both accepted (parseDecimal, docs/i18n.md "Decimal input").
  */
 export function CommitField({ label, value, decimals = 2, onCommit, onRefused, testId }: CommitFieldProps) {
   const { t, format } = useI18n();
   const [draft, setDraft] = useState<string | null>(null);
   const cancelled = useRef(false);
   // In the UI's locale ("1,50" in German); typing either separator works, as parsing accepts both.
-  const shown = draft ?? format.number(value, { minimumFractionDigits: decimals, maximumFractionDigits: decimals, useGrouping: false });
+  const shown = draft ?? format.number(value, decimalFieldFormat(decimals));
 
   // Committing happens only on blur (Enter blurs), so a value is never committed twice.
   const commit = () => {
@@ -33,10 +34,9 @@ export function CommitField({ label, value, decimals = 2, onCommit, onRefused, t
       setDraft(null);
       return;
     }
-    const text = draft.trim().replace(',', '.');
     setDraft(null);
-    const v = Number(text);
-    if (text === '' || !Number.isFinite(v)) {
+    const v = parseDecimal(draft);
+    if (!Number.isFinite(v)) {
       onRefused(t('common.notANumber', { label, value: draft.trim() }));
       return;
     }
