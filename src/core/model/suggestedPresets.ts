@@ -16,7 +16,11 @@ export interface PresetSuggestion {
   readonly coverage: number;
 }
 
-/** The `count` best presets for an empty room of this size (fewer when fewer fit); `only` restricts (and orders ties by) the candidates. */
+/**
+ * The `count` best presets for an empty room of this size (fewer when fewer fit). `only` (a shop's
+ * own list, docs/embedding.md `firstRun.presets`): just those ids, in that order, leaving out the
+ * ones that do not fit.
+ */
 export function suggestedPresets(room: Pick<Room, 'width' | 'depth' | 'height'>, catalog: Catalog, count = 3, only?: readonly string[]): PresetSuggestion[] {
   const empty = createConfiguration({ width: room.width, depth: room.depth, height: room.height });
   const ids = only ?? catalog.presets.map((p) => p.id);
@@ -29,6 +33,6 @@ export function suggestedPresets(room: Pick<Room, 'width' | 'depth' | 'height'>,
     const coverage = ((b.maxX - b.minX) * (b.maxZ - b.minZ)) / (room.width * room.depth);
     out.push({ presetId, coverage, order });
   });
-  out.sort((a, b) => b.coverage - a.coverage || a.order - b.order);
+  if (!only) out.sort((a, b) => b.coverage - a.coverage || a.order - b.order);
   return out.slice(0, Math.max(0, count)).map(({ presetId, coverage }) => ({ presetId, coverage }));
 }

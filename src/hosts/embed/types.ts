@@ -63,6 +63,13 @@ export interface LuxboxOptions {
    * (the physical colour). The user can change it in the 3D panel.
    */
   adapt?: string;
+  /**
+   * The empty plan's first step (docs/embedding.md, "First run"): a sentence and the presets that fit
+   * the room best, one tap each. `false` hides it; `{ presets: ['corner-l', 'single'] }` offers the
+   * shop's own choice (in that order, those that fit the room, at most three); `{ presets: false }`
+   * keeps the sentence and the way to all presets without suggestions. Default: the best three.
+   */
+  firstRun?: false | { presets?: readonly string[] | false };
 }
 
 export interface LuxboxActionInfo {

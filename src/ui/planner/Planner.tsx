@@ -40,6 +40,9 @@ import { mixLevels, outputLevels } from '../../core/model/sceneFade';
 import { PlanAnnouncer } from './PlanAnnouncer';
 import type { Landmarks } from '../shared/landmarks';
 import { ShareLinkField } from './ShareLinkField';
+import { DisabledTip, DisabledTipContext, useDisabledTipState } from './disabledTip';
+import { FirstRunHint, type FirstRunOptions } from './FirstRunHint';
+import { remedyText } from './remedyText';
 
 export interface PlannerProps {
   store: ConfiguratorStore;
@@ -55,10 +58,12 @@ export interface PlannerProps {
   footprints: FootprintSource;
   /** 'page': the header is the page's banner and the plan its main (the standalone app); 'region': inside the embed's region. */
   landmarks?: Landmarks;
+  /** The empty plan's suggestions (docs/planner.md, "First run"): false hides them; `presets` picks the shop's own (docs/embedding.md). */
+  firstRun?: FirstRunOptions | false;
 }
 
 /** The main screen (configurator paper, fig. 6): the plan, side panel with presets and price, bottom bar. */
-export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare, shareNotice = null, footprints, landmarks = 'region' }: PlannerProps) {
+export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare, shareNotice = null, footprints, landmarks = 'region', firstRun }: PlannerProps) {
   const { t, format, language } = useI18n();
   const config = useStore(store, (s) => s.config);
   const catalog = useStore(store, (s) => s.catalog);
@@ -78,7 +83,22 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
   const view = usePlanView(controller);
   const drag = useSyncExternalStore(controller.subscribe, () => controller.drag);
   const { explain, run } = controller;
-  const gate = useMemo(() => createActionGate(config, catalog, run, explain, (r) => noticeText(t, language, catalog, r)), [config, catalog, run, explain, t, language]);
+  const runSteps = useCallback(
+    (steps: readonly { name: string; params: unknown }[]) => {
+      const r = store.getState().dispatchSteps(steps);
+      if (!r.ok) explain(noticeText(t, language, catalog, r));
+    },
+    [store, explain, t, language, catalog],
+  );
+  const gate = useMemo(
+    () => createActionGate(config, catalog, run, explain, (r) => noticeText(t, language, catalog, r), runSteps, (r) => remedyText(t, format, language, r)),
+    [config, catalog, run, explain, t, format, language, runSteps],
+  );
+  // A disabled control's reason at the control (docs/planner.md, "Reasons at the control"), placed in the workspace.
+  const workspaceRef = useRef<HTMLDivElement>(null);
+  const [tip, tipApi, closeTip] = useDisabledTipState(workspaceRef);
+  // The control it points at may move or change with the configuration: the tip goes.
+  useEffect(() => closeTip(), [config, mode, closeTip]);
   const path = selectionPath(config, selection);
   const select = useCallback((sel: Selection) => store.getState().select(sel), [store]);
   const bom = useMemo(() => billOfMaterials(config, catalog), [config, catalog]);
@@ -170,6 +190,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
   // The plan, the 3D view and the bottom bar are the main landmark of a page; the side panel an aside beside it.
   const WorkArea = landmarks === 'page' ? 'main' : 'div';
   return (
+    <DisabledTipContext.Provider value={tipApi}>
     <div className="app-body">
       <PlanAnnouncer store={store} />
       <header className="app-header">
@@ -184,7 +205,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
           {panelOpen ? t('common.close') : t('planner.presetsToggle')}
         </button>
       </header>
-      <div className="workspace">
+      <div className="workspace" ref={workspaceRef}>
         <WorkArea className="stage">
           {mode === '2d' ? (
             <div className="plan-wrap" ref={wrapRef} data-testid="plan" data-scale={view.scale.toFixed(3)} data-level={level} onDragOver={dragOver} onDrop={drop}>
@@ -212,8 +233,22 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
                   ⤢
                 </CommandButton>
               </div>
+              {config.systems.length === 0 && firstRun !== false && (
+                <FirstRunHint
+                  room={config.room}
+                  catalog={catalog}
+                  gate={gate}
+                  options={firstRun}
+                  onPlaced={placedNew}
+                  onShowAll={() => {
+                    ui.setState({ panelOpen: true });
+                    document.getElementById('presets-title')?.scrollIntoView({ block: 'start' });
+                  }}
+                />
+              )}
               {status && (
-                <div className="status-line" role="status" data-testid="status-line" key={status.seq}>
+                // While the tip at the control says it, the status line is not read out a second time.
+                <div className="status-line" role="status" aria-hidden={tip ? true : undefined} data-testid="status-line" key={status.seq}>
                   {noticeText(t, language, catalog, status)}
                 </div>
               )}
@@ -256,7 +291,9 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
             {shareLink && <ShareLinkField link={shareLink} notice={shareNotice} />}
           </section>
         </aside>
+        {tip && <DisabledTip key={tip.seq} tip={tip} onClose={closeTip} />}
       </div>
     </div>
+    </DisabledTipContext.Provider>
   );
 }

@@ -1,0 +1,36 @@
+import type { Remedy, RemedyPart } from '../../core/model/remedy';
+import type { Format } from '../i18n/createFormat';
+import type { Translate } from '../i18n/messageTypes';
+import type { Language } from '../i18n/languages';
+
+function partText(t: Translate, part: RemedyPart): string {
+  const p = part.params;
+  switch (part.code) {
+    case 'useDriver':
+      return t('planner.remedyUseDriver', { capacity: p.capacity });
+    case 'addFeed':
+      return t('planner.remedyAddFeed', { capacity: p.capacity });
+    case 'lengthenRail':
+      return t('planner.remedyLengthenRail', { rail: p.rail, length: p.length });
+    case 'setDistribution':
+      switch (p.distribution) {
+        case 'start':
+          return t('planner.remedyDistribution_start');
+        case 'end':
+          return t('planner.remedyDistribution_end');
+        case 'inside-centred':
+          return t('planner.remedyDistribution_inside-centred');
+        default:
+          return t('planner.remedyDistribution_outside-centred');
+      }
+  }
+}
+
+/** A remedy in the UI language: "Use the 321.6 W driver (+€28.00)", the price difference in the locale's currency format. */
+export function remedyText(t: Translate, format: Format, language: Language, remedy: Remedy): string {
+  // A later part continues the sentence: its capital goes, except in German, where nouns keep theirs.
+  const continued = (s: string) => (language === 'de' ? s : s.charAt(0).toLowerCase() + s.slice(1));
+  const action = remedy.parts.map((p) => partText(t, p)).reduce((first, second) => t('planner.remedyAnd', { first, second: continued(second) }));
+  const sign = remedy.priceDelta < 0 ? '−' : '+';
+  return t('planner.remedyPrice', { action, price: `${sign}${format.money(Math.abs(remedy.priceDelta), remedy.currency)}` });
+}
