@@ -19,11 +19,11 @@ export interface RemedyStep {
   readonly params: Record<string, unknown>;
 }
 
-export type RemedyPartCode = 'useDriver' | 'addFeed' | 'lengthenRail' | 'setDistribution';
+export type RemedyPartKind = 'useDriver' | 'addFeed' | 'lengthenRail' | 'setDistribution';
 
-/** One part of a remedy as worded: its code (docs/i18n.md, area `remedies`) and parameters. */
+/** One part of a remedy: its kind (the planner words it, planner.remedy* messages) and parameters. */
 export interface RemedyPart {
-  readonly code: RemedyPartCode;
+  readonly kind: RemedyPartKind;
   /** useDriver: capacity (W); addFeed: capacity, feedAt; lengthenRail: rail (1-based), length (m); setDistribution: distribution. */
   readonly params: MessageParams;
 }
@@ -31,7 +31,7 @@ export interface RemedyPart {
 /** What makes a refused action enabled: its steps, run in order as one undoable change. */
 export interface Remedy {
   readonly steps: readonly RemedyStep[];
-  /** What the steps do, in order, for wording them: "use the 321.6 W driver". */
+  /** What the steps do, in order (kinds worded by the UI, docs/i18n.md), for wording them: "use the 321.6 W driver". */
   readonly parts: readonly RemedyPart[];
   /** English: "use the 321.6 W driver (+28 EUR)". */
   readonly label: string;
@@ -105,10 +105,10 @@ function cheapest(state: Configuration, prefix: RemedyStep[], candidates: Candid
 
 const round2 = (x: number) => Math.round(x * 100) / 100;
 
-/** The English wording of a part (the UI words the codes in its language). */
+/** The English wording of a part (the planner words the kinds in its language, remedyText.ts). */
 export function remedyPartText(part: RemedyPart): string {
   const p = part.params;
-  switch (part.code) {
+  switch (part.kind) {
     case 'useDriver':
       return `use the ${p.capacity} W driver`;
     case 'addFeed':
@@ -122,7 +122,7 @@ export function remedyPartText(part: RemedyPart): string {
 
 function powerPart(c: Candidate): RemedyPart {
   const capacity = round2(c.capacity);
-  return c.kind === 'driver' ? { code: 'useDriver', params: { capacity } } : { code: 'addFeed', params: { capacity, feedAt: feedAtParam(c.at!) } };
+  return c.kind === 'driver' ? { kind: 'useDriver', params: { capacity } } : { kind: 'addFeed', params: { capacity, feedAt: feedAtParam(c.at!) } };
 }
 
 /**
@@ -160,11 +160,11 @@ export function remedyFor(state: Configuration, name: ActionName, params: Record
   const { step, maxLength } = catalog.rail;
   const fits: { steps: RemedyStep[]; parts: RemedyPart[] }[] = [];
   const others = DISTRIBUTIONS.filter((d) => d !== rail.distribution || isFreeRail(rail));
-  const distribute = (d: string): { step: RemedyStep; part: RemedyPart } => ({ step: { name: 'setDistribution', params: { railId: rail.id, distribution: d } }, part: { code: 'setDistribution', params: { distribution: d } } });
+  const distribute = (d: string): { step: RemedyStep; part: RemedyPart } => ({ step: { name: 'setDistribution', params: { railId: rail.id, distribution: d } }, part: { kind: 'setDistribution', params: { distribution: d } } });
   for (const d of others) fits.push({ steps: [distribute(d).step], parts: [distribute(d).part] });
   for (let k = 1; round2(rail.length + k * step) <= maxLength + 1e-9; k++) {
     const length = round2(rail.length + k * step);
-    const lengthen = { step: { name: 'setRailLength' as const, params: { railId: rail.id, length } }, part: { code: 'lengthenRail' as const, params: { rail: railIndex + 1, length } } };
+    const lengthen = { step: { name: 'setRailLength' as const, params: { railId: rail.id, length } }, part: { kind: 'lengthenRail' as const, params: { rail: railIndex + 1, length } } };
     fits.push({ steps: [lengthen.step], parts: [lengthen.part] });
     for (const d of others) fits.push({ steps: [lengthen.step, distribute(d).step], parts: [lengthen.part, distribute(d).part] });
   }

@@ -5,7 +5,7 @@ import type { Language } from '../i18n/languages';
 
 function partText(t: Translate, part: RemedyPart): string {
   const p = part.params;
-  switch (part.code) {
+  switch (part.kind) {
     case 'useDriver':
       return t('planner.remedyUseDriver', { capacity: p.capacity });
     case 'addFeed':
