@@ -35,8 +35,6 @@ export interface ConfiguratorState {
   readonly canRedo: boolean;
   /** Runs an action by name if enabled; returns the refusal otherwise (never throws for bad input). */
   dispatch(name: string, params?: unknown): DispatchResult;
-  /** Runs several actions as one undoable change (a remedy, docs/model.md "Remedies"): all or none; the first refusal comes back. */
-  dispatchSteps(steps: readonly { name: string; params?: unknown }[]): DispatchResult;
   isEnabled(name: string, params?: unknown): Enablement;
   /** Every action with its enablement for the params given per action name (missing params usually refuse). */
   listActions(paramsByName?: Partial<Record<ActionName, unknown>>): ActionListing[];
@@ -92,16 +90,6 @@ export function createConfiguratorStore(options: ConfiguratorStoreOptions): Conf
         const outcome = attemptAction(get().config, name, params, catalog);
         if (!outcome.ok) return outcome;
         commit(pushHistory(get().history, outcome.next));
-        return { ok: true };
-      },
-      dispatchSteps(steps) {
-        let next = get().config;
-        for (const step of steps) {
-          const outcome = attemptAction(next, step.name, step.params ?? {}, catalog);
-          if (!outcome.ok) return outcome;
-          next = outcome.next;
-        }
-        if (steps.length > 0) commit(pushHistory(get().history, next));
         return { ok: true };
       },
       isEnabled(name, params = {}) {

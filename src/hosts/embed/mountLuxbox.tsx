@@ -52,18 +52,6 @@ function currentHash(): string {
  * Mounts the configurator into `element` and returns its API (docs/embedding.md). Throws an
  * InputError subclass for bad options before touching the element.
  */
-/** `options.firstRun`: false, or `{ presets?: false | string[] }` naming presets of the catalog. */
-function checkFirstRun(firstRun: unknown, presetIds: readonly string[]): void {
-  if (firstRun === undefined || firstRun === false) return;
-  if (typeof firstRun !== 'object' || firstRun === null || Array.isArray(firstRun)) throw new EmbedOptionsError(`options.firstRun: ${JSON.stringify(firstRun)} is neither false nor an object`);
-  const presets = (firstRun as { presets?: unknown }).presets;
-  if (presets === undefined || presets === false) return;
-  if (!Array.isArray(presets)) throw new EmbedOptionsError(`options.firstRun.presets: ${JSON.stringify(presets)} is neither false nor a list of preset ids`);
-  presets.forEach((id, i) => {
-    if (typeof id !== 'string' || !presetIds.includes(id)) throw new EmbedOptionsError(`options.firstRun.presets[${i}]: ${JSON.stringify(id)} is not a preset of the catalog (${presetIds.join(', ')})`);
-  });
-}
-
 export function mountLuxbox(element: Element, options: LuxboxOptions = {}): LuxboxInstance {
   if (typeof Element === 'undefined' || !(element instanceof Element)) throw new EmbedOptionsError('mountLuxbox needs a DOM element to mount into');
   const catalog = resolveCatalog(options);
@@ -77,7 +65,6 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
   if (options.landmarks !== undefined && options.landmarks !== 'page' && options.landmarks !== 'region') {
     throw new EmbedOptionsError(`options.landmarks: ${JSON.stringify(options.landmarks)} is neither 'page' nor 'region'`);
   }
-  checkFirstRun(options.firstRun, catalog.presets.map((p) => p.id));
   const i18n = createI18n({ locale: checkLocale(options.locale), currency: catalog.currency, onLanguageChange: options.onLanguageChange });
   const storageKey = options.storageKey || null;
   const saved = storageKey ? readLocal(storageKey) : null;

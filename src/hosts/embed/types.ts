@@ -66,7 +66,7 @@ export interface LuxboxOptions {
   /**
    * The empty plan's first step (docs/embedding.md, "First run"): a sentence and the presets that fit
    * the room best, one tap each. `false` hides it; `{ presets: ['corner-l', 'single'] }` offers the
-   * shop's own choice (in that order, those that fit the room, at most three); `{ presets: false }`
+   * shop's own choice (in that order, those that fit the room, at most three; ids the catalog lacks are left out); `{ presets: false }`
    * keeps the sentence and the way to all presets without suggestions. Default: the best three.
    */
   firstRun?: false | { presets?: readonly string[] | false };

@@ -2,6 +2,7 @@ import type en from './messages/en/index';
 import type enLazy from './messages/en/lazy';
 import type enOptionsPanel from './messages/en/optionsPanel';
 import type enCore from './messages/en/core';
+import type enGuidance from './messages/en/guidance';
 
 /**
  * A message that depends on a count: the CLDR plural category of `params.count` picks the text
@@ -20,9 +21,10 @@ export interface PluralMessage {
  * English (the source) defines the keys; the message tree of every language has its shape. Its
  * 3D-only areas (messages/en/lazy.ts) are part of the type but arrive at run time with the 3D chunk,
  * the options panel's (messages/en/optionsPanel.ts) with the options panel's chunk,
- * its core-code areas (messages/en/core.ts) with the first other language loaded.
+ * its core-code areas (messages/en/core.ts) with the first other language loaded, the planner's
+ * guidance (messages/en/guidance.ts: first run, remedies) with the guidance chunk.
  */
-export type SourceMessages = typeof en & typeof enLazy & typeof enOptionsPanel & typeof enCore;
+export type SourceMessages = typeof en & typeof enLazy & typeof enOptionsPanel & typeof enCore & { guidance: typeof enGuidance };
 
 export type Area = keyof SourceMessages & string;
 

@@ -1,7 +1,7 @@
 import type { CSSProperties, ReactNode } from 'react';
 import { useI18n } from '../i18n/useI18n';
-import { useDisabledTip } from './disabledTip';
-import type { RemedyOffer } from './actionGate';
+import { REFUSED_EVENT, type RefusedDetail } from './disabledTip';
+import type { ActionName } from '../../core/model/actionDefinitions';
 
 export interface ActionButtonProps {
   /** Accessible name (also the visible label when no icon is given). */
@@ -16,8 +16,8 @@ export interface ActionButtonProps {
   style?: CSSProperties;
   pressed?: boolean;
   testId?: string;
-  /** What would make it enabled (a refused "+": a larger driver), offered in the tip at the control; asked only when the disabled button is pressed. */
-  remedy?: () => RemedyOffer | null;
+  /** The model action it runs: a planner's tip at the refused control offers what would make it enabled (a refused "+": a larger driver). */
+  action?: { name: ActionName; params: unknown };
 }
 
 /**
@@ -27,9 +27,8 @@ export interface ActionButtonProps {
  * hover-only information.
  */
 export function ActionButton(props: ActionButtonProps) {
-  const { label, disabledReason, onPress, onDisabledPress, children, className, style, pressed, testId, remedy } = props;
+  const { label, disabledReason, onPress, onDisabledPress, children, className, style, pressed, testId, action } = props;
   const { t } = useI18n();
-  const tip = useDisabledTip();
   const disabled = disabledReason !== null;
   return (
     <button
@@ -44,9 +43,10 @@ export function ActionButton(props: ActionButtonProps) {
       onClick={(e) => {
         e.stopPropagation();
         if (disabled) {
-          onDisabledPress?.(disabledReason);
-          // Where the finger is: the reason (and its remedy) in a tip at this control (docs/planner.md, "Reasons at the control").
-          tip?.show(disabledReason, e.currentTarget, remedy?.() ?? null);
+          // Where the finger is: a planner shows the reason (and its remedy) in a tip at this control and
+          // takes the event (docs/planner.md, "Reasons at the control"); elsewhere the status line explains.
+          const detail: RefusedDetail = { reason: disabledReason, action };
+          if (e.currentTarget.dispatchEvent(new CustomEvent(REFUSED_EVENT, { bubbles: true, cancelable: true, detail }))) onDisabledPress?.(disabledReason);
         } else onPress();
       }}
     >

@@ -1,3 +1,4 @@
+import './registerGuidanceEnglish';
 import { useMemo } from 'react';
 import type { Catalog } from '../../core/model/catalogSchema';
 import type { Room } from '../../core/model/configuration';
@@ -7,6 +8,7 @@ import type { ActionGate } from './actionGate';
 import { PresetThumbnail } from './PresetPanel';
 import { useI18n } from '../i18n/useI18n';
 import { localName } from '../i18n/localName';
+import type { UiStore } from '../../core/store/uiStore';
 
 /** What the shop chose for the first run (docs/embedding.md, `firstRun`): its own preset ids, none (false), or the best for the room (undefined). */
 export interface FirstRunOptions {
@@ -20,8 +22,8 @@ export interface FirstRunHintProps {
   options?: FirstRunOptions;
   /** After a suggestion was placed (the planner selects it). */
   onPlaced: () => void;
-  /** Opens the side panel's full preset list (the drawer on a phone). */
-  onShowAll: () => void;
+  /** "All layouts" opens the side panel's full preset list (the drawer on a phone). */
+  ui: UiStore;
 }
 
 /**
@@ -29,7 +31,7 @@ export interface FirstRunHintProps {
  * three presets that fit this room best (core suggestedPresets), each placed with one tap, and the
  * way to all presets. Shown on the plan while it holds no system.
  */
-export function FirstRunHint({ room, catalog, gate, options, onPlaced, onShowAll }: FirstRunHintProps) {
+export function FirstRunHint({ room, catalog, gate, options, onPlaced, ui }: FirstRunHintProps) {
   const { t, language } = useI18n();
   const only = options?.presets;
   // A shop's list is compared by its content: a new array with the same ids is the same choice.
@@ -42,9 +44,9 @@ export function FirstRunHint({ room, catalog, gate, options, onPlaced, onShowAll
   return (
     <div className="first-run" data-plan-control data-testid="first-run" role="group" aria-labelledby="first-run-title">
       <p id="first-run-title" className="first-run-title">
-        {t('planner.firstRunTitle')}
+        {t('guidance.firstRunTitle')}
       </p>
-      <p className="first-run-hint">{t('planner.firstRunHint')}</p>
+      <p className="first-run-hint">{t('guidance.firstRunHint')}</p>
       {suggestions.length > 0 && (
         <ul className="first-run-list">
           {suggestions.map(({ presetId }) => {
@@ -53,7 +55,7 @@ export function FirstRunHint({ room, catalog, gate, options, onPlaced, onShowAll
             return (
               <li key={presetId}>
                 <ActionButton
-                  label={t('planner.firstRunPlace', { name })}
+                  label={t('guidance.firstRunPlace', { name })}
                   disabledReason={gate.reason('placePreset', { presetId })}
                   onPress={() => {
                     gate.run('placePreset', { presetId });
@@ -70,8 +72,16 @@ export function FirstRunHint({ room, catalog, gate, options, onPlaced, onShowAll
           })}
         </ul>
       )}
-      <button type="button" className="btn btn-link" onClick={onShowAll} data-testid="first-run-all">
-        {t('planner.firstRunAll')}
+      <button
+        type="button"
+        className="btn btn-link"
+        onClick={() => {
+          ui.setState({ panelOpen: true });
+          document.getElementById('presets-title')?.scrollIntoView({ block: 'start' });
+        }}
+        data-testid="first-run-all"
+      >
+        {t('guidance.firstRunAll')}
       </button>
     </div>
   );

@@ -40,9 +40,8 @@ import { mixLevels, outputLevels } from '../../core/model/sceneFade';
 import { PlanAnnouncer } from './PlanAnnouncer';
 import type { Landmarks } from '../shared/landmarks';
 import { ShareLinkField } from './ShareLinkField';
-import { DisabledTip, DisabledTipContext, useDisabledTipState } from './disabledTip';
-import { FirstRunHint, type FirstRunOptions } from './FirstRunHint';
-import { remedyText } from './remedyText';
+import type { FirstRunOptions } from './FirstRunHint';
+import { LazyGuidance } from './lazyGuidance';
 
 export interface PlannerProps {
   store: ConfiguratorStore;
@@ -83,22 +82,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
   const view = usePlanView(controller);
   const drag = useSyncExternalStore(controller.subscribe, () => controller.drag);
   const { explain, run } = controller;
-  const runSteps = useCallback(
-    (steps: readonly { name: string; params: unknown }[]) => {
-      const r = store.getState().dispatchSteps(steps);
-      if (!r.ok) explain(noticeText(t, language, catalog, r));
-    },
-    [store, explain, t, language, catalog],
-  );
-  const gate = useMemo(
-    () => createActionGate(config, catalog, run, explain, (r) => noticeText(t, language, catalog, r), runSteps, (r) => remedyText(t, format, language, r)),
-    [config, catalog, run, explain, t, format, language, runSteps],
-  );
-  // A disabled control's reason at the control (docs/planner.md, "Reasons at the control"), placed in the workspace.
-  const workspaceRef = useRef<HTMLDivElement>(null);
-  const [tip, tipApi, closeTip] = useDisabledTipState(workspaceRef);
-  // The control it points at may move or change with the configuration: the tip goes.
-  useEffect(() => closeTip(), [config, mode, closeTip]);
+  const gate = useMemo(() => createActionGate(config, catalog, run, explain, (r) => noticeText(t, language, catalog, r)), [config, catalog, run, explain, t, language]);
   const path = selectionPath(config, selection);
   const select = useCallback((sel: Selection) => store.getState().select(sel), [store]);
   const bom = useMemo(() => billOfMaterials(config, catalog), [config, catalog]);
@@ -190,7 +174,6 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
   // The plan, the 3D view and the bottom bar are the main landmark of a page; the side panel an aside beside it.
   const WorkArea = landmarks === 'page' ? 'main' : 'div';
   return (
-    <DisabledTipContext.Provider value={tipApi}>
     <div className="app-body">
       <PlanAnnouncer store={store} />
       <header className="app-header">
@@ -205,7 +188,9 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
           {panelOpen ? t('common.close') : t('planner.presetsToggle')}
         </button>
       </header>
-      <div className="workspace" ref={workspaceRef}>
+      <div className="workspace">
+        {/* A disabled control's reason in a tip at the control (docs/planner.md, "Reasons at the control"). */}
+        <LazyGuidance tips={{ store, mode, explain }} />
         <WorkArea className="stage">
           {mode === '2d' ? (
             <div className="plan-wrap" ref={wrapRef} data-testid="plan" data-scale={view.scale.toFixed(3)} data-level={level} onDragOver={dragOver} onDrop={drop}>
@@ -234,21 +219,19 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
                 </CommandButton>
               </div>
               {config.systems.length === 0 && firstRun !== false && (
-                <FirstRunHint
-                  room={config.room}
-                  catalog={catalog}
-                  gate={gate}
-                  options={firstRun}
-                  onPlaced={placedNew}
-                  onShowAll={() => {
-                    ui.setState({ panelOpen: true });
-                    document.getElementById('presets-title')?.scrollIntoView({ block: 'start' });
+                <LazyGuidance
+                  firstRun={{
+                    room: config.room,
+                    catalog,
+                    gate,
+                    options: firstRun,
+                    onPlaced: placedNew,
+                    ui,
                   }}
                 />
               )}
               {status && (
-                // While the tip at the control says it, the status line is not read out a second time.
-                <div className="status-line" role="status" aria-hidden={tip ? true : undefined} data-testid="status-line" key={status.seq}>
+                <div className="status-line" role="status" data-testid="status-line" key={status.seq}>
                   {noticeText(t, language, catalog, status)}
                 </div>
               )}
@@ -291,9 +274,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
             {shareLink && <ShareLinkField link={shareLink} notice={shareNotice} />}
           </section>
         </aside>
-        {tip && <DisabledTip key={tip.seq} tip={tip} onClose={closeTip} />}
       </div>
     </div>
-    </DisabledTipContext.Provider>
   );
 }

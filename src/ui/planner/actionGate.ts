@@ -2,13 +2,6 @@ import { checkAction, type ActionName, type ActionParams } from '../../core/mode
 import type { Catalog } from '../../core/model/catalogSchema';
 import type { Configuration } from '../../core/model/configuration';
 import type { Refusal } from '../../core/model/action';
-import { remedyFor, type Remedy, type RemedyStep } from '../../core/model/remedy';
-
-/** A remedy as a control offers it: its words in the UI language and the one tap that performs it. */
-export interface RemedyOffer {
-  readonly label: string;
-  run(): void;
-}
 
 /**
  * How the planner asks the model whether an action may run and runs it. Every control's
@@ -24,8 +17,6 @@ export interface ActionGate {
   attempt<N extends ActionName>(name: N, params: ActionParams<N>): string | null;
   /** Shows why something cannot be done (status line for touch users). */
   explain(reason: string): void;
-  /** What would make a refused action enabled (core remedyFor), worded and ready to run as one undoable change; null when none (or enabled). */
-  remedy<N extends ActionName>(name: N, params: ActionParams<N>): RemedyOffer | null;
 }
 
 export function createActionGate(
@@ -35,10 +26,6 @@ export function createActionGate(
   explain: (reason: string) => void,
   /** The refusal as shown: the planner passes the UI language's wording of its code (docs/i18n.md); default its English reason. */
   describe: (refusal: Refusal) => string = (r) => r.reason,
-  /** Runs a remedy's steps as one undoable change (the store's dispatchSteps); without it no remedies are offered. */
-  runSteps?: (steps: readonly RemedyStep[]) => void,
-  /** The remedy's words in the UI language; default its English label. */
-  word: (remedy: Remedy) => string = (r) => r.label,
 ): ActionGate {
   const reason = (name: ActionName, params: unknown): string | null => {
     const e = checkAction(config, name, params, catalog);
@@ -55,10 +42,5 @@ export function createActionGate(
       return r;
     },
     explain,
-    remedy(name, params) {
-      if (!runSteps) return null;
-      const r = remedyFor(config, name, params as Record<string, unknown>, catalog);
-      return r ? { label: word(r), run: () => runSteps(r.steps) } : null;
-    },
   };
 }

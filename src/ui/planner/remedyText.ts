@@ -1,3 +1,4 @@
+import './registerGuidanceEnglish';
 import type { Remedy, RemedyPart } from '../../core/model/remedy';
 import type { Format } from '../i18n/createFormat';
 import type { Translate } from '../i18n/messageTypes';
@@ -7,21 +8,21 @@ function partText(t: Translate, part: RemedyPart): string {
   const p = part.params;
   switch (part.kind) {
     case 'useDriver':
-      return t('planner.remedyUseDriver', { capacity: p.capacity });
+      return t('guidance.useDriver', { capacity: p.capacity });
     case 'addFeed':
-      return t('planner.remedyAddFeed', { capacity: p.capacity });
+      return t('guidance.addFeed', { capacity: p.capacity });
     case 'lengthenRail':
-      return t('planner.remedyLengthenRail', { rail: p.rail, length: p.length });
+      return t('guidance.lengthenRail', { rail: p.rail, length: p.length });
     case 'setDistribution':
       switch (p.distribution) {
         case 'start':
-          return t('planner.remedyDistribution_start');
+          return t('guidance.distribution_start');
         case 'end':
-          return t('planner.remedyDistribution_end');
+          return t('guidance.distribution_end');
         case 'inside-centred':
-          return t('planner.remedyDistribution_inside-centred');
+          return t('guidance.distribution_inside-centred');
         default:
-          return t('planner.remedyDistribution_outside-centred');
+          return t('guidance.distribution_outside-centred');
       }
   }
 }
@@ -30,7 +31,7 @@ function partText(t: Translate, part: RemedyPart): string {
 export function remedyText(t: Translate, format: Format, language: Language, remedy: Remedy): string {
   // A later part continues the sentence: its capital goes, except in German, where nouns keep theirs.
   const continued = (s: string) => (language === 'de' ? s : s.charAt(0).toLowerCase() + s.slice(1));
-  const action = remedy.parts.map((p) => partText(t, p)).reduce((first, second) => t('planner.remedyAnd', { first, second: continued(second) }));
+  const action = remedy.parts.map((p) => partText(t, p)).reduce((first, second) => t('guidance.and', { first, second: continued(second) }));
   const sign = remedy.priceDelta < 0 ? '−' : '+';
-  return t('planner.remedyPrice', { action, price: `${sign}${format.money(Math.abs(remedy.priceDelta), remedy.currency)}` });
+  return t('guidance.withPrice', { action, price: `${sign}${format.money(Math.abs(remedy.priceDelta), remedy.currency)}` });
 }

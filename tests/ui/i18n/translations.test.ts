@@ -3,6 +3,7 @@ import { LANGUAGES } from '../../../src/ui/i18n/languages';
 import { loadCoreEnglish, loadMessages, registerEnglishAreas } from '../../../src/ui/i18n/loadMessages';
 import lazyEnglish from '../../../src/ui/i18n/messages/en/lazy';
 import optionsPanelEnglish from '../../../src/ui/i18n/messages/en/optionsPanel';
+import guidanceEnglish from '../../../src/ui/i18n/messages/en/guidance';
 import type { MessageTree, PluralMessage } from '../../../src/ui/i18n/messageTypes';
 import { hasWord } from './findHardCodedText';
 import defaultCatalog from '../../../src/core/catalog/default-catalog.json';
@@ -32,6 +33,7 @@ describe('translations', async () => {
   // The 3D chunk's English areas, as that chunk registers them.
   registerEnglishAreas(lazyEnglish);
   registerEnglishAreas(optionsPanelEnglish);
+  registerEnglishAreas({ guidance: guidanceEnglish });
   // And the English of the core's codes, which comes with the other languages (docs/i18n.md, "Bundles").
   await loadCoreEnglish();
   const en = flatten(await loadMessages('en'));

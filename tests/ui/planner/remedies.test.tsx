@@ -12,8 +12,10 @@ import { suggestedPresets } from '../../../src/core/model/suggestedPresets';
 import { createConfiguratorStore } from '../../../src/core/store/createConfiguratorStore';
 import { createI18n } from '../../../src/ui/i18n/createI18n';
 import { createActionGate } from '../../../src/ui/planner/actionGate';
+import { createUiStore } from '../../../src/core/store/uiStore';
 import { FirstRunHint } from '../../../src/ui/planner/FirstRunHint';
 import { remedyText } from '../../../src/ui/planner/remedyText';
+import { remedyOffer } from '../../../src/ui/planner/remedyOffer';
 import { catalog } from '../../core/model/helpers';
 
 const room = { width: 5, depth: 4, height: 2.8 };
@@ -45,15 +47,16 @@ describe('remedy wording', () => {
   });
 });
 
-describe('the gate offers and runs a remedy', () => {
+describe('the tip offers and runs a remedy (remedyOffer)', () => {
+  const en = createI18n({ locale: 'en-GB', currency: 'EUR' }).getSnapshot();
   it('one tap makes the refused + work, one undo takes it back', () => {
     const store = createConfiguratorStore({ catalog, initial: lCorner() });
     const config = store.getState().config;
     const railId = config.systems[0].rails[0].id;
-    const gate = createActionGate(config, catalog, (n, p) => store.getState().dispatch(n, p), () => {}, undefined, (steps) => store.getState().dispatchSteps(steps));
+    const gate = createActionGate(config, catalog, (n, p) => store.getState().dispatch(n, p), () => {});
     expect(gate.reason('addModule', { railId, type: 'spot' })).toMatch(/driver is full/);
-    const offer = gate.remedy('addModule', { railId, type: 'spot' })!;
-    expect(offer.label).toBe('use the 321.6 W driver (+28 EUR)');
+    const offer = remedyOffer(store, 'addModule', { railId, type: 'spot' }, en)!;
+    expect(offer.label).toBe('Use the 321.6 W driver (+€28.00)');
     offer.run();
     expect(store.getState().config.systems[0].feeds[0].driver).toBe('hlg-320h-48');
     expect(store.getState().dispatch('addModule', { railId, type: 'spot' })).toEqual({ ok: true });
@@ -61,14 +64,21 @@ describe('the gate offers and runs a remedy', () => {
     store.getState().undo();
     expect(store.getState().config).toBe(config);
   });
-  it('offers nothing without a way to run steps, or for an enabled action', () => {
-    const config = lCorner();
-    const railId = config.systems[0].rails[0].id;
-    expect(createActionGate(config, catalog, () => {}, () => {}).remedy('addModule', { railId, type: 'spot' })).toBeNull();
+  it('a rail change and a driver change are one undo step', () => {
+    const store = createConfiguratorStore({ catalog, initial: lCorner() });
+    const config = store.getState().config;
+    const params = { railId: config.systems[0].rails[1].id, type: 'updown' };
+    remedyOffer(store, 'addModule', params, en)!.run();
+    expect(store.getState().dispatch('addModule', params)).toEqual({ ok: true });
+    store.getState().undo();
+    store.getState().undo();
+    expect(store.getState().config).toBe(config);
+  });
+  it('offers nothing for an enabled action', () => {
     const placed = attemptAction(createConfiguration(room), 'placePreset', { presetId: 'single' }, catalog);
     if (!placed.ok) throw new Error();
-    const gate = createActionGate(placed.next, catalog, () => {}, () => {}, undefined, () => {});
-    expect(gate.remedy('addModule', { railId: placed.next.systems[0].rails[0].id, type: 'spot' })).toBeNull();
+    const store = createConfiguratorStore({ catalog, initial: placed.next });
+    expect(remedyOffer(store, 'addModule', { railId: placed.next.systems[0].rails[0].id, type: 'spot' }, en)).toBeNull();
   });
 });
 
@@ -80,7 +90,7 @@ describe('first run', () => {
   });
   it('renders one button per suggestion, the shop’s list, or none', () => {
     const gate = createActionGate(createConfiguration(room), catalog, () => {}, () => {});
-    const html = (options?: { presets?: string[] | false }) => renderToStaticMarkup(<FirstRunHint room={room} catalog={catalog} gate={gate} options={options} onPlaced={() => {}} onShowAll={() => {}} />);
+    const html = (options?: { presets?: string[] | false }) => renderToStaticMarkup(<FirstRunHint room={room} catalog={catalog} gate={gate} options={options} onPlaced={() => {}} ui={createUiStore()} />);
     expect(html().match(/data-testid="first-run-[a-z-]+"/g)).toEqual(['data-testid="first-run-snake"', 'data-testid="first-run-u-shape"', 'data-testid="first-run-corner-l"', 'data-testid="first-run-all"']);
     expect(html({ presets: ['corner-l'] })).toContain('Place L corner');
     expect(html({ presets: false })).not.toContain('first-run-snake');

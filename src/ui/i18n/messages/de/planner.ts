@@ -74,18 +74,4 @@ export default {
   feedAtEnd: 'am Kettenende',
   feedAtConnector: 'an Verbinder {n}',
   feedAtRailEnd: 'am Ende von Schiene {n}',
-  // Erster Start (Issue 27): Vorschläge auf dem leeren Plan und Abhilfen an einem gesperrten Bedienelement.
-  firstRunTitle: 'Mit einer Vorlage beginnen',
-  firstRunHint: 'Tippen Sie auf eine Vorlage, um sie in Ihren Raum zu setzen. Schienen und Leuchten können Sie danach beliebig ändern.',
-  firstRunPlace: '{name} platzieren',
-  firstRunAll: 'Alle Vorlagen',
-  remedyUseDriver: '{capacity}-W-Treiber verwenden',
-  remedyAddFeed: 'Einspeisung mit {capacity}-W-Treiber hinzufügen',
-  remedyLengthenRail: 'Schiene {rail} auf {length} m verlängern',
-  remedyDistribution_start: 'Module ab dem Anfang reihen',
-  remedyDistribution_end: 'Module ab dem Ende reihen',
-  'remedyDistribution_inside-centred': 'Module gleichmäßig verteilen',
-  'remedyDistribution_outside-centred': 'Module gleichmäßig verteilen, äußere an den Enden',
-  remedyAnd: '{first}, dann {second}',
-  remedyPrice: '{action} ({price})',
 } satisfies AreaMessages<typeof en>;

@@ -72,18 +72,4 @@ export default {
   feedAtEnd: 'the chain end',
   feedAtConnector: 'connector {n}',
   feedAtRailEnd: 'the end of rail {n}',
-  // First run (issue 27): the empty plan's suggestions, and remedies offered at a refused control.
-  firstRunTitle: 'Start with a layout',
-  firstRunHint: 'Tap a layout to place it in your room. You can change every rail and light afterwards.',
-  firstRunPlace: 'Place {name}',
-  firstRunAll: 'All layouts',
-  remedyUseDriver: 'Use the {capacity} W driver',
-  remedyAddFeed: 'Add a power feed with the {capacity} W driver',
-  remedyLengthenRail: 'Lengthen rail {rail} to {length} m',
-  remedyDistribution_start: 'Line the modules up from the start',
-  remedyDistribution_end: 'Line the modules up from the end',
-  'remedyDistribution_inside-centred': 'Space the modules evenly',
-  'remedyDistribution_outside-centred': 'Space the modules evenly, outer ones at the ends',
-  remedyAnd: '{first}, then {second}',
-  remedyPrice: '{action} ({price})',
 };

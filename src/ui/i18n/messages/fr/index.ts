@@ -11,6 +11,7 @@ import files from './files';
 import filters from './filters';
 import finishes from './finishes';
 import furniture from './furniture';
+import guidance from './guidance';
 import live from './live';
 import notices from './notices';
 import options from './options';
@@ -36,6 +37,7 @@ export default {
   filters,
   finishes,
   furniture,
+  guidance,
   live,
   notices,
   options,

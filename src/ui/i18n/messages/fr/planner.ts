@@ -74,18 +74,4 @@ export default {
   feedAtEnd: 'à la fin de la chaîne',
   feedAtConnector: 'au connecteur {n}',
   feedAtRailEnd: 'à l’extrémité du rail {n}',
-  // Premier lancement (issue 27) : suggestions sur le plan vide et solutions proposées sur une commande refusée.
-  firstRunTitle: 'Commencer par un modèle',
-  firstRunHint: 'Touchez un modèle pour le placer dans votre pièce. Vous pourrez ensuite modifier chaque rail et chaque luminaire.',
-  firstRunPlace: 'Placer {name}',
-  firstRunAll: 'Tous les modèles',
-  remedyUseDriver: 'Utiliser le driver de {capacity} W',
-  remedyAddFeed: 'Ajouter une alimentation avec le driver de {capacity} W',
-  remedyLengthenRail: 'Allonger le rail {rail} à {length} m',
-  remedyDistribution_start: 'Aligner les modules depuis le début',
-  remedyDistribution_end: 'Aligner les modules depuis la fin',
-  'remedyDistribution_inside-centred': 'Espacer les modules régulièrement',
-  'remedyDistribution_outside-centred': 'Espacer les modules régulièrement, ceux des bouts aux extrémités',
-  remedyAnd: '{first}, puis {second}',
-  remedyPrice: '{action} ({price})',
 } satisfies AreaMessages<typeof en>;

@@ -74,18 +74,4 @@ export default {
   feedAtEnd: 'alla fine della catena',
   feedAtConnector: 'al connettore {n}',
   feedAtRailEnd: 'all’estremità del binario {n}',
-  // Primo avvio (issue 27): suggerimenti sulla pianta vuota e rimedi offerti su un comando rifiutato.
-  firstRunTitle: 'Inizia con un modello',
-  firstRunHint: 'Tocca un modello per posizionarlo nella stanza. Potrai poi cambiare ogni binario e ogni luce.',
-  firstRunPlace: 'Posiziona {name}',
-  firstRunAll: 'Tutti i modelli',
-  remedyUseDriver: 'Usa il driver da {capacity} W',
-  remedyAddFeed: 'Aggiungi un’alimentazione con il driver da {capacity} W',
-  remedyLengthenRail: 'Allunga il binario {rail} a {length} m',
-  remedyDistribution_start: 'Allinea i moduli dall’inizio',
-  remedyDistribution_end: 'Allinea i moduli dalla fine',
-  'remedyDistribution_inside-centred': 'Distribuisci i moduli in modo uniforme',
-  'remedyDistribution_outside-centred': 'Distribuisci i moduli in modo uniforme, quelli esterni alle estremità',
-  remedyAnd: '{first}, poi {second}',
-  remedyPrice: '{action} ({price})',
 } satisfies AreaMessages<typeof en>;
