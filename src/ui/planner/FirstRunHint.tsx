@@ -42,6 +42,8 @@ export function FirstRunHint({ room, catalog, gate, options, onPlaced, ui }: Fir
     [width, depth, height, catalog, key],
   );
   return (
+    // The area below the zoom buttons, the card centred in it (app.css).
+    <div className="first-run-area">
     <div className="first-run" data-plan-control data-testid="first-run" role="group" aria-labelledby="first-run-title">
       <p id="first-run-title" className="first-run-title">
         {t('guidance.firstRunTitle')}
@@ -83,6 +85,7 @@ export function FirstRunHint({ room, catalog, gate, options, onPlaced, ui }: Fir
       >
         {t('guidance.firstRunAll')}
       </button>
+    </div>
     </div>
   );
 }
