@@ -40,6 +40,12 @@ export interface Remedy {
   readonly currency: string;
 }
 
+/**
+ * The actions a remedy is sought for: those that add light (a module, a heavier type or beam, more
+ * chain). Others (a smaller driver, removing a feed) are choices to undo, not to enable at a cost.
+ */
+const REMEDIABLE = new Set<ActionName>(['addModule', 'setModuleType', 'setModuleBeam', 'addRail', 'addBranch']);
+
 /** Codes of refusals that say a module does not fit on its rail (addModule's explain). */
 const FIT_REFUSALS = new Set(['noRoomForModule', 'noFreeGap']);
 
@@ -126,14 +132,15 @@ function powerPart(c: Candidate): RemedyPart {
 }
 
 /**
- * The remedy for a refused action: null when the action is enabled, when it concerns no system, or
- * when nothing below makes it enabled. Power refusals: the cheapest (by the bill of materials) of a
+ * The remedy for a refused action: null when the action is enabled, is not one that adds light
+ * (REMEDIABLE), concerns no system, or when nothing below makes it enabled. Power refusals: the cheapest (by the bill of materials) of a
  * larger driver on one feed or a new feed at a free allowed position. An addModule that does not
  * fit: the first rail change after which it fits — another distribution (free), else the shortest
  * longer rail on the catalog's length steps, alone or with another distribution — followed, when
  * the module then overloads a driver, by the cheapest power change.
  */
 export function remedyFor(state: Configuration, name: ActionName, params: Record<string, unknown>, catalog: Catalog): Remedy | null {
+  if (!REMEDIABLE.has(name)) return null;
   const verdict = checkAction(state, name, params, catalog);
   if (verdict === true) return null;
   const system = systemOf(state, params);

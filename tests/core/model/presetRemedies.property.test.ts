@@ -89,3 +89,20 @@ describe('every preset leaves room to grow or offers a remedy (issue 27)', () =>
     );
   });
 });
+
+describe('remedies are for actions that add light', () => {
+  it('a heavier beam on the full L corner gets the driver; a smaller driver gets none', () => {
+    const config = place(ROOMS[0], 'corner-l')!;
+    const system = config.systems[0];
+    const washer = system.rails[1].modules[0];
+    const spot = system.rails[0].modules[0];
+    // A 24 W washer turned into a 50 W flood: 260 W on the 240 W driver, refused; the remedy is the 321.6 W driver. A lighter beam is allowed.
+    const typeChange = { moduleId: washer.id, type: 'flood' };
+    expect(checkAction(config, 'setModuleType', typeChange, catalog)).not.toBe(true);
+    expect(remedyFor(config, 'setModuleType', typeChange, catalog)!.parts).toEqual([{ kind: 'useDriver', params: { capacity: 321.6 } }]);
+    expect(checkAction(config, 'setModuleBeam', { moduleId: spot.id, beam: 'medium' }, catalog)).toBe(true);
+    const smaller = { feedId: system.feeds[0].id, driver: 'lpv-60-48' };
+    expect(checkAction(config, 'setFeedDriver', smaller, catalog)).not.toBe(true);
+    expect(remedyFor(config, 'setFeedDriver', smaller, catalog)).toBeNull();
+  });
+});
