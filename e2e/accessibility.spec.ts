@@ -59,6 +59,9 @@ test('axe: room setup, plan with a selection, side panel, 3D view controls — n
   expect(pageLandmarks(await landmarks(page))).toEqual(['banner', 'main']);
 
   await page.locator('form.setup-card button[type="submit"]').click();
+  // The empty plan's first-run card (issue 27).
+  await expect(page.getByTestId('first-run-corner-l')).toBeVisible();
+  expect(await violations(page)).toEqual([]);
   await page.getByTestId('preset-corner-l').click();
   const module = (await sceneFile(page)).configuration.systems[0].rails[0].modules[0];
   await page.evaluate((id) => window.luxbox!.runAction('setModuleDimming', { moduleId: id, dimming: 0.5 }), module.id);
@@ -68,6 +71,11 @@ test('axe: room setup, plan with a selection, side panel, 3D view controls — n
     await page.getByTestId('zoom-in').click();
     await expect(page.getByTestId('plan')).not.toHaveAttribute('data-scale', before ?? '');
   }
+  // A refused + explains itself in a tip at the control, with its remedy (issue 27).
+  await page.locator('[data-testid^="plus-"] button').first().click({ force: true });
+  await expect(page.getByTestId('disabled-tip').getByTestId('remedy')).toBeVisible();
+  expect(await violations(page)).toEqual([]);
+  await page.keyboard.press('Escape');
   await page.getByTestId(`module-${module.id}`).getByRole('button').click();
   await expect(page.getByTestId('options-panel')).toBeVisible();
   expect(await violations(page)).toEqual([]);

@@ -48,9 +48,11 @@ test('set up a room, place a preset, fill a rail, change a module, reload, undo'
   const priceFull = await total(page);
   expect(priceFull).not.toBe(priceWithThree);
 
-  // A disabled control does nothing but say why.
+  // A disabled control does nothing but say why, at the control (issue 27: a tip with the remedy).
   await plus.click({ force: true });
-  await expect(page.getByTestId('status-line')).toContainText('driver is full');
+  await expect(page.getByTestId('disabled-tip')).toContainText('driver is full');
+  await expect(page.getByTestId('disabled-tip').getByTestId('remedy')).toContainText('321.6 W');
+  await page.keyboard.press('Escape');
   expect(await moduleCount(page)).toBe(5);
 
   // Open a module's settings: switching to the 0.6 m linear diffuser is disabled on a full rail.
@@ -61,7 +63,7 @@ test('set up a room, place a preset, fill a rail, change a module, reload, undo'
   const linear = options.getByTestId('type-linear');
   await expect(linear).toHaveAttribute('aria-disabled', 'true');
   await linear.click({ force: true });
-  await expect(page.getByTestId('status-line')).toContainText('Linear diffuser');
+  await expect(page.getByTestId('disabled-tip')).toContainText('Linear diffuser');
   expect((await sceneFile(page)).configuration.systems[0].rails[0].modules[0].type).toBe('spot');
 
   // Change its colour temperature.

@@ -174,7 +174,7 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
   root.render(
     <StrictMode>
       <I18nProvider i18n={i18n}>
-        <Configurator store={store} ui={ui} languageSwitch={options.languageSwitch === true} onRestoreSaved={restoreSaved} shareLink={shareLinkForUi} footprints={footprints} landmarks={options.landmarks ?? 'region'} />
+        <Configurator store={store} ui={ui} languageSwitch={options.languageSwitch === true} onRestoreSaved={restoreSaved} shareLink={shareLinkForUi} footprints={footprints} landmarks={options.landmarks ?? 'region'} firstRun={options.firstRun} />
       </I18nProvider>
     </StrictMode>,
   );

@@ -74,6 +74,13 @@ export interface LuxboxOptions {
    * so a German shop shows German everywhere; 'en' the core's English sentences (for logs).
    */
   apiLanguage?: 'ui' | 'en';
+  /**
+   * The empty plan's first step (docs/embedding.md, "First run"): a sentence and the presets that fit
+   * the room best, one tap each. `false` hides it; `{ presets: ['corner-l', 'single'] }` offers the
+   * shop's own choice (in that order, those that fit the room, at most three; ids the catalog lacks are left out); `{ presets: false }`
+   * keeps the sentence and the way to all presets without suggestions. Default: the best three.
+   */
+  firstRun?: false | { presets?: readonly string[] | false };
 }
 
 export interface LuxboxActionInfo {

@@ -35,7 +35,9 @@ function element<K extends keyof HTMLElementTagNameMap>(tag: K, props: Partial<H
   return node;
 }
 
-const shop = shopVariant(new URLSearchParams(location.search).get('shop'));
+const query = new URLSearchParams(location.search);
+const shop = shopVariant(query.get('shop'));
+const firstRun = query.get('firstRun');
 const presets = (shop.catalog as { presets: PresetData[] }).presets;
 const money = (x: number) => formatMoney(x, shop.currency, shop.locale);
 const count = (x: number) => new Intl.NumberFormat(shop.locale).format(x);
@@ -130,16 +132,18 @@ function open(): void {
   instance = mountLuxbox(host, {
     room: SHOP_ROOM,
     // The storefront's locale picks the configurator's language and formatting (de-DE: German); `?locale=fr-CH` tries another.
-    locale: new URLSearchParams(location.search).get('locale') ?? shop.locale,
+    locale: query.get('locale') ?? shop.locale,
     currency: shop.currency,
     catalog: shop.catalog,
     storageKey: shop.storageKey,
     // A shop may serve the photometry from its own asset folder (?assetBase=/cdn/ tries it).
-    assetBase: new URLSearchParams(location.search).get('assetBase') ?? undefined,
+    assetBase: query.get('assetBase') ?? undefined,
+    // The empty plan's suggestions: the best for the room by default; `?firstRun=corner-l,single` tries a shop's own list, `?firstRun=off` none.
+    firstRun: firstRun === null ? undefined : firstRun === 'off' ? false : { presets: firstRun.split(',') },
     // The shop's own name in the configurator's header (`?brand=none` shows none); the API's texts in the
     // configurator's language unless `?apiLanguage=en` asks for the core's English (docs/embedding.md).
-    brand: new URLSearchParams(location.search).get('brand') === 'none' ? null : { name: 'Lichtwerk' },
-    apiLanguage: new URLSearchParams(location.search).get('apiLanguage') === 'en' ? 'en' : 'ui',
+    brand: query.get('brand') === 'none' ? null : { name: 'Lichtwerk' },
+    apiLanguage: query.get('apiLanguage') === 'en' ? 'en' : 'ui',
     onChange: () => {
       // Everything the host shows is re-read through the API after each change.
       changes++;

@@ -6,6 +6,7 @@ import { firstImpression } from '../viewer/firstImpression';
 import { bakeHostOf } from '../viewer/bakeHost';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import { Planner } from '../planner/Planner';
+import type { FirstRunOptions } from '../planner/FirstRunHint';
 import type { FootprintSource } from '../planner/footprintSource';
 import { RoomSetup } from './RoomSetup';
 import type { UiStore } from '../../core/store/uiStore';
@@ -33,10 +34,12 @@ export interface ConfiguratorProps {
    * it, so the host page keeps its own banner and main.
    */
   landmarks?: Landmarks;
+  /** The empty plan's preset suggestions (docs/embedding.md, `firstRun`). */
+  firstRun?: FirstRunOptions | false;
 }
 
 /** The configurator's top-level component: room setup first, then the planner (configurator paper §3.2). */
-export function Configurator({ store, ui, languageSwitch = false, onRestoreSaved, shareLink, footprints, landmarks = 'region' }: ConfiguratorProps) {
+export function Configurator({ store, ui, languageSwitch = false, onRestoreSaved, shareLink, footprints, landmarks = 'region', firstRun }: ConfiguratorProps) {
   const { t, locale, language } = useI18n();
   const phase = useStore(ui, (s) => s.phase);
   const banner = useStore(ui, (s) => s.banner);
@@ -115,6 +118,7 @@ export function Configurator({ store, ui, languageSwitch = false, onRestoreSaved
           shareNotice={shareNotice}
           footprints={footprints}
           landmarks={landmarks}
+          firstRun={firstRun}
         />
       )}
     </Root>

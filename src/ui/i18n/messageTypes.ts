@@ -3,6 +3,7 @@ import type enLazy from './messages/en/lazy';
 import type enOptionsPanel from './messages/en/optionsPanel';
 import type enCore from './messages/en/core';
 import type enPanelExtras from './messages/en/panelExtras';
+import type enGuidance from './messages/en/guidance';
 
 /**
  * A message that depends on a count: the CLDR plural category of `params.count` picks the text
@@ -22,9 +23,10 @@ export interface PluralMessage {
  * 3D-only areas (messages/en/lazy.ts) are part of the type but arrive at run time with the 3D chunk,
  * the options panel's (messages/en/optionsPanel.ts) with the options panel's chunk, the share and
  * import-preview parts' (messages/en/panelExtras.ts) with theirs,
- * its core-code areas (messages/en/core.ts) with the first other language loaded.
+ * its core-code areas (messages/en/core.ts) with the first other language loaded, the planner's
+ * guidance (messages/en/guidance.ts: first run, remedies) with the guidance chunk.
  */
-export type SourceMessages = typeof en & typeof enLazy & typeof enOptionsPanel & typeof enCore & typeof enPanelExtras;
+export type SourceMessages = typeof en & typeof enLazy & typeof enOptionsPanel & typeof enCore & typeof enPanelExtras & { guidance: typeof enGuidance };
 
 export type Area = keyof SourceMessages & string;
 

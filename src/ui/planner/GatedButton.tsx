@@ -22,7 +22,8 @@ export interface GatedButtonProps<N extends ActionName> {
 
 /**
  * The gate pattern in one place: an ActionButton enabled exactly when the model's isEnabled
- * accepts `action(params)`, with the model's reason as its disabled title and tap message.
+ * accepts `action(params)`, with the model's reason as its disabled title and tap message, and
+ * the model's remedy (core remedyFor) offered in the planner's tip when there is one.
  */
 export function GatedButton<N extends ActionName>({ gate, action, params, label, current, onRan, children, testId }: GatedButtonProps<N>) {
   return (
@@ -36,6 +37,7 @@ export function GatedButton<N extends ActionName>({ gate, action, params, label,
         onRan?.();
       }}
       onDisabledPress={gate.explain}
+      action={{ name: action, params }}
       testId={testId}
     >
       {children}

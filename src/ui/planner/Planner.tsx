@@ -45,6 +45,8 @@ import { scenePlayerFor } from '../scenes/createScenePlayer';
 import { mixLevels, outputLevels } from '../../core/model/sceneFade';
 import { PlanAnnouncer } from './PlanAnnouncer';
 import type { Landmarks } from '../shared/landmarks';
+import type { FirstRunOptions } from './FirstRunHint';
+import { LazyGuidance } from './lazyGuidance';
 
 export interface PlannerProps {
   store: ConfiguratorStore;
@@ -60,13 +62,15 @@ export interface PlannerProps {
   footprints: FootprintSource;
   /** 'page': the header is the page's banner and the plan its main (the standalone app); 'region': inside the embed's region. */
   landmarks?: Landmarks;
+  /** The empty plan's suggestions (docs/planner.md, "First run"): false hides them; `presets` picks the shop's own (docs/embedding.md). */
+  firstRun?: FirstRunOptions | false;
 }
 
 /** The box width (px) up to which the side panel is a drawer: `@container luxbox (max-width: 900px)` in app.css. */
 const DRAWER_MAX_WIDTH = 900;
 
 /** The main screen (configurator paper, fig. 6): the plan, side panel with presets and price, bottom bar. */
-export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare, shareNotice = null, footprints, landmarks = 'region' }: PlannerProps) {
+export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare, shareNotice = null, footprints, landmarks = 'region', firstRun }: PlannerProps) {
   const { t, format, language, locale } = useI18n();
   const config = useStore(store, (s) => s.config);
   const catalog = useStore(store, (s) => s.catalog);
@@ -213,6 +217,8 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
         </button>
       </header>
       <div className="workspace">
+        {/* A disabled control's reason in a tip at the control (docs/planner.md, "Reasons at the control"). */}
+        <LazyGuidance tips={{ store, mode, explain }} />
         <WorkArea className="stage">
           {mode === '2d' ? (
             <div className="plan-wrap" ref={wrapRef} data-testid="plan" data-scale={view.scale.toFixed(3)} data-level={level} onDragOver={dragOver} onDrop={drop}>
@@ -240,6 +246,18 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
                   ⤢
                 </CommandButton>
               </div>
+              {config.systems.length === 0 && firstRun !== false && (
+                <LazyGuidance
+                  firstRun={{
+                    room: config.room,
+                    catalog,
+                    gate,
+                    options: firstRun,
+                    onPlaced: placedNew,
+                    ui,
+                  }}
+                />
+              )}
               {status && (
                 <div className="status-line" role="status" data-testid="status-line" key={status.seq}>
                   {sentenceStart(noticeText(t, language, catalog, status), locale)}

@@ -11,7 +11,7 @@ import { localDescription, localName } from '../i18n/localName';
 import { roomName } from '../i18n/catalogNames';
 
 /** A small drawing of a preset's rails, computed from the model's own geometry (not an image). */
-const PresetThumbnail = memo(function PresetThumbnail({ preset, catalog }: { preset: PresetSpec; catalog: Catalog }) {
+export const PresetThumbnail = memo(function PresetThumbnail({ preset, catalog }: { preset: PresetSpec; catalog: Catalog }) {
   const config = instantiatePreset(createConfiguration(), preset, catalog, { x: 0, z: 0, rotation: 0 }, catalog.suspension.default);
   const system = config.systems[0];
   const b = systemBounds(system, catalog);

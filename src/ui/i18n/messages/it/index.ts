@@ -12,6 +12,7 @@ import modelImport from './modelImport';
 import filters from './filters';
 import finishes from './finishes';
 import furniture from './furniture';
+import guidance from './guidance';
 import live from './live';
 import notices from './notices';
 import options from './options';
@@ -39,6 +40,7 @@ export default {
   filters,
   finishes,
   furniture,
+  guidance,
   live,
   notices,
   options,
