@@ -23,7 +23,7 @@ export async function importMesh(files: readonly MeshFile[], options: MeshImport
   const all = [...files];
   const { readFile } = options;
   if (readFile) {
-    for (const lib of scanMtllibNames(obj.bytes)) {
+    for (const lib of scanMtllibNames(obj.bytes, obj.name)) {
       if (findFile(all, lib)) continue;
       try {
         all.push({ name: lib, bytes: await readFile(lib) });

@@ -1,5 +1,8 @@
 import { positionBounds, type Bounds3, type TriangleMesh } from '../../core/mesh/triangleMesh';
 import { checkTriangleBudget } from './triangleBudget';
+import { checkExtent } from './checkExtent';
+import { checkStorable } from './checkStorable';
+import { keptName } from './keptName';
 import { detectUnits, METRES_PER_UNIT, PLAUSIBLE_EXTENT_M, type MeshUnit, type MeshUnitsOption } from './meshUnits';
 
 /** One file the user picked or the host read: its name (for messages and references) and bytes. */
@@ -36,7 +39,8 @@ export interface ImportedMesh {
 }
 
 /**
- * The last step of every import: unit detection and scaling, the triangle budget, the bounds.
+ * The last step of every import: unit detection and scaling, the triangle budget, the bounds
+ * (checkExtent), names cut to the file format's limits, the size in a saved file (checkStorable).
  * `fixedUnit` is the unit the format itself defines (glTF: metres), else null (OBJ).
  */
 export function finishImport(name: string, fileMesh: TriangleMesh, fixedUnit: MeshUnit | null, options: MeshImportOptions, warnings: string[]): ImportedMesh {
@@ -52,13 +56,15 @@ export function finishImport(name: string, fileMesh: TriangleMesh, fixedUnit: Me
     warnings.push(`${name}: its largest extent (${round(extent)} file units) is not a plausible object size in m, cm, mm or inches (${PLAUSIBLE_EXTENT_M.min}–${PLAUSIBLE_EXTENT_M.max} m); metres assumed`);
   }
   const scale = METRES_PER_UNIT[units];
-  const metresExtent = extent * scale;
-  if (detected !== null && (metresExtent < PLAUSIBLE_EXTENT_M.min || metresExtent > PLAUSIBLE_EXTENT_M.max)) {
-    warnings.push(`${name}: ${round(metresExtent)} m across in ${units} — check the units`);
-  }
   const positions = scale === 1 ? fileMesh.positions : fileMesh.positions.map((x) => x * scale);
-  const mesh: TriangleMesh = { ...fileMesh, positions };
-  return { name, mesh, units, detectedUnits, triangleCount, bounds: positionBounds(positions), warnings };
+  // Extents in metres whatever the unit choice; names cut to what a saved configuration accepts.
+  const bounds = positionBounds(positions);
+  checkExtent(name, bounds, units, warnings, requested === 'auto' && detected === null);
+  const materials = fileMesh.materials.map((m) => ({ ...m, name: keptName(m.name, `${name}: material`, warnings) }));
+  const mesh: TriangleMesh = { ...fileMesh, positions, materials };
+  const kept = keptName(name, 'the model name', warnings);
+  checkStorable(kept, mesh);
+  return { name: kept, mesh, units, detectedUnits, triangleCount, bounds, warnings };
 }
 
 function round(x: number): number {
