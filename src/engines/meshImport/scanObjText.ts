@@ -103,9 +103,11 @@ export function scanObjText(bytes: Uint8Array, file: string): ScannedObj {
   };
 
   let lineNumber = 0;
-  // A trailing backslash continues the statement on the next line (OBJ spec, "Line continuation").
-  let pending: string | null = null;
-  let pendingLine = 0;
+  // A trailing backslash continues the statement on the next line (OBJ spec, "Line continuation");
+  // the pieces are joined once at the end (joining line by line would be quadratic).
+  let continued: string[] = [];
+  let continuedLength = 0;
+  let continuedFrom = 0;
   for (let start = 0; start < bytes.length; ) {
     let end = Math.min(bytes.length, start + PIECE_BYTES);
     if (end < bytes.length) {
@@ -119,19 +121,20 @@ export function scanObjText(bytes: Uint8Array, file: string): ScannedObj {
     for (const raw of lines) {
       lineNumber++;
       const line = raw.endsWith('\r') ? raw.slice(0, -1) : raw;
-      const joined: string = pending === null ? line : pending + line;
-      if (pending === null) pendingLine = lineNumber;
-      if (joined.endsWith('\\')) {
-        const rest = joined.slice(0, -1);
-        pending = rest;
-        if (rest.length > PIECE_BYTES) throw new InputError(`${file}: line ${pendingLine} continues past ${PIECE_BYTES / 1024} kB: not a text OBJ file`);
+      if (continued.length === 0) continuedFrom = lineNumber;
+      if (line.endsWith('\\')) {
+        continued.push(line.slice(0, -1));
+        continuedLength += line.length;
+        if (continuedLength > PIECE_BYTES) throw new InputError(`${file}: line ${continuedFrom} continues past ${PIECE_BYTES / 1024} kB: not a text OBJ file`);
         continue;
       }
-      pending = null;
-      statement(joined, pendingLine);
+      const joined = continued.length === 0 ? line : continued.join('') + line;
+      continued = [];
+      continuedLength = 0;
+      statement(joined, continuedFrom);
     }
   }
-  if (pending !== null) statement(pending, pendingLine);
+  if (continued.length > 0) statement(continued.join(''), continuedFrom);
   if (triangles === 0) throw new InputError(`${file}: no faces (luxbox needs a surface model with 'f' lines)`);
   return { text: out.join('\n'), triangles, vertices, mtllibs, ignored };
 }
