@@ -3,6 +3,7 @@ import type { Group, Material } from 'three';
 import { InputError } from '../../core/inputError';
 import { oneLine } from '../../core/model/untrustedJson';
 import type { Rgb } from '../../core/model/lightingScene';
+import { boundedMessage } from './boundedMessage';
 import { checkByteCap, MODEL_BYTE_CAPS } from './byteCaps';
 import { collectTriangles } from './collectTriangles';
 import { decodeText } from './decodeText';
@@ -20,6 +21,14 @@ import { scanObjText } from './scanObjText';
  * ρ is the MTL's Kd used directly (the contract: docs/scene-format.md, "Importing meshes").
  */
 export function importObjMesh(files: readonly MeshFile[], options: MeshImportOptions = {}): ImportedMesh {
+  try {
+    return importObj(files, options);
+  } catch (error) {
+    throw boundedMessage(error);
+  }
+}
+
+function importObj(files: readonly MeshFile[], options: MeshImportOptions): ImportedMesh {
   const obj = files.find((f) => /\.obj$/i.test(f.name));
   if (!obj) throw new InputError(`no .obj file among ${files.map((f) => f.name).join(', ') || 'the files given'}`);
   const name = obj.name;

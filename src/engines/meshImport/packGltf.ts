@@ -18,8 +18,11 @@ const CHUNK_BIN = 0x004e4942;
 const DROPPED_EXTENSIONS = /^(KHR_materials_|KHR_texture_|EXT_texture_|MSFT_texture_)/;
 /** Extensions three's GLTFLoader reads without extra decoders. */
 const READABLE_EXTENSIONS = new Set(['KHR_mesh_quantization', 'EXT_mesh_gpu_instancing', 'KHR_lights_punctual']);
-/** glTF JSON nests about 6 levels deep; arrays are capped by kind afterwards (gltfCountCaps.ts). */
-const GLTF_JSON_LIMITS = { maxDepth: 64, maxArrayLength: 1_000_000 } as const;
+/**
+ * glTF JSON nests about 6 levels deep; its longest arrays are the capped top-level ones
+ * (gltfCountCaps.ts, at most 8 192) and a node's children: 65 536 bounds what else (extras) may hold.
+ */
+const GLTF_JSON_LIMITS = { maxDepth: 64, maxArrayLength: 65_536 } as const;
 
 export interface PackedGltf {
   name: string;
@@ -68,10 +71,11 @@ export async function packGltf(files: readonly MeshFile[], options: MeshImportOp
     fail(`invalid JSON (${error instanceof Error ? oneLine(error.message, 80) : 'syntax error'})`);
   }
   if (typeof parsed !== 'object' || parsed === null || Array.isArray(parsed)) fail('the glTF JSON is not an object');
+  // The top-level counts first (no recursion, and a 300 000-scene file stops here at once).
+  checkGltfCounts(parsed as Json, fail);
   // Nothing below (nor GLTFLoader) may recurse into a hostile nesting depth.
   const shape = jsonShapeProblem(parsed, GLTF_JSON_LIMITS);
   if (shape) fail(shape);
-  checkGltfCounts(parsed as Json, fail);
   const json = parsed as GltfJson;
   const asset = json.asset as Json | undefined;
   const version = typeof asset === 'object' && asset !== null ? asset.version : undefined;

@@ -6,7 +6,7 @@ import { checkTriangleBudget, formatCount, MAX_IMPORT_TRIANGLES } from './triang
 export const MAX_OBJ_VERTICES = 5 * MAX_IMPORT_TRIANGLES;
 
 export interface ScannedObj {
-  /** The geometry as OBJLoader should read it: `v x y z`, `f a b c …` with absolute 1-based indices, `o`/`g`, `usemtl`. */
+  /** The geometry as OBJLoader should read it: `v x y z`, `f a b c …` with absolute 1-based indices, `usemtl` where the material changes. */
   text: string;
   /** Triangles after fan triangulation of every face. */
   triangles: number;
@@ -16,6 +16,9 @@ export interface ScannedObj {
   /** Statements luxbox does not use (normals, texture coordinates, lines, points, curves …) and how often each appeared. */
   ignored: Map<string, number>;
 }
+
+/** Most material changes (`usemtl` naming another material) an OBJ file may make: each becomes a geometry group. */
+export const MAX_OBJ_MATERIAL_CHANGES = 16_384;
 
 /** Statements that carry nothing the baker needs; dropped without a warning. */
 const SILENT = new Set(['vn', 'vt', 's', 'vp']);
@@ -39,6 +42,8 @@ export function scanObjText(bytes: Uint8Array, file: string): ScannedObj {
   const ignored = new Map<string, number>();
   let vertices = 0;
   let triangles = 0;
+  let currentMaterial = '';
+  let materialChanges = 0;
 
   const statement = (line: string, lineNumber: number): void => {
     const trimmed = line.trim();
@@ -85,14 +90,20 @@ export function scanObjText(bytes: Uint8Array, file: string): ScannedObj {
         break;
       }
       case 'o':
-      case 'g': {
-        const tokens = trimmed.split(/\s+/);
-        out.push(tokens.length > 1 ? `${keyword} ${tokens.slice(1).join(' ')}` : keyword);
+      case 'g':
+        // Objects and groups carry nothing luxbox keeps (materials come from usemtl), and OBJLoader
+        // builds a mesh for each: 600 000 `g` lines took 5 s (issue 32). Not passed on.
+        break;
+      case 'usemtl': {
+        const material = space > 0 ? trimmed.slice(6).trim() : '';
+        // Only a change of material starts a new group in OBJLoader; each costs a draw group.
+        if (material === '' || material === currentMaterial) break;
+        currentMaterial = material;
+        materialChanges++;
+        if (materialChanges > MAX_OBJ_MATERIAL_CHANGES) throw new InputError(`${where}: more than ${formatCount(MAX_OBJ_MATERIAL_CHANGES)} changes of material (usemtl); merge faces of one material`);
+        out.push(`usemtl ${material}`);
         break;
       }
-      case 'usemtl':
-        if (space > 0) out.push(`usemtl ${trimmed.slice(6).trim()}`);
-        break;
       case 'mtllib':
         // File names may not contain spaces in OBJ; several libraries may share one line.
         for (const name of trimmed.split(/\s+/).slice(1)) if (!mtllibs.includes(name)) mtllibs.push(name);
