@@ -73,6 +73,8 @@ const REFUSAL_KINDS: [string, RegExp][] = [
   ['stored size', /in a saved configuration/],
   ['extent', /from the model's origin/],
   ['non-finite', /not a finite number/],
+  ['index range', /refers to vertex/],
+  ['references', /refers to (accessor|node|mesh)/],
   ['OBJ syntax', /line \d+:|no faces/],
   ['no triangles', /no triangles/],
   ['JSON', /JSON|must be an array|must be an object|asset\.version|must be a string/],

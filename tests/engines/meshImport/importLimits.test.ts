@@ -94,7 +94,7 @@ describe('byte caps before decoding; the OBJ scan stops at its caps', () => {
     const bytes = new Uint8Array(Math.floor(20e6 / line.length) * line.length);
     for (let at = 0; at < bytes.length; at += line.length) bytes.set(line, at);
     const t0 = performance.now();
-    expect(await refusal([{ name: 'v.obj', bytes }])).toBe('v.obj: more than 240 000 vertices; simplify the model and import again');
+    expect(await refusal([{ name: 'v.obj', bytes }])).toBe('v.obj: more than 144 000 vertices; simplify the model and import again');
     expect(performance.now() - t0).toBeLessThan(1000);
   });
 
