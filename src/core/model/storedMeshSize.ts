@@ -25,7 +25,8 @@ const base64Length = (bytes: number): number => 4 * Math.ceil(bytes / 3);
 /**
  * Characters an imported mesh named `name` takes in a saved configuration (pretty-printed as
  * serializeConfiguration writes it), counted from the array lengths without encoding anything;
- * an upper bound within a few hundred characters (keys, indentation, escapes in names).
+ * within a few hundred characters of the real text (keys, indentation, escapes in names), which
+ * the 100 000 characters MAX_STORED_MESH_CHARS leaves free absorb.
  */
 export function storedMeshChars(name: string, mesh: TriangleMesh): number {
   const materials = mesh.materials.reduce((sum, m) => sum + JSON.stringify(m.name).length + 3 * 24 + 160, 0);
