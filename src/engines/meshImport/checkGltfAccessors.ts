@@ -106,3 +106,42 @@ export function checkGltfAccessors(json: Json, binary: Uint8Array, fail: (proble
     }
   });
 }
+
+/**
+ * Every primitive's index values against its POSITION count, read once per (indices, POSITION)
+ * pair after checkGltfAccessors has bounded them, so a message can name the primitive and both
+ * accessors (collectTriangles checks again as it reads, for any path that skips this). Index
+ * accessors must be unsigned SCALARs (§3.7.2.1); sparse or view-less ones are left to that check.
+ */
+export function checkPrimitiveIndices(json: Json, binary: Uint8Array, fail: (problem: string) => never): void {
+  const accessors = Array.isArray(json.accessors) ? (json.accessors as Json[]) : [];
+  const views = Array.isArray(json.bufferViews) ? (json.bufferViews as Json[]) : [];
+  const meshes = Array.isArray(json.meshes) ? (json.meshes as unknown[]) : [];
+  const data = new DataView(binary.buffer, binary.byteOffset, binary.byteLength);
+  const checked = new Set<string>();
+  meshes.forEach((mesh, m) => {
+    const primitives = typeof mesh === 'object' && mesh !== null && Array.isArray((mesh as Json).primitives) ? ((mesh as Json).primitives as unknown[]) : [];
+    primitives.forEach((primitive, p) => {
+      if (typeof primitive !== 'object' || primitive === null) return;
+      const { indices: k, attributes } = primitive as Json;
+      const position = typeof attributes === 'object' && attributes !== null ? (attributes as Json).POSITION : undefined;
+      if (!whole(k) || !whole(position) || !accessors[k] || !accessors[position]) return;
+      const key = `${k}/${position}`;
+      if (checked.has(key)) return;
+      checked.add(key);
+      const a = accessors[k];
+      const bytes = { 5121: 1, 5123: 2, 5125: 4 }[a.componentType as number];
+      if (bytes === undefined || a.type !== 'SCALAR') fail(`meshes[${m}].primitives[${p}]: indices accessors[${k}] must be unsigned SCALARs (componentType 5121, 5123 or 5125)`);
+      if (a.bufferView === undefined || a.sparse !== undefined) return;
+      const vertices = accessors[position].count as number;
+      const view = views[a.bufferView as number];
+      const stride = typeof view.byteStride === 'number' ? view.byteStride : bytes!;
+      const base = (view.byteOffset as number) + ((a.byteOffset as number | undefined) ?? 0);
+      for (let i = 0; i < (a.count as number); i++) {
+        const at = base + i * stride;
+        const value = bytes === 1 ? data.getUint8(at) : bytes === 2 ? data.getUint16(at, true) : data.getUint32(at, true);
+        if (value >= vertices) fail(`meshes[${m}].primitives[${p}]: indices accessors[${k}][${i}] = ${value}, but POSITION accessors[${position}] has ${formatCount(vertices)} vertices`);
+      }
+    });
+  });
+}

@@ -5,7 +5,7 @@ import { findFile } from './findFile';
 import type { MeshFile, MeshImportOptions } from './importedMesh';
 import { shortName } from './readMtlMaterials';
 import { checkByteCap, MODEL_BYTE_CAPS } from './byteCaps';
-import { checkGltfAccessors } from './checkGltfAccessors';
+import { checkGltfAccessors, checkPrimitiveIndices } from './checkGltfAccessors';
 import { checkGltfCounts } from './gltfCountCaps';
 import { checkTriangleBudget, formatCount, MAX_IMPORT_TRIANGLES } from './triangleBudget';
 
@@ -91,6 +91,7 @@ export async function packGltf(files: readonly MeshFile[], options: MeshImportOp
   stripTextures(json, name, warnings, fail);
   const binary = await packBuffers(json, bin, files, options, name, fail);
   checkGltfAccessors(json, binary, fail);
+  checkPrimitiveIndices(json, binary, fail);
   checkTriangleBudget(name, sceneTriangles(json, fail));
   keepDefaultScene(json);
   fillPositionBounds(json, binary);

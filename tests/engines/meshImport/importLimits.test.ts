@@ -49,6 +49,14 @@ describe('glTF accessors and buffer views are checked before anything reads them
     expect(await refusal([gltf(j)])).toBe(message);
   });
 
+  it('an index value past its POSITION accessor is refused naming the primitive, both accessors and the numbers', async () => {
+    const j = table();
+    const bin = Buffer.from((j.buffers as { uri: string }[])[0].uri.split(',')[1], 'base64');
+    bin.writeUInt16LE(9, 192 + 2 * 5);
+    (j.buffers as { uri: string }[])[0].uri = `data:application/octet-stream;base64,${bin.toString('base64')}`;
+    expect(await refusal([gltf(j)])).toBe('x.gltf: meshes[0].primitives[0]: indices accessors[2][5] = 9, but POSITION accessors[0] has 8 vertices');
+  });
+
   it('a sparse index past its accessor is refused (the index values themselves are read and checked)', async () => {
     const j = table();
     // The box's 36 triangle indices (0 … 7) as sparse indices of a 4-element accessor.
