@@ -1,10 +1,10 @@
 /**
- * `npm run fuzz -- [--count N] [--target name] [--seed S] [--no-save] [--replay]`:
+ * `npm run fuzz -- [--count N] [--target name] [--seed S] [--no-save] [--replay] [--path app|cli]`:
  * N mutants per target (default 10 000) from the real fixtures, a table per
  * target, every failing input kept under tests/fixtures/fuzz-regressions/<target>/
  * (replayed by tests/fuzz/fuzz.test.ts and meshFuzz.test.ts). Exit status 1 when anything failed.
  * The `mesh` target (asynchronous: meshTarget.ts) runs N mutants through each import path and
- * also prints its refusals by kind. docs/scene-format.md, "Hostile input and fuzzing".
+ * also prints its refusals by kind; `--path` picks one (two campaigns can then run side by side). docs/scene-format.md, "Hostile input and fuzzing".
  */
 import { allTargets, formatTable, fuzz, isFailure, replay, saveRegression, type Tally } from './fuzzEngine';
 import { formatRefusals, fuzzMesh, replayMesh } from './meshTarget';
@@ -31,7 +31,8 @@ async function main(args: string[]): Promise<number> {
   const tallies: Tally[] = [];
   const refusals: string[] = [];
   if (!only || only === 'mesh') {
-    for (const path of ['app', 'cli'] as const) {
+    const paths = (['app', 'cli'] as const).filter((p) => !option(args, '--path') || option(args, '--path') === p);
+    for (const path of paths) {
       const started = performance.now();
       process.stderr.write(`mesh (${path}): `);
       const tally = args.includes('--replay') ? await replayMesh(path) : await fuzzMesh(path, count, seed, { keepFailures: 200, onProgress: (n) => process.stderr.write(`${n} `) });
