@@ -95,7 +95,17 @@ export async function packGltf(files: readonly MeshFile[], options: MeshImportOp
   checkTriangleBudget(name, sceneTriangles(json, fail));
   keepDefaultScene(json);
   fillPositionBounds(json, binary);
-  return { name, glb: buildGlb(JSON.stringify(json), binary), json, warnings };
+  return { name, glb: buildGlb(JSON.stringify(json, forLoader), binary), json, warnings };
+}
+
+/**
+ * The JSON as GLTFLoader gets it: a baseColorFactor that is not four finite numbers is left out
+ * (the loader would print "parameter 'opacity' has value of undefined" on the CLI's stderr);
+ * importGltfMesh still reads the original from `json`, warns and uses grey.
+ */
+function forLoader(key: string, value: unknown): unknown {
+  if (key !== 'baseColorFactor') return value;
+  return Array.isArray(value) && value.length === 4 && value.every((x) => typeof x === 'number' && Number.isFinite(x)) ? value : undefined;
 }
 
 function readU32(bytes: Uint8Array, offset: number): number {
