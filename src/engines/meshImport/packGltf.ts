@@ -237,6 +237,8 @@ async function packBuffers(
     offsets.push(total);
     total += Math.ceil(p.length / 8) * 8;
   }
+  // Each buffer is capped; together they are copied into one, which the same cap bounds.
+  if (total > MODEL_BYTE_CAPS.glb) fail(`${parts.length} buffers of ${(total / 1e6).toPrecision(3)} MB together; at most ${MODEL_BYTE_CAPS.glb / 1e6} MB are read`);
   const binary = new Uint8Array(total);
   parts.forEach((p, i) => binary.set(p, offsets[i]));
   const views = list(json, 'bufferViews', fail);
