@@ -277,7 +277,19 @@ export function mutateBundle(seed: MeshBundle, rng: Rng): { bundle: MeshBundle; 
       }
       if (typeof json !== 'object' || json === null) continue;
       mutateGltfJson(json, rng, applied);
-      const text = JSON.stringify(json);
+      let text: string;
+      try {
+        text = JSON.stringify(json);
+      } catch {
+        // Mutations compounded past the longest string V8 makes: keep the file as it was.
+        applied.push('(too large, reverted)');
+        continue;
+      }
+      // Far past every cap already; larger only slows the campaign down.
+      if (text.length > 64e6) {
+        applied.push('(too large, reverted)');
+        continue;
+      }
       f.bytes = glb ? buildGlb(text, glb.bin) : encoder.encode(text);
     } else if (/\.(obj|mtl)$/i.test(f.name)) {
       f.bytes = encoder.encode(mutateObjText(decoder.decode(f.bytes), rng, applied));

@@ -143,7 +143,7 @@ function record(t: MeshTally, r: RunResult, bytes: Uint8Array, applied: string[]
  * `count` seeded mutants through one path (the same mutants for both paths at the same seed).
  * `inputs` replaces the mutants by given inputs (the seeds and regressions: `replayMesh`).
  */
-export async function fuzzMesh(path: MeshPath, count: number, seed: number, options: { keepFailures?: number; onProgress?: (done: number) => void } = {}): Promise<MeshTally> {
+export async function fuzzMesh(path: MeshPath, count: number, seed: number, options: { keepFailures?: number; onProgress?: (done: number, tally: MeshTally) => void } = {}): Promise<MeshTally> {
   const tally: MeshTally = { ...emptyTally(`mesh (${path})`), refusals: new Map() };
   const seeds = meshSeeds();
   const rng = createRng(seed ^ 0x6d657368);
@@ -154,7 +154,7 @@ export async function fuzzMesh(path: MeshPath, count: number, seed: number, opti
       const { bundle, applied } = mutateBundle(decodeBundle(s.bytes), rng);
       const bytes = encodeBundle(bundle);
       record(tally, await runMesh(bytes, path, join(folder, 'm')), bytes, applied, s.name, options.keepFailures ?? 50);
-      if (options.onProgress && (i + 1) % 1000 === 0) options.onProgress(i + 1);
+      if (options.onProgress && (i + 1) % 1000 === 0) options.onProgress(i + 1, tally);
     }
   } finally {
     rmSync(folder, { recursive: true, force: true });

@@ -35,7 +35,11 @@ async function main(args: string[]): Promise<number> {
     for (const path of paths) {
       const started = performance.now();
       process.stderr.write(`mesh (${path}): `);
-      const tally = args.includes('--replay') ? await replayMesh(path) : await fuzzMesh(path, count, seed, { keepFailures: 200, onProgress: (n) => process.stderr.write(`${n} `) });
+      const tally = args.includes('--replay') ? await replayMesh(path) : await fuzzMesh(path, count, seed, {
+            keepFailures: 200,
+            // A long campaign reports as it goes: inputs, failures, inputs over 1 s, slowest ms.
+            onProgress: (n, t) => process.stderr.write(`${n} (${t.failures.length} failing, ${t.slow} over 1 s, max ${Math.round(t.maxMs)} ms) `),
+          });
       process.stderr.write(`done in ${((performance.now() - started) / 1000).toFixed(1)} s\n`);
       tallies.push(tally);
       refusals.push(`${tally.target} refusals: ${formatRefusals(tally)}`);
