@@ -90,8 +90,13 @@ export function refusalKind(message: string): string {
 }
 
 /** One input through one path, classified as fuzzEngine's runOne does. */
-export async function runMesh(bytes: Uint8Array, path: MeshPath, folder: string): Promise<RunResult> {
+export async function runMesh(bytes: Uint8Array, path: MeshPath, folder: string): Promise<MeshRunResult> {
   const bundle = decodeBundle(bytes);
+  const cpu0 = process.cpuUsage();
+  const cpuMs = (): number => {
+    const d = process.cpuUsage(cpu0);
+    return (d.user + d.system) / 1000;
+  };
   const t0 = performance.now();
   let imported: ImportedMesh;
   try {
@@ -114,23 +119,34 @@ export async function runMesh(bytes: Uint8Array, path: MeshPath, folder: string)
     if (!(error instanceof InputError)) {
       const e = error as Error;
       const where = (e?.stack ?? '').split('\n').find((l) => /src\//.test(l))?.trim() ?? '';
-      return { verdict: 'crash', ms, detail: `${e?.name ?? 'throw'}: ${String(e?.message ?? error).slice(0, 120)} ${where}`, slow: ms > SLOW_MS };
+      return { verdict: 'crash', ms, cpuMs: cpuMs(), detail: `${e?.name ?? 'throw'}: ${String(e?.message ?? error).slice(0, 120)} ${where}`, slow: ms > SLOW_MS };
     }
     const bad = messageProblem(error.message, MAX_MESSAGE);
-    return { verdict: bad ? 'bad-message' : 'refused-one-line', ms, detail: bad ? `${bad}: ${error.message.slice(0, 160)}` : error.message, slow: ms > SLOW_MS };
+    return { verdict: bad ? 'bad-message' : 'refused-one-line', ms, cpuMs: cpuMs(), detail: bad ? `${bad}: ${error.message.slice(0, 160)}` : error.message, slow: ms > SLOW_MS };
   }
   const ms = performance.now() - t0;
+  const cpu = cpuMs();
   const { problems } = saveAndReopen(imported);
-  if (problems.length === 0) return { verdict: 'accepted-valid', ms, detail: '', slow: ms > SLOW_MS };
-  return { verdict: problems.some((p) => p.startsWith('non-finite')) ? 'non-finite' : 'accepted-invalid', ms, detail: problems.join('; ').slice(0, 300), slow: ms > SLOW_MS };
+  if (problems.length === 0) return { verdict: 'accepted-valid', ms, cpuMs: cpu, detail: '', slow: ms > SLOW_MS };
+  return { verdict: problems.some((p) => p.startsWith('non-finite')) ? 'non-finite' : 'accepted-invalid', ms, cpuMs: cpu, detail: problems.join('; ').slice(0, 300), slow: ms > SLOW_MS };
+}
+
+/** A run with its CPU time too: on a shared, overloaded machine wall time measures the neighbours. */
+export interface MeshRunResult extends RunResult {
+  cpuMs: number;
 }
 
 export interface MeshTally extends Tally {
   refusals: Map<string, number>;
+  /** Slowest input by the process's CPU time (user + system), and how many took over 1 s of it. */
+  maxCpuMs: number;
+  slowCpu: number;
 }
 
-function record(t: MeshTally, r: RunResult, bytes: Uint8Array, applied: string[], seed: string, keep: number): void {
+function record(t: MeshTally, r: MeshRunResult, bytes: Uint8Array, applied: string[], seed: string, keep: number): void {
   t.inputs++;
+  t.maxCpuMs = Math.max(t.maxCpuMs, r.cpuMs);
+  if (r.cpuMs > SLOW_MS) t.slowCpu++;
   t.counts[r.verdict]++;
   if (r.slow) t.slow++;
   t.maxMs = Math.max(t.maxMs, r.ms);
@@ -144,7 +160,7 @@ function record(t: MeshTally, r: RunResult, bytes: Uint8Array, applied: string[]
  * `inputs` replaces the mutants by given inputs (the seeds and regressions: `replayMesh`).
  */
 export async function fuzzMesh(path: MeshPath, count: number, seed: number, options: { keepFailures?: number; onProgress?: (done: number, tally: MeshTally) => void } = {}): Promise<MeshTally> {
-  const tally: MeshTally = { ...emptyTally(`mesh (${path})`), refusals: new Map() };
+  const tally: MeshTally = { ...emptyTally(`mesh (${path})`), refusals: new Map(), maxCpuMs: 0, slowCpu: 0 };
   const seeds = meshSeeds();
   const rng = createRng(seed ^ 0x6d657368);
   const folder = mkdtempSync(join(tmpdir(), 'luxbox-mesh-fuzz-'));
@@ -164,7 +180,7 @@ export async function fuzzMesh(path: MeshPath, count: number, seed: number, opti
 
 /** The seeds and every stored regression input (tests/fixtures/fuzz-regressions/mesh), once each through `path`. */
 export async function replayMesh(path: MeshPath): Promise<MeshTally> {
-  const tally: MeshTally = { ...emptyTally(`mesh (${path})`), refusals: new Map() };
+  const tally: MeshTally = { ...emptyTally(`mesh (${path})`), refusals: new Map(), maxCpuMs: 0, slowCpu: 0 };
   const folder = mkdtempSync(join(tmpdir(), 'luxbox-mesh-fuzz-'));
   try {
     for (const s of [...meshSeeds(), ...loadRegressions('mesh')]) record(tally, await runMesh(s.bytes, path, join(folder, 'm')), s.bytes, ['(replay)'], s.name, Infinity);
@@ -174,7 +190,8 @@ export async function replayMesh(path: MeshPath): Promise<MeshTally> {
   return tally;
 }
 
-/** Refusals by kind, most frequent first: "triangle budget 812, accessor/view bounds 640, …". */
+/** Refusals by kind, most frequent first ("triangle budget 812, accessor/view bounds 640, …"), then the CPU time. */
 export function formatRefusals(t: MeshTally): string {
-  return [...t.refusals].sort((a, b) => b[1] - a[1]).map(([k, n]) => `${k} ${n}`).join(', ');
+  const kinds = [...t.refusals].sort((a, b) => b[1] - a[1]).map(([k, n]) => `${k} ${n}`).join(', ');
+  return `${kinds}; CPU time: slowest ${Math.round(t.maxCpuMs)} ms, ${t.slowCpu} over 1 s`;
 }

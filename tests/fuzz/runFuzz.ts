@@ -38,7 +38,7 @@ async function main(args: string[]): Promise<number> {
       const tally = args.includes('--replay') ? await replayMesh(path) : await fuzzMesh(path, count, seed, {
             keepFailures: 200,
             // A long campaign reports as it goes: inputs, failures, inputs over 1 s, slowest ms.
-            onProgress: (n, t) => process.stderr.write(`${n} (${t.failures.length} failing, ${t.slow} over 1 s, max ${Math.round(t.maxMs)} ms) `),
+            onProgress: (n, t) => process.stderr.write(`${n} (${t.failures.length} failing, ${t.slow} over 1 s, max ${Math.round(t.maxMs)} ms, CPU max ${Math.round(t.maxCpuMs)} ms) `),
           });
       process.stderr.write(`done in ${((performance.now() - started) / 1000).toFixed(1)} s\n`);
       tallies.push(tally);
