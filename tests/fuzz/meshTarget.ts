@@ -5,7 +5,7 @@
  * Importing is asynchronous (three's GLTFLoader), so this target has its own campaign loop; it
  * shares the tally, the table and the regression store with the other targets (fuzzEngine.ts).
  * A run fails on: a throw that is not an InputError, a message that is not one line of at most
- * 200 characters, more than 1 s, a non-finite vertex, or an accepted model that addObject takes
+ * 200 characters, more than 1 s of CPU time, a non-finite vertex, or an accepted model that addObject takes
  * but that does not save and reopen (saveAndReopen.ts).
  */
 import { mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
@@ -91,6 +91,13 @@ export function refusalKind(message: string): string {
 
 /** One input through one path, classified as fuzzEngine's runOne does. */
 export async function runMesh(bytes: Uint8Array, path: MeshPath, folder: string): Promise<MeshRunResult> {
+  const r = await runMeshTimed(bytes, path, folder);
+  // Judged by CPU time: on the shared 2-core machine (load average up to 14) wall time measures the
+  // neighbours — 898 ms of wall time for 157 ms of CPU in one CI run. The table's max ms stays wall time.
+  return { ...r, slow: r.cpuMs > SLOW_MS };
+}
+
+async function runMeshTimed(bytes: Uint8Array, path: MeshPath, folder: string): Promise<MeshRunResult> {
   const bundle = decodeBundle(bytes);
   const cpu0 = process.cpuUsage();
   const cpuMs = (): number => {
@@ -119,16 +126,16 @@ export async function runMesh(bytes: Uint8Array, path: MeshPath, folder: string)
     if (!(error instanceof InputError)) {
       const e = error as Error;
       const where = (e?.stack ?? '').split('\n').find((l) => /src\//.test(l))?.trim() ?? '';
-      return { verdict: 'crash', ms, cpuMs: cpuMs(), detail: `${e?.name ?? 'throw'}: ${String(e?.message ?? error).slice(0, 120)} ${where}`, slow: ms > SLOW_MS };
+      return { verdict: 'crash', ms, cpuMs: cpuMs(), detail: `${e?.name ?? 'throw'}: ${String(e?.message ?? error).slice(0, 120)} ${where}`, slow: false };
     }
     const bad = messageProblem(error.message, MAX_MESSAGE);
-    return { verdict: bad ? 'bad-message' : 'refused-one-line', ms, cpuMs: cpuMs(), detail: bad ? `${bad}: ${error.message.slice(0, 160)}` : error.message, slow: ms > SLOW_MS };
+    return { verdict: bad ? 'bad-message' : 'refused-one-line', ms, cpuMs: cpuMs(), detail: bad ? `${bad}: ${error.message.slice(0, 160)}` : error.message, slow: false };
   }
   const ms = performance.now() - t0;
   const cpu = cpuMs();
   const { problems } = saveAndReopen(imported);
-  if (problems.length === 0) return { verdict: 'accepted-valid', ms, cpuMs: cpu, detail: '', slow: ms > SLOW_MS };
-  return { verdict: problems.some((p) => p.startsWith('non-finite')) ? 'non-finite' : 'accepted-invalid', ms, cpuMs: cpu, detail: problems.join('; ').slice(0, 300), slow: ms > SLOW_MS };
+  if (problems.length === 0) return { verdict: 'accepted-valid', ms, cpuMs: cpu, detail: '', slow: false };
+  return { verdict: problems.some((p) => p.startsWith('non-finite')) ? 'non-finite' : 'accepted-invalid', ms, cpuMs: cpu, detail: problems.join('; ').slice(0, 300), slow: false };
 }
 
 /** A run with its CPU time too: on a shared, overloaded machine wall time measures the neighbours. */
