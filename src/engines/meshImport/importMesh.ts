@@ -1,4 +1,5 @@
 import { InputError } from '../../core/inputError';
+import { boundedMessage } from './boundedMessage';
 import type { ImportedMesh, MeshFile, MeshImportOptions } from './importedMesh';
 import { importGltfMesh } from './importGltfMesh';
 import { importObjMesh } from './importObjMesh';
@@ -13,6 +14,14 @@ import { findFile } from './findFile';
  * the files is an InputError naming the file.
  */
 export async function importMesh(files: readonly MeshFile[], options: MeshImportOptions = {}): Promise<ImportedMesh> {
+  try {
+    return await importAny(files, options);
+  } catch (error) {
+    throw boundedMessage(error);
+  }
+}
+
+async function importAny(files: readonly MeshFile[], options: MeshImportOptions): Promise<ImportedMesh> {
   if (files.some((f) => /\.(gltf|glb)$/i.test(f.name))) return importGltfMesh(files, options);
   const obj = files.find((f) => /\.obj$/i.test(f.name));
   if (!obj) {
@@ -23,7 +32,7 @@ export async function importMesh(files: readonly MeshFile[], options: MeshImport
   const all = [...files];
   const { readFile } = options;
   if (readFile) {
-    for (const lib of scanMtllibNames(obj.bytes)) {
+    for (const lib of scanMtllibNames(obj.bytes, obj.name)) {
       if (findFile(all, lib)) continue;
       try {
         all.push({ name: lib, bytes: await readFile(lib) });

@@ -3,6 +3,8 @@ import type { Group, Material } from 'three';
 import { InputError } from '../../core/inputError';
 import { oneLine } from '../../core/model/untrustedJson';
 import type { Rgb } from '../../core/model/lightingScene';
+import { boundedMessage } from './boundedMessage';
+import { checkByteCap, MODEL_BYTE_CAPS } from './byteCaps';
 import { collectTriangles } from './collectTriangles';
 import { decodeText } from './decodeText';
 import { DEFAULT_MATERIAL_NAME, DEFAULT_REFLECTANCE } from './defaultMaterial';
@@ -19,11 +21,19 @@ import { scanObjText } from './scanObjText';
  * ρ is the MTL's Kd used directly (the contract: docs/scene-format.md, "Importing meshes").
  */
 export function importObjMesh(files: readonly MeshFile[], options: MeshImportOptions = {}): ImportedMesh {
+  try {
+    return importObj(files, options);
+  } catch (error) {
+    throw boundedMessage(error);
+  }
+}
+
+function importObj(files: readonly MeshFile[], options: MeshImportOptions): ImportedMesh {
   const obj = files.find((f) => /\.obj$/i.test(f.name));
   if (!obj) throw new InputError(`no .obj file among ${files.map((f) => f.name).join(', ') || 'the files given'}`);
   const name = obj.name;
   const warnings: string[] = [];
-  const scanned = scanObjText(decodeText(obj.bytes), name);
+  const scanned = scanObjText(obj.bytes, name);
   if (scanned.ignored.size > 0) {
     const list = [...scanned.ignored].map(([k, n]) => `${JSON.stringify(k)} ×${n}`).join(', ');
     warnings.push(`${name}: statements luxbox does not use were ignored: ${list}`.slice(0, 200));
@@ -45,6 +55,7 @@ export function importObjMesh(files: readonly MeshFile[], options: MeshImportOpt
       warnings.push(`${name}: material library ${shortName(lib)} not found; its materials are grey 0.5`);
       continue;
     }
+    checkByteCap(shortName(lib), bytes.length, MODEL_BYTE_CAPS.mtl, 'a material library');
     librariesFound++;
     for (const [material, rgb] of readMtlMaterials(decodeText(bytes), lib, warnings)) if (!kd.has(material)) kd.set(material, rgb);
   }

@@ -2,6 +2,9 @@ import { orientMesh, type OrientationSummary } from '../../core/mesh/orientMesh'
 import { positionBounds, type Bounds3, type TriangleMesh } from '../../core/mesh/triangleMesh';
 import type { CollectedTriangles } from './collectTriangles';
 import { checkTriangleBudget } from './triangleBudget';
+import { checkExtent } from './checkExtent';
+import { checkStorable } from './checkStorable';
+import { keptName } from './keptName';
 import { detectUnits, METRES_PER_UNIT, PLAUSIBLE_EXTENT_M, type MeshUnit, type MeshUnitsOption } from './meshUnits';
 
 /** One file the user picked or the host read: its name (for messages and references) and bytes. */
@@ -41,8 +44,18 @@ export interface ImportedMesh {
 }
 
 /**
- * The last step of every import: unit detection and scaling, the triangle budget, orientation
- * (orientMesh: closed parts outward, two-sided open parts with their back sides), the bounds.
+  // Extents in metres whatever the unit choice; names cut to what a saved configuration accepts.
+  const bounds = positionBounds(positions);
+  checkExtent(name, bounds, units, warnings, requested === 'auto' && detected === null);
+  const materials = fileMesh.materials.map((m) => ({ ...m, name: keptName(m.name, `${name}: material`, warnings) }));
+  // After scaling: the two sides of a two-sided surface lie a fixed distance in metres apart.
+  const { mesh, summary } = orientMesh({ ...fileMesh, positions, materials }, (t) => collected.twoSided[t] === 1);
+  const kept = keptName(name, 'the model name', warnings);
+  // What is stored is the oriented mesh, back sides included: that is what must fit a saved file.
+  checkStorable(kept, mesh);
+  // The budget counts the file's triangles; back sides add at most as many again.
+  const triangleCount = fileMesh.indices.length / 3;
+  return { name: kept, mesh, units, detectedUnits, triangleCount, orientation: summary, bounds, warnings };
  * `fixedUnit` is the unit the format itself defines (glTF: metres), else null (OBJ).
  */
 export function finishImport(name: string, collected: CollectedTriangles, fixedUnit: MeshUnit | null, options: MeshImportOptions, warnings: string[]): ImportedMesh {
@@ -58,16 +71,19 @@ export function finishImport(name: string, collected: CollectedTriangles, fixedU
     warnings.push(`${name}: its largest extent (${round(extent)} file units) is not a plausible object size in m, cm, mm or inches (${PLAUSIBLE_EXTENT_M.min}–${PLAUSIBLE_EXTENT_M.max} m); metres assumed`);
   }
   const scale = METRES_PER_UNIT[units];
-  const metresExtent = extent * scale;
-  if (detected !== null && (metresExtent < PLAUSIBLE_EXTENT_M.min || metresExtent > PLAUSIBLE_EXTENT_M.max)) {
-    warnings.push(`${name}: ${round(metresExtent)} m across in ${units} — check the units`);
-  }
   const positions = scale === 1 ? fileMesh.positions : fileMesh.positions.map((x) => x * scale);
-  // After scaling: the back sides lie a fixed distance in metres behind their fronts.
-  const { mesh, summary } = orientMesh({ ...fileMesh, positions }, (t) => collected.twoSided[t] === 1);
-  // The budget counts the file's triangles; back sides add at most as many again (the baker's BVH and atlas take far more).
+  // Extents in metres whatever the unit choice; names cut to what a saved configuration accepts.
+  const bounds = positionBounds(positions);
+  checkExtent(name, bounds, units, warnings, requested === 'auto' && detected === null);
+  const materials = fileMesh.materials.map((m) => ({ ...m, name: keptName(m.name, `${name}: material`, warnings) }));
+  // After scaling: the two sides of a two-sided surface lie a fixed distance in metres apart.
+  const { mesh, summary } = orientMesh({ ...fileMesh, positions, materials }, (t) => collected.twoSided[t] === 1);
+  const kept = keptName(name, 'the model name', warnings);
+  // What is stored is the oriented mesh, back sides included: that is what must fit a saved file.
+  checkStorable(kept, mesh);
+  // The budget counts the file's triangles; back sides add at most as many again.
   const triangleCount = fileMesh.indices.length / 3;
-  return { name, mesh, units, detectedUnits, triangleCount, orientation: summary, bounds: positionBounds(positions), warnings };
+  return { name: kept, mesh, units, detectedUnits, triangleCount, orientation: summary, bounds, warnings };
 }
 
 function round(x: number): number {

@@ -4,7 +4,10 @@ import { decodeText } from './decodeText';
 import { findFile } from './findFile';
 import type { MeshFile, MeshImportOptions } from './importedMesh';
 import { shortName } from './readMtlMaterials';
-import { checkTriangleBudget, formatCount } from './triangleBudget';
+import { checkByteCap, MODEL_BYTE_CAPS } from './byteCaps';
+import { checkGltfAccessors, checkPrimitiveIndices } from './checkGltfAccessors';
+import { checkGltfCounts } from './gltfCountCaps';
+import { checkTriangleBudget, formatCount, MAX_IMPORT_TRIANGLES } from './triangleBudget';
 
 /** glTF 2.0 §4.4 "Binary glTF Layout": header magic "glTF", chunk types "JSON" and "BIN\0". */
 const GLB_MAGIC = 0x46546c67;
@@ -15,10 +18,11 @@ const CHUNK_BIN = 0x004e4942;
 const DROPPED_EXTENSIONS = /^(KHR_materials_|KHR_texture_|EXT_texture_|MSFT_texture_)/;
 /** Extensions three's GLTFLoader reads without extra decoders. */
 const READABLE_EXTENSIONS = new Set(['KHR_mesh_quantization', 'EXT_mesh_gpu_instancing', 'KHR_lights_punctual']);
-/** glTF JSON nests about 6 levels deep; arrays (nodes, accessors) may be long. */
-const GLTF_JSON_LIMITS = { maxDepth: 64, maxArrayLength: 1_000_000 } as const;
-/** Largest accessor (elements): bounds what a hostile count can make the loader allocate. */
-const MAX_ACCESSOR_COUNT = 1 << 24;
+/**
+ * glTF JSON nests about 6 levels deep; its longest arrays are the capped top-level ones
+ * (gltfCountCaps.ts, at most 8 192) and a node's children: 65 536 bounds what else (extras) may hold.
+ */
+const GLTF_JSON_LIMITS = { maxDepth: 64, maxArrayLength: 65_536 } as const;
 
 export interface PackedGltf {
   name: string;
@@ -41,6 +45,9 @@ export interface GltfJson extends Json {
  * `options.readFile`) and concatenated into one BIN chunk, images and textures removed (luxbox
  * needs geometry and base colour factors; Node has no image decoder), the node hierarchy checked
  * for cycles, and the triangle count checked against the budget before any geometry is built.
+ * Every input is bounded before it is decoded (byteCaps.ts), array counts are capped
+ * (gltfCountCaps.ts), every accessor is checked against its buffer view (checkGltfAccessors.ts),
+ * and only the default scene is kept (GLTFLoader builds every scene of a file).
  * GLTFLoader itself then fetches nothing: in Node its FileLoader cannot even read a data URI (it
  * needs the browser's ProgressEvent; three 0.187), and without images it needs no image decoder.
  */
@@ -54,6 +61,8 @@ export async function packGltf(files: readonly MeshFile[], options: MeshImportOp
   };
   const isGlb = main.bytes.length >= 4 && readU32(main.bytes, 0) === GLB_MAGIC;
   if (/\.glb$/i.test(name) && !isGlb) fail(`not a GLB file (the first 4 bytes are not "glTF")`);
+  if (isGlb) checkByteCap(name, main.bytes.length, MODEL_BYTE_CAPS.glb, 'a GLB file');
+  else checkByteCap(name, main.bytes.length, MODEL_BYTE_CAPS.gltfJson, 'glTF JSON');
   const { text, bin } = isGlb ? readGlb(main.bytes, fail) : { text: decodeText(main.bytes), bin: undefined };
   let parsed: unknown;
   try {
@@ -62,6 +71,8 @@ export async function packGltf(files: readonly MeshFile[], options: MeshImportOp
     fail(`invalid JSON (${error instanceof Error ? oneLine(error.message, 80) : 'syntax error'})`);
   }
   if (typeof parsed !== 'object' || parsed === null || Array.isArray(parsed)) fail('the glTF JSON is not an object');
+  // The top-level counts first (no recursion, and a 300 000-scene file stops here at once).
+  checkGltfCounts(parsed as Json, fail);
   // Nothing below (nor GLTFLoader) may recurse into a hostile nesting depth.
   const shape = jsonShapeProblem(parsed, GLTF_JSON_LIMITS);
   if (shape) fail(shape);
@@ -79,10 +90,22 @@ export async function packGltf(files: readonly MeshFile[], options: MeshImportOp
   const warnings: string[] = [];
   stripTextures(json, name, warnings, fail);
   const binary = await packBuffers(json, bin, files, options, name, fail);
-  checkAccessors(json, fail);
+  checkGltfAccessors(json, binary, fail);
+  checkPrimitiveIndices(json, binary, fail);
   checkTriangleBudget(name, sceneTriangles(json, fail));
+  keepDefaultScene(json);
   fillPositionBounds(json, binary);
-  return { name, glb: buildGlb(JSON.stringify(json), binary), json, warnings };
+  return { name, glb: buildGlb(JSON.stringify(json, forLoader), binary), json, warnings };
+}
+
+/**
+ * The JSON as GLTFLoader gets it: a baseColorFactor that is not four finite numbers is left out
+ * (the loader would print "parameter 'opacity' has value of undefined" on the CLI's stderr);
+ * importGltfMesh still reads the original from `json`, warns and uses grey.
+ */
+function forLoader(key: string, value: unknown): unknown {
+  if (key !== 'baseColorFactor') return value;
+  return Array.isArray(value) && value.length === 4 && value.every((x) => typeof x === 'number' && Number.isFinite(x)) ? value : undefined;
 }
 
 function readU32(bytes: Uint8Array, offset: number): number {
@@ -109,6 +132,7 @@ function readGlb(bytes: Uint8Array, fail: (p: string) => never): { text: string;
     const data = bytes.subarray(start, start + chunkLength);
     if (text === undefined) {
       if (type !== CHUNK_JSON) fail('the first chunk is not JSON');
+      if (chunkLength > MODEL_BYTE_CAPS.gltfJson) fail(`a JSON chunk of ${(chunkLength / 1e6).toPrecision(3)} MB; at most ${MODEL_BYTE_CAPS.gltfJson / 1e6} MB are read`);
       text = decodeText(data);
     } else if (type === CHUNK_BIN && bin === undefined) {
       bin = data;
@@ -200,6 +224,7 @@ async function packBuffers(
         }
       }
       if (!bytes) fail(`buffers[${i}]: ${shortName(uri)} is missing (pick it together with ${name})`);
+      if (bytes!.length > MODEL_BYTE_CAPS.glb) fail(`buffers[${i}]: ${shortName(uri)} has ${(bytes!.length / 1e6).toPrecision(3)} MB; at most ${MODEL_BYTE_CAPS.glb / 1e6} MB are read`);
     }
     if (bytes!.length < (byteLength as number)) {
       fail(`buffers[${i}]: ${formatCount(bytes!.length)} bytes, but byteLength says ${formatCount(byteLength as number)} (truncated?)`);
@@ -212,6 +237,8 @@ async function packBuffers(
     offsets.push(total);
     total += Math.ceil(p.length / 8) * 8;
   }
+  // Each buffer is capped; together they are copied into one, which the same cap bounds.
+  if (total > MODEL_BYTE_CAPS.glb) fail(`${parts.length} buffers of ${(total / 1e6).toPrecision(3)} MB together; at most ${MODEL_BYTE_CAPS.glb / 1e6} MB are read`);
   const binary = new Uint8Array(total);
   parts.forEach((p, i) => binary.set(p, offsets[i]));
   const views = list(json, 'bufferViews', fail);
@@ -223,7 +250,9 @@ async function packBuffers(
     const length = v.byteLength;
     if (typeof offset !== 'number' || !Number.isInteger(offset) || offset < 0) fail(`bufferViews[${k}].byteOffset must be a whole number`);
     if (typeof length !== 'number' || !Number.isInteger(length) || length < 0) fail(`bufferViews[${k}].byteLength must be a whole number`);
-    if ((offset as number) + (length as number) > parts[b as number].length) fail(`bufferViews[${k}] reaches beyond the end of buffers[${b}]`);
+    if ((offset as number) + (length as number) > parts[b as number].length) {
+      fail(`bufferViews[${k}]: ${formatCount(length as number)} bytes from byte ${formatCount(offset as number)} reach beyond the ${formatCount(parts[b as number].length)} bytes of buffers[${b}]`);
+    }
     v.buffer = 0;
     v.byteOffset = offsets[b as number] + (offset as number);
   });
@@ -233,6 +262,7 @@ async function packBuffers(
 
 /** Bytes of a base64 data URI (glTF 2.0 §3.6.2.1 allows only base64 data URIs for buffers). */
 function decodeDataUri(uri: string, where: string, fail: (p: string) => never): Uint8Array {
+  if (uri.length > MODEL_BYTE_CAPS.dataUri) fail(`${where}: a data URI of ${(uri.length / 1e6).toPrecision(3)} MB; at most ${MODEL_BYTE_CAPS.dataUri / 1e6} MB are read`);
   const comma = uri.indexOf(',');
   if (comma < 0 || !/;base64$/i.test(uri.slice(0, comma))) fail(`${where}: a data URI must be base64`);
   const data = uri.slice(comma + 1).replace(/\s+/g, '');
@@ -241,17 +271,6 @@ function decodeDataUri(uri: string, where: string, fail: (p: string) => never): 
   const out = new Uint8Array(binary.length);
   for (let i = 0; i < binary.length; i++) out[i] = binary.charCodeAt(i);
   return out;
-}
-
-function checkAccessors(json: GltfJson, fail: (p: string) => never): void {
-  const accessors = list(json, 'accessors', fail);
-  accessors.forEach((_, i) => {
-    const a = objectAt(accessors, i, 'accessors', fail);
-    const count = a.count;
-    if (typeof count !== 'number' || !Number.isInteger(count) || count < 0 || count > MAX_ACCESSOR_COUNT) {
-      fail(`accessors[${i}].count ${excerpt(count ?? null)} is not a whole number up to ${formatCount(MAX_ACCESSOR_COUNT)}`);
-    }
-  });
 }
 
 /**
@@ -341,10 +360,25 @@ function sceneTriangles(json: GltfJson, fail: (p: string) => never): number {
     const instancing = (node.extensions as Json | undefined)?.EXT_mesh_gpu_instancing as Json | undefined;
     const instanceAccessor = (instancing?.attributes as Json | undefined)?.TRANSLATION ?? (instancing?.attributes as Json | undefined)?.ROTATION ?? (instancing?.attributes as Json | undefined)?.SCALE;
     const copies = instanceAccessor !== undefined ? countOf(instanceAccessor) : 1;
+    // Instances of a mesh without triangles add none, but GLTFLoader still builds a matrix for each.
+    if (copies > MAX_IMPORT_TRIANGLES) fail(`nodes[${k}] has ${formatCount(copies)} instances; at most ${formatCount(MAX_IMPORT_TRIANGLES)}`);
     if (node.mesh !== undefined) triangles += meshTriangles(node.mesh) * copies;
     for (const child of list(node, 'children', fail, `nodes[${k}].children`)) stack.push(child);
   }
   return triangles;
+}
+
+/**
+ * Only the default scene (`scene`, else the first) as the file's one scene: GLTFLoader builds every
+ * scene (issue 32: a GLB declaring 285 714 scenes took 30 s), luxbox imports one. Cameras are
+ * dropped too (a camera carries no surface; GLTFLoader would build each).
+ */
+function keepDefaultScene(json: GltfJson): void {
+  const scenes = json.scenes as unknown[];
+  json.scenes = [scenes[(json.scene as number | undefined) ?? 0]];
+  json.scene = 0;
+  delete json.cameras;
+  for (const node of (Array.isArray(json.nodes) ? json.nodes : []) as unknown[]) if (typeof node === 'object' && node !== null) delete (node as Json).camera;
 }
 
 /** A GLB container (§4.4) holding `jsonText` and `binary`. */

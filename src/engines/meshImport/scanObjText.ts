@@ -1,11 +1,15 @@
 import { InputError } from '../../core/inputError';
+import { checkByteCap, MODEL_BYTE_CAPS } from './byteCaps';
 import { checkTriangleBudget, formatCount, MAX_IMPORT_TRIANGLES } from './triangleBudget';
 
-/** Most vertices an OBJ file may define (three per triangle of the budget, with room for unused ones). */
-export const MAX_OBJ_VERTICES = 5 * MAX_IMPORT_TRIANGLES;
+/**
+ * Most vertices an OBJ file may define: three per triangle of the budget, what an exporter that
+ * shares no vertex writes (welding then merges them). Reading them costs about 1 µs each.
+ */
+export const MAX_OBJ_VERTICES = 3 * MAX_IMPORT_TRIANGLES;
 
 export interface ScannedObj {
-  /** The geometry as OBJLoader should read it: `v x y z`, `f a b c …` with absolute 1-based indices, `o`/`g`, `usemtl`. */
+  /** The geometry as OBJLoader should read it: `v x y z`, `f a b c …` with absolute 1-based indices, `usemtl` where the material changes. */
   text: string;
   /** Triangles after fan triangulation of every face. */
   triangles: number;
@@ -16,38 +20,54 @@ export interface ScannedObj {
   ignored: Map<string, number>;
 }
 
+/** Most material changes (`usemtl` naming another material) an OBJ file may make: each becomes a geometry group. */
+export const MAX_OBJ_MATERIAL_CHANGES = 16_384;
+
 /** Statements that carry nothing the baker needs; dropped without a warning. */
 const SILENT = new Set(['vn', 'vt', 's', 'vp']);
+
+/** Bytes decoded at a time: each piece ends at a line break, so no line is split (and none may be longer). */
+const PIECE_BYTES = 1 << 20;
 
 /**
  * Check an OBJ file line by line before three's OBJLoader reads it (OBJLoader trusts its input:
  * an index out of range or a bad number becomes NaN silently) and rewrite it to the statements
  * luxbox uses. Every problem is an InputError naming the file and the line
  * (Wavefront OBJ, Appendix B1 of the Advanced Visualizer manual: `v`, `f`, `g`, `o`, `usemtl`, `mtllib`).
+ * The bytes are decoded a piece at a time and the scan stops at the first cap it passes (bytes,
+ * vertices, triangles), so a huge file costs no more than its first few megabytes (issue 32).
  */
-export function scanObjText(text: string, file: string): ScannedObj {
-  const nul = text.indexOf('\0');
-  if (nul >= 0 && text.slice(nul).replace(/[\0\s]/g, '') !== '') {
-    throw new InputError(`${file}: line ${lineOf(text, nul)}: binary data (a NUL byte): not a text OBJ file`);
-  }
-  const raw = text.split('\n');
+export function scanObjText(bytes: Uint8Array, file: string): ScannedObj {
+  checkByteCap(file, bytes.length, MODEL_BYTE_CAPS.obj, 'an OBJ file');
+  const decoder = new TextDecoder('utf-8', { fatal: false, ignoreBOM: false });
   const out: string[] = [];
   const mtllibs: string[] = [];
   const ignored = new Map<string, number>();
   let vertices = 0;
   let triangles = 0;
-  for (let i = 0; i < raw.length; i++) {
-    const lineNumber = i + 1;
-    let line = raw[i].replace(/\r$/, '');
-    // A trailing backslash continues the statement on the next line (OBJ spec, "Line continuation").
-    while (line.endsWith('\\') && i + 1 < raw.length) line = line.slice(0, -1) + raw[++i].replace(/\r$/, '');
+  let currentMaterial = '';
+  let materialChanges = 0;
+
+  const statement = (line: string, lineNumber: number): void => {
+    // The common statements luxbox drops (comments, groups, objects, smoothing, normals, texture
+    // coordinates) are recognised by their first bytes, without trimming or tokenising.
+    const c0 = line.charCodeAt(0);
+    const c1 = line.charCodeAt(1);
+    if (c0 === 35 /* # */) return;
+    if ((c0 === 103 /* g */ || c0 === 111 /* o */ || c0 === 115 /* s */) && (c1 === 32 || c1 === 9 || line.length === 1)) return;
+    if (c0 === 118 /* v */ && (c1 === 110 /* n */ || c1 === 116 /* t */) && (line.charCodeAt(2) === 32 || line.charCodeAt(2) === 9)) return;
     const trimmed = line.trim();
-    if (trimmed === '' || trimmed.startsWith('#') || /^\0+$/.test(trimmed)) continue;
-    const tokens = trimmed.split(/\s+/);
-    const keyword = tokens[0];
+    if (trimmed === '' || trimmed.charCodeAt(0) === 35 /* # */) return;
     const where = `${file}: line ${lineNumber}`;
+    if (trimmed.includes('\0')) {
+      if (/^[\0\s]*$/.test(trimmed)) return;
+      throw new InputError(`${where}: binary data (a NUL byte): not a text OBJ file`);
+    }
+    const space = trimmed.search(/\s/);
+    const keyword = space < 0 ? trimmed : trimmed.slice(0, space);
     switch (keyword) {
       case 'v': {
+        const tokens = trimmed.split(/\s+/);
         if (tokens.length < 4) throw new InputError(`${where}: a vertex needs three coordinates, got ${tokens.length - 1}`);
         const xyz = tokens.slice(1, 4).map((t) => {
           const value = Number(t);
@@ -60,6 +80,7 @@ export function scanObjText(text: string, file: string): ScannedObj {
         break;
       }
       case 'f': {
+        const tokens = trimmed.split(/\s+/);
         if (tokens.length < 4) throw new InputError(`${where}: a face needs at least 3 vertices, got ${tokens.length - 1}`);
         const indices = tokens.slice(1).map((t) => {
           const part = t.split('/')[0];
@@ -73,44 +94,70 @@ export function scanObjText(text: string, file: string): ScannedObj {
           return absolute;
         });
         triangles += indices.length - 2;
-        // Refuse early: a huge file is not worth building.
-        if (triangles > MAX_IMPORT_TRIANGLES) checkTriangleBudget(file, countTriangles(raw, i + 1, triangles));
+        // Refuse at once: the rest of a huge file is not worth reading.
+        checkTriangleBudget(file, triangles, true);
         out.push(`f ${indices.join(' ')}`);
         break;
       }
       case 'o':
       case 'g':
-        out.push(tokens.length > 1 ? `${keyword} ${tokens.slice(1).join(' ')}` : keyword);
+        // Objects and groups carry nothing luxbox keeps (materials come from usemtl), and OBJLoader
+        // builds a mesh for each: 600 000 `g` lines took 5 s (issue 32). Not passed on.
         break;
-      case 'usemtl':
-        if (tokens.length > 1) out.push(`usemtl ${trimmed.slice(6).trim()}`);
+      case 'usemtl': {
+        const material = space > 0 ? trimmed.slice(6).trim() : '';
+        // Only a change of material starts a new group in OBJLoader; each costs a draw group.
+        if (material === '' || material === currentMaterial) break;
+        currentMaterial = material;
+        materialChanges++;
+        if (materialChanges > MAX_OBJ_MATERIAL_CHANGES) throw new InputError(`${where}: more than ${formatCount(MAX_OBJ_MATERIAL_CHANGES)} changes of material (usemtl); merge faces of one material`);
+        out.push(`usemtl ${material}`);
         break;
+      }
       case 'mtllib':
         // File names may not contain spaces in OBJ; several libraries may share one line.
-        for (const name of tokens.slice(1)) if (!mtllibs.includes(name)) mtllibs.push(name);
+        for (const name of trimmed.split(/\s+/).slice(1)) if (!mtllibs.includes(name)) mtllibs.push(name);
         break;
       default:
         if (!SILENT.has(keyword)) ignored.set(keyword.slice(0, 16), (ignored.get(keyword.slice(0, 16)) ?? 0) + 1);
     }
+  };
+
+  let lineNumber = 0;
+  // A trailing backslash continues the statement on the next line (OBJ spec, "Line continuation");
+  // the pieces are joined once at the end (joining line by line would be quadratic).
+  let continued: string[] = [];
+  let continuedLength = 0;
+  let continuedFrom = 0;
+  for (let start = 0; start < bytes.length; ) {
+    let end = Math.min(bytes.length, start + PIECE_BYTES);
+    if (end < bytes.length) {
+      const newline = bytes.lastIndexOf(10, end - 1);
+      if (newline < start) throw new InputError(`${file}: line ${lineNumber + 1} is longer than ${PIECE_BYTES / 1024} kB: not a text OBJ file`);
+      end = newline + 1;
+    }
+    const lines = decoder.decode(bytes.subarray(start, end), { stream: end < bytes.length }).split('\n');
+    if (end < bytes.length || lines[lines.length - 1] === '') lines.pop();
+    start = end;
+    for (const raw of lines) {
+      lineNumber++;
+      const line = raw.endsWith('\r') ? raw.slice(0, -1) : raw;
+      if (continued.length === 0) continuedFrom = lineNumber;
+      if (line.endsWith('\\')) {
+        continued.push(line.slice(0, -1));
+        continuedLength += line.length;
+        if (continuedLength > PIECE_BYTES) throw new InputError(`${file}: line ${continuedFrom} continues past ${PIECE_BYTES / 1024} kB: not a text OBJ file`);
+        continue;
+      }
+      const joined = continued.length === 0 ? line : continued.join('') + line;
+      continued = [];
+      continuedLength = 0;
+      statement(joined, continuedFrom);
+    }
   }
+  if (continued.length > 0) statement(continued.join(''), continuedFrom);
   if (triangles === 0) throw new InputError(`${file}: no faces (luxbox needs a surface model with 'f' lines)`);
   return { text: out.join('\n'), triangles, vertices, mtllibs, ignored };
-}
-
-/** Triangles of the faces from line `from` on, added to `sofar` (for the budget message's exact count). */
-function countTriangles(raw: readonly string[], from: number, sofar: number): number {
-  let n = sofar;
-  for (let i = from; i < raw.length; i++) {
-    const t = raw[i].trim();
-    if (t.startsWith('f ') || t.startsWith('f\t')) n += Math.max(0, t.split(/\s+/).length - 3);
-  }
-  return n;
-}
-
-function lineOf(text: string, offset: number): number {
-  let line = 1;
-  for (let i = 0; i < offset; i++) if (text.charCodeAt(i) === 10) line++;
-  return line;
 }
 
 function quote(token: string): string {

@@ -1,13 +1,19 @@
 import { basename, dirname, resolve } from 'node:path';
 import { InputError } from '../../core/inputError';
+import { oneLine } from '../../core/model/untrustedJson';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
 import type { ImportedMesh, MeshFile } from '../../engines/meshImport/importedMesh';
 import { importMesh } from '../../engines/meshImport/importMesh';
 import { importObjMesh } from '../../engines/meshImport/importObjMesh';
 import { readRegularFile } from './readRegularFile';
+import { MODEL_BYTE_CAPS } from '../../engines/meshImport/byteCaps';
 
-/** Largest model file read (bytes): a 200 000-triangle OBJ is about 15 MB; anything far larger is a mistaken path. */
-export const MAX_MODEL_FILE_BYTES = 256e6;
+/**
+ * Largest model file read (bytes): the importer's largest byte cap (a .glb or an external buffer,
+ * MODEL_BYTE_CAPS.glb, 64 MB); the importer then applies each format's own cap with its message.
+ * Reading stops here, whatever the file system says its size is.
+ */
+export const MAX_MODEL_FILE_BYTES = Math.max(...Object.values(MODEL_BYTE_CAPS));
 
 export interface NodeMeshLoader {
   /** OBJ models only (three's GLTFLoader is asynchronous): for resolveBakeSceneSync. */
@@ -31,7 +37,7 @@ function readModel(file: string, shown: string, within: readonly string[] | unde
   try {
     return readModelFile(file, within);
   } catch (error) {
-    throw new InputError(`cannot read ${shown} (${(error as Error).message})`);
+    throw new InputError(oneLine(`cannot read ${shown} (${(error as Error).message})`));
   }
 }
 
@@ -72,7 +78,8 @@ export function createNodeMeshLoader(folder: string, options: { within?: readonl
       // missing one; a device, pipe, folder, oversize file or one outside the allowed folders is
       // refused instead, naming it (issue 32: `mtllib /dev/zero`).
       refused: () => {
-        if (refusal) throw new InputError(`${path}: ${refusal}`);
+        // One line of at most 200 characters, as every importer message (a model may name a file with thousands).
+        if (refusal) throw new InputError(oneLine(`${path}: ${refusal}`));
       },
     };
   };

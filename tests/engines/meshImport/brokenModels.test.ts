@@ -71,7 +71,7 @@ describe('importMesh: broken files are InputErrors naming the file (and the OBJ 
         j.accessors[2].count = 5000;
         return textFile('x.gltf', JSON.stringify(j));
       },
-      'x.gltf: cannot read the model',
+      'x.gltf: accessors[2]: 5 000 elements of 2 bytes from byte 0 need 10 000 bytes, bufferViews[2] has 72',
     ],
     [
       'NaN positions',

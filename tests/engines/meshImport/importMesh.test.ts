@@ -180,7 +180,7 @@ describe('importMesh: units', () => {
   });
 });
 
-describe('importMesh: the triangle budget (200 000)', () => {
+describe('importMesh: the triangle budget (48 000, what a saved configuration holds)', () => {
   /** An n×n grid of quads in the xz plane, 2n² triangles. */
   const grid = (n: number): string => {
     const lines: string[] = [];
@@ -192,26 +192,43 @@ describe('importMesh: the triangle budget (200 000)', () => {
     return lines.join('\n');
   };
 
-  it('317² quads = 200 978 triangles are refused with the count and what to do', async () => {
-    await expect(importMesh([textFile('kitchen.obj', grid(317))])).rejects.toThrow(
-      new InputError("kitchen.obj has 200 978 triangles; the limit is 200 000 — simplify the model (e.g. Blender's Decimate) and import again"),
+  it('155² quads = 48 050 triangles are refused while scanning, with the limit and what to do', async () => {
+    await expect(importMesh([textFile('kitchen.obj', grid(155))])).rejects.toThrow(
+      new InputError("kitchen.obj has more than 48 000 triangles; the limit is 48 000 (what a saved configuration holds) — simplify the model (e.g. Blender's Decimate) and import again"),
     );
   });
 
-  it('316² quads = 199 712 triangles load', async () => {
-    const r = await importMesh([textFile('floor.obj', grid(316))]);
-    expect(r.triangleCount).toBe(199_712);
-    // The budget counts the file's triangles; the open sheet's back side comes on top.
-    expect(r.mesh.indices.length / 3).toBe(2 * 199_712);
+  it('an open OBJ sheet is stored with its back side (issue #35): 91² quads (16 562 triangles, 33 124 stored) load; 92² quads are refused by their stored size', async () => {
+    const r = await importMesh([textFile('floor.obj', grid(91))]);
+    expect(r.triangleCount).toBe(16_562);
+    expect(r.mesh.indices.length / 3).toBe(2 * 16_562);
+    await expect(importMesh([textFile('floor.obj', grid(92))])).rejects.toThrow(
+      new InputError('floor.obj: 33 856 triangles on 17 298 vertices take 0.91 MB in a saved configuration; at most 0.90 MB fit — simplify the model and import again'),
+    );
+  }, 30_000);
+
+  it('a model under the triangle budget whose vertices are not shared is refused by its stored size, with the numbers', async () => {
+    // 40 000 separate triangles (each an open surface, stored with its back side): 240 000 vertices, 12 bytes each, do not fit in 0.9 MB of base64.
+    const lines: string[] = [];
+    for (let t = 0; t < 40_000; t++) {
+      const x = (t % 200) / 200;
+      const z = Math.floor(t / 200) / 200;
+      lines.push(`v ${x} 0 ${z}`, `v ${x + 0.004} 0 ${z}`, `v ${x} 0 ${z + 0.004}`, 'f -3 -1 -2');
+    }
+    await expect(importMesh([textFile('soup.obj', lines.join('\n'))])).rejects.toThrow(
+      new InputError('soup.obj: 80 000 triangles on 240 000 vertices take 5.33 MB in a saved configuration; at most 0.90 MB fit — simplify the model and import again'),
+    );
   }, 30_000);
 
   it('a glTF is counted from its JSON before any geometry is built', async () => {
     const json = JSON.parse(readFileSync(join(MODELS, 'table.gltf'), 'utf8'));
-    json.accessors[2].count = 3 * 60_000;
-    json.nodes.push({ mesh: 0 }, { mesh: 0 }, { mesh: 0 }, { mesh: 0 });
-    json.nodes[0].children.push(6, 7, 8, 9);
+    // 3 996 more uses of the table's 12-triangle top: 48 012 triangles.
+    for (let k = 0; k < 3996; k++) {
+      json.nodes[0].children.push(json.nodes.length);
+      json.nodes.push({ mesh: 0 });
+    }
     await expect(importMesh([textFile('huge.gltf', JSON.stringify(json))])).rejects.toThrow(
-      new InputError("huge.gltf has 540 000 triangles; the limit is 200 000 — simplify the model (e.g. Blender's Decimate) and import again"),
+      new InputError("huge.gltf has 48 012 triangles; the limit is 48 000 (what a saved configuration holds) — simplify the model (e.g. Blender's Decimate) and import again"),
     );
   });
 });

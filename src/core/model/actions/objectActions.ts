@@ -4,6 +4,7 @@
  * (bindDefinition.ts); addObject alone moves the object to the nearest spot where it fits
  * (fitPlacement), so a sofa dropped half through a wall lands against it.
  */
+import { MAX_STORED_MESH_CHARS, storedMeshChars } from '../storedMeshSize';
 import { z } from 'zod';
 import { InputError } from '../../inputError';
 import type { TriangleMesh } from '../../mesh/triangleMesh';
@@ -77,6 +78,12 @@ export const addObject: ActionDefinition<z.infer<typeof addParams>> = {
       const [meshId, withMesh] = takeId(state, 'i');
       const entry: ImportedMesh = { name: p.source.name, mesh: p.source.mesh, units: p.source.units };
       next = { ...withMesh, importedMeshes: { ...state.importedMeshes, [meshId]: entry } };
+      // Every model together must fit in a file that reopens (1 MB, issue 32); the importer checks each alone.
+      const stored = Object.values(next.importedMeshes).reduce((sum, m) => sum + storedMeshChars(m.name, m.mesh), 0);
+      if (stored > MAX_STORED_MESH_CHARS) {
+        const problem = `the imported models would take ${(stored / 1e6).toFixed(2)} MB of a saved configuration; at most ${(MAX_STORED_MESH_CHARS / 1e6).toFixed(2)} MB fit`;
+        throw new InputError(`imported model '${p.source.name}': ${problem}`, { code: 'importedModelBroken', params: { name: p.source.name, problem } });
+      }
       source = { kind: 'imported', mesh: meshId };
     } else if (p.source.kind === 'library') {
       if (!findFurnitureItem(p.source.item)) throw new InputError(`no furniture item '${p.source.item}' in the library`, { code: 'unknownFurniture', params: { item: p.source.item } });
