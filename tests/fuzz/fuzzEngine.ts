@@ -15,6 +15,7 @@ import { configurationFuzzTarget } from './configurationTarget';
 import type { FuzzOutcome, FuzzSeed, FuzzTarget } from './fuzzTarget';
 import { createRng, mutate, type TextEncoding } from './mutate';
 import { sceneFuzzTarget } from './sceneTarget';
+import { sceneFilesFuzzTarget } from './sceneFilesTarget';
 import { shareLinkCodec, shareLinkFuzzTarget } from './shareLinkTarget';
 
 export const REGRESSION_ROOT = 'tests/fixtures/fuzz-regressions';
@@ -27,7 +28,7 @@ const PHOTOMETRY_MODULE = 'tests/fuzz/photometryTarget.ts';
 
 /** Every target: the four formats of this file's siblings, plus photometry when its target exists. */
 export async function allTargets(): Promise<FuzzTarget[]> {
-  const targets: FuzzTarget[] = [sceneFuzzTarget, configurationFuzzTarget, shareLinkFuzzTarget, catalogFuzzTarget];
+  const targets: FuzzTarget[] = [sceneFuzzTarget, sceneFilesFuzzTarget, configurationFuzzTarget, shareLinkFuzzTarget, catalogFuzzTarget];
   if (existsSync(PHOTOMETRY_MODULE)) {
     // import { photometryFuzzTarget } from './photometryTarget' — by path, so this file compiles without it.
     const mod = (await import(/* @vite-ignore */ pathToFileURL(join(process.cwd(), PHOTOMETRY_MODULE)).href)) as { photometryFuzzTarget?: FuzzTarget; photometryRegressions?: () => FuzzSeed[] };

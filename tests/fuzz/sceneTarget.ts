@@ -16,7 +16,7 @@ const SEEDS = ['tests/fixtures/scenes/small-room.json', 'tests/fixtures/bench/li
 const decoder = new TextDecoder('utf-8'); // as readFileSync(path, 'utf8'): bad bytes become U+FFFD
 
 /** Physical sanity of an accepted scene, checked independently of the parser. */
-function sceneProblems(s: LightingScene): string[] {
+export function sceneProblems(s: LightingScene): string[] {
   const out: string[] = [];
   const { width, height, depth } = s.room;
   if (![width, height, depth].every((d) => d >= 0.1 && d <= 500)) out.push('room dimension out of range');
