@@ -246,7 +246,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
                   ⤢
                 </CommandButton>
               </div>
-              {config.systems.length === 0 && firstRun !== false && (
+              {config.systems.length === 0 && config.objects.length === 0 && firstRun !== false && (
                 <LazyGuidance
                   firstRun={{
                     room: config.room,
