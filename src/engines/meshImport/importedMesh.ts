@@ -44,18 +44,9 @@ export interface ImportedMesh {
 }
 
 /**
-  // Extents in metres whatever the unit choice; names cut to what a saved configuration accepts.
-  const bounds = positionBounds(positions);
-  checkExtent(name, bounds, units, warnings, requested === 'auto' && detected === null);
-  const materials = fileMesh.materials.map((m) => ({ ...m, name: keptName(m.name, `${name}: material`, warnings) }));
-  // After scaling: the two sides of a two-sided surface lie a fixed distance in metres apart.
-  const { mesh, summary } = orientMesh({ ...fileMesh, positions, materials }, (t) => collected.twoSided[t] === 1);
-  const kept = keptName(name, 'the model name', warnings);
-  // What is stored is the oriented mesh, back sides included: that is what must fit a saved file.
-  checkStorable(kept, mesh);
-  // The budget counts the file's triangles; back sides add at most as many again.
-  const triangleCount = fileMesh.indices.length / 3;
-  return { name: kept, mesh, units, detectedUnits, triangleCount, orientation: summary, bounds, warnings };
+ * The last step of every import: unit detection and scaling, the triangle budget, the extents in
+ * metres, names cut to what a saved configuration accepts, orientation (orientMesh: closed parts
+ * outward, two-sided open parts with their back sides), the stored size, the bounds.
  * `fixedUnit` is the unit the format itself defines (glTF: metres), else null (OBJ).
  */
 export function finishImport(name: string, collected: CollectedTriangles, fixedUnit: MeshUnit | null, options: MeshImportOptions, warnings: string[]): ImportedMesh {
