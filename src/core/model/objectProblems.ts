@@ -97,7 +97,8 @@ export function objectProblems(config: Configuration, index: number): Problem[] 
   if (out.length > 0) return out; // geometry needs sound numbers
   const b = placedBounds(o, mesh, config.room);
   const { width: W, depth: D, height: H } = config.room;
-  const name = `${sourceName(config, o.source)} ${o.id}`;
+  // Named as a shopper knows it (the piece or file, never the internal id): the problem's path says which entry.
+  const name = sourceName(config, o.source);
   // The object as parameters: its name (a UI names library furniture in its language), id and item.
   const named = { name: sourceName(config, o.source), id: o.id, ...furnitureOf(o.source) };
   // A placement near the double range overflows the Float32 vertices: name it before any bounds test (issue 32).
