@@ -7,9 +7,9 @@
  */
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import createGL from 'gl';
 import * as THREE from 'three';
-import { afterAll, describe, expect, it } from 'vitest';
+import { headlessRenderer } from './headlessRenderer';
+import { describe, expect, it } from 'vitest';
 import { defaultCatalog } from '../../../src/core/catalog/defaultCatalog';
 import { aimAxis } from '../../../src/core/model/aim';
 import type { Rgb, Vec3 } from '../../../src/core/model/lightingScene';
@@ -169,15 +169,8 @@ describe('glow luminance L = Φ / (π·A)', () => {
 describe('the emitter on screen (three.js on headless-gl)', () => {
   const W = 16;
   const H = 16;
-  const gl = createGL(W, H, { createWebGL2Context: true, preserveDrawingBuffer: true, antialias: false }) as unknown as WebGL2RenderingContext & { getExtension(n: string): { destroy?(): void } | null };
-  const canvas = { width: W, height: H, style: {}, addEventListener() {}, removeEventListener() {} } as unknown as HTMLCanvasElement;
-  Object.defineProperty(gl, 'canvas', { value: canvas });
-  const renderer = new THREE.WebGLRenderer({ canvas, context: gl, antialias: false });
-  renderer.setSize(W, H, false);
-  afterAll(() => {
-    renderer.dispose();
-    (gl.getExtension('STACKGL_destroy_context') as { destroy(): void } | null)?.destroy();
-  });
+  const renderer = headlessRenderer(W, H);
+  const gl = renderer.getContext();
 
   // A downlight (the BEGA 50975 file: 321 lm through a Ø 80 mm opening) at 2 m, seen from 10 cm below: the face fills the view.
   const ph = load('ies/bega_50975_downlight_lm1995_crlf.ies');

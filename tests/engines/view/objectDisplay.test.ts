@@ -5,9 +5,8 @@
  * exposure) within 2/255, right up to the top's outline (0.07 m texels, so the outline falls
  * inside texels): no dark seam, nothing of another chart's colour.
  */
-import createGL from 'gl';
-import * as THREE from 'three';
-import { afterAll, describe, expect, it } from 'vitest';
+import { headlessRenderer } from './headlessRenderer';
+import { describe, expect, it } from 'vitest';
 import { furnitureMesh } from '../../../src/core/model/furniture/furnitureLibrary';
 import { objectFinishRgb } from '../../../src/core/model/furniture/objectFinishes';
 import type { Rgb } from '../../../src/core/model/lightingScene';
@@ -17,16 +16,8 @@ import { displayColor } from '../../../src/engines/view/toneMap';
 
 const W = 160;
 const H = 120;
-const gl = createGL(W, H, { createWebGL2Context: true, preserveDrawingBuffer: true, antialias: false }) as unknown as WebGL2RenderingContext & { getExtension(n: 'STACKGL_destroy_context'): { destroy(): void } | null };
-const canvas = { width: W, height: H, style: {}, addEventListener() {}, removeEventListener() {} } as unknown as HTMLCanvasElement;
-Object.defineProperty(gl, 'canvas', { value: canvas, configurable: true });
-const renderer = new THREE.WebGLRenderer({ canvas, context: gl, antialias: false });
-renderer.setPixelRatio(1);
-renderer.setSize(W, H, false);
-afterAll(() => {
-  renderer.dispose();
-  gl.getExtension('STACKGL_destroy_context')?.destroy();
-});
+const renderer = headlessRenderer(W, H);
+const gl = renderer.getContext();
 
 describe('objects on screen', () => {
   it('the table top from above: displayColor(ρE/π · exposure) on every pixel inside its outline', () => {

@@ -1,6 +1,5 @@
-import createGL from 'gl';
-import * as THREE from 'three';
-import { afterAll, describe, expect, it } from 'vitest';
+import { headlessRenderer } from './headlessRenderer';
+import { describe, expect, it } from 'vitest';
 import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../../src/core/model/lightingScene';
 import { surfaceLayouts } from '../../../src/engines/bake/surfaceLayout';
 import { emptyLitMaps } from '../../../src/engines/relight/relightMaps';
@@ -91,15 +90,8 @@ describe('EV100 → exposure (saturation-based)', () => {
 describe('uniform room on screen (three.js on headless-gl)', () => {
   const W = 32;
   const H = 24;
-  const gl = createGL(W, H, { createWebGL2Context: true, preserveDrawingBuffer: true, antialias: false }) as unknown as WebGL2RenderingContext & { getExtension(n: string): { destroy?(): void } | null };
-  const canvas = { width: W, height: H, style: {}, addEventListener() {}, removeEventListener() {} } as unknown as HTMLCanvasElement;
-  Object.defineProperty(gl, 'canvas', { value: canvas });
-  const renderer = new THREE.WebGLRenderer({ canvas, context: gl, antialias: false });
-  renderer.setSize(W, H, false);
-  afterAll(() => {
-    renderer.dispose();
-    (gl.getExtension('STACKGL_destroy_context') as { destroy(): void } | null)?.destroy();
-  });
+  const renderer = headlessRenderer(W, H);
+  const gl = renderer.getContext();
 
   function centrePixel(lux: number, ev100: number): number[] {
     const view = createRoomView(renderer);

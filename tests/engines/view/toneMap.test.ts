@@ -1,6 +1,6 @@
-import createGL from 'gl';
 import * as THREE from 'three';
-import { afterAll, describe, expect, it } from 'vitest';
+import { headlessRenderer } from './headlessRenderer';
+import { describe, expect, it } from 'vitest';
 import { falseColorGlsl } from '../../../shaders/falseColor.glsl';
 import { legendPosition, luxLevels, MAX_LEVELS, turbo, TURBO_B, TURBO_G, TURBO_R } from '../../../src/engines/view/falseColorScale';
 
@@ -17,15 +17,8 @@ import { toneMapGlsl } from '../../../shaders/toneMap.glsl';
 
 // The viewer's GLSL chunks compiled and run (three.js on headless-gl), checked against their TypeScript mirrors.
 const N = 16;
-const gl = createGL(N, 1, { createWebGL2Context: true, preserveDrawingBuffer: true, antialias: false }) as unknown as WebGL2RenderingContext & { getExtension(n: string): { destroy?(): void } | null };
-const canvas = { width: N, height: 1, style: {}, addEventListener() {}, removeEventListener() {} } as unknown as HTMLCanvasElement;
-Object.defineProperty(gl, 'canvas', { value: canvas });
-const renderer = new THREE.WebGLRenderer({ canvas, context: gl, antialias: false });
-renderer.setSize(N, 1, false);
-afterAll(() => {
-  renderer.dispose();
-  (gl.getExtension('STACKGL_destroy_context') as { destroy(): void } | null)?.destroy();
-});
+const renderer = headlessRenderer(N, 1);
+const gl = renderer.getContext();
 
 /** Runs `body` (GLSL computing `vec3 c` from `float x` = the pixel's input) for N inputs; returns RGB bytes. */
 function runShader(inputs: number[], prelude: string, body: string, uniforms: Record<string, THREE.IUniform> = {}): number[][] {
