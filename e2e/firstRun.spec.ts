@@ -84,6 +84,9 @@ for (const device of ['phone', 'desktop'] as const) {
 test('a disabled control explains itself at the control and the tip closes with Escape or Close', async ({ browser }) => {
   const page = await open(browser, 'desktop', 'en-GB');
   await page.getByRole('button', { name: 'Start planning' }).click();
+  // The tip host is in the guidance chunk (lazy, with the first-run card): until it has loaded, a
+  // refused press explains itself in the status line instead (ActionButton). The card shows it has.
+  await expect(page.getByTestId('first-run')).toBeVisible();
   // Redo with nothing to redo: the bottom bar's reason at its button, no remedy, and not in the status line too.
   await page.getByTestId('tool-redo').click({ force: true });
   const tip = page.getByTestId('disabled-tip');
