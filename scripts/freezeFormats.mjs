@@ -1,0 +1,48 @@
+// Run with tsx inside a checkout of the commit (tests/fixtures/formats/README.md): it imports that checkout's TypeScript sources.
+// Makes a real file of this checkout's scene-file version: the demo configuration, then every
+// action this version knows that uses a field an earlier version lacked (tried in order; a refused
+// or unknown one is skipped and logged). Run in a checkout of the version's last commit.
+import { writeFileSync } from 'node:fs';
+import { defaultCatalog } from './src/core/catalog/defaultCatalog';
+import { demoConfiguration } from './src/core/catalog/demoConfiguration';
+import * as sf from './src/core/model/sceneFile';
+import * as defs from './src/core/model/actionDefinitions';
+import { toLightingScene } from './src/core/model/toLightingScene';
+const out = process.argv[2];
+let config = demoConfiguration(defaultCatalog);
+const v = sf.SCENE_FILE_VERSION;
+const mods = () => config.systems.flatMap((s) => (s.rails ?? []).flatMap((r) => r.modules));
+const sys = () => config.systems[0];
+const rails = () => sys().rails;
+function run(name, params) {
+  if (!defs.attemptAction || !(name in defs.actionDefinitions)) return console.log('  skip', name);
+  const o = defs.attemptAction(config, name, params, defaultCatalog);
+  if (o.ok === false) return console.log('  refused', name, o.reason);
+  config = o.state ?? o.config ?? o.next ?? o.value;
+  if (!config) throw new Error('outcome shape ' + Object.keys(o));
+  console.log('  ok', name);
+}
+const cube = { positions: new Float32Array([0,0,0, 0.4,0,0, 0.4,0,0.4, 0,0,0.4, 0,0.4,0, 0.4,0.4,0, 0.4,0.4,0.4, 0,0.4,0.4]),
+  indices: new Uint32Array([0,1,2, 0,2,3, 4,6,5, 4,7,6, 0,4,5, 0,5,1, 1,5,6, 1,6,2, 2,6,7, 2,7,3, 3,7,4, 3,4,0]),
+  materialOfTriangle: new Uint16Array(12), materials: [{ name: 'oak', colour: [0.55, 0.4, 0.25], reflectance: [0.55, 0.4, 0.25] }] };
+run('autoPatch', { universe: 1, address: 1, resolution: 16, cct: true });
+if (v >= 3) run('addObject', { source: { kind: 'library', item: 'dining-table' }, placement: { on: 'floor', x: 1.6, z: 2.6 } });
+if (v >= 3) run('addObject', { source: { kind: 'library', item: 'picture' }, placement: { on: 'wall', wall: 'north', u: 1.2, y: 1.5 } });
+run('setFeedDriver', { feedId: sys().feeds?.[0]?.id, driver: 'hlg-320h-48' });
+run('addFeed', { systemId: sys().id, at: 'end' });
+run('moveModule', { moduleId: rails()[0].modules[0].id, offset: 0.1 });
+run('moveFixingPoint', { systemId: sys().id, index: 0, s: 0.3 });
+run('setModuleDimming', { moduleId: mods()[1].id, dimming: 0.4 });
+run('setModuleFilter', { moduleId: mods()[0].id, filter: 'lee-106' });
+run('setAim', { moduleId: mods()[0].id, aim: { rotation: 30, tilt: 20 } });
+run('setModuleOn', { moduleId: mods()[2].id, on: false });
+run('recordScene', { name: 'Evening', fade: 2 });
+run('addBranch', { railId: rails()[rails().length - 1].id, connector: 'tee', turn: 90, length: 1 });
+const share = sf.encodeShareString(config, defaultCatalog);
+if (v >= 3) run('addObject', { source: { kind: 'import', name: 'crate.obj', mesh: cube, units: 'm' }, placement: { on: 'floor', x: 3.8, z: 0.8 } });
+writeFileSync(`${out}/configuration-v${v}.luxbox.json`, sf.serializeConfiguration(config, defaultCatalog) + '\n');
+writeFileSync(`${out}/share-link-v${v}.txt`, share + '\n');
+try { await (await import('./src/core/colour/colourFilterSpectra')).loadColourFilterSpectra(); } catch { /* older versions load them eagerly */ }
+const scene = toLightingScene(config, defaultCatalog);
+writeFileSync(`${out}/lighting-scene-v${scene.version}.json`, JSON.stringify(scene, null, 2) + '\n');
+console.log('version', v, 'lighting scene', scene.version);
