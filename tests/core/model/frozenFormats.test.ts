@@ -2,6 +2,7 @@ import { readdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { defaultCatalog } from '../../../src/core/catalog/defaultCatalog';
+import { parseCatalog } from '../../../src/core/model/catalogSchema';
 import { parseLightingScene, LIGHTING_SCENE_VERSION } from '../../../src/core/model/parseLightingScene';
 import { decodeShareString, deserializeConfiguration, serializeConfiguration, SCENE_FILE_VERSION } from '../../../src/core/model/sceneFile';
 import { loadColourFilterSpectra } from '../../../src/core/colour/colourFilterSpectra';
@@ -60,4 +61,13 @@ describe('lighting scenes (the CLI contract)', () => {
       expect(JSON.parse(JSON.stringify(scene))).toEqual(JSON.parse(text(`expected/lighting-scene-v${v}.json`)));
     });
   }
+});
+
+describe('catalogs', () => {
+  // The catalog format changed within format 1 before luxbox had users (2026-11-23: the power feed
+  // became a feed kit with drivers of rated capacity); a catalog of that first day is refused with
+  // the field named, not read with made-up driver capacities (CHANGELOG.md, 0.1.0).
+  it('the first-day catalog (format 1, 2026-11-23) is refused naming the field that changed', () => {
+    expect(() => parseCatalog(JSON.parse(text('catalog-v1-2026-11-23.json')), 'catalog-v1-2026-11-23.json')).toThrow("catalog-v1-2026-11-23.json: powerFeed: unknown field 'powerFeed'");
+  });
 });
