@@ -5,7 +5,7 @@
  * REDUCE_GRID² partial sums and then to one stats texel per bounce, which
  * stays on the GPU until a caller asks for the report.
  */
-import { fragmentPass } from './fragmentPass.glsl';
+import { fragmentPass, type FragmentPass, type UniformSpec } from './fragmentPass.glsl';
 
 /**
  * Largest edge of the first reduction level: a map is summed in blocks of
@@ -16,22 +16,36 @@ import { fragmentPass } from './fragmentPass.glsl';
  */
 export const REDUCE_GRID = 16;
 
-/** out(p) = Σ source texels of the uBlock² block at p (clipped to the source). */
-export const reduceSumPass = fragmentPass(
-  { uSource: 'sampler2D', uBlock: 'int' },
-  /* glsl */ `out vec4 outColor;
+/**
+ * The first reduction level of any map: out(p) = Σ over the uBlock² block of uSource at p
+ * (clipped to uSource) of `texelValue(q)`, a GLSL expression of the texel q; `helpers`: GLSL the
+ * expression calls, declared before main. One block sum for the walls (the texel itself) and the
+ * objects' atlas (weighted by coverage and ρ: objectFluxReduce.glsl.ts).
+ */
+export function blockSumPass<U extends UniformSpec & { uSource: 'sampler2D'; uBlock: 'int' }>(
+  uniforms: U,
+  texelValue: (q: string) => string,
+  helpers = '',
+): FragmentPass<U> {
+  return fragmentPass(
+    uniforms,
+    /* glsl */ `${helpers}out vec4 outColor;
 void main() {
   ivec2 size = textureSize(uSource, 0);
   ivec2 base = ivec2(gl_FragCoord.xy) * uBlock;
   ivec2 end = min(base + ivec2(uBlock), size);
   vec3 sum = vec3(0.0);
   for (int j = base.y; j < end.y; j++) {
-    for (int i = base.x; i < end.x; i++) sum += texelFetch(uSource, ivec2(i, j), 0).rgb;
+    for (int i = base.x; i < end.x; i++) sum += ${texelValue('ivec2(i, j)')};
   }
   outColor = vec4(sum, 1.0);
 }
 `,
-);
+  );
+}
+
+/** out(p) = Σ source texels of the uBlock² block at p (clipped to the source). */
+export const reduceSumPass = blockSumPass({ uSource: 'sampler2D', uBlock: 'int' }, (q) => `texelFetch(uSource, ${q}, 0).rgb`);
 
 /**
  * From the six first-level partial sums (at most REDUCE_GRID² texels each),

@@ -6,25 +6,15 @@
  * Φ_atlas = texel²·Σ E·c and its reflected part texel²·Σ ρ·E·c to the six walls' sums.
  */
 import { fragmentPass } from './fragmentPass.glsl';
-import { fluxRatioSource, fluxRatioUniforms } from './fluxReduce.glsl';
+import { blockSumPass, fluxRatioSource, fluxRatioUniforms } from './fluxReduce.glsl';
 
 /** out(p) = Σ over the uBlock² block at p of E·coverage, times ρ when uReflected = 1. */
-export const objectReduceSumPass = fragmentPass(
+export const objectReduceSumPass = blockSumPass(
   { uSource: 'sampler2D', uPoints: 'sampler2D', uRho: 'sampler2D', uBlock: 'int', uReflected: 'int' },
-  /* glsl */ `out vec4 outColor;
-void main() {
-  ivec2 size = textureSize(uSource, 0);
-  ivec2 base = ivec2(gl_FragCoord.xy) * uBlock;
-  ivec2 end = min(base + ivec2(uBlock), size);
-  vec3 sum = vec3(0.0);
-  for (int j = base.y; j < end.y; j++) {
-    for (int i = base.x; i < end.x; i++) {
-      ivec2 q = ivec2(i, j);
-      vec3 e = texelFetch(uSource, q, 0).rgb * texelFetch(uPoints, q, 0).a;
-      sum += uReflected == 1 ? e * texelFetch(uRho, q, 0).rgb : e;
-    }
-  }
-  outColor = vec4(sum, 1.0);
+  (q) => `weighted(${q})`,
+  /* glsl */ `vec3 weighted(ivec2 q) {
+  vec3 e = texelFetch(uSource, q, 0).rgb * texelFetch(uPoints, q, 0).a;
+  return uReflected == 1 ? e * texelFetch(uRho, q, 0).rgb : e;
 }
 `,
 );

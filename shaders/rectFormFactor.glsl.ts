@@ -5,9 +5,10 @@
  * F = (1/2π) Σ γ_i · n·(r_i × r_{i+1})/|r_i × r_{i+1}|, γ_i the angle between
  * successive vertex vectors, here as atan(|a×b|, a·b), which stays accurate for
  * small, distant polygons where acos of a dot product near 1 would not. The
- * rectangle lies on a wall of a convex box, so it is wholly in front of any
- * other wall's receiving point: no clipping, no visibility. Self-contained:
- * every input is a function argument.
+ * rectangle must lie wholly in front of p (as every other wall of a convex box
+ * lies in front of a wall's receiving point); where it may not (object
+ * receivers), brightPatchGather.glsl.ts clips it first. Self-contained: every
+ * input is a function argument.
  */
 export const rectFormFactor = /* glsl */ `
 float contourEdge(vec3 a, vec3 b, vec3 n) {

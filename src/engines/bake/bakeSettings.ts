@@ -64,8 +64,17 @@ function check(ok: boolean, message: string): void {
   if (!ok) throw new InputError(message);
 }
 
-/** Defaults filled in and ranges checked (bad values are input errors, named by field). */
+/** Settings resolveBakeSettings returned (frozen, so they stay checked). */
+const RESOLVED = new WeakSet<object>();
+
+/**
+ * Defaults filled in and ranges checked (bad values are input errors, named by field). Resolve
+ * once and pass the result on: settings this function returned come back as they are (frozen, so
+ * nothing can have changed them since the check), so the CLI's early check (before any scene file
+ * is read), the scene baker and the baker's `start` do the work once per bake, not three times.
+ */
 export function resolveBakeSettings(partial: Partial<BakeSettings> = {}): BakeSettings {
+  if (RESOLVED.has(partial)) return partial as BakeSettings;
   const s: BakeSettings = { ...DEFAULT_BAKE_SETTINGS, ...Object.fromEntries(Object.entries(partial).filter(([, v]) => v !== undefined)) };
   check(Number.isFinite(s.texelSize) && s.texelSize >= 0.001 && s.texelSize <= 10, `texel size ${s.texelSize} m is outside 0.001..10 m`);
   check(Number.isInteger(s.maxTextureSize) && s.maxTextureSize >= 1 && s.maxTextureSize <= 4096, `maxTextureSize ${s.maxTextureSize} is not an integer in 1..4096`);
@@ -80,5 +89,7 @@ export function resolveBakeSettings(partial: Partial<BakeSettings> = {}): BakeSe
   check(Number.isInteger(s.brightPatches) && s.brightPatches >= 0 && s.brightPatches <= 1024, `brightPatches ${s.brightPatches} is not an integer in 0..1024`);
   check(Number.isInteger(s.texelSupersampling) && s.texelSupersampling >= 1 && s.texelSupersampling <= 32, `texelSupersampling ${s.texelSupersampling} is not an integer in 1..32`);
   check(Number.isInteger(s.maxSourcesPerAxis) && s.maxSourcesPerAxis >= 1 && s.maxSourcesPerAxis <= 64, `maxSourcesPerAxis ${s.maxSourcesPerAxis} is not an integer in 1..64`);
+  Object.freeze(s);
+  RESOLVED.add(s);
   return s;
 }

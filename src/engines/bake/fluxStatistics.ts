@@ -81,52 +81,27 @@ export function createFluxStatistics(
       if (index < 0 || index >= capacity) throw new Error(`flux statistics: record ${index} outside 0..${capacity - 1}`);
       if (maps.length !== layouts.length + (objects ? 1 : 0)) throw new Error(`flux statistics: ${maps.length} maps for ${layouts.length} surfaces${objects ? ' and the atlas' : ''}`);
       layouts.forEach((_, s) => runPass(gl, reduce, levels[s].target, { uSource: maps[s].texture, uBlock: levels[s].block }));
+      // The fused pass's uniforms for the six walls; the objects' variant adds the atlas's two sums.
+      const walls = {
+        uSum0: sum(0),
+        uSum1: sum(1),
+        uSum2: sum(2),
+        uSum3: sum(3),
+        uSum4: sum(4),
+        uSum5: sum(5),
+        uArea: areas.map((a) => a * scale),
+        uRho: rho,
+        uMaxRatio: maxRatio,
+        uLuminance: LUMINANCE_WEIGHTS,
+      };
+      const texel = [index, 0, 1, 1] as const;
       if (objects && objectLevels && objectReduce && objectRatio) {
-        const atlas = maps[layouts.length].texture;
-        const common = { uSource: atlas, uPoints: objects.points, uRho: objects.reflectance, uBlock: objectLevels.block };
+        const common = { uSource: maps[layouts.length].texture, uPoints: objects.points, uRho: objects.reflectance, uBlock: objectLevels.block };
         runPass(gl, objectReduce, objectLevels.flux, { ...common, uReflected: 0 });
         runPass(gl, objectReduce, objectLevels.reflected, { ...common, uReflected: 1 });
-        runPass(
-          gl,
-          objectRatio,
-          stats,
-          {
-            uSum0: sum(0),
-            uSum1: sum(1),
-            uSum2: sum(2),
-            uSum3: sum(3),
-            uSum4: sum(4),
-            uSum5: sum(5),
-            uSum6: objectLevels.flux.texture,
-            uSum7: objectLevels.reflected.texture,
-            uArea: areas.map((a) => a * scale),
-            uRho: rho,
-            uObjectArea: objects.texelSize * objects.texelSize * scale,
-            uMaxRatio: maxRatio,
-            uLuminance: LUMINANCE_WEIGHTS,
-          },
-          [index, 0, 1, 1],
-        );
-        return;
-      }
-      runPass(
-        gl,
-        ratio,
-        stats,
-        {
-          uSum0: sum(0),
-          uSum1: sum(1),
-          uSum2: sum(2),
-          uSum3: sum(3),
-          uSum4: sum(4),
-          uSum5: sum(5),
-          uArea: areas.map((a) => a * scale),
-          uRho: rho,
-          uMaxRatio: maxRatio,
-          uLuminance: LUMINANCE_WEIGHTS,
-        },
-        [index, 0, 1, 1],
-      );
+        const atlas = { uSum6: objectLevels.flux.texture, uSum7: objectLevels.reflected.texture, uObjectArea: objects.texelSize * objects.texelSize * scale };
+        runPass(gl, objectRatio, stats, { ...walls, ...atlas }, texel);
+      } else runPass(gl, ratio, stats, walls, texel);
     },
     read(count) {
       const rgba = readRgba(gl, stats);

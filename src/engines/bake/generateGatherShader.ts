@@ -137,22 +137,12 @@ ${surfaceFrameGlsl(surface)}const vec3 TANGENT = ${glslVec3(axisVector(surface.u
 const vec3 BITANGENT = ${glslVec3(axisVector(surface.vAxisIndex, 1))};
 ${sampling}
 ${rayBox}
-${exitanceFunction(surface.index, reflectance)}out vec4 outColor;
-void main() {
-  ivec2 texel = ivec2(gl_FragCoord.xy);
-  vec2 uv = gl_FragCoord.xy / RESOLUTION;
+${exitanceFunction(surface.index, reflectance)}${gatherMain(
+      `  vec2 uv = gl_FragCoord.xy / RESOLUTION;
   vec3 p = ORIGIN + U_AXIS * uv.x + V_AXIS * uv.y;
-  uint h = hash32(uint(texel.x) ^ hash32(uint(texel.y) ^ hash32(uint(uSeed))));
-  uvec2 rotation = uvec2(h, hash32(h + 0x9e3779b9u));
-  vec3 sum = vec3(0.0);
-  for (int k = 0; k < uSampleCount; k++) {
-    vec3 dir = cosineDirection(r2Sample(uint(uFirstSample + k), rotation), NORMAL, TANGENT, BITANGENT);
-    sum += exitance(p, dir);
-  }
-  vec3 bright = uBrightWeight > 0.0 ? uBrightWeight * float(uSampleCount) * texelFetch(uBright, texel, 0).rgb : vec3(0.0);
-  outColor = vec4(texelFetch(uAccumulated, texel, 0).rgb + sum * uInputScale + bright, 1.0);
-}
 `,
+      { normal: 'NORMAL', tangent: 'TANGENT', bitangent: 'BITANGENT' },
+    )}`,
   );
 }
 
@@ -165,17 +155,31 @@ ${rayBox}
 ${objectTracing(objects.bvhWidth)}${exitanceFunction(receiver, reflectance, objects)}`;
 }
 
-/** The sample loop and output of a gather pass from point p with normal frame (n, tangent, bitangent). */
-const GATHER_LOOP = `  uint h = hash32(uint(texel.x) ^ hash32(uint(texel.y) ^ hash32(uint(uSeed))));
+/**
+ * Every gather pass's `main`: `setup` (GLSL statements after `texel` is declared) defines the
+ * receiving point p and may define its frame; then the one sample loop: cosine-weighted directions
+ * about `frame` (GLSL names of the unit normal, tangent and bitangent), the light leaving where
+ * each ray ends, the bright-patch light of bounce 1, added to the samples so far.
+ */
+function gatherMain(setup: string, frame: { normal: string; tangent: string; bitangent: string }): string {
+  return `out vec4 outColor;
+void main() {
+  ivec2 texel = ivec2(gl_FragCoord.xy);
+${setup}  uint h = hash32(uint(texel.x) ^ hash32(uint(texel.y) ^ hash32(uint(uSeed))));
   uvec2 rotation = uvec2(h, hash32(h + 0x9e3779b9u));
   vec3 sum = vec3(0.0);
   for (int k = 0; k < uSampleCount; k++) {
-    vec3 dir = cosineDirection(r2Sample(uint(uFirstSample + k), rotation), n, tangent, bitangent);
+    vec3 dir = cosineDirection(r2Sample(uint(uFirstSample + k), rotation), ${frame.normal}, ${frame.tangent}, ${frame.bitangent});
     sum += exitance(p, dir);
   }
   vec3 bright = uBrightWeight > 0.0 ? uBrightWeight * float(uSampleCount) * texelFetch(uBright, texel, 0).rgb : vec3(0.0);
   outColor = vec4(texelFetch(uAccumulated, texel, 0).rgb + sum * uInputScale + bright, 1.0);
+}
 `;
+}
+
+/** The frame of the object-aware passes: local variables their setup defines. */
+const LOCAL_FRAME = { normal: 'n', tangent: 'tangent', bitangent: 'bitangent' };
 
 /**
  * The gather pass of a room surface in a scene with objects: as generateGatherShader, but each
@@ -186,16 +190,15 @@ export function generateObjectAwareGatherShader(surface: SurfaceLayout, room: Ve
   return fragmentPass(
     objectGatherUniforms,
     `// gather pass, surface ${surface.name}, with objects
-${surfaceFrameGlsl(surface)}${objectGatherHead(room, surface.index, reflectance, objects)}out vec4 outColor;
-void main() {
-  ivec2 texel = ivec2(gl_FragCoord.xy);
-  vec2 uv = gl_FragCoord.xy / RESOLUTION;
+${surfaceFrameGlsl(surface)}${objectGatherHead(room, surface.index, reflectance, objects)}${gatherMain(
+      `  vec2 uv = gl_FragCoord.xy / RESOLUTION;
   vec3 n = NORMAL;
   vec3 tangent = ${glslVec3(axisVector(surface.uAxisIndex, 1))};
   vec3 bitangent = ${glslVec3(axisVector(surface.vAxisIndex, 1))};
   vec3 p = ORIGIN + U_AXIS * uv.x + V_AXIS * uv.y + n * ${SURFACE_OFFSET.toExponential()};
-${GATHER_LOOP}}
 `,
+      LOCAL_FRAME,
+    )}`,
   );
 }
 
@@ -209,10 +212,8 @@ export function generateObjectGatherShader(room: Vec3, reflectance: Rgb[], objec
   return fragmentPass(
     objectGatherUniforms,
     `// gather pass, objects' atlas
-${objectGatherHead(room, -1, reflectance, objects)}out vec4 outColor;
-void main() {
-  ivec2 texel = ivec2(gl_FragCoord.xy);
-  vec4 point = texelFetch(uPoints, texel, 0);
+${objectGatherHead(room, -1, reflectance, objects)}${gatherMain(
+      `  vec4 point = texelFetch(uPoints, texel, 0);
   if (point.a <= 0.0) {
     outColor = vec4(0.0, 0.0, 0.0, 1.0);
     return;
@@ -224,7 +225,8 @@ void main() {
   vec3 tangent = vec3(1.0 + sgn * n.x * n.x * a, sgn * b, -sgn * n.x);
   vec3 bitangent = vec3(b, sgn + n.y * n.y * a, -n.y);
   vec3 p = clamp(point.xyz + n * ${SURFACE_OFFSET.toExponential()}, vec3(0.0), ROOM);
-${GATHER_LOOP}}
 `,
+      LOCAL_FRAME,
+    )}`,
   );
 }

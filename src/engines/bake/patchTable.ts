@@ -5,7 +5,7 @@ import { axisVector, type SurfaceLayout } from './surfaceLayout';
 export const PATCH_TABLE_WIDTH = 4;
 
 /**
- * The bright patches as the bright gather reads them (shaders/brightGatherPass.glsl.ts):
+ * The bright patches as the bright gather reads them (shaders/brightPatchGather.glsl.ts):
  * one RGBA row per patch, (centre.xyz, surface index), (half edge along u as a
  * world vector, 0), (half edge along v, 0), (exitance M.rgb, 0).
  */

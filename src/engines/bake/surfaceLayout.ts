@@ -37,7 +37,11 @@ export const SURFACE_FRAMES: Record<SurfaceName, [0 | 1 | 2, 0 | 1 | 2, 0 | 1 | 
   east: [2, 1, 0, true],
 };
 
-/** Texels along an edge: enough for the requested texel size, at least 1, at most `maxTexels`. */
+/**
+ * Texels along an edge: enough for the requested texel size, at least 1, at most `maxTexels` (each
+ * edge on its own; the objects' atlas coarsens its square texels by ×1.25 instead, and why the two
+ * differ: docs/baker.md, "Texel size of walls and objects").
+ */
 export function texelCount(length: number, texelSize: number, maxTexels: number): number {
   return Math.max(1, Math.min(maxTexels, Math.ceil(length / texelSize - 1e-9)));
 }

@@ -1,6 +1,6 @@
 import type { BakeScene } from '../bake/bakeScene';
 import type { Rgb } from '../../core/model/lightingScene';
-import { resolveBakeSettings } from '../bake/bakeSettings';
+import { resolveBakeSettings, type BakeSettings } from '../bake/bakeSettings';
 import type { PreparedObjects } from '../bake/objects/preparedObjects';
 import type { EngineProgress, RelightEngine } from '../relight/createRelightEngine';
 import { QUALITY_LEVELS, type QualityLevel } from '../relight/qualityLevels';
@@ -170,7 +170,16 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
       engine.setFade(null);
     }
   };
-  const settings = () => context.engine?.settings ?? resolveBakeSettings(QUALITY_LEVELS[quality]);
+  // Each quality level's settings resolved once and passed on: the engine and its baker take them as they are.
+  const resolvedLevels = new Map<QualityLevel, BakeSettings>();
+  const levelSettings = (level: QualityLevel): BakeSettings => {
+    const known = resolvedLevels.get(level);
+    if (known) return known;
+    const resolved = resolveBakeSettings(QUALITY_LEVELS[level]);
+    resolvedLevels.set(level, resolved);
+    return resolved;
+  };
+  const settings = () => context.engine?.settings ?? levelSettings(quality);
   const reportError = (message: string) => {
     error = message;
     emit({ type: 'error', message });
@@ -187,7 +196,7 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
       },
       onError: reportError,
     },
-    { settings: QUALITY_LEVELS[quality], canvas: options.canvas },
+    { settings: levelSettings(quality), canvas: options.canvas },
   );
 
   /**
@@ -203,7 +212,7 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
     restarts++;
     stalledSlices = 0;
     lastProgress = '';
-    const engine = context.setSettings(QUALITY_LEVELS[quality]);
+    const engine = context.setSettings(levelSettings(quality));
     if (scene) light(engine, scene);
     emit({ type: 'engine', engine });
     slicer.queue();
@@ -303,7 +312,7 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
     setQuality(level) {
       if (level === quality || disposed) return;
       quality = level;
-      const engine = context.setSettings(QUALITY_LEVELS[level]);
+      const engine = context.setSettings(levelSettings(level));
       if (scene) prepared = prepareFor(scene.objects, settings());
       if (scene) light(engine, scene);
       emit({ type: 'engine', engine });

@@ -6,7 +6,7 @@ import { objectsKey } from '../relight/objectsKey';
 
 /**
  * The view's copy of the objects' geometry: prepareObjects on the same objects with the same
- * texel size and atlas limit as the baker (startBakeJob), so the atlas layout is the one the maps
+ * texel size and atlas limit as the baker (prepareBakeInputs), so the atlas layout is the one the maps
  * come on (prepareObjects is deterministic: same input, byte-identical atlas). Computed again
  * exactly when the relight engine rebakes for the objects (the same objectsKey: an object's
  * mesh, placement or reflectance changed), never for a dimming change.

@@ -33,11 +33,12 @@ function objectsOutput(loaded: LoadedLightingScene): SceneObjectsOutput {
  * Every scene file is read and checked before the first bake starts.
  */
 export async function run(args: string[]): Promise<number> {
-  const { positional, settings, options } = parseBakeCli('bake', args, ['--out', '--gl']);
+  const { positional, settings: given, options } = parseBakeCli('bake', args, ['--out', '--gl']);
   if (positional.length === 0) throw new InputError(`expected a scene file (usage: luxbox ${bakeUsage})`);
   const out = options['--out'];
   if (!out) throw new InputError(`--out <dir> is required (usage: luxbox ${bakeUsage})`);
-  resolveBakeSettings(settings);
+  // Checked before any scene file is read, and passed on resolved (the baker does not check again).
+  const settings = resolveBakeSettings(given);
   const { exit, backend } = prepareGl(options['--gl']);
   if (exit !== null) return exit;
 

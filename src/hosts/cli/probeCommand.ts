@@ -56,7 +56,8 @@ export async function run(args: string[]): Promise<number> {
     const path = issue.path.map((k) => (typeof k === 'number' ? `[${k}]` : `.${String(k)}`)).join('').replace(/^\./, '');
     throw new InputError(`${source}: ${path ? `${path}: ` : ''}${issue.path.length ? issue.message : 'expected { "points": [[x, y, z], ...] }'}`);
   }
-  resolveBakeSettings(settings);
+  // Checked before the scene file is read, and passed on resolved to the bake and the probe.
+  const resolved = resolveBakeSettings(settings);
   const loaded = await loadLightingSceneFileAsync(scenePath, { within: cliReadableFolders(scenePath) });
   const room = loaded.scene.room;
   const dims = [room.width, room.height, room.depth];
@@ -82,9 +83,9 @@ export async function run(args: string[]): Promise<number> {
   });
   const { exit } = prepareGl(options['--gl']);
   if (exit !== null) return exit;
-  const { maps } = bakeLoadedScene(loaded, settings);
+  const { maps } = bakeLoadedScene(loaded, resolved);
   // Direct light exactly at each point (CPU, objects occluding); indirect from the maps, or gathered from them at a point with a normal.
-  const probe = createProbe(loaded.bakeScene, maps, settings);
+  const probe = createProbe(loaded.bakeScene, maps, resolved);
   const values = points.map(({ point, normal }) => (normal ? probe.atPlane(point, normal) : probe.atSurface(point)));
   const result = { total: values.map((v) => v.total), direct: values.map((v) => v.direct), indirect: values.map((v) => v.indirect) };
   process.stdout.write(JSON.stringify(result) + '\n');

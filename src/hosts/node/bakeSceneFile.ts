@@ -7,7 +7,7 @@ import { createHeadlessGL } from './createHeadlessGL';
 import { loadLightingSceneFile, type LoadedLightingScene } from './loadLightingSceneFile';
 
 export interface SceneBaker {
-  /** Bake a loaded scene; programs compiled by earlier bakes of this SceneBaker are reused. */
+  /** Bake a loaded scene (settings resolved by the baker, or passed on as resolveBakeSettings gave them); programs compiled by earlier bakes of this SceneBaker are reused. */
   bake(loaded: LoadedLightingScene, settings: Partial<BakeSettings>): { loaded: LoadedLightingScene; maps: BakedMaps; report: BakeReport };
   /** Programs compiled so far on this context (a batch compiles each distinct shader once). */
   programCount(): number;
@@ -24,7 +24,7 @@ export function createSceneBaker(): SceneBaker {
   const baker = createBaker(gl);
   return {
     bake(loaded, settings) {
-      const { maps, report } = baker.bake(loaded.bakeScene, resolveBakeSettings(settings));
+      const { maps, report } = baker.bake(loaded.bakeScene, settings);
       return { loaded, maps, report };
     },
     programCount: () => cachedProgramCount(gl),
@@ -34,8 +34,9 @@ export function createSceneBaker(): SceneBaker {
 
 /** Load a scene file and bake it on a fresh headless-gl context (shared by `bake` and `probe`). */
 export function bakeSceneFile(path: string, settings: Partial<BakeSettings>): { loaded: LoadedLightingScene; maps: BakedMaps; report: BakeReport } {
-  resolveBakeSettings(settings);
-  return bakeLoadedScene(loadLightingSceneFile(path), settings);
+  // Checked before the scene file is read; the resolved settings go on as they are.
+  const resolved = resolveBakeSettings(settings);
+  return bakeLoadedScene(loadLightingSceneFile(path), resolved);
 }
 
 /** Bake an already loaded scene on a fresh headless-gl context. */

@@ -63,7 +63,7 @@ export function createProbe(scene: BakeScene, maps: BakedMaps, settingsIn: Parti
   const dims: Vec3 = [room.width, room.height, room.depth];
   let caster: ObjectRayCaster | null = null;
   if (scene.objects && scene.objects.length > 0) {
-    // The bake prepared the same objects with the same settings (startBakeJob): the atlas is the maps' atlas.
+    // The bake prepared the same objects with the same settings (prepareBakeInputs): the atlas is the maps' atlas.
     const prepared = prepareObjects(scene.objects, { texelSize: settings.texelSize, maxAtlasSize: settings.maxTextureSize });
     const atlas = maps.objects?.atlas;
     if (!atlas || atlas.width !== prepared.atlas.width || atlas.height !== prepared.atlas.height) {

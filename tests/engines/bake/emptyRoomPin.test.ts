@@ -37,7 +37,13 @@ const settings = { texelSize: 0.2, samples: 32, bounces: 2, samplesPerDraw: 16 }
 
 const sha = (s: string) => createHash('sha256').update(s).digest('hex').slice(0, 16);
 
-/** Recorded at 3d3c8bd (before objects): sorted SHA-256 prefixes of the compiled shader sources. */
+/**
+ * Recorded at 3d3c8bd (before objects): sorted SHA-256 prefixes of the compiled shader sources.
+ * One source changed since, deliberately, with the maps unchanged to the bit: the bright gather
+ * (d277f253067d15e7 → eec5549dca83b451) now runs the one bright-patch loop both bright passes share
+ * (shaders/brightPatchGather.glsl.ts), whose receiver cosine is max(cos θ_r, 0) instead of the empty
+ * room's |cos θ_r| — equal on room surfaces, where every patch lies in front (issue #28).
+ */
 const SHADERS = [
   '0f60c96f28184550',
   '0fdb131e467fa352',
@@ -57,7 +63,7 @@ const SHADERS = [
   'aa386da2ab6976d6',
   'b1e956c5c41a7e88',
   'cdc8d0b51f52308b',
-  'd277f253067d15e7',
+  'eec5549dca83b451',
   'efe5f9b5bd2b432e',
   'f15cdd941093e784',
 ];

@@ -1,11 +1,10 @@
 /**
  * The bounding volume hierarchy over all object triangles, flattened into RGBA32F textures for the
  * GLSL traversal (shaders/bvhTraversal.glsl.ts documents the texel layout; docs/baker.md, "Objects:
- * geometry"). The tree comes from three-mesh-bvh (surface area heuristic); its packed buffer
- * (`_roots[0]`, layout of three-mesh-bvh/src/core/build/buildTree.js: per node 6 float32 bounds,
- * then a uint32 that is a leaf's triangle offset or the right child's relative node offset, then
- * uint16 count and uint16 0xFFFF for leaves; the left child follows its parent) is walked once and
- * re-laid in depth-first order. Node boxes are recomputed from the stored float32 triangles and
+ * geometry"). The tree comes from three-mesh-bvh (surface area heuristic), read through its public
+ * API only: `traverse` (depth-first, with each node's depth, and each leaf's triangle offset and
+ * count) and the geometry's index, which MeshBVH reorders in place (documented), so no upgrade can
+ * change a private buffer layout under us; the tree is re-laid in depth-first order. Node boxes are recomputed from the stored float32 triangles and
  * widened by a small margin, so a triangle lying in a box face (every face of an axis-aligned
  * cube) is inside its box despite GPU rounding.
  */
@@ -28,9 +27,6 @@ export const TEXELS_PER_TRIANGLE = 4;
 /** Triangle indices travel as floats (exact below 2^24) and triangle texels as ints: at most 2^22 triangles. */
 export const MAX_BVH_TRIANGLES = 1 << 22;
 
-const IS_LEAF = 0xffff;
-const UINT32_PER_NODE = 8;
-
 export interface BvhTexturesResult extends ObjectBvhTextures {
   /** World triangle index of each texture triangle (texture order = leaf order). */
   triangleOrder: Uint32Array;
@@ -41,6 +37,68 @@ export interface BvhTexturesResult extends ObjectBvhTextures {
 /** Bound pad: 10 µm plus a few float32 ulps of the coordinate, so a box never clips its own triangles. */
 function pad(x: number): number {
   return 1e-5 + Math.abs(x) * 2 ** -20;
+}
+
+/** A node of the flattened tree: interior (a, b = child node numbers) or leaf (a = count, b = first texture triangle). */
+interface FlatNode {
+  leaf: boolean;
+  a: number;
+  b: number;
+  min: [number, number, number];
+  max: [number, number, number];
+}
+
+/**
+ * The tree of `bvh` in depth-first order (a node, its left subtree, its right subtree), through
+ * three-mesh-bvh's public `traverse`, which visits the nodes in exactly that order with their depth
+ * (BVH.traverse in three-mesh-bvh/src/core/BVH.js): a node's parent is the last interior node seen
+ * one level up, its first child the left one. Leaves give their triangle offset and count (in
+ * triangles of the reordered index). Boxes are recomputed from the stored float32 triangles.
+ */
+function flattenTree(bvh: MeshBVH, triangleOrder: Uint32Array, positions: Float64Array | Float32Array): { flat: FlatNode[]; depth: number } {
+  const flat: FlatNode[] = [];
+  /** Interior nodes on the current path, by depth. */
+  const path: number[] = [];
+  let depth = 0;
+  bvh.traverse((level, isLeaf, _bounds, offset, count) => {
+    const me = flat.length;
+    const node: FlatNode = { leaf: isLeaf, a: 0, b: 0, min: [Infinity, Infinity, Infinity], max: [-Infinity, -Infinity, -Infinity] };
+    flat.push(node);
+    depth = Math.max(depth, level);
+    if (level > 0) {
+      const parent = flat[path[level - 1]];
+      if (parent.a === 0) parent.a = me;
+      else parent.b = me;
+    }
+    if (isLeaf) {
+      node.a = count;
+      node.b = offset;
+      for (let k = node.b; k < node.b + node.a; k++) {
+        const t = triangleOrder[k];
+        for (let v = 0; v < 9; v++) {
+          const x = Math.fround(positions[9 * t + v]);
+          const axis = v % 3;
+          node.min[axis] = Math.min(node.min[axis], x);
+          node.max[axis] = Math.max(node.max[axis], x);
+        }
+      }
+    } else path[level] = me;
+  });
+  // Children come after their parent: boxes bottom-up in reverse order.
+  for (let k = flat.length - 1; k >= 0; k--) {
+    const node = flat[k];
+    if (node.leaf) continue;
+    if (node.a === 0 || node.b === 0) throw new Error(`three-mesh-bvh: interior node ${k} has not two children (did its traverse order change?)`);
+    for (const child of [flat[node.a], flat[node.b]]) {
+      for (let axis = 0; axis < 3; axis++) {
+        node.min[axis] = Math.min(node.min[axis], child.min[axis]);
+        node.max[axis] = Math.max(node.max[axis], child.max[axis]);
+      }
+    }
+  }
+  const covered = flat.reduce((n, node) => n + (node.leaf ? node.a : 0), 0);
+  if (covered !== triangleOrder.length) throw new Error(`three-mesh-bvh: the leaves hold ${covered} triangles, the geometry ${triangleOrder.length}`);
+  return { flat, depth };
 }
 
 /**
@@ -63,56 +121,13 @@ export function buildBvhTextures(tris: WorldTriangles, uvOfTriangle: Float64Arra
   for (let i = 0; i < index.length; i++) index[i] = i;
   geometry.setIndex(new BufferAttribute(index, 1));
   const bvh = new MeshBVH(geometry, { strategy: SAH, targetLeafSize: BVH_LEAF_SIZE, maxDepth: BVH_MAX_DEPTH, setBoundingBox: false, verbose: false });
-  const root = (bvh as unknown as { _roots: ArrayBuffer[] })._roots;
-  if (root.length !== 1) throw new Error(`three-mesh-bvh built ${root.length} roots for one geometry without groups`);
-  const u32 = new Uint32Array(root[0]);
-  const u16 = new Uint16Array(root[0]);
+  // One root (traverse walks root 0 only): a geometry without groups has one.
+  const roots = MeshBVH.serialize(bvh, { cloneBuffers: false }).roots.length;
+  if (roots !== 1) throw new Error(`three-mesh-bvh built ${roots} roots for one geometry without groups`);
   const reordered = geometry.index!.array as Uint32Array;
   const triangleOrder = new Uint32Array(tris.count);
   for (let k = 0; k < tris.count; k++) triangleOrder[k] = reordered[3 * k] / 3;
-
-  // Depth-first walk: my node number ↔ three-mesh-bvh node offset; leaves and children recorded.
-  interface Flat {
-    leaf: boolean;
-    a: number;
-    b: number;
-    min: [number, number, number];
-    max: [number, number, number];
-  }
-  const flat: Flat[] = [];
-  let depth = 0;
-  const visit = (n32: number, level: number): number => {
-    const me = flat.length;
-    const node: Flat = { leaf: false, a: 0, b: 0, min: [Infinity, Infinity, Infinity], max: [-Infinity, -Infinity, -Infinity] };
-    flat.push(node);
-    depth = Math.max(depth, level);
-    if (u16[2 * n32 + 15] === IS_LEAF) {
-      node.leaf = true;
-      node.a = u16[2 * n32 + 14];
-      node.b = u32[n32 + 6];
-      for (let k = node.b; k < node.b + node.a; k++) {
-        const t = triangleOrder[k];
-        for (let v = 0; v < 9; v++) {
-          const x = Math.fround(tris.positions[9 * t + v]);
-          const axis = v % 3;
-          node.min[axis] = Math.min(node.min[axis], x);
-          node.max[axis] = Math.max(node.max[axis], x);
-        }
-      }
-    } else {
-      node.a = visit(n32 + UINT32_PER_NODE, level + 1);
-      node.b = visit(n32 + u32[n32 + 6] * UINT32_PER_NODE, level + 1);
-      for (const child of [flat[node.a], flat[node.b]]) {
-        for (let axis = 0; axis < 3; axis++) {
-          node.min[axis] = Math.min(node.min[axis], child.min[axis]);
-          node.max[axis] = Math.max(node.max[axis], child.max[axis]);
-        }
-      }
-    }
-    return me;
-  };
-  visit(0, 0);
-
+  const { flat, depth } = flattenTree(bvh, triangleOrder, tris.positions);
   const nodesHeight = Math.ceil((flat.length * TEXELS_PER_NODE) / width);
   const nodes = new Float32Array(width * nodesHeight * 4);
   flat.forEach((node, k) => {

@@ -3,7 +3,8 @@
  * geometry"). A chart of w × h metres covers ⌈w/s⌉ × ⌈h/s⌉ texels at texel size s; its cell adds a
  * one-texel gutter on every side, so two charts are at least two texels apart and no chart touches
  * the atlas edge (bilinear lookups and the baker's dilation never mix two charts). When the cells do
- * not fit in maxAtlasSize², s grows by 1.25 until they do.
+ * not fit in maxAtlasSize², s grows by 1.25 until they do (square texels, one size for all charts;
+ * the walls clamp each edge instead: docs/baker.md, "Texel size of walls and objects").
  */
 import { InputError } from '../../../core/inputError';
 import type { Chart } from './buildCharts';
