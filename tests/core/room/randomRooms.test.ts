@@ -100,7 +100,7 @@ describe('random rooms', () => {
     expect(withOpenings).toBeGreaterThan(5);
     expect(nonConvexWithSlopes).toBeGreaterThan(5);
     expect(reversed).toBeGreaterThan(10);
-    // The row integral's own error: measured 3e-5 at most (a sliver of a triangle), 1e-6 typically.
+    // The row integral's own error: measured 3e-5 at most (a sliver of a triangle).
     expect(maxVolumeError).toBeLessThan(1e-4);
   });
 });
