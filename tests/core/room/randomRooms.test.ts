@@ -1,9 +1,9 @@
 /**
- * Random rooms (star-shaped outlines of 3–12 corners in either orientation, 0–3 slopes, 0–2
- * openings; seeded): the surfaces close the room (Σ A·n_out = 0), the ceiling parts cover the
- * floor exactly once in plan, every corner of every surface lies in the room, and the volume by
- * the divergence theorem equals ∫ ceiling height over the floor, integrated row by row in plan
- * independently of the surfaces.
+ * Random rooms (star-shaped outlines of 3–12 corners in either orientation, 0–3 slopes, half of
+ * them meeting the flat ceiling exactly over a corner, 0–2 openings; seeded): the surfaces close
+ * the room (Σ A·n_out = 0), the ceiling parts cover the floor exactly once in plan, every corner
+ * of every surface lies in the room, and the volume by the divergence theorem equals ∫ ceiling
+ * height over the floor, integrated row by row in plan independently of the surfaces.
  */
 import { describe, expect, it } from 'vitest';
 import { ceilingHeightAt, pointInsideRoom } from '../../../src/core/room/ceilingHeightAt';
@@ -29,7 +29,17 @@ function randomRoom(rng: ReturnType<typeof createRng>): RoomInput {
     const wall = rng.int(n);
     if (walls.has(wall)) continue;
     walls.add(wall);
-    slopes.push({ wall, kneeHeight: 0.3 + rng.next() * (height - 0.3), pitch: 15 + 45 * rng.next() });
+    const kneeHeight = 0.3 + rng.next() * (height - 0.3);
+    let pitch = 15 + 45 * rng.next();
+    if (rng.chance(0.5)) {
+      // Degenerate on purpose: the slope meets the flat ceiling exactly over another corner.
+      const [a, b] = [outline[wall], outline[(wall + 1) % n]];
+      const c = outline[rng.int(n)];
+      const len = Math.hypot(b[0] - a[0], b[1] - a[1]);
+      const d = Math.abs(((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / len);
+      if (d > 0.2 && height - kneeHeight > 0.05) pitch = (Math.atan((height - kneeHeight) / d) * 180) / Math.PI;
+    }
+    slopes.push({ wall, kneeHeight, pitch });
   }
   const openings: RoomOpening[] = [];
   for (let k = rng.int(3); k > 0; k--) {
@@ -47,7 +57,7 @@ describe('random rooms', () => {
     let nonConvexWithSlopes = 0;
     let reversed = 0;
     let maxVolumeError = 0;
-    for (let attempt = 0; attempt < 400 && checked < 40; attempt++) {
+    for (let attempt = 0; attempt < 600 && checked < 60; attempt++) {
       const input = randomRoom(rng);
       if (roomProblems(input).length > 0) continue;
       checked++;
@@ -95,7 +105,7 @@ describe('random rooms', () => {
       maxVolumeError = Math.max(maxVolumeError, Math.abs(volume - integral) / volume);
     }
     // The generator must reach the interesting cases, or the test proves little.
-    expect(checked).toBe(40);
+    expect(checked).toBe(60);
     expect(withSlopes).toBeGreaterThan(10);
     expect(withOpenings).toBeGreaterThan(5);
     expect(nonConvexWithSlopes).toBeGreaterThan(5);

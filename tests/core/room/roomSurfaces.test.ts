@@ -163,6 +163,20 @@ describe('room geometry', () => {
     for (const v of sum) expect(Math.abs(v)).toBeLessThan(1e-12);
   });
 
+  it('a slope whose top edge runs exactly through corners of an L (z = 3): slope over the east wing and a strip, flat over the rest', () => {
+    for (const outline of [L_OUTLINE, [L_OUTLINE[0], ...L_OUTLINE.slice(1).reverse()]]) {
+      const wall = outline === L_OUTLINE ? 0 : 5;
+      const pitch = (Math.atan(1.4 / 3) * 180) / Math.PI; // 1.2 m + 3 m × 1.4/3 = 2.6 m at z = 3
+      const surfaces = roomSurfaces(normaliseRoom({ outline, height: 2.6, slopes: [{ wall, kneeHeight: 1.2, pitch }], reflectance: plainReflectance }));
+      const slope = surfaces.find((s) => s.kind === 'slope')!;
+      const ceiling = byId(surfaces, 'ceiling');
+      expect(slope.area * -slope.inward[1]).toBeCloseTo(18, 9);
+      expect(ceiling.area).toBeCloseTo(7, 9);
+      const { sum } = closure(surfaces);
+      for (const v of sum) expect(Math.abs(v)).toBeLessThan(1e-9);
+    }
+  });
+
   it('keepHalfPlane cuts a U into its two arms, each of positive orientation', () => {
     const pieces = keepHalfPlane(U_OUTLINE, { a: 0, b: -1, c: 2 }); // z > 2
     expect(pieces).toHaveLength(2);
