@@ -54,3 +54,45 @@ export function roomIlluminanceAt(r: RoomReferenceResult, p: Vec3, n: Vec3): Roo
     indirectRgb,
   };
 }
+
+/**
+ * Illuminance at a point of a named surface ('floor', 'ceiling', 'slope-<i>', 'wall-<i>', as
+ * src/core/room/roomSurfaces.ts names them), with that surface's inward normal: what a baker
+ * texel centre on that surface is compared with.
+ */
+export function roomSurfaceIlluminanceAt(r: RoomReferenceResult, surfaceId: string, p: Vec3): RoomSample {
+  const surface = r.surfaces.find((s) => s.id === surfaceId);
+  if (!surface) throw new RangeError(`no surface '${surfaceId}' in this room (it has ${r.surfaces.map((s) => s.id).join(', ')})`);
+  return roomIlluminanceAt(r, p, [...surface.inward]);
+}
+
+export interface RoomSurfaceStatistics {
+  id: string;
+  /** m², openings excluded. */
+  area: number;
+  /** Area-weighted mean, lowest and highest patch mean, lux (Y). */
+  mean: number;
+  min: number;
+  max: number;
+  /** Σ E·A over the surface, lm. */
+  flux: number;
+}
+
+/** Per surface: area, mean, lowest and highest patch illuminance (total, Y), flux received. */
+export function roomSurfaceStatistics(r: RoomReferenceResult): RoomSurfaceStatistics[] {
+  return r.surfaces.map((s, k) => {
+    let flux = 0;
+    let area = 0;
+    let min = Infinity;
+    let max = -Infinity;
+    r.patches.forEach((p, i) => {
+      if (p.surface !== k || p.kind === 'opening') return;
+      const e = luminanceOf(r.directRgb, 3 * i) + luminanceOf(r.indirectRgb, 3 * i);
+      flux += e * p.area;
+      area += p.area;
+      min = Math.min(min, e);
+      max = Math.max(max, e);
+    });
+    return { id: s.id, area, mean: area > 0 ? flux / area : 0, min, max, flux };
+  });
+}

@@ -16,7 +16,7 @@ import { BOX_FACES } from '../../src/reference/boxGeometry';
 import { ReferenceInputError } from '../../src/reference/referenceInputError';
 import { sampleReference } from '../../src/reference/sampleReference';
 import { solveBoxReference } from '../../src/reference/solveBoxReference';
-import { roomIlluminanceAt } from '../../src/reference/roomIlluminanceAt';
+import { roomIlluminanceAt, roomSurfaceIlluminanceAt, roomSurfaceStatistics } from '../../src/reference/roomIlluminanceAt';
 import { roomFluxes, solveRoomReference } from '../../src/reference/solveRoomReference';
 import { isotropic, realPhotometry } from './photometryFixtures';
 
@@ -42,6 +42,17 @@ const L_OUTLINE: [number, number][] = [
   [3.5, 3],
   [3.5, 5],
   [0, 5],
+];
+
+const CHIMNEY_OUTLINE: [number, number][] = [
+  [0, 0],
+  [1.8, 0],
+  [1.8, 0.5],
+  [3.2, 0.5],
+  [3.2, 0],
+  [5, 0],
+  [5, 4],
+  [0, 4],
 ];
 
 /** Inward unit normal of the wall a → b of a positively oriented outline (the left normal), independent of src/core/room. */
@@ -125,6 +136,17 @@ describe('room reference: direct light (CIE 171:2006 §5.2)', () => {
     expect(relErr(roomIlluminanceAt(r, q, [0, 1, 0]).direct, (I * pos[1]) / dist ** 3)).toBeLessThan(1e-12);
   });
 
+  it('a chimney breast shadows the wall beside it: zero direct light there, by surface name', () => {
+    const r = solveRoomReference({ outline: CHIMNEY_OUTLINE, height: 2.5, reflectance: uniform(0.5) }, [lamp([0.5, 2, 3.5])], files, { patchSize: 0.5 });
+    // Wall 4 is the north wall east of the breast, z = 0, x 3.2..5: from (0.5, 3.5) the line to
+    // (4.5, 0) passes x = 3.2 at z ≈ 1.14 > 0.5 (in sight); to (3.4, 0) it passes x = 3.2 at z ≈ 0.24 < 0.5: behind the breast.
+    expect(roomSurfaceIlluminanceAt(r, 'wall-4', [3.4, 1, 0]).direct).toBe(0);
+    const q: Vec3 = [4.5, 1, 0];
+    const dist = Math.hypot(0.5 - q[0], 2 - q[1], 3.5 - q[2]);
+    expect(relErr(roomSurfaceIlluminanceAt(r, 'wall-4', q).direct, (I * 3.5) / dist ** 3)).toBeLessThan(1e-12);
+    expect(() => roomSurfaceIlluminanceAt(r, 'slope-0', q)).toThrow(/no surface 'slope-0'/);
+  });
+
   it('refuses a lamp outside the room: in the notch of the L, above a slope', () => {
     expect(() => solveRoomReference({ outline: L_OUTLINE, height: 2.6, reflectance: uniform(0.5) }, [lamp([5, 2, 4])], files, { patchSize: 1 })).toThrow(ReferenceInputError);
     const attic: RoomInput = { outline: [[0, 0], [4, 0], [4, 6], [0, 6]], height: 2.6, slopes: [{ wall: 0, kneeHeight: 1.2, pitch: 40 }], reflectance: uniform(0.5) };
@@ -151,11 +173,13 @@ describe('room reference: flux balance (CIE 171:2006 §5.4, §5.8)', () => {
   // Σ E·A over a closed room of uniform ρ is Φ/(1 − ρ) exactly when the form factors close
   // (Σ_j F_ij = 1); here they close to the accuracy of point-to-polygon factors from 1, 4 or 16
   // pieces of the receiving patch, so the balance holds to ≈ ρ/(1 − ρ) × the closure error.
-  // Measured at 0.5 m patches: L +0.18 % (+0.10 % at 0.25 m), L with a slope +0.16 %, gable attic
+  // Measured at 0.5 m patches: L +0.18 % (+0.10 % at 0.25 m), L with a slope +0.16 %, chimney breast ρ 0.6 +0.32 %, gable attic
   // ρ 0.7 +0.48 % (+0.28 % at 0.3 m); direct Σ E·A within 6e-5 of Φ.
   const cases: [string, RoomInput, Vec3, number, number][] = [
     ['an L', { outline: L_OUTLINE, height: 2.6, reflectance: uniform(0.5) }, [1, 2.2, 4.5], 0.5, 5e-3],
     ['an L with a roof slope on wall 0 (the issue\'s attic)', { outline: L_OUTLINE, height: 2.6, slopes: [{ wall: 0, kneeHeight: 1.2, pitch: 40 }], reflectance: uniform(0.5) }, [1, 2.2, 4.5], 0.5, 5e-3],
+    // A 5 × 4 m room with a 1.4 × 0.5 m chimney breast standing out of the north wall at x 1.8..3.2.
+    ['a room with a chimney breast', { outline: CHIMNEY_OUTLINE, height: 2.5, reflectance: uniform(0.6) }, [1, 2, 2.5], 0.6, 5e-3],
     [
       'a gable attic with two knee walls',
       { outline: [[0, 0], [4, 0], [4, 6], [0, 6]], height: 2.6, slopes: [{ wall: 0, kneeHeight: 1.2, pitch: 40 }, { wall: 2, kneeHeight: 1.0, pitch: 50 }], reflectance: uniform(0.7) },
@@ -172,6 +196,13 @@ describe('room reference: flux balance (CIE 171:2006 §5.4, §5.8)', () => {
       expect(relErr(flux.total, LUMENS / (1 - rho))).toBeLessThan(tol);
       expect(relErr(flux.absorbed, LUMENS)).toBeLessThan(tol);
       expect(flux.escaped).toBe(0);
+      // Per-surface statistics add up to the same flux and the floor's area is the outline's.
+      const stats = roomSurfaceStatistics(r);
+      expect(relErr(stats.reduce((sum, s) => sum + s.flux, 0), flux.total)).toBeLessThan(1e-12);
+      const floor = stats.find((s) => s.id === 'floor')!;
+      expect(floor.area).toBeCloseTo(r.surfaces.find((s) => s.id === 'floor')!.area, 9);
+      expect(floor.min).toBeLessThanOrEqual(floor.mean);
+      expect(floor.max).toBeGreaterThanOrEqual(floor.mean);
     });
   }
 });
