@@ -8,6 +8,7 @@
 import { InputError } from '../inputError';
 import type { BeamSpec, ModuleTypeSpec } from '../model/catalogSchema';
 import { lumensWarning } from '../photometry/checks';
+import { PhotometryParseError } from '../photometry/PhotometryParseError';
 import { beamAndField, integrateFlux, parsePhotometry, type Photometry } from '../photometry';
 import { GldfError, quoteName } from './GldfError';
 import type { FluxCheck, ProductReport } from './gldfImportReport';
@@ -142,7 +143,7 @@ export function gldfToModuleType(product: GldfProduct, zip: UploadZip, options: 
     const mine = used.filter((a) => a.photometryId === pid);
     const bm: GldfBeamMapping = map.beams?.[pid] ?? {};
     const lead = mine.find((a) => a.cct === defaultCct) ?? mine[0];
-    let beamId = bm.id ?? catalogSlug(pid);
+    const beamId = bm.id ?? catalogSlug(pid);
     if (usedBeamIds.has(beamId)) throw new GldfError(`${product.source}: two photometries become beam '${beamId}' of type '${typeId}'; give one an id in the mapping file`);
     usedBeamIds.add(beamId);
     if (!bm.id) assume(`beam ${beamId} id`, beamId, `from the GLDF Photometry id ${quoteName(pid)} (mapping: beams.${pid}.id)`);
@@ -294,8 +295,11 @@ function readPhotometry(zip: UploadZip, file: GldfFile): Photometry {
   try {
     return parsePhotometry(bytes, name);
   } catch (error) {
-    // PhotometryParseError's message starts with the file name it was given: the entry's path.
-    if (error instanceof InputError) throw new GldfError(`${zip.source}: entry ${error.message}`);
+    // PhotometryParseError's message starts with the file name it was given (the entry's path, cut to 60 characters).
+    if (error instanceof InputError) {
+      const rest = error instanceof PhotometryParseError && error.message.startsWith(name) ? error.message.slice(name.length) : `: ${error.message}`;
+      throw new GldfError(`${zip.source}: entry ${quoteName(file.path)}${rest}`);
+    }
     throw error;
   }
 }
