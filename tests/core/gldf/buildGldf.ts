@@ -234,3 +234,24 @@ export function linearSpec(): GldfSpec {
     ],
   };
 }
+
+/** The manufacturer's mapping file (docs/gldf.md has the same example). */
+export const MAPPING_TEXT = JSON.stringify({
+  formatVersion: 1,
+  products: {
+    'LTL-TRACK-SPOT': {
+      id: 'track-spot',
+      length: 0.15,
+      defaultCct: 3000,
+      defaultBeam: 'medium',
+      filterHolder: true,
+      adjustable: { tilt: { min: 0, max: 90, stops: 5 }, rotation: { min: 0, max: 355, stops: 5 } },
+      beams: {
+        'ph-narrow': { id: 'narrow', article: 'LTL-TS-N', price: 199 },
+        'ph-medium': { id: 'medium', article: 'LTL-TS-M', price: 189 },
+        'ph-wide': { id: 'wide', article: 'LTL-TS-W', price: 179 },
+      },
+    },
+    'LTL-LINEAR-600': { id: 'linear-600', length: 0.6, price: 229, defaultCct: 3000, beams: { 'ph-linear': { id: 'opal', roll: 90 } } },
+  },
+});

@@ -11,30 +11,9 @@ import { formatImportReport } from '../../../src/core/gldf/gldfImportReport';
 import { parseGldfMapping, type GldfMapping } from '../../../src/core/gldf/gldfMapping';
 import { parseCatalog, parseCatalogText, type ModuleTypeSpec } from '../../../src/core/model/catalogSchema';
 import { integrateFlux, parsePhotometry } from '../../../src/core/photometry';
-import { gldfBytes, ies, linearSpec, pendantSpec, trackSpotSpec } from './buildGldf';
+import { gldfBytes, ies, linearSpec, MAPPING_TEXT, pendantSpec, trackSpotSpec } from './buildGldf';
 
 const base = parseCatalogText(readFileSync('src/core/catalog/default-catalog.json', 'utf8'), 'default-catalog.json');
-
-/** The manufacturer's mapping file (docs/gldf.md has the same example). */
-export const MAPPING_TEXT = JSON.stringify({
-  formatVersion: 1,
-  products: {
-    'LTL-TRACK-SPOT': {
-      id: 'track-spot',
-      length: 0.15,
-      defaultCct: 3000,
-      defaultBeam: 'medium',
-      filterHolder: true,
-      adjustable: { tilt: { min: 0, max: 90, stops: 5 }, rotation: { min: 0, max: 355, stops: 5 } },
-      beams: {
-        'ph-narrow': { id: 'narrow', article: 'LTL-TS-N', price: 199 },
-        'ph-medium': { id: 'medium', article: 'LTL-TS-M', price: 189 },
-        'ph-wide': { id: 'wide', article: 'LTL-TS-W', price: 179 },
-      },
-    },
-    'LTL-LINEAR-600': { id: 'linear-600', length: 0.6, price: 229, defaultCct: 3000, beams: { 'ph-linear': { id: 'opal', roll: 90 } } },
-  },
-});
 
 const spotBeam = (id: string, file: string, ext: string, angle: number, lumens: number, watts: number, price: number, article: string, labels: Record<string, string>): ModuleTypeSpec['beams'][number] => ({
   id,
