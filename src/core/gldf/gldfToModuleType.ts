@@ -89,7 +89,8 @@ const firstText = (texts: LocaleTexts): string => texts.find((l) => l.text)?.tex
 /** The longest common prefix of the beam's article numbers, trimmed at a separator ('LX-TS-N15-30', 'LX-TS-N15-40' → 'LX-TS-N15'). */
 function commonArticle(numbers: string[]): string {
   if (numbers.length < 2) return '';
-  let prefix = numbers[0];
+  // Cut first: a hostile file's product numbers may be megabytes long.
+  let prefix = numbers[0].slice(0, 100);
   for (const n of numbers) while (!n.startsWith(prefix)) prefix = prefix.slice(0, -1);
   return prefix.replace(/[-_./ ]+$/, '');
 }

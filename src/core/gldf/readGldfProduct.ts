@@ -24,7 +24,13 @@ import {
 import { attr, child, children, parseUploadXml, path, text, type XmlElement } from './parseUploadXml';
 import { readUploadZip, unsafeEntryName, type UploadZip } from './readUploadZip';
 
-const DECIMAL = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d{1,3})?$/;
+/**
+ * xs:double as GLDF files write it. No two quantifiers may split the same run of digits (the
+ * fuzzer found `\d+\.?\d*` backtracking quadratically over a 10⁶-digit numeral), and text
+ * longer than any real number is refused before the expression runs.
+ */
+const DECIMAL = /^[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d{1,3})?$/;
+const MAX_NUMBER_TEXT = 40;
 
 /** Reads the container and its product.xml. */
 export function readGldfProduct(bytes: Uint8Array, source: string): { product: GldfProduct; zip: UploadZip } {
@@ -62,7 +68,7 @@ class ProductReader {
 
   private number(el: XmlElement | undefined, where: string, min: number, max: number): number {
     const t = text(el);
-    if (!DECIMAL.test(t)) this.fail(where, `${quoteName(t)} is not a number`);
+    if (t.length > MAX_NUMBER_TEXT || !DECIMAL.test(t)) this.fail(where, `${quoteName(t)} is not a number`);
     const v = Number(t);
     if (!(v >= min && v <= max)) this.fail(where, `${v} is out of range (${min} to ${max})`);
     return v;
