@@ -10,7 +10,10 @@ import { importGldfCatalog } from '../../../src/core/gldf/importGldfCatalog';
 import { formatImportReport } from '../../../src/core/gldf/gldfImportReport';
 import { parseGldfMapping, type GldfMapping } from '../../../src/core/gldf/gldfMapping';
 import { parseCatalog, parseCatalogText, type ModuleTypeSpec } from '../../../src/core/model/catalogSchema';
+import { billOfMaterials } from '../../../src/core/model/billOfMaterials';
+import { toLightingScene } from '../../../src/core/model/toLightingScene';
 import { integrateFlux, parsePhotometry } from '../../../src/core/photometry';
+import { only, run, withPreset } from '../model/helpers';
 import { gldfBytes, ies, linearSpec, MAPPING_TEXT, pendantSpec, trackSpotSpec } from './buildGldf';
 
 const base = parseCatalogText(readFileSync('src/core/catalog/default-catalog.json', 'utf8'), 'default-catalog.json');
@@ -200,5 +203,20 @@ describe('GLDF import into the rail catalog', () => {
     expect(again.catalog.moduleTypes.map((t) => t.id)).toEqual(result.catalog.moduleTypes.map((t) => t.id));
     expect(again.report.products[0].replaced).toBe(true);
     expect(again.report.unusedMapping).toEqual(['products.LTL-TRACK-SPOT: no imported file holds that product']);
+  });
+
+  it('the imported catalog drives the configurator: a track spot on the demo’s single rail, in the bill of materials and the lighting scene', () => {
+    const cat = result.catalog;
+    let c = withPreset('single', 3, 3);
+    const railId = only(c).rails[0].id;
+    c = run(c, 'addModule', { railId, type: 'track-spot' }, cat);
+    const added = only(c).rails[0].modules.find((m) => m.type === 'track-spot');
+    expect(added).toMatchObject({ beam: 'medium', cct: 3000 });
+    c = run(c, 'setModuleBeam', { moduleId: added?.id, beam: 'narrow' }, cat);
+    c = run(c, 'setModuleCct', { moduleId: added?.id, cct: 2700 }, cat);
+    const line = billOfMaterials(c, cat).lines.find((l) => l.article === 'LTL-TS-N-2700');
+    expect(line).toMatchObject({ count: 1, unitPrice: 199, kind: 'module' });
+    const lum = toLightingScene(c, cat).luminaires.find((l) => l.id === added?.id);
+    expect(lum?.photometry).toBe('ies/track-spot-narrow.ies');
   });
 });
