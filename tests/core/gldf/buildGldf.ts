@@ -255,3 +255,19 @@ export const MAPPING_TEXT = JSON.stringify({
     'LTL-LINEAR-600': { id: 'linear-600', length: 0.6, price: 229, defaultCct: 3000, beams: { 'ph-linear': { id: 'opal', roll: 90 } } },
   },
 });
+
+/**
+ * The pendant with changeable lamps instead of fixed LEDs (a fluorescent version: two 2900 lm
+ * T5 lamps, 63.7 W with the ballast): ChangeableLightSource, Equipment, ChangeableLightEmitter.
+ * Its photometry is relative (lamp lumens 5800), so integrated/rated is the light output ratio.
+ */
+export function changeablePendantXml(): string {
+  const lamp = (k: number): string =>
+    `<ChangeableLightSource id="lamp-${k}"><Name><Locale language="en">T5 28 W/8${k / 100}</Locale></Name><RatedInputPower>28</RatedInputPower>` +
+    `<ColorInformation><ColorRenderingIndex>85</ColorRenderingIndex><CorrelatedColorTemperature>${k}</CorrelatedColorTemperature></ColorInformation><RatedLuminousFlux>2900</RatedLuminousFlux></ChangeableLightSource>`;
+  const equipment = (k: number): string => `<Equipment id="eq-${k}"><LightSourceReference changeableLightSourceId="lamp-${k}" lightSourceCount="2"/><RatedInputPower>63.7</RatedInputPower></Equipment>`;
+  const emitter = (k: number): string => `<Emitter id="em-${k}"><ChangeableLightEmitter><PhotometryReference photometryId="ph-pendant"/><EquipmentReference equipmentId="eq-${k}"/></ChangeableLightEmitter></Emitter>`;
+  return productXml(pendantSpec())
+    .replace(/<LightSources>.*<\/LightSources>/, `<LightSources>${lamp(3000)}${lamp(4000)}</LightSources><Equipments>${equipment(3000)}${equipment(4000)}</Equipments>`)
+    .replace(/<Emitters>.*<\/Emitters>/, `<Emitters>${emitter(3000)}${emitter(4000)}</Emitters>`);
+}

@@ -7,7 +7,7 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { validateXML } from 'xmllint-wasm';
-import { linearSpec, pendantSpec, productXml, trackSpotSpec } from './buildGldf';
+import { changeablePendantXml, linearSpec, pendantSpec, productXml, trackSpotSpec } from './buildGldf';
 
 const schema = { fileName: 'gldf.xsd', contents: readFileSync('vendor/gldf/gldf.xsd', 'utf8') };
 
@@ -26,6 +26,10 @@ describe('GLDF test files against the official XSD', () => {
       expect(await validate(productXml(spec()))).toEqual({ valid: true, errors: [] });
     });
   }
+
+  it('pendant with changeable lamps (ChangeableLightSource, Equipment, ChangeableLightEmitter): product.xml validates', async () => {
+    expect(await validate(changeablePendantXml())).toEqual({ valid: true, errors: [] });
+  });
 
   it('a product.xml with GTIN before the variant Name is refused by the schema', async () => {
     const xml = productXml(trackSpotSpec()).replace(/(<ProductNumber><Locale language="en">LTL-TS-NARROW-30<\/Locale><\/ProductNumber>)(<Name>.*?<\/Name>)(<GTIN>\d+<\/GTIN>)/, '$1$3$2');

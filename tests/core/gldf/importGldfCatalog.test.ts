@@ -14,7 +14,7 @@ import { billOfMaterials } from '../../../src/core/model/billOfMaterials';
 import { toLightingScene } from '../../../src/core/model/toLightingScene';
 import { integrateFlux, parsePhotometry } from '../../../src/core/photometry';
 import { only, run, withPreset } from '../model/helpers';
-import { gldfBytes, ies, linearSpec, MAPPING_TEXT, pendantSpec, trackSpotSpec } from './buildGldf';
+import { changeablePendantXml, gldfBytes, ies, linearSpec, MAPPING_TEXT, pendantSpec, trackSpotSpec } from './buildGldf';
 
 const base = parseCatalogText(readFileSync('src/core/catalog/default-catalog.json', 'utf8'), 'default-catalog.json');
 
@@ -218,5 +218,18 @@ describe('GLDF import into the rail catalog', () => {
     expect(line).toMatchObject({ count: 1, unitPrice: 199, kind: 'module' });
     const lum = toLightingScene(c, cat).luminaires.find((l) => l.id === added?.id);
     expect(lum?.photometry).toBe('ies/track-spot-narrow.ies');
+  });
+
+  it('changeable lamps: flux is the lamps’ (2 × 2900 lm), power the equipment’s, and the flux check is the light output ratio', () => {
+    const r = importGldfCatalog(base, [{ name: 'pendant-t5.gldf', bytes: gldfBytes(pendantSpec(), {}, changeablePendantXml()) }], null);
+    const type = r.catalog.moduleTypes.find((t) => t.id === 'ltl-pendant');
+    expect(type?.beams.map((b) => [b.lumens, b.watts])).toEqual([[5800, 63.7]]);
+    expect(type?.ccts).toEqual([3000, 4000]);
+    const flux = r.report.products[0].flux;
+    expect(flux.map((f) => f.kind)).toEqual(['lamp', 'lamp']);
+    // Ledalite's file: 5296.7 lm from 5800 lamp lumens, a light output ratio of 0.913: within the lamp rule (0.1–1.05).
+    expect(flux[0].differencePercent).toBeCloseTo(((5296.7 - 5800) / 5800) * 100, 1);
+    expect(flux[0].warning).toBeNull();
+    expect(r.report.products[0].imported.map((v) => v.cri)).toEqual([85, 85]);
   });
 });
