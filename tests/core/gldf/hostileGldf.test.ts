@@ -116,6 +116,12 @@ describe('hostile GLDF containers are refused in one line naming file and entry'
     expect(refusal(xmlWith(entityOnly))).toBe("bad.gldf: entry 'product.xml': declares an entity (<!ENTITY); DTDs and entity declarations are refused");
   });
 
+  it('XML nested deeper than 40 levels, and more than 5000 siblings of one name', () => {
+    expect(refusal(xmlWith((x) => x.replace('<Header>', `<Header>${'<A>'.repeat(60)}${'</A>'.repeat(60)}`)))).toBe("bad.gldf: entry 'product.xml': Maximum nested tags exceeded");
+    const files = Array.from({ length: 5001 }, (_, i) => `<File id="x${i}" contentType="other" type="url">u</File>`).join('');
+    expect(refusal(xmlWith((x) => x.replace('<Files>', `<Files>${files}`)))).toBe("bad.gldf: entry 'product.xml': 5005 <File> elements, over the limit of 5000") // 5001 + the spot's 4;
+  });
+
   it('malformed XML is refused with its line', () => {
     expect(refusal(xmlWith((x) => x.replace('</Header>', '</Headr>')))).toMatch(/^bad\.gldf: entry 'product\.xml' line 2: .*Header/);
   });
