@@ -55,6 +55,8 @@ interface Accepted {
   watts: number;
   kind: 'luminaire' | 'lamp';
   emitterName?: LocaleTexts;
+  /** The light source states no CCT: GLDF_DEFAULTS.cct. */
+  cctAssumed?: boolean;
 }
 
 /** A catalog id from a GLDF id or number: lower case, runs of other characters as '-'. */
@@ -110,6 +112,7 @@ export function gldfToModuleType(product: GldfProduct, zip: UploadZip, options: 
     if (typeof reason === 'string') report.skipped.push({ variant: v.id, reason });
     else {
       if (v.mountings === null) assume(`mounting of ${v.id}`, 'fits the rail', 'the variant declares no Mountings');
+      if (reason.cctAssumed) assume(`CCT of ${v.id}`, `${reason.cct} K`, 'its light source states no CorrelatedColorTemperature');
       accepted.push(reason);
     }
   }
@@ -209,7 +212,7 @@ export function gldfToModuleType(product: GldfProduct, zip: UploadZip, options: 
   if (map.defaultBeam !== undefined) {
     if (beams.some((b) => b.id === map.defaultBeam)) defaultBeam = map.defaultBeam;
     else report.notes.push(`mapping defaultBeam '${map.defaultBeam}' is not a beam; '${defaultBeam}' used`);
-  }
+  } else assume('defaultBeam', defaultBeam, 'the first beam (mapping: defaultBeam)');
 
   const lead = used[0].variant;
   let length = map.length;
@@ -219,6 +222,7 @@ export function gldfToModuleType(product: GldfProduct, zip: UploadZip, options: 
     assume('length', `${length} m`, size && size > 0 ? `the GLDF ProductSize length of ${lead.id} (mapping: length)` : 'the GLDF gives no ProductSize (mapping: length)');
   }
   const adjustable = adjustableFor(lead, map, assume);
+  if (map.filterHolder === undefined) assume('filterHolder', 'none', 'GLDF does not say whether a colour filter fits (mapping: filterHolder)');
   const picture = product.pictureFileIds.map((id) => product.files.get(id)).find((f) => f?.type === 'localFileName');
   if (picture) {
     const ext = /\.(\w+)$/.exec(picture.path)?.[1]?.toLowerCase() ?? 'img';
@@ -285,6 +289,7 @@ function variantProblem(product: GldfProduct, v: GldfVariant, mountings: readonl
     watts,
     kind: le.kind === 'fixed' ? 'luminaire' : 'lamp',
     ...(le.name ? { emitterName: le.name } : {}),
+    ...(source?.cct === undefined ? { cctAssumed: true } : {}),
   };
 }
 
@@ -335,7 +340,10 @@ function adjustableFor(v: GldfVariant, map: GldfProductMapping, assume: (f: stri
   const a = new Set(v.adjustabilities);
   const tilts = a.has('Tilt') || a.has('Cardanic');
   const turns = a.has('Turn') || a.has('Cardanic') || a.has('Orientation');
-  if (!tilts && !turns) return undefined;
+  if (!tilts && !turns) {
+    assume('adjustable', 'fixed, straight down', `the GLDF declares ${a.size ? `Adjustability ${[...a].join(', ')}` : 'no Adjustability'} (mapping: adjustable)`);
+    return undefined;
+  }
   const range = {
     tilt: tilts ? { ...GLDF_DEFAULTS.tilt } : { min: 0, max: 0 },
     rotation: turns ? { ...GLDF_DEFAULTS.rotation } : { min: 0, max: 0 },

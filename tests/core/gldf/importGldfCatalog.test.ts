@@ -176,12 +176,24 @@ describe('GLDF import into the rail catalog', () => {
       'beam ph-pendant label = ph-pendant',
       'beam ph-pendant article = LTL-PD',
       'beam ph-pendant roll = 0°',
+      'defaultBeam = ph-pendant',
       'length = 0.15 m',
+      'adjustable = fixed, straight down',
+      'filterHolder = none',
     ]);
     // The pendant's price is its GLDF ListPrice in the catalog's currency: not assumed.
     expect(pendant.assumed.some((a) => a.field.endsWith('price'))).toBe(false);
     expect(spot.assumed.map((a) => a.field)).toEqual(['beam narrow roll', 'beam medium roll', 'beam wide roll']);
-    expect(linear.assumed.map((a) => `${a.field} = ${a.value}`)).toEqual(['beam opal article = LTL-LN600']);
+    expect(linear.assumed.map((a) => `${a.field} = ${a.value}`)).toEqual(['beam opal article = LTL-LN600', 'defaultBeam = opal', 'adjustable = fixed, straight down', 'filterHolder = none']);
+  });
+
+  it('a light source without a CCT is taken as 3000 K, and the report says so', () => {
+    const spec = pendantSpec();
+    delete spec.lightSources[0].cct;
+    spec.variants = spec.variants.slice(0, 1);
+    const r = importGldfCatalog(base, [{ name: 'pendant.gldf', bytes: gldfBytes(spec) }], null);
+    expect(r.catalog.moduleTypes.find((t) => t.id === 'ltl-pendant')?.ccts).toEqual([3000]);
+    expect(r.report.products[0].assumed).toContainEqual({ field: 'CCT of pd-3000', value: '3000 K', why: 'its light source states no CorrelatedColorTemperature' });
   });
 
   it('without a mapping file the documented defaults apply and validate', () => {
