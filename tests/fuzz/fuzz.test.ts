@@ -10,7 +10,7 @@ import { describe, expect, it } from 'vitest';
 import { allTargets, formatTable, fuzz, isFailure, replay, type Tally } from './fuzzEngine';
 
 /** Mutants per target: ~5-8 s each here (photometry has its own, longer campaign in tests/core/photometry/fuzz.test.ts). */
-const BUDGET: Record<string, number> = { scene: 1500, 'scene-files': 1500, configuration: 1500, 'share-link': 1800, catalog: 800, photometry: 200 };
+const BUDGET: Record<string, number> = { scene: 1500, 'scene-files': 1500, configuration: 1500, 'share-link': 1800, catalog: 800, photometry: 200, gldf: 250, l3d: 400 };
 const SEED = 18;
 
 const targets = await allTargets();
@@ -21,7 +21,7 @@ function failures(t: Tally): string[] {
 
 describe('fuzz: formats under hostile input', () => {
   it('has the four format targets', () => {
-    expect(targets.map((t) => t.name)).toEqual(expect.arrayContaining(['scene', 'configuration', 'share-link', 'catalog']));
+    expect(targets.map((t) => t.name)).toEqual(expect.arrayContaining(['scene', 'configuration', 'share-link', 'catalog', 'gldf', 'l3d']));
   });
 
   for (const target of targets) {

@@ -12,6 +12,8 @@ import { gunzipSync, gzipSync } from 'node:zlib';
 import { catalogFuzzTarget } from './catalogTarget';
 import { messageProblem } from './checks';
 import { configurationFuzzTarget } from './configurationTarget';
+import { gldfCodec, gldfFuzzTarget } from './gldfTarget';
+import { l3dCodec, l3dFuzzTarget } from './l3dTarget';
 import type { FuzzOutcome, FuzzSeed, FuzzTarget } from './fuzzTarget';
 import { createRng, mutate, type TextEncoding } from './mutate';
 import { sceneFuzzTarget } from './sceneTarget';
@@ -28,7 +30,7 @@ const PHOTOMETRY_MODULE = 'tests/fuzz/photometryTarget.ts';
 
 /** Every target: the four formats of this file's siblings, plus photometry when its target exists. */
 export async function allTargets(): Promise<FuzzTarget[]> {
-  const targets: FuzzTarget[] = [sceneFuzzTarget, sceneFilesFuzzTarget, configurationFuzzTarget, shareLinkFuzzTarget, catalogFuzzTarget];
+  const targets: FuzzTarget[] = [sceneFuzzTarget, sceneFilesFuzzTarget, configurationFuzzTarget, shareLinkFuzzTarget, catalogFuzzTarget, gldfFuzzTarget, l3dFuzzTarget];
   if (existsSync(PHOTOMETRY_MODULE)) {
     // import { photometryFuzzTarget } from './photometryTarget' — by path, so this file compiles without it.
     const mod = (await import(/* @vite-ignore */ pathToFileURL(join(process.cwd(), PHOTOMETRY_MODULE)).href)) as { photometryFuzzTarget?: FuzzTarget; photometryRegressions?: () => FuzzSeed[] };
@@ -45,7 +47,7 @@ const extraRegressions = new Map<string, () => FuzzSeed[]>();
 
 const ENCODING: Record<string, TextEncoding> = { photometry: 'latin1' };
 /** Targets whose input wraps JSON: mutate the JSON inside most of the time. */
-const CODECS: Record<string, { decode(b: Uint8Array): Uint8Array | null; encode(b: Uint8Array): Uint8Array }> = { 'share-link': shareLinkCodec };
+const CODECS: Record<string, { decode(b: Uint8Array): Uint8Array | null; encode(b: Uint8Array): Uint8Array }> = { 'share-link': shareLinkCodec, gldf: gldfCodec, l3d: l3dCodec };
 
 export type Verdict = 'accepted-valid' | 'refused-one-line' | 'crash' | 'non-finite' | 'dropped-field' | 'accepted-invalid' | 'bad-message';
 

@@ -16,6 +16,7 @@ const commands: Record<string, () => Promise<{ run: Command }>> = {
   export: () => import('./exportCommand'),
   dmx: () => import('./dmxCommand'),
   filters: () => import('./filtersCommand'),
+  catalog: () => import('./catalogCommand'),
 };
 
 const usage = `usage: luxbox <command> [...]
@@ -27,7 +28,8 @@ commands:
   bench [--quick] [--out <dir>]   bake error vs time against the CPU reference (docs/benchmarks.md)
   export radiance <config-or-scene.json> --out <dir> [--near-field split|point]   Radiance scene folder (docs/radiance.md)
   dmx [--artnet] [--sacn] [--port N] [--bind ADDR] [--universes 1-4]   Art-Net/sACN → WebSocket bridge for live control (docs/dmx.md)
-  filters [--json] [--cct K]   colour-filter library: x, y, transmission (CCT, Duv near white) for a K source (docs/colour-filters.md)`;
+  filters [--json] [--cct K]   colour-filter library: x, y, transmission (CCT, Duv near white) for a K source (docs/colour-filters.md)
+  catalog import <product.gldf> [more.gldf …] --into <catalog.json> --out <dir> [--mapping <mapping.json>] [--assets <dir>]   GLDF products into a catalog folder (docs/gldf.md)`;
 
 export async function main(argv: string[]): Promise<number> {
   const [name, ...rest] = argv;

@@ -1,0 +1,50 @@
+/**
+ * Fuzz target `l3d` (issue 31): L3D containers through readL3dStructure (zip reader,
+ * structure.xml, every reference). Seed: the tests' hand-made track spot (tests/core/gldf/
+ * buildL3d.ts). Most mutants change structure.xml inside a container that holds the OBJ parts
+ * (l3dCodec); raw container bytes are mutated too. Accepted means every number in the tree is
+ * finite and every part's geometry file is in the container.
+ */
+import { unzipSync, zipSync } from 'fflate';
+import { GldfError } from '../../src/core/gldf/GldfError';
+import { readL3dStructure, type L3dGeometryNode } from '../../src/core/gldf/readL3dStructure';
+import { files, l3d } from '../core/gldf/buildL3d';
+import { nonFinitePaths } from './checks';
+import type { FuzzOutcome, FuzzSeed, FuzzTarget } from './fuzzTarget';
+
+/** structure.xml out of a container and back into one with the seed's OBJ parts. */
+export const l3dCodec = {
+  decode(zip: Uint8Array): Uint8Array | null {
+    try {
+      return unzipSync(zip, { filter: (f) => f.name === 'structure.xml' })['structure.xml'] ?? null;
+    } catch {
+      return null;
+    }
+  },
+  encode: (xml: Uint8Array): Uint8Array => zipSync({ ...files(), 'structure.xml': xml }),
+};
+
+export const l3dFuzzTarget: FuzzTarget = {
+  name: 'l3d',
+  seeds: (): FuzzSeed[] => [{ name: 'track-spot.l3d', bytes: l3d() }],
+  run(input: Uint8Array): FuzzOutcome {
+    let result: ReturnType<typeof readL3dStructure>;
+    try {
+      result = readL3dStructure(input, 'fuzz.l3d');
+    } catch (error) {
+      if (error instanceof GldfError) return { kind: 'refused', message: error.message };
+      throw error;
+    }
+    const { luminaire, zip } = result;
+    const problems = nonFinitePaths(luminaire.structure).map((p) => `non-finite ${p}`);
+    const walk = (nodes: readonly L3dGeometryNode[]): void => {
+      for (const n of nodes) {
+        const file = luminaire.geometryFiles.get(n.geometryId);
+        if (!file || !zip.has(file.path)) problems.push(`part ${n.partName}: geometry ${n.geometryId} not in the container`);
+        for (const j of n.joints) walk(j.geometries);
+      }
+    };
+    walk(luminaire.structure);
+    return { kind: 'accepted', problems };
+  },
+};

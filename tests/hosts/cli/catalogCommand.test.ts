@@ -1,0 +1,78 @@
+/**
+ * `luxbox catalog import` end to end (docs/gldf.md): GLDF files built from the repo's
+ * photometry, the demo catalog as the base, the manufacturer's mapping; the folder written must
+ * hold a catalog that validates, every photometry it names, and the report. A refused file
+ * writes nothing.
+ */
+import { spawnSync } from 'node:child_process';
+import { existsSync, mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { afterAll, describe, expect, it } from 'vitest';
+import { parseCatalogText } from '../../../src/core/model/catalogSchema';
+import { parsePhotometry } from '../../../src/core/photometry';
+import { gldfBytes, linearSpec, MAPPING_TEXT, pendantSpec, productXml, trackSpotSpec } from '../../core/gldf/buildGldf';
+
+const dir = mkdtempSync(join(tmpdir(), 'luxbox-catalog-import-'));
+afterAll(() => rmSync(dir, { recursive: true, force: true }));
+
+function luxbox(...args: string[]): { status: number | null; stdout: string; stderr: string } {
+  const r = spawnSync(process.execPath, ['bin/luxbox.js', ...args], { encoding: 'utf8' });
+  return { status: r.status, stdout: r.stdout, stderr: r.stderr };
+}
+
+const write = (name: string, bytes: Uint8Array | string): string => {
+  const path = join(dir, name);
+  writeFileSync(path, bytes);
+  return path;
+};
+
+describe('luxbox catalog import', () => {
+  const spot = write('track-spot.gldf', gldfBytes(trackSpotSpec()));
+  const pendant = write('pendant.gldf', gldfBytes(pendantSpec()));
+  const linear = write('linear.gldf', gldfBytes(linearSpec()));
+  const mapping = write('mapping.json', MAPPING_TEXT);
+
+  it('writes a complete catalog folder: catalog.json, every photometry it names (imported and the base’s), the picture, the report', () => {
+    const out = join(dir, 'shop');
+    const r = luxbox('catalog', 'import', spot, pendant, linear, '--into', 'src/core/catalog/default-catalog.json', '--assets', 'public', '--mapping', mapping, '--out', out);
+    expect(r.stderr).toBe('');
+    expect(r.status).toBe(0);
+    expect(r.stdout.split('\n')[0]).toBe("track-spot.gldf: module type 'track-spot', 9 variants imported, 0 skipped, 3 values assumed, 3 flux differences");
+    const catalog = parseCatalogText(readFileSync(join(out, 'catalog.json'), 'utf8'), 'catalog.json');
+    expect(catalog.moduleTypes.map((t) => t.id)).toEqual(['spot', 'spot-warmdim', 'flood', 'linear', 'washer', 'updown', 'track-spot', 'ltl-pendant', 'linear-600']);
+    // Every photometry the catalog names is in the folder and parses: the folder is served as the app's assetBase.
+    for (const b of catalog.moduleTypes.flatMap((t) => t.beams)) {
+      const bytes = new Uint8Array(readFileSync(join(out, b.photometry)));
+      expect(parsePhotometry(bytes, b.photometry).candela.length).toBeGreaterThan(0);
+    }
+    expect(readdirSync(join(out, 'images'))).toEqual(['track-spot.png']);
+    const report = JSON.parse(readFileSync(join(out, 'import-report.json'), 'utf8'));
+    expect(report.products.map((p: { typeId: string }) => p.typeId)).toEqual(['track-spot', 'ltl-pendant', 'linear-600']);
+    expect(readFileSync(join(out, 'import-report.txt'), 'utf8')).toContain('skipped pd-wall-3000: mounting wall-surface does not fit the rail (ceiling-surface, ceiling-pendant)');
+  });
+
+  it('a refused file writes nothing, in one line naming the file and entry, exit 1', () => {
+    const spec = trackSpotSpec();
+    const bad = write('bad.gldf', gldfBytes(spec, {}, productXml(spec).replace('<Root>', '<!DOCTYPE Root [<!ENTITY x "y">]><Root>')));
+    const out = join(dir, 'never');
+    const r = luxbox('catalog', 'import', pendant, bad, '--into', 'src/core/catalog/default-catalog.json', '--out', out);
+    expect(r.status).toBe(1);
+    expect(r.stderr).toBe("luxbox catalog: bad.gldf: entry 'product.xml': has a DTD (<!DOCTYPE); DTDs and entity declarations are refused\n");
+    expect(existsSync(out)).toBe(false);
+  });
+
+  it('usage errors in one line', () => {
+    for (const [args, message] of [
+      [['import', spot, '--out', join(dir, 'x')], /--into <catalog\.json> is required/],
+      [['import', '--into', 'src/core/catalog/default-catalog.json', '--out', join(dir, 'x')], /no GLDF file given/],
+      [['export'], /unknown subcommand "export"/],
+      [['import', spot, '--into', 'src/core/catalog/default-catalog.json', '--out', join(dir, 'x'), '--mapping', spot], /^luxbox catalog: track-spot\.gldf/],
+    ] as const) {
+      const r = luxbox('catalog', ...args);
+      expect(r.status).toBe(1);
+      expect(r.stderr.trim().split('\n')).toHaveLength(1);
+      expect(r.stderr).toMatch(message);
+    }
+  });
+});
