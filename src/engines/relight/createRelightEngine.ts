@@ -7,7 +7,7 @@ import type { ObjectAtlas } from '../bake/objects/preparedObjects';
 import type { Rgb } from '../../core/model/lightingScene';
 import { createDirectBasisQueue } from './directBasisQueue';
 import { engineProgress } from './engineProgress';
-import { type GroupState, blendWeights, weightedBases, weightsKey } from './groupState';
+import { type GroupState, blendWeights, reconcileGroups, weightedBases, weightsKey } from './groupState';
 import { createIndirectSolver } from './indirectSolver';
 import { indirectTerms } from './indirectTerms';
 import { groupLuminaires, groupWeight, roomKey } from './luminaireGroups';
@@ -30,6 +30,13 @@ export const VIEWER_BAKE_SETTINGS: Partial<BakeSettings> = { texelSize: 0.05, ma
 
 /** The group keys of a luminaire list, in order: a fade's two scenes must have the same. */
 const groupKeys = (sc: BakeScene) => groupLuminaires(sc.luminaires).map((g) => g.key).join('|');
+
+/** Throws unless `fade` can be shown: a fraction in [0, 1], a scene to fade to, and the same luminaires (geometry) at both ends. */
+function checkFade(fade: EngineFade, scene: BakeScene | null, order: readonly GroupState[]): void {
+  if (!(fade.e >= 0 && fade.e <= 1)) throw new Error(`setFade: fraction ${fade.e} is outside [0, 1]`);
+  if (!scene) throw new Error('setFade: no scene to fade to');
+  if (groupKeys(fade.from) !== order.map((s) => s.group.key).join('|')) throw new Error('setFade: the scene faded from has other luminaires than the scene');
+}
 
 /**
  * The relight engine (RelightEngine.ts): the groups of the current scene and their bases
@@ -112,20 +119,12 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
     if (nextRoom !== room) changeRoom(next, nextRoom);
     scene = next;
     const groups = groupLuminaires(next.luminaires);
-    const kept = new Map<string, GroupState>();
-    let bake = 0;
-    for (const g of groups) {
-      const old = states.get(g.key);
-      if (old) kept.set(g.key, { ...old, group: g });
-      else {
-        kept.set(g.key, { group: g, basis: null });
-        bake++;
-      }
-    }
-    states = kept;
-    order = groups.map((g) => kept.get(g.key)!);
+    const reconciled = reconcileGroups(states, groups);
+    states = reconciled.states;
+    order = reconciled.order;
+    const { bake } = reconciled;
     // A basis under way for a group that is gone (moved, removed) is of no use.
-    bases.keepOnly(kept);
+    bases.keepOnly(states);
     // A fade from a scene with other luminaires (a module added or moved meanwhile) cannot be shown: the scene is.
     if (fade && groupKeys(fade.from) !== groups.map((g) => g.key).join('|')) fade = null;
     // A solve under way for other weights is of no use any more (the shown one stays until the new solve is done).
@@ -149,11 +148,7 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
   return {
     setScene,
     setFade(next) {
-      if (next) {
-        if (!(next.e >= 0 && next.e <= 1)) throw new Error(`setFade: fraction ${next.e} is outside [0, 1]`);
-        if (!scene) throw new Error('setFade: no scene to fade to');
-        if (groupKeys(next.from) !== order.map((s) => s.group.key).join('|')) throw new Error('setFade: the scene faded from has other luminaires than the scene');
-      }
+      if (next) checkFade(next, scene, order);
       if (!next && !fade) return;
       fade = next ? { from: next.from, e: next.e } : null;
       version++;

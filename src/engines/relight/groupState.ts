@@ -33,3 +33,21 @@ export function weightsKey(order: readonly GroupState[], weight: GroupWeight): s
 export function blendWeights(from: Rgb, to: Rgb, e: number): Rgb {
   return [(1 - e) * from[0] + e * to[0], (1 - e) * from[1] + e * to[1], (1 - e) * from[2] + e * to[2]];
 }
+
+/**
+ * The states of a scene's `groups`: a group already in `states` (same geometry key) keeps its
+ * basis, a new one has none yet. `bake` counts the new ones; `order` follows `groups`.
+ */
+export function reconcileGroups(states: ReadonlyMap<string, GroupState>, groups: readonly LuminaireGroup[]): { states: Map<string, GroupState>; order: GroupState[]; bake: number } {
+  const kept = new Map<string, GroupState>();
+  let bake = 0;
+  for (const g of groups) {
+    const old = states.get(g.key);
+    if (old) kept.set(g.key, { ...old, group: g });
+    else {
+      kept.set(g.key, { group: g, basis: null });
+      bake++;
+    }
+  }
+  return { states: kept, order: groups.map((g) => kept.get(g.key)!), bake };
+}
