@@ -27,7 +27,7 @@ export interface DirectBasis extends DirectMaps {
  * The shared indirect solve of a scene (docs/viewer.md, "Relighting without rebaking"): the
  * indirect maps (blurred, with the tail; the atlas's dilated as shown) computed from
  * Σ w_g · direct_g, the reflected direct flux Φ_solve of that sum, and the weights it was
- * solved at (`key`, createRelightEngine's weightsKey). `final`: the finished solve, not a preview.
+ * solved at (`key`, groupState.ts weightsKey). `final`: the finished solve, not a preview.
  */
 export interface IndirectSolution {
   surfaces: Record<SurfaceName, Float32Array>;

@@ -1,4 +1,4 @@
-import type { RelightEngine } from '../relight/createRelightEngine';
+import type { RelightEngine } from '../relight/RelightEngine';
 
 /** Milliseconds of bake work per slice: keeps a 60 Hz frame for interaction in between. */
 export const SLICE_MS = 12;

@@ -1,5 +1,6 @@
 import type { BakeSettings } from '../bake/bakeSettings';
-import { createRelightEngine, VIEWER_BAKE_SETTINGS, type RelightEngine } from '../relight/createRelightEngine';
+import { createRelightEngine, VIEWER_BAKE_SETTINGS } from '../relight/createRelightEngine';
+import type { RelightEngine } from '../relight/RelightEngine';
 import { watchContextLoss, type ContextWatch } from './watchContextLoss';
 
 /**

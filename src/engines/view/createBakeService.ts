@@ -2,7 +2,7 @@ import type { BakeScene } from '../bake/bakeScene';
 import type { Rgb } from '../../core/model/lightingScene';
 import { resolveBakeSettings, type BakeSettings } from '../bake/bakeSettings';
 import type { PreparedObjects } from '../bake/objects/preparedObjects';
-import type { EngineProgress, RelightEngine } from '../relight/createRelightEngine';
+import type { EngineProgress, RelightEngine } from '../relight/RelightEngine';
 import { QUALITY_LEVELS, type QualityLevel } from '../relight/qualityLevels';
 import { createBakeContext, type BakeCanvas, type BakeContext } from './createBakeContext';
 import { createBakeSlicer, glFence, type BakeSlicer, type GpuFence } from './createBakeSlicer';

@@ -1,4 +1,4 @@
-import type { EngineProgress, RelightEngine } from '../relight/createRelightEngine';
+import type { EngineProgress, RelightEngine } from '../relight/RelightEngine';
 import { bakeSlice, FIRST_MS_PER_SAMPLE } from './bakeSlice';
 
 /** How often a slice's fence is polled, ms (browsers clamp nested timeouts to about 4 ms anyway). */

@@ -1,7 +1,7 @@
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { reflectanceRgb, type BakeScene } from '../bake/bakeScene';
-import type { RelightEngine } from '../relight/createRelightEngine';
+import type { RelightEngine } from '../relight/RelightEngine';
 import type { BakeService } from './createBakeService';
 import { createCameraRig } from './createCameraRig';
 import { createFrameScheduler } from './createFrameScheduler';

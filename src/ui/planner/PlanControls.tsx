@@ -15,7 +15,7 @@ import type { SelectionPath } from './selection';
 import { type PlanView, type Viewport, worldToScreen } from './viewTransform';
 import { useI18n } from '../i18n/useI18n';
 import { drawnSystems } from './drawnSystems';
-import type { DragPreview } from './PlannerController';
+import type { DragPreview } from './dragPreview';
 import { localName } from '../i18n/localName';
 
 export interface PlanControlsProps {

@@ -17,7 +17,7 @@ import { sourceName } from '../../core/model/objectGeometry';
 import { objectFillColour } from './objectColour';
 import { objectPolygons } from './objectShapes';
 import { hitStrip, moduleSymbol } from './planHitTest';
-import type { DragPreview } from './PlannerController';
+import type { DragPreview } from './dragPreview';
 import type { SelectionPath } from './selection';
 import { useI18n } from '../i18n/useI18n';
 

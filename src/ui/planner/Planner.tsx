@@ -36,6 +36,7 @@ import type { Viewport } from './viewTransform';
 import { BottomBar } from './BottomBar';
 import { CommandButton } from './CommandButton';
 import { DEFAULT_VIEWPORT, PlannerController } from './PlannerController';
+import { addImportedModel, addLibraryItem } from './addFurniture';
 import type { FootprintSource } from './footprintSource';
 import { requestFootprints } from './moduleFootprint';
 import { usePlannerKeys } from './usePlannerKeys';
@@ -168,10 +169,10 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
 
   // A library item tapped in the panel goes to the middle of the visible plan; the drawer closes to show it.
   const addFurniture = (itemId: string) => {
-    if (controller.addLibraryItem(itemId) === null) ui.setState({ panelOpen: false });
+    if (addLibraryItem(controller, itemId) === null) ui.setState({ panelOpen: false });
   };
   const addImported = (name: string, mesh: TriangleMesh, units: MeshUnits) => {
-    const refused = controller.addImported(name, mesh, units);
+    const refused = addImportedModel(controller, name, mesh, units);
     if (refused === null) ui.setState({ panelOpen: false });
     // The refusal just went to the status line with its code: the import panel shows it in the same words.
     const status = ui.getState().status;
@@ -189,7 +190,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
     if (!itemId || !el) return;
     e.preventDefault();
     const r = el.getBoundingClientRect();
-    controller.addLibraryItem(itemId, { sx: e.clientX - r.left, sy: e.clientY - r.top });
+    addLibraryItem(controller, itemId, { sx: e.clientX - r.left, sy: e.clientY - r.top });
   };
 
   const placedNew = () => {

@@ -1,5 +1,5 @@
 import type { Configuration, LightSystem } from '../../core/model/configuration';
-import type { DragPreview } from './PlannerController';
+import type { DragPreview } from './dragPreview';
 
 /**
  * The lighting systems as the plan draws them during a drag: a dragged system moved by the

@@ -6,7 +6,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import type { BakeScene } from '../../../src/engines/bake/bakeScene';
-import type { EngineProgress, RelightEngine } from '../../../src/engines/relight/createRelightEngine';
+import type { EngineProgress, RelightEngine } from '../../../src/engines/relight/RelightEngine';
 import { SLICE_MS } from '../../../src/engines/view/bakeSlice';
 import { createBakeService, type VisibilitySource } from '../../../src/engines/view/createBakeService';
 import { createBakeSlicer, glFence, type GpuFence } from '../../../src/engines/view/createBakeSlicer';

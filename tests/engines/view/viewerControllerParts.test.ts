@@ -1,6 +1,6 @@
 /** The pure parts of the browser viewer's controller: on-demand frames, bake slices, context-loss tracking, preset framing. */
 import { describe, expect, it } from 'vitest';
-import type { EngineProgress, RelightEngine } from '../../../src/engines/relight/createRelightEngine';
+import type { EngineProgress, RelightEngine } from '../../../src/engines/relight/RelightEngine';
 import { bakeSlice, FIRST_MS_PER_SAMPLE, SLICE_MS } from '../../../src/engines/view/bakeSlice';
 import { cameraPreset } from '../../../src/engines/view/cameraPresets';
 import { createBakeSlicer } from '../../../src/engines/view/createBakeSlicer';

@@ -214,18 +214,19 @@ describe('the English catalogue has every code the core emits', () => {
     for (const file of source) {
       const text = readFileSync(file, 'utf8');
       // `code: 'x'` (refusals, InputErrors, explain's CodedReason), keyed(…, 'x'), quoting(…, 'x', …), `p(…, 'x')` keys and photometry's [re, 'x', …].
+      // Whitespace between tokens is \s*, line breaks included: a formatter may wrap any of these calls.
       for (const m of text.matchAll(/\bcode: '([a-z][A-Za-z0-9]*)'/g)) found.add(m[1]);
-      for (const m of text.matchAll(/\bcode: ([^,}\n]*\?[^,}\n]*)/g)) for (const l of m[1].matchAll(/'([a-z][A-Za-z0-9]*)'/g)) found.add(l[1]);
-      for (const m of text.matchAll(/keyed\([\s\S]*?\}, ([^)]*?)(?:, \{|\))/g)) for (const l of m[1].matchAll(/'([a-z][A-Za-z0-9]*)'/g)) found.add(l[1]);
-      for (const m of text.matchAll(/quoting\([^;]*?`, '([a-z][A-Za-z0-9]*)'/g)) found.add(m[1]);
-      for (const m of text.matchAll(/\}, ('([a-z][A-Za-z0-9]*)')\)/g)) found.add(m[2]);
-      for (const m of text.matchAll(/\/[gs]*, '([a-z][A-Za-z0-9]*)', \(/g)) found.add(m[1]);
-      for (const m of text.matchAll(/\? '([a-z][A-Za-z0-9]*[A-Z][A-Za-z0-9]*)' : '([a-z][A-Za-z0-9]*[A-Z][A-Za-z0-9]*)'/g)) {
+      for (const m of text.matchAll(/\bcode:\s*([^,}]*\?[^,}]*)/g)) for (const l of m[1].matchAll(/'([a-z][A-Za-z0-9]*)'/g)) found.add(l[1]);
+      for (const m of text.matchAll(/keyed\([\s\S]*?\},\s*([^)]*?)(?:,\s*\{|\))/g)) for (const l of m[1].matchAll(/'([a-z][A-Za-z0-9]*)'/g)) found.add(l[1]);
+      for (const m of text.matchAll(/quoting\([^;]*?`,\s*'([a-z][A-Za-z0-9]*)'/g)) found.add(m[1]);
+      for (const m of text.matchAll(/\},\s*('([a-z][A-Za-z0-9]*)'),?\s*\)/g)) found.add(m[2]);
+      for (const m of text.matchAll(/\/[gs]*,\s*'([a-z][A-Za-z0-9]*)',\s*\(/g)) found.add(m[1]);
+      for (const m of text.matchAll(/\?\s*'([a-z][A-Za-z0-9]*[A-Z][A-Za-z0-9]*)'\s*:\s*'([a-z][A-Za-z0-9]*[A-Z][A-Za-z0-9]*)'/g)) {
         found.add(m[1]);
         found.add(m[2]);
       }
       for (const m of text.matchAll(/(?:const key = |KEYS = )[^;]*;/g)) for (const l of m[0].matchAll(/'([a-z][A-Za-z0-9]*[A-Z][A-Za-z0-9]*)'/g)) found.add(l[1]);
-      for (const m of text.matchAll(/\{ [a-zA-Z]+: '([a-z][A-Za-z0-9]*)'(?:, [a-zA-Z]+: '([a-z][A-Za-z0-9]*)')*/g)) if (/KEYS|notNumber/.test(m[0])) found.add(m[1]);
+      for (const m of text.matchAll(/\{\s*[a-zA-Z]+: '([a-z][A-Za-z0-9]*)'(?:,\s*[a-zA-Z]+: '([a-z][A-Za-z0-9]*)')*/g)) if (/KEYS|notNumber/.test(m[0])) found.add(m[1]);
     }
     // Sentence codes are camelCase ('keepOneFeed'); kebab-case rule names and zod's own issue codes ('custom') are not.
     const codes = [...found].filter((c) => /[A-Z]/.test(c));

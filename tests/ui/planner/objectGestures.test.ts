@@ -4,9 +4,11 @@ import { createConfiguration, type Configuration, type RoomObject } from '../../
 import { furnitureMesh } from '../../../src/core/model/furniture/furnitureLibrary';
 import { objectMesh, placedBounds } from '../../../src/core/model/objectGeometry';
 import { createConfiguratorStore } from '../../../src/core/store/createConfiguratorStore';
+import { addLibraryItem } from '../../../src/ui/planner/addFurniture';
 import { planHitTest } from '../../../src/ui/planner/planHitTest';
 import { KEY_MOVE_STEP, OBJECT_ROTATE_STEP, plannerCommand } from '../../../src/ui/planner/plannerCommands';
 import { screenToWorld, zoomAt } from '../../../src/ui/planner/viewTransform';
+import { visibleCentre } from '../../../src/ui/planner/visibleCentre';
 import { TestPlanner, catalog } from './testPlanner';
 
 /** A 5 × 4 × 2.8 m room with the given library items added through the model (floor items at the given points). */
@@ -132,7 +134,7 @@ describe('PlannerController: objects', () => {
   it('a picture is added to the nearest wall and slides along it: drags and arrows across the wall do not take it off', () => {
     const t = new TestPlanner(createConfiguration());
     // Dropped near the east wall (x = 5 m), 1.2 m from the north end.
-    expect(t.controller.addLibraryItem('picture', t.screenOf({ x: 4.7, z: 1.2 }))).toBeNull();
+    expect(addLibraryItem(t.controller, 'picture', t.screenOf({ x: 4.7, z: 1.2 }))).toBeNull();
     const pic = object(t);
     expect(t.store.getState().selection).toEqual({ kind: 'object', id: pic.id });
     expect(pic.placement).toEqual({ on: 'wall', wall: 'east', u: 1.2, y: 1.55 });
@@ -153,17 +155,17 @@ describe('PlannerController: objects', () => {
 
   it('a library item tapped in the panel lands at the middle of the visible plan (inside the room) and is selected', () => {
     const t = new TestPlanner(createConfiguration());
-    const c = t.controller.visibleCentre();
-    expect(t.controller.addLibraryItem('coffee-table')).toBeNull();
+    const c = visibleCentre(t.config.room, t.view, t.controller.viewport);
+    expect(addLibraryItem(t.controller, 'coffee-table')).toBeNull();
     expect(object(t).placement).toEqual({ on: 'floor', x: c.x, z: c.z });
     // Panned so the middle of the plan is outside the room: the point is pulled back inside, the model fits the item.
     t.controller.setView({ ...t.view, offsetX: t.view.offsetX + 5000 }, false);
-    expect(t.controller.addLibraryItem('chair')).toBeNull();
+    expect(addLibraryItem(t.controller, 'chair')).toBeNull();
     const chair = object(t, 1);
     const b = placedBounds(chair, furnitureMesh('chair'), t.config.room);
     expect(b.min[0]).toBeGreaterThanOrEqual(-1e-6);
     expect(t.store.getState().selection).toEqual({ kind: 'object', id: chair.id });
-    expect(t.controller.addLibraryItem('spaceship')).toMatch(/spaceship/);
+    expect(addLibraryItem(t.controller, 'spaceship')).toMatch(/spaceship/);
   });
 
   it('systems lie above objects: a rail over a table takes the tap; the table is hit where no system is', () => {

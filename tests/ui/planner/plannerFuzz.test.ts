@@ -1,5 +1,6 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
+import { addLibraryItem } from '../../../src/ui/planner/addFurniture';
 import { PLANNER_COMMANDS } from '../../../src/ui/planner/plannerCommands';
 import type { RoomObject } from '../../../src/core/model/configuration';
 import { FURNITURE_LIBRARY } from '../../../src/core/model/furniture/furnitureLibrary';
@@ -50,7 +51,7 @@ function perform(t: TestPlanner, s: Step): void {
   const at = (p: [number, number]) => ({ sx: p[0], sy: p[1] });
   switch (s.kind) {
     case 'add':
-      t.controller.addLibraryItem(s.item, s.at ? at(s.at) : undefined);
+      addLibraryItem(t.controller, s.item, s.at ? at(s.at) : undefined);
       return;
     case 'drag': {
       const o = t.config.objects[t.config.objects.length - 1];
