@@ -18,11 +18,11 @@ describe('layers', () => {
 
   it('the same check fails on an upward import, a folder cycle, a reference import and a forbidden package', () => {
     const bad: ImportEdge[] = [
-      { from: 'src/core/model/geometry.ts', to: 'src/ui/planner/Planner.tsx', isPackage: false },
+      { from: 'src/core/model/rails/geometry.ts', to: 'src/ui/planner/Planner.tsx', isPackage: false },
       { from: 'src/engines/view/lightStats.ts', to: 'src/reference/directIlluminance.ts', isPackage: false },
       { from: 'src/engines/bake/createBaker.ts', to: 'react', isPackage: true },
       { from: 'src/reference/candelaAt.ts', to: 'src/engines/bake/profileTable.ts', isPackage: false },
-      { from: 'src/stray.ts', to: 'src/core/model/geometry.ts', isPackage: false },
+      { from: 'src/stray.ts', to: 'src/core/model/rails/geometry.ts', isPackage: false },
     ];
     const problems = layerViolations([...graph, ...bad]);
     expect(problems).toHaveLength(6);

@@ -7,8 +7,8 @@
  */
 import { demoConfiguration } from '../../src/core/catalog/demoConfiguration';
 import { defaultCatalog } from '../../src/core/catalog/defaultCatalog';
-import type { Configuration } from '../../src/core/model/configuration';
-import { SceneFileError, decodeShareString, deserializeConfiguration, encodeShareString, serializeConfiguration } from '../../src/core/model/sceneFile';
+import type { Configuration } from '../../src/core/model/configuration/configuration';
+import { SceneFileError, decodeShareString, deserializeConfiguration, encodeShareString, serializeConfiguration } from '../../src/core/model/files/sceneFile';
 import { configurationProblems, configurationSeeds } from './configurationTarget';
 import type { FuzzOutcome, FuzzSeed, FuzzTarget } from './fuzzTarget';
 

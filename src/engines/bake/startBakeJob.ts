@@ -1,4 +1,4 @@
-import { SURFACE_NAMES, type SurfaceName, type Vec3 } from '../../core/model/lightingScene';
+import { SURFACE_NAMES, type SurfaceName, type Vec3 } from '../../core/model/lightingScene/lightingScene';
 import { blurPass } from '../../../shaders/blurPass.glsl';
 import { chartBlurPass } from '../../../shaders/chartBlurPass.glsl';
 import { chartDilatePass } from '../../../shaders/chartDilatePass.glsl';
@@ -29,7 +29,7 @@ import { acquireBounceTargets, acquireSurfaceTargets, releaseSurfaceTargets, typ
 import { objectReport, type ObjectReportEntry } from './objects/objectPassReport';
 import { uploadObjectPassInputs, type ObjectPassInputs } from './objects/objectPassInputs';
 import { prepareObjectsCached } from './objects/prepareObjectsCached';
-import { OBJECT_ROOM_TOLERANCE } from '../../core/model/parseLightingScene';
+import { OBJECT_ROOM_TOLERANCE } from '../../core/model/lightingScene/parseLightingScene';
 import type { PreparedObjects } from './objects/preparedObjects';
 import type { TargetPool } from './targetPool';
 

@@ -4,7 +4,7 @@ import { resolveBakeSettings } from '../bake/bakeSettings';
 import { createBaker, type BakeJob } from '../bake/createBaker';
 import { surfaceLayouts, type SurfaceLayout } from '../bake/surfaceLayout';
 import type { ObjectAtlas } from '../bake/objects/preparedObjects';
-import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../core/model/lightingScene';
+import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../core/model/lightingScene/lightingScene';
 import { groupLuminaires, groupWeight, roomKey, type LuminaireGroup } from './luminaireGroups';
 import { objectsKey } from './objectsKey';
 import { indirectScale, reflectedFlux, weightedFlux } from './reflectedFlux';

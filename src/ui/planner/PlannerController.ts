@@ -1,17 +1,17 @@
-import { systemBounds } from '../../core/model/geometry';
+import { systemBounds } from '../../core/model/rails/geometry';
 import type { CodedText } from '../../core/inputError';
-import { chainCoordinateAt } from '../../core/model/chainCoordinates';
-import { suspensionCoordinates } from '../../core/model/suspensionPoints';
+import { chainCoordinateAt } from '../../core/model/rails/chainCoordinates';
+import { suspensionCoordinates } from '../../core/model/rails/suspensionPoints';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import { type UiStore, showStatus } from '../../core/store/uiStore';
 import { detailLevel } from './detailLevel';
 import { type KeyChord, findByChord } from './keyChord';
 import { type PlanHit, planHitTest } from './planHitTest';
-import type { ActionParams } from '../../core/model/actionDefinitions';
-import { attemptAction } from '../../core/model/actionDefinitions';
-import type { LightSystem, MeshUnits, ObjectPlacement } from '../../core/model/configuration';
+import type { ActionParams } from '../../core/model/actions/actionDefinitions';
+import { attemptAction } from '../../core/model/actions/actionDefinitions';
+import type { LightSystem, MeshUnits, ObjectPlacement } from '../../core/model/configuration/configuration';
 import { type ModuleOnRail, alongRail, moduleOnRail } from './moduleMoves';
-import { findFurnitureItem, furnitureMesh } from '../../core/model/furniture/furnitureLibrary';
+import { findFurnitureItem, furnitureMesh } from '../../core/model/objects/furniture/furnitureLibrary';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
 import { followableDelta, movedPlacement, wallPlacementNear } from './objectMoves';
 import { selectionPath } from './selection';
@@ -32,7 +32,7 @@ import {
 import { ENGLISH } from '../i18n/english';
 import type { Translate } from '../i18n/messageTypes';
 import { clampObjectDelta } from './clampObjectDelta';
-import { freeFloorSpot } from '../../core/model/freeFloorSpot';
+import { freeFloorSpot } from '../../core/model/objects/freeFloorSpot';
 
 /**
  * A system or an object being dragged: drawn offset by `delta` (metres) until dropped; `invalid`

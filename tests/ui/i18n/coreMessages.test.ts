@@ -1,9 +1,9 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { checkAction } from '../../../src/core/model/actionDefinitions';
-import type { Refusal } from '../../../src/core/model/action';
-import { createConfiguration, type Configuration } from '../../../src/core/model/configuration';
-import { deserializeConfiguration, serializeConfiguration, SceneFileError } from '../../../src/core/model/sceneFile';
+import { checkAction } from '../../../src/core/model/actions/actionDefinitions';
+import type { Refusal } from '../../../src/core/model/actions/action';
+import { createConfiguration, type Configuration } from '../../../src/core/model/configuration/configuration';
+import { deserializeConfiguration, serializeConfiguration, SceneFileError } from '../../../src/core/model/files/sceneFile';
 import { parseIes } from '../../../src/core/photometry/parseIes';
 import { photometryWarnings } from '../../../src/core/photometry/checks';
 import { codePhotometryError, codePhotometryWarning } from '../../../src/core/photometry/photometryCodes';
@@ -251,7 +251,7 @@ function readdirSyncRecursive(dir: URL): string[] {
 describe('a broken share link in the startup banner', async () => {
   const de = createTranslator(await loadMessages('de'), 'de-CH', (x) => createFormat('de-CH').number(x));
   it('words the link and its problem in German (the link named in German, the parser’s reason kept as read)', async () => {
-    const { decodeShareString } = await import('../../../src/core/model/sceneFile');
+    const { decodeShareString } = await import('../../../src/core/model/files/sceneFile');
     let error: unknown;
     try {
       // base64url of '{"format": oops}': not JSON, line 1.

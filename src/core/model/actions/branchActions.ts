@@ -7,12 +7,12 @@
  */
 import { z } from 'zod';
 import { InputError } from '../../inputError';
-import { refuse, type ActionDefinition, type CodedReason, type Refusal } from '../action';
-import { allowedTurn, connectorPorts, findConnector, type Catalog } from '../catalogSchema';
-import type { Configuration, FeedAt, Rail } from '../configuration';
-import { keepFixingsIfValid } from '../fixingRules';
-import { jointParent, nodeJoints } from '../railTree';
-import type { Problem } from '../validate';
+import { refuse, type ActionDefinition, type CodedReason, type Refusal } from './action';
+import { allowedTurn, connectorPorts, findConnector, type Catalog } from '../catalogSchema/catalogSchema';
+import type { Configuration, FeedAt, Rail } from '../configuration/configuration';
+import { keepFixingsIfValid } from '../rails/fixingRules';
+import { jointParent, nodeJoints } from '../rails/railTree';
+import type { Problem } from '../validation/validate';
 import { findRail, replaceSystem, takeId } from './lookup';
 import { snapRailLength } from './railActions';
 

@@ -5,13 +5,13 @@
  */
 import { z } from 'zod';
 import { InputError } from '../../inputError';
-import type { ActionDefinition } from '../action';
-import { quoting } from '../coding';
-import type { Catalog, PresetSpec } from '../catalogSchema';
-import { MOUNTINGS, type Configuration } from '../configuration';
-import { normaliseDegrees, rotatePlan, systemBounds } from '../geometry';
-import { defaultSuspension, findPresetPlacement, instantiatePreset, type Placement } from '../presets';
-import { keepFixingsIfValid } from '../fixingRules';
+import type { ActionDefinition } from './action';
+import { quoting } from '../configuration/coding';
+import type { Catalog, PresetSpec } from '../catalogSchema/catalogSchema';
+import { MOUNTINGS, type Configuration } from '../configuration/configuration';
+import { normaliseDegrees, rotatePlan, systemBounds } from '../rails/geometry';
+import { defaultSuspension, findPresetPlacement, instantiatePreset, type Placement } from './presets';
+import { keepFixingsIfValid } from '../rails/fixingRules';
 import { replaceSystem, systemIndex, updateSystem } from './lookup';
 
 function findPreset(catalog: Catalog, id: string): PresetSpec {
