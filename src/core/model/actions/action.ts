@@ -13,7 +13,7 @@ import type { z } from 'zod';
 import type { Catalog } from '../catalogSchema/catalogSchema';
 import type { CodedText, MessageParams } from '../../inputError';
 import type { Configuration } from '../configuration/configuration';
-import type { Problem } from '../validation/validate';
+import type { Problem } from '../configuration/problem';
 
 export interface Refusal {
   readonly ok: false;

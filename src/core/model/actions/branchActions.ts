@@ -12,7 +12,7 @@ import { allowedTurn, connectorPorts, findConnector, type Catalog } from '../cat
 import type { Configuration, FeedAt, Rail } from '../configuration/configuration';
 import { keepFixingsIfValid } from '../rails/fixingRules';
 import { jointParent, nodeJoints } from '../rails/railTree';
-import type { Problem } from '../validation/validate';
+import type { Problem } from '../configuration/problem';
 import { findRail, replaceSystem, takeId } from './lookup';
 import { snapRailLength } from './railActions';
 

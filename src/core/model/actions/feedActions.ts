@@ -9,7 +9,7 @@ import type { ActionDefinition, CodedReason } from './action';
 import { findDriver } from '../catalogSchema/catalogSchema';
 import type { FeedAt } from '../configuration/configuration';
 import { describeFeedAt, feedAtParam, feedLabel, feedLoads, formatWatts } from '../power/feedLoads';
-import type { Problem } from '../validation/validate';
+import type { Problem } from '../configuration/problem';
 import { findFeed, replaceSystem, systemIndex, takeId } from './lookup';
 
 /** 'start', 'end', { joint: k } (the connector joints[k] goes through) or { end: i } (rail i's free end, a branch). */

@@ -8,7 +8,7 @@ import { InputError } from '../../inputError';
 import type { ActionDefinition, CodedReason } from './action';
 import type { Configuration, LightScene } from '../configuration/configuration';
 import { FADE_LIMITS, findScene, looksOf, recallLooks, SCENE_NAME_MAX, sceneByName } from '../cues/lightScenes';
-import type { Problem } from '../validation/validate';
+import type { Problem } from '../configuration/problem';
 import { findModule, replaceRail, takeId } from './lookup';
 
 function sceneIndex(state: Configuration, sceneId: string): number {

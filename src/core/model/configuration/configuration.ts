@@ -5,7 +5,6 @@
  * module's free `offset` (src/core/model/rails/freePositions.ts); validate() judges both.
  */
 import type { Distribution } from '../catalogSchema/catalogSchema';
-import type { DmxPatch } from '../modules/dmxPatch';
 import type { Reflectance, Rgb, SurfaceName } from '../lightingScene/lightingScene';
 import type { TriangleMesh } from '../../mesh/triangleMesh';
 
@@ -20,6 +19,19 @@ export interface Room {
   height: number;
   /** Surface reflectances handed to the baker. */
   reflectance: Record<SurfaceName, Reflectance>;
+}
+
+/** The DMX patch of a module (docs/live-control.md); its rules are in core/model/modules/dmxPatch.ts. */
+export type DmxResolution = 8 | 16;
+
+export interface DmxPatch {
+  readonly universe: number;
+  /** First channel, 1..512. */
+  readonly address: number;
+  /** 8-bit: one level channel; 16-bit: coarse then fine. */
+  readonly resolution: DmxResolution;
+  /** A CCT channel after the level channel(s); only for tunable types. */
+  readonly cct: boolean;
 }
 
 export interface ModuleInstance {

@@ -5,7 +5,7 @@
 import { keyed } from '../configuration/coding';
 import { findModuleType, type Catalog } from '../catalogSchema/catalogSchema';
 import type { Configuration, LightScene, ModuleInstance, ModuleLook } from '../configuration/configuration';
-import type { Problem } from '../validation/validate';
+import type { Problem } from '../configuration/problem';
 
 /** Fade times a scene may have, seconds (issue #12: 0–30 s). */
 export const FADE_LIMITS = { min: 0, max: 30 } as const;

@@ -8,7 +8,7 @@
  */
 import type { ModuleTypeSpec } from '../catalogSchema/catalogSchema';
 import { keyed, type Keyed } from '../configuration/coding';
-import type { Configuration, ModuleInstance } from '../configuration/configuration';
+import type { Configuration, DmxPatch, ModuleInstance } from '../configuration/configuration';
 
 export const DMX_CHANNELS = 512;
 /**
@@ -17,18 +17,6 @@ export const DMX_CHANNELS = 512;
  */
 export const DMX_UNIVERSE_MIN = 1;
 export const DMX_UNIVERSE_MAX = 63999;
-
-export type DmxResolution = 8 | 16;
-
-export interface DmxPatch {
-  readonly universe: number;
-  /** First channel, 1..512. */
-  readonly address: number;
-  /** 8-bit: one level channel; 16-bit: coarse then fine. */
-  readonly resolution: DmxResolution;
-  /** A CCT channel after the level channel(s); only for tunable types. */
-  readonly cct: boolean;
-}
 
 /** How many channels a patch takes. */
 export function patchWidth(p: Pick<DmxPatch, 'resolution' | 'cct'>): number {

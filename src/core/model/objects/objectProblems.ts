@@ -13,7 +13,7 @@ import { findFurnitureItem } from './furniture/furnitureLibrary';
 import { findObjectFinish } from './furniture/objectFinishes';
 import { fmt, OBJECT_EPS, placedBounds, sourceMesh, sourceName } from './objectGeometry';
 import { reflectanceProblem } from '../lightingScene/reflectance';
-import type { Problem } from '../validation/validate';
+import type { Problem } from '../configuration/problem';
 
 /** Most triangles one imported mesh may have (the importer simplifies to fewer; the baker's BVH stays small). */
 export const MAX_MESH_TRIANGLES = 200_000;

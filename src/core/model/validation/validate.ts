@@ -22,17 +22,7 @@ import { reflectanceProblem } from '../lightingScene/reflectance';
 import { rectCorners, rectsOverlap, systemElementTree, railModuleOffsets, type PlanRect, type SystemElementTree } from '../rails/geometry';
 import { firstNodeJoints, jointParent, treeProblem } from '../rails/railTree';
 import { perCatalog } from '../catalogSchema/perCatalog';
-
-export interface Problem {
-  /** Stable machine-readable code, e.g. 'outside-room'. */
-  readonly code: string;
-  /** One sentence for people (English: CLI, logs, the embedding API). */
-  readonly message: string;
-  /** The values in `message`, for UIs that word it in another language by `code` (docs/i18n.md); absent where none are given yet. */
-  readonly params?: Readonly<Record<string, string | number>>;
-  /** Where: e.g. 'systems[1].rails[0].modules[2].cct'. */
-  readonly path: string;
-}
+import type { Problem } from '../configuration/problem';
 
 /** Float noise allowed at walls and grids (a nanometre). */
 const EPS = 1e-9;

@@ -15,7 +15,8 @@ import type { Catalog } from '../catalogSchema/catalogSchema';
 import type { Configuration } from '../configuration/configuration';
 import { lightSceneProblems } from '../cues/lightScenes';
 import { changedObjectProblems } from '../objects/objectProblems';
-import { idProblems, patchProblems, roomProblems, systemProblems, validate, type Problem } from './validate';
+import { idProblems, patchProblems, roomProblems, systemProblems, validate } from './validate';
+import { type Problem } from '../configuration/problem';
 
 /** Per catalog, whether a state passed validate(): states are immutable, so the answer never changes. */
 const knownValid = new WeakMap<Catalog, WeakMap<Configuration, boolean>>();

@@ -4,7 +4,8 @@ import { createConfiguratorStore } from '../../../../src/core/store/createConfig
 import { checkAction } from '../../../../src/core/model/actions/actionDefinitions';
 import { findModuleType } from '../../../../src/core/model/catalogSchema/catalogSchema';
 import { createConfiguration, type Configuration, type ModuleInstance } from '../../../../src/core/model/configuration/configuration';
-import { cctChannelValue, cctFromChannel, decodeLevel, DMX_CHANNELS, formatPatchRange, modulesInOrder, patchWidth, type DmxPatch } from '../../../../src/core/model/modules/dmxPatch';
+import { cctChannelValue, cctFromChannel, decodeLevel, DMX_CHANNELS, formatPatchRange, modulesInOrder, patchWidth } from '../../../../src/core/model/modules/dmxPatch';
+import { type DmxPatch } from '../../../../src/core/model/configuration/configuration';
 import { SCENE_FILE_VERSION, SceneFileError, decodeShareString, deserializeConfiguration, encodeShareString, serializeConfiguration } from '../../../../src/core/model/files/sceneFile';
 import { validate } from '../../../../src/core/model/validation/validate';
 import { catalog, enabled, run, withPreset } from '../helpers';
