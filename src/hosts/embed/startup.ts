@@ -1,6 +1,7 @@
 import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
 import { createConfiguration, type Configuration } from '../../core/model/configuration/configuration';
-import { decodeShareString, deserializeConfiguration } from '../../core/model/files/sceneFile';
+import { deserializeConfiguration } from '../../core/model/files/sceneFile';
+import { decodeShareString } from '../../core/model/files/shareLink';
 import { codedText, InputError, type CodedText } from '../../core/inputError';
 import { firstImpression } from '../../ui/viewer/firstImpression';
 import type { UiMessage } from '../../core/store/uiStore';

@@ -3,7 +3,8 @@ import { describe, expect, it } from 'vitest';
 import { checkAction } from '../../../src/core/model/actions/actionDefinitions';
 import type { Refusal } from '../../../src/core/model/actions/action';
 import { createConfiguration, type Configuration } from '../../../src/core/model/configuration/configuration';
-import { deserializeConfiguration, serializeConfiguration, SceneFileError } from '../../../src/core/model/files/sceneFile';
+import { deserializeConfiguration, serializeConfiguration } from '../../../src/core/model/files/sceneFile';
+import { SceneFileError } from '../../../src/core/model/files/sceneFileError';
 import { parseIes } from '../../../src/core/photometry/parseIes';
 import { photometryWarnings } from '../../../src/core/photometry/checks';
 import { codePhotometryError, codePhotometryWarning } from '../../../src/core/photometry/photometryCodes';
@@ -251,7 +252,7 @@ function readdirSyncRecursive(dir: URL): string[] {
 describe('a broken share link in the startup banner', async () => {
   const de = createTranslator(await loadMessages('de'), 'de-CH', (x) => createFormat('de-CH').number(x));
   it('words the link and its problem in German (the link named in German, the parser’s reason kept as read)', async () => {
-    const { decodeShareString } = await import('../../../src/core/model/files/sceneFile');
+    const { decodeShareString } = await import('../../../src/core/model/files/shareLink');
     let error: unknown;
     try {
       // base64url of '{"format": oops}': not JSON, line 1.

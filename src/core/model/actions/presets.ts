@@ -7,7 +7,8 @@ import type { Configuration, LightSystem, ModuleInstance } from '../configuratio
 import { plannedFeeds } from '../power/feedLoads';
 import { normaliseDegrees, systemBounds, type PlanBounds } from '../rails/geometry';
 import { perCatalog } from '../catalogSchema/perCatalog';
-import { systemFitsAt, systemOwnProblems } from '../validation/validate';
+import { systemFitsAt } from '../validation/systemProblems';
+import { systemOwnProblems } from '../validation/systemOwnProblems';
 
 export interface Placement {
   readonly x: number;

@@ -15,7 +15,10 @@ import type { Catalog } from '../catalogSchema/catalogSchema';
 import type { Configuration } from '../configuration/configuration';
 import { lightSceneProblems } from '../cues/lightScenes';
 import { changedObjectProblems } from '../objects/objectProblems';
-import { idProblems, patchProblems, roomProblems, systemProblems, validate } from './validate';
+import { validate } from './validate';
+import { idProblems, roomProblems } from './roomProblems';
+import { patchProblems } from './patchProblems';
+import { systemProblems } from './systemProblems';
 import { type Problem } from '../configuration/problem';
 
 /** Per catalog, whether a state passed validate(): states are immutable, so the answer never changes. */

@@ -8,7 +8,8 @@ import { parseCatalog } from '../../../../src/core/model/catalogSchema/catalogSc
 import type { Configuration } from '../../../../src/core/model/configuration/configuration';
 import { cctAtLevel } from '../../../../src/core/model/catalogSchema/dimmingCurve';
 import { allModules } from '../../../../src/core/model/cues/lightScenes';
-import { decodeShareString, deserializeConfiguration, encodeShareString, serializeConfiguration } from '../../../../src/core/model/files/sceneFile';
+import { deserializeConfiguration, serializeConfiguration } from '../../../../src/core/model/files/sceneFile';
+import { decodeShareString, encodeShareString } from '../../../../src/core/model/files/shareLink';
 import { toLightingScene } from '../../../../src/core/model/files/toLightingScene';
 import { validate } from '../../../../src/core/model/validation/validate';
 import { createConfiguratorStore } from '../../../../src/core/store/createConfiguratorStore';

@@ -1,7 +1,10 @@
 /** Issue 18: hostile and odd input to the configurator's formats — one short line, never a crash, never a dropped field. */
 import { describe, expect, it } from 'vitest';
 import { CatalogError, parseCatalog } from '../../../../src/core/model/catalogSchema/catalogSchema';
-import { SceneFileError, configurationFromData, decodeShareString, deserializeConfiguration, encodeShareString, serializeConfiguration, SCENE_FILE_VERSION } from '../../../../src/core/model/files/sceneFile';
+import { configurationFromData, deserializeConfiguration, serializeConfiguration } from '../../../../src/core/model/files/sceneFile';
+import { SceneFileError } from '../../../../src/core/model/files/sceneFileError';
+import { decodeShareString, encodeShareString } from '../../../../src/core/model/files/shareLink';
+import { SCENE_FILE_VERSION } from '../../../../src/core/model/files/sceneFileSchema';
 import { duplicateKey, excerpt, jsonShapeProblem, oneLine, suggestField } from '../../../../src/core/untrustedJson';
 import catalogData from '../../../../src/core/catalog/default-catalog.json';
 import { catalog, withPreset } from '../helpers';

@@ -14,7 +14,8 @@ import { attemptAction } from '../../../../src/core/model/actions/actionDefiniti
 import { composeParts, boxPart } from '../../../../src/core/model/objects/furniture/meshParts';
 import type { Configuration } from '../../../../src/core/model/configuration/configuration';
 import { lightingSceneSchema, parseLightingScene } from '../../../../src/core/model/lightingScene/parseLightingScene';
-import { configurationFromData, sceneFileSchema, serializeConfiguration } from '../../../../src/core/model/files/sceneFile';
+import { configurationFromData, serializeConfiguration } from '../../../../src/core/model/files/sceneFile';
+import { sceneFileSchema } from '../../../../src/core/model/files/sceneFileSchema';
 import { toLightingScene } from '../../../../src/core/model/files/toLightingScene';
 import { objectMesh } from '../../../../src/core/model/objects/objectGeometry';
 import type { LightingScene } from '../../../../src/core/model/lightingScene/lightingScene';

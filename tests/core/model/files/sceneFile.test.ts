@@ -1,6 +1,9 @@
 import { describe, expect, it } from 'vitest';
 import { createHistory, pushHistory, redo, undo } from '../../../../src/core/model/configuration/history';
-import { SceneFileError, decodeShareString, deserializeConfiguration, encodeShareString, serializeConfiguration, SCENE_FILE_VERSION } from '../../../../src/core/model/files/sceneFile';
+import { deserializeConfiguration, serializeConfiguration } from '../../../../src/core/model/files/sceneFile';
+import { SceneFileError } from '../../../../src/core/model/files/sceneFileError';
+import { decodeShareString, encodeShareString } from '../../../../src/core/model/files/shareLink';
+import { SCENE_FILE_VERSION } from '../../../../src/core/model/files/sceneFileSchema';
 import { catalog, run, withPreset } from '../helpers';
 
 const sample = () => run(withPreset('snake', 1, 4), 'placePreset', { presetId: 'single', x: 5, z: 5 });

@@ -3,7 +3,9 @@ import { defaultSurfaceFinishes } from '../../../../src/core/catalog/surfaceFini
 import { DEFAULT_REFLECTANCE, createConfiguration } from '../../../../src/core/model/configuration/configuration';
 import { SURFACE_NAMES } from '../../../../src/core/model/lightingScene/lightingScene';
 import { MAX_REFLECTANCE, luminousReflectance, reflectanceRgb } from '../../../../src/core/model/lightingScene/reflectance';
-import { SceneFileError, decodeShareString, deserializeConfiguration, encodeShareString, serializeConfiguration } from '../../../../src/core/model/files/sceneFile';
+import { deserializeConfiguration, serializeConfiguration } from '../../../../src/core/model/files/sceneFile';
+import { SceneFileError } from '../../../../src/core/model/files/sceneFileError';
+import { decodeShareString, encodeShareString } from '../../../../src/core/model/files/shareLink';
 import { SurfaceFinishError, finishesFor, matchFinish, parseSurfaceFinishes } from '../../../../src/core/model/catalogSchema/surfaceFinish';
 import { toLightingScene } from '../../../../src/core/model/files/toLightingScene';
 import { validate } from '../../../../src/core/model/validation/validate';

@@ -6,7 +6,10 @@ import { findModuleType } from '../../../../src/core/model/catalogSchema/catalog
 import { createConfiguration, type Configuration, type ModuleInstance } from '../../../../src/core/model/configuration/configuration';
 import { cctChannelValue, cctFromChannel, decodeLevel, DMX_CHANNELS, formatPatchRange, modulesInOrder, patchWidth } from '../../../../src/core/model/modules/dmxPatch';
 import { type DmxPatch } from '../../../../src/core/model/configuration/configuration';
-import { SCENE_FILE_VERSION, SceneFileError, decodeShareString, deserializeConfiguration, encodeShareString, serializeConfiguration } from '../../../../src/core/model/files/sceneFile';
+import { deserializeConfiguration, serializeConfiguration } from '../../../../src/core/model/files/sceneFile';
+import { SCENE_FILE_VERSION } from '../../../../src/core/model/files/sceneFileSchema';
+import { SceneFileError } from '../../../../src/core/model/files/sceneFileError';
+import { decodeShareString, encodeShareString } from '../../../../src/core/model/files/shareLink';
 import { validate } from '../../../../src/core/model/validation/validate';
 import { catalog, enabled, run, withPreset } from '../helpers';
 

@@ -3,7 +3,10 @@ import { bindAction } from '../../../../src/core/model/actions/actionDefinitions
 import { createConfiguration, type Configuration } from '../../../../src/core/model/configuration/configuration';
 import { boxPart, composeParts, frustumPart } from '../../../../src/core/model/objects/furniture/meshParts';
 import { objectMesh, objectPlacement, placedBounds, sourceMesh } from '../../../../src/core/model/objects/objectGeometry';
-import { decodeShareString, deserializeConfiguration, encodeShareLink, encodeShareString, SceneFileError, serializeConfiguration, SCENE_FILE_VERSION } from '../../../../src/core/model/files/sceneFile';
+import { deserializeConfiguration, serializeConfiguration } from '../../../../src/core/model/files/sceneFile';
+import { decodeShareString, encodeShareLink, encodeShareString } from '../../../../src/core/model/files/shareLink';
+import { SceneFileError } from '../../../../src/core/model/files/sceneFileError';
+import { SCENE_FILE_VERSION } from '../../../../src/core/model/files/sceneFileSchema';
 import { toLightingScene } from '../../../../src/core/model/files/toLightingScene';
 import { validate } from '../../../../src/core/model/validation/validate';
 import type { TriangleMesh } from '../../../../src/core/mesh/triangleMesh';

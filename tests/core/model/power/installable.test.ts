@@ -15,7 +15,8 @@ import { chainCoordinates } from '../../../../src/core/model/rails/chainCoordina
 import { createConfiguration, type Configuration, type LightSystem } from '../../../../src/core/model/configuration/configuration';
 import { feedLoads, plannedFeeds } from '../../../../src/core/model/power/feedLoads';
 import { installationNeeds } from '../../../../src/core/model/power/installationNeeds';
-import { decodeShareString, deserializeConfiguration, serializeConfiguration } from '../../../../src/core/model/files/sceneFile';
+import { deserializeConfiguration, serializeConfiguration } from '../../../../src/core/model/files/sceneFile';
+import { decodeShareString } from '../../../../src/core/model/files/shareLink';
 import { suspensionCoordinates, suspensionPoints } from '../../../../src/core/model/rails/suspensionPoints';
 import { toLightingScene } from '../../../../src/core/model/files/toLightingScene';
 import { validate } from '../../../../src/core/model/validation/validate';

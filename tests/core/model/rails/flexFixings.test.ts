@@ -13,7 +13,8 @@ import { chainCoordinates } from '../../../../src/core/model/rails/chainCoordina
 import { createConfiguration, type Configuration } from '../../../../src/core/model/configuration/configuration';
 import { fixingProblem } from '../../../../src/core/model/rails/fixingRules';
 import { railPlacements } from '../../../../src/core/model/rails/geometry';
-import { deserializeConfiguration, serializeConfiguration, SCENE_FILE_VERSION } from '../../../../src/core/model/files/sceneFile';
+import { deserializeConfiguration, serializeConfiguration } from '../../../../src/core/model/files/sceneFile';
+import { SCENE_FILE_VERSION } from '../../../../src/core/model/files/sceneFileSchema';
 import { suspensionCoordinates, suspensionPoints } from '../../../../src/core/model/rails/suspensionPoints';
 import { validate } from '../../../../src/core/model/validation/validate';
 import { catalog, enabled, run } from '../helpers';

@@ -12,7 +12,8 @@ import type { Configuration } from '../../../../src/core/model/configuration/con
 import { freeGaps, placeInLargestGap, snapOffset } from '../../../../src/core/model/rails/freePositions';
 import { modulePlacements } from '../../../../src/core/model/rails/geometry';
 import { newModule } from '../../../../src/core/model/actions/presets';
-import { deserializeConfiguration, serializeConfiguration, SCENE_FILE_VERSION } from '../../../../src/core/model/files/sceneFile';
+import { deserializeConfiguration, serializeConfiguration } from '../../../../src/core/model/files/sceneFile';
+import { SCENE_FILE_VERSION } from '../../../../src/core/model/files/sceneFileSchema';
 import { validate } from '../../../../src/core/model/validation/validate';
 import { catalog, enabled, run, systemAtOneOne } from '../helpers';
 

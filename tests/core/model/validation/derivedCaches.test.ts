@@ -16,7 +16,8 @@ import { systemBounds, systemElementTree } from '../../../../src/core/model/rail
 import { moduleLightColour } from '../../../../src/core/model/modules/moduleFilter';
 import { perCatalog } from '../../../../src/core/model/catalogSchema/perCatalog';
 import { findPresetPlacement, instantiatePreset, type Placement } from '../../../../src/core/model/actions/presets';
-import { systemProblems, validate } from '../../../../src/core/model/validation/validate';
+import { validate } from '../../../../src/core/model/validation/validate';
+import { systemProblems } from '../../../../src/core/model/validation/systemProblems';
 import { moduleColour } from '../../../../src/core/colour/moduleColour';
 import { createRng, type Rng } from '../../../fuzz/mutate';
 import { catalog } from '../helpers';
