@@ -1,5 +1,7 @@
 import './registerOptionsEnglish';
-import { connectorPorts, type Catalog, type ConnectorSpec } from '../../core/model/catalogSchema/catalogSchema';
+import { type Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import { connectorPorts } from '../../core/model/catalogSchema/connectorTurns';
+import { type ConnectorSpec } from '../../core/model/catalogSchema/railSystemSchema';
 import type { LightSystem, Rail } from '../../core/model/configuration/configuration';
 import { nodeJoints } from '../../core/model/rails/railTree';
 import type { ActionGate } from './actionGate';

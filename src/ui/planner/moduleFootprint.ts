@@ -1,4 +1,5 @@
-import { findBeam, findModuleType, type BeamSpec, type Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import { findBeam, findModuleType, type Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import { type BeamSpec } from '../../core/model/catalogSchema/moduleTypeSchema';
 import type { ModuleInstance } from '../../core/model/configuration/configuration';
 import { aimAxis } from '../../core/model/modules/aim';
 import { coneRoomOutline, type RoomBox } from '../../core/model/modules/coneOutline';

@@ -8,7 +8,8 @@
 import { z } from 'zod';
 import { InputError } from '../../inputError';
 import { refuse, type ActionDefinition, type CodedReason, type Refusal } from './action';
-import { allowedTurn, connectorPorts, findConnector, type Catalog } from '../catalogSchema/catalogSchema';
+import { findConnector, type Catalog } from '../catalogSchema/catalogSchema';
+import { allowedTurn, connectorPorts } from '../catalogSchema/connectorTurns';
 import type { Configuration, FeedAt, Rail } from '../configuration/configuration';
 import { keepFixingsIfValid } from '../rails/fixingRules';
 import { jointParent, nodeJoints } from '../rails/railTree';

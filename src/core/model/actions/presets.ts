@@ -2,7 +2,8 @@
  * Presets (catalog data) turned into placed systems, and the search for a free
  * spot when the user places one without saying where.
  */
-import { findBeam, findModuleType, type Catalog, type PresetSpec } from '../catalogSchema/catalogSchema';
+import { findBeam, findModuleType, type Catalog } from '../catalogSchema/catalogSchema';
+import { type PresetSpec } from '../catalogSchema/presetSchema';
 import type { Configuration, LightSystem, ModuleInstance } from '../configuration/configuration';
 import { plannedFeeds } from '../power/feedLoads';
 import { normaliseDegrees, systemBounds, type PlanBounds } from '../rails/geometry';

@@ -8,7 +8,8 @@
 import { z } from 'zod';
 import type { ActionDefinition } from './action';
 import { quoting } from '../configuration/coding';
-import { DISTRIBUTIONS, findConnector, type Catalog } from '../catalogSchema/catalogSchema';
+import { findConnector, type Catalog } from '../catalogSchema/catalogSchema';
+import { DISTRIBUTIONS } from '../catalogSchema/railSystemSchema';
 import type { Rail } from '../configuration/configuration';
 import { plannedFeeds } from '../power/feedLoads';
 import { keepFixingsIfValid, withoutFixings } from '../rails/fixingRules';

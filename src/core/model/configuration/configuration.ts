@@ -4,7 +4,7 @@
  * (src/core/model/rails/distribution.ts), or, on a rail the user arranged by hand, from each
  * module's free `offset` (src/core/model/rails/freePositions.ts); validate() judges both.
  */
-import type { Distribution } from '../catalogSchema/catalogSchema';
+import type { Distribution } from '../catalogSchema/railSystemSchema';
 import type { Reflectance, Rgb, SurfaceName } from '../lightingScene/lightingScene';
 import type { TriangleMesh } from '../../mesh/triangleMesh';
 

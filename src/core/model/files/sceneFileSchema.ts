@@ -1,6 +1,6 @@
 /** The scene file's structure, as strict zod (unknown fields refused, naming the field), and its version history. */
 import { z } from 'zod';
-import { DISTRIBUTIONS } from '../catalogSchema/catalogSchema';
+import { DISTRIBUTIONS } from '../catalogSchema/railSystemSchema';
 import { MESH_UNITS, MOUNTINGS, WALL_NAMES } from '../configuration/configuration';
 import { SURFACE_NAMES } from '../lightingScene/lightingScene';
 

@@ -7,7 +7,8 @@
  */
 import { attemptAction, checkAction, type ActionName } from '../actions/actionDefinitions';
 import { billOfMaterials } from '../power/billOfMaterials';
-import { DISTRIBUTIONS, type Catalog } from '../catalogSchema/catalogSchema';
+import { type Catalog } from '../catalogSchema/catalogSchema';
+import { DISTRIBUTIONS } from '../catalogSchema/railSystemSchema';
 import { isFreeRail } from '../rails/freePositions';
 import type { Configuration, FeedAt, LightSystem } from '../configuration/configuration';
 import { allowedFeedPositions, driversBySize, feedAtParam, sameFeedAt } from '../power/feedLoads';

@@ -7,7 +7,7 @@
  * (cos h, 0, −sin h) (counterclockwise seen from above), a luminaire's optical axis is its local
  * −y, and world = Ry(yaw)·Rx(pitch)·Ry(roll)·local.
  */
-import type { ModuleTypeSpec } from '../catalogSchema/catalogSchema';
+import type { ModuleTypeSpec } from '../catalogSchema/moduleTypeSchema';
 import { keyed } from '../configuration/coding';
 import type { ModuleAim } from '../configuration/configuration';
 import type { Vec3 } from '../lightingScene/lightingScene';

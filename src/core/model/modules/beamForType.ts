@@ -1,4 +1,4 @@
-import type { ModuleTypeSpec } from '../catalogSchema/catalogSchema';
+import type { ModuleTypeSpec } from '../catalogSchema/moduleTypeSchema';
 
 /**
  * The beam a module keeps when its type changes (issue #27, "choices that stick"): the same beam

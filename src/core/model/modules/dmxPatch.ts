@@ -6,7 +6,7 @@
  * The patch lives on the module (ModuleInstance.dmx), so removing a module
  * removes its patch by construction, and it is saved with the configuration.
  */
-import type { ModuleTypeSpec } from '../catalogSchema/catalogSchema';
+import type { ModuleTypeSpec } from '../catalogSchema/moduleTypeSchema';
 import { keyed, type Keyed } from '../configuration/coding';
 import type { Configuration, DmxPatch, ModuleInstance } from '../configuration/configuration';
 

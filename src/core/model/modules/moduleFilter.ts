@@ -8,7 +8,8 @@ import { keyed } from '../configuration/coding';
 import { colourFilter, type ColourFilter } from '../../colour/colourFilterLibrary';
 import type { FilteredColour } from '../../colour/filteredColour';
 import { moduleColour } from '../../colour/moduleColour';
-import type { Catalog, ModuleTypeSpec } from '../catalogSchema/catalogSchema';
+import type { Catalog } from '../catalogSchema/catalogSchema';
+import type { ModuleTypeSpec } from '../catalogSchema/moduleTypeSchema';
 import type { Configuration, ModuleInstance } from '../configuration/configuration';
 
 export type FilterAccessory = NonNullable<Catalog['filters']>[number];

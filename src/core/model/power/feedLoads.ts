@@ -5,7 +5,8 @@
  * its branches (chainCoordinates.ts distancesFrom, treeDistance); a tie goes to the feed nearer the chain start. A feed is
  * overloaded when its load exceeds its driver's rated output power.
  */
-import { findBeam, findModuleType, type Catalog, type DriverSpec } from '../catalogSchema/catalogSchema';
+import { findBeam, findModuleType, type Catalog } from '../catalogSchema/catalogSchema';
+import { type DriverSpec } from '../catalogSchema/powerSchema';
 import type { Configuration, Feed, FeedAt, LightSystem } from '../configuration/configuration';
 import { chainCoordinates, distancesFrom, feedCoordinate, feedLocation, onRail, type ChainCoordinates, type TreeLocation } from '../rails/chainCoordinates';
 import { firstNodeJoints, jointParent, treeProblem } from '../rails/railTree';

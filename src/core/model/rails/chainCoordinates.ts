@@ -12,7 +12,8 @@
  * interval), and distances use the tree: `treeDistance` runs along the rails and through the
  * nodes, as the current does.
  */
-import { findConnector, twoArmed, type Catalog } from '../catalogSchema/catalogSchema';
+import { findConnector, type Catalog } from '../catalogSchema/catalogSchema';
+import { twoArmed } from '../catalogSchema/connectorTurns';
 import type { FeedAt, LightSystem } from '../configuration/configuration';
 import { railPlacements, type PlanVec } from './geometry';
 import { jointParent, railParents } from './railTree';

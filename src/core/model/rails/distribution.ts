@@ -13,7 +13,7 @@
  *
  * Every layout also needs Σlᵢ ≤ L. Lengths in metres; EPS absorbs float noise.
  */
-import type { Distribution } from '../catalogSchema/catalogSchema';
+import type { Distribution } from '../catalogSchema/railSystemSchema';
 
 export const LAYOUT_EPS = 1e-9;
 

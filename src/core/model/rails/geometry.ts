@@ -4,7 +4,8 @@
  * so a heading h points along (cos h, 0, −sin h) = Ry(h)·(+x): the same rotation
  * as the luminaire yaw, which makes C0 run along the rail.
  */
-import { findConnector, findModuleType, twoArmed, type Catalog } from '../catalogSchema/catalogSchema';
+import { findConnector, findModuleType, type Catalog } from '../catalogSchema/catalogSchema';
+import { twoArmed } from '../catalogSchema/connectorTurns';
 import type { LightSystem, Rail } from '../configuration/configuration';
 import { layoutModules } from './distribution';
 import { freeOffsets, isFreeRail } from './freePositions';

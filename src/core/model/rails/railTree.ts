@@ -7,7 +7,8 @@
  * ports takes at most P − 1 branches.
  */
 import { keyed } from '../configuration/coding';
-import { allowedTurn, connectorPorts, type Catalog } from '../catalogSchema/catalogSchema';
+import { type Catalog } from '../catalogSchema/catalogSchema';
+import { allowedTurn, connectorPorts } from '../catalogSchema/connectorTurns';
 import type { Joint, LightSystem } from '../configuration/configuration';
 
 /** The rail whose end holds joints[k] (the parent of rail k+1). */

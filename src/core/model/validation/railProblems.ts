@@ -1,5 +1,7 @@
 /** A system's chain: rails and joints (connectors, turns), rail lengths, and whether each rail's modules fit it. */
-import { allowedTurn, findModuleType, onGrid, type Catalog } from '../catalogSchema/catalogSchema';
+import { findModuleType, type Catalog } from '../catalogSchema/catalogSchema';
+import { allowedTurn } from '../catalogSchema/connectorTurns';
+import { onGrid } from '../catalogSchema/catalogFields';
 import type { LightSystem } from '../configuration/configuration';
 import { freeRailProblem, isFreeRail } from '../rails/freePositions';
 import { railModuleOffsets } from '../rails/geometry';

@@ -12,7 +12,7 @@ import { describe, expect, it } from 'vitest';
 import { bindAction } from '../../../../src/core/model/actions/actionDefinitions';
 import { billOfMaterials } from '../../../../src/core/model/power/billOfMaterials';
 import { createConfiguration, type Configuration } from '../../../../src/core/model/configuration/configuration';
-import { DISTRIBUTIONS } from '../../../../src/core/model/catalogSchema/catalogSchema';
+import { DISTRIBUTIONS } from '../../../../src/core/model/catalogSchema/railSystemSchema';
 import { MAX_REFLECTANCE, SURFACE_TARGETS, reflectanceRgb } from '../../../../src/core/model/lightingScene/reflectance';
 import { toLightingScene } from '../../../../src/core/model/files/toLightingScene';
 import { validate } from '../../../../src/core/model/validation/validate';

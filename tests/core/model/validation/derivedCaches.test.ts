@@ -9,7 +9,8 @@
  */
 import { describe, expect, it } from 'vitest';
 import { bindAction } from '../../../../src/core/model/actions/actionDefinitions';
-import { type Catalog, type PresetSpec } from '../../../../src/core/model/catalogSchema/catalogSchema';
+import { type Catalog } from '../../../../src/core/model/catalogSchema/catalogSchema';
+import { type PresetSpec } from '../../../../src/core/model/catalogSchema/presetSchema';
 import { createConfiguration, type Configuration } from '../../../../src/core/model/configuration/configuration';
 import { plannedFeeds } from '../../../../src/core/model/power/feedLoads';
 import { systemBounds, systemElementTree } from '../../../../src/core/model/rails/geometry';
