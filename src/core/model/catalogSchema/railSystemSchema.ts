@@ -3,7 +3,7 @@ import { z } from 'zod';
 import { nonEmpty, onGrid, positive, price, translations } from './catalogFields';
 import { allowedTurn, connectorPorts } from './connectorTurns';
 
-/** Module distributions along a rail; defined precisely in docs/model.md and src/core/model/distribution.ts. */
+/** Module distributions along a rail; defined precisely in docs/model.md and src/core/model/rails/distribution.ts. */
 export const DISTRIBUTIONS = ['start', 'end', 'inside-centred', 'outside-centred'] as const;
 export type Distribution = (typeof DISTRIBUTIONS)[number];
 
