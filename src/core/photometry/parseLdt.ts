@@ -15,7 +15,7 @@ import {
   SCALE_RANGE,
 } from './limits';
 import { NumberReader } from './numberReader';
-import { luminousOpening } from './parseIes';
+import { luminousOpening } from './iesHeader';
 import { excerpt, PhotometryParseError } from './PhotometryParseError';
 import { checkLeftovers, readAngles, readCandela } from './readGrid';
 import type { Photometry } from './types';

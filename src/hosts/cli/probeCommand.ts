@@ -9,7 +9,7 @@ import { bakeLoadedScene } from '../node/bakeSceneFile';
 import { resolveBakeSettings } from '../../engines/bake/bakeSettings';
 import { prepareGl } from '../node/prepareGl';
 import { loadLightingSceneFileAsync, parseJsonText } from '../node/loadLightingSceneFile';
-import { describeIssues } from '../../core/untrustedJson';
+import { describeIssues } from '../../core/zodIssues';
 import { cliReadableFolders } from '../node/cliReadableFolders';
 import { INPUT_LIMITS } from '../../core/untrustedJson';
 import { readRegularFile } from '../node/readRegularFile';

@@ -207,7 +207,7 @@ describe('core messages in every language', async () => {
 describe('the English catalogue has every code the core emits', () => {
   const files = (dir: string): string[] =>
     (readdirSyncRecursive(new URL(`../../../src/core/${dir}/`, import.meta.url)) as string[]).filter((f) => f.endsWith('.ts'));
-  const source = ['model', 'photometry'].flatMap(files).concat(['inputError.ts', 'untrustedJson.ts'].map((f) => new URL(`../../../src/core/${f}`, import.meta.url).pathname));
+  const source = ['model', 'photometry'].flatMap(files).concat(['inputError.ts', 'untrustedJson.ts', 'zodIssues.ts'].map((f) => new URL(`../../../src/core/${f}`, import.meta.url).pathname));
   it('collects the codes given to refusals, InputErrors, keyed problems and photometry patterns', async () => {
     const en = { ...(await loadMessages('en')), refusals, fileErrors, photometry };
     const known = new Set(Object.values(en).flatMap((area) => Object.keys(area as object)));

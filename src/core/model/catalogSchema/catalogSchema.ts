@@ -6,7 +6,8 @@
 import { z } from 'zod';
 import { InputError } from '../../inputError';
 import { colourFilter } from '../../colour/colourFilterLibrary';
-import { describeIssues, formatPath as formatFieldPath, jsonShapeProblem, oneLine, parseUntrustedJson, schemaFieldNames } from '../../untrustedJson';
+import { formatPath as formatFieldPath, jsonShapeProblem, oneLine, parseUntrustedJson } from '../../untrustedJson';
+import { describeIssues, schemaFieldNames } from '../../zodIssues';
 import { nonEmpty, price } from './catalogFields';
 import { moduleTypeSchema, type BeamSpec, type ModuleTypeSpec } from './moduleTypeSchema';
 import { driverSchema, feedSchema, powerIssues, type DriverSpec } from './powerSchema';

@@ -9,7 +9,8 @@ import { InputError } from '../../inputError';
 import { versionedDataProblem } from './catalogSchema';
 import type { Reflectance, SurfaceName } from '../lightingScene/lightingScene';
 import { reflectanceProblem, sameReflectance } from '../lightingScene/reflectance';
-import { describeIssues, oneLine, schemaFieldNames } from '../../untrustedJson';
+import { oneLine } from '../../untrustedJson';
+import { describeIssues, schemaFieldNames } from '../../zodIssues';
 
 /** Which picker a finish is offered in: floor, ceiling, or the walls. */
 export const FINISH_USES = ['floor', 'ceiling', 'walls'] as const;

@@ -15,7 +15,8 @@ import { DEFAULT_REFLECTANCE, type Configuration, type ImportedMesh, type RoomOb
 import { decodeMesh, encodeMesh } from './meshCodec';
 import { SURFACE_NAMES, type Reflectance, type SurfaceName } from '../lightingScene/lightingScene';
 import { capReflectance } from '../lightingScene/reflectance';
-import { describeIssueCoded, excerpt, INPUT_LIMITS, jsonShapeIssue, parseUntrustedJson, schemaFieldNames, unquoted } from '../../untrustedJson';
+import { excerpt, INPUT_LIMITS, jsonShapeIssue, parseUntrustedJson, unquoted } from '../../untrustedJson';
+import { describeIssueCoded, schemaFieldNames } from '../../zodIssues';
 import { problemText } from '../configuration/coding';
 import { validate } from '../validation/validate';
 import { migrateSceneFile } from './migrations/migrateSceneFile';

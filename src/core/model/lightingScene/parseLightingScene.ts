@@ -12,7 +12,8 @@
 import { z } from 'zod';
 import { InputError } from '../../inputError';
 import { NEAR_FIELD_MODELS, SURFACE_NAMES, type LightingScene, type SurfaceName } from './lightingScene';
-import { describeIssues, excerpt, jsonShapeProblem, oneLine, schemaFieldNames } from '../../untrustedJson';
+import { excerpt, jsonShapeProblem, oneLine } from '../../untrustedJson';
+import { describeIssues, schemaFieldNames } from '../../zodIssues';
 
 export class LightingSceneError extends InputError {
   override name = 'LightingSceneError';

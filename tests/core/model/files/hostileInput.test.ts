@@ -5,7 +5,8 @@ import { configurationFromData, deserializeConfiguration, serializeConfiguration
 import { SceneFileError } from '../../../../src/core/model/files/sceneFileError';
 import { decodeShareString, encodeShareString } from '../../../../src/core/model/files/shareLink';
 import { SCENE_FILE_VERSION } from '../../../../src/core/model/files/sceneFileSchema';
-import { duplicateKey, excerpt, jsonShapeProblem, oneLine, suggestField } from '../../../../src/core/untrustedJson';
+import { duplicateKey, excerpt, jsonShapeProblem, oneLine } from '../../../../src/core/untrustedJson';
+import { suggestField } from '../../../../src/core/zodIssues';
 import catalogData from '../../../../src/core/catalog/default-catalog.json';
 import { catalog, withPreset } from '../helpers';
 
