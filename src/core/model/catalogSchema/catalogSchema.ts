@@ -8,11 +8,12 @@ import { InputError } from '../../inputError';
 import { colourFilter } from '../../colour/colourFilterLibrary';
 import { formatPath as formatFieldPath, jsonShapeProblem, oneLine, parseUntrustedJson } from '../../untrustedJson';
 import { describeIssues, schemaFieldNames } from '../../zodIssues';
-import { nonEmpty, price } from './catalogFields';
+import { nonEmpty, onGrid, price } from './catalogFields';
+import { allowedTurn, connectorPorts, turnRange } from './connectorTurns';
 import { moduleTypeSchema, type BeamSpec, type ModuleTypeSpec } from './moduleTypeSchema';
-import { driverSchema, feedSchema, powerIssues, type DriverSpec } from './powerSchema';
-import { presetIssues, presetSchema } from './presetSchema';
-import { connectorIssues, connectorSchema, overhangIssues, railIssues, railSchema, surfaceMountSchema, suspensionRangeIssues, suspensionSchema, type ConnectorSpec } from './railSystemSchema';
+import { driverSchema, feedSchema, type DriverSpec } from './powerSchema';
+import { presetSchema } from './presetSchema';
+import { connectorSchema, railSchema, surfaceMountSchema, suspensionSchema, type ConnectorSpec } from './railSystemSchema';
 
 export const catalogSchema = z
   .strictObject({
@@ -38,12 +39,29 @@ export const catalogSchema = z
     filters: z.array(z.strictObject({ id: nonEmpty, article: nonEmpty, price, source: z.string().optional() })).optional(),
   })
   .superRefine((c, ctx) => {
-    // In this order (a reader sees the first issue): rail, suspension, power, overhangs, connectors, ids, filters, presets.
-    railIssues(c.rail, ctx);
-    suspensionRangeIssues(c.suspension, ctx);
-    powerIssues(c, ctx);
-    overhangIssues(c.suspension, c.surfaceMount, ctx);
-    connectorIssues(c.connectors, ctx);
+    const r = c.rail;
+    if (r.minLength > r.maxLength) ctx.addIssue({ code: 'custom', path: ['rail', 'minLength'], message: 'must not exceed maxLength' });
+    for (const key of ['minLength', 'maxLength', 'defaultLength'] as const) {
+      if (!onGrid(r[key], r.step)) ctx.addIssue({ code: 'custom', path: ['rail', key], message: `must be a multiple of step ${r.step}` });
+    }
+    if (r.defaultLength < r.minLength || r.defaultLength > r.maxLength) ctx.addIssue({ code: 'custom', path: ['rail', 'defaultLength'], message: 'must lie within minLength..maxLength' });
+    const s = c.suspension;
+    if (s.min > s.max) ctx.addIssue({ code: 'custom', path: ['suspension', 'min'], message: 'must not exceed max' });
+    if (s.default < s.min || s.default > s.max) ctx.addIssue({ code: 'custom', path: ['suspension', 'default'], message: 'must lie within min..max' });
+    if (!c.feed.positions.includes('ends')) ctx.addIssue({ code: 'custom', path: ['feed', 'positions'], message: "must include 'ends' (a one-rail system has no joints)" });
+    if (new Set(c.feed.positions).size !== c.feed.positions.length) ctx.addIssue({ code: 'custom', path: ['feed', 'positions'], message: 'must not repeat a position' });
+    if (!c.drivers.some((d) => d.id === c.feed.defaultDriver)) ctx.addIssue({ code: 'custom', path: ['feed', 'defaultDriver'], message: `'${c.feed.defaultDriver}' is not a driver id` });
+    c.drivers.forEach((d, i) => {
+      if (d.output !== c.feed.output) ctx.addIssue({ code: 'custom', path: ['drivers', i, 'output'], message: `'${d.output}' does not match feed.output '${c.feed.output}'` });
+    });
+    if (s.maxOverhang > s.maxSpacing) ctx.addIssue({ code: 'custom', path: ['suspension', 'maxOverhang'], message: 'must not exceed maxSpacing' });
+    if (c.surfaceMount.maxOverhang > c.surfaceMount.spacing) ctx.addIssue({ code: 'custom', path: ['surfaceMount', 'maxOverhang'], message: 'must not exceed spacing' });
+    c.connectors.forEach((con, i) => {
+      if (connectorPorts(con) > 2 && (con.flex || con.angle === 0)) ctx.addIssue({ code: 'custom', path: ['connectors', i, 'ports'], message: 'a T or X connector has a fixed branch angle (angle > 0, no flex)' });
+      if (!con.flex) return;
+      if (!onGrid(con.flex.maxAngle, con.flex.step)) ctx.addIssue({ code: 'custom', path: ['connectors', i, 'flex', 'maxAngle'], message: `must be a multiple of step ${con.flex.step}` });
+      if (!allowedTurn(con, con.angle)) ctx.addIssue({ code: 'custom', path: ['connectors', i, 'angle'], message: `a flexible connector's angle (its default turn) must be a multiple of ${con.flex.step} up to ${con.flex.maxAngle}` });
+    });
     uniqueIds(c.drivers, ['drivers'], ctx);
     uniqueIds(c.connectors, ['connectors'], ctx);
     uniqueIds(c.moduleTypes, ['moduleTypes'], ctx);
@@ -52,7 +70,37 @@ export const catalogSchema = z
       if (!colourFilter(f.id)) ctx.addIssue({ code: 'custom', path: ['filters', i, 'id'], message: `'${f.id}' is not a filter of the colour-filter library` });
     });
     uniqueIds(c.presets, ['presets'], ctx);
-    presetIssues(c, ctx);
+    c.presets.forEach((p, i) => {
+      if (p.joints.length !== p.rails.length - 1) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints'], message: `needs ${p.rails.length - 1} joints for ${p.rails.length} rails` });
+      p.joints.forEach((j, k) => {
+        const con = c.connectors.find((x) => x.id === j.connector);
+        if (!con) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints', k, 'connector'], message: `unknown connector '${j.connector}'` });
+        else if (!allowedTurn(con, j.turn)) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints', k, 'turn'], message: `${turnRange(con)} for connector '${con.id}'` });
+        if (j.parent !== undefined && j.parent > k) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints', k, 'parent'], message: `must be a rail before rail ${k + 2} (at most ${k})` });
+      });
+      if (p.driver !== undefined) {
+        const d = c.drivers.find((x) => x.id === p.driver);
+        // The preset's load: its modules' beams (the type's default beam where none is named), as the feeds count it.
+        let load = 0;
+        for (const m of p.rails.flatMap((r) => r.modules)) {
+          const t = c.moduleTypes.find((x) => x.id === m.type);
+          load += t?.beams.find((b) => b.id === (m.beam ?? t.defaultBeam))?.watts ?? 0;
+        }
+        if (!d) ctx.addIssue({ code: 'custom', path: ['presets', i, 'driver'], message: `'${p.driver}' is not a driver id` });
+        else if (load > d.capacity + 1e-6) ctx.addIssue({ code: 'custom', path: ['presets', i, 'driver'], message: `the ${d.capacity} W '${d.id}' cannot carry the preset's ${Math.round(load * 100) / 100} W` });
+      }
+      p.rails.forEach((rail, k) =>
+        rail.modules.forEach((m, n) => {
+          const t = c.moduleTypes.find((x) => x.id === m.type);
+          const at = ['presets', i, 'rails', k, 'modules', n];
+          if (!t) ctx.addIssue({ code: 'custom', path: [...at, 'type'], message: `unknown module type '${m.type}'` });
+          else {
+            if (m.beam !== undefined && !t.beams.some((b) => b.id === m.beam)) ctx.addIssue({ code: 'custom', path: [...at, 'beam'], message: `unknown beam '${m.beam}'` });
+            if (m.cct !== undefined && !t.ccts.includes(m.cct)) ctx.addIssue({ code: 'custom', path: [...at, 'cct'], message: `${m.cct} K not offered` });
+          }
+        }),
+      );
+    });
   });
 
 export type Catalog = z.infer<typeof catalogSchema>;

@@ -32,13 +32,3 @@ export const driverSchema = z.strictObject({
 });
 
 export type DriverSpec = z.infer<typeof driverSchema>;
-
-/** Feeds at the ends at least, no position twice, a known default driver, every driver's output what the rail takes. */
-export function powerIssues(c: { feed: z.infer<typeof feedSchema>; drivers: readonly DriverSpec[] }, ctx: z.RefinementCtx): void {
-  if (!c.feed.positions.includes('ends')) ctx.addIssue({ code: 'custom', path: ['feed', 'positions'], message: "must include 'ends' (a one-rail system has no joints)" });
-  if (new Set(c.feed.positions).size !== c.feed.positions.length) ctx.addIssue({ code: 'custom', path: ['feed', 'positions'], message: 'must not repeat a position' });
-  if (!c.drivers.some((d) => d.id === c.feed.defaultDriver)) ctx.addIssue({ code: 'custom', path: ['feed', 'defaultDriver'], message: `'${c.feed.defaultDriver}' is not a driver id` });
-  c.drivers.forEach((d, i) => {
-    if (d.output !== c.feed.output) ctx.addIssue({ code: 'custom', path: ['drivers', i, 'output'], message: `'${d.output}' does not match feed.output '${c.feed.output}'` });
-  });
-}

@@ -1,7 +1,6 @@
 /** The catalog's rail system: the rail, its connectors, how it hangs (suspensions) or sits on the ceiling (clips). */
 import { z } from 'zod';
-import { nonEmpty, onGrid, positive, price, translations } from './catalogFields';
-import { allowedTurn, connectorPorts } from './connectorTurns';
+import { nonEmpty, positive, price, translations } from './catalogFields';
 
 /** Module distributions along a rail; defined precisely in docs/model.md and src/core/model/rails/distribution.ts. */
 export const DISTRIBUTIONS = ['start', 'end', 'inside-centred', 'outside-centred'] as const;
@@ -82,34 +81,3 @@ export const surfaceMountSchema = z.strictObject({
 
 export type RailSpec = z.infer<typeof railSchema>;
 export type ConnectorSpec = z.infer<typeof connectorSchema>;
-
-/** The rail's lengths: min ≤ max, all on the step grid, the default within. */
-export function railIssues(r: RailSpec, ctx: z.RefinementCtx): void {
-  if (r.minLength > r.maxLength) ctx.addIssue({ code: 'custom', path: ['rail', 'minLength'], message: 'must not exceed maxLength' });
-  for (const key of ['minLength', 'maxLength', 'defaultLength'] as const) {
-    if (!onGrid(r[key], r.step)) ctx.addIssue({ code: 'custom', path: ['rail', key], message: `must be a multiple of step ${r.step}` });
-  }
-  if (r.defaultLength < r.minLength || r.defaultLength > r.maxLength) ctx.addIssue({ code: 'custom', path: ['rail', 'defaultLength'], message: 'must lie within minLength..maxLength' });
-}
-
-/** The suspension's range: min ≤ max, the default within. */
-export function suspensionRangeIssues(s: z.infer<typeof suspensionSchema>, ctx: z.RefinementCtx): void {
-  if (s.min > s.max) ctx.addIssue({ code: 'custom', path: ['suspension', 'min'], message: 'must not exceed max' });
-  if (s.default < s.min || s.default > s.max) ctx.addIssue({ code: 'custom', path: ['suspension', 'default'], message: 'must lie within min..max' });
-}
-
-/** A free chain end may overhang its last suspension point or clip by no more than their spacing. */
-export function overhangIssues(s: z.infer<typeof suspensionSchema>, surfaceMount: z.infer<typeof surfaceMountSchema>, ctx: z.RefinementCtx): void {
-  if (s.maxOverhang > s.maxSpacing) ctx.addIssue({ code: 'custom', path: ['suspension', 'maxOverhang'], message: 'must not exceed maxSpacing' });
-  if (surfaceMount.maxOverhang > surfaceMount.spacing) ctx.addIssue({ code: 'custom', path: ['surfaceMount', 'maxOverhang'], message: 'must not exceed spacing' });
-}
-
-/** T and X connectors have a fixed branch angle; a flexible one's range and default turn lie on its step grid. */
-export function connectorIssues(connectors: readonly ConnectorSpec[], ctx: z.RefinementCtx): void {
-  connectors.forEach((con, i) => {
-    if (connectorPorts(con) > 2 && (con.flex || con.angle === 0)) ctx.addIssue({ code: 'custom', path: ['connectors', i, 'ports'], message: 'a T or X connector has a fixed branch angle (angle > 0, no flex)' });
-    if (!con.flex) return;
-    if (!onGrid(con.flex.maxAngle, con.flex.step)) ctx.addIssue({ code: 'custom', path: ['connectors', i, 'flex', 'maxAngle'], message: `must be a multiple of step ${con.flex.step}` });
-    if (!allowedTurn(con, con.angle)) ctx.addIssue({ code: 'custom', path: ['connectors', i, 'angle'], message: `a flexible connector's angle (its default turn) must be a multiple of ${con.flex.step} up to ${con.flex.maxAngle}` });
-  });
-}

@@ -1,7 +1,7 @@
-/** A system's power feeds: where they sit, their drivers, and the load each carries. */
+/** A system's power feeds: where they sit and their drivers (the loads they carry: systemOwnProblems.ts). */
 import type { Catalog } from '../catalogSchema/catalogSchema';
 import type { LightSystem } from '../configuration/configuration';
-import { describeFeedAt, feedAtParam, feedLabel, feedLoads, formatWatts, isOverloaded } from '../power/feedLoads';
+import { describeFeedAt, feedAtParam, feedLabel } from '../power/feedLoads';
 import { firstNodeJoints, jointParent } from '../rails/railTree';
 import type { ReportProblem } from './reporting';
 
@@ -30,9 +30,3 @@ export function feedProblems(s: LightSystem, catalog: Catalog, p: ReportProblem)
   });
 }
 
-/** Each feed's load within its driver's capacity (once the system is otherwise sound: loads need its geometry). */
-export function feedOverloadProblems(s: LightSystem, catalog: Catalog, p: ReportProblem): void {
-  for (const l of feedLoads(s, catalog)) {
-    if (isOverloaded(l)) p('feed-overload', `.feeds[${l.index}]`, `${feedLabel(l.index)} carries ${formatWatts(l.load)} W, more than its ${formatWatts(l.capacity)} W driver (${l.driver.name})`, { n: l.index + 1, load: Number(formatWatts(l.load)), capacity: Number(formatWatts(l.capacity)), driver: l.driver.name, driverId: l.driver.id }, 'feedCarries');
-  }
-}

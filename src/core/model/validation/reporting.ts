@@ -1,5 +1,4 @@
 /** What the validation rules share: the float tolerance, number formatting in sentences, and how a system's rules report. */
-import type { Keyed } from '../configuration/coding';
 
 /** Float noise allowed at walls and grids (a nanometre). */
 export const EPS = 1e-9;
@@ -9,8 +8,5 @@ export function fmt(x: number): string {
   return String(Math.round(x * 1000) / 1000);
 }
 
-
 /** How a rule of a system reports a problem: code, path relative to the system, sentence, its params and sentence key (docs/i18n.md). */
 export type ReportProblem = (code: string, path: string, message: string, params?: Record<string, string | number>, key?: string) => void;
-/** How a rule reports a sub-rule's problem (fixing points, free positions, the tree, aim, filter, patch) with its own coding. */
-export type ReportSubProblem = (code: string, path: string, found: { message: string } & Keyed) => void;
