@@ -1,4 +1,4 @@
-// Extracts the colour-filter library (src/core/catalog/colour-filters.json) from the dataset of the
+// Extracts the colour-filter library (src/core/colour/colour-filters.json) from the dataset of the
 // PyPI package lighting_filters 0.1.1 (MIT, Reid Sox-Harris; the data belong to the manufacturers,
 // here LEE Filters, published on leefilters.com). Not run in CI: the dataset is not in the repository.
 // Usage: pip download lighting_filters==0.1.1 --no-deps, unzip the wheel, then
@@ -15,8 +15,8 @@ const input = process.argv[2] ?? '/tmp/pipdl/lf/dataset/filters.json';
 // Two files (docs/colour-filters.md, "Two files"): the index (ids and names: the planner's first screen
 // needs it to validate and list filters) and the spectra with their provenance (loaded when a
 // colour is computed, so the first screen does not carry ~10 KiB of curves).
-const indexOutput = resolve(root, 'src/core/catalog/colour-filters.json');
-const spectraOutput = resolve(root, 'src/core/catalog/colour-filter-spectra.json');
+const indexOutput = resolve(root, 'src/core/colour/colour-filters.json');
+const spectraOutput = resolve(root, 'src/core/colour/colour-filter-spectra.json');
 
 /** Dataset key → kind. CTO/CTB in every strength LEE sells, neutral densities, and common colours. */
 const PICK = {

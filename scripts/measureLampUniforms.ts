@@ -18,7 +18,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { defaultCatalog } from '../src/core/catalog/defaultCatalog';
 import { livingRoom } from '../src/core/catalog/furnishedPresets';
-import { serializeConfiguration } from '../src/core/model/sceneFile';
+import { serializeConfiguration } from '../src/core/model/files/sceneFile';
 import type { BakeLuminaire, BakeScene } from '../src/engines/bake/bakeScene';
 import { resolveBakeSettings } from '../src/engines/bake/bakeSettings';
 import { createBaker } from '../src/engines/bake/createBaker';

@@ -13,12 +13,12 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { defaultCatalog } from '../src/core/catalog/defaultCatalog';
 import { livingRoom } from '../src/core/catalog/furnishedPresets';
-import { serializeConfiguration } from '../src/core/model/sceneFile';
+import { serializeConfiguration } from '../src/core/model/files/sceneFile';
 import { luxOf } from '../src/engines/bake/bakedMaps';
 import type { BakeScene } from '../src/engines/bake/bakeScene';
 import { createRelightEngine, VIEWER_BAKE_SETTINGS } from '../src/engines/relight/createRelightEngine';
 import type { LitMaps } from '../src/engines/relight/relightMaps';
-import { SURFACE_NAMES } from '../src/core/model/lightingScene';
+import { SURFACE_NAMES } from '../src/core/model/lightingScene/lightingScene';
 import { createHeadlessGL } from '../src/hosts/node/createHeadlessGL';
 import { loadRenderInput } from '../src/hosts/node/renderInput';
 

@@ -18,7 +18,7 @@
 import { hueAngle, hueDifference, hueOfChromaticity, linearSrgbToXyz, srgbToLinear, xyzToLab } from '../src/core/colour/cielab';
 import { loadColourFilterSpectra } from '../src/core/colour/colourFilterSpectra';
 import { moduleColour } from '../src/core/colour/moduleColour';
-import type { Rgb } from '../src/core/model/lightingScene';
+import type { Rgb } from '../src/core/model/lightingScene/lightingScene';
 import { acesFilmic, pbrNeutral } from '../src/engines/view/toneCurveCandidates';
 import { agx, agxMaxRgb, gamutMap, linearToSrgb } from '../src/engines/view/toneMap';
 

@@ -1,4 +1,4 @@
-import type { SurfaceName, Vec3 } from '../core/model/lightingScene';
+import type { SurfaceName, Vec3 } from '../core/model/lightingScene/lightingScene';
 
 /** World axis index: 0 = x, 1 = y (up), 2 = z. */
 export type Axis = 0 | 1 | 2;

@@ -1,4 +1,4 @@
-import type { Rgb, Vec3 } from '../core/model/lightingScene';
+import type { Rgb, Vec3 } from '../core/model/lightingScene/lightingScene';
 import { candelaAt } from './candelaAt';
 import type { ReferencePointSource } from './pointSources';
 

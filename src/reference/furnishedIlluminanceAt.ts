@@ -1,4 +1,4 @@
-import type { Rgb, Vec3 } from '../core/model/lightingScene';
+import type { Rgb, Vec3 } from '../core/model/lightingScene/lightingScene';
 import { occludedDirectAt } from './occludedDirect';
 import { occludedFormFactor, polygonCentroid, splitPolygon } from './occludedFormFactor';
 import { ReferenceInputError } from './referenceInputError';

@@ -1,4 +1,4 @@
-import type { Rgb, SurfaceName, Vec3 } from '../core/model/lightingScene';
+import type { Rgb, SurfaceName, Vec3 } from '../core/model/lightingScene/lightingScene';
 import { BOX_FACES } from './boxGeometry';
 import { polygonBounds, polygonCentroid } from './occludedFormFactor';
 import type { PlacedTriangles } from './referenceObjects';

@@ -1,4 +1,4 @@
-import type { Vec3 } from '../core/model/lightingScene';
+import type { Vec3 } from '../core/model/lightingScene/lightingScene';
 
 /** Row-major 3×3 matrix. */
 export type Mat3 = [number, number, number, number, number, number, number, number, number];

@@ -1,4 +1,4 @@
-import type { Rgb, Vec3 } from '../core/model/lightingScene';
+import type { Rgb, Vec3 } from '../core/model/lightingScene/lightingScene';
 import { directIlluminanceAt } from './directIlluminance';
 import { subdivideTriangle, type FurnishedPatch } from './furnishedPatches';
 import { segmentClear, type Occluders } from './occluders';

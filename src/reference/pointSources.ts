@@ -1,4 +1,4 @@
-import type { LightingScene, Rgb, Vec3 } from '../core/model/lightingScene';
+import type { LightingScene, Rgb, Vec3 } from '../core/model/lightingScene/lightingScene';
 import type { Photometry } from '../core/photometry/types';
 import { tiltMultiplier } from '../core/photometry/tilt';
 import { apply, luminaireToWorld, worldToLuminaire, type Mat3 } from './luminaireRotation';

@@ -1,4 +1,4 @@
-import type { Vec3 } from '../core/model/lightingScene';
+import type { Vec3 } from '../core/model/lightingScene/lightingScene';
 
 /**
  * Form factor from a differential area at p (unit normal n) to a planar polygon,

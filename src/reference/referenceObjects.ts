@@ -1,4 +1,4 @@
-import type { Reflectance, Rgb, Vec3 } from '../core/model/lightingScene';
+import type { Reflectance, Rgb, Vec3 } from '../core/model/lightingScene/lightingScene';
 import { placementTransform, type MeshPlacement } from '../core/mesh/placeMesh';
 import type { MeshMaterial, TriangleMesh } from '../core/mesh/triangleMesh';
 import { ReferenceInputError } from './referenceInputError';

@@ -1,4 +1,4 @@
-import type { Rgb, Vec3 } from '../core/model/lightingScene';
+import type { Rgb, Vec3 } from '../core/model/lightingScene/lightingScene';
 import { directIlluminanceAt } from './directIlluminance';
 import type { ReferencePointSource } from './pointSources';
 import { patchPieces, type RoomPatch } from './roomPatches';

@@ -1,4 +1,4 @@
-import type { Rgb, Vec3 } from '../core/model/lightingScene';
+import type { Rgb, Vec3 } from '../core/model/lightingScene/lightingScene';
 import { frontFormFactor } from './occludedFormFactor';
 import { roomDirectAt } from './roomDirect';
 import { sightClear } from './roomSightlines';

@@ -6,7 +6,7 @@
  * light out and nothing in, issue 29). A patch is any simple polygon (a cell of a slanted or
  * notched surface is not a rectangle); its light is found on sub-pieces, the same lattice cut finer.
  */
-import type { Rgb, Vec3 } from '../core/model/lightingScene';
+import type { Rgb, Vec3 } from '../core/model/lightingScene/lightingScene';
 import type { PlanPoint } from '../core/room/planPolygon';
 import type { RoomSurface, SurfaceFrame } from '../core/room/roomSurfaces';
 

@@ -7,7 +7,7 @@
  * (a segment between two points under a convex roof stays under it), which is why a convex
  * outline needs no test at all. Written for the reference only; shares nothing with the baker.
  */
-import type { Vec3 } from '../core/model/lightingScene';
+import type { Vec3 } from '../core/model/lightingScene/lightingScene';
 import { segmentsCrossProperly, type PlanPoint } from '../core/room/planPolygon';
 
 export interface RoomSightlines {

@@ -1,4 +1,4 @@
-import type { Rgb, SurfaceName, Vec3 } from '../core/model/lightingScene';
+import type { Rgb, SurfaceName, Vec3 } from '../core/model/lightingScene/lightingScene';
 import { BOX_FACES, facePoint, type BoxFace } from './boxGeometry';
 import { directIlluminanceAt } from './directIlluminance';
 import { pointToPolygonFormFactor } from './pointToPolygonFormFactor';

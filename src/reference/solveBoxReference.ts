@@ -1,4 +1,4 @@
-import { SURFACE_NAMES, type LightingScene, type Reflectance, type Rgb, type SurfaceName, type Vec3 } from '../core/model/lightingScene';
+import { SURFACE_NAMES, type LightingScene, type Reflectance, type Rgb, type SurfaceName, type Vec3 } from '../core/model/lightingScene/lightingScene';
 import type { Photometry } from '../core/photometry/types';
 import { BOX_FACES, makePatchGrid, type Axis, type BoxFace, type PatchGrid } from './boxGeometry';
 import { patchMeanDirect, type PatchAverageOptions } from './directIlluminance';

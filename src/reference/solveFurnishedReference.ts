@@ -1,4 +1,4 @@
-import { SURFACE_NAMES, type LightingScene, type Reflectance, type Rgb, type SurfaceName, type Vec3 } from '../core/model/lightingScene';
+import { SURFACE_NAMES, type LightingScene, type Reflectance, type Rgb, type SurfaceName, type Vec3 } from '../core/model/lightingScene/lightingScene';
 import type { Photometry } from '../core/photometry/types';
 import { objectPatches, wallPatches, type FurnishedPatch } from './furnishedPatches';
 import { occludedFormFactor, polygonCentroid, splitPolygon } from './occludedFormFactor';

@@ -1,4 +1,4 @@
-import type { LightingLuminaire, LightingScene, Vec3 } from '../core/model/lightingScene';
+import type { LightingLuminaire, LightingScene, Vec3 } from '../core/model/lightingScene/lightingScene';
 import type { Photometry } from '../core/photometry/types';
 import { pointInsideRoom } from '../core/room/ceilingHeightAt';
 import { normaliseRoom, type Room } from '../core/room/normaliseRoom';

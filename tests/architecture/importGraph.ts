@@ -71,21 +71,27 @@ export function readImportGraph(root: string): ImportEdge[] {
         continue;
       }
       const target = resolveFile(file, spec);
-      if (target && /\.(ts|tsx)$/.test(target)) edges.push({ from, to: relative(root, target), isPackage: false });
+      // A JSON file is a dependency on the folder that holds it, like a module.
+      if (target && /\.(ts|tsx|json)$/.test(target)) edges.push({ from, to: relative(root, target), isPackage: false });
     }
   }
   return edges;
 }
 
+/** Folders whose sub-folders are folders of their own (the model's domains, docs/architecture.md). */
+export const SPLIT_FOLDERS: readonly string[] = ['core/model'];
+
 /**
- * The folder a file belongs to: `core/model`, `core` (a file directly in a layer folder), `shaders`,
- * `reference`, or `(root)` for a file directly in `src/`.
+ * The folder a file belongs to: `core/colour`, `core/model/rails` (a domain of a split folder, with
+ * everything under it), `core` (a file directly in a layer folder), `shaders`, `reference`, or
+ * `(root)` for a file directly in `src/`.
  */
 export function folderOf(file: string): string {
   const parts = file.split(/[\\/]/);
   if (parts[0] === 'shaders') return 'shaders';
   if (parts[0] !== 'src') return parts[0];
   if (parts[1] === 'reference') return 'reference';
+  if (parts.length > 4 && SPLIT_FOLDERS.includes(`${parts[1]}/${parts[2]}`)) return `${parts[1]}/${parts[2]}/${parts[3]}`;
   if (parts.length > 3) return `${parts[1]}/${parts[2]}`;
   return parts.length === 3 ? parts[1] : '(root)';
 }

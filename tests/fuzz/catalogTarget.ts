@@ -3,7 +3,7 @@
  * through parseCatalogText. Seed: the demo catalog.
  */
 import { readFileSync } from 'node:fs';
-import { CatalogError, parseCatalogText, type Catalog } from '../../src/core/model/catalogSchema';
+import { CatalogError, parseCatalogText, type Catalog } from '../../src/core/model/catalogSchema/catalogSchema';
 import { jsonAcceptedProblems } from './checks';
 import type { FuzzOutcome, FuzzSeed, FuzzTarget } from './fuzzTarget';
 

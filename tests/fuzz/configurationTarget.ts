@@ -7,9 +7,10 @@
 import { readFileSync } from 'node:fs';
 import { demoConfiguration } from '../../src/core/catalog/demoConfiguration';
 import { defaultCatalog } from '../../src/core/catalog/defaultCatalog';
-import type { Configuration } from '../../src/core/model/configuration';
-import { SceneFileError, deserializeConfiguration, serializeConfiguration, toSceneFile } from '../../src/core/model/sceneFile';
-import { validate } from '../../src/core/model/validate';
+import type { Configuration } from '../../src/core/model/configuration/configuration';
+import { deserializeConfiguration, serializeConfiguration, toSceneFile } from '../../src/core/model/files/sceneFile';
+import { SceneFileError } from '../../src/core/model/files/sceneFileError';
+import { validate } from '../../src/core/model/validation/validate';
 import { jsonAcceptedProblems } from './checks';
 import type { FuzzOutcome, FuzzSeed, FuzzTarget } from './fuzzTarget';
 

@@ -13,7 +13,7 @@ import { unzipSync, zipSync } from 'fflate';
 import { GldfError } from '../../src/core/gldf/GldfError';
 import { importGldfCatalog } from '../../src/core/gldf/importGldfCatalog';
 import { InputError } from '../../src/core/inputError';
-import { parseCatalog, parseCatalogText } from '../../src/core/model/catalogSchema';
+import { parseCatalog, parseCatalogText } from '../../src/core/model/catalogSchema/catalogSchema';
 import { gldfBytes, linearSpec, pendantSpec, trackSpotSpec, type GldfSpec } from '../core/gldf/buildGldf';
 import { nonFinitePaths } from './checks';
 import type { FuzzOutcome, FuzzSeed, FuzzTarget } from './fuzzTarget';

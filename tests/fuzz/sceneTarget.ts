@@ -5,8 +5,8 @@
  * mutated path must not make the fuzzer read).
  */
 import { readFileSync } from 'node:fs';
-import { LightingSceneError, parseLightingScene } from '../../src/core/model/parseLightingScene';
-import { SURFACE_NAMES, type LightingScene } from '../../src/core/model/lightingScene';
+import { LightingSceneError, parseLightingScene } from '../../src/core/model/lightingScene/parseLightingScene';
+import { SURFACE_NAMES, type LightingScene } from '../../src/core/model/lightingScene/lightingScene';
 import { parseJsonText } from '../../src/hosts/node/loadLightingSceneFile';
 import { jsonAcceptedProblems } from './checks';
 import type { FuzzOutcome, FuzzSeed, FuzzTarget } from './fuzzTarget';

@@ -7,8 +7,10 @@
  */
 import { demoConfiguration } from '../../src/core/catalog/demoConfiguration';
 import { defaultCatalog } from '../../src/core/catalog/defaultCatalog';
-import type { Configuration } from '../../src/core/model/configuration';
-import { SceneFileError, decodeShareString, deserializeConfiguration, encodeShareString, serializeConfiguration } from '../../src/core/model/sceneFile';
+import type { Configuration } from '../../src/core/model/configuration/configuration';
+import { deserializeConfiguration, serializeConfiguration } from '../../src/core/model/files/sceneFile';
+import { SceneFileError } from '../../src/core/model/files/sceneFileError';
+import { decodeShareString, encodeShareString } from '../../src/core/model/files/shareLink';
 import { configurationProblems, configurationSeeds } from './configurationTarget';
 import type { FuzzOutcome, FuzzSeed, FuzzTarget } from './fuzzTarget';
 

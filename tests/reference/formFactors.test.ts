@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
-import type { Vec3 } from '../../src/core/model/lightingScene';
+import type { Vec3 } from '../../src/core/model/lightingScene/lightingScene';
 import { BOX_FACES, makePatchGrid } from '../../src/reference/boxGeometry';
 import { buildFaceKernels, patchFormFactor } from '../../src/reference/formFactorKernels';
 import { pointToPolygonFormFactor } from '../../src/reference/pointToPolygonFormFactor';

@@ -7,7 +7,7 @@
  * empty-box solver when the room is empty.
  */
 import { describe, expect, it } from 'vitest';
-import type { LightingLuminaire, LightingScene, Vec3 } from '../../src/core/model/lightingScene';
+import type { LightingLuminaire, LightingScene, Vec3 } from '../../src/core/model/lightingScene/lightingScene';
 import { BOX_FACES } from '../../src/reference/boxGeometry';
 import { furnishedIlluminanceAt } from '../../src/reference/furnishedIlluminanceAt';
 import { occludedFormFactor } from '../../src/reference/occludedFormFactor';

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { Euler, Matrix4, Vector3 } from 'three';
-import type { Vec3 } from '../../src/core/model/lightingScene';
+import type { Vec3 } from '../../src/core/model/lightingScene/lightingScene';
 import { apply, luminaireToWorld, photometricAngles, worldToLuminaire } from '../../src/reference/luminaireRotation';
 
 const close = (a: Vec3, b: Vec3, tol = 1e-12): void => {

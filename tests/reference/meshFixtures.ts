@@ -1,5 +1,5 @@
 /** Hand-built triangle meshes for the furnished-room tests: boxes, tables, plates (object-local metres, y up). */
-import type { Rgb, Vec3 } from '../../src/core/model/lightingScene';
+import type { Rgb, Vec3 } from '../../src/core/model/lightingScene/lightingScene';
 import type { TriangleMesh } from '../../src/core/mesh/triangleMesh';
 
 /** A closed axis-aligned box from min to max: 12 triangles, counterclockwise seen from outside. */

@@ -8,7 +8,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import { Matrix4, Vector3 } from 'three';
-import type { LightingLuminaire, Vec3 } from '../../src/core/model/lightingScene';
+import type { LightingLuminaire, Vec3 } from '../../src/core/model/lightingScene/lightingScene';
 import { intensity } from '../../src/core/photometry/intensity';
 import type { RoomInput, RoomOpening } from '../../src/core/room/roomInput';
 import { boxRoomInput } from '../../src/core/room/boxRoom';

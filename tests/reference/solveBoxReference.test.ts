@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { Matrix4, Vector3 } from 'three';
-import type { LightingLuminaire, LightingScene, Reflectance, Vec3 } from '../../src/core/model/lightingScene';
+import type { LightingLuminaire, LightingScene, Reflectance, Vec3 } from '../../src/core/model/lightingScene/lightingScene';
 import { integrateFlux } from '../../src/core/photometry/flux';
 import { intensity } from '../../src/core/photometry/intensity';
 import type { Photometry } from '../../src/core/photometry/types';

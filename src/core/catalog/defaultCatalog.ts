@@ -4,6 +4,6 @@
  * to the store / embedding API); no code changes needed.
  */
 import data from './default-catalog.json';
-import { parseCatalog, type Catalog } from '../model/catalogSchema';
+import { parseCatalog, type Catalog } from '../model/catalogSchema/catalogSchema';
 
 export const defaultCatalog: Catalog = parseCatalog(data, 'src/core/catalog/default-catalog.json');

@@ -1,6 +1,6 @@
-import { attemptAction } from '../model/actionDefinitions';
-import type { Catalog } from '../model/catalogSchema';
-import { createConfiguration, type Configuration } from '../model/configuration';
+import { attemptAction } from '../model/actions/actionDefinitions';
+import type { Catalog } from '../model/catalogSchema/catalogSchema';
+import { createConfiguration, type Configuration } from '../model/configuration/configuration';
 
 /** The preset the demo places: the L corner shows spots, floods and wall washers at once. */
 export const DEMO_PRESET_ID = 'corner-l';

@@ -4,9 +4,9 @@
  * actions as the planner, so each step is checked by validate(). The 3D view's first impression
  * and the demo use them. Placements are in metres on the room's plan (docs/furniture.md).
  */
-import { attemptAction } from '../model/actionDefinitions';
-import type { Catalog } from '../model/catalogSchema';
-import { createConfiguration, type Configuration, type Room } from '../model/configuration';
+import { attemptAction } from '../model/actions/actionDefinitions';
+import type { Catalog } from '../model/catalogSchema/catalogSchema';
+import { createConfiguration, type Configuration, type Room } from '../model/configuration/configuration';
 
 export interface FurnishedPreset {
   readonly id: string;

@@ -3,6 +3,6 @@
  * this file, validated at load (format: docs/catalog-format.md).
  */
 import data from './surface-finishes.json';
-import { parseSurfaceFinishes, type SurfaceFinish } from '../model/surfaceFinish';
+import { parseSurfaceFinishes, type SurfaceFinish } from '../model/catalogSchema/surfaceFinish';
 
 export const defaultSurfaceFinishes: readonly SurfaceFinish[] = parseSurfaceFinishes(data, 'src/core/catalog/surface-finishes.json');

@@ -1,7 +1,7 @@
 /**
  * The colour-filter (gel) library's index: which filters exist, their maker, number, name and kind.
  * Extracted from the lighting_filters 0.1.1 dataset by scripts/extractColourFilters.mjs into
- * src/core/catalog/colour-filters.json (sources: src/core/catalog/COLOUR-FILTERS-SOURCES.md,
+ * src/core/colour/colour-filters.json (sources: src/core/colour/COLOUR-FILTERS-SOURCES.md,
  * docs/sources.md). The spectral curves are in a second file, loaded when a colour is first
  * computed (./colourFilterSpectra.ts, docs/colour-filters.md "Two files"): validating and listing
  * filters is all the planner's first screen needs, and the curves are ~10 KiB gzip of its budget.
@@ -9,7 +9,7 @@
  */
 import { z } from 'zod';
 import { InputError } from '../inputError';
-import libraryJson from '../catalog/colour-filters.json';
+import libraryJson from './colour-filters.json';
 
 /** What a filter is for; the picker groups by it. */
 export const FILTER_KINDS = ['cto', 'ctb', 'nd', 'colour'] as const;

@@ -1,6 +1,6 @@
 /**
  * The colour-filter library's spectral transmission curves, as published by the manufacturers
- * (src/core/catalog/colour-filter-spectra.json, written with the index by
+ * (src/core/colour/colour-filter-spectra.json, written with the index by
  * scripts/extractColourFilters.mjs). They are loaded on first need, not with the planner's first
  * screen (docs/colour-filters.md, "Two files"): `loadColourFilterSpectra()` once, then the
  * synchronous accessors below. Hosts load them where a colour may be computed (the CLI at start,
@@ -30,7 +30,7 @@ const listeners = new Set<() => void>();
 /** Loads (once; later calls share the promise) and returns the spectra. */
 export function loadColourFilterSpectra(): Promise<ColourFilterSpectra> {
   if (loaded) return Promise.resolve(loaded);
-  loading ??= Promise.all([import('./parseColourFilterSpectra'), import('../catalog/colour-filter-spectra.json')]).then(
+  loading ??= Promise.all([import('./parseColourFilterSpectra'), import('./colour-filter-spectra.json')]).then(
     ([parser, json]) => {
       const data = parser.parseColourFilterSpectra(json.default);
       loaded = data;

@@ -1,5 +1,5 @@
 /**
- * The schema of src/core/catalog/colour-filter-spectra.json (docs/colour-filters.md, "Two files"):
+ * The schema of src/core/colour/colour-filter-spectra.json (docs/colour-filters.md, "Two files"):
  * validated when loaded, so a broken file fails naming the filter and field, and checked against
  * the index (colour-filters.json): one curve per library filter, no other. Loaded with the data by
  * loadColourFilterSpectra() (./colourFilterSpectra.ts), outside the planner's first screen.

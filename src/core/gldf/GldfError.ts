@@ -1,5 +1,5 @@
 import { InputError } from '../inputError';
-import { oneLine } from '../model/untrustedJson';
+import { oneLine } from '../untrustedJson';
 
 /**
  * A GLDF (or other uploaded container) that is refused: one line naming the file and, where

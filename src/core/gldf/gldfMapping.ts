@@ -6,8 +6,9 @@
  * default, and the import report lists each value assumed.
  */
 import { z } from 'zod';
-import { versionedDataProblem } from '../model/catalogSchema';
-import { describeIssues, parseUntrustedJson, schemaFieldNames } from '../model/untrustedJson';
+import { versionedDataProblem } from '../model/catalogSchema/catalogSchema';
+import { parseUntrustedJson } from '../untrustedJson';
+import { describeIssues, schemaFieldNames } from '../zodIssues';
 import { GldfError } from './GldfError';
 
 const catalogId = z.string().regex(/^[a-z0-9][a-z0-9-]{0,63}$/, 'must be lower-case letters, digits and - (at most 64)');

@@ -6,7 +6,7 @@
  * the mapping file give take the defaults below, each listed in the report.
  */
 import { InputError } from '../inputError';
-import type { BeamSpec, ModuleTypeSpec } from '../model/catalogSchema';
+import type { BeamSpec, ModuleTypeSpec } from '../model/catalogSchema/moduleTypeSchema';
 import { lumensWarning } from '../photometry/checks';
 import { PhotometryParseError } from '../photometry/PhotometryParseError';
 import { beamAndField, integrateFlux, parsePhotometry, type Photometry } from '../photometry';

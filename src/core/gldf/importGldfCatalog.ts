@@ -5,7 +5,8 @@
  * (one line naming the file and entry), and the result is validated like any catalog
  * (parseCatalog), so nothing partial or invalid comes out.
  */
-import { parseCatalog, type Catalog, type ModuleTypeSpec } from '../model/catalogSchema';
+import { parseCatalog, type Catalog } from '../model/catalogSchema/catalogSchema';
+import { type ModuleTypeSpec } from '../model/catalogSchema/moduleTypeSchema';
 import { GldfError } from './GldfError';
 import type { GldfImportReport, ProductReport } from './gldfImportReport';
 import type { GldfMapping } from './gldfMapping';

@@ -8,12 +8,12 @@
  */
 import { createStore, type StoreApi } from 'zustand/vanilla';
 import { InputError } from '../inputError';
-import { refuse, type Enablement, type Refusal } from '../model/action';
-import { ACTION_NAMES, actionDefinitions, attemptAction, checkAction, type ActionName } from '../model/actionDefinitions';
-import type { Catalog } from '../model/catalogSchema';
-import { createConfiguration, type Configuration } from '../model/configuration';
-import { createHistory, pushHistory, redo, undo, type History } from '../model/history';
-import { validate } from '../model/validate';
+import { refuse, type Enablement, type Refusal } from '../model/actions/action';
+import { ACTION_NAMES, actionDefinitions, attemptAction, checkAction, type ActionName } from '../model/actions/actionDefinitions';
+import type { Catalog } from '../model/catalogSchema/catalogSchema';
+import { createConfiguration, type Configuration } from '../model/configuration/configuration';
+import { createHistory, pushHistory, redo, undo, type History } from '../model/configuration/history';
+import { validate } from '../model/validation/validate';
 
 export type Selection = { readonly kind: 'system' | 'rail' | 'module' | 'object'; readonly id: string } | null;
 

@@ -1,4 +1,4 @@
-import type { Rgb, SurfaceName } from '../../core/model/lightingScene';
+import type { Rgb, SurfaceName } from '../../core/model/lightingScene/lightingScene';
 import type { BakedMaps } from './bakedMaps';
 import type { BakeObject, BakeScene } from './bakeScene';
 import type { BakeSettings } from './bakeSettings';

@@ -1,4 +1,4 @@
-import type { SurfaceName } from '../../core/model/lightingScene';
+import type { SurfaceName } from '../../core/model/lightingScene/lightingScene';
 import type { BakeReport } from './bakeJob';
 import type { BakeSettings } from './bakeSettings';
 import type { FluxRecord } from './fluxRecord';

@@ -1,4 +1,4 @@
-import { SURFACE_NAMES, type LightingLuminaire, type NearField, type Rgb, type SurfaceName } from '../../core/model/lightingScene';
+import { SURFACE_NAMES, type LightingLuminaire, type NearField, type Rgb, type SurfaceName } from '../../core/model/lightingScene/lightingScene';
 import type { Photometry } from '../../core/photometry/types';
 import type { MeshPlacement } from '../../core/mesh/placeMesh';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';

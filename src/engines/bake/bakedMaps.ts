@@ -1,5 +1,5 @@
-import type { Rgb, SurfaceName } from '../../core/model/lightingScene';
-import { SURFACE_NAMES } from '../../core/model/lightingScene';
+import type { Rgb, SurfaceName } from '../../core/model/lightingScene/lightingScene';
+import { SURFACE_NAMES } from '../../core/model/lightingScene/lightingScene';
 import type { SurfaceLayout } from './surfaceLayout';
 import type { ObjectAtlas } from './objects/preparedObjects';
 

@@ -1,4 +1,4 @@
-import type { Rgb } from '../../core/model/lightingScene';
+import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 import { LUMINANCE_WEIGHTS } from './bakedMaps';
 import type { SurfaceLayout } from './surfaceLayout';
 

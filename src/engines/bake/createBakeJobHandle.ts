@@ -1,4 +1,4 @@
-import type { SurfaceName } from '../../core/model/lightingScene';
+import type { SurfaceName } from '../../core/model/lightingScene/lightingScene';
 import type { BakedMaps } from './bakedMaps';
 import type { BakeJob, BakeProgress, DirectMaps } from './bakeJob';
 import type { BakeJobTargets } from './bakeJobTargets';

@@ -1,4 +1,4 @@
-import type { SurfaceName } from '../../core/model/lightingScene';
+import type { SurfaceName } from '../../core/model/lightingScene/lightingScene';
 import type { BakeScene } from './bakeScene';
 import { resolveBakeSettings, type BakeSettings } from './bakeSettings';
 import type { Baker, GivenObjectDirect } from './bakeJob';

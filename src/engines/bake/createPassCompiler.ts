@@ -1,4 +1,4 @@
-import type { SurfaceName } from '../../core/model/lightingScene';
+import type { SurfaceName } from '../../core/model/lightingScene/lightingScene';
 import type { FragmentPass, UniformSpec } from '../../../shaders/fragmentPass.glsl';
 import type { BakeReport } from './bakeJob';
 import { getProgram } from './glResources';

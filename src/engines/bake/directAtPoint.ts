@@ -1,4 +1,4 @@
-import type { Rgb, Vec3 } from '../../core/model/lightingScene';
+import type { Rgb, Vec3 } from '../../core/model/lightingScene/lightingScene';
 import { intensity } from '../../core/photometry/intensity';
 import { photometricAngles, transpose, applyMat3 } from './luminaireRotation';
 import type { LampSources } from './scenePointSources';

@@ -1,4 +1,4 @@
-import type { Rgb } from '../../core/model/lightingScene';
+import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 import type { blurPass } from '../../../shaders/blurPass.glsl';
 import type { chartBlurPass } from '../../../shaders/chartBlurPass.glsl';
 import type { chartDilatePass } from '../../../shaders/chartDilatePass.glsl';

@@ -1,4 +1,4 @@
-import type { Rgb } from '../../core/model/lightingScene';
+import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 import { LUMINANCE_WEIGHTS } from './bakedMaps';
 
 /** Per recorded map set: flux-weighted reflectance per channel and the photometric flux (lm). */

@@ -1,4 +1,4 @@
-import type { Rgb } from '../../core/model/lightingScene';
+import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 import { fluxRatioPass, reduceSumPass, REDUCE_GRID } from '../../../shaders/fluxReduce.glsl';
 import { objectFluxRatioPass, objectReduceSumPass } from '../../../shaders/objectFluxReduce.glsl';
 import { LUMINANCE_WEIGHTS } from './bakedMaps';

@@ -1,4 +1,4 @@
-import type { Rgb, Vec3 } from '../../core/model/lightingScene';
+import type { Rgb, Vec3 } from '../../core/model/lightingScene/lightingScene';
 import { fragmentPass, type FragmentPass, type UniformSpec, type UniformType } from '../../../shaders/fragmentPass.glsl';
 import { objectTracing } from '../../../shaders/objectTracing.glsl';
 import { profileLookup } from '../../../shaders/profileLookup.glsl';

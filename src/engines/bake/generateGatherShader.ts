@@ -1,4 +1,4 @@
-import { SURFACE_NAMES, type Rgb, type Vec3 } from '../../core/model/lightingScene';
+import { SURFACE_NAMES, type Rgb, type Vec3 } from '../../core/model/lightingScene/lightingScene';
 import { fragmentPass, type FragmentPass } from '../../../shaders/fragmentPass.glsl';
 import { objectTracing, SURFACE_OFFSET } from '../../../shaders/objectTracing.glsl';
 import { rayBox } from '../../../shaders/rayBox.glsl';

@@ -1,4 +1,4 @@
-import type { Vec3 } from '../../core/model/lightingScene';
+import type { Vec3 } from '../../core/model/lightingScene/lightingScene';
 import type { Mat3 } from './luminaireRotation';
 
 /** A GLSL float literal with float32-sufficient precision (9 significant digits). */

@@ -1,4 +1,4 @@
-import type { Vec3 } from '../../core/model/lightingScene';
+import type { Vec3 } from '../../core/model/lightingScene/lightingScene';
 import type { Mat3 } from './luminaireRotation';
 import { applyMat3 } from './luminaireRotation';
 import type { SurfaceLayout } from './surfaceLayout';

@@ -1,5 +1,5 @@
 import { degreesToRadians } from '../../core/degreesToRadians';
-import type { Vec3 } from '../../core/model/lightingScene';
+import type { Vec3 } from '../../core/model/lightingScene/lightingScene';
 
 /** Row-major 3×3 matrix. */
 export type Mat3 = [number, number, number, number, number, number, number, number, number];

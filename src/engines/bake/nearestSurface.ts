@@ -1,4 +1,4 @@
-import { SURFACE_NAMES, type SurfaceName, type Vec3 } from '../../core/model/lightingScene';
+import { SURFACE_NAMES, type SurfaceName, type Vec3 } from '../../core/model/lightingScene/lightingScene';
 import { SURFACE_FRAMES } from './surfaceLayout';
 
 /** The surface nearest to a point and the distance to its plane (∞ outside the room's footprint on that plane). */

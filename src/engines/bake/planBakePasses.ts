@@ -1,4 +1,4 @@
-import type { Rgb, Vec3 } from '../../core/model/lightingScene';
+import type { Rgb, Vec3 } from '../../core/model/lightingScene/lightingScene';
 import type { FragmentPass } from '../../../shaders/fragmentPass.glsl';
 import { blurPass } from '../../../shaders/blurPass.glsl';
 import { combinePass } from '../../../shaders/combinePass.glsl';

@@ -1,6 +1,6 @@
-import { SURFACE_NAMES, type Rgb, type SurfaceName, type Vec3 } from '../../core/model/lightingScene';
+import { SURFACE_NAMES, type Rgb, type SurfaceName, type Vec3 } from '../../core/model/lightingScene/lightingScene';
 import { InputError } from '../../core/inputError';
-import { OBJECT_ROOM_TOLERANCE } from '../../core/model/parseLightingScene';
+import { OBJECT_ROOM_TOLERANCE } from '../../core/model/lightingScene/parseLightingScene';
 import { toRgb, type BakeScene } from './bakeScene';
 import type { BakeSettings } from './bakeSettings';
 import { createDataTexture } from './createDataTexture';

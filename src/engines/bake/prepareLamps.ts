@@ -1,4 +1,4 @@
-import type { NearField } from '../../core/model/lightingScene';
+import type { NearField } from '../../core/model/lightingScene/lightingScene';
 import type { Photometry } from '../../core/photometry/types';
 import type { BakeScene } from './bakeScene';
 import type { DirectLamp } from './generateDirectShader';

@@ -1,4 +1,4 @@
-import type { SurfaceName, Vec3 } from '../../core/model/lightingScene';
+import type { SurfaceName, Vec3 } from '../../core/model/lightingScene/lightingScene';
 import { LUMINANCE_WEIGHTS, type BakedMaps } from './bakedMaps';
 import { bilinearLux } from './bilinearMap';
 import { nearestSurface } from './nearestSurface';

@@ -1,4 +1,4 @@
-import type { Rgb } from '../../core/model/lightingScene';
+import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 import { tileSumPass } from '../../../shaders/tileSumPass.glsl';
 import { LUMINANCE_WEIGHTS } from './bakedMaps';
 import { readRgba, type FloatTarget } from './floatTarget';

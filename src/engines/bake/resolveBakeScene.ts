@@ -1,10 +1,10 @@
 import { InputError } from '../../core/inputError';
-import type { LightingScene } from '../../core/model/lightingScene';
+import type { LightingScene } from '../../core/model/lightingScene/lightingScene';
 import type { Photometry } from '../../core/photometry/types';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
 import { positionBounds } from '../../core/mesh/triangleMesh';
 import { firstNonFiniteVertex, placedPositions } from '../../core/mesh/placeMesh';
-import { OBJECT_ROOM_TOLERANCE } from '../../core/model/parseLightingScene';
+import { OBJECT_ROOM_TOLERANCE } from '../../core/model/lightingScene/parseLightingScene';
 import type { BakeLuminaire, BakeObject, BakeScene } from './bakeScene';
 
 /** Loads an object's mesh by the path the scene gives (Node: an OBJ/glTF file relative to the scene file; the app: `object:<id>`). */

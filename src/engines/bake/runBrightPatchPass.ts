@@ -1,4 +1,4 @@
-import type { Rgb } from '../../core/model/lightingScene';
+import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 import { brightGatherPass } from '../../../shaders/brightGatherPass.glsl';
 import { occludedBrightGatherPass } from '../../../shaders/occludedBrightGatherPass.glsl';
 import { residualPass } from '../../../shaders/residualPass.glsl';

@@ -1,4 +1,4 @@
-import type { SurfaceName } from '../../core/model/lightingScene';
+import type { SurfaceName } from '../../core/model/lightingScene/lightingScene';
 import type { BakeJobTargets } from './bakeJobTargets';
 import type { CompilePass } from './createPassCompiler';
 import { clearTarget, uploadRgb } from './floatTarget';

@@ -1,4 +1,4 @@
-import type { NearField, Rgb, Vec3 } from '../../core/model/lightingScene';
+import type { NearField, Rgb, Vec3 } from '../../core/model/lightingScene/lightingScene';
 import type { Photometry } from '../../core/photometry/types';
 import { tiltMultiplier } from '../../core/photometry/tilt';
 import type { BakeScene } from './bakeScene';

@@ -1,4 +1,4 @@
-import type { SurfaceName } from '../../core/model/lightingScene';
+import type { SurfaceName } from '../../core/model/lightingScene/lightingScene';
 import { blurPass } from '../../../shaders/blurPass.glsl';
 import { chartBlurPass } from '../../../shaders/chartBlurPass.glsl';
 import { chartDilatePass } from '../../../shaders/chartDilatePass.glsl';

@@ -1,4 +1,4 @@
-import { SURFACE_NAMES, type SurfaceName, type Vec3 } from '../../core/model/lightingScene';
+import { SURFACE_NAMES, type SurfaceName, type Vec3 } from '../../core/model/lightingScene/lightingScene';
 
 /**
  * How one room surface maps to its light-map texture. Texel (i, j) has its

@@ -1,4 +1,4 @@
-import type { Rgb } from '../../core/model/lightingScene';
+import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 
 /**
  * Tail of the bounce series (ρ → 1), per channel. In a closed box every

@@ -1,5 +1,5 @@
 import { InputError } from '../../core/inputError';
-import { oneLine } from '../../core/model/untrustedJson';
+import { oneLine } from '../../core/untrustedJson';
 
 /**
  * An importer's InputError as one line of at most 200 characters (the product's bound on every

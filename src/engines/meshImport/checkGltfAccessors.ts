@@ -1,4 +1,4 @@
-import { excerpt } from '../../core/model/untrustedJson';
+import { excerpt } from '../../core/untrustedJson';
 import { formatCount } from './triangleBudget';
 
 type Json = Record<string, unknown>;

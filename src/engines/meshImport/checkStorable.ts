@@ -1,6 +1,6 @@
 import { InputError } from '../../core/inputError';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
-import { MAX_STORED_MESH_CHARS, storedMeshChars } from '../../core/model/storedMeshSize';
+import { MAX_STORED_MESH_CHARS, storedMeshChars } from '../../core/model/files/storedMeshSize';
 import { formatCount } from './triangleBudget';
 
 /**

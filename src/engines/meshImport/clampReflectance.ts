@@ -1,4 +1,4 @@
-import type { Rgb } from '../../core/model/lightingScene';
+import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 
 /**
  * Largest reflectance an imported colour becomes. Exporters write white as Kd 1 or base colour 1,

@@ -1,4 +1,4 @@
-import type { Rgb } from '../../core/model/lightingScene';
+import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 
 /** Grey of a material no file defines (missing MTL, undefined `usemtl`, glTF primitive without material): docs/scene-format.md. */
 export const DEFAULT_REFLECTANCE: Rgb = [0.5, 0.5, 0.5];

@@ -1,8 +1,8 @@
 import type { Material } from 'three';
 import { GLTFLoader, type GLTF } from 'three/examples/jsm/loaders/GLTFLoader.js';
 import { InputError } from '../../core/inputError';
-import { oneLine } from '../../core/model/untrustedJson';
-import type { Rgb } from '../../core/model/lightingScene';
+import { oneLine } from '../../core/untrustedJson';
+import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 import { clampReflectance } from './clampReflectance';
 import { collectTriangles, type ImportMaterial } from './collectTriangles';
 import { finishImport, type ImportedMesh, type MeshFile, type MeshImportOptions } from './importedMesh';

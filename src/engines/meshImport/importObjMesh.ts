@@ -1,8 +1,8 @@
 import { OBJLoader } from 'three/examples/jsm/loaders/OBJLoader.js';
 import type { Group, Material } from 'three';
 import { InputError } from '../../core/inputError';
-import { oneLine } from '../../core/model/untrustedJson';
-import type { Rgb } from '../../core/model/lightingScene';
+import { oneLine } from '../../core/untrustedJson';
+import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 import { boundedMessage } from './boundedMessage';
 import { checkByteCap, MODEL_BYTE_CAPS } from './byteCaps';
 import { collectTriangles } from './collectTriangles';

@@ -1,4 +1,4 @@
-import { MAX_STORED_NAME_LENGTH } from '../../core/model/storedMeshSize';
+import { MAX_STORED_NAME_LENGTH } from '../../core/model/files/storedMeshSize';
 import { shortName } from './readMtlMaterials';
 
 /**

@@ -1,5 +1,5 @@
 import { InputError } from '../../core/inputError';
-import { excerpt, jsonShapeProblem, oneLine } from '../../core/model/untrustedJson';
+import { excerpt, jsonShapeProblem, oneLine } from '../../core/untrustedJson';
 import { decodeText } from './decodeText';
 import { findFile } from './findFile';
 import type { MeshFile, MeshImportOptions } from './importedMesh';

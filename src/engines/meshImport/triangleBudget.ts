@@ -1,5 +1,5 @@
 import { InputError } from '../../core/inputError';
-import { MAX_STORED_MESH_CHARS, MIN_STORED_CHARS_PER_TRIANGLE } from '../../core/model/storedMeshSize';
+import { MAX_STORED_MESH_CHARS, MIN_STORED_CHARS_PER_TRIANGLE } from '../../core/model/files/storedMeshSize';
 
 /**
  * Most triangles an imported model may have: what a saved configuration can hold at the fewest

@@ -1,4 +1,4 @@
-import type { NearField } from '../../core/model/lightingScene';
+import type { NearField } from '../../core/model/lightingScene/lightingScene';
 import type { BakeScene } from '../bake/bakeScene';
 import { EXPORT_GRIDS, GRID_SPACING, EXPORT_VIEWS, IMAGE_SIZE, LUX_EXPRESSION, RPICT_SETTINGS, RTRACE_SETTINGS } from './renderScript';
 import { SOURCE_RADIUS } from './luminairesRad';

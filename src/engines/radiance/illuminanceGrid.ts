@@ -1,4 +1,4 @@
-import type { Vec3 } from '../../core/model/lightingScene';
+import type { Vec3 } from '../../core/model/lightingScene/lightingScene';
 import { toRadiance, vecText } from './radianceFrame';
 
 /** Points of a horizontal plane at `height`, cell centres of a grid of about `spacing` metres, in luxbox's world. */

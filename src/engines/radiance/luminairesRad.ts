@@ -1,4 +1,4 @@
-import type { Vec3 } from '../../core/model/lightingScene';
+import type { Vec3 } from '../../core/model/lightingScene/lightingScene';
 import type { Photometry } from '../../core/photometry/types';
 import type { BakeScene } from '../bake/bakeScene';
 import type { LampSources } from '../bake/scenePointSources';

@@ -1,4 +1,4 @@
-import type { Vec3 } from '../../core/model/lightingScene';
+import type { Vec3 } from '../../core/model/lightingScene/lightingScene';
 
 /**
  * luxbox's world (y up, docs/scene-format.md "Units and frames") in Radiance's frame (z up):

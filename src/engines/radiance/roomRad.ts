@@ -1,4 +1,4 @@
-import type { Rgb, SurfaceName, Vec3 } from '../../core/model/lightingScene';
+import type { Rgb, SurfaceName, Vec3 } from '../../core/model/lightingScene/lightingScene';
 import { toRgb, type BakeScene } from '../bake/bakeScene';
 import { num, toRadiance, vecText } from './radianceFrame';
 

@@ -1,4 +1,4 @@
-import type { Vec3 } from '../../core/model/lightingScene';
+import type { Vec3 } from '../../core/model/lightingScene/lightingScene';
 import type { CameraPose } from '../view/cameraPresets';
 import { num, toRadiance, vecText } from './radianceFrame';
 

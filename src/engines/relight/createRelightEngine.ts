@@ -4,7 +4,7 @@ import { resolveBakeSettings } from '../bake/bakeSettings';
 import { createBaker } from '../bake/createBaker';
 import { surfaceLayouts, type SurfaceLayout } from '../bake/surfaceLayout';
 import type { ObjectAtlas } from '../bake/objects/preparedObjects';
-import type { Rgb } from '../../core/model/lightingScene';
+import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 import { createDirectBasisQueue } from './directBasisQueue';
 import { engineProgress } from './engineProgress';
 import { type GroupState, blendWeights, reconcileGroups, weightedBases, weightsKey } from './groupState';

@@ -1,4 +1,4 @@
-import type { Rgb } from '../../core/model/lightingScene';
+import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 import type { LuminaireGroup } from './luminaireGroups';
 import type { DirectBasis, WeightedBasis } from './relightMaps';
 

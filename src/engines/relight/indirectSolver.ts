@@ -1,4 +1,4 @@
-import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../core/model/lightingScene';
+import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../core/model/lightingScene/lightingScene';
 import type { BakeSettings } from '../bake/bakeSettings';
 import type { BakeJob } from '../bake/createBaker';
 import type { IndirectSolution } from './relightMaps';

@@ -1,4 +1,4 @@
-import type { Rgb } from '../../core/model/lightingScene';
+import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 import { indirectScale, weightedFlux } from './reflectedFlux';
 import type { IndirectSolution, IndirectTerm, WeightedBasis } from './relightMaps';
 import type { SolutionCache } from './solutionCache';

@@ -1,5 +1,5 @@
 import type { BakeLuminaire, BakeScene } from '../bake/bakeScene';
-import type { Rgb } from '../../core/model/lightingScene';
+import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 import type { Photometry } from '../../core/photometry/types';
 
 /**

@@ -1,4 +1,4 @@
-import type { Rgb, SurfaceName } from '../../core/model/lightingScene';
+import type { Rgb, SurfaceName } from '../../core/model/lightingScene/lightingScene';
 import type { SurfaceLayout } from '../bake/surfaceLayout';
 import { texelArea } from '../bake/surfaceLayout';
 import type { ObjectAtlas } from '../bake/objects/preparedObjects';

@@ -1,4 +1,4 @@
-import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../core/model/lightingScene';
+import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../core/model/lightingScene/lightingScene';
 import type { DirectMaps } from '../bake/bakeJob';
 import type { SurfaceLayout } from '../bake/surfaceLayout';
 import type { ObjectAtlas } from '../bake/objects/preparedObjects';

@@ -6,7 +6,7 @@
  * rebaking"). The configuration is not involved: it stays as it was.
  */
 import { cctToLinearRgb } from '../../core/photometry/cct';
-import type { Rgb } from '../../core/model/lightingScene';
+import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 import type { BakeScene } from '../bake/bakeScene';
 import type { LiveLevel } from './liveLevels';
 

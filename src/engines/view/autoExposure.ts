@@ -1,6 +1,6 @@
 import { LUMINANCE_WEIGHTS } from '../bake/bakedMaps';
 import { texelArea } from '../bake/surfaceLayout';
-import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../core/model/lightingScene';
+import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../core/model/lightingScene/lightingScene';
 import type { LitMaps } from '../relight/relightMaps';
 import type { ObjectLight } from './objectLight';
 

@@ -1,6 +1,6 @@
 import { InputError } from '../../core/inputError';
-import type { Vec3 } from '../../core/model/lightingScene';
-import { unknownFieldMessage } from '../../core/model/untrustedJson';
+import type { Vec3 } from '../../core/model/lightingScene/lightingScene';
+import { unknownFieldMessage } from '../../core/zodIssues';
 
 export interface CameraPose {
   position: Vec3;

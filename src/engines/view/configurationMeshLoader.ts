@@ -1,8 +1,8 @@
 import { InputError } from '../../core/inputError';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
-import type { Configuration } from '../../core/model/configuration';
-import { objectMesh } from '../../core/model/objectGeometry';
-import { OBJECT_MESH_PREFIX } from '../../core/model/toLightingScene';
+import type { Configuration } from '../../core/model/configuration/configuration';
+import { objectMesh } from '../../core/model/objects/objectGeometry';
+import { OBJECT_MESH_PREFIX } from '../../core/model/files/toLightingScene';
 
 /**
  * The app's mesh loader for resolveBakeScene: a configuration's lighting scene names each object's

@@ -1,5 +1,5 @@
 import type { BakeScene } from '../bake/bakeScene';
-import type { Rgb } from '../../core/model/lightingScene';
+import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 import { resolveBakeSettings, type BakeSettings } from '../bake/bakeSettings';
 import type { PreparedObjects } from '../bake/objects/preparedObjects';
 import type { EngineProgress, RelightEngine } from '../relight/RelightEngine';

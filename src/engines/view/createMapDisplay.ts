@@ -1,4 +1,4 @@
-import type { Rgb, SurfaceName } from '../../core/model/lightingScene';
+import type { Rgb, SurfaceName } from '../../core/model/lightingScene/lightingScene';
 import type { LitMaps } from '../relight/relightMaps';
 import { DEFAULT_ADAPTATION, type AdaptationSetting } from './adaptationSetting';
 import type { Vec3 } from './colourMatrices';

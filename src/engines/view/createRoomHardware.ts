@@ -1,5 +1,5 @@
 import * as THREE from 'three';
-import type { Rgb } from '../../core/model/lightingScene';
+import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 import { luminaireFragment, luminaireVertex } from '../../../shaders/luminaireShading.glsl';
 import type { SharedDisplayUniforms } from './createRoomSurfaces';
 import type { FixtureModule, Fixtures } from './fixtures';

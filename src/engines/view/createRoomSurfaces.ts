@@ -1,5 +1,5 @@
 import * as THREE from 'three';
-import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../core/model/lightingScene';
+import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../core/model/lightingScene/lightingScene';
 import { roomSurfaceFragment, roomSurfaceVertex } from '../../../shaders/roomSurface.glsl';
 import type { SurfaceLayout } from '../bake/surfaceLayout';
 import type { LitMaps } from '../relight/relightMaps';

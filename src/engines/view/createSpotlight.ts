@@ -8,10 +8,10 @@
  */
 import * as THREE from 'three';
 import type { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
-import { aimAxis, aimedOrientation, type AimLimits } from '../../core/model/aim';
-import { coneRoomOutline, type RoomBox } from '../../core/model/coneOutline';
-import type { ModuleAim } from '../../core/model/configuration';
-import type { Rgb, Vec3 } from '../../core/model/lightingScene';
+import { aimAxis, aimedOrientation, type AimLimits } from '../../core/model/modules/aim';
+import { coneRoomOutline, type RoomBox } from '../../core/model/modules/coneOutline';
+import type { ModuleAim } from '../../core/model/configuration/configuration';
+import type { Rgb, Vec3 } from '../../core/model/lightingScene/lightingScene';
 import { beamAndField } from '../../core/photometry/beam';
 import type { Photometry } from '../../core/photometry/types';
 import type { BakeScene } from '../bake/bakeScene';

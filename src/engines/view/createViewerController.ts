@@ -18,8 +18,8 @@ import { watchContextLoss } from './watchContextLoss';
 import type { PreparedObjects } from '../bake/objects/preparedObjects';
 import { watchTaps } from './watchTaps';
 import { beamAndFieldDeg, createSpotlight, withoutModule, type SpotlightRequest } from './createSpotlight';
-import type { ModuleAim } from '../../core/model/configuration';
-import type { Vec3 } from '../../core/model/lightingScene';
+import type { ModuleAim } from '../../core/model/configuration/configuration';
+import type { Vec3 } from '../../core/model/lightingScene/lightingScene';
 
 export interface ViewerEvents {
   /** Bake progress and counters changed. */

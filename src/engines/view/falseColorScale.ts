@@ -1,4 +1,4 @@
-import type { Rgb } from '../../core/model/lightingScene';
+import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 
 /** At most this many legend levels (the shader's uniform array size). */
 export const MAX_LEVELS = 10;

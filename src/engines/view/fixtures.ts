@@ -1,9 +1,9 @@
-import { aimedOrientation } from '../../core/model/aim';
-import { findBeam, findModuleType, type Catalog } from '../../core/model/catalogSchema';
-import type { Configuration } from '../../core/model/configuration';
-import { modulePlacements, railPlacements, systemElementTree, type PlanRect } from '../../core/model/geometry';
-import type { LightingScene, Rgb, Vec3 } from '../../core/model/lightingScene';
-import { moduleHeight, suspensionPoints } from '../../core/model/suspensionPoints';
+import { aimedOrientation } from '../../core/model/modules/aim';
+import { findBeam, findModuleType, type Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import type { Configuration } from '../../core/model/configuration/configuration';
+import { modulePlacements, railPlacements, systemElementTree, type PlanRect } from '../../core/model/rails/geometry';
+import type { LightingScene, Rgb, Vec3 } from '../../core/model/lightingScene/lightingScene';
+import { moduleHeight, suspensionPoints } from '../../core/model/rails/suspensionPoints';
 import type { Photometry } from '../../core/photometry/types';
 import type { BakeLuminaire } from '../bake/bakeScene';
 import { modelHeight } from './luminaires/luminaireDimensions';

@@ -4,7 +4,7 @@ import { bilinearRgb } from '../bake/bilinearMap';
 import { resolveBakeSettings, type BakeSettings } from '../bake/bakeSettings';
 import { directAtPoint } from '../bake/directAtPoint';
 import { scenePointSources } from '../bake/scenePointSources';
-import type { Vec3 } from '../../core/model/lightingScene';
+import type { Vec3 } from '../../core/model/lightingScene/lightingScene';
 import type { LitMaps } from '../relight/relightMaps';
 import { createObjectRayCaster } from '../bake/objects/createObjectRayCaster';
 import type { PreparedObjects } from '../bake/objects/preparedObjects';

@@ -5,9 +5,9 @@
  * not patched, or whose universe has sent nothing yet, are left out and keep
  * the configuration's own dimming.
  */
-import { findModuleType, type Catalog } from '../../core/model/catalogSchema';
-import type { Configuration } from '../../core/model/configuration';
-import { cctChannelValue, cctFromChannel, decodeLevel, patchedModules } from '../../core/model/dmxPatch';
+import { findModuleType, type Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import type { Configuration } from '../../core/model/configuration/configuration';
+import { cctChannelValue, cctFromChannel, decodeLevel, patchedModules } from '../../core/model/modules/dmxPatch';
 
 export interface LiveLevel {
   /** 0..1, replaces the module's dimming while live control is on. */

@@ -1,5 +1,5 @@
 import { LUMINANCE_WEIGHTS } from '../bake/bakedMaps';
-import { SURFACE_NAMES } from '../../core/model/lightingScene';
+import { SURFACE_NAMES } from '../../core/model/lightingScene/lightingScene';
 import type { LitMaps } from '../relight/relightMaps';
 import { texelArea } from '../bake/surfaceLayout';
 import type { ObjectLight } from './objectLight';

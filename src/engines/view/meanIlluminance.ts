@@ -1,4 +1,4 @@
-import { SURFACE_NAMES, type Rgb } from '../../core/model/lightingScene';
+import { SURFACE_NAMES, type Rgb } from '../../core/model/lightingScene/lightingScene';
 import type { LitMaps } from '../relight/relightMaps';
 
 /**

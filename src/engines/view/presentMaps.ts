@@ -1,4 +1,4 @@
-import type { Rgb, SurfaceName } from '../../core/model/lightingScene';
+import type { Rgb, SurfaceName } from '../../core/model/lightingScene/lightingScene';
 import type { LitMaps } from '../relight/relightMaps';
 import { autoExposure } from './autoExposure';
 import { adaptationFor, adaptingLuminance, type Adaptation } from './chromaticAdaptation';

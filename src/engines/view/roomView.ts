@@ -1,6 +1,6 @@
 import * as THREE from 'three';
 import type { Mat3 } from './colourMatrices';
-import { SURFACE_NAMES, type Rgb, type SurfaceName, type Vec3 } from '../../core/model/lightingScene';
+import { SURFACE_NAMES, type Rgb, type SurfaceName, type Vec3 } from '../../core/model/lightingScene/lightingScene';
 import type { LitMaps } from '../relight/relightMaps';
 import type { CameraPose } from './cameraPresets';
 import type { PreparedObjects } from '../bake/objects/preparedObjects';

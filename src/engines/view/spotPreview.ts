@@ -9,7 +9,7 @@
 import * as THREE from 'three';
 import { intensity } from '../../core/photometry/intensity';
 import type { Photometry } from '../../core/photometry/types';
-import type { Rgb, Vec3 } from '../../core/model/lightingScene';
+import type { Rgb, Vec3 } from '../../core/model/lightingScene/lightingScene';
 
 /** Samples of the candela texture: C every 2.5° over 0…360 (inclusive), γ every 0.25° over 0…180. */
 export const CANDELA_C_SAMPLES = 145;

@@ -4,9 +4,9 @@
  * tilt grows, so dragging up tilts the head further out and dragging sideways pans it, as the
  * theatre report's focusing view turns the instrument under the mouse.
  */
-import { aimAxis, clampAim, type AimLimits } from '../../core/model/aim';
-import type { ModuleAim } from '../../core/model/configuration';
-import type { Vec3 } from '../../core/model/lightingScene';
+import { aimAxis, clampAim, type AimLimits } from '../../core/model/modules/aim';
+import type { ModuleAim } from '../../core/model/configuration/configuration';
+import type { Vec3 } from '../../core/model/lightingScene/lightingScene';
 
 const DEG = Math.PI / 180;
 

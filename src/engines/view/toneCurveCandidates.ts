@@ -1,4 +1,4 @@
-import type { Rgb } from '../../core/model/lightingScene';
+import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 
 /**
  * The tone curves the viewer's AgX (toneMap.ts) was measured against (docs/viewer.md, "Choosing

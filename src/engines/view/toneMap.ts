@@ -1,4 +1,4 @@
-import type { Rgb } from '../../core/model/lightingScene';
+import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 import { IDENTITY3 } from './cat16';
 import { mulVec3, type Mat3 } from './colourMatrices';
 

@@ -1,7 +1,7 @@
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { SURFACE_NAMES, type LightingScene, type SurfaceName, type Vec3 } from '../../core/model/lightingScene';
-import { furnitureMesh } from '../../core/model/furniture/furnitureLibrary';
+import { SURFACE_NAMES, type LightingScene, type SurfaceName, type Vec3 } from '../../core/model/lightingScene/lightingScene';
+import { furnitureMesh } from '../../core/model/objects/furniture/furnitureLibrary';
 import { parsePhotometry } from '../../core/photometry/parsePhotometry';
 import type { Photometry } from '../../core/photometry/types';
 import type { BakeObject } from '../../engines/bake/bakeScene';

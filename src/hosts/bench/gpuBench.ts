@@ -9,7 +9,7 @@ import { join } from 'node:path';
 import type { BakeScene } from '../../engines/bake/bakeScene';
 import type { BakeSettings } from '../../engines/bake/bakeSettings';
 import { createBaker } from '../../engines/bake/createBaker';
-import { SURFACE_NAMES, type SurfaceName } from '../../core/model/lightingScene';
+import { SURFACE_NAMES, type SurfaceName } from '../../core/model/lightingScene/lightingScene';
 import { createHeadlessGL } from '../node/createHeadlessGL';
 import { createFluxStatistics } from '../../engines/bake/fluxStatistics';
 import { surfaceLayouts } from '../../engines/bake/surfaceLayout';

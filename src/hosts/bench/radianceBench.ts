@@ -6,7 +6,7 @@ import { probeScene } from '../../engines/bake/probeMaps';
 import { SURFACE_FRAMES } from '../../engines/bake/surfaceLayout';
 import { exportRadiance } from '../../engines/radiance/exportRadiance';
 import { toRadiance, vecText } from '../../engines/radiance/radianceFrame';
-import type { Vec3 } from '../../core/model/lightingScene';
+import type { Vec3 } from '../../core/model/lightingScene/lightingScene';
 import { sampleReference } from '../../reference/sampleReference';
 import { solveBoxReference } from '../../reference/solveBoxReference';
 import { createHeadlessGL } from '../node/createHeadlessGL';

@@ -2,7 +2,7 @@ import { join } from 'node:path';
 import { createBaker, type Baker } from '../../engines/bake/createBaker';
 import { probeMaps, probeScene } from '../../engines/bake/probeMaps';
 import { SURFACE_FRAMES } from '../../engines/bake/surfaceLayout';
-import { SURFACE_NAMES, type SurfaceName, type Vec3 } from '../../core/model/lightingScene';
+import { SURFACE_NAMES, type SurfaceName, type Vec3 } from '../../core/model/lightingScene/lightingScene';
 import type { Photometry } from '../../core/photometry/types';
 import { createHeadlessGL } from '../node/createHeadlessGL';
 import { loadLightingSceneFile, type LoadedLightingScene } from '../node/loadLightingSceneFile';

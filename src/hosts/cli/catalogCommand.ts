@@ -5,8 +5,8 @@ import { formatImportReport } from '../../core/gldf/gldfImportReport';
 import { parseGldfMapping, type GldfMapping } from '../../core/gldf/gldfMapping';
 import { importGldfCatalog, type GldfInput } from '../../core/gldf/importGldfCatalog';
 import { UPLOAD_LIMITS } from '../../core/gldf/uploadLimits';
-import { parseCatalogText } from '../../core/model/catalogSchema';
-import { INPUT_LIMITS } from '../../core/model/untrustedJson';
+import { parseCatalogText } from '../../core/model/catalogSchema/catalogSchema';
+import { INPUT_LIMITS } from '../../core/untrustedJson';
 import { MAX_PHOTOMETRY_BYTES } from '../../core/photometry';
 import { readRegularFile } from '../node/readRegularFile';
 

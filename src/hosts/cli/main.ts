@@ -1,5 +1,5 @@
 import { InputError } from '../../core/inputError';
-import { oneLine } from '../../core/model/untrustedJson';
+import { oneLine } from '../../core/untrustedJson';
 import { loadColourFilterSpectra } from '../../core/colour/colourFilterSpectra';
 
 /** A subcommand: receives the arguments after its name, returns the exit code. */

@@ -1,7 +1,7 @@
 import { basename } from 'node:path';
 import { z } from 'zod';
 import { InputError } from '../../core/inputError';
-import type { Vec3 } from '../../core/model/lightingScene';
+import type { Vec3 } from '../../core/model/lightingScene/lightingScene';
 import { nearestSurface } from '../../engines/bake/nearestSurface';
 import { parseBakeCli } from '../node/bakeCliOptions';
 import { createProbe } from '../node/createProbe';
@@ -9,9 +9,9 @@ import { bakeLoadedScene } from '../node/bakeSceneFile';
 import { resolveBakeSettings } from '../../engines/bake/bakeSettings';
 import { prepareGl } from '../node/prepareGl';
 import { loadLightingSceneFileAsync, parseJsonText } from '../node/loadLightingSceneFile';
-import { describeIssues } from '../../core/model/untrustedJson';
+import { describeIssues } from '../../core/zodIssues';
 import { cliReadableFolders } from '../node/cliReadableFolders';
-import { INPUT_LIMITS } from '../../core/model/untrustedJson';
+import { INPUT_LIMITS } from '../../core/untrustedJson';
 import { readRegularFile } from '../node/readRegularFile';
 
 export const probeUsage = 'probe <scene.json> <points.json> [--samples N --bounces N --texel m --gl vulkan|glx|auto] (points [x, y, z] on a surface or [x, y, z, nx, ny, nz])';

@@ -1,7 +1,7 @@
 import { existsSync, mkdirSync, statSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { InputError } from '../../core/inputError';
-import { oneLine } from '../../core/model/untrustedJson';
+import { oneLine } from '../../core/untrustedJson';
 import { parseCameraSpec } from '../../engines/view/cameraPresets';
 import { EV100_MAX, EV100_MIN } from '../../engines/view/photographicExposure';
 import { DEFAULT_ADAPTATION, formatAdaptation, parseAdaptation, type AdaptationSetting } from '../../engines/view/adaptationSetting';

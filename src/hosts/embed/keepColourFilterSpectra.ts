@@ -1,5 +1,5 @@
 import { colourFilterSpectraLoaded, loadColourFilterSpectra } from '../../core/colour/colourFilterSpectra';
-import { configurationFilterIds } from '../../core/model/moduleFilter';
+import { configurationFilterIds } from '../../core/model/modules/moduleFilter';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 
 /**

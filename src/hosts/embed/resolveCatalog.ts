@@ -1,6 +1,6 @@
 import { defaultCatalog } from '../../core/catalog/defaultCatalog';
 import { InputError } from '../../core/inputError';
-import { parseCatalog, type Catalog } from '../../core/model/catalogSchema';
+import { parseCatalog, type Catalog } from '../../core/model/catalogSchema/catalogSchema';
 import type { LuxboxOptions } from './types';
 
 /** Bad mount options (catalog, room, currency): the message names the option. */

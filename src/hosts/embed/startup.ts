@@ -1,11 +1,12 @@
-import type { Catalog } from '../../core/model/catalogSchema';
-import { createConfiguration, type Configuration } from '../../core/model/configuration';
-import { decodeShareString, deserializeConfiguration } from '../../core/model/sceneFile';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import { createConfiguration, type Configuration } from '../../core/model/configuration/configuration';
+import { deserializeConfiguration } from '../../core/model/files/sceneFile';
+import { decodeShareString } from '../../core/model/files/shareLink';
 import { codedText, InputError, type CodedText } from '../../core/inputError';
 import { firstImpression } from '../../ui/viewer/firstImpression';
 import type { UiMessage } from '../../core/store/uiStore';
 
-/** The URL hash prefix of a share link: `#c=<base64url scene file>` (src/core/model/sceneFile.ts). */
+/** The URL hash prefix of a share link: `#c=<base64url scene file>` (src/core/model/files/sceneFile.ts). */
 export const SHARE_HASH_PREFIX = '#c=';
 
 export interface StartupInput {

@@ -1,6 +1,6 @@
-import type { ActionName } from '../../core/model/actionDefinitions';
-import type { BillOfMaterials } from '../../core/model/billOfMaterials';
-import type { InstallationNeeds } from '../../core/model/installationNeeds';
+import type { ActionName } from '../../core/model/actions/actionDefinitions';
+import type { BillOfMaterials } from '../../core/model/power/billOfMaterials';
+import type { InstallationNeeds } from '../../core/model/power/installationNeeds';
 import type { ViewerStatus } from '../../ui/viewer/viewerStatus';
 import type { QualityLevel } from '../../engines/relight/qualityLevels';
 import type { Language } from '../../ui/i18n/languages';

@@ -1,4 +1,4 @@
-import type { BomLine } from '../../core/model/billOfMaterials';
+import type { BomLine } from '../../core/model/power/billOfMaterials';
 
 /** One line of the demo shop's cart: what the host copied out of getBillOfMaterials(). */
 export interface CartLine {

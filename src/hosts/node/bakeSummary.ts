@@ -1,5 +1,5 @@
 import type { OrientationSummary } from '../../core/mesh/orientMesh';
-import { SURFACE_NAMES, type SurfaceName } from '../../core/model/lightingScene';
+import { SURFACE_NAMES, type SurfaceName } from '../../core/model/lightingScene/lightingScene';
 import { luxOf, type BakedMaps } from '../../engines/bake/bakedMaps';
 import type { BakeReport } from '../../engines/bake/createBaker';
 import { texelArea } from '../../engines/bake/surfaceLayout';

@@ -1,6 +1,6 @@
 import { basename, dirname, resolve } from 'node:path';
 import { InputError } from '../../core/inputError';
-import { oneLine } from '../../core/model/untrustedJson';
+import { oneLine } from '../../core/untrustedJson';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
 import type { ImportedMesh, MeshFile } from '../../engines/meshImport/importedMesh';
 import { importMesh } from '../../engines/meshImport/importMesh';

@@ -1,4 +1,4 @@
-import type { Rgb, SurfaceName, Vec3 } from '../../core/model/lightingScene';
+import type { Rgb, SurfaceName, Vec3 } from '../../core/model/lightingScene/lightingScene';
 import { LUMINANCE_WEIGHTS, type BakedMaps } from '../../engines/bake/bakedMaps';
 import { toRgb, type BakeScene } from '../../engines/bake/bakeScene';
 import { resolveBakeSettings, type BakeSettings } from '../../engines/bake/bakeSettings';

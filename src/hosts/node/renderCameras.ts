@@ -1,6 +1,6 @@
 import { InputError } from '../../core/inputError';
 import { parseCameraSpec } from '../../engines/view/cameraPresets';
-import { INPUT_LIMITS } from '../../core/model/untrustedJson';
+import { INPUT_LIMITS } from '../../core/untrustedJson';
 import { readRegularFile } from './readRegularFile';
 
 /** One camera of a render: its name (the image file's suffix) and its spec (a preset name or pose JSON for parseCameraSpec). */

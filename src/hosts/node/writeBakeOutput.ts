@@ -1,11 +1,11 @@
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { InputError } from '../../core/inputError';
-import { SURFACE_NAMES } from '../../core/model/lightingScene';
+import { SURFACE_NAMES } from '../../core/model/lightingScene/lightingScene';
 import { luxOf, type BakedMaps } from '../../engines/bake/bakedMaps';
 import type { BakeReport } from '../../engines/bake/createBaker';
 import { reportJson, type ObjectSource } from './bakeSummary';
-import type { LightingObject } from '../../core/model/lightingScene';
+import type { LightingObject } from '../../core/model/lightingScene/lightingScene';
 import { writeObjectMaps } from './writeObjectMaps';
 import { falseColorPng } from './falseColorPng';
 import { writePfm } from './writePfm';

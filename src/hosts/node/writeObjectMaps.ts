@@ -1,6 +1,6 @@
 import { writeFileSync } from 'node:fs';
 import { join } from 'node:path';
-import type { LightingObject } from '../../core/model/lightingScene';
+import type { LightingObject } from '../../core/model/lightingScene/lightingScene';
 import { luxOf, type ObjectMaps } from '../../engines/bake/bakedMaps';
 import { falseColorPng } from './falseColorPng';
 import { encodePfmGrey, writePfm } from './writePfm';

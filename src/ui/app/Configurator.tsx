@@ -1,7 +1,7 @@
 import { useEffect, useState } from 'react';
 import { BrandMark } from '../shared/BrandMark';
 import { useStore } from 'zustand';
-import { createConfiguration } from '../../core/model/configuration';
+import { createConfiguration } from '../../core/model/configuration/configuration';
 import { firstImpression } from '../viewer/firstImpression';
 import { bakeHostOf } from '../viewer/bakeHost';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';

@@ -1,8 +1,8 @@
 import { useId, useState } from 'react';
 import { defaultSurfaceFinishes } from '../../core/catalog/surfaceFinishes';
-import { DEFAULT_REFLECTANCE, DEFAULT_ROOM, ROOM_LIMITS, withinRoomLimits } from '../../core/model/configuration';
-import type { Reflectance, SurfaceName } from '../../core/model/lightingScene';
-import { WALL_NAMES, sameReflectance, targetSurfaces, type SurfaceTarget } from '../../core/model/reflectance';
+import { DEFAULT_REFLECTANCE, DEFAULT_ROOM, ROOM_LIMITS, withinRoomLimits } from '../../core/model/configuration/configuration';
+import type { Reflectance, SurfaceName } from '../../core/model/lightingScene/lightingScene';
+import { WALL_NAMES, sameReflectance, targetSurfaces, type SurfaceTarget } from '../../core/model/lightingScene/reflectance';
 import { FinishSelect } from '../planner/FinishSelect';
 import { useI18n } from '../i18n/useI18n';
 import { ENGLISH } from '../i18n/english';

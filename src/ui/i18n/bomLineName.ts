@@ -1,5 +1,5 @@
-import type { BomLine } from '../../core/model/billOfMaterials';
-import type { Catalog } from '../../core/model/catalogSchema';
+import type { BomLine } from '../../core/model/power/billOfMaterials';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
 import type { Format } from './createFormat';
 import type { Language } from './languages';
 import { localLabel, localName } from './localName';

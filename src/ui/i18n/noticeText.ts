@@ -1,5 +1,5 @@
-import type { Catalog } from '../../core/model/catalogSchema';
-import { findFurnitureItem } from '../../core/model/furniture/furnitureLibrary';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import { findFurnitureItem } from '../../core/model/objects/furniture/furnitureLibrary';
 import { furnitureName } from './catalogNames';
 import { feedAtText } from './feedText';
 import type { Language } from './languages';

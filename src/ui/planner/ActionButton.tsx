@@ -1,7 +1,7 @@
 import type { CSSProperties, ReactNode } from 'react';
 import { useI18n } from '../i18n/useI18n';
 import { REFUSED_EVENT, type RefusedDetail } from './disabledTip';
-import type { ActionName } from '../../core/model/actionDefinitions';
+import type { ActionName } from '../../core/model/actions/actionDefinitions';
 
 export interface ActionButtonProps {
   /** Accessible name (also the visible label when no icon is given). */

@@ -1,7 +1,7 @@
 import './registerOptionsEnglish';
 import { useSyncExternalStore } from 'react';
-import type { Catalog } from '../../core/model/catalogSchema';
-import type { ModuleInstance } from '../../core/model/configuration';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import type { ModuleInstance } from '../../core/model/configuration/configuration';
 import { useI18n } from '../i18n/useI18n';
 import type { AimAtMode } from '../shared/aimAtMode';
 import type { ActionGate } from './actionGate';

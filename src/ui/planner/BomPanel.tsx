@@ -1,9 +1,9 @@
-import type { BillOfMaterials } from '../../core/model/billOfMaterials';
-import type { InstallationNeeds } from '../../core/model/installationNeeds';
-import { formatWatts } from '../../core/model/feedLoads';
+import type { BillOfMaterials } from '../../core/model/power/billOfMaterials';
+import type { InstallationNeeds } from '../../core/model/power/installationNeeds';
+import { formatWatts } from '../../core/model/power/feedLoads';
 import { useI18n } from '../i18n/useI18n';
 import { formatMoney } from './formatMoney';
-import type { Catalog } from '../../core/model/catalogSchema';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
 import { bomLineName } from '../i18n/bomLineName';
 
 export interface BomPanelProps {

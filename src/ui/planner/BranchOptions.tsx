@@ -1,7 +1,9 @@
 import './registerOptionsEnglish';
-import { connectorPorts, type Catalog, type ConnectorSpec } from '../../core/model/catalogSchema';
-import type { LightSystem, Rail } from '../../core/model/configuration';
-import { nodeJoints } from '../../core/model/railTree';
+import { type Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import { connectorPorts } from '../../core/model/catalogSchema/connectorTurns';
+import { type ConnectorSpec } from '../../core/model/catalogSchema/railSystemSchema';
+import type { LightSystem, Rail } from '../../core/model/configuration/configuration';
+import { nodeJoints } from '../../core/model/rails/railTree';
 import type { ActionGate } from './actionGate';
 import { GatedButton } from './GatedButton';
 import { OptionChips } from './OptionChips';

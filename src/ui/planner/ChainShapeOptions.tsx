@@ -1,7 +1,7 @@
 import './registerOptionsEnglish';
-import type { Catalog } from '../../core/model/catalogSchema';
-import type { LightSystem } from '../../core/model/configuration';
-import { suspensionCoordinates } from '../../core/model/suspensionPoints';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import type { LightSystem } from '../../core/model/configuration/configuration';
+import { suspensionCoordinates } from '../../core/model/rails/suspensionPoints';
 import type { ActionGate } from './actionGate';
 import { CommitField } from '../shared/CommitField';
 import { GatedButton } from './GatedButton';

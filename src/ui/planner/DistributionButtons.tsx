@@ -1,4 +1,4 @@
-import { DISTRIBUTIONS, type Distribution } from '../../core/model/catalogSchema';
+import { DISTRIBUTIONS, type Distribution } from '../../core/model/catalogSchema/railSystemSchema';
 import { GatedButton } from './GatedButton';
 import type { ActionGate } from './actionGate';
 

@@ -1,7 +1,7 @@
 import type { ChangeEvent } from 'react';
 import { showStatus, type UiStore } from '../../core/store/uiStore';
 import { InputError } from '../../core/inputError';
-import { serializeConfiguration } from '../../core/model/sceneFile';
+import { serializeConfiguration } from '../../core/model/files/sceneFile';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import type { Photometry } from '../../core/photometry/types';
 import { downloadRadiance } from './downloadRadiance';

@@ -1,6 +1,6 @@
-import type { Reflectance } from '../../core/model/lightingScene';
-import { luminousReflectance } from '../../core/model/reflectance';
-import { finishesFor, matchFinish, type FinishUse, type SurfaceFinish } from '../../core/model/surfaceFinish';
+import type { Reflectance } from '../../core/model/lightingScene/lightingScene';
+import { luminousReflectance } from '../../core/model/lightingScene/reflectance';
+import { finishesFor, matchFinish, type FinishUse, type SurfaceFinish } from '../../core/model/catalogSchema/surfaceFinish';
 import { finishColour } from './finishColour';
 import { useI18n } from '../i18n/useI18n';
 import { finishName } from '../i18n/catalogNames';

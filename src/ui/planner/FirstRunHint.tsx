@@ -1,8 +1,8 @@
 import './registerGuidanceEnglish';
 import { useMemo } from 'react';
-import type { Catalog } from '../../core/model/catalogSchema';
-import type { Room } from '../../core/model/configuration';
-import { suggestedPresets } from '../../core/model/suggestedPresets';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import type { Room } from '../../core/model/configuration/configuration';
+import { suggestedPresets } from '../../core/model/guidance/suggestedPresets';
 import { ActionButton } from './ActionButton';
 import type { ActionGate } from './actionGate';
 import { PresetThumbnail } from './PresetPanel';

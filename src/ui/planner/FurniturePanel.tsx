@@ -1,5 +1,5 @@
 import { memo, type ReactNode } from 'react';
-import { FURNITURE_LIBRARY, type FurnitureItem } from '../../core/model/furniture/furnitureLibrary';
+import { FURNITURE_LIBRARY, type FurnitureItem } from '../../core/model/objects/furniture/furnitureLibrary';
 import { ActionButton } from './ActionButton';
 import type { ActionGate } from './actionGate';
 import { libraryItemOutline } from './objectShapes';

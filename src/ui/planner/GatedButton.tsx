@@ -1,5 +1,5 @@
 import type { ReactNode } from 'react';
-import type { ActionName, ActionParams } from '../../core/model/actionDefinitions';
+import type { ActionName, ActionParams } from '../../core/model/actions/actionDefinitions';
 import { ActionButton } from './ActionButton';
 import type { ActionGate } from './actionGate';
 

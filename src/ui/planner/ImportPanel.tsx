@@ -1,6 +1,6 @@
 import { lazy, Suspense, useRef, useState, type ChangeEvent } from 'react';
 import { InputError } from '../../core/inputError';
-import { MESH_UNITS, type MeshUnits } from '../../core/model/configuration';
+import { MESH_UNITS, type MeshUnits } from '../../core/model/configuration/configuration';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
 import type { ImportedMesh, MeshFile } from '../../engines/meshImport/importedMesh';
 import { itemDimensions } from './FurniturePanel';

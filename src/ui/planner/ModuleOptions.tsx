@@ -1,7 +1,7 @@
 import './registerOptionsEnglish';
 import { useState, useSyncExternalStore } from 'react';
-import type { Catalog } from '../../core/model/catalogSchema';
-import type { ModuleInstance } from '../../core/model/configuration';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import type { ModuleInstance } from '../../core/model/configuration/configuration';
 import { PhotometryWarnings } from '../shared/PhotometryWarnings';
 import type { ActionGate } from './actionGate';
 import type { FootprintSource } from './footprintSource';

@@ -1,8 +1,8 @@
 import './registerOptionsEnglish';
-import { OBJECT_FINISHES, findObjectFinish } from '../../core/model/furniture/objectFinishes';
-import type { ObjectFinish } from '../../core/model/configuration';
-import type { Rgb } from '../../core/model/lightingScene';
-import { luminousReflectance } from '../../core/model/reflectance';
+import { OBJECT_FINISHES, findObjectFinish } from '../../core/model/objects/furniture/objectFinishes';
+import type { ObjectFinish } from '../../core/model/configuration/configuration';
+import type { Rgb } from '../../core/model/lightingScene/lightingScene';
+import { luminousReflectance } from '../../core/model/lightingScene/reflectance';
 import { rgbColour } from './finishColour';
 import { useI18n } from '../i18n/useI18n';
 import { finishName } from '../i18n/catalogNames';
@@ -27,7 +27,7 @@ const DEFAULT = '';
 const CUSTOM = '#custom';
 
 /**
- * A labelled native select of the object finishes (src/core/model/furniture/objectFinishes.ts)
+ * A labelled native select of the object finishes (src/core/model/objects/furniture/objectFinishes.ts)
  * for one material of an object, with a swatch; the first entry is the material's default. A
  * colour set as RGB (a file, the embedding API) shows as "Custom" with its luminous reflectance.
  */

@@ -1,9 +1,9 @@
 import './registerOptionsEnglish';
 import { useMemo } from 'react';
-import { OBJECT_SCALE_LIMITS, WALL_NAMES, type Configuration, type RoomObject } from '../../core/model/configuration';
-import { findFurnitureItem } from '../../core/model/furniture/furnitureLibrary';
-import { findObjectFinish } from '../../core/model/furniture/objectFinishes';
-import { sourceMesh, sourceName } from '../../core/model/objectGeometry';
+import { OBJECT_SCALE_LIMITS, WALL_NAMES, type Configuration, type RoomObject } from '../../core/model/configuration/configuration';
+import { findFurnitureItem } from '../../core/model/objects/furniture/furnitureLibrary';
+import { findObjectFinish } from '../../core/model/objects/furniture/objectFinishes';
+import { sourceMesh, sourceName } from '../../core/model/objects/objectGeometry';
 import { positionBounds } from '../../core/mesh/triangleMesh';
 import type { ActionGate } from './actionGate';
 import { CommitField } from '../shared/CommitField';

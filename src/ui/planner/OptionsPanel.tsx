@@ -1,6 +1,6 @@
 import './registerOptionsEnglish';
-import type { Catalog } from '../../core/model/catalogSchema';
-import type { Configuration } from '../../core/model/configuration';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import type { Configuration } from '../../core/model/configuration/configuration';
 import type { ActionGate } from './actionGate';
 import type { FootprintSource } from './footprintSource';
 import { ModuleOptions } from './ModuleOptions';

@@ -1,8 +1,8 @@
 import { useState, type CSSProperties, type ReactNode } from 'react';
-import type { Catalog } from '../../core/model/catalogSchema';
-import type { Configuration, LightSystem } from '../../core/model/configuration';
-import { isFreeRail } from '../../core/model/freePositions';
-import { modulePlacements, railPlacements, type PlanVec } from '../../core/model/geometry';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import type { Configuration, LightSystem } from '../../core/model/configuration/configuration';
+import { isFreeRail } from '../../core/model/rails/freePositions';
+import { modulePlacements, railPlacements, type PlanVec } from '../../core/model/rails/geometry';
 import { ActionButton } from './ActionButton';
 import { DistributionButtons } from './DistributionButtons';
 import { GatedButton } from './GatedButton';

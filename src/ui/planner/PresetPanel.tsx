@@ -1,9 +1,10 @@
 import { memo } from 'react';
 import { FURNISHED_PRESETS } from '../../core/catalog/furnishedPresets';
-import type { Catalog, PresetSpec } from '../../core/model/catalogSchema';
-import { createConfiguration, type Configuration } from '../../core/model/configuration';
-import { rectCorners, systemBounds, systemElements } from '../../core/model/geometry';
-import { instantiatePreset } from '../../core/model/presets';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import type { PresetSpec } from '../../core/model/catalogSchema/presetSchema';
+import { createConfiguration, type Configuration } from '../../core/model/configuration/configuration';
+import { rectCorners, systemBounds, systemElements } from '../../core/model/rails/geometry';
+import { instantiatePreset } from '../../core/model/actions/presets';
 import { ActionButton } from './ActionButton';
 import type { ActionGate } from './actionGate';
 import { useI18n } from '../i18n/useI18n';

@@ -1,7 +1,7 @@
 import './registerOptionsEnglish';
-import type { Catalog } from '../../core/model/catalogSchema';
-import type { LightSystem, Rail } from '../../core/model/configuration';
-import { isFreeRail } from '../../core/model/freePositions';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import type { LightSystem, Rail } from '../../core/model/configuration/configuration';
+import { isFreeRail } from '../../core/model/rails/freePositions';
 import type { ActionGate } from './actionGate';
 import { BranchOptions } from './BranchOptions';
 import { DistributionButtons } from './DistributionButtons';

@@ -1,5 +1,5 @@
 import './registerOptionsEnglish';
-import type { Room } from '../../core/model/configuration';
+import type { Room } from '../../core/model/configuration/configuration';
 import type { ActionGate } from './actionGate';
 import { CommitField } from '../shared/CommitField';
 import { OptionsSection } from './OptionsSection';

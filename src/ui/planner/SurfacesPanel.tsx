@@ -1,7 +1,7 @@
-import type { Room } from '../../core/model/configuration';
-import type { SurfaceName } from '../../core/model/lightingScene';
-import { WALL_NAMES, sameReflectance, type SurfaceTarget } from '../../core/model/reflectance';
-import type { SurfaceFinish } from '../../core/model/surfaceFinish';
+import type { Room } from '../../core/model/configuration/configuration';
+import type { SurfaceName } from '../../core/model/lightingScene/lightingScene';
+import { WALL_NAMES, sameReflectance, type SurfaceTarget } from '../../core/model/lightingScene/reflectance';
+import type { SurfaceFinish } from '../../core/model/catalogSchema/surfaceFinish';
 import type { ActionGate } from './actionGate';
 import { FinishSelect } from './FinishSelect';
 import { useI18n } from '../i18n/useI18n';

@@ -1,7 +1,7 @@
 import './registerOptionsEnglish';
-import type { Catalog } from '../../core/model/catalogSchema';
-import { MOUNTINGS, type LightSystem } from '../../core/model/configuration';
-import { allowedFeedPositions, driversBySize, feedLoads, formatWatts, sameFeedAt } from '../../core/model/feedLoads';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import { MOUNTINGS, type LightSystem } from '../../core/model/configuration/configuration';
+import { allowedFeedPositions, driversBySize, feedLoads, formatWatts, sameFeedAt } from '../../core/model/power/feedLoads';
 import type { ActionGate } from './actionGate';
 import { ChainShapeOptions } from './ChainShapeOptions';
 import { CommitField } from '../shared/CommitField';

@@ -1,7 +1,7 @@
-import { checkAction, type ActionName, type ActionParams } from '../../core/model/actionDefinitions';
-import type { Catalog } from '../../core/model/catalogSchema';
-import type { Configuration } from '../../core/model/configuration';
-import type { Refusal } from '../../core/model/action';
+import { checkAction, type ActionName, type ActionParams } from '../../core/model/actions/actionDefinitions';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import type { Configuration } from '../../core/model/configuration/configuration';
+import type { Refusal } from '../../core/model/actions/action';
 
 /**
  * How the planner asks the model whether an action may run and runs it. Every control's

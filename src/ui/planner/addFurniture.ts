@@ -1,7 +1,7 @@
-import type { ActionParams } from '../../core/model/actionDefinitions';
-import type { MeshUnits, ObjectPlacement } from '../../core/model/configuration';
-import { freeFloorSpot } from '../../core/model/freeFloorSpot';
-import { findFurnitureItem, furnitureMesh } from '../../core/model/furniture/furnitureLibrary';
+import type { ActionParams } from '../../core/model/actions/actionDefinitions';
+import type { MeshUnits, ObjectPlacement } from '../../core/model/configuration/configuration';
+import { freeFloorSpot } from '../../core/model/objects/freeFloorSpot';
+import { findFurnitureItem, furnitureMesh } from '../../core/model/objects/furniture/furnitureLibrary';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
 import { wallPlacementNear } from './objectMoves';
 import type { PlannerGestureHost, RefusalToShow } from './plannerGestureHost';

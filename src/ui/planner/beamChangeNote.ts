@@ -1,5 +1,5 @@
-import type { Catalog } from '../../core/model/catalogSchema';
-import type { ModuleInstance } from '../../core/model/configuration';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import type { ModuleInstance } from '../../core/model/configuration/configuration';
 import type { Language, Translate } from '../i18n';
 import { localLabel, localName } from '../i18n/localName';
 

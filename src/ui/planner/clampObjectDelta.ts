@@ -1,5 +1,5 @@
-import type { Configuration, RoomObject } from '../../core/model/configuration';
-import { fitPlacement, objectMesh, sourceName } from '../../core/model/objectGeometry';
+import type { Configuration, RoomObject } from '../../core/model/configuration/configuration';
+import { fitPlacement, objectMesh, sourceName } from '../../core/model/objects/objectGeometry';
 import { movedPlacement, wallAxis } from './objectMoves';
 import type { PlanPoint } from './viewTransform';
 

@@ -1,4 +1,4 @@
-import type { ActionName } from '../../core/model/actionDefinitions';
+import type { ActionName } from '../../core/model/actions/actionDefinitions';
 import type { SelectionPath } from './selection';
 
 /**

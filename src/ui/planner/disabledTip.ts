@@ -1,4 +1,4 @@
-import type { ActionName } from '../../core/model/actionDefinitions';
+import type { ActionName } from '../../core/model/actions/actionDefinitions';
 
 /**
  * A disabled control that was pressed tells the planner with this DOM event (bubbling, cancelable,

@@ -1,7 +1,7 @@
-import type { Catalog } from '../../core/model/catalogSchema';
-import type { Configuration } from '../../core/model/configuration';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import type { Configuration } from '../../core/model/configuration/configuration';
 import { loadColourFilterSpectra } from '../../core/colour/colourFilterSpectra';
-import { toLightingScene } from '../../core/model/toLightingScene';
+import { toLightingScene } from '../../core/model/files/toLightingScene';
 import type { Photometry } from '../../core/photometry/types';
 import { downloadBlob } from './downloadText';
 import { sceneFileName } from './sceneFileName';

@@ -1,4 +1,4 @@
-import type { LightSystem } from '../../core/model/configuration';
+import type { LightSystem } from '../../core/model/configuration/configuration';
 import type { PlanPoint } from './viewTransform';
 
 /**

@@ -1,4 +1,4 @@
-import type { Configuration, LightSystem } from '../../core/model/configuration';
+import type { Configuration, LightSystem } from '../../core/model/configuration/configuration';
 import type { DragPreview } from './dragPreview';
 
 /**

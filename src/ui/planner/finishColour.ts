@@ -4,9 +4,9 @@
  * reflectance (what that albedo looks like under white light), and the light
  * tint the plan paints its floor with.
  */
-import type { Reflectance } from '../../core/model/lightingScene';
-import { reflectanceRgb } from '../../core/model/reflectance';
-import { matchFinish, type SurfaceFinish } from '../../core/model/surfaceFinish';
+import type { Reflectance } from '../../core/model/lightingScene/lightingScene';
+import { reflectanceRgb } from '../../core/model/lightingScene/reflectance';
+import { matchFinish, type SurfaceFinish } from '../../core/model/catalogSchema/surfaceFinish';
 
 /** sRGB transfer function (IEC 61966-2-1:1999), linear 0..1 → byte. */
 function encodeSrgb(linear: number): number {

@@ -1,7 +1,7 @@
-import { attemptAction } from '../../core/model/actionDefinitions';
-import { chainCoordinateAt } from '../../core/model/chainCoordinates';
-import type { LightSystem } from '../../core/model/configuration';
-import { suspensionCoordinates } from '../../core/model/suspensionPoints';
+import { attemptAction } from '../../core/model/actions/actionDefinitions';
+import { chainCoordinateAt } from '../../core/model/rails/chainCoordinates';
+import type { LightSystem } from '../../core/model/configuration/configuration';
+import { suspensionCoordinates } from '../../core/model/rails/suspensionPoints';
 import type { PlannerGestureHost } from './plannerGestureHost';
 import { type ScreenPoint, screenToWorld } from './viewTransform';
 

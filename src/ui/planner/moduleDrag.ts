@@ -1,5 +1,5 @@
-import { attemptAction } from '../../core/model/actionDefinitions';
-import type { Configuration } from '../../core/model/configuration';
+import { attemptAction } from '../../core/model/actions/actionDefinitions';
+import type { Configuration } from '../../core/model/configuration/configuration';
 import { type ModuleOnRail, alongRail, moduleOnRail } from './moduleMoves';
 import type { PlannerGestureHost } from './plannerGestureHost';
 import { type ScreenPoint, screenToWorld } from './viewTransform';

@@ -1,8 +1,9 @@
-import { findBeam, findModuleType, type BeamSpec, type Catalog } from '../../core/model/catalogSchema';
-import type { ModuleInstance } from '../../core/model/configuration';
-import { aimAxis } from '../../core/model/aim';
-import { coneRoomOutline, type RoomBox } from '../../core/model/coneOutline';
-import { rotatePlan, type ModulePlacement } from '../../core/model/geometry';
+import { findBeam, findModuleType, type Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import { type BeamSpec } from '../../core/model/catalogSchema/moduleTypeSchema';
+import type { ModuleInstance } from '../../core/model/configuration/configuration';
+import { aimAxis } from '../../core/model/modules/aim';
+import { coneRoomOutline, type RoomBox } from '../../core/model/modules/coneOutline';
+import { rotatePlan, type ModulePlacement } from '../../core/model/rails/geometry';
 import { beamFootprint, type FootprintEllipse } from './beamFootprint';
 import type { FloorFootprint } from './floorFootprint';
 import type { FootprintSource } from './footprintSource';

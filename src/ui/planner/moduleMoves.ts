@@ -1,6 +1,6 @@
-import type { Catalog } from '../../core/model/catalogSchema';
-import type { Configuration } from '../../core/model/configuration';
-import { modulePlacements, railPlacements, type PlanVec } from '../../core/model/geometry';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import type { Configuration } from '../../core/model/configuration/configuration';
+import { modulePlacements, railPlacements, type PlanVec } from '../../core/model/rails/geometry';
 import type { PlanPoint } from './viewTransform';
 
 /** A module's rail as a line in the plan: its start, unit direction, and the module's current start along it. */

@@ -4,8 +4,8 @@
  * (src/core/colour/displaySwatch.ts), so a red gel's footprint reads red in the plan.
  */
 import { swatchCss } from '../../core/colour/displaySwatch';
-import type { ModuleInstance } from '../../core/model/configuration';
-import { moduleLightColour } from '../../core/model/moduleFilter';
+import type { ModuleInstance } from '../../core/model/configuration/configuration';
+import { moduleLightColour } from '../../core/model/modules/moduleFilter';
 import { cctTint } from './cctTint';
 
 export function moduleTint(module: Pick<ModuleInstance, 'cct' | 'filter'>): string {

@@ -1,5 +1,5 @@
-import type { Configuration } from '../../core/model/configuration';
-import { objectMesh } from '../../core/model/objectGeometry';
+import type { Configuration } from '../../core/model/configuration/configuration';
+import { objectMesh } from '../../core/model/objects/objectGeometry';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
 import { rgbColour } from './finishColour';
 

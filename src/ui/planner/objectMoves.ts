@@ -1,4 +1,4 @@
-import type { ObjectPlacement, Room, WallName } from '../../core/model/configuration';
+import type { ObjectPlacement, Room, WallName } from '../../core/model/configuration/configuration';
 import type { PlanPoint } from './viewTransform';
 
 /** The direction of a wall's u axis in the plan (docs/scene-format.md: north/south u = x, west/east u = z). */

@@ -5,8 +5,8 @@
  * src/core/mesh/placeMesh.ts), so moving, turning or resizing an object costs a few hundred
  * point transforms, not a new trace.
  */
-import { createConfiguration, type Configuration } from '../../core/model/configuration';
-import { objectPlacement, sourceMesh } from '../../core/model/objectGeometry';
+import { createConfiguration, type Configuration } from '../../core/model/configuration/configuration';
+import { objectPlacement, sourceMesh } from '../../core/model/objects/objectGeometry';
 import { placementTransform } from '../../core/mesh/placeMesh';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
 import type { PlanPoint } from './viewTransform';

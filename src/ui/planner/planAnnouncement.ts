@@ -1,5 +1,5 @@
-import type { Catalog } from '../../core/model/catalogSchema';
-import type { Configuration } from '../../core/model/configuration';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import type { Configuration } from '../../core/model/configuration/configuration';
 import type { Selection } from '../../core/store/createConfiguratorStore';
 import type { Format } from '../i18n/createFormat';
 import type { Language } from '../i18n/languages';

@@ -1,7 +1,7 @@
-import type { Catalog } from '../../core/model/catalogSchema';
-import type { Configuration } from '../../core/model/configuration';
-import { modulePlacements, systemElementTree, type PlanRect } from '../../core/model/geometry';
-import { suspensionPoints } from '../../core/model/suspensionPoints';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import type { Configuration } from '../../core/model/configuration/configuration';
+import { modulePlacements, systemElementTree, type PlanRect } from '../../core/model/rails/geometry';
+import { suspensionPoints } from '../../core/model/rails/suspensionPoints';
 import { objectPolygons } from './objectShapes';
 import { type PlanPoint, type PlanView, type ScreenPoint, screenToWorld } from './viewTransform';
 

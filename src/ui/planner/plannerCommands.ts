@@ -1,9 +1,9 @@
-import { checkAction, type ActionName } from '../../core/model/actionDefinitions';
+import { checkAction, type ActionName } from '../../core/model/actions/actionDefinitions';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import { optionsShown, type UiStore } from '../../core/store/uiStore';
 import { deleteTarget } from './deleteTarget';
 import type { KeySpec } from './keyChord';
-import { placementStep } from '../../core/model/freePositions';
+import { placementStep } from '../../core/model/rails/freePositions';
 import { moduleOnRail, stepAlongRail } from './moduleMoves';
 import { followableDelta, movedPlacement } from './objectMoves';
 import { selectionPath } from './selection';

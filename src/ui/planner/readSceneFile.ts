@@ -1,6 +1,7 @@
-import type { Catalog } from '../../core/model/catalogSchema';
-import type { Configuration } from '../../core/model/configuration';
-import { SceneFileError, deserializeConfiguration } from '../../core/model/sceneFile';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import type { Configuration } from '../../core/model/configuration/configuration';
+import { deserializeConfiguration } from '../../core/model/files/sceneFile';
+import { SceneFileError } from '../../core/model/files/sceneFileError';
 
 /**
  * Largest scene file "Open file…" reads. A configuration of the model's largest room full of

@@ -1,5 +1,5 @@
-import { attemptAction, type ActionName } from '../../core/model/actionDefinitions';
-import { remedyFor } from '../../core/model/remedy';
+import { attemptAction, type ActionName } from '../../core/model/actions/actionDefinitions';
+import { remedyFor } from '../../core/model/guidance/remedy';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import type { Format } from '../i18n/createFormat';
 import type { Language } from '../i18n/languages';

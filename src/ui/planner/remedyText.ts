@@ -1,5 +1,5 @@
 import './registerGuidanceEnglish';
-import type { Remedy, RemedyPart } from '../../core/model/remedy';
+import type { Remedy, RemedyPart } from '../../core/model/guidance/remedy';
 import type { Format } from '../i18n/createFormat';
 import type { Translate } from '../i18n/messageTypes';
 import type { Language } from '../i18n/languages';

@@ -1,4 +1,4 @@
-import type { Configuration } from '../../core/model/configuration';
+import type { Configuration } from '../../core/model/configuration/configuration';
 
 /**
  * The name a saved configuration is offered under: `luxbox-<W>x<D>x<H>.luxbox.json` with the

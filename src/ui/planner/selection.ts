@@ -1,4 +1,4 @@
-import type { Configuration } from '../../core/model/configuration';
+import type { Configuration } from '../../core/model/configuration/configuration';
 import type { Selection } from '../../core/store/createConfiguratorStore';
 
 /**

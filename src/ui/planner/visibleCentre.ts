@@ -1,4 +1,4 @@
-import type { Room } from '../../core/model/configuration';
+import type { Room } from '../../core/model/configuration/configuration';
 import { type PlanPoint, type PlanView, type Viewport, screenToWorld } from './viewTransform';
 
 /** `p` moved onto the room's floor (clamped to its walls). */

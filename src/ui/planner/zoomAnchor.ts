@@ -1,4 +1,4 @@
-import { systemBounds } from '../../core/model/geometry';
+import { systemBounds } from '../../core/model/rails/geometry';
 import type { ConfiguratorState } from '../../core/store/createConfiguratorStore';
 import { selectionPath } from './selection';
 import { type PlanView, type ScreenPoint, type Viewport, worldToScreen } from './viewTransform';

@@ -9,12 +9,12 @@
  */
 import { loadColourFilterSpectra } from '../../core/colour/colourFilterSpectra';
 import { needsColourFilterSpectra } from '../../core/colour/moduleColour';
-import { configurationFilterIds } from '../../core/model/moduleFilter';
-import type { Catalog } from '../../core/model/catalogSchema';
-import type { Configuration, LightScene } from '../../core/model/configuration';
-import type { Rgb } from '../../core/model/lightingScene';
-import { fadeFraction, levelsOutput, mixLevels, mixLights, outputLevels, type ModuleLight } from '../../core/model/sceneFade';
-import { toLightingScene } from '../../core/model/toLightingScene';
+import { configurationFilterIds } from '../../core/model/modules/moduleFilter';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import type { Configuration, LightScene } from '../../core/model/configuration/configuration';
+import type { Rgb } from '../../core/model/lightingScene/lightingScene';
+import { fadeFraction, levelsOutput, mixLevels, mixLights, outputLevels, type ModuleLight } from '../../core/model/cues/sceneFade';
+import { toLightingScene } from '../../core/model/files/toLightingScene';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import type { BakeScene } from '../../engines/bake/bakeScene';
 import type { BakeFeed } from '../viewer/startBakeFeed';

@@ -1,5 +1,5 @@
 import { useState } from 'react';
-import { DMX_CHANNELS, DMX_UNIVERSE_MAX, DMX_UNIVERSE_MIN } from '../../core/model/dmxPatch';
+import { DMX_CHANNELS, DMX_UNIVERSE_MAX, DMX_UNIVERSE_MIN } from '../../core/model/modules/dmxPatch';
 import { useI18n } from '../i18n/useI18n';
 import './registerView3dEnglish';
 

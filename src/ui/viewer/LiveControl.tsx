@@ -1,7 +1,8 @@
 import { useEffect, useMemo, useRef, useState } from 'react';
 import { useStore } from 'zustand';
-import { findModuleType } from '../../core/model/catalogSchema';
-import { isTunable, modulesInOrder, type DmxPatch } from '../../core/model/dmxPatch';
+import { findModuleType } from '../../core/model/catalogSchema/catalogSchema';
+import { isTunable, modulesInOrder } from '../../core/model/modules/dmxPatch';
+import { type DmxPatch } from '../../core/model/configuration/configuration';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import { levelsFromFrames, sameLevels, type LiveLevel } from '../../engines/view/liveLevels';
 import { AutoPatchForm } from './AutoPatchForm';

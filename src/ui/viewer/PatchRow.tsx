@@ -1,5 +1,5 @@
 import { useState } from 'react';
-import type { DmxPatch } from '../../core/model/dmxPatch';
+import type { DmxPatch } from '../../core/model/configuration/configuration';
 import type { LiveLevel } from '../../engines/view/liveLevels';
 import { useI18n } from '../i18n/useI18n';
 import './registerView3dEnglish';

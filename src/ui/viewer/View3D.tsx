@@ -5,10 +5,10 @@ import type { BakeScene } from '../../engines/bake/bakeScene';
 import { QUALITY_LEVEL_NAMES, type QualityLevel } from '../../engines/relight/qualityLevels';
 import { objectLightOf } from '../../engines/view/objectLight';
 import { objectStats } from '../../engines/view/objectStats';
-import { sourceName } from '../../core/model/objectGeometry';
+import { sourceName } from '../../core/model/objects/objectGeometry';
 import { PhotometryWarnings, type PhotometryNote } from '../shared/PhotometryWarnings';
 import type { ConfiguratorStore, Selection } from '../../core/store/createConfiguratorStore';
-import type { Configuration } from '../../core/model/configuration';
+import type { Configuration } from '../../core/model/configuration/configuration';
 import { CAMERA_PRESETS, type CameraPresetName } from '../../engines/view/cameraPresets';
 import { createViewerController, type ViewerController } from '../../engines/view/createViewerController';
 import { floorStats, workPlaneStats, type IlluminanceStats } from '../../engines/view/lightStats';
@@ -33,8 +33,8 @@ import type { Translate } from '../i18n/messageTypes';
 import type { Language } from '../i18n/languages';
 import { localName } from '../i18n/localName';
 import { furnitureName } from '../i18n/catalogNames';
-import { findFurnitureItem } from '../../core/model/furniture/furnitureLibrary';
-import type { Catalog } from '../../core/model/catalogSchema';
+import { findFurnitureItem } from '../../core/model/objects/furniture/furnitureLibrary';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
 import './registerView3dEnglish';
 
 export interface View3DProps {

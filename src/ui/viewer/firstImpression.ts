@@ -1,7 +1,7 @@
 import { demoConfiguration } from '../../core/catalog/demoConfiguration';
 import { livingRoom } from '../../core/catalog/furnishedPresets';
-import type { Catalog } from '../../core/model/catalogSchema';
-import type { Configuration } from '../../core/model/configuration';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import type { Configuration } from '../../core/model/configuration/configuration';
 
 /**
  * What the demo opens (`?demo`, the dev server, room setup's "Try the demo"): the furnished

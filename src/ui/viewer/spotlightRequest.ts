@@ -3,10 +3,10 @@
  * its photometric centre, rail heading, optic roll, aim and limits; null for an unknown or fixed
  * (non-adjustable) module.
  */
-import { findBeam, type Catalog } from '../../core/model/catalogSchema';
-import type { Configuration } from '../../core/model/configuration';
-import { modulePlacements } from '../../core/model/geometry';
-import { moduleHeight } from '../../core/model/suspensionPoints';
+import { findBeam, type Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import type { Configuration } from '../../core/model/configuration/configuration';
+import { modulePlacements } from '../../core/model/rails/geometry';
+import { moduleHeight } from '../../core/model/rails/suspensionPoints';
 import type { SpotlightRequest } from '../../engines/view/createSpotlight';
 
 export function spotlightRequest(config: Configuration, catalog: Catalog, moduleId: string): SpotlightRequest | null {

@@ -1,9 +1,9 @@
 import { loadColourFilterSpectra } from '../../core/colour/colourFilterSpectra';
 import { needsColourFilterSpectra } from '../../core/colour/moduleColour';
-import { configurationFilterIds } from '../../core/model/moduleFilter';
-import type { Catalog } from '../../core/model/catalogSchema';
-import type { Configuration } from '../../core/model/configuration';
-import { toLightingScene } from '../../core/model/toLightingScene';
+import { configurationFilterIds } from '../../core/model/modules/moduleFilter';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import type { Configuration } from '../../core/model/configuration/configuration';
+import { toLightingScene } from '../../core/model/files/toLightingScene';
 import { photometryWarnings } from '../../core/photometry/checks';
 import type { Photometry } from '../../core/photometry/types';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';

@@ -1,11 +1,11 @@
 import { describe, expect, it } from 'vitest';
 import { FURNISHED_PRESETS, diningRoom } from '../../../src/core/catalog/furnishedPresets';
-import { billOfMaterials } from '../../../src/core/model/billOfMaterials';
-import { findFurnitureItem } from '../../../src/core/model/furniture/furnitureLibrary';
-import { objectMesh, objectPlacement, placedBounds, sourceMesh } from '../../../src/core/model/objectGeometry';
-import { deserializeConfiguration, serializeConfiguration } from '../../../src/core/model/sceneFile';
-import { toLightingScene } from '../../../src/core/model/toLightingScene';
-import { validate } from '../../../src/core/model/validate';
+import { billOfMaterials } from '../../../src/core/model/power/billOfMaterials';
+import { findFurnitureItem } from '../../../src/core/model/objects/furniture/furnitureLibrary';
+import { objectMesh, objectPlacement, placedBounds, sourceMesh } from '../../../src/core/model/objects/objectGeometry';
+import { deserializeConfiguration, serializeConfiguration } from '../../../src/core/model/files/sceneFile';
+import { toLightingScene } from '../../../src/core/model/files/toLightingScene';
+import { validate } from '../../../src/core/model/validation/validate';
 import { catalog } from '../model/helpers';
 
 describe('furnished presets', () => {

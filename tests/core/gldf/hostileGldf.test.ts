@@ -12,7 +12,7 @@ import { importGldfCatalog } from '../../../src/core/gldf/importGldfCatalog';
 import { readGldfProduct } from '../../../src/core/gldf/readGldfProduct';
 import { crc32, readUploadZip, unsafeEntryName } from '../../../src/core/gldf/readUploadZip';
 import { UPLOAD_LIMITS } from '../../../src/core/gldf/uploadLimits';
-import { parseCatalogText } from '../../../src/core/model/catalogSchema';
+import { parseCatalogText } from '../../../src/core/model/catalogSchema/catalogSchema';
 import { gldfBytes, linearSpec, pendantSpec, productXml, trackSpotSpec } from './buildGldf';
 
 const base = parseCatalogText(readFileSync('src/core/catalog/default-catalog.json', 'utf8'));

@@ -8,9 +8,9 @@ import { BACK_SIDE_OFFSET, orientMesh } from '../../../src/core/mesh/orientMesh'
 import { connectedParts } from '../../../src/core/mesh/connectedParts';
 import { coincidentPairs } from '../../../src/core/mesh/coincidentPairs';
 import { meshEdges } from '../../../src/core/mesh/meshEdges';
-import { composeParts } from '../../../src/core/model/furniture/meshParts';
+import { composeParts } from '../../../src/core/model/objects/furniture/meshParts';
 import type { TriangleMesh } from '../../../src/core/mesh/triangleMesh';
-import { FURNITURE_LIBRARY, furnitureMesh } from '../../../src/core/model/furniture/furnitureLibrary';
+import { FURNITURE_LIBRARY, furnitureMesh } from '../../../src/core/model/objects/furniture/furnitureLibrary';
 import { createRng } from '../../fuzz/mutate';
 import { boxMesh } from '../../engines/bake/objects/objectFixtures';
 import { isClosedAndConsistent, signedVolume } from '../../engines/meshImport/modelFixtures';

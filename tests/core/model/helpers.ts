@@ -1,7 +1,7 @@
 import { defaultCatalog } from '../../../src/core/catalog/defaultCatalog';
-import type { Catalog } from '../../../src/core/model/catalogSchema';
-import { bindAction } from '../../../src/core/model/actionDefinitions';
-import { createConfiguration, type Configuration, type Joint, type LightSystem, type Rail, type Room } from '../../../src/core/model/configuration';
+import type { Catalog } from '../../../src/core/model/catalogSchema/catalogSchema';
+import { bindAction } from '../../../src/core/model/actions/actionDefinitions';
+import { createConfiguration, type Configuration, type Joint, type LightSystem, type Rail, type Room } from '../../../src/core/model/configuration/configuration';
 
 export const catalog: Catalog = defaultCatalog;
 

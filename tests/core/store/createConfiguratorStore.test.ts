@@ -1,9 +1,9 @@
 import { describe, expect, it, vi } from 'vitest';
 import { defaultCatalog as catalog } from '../../../src/core/catalog/defaultCatalog';
-import { actionDefinitions, checkAction } from '../../../src/core/model/actionDefinitions';
-import { billOfMaterials } from '../../../src/core/model/billOfMaterials';
-import { createConfiguration } from '../../../src/core/model/configuration';
-import { deserializeConfiguration, serializeConfiguration } from '../../../src/core/model/sceneFile';
+import { actionDefinitions, checkAction } from '../../../src/core/model/actions/actionDefinitions';
+import { billOfMaterials } from '../../../src/core/model/power/billOfMaterials';
+import { createConfiguration } from '../../../src/core/model/configuration/configuration';
+import { deserializeConfiguration, serializeConfiguration } from '../../../src/core/model/files/sceneFile';
 import { createConfiguratorStore } from '../../../src/core/store/createConfiguratorStore';
 
 const fresh = () => createConfiguratorStore({ catalog, initial: createConfiguration({ width: 6, depth: 5, height: 3 }) });

@@ -1,7 +1,7 @@
 /** Shared fixtures for the baker tests: a headless-gl context, synthetic and real photometry, reference maths. */
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { SURFACE_NAMES, type SurfaceName, type Vec3 } from '../../../src/core/model/lightingScene';
+import { SURFACE_NAMES, type SurfaceName, type Vec3 } from '../../../src/core/model/lightingScene/lightingScene';
 import { parsePhotometry } from '../../../src/core/photometry/parsePhotometry';
 import type { Photometry } from '../../../src/core/photometry/types';
 import type { BakeScene } from '../../../src/engines/bake/bakeScene';

@@ -14,7 +14,7 @@
  * receivers turned away would get the value of the ones turned toward it, and these cases fail.
  */
 import { describe, expect, it } from 'vitest';
-import type { Vec3 } from '../../../src/core/model/lightingScene';
+import type { Vec3 } from '../../../src/core/model/lightingScene/lightingScene';
 import { brightPatchGather } from '../../../shaders/brightPatchGather.glsl';
 import { fragmentPass } from '../../../shaders/fragmentPass.glsl';
 import { createDataTexture } from '../../../src/engines/bake/createDataTexture';

@@ -7,7 +7,7 @@
  * texel means).
  */
 import { describe, expect, it } from 'vitest';
-import { SURFACE_NAMES, type Vec3 } from '../../../src/core/model/lightingScene';
+import { SURFACE_NAMES, type Vec3 } from '../../../src/core/model/lightingScene/lightingScene';
 import { intensity } from '../../../src/core/photometry/intensity';
 import { integrateFlux } from '../../../src/core/photometry/flux';
 import type { Photometry } from '../../../src/core/photometry/types';

@@ -10,7 +10,7 @@
 import { createHash } from 'node:crypto';
 import { writeFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { SURFACE_NAMES } from '../../../src/core/model/lightingScene';
+import { SURFACE_NAMES } from '../../../src/core/model/lightingScene/lightingScene';
 import type { BakeScene } from '../../../src/engines/bake/bakeScene';
 import { createBaker } from '../../../src/engines/bake/createBaker';
 import { basePhotometry, isotropic, spot } from './bakeTestKit';

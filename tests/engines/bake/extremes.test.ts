@@ -5,7 +5,7 @@
 import { describe, expect, it } from 'vitest';
 import { createBaker } from '../../../src/engines/bake/createBaker';
 import { integrateFlux } from '../../../src/core/photometry/flux';
-import { parseLightingScene } from '../../../src/core/model/parseLightingScene';
+import { parseLightingScene } from '../../../src/core/model/lightingScene/parseLightingScene';
 import { InputError } from '../../../src/core/inputError';
 import { allFiniteNonNegative, isotropic, loadIes, spot, totalFlux, uniformRoom } from './bakeTestKit';
 import { withHeadlessGL } from './withHeadlessGL';

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { moduleLightColour } from '../../../src/core/model/moduleFilter';
-import { toLightingScene } from '../../../src/core/model/toLightingScene';
+import { moduleLightColour } from '../../../src/core/model/modules/moduleFilter';
+import { toLightingScene } from '../../../src/core/model/files/toLightingScene';
 import { LUMINANCE_WEIGHTS } from '../../../src/engines/bake/bakedMaps';
 import { resolveBakeSettings } from '../../../src/engines/bake/bakeSettings';
 import { directAtPoint } from '../../../src/engines/bake/directAtPoint';

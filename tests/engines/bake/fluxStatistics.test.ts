@@ -12,7 +12,7 @@ import { createFluxStatistics } from '../../../src/engines/bake/fluxStatistics';
 import { createTargetPool } from '../../../src/engines/bake/targetPool';
 import { LUMINANCE_WEIGHTS } from '../../../src/engines/bake/bakedMaps';
 import { surfaceLayouts, texelArea } from '../../../src/engines/bake/surfaceLayout';
-import { SURFACE_NAMES, type Rgb } from '../../../src/core/model/lightingScene';
+import { SURFACE_NAMES, type Rgb } from '../../../src/core/model/lightingScene/lightingScene';
 import { isotropic, spot } from './bakeTestKit';
 import { withHeadlessGL } from './withHeadlessGL';
 

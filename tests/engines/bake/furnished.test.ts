@@ -6,7 +6,7 @@
  * only; the independent CPU reference for furnished rooms is src/reference.
  */
 import { describe, expect, it } from 'vitest';
-import { SURFACE_NAMES, type Vec3 } from '../../../src/core/model/lightingScene';
+import { SURFACE_NAMES, type Vec3 } from '../../../src/core/model/lightingScene/lightingScene';
 import type { BakeObject, BakeScene } from '../../../src/engines/bake/bakeScene';
 import { luxOf, type BakedMaps } from '../../../src/engines/bake/bakedMaps';
 import { createBaker } from '../../../src/engines/bake/createBaker';

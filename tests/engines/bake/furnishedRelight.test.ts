@@ -5,7 +5,7 @@
  * exactly, so relit direct maps equal a full bake of the dimmed, coloured scene to float rounding.
  */
 import { describe, expect, it } from 'vitest';
-import type { Rgb } from '../../../src/core/model/lightingScene';
+import type { Rgb } from '../../../src/core/model/lightingScene/lightingScene';
 import type { BakeObject, BakeScene } from '../../../src/engines/bake/bakeScene';
 import { combineMaps } from '../../../src/engines/bake/bakedMaps';
 import { createBaker } from '../../../src/engines/bake/createBaker';

@@ -7,7 +7,7 @@
  * direct and total light, and as flux Σ E·A over the walls and over the objects.
  */
 import { describe, expect, it } from 'vitest';
-import { SURFACE_NAMES, type LightingScene, type Vec3 } from '../../../src/core/model/lightingScene';
+import { SURFACE_NAMES, type LightingScene, type Vec3 } from '../../../src/core/model/lightingScene/lightingScene';
 import type { Photometry } from '../../../src/core/photometry/types';
 import type { BakeObject, BakeScene } from '../../../src/engines/bake/bakeScene';
 import { luxOf, type BakedMaps } from '../../../src/engines/bake/bakedMaps';

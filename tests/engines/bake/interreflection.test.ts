@@ -7,7 +7,7 @@
  * E0·ρ/(1−ρ) — a per-texel check of the rays, box exits and lookups.
  */
 import { describe, expect, it } from 'vitest';
-import { SURFACE_NAMES, type SurfaceName } from '../../../src/core/model/lightingScene';
+import { SURFACE_NAMES, type SurfaceName } from '../../../src/core/model/lightingScene/lightingScene';
 import { createBaker } from '../../../src/engines/bake/createBaker';
 import { surfaceLayouts } from '../../../src/engines/bake/surfaceLayout';
 import { resolveBakeSettings } from '../../../src/engines/bake/bakeSettings';

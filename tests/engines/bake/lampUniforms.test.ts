@@ -8,7 +8,7 @@
  * engine (every gl.shaderSource call is counted).
  */
 import { describe, expect, it } from 'vitest';
-import { SURFACE_NAMES } from '../../../src/core/model/lightingScene';
+import { SURFACE_NAMES } from '../../../src/core/model/lightingScene/lightingScene';
 import type { Photometry } from '../../../src/core/photometry/types';
 import type { BakeLuminaire, BakeObject, BakeScene } from '../../../src/engines/bake/bakeScene';
 import { createBaker } from '../../../src/engines/bake/createBaker';

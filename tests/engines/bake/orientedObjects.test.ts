@@ -6,9 +6,9 @@
  * box with an object of the same ρ, as tests/engines/bake/furnished.test.ts).
  */
 import { describe, expect, it } from 'vitest';
-import { SURFACE_NAMES, type Vec3 } from '../../../src/core/model/lightingScene';
+import { SURFACE_NAMES, type Vec3 } from '../../../src/core/model/lightingScene/lightingScene';
 import type { TriangleMesh } from '../../../src/core/mesh/triangleMesh';
-import { furnitureMesh } from '../../../src/core/model/furniture/furnitureLibrary';
+import { furnitureMesh } from '../../../src/core/model/objects/furniture/furnitureLibrary';
 import type { BakeObject, BakeScene } from '../../../src/engines/bake/bakeScene';
 import { luxOf, type BakedMaps } from '../../../src/engines/bake/bakedMaps';
 import { createBaker } from '../../../src/engines/bake/createBaker';

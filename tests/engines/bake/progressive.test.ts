@@ -4,7 +4,7 @@
  * maps of luminaire groups add up to the maps of the whole scene.
  */
 import { describe, expect, it } from 'vitest';
-import { SURFACE_NAMES } from '../../../src/core/model/lightingScene';
+import { SURFACE_NAMES } from '../../../src/core/model/lightingScene/lightingScene';
 import { createBaker } from '../../../src/engines/bake/createBaker';
 import { combineMaps, luxOf } from '../../../src/engines/bake/bakedMaps';
 import { averageLux, loadIes, uniformRoom } from './bakeTestKit';

@@ -6,7 +6,7 @@
  * enters the direct comparison.
  */
 import { describe, expect, it } from 'vitest';
-import { SURFACE_NAMES, type LightingScene, type SurfaceName } from '../../../src/core/model/lightingScene';
+import { SURFACE_NAMES, type LightingScene, type SurfaceName } from '../../../src/core/model/lightingScene/lightingScene';
 import type { Photometry } from '../../../src/core/photometry/types';
 import { createBaker } from '../../../src/engines/bake/createBaker';
 import { luxOf } from '../../../src/engines/bake/bakedMaps';

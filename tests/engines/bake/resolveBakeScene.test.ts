@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import type { LightingScene, SurfaceName } from '../../../src/core/model/lightingScene';
+import type { LightingScene, SurfaceName } from '../../../src/core/model/lightingScene/lightingScene';
 import { PhotometryReadError } from '../../../src/core/photometry/PhotometryReadError';
 import type { Photometry } from '../../../src/core/photometry/types';
 import { LuminairePhotometryError, resolveBakeScene, resolveBakeSceneSync } from '../../../src/engines/bake/resolveBakeScene';

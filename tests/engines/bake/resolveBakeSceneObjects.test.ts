@@ -1,6 +1,6 @@
 /** resolveBakeScene with objects (docs/scene-format.md, "Objects"): meshes loaded once, ids, the room check. */
 import { describe, expect, it } from 'vitest';
-import type { LightingScene } from '../../../src/core/model/lightingScene';
+import type { LightingScene } from '../../../src/core/model/lightingScene/lightingScene';
 import type { TriangleMesh } from '../../../src/core/mesh/triangleMesh';
 import type { Photometry } from '../../../src/core/photometry/types';
 import { InputError } from '../../../src/core/inputError';

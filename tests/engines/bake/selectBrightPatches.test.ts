@@ -4,7 +4,7 @@
  * as a rectangle with the tile's flux centred on its flux centroid.
  */
 import { describe, expect, it } from 'vitest';
-import type { Rgb } from '../../../src/core/model/lightingScene';
+import type { Rgb } from '../../../src/core/model/lightingScene/lightingScene';
 import { patchTable } from '../../../src/engines/bake/patchTable';
 import { selectBrightPatches, type SurfaceTileSums } from '../../../src/engines/bake/selectBrightPatches';
 import { surfaceLayouts } from '../../../src/engines/bake/surfaceLayout';

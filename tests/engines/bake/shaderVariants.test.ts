@@ -4,7 +4,7 @@
  * program cache: an identical scene compiles nothing new.
  */
 import { describe, expect, it } from 'vitest';
-import { SURFACE_NAMES, type Rgb } from '../../../src/core/model/lightingScene';
+import { SURFACE_NAMES, type Rgb } from '../../../src/core/model/lightingScene/lightingScene';
 import { blurPass } from '../../../shaders/blurPass.glsl';
 import { combinePass } from '../../../shaders/combinePass.glsl';
 import { combineTailPass } from '../../../shaders/combineTailPass.glsl';

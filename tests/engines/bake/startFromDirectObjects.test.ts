@@ -6,7 +6,7 @@
  * and total maps, the objects' atlas included.
  */
 import { describe, expect, it } from 'vitest';
-import { SURFACE_NAMES } from '../../../src/core/model/lightingScene';
+import { SURFACE_NAMES } from '../../../src/core/model/lightingScene/lightingScene';
 import type { BakeObject, BakeScene } from '../../../src/engines/bake/bakeScene';
 import { createBaker } from '../../../src/engines/bake/createBaker';
 import { boxMesh } from './objects/objectFixtures';

@@ -9,7 +9,7 @@
  * option.
  */
 import { describe, expect, it } from 'vitest';
-import type { LightingScene } from '../../../src/core/model/lightingScene';
+import type { LightingScene } from '../../../src/core/model/lightingScene/lightingScene';
 import type { Photometry } from '../../../src/core/photometry/types';
 import { createBaker } from '../../../src/engines/bake/createBaker';
 import { probeScene } from '../../../src/engines/bake/probeMaps';

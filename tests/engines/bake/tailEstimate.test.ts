@@ -5,7 +5,7 @@
  * the integrating-sphere illuminance Φ/(S(1−ρ)) for any number of bounces.
  */
 import { describe, expect, it } from 'vitest';
-import { SURFACE_NAMES, type Rgb } from '../../../src/core/model/lightingScene';
+import { SURFACE_NAMES, type Rgb } from '../../../src/core/model/lightingScene/lightingScene';
 import { fluxRecord, maxFluxRatio, type SurfaceFlux } from '../../../src/engines/bake/fluxRecord';
 import { tailFactor } from '../../../src/engines/bake/tailFactor';
 import { surfaceLayouts, texelArea } from '../../../src/engines/bake/surfaceLayout';

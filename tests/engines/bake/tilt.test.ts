@@ -11,7 +11,7 @@ import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { describe, expect, it } from 'vitest';
 import { createBaker } from '../../../src/engines/bake/createBaker';
-import type { LightingScene } from '../../../src/core/model/lightingScene';
+import type { LightingScene } from '../../../src/core/model/lightingScene/lightingScene';
 import { parsePhotometry } from '../../../src/core/photometry/parsePhotometry';
 import { tiltMultiplier } from '../../../src/core/photometry/tilt';
 import { solveBoxReference } from '../../../src/reference/solveBoxReference';

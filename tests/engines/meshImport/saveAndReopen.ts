@@ -1,7 +1,7 @@
 import { defaultCatalog } from '../../../src/core/catalog/defaultCatalog';
-import { attemptAction } from '../../../src/core/model/actionDefinitions';
-import { createConfiguration, type Configuration } from '../../../src/core/model/configuration';
-import { deserializeConfiguration, serializeConfiguration } from '../../../src/core/model/sceneFile';
+import { attemptAction } from '../../../src/core/model/actions/actionDefinitions';
+import { createConfiguration, type Configuration } from '../../../src/core/model/configuration/configuration';
+import { deserializeConfiguration, serializeConfiguration } from '../../../src/core/model/files/sceneFile';
 import type { ImportedMesh } from '../../../src/engines/meshImport/importedMesh';
 
 /** The largest room the planner allows (ROOM_LIMITS; every model the importer accepts, at most 100 m from its origin, is tried in it). */

@@ -4,7 +4,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import { defaultCatalog } from '../../../src/core/catalog/defaultCatalog';
-import { createConfiguration } from '../../../src/core/model/configuration';
+import { createConfiguration } from '../../../src/core/model/configuration/configuration';
 import { positionBounds } from '../../../src/core/mesh/triangleMesh';
 import { createConfiguratorStore } from '../../../src/core/store/createConfiguratorStore';
 import { importMesh } from '../../../src/engines/meshImport/importMesh';

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import type { Vec3 } from '../../../src/core/model/lightingScene';
+import type { Vec3 } from '../../../src/core/model/lightingScene/lightingScene';
 import { LUMINANCE_WEIGHTS } from '../../../src/engines/bake/bakedMaps';
 import type { BakeScene } from '../../../src/engines/bake/bakeScene';
 import { resolveBakeSettings } from '../../../src/engines/bake/bakeSettings';

@@ -5,12 +5,12 @@
  * Counted with the relight engine's counters on headless-gl.
  */
 import { describe, expect, it } from 'vitest';
-import { createConfiguration } from '../../../src/core/model/configuration';
-import { toLightingScene } from '../../../src/core/model/toLightingScene';
+import { createConfiguration } from '../../../src/core/model/configuration/configuration';
+import { toLightingScene } from '../../../src/core/model/files/toLightingScene';
 import type { BakeScene } from '../../../src/engines/bake/bakeScene';
 import { createRelightEngine } from '../../../src/engines/relight/createRelightEngine';
 import { withoutModule } from '../../../src/engines/view/createSpotlight';
-import type { Configuration } from '../../../src/core/model/configuration';
+import type { Configuration } from '../../../src/core/model/configuration/configuration';
 import { catalog, run } from '../../core/model/helpers';
 import { loadReal } from '../../core/photometry/helpers';
 import { withHeadlessGL } from '../bake/withHeadlessGL';

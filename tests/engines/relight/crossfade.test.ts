@@ -6,8 +6,8 @@
  * a fade to a new end state solves that state once.
  */
 import { describe, expect, it } from 'vitest';
-import type { Rgb } from '../../../src/core/model/lightingScene';
-import { SURFACE_NAMES } from '../../../src/core/model/lightingScene';
+import type { Rgb } from '../../../src/core/model/lightingScene/lightingScene';
+import { SURFACE_NAMES } from '../../../src/core/model/lightingScene/lightingScene';
 import type { BakeScene } from '../../../src/engines/bake/bakeScene';
 import { createRelightEngine } from '../../../src/engines/relight/createRelightEngine';
 import type { RelightEngine } from '../../../src/engines/relight/RelightEngine';

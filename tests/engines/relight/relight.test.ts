@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { LUMINANCE_WEIGHTS } from '../../../src/engines/bake/bakedMaps';
 import type { BakeScene } from '../../../src/engines/bake/bakeScene';
 import { createBaker } from '../../../src/engines/bake/createBaker';
-import type { Rgb } from '../../../src/core/model/lightingScene';
+import type { Rgb } from '../../../src/core/model/lightingScene/lightingScene';
 import { createRelightEngine } from '../../../src/engines/relight/createRelightEngine';
 import { groupLuminaires, groupWeight } from '../../../src/engines/relight/luminaireGroups';
 import { loadIes, spot as spotPhotometry, uniformRoom } from '../bake/bakeTestKit';

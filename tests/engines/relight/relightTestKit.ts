@@ -1,4 +1,4 @@
-import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../../src/core/model/lightingScene';
+import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../../src/core/model/lightingScene/lightingScene';
 import type { BakedMaps } from '../../../src/engines/bake/bakedMaps';
 import { texelArea } from '../../../src/engines/bake/surfaceLayout';
 import type { LitMaps } from '../../../src/engines/relight/relightMaps';

@@ -4,8 +4,8 @@
  * between a change and its re-solve the last solve scaled per channel by Φ_now/Φ_solve.
  */
 import { describe, expect, it } from 'vitest';
-import type { Rgb } from '../../../src/core/model/lightingScene';
-import { SURFACE_NAMES } from '../../../src/core/model/lightingScene';
+import type { Rgb } from '../../../src/core/model/lightingScene/lightingScene';
+import { SURFACE_NAMES } from '../../../src/core/model/lightingScene/lightingScene';
 import { reflectanceRgb, type BakeScene } from '../../../src/engines/bake/bakeScene';
 import { createBaker } from '../../../src/engines/bake/createBaker';
 import { texelArea } from '../../../src/engines/bake/surfaceLayout';

@@ -1,12 +1,12 @@
 import { describe, expect, it } from 'vitest';
 import { defaultCatalog } from '../../../src/core/catalog/defaultCatalog';
 import { InputError } from '../../../src/core/inputError';
-import { createConfiguration } from '../../../src/core/model/configuration';
-import { toLightingScene } from '../../../src/core/model/toLightingScene';
+import { createConfiguration } from '../../../src/core/model/configuration/configuration';
+import { toLightingScene } from '../../../src/core/model/files/toLightingScene';
 import { createConfiguratorStore } from '../../../src/core/store/createConfiguratorStore';
 import { cameraPreset, CAMERA_PRESETS, parseCameraSpec } from '../../../src/engines/view/cameraPresets';
-import { suspensionPoints } from '../../../src/core/model/suspensionPoints';
-import { aimedOrientation } from '../../../src/core/model/aim';
+import { suspensionPoints } from '../../../src/core/model/rails/suspensionPoints';
+import { aimedOrientation } from '../../../src/core/model/modules/aim';
 import { fixturesFromConfiguration, RAIL_HEIGHT } from '../../../src/engines/view/fixtures';
 import { modelHeight } from '../../../src/engines/view/luminaires/luminaireDimensions';
 

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../../src/core/model/lightingScene';
+import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../../src/core/model/lightingScene/lightingScene';
 import { surfaceLayouts } from '../../../src/engines/bake/surfaceLayout';
 import { emptyLitMaps, type LitMaps } from '../../../src/engines/relight/relightMaps';
 import { cctToLinearRgb } from '../../../src/core/photometry/cct';

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import type { BakeScene } from '../../../src/engines/bake/bakeScene';
 import { surfaceLayouts } from '../../../src/engines/bake/surfaceLayout';
-import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../../src/core/model/lightingScene';
+import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../../src/core/model/lightingScene/lightingScene';
 import { emptyLitMaps } from '../../../src/engines/relight/relightMaps';
 import { AUTO_EXPOSURE_KEY, autoExposure } from '../../../src/engines/view/autoExposure';
 import { floorStats, floorUnderObjects, statsOf, workPlaneStats } from '../../../src/engines/view/lightStats';

@@ -1,9 +1,9 @@
 import { describe, expect, it } from 'vitest';
 import { defaultCatalog as catalog } from '../../../src/core/catalog/defaultCatalog';
-import { bindAction } from '../../../src/core/model/actionDefinitions';
-import { createConfiguration, type Configuration } from '../../../src/core/model/configuration';
-import { modulesInOrder } from '../../../src/core/model/dmxPatch';
-import { toLightingScene } from '../../../src/core/model/toLightingScene';
+import { bindAction } from '../../../src/core/model/actions/actionDefinitions';
+import { createConfiguration, type Configuration } from '../../../src/core/model/configuration/configuration';
+import { modulesInOrder } from '../../../src/core/model/modules/dmxPatch';
+import { toLightingScene } from '../../../src/core/model/files/toLightingScene';
 import { cctToLinearRgb } from '../../../src/core/photometry/cct';
 import type { BakeScene } from '../../../src/engines/bake/bakeScene';
 import { groupLuminaires } from '../../../src/engines/relight/luminaireGroups';

@@ -7,9 +7,9 @@
  */
 import { headlessRenderer } from './headlessRenderer';
 import { describe, expect, it } from 'vitest';
-import { furnitureMesh } from '../../../src/core/model/furniture/furnitureLibrary';
-import { objectFinishRgb } from '../../../src/core/model/furniture/objectFinishes';
-import type { Rgb } from '../../../src/core/model/lightingScene';
+import { furnitureMesh } from '../../../src/core/model/objects/furniture/furnitureLibrary';
+import { objectFinishRgb } from '../../../src/core/model/objects/furniture/objectFinishes';
+import type { Rgb } from '../../../src/core/model/lightingScene/lightingScene';
 import { prepareObjects } from '../../../src/engines/bake/objects/prepareObjects';
 import { createRoomView } from '../../../src/engines/view/roomView';
 import { displayColor } from '../../../src/engines/view/toneMap';

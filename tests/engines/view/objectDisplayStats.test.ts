@@ -4,8 +4,8 @@
  * table's top, its mean and the floor under it, and the reflectance dilation fills the gutters.
  */
 import { describe, expect, it } from 'vitest';
-import { furnitureMesh } from '../../../src/core/model/furniture/furnitureLibrary';
-import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../../src/core/model/lightingScene';
+import { furnitureMesh } from '../../../src/core/model/objects/furniture/furnitureLibrary';
+import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../../src/core/model/lightingScene/lightingScene';
 import { prepareObjects } from '../../../src/engines/bake/objects/prepareObjects';
 import { surfaceLayouts, texelArea, texelCentre } from '../../../src/engines/bake/surfaceLayout';
 import { emptyLitMaps } from '../../../src/engines/relight/relightMaps';

@@ -5,7 +5,7 @@
  * triangles are the placed meshes (same total area as prepareObjects measured).
  */
 import { describe, expect, it } from 'vitest';
-import { furnitureMesh } from '../../../src/core/model/furniture/furnitureLibrary';
+import { furnitureMesh } from '../../../src/core/model/objects/furniture/furnitureLibrary';
 import type { BakeObject } from '../../../src/engines/bake/bakeScene';
 import { prepareObjects } from '../../../src/engines/bake/objects/prepareObjects';
 import { objectRenderGeometry } from '../../../src/engines/view/objectRenderGeometry';

@@ -1,6 +1,6 @@
 import { headlessRenderer } from './headlessRenderer';
 import { describe, expect, it } from 'vitest';
-import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../../src/core/model/lightingScene';
+import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../../src/core/model/lightingScene/lightingScene';
 import { surfaceLayouts } from '../../../src/engines/bake/surfaceLayout';
 import { emptyLitMaps } from '../../../src/engines/relight/relightMaps';
 import { autoExposure } from '../../../src/engines/view/autoExposure';

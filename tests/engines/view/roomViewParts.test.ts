@@ -1,7 +1,7 @@
 /** The pure parts of the room view: surface quads, the track's pieces, the shader's level array, presentMaps. */
 import { describe, expect, it } from 'vitest';
 import { IDENTITY3 } from '../../../src/engines/view/cat16';
-import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../../src/core/model/lightingScene';
+import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../../src/core/model/lightingScene/lightingScene';
 import { surfaceLayouts, texelCentre } from '../../../src/engines/bake/surfaceLayout';
 import { emptyLitMaps } from '../../../src/engines/relight/relightMaps';
 import { autoExposure } from '../../../src/engines/view/autoExposure';

@@ -9,7 +9,7 @@ import { existsSync, mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSy
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, describe, expect, it } from 'vitest';
-import { parseCatalogText } from '../../../src/core/model/catalogSchema';
+import { parseCatalogText } from '../../../src/core/model/catalogSchema/catalogSchema';
 import { parsePhotometry } from '../../../src/core/photometry';
 import { gldfBytes, linearSpec, MAPPING_TEXT, pendantSpec, productXml, trackSpotSpec } from '../../core/gldf/buildGldf';
 

@@ -9,7 +9,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { describe, expect, it } from 'vitest';
 import { PNG } from 'pngjs';
-import { SURFACE_NAMES } from '../../../src/core/model/lightingScene';
+import { SURFACE_NAMES } from '../../../src/core/model/lightingScene/lightingScene';
 import { decodePfm } from '../../../src/hosts/node/writePfm';
 import { loadLightingSceneFile } from '../../../src/hosts/node/loadLightingSceneFile';
 import { referencePointSources } from '../../../src/reference/pointSources';

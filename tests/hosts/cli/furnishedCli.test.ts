@@ -9,7 +9,7 @@ import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { describe, expect, it } from 'vitest';
-import type { Vec3 } from '../../../src/core/model/lightingScene';
+import type { Vec3 } from '../../../src/core/model/lightingScene/lightingScene';
 import { LUMINANCE_WEIGHTS } from '../../../src/engines/bake/bakedMaps';
 import { resolveBakeSettings } from '../../../src/engines/bake/bakeSettings';
 import { directAtPoint } from '../../../src/engines/bake/directAtPoint';

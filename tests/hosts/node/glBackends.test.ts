@@ -12,7 +12,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { PNG } from 'pngjs';
 import { describe, expect, it } from 'vitest';
-import { SURFACE_NAMES } from '../../../src/core/model/lightingScene';
+import { SURFACE_NAMES } from '../../../src/core/model/lightingScene/lightingScene';
 import { batchFolderNames } from '../../../src/hosts/node/batchFolderNames';
 import { ensureVulkanLoader, parseGlChoice, selectGlBackend, vulkanDrivers } from '../../../src/hosts/node/glBackend';
 import { decodePfm } from '../../../src/hosts/node/writePfm';

@@ -4,7 +4,7 @@ import { mkdtempSync, writeFileSync, copyFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { tmpdir } from 'node:os';
 import { loadLightingSceneFile, loadLightingSceneFileAsync } from '../../../src/hosts/node/loadLightingSceneFile';
-import { LightingSceneError } from '../../../src/core/model/parseLightingScene';
+import { LightingSceneError } from '../../../src/core/model/lightingScene/parseLightingScene';
 
 const FIXTURE = join(__dirname, '../../fixtures/models/furnished-room.json');
 

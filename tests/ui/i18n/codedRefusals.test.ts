@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import { refuse } from '../../../src/core/model/action';
-import { checkAction } from '../../../src/core/model/actionDefinitions';
-import { createConfiguration } from '../../../src/core/model/configuration';
+import { refuse } from '../../../src/core/model/actions/action';
+import { checkAction } from '../../../src/core/model/actions/actionDefinitions';
+import { createConfiguration } from '../../../src/core/model/configuration/configuration';
 import { createFormat } from '../../../src/ui/i18n/createFormat';
 import { createTranslator } from '../../../src/ui/i18n/createTranslator';
 import { loadMessages } from '../../../src/ui/i18n/loadMessages';

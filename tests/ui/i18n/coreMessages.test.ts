@@ -1,9 +1,10 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { checkAction } from '../../../src/core/model/actionDefinitions';
-import type { Refusal } from '../../../src/core/model/action';
-import { createConfiguration, type Configuration } from '../../../src/core/model/configuration';
-import { deserializeConfiguration, serializeConfiguration, SceneFileError } from '../../../src/core/model/sceneFile';
+import { checkAction } from '../../../src/core/model/actions/actionDefinitions';
+import type { Refusal } from '../../../src/core/model/actions/action';
+import { createConfiguration, type Configuration } from '../../../src/core/model/configuration/configuration';
+import { deserializeConfiguration, serializeConfiguration } from '../../../src/core/model/files/sceneFile';
+import { SceneFileError } from '../../../src/core/model/files/sceneFileError';
 import { parseIes } from '../../../src/core/photometry/parseIes';
 import { photometryWarnings } from '../../../src/core/photometry/checks';
 import { codePhotometryError, codePhotometryWarning } from '../../../src/core/photometry/photometryCodes';
@@ -206,7 +207,7 @@ describe('core messages in every language', async () => {
 describe('the English catalogue has every code the core emits', () => {
   const files = (dir: string): string[] =>
     (readdirSyncRecursive(new URL(`../../../src/core/${dir}/`, import.meta.url)) as string[]).filter((f) => f.endsWith('.ts'));
-  const source = ['model', 'photometry'].flatMap(files).concat([new URL('../../../src/core/inputError.ts', import.meta.url).pathname]);
+  const source = ['model', 'photometry'].flatMap(files).concat(['inputError.ts', 'untrustedJson.ts', 'zodIssues.ts'].map((f) => new URL(`../../../src/core/${f}`, import.meta.url).pathname));
   it('collects the codes given to refusals, InputErrors, keyed problems and photometry patterns', async () => {
     const en = { ...(await loadMessages('en')), refusals, fileErrors, photometry };
     const known = new Set(Object.values(en).flatMap((area) => Object.keys(area as object)));
@@ -252,7 +253,7 @@ function readdirSyncRecursive(dir: URL): string[] {
 describe('a broken share link in the startup banner', async () => {
   const de = createTranslator(await loadMessages('de'), 'de-CH', (x) => createFormat('de-CH').number(x));
   it('words the link and its problem in German (the link named in German, the parser’s reason kept as read)', async () => {
-    const { decodeShareString } = await import('../../../src/core/model/sceneFile');
+    const { decodeShareString } = await import('../../../src/core/model/files/shareLink');
     let error: unknown;
     try {
       // base64url of '{"format": oops}': not JSON, line 1.

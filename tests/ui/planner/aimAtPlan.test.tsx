@@ -6,8 +6,8 @@
  */
 import { renderToStaticMarkup } from 'react-dom/server';
 import { describe, expect, it } from 'vitest';
-import { modulePlacements } from '../../../src/core/model/geometry';
-import { aimAxis } from '../../../src/core/model/aim';
+import { modulePlacements } from '../../../src/core/model/rails/geometry';
+import { aimAxis } from '../../../src/core/model/modules/aim';
 import { modulePosition } from '../../../src/core/model/actions/aimActions';
 import { aimAtMode } from '../../../src/ui/shared/aimAtMode';
 import { AimOptions } from '../../../src/ui/planner/AimOptions';

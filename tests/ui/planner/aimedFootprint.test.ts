@@ -1,17 +1,17 @@
 /**
  * The plan footprint follows the aim (docs/aiming.md): the tilted beam cone traced to the room's
- * surfaces (src/core/model/coneOutline.ts), checked against the conic section by hand:
+ * surfaces (src/core/model/modules/coneOutline.ts), checked against the conic section by hand:
  * a cone of half angle α tilted t from nadir at height h lands on the floor between
  * h·tan(t − α) and h·tan(t + α) along the aim direction, and every hit lies exactly α from
  * the axis (the cone's defining property).
  */
 import { describe, expect, it } from 'vitest';
 import { defaultCatalog } from '../../../src/core/catalog/defaultCatalog';
-import { aimAxis } from '../../../src/core/model/aim';
-import { coneRoomOutline } from '../../../src/core/model/coneOutline';
-import type { ModuleInstance } from '../../../src/core/model/configuration';
-import type { ModulePlacement } from '../../../src/core/model/geometry';
-import type { Vec3 } from '../../../src/core/model/lightingScene';
+import { aimAxis } from '../../../src/core/model/modules/aim';
+import { coneRoomOutline } from '../../../src/core/model/modules/coneOutline';
+import type { ModuleInstance } from '../../../src/core/model/configuration/configuration';
+import type { ModulePlacement } from '../../../src/core/model/rails/geometry';
+import type { Vec3 } from '../../../src/core/model/lightingScene/lightingScene';
 import { moduleFootprint } from '../../../src/ui/planner/moduleFootprint';
 
 const DEG = Math.PI / 180;

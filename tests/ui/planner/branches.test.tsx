@@ -3,14 +3,14 @@
  * connector, the free ports (a branch through each) and the connectors it can become, every button
  * gated by the model with its reason; a free end offers a branch through any connector. The plan's
  * elements hold the T as one node, and a tap on it selects the rail it ends.
- * The tree (tests/core/model/trees.test.ts, by hand): the 1.5 m single preset at (1, 3) heading +x,
+ * The tree (tests/core/model/rails/trees.test.ts, by hand): the 1.5 m single preset at (1, 3) heading +x,
  * a T at its end (pivot (2.55, 3)), B through it to (3.6, 3), C left (−z) to (2.55, 1.95).
  */
 import { renderToStaticMarkup } from 'react-dom/server';
 import { describe, expect, it } from 'vitest';
-import { bindAction } from '../../../src/core/model/actionDefinitions';
-import { createConfiguration, type Configuration } from '../../../src/core/model/configuration';
-import { systemElementTree } from '../../../src/core/model/geometry';
+import { bindAction } from '../../../src/core/model/actions/actionDefinitions';
+import { createConfiguration, type Configuration } from '../../../src/core/model/configuration/configuration';
+import { systemElementTree } from '../../../src/core/model/rails/geometry';
 import { createActionGate } from '../../../src/ui/planner/actionGate';
 import { planHitTest } from '../../../src/ui/planner/planHitTest';
 import { RailOptions } from '../../../src/ui/planner/RailOptions';

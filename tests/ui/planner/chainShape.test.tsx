@@ -5,8 +5,8 @@
  */
 import { renderToStaticMarkup } from 'react-dom/server';
 import { describe, expect, it } from 'vitest';
-import { bindAction } from '../../../src/core/model/actionDefinitions';
-import { createConfiguration, type Configuration } from '../../../src/core/model/configuration';
+import { bindAction } from '../../../src/core/model/actions/actionDefinitions';
+import { createConfiguration, type Configuration } from '../../../src/core/model/configuration/configuration';
 import { createActionGate } from '../../../src/ui/planner/actionGate';
 import { SystemOptions } from '../../../src/ui/planner/SystemOptions';
 import { catalog } from './testPlanner';

@@ -7,9 +7,9 @@
  * Positions by hand, metres along the chain; tolerance 1e-9 m.
  */
 import { describe, expect, it } from 'vitest';
-import type { Configuration } from '../../../src/core/model/configuration';
+import type { Configuration } from '../../../src/core/model/configuration/configuration';
 import { systemAtOneOne } from '../../core/model/helpers';
-import { suspensionCoordinates } from '../../../src/core/model/suspensionPoints';
+import { suspensionCoordinates } from '../../../src/core/model/rails/suspensionPoints';
 import { detailLevel } from '../../../src/ui/planner/detailLevel';
 import { TestPlanner, catalog } from './testPlanner';
 

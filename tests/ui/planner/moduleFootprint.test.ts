@@ -1,12 +1,12 @@
 import { describe, expect, it } from 'vitest';
 import { defaultCatalog } from '../../../src/core/catalog/defaultCatalog';
-import type { ModuleInstance } from '../../../src/core/model/configuration';
-import type { ModulePlacement } from '../../../src/core/model/geometry';
+import type { ModuleInstance } from '../../../src/core/model/configuration/configuration';
+import type { ModulePlacement } from '../../../src/core/model/rails/geometry';
 import { moduleFootprint } from '../../../src/ui/planner/moduleFootprint';
 import { deleteTarget } from '../../../src/ui/planner/deleteTarget';
 import { selectionPath } from '../../../src/ui/planner/selection';
-import { actionDefinitions } from '../../../src/core/model/actionDefinitions';
-import { createConfiguration } from '../../../src/core/model/configuration';
+import { actionDefinitions } from '../../../src/core/model/actions/actionDefinitions';
+import { createConfiguration } from '../../../src/core/model/configuration/configuration';
 
 const placement = (heading: number): ModulePlacement => ({
   moduleId: 'm1',

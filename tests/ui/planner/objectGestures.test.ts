@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { checkAction } from '../../../src/core/model/actionDefinitions';
-import { createConfiguration, type Configuration, type RoomObject } from '../../../src/core/model/configuration';
-import { furnitureMesh } from '../../../src/core/model/furniture/furnitureLibrary';
-import { objectMesh, placedBounds } from '../../../src/core/model/objectGeometry';
+import { checkAction } from '../../../src/core/model/actions/actionDefinitions';
+import { createConfiguration, type Configuration, type RoomObject } from '../../../src/core/model/configuration/configuration';
+import { furnitureMesh } from '../../../src/core/model/objects/furniture/furnitureLibrary';
+import { objectMesh, placedBounds } from '../../../src/core/model/objects/objectGeometry';
 import { createConfiguratorStore } from '../../../src/core/store/createConfiguratorStore';
 import { addLibraryItem } from '../../../src/ui/planner/addFurniture';
 import { planHitTest } from '../../../src/ui/planner/planHitTest';

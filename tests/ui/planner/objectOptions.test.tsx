@@ -1,8 +1,8 @@
 import { renderToStaticMarkup } from 'react-dom/server';
 import { describe, expect, it } from 'vitest';
-import { createConfiguration, type Configuration } from '../../../src/core/model/configuration';
-import { FURNITURE_LIBRARY } from '../../../src/core/model/furniture/furnitureLibrary';
-import { OBJECT_FINISHES } from '../../../src/core/model/furniture/objectFinishes';
+import { createConfiguration, type Configuration } from '../../../src/core/model/configuration/configuration';
+import { FURNITURE_LIBRARY } from '../../../src/core/model/objects/furniture/furnitureLibrary';
+import { OBJECT_FINISHES } from '../../../src/core/model/objects/furniture/objectFinishes';
 import { createConfiguratorStore } from '../../../src/core/store/createConfiguratorStore';
 import { createActionGate } from '../../../src/ui/planner/actionGate';
 import { FurniturePanel, itemDimensions } from '../../../src/ui/planner/FurniturePanel';

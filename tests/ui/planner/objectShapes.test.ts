@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { createConfiguration, type Configuration, type ObjectPlacement } from '../../../src/core/model/configuration';
-import { boxPart, composeParts } from '../../../src/core/model/furniture/meshParts';
+import { createConfiguration, type Configuration, type ObjectPlacement } from '../../../src/core/model/configuration/configuration';
+import { boxPart, composeParts } from '../../../src/core/model/objects/furniture/meshParts';
 import type { TriangleMesh } from '../../../src/core/mesh/triangleMesh';
 import { insidePolygon, objectAt } from '../../../src/ui/planner/planHitTest';
 import { OUTLINE_CELL, libraryItemOutline, objectPolygons } from '../../../src/ui/planner/objectShapes';
@@ -88,7 +88,7 @@ describe('object outlines seen from above', () => {
   });
 
   it('every library item traces to closed loops whose bounds are its stated width and depth (round parts within a cell)', async () => {
-    const { FURNITURE_LIBRARY } = await import('../../../src/core/model/furniture/furnitureLibrary');
+    const { FURNITURE_LIBRARY } = await import('../../../src/core/model/objects/furniture/furnitureLibrary');
     for (const item of FURNITURE_LIBRARY.filter((i) => i.mount === 'floor')) {
       const b = bounds(libraryItemOutline(item.id));
       expect(Math.abs(b.maxX - b.minX - item.width), item.id).toBeLessThanOrEqual(2 * OUTLINE_CELL);

@@ -1,7 +1,7 @@
 import { renderToStaticMarkup } from 'react-dom/server';
 import { describe, expect, it } from 'vitest';
 import { demoConfiguration } from '../../../src/core/catalog/demoConfiguration';
-import type { Configuration } from '../../../src/core/model/configuration';
+import type { Configuration } from '../../../src/core/model/configuration/configuration';
 import { createActionGate } from '../../../src/ui/planner/actionGate';
 import { GatedButton } from '../../../src/ui/planner/GatedButton';
 import { OptionsPanel } from '../../../src/ui/planner/OptionsPanel';

@@ -1,6 +1,6 @@
 import { describe, expect, test } from 'vitest';
 import { defaultCatalog } from '../../../src/core/catalog/defaultCatalog';
-import { createConfiguration } from '../../../src/core/model/configuration';
+import { createConfiguration } from '../../../src/core/model/configuration/configuration';
 import { createConfiguratorStore, type ConfiguratorState } from '../../../src/core/store/createConfiguratorStore';
 import { createFormat } from '../../../src/ui/i18n/createFormat';
 import { createTranslator } from '../../../src/ui/i18n/createTranslator';

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { demoConfiguration } from '../../../src/core/catalog/demoConfiguration';
-import { modulePlacements, railPlacements } from '../../../src/core/model/geometry';
+import { modulePlacements, railPlacements } from '../../../src/core/model/rails/geometry';
 import { HIT_HALF_WIDTH_PX, planHitTest } from '../../../src/ui/planner/planHitTest';
 import { worldToScreen } from '../../../src/ui/planner/viewTransform';
 import { catalog } from './testPlanner';

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { createConfiguration } from '../../../src/core/model/configuration';
+import { createConfiguration } from '../../../src/core/model/configuration/configuration';
 import { chordMatches, findByChord } from '../../../src/ui/planner/keyChord';
 import { KEY_MOVE_STEP, PLANNER_COMMANDS, ROTATE_STEP, ZOOM_STEP, plannerCommand } from '../../../src/ui/planner/plannerCommands';
 import { TestPlanner } from './testPlanner';

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { systemBounds } from '../../../src/core/model/geometry';
+import { systemBounds } from '../../../src/core/model/rails/geometry';
 import { MODULE_LEVEL_SCALE } from '../../../src/ui/planner/detailLevel';
 import { ZOOM_STEP } from '../../../src/ui/planner/plannerCommands';
 import { screenToWorld, wheelZoomFactor, zoomAt } from '../../../src/ui/planner/viewTransform';

@@ -2,9 +2,9 @@ import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { addLibraryItem } from '../../../src/ui/planner/addFurniture';
 import { PLANNER_COMMANDS } from '../../../src/ui/planner/plannerCommands';
-import type { RoomObject } from '../../../src/core/model/configuration';
-import { FURNITURE_LIBRARY } from '../../../src/core/model/furniture/furnitureLibrary';
-import { objectPlacement } from '../../../src/core/model/objectGeometry';
+import type { RoomObject } from '../../../src/core/model/configuration/configuration';
+import { FURNITURE_LIBRARY } from '../../../src/core/model/objects/furniture/furnitureLibrary';
+import { objectPlacement } from '../../../src/core/model/objects/objectGeometry';
 import { TestPlanner } from './testPlanner';
 
 /** One thing a user can do to the plan, with positions in plan pixels (1000 × 800). */

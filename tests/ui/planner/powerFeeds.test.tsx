@@ -5,10 +5,10 @@
  */
 import { renderToStaticMarkup } from 'react-dom/server';
 import { describe, expect, it } from 'vitest';
-import { bindAction } from '../../../src/core/model/actionDefinitions';
-import { billOfMaterials } from '../../../src/core/model/billOfMaterials';
-import { createConfiguration, type Configuration } from '../../../src/core/model/configuration';
-import { installationNeeds } from '../../../src/core/model/installationNeeds';
+import { bindAction } from '../../../src/core/model/actions/actionDefinitions';
+import { billOfMaterials } from '../../../src/core/model/power/billOfMaterials';
+import { createConfiguration, type Configuration } from '../../../src/core/model/configuration/configuration';
+import { installationNeeds } from '../../../src/core/model/power/installationNeeds';
 import { createActionGate } from '../../../src/ui/planner/actionGate';
 import { BomPanel } from '../../../src/ui/planner/BomPanel';
 import { SystemOptions } from '../../../src/ui/planner/SystemOptions';

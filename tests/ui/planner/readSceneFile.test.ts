@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { SceneFileError, serializeConfiguration } from '../../../src/core/model/sceneFile';
+import { serializeConfiguration } from '../../../src/core/model/files/sceneFile';
+import { SceneFileError } from '../../../src/core/model/files/sceneFileError';
 import { MAX_SCENE_FILE_BYTES, readSceneFile } from '../../../src/ui/planner/readSceneFile';
 import { sceneFileName } from '../../../src/ui/planner/sceneFileName';
 import { catalog, withPreset } from '../../core/model/helpers';

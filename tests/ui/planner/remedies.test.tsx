@@ -5,10 +5,10 @@
  */
 import { renderToStaticMarkup } from 'react-dom/server';
 import { describe, expect, it } from 'vitest';
-import { attemptAction } from '../../../src/core/model/actionDefinitions';
-import { createConfiguration, type Configuration } from '../../../src/core/model/configuration';
-import { remedyFor } from '../../../src/core/model/remedy';
-import { suggestedPresets } from '../../../src/core/model/suggestedPresets';
+import { attemptAction } from '../../../src/core/model/actions/actionDefinitions';
+import { createConfiguration, type Configuration } from '../../../src/core/model/configuration/configuration';
+import { remedyFor } from '../../../src/core/model/guidance/remedy';
+import { suggestedPresets } from '../../../src/core/model/guidance/suggestedPresets';
 import { createConfiguratorStore } from '../../../src/core/store/createConfiguratorStore';
 import { createI18n } from '../../../src/ui/i18n/createI18n';
 import { createActionGate } from '../../../src/ui/planner/actionGate';

@@ -1,9 +1,9 @@
 import { defaultCatalog } from '../../../src/core/catalog/defaultCatalog';
 import { demoConfiguration } from '../../../src/core/catalog/demoConfiguration';
-import type { Configuration, LightSystem } from '../../../src/core/model/configuration';
-import { modulePlacements, railPlacements } from '../../../src/core/model/geometry';
-import { newModule } from '../../../src/core/model/presets';
-import { validate } from '../../../src/core/model/validate';
+import type { Configuration, LightSystem } from '../../../src/core/model/configuration/configuration';
+import { modulePlacements, railPlacements } from '../../../src/core/model/rails/geometry';
+import { newModule } from '../../../src/core/model/actions/presets';
+import { validate } from '../../../src/core/model/validation/validate';
 import { createConfiguratorStore } from '../../../src/core/store/createConfiguratorStore';
 import { createUiStore } from '../../../src/core/store/uiStore';
 import type { KeyChord } from '../../../src/ui/planner/keyChord';

@@ -6,9 +6,9 @@
  * Frames and the clock are the test's (no timing).
  */
 import { describe, expect, it } from 'vitest';
-import type { Configuration } from '../../../src/core/model/configuration';
-import { allModules } from '../../../src/core/model/lightScenes';
-import { fadeFraction, fadeLevels, luminousOutput } from '../../../src/core/model/sceneFade';
+import type { Configuration } from '../../../src/core/model/configuration/configuration';
+import { allModules } from '../../../src/core/model/cues/lightScenes';
+import { fadeFraction, fadeLevels, luminousOutput } from '../../../src/core/model/cues/sceneFade';
 import { createConfiguratorStore } from '../../../src/core/store/createConfiguratorStore';
 import type { BakeScene } from '../../../src/engines/bake/bakeScene';
 import type { ServiceFade } from '../../../src/engines/view/createBakeService';
@@ -163,7 +163,7 @@ describe('scene player', () => {
     // The 3D view's scene faded from carries the same mix (dimming; the colours are equal here).
     const lit: BakeScene = { room: { width: 1, height: 1, depth: 1, reflectance: {} as BakeScene['room']['reflectance'] }, luminaires: [0, 1, 2].map(() => ({ dimming: 1 }) as BakeScene['luminaires'][number]) };
     expect(fades[fades.length - 1]!.from(lit).luminaires.map((l) => l.dimming)).toEqual([0.5, 0.5, 0]);
-    // t = 0.5: from output L to 2 L, e = 0.442746 (tests/core/model/sceneFade.test.ts, by hand):
+    // t = 0.5: from output L to 2 L, e = 0.442746 (tests/core/model/cues/sceneFade.test.ts, by hand):
     // m1 0.5·(1 − e) = 0.278627, m2 0.5 + 0.5·e = 0.721373, m3 e = 0.442746.
     clock.advance(1000);
     const half = levels();

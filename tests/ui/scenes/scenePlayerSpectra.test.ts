@@ -4,7 +4,7 @@
  * not loaded, as in a browser that has not needed them yet) a recall waits for them and succeeds.
  */
 import { describe, expect, it, vi } from 'vitest';
-import { allModules } from '../../../src/core/model/lightScenes';
+import { allModules } from '../../../src/core/model/cues/lightScenes';
 import { catalog, run, withPreset } from '../../core/model/helpers';
 
 describe('scene player and the colour-filter spectra', () => {

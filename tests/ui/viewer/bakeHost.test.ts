@@ -5,7 +5,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import { defaultCatalog } from '../../../src/core/catalog/defaultCatalog';
-import { createConfiguration } from '../../../src/core/model/configuration';
+import { createConfiguration } from '../../../src/core/model/configuration/configuration';
 import { createConfiguratorStore } from '../../../src/core/store/createConfiguratorStore';
 import { bakeHostFor, bakeHostOf, createBakeHost } from '../../../src/ui/viewer/bakeHost';
 import { initialQuality } from '../../../src/ui/viewer/qualityPreference';

@@ -5,12 +5,13 @@
  */
 import { z } from 'zod';
 import { InputError } from '../../inputError';
-import type { ActionDefinition } from '../action';
-import { aimToward, clampAim } from '../aim';
-import { findModuleType, type Catalog, type ModuleTypeSpec } from '../catalogSchema';
-import type { Configuration } from '../configuration';
-import { modulePlacements } from '../geometry';
-import { moduleHeight } from '../suspensionPoints';
+import type { ActionDefinition } from './action';
+import { aimToward, clampAim } from '../modules/aim';
+import { findModuleType, type Catalog } from '../catalogSchema/catalogSchema';
+import { type ModuleTypeSpec } from '../catalogSchema/moduleTypeSchema';
+import type { Configuration } from '../configuration/configuration';
+import { modulePlacements } from '../rails/geometry';
+import { moduleHeight } from '../rails/suspensionPoints';
 import { findModule, updateModule } from './lookup';
 
 function adjustableType(state: Configuration, moduleId: string, catalog: Catalog): ModuleTypeSpec & { adjustable: NonNullable<ModuleTypeSpec['adjustable']> } {

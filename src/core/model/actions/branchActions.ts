@@ -7,12 +7,13 @@
  */
 import { z } from 'zod';
 import { InputError } from '../../inputError';
-import { refuse, type ActionDefinition, type CodedReason, type Refusal } from '../action';
-import { allowedTurn, connectorPorts, findConnector, type Catalog } from '../catalogSchema';
-import type { Configuration, FeedAt, Rail } from '../configuration';
-import { keepFixingsIfValid } from '../fixingRules';
-import { jointParent, nodeJoints } from '../railTree';
-import type { Problem } from '../validate';
+import { refuse, type ActionDefinition, type CodedReason, type Refusal } from './action';
+import { findConnector, type Catalog } from '../catalogSchema/catalogSchema';
+import { allowedTurn, connectorPorts } from '../catalogSchema/connectorTurns';
+import type { Configuration, FeedAt, Rail } from '../configuration/configuration';
+import { keepFixingsIfValid } from '../rails/fixingRules';
+import { jointParent, nodeJoints } from '../rails/railTree';
+import type { Problem } from '../configuration/problem';
 import { findRail, replaceSystem, takeId } from './lookup';
 import { snapRailLength } from './railActions';
 

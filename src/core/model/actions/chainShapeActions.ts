@@ -6,11 +6,12 @@
  */
 import { z } from 'zod';
 import { InputError } from '../../inputError';
-import { refuse, type ActionDefinition, type CodedReason } from '../action';
-import { quoting } from '../coding';
-import { findConnector, type Catalog, type ConnectorSpec } from '../catalogSchema';
-import type { Configuration, LightSystem } from '../configuration';
-import { suspensionCoordinates } from '../suspensionPoints';
+import { refuse, type ActionDefinition, type CodedReason } from './action';
+import { quoting } from '../configuration/coding';
+import { findConnector, type Catalog } from '../catalogSchema/catalogSchema';
+import { type ConnectorSpec } from '../catalogSchema/railSystemSchema';
+import type { Configuration, LightSystem } from '../configuration/configuration';
+import { suspensionCoordinates } from '../rails/suspensionPoints';
 import { replaceSystem, systemIndex } from './lookup';
 
 /** Grid a moved fixing point snaps to along the chain, metres (a centimetre: what a fitter marks). */

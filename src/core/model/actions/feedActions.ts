@@ -5,11 +5,11 @@
  * the result where the action is bound, so a move that would overload a driver is refused too.
  */
 import { z } from 'zod';
-import type { ActionDefinition, CodedReason } from '../action';
-import { findDriver } from '../catalogSchema';
-import type { FeedAt } from '../configuration';
-import { describeFeedAt, feedAtParam, feedLabel, feedLoads, formatWatts } from '../feedLoads';
-import type { Problem } from '../validate';
+import type { ActionDefinition, CodedReason } from './action';
+import { findDriver } from '../catalogSchema/catalogSchema';
+import type { FeedAt } from '../configuration/configuration';
+import { describeFeedAt, feedAtParam, feedLabel, feedLoads, formatWatts } from '../power/feedLoads';
+import type { Problem } from '../configuration/problem';
 import { findFeed, replaceSystem, systemIndex, takeId } from './lookup';
 
 /** 'start', 'end', { joint: k } (the connector joints[k] goes through) or { end: i } (rail i's free end, a branch). */

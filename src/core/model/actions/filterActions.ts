@@ -5,8 +5,8 @@
  * A filter changes only the module's colour and lumens, so the 3D view relights, never rebakes.
  */
 import { z } from 'zod';
-import type { ActionDefinition } from '../action';
-import type { ModuleInstance } from '../configuration';
+import type { ActionDefinition } from './action';
+import type { ModuleInstance } from '../configuration/configuration';
 import { findModule, replaceRail } from './lookup';
 
 const filterParams = z.object({ moduleId: z.string(), filter: z.string().nullable() });

@@ -3,7 +3,7 @@
  * throw InputError (the caller passed a stale or foreign id).
  */
 import { InputError } from '../../inputError';
-import type { Configuration, Feed, LightSystem, ModuleInstance, Rail } from '../configuration';
+import type { Configuration, Feed, LightSystem, ModuleInstance, Rail } from '../configuration/configuration';
 
 export interface RailRef {
   readonly systemIndex: number;

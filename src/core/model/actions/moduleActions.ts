@@ -7,15 +7,15 @@
  */
 import { z } from 'zod';
 import { InputError } from '../../inputError';
-import type { ActionDefinition, CodedReason } from '../action';
-import { findModuleType, type Catalog } from '../catalogSchema';
-import type { Configuration, ModuleInstance, Rail } from '../configuration';
-import { isFreeRail, placeInLargestGap, placementStep, roundOffset, snapOffset } from '../freePositions';
-import { railModuleOffsets } from '../geometry';
-import { isTunable } from '../dmxPatch';
-import { clampAim } from '../aim';
-import { newModule } from '../presets';
-import { beamForType } from '../beamForType';
+import type { ActionDefinition, CodedReason } from './action';
+import { findModuleType, type Catalog } from '../catalogSchema/catalogSchema';
+import type { Configuration, ModuleInstance, Rail } from '../configuration/configuration';
+import { isFreeRail, placeInLargestGap, placementStep, roundOffset, snapOffset } from '../rails/freePositions';
+import { railModuleOffsets } from '../rails/geometry';
+import { isTunable } from '../modules/dmxPatch';
+import { clampAim } from '../modules/aim';
+import { newModule } from './presets';
+import { beamForType } from '../modules/beamForType';
 import { findModule, findRail, replaceRail, takeId, updateModule } from './lookup';
 
 const addParams = z.object({

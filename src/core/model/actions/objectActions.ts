@@ -4,17 +4,17 @@
  * (bindDefinition.ts); addObject alone moves the object to the nearest spot where it fits
  * (fitPlacement), so a sofa dropped half through a wall lands against it.
  */
-import { MAX_STORED_MESH_CHARS, storedMeshChars } from '../storedMeshSize';
+import { MAX_STORED_MESH_CHARS, storedMeshChars } from '../files/storedMeshSize';
 import { z } from 'zod';
 import { InputError } from '../../inputError';
 import type { TriangleMesh } from '../../mesh/triangleMesh';
-import { refuse, type ActionDefinition } from '../action';
-import { quoting } from '../coding';
-import { MESH_UNITS, OBJECT_SCALE_LIMITS, WALL_NAMES, type Configuration, type ImportedMesh, type ObjectFinish, type ObjectPlacement, type ObjectSource, type RoomObject } from '../configuration';
-import { findFurnitureItem } from '../furniture/furnitureLibrary';
-import { normaliseDegrees } from '../geometry';
-import { fitPlacement, sourceMesh, sourceName } from '../objectGeometry';
-import { meshDataProblem } from '../objectProblems';
+import { refuse, type ActionDefinition } from './action';
+import { quoting } from '../configuration/coding';
+import { MESH_UNITS, OBJECT_SCALE_LIMITS, WALL_NAMES, type Configuration, type ImportedMesh, type ObjectFinish, type ObjectPlacement, type ObjectSource, type RoomObject } from '../configuration/configuration';
+import { findFurnitureItem } from '../objects/furniture/furnitureLibrary';
+import { normaliseDegrees } from '../rails/geometry';
+import { fitPlacement, sourceMesh, sourceName } from '../objects/objectGeometry';
+import { meshDataProblem } from '../objects/objectProblems';
 import { takeId } from './lookup';
 
 const placementSchema = z.discriminatedUnion('on', [

@@ -7,12 +7,13 @@
  */
 import { z } from 'zod';
 import { InputError } from '../../inputError';
-import type { ActionDefinition } from '../action';
-import { quoting } from '../coding';
-import type { Catalog } from '../catalogSchema';
-import { findModuleType } from '../catalogSchema';
-import type { Configuration, ModuleInstance } from '../configuration';
-import { DMX_CHANNELS, DMX_UNIVERSE_MAX, DMX_UNIVERSE_MIN, isTunable, modulesInOrder, patchWidth, type DmxPatch } from '../dmxPatch';
+import type { ActionDefinition } from './action';
+import { quoting } from '../configuration/coding';
+import type { Catalog } from '../catalogSchema/catalogSchema';
+import { findModuleType } from '../catalogSchema/catalogSchema';
+import type { Configuration, ModuleInstance } from '../configuration/configuration';
+import { DMX_CHANNELS, DMX_UNIVERSE_MAX, DMX_UNIVERSE_MIN, isTunable, modulesInOrder, patchWidth } from '../modules/dmxPatch';
+import { type DmxPatch } from '../configuration/configuration';
 import { findModule } from './lookup';
 
 const resolution = z.union([z.literal(8), z.literal(16)]);

@@ -6,16 +6,17 @@
  * where the action is bound; these definitions only word the refusals.
  */
 import { z } from 'zod';
-import type { ActionDefinition } from '../action';
-import { quoting } from '../coding';
-import { DISTRIBUTIONS, findConnector, type Catalog } from '../catalogSchema';
-import type { Rail } from '../configuration';
-import { plannedFeeds } from '../feedLoads';
-import { keepFixingsIfValid, withoutFixings } from '../fixingRules';
-import { withoutOffsets } from '../freePositions';
-import { railModuleOffsets } from '../geometry';
-import { isLeafRail } from '../railTree';
-import { cutRail, piecesWithout } from '../treeEdits';
+import type { ActionDefinition } from './action';
+import { quoting } from '../configuration/coding';
+import { findConnector, type Catalog } from '../catalogSchema/catalogSchema';
+import { DISTRIBUTIONS } from '../catalogSchema/railSystemSchema';
+import type { Rail } from '../configuration/configuration';
+import { plannedFeeds } from '../power/feedLoads';
+import { keepFixingsIfValid, withoutFixings } from '../rails/fixingRules';
+import { withoutOffsets } from '../rails/freePositions';
+import { railModuleOffsets } from '../rails/geometry';
+import { isLeafRail } from '../rails/railTree';
+import { cutRail, piecesWithout } from '../rails/treeEdits';
 import { FIT_CODES } from './moduleActions';
 import { findRail, replaceSystem, systemIndex, takeId, updateRail } from './lookup';
 

@@ -3,8 +3,8 @@
  * are validate()'s rules, checked on the result where the action is bound.
  */
 import { z } from 'zod';
-import type { ActionDefinition } from '../action';
-import { quoting } from '../coding';
+import type { ActionDefinition } from './action';
+import { quoting } from '../configuration/coding';
 
 const setRoomParams = z.object({ width: z.number(), depth: z.number(), height: z.number() });
 

@@ -5,10 +5,10 @@
  */
 import { z } from 'zod';
 import { InputError } from '../../inputError';
-import type { ActionDefinition, CodedReason } from '../action';
-import type { Configuration, LightScene } from '../configuration';
-import { FADE_LIMITS, findScene, looksOf, recallLooks, SCENE_NAME_MAX, sceneByName } from '../lightScenes';
-import type { Problem } from '../validate';
+import type { ActionDefinition, CodedReason } from './action';
+import type { Configuration, LightScene } from '../configuration/configuration';
+import { FADE_LIMITS, findScene, looksOf, recallLooks, SCENE_NAME_MAX, sceneByName } from '../cues/lightScenes';
+import type { Problem } from '../configuration/problem';
 import { findModule, replaceRail, takeId } from './lookup';
 
 function sceneIndex(state: Configuration, sceneId: string): number {

@@ -5,10 +5,10 @@
  * any sane custom value) is always accepted; geometry is never affected.
  */
 import { z } from 'zod';
-import type { ActionDefinition } from '../action';
-import { quoting } from '../coding';
-import type { Reflectance, SurfaceName } from '../lightingScene';
-import { SURFACE_TARGETS, targetSurfaces } from '../reflectance';
+import type { ActionDefinition } from './action';
+import { quoting } from '../configuration/coding';
+import type { Reflectance, SurfaceName } from '../lightingScene/lightingScene';
+import { SURFACE_TARGETS, targetSurfaces } from '../lightingScene/reflectance';
 
 const setReflectanceParams = z.object({
   surface: z.enum(SURFACE_TARGETS),

@@ -5,13 +5,14 @@
  */
 import { z } from 'zod';
 import { InputError } from '../../inputError';
-import type { ActionDefinition } from '../action';
-import { quoting } from '../coding';
-import type { Catalog, PresetSpec } from '../catalogSchema';
-import { MOUNTINGS, type Configuration } from '../configuration';
-import { normaliseDegrees, rotatePlan, systemBounds } from '../geometry';
-import { defaultSuspension, findPresetPlacement, instantiatePreset, type Placement } from '../presets';
-import { keepFixingsIfValid } from '../fixingRules';
+import type { ActionDefinition } from './action';
+import { quoting } from '../configuration/coding';
+import type { Catalog } from '../catalogSchema/catalogSchema';
+import type { PresetSpec } from '../catalogSchema/presetSchema';
+import { MOUNTINGS, type Configuration } from '../configuration/configuration';
+import { normaliseDegrees, rotatePlan, systemBounds } from '../rails/geometry';
+import { defaultSuspension, findPresetPlacement, instantiatePreset, type Placement } from './presets';
+import { keepFixingsIfValid } from '../rails/fixingRules';
 import { replaceSystem, systemIndex, updateSystem } from './lookup';
 
 function findPreset(catalog: Catalog, id: string): PresetSpec {

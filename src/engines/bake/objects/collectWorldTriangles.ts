@@ -5,7 +5,7 @@
  * object. Vertices keep the float32 values of the placed mesh (the BVH stores those same values).
  */
 import { InputError } from '../../../core/inputError';
-import type { Rgb } from '../../../core/model/lightingScene';
+import type { Rgb } from '../../../core/model/lightingScene/lightingScene';
 import { placedPositions } from '../../../core/mesh/placeMesh';
 import type { Bounds3 } from '../../../core/mesh/triangleMesh';
 import { toRgb, type BakeObject } from '../bakeScene';

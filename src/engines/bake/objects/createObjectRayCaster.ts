@@ -4,7 +4,7 @@
  * see objects, and the tests use it to check both the flattening and the GPU. Answers match the
  * GPU's up to float rounding (a ray grazing an edge or a tie between two triangles may differ).
  */
-import type { Vec3 } from '../../../core/model/lightingScene';
+import type { Vec3 } from '../../../core/model/lightingScene/lightingScene';
 import type { ObjectBvhTextures, PreparedObjects } from './preparedObjects';
 
 export interface ObjectHit {

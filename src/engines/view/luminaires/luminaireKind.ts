@@ -1,4 +1,4 @@
-import type { ModuleTypeSpec } from '../../../core/model/catalogSchema';
+import type { ModuleTypeSpec } from '../../../core/model/catalogSchema/moduleTypeSchema';
 
 /**
  * The kinds of luminaire the view draws (buildLuminaireModel.ts): a track spot (cylindrical head in a

@@ -1,0 +1,139 @@
+/** The scene file's structure, as strict zod (unknown fields refused, naming the field), and its version history. */
+import { z } from 'zod';
+import { DISTRIBUTIONS } from '../catalogSchema/railSystemSchema';
+import { MESH_UNITS, MOUNTINGS, WALL_NAMES } from '../configuration/configuration';
+import { SURFACE_NAMES } from '../lightingScene/lightingScene';
+
+export const SCENE_FILE_FORMAT = 'luxbox-configuration';
+/**
+ * 8: a system's rails form a tree: a joint may name the rail it hangs on (`parent`, T and X
+ *    connectors), a feed may sit at a branch's free end (`{ end: i }`), docs/model.md "Trees of rails".
+ * 7: modules may be switched off (`on`), carry a colour filter (`filter`) and an aim (`aim`); the
+ *    configuration may hold light scenes (`lightScenes`), docs/model.md "Light scenes", "Aiming".
+ * 6: systems may carry moved fixing points (`fixings`) and joints may use a flexible-angle connector
+ *    (any turn within its range), docs/model.md "Flexible connectors", "Moving fixing points".
+ * 5: modules may carry a free position along their rail (`offset`, docs/model.md "Free positions").
+ * 4: systems carry power feeds (`feeds`) and their mounting (`mounting`), docs/model.md "Power feeds".
+ * 3: objects (furniture, imported models) and imported meshes (docs/model.md, "Objects").
+ * 2: modules may carry a DMX patch (`dmx`, docs/live-control.md). Older files are migrated on reading.
+ */
+export const SCENE_FILE_VERSION = 8;
+/**
+ * Read side of a reflectance: [0, 1) as version 1 files have always allowed. Channels above
+ * MAX_REFLECTANCE (0.95, src/core/model/lightingScene/reflectance.ts) in files written before that cap are lowered
+ * to it on load (normaliseRoom), so old files keep loading; new files never hold them.
+ */
+const reflectance = z.union([z.number().min(0).lt(1), z.tuple([z.number().min(0).lt(1), z.number().min(0).lt(1), z.number().min(0).lt(1)])]);
+const id = z.string().regex(/^[A-Za-z0-9_-]{1,64}$/, 'must be 1-64 letters, digits, _ or -');
+/** A catalog reference (module type, beam, connector, preset id); validate() checks it exists. */
+const ref = z.string().max(200);
+
+// Strict objects: an unknown (misspelt, or newer) field is refused, never dropped.
+const configurationSchema = z.strictObject({
+  room: z.strictObject({
+    width: z.number(),
+    depth: z.number(),
+    height: z.number(),
+    // Optional per surface and as a whole: a hand-written file may leave out the finishes, which then default.
+    reflectance: z
+      .strictObject(Object.fromEntries(SURFACE_NAMES.map((s) => [s, reflectance.optional()])) as Record<(typeof SURFACE_NAMES)[number], z.ZodOptional<typeof reflectance>>)
+      .optional(),
+  }),
+  systems: z.array(
+    z.strictObject({
+      id,
+      presetId: ref.optional(),
+      x: z.number(),
+      z: z.number(),
+      rotation: z.number(),
+      suspension: z.number(),
+      rails: z.array(
+        z.strictObject({
+          id,
+          length: z.number(),
+          distribution: z.enum(DISTRIBUTIONS),
+          modules: z.array(
+            z.strictObject({
+              id,
+              type: ref,
+              beam: ref,
+              cct: z.number(),
+              dimming: z.number(),
+              // Ranges, the CCT channel's type and overlaps are validate()'s rules (dmx-range, dmx-overlap).
+              dmx: z.strictObject({ universe: z.number(), address: z.number(), resolution: z.union([z.literal(8), z.literal(16)]), cct: z.boolean() }).optional(),
+              // Version 5: a free position (start, metres from the rail start); its rules are validate()'s (module-past-end, module-overlap).
+              offset: z.number().optional(),
+              // Version 7: on/off, colour filter and aim; their rules are validate()'s.
+              on: z.boolean().optional(),
+              filter: ref.optional(),
+              aim: z.strictObject({ rotation: z.number(), tilt: z.number() }).optional(),
+            }),
+          ),
+        }),
+      ),
+      // Version 8: `parent`, the rail whose end the joint's connector sits on; tree rules are validate()'s (joint-parent, node-*).
+      joints: z.array(z.strictObject({ connector: ref, turn: z.number(), parent: z.number().optional() })),
+      // Version 4 (`{ end: i }` version 8). Positions, drivers and loads are validate()'s rules (feed-position, unknown-driver, feed-overload).
+      feeds: z.array(z.strictObject({ id, at: z.union([z.literal('start'), z.literal('end'), z.strictObject({ joint: z.number() }), z.strictObject({ end: z.number() })]), driver: ref })),
+      mounting: z.enum(MOUNTINGS),
+      // Version 6: moved fixing points (chain coordinates); their rules are validate()'s (fixing-*).
+      fixings: z.array(z.number()).optional(),
+    }),
+  ),
+  // Version 3; optional so a hand-written file may leave them out (empty).
+  objects: z
+    .array(
+      z.strictObject({
+        id,
+        source: z.discriminatedUnion('kind', [z.strictObject({ kind: z.literal('library'), item: ref }), z.strictObject({ kind: z.literal('imported'), mesh: id })]),
+        placement: z.discriminatedUnion('on', [
+          z.strictObject({ on: z.literal('floor'), x: z.number(), z: z.number() }),
+          z.strictObject({ on: z.literal('wall'), wall: z.enum(WALL_NAMES), u: z.number(), y: z.number() }),
+        ]),
+        yaw: z.number(),
+        scale: z.number(),
+        // Material names and finish ids are checked against the mesh and the finish list by validate().
+        finishes: z.record(z.string().max(200), z.union([ref, z.tuple([z.number(), z.number(), z.number()])])),
+      }),
+    )
+    .optional(),
+  importedMeshes: z
+    .record(
+      id,
+      z.strictObject({
+        name: z.string().max(200),
+        units: z.enum(MESH_UNITS),
+        // base64 of the little-endian typed arrays (meshCodec.ts).
+        positions: z.string(),
+        indices: z.string(),
+        materialOfTriangle: z.string(),
+        materials: z.array(z.strictObject({ name: z.string().max(200), reflectance: z.tuple([z.number().min(0).lt(1), z.number().min(0).lt(1), z.number().min(0).lt(1)]) })),
+      }),
+    )
+    .optional(),
+  // Version 7: light scenes (cues); names, fades, module ids and looks are validate()'s rules.
+  lightScenes: z
+    .array(
+      z.strictObject({
+        id,
+        name: z.string().max(200),
+        fade: z.number(),
+        looks: z.record(id, z.strictObject({ on: z.boolean(), level: z.number(), cct: z.number(), filter: ref.optional() })),
+      }),
+    )
+    .optional(),
+  nextId: z.number().int().positive(),
+});
+
+/** The typed structure the reader parses with (sceneFileSchema is the same, for walking). */
+export const fileSchema = z.strictObject({
+  format: z.literal(SCENE_FILE_FORMAT),
+  version: z.literal(SCENE_FILE_VERSION),
+  catalog: z.string(),
+  configuration: configurationSchema,
+});
+
+/** The structure zod checks (tests walk it to reach every numeric field). */
+export const sceneFileSchema: z.ZodType = fileSchema;
+
+export type SceneFile = z.infer<typeof fileSchema>;

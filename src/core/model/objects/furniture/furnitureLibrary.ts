@@ -1,0 +1,255 @@
+/**
+ * The furniture library: real-size items built from closed boxes and frusta (meshParts.ts).
+ * Frame of every item: metres, y up, front toward +z. Floor items: origin at the centre of the
+ * footprint on the floor (x ∈ ±width/2, z ∈ ±depth/2, y ∈ [0, height]). Wall items: origin at
+ * the centre of the back (x ∈ ±width/2, y ∈ ±height/2, z ∈ [0, depth], back on z = 0).
+ * Dimensions and their sources: docs/furniture.md.
+ */
+import type { TriangleMesh } from '../../../mesh/triangleMesh';
+import { boxPart, composeParts, frustumPart, type MeshPart } from './meshParts';
+import { objectFinishRgb } from './objectFinishes';
+
+export interface FurnitureItem {
+  readonly id: string;
+  readonly name: string;
+  /** Where it stands: on the floor, or hung on a wall. */
+  readonly mount: 'floor' | 'wall';
+  /** Overall size at scale 1, metres: x (width), z (depth), y (height). */
+  readonly width: number;
+  readonly depth: number;
+  readonly height: number;
+  /** Wall items: the default height of the origin (back centre) above the floor, metres. */
+  readonly hangHeight?: number;
+  /** Default finish (src/core/model/objects/furniture/objectFinishes.ts) per material. */
+  readonly finishes: Readonly<Record<string, string>>;
+  /** Where the dimensions come from. */
+  readonly source: string;
+  /** The closed solids it is made of. */
+  readonly parts: () => MeshPart[];
+}
+
+type P3 = [number, number, number];
+
+/** Four legs of square section `s` under a rectangle w × d, inset `inset` from its edges, from y 0 to h. */
+function fourLegs(material: string, w: number, d: number, s: number, inset: number, h: number): MeshPart[] {
+  const xs = [-w / 2 + inset, w / 2 - inset - s];
+  const zs = [-d / 2 + inset, d / 2 - inset - s];
+  return xs.flatMap((x) => zs.map((z) => boxPart(material, [x, 0, z], [x + s, h, z + s])));
+}
+
+/** Round feet of radius r under a rectangle w × d, inset from its edges, from y 0 to h. */
+function roundFeet(material: string, w: number, d: number, r: number, inset: number, h: number): MeshPart[] {
+  const xs = [-w / 2 + inset + r, w / 2 - inset - r];
+  const zs = [-d / 2 + inset + r, d / 2 - inset - r];
+  return xs.flatMap((x) => zs.map((z) => frustumPart(material, x, z, 0, h, r, r, 8)));
+}
+
+const box = (material: string, min: P3, max: P3) => boxPart(material, min, max);
+
+/** A table: a top of thickness t on four legs; light reaches the floor under it. */
+function table(w: number, d: number, h: number, t: number, leg: number, inset: number): MeshPart[] {
+  return [box('top', [-w / 2, h - t, -d / 2], [w / 2, h, d / 2]), ...fourLegs('legs', w, d, leg, inset, h - t)];
+}
+
+/** A sofa or armchair: plinth frame on round feet, arms, back, seat and back cushions. */
+function seating(w: number, d: number, h: number, seats: number): MeshPart[] {
+  const feet = 0.1;
+  const seatTop = 0.44;
+  const arm = 0.16;
+  const armTop = 0.62;
+  const back = 0.2;
+  const parts: MeshPart[] = [
+    ...roundFeet('legs', w, d, 0.025, 0.05, feet),
+    box('frame', [-w / 2, feet, -d / 2], [w / 2, 0.32, d / 2]),
+    box('frame', [-w / 2, 0.32, -d / 2], [w / 2, h, -d / 2 + back]),
+    box('frame', [-w / 2, 0.32, -d / 2 + back], [-w / 2 + arm, armTop, d / 2]),
+    box('frame', [w / 2 - arm, 0.32, -d / 2 + back], [w / 2, armTop, d / 2]),
+  ];
+  const inner = w - 2 * arm;
+  for (let i = 0; i < seats; i++) {
+    const x0 = -w / 2 + arm + (inner * i) / seats;
+    const x1 = -w / 2 + arm + (inner * (i + 1)) / seats;
+    parts.push(box('cushions', [x0, 0.32, -d / 2 + back], [x1, seatTop, d / 2]));
+    parts.push(box('cushions', [x0, seatTop, -d / 2 + back], [x1, h - 0.08, -d / 2 + back + 0.16]));
+  }
+  return parts;
+}
+
+/** Books standing on a board from y0, filling x0…x1 with a repeating pattern of widths and heights. */
+function bookRow(x0: number, x1: number, y0: number, z0: number, z1: number, maxHeight: number, seed: number): MeshPart[] {
+  const widths = [0.03, 0.045, 0.025, 0.05, 0.035, 0.04, 0.028];
+  const heights = [0.24, 0.21, 0.28, 0.19, 0.3, 0.23, 0.26];
+  const parts: MeshPart[] = [];
+  let x = x0 + 0.01;
+  for (let i = seed; ; i++) {
+    const w = widths[i % widths.length];
+    if (x + w > x1 - 0.01) break;
+    const h = Math.min(heights[(i * 3) % heights.length], maxHeight);
+    parts.push(box('books', [x, y0, z0], [x + w, y0 + h, z1]));
+    x += w + 0.002;
+  }
+  return parts;
+}
+
+export const FURNITURE_LIBRARY: readonly FurnitureItem[] = [
+  {
+    id: 'dining-table', name: 'Dining table', mount: 'floor', width: 1.8, depth: 0.9, height: 0.75,
+    finishes: { top: 'oak-veneer', legs: 'oak-veneer' },
+    source: 'Neufert (table height 72-76 cm; 60 cm of table edge per person: 180 × 90 cm seats six)',
+    parts: () => table(1.8, 0.9, 0.75, 0.04, 0.06, 0.05),
+  },
+  {
+    id: 'coffee-table', name: 'Coffee table', mount: 'floor', width: 1.2, depth: 0.6, height: 0.45,
+    finishes: { top: 'walnut-veneer', legs: 'black-metal' },
+    source: 'common sizes 100-130 × 50-70 cm, 40-45 cm high (about sofa seat height)',
+    parts: () => table(1.2, 0.6, 0.45, 0.03, 0.04, 0.03),
+  },
+  {
+    id: 'chair', name: 'Chair', mount: 'floor', width: 0.45, depth: 0.52, height: 0.9,
+    finishes: { seat: 'oak-veneer', back: 'oak-veneer', legs: 'oak-veneer' },
+    source: 'Neufert / EN 1729 adult chair: seat height 45 cm, seat 40-45 cm wide and deep, backrest to 85-90 cm',
+    parts: () => [
+      box('seat', [-0.225, 0.42, -0.26], [0.225, 0.46, 0.26]),
+      box('back', [-0.225, 0.46, -0.26], [0.225, 0.9, -0.23]),
+      ...fourLegs('legs', 0.45, 0.52, 0.035, 0.01, 0.42),
+    ],
+  },
+  {
+    id: 'sofa', name: 'Sofa (three seats)', mount: 'floor', width: 2.1, depth: 0.9, height: 0.85,
+    finishes: { frame: 'grey-fabric', cushions: 'grey-fabric', legs: 'walnut-veneer' },
+    source: 'common three-seat sofas 200-230 × 85-100 cm, 80-90 cm high, seat 42-45 cm (Neufert: 60-70 cm per seat)',
+    parts: () => seating(2.1, 0.9, 0.85, 3),
+  },
+  {
+    id: 'armchair', name: 'Armchair', mount: 'floor', width: 0.85, depth: 0.85, height: 0.9,
+    finishes: { frame: 'beige-linen', cushions: 'beige-linen', legs: 'walnut-veneer' },
+    source: 'common armchairs 75-90 cm wide and deep, 85-100 cm high, seat about 44 cm',
+    parts: () => seating(0.85, 0.85, 0.9, 1),
+  },
+  {
+    id: 'sideboard', name: 'Sideboard', mount: 'floor', width: 1.8, depth: 0.45, height: 0.8,
+    finishes: { body: 'white-lacquer', fronts: 'white-lacquer', top: 'oak-veneer', legs: 'black-metal' },
+    source: 'common sideboards 160-200 × 40-50 cm, 75-85 cm high',
+    parts: () => [
+      ...fourLegs('legs', 1.8, 0.45, 0.03, 0.04, 0.12),
+      box('body', [-0.9, 0.12, -0.225], [0.9, 0.78, 0.205]),
+      box('top', [-0.9, 0.78, -0.225], [0.9, 0.8, 0.225]),
+      ...[0, 1, 2].map((i) => box('fronts', [-0.895 + i * 0.6, 0.125, 0.205], [-0.305 + i * 0.6, 0.775, 0.225])),
+    ],
+  },
+  {
+    id: 'open-shelf', name: 'Open shelf with books', mount: 'floor', width: 1, depth: 0.35, height: 2,
+    finishes: { frame: 'white-lacquer', books: 'book-spines' },
+    source: 'common bookcases 80-100 cm wide, 30-40 cm deep, 180-220 cm high; Neufert: 30-35 cm shelf spacing for books',
+    parts: () => {
+      const boards = [0.04, 0.5, 0.86, 1.22, 1.58, 1.98];
+      return [
+        box('frame', [-0.5, 0, -0.175], [-0.48, 2, 0.175]),
+        box('frame', [0.48, 0, -0.175], [0.5, 2, 0.175]),
+        ...boards.map((y) => box('frame', [-0.48, y - (y === 0.04 ? 0.04 : 0.02), -0.175], [0.48, y, 0.175])),
+        ...boards.slice(0, 5).flatMap((y, k) => bookRow(-0.48, k % 2 === 0 ? 0.48 : 0.2, y, -0.15, 0.07, boards[k + 1] - y - 0.06, k * 2)),
+      ];
+    },
+  },
+  {
+    id: 'bed', name: 'Double bed', mount: 'floor', width: 1.7, depth: 2.15, height: 1,
+    finishes: { frame: 'oak-veneer', legs: 'oak-veneer', mattress: 'white-linen', bedding: 'white-linen' },
+    source: 'DIN 68880 / Neufert: mattress 160 × 200 cm, about 45-55 cm top height; frame adds 5 cm each side; headboard about 1 m',
+    parts: () => [
+      box('frame', [-0.85, 0, -1.075], [0.85, 1, -0.995]),
+      ...[-0.83, 0.77].flatMap((x) => [-0.975, 0.995].map((z) => box('legs', [x, 0, z], [x + 0.06, 0.12, z + 0.06]))),
+      box('frame', [-0.85, 0.12, -0.995], [0.85, 0.3, 1.075]),
+      box('mattress', [-0.8, 0.3, -0.945], [0.8, 0.5, 1.055]),
+      box('bedding', [-0.8, 0.5, -0.3], [0.8, 0.56, 1.06]),
+      box('bedding', [-0.75, 0.5, -0.93], [-0.05, 0.62, -0.55]),
+      box('bedding', [0.05, 0.5, -0.93], [0.75, 0.62, -0.55]),
+    ],
+  },
+  {
+    id: 'desk', name: 'Desk', mount: 'floor', width: 1.4, depth: 0.7, height: 0.75,
+    finishes: { top: 'white-lacquer', frame: 'black-metal' },
+    source: 'EN 527-1 work desks: 72-75 cm high; Neufert: at least 120-160 × 70-80 cm',
+    parts: () => [
+      box('top', [-0.7, 0.725, -0.35], [0.7, 0.75, 0.35]),
+      box('frame', [-0.68, 0, -0.32], [-0.64, 0.725, 0.32]),
+      box('frame', [0.64, 0, -0.32], [0.68, 0.725, 0.32]),
+      box('frame', [-0.64, 0.35, -0.32], [0.64, 0.7, -0.3]),
+    ],
+  },
+  {
+    id: 'kitchen-island', name: 'Kitchen island', mount: 'floor', width: 1.8, depth: 0.9, height: 0.91,
+    finishes: { worktop: 'stone-worktop', cabinet: 'white-lacquer', fronts: 'white-lacquer', plinth: 'black-metal' },
+    source: 'DIN EN 1116 / Neufert: worktop 85-95 cm high (91 cm here), cabinets 60 cm deep (two rows back to back: 90 cm with overhang), plinth 10 cm',
+    parts: () => [
+      box('plinth', [-0.85, 0, -0.38], [0.85, 0.1, 0.38]),
+      box('cabinet', [-0.88, 0.1, -0.42], [0.88, 0.87, 0.4]),
+      ...[0, 1, 2].map((i) => box('fronts', [-0.875 + i * (1.75 / 3), 0.105, 0.4], [-0.875 + (i + 1) * (1.75 / 3) - 0.005, 0.865, 0.42])),
+      box('worktop', [-0.9, 0.87, -0.45], [0.9, 0.91, 0.45]),
+    ],
+  },
+  {
+    id: 'picture', name: 'Framed picture', mount: 'wall', width: 0.8, depth: 0.03, height: 0.6, hangHeight: 1.55,
+    finishes: { frame: 'black-metal', canvas: 'canvas-print' },
+    source: 'common frame size 80 × 60 cm; hung with its centre at eye height, about 1.5-1.6 m',
+    parts: () => [
+      box('frame', [-0.4, -0.3, 0], [0.4, -0.255, 0.03]),
+      box('frame', [-0.4, 0.255, 0], [0.4, 0.3, 0.03]),
+      box('frame', [-0.4, -0.255, 0], [-0.355, 0.255, 0.03]),
+      box('frame', [0.355, -0.255, 0], [0.4, 0.255, 0.03]),
+      box('canvas', [-0.355, -0.255, 0.005], [0.355, 0.255, 0.02]),
+    ],
+  },
+  {
+    id: 'floor-plant', name: 'Floor plant', mount: 'floor', width: 0.6, depth: 0.6, height: 1.5,
+    finishes: { pot: 'terracotta', stem: 'walnut-veneer', leaves: 'leaf-green' },
+    source: 'a large indoor plant (e.g. Ficus) 1.2-1.8 m high in a 30-40 cm pot',
+    parts: () => [
+      frustumPart('pot', 0, 0, 0, 0.38, 0.14, 0.18),
+      frustumPart('stem', 0, 0, 0.38, 0.7, 0.02, 0.015, 8),
+      frustumPart('leaves', 0, 0, 0.6, 1.05, 0.12, 0.3),
+      frustumPart('leaves', 0, 0, 1.05, 1.5, 0.26, 0.05),
+    ],
+  },
+  {
+    id: 'person', name: 'Standing person', mount: 'floor', width: 0.5, depth: 0.3, height: 1.75,
+    finishes: { shoes: 'black-metal', trousers: 'denim', shirt: 'mid-grey-paint', skin: 'skin' },
+    source: 'DIN 33402-2: adult stature about 1.75 m (men 50th percentile), shoulder width about 45-50 cm',
+    parts: () => [
+      box('shoes', [-0.16, 0, -0.15], [-0.04, 0.07, 0.15]),
+      box('shoes', [0.04, 0, -0.15], [0.16, 0.07, 0.15]),
+      box('trousers', [-0.155, 0.07, -0.08], [-0.01, 0.9, 0.08]),
+      box('trousers', [0.01, 0.07, -0.08], [0.155, 0.9, 0.08]),
+      box('shirt', [-0.19, 0.88, -0.11], [0.19, 1.47, 0.11]),
+      box('shirt', [-0.25, 1.0, -0.06], [-0.19, 1.45, 0.06]),
+      box('shirt', [0.19, 1.0, -0.06], [0.25, 1.45, 0.06]),
+      box('skin', [-0.245, 0.8, -0.05], [-0.195, 1.0, 0.05]),
+      box('skin', [0.195, 0.8, -0.05], [0.245, 1.0, 0.05]),
+      frustumPart('skin', 0, 0, 1.47, 1.54, 0.055, 0.055, 8),
+      frustumPart('skin', 0, 0, 1.54, 1.75, 0.095, 0.085, 16),
+    ],
+  },
+];
+
+const byId = new Map(FURNITURE_LIBRARY.map((item) => [item.id, item]));
+
+/** The library item with this id, or undefined. */
+export function findFurnitureItem(id: string): FurnitureItem | undefined {
+  return byId.get(id);
+}
+
+const meshes = new Map<string, TriangleMesh>();
+
+/**
+ * The item's mesh with its default finishes (built once per item and shared: meshes are
+ * immutable by convention, like the configuration). Throws for an unknown id.
+ */
+export function furnitureMesh(id: string): TriangleMesh {
+  let mesh = meshes.get(id);
+  if (!mesh) {
+    const item = byId.get(id);
+    if (!item) throw new Error(`unknown furniture item '${id}'`);
+    mesh = composeParts(item.parts(), (material) => objectFinishRgb(item.finishes[material]));
+    meshes.set(id, mesh);
+  }
+  return mesh;
+}
