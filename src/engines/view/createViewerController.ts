@@ -215,7 +215,7 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
       view.setFixtures(nextFixtures);
       syncWeights();
       syncObjects();
-      camera.setRoom(next.room);
+      camera.setScene(next);
       if (live || dimmed) applyOverlay();
       spotlight.sceneChanged();
       if (spotRequest) syncSpotlight();

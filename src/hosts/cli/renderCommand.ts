@@ -99,9 +99,11 @@ export async function run(args: string[]): Promise<number> {
       let input;
       let results;
       try {
-        input = single ?? loadRenderInput(path, { within: cliReadableFolders(path) });
-        const room = input.scene.room;
-        const poses = cameras.map((c) => parseCameraSpec(c.spec, room));
+        const loaded = single ?? loadRenderInput(path, { within: cliReadableFolders(path) });
+        input = loaded;
+        const room = loaded.scene.room;
+        // The eye preset frames this scene's light (frameTheLight.ts), as the browser's does.
+        const poses = cameras.map((c) => parseCameraSpec(c.spec, room, { scene: loaded.bakeScene, aspect: width / height }));
         // One bake per scene, drawn from every camera.
         results = session.renderViews(input, { width, height, camera: poses[0], exposureEv: compensation, ev100, mode, adaptation, settings }, poses);
       } catch (error) {
