@@ -50,6 +50,9 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
   const renderer = new THREE.WebGLRenderer({ canvas, antialias: true, powerPreference: 'high-performance' });
   renderer.setPixelRatio(Math.min(2, window.devicePixelRatio || 1));
   let view: RoomView = createRoomView(renderer);
+  /** Veiling glare round bright sources in light mode (docs/viewer.md, "Glare"); lux mode never shows it. */
+  let glare = true;
+  view.setGlare(glare);
   const controls = new OrbitControls(view.camera, canvas);
   controls.enableDamping = false; // damping needs a continuous loop; we render on demand
   controls.screenSpacePanning = true;
@@ -95,6 +98,7 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
       // three re-creates its GL objects; rebuild the room so every texture and program is uploaded anew.
       view.dispose();
       view = createRoomView(renderer);
+      view.setGlare(glare);
       camera.attach(view);
       if (fixtures) view.setFixtures(fixtures);
       view.setObjects(prepared);
@@ -267,6 +271,16 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
     setMode(m: ViewMode) {
       maps.setMode(m);
       frames.request();
+    },
+    /** Veiling glare on or off (light mode only). */
+    setGlare(on: boolean) {
+      glare = on;
+      view.setGlare(on);
+      frames.request();
+    },
+    /** Whether the last frame went through the glare pass (light mode on a renderer with half-float targets). */
+    glareShown(): boolean {
+      return view.glareShown();
     },
     /** The objects' geometry on screen, as the baker lays out their atlas (null: no objects). */
     objects(): PreparedObjects | null {
