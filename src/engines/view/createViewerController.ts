@@ -17,9 +17,18 @@ import { createRoomView, type PickTarget, type RoomView, type ViewMode } from '.
 import { watchContextLoss } from './watchContextLoss';
 import type { PreparedObjects } from '../bake/objects/preparedObjects';
 import { watchTaps } from './watchTaps';
+import { litMapsOf, moduleWeightsOf } from './compareMaps';
+import { objectLightOf } from './objectLight';
 import { beamAndFieldDeg, createSpotlight, withoutModule, type SpotlightRequest } from './createSpotlight';
 import type { ModuleAim } from '../../core/model/configuration';
 import type { Vec3 } from '../../core/model/lightingScene';
+
+/** The A/B compare (docs/viewer.md, "A/B compare"): two light scenes of the configuration, A left of the wipe at `split` (0…1 of the width), B right of it. */
+export interface CompareRequest {
+  a: BakeScene;
+  b: BakeScene;
+  split: number;
+}
 
 export interface ViewerEvents {
   /** Bake progress and counters changed. */
@@ -91,12 +100,17 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
   let prepared: PreparedObjects | null = null;
   let selectedObject: string | null = null;
   let selectedModule: string | null = null;
+  /** The A/B compare, or null; its B side is a second room view over the same renderer, camera pose and display uniforms. */
+  let compare: CompareRequest | null = null;
+  let compareView: RoomView | null = null;
 
   const display = watchContextLoss(canvas, {
     lost: () => events.onContext('lost'),
     restored() {
       // three re-creates its GL objects; rebuild the room so every texture and program is uploaded anew.
       view.dispose();
+      compareView?.dispose();
+      compareView = null;
       view = createRoomView(renderer);
       view.setGlare(glare);
       camera.attach(view);
@@ -118,6 +132,7 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
       // The eye adapting after a cut or a Re-adapt: one more frame while it moves (eyeAdaptation.ts).
       if (maps.advance(performance.now())) frames.request();
       view.render(renderer);
+      if (compare && compareView) drawCompare(compare, compareView);
     },
     canDraw: () => active && !display.lost,
     onFrame: events.onFrame,
@@ -163,6 +178,8 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
    * out, its lamp still shines (its weight with the live levels).
    */
   const syncWeights = () => {
+    // During the A/B compare each side shows its own scene's glow (showCompare).
+    if (compare) return;
     const weights = service.luminaireWeights();
     if (!weights || !scene || service.scene !== scene) return;
     const k = dimmed ? ids.indexOf(dimmed) : -1;
@@ -174,8 +191,53 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
     }
     view.setModuleWeights(new Map(weights.flatMap((w, i) => (ids[i] ? [[ids[i], w] as const] : []))));
   };
+  /** Both sides' maps from the engine (relights, no bake): A on the main view, B on the compare view; the exposure and adaptation stay the held ones. */
+  const showCompare = (engine: RelightEngine, request: CompareRequest) => {
+    const lit = litMapsOf(engine, [request.a, request.b]);
+    if (!lit || !scene) return false;
+    const reflectance = reflectanceRgb(scene.room);
+    if (!compareView) {
+      compareView = createRoomView(renderer);
+      compareView.setGlare(glare);
+      if (fixtures) compareView.setFixtures(fixtures);
+      compareView.setObjects(prepared);
+    }
+    const sides: [RoomView, BakeScene][] = [
+      [view, request.a],
+      [compareView, request.b],
+    ];
+    sides.forEach(([v, s], k) => {
+      v.setMaps(lit[k], reflectance);
+      v.setObjectLight(objectLightOf(lit[k]));
+      v.setModuleWeights(moduleWeightsOf(s, ids));
+    });
+    return true;
+  };
+  /** B over the part of the canvas right of the wipe: same camera, same exposure, adaptation and mode as A. */
+  const drawCompare = (request: CompareRequest, b: RoomView) => {
+    const from = view.display;
+    const to = b.display;
+    to.uExposure.value = from.uExposure.value;
+    to.uAdapt.value.copy(from.uAdapt.value);
+    to.uMode.value = from.uMode.value;
+    to.uLevelCount.value = from.uLevelCount.value;
+    from.uLevels.value.forEach((v, i) => (to.uLevels.value[i] = v));
+    b.camera.copy(view.camera);
+    b.camera.updateMatrixWorld();
+    const { width, height } = camera.size;
+    const x = Math.round(Math.min(1, Math.max(0, request.split)) * width);
+    renderer.setScissor(x, 0, width - x, height);
+    renderer.setScissorTest(true);
+    b.render(renderer);
+    renderer.setScissorTest(false);
+  };
   const showMaps = (engine: RelightEngine) => {
     if (!scene) return;
+    if (compare && showCompare(engine, compare)) {
+      shownVersion = engine.version;
+      frames.request();
+      return;
+    }
     const t0 = performance.now();
     maps.show(engine.maps(), reflectanceRgb(scene.room), t0, { white: adoptedWhite(scene.luminaires), key: sceneGeometryKey(scene), done: engine.progress.done });
     syncWeights();
@@ -194,6 +256,7 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
     // New or moved objects: their old light belongs to another atlas; they show again with the new bake's first maps.
     prepared = next;
     view.setObjects(prepared);
+    compareView?.setObjects(prepared);
     shownVersion = -1;
   };
   const unsubscribe = service.subscribe((e) => {
@@ -217,6 +280,7 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
       ids = luminaireIds;
       fixtures = nextFixtures;
       view.setFixtures(nextFixtures);
+      compareView?.setFixtures(nextFixtures);
       syncWeights();
       syncObjects();
       camera.setScene(next);
@@ -276,7 +340,32 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
     setGlare(on: boolean) {
       glare = on;
       view.setGlare(on);
+      compareView?.setGlare(on);
       frames.request();
+    },
+    /**
+     * The A/B compare of two light scenes (same luminaires as the scene, other dimming and colour),
+     * or null to end it: A left of the wipe, B right, both at the exposure and adaptation held now.
+     */
+    setCompare(request: CompareRequest | null) {
+      const scenesChanged = !compare || !request || compare.a !== request.a || compare.b !== request.b;
+      compare = request;
+      if (!request) {
+        compareView?.dispose();
+        compareView = null;
+      }
+      if (scenesChanged) {
+        shownVersion = -1;
+        const engine = service.engine;
+        if (engine && (engine.progress.lit || engine.progress.done)) showMaps(engine);
+        if (!request) syncWeights();
+      }
+      frames.request();
+    },
+    /** The compare drawn last: both sides' exposures (the same by construction) and the wipe, or null. */
+    compareState(): { exposureA: number; exposureB: number; split: number } | null {
+      if (!compare || !compareView) return null;
+      return { exposureA: view.display.uExposure.value, exposureB: compareView.display.uExposure.value, split: compare.split };
     },
     /** Whether the last frame went through the glare pass (light mode on a renderer with half-float targets). */
     glareShown(): boolean {
@@ -328,6 +417,7 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
     },
     /** Frees the display only: the service keeps its engine, maps and pending work. */
     dispose() {
+      compareView?.dispose();
       unsubscribe();
       if (live) service.setOverlay(null);
       frames.stop();

@@ -6,7 +6,7 @@ import type { CameraPose } from './cameraPresets';
 import type { PreparedObjects } from '../bake/objects/preparedObjects';
 import { createRoomHardware } from './createRoomHardware';
 import { createRoomObjects, OBJECTS_MESH_NAME } from './createRoomObjects';
-import { createRoomSurfaces, type ViewMode } from './createRoomSurfaces';
+import { createRoomSurfaces, type SharedDisplayUniforms, type ViewMode } from './createRoomSurfaces';
 import type { Fixtures } from './fixtures';
 import { meanIlluminance } from './meanIlluminance';
 import type { ObjectLight } from './objectLight';
@@ -26,6 +26,8 @@ export type PickTarget = { kind: 'object' | 'module'; id: string };
 export interface RoomView {
   readonly scene: THREE.Scene;
   readonly camera: THREE.PerspectiveCamera;
+  /** The display uniforms the surfaces, objects and luminaires share (exposure, adaptation, mode, lux levels). */
+  readonly display: SharedDisplayUniforms;
   /** Upload relit maps (RGB lux) and the room's reflectances. */
   setMaps(lit: LitMaps, reflectance: Record<SurfaceName, Rgb>): void;
   /** The objects' geometry (PreparedObjects of the scene's objects, the same the baker lights; null: none). */
@@ -86,6 +88,7 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
   return {
     scene,
     camera,
+    display: surfaces.display,
     setMaps(lit, reflectance) {
       surfaces.setMaps(lit, reflectance);
       hardware.setAmbient(meanIlluminance(lit));
