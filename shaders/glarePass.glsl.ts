@@ -25,8 +25,9 @@ in vec2 vUv;
 uniform sampler2D uSource;
 uniform vec2 uTexel;
 out vec4 fragColor;
-// A flat pixel of the HDR image (alpha 0: the background, a selected module) enters with its display value
-// as if it were light: at most ~1, it scatters nothing visible next to emitters hundreds of times brighter.
+// A flat pixel of the HDR image (alpha ¼: a selected module) enters with its display value as if it were
+// light: at most ~1, it scatters nothing visible next to emitters hundreds of times brighter. The cleared
+// background is 0: no light.
 vec3 tap(vec2 o) {
   return texture(uSource, vUv + o * uTexel).rgb;
 }
@@ -71,9 +72,10 @@ void main() {
 
 /**
  * The composite: core × the pixel + the scattered light, then the display transform (gamut map,
- * AgX on max(R,G,B), sRGB: toneMap.glsl.ts, as the room's shaders do without glare). A flat pixel
- * (alpha 0: the background, a selected module's flat colour) keeps its display colour, the
- * scattered light over it added after the display curve. uLinear 1 writes the linear sum instead
+ * AgX on max(R,G,B), sRGB: toneMap.glsl.ts, as the room's shaders do without glare). Alpha tells
+ * what a pixel of the HDR image holds: 1 light, ¼ a flat display colour (a selected module in the
+ * accent blue) that keeps its colour, 0 nothing drawn (cleared), which shows uBackground (display
+ * sRGB); over the last two the scattered light is added after the display curve. uLinear 1 writes the linear sum instead
  * (for tests on a float target).
  */
 export const glareCompositeFragment = /* glsl */ `
@@ -85,6 +87,7 @@ uniform vec2 uScatteredTexel;
 uniform float uCore;
 uniform int uHasScattered;
 uniform int uLinear;
+uniform vec3 uBackground;
 out vec4 fragColor;
 ${toneMapGlsl}
 ${tentGlsl}
@@ -99,6 +102,6 @@ void main() {
     return;
   }
   if (pixel.a > 0.5) fragColor = vec4(display(uCore * pixel.rgb + scattered), 1.0);
-  else fragColor = vec4(min(pixel.rgb + display(scattered), vec3(1.0)), 1.0);
+  else fragColor = vec4(min((pixel.a > 0.125 ? pixel.rgb : uBackground) + display(scattered), vec3(1.0)), 1.0);
 }
 `;

@@ -134,7 +134,7 @@ function project(c: Vec3, axes: { f: Vec3; r: Vec3; u: Vec3 }, p: Vec3): { x: nu
  * where Φ_view = Σ L·A·cos θ / d² over the surface patches inside the view is the illuminance the
  * visible surfaces give at the lens (what a camera's exposure meter reads: the light the picture
  * holds), the main pool is the brightest patch of floor or wall, and a luminaire or the pool counts
- * when it lies inside the central 85 % of the frame (the pool: 70 %, clear of the edges). The best score wins; ties keep the first
+ * when it lies inside the central 75 % (a luminaire: its housing reaches beyond its photometric centre) or 70 % (the pool) of the frame. The best score wins; ties keep the first
  * candidate, so the result is deterministic. A scene without emitting luminaires gets the plain
  * view across the room from the middle of the south wall. A room too small or low to show the pool and
  * a luminaire in one view at that field gets a wider lens (+15°, then +30°).
@@ -193,7 +193,7 @@ export function frameTheLight(scene: BakeScene, aspect = 1.6): LightFraming {
             const cos = dot(q.n, d) / Math.sqrt(d2);
             if (cos > 0) flux += (q.luminance * q.area * cos) / d2;
           }
-          const lamps = emitting.filter((_, k) => inFrame(project(c, axes, lampPositions[k]), 0.85));
+          const lamps = emitting.filter((_, k) => inFrame(project(c, axes, lampPositions[k]), 0.75));
           candidates.push({ c, yaw, pitch, flux, pool: pool !== null && inFrame(project(c, axes, pool.p), 0.7), lamps });
         }
       }

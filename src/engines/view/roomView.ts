@@ -70,8 +70,9 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
   const scene = new THREE.Scene();
   const background = new THREE.Color(BACKGROUND);
   scene.background = background;
-  // The glare pass's HDR target: cleared to the background's display value with alpha 0 (a flat pixel, no light).
-  const backgroundDisplay = new THREE.Color().setRGB(((BACKGROUND >> 16) & 255) / 255, ((BACKGROUND >> 8) & 255) / 255, (BACKGROUND & 255) / 255, THREE.LinearSRGBColorSpace);
+  // The glare pass's HDR target is cleared to 0 (no light); its composite shows this display colour there.
+  const backgroundDisplay: [number, number, number] = [((BACKGROUND >> 16) & 255) / 255, ((BACKGROUND >> 8) & 255) / 255, (BACKGROUND & 255) / 255];
+  const black = new THREE.Color(0, 0, 0);
   let glareOn = false;
   let glare: GlarePass | null = null;
   let glareShown = false;
@@ -148,14 +149,14 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
       }
       renderer.getDrawingBufferSize(bufferSize);
       // Multisampled like the canvas (antialias) when it is.
-      glare ??= createGlarePass({ samples: renderer.getContext().getContextAttributes()?.antialias ? 4 : 0 });
+      glare ??= createGlarePass({ samples: renderer.getContext().getContextAttributes()?.antialias ? 4 : 0, background: backgroundDisplay });
       glare.setSize(bufferSize.x, bufferSize.y);
       const mode = surfaces.display.uMode;
       renderer.getClearColor(clearColor);
       const clearAlpha = renderer.getClearAlpha();
       mode.value = 2;
       scene.background = null;
-      renderer.setClearColor(backgroundDisplay, 0);
+      renderer.setClearColor(black, 0);
       renderer.setRenderTarget(glare.target);
       renderer.clear();
       renderer.render(scene, camera);

@@ -13,7 +13,7 @@ import { glareLevels, glareWeights } from './veilingGlarePsf';
 export interface GlarePass {
   /** Size the targets for a drawing buffer of width × height pixels (no-op when unchanged). */
   setSize(width: number, height: number): void;
-  /** Where the room is drawn (linear HDR, alpha 0 for flat pixels that carry no light). */
+  /** Where the room is drawn: linear HDR with alpha 1, a flat display colour with alpha ¼; cleared to 0 (the background). */
   readonly target: THREE.WebGLRenderTarget;
   /** Scatter and display: `pixelDeg` is the angle one pixel subtends (vertical field / height). `linear`: write the linear sum (tests). */
   finish(renderer: THREE.WebGLRenderer, pixelDeg: number, output: THREE.WebGLRenderTarget | null, linear?: boolean): { core: number; levels: number[] };
@@ -30,7 +30,8 @@ function material(fragmentShader: string, uniforms: Record<string, THREE.IUnifor
   return new THREE.ShaderMaterial({ glslVersion: THREE.GLSL3, vertexShader: glareVertex, fragmentShader, uniforms, depthTest: false, depthWrite: false });
 }
 
-export function createGlarePass(options: { samples?: number } = {}): GlarePass {
+/** `background`: the display colour (sRGB 0…1) of pixels nothing was drawn on; `samples`: the HDR target's multisampling. */
+export function createGlarePass(options: { samples?: number; background?: [number, number, number] } = {}): GlarePass {
   // Mirrored edges: a filter's taps beyond the border read the image reflected about it, so the light a
   // symmetric kernel would carry out of the picture comes back in and none is lost or doubled (clamping
   // to the edge would count the border pixels several times).
@@ -62,6 +63,7 @@ export function createGlarePass(options: { samples?: number } = {}): GlarePass {
     uCore: { value: 1 },
     uHasScattered: { value: 0 },
     uLinear: { value: 0 },
+    uBackground: { value: new THREE.Vector3(...(options.background ?? [0, 0, 0])) },
   });
   const draw = (renderer: THREE.WebGLRenderer, m: THREE.ShaderMaterial, out: THREE.WebGLRenderTarget | null) => {
     quad.material = m;
