@@ -59,9 +59,15 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
   const renderer = new THREE.WebGLRenderer({ canvas, antialias: true, powerPreference: 'high-performance' });
   renderer.setPixelRatio(Math.min(2, window.devicePixelRatio || 1));
   let view: RoomView = createRoomView(renderer);
-  /** Veiling glare round bright sources in light mode (docs/viewer.md, "Glare"); lux mode never shows it. */
+  /**
+   * Veiling glare round bright sources in light mode (docs/viewer.md, "Glare"); lux mode never shows
+   * it. Drawn once the configuration's light is done: while it bakes, frames come with every slice
+   * and the pass's extra passes would take the bake's time on a slow GPU (a software renderer's
+   * frames cost several times more with it).
+   */
   let glare = true;
-  view.setGlare(glare);
+  let lightDone = false;
+  const glareNow = () => glare && lightDone;
   const controls = new OrbitControls(view.camera, canvas);
   controls.enableDamping = false; // damping needs a continuous loop; we render on demand
   controls.screenSpacePanning = true;
@@ -112,7 +118,7 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
       compareView?.dispose();
       compareView = null;
       view = createRoomView(renderer);
-      view.setGlare(glare);
+      view.setGlare(glareNow());
       camera.attach(view);
       if (fixtures) view.setFixtures(fixtures);
       view.setObjects(prepared);
@@ -198,7 +204,7 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
     const reflectance = reflectanceRgb(scene.room);
     if (!compareView) {
       compareView = createRoomView(renderer);
-      compareView.setGlare(glare);
+      compareView.setGlare(glareNow());
       if (fixtures) compareView.setFixtures(fixtures);
       compareView.setObjects(prepared);
     }
@@ -233,6 +239,9 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
   };
   const showMaps = (engine: RelightEngine) => {
     if (!scene) return;
+    lightDone = engine.progress.done;
+    view.setGlare(glareNow());
+    compareView?.setGlare(glareNow());
     if (compare && showCompare(engine, compare)) {
       shownVersion = engine.version;
       frames.request();
@@ -263,6 +272,13 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
     if (e.type === 'slice') {
       const p = e.progress;
       if (e.engine.version !== shownVersion && (p.lit || p.done)) showMaps(e.engine);
+      else if (p.done !== lightDone) {
+        // Done (or baking again) without new maps: the glare follows.
+        lightDone = p.done;
+        view.setGlare(glareNow());
+        compareView?.setGlare(glareNow());
+        frames.request();
+      }
       spotlight.bakeProgress(p.done);
       events.onProgress({ fraction: p.fraction, done: p.done, lit: p.lit, ...counters() });
     } else if (e.type === 'engine') {
@@ -339,8 +355,8 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
     /** Veiling glare on or off (light mode only). */
     setGlare(on: boolean) {
       glare = on;
-      view.setGlare(on);
-      compareView?.setGlare(on);
+      view.setGlare(glareNow());
+      compareView?.setGlare(glareNow());
       frames.request();
     },
     /**
