@@ -15,7 +15,7 @@ import type { Configuration, LightScene } from '../../core/model/configuration';
 import { fadeFraction, levelsOutput, mixLevels, mixLights, outputLevels, type ModuleLight } from '../../core/model/sceneFade';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import type { BakeFeed } from '../viewer/startBakeFeed';
-import { fromScene, lightsOf } from './sceneLights';
+import { fromScene, lightsOf } from '../../engines/view/sceneLights';
 
 export interface SceneFadeState {
   readonly sceneId: string;

@@ -3,7 +3,7 @@ import { recallLooks } from '../../core/model/lightScenes';
 import type { BakeScene } from '../../engines/bake/bakeScene';
 import type { ViewerController } from '../../engines/view/createViewerController';
 import { useI18n } from '../i18n/useI18n';
-import { fromScene, lightsOf } from '../scenes/sceneLights';
+import { fromScene, lightsOf } from '../../engines/view/sceneLights';
 import type { BakeFeed } from './startBakeFeed';
 
 /** The A/B compare's choice: on or off, the two light scenes by id, the wipe (0…1 of the width shows A from the left). */

@@ -3,7 +3,7 @@ import type { Configuration } from '../../core/model/configuration';
 import type { Rgb } from '../../core/model/lightingScene';
 import type { ModuleLight } from '../../core/model/sceneFade';
 import { toLightingScene } from '../../core/model/toLightingScene';
-import type { BakeScene } from '../../engines/bake/bakeScene';
+import type { BakeScene } from '../bake/bakeScene';
 
 /** Dimming and colour per module id of a configuration's lighting scene (what the baker gets for it). */
 export function lightsOf(config: Configuration, catalog: Catalog): Map<string, ModuleLight> {
