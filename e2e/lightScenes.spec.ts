@@ -1,4 +1,5 @@
 import { expect, test, type Page } from '@playwright/test';
+import { PNG } from 'pngjs';
 import { meanLevel, sceneFile } from './helpers';
 
 /**
@@ -118,4 +119,63 @@ test('in 3D a crossfade between two solved scenes is relights only: frames drawn
   // Under automatic exposure the eye stays adapted to Day (a crossfade is a relight): Evening looks darker (docs/viewer.md, "Exposure that compares").
   await expect(page.getByTestId('exposure-control')).toHaveAttribute('data-ev100', 'auto');
   await expect.poll(async () => meanLevel(await canvas.screenshot()), { timeout: 10_000 }).toBeLessThan(dayLevel * 0.8);
+});
+
+test('A/B compare in 3D: two recorded scenes side by side at one exposure, each half darker under Evening than under Day', async ({ page }) => {
+  type Status = { lit: boolean; compare: { exposureA: number; exposureB: number; split: number } | null; bake: { done: boolean } };
+  const status = (): Promise<Status> => page.evaluate(() => window.luxbox!.view3d() as unknown as Status);
+  const BAKE = { timeout: 90_000, intervals: [250] };
+  await page.goto('/?quality=fast');
+  await page.getByRole('button', { name: 'Start planning' }).click();
+  await page.getByTestId('preset-single').click();
+  await expect.poll(async () => (await status()).bake.done, BAKE).toBe(true);
+  const ids = (await sceneFile(page)).configuration.systems.flatMap((s) => s.rails.flatMap((r) => r.modules.map((m) => m.id)));
+  await page.evaluate(() => window.luxbox!.recordScene('Day'));
+  await page.evaluate((list) => list.forEach((moduleId) => window.luxbox!.runAction('setModuleDimming', { moduleId, dimming: 0.2 })), ids);
+  await page.evaluate(() => window.luxbox!.recordScene('Evening'));
+  await expect.poll(async () => (await status()).bake.done, BAKE).toBe(true);
+
+  await page.getByTestId('tool-3d').click();
+  await expect.poll(async () => (await status()).lit, BAKE).toBe(true);
+  await page.getByTestId('compare-toggle').click();
+  const a = page.getByTestId('compare-a');
+  const b = page.getByTestId('compare-b');
+  await expect(a.locator('option:checked')).toHaveText('Day');
+  await expect(b.locator('option:checked')).toHaveText('Evening');
+  const canvas = page.getByTestId('view3d-canvas');
+  /** Mean level of the canvas's left and right thirds (between the scene names and the wipe slider). */
+  const halves = async () => {
+    const png = PNG.sync.read(await canvas.screenshot());
+    const mean = (x0: number, x1: number) => {
+      let s = 0;
+      let n = 0;
+      for (let y = Math.round(png.height * 0.2); y < Math.round(png.height * 0.7); y++) {
+        for (let x = Math.round(png.width * x0); x < Math.round(png.width * x1); x++) {
+          const i = (y * png.width + x) * 4;
+          s += (png.data[i] + png.data[i + 1] + png.data[i + 2]) / 3;
+          n++;
+        }
+      }
+      return s / n;
+    };
+    return { left: mean(0.05, 0.4), right: mean(0.6, 0.95) };
+  };
+  await expect.poll(async () => (await status()).compare?.split).toBe(0.5);
+  const dayEvening = await halves();
+  const first = (await status()).compare!;
+  expect(first.exposureA).toBe(first.exposureB);
+  // Swapped: Evening left, Day right.
+  await a.selectOption({ label: 'Evening' });
+  await b.selectOption({ label: 'Day' });
+  await expect(page.getByTestId('compare-wipe-overlay')).toContainText('A · Evening');
+  await expect.poll(async () => (await halves()).left, { timeout: 10_000 }).toBeLessThan(dayEvening.left * 0.8);
+  const eveningDay = await halves();
+  // The same half of the picture, the same exposure: Evening (20 %) darker than Day on both sides.
+  expect(eveningDay.right).toBeGreaterThan(dayEvening.right * 1.25);
+  const second = (await status()).compare!;
+  expect(second.exposureA).toBe(second.exposureB);
+  expect(second.exposureA).toBe(first.exposureA);
+  // Off: the configuration's own light again, no compare drawn.
+  await page.getByTestId('compare-toggle').click();
+  await expect.poll(async () => (await status()).compare).toBeNull();
 });

@@ -38,10 +38,11 @@ void main() {
   vec3 n = normalize(gl_FrontFacing ? vNormal : -vNormal);
   float facet = 0.8 + 0.2 * dot(n, vec3(0.267, 0.535, 0.802));
   if (uMode == 1 || uFlat == 1) {
-    fragColor = vec4(uColor * (0.55 + 0.45 * facet), 1.0);
+    // In the glare pass's HDR target (uMode 2) a flat colour is display-referred: alpha ¼ says so (glarePass.glsl.ts).
+    fragColor = vec4(uColor * (0.55 + 0.45 * facet), uMode == 2 ? 0.25 : 1.0);
     return;
   }
   vec3 L = uEmitter == 1 ? uLuminance : uReflectance * max(uAmbient, 0.0) / 3.14159265358979 * facet;
-  ${options.linear ? 'fragColor = vec4(uAdapt * (L * uExposure), 1.0);' : 'fragColor = vec4(luxDisplay(L, uExposure, uAdapt), 1.0);'}
+  ${options.linear ? 'fragColor = vec4(uAdapt * (L * uExposure), 1.0);' : 'fragColor = vec4(luxShade(L, uExposure, uAdapt, uMode), 1.0);'}
 }
 `;

@@ -60,7 +60,7 @@ void main() {
     float lux = dot(E, Y);
     color = luxFalseColor(lux, lux, facing);
   } else {
-    color = luxDisplay(rho * E / 3.14159265358979, uExposure, uAdapt);
+    color = luxShade(rho * E / 3.14159265358979, uExposure, uAdapt, uMode);
   }
   if (abs(vObject - uSelected) < 0.5) color = mix(color, vec3(0.16, 0.56, 0.98), 0.3);
   fragColor = vec4(color, 1.0);

@@ -48,7 +48,7 @@ void main() {
     fragColor = vec4(luxFalseColor(dot(E, Y), max(dot(Es, Y), 0.0) * 0.25, facing), 1.0);
   } else {
     vec3 L = uReflectance * E / 3.14159265358979;
-    fragColor = vec4(luxDisplay(L, uExposure, uAdapt), 1.0);
+    fragColor = vec4(luxShade(L, uExposure, uAdapt, uMode), 1.0);
   }
 }
 `;

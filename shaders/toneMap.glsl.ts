@@ -60,4 +60,8 @@ vec3 luxLinearToSrgb(vec3 c) {
 vec3 luxDisplay(vec3 luminance, float exposure, mat3 adapt) {
   return luxLinearToSrgb(luxAgxMaxRgb(luxGamutMap(adapt * (luminance * exposure))));
 }
+// Mode 2: the glare pass's HDR target (glarePass.glsl.ts) takes the exposed, adapted light; the pass applies the rest.
+vec3 luxShade(vec3 luminance, float exposure, mat3 adapt, int mode) {
+  return mode == 2 ? adapt * (luminance * exposure) : luxDisplay(luminance, exposure, adapt);
+}
 `;

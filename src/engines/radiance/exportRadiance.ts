@@ -40,7 +40,7 @@ export function exportRadiance(scene: BakeScene, settings: Partial<BakeSettings>
     { path: 'scene.rad', text: header + roomRad(scene) + '\n' + luminaires.rad },
     ...luminaires.files,
     { path: 'source.cal', text: SOURCE_CAL },
-    ...EXPORT_VIEWS.map((name) => ({ path: `views/${name}.vf`, text: viewFile(cameraPreset(name, scene.room), aspect) })),
+    ...EXPORT_VIEWS.map((name) => ({ path: `views/${name}.vf`, text: viewFile(cameraPreset(name, scene.room, { scene, aspect }), aspect) })),
     ...EXPORT_GRIDS.map((g) => ({ path: `points/${g.name}.pts`, text: rtracePoints(planeGrid(scene.room, g.height, GRID_SPACING)) })),
     { path: 'render.sh', text: renderScript(), executable: true },
     { path: 'README.md', text: exportReadme(title, scene, nearField, lamps.length) },

@@ -1,6 +1,8 @@
 import { InputError } from '../../core/inputError';
 import type { Vec3 } from '../../core/model/lightingScene/lightingScene';
 import { unknownFieldMessage } from '../../core/zodIssues';
+import type { BakeScene } from '../bake/bakeScene';
+import { eyeAcrossTheRoom, frameTheLight } from './frameTheLight';
 
 export interface CameraPose {
   position: Vec3;
@@ -12,25 +14,30 @@ export interface CameraPose {
 export const CAMERA_PRESETS = ['eye', 'top', 'corner'] as const;
 export type CameraPresetName = (typeof CAMERA_PRESETS)[number];
 
-/** Eye height of a standing adult, metres (the usual 1.6 m of architectural views). */
-export const EYE_HEIGHT = 1.6;
-
 export class CameraSpecError extends InputError {
   override name = 'CameraSpecError';
 }
 
+/** What a light-framing preset looks at: the scene's room and luminaires, and the view's aspect (width / height). */
+export interface FramingLight {
+  scene: BakeScene;
+  aspect: number;
+}
+
 /**
  * Camera presets for a W×H×D room:
- * - eye: standing at eye height just inside the south wall, looking at the room's far half;
+ * - eye: a person at eye height inside the room looking at where the light is (frameTheLight.ts:
+ *   the main pool and the luminaires in view), given the scene; without one, from the middle of
+ *   the south wall across the room;
  * - top: straight down from above (the ceiling faces away and is culled: a plan view with light);
  * - corner: the "doll's house" view from above the south-east corner, outside the room; the
  *   walls facing away from the camera are culled, so the inside shows.
  */
-export function cameraPreset(name: CameraPresetName, room: { width: number; height: number; depth: number }): CameraPose {
+export function cameraPreset(name: CameraPresetName, room: { width: number; height: number; depth: number }, light?: FramingLight): CameraPose {
   const { width: W, height: H, depth: D } = room;
   switch (name) {
     case 'eye':
-      return { position: [W / 2, Math.min(EYE_HEIGHT, H * 0.8), D - Math.min(0.25, D * 0.1)], target: [W / 2, Math.min(EYE_HEIGHT, H * 0.8) * 0.6, D * 0.3], fov: 75 };
+      return light ? frameTheLight(light.scene, light.aspect).pose : eyeAcrossTheRoom(room);
     case 'top': {
       // Narrow field: little parallax between the hardware and the floor, close to a plan.
       const fov = 30;
@@ -51,8 +58,8 @@ const CAMERA_FIELDS = ['position', 'target', 'fov'] as const;
 const isVec3 = (v: unknown): v is Vec3 => Array.isArray(v) && v.length === 3 && v.every((x) => typeof x === 'number' && Number.isFinite(x));
 
 /** `--camera eye|top|corner` or a JSON object `{"position":[x,y,z],"target":[x,y,z],"fov":deg}`. */
-export function parseCameraSpec(spec: string, room: { width: number; height: number; depth: number }): CameraPose {
-  if ((CAMERA_PRESETS as readonly string[]).includes(spec)) return cameraPreset(spec as CameraPresetName, room);
+export function parseCameraSpec(spec: string, room: { width: number; height: number; depth: number }, light?: FramingLight): CameraPose {
+  if ((CAMERA_PRESETS as readonly string[]).includes(spec)) return cameraPreset(spec as CameraPresetName, room, light);
   let data: unknown;
   try {
     data = JSON.parse(spec);

@@ -17,9 +17,18 @@ import { createRoomView, type PickTarget, type RoomView, type ViewMode } from '.
 import { watchContextLoss } from './watchContextLoss';
 import type { PreparedObjects } from '../bake/objects/preparedObjects';
 import { watchTaps } from './watchTaps';
+import { litMapsOf, moduleWeightsOf } from './compareMaps';
+import { objectLightOf } from './objectLight';
 import { beamAndFieldDeg, createSpotlight, withoutModule, type SpotlightRequest } from './createSpotlight';
 import type { ModuleAim } from '../../core/model/configuration/configuration';
 import type { Vec3 } from '../../core/model/lightingScene/lightingScene';
+
+/** The A/B compare (docs/viewer.md, "A/B compare"): two light scenes of the configuration, A left of the wipe at `split` (0…1 of the width), B right of it. */
+export interface CompareRequest {
+  a: BakeScene;
+  b: BakeScene;
+  split: number;
+}
 
 export interface ViewerEvents {
   /** Bake progress and counters changed. */
@@ -50,6 +59,15 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
   const renderer = new THREE.WebGLRenderer({ canvas, antialias: true, powerPreference: 'high-performance' });
   renderer.setPixelRatio(Math.min(2, window.devicePixelRatio || 1));
   let view: RoomView = createRoomView(renderer);
+  /**
+   * Veiling glare round bright sources in light mode (docs/viewer.md, "Glare"); lux mode never shows
+   * it. Drawn once the configuration's light is done: while it bakes, frames come with every slice
+   * and the pass's extra passes would take the bake's time on a slow GPU (a software renderer's
+   * frames cost several times more with it).
+   */
+  let glare = true;
+  let lightDone = false;
+  const glareNow = () => glare && lightDone;
   const controls = new OrbitControls(view.camera, canvas);
   controls.enableDamping = false; // damping needs a continuous loop; we render on demand
   controls.screenSpacePanning = true;
@@ -88,13 +106,19 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
   let prepared: PreparedObjects | null = null;
   let selectedObject: string | null = null;
   let selectedModule: string | null = null;
+  /** The A/B compare, or null; its B side is a second room view over the same renderer, camera pose and display uniforms. */
+  let compare: CompareRequest | null = null;
+  let compareView: RoomView | null = null;
 
   const display = watchContextLoss(canvas, {
     lost: () => events.onContext('lost'),
     restored() {
       // three re-creates its GL objects; rebuild the room so every texture and program is uploaded anew.
       view.dispose();
+      compareView?.dispose();
+      compareView = null;
       view = createRoomView(renderer);
+      view.setGlare(glareNow());
       camera.attach(view);
       if (fixtures) view.setFixtures(fixtures);
       view.setObjects(prepared);
@@ -114,6 +138,7 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
       // The eye adapting after a cut or a Re-adapt: one more frame while it moves (eyeAdaptation.ts).
       if (maps.advance(performance.now())) frames.request();
       view.render(renderer);
+      if (compare && compareView) drawCompare(compare, compareView);
     },
     canDraw: () => active && !display.lost,
     onFrame: events.onFrame,
@@ -159,6 +184,8 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
    * out, its lamp still shines (its weight with the live levels).
    */
   const syncWeights = () => {
+    // During the A/B compare each side shows its own scene's glow (showCompare).
+    if (compare) return;
     const weights = service.luminaireWeights();
     if (!weights || !scene || service.scene !== scene) return;
     const k = dimmed ? ids.indexOf(dimmed) : -1;
@@ -170,8 +197,56 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
     }
     view.setModuleWeights(new Map(weights.flatMap((w, i) => (ids[i] ? [[ids[i], w] as const] : []))));
   };
+  /** Both sides' maps from the engine (relights, no bake): A on the main view, B on the compare view; the exposure and adaptation stay the held ones. */
+  const showCompare = (engine: RelightEngine, request: CompareRequest) => {
+    const lit = litMapsOf(engine, [request.a, request.b]);
+    if (!lit || !scene) return false;
+    const reflectance = reflectanceRgb(scene.room);
+    if (!compareView) {
+      compareView = createRoomView(renderer);
+      compareView.setGlare(glareNow());
+      if (fixtures) compareView.setFixtures(fixtures);
+      compareView.setObjects(prepared);
+    }
+    const sides: [RoomView, BakeScene][] = [
+      [view, request.a],
+      [compareView, request.b],
+    ];
+    sides.forEach(([v, s], k) => {
+      v.setMaps(lit[k], reflectance);
+      v.setObjectLight(objectLightOf(lit[k]));
+      v.setModuleWeights(moduleWeightsOf(s, ids));
+    });
+    return true;
+  };
+  /** B over the part of the canvas right of the wipe: same camera, same exposure, adaptation and mode as A. */
+  const drawCompare = (request: CompareRequest, b: RoomView) => {
+    const from = view.display;
+    const to = b.display;
+    to.uExposure.value = from.uExposure.value;
+    to.uAdapt.value.copy(from.uAdapt.value);
+    to.uMode.value = from.uMode.value;
+    to.uLevelCount.value = from.uLevelCount.value;
+    from.uLevels.value.forEach((v, i) => (to.uLevels.value[i] = v));
+    b.camera.copy(view.camera);
+    b.camera.updateMatrixWorld();
+    const { width, height } = camera.size;
+    const x = Math.round(Math.min(1, Math.max(0, request.split)) * width);
+    renderer.setScissor(x, 0, width - x, height);
+    renderer.setScissorTest(true);
+    b.render(renderer);
+    renderer.setScissorTest(false);
+  };
   const showMaps = (engine: RelightEngine) => {
     if (!scene) return;
+    lightDone = engine.progress.done;
+    view.setGlare(glareNow());
+    compareView?.setGlare(glareNow());
+    if (compare && showCompare(engine, compare)) {
+      shownVersion = engine.version;
+      frames.request();
+      return;
+    }
     const t0 = performance.now();
     maps.show(engine.maps(), reflectanceRgb(scene.room), t0, { white: adoptedWhite(scene.luminaires), key: sceneGeometryKey(scene), done: engine.progress.done });
     syncWeights();
@@ -190,12 +265,20 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
     // New or moved objects: their old light belongs to another atlas; they show again with the new bake's first maps.
     prepared = next;
     view.setObjects(prepared);
+    compareView?.setObjects(prepared);
     shownVersion = -1;
   };
   const unsubscribe = service.subscribe((e) => {
     if (e.type === 'slice') {
       const p = e.progress;
       if (e.engine.version !== shownVersion && (p.lit || p.done)) showMaps(e.engine);
+      else if (p.done !== lightDone) {
+        // Done (or baking again) without new maps: the glare follows.
+        lightDone = p.done;
+        view.setGlare(glareNow());
+        compareView?.setGlare(glareNow());
+        frames.request();
+      }
       spotlight.bakeProgress(p.done);
       events.onProgress({ fraction: p.fraction, done: p.done, lit: p.lit, ...counters() });
     } else if (e.type === 'engine') {
@@ -213,9 +296,10 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
       ids = luminaireIds;
       fixtures = nextFixtures;
       view.setFixtures(nextFixtures);
+      compareView?.setFixtures(nextFixtures);
       syncWeights();
       syncObjects();
-      camera.setRoom(next.room);
+      camera.setScene(next);
       if (live || dimmed) applyOverlay();
       spotlight.sceneChanged();
       if (spotRequest) syncSpotlight();
@@ -268,6 +352,41 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
       maps.setMode(m);
       frames.request();
     },
+    /** Veiling glare on or off (light mode only). */
+    setGlare(on: boolean) {
+      glare = on;
+      view.setGlare(glareNow());
+      compareView?.setGlare(glareNow());
+      frames.request();
+    },
+    /**
+     * The A/B compare of two light scenes (same luminaires as the scene, other dimming and colour),
+     * or null to end it: A left of the wipe, B right, both at the exposure and adaptation held now.
+     */
+    setCompare(request: CompareRequest | null) {
+      const scenesChanged = !compare || !request || compare.a !== request.a || compare.b !== request.b;
+      compare = request;
+      if (!request) {
+        compareView?.dispose();
+        compareView = null;
+      }
+      if (scenesChanged) {
+        shownVersion = -1;
+        const engine = service.engine;
+        if (engine && (engine.progress.lit || engine.progress.done)) showMaps(engine);
+        if (!request) syncWeights();
+      }
+      frames.request();
+    },
+    /** The compare drawn last: both sides' exposures (the same by construction) and the wipe, or null. */
+    compareState(): { exposureA: number; exposureB: number; split: number } | null {
+      if (!compare || !compareView) return null;
+      return { exposureA: view.display.uExposure.value, exposureB: compareView.display.uExposure.value, split: compare.split };
+    },
+    /** Whether the last frame went through the glare pass (light mode on a renderer with half-float targets). */
+    glareShown(): boolean {
+      return view.glareShown();
+    },
     /** The objects' geometry on screen, as the baker lays out their atlas (null: no objects). */
     objects(): PreparedObjects | null {
       return prepared;
@@ -314,6 +433,7 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
     },
     /** Frees the display only: the service keeps its engine, maps and pending work. */
     dispose() {
+      compareView?.dispose();
       unsubscribe();
       if (live) service.setOverlay(null);
       frames.stop();

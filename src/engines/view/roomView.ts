@@ -6,11 +6,12 @@ import type { CameraPose } from './cameraPresets';
 import type { PreparedObjects } from '../bake/objects/preparedObjects';
 import { createRoomHardware } from './createRoomHardware';
 import { createRoomObjects, OBJECTS_MESH_NAME } from './createRoomObjects';
-import { createRoomSurfaces, type ViewMode } from './createRoomSurfaces';
+import { createRoomSurfaces, type SharedDisplayUniforms, type ViewMode } from './createRoomSurfaces';
 import type { Fixtures } from './fixtures';
 import { meanIlluminance } from './meanIlluminance';
 import type { ObjectLight } from './objectLight';
 import type { SpotPreviewUniforms } from './spotPreview';
+import { canRenderGlare, createGlarePass, type GlarePass } from './glare/createGlarePass';
 
 export type { ViewMode } from './createRoomSurfaces';
 
@@ -25,6 +26,8 @@ export type PickTarget = { kind: 'object' | 'module'; id: string };
 export interface RoomView {
   readonly scene: THREE.Scene;
   readonly camera: THREE.PerspectiveCamera;
+  /** The display uniforms the surfaces, objects and luminaires share (exposure, adaptation, mode, lux levels). */
+  readonly display: SharedDisplayUniforms;
   /** Upload relit maps (RGB lux) and the room's reflectances. */
   setMaps(lit: LitMaps, reflectance: Record<SurfaceName, Rgb>): void;
   /** The objects' geometry (PreparedObjects of the scene's objects, the same the baker lights; null: none). */
@@ -49,13 +52,32 @@ export interface RoomView {
   setMode(mode: ViewMode, levels?: readonly number[]): void;
   setFixtures(fixtures: Fixtures): void;
   setCamera(pose: CameraPose, aspect: number): void;
+  /**
+   * Veiling glare round bright sources (glare/createGlarePass.ts, docs/viewer.md "Glare"): in light
+   * mode on a renderer with half-float targets; never in lux mode. Off until set.
+   */
+  setGlare(on: boolean): void;
+  /** Whether the last render went through the glare pass. */
+  glareShown(): boolean;
   render(renderer: THREE.WebGLRenderer): void;
   dispose(): void;
 }
 
+/** The view's background (sRGB bytes 0x1d2126), as three shows THREE.Color(0x1d2126) on the canvas. */
+const BACKGROUND = 0x1d2126;
+
 export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
   const scene = new THREE.Scene();
-  scene.background = new THREE.Color(0x1d2126);
+  const background = new THREE.Color(BACKGROUND);
+  scene.background = background;
+  // The glare pass's HDR target is cleared to 0 (no light); its composite shows this display colour there.
+  const backgroundDisplay: [number, number, number] = [((BACKGROUND >> 16) & 255) / 255, ((BACKGROUND >> 8) & 255) / 255, (BACKGROUND & 255) / 255];
+  const black = new THREE.Color(0, 0, 0);
+  let glareOn = false;
+  let glare: GlarePass | null = null;
+  let glareShown = false;
+  const bufferSize = new THREE.Vector2();
+  const clearColor = new THREE.Color();
   const camera = new THREE.PerspectiveCamera(60, 1, 0.05, 500);
   const surfaces = createRoomSurfaces(scene, renderer);
   // The luminaires share the surfaces' display uniforms: one exposure, adaptation and mode for the room and its glow.
@@ -67,6 +89,7 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
   return {
     scene,
     camera,
+    display: surfaces.display,
     setMaps(lit, reflectance) {
       surfaces.setMaps(lit, reflectance);
       hardware.setAmbient(meanIlluminance(lit));
@@ -114,10 +137,37 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
       camera.lookAt(new THREE.Vector3(...pose.target));
       camera.updateProjectionMatrix();
     },
+    setGlare(on) {
+      glareOn = on;
+    },
+    glareShown: () => glareShown,
     render(renderer) {
+      glareShown = glareOn && surfaces.display.uMode.value === 0 && canRenderGlare(renderer);
+      if (!glareShown) {
+        renderer.render(scene, camera);
+        return;
+      }
+      renderer.getDrawingBufferSize(bufferSize);
+      // Multisampled like the canvas (antialias) when it is.
+      glare ??= createGlarePass({ samples: renderer.getContext().getContextAttributes()?.antialias ? 4 : 0, background: backgroundDisplay });
+      glare.setSize(bufferSize.x, bufferSize.y);
+      const mode = surfaces.display.uMode;
+      renderer.getClearColor(clearColor);
+      const clearAlpha = renderer.getClearAlpha();
+      mode.value = 2;
+      scene.background = null;
+      renderer.setClearColor(black, 0);
+      renderer.setRenderTarget(glare.target);
+      renderer.clear();
       renderer.render(scene, camera);
+      renderer.setRenderTarget(null);
+      mode.value = 0;
+      scene.background = background;
+      renderer.setClearColor(clearColor, clearAlpha);
+      glare.finish(renderer, camera.fov / bufferSize.y, null);
     },
     dispose() {
+      glare?.dispose();
       hardware.dispose();
       objects.dispose();
       surfaces.dispose();

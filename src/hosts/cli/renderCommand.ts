@@ -16,7 +16,7 @@ import { RENDER_SUMMARY_FORMAT, type RenderSummary, type RenderSummaryImage } fr
 import { cliReadableFolders } from '../node/cliReadableFolders';
 
 export const renderUsage =
-  'render <config-or-scene.json> [more.json …] --out image.png|<dir>/ [--camera eye|top|corner|<json>|eye,top,… (repeatable)] [--cameras cameras.json] [--width 960 --height 600] [--ev EV100 | --exposure stops] [--adapt eye|none|camera:<K>] [--mode light|lux] [--samples N --bounces N --texel m] [--gl vulkan|glx|auto]';
+  'render <config-or-scene.json> [more.json …] --out image.png|<dir>/ [--camera eye|top|corner|<json>|eye,top,… (repeatable)] [--cameras cameras.json] [--width 960 --height 600] [--ev EV100 | --exposure stops] [--adapt eye|none|camera:<K>] [--mode light|lux] [--glare on|off] [--samples N --bounces N --texel m] [--gl vulkan|glx|auto]';
 
 function intOption(name: string, value: string | undefined, fallback: number, min: number, max: number): number {
   if (value === undefined) return fallback;
@@ -66,7 +66,7 @@ const errorLine = (error: unknown) => oneLine(error instanceof Error ? error.mes
  */
 export async function run(args: string[]): Promise<number> {
   const { cameras, rest } = takeRenderCameras(args);
-  const { positional, settings, options } = parseBakeCli('render', rest, ['--out', '--width', '--height', '--exposure', '--ev', '--adapt', '--mode', '--gl']);
+  const { positional, settings, options } = parseBakeCli('render', rest, ['--out', '--width', '--height', '--exposure', '--ev', '--adapt', '--mode', '--glare', '--gl']);
   if (positional.length === 0) throw new InputError(`render: expected a scene file (usage: luxbox ${renderUsage})`);
   const out = options['--out'];
   if (!out) throw new InputError(`render: --out <image.png> is required (usage: luxbox ${renderUsage})`);
@@ -76,6 +76,10 @@ export async function run(args: string[]): Promise<number> {
   const adaptation = adaptationOption(options['--adapt']);
   const mode = options['--mode'] ?? 'light';
   if (mode !== 'light' && mode !== 'lux') throw new InputError(`render: --mode must be light or lux, got "${mode}"`);
+  // Veiling glare round bright sources (docs/viewer.md, "Glare"): on by default in light mode, never in lux mode.
+  const glareOption = options['--glare'] ?? 'on';
+  if (glareOption !== 'on' && glareOption !== 'off') throw new InputError(`render: --glare must be on or off, got "${glareOption}"`);
+  const glare = glareOption === 'on';
   const batch = positional.length > 1 || cameras.length > 1 || /[/\\]$/.test(out) || (existsSync(out) && statSync(out).isDirectory());
   // A single render keeps the old contract: bad input is one line on stderr before any GL work.
   const single = batch ? null : loadRenderInput(positional[0], { within: cliReadableFolders(positional[0]) });
@@ -99,11 +103,13 @@ export async function run(args: string[]): Promise<number> {
       let input;
       let results;
       try {
-        input = single ?? loadRenderInput(path, { within: cliReadableFolders(path) });
-        const room = input.scene.room;
-        const poses = cameras.map((c) => parseCameraSpec(c.spec, room));
+        const loaded = single ?? loadRenderInput(path, { within: cliReadableFolders(path) });
+        input = loaded;
+        const room = loaded.scene.room;
+        // The eye preset frames this scene's light (frameTheLight.ts), as the browser's does.
+        const poses = cameras.map((c) => parseCameraSpec(c.spec, room, { scene: loaded.bakeScene, aspect: width / height }));
         // One bake per scene, drawn from every camera.
-        results = session.renderViews(input, { width, height, camera: poses[0], exposureEv: compensation, ev100, mode, adaptation, settings }, poses);
+        results = session.renderViews(input, { width, height, camera: poses[0], exposureEv: compensation, ev100, mode, adaptation, glare, settings }, poses);
       } catch (error) {
         if (!batch) throw error;
         failed.push({ file: path, error: errorLine(error) });

@@ -26,6 +26,8 @@ export interface RenderOptions {
   mode: ViewMode;
   /** Chromatic adaptation (chromaticAdaptation.ts); default eye. */
   adaptation?: AdaptationSetting;
+  /** Veiling glare round bright sources in light mode (glare/createGlarePass.ts); default on. */
+  glare?: boolean;
   settings: Partial<BakeSettings>;
 }
 
@@ -114,6 +116,7 @@ export function createRenderSession(width: number, height: number): RenderSessio
         // The floor a person sees: texels under furniture standing on it left out (docs/viewer.md).
         const floor = floorStats(lit, prepared);
         view.setFixtures(input.fixtures);
+        view.setGlare(options.glare ?? true);
         const results = cameras.map((camera): RenderResult => {
           const t2 = performance.now();
           view.setCamera(camera, width / height);

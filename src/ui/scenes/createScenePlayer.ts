@@ -12,12 +12,10 @@ import { needsColourFilterSpectra } from '../../core/colour/moduleColour';
 import { configurationFilterIds } from '../../core/model/modules/moduleFilter';
 import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
 import type { Configuration, LightScene } from '../../core/model/configuration/configuration';
-import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 import { fadeFraction, levelsOutput, mixLevels, mixLights, outputLevels, type ModuleLight } from '../../core/model/cues/sceneFade';
-import { toLightingScene } from '../../core/model/files/toLightingScene';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
-import type { BakeScene } from '../../engines/bake/bakeScene';
 import type { BakeFeed } from '../viewer/startBakeFeed';
+import { fromScene, lightsOf } from '../../engines/view/sceneLights';
 
 export interface SceneFadeState {
   readonly sceneId: string;
@@ -90,22 +88,6 @@ const pageFrame = (callback: () => void): (() => void) => {
   const id = setTimeout(callback, 16);
   return () => clearTimeout(id);
 };
-
-/** Dimming and colour per module id of a configuration's lighting scene (what the baker gets for it). */
-function lightsOf(config: Configuration, catalog: Catalog): Map<string, ModuleLight> {
-  return new Map(toLightingScene(config, catalog).luminaires.map((l) => [l.id ?? '', { dimming: l.dimming ?? 1, color: (l.color ?? [1, 1, 1]) as Rgb }]));
-}
-
-/** The scene faded from: the lit scene's luminaires with the earlier state's dimming and colour (by module id). */
-function fromScene(scene: BakeScene, ids: readonly string[], lights: ReadonlyMap<string, ModuleLight>): BakeScene {
-  return {
-    ...scene,
-    luminaires: scene.luminaires.map((l, i) => {
-      const f = lights.get(ids[i]);
-      return f ? { ...l, dimming: f.dimming, color: [...f.color] as Rgb } : l;
-    }),
-  };
-}
 
 export function createScenePlayer(store: ConfiguratorStore, options: ScenePlayerOptions = {}): ScenePlayer {
   const frame = options.frame ?? pageFrame;

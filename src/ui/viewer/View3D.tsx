@@ -15,6 +15,7 @@ import { floorStats, workPlaneStats, type IlluminanceStats } from '../../engines
 import { DimmerRow } from './DimmerRow';
 import { AdaptationControl } from './AdaptationControl';
 import { ExposureControl } from './ExposureControl';
+import { CompareControl, CompareWipe, useCompare } from './CompareControl';
 import { IlluminanceTable } from './IlluminanceTable';
 import { LiveControl } from './LiveControl';
 import { LuxLegend } from './LuxLegend';
@@ -117,6 +118,7 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
   /** Counts controllers made, so the aiming controls hand their modes to a new one (its effects run after theirs). */
   const [controllerVersion, setControllerVersion] = useState(0);
   const [liveState, setLiveState] = useState<NonNullable<ViewerStatus['live']>['state'] | null>(null);
+  const [compare, updateCompare, compareScenes] = useCompare(feed, ctrl, controllerVersion);
 
   // The view's own record is kept while it is hidden behind the plan; hosts see a closed view then.
   const publish = (patch: Partial<ViewerStatus>) => {
@@ -196,7 +198,7 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
           publish({ lastRelightMs: info.relightMs, floor: { avg: f.avg, min: f.min, max: f.max, u0: f.u0 }, objects });
         },
         onFrame: (frames) => {
-          const patch: Partial<ViewerStatus> = { frames };
+          const patch: Partial<ViewerStatus> = { frames, compare: ctrl.current?.compareState() ?? null };
           if (!status.current.lit && litRef.current) {
             patch.lit = true;
             patch.firstLitMs = performance.now() - mountedAt.current;
@@ -296,6 +298,7 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
     <section className="viewer3d" aria-label={t('view3d.view')} data-testid="view3d" hidden={!visible}>
       <div className="viewer3d-canvas-wrap" ref={wrapRef}>
         <canvas ref={canvasRef} className="viewer3d-canvas" data-testid="view3d-canvas" />
+        <CompareWipe choice={compare} update={updateCompare} scenes={compareScenes} />
         {!progress.done && !error && (
           <div className="viewer3d-progress" role="progressbar" aria-label={t('view3d.lightCalculation')} aria-valuemin={0} aria-valuemax={100} aria-valuenow={Math.round(progress.fraction * 100)} data-testid="view3d-progress">
             <div className="viewer3d-progress-bar" style={{ width: `${Math.round(progress.fraction * 100)}%` }} />
@@ -360,6 +363,7 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
         </div>
         <ExposureControl initial={host.exposure} target={() => ctrl.current} />
         <AdaptationControl initial={host.adaptation} target={() => ctrl.current} />
+        <CompareControl choice={compare} update={updateCompare} scenes={compareScenes} />
         {selectedLabel && (
           <p className="viewer3d-selected" data-testid="view3d-selected" data-kind={selection?.kind} data-id={selection?.id}>
             {t('view3d.selected', { name: selectedLabel })}

@@ -41,6 +41,8 @@ export interface ViewerStatus {
    * the levels changed).
    */
   live: { state: 'connecting' | 'connected' | 'no-bridge' | 'lost'; received: number; applied: number } | null;
+  /** The A/B compare of two light scenes drawn last (docs/viewer.md, "A/B compare"): each side's exposure and the wipe, or null. */
+  compare: { exposureA: number; exposureB: number; split: number } | null;
   /**
    * Per object once its light is on screen (null before, or without objects): mean lux over the
    * object, over its top (null if it has no flat top) and of the floor under its plan bounds
@@ -63,7 +65,7 @@ export const IDLE_BAKE: BakeStatus = { running: false, paused: false, done: fals
 
 export const CLOSED_STATUS: ViewerStatus = {
   open: false, lit: false, done: false, progress: 0, groupBakes: 0, relightsOnly: 0, frames: 0,
-  firstLitMs: null, firstLitFrame: null, lastRelightMs: null, contextLosses: 0, error: null, floor: null, live: null, objects: null, bake: IDLE_BAKE,
+  firstLitMs: null, firstLitFrame: null, lastRelightMs: null, contextLosses: 0, error: null, floor: null, live: null, compare: null, objects: null, bake: IDLE_BAKE,
 };
 
 export function setViewerStatus(owner: object, status: ViewerStatus): void {

@@ -34,5 +34,10 @@ export default {
   selected: 'Ausgewählt: {name}',
   workPlaneAt: 'Nutzebene auf',
   workPlaneHeight: 'Höhe der Nutzebene in Metern',
+  compare: 'Zwei Lichtszenen nebeneinander bei gleicher Belichtung vergleichen',
+  compareToggle: 'A/B',
+  compareA: 'A',
+  compareB: 'B',
+  compareWipe: 'Trennlinie zwischen A und B',
   dimmingModules: { one: 'Dimmung ({count} Modul)', other: 'Dimmung ({count} Module)' },
 } satisfies AreaMessages<typeof en>;

@@ -32,5 +32,10 @@ export default {
   selected: 'Selected: {name}',
   workPlaneAt: 'Work plane at',
   workPlaneHeight: 'Work plane height in metres',
+  compare: 'Compare two light scenes side by side at one exposure',
+  compareToggle: 'A/B',
+  compareA: 'A',
+  compareB: 'B',
+  compareWipe: 'Divider between A and B',
   dimmingModules: { one: 'Dimming ({count} module)', other: 'Dimming ({count} modules)' },
 };

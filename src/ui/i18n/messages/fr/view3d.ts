@@ -34,5 +34,10 @@ export default {
   selected: 'Sélection : {name}',
   workPlaneAt: 'Plan utile à',
   workPlaneHeight: 'Hauteur du plan utile en mètres',
+  compare: 'Comparer deux scènes lumineuses côte à côte à la même exposition',
+  compareToggle: 'A/B',
+  compareA: 'A',
+  compareB: 'B',
+  compareWipe: 'Séparation entre A et B',
   dimmingModules: { one: 'Gradation ({count} module)', many: 'Gradation ({count} de modules)', other: 'Gradation ({count} modules)' },
 } satisfies AreaMessages<typeof en>;

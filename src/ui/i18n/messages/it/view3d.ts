@@ -34,5 +34,10 @@ export default {
   selected: 'Selezionato: {name}',
   workPlaneAt: 'Piano di lavoro a',
   workPlaneHeight: 'Altezza del piano di lavoro in metri',
+  compare: 'Confronta due scene luminose affiancate con la stessa esposizione',
+  compareToggle: 'A/B',
+  compareA: 'A',
+  compareB: 'B',
+  compareWipe: 'Divisione tra A e B',
   dimmingModules: { one: 'Dimmerazione ({count} modulo)', many: 'Dimmerazione ({count} di moduli)', other: 'Dimmerazione ({count} moduli)' },
 } satisfies AreaMessages<typeof en>;
