@@ -1,4 +1,5 @@
 import type { ChangeEvent } from 'react';
+import { useStore } from 'zustand';
 import { showStatus, type UiStore } from '../../core/store/uiStore';
 import { InputError } from '../../core/inputError';
 import { serializeConfiguration } from '../../core/model/sceneFile';
@@ -27,6 +28,8 @@ export interface FilePanelProps {
  */
 export function FilePanel({ store, ui, loadPhotometry }: FilePanelProps) {
   const { t, language } = useI18n();
+  // The Radiance export is an expert tool (docs/embedding.md, option `expert`).
+  const expert = useStore(ui, (s) => s.expert);
   const save = () => {
     const { config, catalog } = store.getState();
     const name = sceneFileName(config);
@@ -81,9 +84,11 @@ export function FilePanel({ store, ui, loadPhotometry }: FilePanelProps) {
         />
         {t('files.openFile')}
       </label>
-      <button type="button" className="btn btn-export" onClick={() => void radiance()} data-testid="download-radiance" title={t('files.radianceTitle')}>
-        {t('files.downloadRadiance')}
-      </button>
+      {expert && (
+        <button type="button" className="btn btn-export" onClick={() => void radiance()} data-testid="download-radiance" title={t('files.radianceTitle')}>
+          {t('files.downloadRadiance')}
+        </button>
+      )}
     </div>
   );
 }

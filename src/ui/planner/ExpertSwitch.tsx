@@ -1,0 +1,25 @@
+import { useStore } from 'zustand';
+import type { UiStore } from '../../core/store/uiStore';
+import { useI18n } from '../i18n/useI18n';
+
+/**
+ * The Expert switch of the side panel (docs/embedding.md, option `expert: 'switch'`): shows or hides
+ * the expert tools (DMX live control in 3D, the Radiance download, the photometric files' data
+ * notes). A checkbox with the switch role, so it is read as on/off; shown only where the shop lets
+ * the user choose.
+ */
+export function ExpertSwitch({ ui }: { ui: UiStore }) {
+  const { t } = useI18n();
+  const on = useStore(ui, (s) => s.expert);
+  const offered = useStore(ui, (s) => s.expertSwitch);
+  if (!offered) return null;
+  return (
+    <label className="expert-switch">
+      <input type="checkbox" role="switch" checked={on} onChange={(e) => ui.setState({ expert: e.target.checked })} aria-describedby="luxbox-expert-note" data-testid="expert-switch" />
+      <span>
+        {t('planner.expert')}
+        <small id="luxbox-expert-note">{t('planner.expertNote')}</small>
+      </span>
+    </label>
+  );
+}
