@@ -67,7 +67,7 @@ function checkExpert(expert: unknown, remember: boolean): { expert: boolean; exp
   if (expert === undefined || expert === false) return { expert: false, expertSwitch: false };
   if (expert === true) return { expert: true, expertSwitch: false };
   if (expert === 'switch') return { expert: remember && readLocal(EXPERT_KEY) === '1', expertSwitch: true };
-  throw new EmbedOptionsError(`options.expert: ${JSON.stringify(expert)} is neither true, false nor 'switch'`);
+  throw new EmbedOptionsError(`options.expert: ${JSON.stringify(expert)} is not true, false or 'switch'`);
 }
 
 /** Class on the element luxbox renders into: the scope of its stylesheet and its size container. */

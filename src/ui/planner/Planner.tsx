@@ -17,13 +17,14 @@ import { ImportPanel } from './ImportPanel';
 import type { MeshUnits } from '../../core/model/configuration';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
 import { FilePanel } from './FilePanel';
-import { ExpertSwitch } from './ExpertSwitch';
 import { SurfacesPanel } from './SurfacesPanel';
 import { defaultSurfaceFinishes } from '../../core/catalog/surfaceFinishes';
 import { LazyView3D } from '../viewer/LazyView3D';
 
 // The share link's copy and share buttons load once a link is made (not with the first screen).
 const ShareLinkField = lazy(() => import('./ShareLinkField'));
+// The Expert switch loads only where the shop offers it (docs/embedding.md, option `expert`).
+const ExpertSwitch = lazy(() => import('./ExpertSwitch'));
 import { lowMemoryDevice } from '../../engines/view/lowMemoryDevice';
 import { createActionGate } from './actionGate';
 import { detailLevel } from './detailLevel';
@@ -82,6 +83,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
   const status = useStore(ui, (s) => s.status);
   const shareLink = useStore(ui, (s) => s.shareLink);
   const expert = useStore(ui, (s) => s.expert);
+  const expertSwitch = useStore(ui, (s) => s.expertSwitch);
 
   const wrapRef = useRef<HTMLDivElement>(null);
   const [viewport, setViewport] = useState<Viewport>(DEFAULT_VIEWPORT);
@@ -317,7 +319,11 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
               </button>
             </div>
             <FilePanel store={store} ui={ui} loadPhotometry={footprints.loadPhotometry} />
-            <ExpertSwitch ui={ui} />
+            {expertSwitch && (
+              <Suspense fallback={null}>
+                <ExpertSwitch ui={ui} />
+              </Suspense>
+            )}
             {shareLink && (
               <Suspense fallback={null}>
                 <ShareLinkField link={shareLink} notice={shareNotice} />

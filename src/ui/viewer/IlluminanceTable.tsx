@@ -1,44 +1,59 @@
 import type { IlluminanceStats } from '../../engines/view/lightStats';
 import { useI18n } from '../i18n/useI18n';
+import type { MessageKey } from '../i18n/messageTypes';
 import './registerView3dEnglish';
 
 /** Lux with as many decimals as a meter shows: 0 from 100 lx, 1 from 10 lx, else 2. */
 const digits = (v: number) => (v >= 100 ? 0 : v >= 10 ? 1 : 2);
 
-function StatsRow({ label, s, testId }: { label: string; s: IlluminanceStats | null; testId: string }) {
-  const { format } = useI18n();
-  const fmt = (v: number) => format.number(v, { minimumFractionDigits: digits(v), maximumFractionDigits: digits(v), useGrouping: false });
-  return (
-    <tr data-testid={testId}>
-      <th scope="row">{label}</th>
-      <td>{s ? fmt(s.avg) : '–'}</td>
-      <td>{s ? fmt(s.min) : '–'}</td>
-      <td>{s ? fmt(s.max) : '–'}</td>
-      <td>{s ? format.number(s.u0, { minimumFractionDigits: 2, maximumFractionDigits: 2 }) : '–'}</td>
-    </tr>
-  );
-}
+/** The rows: each quantity, its label and how it is read from the statistics (U0 = Emin / Ē, EN 12464-1). */
+const ROWS: { key: 'avg' | 'min' | 'max' | 'u0'; label: MessageKey }[] = [
+  { key: 'avg', label: 'view3d.statsAverage' },
+  { key: 'min', label: 'view3d.statsMin' },
+  { key: 'max', label: 'view3d.statsMax' },
+  { key: 'u0', label: 'view3d.statsUniformity' },
+];
 
-/** Ē, Emin, Emax, U0 of the floor and, when shown, the work plane ('–' until computed). */
+/**
+ * Ē, Emin, Emax, U0 of the floor and, when shown, the work plane ('–' until computed). One layout
+ * at every panel width (issue 27): a row per quantity and a column per surface, the table as wide
+ * as the panel with fixed column shares, so at most three short columns of numbers sit side by
+ * side and nothing wraps inside a number or overflows its cell, from a 320 px phone to a desktop.
+ */
 export function IlluminanceTable({ floor, plane }: { floor: IlluminanceStats | null; plane: { height: number; stats: IlluminanceStats | null } | null }) {
   const { t, format } = useI18n();
+  const columns = [{ id: 'floor', label: t('app.floor'), s: floor }, ...(plane ? [{ id: 'plane', label: t('view3d.planeAt', { height: format.metres(plane.height) }), s: plane.stats }] : [])];
+  const value = (s: IlluminanceStats | null, key: (typeof ROWS)[number]['key']) => {
+    if (!s) return '–';
+    const v = s[key];
+    return key === 'u0' ? format.number(v, { minimumFractionDigits: 2, maximumFractionDigits: 2 }) : format.number(v, { minimumFractionDigits: digits(v), maximumFractionDigits: digits(v), useGrouping: false });
+  };
   return (
-    <table className="viewer3d-stats" aria-label={t('view3d.illuminance')}>
+    <table className="viewer3d-stats" aria-label={t('view3d.illuminance')} data-columns={columns.length}>
       <thead>
         <tr>
-          {/* The corner cell heads the column of row names (floor, plane): named for screen readers, not shown. */}
+          {/* The corner cell heads the column of quantities: named for screen readers, not shown. */}
           <th scope="col">
-            <span className="sr-only">{t('view3d.statsSurface')}</span>
+            <span className="sr-only">{t('view3d.statsQuantity')}</span>
           </th>
-          <th scope="col">Ē lx</th>
-          <th scope="col">Emin</th>
-          <th scope="col">Emax</th>
-          <th scope="col">U0</th>
+          {columns.map((c) => (
+            <th key={c.id} scope="col" data-testid={`stats-${c.id}`}>
+              {c.label}
+            </th>
+          ))}
         </tr>
       </thead>
       <tbody>
-        <StatsRow label={t('app.floor')} s={floor} testId="stats-floor" />
-        {plane && <StatsRow label={t('view3d.planeAt', { height: format.metres(plane.height) })} s={plane.stats} testId="stats-plane" />}
+        {ROWS.map((r) => (
+          <tr key={r.key}>
+            <th scope="row">{t(r.label)}</th>
+            {columns.map((c) => (
+              <td key={c.id} data-testid={`stats-${c.id}-${r.key}`}>
+                {value(c.s, r.key)}
+              </td>
+            ))}
+          </tr>
+        ))}
       </tbody>
     </table>
   );

@@ -8,8 +8,6 @@ export default {
   sidePanel: 'Vorlagen und Preis',
   shareLink: 'Link teilen',
   newRoom: 'Neuer Raum',
-  expert: 'Expertenwerkzeuge',
-  expertNote: 'DMX-Livesteuerung, Radiance-Download, Hinweise zu Lichtdaten',
   linkToConfiguration: 'Link zu dieser Konfiguration',
   bomTitle: 'Stückliste',
   bomEmpty: 'Noch nichts platziert. Wählen Sie oben eine Vorlage.',

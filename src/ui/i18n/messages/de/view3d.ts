@@ -3,8 +3,12 @@ import type en from '../en/view3d';
 
 export default {
   illuminance: 'Beleuchtungsstärke',
-  statsSurface: 'Messfläche',
   planeAt: 'Ebene {height}',
+  statsQuantity: 'Größe',
+  statsAverage: 'Mittel Ē (lx)',
+  statsMin: 'Minimum Emin (lx)',
+  statsMax: 'Maximum Emax (lx)',
+  statsUniformity: 'Gleichmäßigkeit U₀',
   legend: 'Legende der Beleuchtungsstärke (Lux)',
   couldNotStart: 'Die 3D-Ansicht konnte nicht starten: {problem}',
   furnitureFailed: 'Die Möbel konnten nicht für die Lichtberechnung vorbereitet werden: {problem}',

@@ -6,8 +6,6 @@ export default {
   sidePanel: 'Presets and price',
   shareLink: 'Share link',
   newRoom: 'New room',
-  expert: 'Expert tools',
-  expertNote: 'DMX live control, Radiance download, photometric data notes',
   linkToConfiguration: 'Link to this configuration',
   bomTitle: 'Bill of materials',
   bomEmpty: 'Nothing placed yet. Choose a preset above.',

@@ -8,8 +8,6 @@ export default {
   sidePanel: 'Modèles et prix',
   shareLink: 'Partager le lien',
   newRoom: 'Nouvelle pièce',
-  expert: 'Outils experts',
-  expertNote: 'Pilotage DMX en direct, export Radiance, notes sur les données photométriques',
   linkToConfiguration: 'Lien vers cette configuration',
   bomTitle: 'Nomenclature',
   bomEmpty: 'Rien n’est encore placé. Choisissez un modèle ci-dessus.',

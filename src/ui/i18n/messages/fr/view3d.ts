@@ -3,8 +3,12 @@ import type en from '../en/view3d';
 
 export default {
   illuminance: 'Éclairement',
-  statsSurface: 'Surface mesurée',
   planeAt: 'Plan {height}',
+  statsQuantity: 'Grandeur',
+  statsAverage: 'Moyenne Ē (lx)',
+  statsMin: 'Minimum Emin (lx)',
+  statsMax: 'Maximum Emax (lx)',
+  statsUniformity: 'Uniformité U₀',
   legend: 'Légende de l’éclairement (lux)',
   couldNotStart: 'La vue 3D n’a pas pu démarrer : {problem}',
   furnitureFailed: 'Le mobilier n’a pas pu être préparé pour le calcul de la lumière : {problem}',

@@ -8,8 +8,6 @@ export default {
   sidePanel: 'Modelli e prezzo',
   shareLink: 'Condividi link',
   newRoom: 'Nuova stanza',
-  expert: 'Strumenti per esperti',
-  expertNote: 'Controllo DMX dal vivo, download Radiance, note sui dati fotometrici',
   linkToConfiguration: 'Link a questa configurazione',
   bomTitle: 'Distinta materiali',
   bomEmpty: 'Ancora nulla di posizionato. Scegli un modello qui sopra.',

@@ -3,8 +3,12 @@ import type en from '../en/view3d';
 
 export default {
   illuminance: 'Illuminamento',
-  statsSurface: 'Superficie misurata',
   planeAt: 'Piano {height}',
+  statsQuantity: 'Grandezza',
+  statsAverage: 'Media Ē (lx)',
+  statsMin: 'Minimo Emin (lx)',
+  statsMax: 'Massimo Emax (lx)',
+  statsUniformity: 'Uniformità U₀',
   legend: 'Legenda dell’illuminamento (lux)',
   couldNotStart: 'Non è stato possibile avviare la vista 3D: {problem}',
   furnitureFailed: 'Non è stato possibile preparare gli arredi per il calcolo della luce: {problem}',
