@@ -63,7 +63,7 @@ export const EXPERT_KEY = 'luxbox.expert';
  * options.expert checked: true shows the expert tools (no switch), false hides them (no switch;
  * the default), 'switch' offers the user the switch, off at first unless rememberExpert finds it on.
  */
-function checkExpert(expert: unknown, remember: boolean): { expert: boolean; expertSwitch: boolean } {
+export function checkExpert(expert: unknown, remember: boolean): { expert: boolean; expertSwitch: boolean } {
   if (expert === undefined || expert === false) return { expert: false, expertSwitch: false };
   if (expert === true) return { expert: true, expertSwitch: false };
   if (expert === 'switch') return { expert: remember && readLocal(EXPERT_KEY) === '1', expertSwitch: true };

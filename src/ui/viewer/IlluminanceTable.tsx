@@ -7,11 +7,11 @@ import './registerView3dEnglish';
 const digits = (v: number) => (v >= 100 ? 0 : v >= 10 ? 1 : 2);
 
 /** The rows: each quantity, its label and how it is read from the statistics (U0 = Emin / Ē, EN 12464-1). */
-const ROWS: { key: 'avg' | 'min' | 'max' | 'u0'; label: MessageKey }[] = [
-  { key: 'avg', label: 'view3d.statsAverage' },
-  { key: 'min', label: 'view3d.statsMin' },
-  { key: 'max', label: 'view3d.statsMax' },
-  { key: 'u0', label: 'view3d.statsUniformity' },
+const ROWS: { key: 'avg' | 'min' | 'max' | 'u0'; messageKey: MessageKey }[] = [
+  { key: 'avg', messageKey: 'view3d.statsAverage' },
+  { key: 'min', messageKey: 'view3d.statsMin' },
+  { key: 'max', messageKey: 'view3d.statsMax' },
+  { key: 'u0', messageKey: 'view3d.statsUniformity' },
 ];
 
 /**
@@ -46,7 +46,7 @@ export function IlluminanceTable({ floor, plane }: { floor: IlluminanceStats | n
       <tbody>
         {ROWS.map((r) => (
           <tr key={r.key}>
-            <th scope="row">{t(r.label)}</th>
+            <th scope="row">{t(r.messageKey)}</th>
             {columns.map((c) => (
               <td key={c.id} data-testid={`stats-${c.id}-${r.key}`}>
                 {value(c.s, r.key)}
