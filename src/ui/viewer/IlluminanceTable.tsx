@@ -6,7 +6,7 @@ import './registerView3dEnglish';
 /** Lux with as many decimals as a meter shows: 0 from 100 lx, 1 from 10 lx, else 2. */
 const digits = (v: number) => (v >= 100 ? 0 : v >= 10 ? 1 : 2);
 
-/** The rows: each quantity, its label and how it is read from the statistics (U0 = Emin / Ē, EN 12464-1). */
+/** The rows: Ē, Emin, Emax and U0 = Emin / Ē (EN 12464-1), named in words ("Average", "Lowest", …). */
 const ROWS: { key: 'avg' | 'min' | 'max' | 'u0'; messageKey: MessageKey }[] = [
   { key: 'avg', messageKey: 'view3d.statsAverage' },
   { key: 'min', messageKey: 'view3d.statsMin' },
@@ -17,8 +17,9 @@ const ROWS: { key: 'avg' | 'min' | 'max' | 'u0'; messageKey: MessageKey }[] = [
 /**
  * Ē, Emin, Emax, U0 of the floor and, when shown, the work plane ('–' until computed). One layout
  * at every panel width (issue 27): a row per quantity and a column per surface, the table as wide
- * as the panel with fixed column shares, so at most three short columns of numbers sit side by
- * side and nothing wraps inside a number or overflows its cell, from a 320 px phone to a desktop.
+ * as the panel with fixed column shares, the unit once in the caption, so at most three short
+ * columns sit side by side: numbers never wrap, names wrap between words (German's long word at its
+ * soft hyphens), nothing overflows its cell, from the desktop's 220 px 3D panel to a phone.
  */
 export function IlluminanceTable({ floor, plane }: { floor: IlluminanceStats | null; plane: { height: number; stats: IlluminanceStats | null } | null }) {
   const { t, format } = useI18n();
@@ -29,7 +30,9 @@ export function IlluminanceTable({ floor, plane }: { floor: IlluminanceStats | n
     return key === 'u0' ? format.number(v, { minimumFractionDigits: 2, maximumFractionDigits: 2 }) : format.number(v, { minimumFractionDigits: digits(v), maximumFractionDigits: digits(v), useGrouping: false });
   };
   return (
-    <table className="viewer3d-stats" aria-label={t('view3d.illuminance')} data-columns={columns.length}>
+    <table className="viewer3d-stats" data-columns={columns.length}>
+      {/* The unit once, for the whole table: the numbers stay short enough for three columns in a 220 px panel. */}
+      <caption>{t('view3d.statsCaption')}</caption>
       <thead>
         <tr>
           {/* The corner cell heads the column of quantities: named for screen readers, not shown. */}

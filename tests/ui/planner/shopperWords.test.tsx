@@ -132,6 +132,7 @@ describe('illuminance statistics: a row per quantity, a column per surface', () 
     const one = renderToStaticMarkup(<IlluminanceTable floor={floor} plane={null} />);
     expect(one.match(/<tr>/g)).toHaveLength(5);
     expect(one).toContain('data-columns="1"');
+    expect(one).toContain('<caption>Illuminance in lux</caption>');
     expect(one).toMatch(/data-testid="stats-floor-avg">123</);
     expect(one).toMatch(/data-testid="stats-floor-min">56.8</);
     expect(one).toMatch(/data-testid="stats-floor-u0">0.46</);
@@ -139,6 +140,7 @@ describe('illuminance statistics: a row per quantity, a column per surface', () 
     expect(two).toContain('data-columns="2"');
     expect(two).toContain('Ebene 0,75 m');
     expect(two).toMatch(/data-testid="stats-plane-avg">–</);
-    expect(two).toContain('Gleichmäßigkeit U₀');
+    // The long German word breaks only at its soft hyphens (Gleich-mäßig-keit).
+    expect(two).toContain('Gleich\u00admäßig\u00adkeit U₀');
   });
 });

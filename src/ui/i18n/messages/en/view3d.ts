@@ -1,11 +1,11 @@
 // The 3D view's panel, statistics and errors: English ships in the 3D chunk (registerView3dEnglish.ts), the other languages in their own chunks.
 export default {
-  illuminance: 'Illuminance',
   planeAt: 'Plane {height}',
+  statsCaption: 'Illuminance in lux',
   statsQuantity: 'Quantity',
-  statsAverage: 'Average Ē (lx)',
-  statsMin: 'Lowest Emin (lx)',
-  statsMax: 'Highest Emax (lx)',
+  statsAverage: 'Average',
+  statsMin: 'Lowest',
+  statsMax: 'Highest',
   statsUniformity: 'Evenness U₀',
   legend: 'Illuminance legend (lux)',
   couldNotStart: 'The 3D view could not start: {problem}',

@@ -2,12 +2,12 @@ import type { AreaMessages } from '../../messageTypes';
 import type en from '../en/view3d';
 
 export default {
-  illuminance: 'Éclairement',
   planeAt: 'Plan {height}',
+  statsCaption: 'Éclairement en lux',
   statsQuantity: 'Grandeur',
-  statsAverage: 'Moyenne Ē (lx)',
-  statsMin: 'Minimum Emin (lx)',
-  statsMax: 'Maximum Emax (lx)',
+  statsAverage: 'Moyenne',
+  statsMin: 'Minimum',
+  statsMax: 'Maximum',
   statsUniformity: 'Uniformité U₀',
   legend: 'Légende de l’éclairement (lux)',
   couldNotStart: 'La vue 3D n’a pas pu démarrer : {problem}',

@@ -2,12 +2,12 @@ import type { AreaMessages } from '../../messageTypes';
 import type en from '../en/view3d';
 
 export default {
-  illuminance: 'Illuminamento',
   planeAt: 'Piano {height}',
+  statsCaption: 'Illuminamento in lux',
   statsQuantity: 'Grandezza',
-  statsAverage: 'Media Ē (lx)',
-  statsMin: 'Minimo Emin (lx)',
-  statsMax: 'Massimo Emax (lx)',
+  statsAverage: 'Media',
+  statsMin: 'Minimo',
+  statsMax: 'Massimo',
   statsUniformity: 'Uniformità U₀',
   legend: 'Legenda dell’illuminamento (lux)',
   couldNotStart: 'Non è stato possibile avviare la vista 3D: {problem}',
