@@ -209,6 +209,14 @@ for (const device of ['phone', 'desktop'] as const) {
       const page = await open(browser, device, locale, '/?demo&quality=fast');
       const tap = press(device);
       await openPanel(page, device);
+      // The bill of materials: one layout in the side panel at every width, no cell cut off or spilling.
+      const bom = page.getByTestId('bom');
+      const bomBox = (await bom.boundingBox())!;
+      const bomTable = (await bom.locator('table').boundingBox())!;
+      expect(bomTable.x + bomTable.width).toBeLessThanOrEqual(bomBox.x + bomBox.width + 0.5);
+      expect(await overflowing(bom.locator('table'))).toEqual([]);
+      await bom.scrollIntoViewIfNeeded();
+      await shot(page, 'bom');
       await expect(page.getByTestId('download-radiance')).toHaveCount(0);
       const sw = page.getByRole('switch', { name: text.expert });
       await sw.scrollIntoViewIfNeeded();
