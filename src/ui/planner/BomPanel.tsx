@@ -49,8 +49,11 @@ export function BomPanel({ bom, needs, locale, catalog }: BomPanelProps) {
                   <div>{catalog ? bomLineName(l, catalog, language, t, format) : l.name}</div>
                   <div className="preset-detail">{l.article}</div>
                 </td>
-                <td className="num">
-                  {format.number(l.count)} × {money(l.unitPrice)}
+                {/* May break after the ×, never inside a number or price (no-break space before it). */}
+                <td className="num qty-price">
+                  {format.number(l.count)}
+                  {'\u00a0× '}
+                  {money(l.unitPrice)}
                 </td>
                 <td className="num">{money(l.total)}</td>
               </tr>
