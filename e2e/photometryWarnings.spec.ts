@@ -18,7 +18,7 @@ const SIZES = { phone: { width: 375, height: 667 }, desktop: { width: 1440, heig
 
 async function singleWithOddSpot(page: Page) {
   await page.route('**/ies/bega_84693_narrow_spot.ies', (route) => route.fulfill({ status: 200, contentType: 'application/octet-stream', body: fixture }));
-  await page.goto('/');
+  await page.goto('/?expert=1'); // photometric data notes are an expert tool
   await page.getByRole('button', { name: 'Start planning' }).click();
   if (await page.getByRole('button', { name: 'Presets' }).isVisible()) await page.getByRole('button', { name: 'Presets' }).click();
   await page.getByTestId('preset-single').click();

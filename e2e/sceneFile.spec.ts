@@ -77,7 +77,7 @@ test('Open file… is reachable by keyboard and 44 px tall in the phone drawer',
 });
 
 test('Download for Radiance: a zip with the scene, one light per module, the distributions and render.sh', async ({ page }) => {
-  await page.goto('/');
+  await page.goto('/?expert=1'); // the Radiance download is an expert tool (docs/embedding.md, option `expert`)
   await page.getByRole('button', { name: 'Start planning' }).click();
   await page.getByTestId('preset-single').click();
   const before = await sceneFile(page);

@@ -65,7 +65,7 @@ test('lux mode shows a legend and floor statistics; context loss recovers withou
   await openCornerL(page);
   await page.getByTestId('mode-lux').click();
   await expect(page.getByTestId('view3d-legend')).toBeVisible();
-  await expect(page.getByTestId('stats-floor')).toContainText(/\d/);
+  await expect(page.getByTestId('stats-floor-avg')).toContainText(/\d/);
   await page.getByTestId('camera-top').click();
   await expect(page.getByTestId('view3d-canvas')).toHaveScreenshot('viewer-corner-l-lux-top.png', { maxDiffPixelRatio: 0.01, threshold: 0.15 });
 

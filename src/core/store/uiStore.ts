@@ -38,6 +38,13 @@ export interface UiState {
   shareLink: string | null;
   /** What the header shows as the maker (a shop's or manufacturer's name and logo), or null for nothing; default luxbox. */
   brand: Brand | null;
+  /**
+   * Whether the expert tools show (docs/embedding.md, option `expert`): DMX live control, the
+   * Radiance download and the photometric files' data notes. Shoppers see none of them by default.
+   */
+  expert: boolean;
+  /** Whether the side panel offers the Expert switch (the shop lets the user choose). */
+  expertSwitch: boolean;
 }
 
 /** The brand in the configurator's header (docs/embedding.md, option `brand`). */
@@ -69,6 +76,8 @@ export function createUiStore(initial: Partial<UiState> = {}): UiStore {
     status: null,
     shareLink: null,
     brand: DEFAULT_BRAND,
+    expert: false,
+    expertSwitch: false,
     ...initial,
   }));
   // One rule for every way a drawer closes (its toggle, a tap beside it, an action that closes it

@@ -1,4 +1,4 @@
-import { mountLuxbox } from '../embed/mountLuxbox';
+import { EXPERT_KEY, mountLuxbox } from '../embed/mountLuxbox';
 import { parseAdaptation } from '../../engines/view/adaptationSetting';
 import type { LuxboxInstance } from '../embed/types';
 import { isQualityLevel } from '../../engines/relight/qualityLevels';
@@ -36,10 +36,16 @@ const exposure = exposureParam === 'auto' ? 'auto' : exposureParam !== null && e
 // `?adapt=eye|none|camera:3000` starts the 3D view with that chromatic adaptation (docs/viewer.md, "Adaptation"); anything else is ignored.
 const adaptParam = params.get('adapt');
 const adapt = adaptParam !== null && parseAdaptation(adaptParam) ? adaptParam : undefined;
+// The expert tools (DMX live control, Radiance download, photometric data notes): off for shoppers, with
+// the Expert switch in the side panel, remembered; `?expert=1` / `?expert=0` sets the switch as a tap would.
+const expertParam = params.get('expert');
+if (expertParam === '1' || expertParam === '0') writeLocal(EXPERT_KEY, expertParam);
 window.luxbox = mountLuxbox(root, {
   storageKey: 'luxbox.autosave.v1',
   shareLinks: true,
   rememberQuality: true,
+  expert: 'switch',
+  rememberExpert: true,
   demo,
   locale,
   languageSwitch: true,

@@ -57,6 +57,20 @@ function checkBrand(brand: unknown): Brand | null {
   return { name: b.name, ...(b.logo !== undefined ? { logo: b.logo as string } : {}) };
 }
 
+/** Where the user's Expert switch is kept (option rememberExpert): '1' on, '0' off. */
+export const EXPERT_KEY = 'luxbox.expert';
+
+/**
+ * options.expert checked: true shows the expert tools (no switch), false hides them (no switch;
+ * the default), 'switch' offers the user the switch, off at first unless rememberExpert finds it on.
+ */
+export function checkExpert(expert: unknown, remember: boolean): { expert: boolean; expertSwitch: boolean } {
+  if (expert === undefined || expert === false) return { expert: false, expertSwitch: false };
+  if (expert === true) return { expert: true, expertSwitch: false };
+  if (expert === 'switch') return { expert: remember && readLocal(EXPERT_KEY) === '1', expertSwitch: true };
+  throw new EmbedOptionsError(`options.expert: ${JSON.stringify(expert)} is not true, false or 'switch'`);
+}
+
 /** Class on the element luxbox renders into: the scope of its stylesheet and its size container. */
 const ROOT_CLASS = 'luxbox';
 
@@ -82,6 +96,7 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
     throw new EmbedOptionsError(`options.landmarks: ${JSON.stringify(options.landmarks)} is neither 'page' nor 'region'`);
   }
   const brand = checkBrand(options.brand);
+  const expert = checkExpert(options.expert, options.rememberExpert === true);
   if (options.apiLanguage !== undefined && options.apiLanguage !== 'ui' && options.apiLanguage !== 'en') {
     throw new EmbedOptionsError(`options.apiLanguage: ${JSON.stringify(options.apiLanguage)} is neither 'ui' nor 'en'`);
   }
@@ -105,7 +120,13 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
     if (e instanceof InputError) throw new EmbedOptionsError(`options.room: ${e.message}`);
     throw e;
   }
-  const ui = createUiStore({ phase: start.phase, banner: start.banner, brand });
+  const ui = createUiStore({ phase: start.phase, banner: start.banner, brand, ...expert });
+  // The user's Expert switch: remembered where the host asked for it, and told to the host.
+  const unsubscribeExpert = ui.subscribe((s, prev) => {
+    if (s.expert === prev.expert) return;
+    if (options.rememberExpert) writeLocal(EXPERT_KEY, s.expert ? '1' : '0');
+    options.onExpertChange?.(s.expert);
+  });
   const apiBom = (): BillOfMaterials => {
     const bom = billOfMaterials(store.getState().config, catalog);
     const { t, language, format, ready } = i18n.getSnapshot();
@@ -285,6 +306,7 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
       if (destroyed) return;
       destroyed = true;
       unsubscribeStore();
+      unsubscribeExpert();
       colourData.stop();
       listeners.clear();
       root.unmount();

@@ -81,6 +81,16 @@ export interface LuxboxOptions {
    * keeps the sentence and the way to all presets without suggestions. Default: the best three.
    */
   firstRun?: false | { presets?: readonly string[] | false };
+  /**
+   * The expert tools (docs/embedding.md, "Expert tools": DMX live control, the Radiance download,
+   * the photometric files' data notes): `false` (default) hides them and offers no switch, `true`
+   * shows them without a switch, `'switch'` puts an Expert switch in the side panel, off at first.
+   */
+  expert?: boolean | 'switch';
+  /** With `expert: 'switch'`: keep the user's choice in localStorage (`luxbox.expert`); default off. The standalone app turns it on. */
+  rememberExpert?: boolean;
+  /** Called after the user switched the expert tools on or off. */
+  onExpertChange?: (on: boolean) => void;
 }
 
 export interface LuxboxActionInfo {

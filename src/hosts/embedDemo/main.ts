@@ -144,6 +144,9 @@ function open(): void {
     // configurator's language unless `?apiLanguage=en` asks for the core's English (docs/embedding.md).
     brand: query.get('brand') === 'none' ? null : { name: 'Lichtwerk' },
     apiLanguage: query.get('apiLanguage') === 'en' ? 'en' : 'ui',
+    // The shop decides on the expert tools (DMX live control, Radiance download, photometric data notes):
+    // none by default; `?expert=on` shows them, `?expert=switch` offers the user the switch.
+    ...(query.get('expert') === 'on' ? { expert: true } : query.get('expert') === 'switch' ? { expert: 'switch' as const } : {}),
     onChange: () => {
       // Everything the host shows is re-read through the API after each change.
       changes++;

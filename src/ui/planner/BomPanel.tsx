@@ -16,7 +16,11 @@ export interface BomPanelProps {
   needs?: InstallationNeeds;
 }
 
-/** Live bill of materials with prices (the configurator paper's planned live price): article, count, unit price, total. */
+/**
+ * Live bill of materials with prices (the configurator paper's planned live price): article, count ×
+ * unit price, total. Three columns, so the table fits the side panel at every width (issue 27): in the
+ * 340 px phone drawer four columns pushed the totals out of view in German.
+ */
 export function BomPanel({ bom, needs, locale, catalog }: BomPanelProps) {
   const { t, format, language } = useI18n();
   const money = (x: number) => (locale ? formatMoney(x, bom.currency, locale) : format.money(x, bom.currency));
@@ -31,10 +35,7 @@ export function BomPanel({ bom, needs, locale, catalog }: BomPanelProps) {
             <tr>
               <th scope="col">{t('planner.bomArticle')}</th>
               <th scope="col" className="num">
-                {t('planner.bomQuantity')}
-              </th>
-              <th scope="col" className="num">
-                {t('planner.bomUnitPrice')}
+                {t('planner.bomQuantityPrice')}
               </th>
               <th scope="col" className="num">
                 {t('planner.bomLineTotal')}
@@ -48,15 +49,19 @@ export function BomPanel({ bom, needs, locale, catalog }: BomPanelProps) {
                   <div>{catalog ? bomLineName(l, catalog, language, t, format) : l.name}</div>
                   <div className="preset-detail">{l.article}</div>
                 </td>
-                <td className="num">{format.number(l.count)}</td>
-                <td className="num">{money(l.unitPrice)}</td>
+                {/* May break after the ×, never inside a number or price (no-break space before it). */}
+                <td className="num qty-price">
+                  {format.number(l.count)}
+                  {'\u00a0× '}
+                  {money(l.unitPrice)}
+                </td>
                 <td className="num">{money(l.total)}</td>
               </tr>
             ))}
           </tbody>
           <tfoot>
             <tr>
-              <td colSpan={3}>{t('planner.bomTotal', { currency: bom.currency })}</td>
+              <td colSpan={2}>{t('planner.bomTotal', { currency: bom.currency })}</td>
               <td className="num" data-testid="bom-total">
                 {money(bom.total)}
               </td>

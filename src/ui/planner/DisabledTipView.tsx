@@ -2,6 +2,7 @@ import { useEffect, useLayoutEffect, useRef, useState } from 'react';
 import { useStore } from 'zustand';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import { remedyOffer } from './remedyOffer';
+import { reasonBesideRemedy } from './remedyReason';
 import { REFUSED_EVENT, type RefusedDetail, type TipState } from './disabledTip';
 import { useI18n } from '../i18n/useI18n';
 
@@ -55,7 +56,7 @@ export function DisabledTip({ tip, onClose, store, explain }: { tip: TipState; o
   }, [tip, remedy, onClose]);
   return (
     <div ref={ref} className="disabled-tip" role="status" data-testid="disabled-tip" data-plan-control style={pos ? { left: pos.left, top: pos.top } : { left: 0, top: 0, visibility: 'hidden' }}>
-      <p className="disabled-tip-reason">{tip.reason}</p>
+      <p className="disabled-tip-reason">{remedy ? reasonBesideRemedy(tip.reason) : tip.reason}</p>
       <div className="disabled-tip-actions">
         {remedy && (
           <button

@@ -1,15 +1,18 @@
-import type { ChangeEvent } from 'react';
+import { lazy, Suspense, type ChangeEvent } from 'react';
+import { useStore } from 'zustand';
 import { showStatus, type UiStore } from '../../core/store/uiStore';
 import { InputError } from '../../core/inputError';
 import { serializeConfiguration } from '../../core/model/files/sceneFile';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import type { Photometry } from '../../core/photometry/types';
-import { downloadRadiance } from './downloadRadiance';
 import { downloadText } from './downloadText';
 import { readSceneFile } from './readSceneFile';
 import { sceneFileName } from './sceneFileName';
 import { useI18n } from '../i18n/useI18n';
 import { noticeText } from '../i18n/noticeText';
+
+// The Radiance download is an expert tool: its button and texts load only when the expert tools are on.
+const RadianceButton = lazy(() => import('./RadianceButton'));
 
 export interface FilePanelProps {
   store: ConfiguratorStore;
@@ -27,22 +30,13 @@ export interface FilePanelProps {
  */
 export function FilePanel({ store, ui, loadPhotometry }: FilePanelProps) {
   const { t, language } = useI18n();
+  // The Radiance export is an expert tool (docs/embedding.md, option `expert`).
+  const expert = useStore(ui, (s) => s.expert);
   const save = () => {
     const { config, catalog } = store.getState();
     const name = sceneFileName(config);
     downloadText(name, `${serializeConfiguration(config, catalog)}\n`);
     showStatus(ui, t('files.saved', { name }));
-  };
-
-  const radiance = async () => {
-    const { config, catalog } = store.getState();
-    try {
-      const name = await downloadRadiance(config, catalog, loadPhotometry);
-      showStatus(ui, t('files.savedRadiance', { name }));
-    } catch (err) {
-      // The configuration is untouched; the message names the file that could not be read.
-      ui.setState({ banner: { text: t('files.radianceFailed', { problem: err instanceof Error ? err.message : String(err) }), canRestore: false } });
-    }
   };
 
   const open = async (e: ChangeEvent<HTMLInputElement>) => {
@@ -81,9 +75,11 @@ export function FilePanel({ store, ui, loadPhotometry }: FilePanelProps) {
         />
         {t('files.openFile')}
       </label>
-      <button type="button" className="btn btn-export" onClick={() => void radiance()} data-testid="download-radiance" title={t('files.radianceTitle')}>
-        {t('files.downloadRadiance')}
-      </button>
+      {expert && (
+        <Suspense fallback={null}>
+          <RadianceButton store={store} ui={ui} loadPhotometry={loadPhotometry} />
+        </Suspense>
+      )}
     </div>
   );
 }

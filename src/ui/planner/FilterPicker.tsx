@@ -33,7 +33,7 @@ const swatchStyle = (colour: FilteredColour, size: string) => ({
 
 /**
  * The colour filter (gel) of a module whose type has a holder (docs/colour-filters.md): what the
- * light is now (swatch, CIE x,y, transmission, CCT and Duv when near white), a search by name or
+ * light is now (swatch, name, transmission; CIE x,y and CCT/Duv behind Expert details), a search by name or
  * number, and the catalog's filters grouped by kind, each with the swatch of the light it gives
  * this module. Choosing one is setModuleFilter: a relight in 3D, never a rebake.
  */
@@ -70,11 +70,14 @@ function LoadedFilterPicker({ module, catalog, gate }: FilterPickerProps) {
         <span>
           <strong>{current ? filterLabel(current.filter) : t('filters.unfiltered', { cct: String(module.cct) })}</strong>
           <br />
-          {t('filters.chromaticity', { x: xy(colour.x), y: xy(colour.y) })}
-          <br />
           {t('filters.transmission', { percent: percent(colour.transmission) })}
-          <br />
-          {colour.white ? t('filters.white', { cct: format.number(Math.round(colour.white.cct)), duv: format.number(colour.white.duv, { minimumFractionDigits: 4, maximumFractionDigits: 4 }) }) : t('filters.notWhite')}
+          {/* The colorimetry (CIE 1931 x, y; CCT and Duv) is for experts: one tap away, closed by default. */}
+          <details className="expert-details" data-testid="filter-expert-details">
+            <summary>{t('filters.expertDetails')}</summary>
+            {t('filters.chromaticity', { x: xy(colour.x), y: xy(colour.y) })}
+            <br />
+            {colour.white ? t('filters.white', { cct: format.number(Math.round(colour.white.cct)), duv: format.number(colour.white.duv, { minimumFractionDigits: 4, maximumFractionDigits: 4 }) }) : t('filters.notWhite')}
+          </details>
         </span>
       </div>
       <input type="search" value={query} onChange={(e) => setQuery(e.target.value)} placeholder={t('filters.searchPlaceholder')} aria-label={t('filters.search')} data-testid="filter-search" style={{ width: '100%', margin: '0.4em 0' }} />
@@ -92,7 +95,7 @@ function LoadedFilterPicker({ module, catalog, gate }: FilterPickerProps) {
                 gate={gate}
                 action="setModuleFilter"
                 params={{ moduleId, filter: filter.id }}
-                label={t('filters.choose', { name: filterLabel(filter), x: xy(c.x), y: xy(c.y), percent: percent(c.transmission) })}
+                label={t('filters.choose', { name: filterLabel(filter), percent: percent(c.transmission) })}
                 current={module.filter === filter.id}
                 testId={`filter-${filter.id}`}
               >

@@ -4,7 +4,7 @@ import type { Configuration, LightSystem } from '../../core/model/configuration/
 import { isFreeRail } from '../../core/model/rails/freePositions';
 import { modulePlacements, railPlacements, type PlanVec } from '../../core/model/rails/geometry';
 import { ActionButton } from './ActionButton';
-import { DistributionButtons } from './DistributionButtons';
+import { LazyDistributionButtons } from './LazyDistributionButtons';
 import { GatedButton } from './GatedButton';
 import { RailLengthField } from './RailLengthField';
 import { CommitField } from '../shared/CommitField';
@@ -202,7 +202,8 @@ function ModuleLevelControls({ system, catalog, view, viewport, selection, gate,
       if (visible(distPos, viewport)) {
         out.push(
           <Positioned key={`dist-${rail.id}`} at={distPos} className="chip-row" testId={`distribution-${rail.id}`}>
-            <DistributionButtons railId={rail.id} current={isFreeRail(rail) ? null : rail.distribution} gate={gate} compact />
+            {/* The pictures read along the rail: its start on the right where the rail runs right to left on screen. */}
+            <LazyDistributionButtons railId={rail.id} current={isFreeRail(rail) ? null : rail.distribution} gate={gate} compact flipped={worldToScreen(view, { x: r.end[0], z: r.end[1] }).sx < worldToScreen(view, { x: r.start[0], z: r.start[1] }).sx - 1} />
           </Positioned>,
         );
       }

@@ -23,6 +23,8 @@ import { LazyView3D } from '../viewer/LazyView3D';
 
 // The share link's copy and share buttons load once a link is made (not with the first screen).
 const ShareLinkField = lazy(() => import('./ShareLinkField'));
+// The Expert switch loads only where the shop offers it (docs/embedding.md, option `expert`).
+const ExpertSwitch = lazy(() => import('./ExpertSwitch'));
 import { lowMemoryDevice } from '../../engines/view/lowMemoryDevice';
 import { createActionGate } from './actionGate';
 import { detailLevel } from './detailLevel';
@@ -81,6 +83,8 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
   const panelOpen = useStore(ui, (s) => s.panelOpen);
   const status = useStore(ui, (s) => s.status);
   const shareLink = useStore(ui, (s) => s.shareLink);
+  const expert = useStore(ui, (s) => s.expert);
+  const expertSwitch = useStore(ui, (s) => s.expertSwitch);
 
   const wrapRef = useRef<HTMLDivElement>(null);
   const [viewport, setViewport] = useState<Viewport>(DEFAULT_VIEWPORT);
@@ -157,6 +161,19 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
     return () => ro.disconnect();
   }, [ui]);
   const closeDrawer = () => ui.setState({ panelOpen: false });
+  // A press beside the open drawer closes it and still reaches what it was on (the plan, a bottom-bar
+  // button): the veil only dims what is beside the drawer and takes no taps. The header's
+  // toggle closes it by itself, and a tip at a refused control in the drawer belongs to the drawer.
+  useEffect(() => {
+    const body = bodyRef.current;
+    if (!panelOpen || !body) return;
+    const press = (e: PointerEvent) => {
+      const target = e.target as Element;
+      if (ui.getState().drawer && !panelRef.current?.contains(target) && !target.closest('.panel-toggle, .disabled-tip')) ui.setState({ panelOpen: false });
+    };
+    body.addEventListener('pointerdown', press, true);
+    return () => body.removeEventListener('pointerdown', press, true);
+  }, [panelOpen, ui]);
 
   usePlanGestures(wrapRef, controller);
   usePlannerKeys(controller, mode === '2d');
@@ -267,13 +284,14 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
             </div>
           ) : null}
           {/* One place in the tree, so the view survives the 2D plan: kept hidden once opened (keep3d), shown again at the next toggle. */}
-          {(mode === '3d' || keep3d) && <LazyView3D store={store} loadPhotometry={footprints.loadPhotometry} onBack={() => ui.setState({ mode: '2d' })} visible={mode === '3d'} />}
+          {(mode === '3d' || keep3d) && <LazyView3D store={store} loadPhotometry={footprints.loadPhotometry} onBack={() => ui.setState({ mode: '2d' })} visible={mode === '3d'} expert={expert} />}
           <BottomBar controller={controller} mode={mode} />
         </WorkArea>
-        {/* A tap beside the open drawer closes it (and only that: the plan under it is not touched). Keyboard users have the header's toggle. */}
-        {panelOpen && <div className="drawer-scrim" aria-hidden data-testid="drawer-scrim" onClick={closeDrawer} />}
+        {/* The veil beside the open drawer: a press there closes the drawer and goes on to what is under it (the effect above). Keyboard users have the header's toggle. */}
+        {panelOpen && <div className="drawer-scrim" aria-hidden data-testid="drawer-scrim" />}
         <aside ref={panelRef} className={`side-panel${panelOpen ? ' open' : ''}`} aria-label={t('planner.sidePanel')}>
-          {optionsOpen && <OptionsPanel config={config} catalog={catalog} path={path} gate={gate} onClose={() => ui.setState({ optionsOpen: false })} footprints={footprints} aimMode={aimAtMode(store)} />}
+          {/* A module's photometric data notes are an expert tool: without the loader the options show none. */}
+          {optionsOpen && <OptionsPanel config={config} catalog={catalog} path={path} gate={gate} onClose={() => ui.setState({ optionsOpen: false })} footprints={expert ? footprints : undefined} aimMode={aimAtMode(store)} />}
           <PresetPanel
             catalog={catalog}
             gate={gate}
@@ -302,6 +320,11 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
               </button>
             </div>
             <FilePanel store={store} ui={ui} loadPhotometry={footprints.loadPhotometry} />
+            {expertSwitch && (
+              <Suspense fallback={null}>
+                <ExpertSwitch ui={ui} />
+              </Suspense>
+            )}
             {shareLink && (
               <Suspense fallback={null}>
                 <ShareLinkField link={shareLink} notice={shareNotice} />

@@ -11,6 +11,9 @@ import { OptionsSection } from './OptionsSection';
 import { useI18n } from '../i18n/useI18n';
 import type { MessageKey } from '../i18n/messageTypes';
 import { feedAtText } from '../i18n/feedText';
+import { localName } from '../i18n/localName';
+import { railPlacements } from '../../core/model/rails/geometry';
+import { TurnArrow } from './TurnArrow';
 
 /** Rotation steps offered for a selected system, in degrees (positive: counterclockwise, "left"). */
 const ROTATIONS = [-90, -15, 15, 90] as const;
@@ -19,13 +22,16 @@ const MOUNTING_LABELS: Record<(typeof MOUNTINGS)[number], MessageKey> = { suspen
 
 /** A selected system's settings: suspension or surface mounting, power feeds, rotation, extending the chain with a rail, connector angles and fixing points, delete. */
 export function SystemOptions({ system, catalog, gate, onClose }: { system: LightSystem; catalog: Catalog; gate: ActionGate; onClose: () => void }) {
-  const { t } = useI18n();
+  const { t, language } = useI18n();
   const systemId = system.id;
-  // A flexible connector is offered at its default turn (its `angle`) either way; its angle is then adjusted below.
-  const turns = catalog.connectors.flatMap((c) => (c.angle === 0 ? [{ c, turn: 0, label: t('options.addRailStraight', { name: c.name }) }] : [
-    { c, turn: c.angle, label: t(c.flex ? 'options.addRailLeftFlex' : 'options.addRailLeft', { angle: c.angle, name: c.name }) },
-    { c, turn: -c.angle, label: t(c.flex ? 'options.addRailRightFlex' : 'options.addRailRight', { angle: c.angle, name: c.name }) },
-  ]));
+  // Each connector either way it turns (a flexible one at its default angle, adjusted below), named by
+  // direction — straight on, left, right — with the connector as the second line, in that order.
+  const turns = catalog.connectors.flatMap((c) => (c.angle === 0 ? [{ c, turn: 0 }] : [{ c, turn: c.angle }, { c, turn: -c.angle }]));
+  const rank = (turn: number) => (turn === 0 ? 0 : turn > 0 ? 1 : 2);
+  turns.sort((a, b) => rank(a.turn) - rank(b.turn));
+  const direction = (turn: number, angle: number) => (turn === 0 ? t('options.extendStraight') : t(turn > 0 ? 'options.extendLeft' : 'options.extendRight', { angle }));
+  // The chain grows at the end of its last rail (addRail): the arrows start along that rail's heading on the plan.
+  const endHeading = railPlacements(system, catalog).at(-1)?.heading ?? system.rotation;
   return (
     <OptionsSection title={t('options.systemTitle')} onClose={onClose}>
       <div className="field">
@@ -52,12 +58,20 @@ export function SystemOptions({ system, catalog, gate, onClose }: { system: Ligh
         ))}
       </OptionChips>
       <OptionChips title={t('options.extendChain')}>
-        {turns.map(({ c, turn, label }) => (
-          <GatedButton key={`${c.id}${turn}`} gate={gate} action="addRail" params={{ systemId, connector: c.id, turn }} label={label}>
-            {turn === 0 ? '→' : turn > 0 ? '↰' : '↱'} {t('options.railChip')}
-            {c.flex ? ` ${c.angle}°` : ''}
-          </GatedButton>
-        ))}
+        {turns.map(({ c, turn }) => {
+          const name = localName(c, language);
+          return (
+            <GatedButton key={`${c.id}${turn}`} gate={gate} action="addRail" params={{ systemId, connector: c.id, turn }} label={t('options.extendLabel', { direction: direction(turn, Math.abs(turn)), name })} testId={`extend-${c.id}-${turn > 0 ? 'left' : turn < 0 ? 'right' : 'straight'}`}>
+              <span className="extend-chip">
+                <TurnArrow heading={endHeading} turn={turn} />
+                <span aria-hidden="true">
+                  {direction(turn, Math.abs(turn))}
+                  <small>{name}</small>
+                </span>
+              </span>
+            </GatedButton>
+          );
+        })}
       </OptionChips>
       <ChainShapeOptions system={system} catalog={catalog} gate={gate} />
       <GatedButton gate={gate} action="deleteSystem" params={{ systemId }} label={t('options.deleteSystem')} />

@@ -19,6 +19,8 @@ export interface LazyView3DProps {
    * ready"): nothing of it shows, no frames are drawn, and the next 2D → 3D toggle costs one frame.
    */
   visible?: boolean;
+  /** Show the expert tools (DMX live control, the photometric files' data notes; docs/embedding.md, option `expert`). */
+  expert?: boolean;
 }
 
 function Message({ text, onBack, testId }: { text: string; onBack: () => void; testId: string }) {
@@ -53,7 +55,7 @@ class ViewerBoundary extends Component<{ onBack: () => void; visible: boolean; c
 }
 
 /** What the 2D/3D toggle shows in 3D: a support check, then the lazily loaded viewer. */
-export function LazyView3D({ store, loadPhotometry, onBack, visible = true }: LazyView3DProps) {
+export function LazyView3D({ store, loadPhotometry, onBack, visible = true, expert = false }: LazyView3DProps) {
   const { t } = useI18n();
   const issue = useMemo(() => webglSupportIssue(), []);
   if (issue) {
@@ -63,7 +65,7 @@ export function LazyView3D({ store, loadPhotometry, onBack, visible = true }: La
   return (
     <ViewerBoundary onBack={onBack} visible={visible}>
       <Suspense fallback={visible ? <Message text={t('viewer.loading')} onBack={onBack} testId="view3d-loading" /> : null}>
-        <View3D store={store} loadPhotometry={loadPhotometry} onBack={onBack} visible={visible} />
+        <View3D store={store} loadPhotometry={loadPhotometry} onBack={onBack} visible={visible} expert={expert} />
       </Suspense>
     </ViewerBoundary>
   );

@@ -45,6 +45,8 @@ export interface View3DProps {
   onBack: () => void;
   /** False while the planner keeps the view hidden behind the 2D plan: no frames, status closed (LazyView3D). */
   visible?: boolean;
+  /** Show the expert tools: DMX live control and the photometric files' data notes (docs/embedding.md, option `expert`). */
+  expert?: boolean;
 }
 
 const PRESET_LABEL: Record<CameraPresetName, MessageKey> = { eye: 'view3d.cameraEye', top: 'view3d.cameraTop', corner: 'view3d.cameraCorner' };
@@ -83,7 +85,7 @@ function selectionLabel(t: Translate, language: Language, catalog: Catalog, conf
   return null;
 }
 
-export default function View3D({ store, loadPhotometry, onBack, visible = true }: View3DProps) {
+export default function View3D({ store, loadPhotometry, onBack, visible = true, expert = false }: View3DProps) {
   const { t, format, language } = useI18n();
   const config = useStore(store, (s) => s.config);
   const catalog = useStore(store, (s) => s.catalog);
@@ -376,7 +378,7 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
           {/* In the locale's format ("0,75" in German), committed on Enter or blur; a height outside 0.1 m … ceiling − 0.1 m goes to the nearest one allowed. */}
           <CommitField label={t('view3d.workPlaneHeight')} value={plane.height} onCommit={(h) => (setPlane({ ...plane, height: Math.min(maxPlane, Math.max(0.1, h)) }), null)} onRefused={() => undefined} testId="plane-height" /> m
         </label>
-        <PhotometryWarnings notes={photometryNotes} testId="view3d-photometry-warnings" collapsed />
+        {expert && <PhotometryWarnings notes={photometryNotes} testId="view3d-photometry-warnings" collapsed />}
         {modules.length > 0 && (
           <details className="viewer3d-modules">
             <summary>{t('view3d.dimmingModules', { count: modules.length })}</summary>
@@ -393,14 +395,17 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true }
             ))}
           </details>
         )}
-        <LiveControl
-          store={store}
-          onLevels={(l) => ctrl.current?.setLiveLevels(l)}
-          onStatus={(live) => {
-            setLiveState(live?.state ?? null);
-            publish({ live });
-          }}
-        />
+        {/* Unmounted when the expert tools go off: live control stops with it (its cleanup closes the bridge). */}
+        {expert && (
+          <LiveControl
+            store={store}
+            onLevels={(l) => ctrl.current?.setLiveLevels(l)}
+            onStatus={(live) => {
+              setLiveState(live?.state ?? null);
+              publish({ live });
+            }}
+          />
+        )}
         <button type="button" className="btn" onClick={onBack} data-testid="back-2d">
           {t('viewer.backTo2d')}
         </button>

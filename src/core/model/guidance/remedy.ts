@@ -48,7 +48,7 @@ export interface Remedy {
 const REMEDIABLE = new Set<ActionName>(['addModule', 'setModuleType', 'setModuleBeam', 'addRail', 'addBranch']);
 
 /** Codes of refusals that say a module does not fit on its rail (addModule's explain). */
-const FIT_REFUSALS = new Set(['noRoomForModule', 'noFreeGap']);
+const FIT_REFUSALS = new Set(['noRoomForModule', 'noFreeGap', 'typeDoesNotFit']);
 
 /** The system an action's parameters point at (railId, moduleId, feedId or systemId), if any. */
 function systemOf(state: Configuration, params: Record<string, unknown>): LightSystem | undefined {
@@ -135,8 +135,8 @@ function powerPart(c: Candidate): RemedyPart {
 /**
  * The remedy for a refused action: null when the action is enabled, is not one that adds light
  * (REMEDIABLE), concerns no system, or when nothing below makes it enabled. Power refusals: the cheapest (by the bill of materials) of a
- * larger driver on one feed or a new feed at a free allowed position. An addModule that does not
- * fit: the first rail change after which it fits — another distribution (free), else the shortest
+ * larger driver on one feed or a new feed at a free allowed position. An addModule or a longer
+ * module type (setModuleType) that does not fit: the first rail change after which it fits — another distribution (free), else the shortest
  * longer rail on the catalog's length steps, alone or with another distribution — followed, when
  * the module then overloads a driver, by the cheapest power change.
  */
@@ -161,9 +161,9 @@ export function remedyFor(state: Configuration, name: ActionName, params: Record
   }
 
   // A module that does not fit: rail changes in order of preference.
-  const railId = typeof params.railId === 'string' ? params.railId : undefined;
-  const railIndex = system.rails.findIndex((r) => r.id === railId);
-  if (name !== 'addModule' || railIndex < 0) return null;
+  // addModule names its rail; setModuleType (a longer type) the module, whose rail it is.
+  const railIndex = system.rails.findIndex((r) => r.id === params.railId || r.modules.some((m) => m.id === params.moduleId));
+  if (railIndex < 0) return null;
   const rail = system.rails[railIndex];
   const { step, maxLength } = catalog.rail;
   const fits: { steps: RemedyStep[]; parts: RemedyPart[] }[] = [];

@@ -3,15 +3,11 @@ import type en from '../en/files';
 
 export default {
   saved: '{name} gespeichert',
-  savedRadiance: '{name} gespeichert (entpacken, dann sh render.sh)',
-  radianceFailed: 'Der Radiance-Export ist fehlgeschlagen: {problem}',
   cannotOpen: '„{name}“ kann nicht geöffnet werden: {problem}',
   opened: '{name} geöffnet',
   couldNotOpen: '„{name}“ konnte nicht geöffnet werden ({problem})',
   saveFile: 'Datei speichern',
   openFile: 'Datei öffnen…',
-  radianceTitle: 'Ein Ordner für den Radiance-Renderer: Szene, Leuchten, Ansichten, render.sh',
-  downloadRadiance: 'Für Radiance herunterladen',
   unitMetres: 'Meter (m)',
   unitCentimetres: 'Zentimeter (cm)',
   unitMillimetres: 'Millimeter (mm)',

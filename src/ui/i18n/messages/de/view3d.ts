@@ -2,9 +2,13 @@ import type { AreaMessages } from '../../messageTypes';
 import type en from '../en/view3d';
 
 export default {
-  illuminance: 'Beleuchtungsstärke',
-  statsSurface: 'Messfläche',
   planeAt: 'Ebene {height}',
+  statsCaption: 'Beleuchtungsstärke in Lux',
+  statsQuantity: 'Größe',
+  statsAverage: 'Mittelwert',
+  statsMin: 'Minimum',
+  statsMax: 'Maximum',
+  statsUniformity: 'Gleich\u00admäßig\u00adkeit U₀',
   legend: 'Legende der Beleuchtungsstärke (Lux)',
   couldNotStart: 'Die 3D-Ansicht konnte nicht starten: {problem}',
   furnitureFailed: 'Die Möbel konnten nicht für die Lichtberechnung vorbereitet werden: {problem}',

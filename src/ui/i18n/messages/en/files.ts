@@ -1,15 +1,11 @@
 // Saving, opening, exporting and importing files.
 export default {
   saved: 'Saved {name}',
-  savedRadiance: 'Saved {name} (unpack, then sh render.sh)',
-  radianceFailed: 'The Radiance export failed: {problem}',
   cannotOpen: '“{name}” cannot be opened: {problem}',
   opened: 'Opened {name}',
   couldNotOpen: '“{name}” could not be opened ({problem})',
   saveFile: 'Save file',
   openFile: 'Open file…',
-  radianceTitle: 'A folder for the Radiance renderer: scene, luminaires, views, render.sh',
-  downloadRadiance: 'Download for Radiance',
   unitMetres: 'metres (m)',
   unitCentimetres: 'centimetres (cm)',
   unitMillimetres: 'millimetres (mm)',

@@ -1,8 +1,12 @@
 // The 3D view's panel, statistics and errors: English ships in the 3D chunk (registerView3dEnglish.ts), the other languages in their own chunks.
 export default {
-  illuminance: 'Illuminance',
-  statsSurface: 'Measured surface',
   planeAt: 'Plane {height}',
+  statsCaption: 'Illuminance in lux',
+  statsQuantity: 'Quantity',
+  statsAverage: 'Average',
+  statsMin: 'Lowest',
+  statsMax: 'Highest',
+  statsUniformity: 'Evenness U₀',
   legend: 'Illuminance legend (lux)',
   couldNotStart: 'The 3D view could not start: {problem}',
   furnitureFailed: 'Could not prepare the furniture for the light calculation: {problem}',

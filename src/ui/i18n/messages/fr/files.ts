@@ -3,15 +3,11 @@ import type en from '../en/files';
 
 export default {
   saved: '{name} enregistré',
-  savedRadiance: '{name} enregistré (décompresser, puis sh render.sh)',
-  radianceFailed: 'L’export Radiance a échoué : {problem}',
   cannotOpen: '« {name} » ne peut pas être ouvert : {problem}',
   opened: '{name} ouvert',
   couldNotOpen: '« {name} » n’a pas pu être ouvert ({problem})',
   saveFile: 'Enregistrer le fichier',
   openFile: 'Ouvrir un fichier…',
-  radianceTitle: 'Un dossier pour le moteur de rendu Radiance : scène, luminaires, vues, render.sh',
-  downloadRadiance: 'Télécharger pour Radiance',
   unitMetres: 'mètres (m)',
   unitCentimetres: 'centimètres (cm)',
   unitMillimetres: 'millimètres (mm)',

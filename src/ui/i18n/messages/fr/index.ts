@@ -21,6 +21,7 @@ import planner from './planner';
 import refusals from './refusals';
 import rooms from './rooms';
 import scenes from './scenes';
+import expert from './expert';
 import sharing from './sharing';
 import shared from './shared';
 import view3d from './view3d';
@@ -49,6 +50,7 @@ export default {
   refusals,
   rooms,
   scenes,
+  expert,
   sharing,
   shared,
   view3d,

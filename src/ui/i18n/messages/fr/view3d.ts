@@ -2,9 +2,13 @@ import type { AreaMessages } from '../../messageTypes';
 import type en from '../en/view3d';
 
 export default {
-  illuminance: 'Éclairement',
-  statsSurface: 'Surface mesurée',
   planeAt: 'Plan {height}',
+  statsCaption: 'Éclairement en lux',
+  statsQuantity: 'Grandeur',
+  statsAverage: 'Moyenne',
+  statsMin: 'Minimum',
+  statsMax: 'Maximum',
+  statsUniformity: 'Uniformité U₀',
   legend: 'Légende de l’éclairement (lux)',
   couldNotStart: 'La vue 3D n’a pas pu démarrer : {problem}',
   furnitureFailed: 'Le mobilier n’a pas pu être préparé pour le calcul de la lumière : {problem}',

@@ -3,15 +3,11 @@ import type en from '../en/files';
 
 export default {
   saved: '{name} salvato',
-  savedRadiance: '{name} salvato (estrai, poi sh render.sh)',
-  radianceFailed: 'L’esportazione per Radiance non è riuscita: {problem}',
   cannotOpen: '«{name}» non può essere aperto: {problem}',
   opened: '{name} aperto',
   couldNotOpen: 'Non è stato possibile aprire «{name}» ({problem})',
   saveFile: 'Salva file',
   openFile: 'Apri file…',
-  radianceTitle: 'Una cartella per il renderer Radiance: scena, apparecchi, viste, render.sh',
-  downloadRadiance: 'Scarica per Radiance',
   unitMetres: 'metri (m)',
   unitCentimetres: 'centimetri (cm)',
   unitMillimetres: 'millimetri (mm)',

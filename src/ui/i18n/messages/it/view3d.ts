@@ -2,9 +2,13 @@ import type { AreaMessages } from '../../messageTypes';
 import type en from '../en/view3d';
 
 export default {
-  illuminance: 'Illuminamento',
-  statsSurface: 'Superficie misurata',
   planeAt: 'Piano {height}',
+  statsCaption: 'Illuminamento in lux',
+  statsQuantity: 'Grandezza',
+  statsAverage: 'Media',
+  statsMin: 'Minimo',
+  statsMax: 'Massimo',
+  statsUniformity: 'Uniformità U₀',
   legend: 'Legenda dell’illuminamento (lux)',
   couldNotStart: 'Non è stato possibile avviare la vista 3D: {problem}',
   furnitureFailed: 'Non è stato possibile preparare gli arredi per il calcolo della luce: {problem}',
