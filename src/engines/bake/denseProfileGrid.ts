@@ -133,9 +133,12 @@ export function resampleProfile(ph: Photometry): DenseProfileGrid {
 export function denseIntensity(grid: DenseProfileGrid, gammaDeg: number, cDeg: number): number {
   const { gamma } = grid;
   const f = (gammaDeg - gamma.first) / gamma.step;
-  if (f < 0 || f > gamma.count - 1) return 0;
-  const vi = Math.min(Math.floor(f), gamma.count - 2);
-  const vt = f - vi;
+  const cutBelow = gamma.first > 1e-9;
+  const cutAbove = gamma.first + (gamma.count - 1) * gamma.step < 180 - 1e-9;
+  if ((cutBelow && f < -0.001) || (cutAbove && f > gamma.count - 1 + 0.001)) return 0;
+  const fg = Math.min(Math.max(f, 0), gamma.count - 1);
+  const vi = Math.min(Math.floor(fg), gamma.count - 2);
+  const vt = fg - vi;
   const at = (h: number, j: number) => grid.values[h * gamma.count + j];
   if (!grid.c) return at(0, vi) * (1 - vt) + at(0, vi + 1) * vt;
   const fc = Math.min(Math.max((foldC(cDeg, grid.fold) - grid.c.first) / grid.c.step, 0), grid.c.count - 1);
