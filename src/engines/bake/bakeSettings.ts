@@ -42,6 +42,12 @@ export interface BakeSettings {
    * relight engine sets it for its direct bases.
    */
   lampUniforms?: boolean;
+  /**
+   * Candela lookup of the direct passes (docs/baker.md, "Profile table"): 'dense' (unset) the
+   * profile resampled once onto a uniform grid, four fetches; 'measured' the file's own grid with
+   * bin tables (about ten dependent fetches; kept to compare the two, e.g. `luxbox bench`).
+   */
+  profileLookup?: 'dense' | 'measured';
 }
 
 export const DEFAULT_BAKE_SETTINGS: BakeSettings = {
@@ -85,6 +91,7 @@ export function resolveBakeSettings(partial: Partial<BakeSettings> = {}): BakeSe
   check(Number.isInteger(s.seed) && s.seed >= 0, `seed ${s.seed} is not a non-negative integer`);
   check(Number.isFinite(s.sourceSpacing) && s.sourceSpacing >= 0, `sourceSpacing ${s.sourceSpacing} must be ≥ 0`);
   check(s.nearField === undefined || s.nearField === 'split' || s.nearField === 'point', `nearField "${String(s.nearField)}" is not split or point`);
+  check(s.profileLookup === undefined || s.profileLookup === 'dense' || s.profileLookup === 'measured', `profileLookup ${String(s.profileLookup)} is not 'dense' or 'measured'`);
   check(s.lampUniforms === undefined || typeof s.lampUniforms === 'boolean', `lampUniforms ${String(s.lampUniforms)} is not true or false`);
   check(Number.isInteger(s.brightPatches) && s.brightPatches >= 0 && s.brightPatches <= 1024, `brightPatches ${s.brightPatches} is not an integer in 0..1024`);
   check(Number.isInteger(s.texelSupersampling) && s.texelSupersampling >= 1 && s.texelSupersampling <= 32, `texelSupersampling ${s.texelSupersampling} is not an integer in 1..32`);

@@ -2,7 +2,7 @@ import type { NearField } from '../../core/model/lightingScene/lightingScene';
 import type { Photometry } from '../../core/photometry/types';
 import type { BakeScene } from './bakeScene';
 import type { DirectLamp } from './generateDirectShader';
-import { buildProfileTable, type ProfileTable } from './profileTable';
+import { buildProfileTable, type ProfileLookupMode, type ProfileTable } from './profileTable';
 import { scenePointSources } from './scenePointSources';
 
 /** The scene's luminaires ready for the direct pass: one profile table and the lamps that emit. */
@@ -21,7 +21,7 @@ export interface PreparedLamps {
  * and every luminaire becomes its point sources (near-field model, TILT,
  * dimming and colour: scenePointSources.ts, shared with the CPU directAtPoint).
  */
-export function prepareLamps(scene: BakeScene, settings: { sourceSpacing: number; maxSourcesPerAxis: number; nearField?: NearField }): PreparedLamps {
+export function prepareLamps(scene: BakeScene, settings: { sourceSpacing: number; maxSourcesPerAxis: number; nearField?: NearField; profileLookup?: ProfileLookupMode }): PreparedLamps {
   const distinct: Photometry[] = [];
   const profileIndex = new Map<Photometry, number>();
   for (const l of scene.luminaires) {
@@ -30,7 +30,7 @@ export function prepareLamps(scene: BakeScene, settings: { sourceSpacing: number
       distinct.push(l.photometry);
     }
   }
-  const table = buildProfileTable(distinct);
+  const table = buildProfileTable(distinct, settings.profileLookup ?? 'dense');
   let pointSources = 0;
   const lamps = scenePointSources(scene, settings).flatMap((l) => {
     const profile = table.layouts[profileIndex.get(l.photometry)!];

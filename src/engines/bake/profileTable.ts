@@ -1,4 +1,5 @@
 import type { Photometry } from '../../core/photometry/types';
+import { resampleProfile, type CFold, type DenseAxis } from './denseProfileGrid';
 
 /** Width of the R32F data texture that holds every profile's tables (WebGL2 guarantees 2048). */
 export const DATA_TEXTURE_WIDTH = 2048;
@@ -30,14 +31,34 @@ export interface AxisLayout {
   minStep: number;
 }
 
-export interface ProfileLayout {
-  /** Index among the scene's distinct profiles (GLSL names use it). */
-  id: number;
+/** The measured grid as the file gives it, found by bin tables (`profileLookup: 'measured'`). */
+export interface MeasuredLookup {
+  kind: 'measured';
   vertical: AxisLayout;
   /** null for rotationally symmetric profiles: one C plane, a 1D lookup. */
   horizontal: AxisLayout | null;
   /** candela[h][v] stored at candelaOffset + h·vertical.count + v. */
   candelaOffset: number;
+}
+
+/** The profile resampled once onto a uniform (γ, C) grid (denseProfileGrid.ts): four fetches, no search (the default). */
+export interface DenseLookup {
+  kind: 'dense';
+  gamma: DenseAxis;
+  /** null for rotationally symmetric profiles. */
+  c: DenseAxis | null;
+  fold: CFold;
+  /** values[h][g] stored at offset + h·gamma.count + g. */
+  offset: number;
+}
+
+/** How the direct pass looks candela up: 'dense' (default) or 'measured' (the file's grid with bin tables; kept for comparison). */
+export type ProfileLookupMode = 'dense' | 'measured';
+
+export interface ProfileLayout {
+  /** Index among the scene's distinct profiles (GLSL names use it). */
+  id: number;
+  lookup: MeasuredLookup | DenseLookup;
   /** Largest γ (degrees) at which interpolated intensity can be non-zero, and the smallest. */
   gammaMax: number;
   gammaMin: number;
@@ -66,7 +87,7 @@ function isUniform(angles: number[]): boolean {
 }
 
 /** Pack the given profiles (each once, in order) into one float table. */
-export function buildProfileTable(profiles: Photometry[]): ProfileTable {
+export function buildProfileTable(profiles: Photometry[], mode: ProfileLookupMode = 'dense'): ProfileTable {
   const values: number[] = [];
   const layouts: ProfileLayout[] = [];
   const push = (xs: ArrayLike<number>): number => {
@@ -102,17 +123,24 @@ export function buildProfileTable(profiles: Photometry[]): ProfileTable {
     const vAngles = ph.verticalAngles.length >= 2 ? ph.verticalAngles : [0, 180];
     const planes = ph.candela.map((row) => (ph.verticalAngles.length >= 2 ? row : [row[0], row[0]]));
     const rotational = ph.horizontalAngles.length < 2;
-    const vertical = axis(vAngles);
-    const horizontal = rotational ? null : axis(ph.horizontalAngles);
     const usedPlanes = rotational ? planes.slice(0, 1) : planes;
-    const candelaOffset = values.length;
+    let lookup: MeasuredLookup | DenseLookup;
+    if (mode === 'measured') {
+      const vertical = axis(vAngles);
+      const horizontal = rotational ? null : axis(ph.horizontalAngles);
+      const candelaOffset = values.length;
+      for (const row of usedPlanes) for (const cd of row) values.push(Number.isFinite(cd) && cd > 0 ? cd : 0);
+      lookup = { kind: 'measured', vertical, horizontal, candelaOffset };
+    } else {
+      const grid = resampleProfile(ph);
+      lookup = { kind: 'dense', gamma: grid.gamma, c: grid.c, fold: grid.fold, offset: push(grid.values) };
+    }
     let peak = 0;
     let firstNonZero = vAngles.length;
     let lastNonZero = -1;
     for (const row of usedPlanes) {
       row.forEach((cd, v) => {
         const safe = Number.isFinite(cd) && cd > 0 ? cd : 0;
-        values.push(safe);
         if (safe > 0) {
           peak = Math.max(peak, safe);
           firstNonZero = Math.min(firstNonZero, v);
@@ -133,7 +161,7 @@ export function buildProfileTable(profiles: Photometry[]): ProfileTable {
       }
     }
     const featureAngle = steepest > 0 ? peak / steepest : Infinity;
-    layouts.push({ id, vertical, horizontal, candelaOffset, gammaMax: lastNonZero === vAngles.length - 1 ? 180 : gammaMax, gammaMin: firstNonZero === 0 ? 0 : gammaMin, peakCandela: peak, featureAngle });
+    layouts.push({ id, lookup, gammaMax: lastNonZero === vAngles.length - 1 ? 180 : gammaMax, gammaMin: firstNonZero === 0 ? 0 : gammaMin, peakCandela: peak, featureAngle });
   });
 
   const rows = Math.max(1, Math.ceil(values.length / DATA_TEXTURE_WIDTH));

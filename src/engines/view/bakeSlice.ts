@@ -56,3 +56,17 @@ export function bakeSlice(
   }
   return { progress: p, msPerSample, samples, ms: now() - start };
 }
+
+/**
+ * The cost per sample after a fenced slice: a running average (70 % old, 30 % new) of the slice's
+ * cost over its samples. The cost is the GPU time of the slice's commands where a timer query
+ * measured it (EXT_disjoint_timer_query_webgl2; gpuMs null: no timer, no result yet, or a
+ * disjoint event spoiled it), else the time from the slice's start until its fence signalled
+ * (JavaScript + GPU + the wait for the poll). GPU time is what a slice takes from the frames the
+ * compositor needs; the fence time also counts the poll interval and other tabs' work.
+ */
+export function pacedMsPerSample(previous: number, samples: number, elapsed: { fenceMs: number; gpuMs: number | null }): number {
+  if (!(samples > 0)) return previous;
+  const ms = elapsed.gpuMs !== null && Number.isFinite(elapsed.gpuMs) && elapsed.gpuMs >= 0 ? elapsed.gpuMs : elapsed.fenceMs;
+  return 0.7 * previous + (0.3 * ms) / samples;
+}

@@ -1,5 +1,5 @@
 import type { EngineProgress, RelightEngine } from '../relight/RelightEngine';
-import { bakeSlice, FIRST_MS_PER_SAMPLE } from './bakeSlice';
+import { bakeSlice, FIRST_MS_PER_SAMPLE, pacedMsPerSample } from './bakeSlice';
 
 /** How often a slice's fence is polled, ms (browsers clamp nested timeouts to about 4 ms anyway). */
 export const FENCE_POLL_MS = 2;
@@ -34,13 +34,54 @@ export function glFence(gl: WebGL2RenderingContext): GpuFence | null {
   };
 }
 
+/** GPU time of the commands between begin and end (a TIME_ELAPSED query). */
+export interface GpuTimer {
+  begin(): void;
+  end(): void;
+  /** Elapsed GPU ms once available; null while pending, or when a disjoint event made it meaningless. */
+  elapsedMs(): number | null;
+  dispose(): void;
+}
+
+/** EXT_disjoint_timer_query_webgl2 constants (the extension object carries them; fixed by the extension's spec). */
+const TIME_ELAPSED_EXT = 0x88bf;
+const GPU_DISJOINT_EXT = 0x8fbb;
+
+/**
+ * A GPU timer on `gl` (EXT_disjoint_timer_query_webgl2), or null without the extension (headless-gl,
+ * many mobile browsers): the slicer then paces by the fence time. Results are read without waiting
+ * (QUERY_RESULT_AVAILABLE) and dropped when GPU_DISJOINT_EXT reports a disjoint event.
+ */
+export function glTimer(gl: WebGL2RenderingContext): GpuTimer | null {
+  if (!gl.getExtension('EXT_disjoint_timer_query_webgl2')) return null;
+  const query = gl.createQuery();
+  if (!query) return null;
+  let ended = false;
+  return {
+    begin: () => gl.beginQuery(TIME_ELAPSED_EXT, query),
+    end() {
+      gl.endQuery(TIME_ELAPSED_EXT);
+      ended = true;
+    },
+    elapsedMs() {
+      if (!ended || !gl.getQueryParameter(query, gl.QUERY_RESULT_AVAILABLE)) return null;
+      const disjoint = gl.getParameter(GPU_DISJOINT_EXT) as boolean;
+      const ns = gl.getQueryParameter(query, gl.QUERY_RESULT) as number;
+      return disjoint ? null : ns / 1e6;
+    },
+    dispose: () => gl.deleteQuery(query),
+  };
+}
+
 /**
  * The progressive background bake: slices of engine steps (bakeSlice) queued with setTimeout until
  * the bake is done. setTimeout, not requestAnimationFrame: frames stay free for input. With a fence
  * factory at most one slice is in flight on the GPU: after each slice a fence goes in, and the next
  * slice starts only once it has signalled (polled every FENCE_POLL_MS); the cost per sample is the
  * time from the slice's start until then (JavaScript + GPU), so the slice size follows the GPU, not
- * only the JavaScript time. Paused, it runs nothing until resumed; held (holdMs: the user is
+ * only the JavaScript time. With a timer factory too (glTimer: EXT_disjoint_timer_query_webgl2), the
+ * cost is the slice's measured GPU time where the query has a result when the fence signals
+ * (pacedMsPerSample), the fence time otherwise. Paused, it runs nothing until resumed; held (holdMs: the user is
  * interacting), it reports and waits.
  *
  * Liveness (issue 32): until the engine reports done, every slice steps at least once (bakeSlice),
@@ -75,6 +116,8 @@ export interface BakeSlicerOptions {
   now?: () => number;
   /** A fence after the slice's GPU commands (glFence on the engine's context); absent or null: unfenced slices. */
   fence?: () => GpuFence | null;
+  /** A GPU timer around each fenced slice (glTimer on the engine's context); absent or null: paced by the fence time. */
+  timer?: () => GpuTimer | null;
   /**
    * Milliseconds to hold bake work back (0: go), asked before each slice: the user is
    * interacting. A held slice still reports (onSlice with the current progress, so a relight
@@ -83,13 +126,13 @@ export interface BakeSlicerOptions {
   holdMs?: () => number;
 }
 
-export function createBakeSlicer({ engine, onSlice, onError, defer = (f, ms) => setTimeout(f, ms), now = () => performance.now(), fence, holdMs }: BakeSlicerOptions): BakeSlicer {
+export function createBakeSlicer({ engine, onSlice, onError, defer = (f, ms) => setTimeout(f, ms), now = () => performance.now(), fence, timer, holdMs }: BakeSlicerOptions): BakeSlicer {
   let msPerSample = FIRST_MS_PER_SAMPLE;
   let queued = false;
   let stopped = false;
   let paused = false;
   /** The slice whose fence has not signalled. */
-  let flight: { fence: GpuFence; start: number; samples: number } | null = null;
+  let flight: { fence: GpuFence; timer: GpuTimer | null; start: number; samples: number } | null = null;
   /** A run was asked for while a slice was in flight or the slicer paused. */
   let again = false;
 
@@ -112,10 +155,14 @@ export function createBakeSlicer({ engine, onSlice, onError, defer = (f, ms) => 
     }
     const start = now();
     const fenced = fence !== undefined;
+    const gpuTimer = fenced ? (timer?.() ?? null) : null;
     let r: ReturnType<typeof bakeSlice>;
     try {
+      gpuTimer?.begin();
       r = bakeSlice(e, msPerSample, now, fenced);
+      gpuTimer?.end();
     } catch (error) {
+      gpuTimer?.dispose();
       onError(`Baking failed: ${(error as Error).message}`);
       return;
     }
@@ -124,17 +171,19 @@ export function createBakeSlicer({ engine, onSlice, onError, defer = (f, ms) => 
     // time to a loaded machine issued nothing and the bake stopped at 59.7 %). bakeSlice steps at
     // least once, so nothing issued means done; if not, the bake goes on.
     if (r.samples === 0) {
+      gpuTimer?.dispose();
       if (!r.progress.done) queue();
       return;
     }
     const f = fenced ? fence() : null;
     if (!f) {
+      gpuTimer?.dispose();
       if (fenced) msPerSample = 0.7 * msPerSample + (0.3 * r.ms) / r.samples;
       else msPerSample = r.msPerSample;
       if (!r.progress.done) queue();
       return;
     }
-    flight = { fence: f, start, samples: r.samples };
+    flight = { fence: f, timer: gpuTimer, start, samples: r.samples };
     poll();
   };
 
@@ -143,6 +192,7 @@ export function createBakeSlicer({ engine, onSlice, onError, defer = (f, ms) => 
       if (!flight) return;
       if (stopped) {
         flight.fence.dispose();
+        flight.timer?.dispose();
         flight = null;
         return;
       }
@@ -150,8 +200,9 @@ export function createBakeSlicer({ engine, onSlice, onError, defer = (f, ms) => 
         poll();
         return;
       }
-      msPerSample = 0.7 * msPerSample + (0.3 * (now() - flight.start)) / flight.samples;
+      msPerSample = pacedMsPerSample(msPerSample, flight.samples, { fenceMs: now() - flight.start, gpuMs: flight.timer?.elapsedMs() ?? null });
       flight.fence.dispose();
+      flight.timer?.dispose();
       flight = null;
       const e = engine();
       if (again || (e && !e.progress.done)) queue();

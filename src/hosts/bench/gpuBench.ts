@@ -259,3 +259,42 @@ export function gpuBenchTable(rows: GpuBenchRow[]): string {
     ...rows.map((r) => `| ${r.case} | ${Object.values(r.breakdown).map((v) => v.toFixed(2)).join(' | ')} |`),
   ].join('\n');
 }
+
+/**
+ * Dense profile tables against the measured grid's bin-table lookup (docs/baker.md, "Profile
+ * table"): the 20-lamp direct-only scene (6 × 256², texel means and texel centres), both lookups
+ * on one warm context, interleaved so load changes hit both alike. Median ms per bake (GPU waited).
+ */
+export function profileLookupExperiment(root: string, repeats: number): { case: string; measuredMs: number; denseMs: number }[] {
+  const gl = createHeadlessGL();
+  try {
+    const baker = createBaker(gl);
+    const scene = directStress(root);
+    const cases: [string, Partial<BakeSettings>][] = [
+      ['direct-20', { texelSize: 0.05, bounces: 0, maxTextureSize: 256 }],
+      ['direct-20-centre', { texelSize: 0.05, bounces: 0, maxTextureSize: 256, texelSupersampling: 1 }],
+    ];
+    return cases.map(([name, settings]) => {
+      const once = (profileLookup: 'dense' | 'measured') => {
+        const t0 = performance.now();
+        const job = baker.start(scene, { ...settings, profileLookup });
+        job.run();
+        gl.finish();
+        const ms = performance.now() - t0;
+        job.dispose();
+        return ms;
+      };
+      once('measured');
+      once('dense'); // compile both first
+      const measured: number[] = [];
+      const dense: number[] = [];
+      for (let i = 0; i < repeats; i++) {
+        measured.push(once('measured'));
+        dense.push(once('dense'));
+      }
+      return { case: name, measuredMs: median(measured), denseMs: median(dense) };
+    });
+  } finally {
+    gl.destroy();
+  }
+}

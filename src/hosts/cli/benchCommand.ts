@@ -4,7 +4,7 @@ import { fileURLToPath } from 'node:url';
 import { benchTables, spliceSection } from '../bench/benchMarkdown';
 import { BENCH_DOC_INTRO, BENCH_DOC_OUTRO, BENCH_MARKERS } from '../bench/benchDocText';
 import { errorTimeSvg } from '../bench/errorTimeSvg';
-import { directSourcesExperiment, drawOverheadMs, gpuBenchTable, runGpuBench, statsRecordMs } from '../bench/gpuBench';
+import { directSourcesExperiment, drawOverheadMs, gpuBenchTable, profileLookupExperiment, runGpuBench, statsRecordMs } from '../bench/gpuBench';
 import { runBench } from '../bench/runBench';
 import { peerTables, runRadiancePeerBench } from '../bench/radianceBench';
 import { RADIANCE_DOC_INTRO, RADIANCE_MARKERS } from '../bench/radianceDocText';
@@ -51,6 +51,7 @@ export async function run(args: string[]): Promise<number> {
     const rows = runGpuBench(process.cwd(), repeats, (line) => process.stderr.write(line + '\n'));
     const perDraw = drawOverheadMs();
     process.stdout.write(`GL back end: ${backend}\n\n${gpuBenchTable(rows)}\n\nOne 256² combine draw in a stream of 200 (per-draw cost): ${perDraw.toFixed(3)} ms\nOne flux-statistics record (living room, 0.05 m): ${statsRecordMs().toFixed(3)} ms\n`);
+    for (const r of profileLookupExperiment(process.cwd(), repeats)) process.stdout.write(`Profile lookup, ${r.case}: measured grid ${r.measuredMs.toFixed(2)} ms, dense ${r.denseMs.toFixed(2)} ms, ratio ${(r.denseMs / r.measuredMs).toFixed(3)}\n`);
     const x = directSourcesExperiment(process.cwd(), repeats);
     process.stdout.write(`Direct pass, 20 lamps, 6 × 256², centres: source positions in const arrays ${x.constArrays.toFixed(2)} ms, in uniform arrays ${x.uniformArrays.toFixed(2)} ms (largest relative difference ${x.maxError.toExponential(1)})\n`);
     return 0;

@@ -43,29 +43,32 @@ const sha = (s: string) => createHash('sha256').update(s).digest('hex').slice(0,
  * (d277f253067d15e7 → eec5549dca83b451) now runs the one bright-patch loop both bright passes share
  * (shaders/brightPatchGather.glsl.ts), whose receiver cosine is max(cos θ_r, 0) instead of the empty
  * room's |cos θ_r| — equal on room surfaces, where every patch lies in front (issue #28).
+ * Issue #34 changed the direct passes (5 sources): candela now comes from dense profile grids
+ * (four fetches, no bin-table search; docs/baker.md "Profile table"). The map checksums below did
+ * not move beyond their 1e-6 tolerance (worst 1.6e-7 relative), so they stay as recorded.
  */
 const SHADERS = [
+  '01baa4265d839960',
   '0f60c96f28184550',
-  '0fdb131e467fa352',
-  '1328bbb2a45339bd',
+  '1ad908f9e2dd7117',
   '2a54593de58f3546',
+  '2ac43edf303fe17e',
   '2ec6a6d30aa4a1d6',
-  '3a1577ad2afaafaf',
+  '38b39ce0be018d75',
   '5541ac5901f6fe22',
   '55d1f4d319b557d2',
   '6bdeafb5d0119a64',
-  '806672ab1056d177',
-  '92e41898abe68ae8',
+  '6f8ec08bc124a86f',
   '99d4fc4d46d1af2c',
   '9d936dc33d591134',
   '9de21ee0f4e0551d',
   'a22e5be0a7dd81f4',
   'aa386da2ab6976d6',
   'b1e956c5c41a7e88',
-  'cdc8d0b51f52308b',
   'eec5549dca83b451',
   'efe5f9b5bd2b432e',
   'f15cdd941093e784',
+  'fe783aec8587b550',
 ];
 /** Recorded at 3d3c8bd: per surface, [Σ direct, Σ indirect, Σ total, max total] over all RGB floats. */
 const MAPS: Record<string, number[]> = {

@@ -41,19 +41,24 @@ const profiles = [
   basePhotometry({ verticalAngles: Array.from({ length: 20001 }, (_, i) => (i * 180) / 20000), candela: [Array.from({ length: 20001 }, () => 1)] }),
   basePhotometry({ verticalAngles: [0, ...Array.from({ length: 9000 }, (_, i) => 0.001 + i * 0.01), 180], candela: [Array.from({ length: 9002 }, () => 1)] }),
 ];
-const table = buildProfileTable(profiles);
+const table = buildProfileTable(profiles, 'measured');
+// The default lookup: the same profiles resampled onto dense grids (denseProfileGrid.ts).
+const denseTable = buildProfileTable(profiles);
 const layouts = surfaceLayouts({ width: 3, height: 2.5, depth: 4 }, 0.25, 64);
 const compiles = (pass: { source: string }) => expect(() => getProgram(gl, pass.source)).not.toThrow();
 
 describe('generated shaders compile', () => {
   it('the profile table takes every lookup path', () => {
-    const kinds = table.layouts.map((l) => `${l.horizontal ? 'C' : 'rot'}:${l.vertical.uniform ? 'u' : 'm'}${l.horizontal ? (l.horizontal.uniform ? 'u' : 'm') : ''}`);
+    const measured = table.layouts.map((l) => (l.lookup.kind === 'measured' ? l.lookup : null));
+    const kinds = measured.map((l) => (l ? `${l.horizontal ? 'C' : 'rot'}:${l.vertical.uniform ? 'u' : 'm'}${l.horizontal ? (l.horizontal.uniform ? 'u' : 'm') : ''}` : 'dense'));
     expect(kinds).toEqual(['rot:u', 'rot:u', 'rot:m', 'C:uu', 'C:mm', 'rot:u', 'rot:m']);
     // The last grid is finer than the bin-table cap: several angles share a bin.
-    expect(table.layouts[6].vertical.mapSize).toBe(8192);
+    expect(measured[6]?.vertical.mapSize).toBe(8192);
+    // Dense: rotational profiles are 1D, the others keep their C axis.
+    expect(denseTable.layouts.map((l) => (l.lookup.kind === 'dense' ? (l.lookup.c ? 'C' : 'rot') : 'measured'))).toEqual(['rot', 'rot', 'rot', 'C', 'C', 'rot', 'rot']);
   });
 
-  for (const [p, profile] of table.layouts.entries()) {
+  for (const [p, profile] of [...table.layouts.entries(), ...denseTable.layouts.map((l, i) => [i + table.layouts.length, l] as const)]) {
     for (const sources of [1, 6]) {
       it(`direct: profile ${p}, ${sources} point source(s), every surface`, () => {
         const lamp: DirectLamp = {
