@@ -1,6 +1,6 @@
 /**
  * Viewer benchmarks (docs/benchmarks.md, "Viewer" and "3D lifecycle"): relight vs full rebake
- * (headless-gl, same run), bake cost against module count (scripts/bench/benchModuleCount.ts),
+ * (headless-gl, same run), relight per frame on the CPU vs the GPU combine (scripts/bench/benchGpuRelight.ts), bake cost against module count (scripts/bench/benchModuleCount.ts),
  * time to first lit frame and to done per quality level with the device calibration
  * (scripts/bench/benchQualityLevels.ts), gzip sizes of the planner entry bundle and the 3D
  * chunk (from dist/, run `npx vite build` first), and in Chromium (SwiftShader) against
@@ -23,6 +23,7 @@ import { PUBLIC_DIR } from '../src/hosts/node/renderInput';
 import { createRelightEngine } from '../src/engines/relight/createRelightEngine';
 import { createConfiguratorStore } from '../src/core/store/createConfiguratorStore';
 import { chromiumArgs } from '../playwright.config';
+import { benchGpuRelight } from './bench/benchGpuRelight';
 import { benchModuleCount } from './bench/benchModuleCount';
 import { benchQualityLevels } from './bench/benchQualityLevels';
 import { machineInfo } from '../src/hosts/bench/machineInfo';
@@ -166,6 +167,12 @@ const relight = ['single', 'corner-l', 'snake'].map(relightVsRebake);
 for (const r of relight) {
   log(`${r.presetId}: ${r.modules} modules, ${r.texels} texels/basis; full rebake ${r.rebake.toFixed(0)} ms, relight ${r.relight.toFixed(2)} ms, ratio ${(r.rebake / r.relight).toFixed(0)}×`);
 }
+const gpuRelight = benchGpuRelight();
+log(
+  `relight per frame, ${gpuRelight.modules} modules (${gpuRelight.texels} texels/basis): CPU ${gpuRelight.cpuMs.toFixed(2)} ms (+ upload to the view ${gpuRelight.cpuUploadMs.toFixed(2)} ms), ` +
+    `GPU combine ${gpuRelight.gpuMs.float.toFixed(2)} ms (RGBA32F bases, ${gpuRelight.textureMiB.float.toFixed(1)} MiB) / ${gpuRelight.gpuMs.half.toFixed(2)} ms (RGBA16F, ${gpuRelight.textureMiB.half.toFixed(1)} MiB); ` +
+    `ratio CPU+upload / GPU ${(gpuRelight.cpuUploadMs / gpuRelight.gpuMs.float).toFixed(2)}×; read-backs ${gpuRelight.readbacks}`,
+);
 log('bake cost against module count (8 × 6 × 2.8 m, balanced):');
 const moduleCount = benchModuleCount(3, log);
 const at = (n: number) => moduleCount.find((r) => r.modules === n)!;
@@ -177,4 +184,4 @@ log(`bundles: planner entry ${(bundles.entry / 1024).toFixed(1)} KiB gzip (${(bu
 const toggles = await toggleToFirstLit();
 log(`chromium toggle → first lit frame: ${toggles.map((r) => r.firstLit).join(', ')} ms; → bake done: ${toggles.map((r) => r.done).join(', ')} ms`);
 log(`chromium 3D → 2D → 3D, no change: first lit frame ${toggles.map((r) => r.secondFirstLit).join(', ')} ms (first lit frame number ${toggles.map((r) => r.secondFirstLitFrame ?? '–').join(', ')}); bakes (group bakes + indirect solves) before → after: ${toggles.map((r) => `${r.bakesBefore} → ${r.bakesAfter}`).join(', ')}`);
-if (process.argv[2]) writeFileSync(process.argv[2], JSON.stringify({ machine, relight, moduleCount, quality, bundles, toggles }, null, 2));
+if (process.argv[2]) writeFileSync(process.argv[2], JSON.stringify({ machine, relight, gpuRelight, moduleCount, quality, bundles, toggles }, null, 2));

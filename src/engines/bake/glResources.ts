@@ -54,8 +54,8 @@ function settle(gl: WebGL2RenderingContext, entry: CacheEntry): void {
     if (!linked) {
       for (const s of [p.vs, p.fs]) {
         if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) {
-          const numbered = (s === p.vs ? fullscreenVertex : p.source).split('\n').map((line, i) => `${i + 1}: ${line}`).join('\n');
-          throw new Error(`GLSL compile error: ${gl.getShaderInfoLog(s) ?? ''}\n${numbered}`);
+          const log = (gl.getShaderInfoLog(s) ?? '').trim();
+          throw new Error(`GLSL compile error (${s === p.vs ? 'vertex' : 'fragment'}): ${log}\n${compileErrorExcerpt(s === p.vs ? fullscreenVertex : p.source, log)}`);
         }
       }
       throw new Error(`GLSL link error: ${gl.getProgramInfoLog(entry.program) ?? ''}`);
@@ -64,6 +64,49 @@ function settle(gl: WebGL2RenderingContext, entry: CacheEntry): void {
     gl.deleteShader(p.vs);
     gl.deleteShader(p.fs);
   }
+}
+
+/** The window round the first line a compile log names, as three.js's WebGLProgram.js `handleSource`: lines e − 5 … e + 6. */
+export const ERROR_CONTEXT_LINES = 6;
+
+/**
+ * The few source lines around the first error a compile log names (`ERROR: 0:<line>`, the form ANGLE
+ * and the desktop drivers print), numbered from 1 and the error line marked with `>`, as three.js
+ * prints them (src/renderers/webgl/WebGLProgram.js, handleSource): a generated bake shader runs to
+ * hundreds of lines, and the whole numbered source buried the message. A log without a line number
+ * gets the first 2·ERROR_CONTEXT_LINES lines.
+ */
+export function compileErrorExcerpt(source: string, log: string): string {
+  const lines = source.split('\n');
+  const match = /ERROR: \d+:(\d+)/.exec(log);
+  const errorLine = match ? Number(match[1]) : 0;
+  const from = Math.max(errorLine - ERROR_CONTEXT_LINES, 0);
+  const to = Math.min(match ? errorLine + ERROR_CONTEXT_LINES : 2 * ERROR_CONTEXT_LINES, lines.length);
+  const shown: string[] = [];
+  for (let i = from; i < to; i++) shown.push(`${i + 1 === errorLine ? '>' : ' '} ${i + 1}: ${lines[i]}`);
+  return shown.join('\n');
+}
+
+/** KHR_parallel_shader_compile's query (https://registry.khronos.org/webgl/extensions/KHR_parallel_shader_compile/). */
+export const COMPLETION_STATUS_KHR = 0x91b1;
+
+/**
+ * Whether the programs of these fragment sources can be used without waiting: every one cached and
+ * linked, or still compiling but reported complete by KHR_parallel_shader_compile's
+ * COMPLETION_STATUS_KHR (polled as three.js's WebGLProgram.isReady does). Without the extension a
+ * driver has no way to say, and the answer is true (the first use waits, as before). A caller that
+ * started the compiles (startPrograms) polls this from its slices and draws only once it is true,
+ * so the page keeps answering while the driver compiles. A source never started counts as not ready.
+ */
+export function programsReady(gl: WebGL2RenderingContext, fragmentSources: readonly string[]): boolean {
+  const cache = cacheOf(gl);
+  const parallel = gl.getExtension('KHR_parallel_shader_compile') !== null;
+  for (const source of fragmentSources) {
+    const entry = cache.get(source);
+    if (!entry) return false;
+    if (entry.pending && parallel && gl.getProgramParameter(entry.program, COMPLETION_STATUS_KHR) !== true) return false;
+  }
+  return true;
 }
 
 /**
