@@ -6,7 +6,7 @@
  * drag or a DMX stream). The GPU time includes gl.finish() (the wait for the draws), as a frame would
  * wait for them; CPU upload of the bases is once, before the timed frames.
  */
-import type { Rgb } from '../../src/core/model/lightingScene';
+import type { Rgb } from '../../src/core/model/lightingScene/lightingScene';
 import { surfaceLayouts } from '../../src/engines/bake/surfaceLayout';
 import { createGpuRelight, type BasisPrecision } from '../../src/engines/relight/createGpuRelight';
 import { VIEWER_BAKE_SETTINGS } from '../../src/engines/relight/createRelightEngine';

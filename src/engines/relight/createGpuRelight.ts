@@ -1,4 +1,4 @@
-import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../core/model/lightingScene';
+import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../core/model/lightingScene/lightingScene';
 import { RELIGHT_BASES_PER_DRAW, RELIGHT_BASIS_SAMPLERS, relightCombinePass, type RelightCombineUniforms } from '../../../shaders/relightCombine.glsl';
 import { createFloatTarget, deleteTarget, readRgb, requireFloatTargets, type FloatTarget } from '../bake/floatTarget';
 import { passProgram, runPass, type UniformValues } from '../bake/runPass';

@@ -5,7 +5,7 @@ import type { PreparedObjects } from '../bake/objects/preparedObjects';
 import type { EngineProgress, RelightEngine } from '../relight/RelightEngine';
 import { QUALITY_LEVELS, type QualityLevel } from '../relight/qualityLevels';
 import { createBakeContext, type BakeCanvas, type BakeContext } from './createBakeContext';
-import { createBakeSlicer, glFence, type BakeSlicer, type GpuFence } from './createBakeSlicer';
+import { createBakeSlicer, glFence, glTimer, type BakeSlicer, type GpuFence } from './createBakeSlicer';
 import { createObjectsMemo } from './createObjectsMemo';
 import { lowMemoryDevice } from './lowMemoryDevice';
 
@@ -240,6 +240,8 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
     defer: options.defer,
     now: options.now,
     fence: makeFence ? () => (context.gl ? makeFence(context.gl) : null) : undefined,
+    // Sized by GPU time where EXT_disjoint_timer_query_webgl2 exists (docs/viewer.md); with fences only.
+    timer: makeFence ? () => (context.gl ? glTimer(context.gl) : null) : undefined,
     holdMs: () => Math.max(0, lastInput + quietMs - clock()),
   });
   if (input) for (const type of INPUT_EVENTS) input.addEventListener(type, onInput, listen);

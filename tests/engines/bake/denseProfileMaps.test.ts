@@ -11,7 +11,7 @@
  */
 import { readdirSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { SURFACE_NAMES } from '../../../src/core/model/lightingScene';
+import { SURFACE_NAMES } from '../../../src/core/model/lightingScene/lightingScene';
 import type { BakeScene } from '../../../src/engines/bake/bakeScene';
 import type { BakedMaps } from '../../../src/engines/bake/bakedMaps';
 import type { BakeSettings } from '../../../src/engines/bake/bakeSettings';

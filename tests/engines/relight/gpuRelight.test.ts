@@ -7,7 +7,7 @@
  * interim Φ_now/Φ_solve scale of indirectTerms.ts. Half-float bases add at most 0.1 % of the peak.
  */
 import { describe, expect, it } from 'vitest';
-import { SURFACE_NAMES, type Rgb } from '../../../src/core/model/lightingScene';
+import { SURFACE_NAMES, type Rgb } from '../../../src/core/model/lightingScene/lightingScene';
 import { surfaceLayouts, type SurfaceLayout } from '../../../src/engines/bake/surfaceLayout';
 import type { ObjectAtlas } from '../../../src/engines/bake/objects/preparedObjects';
 import { createGpuRelight, type GpuLitMaps } from '../../../src/engines/relight/createGpuRelight';
