@@ -37,6 +37,9 @@ export interface GldfExport {
 
 const LANGUAGES = ['en', 'de', 'fr', 'it'] as const;
 
+/** The ids a mapping file may give (gldfMapping.ts `catalogId`): others cannot come back through it. */
+const MAPPING_ID = /^[a-z0-9][a-z0-9-]{0,63}$/;
+
 const esc = (s: string): string => s.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
 
 /** Locale texts: the main text as English (the import reads English first), the translations beside it. */
@@ -104,7 +107,8 @@ export function exportGldfProduct(catalog: Catalog, typeId: string, options: Gld
     // xs:ID values are NCNames: a beam id that is not one gets a Photometry id that is, and the mapping gives the id back.
     const pid = /^[A-Za-z_][\w.-]*$/.test(beam.id) ? beam.id : `ph-${beam.id.replace(/[^\w.-]/g, '-')}`;
     const fileId = `f-${pid}`;
-    const fileName = `${type.id}-${beam.id}.${kind.ext}`;
+    // Entry names from ids that are safe as names (a catalog id may hold any character; the import refuses a File name that is a path).
+    const fileName = `${catalogSlug(type.id)}-${pid}.${kind.ext}`;
     let bytes: Uint8Array;
     try {
       bytes = options.readFile(beam.photometry);
@@ -140,15 +144,24 @@ export function exportGldfProduct(catalog: Catalog, typeId: string, options: Gld
       );
     }
     const bm: NonNullable<GldfProductMapping['beams']>[string] = {};
-    if (catalogSlug(pid) !== beam.id) bm.id = beam.id;
+    if (catalogSlug(pid) !== beam.id) {
+      if (MAPPING_ID.test(beam.id)) bm.id = beam.id;
+      else notes.push(`beam '${beam.id}' comes back as '${catalogSlug(pid)}' (imported ids are lower-case letters, digits and -)`);
+    }
     // The import recovers an article as the common prefix of its variants' numbers; where that fails (one CCT, or 3000/3500 sharing '-3'), the mapping says it.
     if (commonArticle(ccts.map((k) => variantArticle(beam, k))) !== beam.article) bm.article = beam.article;
     if (beam.roll !== GLDF_DEFAULTS.roll) bm.roll = beam.roll;
     if (Object.keys(bm).length > 0) beamMappings[pid] = bm;
   }
   if (Object.keys(beamMappings).length > 0) mapping.beams = beamMappings;
-  if (catalogSlug(type.id) !== type.id) mapping.id = type.id;
-  if (type.defaultBeam !== type.beams[0].id) mapping.defaultBeam = type.defaultBeam;
+  if (catalogSlug(type.id) !== type.id) {
+    if (MAPPING_ID.test(type.id)) mapping.id = type.id;
+    else notes.push(`its id comes back as '${catalogSlug(type.id)}' (imported ids are lower-case letters, digits and -)`);
+  }
+  if (type.defaultBeam !== type.beams[0].id) {
+    if (MAPPING_ID.test(type.defaultBeam)) mapping.defaultBeam = type.defaultBeam;
+    else notes.push(`its default beam comes back as the first, '${catalogSlug(type.beams[0].id)}'`);
+  }
   if (!sameRange(type.adjustable, importedAdjustable(adjustabilities(type)))) mapping.adjustable = type.adjustable ?? false;
   if (type.filterHolder) mapping.filterHolder = true;
   if (type.names?.en !== type.name) notes.push(`its names come back with en = '${type.name}' (the name is the English Locale text)`);
@@ -160,7 +173,7 @@ export function exportGldfProduct(catalog: Catalog, typeId: string, options: Gld
   if (options.picture) {
     const ext = /\.(png|jpe?g)$/i.exec(options.picture.name)?.[1]?.toLowerCase();
     if (!ext) throw new GldfError(`module type '${type.id}': picture ${options.picture.name} is not PNG or JPEG`);
-    const name = `${type.id}.${ext}`;
+    const name = `${catalogSlug(type.id)}.${ext}`;
     entries[`image/${name}`] = options.picture.bytes;
     files.push(`<File id="f-picture" contentType="image/${ext === 'png' ? 'png' : 'jpg'}" type="localFileName">${esc(name)}</File>`);
     pictures = `<Pictures><Image fileId="f-picture" imageType="Product Picture"/></Pictures>`;

@@ -4,6 +4,7 @@ import { InputError } from '../../core/inputError';
 import { formatImportReport } from '../../core/gldf/gldfImportReport';
 import { parseGldfMapping, type GldfMapping } from '../../core/gldf/gldfMapping';
 import { exportGldfProduct, type GldfExport } from '../../core/gldf/exportGldfProduct';
+import { catalogSlug } from '../../core/gldf/gldfToModuleType';
 import { importGldfCatalog, type GldfInput } from '../../core/gldf/importGldfCatalog';
 import { UPLOAD_LIMITS } from '../../core/gldf/uploadLimits';
 import { parseCatalogText } from '../../core/model/catalogSchema/catalogSchema';
@@ -130,17 +131,21 @@ async function runExport(args: string[]): Promise<number> {
   const readFile = (path: string): Uint8Array => readRegularFile(join(assets, path), { maxBytes: Math.max(MAX_PHOTOMETRY_BYTES, UPLOAD_LIMITS.maxEntryBytes), within: [assets] });
   const ids = a.types.length > 0 ? a.types : catalog.moduleTypes.map((t) => t.id);
   const createdAt = new Date();
-  const exports: { id: string; result: GldfExport }[] = [];
+  const exports: { id: string; file: string; result: GldfExport }[] = [];
   for (const id of ids) {
+    // The file is named by the id made safe as a file name; two ids that become one name are refused.
+    const file = `${catalogSlug(id)}.gldf`;
+    const twin = exports.find((e) => e.file === file);
+    if (twin) throw new InputError(`export: module types '${twin.id}' and '${id}' would both be written as ${file}; export them one at a time`);
     // The picture an import wrote beside the catalog (images/<type id>.png|jpg), when there is one.
-    const pictureName = ['png', 'jpg', 'jpeg'].map((ext) => `${id}.${ext}`).find((n) => existsSync(join(assets, 'images', n)));
+    const pictureName = ['png', 'jpg', 'jpeg'].map((ext) => `${catalogSlug(id)}.${ext}`).find((n) => existsSync(join(assets, 'images', n)));
     const picture = pictureName ? { name: pictureName, bytes: readFile(`images/${pictureName}`) } : undefined;
-    exports.push({ id, result: exportGldfProduct(catalog, id, { createdAt, readFile, ...(picture ? { picture } : {}) }) });
+    exports.push({ id, file, result: exportGldfProduct(catalog, id, { createdAt, readFile, ...(picture ? { picture } : {}) }) });
   }
   mkdirSync(a.out, { recursive: true });
-  for (const { id, result } of exports) {
-    writeFileSync(join(a.out, `${id}.gldf`), result.bytes);
-    process.stdout.write(`${id}.gldf: ${(result.productXml.match(/<Variant /g) ?? []).length} variants${result.notes.length ? `; ${result.notes.join('; ')}` : ''}\n`);
+  for (const { file, result } of exports) {
+    writeFileSync(join(a.out, file), result.bytes);
+    process.stdout.write(`${file}: ${(result.productXml.match(/<Variant /g) ?? []).length} variants${result.notes.length ? `; ${result.notes.join('; ')}` : ''}\n`);
   }
   const mapping: GldfMapping = { formatVersion: 1, products: Object.fromEntries(exports.map(({ id, result }) => [id, result.mapping])) };
   writeFileSync(join(a.out, 'mapping.json'), JSON.stringify(mapping, null, 2) + '\n');

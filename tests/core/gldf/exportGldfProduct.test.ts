@@ -114,6 +114,25 @@ describe('module types back to GLDF', () => {
     expect(typeOf(again.catalog, 'track-spot').adjustable).toEqual({ tilt: { min: 0, max: 90 }, rotation: { min: 0, max: 355 } });
   });
 
+  it('ids that are not XML names or file names: safe ids in the file; the mapping gives back what it may hold, the rest is noted', async () => {
+    const spot = typeOf(first.catalog, 'track-spot');
+    const odd: ModuleTypeSpec = { ...spot, id: 'Track Spot/2', beams: spot.beams.map((b) => ({ ...b, id: `2 ${b.id}` })), defaultBeam: '2 medium' };
+    const catalog = { ...first.catalog, moduleTypes: [odd] };
+    const out = exportGldfProduct(catalog, 'Track Spot/2', { createdAt, readFile });
+    const r = await validateXML({ xml: [{ fileName: 'product.xml', contents: out.productXml }], schema: [schema] });
+    expect(r.errors.map((e) => e.rawMessage)).toEqual([]);
+    expect(Object.keys(unzipSync(out.bytes)).sort()).toEqual(['ldc/track-spot-2-ph-2-medium.ldt', 'ldc/track-spot-2-ph-2-narrow.ies', 'ldc/track-spot-2-ph-2-wide.ies', 'product.xml']);
+    expect(out.mapping).toEqual({ length: 0.15, adjustable: spot.adjustable, filterHolder: true });
+    expect(out.notes).toContain("its id comes back as 'track-spot-2' (imported ids are lower-case letters, digits and -)");
+    expect(out.notes).toContain("beam '2 narrow' comes back as 'ph-2-narrow' (imported ids are lower-case letters, digits and -)");
+    // A beam id that is a catalog id but not an XML name ('2-narrow': starts with a digit) comes back through the mapping.
+    const digits: ModuleTypeSpec = { ...spot, beams: spot.beams.map((b) => ({ ...b, id: `2-${b.id}` })), defaultBeam: '2-medium' };
+    const out2 = exportGldfProduct({ ...first.catalog, moduleTypes: [digits] }, 'track-spot', { createdAt, readFile });
+    expect(out2.mapping.beams).toEqual({ 'ph-2-narrow': { id: '2-narrow' }, 'ph-2-medium': { id: '2-medium' }, 'ph-2-wide': { id: '2-wide' } });
+    const back = importGldfCatalog(base, [{ name: 'digits.gldf', bytes: out2.bytes }], { formatVersion: 1, products: { 'track-spot': out2.mapping } });
+    expect(withoutSource(typeOf(back.catalog, 'track-spot'))).toEqual(withoutSource({ ...digits, beams: digits.beams.map((b) => ({ ...b, photometry: `ies/track-spot-${b.id}.${b.photometry.split('.').pop()}` })) }));
+  });
+
   it('notes what neither carries, and refuses an unknown type or a missing photometry naming it', () => {
     expect(exported[0].notes).toEqual(['each beam’s source text is provenance: the import writes its own, naming the GLDF file and variant']);
     expect(() => exportGldfProduct(first.catalog, 'nope', { createdAt, readFile })).toThrow(/has no module type 'nope' \(its types: spot, /);
