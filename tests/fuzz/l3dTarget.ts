@@ -1,13 +1,16 @@
 /**
  * Fuzz target `l3d` (issue 31): L3D containers through readL3dStructure (zip reader,
- * structure.xml, every reference). Seed: the tests' hand-made track spot (tests/core/gldf/
+ * structure.xml, every reference) and readL3dMeshes (each OBJ part through the OBJ importer, placed
+ * down the part tree). Seed: the tests' hand-made track spot (tests/core/gldf/
  * buildL3d.ts). Most mutants change structure.xml inside a container that holds the OBJ parts
  * (l3dCodec); raw container bytes are mutated too. Accepted means every number in the tree is
- * finite and every part's geometry file is in the container.
+ * finite, every part's geometry file is in the container, and every part's mesh has finite
+ * positions and indices within them.
  */
 import { unzipSync, zipSync } from 'fflate';
 import { GldfError } from '../../src/core/gldf/GldfError';
 import { readL3dStructure, type L3dGeometryNode } from '../../src/core/gldf/readL3dStructure';
+import { readL3dMeshes, type L3dMeshes } from '../../src/engines/meshImport/readL3dMeshes';
 import { files, l3d } from '../core/gldf/buildL3d';
 import { nonFinitePaths } from './checks';
 import type { FuzzOutcome, FuzzSeed, FuzzTarget } from './fuzzTarget';
@@ -45,6 +48,18 @@ export const l3dFuzzTarget: FuzzTarget = {
       }
     };
     walk(luminaire.structure);
+    let meshes: L3dMeshes;
+    try {
+      meshes = readL3dMeshes(luminaire, zip);
+    } catch (error) {
+      if (error instanceof GldfError) return { kind: 'refused', message: error.message };
+      throw error;
+    }
+    for (const part of meshes.parts) {
+      const { positions, indices } = part.mesh;
+      if (!positions.every(Number.isFinite)) problems.push(`part ${part.partName}: non-finite vertex`);
+      if (indices.some((i) => i >= positions.length / 3)) problems.push(`part ${part.partName}: index beyond its vertices`);
+    }
     return { kind: 'accepted', problems };
   },
 };

@@ -89,7 +89,7 @@ function names(texts: LocaleTexts, defaultLanguage: string | undefined): { name:
 const firstText = (texts: LocaleTexts): string => texts.find((l) => l.text)?.text ?? '';
 
 /** The longest common prefix of the beam's article numbers, trimmed at a separator ('LX-TS-N15-30', 'LX-TS-N15-40' → 'LX-TS-N15'). */
-function commonArticle(numbers: string[]): string {
+export function commonArticle(numbers: string[]): string {
   if (numbers.length < 2) return '';
   // Cut first: a hostile file's product numbers may be megabytes long.
   let prefix = numbers[0].slice(0, 100);

@@ -40,24 +40,39 @@ const adapt = adaptParam !== null && parseAdaptation(adaptParam) ? adaptParam : 
 // the Expert switch in the side panel, remembered; `?expert=1` / `?expert=0` sets the switch as a tap would.
 const expertParam = params.get('expert');
 if (expertParam === '1' || expertParam === '0') writeLocal(EXPERT_KEY, expertParam);
-window.luxbox = mountLuxbox(root, {
-  storageKey: 'luxbox.autosave.v1',
-  shareLinks: true,
-  rememberQuality: true,
-  expert: 'switch',
-  rememberExpert: true,
-  demo,
-  locale,
-  languageSwitch: true,
-  // The app is the whole page: its header is the banner, the plan the main landmark.
-  landmarks: 'page',
-  onLanguageChange: (language) => {
-    writeLocal(LANGUAGE_KEY, language);
-    document.documentElement.lang = language;
-  },
-  ...(isQualityLevel(quality) ? { quality } : {}),
-  ...(exposure !== undefined ? { exposure } : {}),
-  ...(adapt !== undefined ? { adapt } : {}),
-});
-// The page's own language follows the configurator's (screen readers and hyphenation read it from <html>).
-document.documentElement.lang = window.luxbox.getLanguage().language;
+// `?catalog=<url of a catalog.json>` opens on a catalog folder as `luxbox catalog import` writes it
+// (docs/gldf.md): the JSON as the embedding API's `catalog`, its folder as `assetBase` (the
+// photometry lies beside it), and an autosave of its own so the demo catalog's plan is not mixed in.
+const catalogUrl = params.get('catalog');
+async function mount(host: HTMLElement): Promise<void> {
+  let folder = {};
+  if (catalogUrl) {
+    const url = new URL(catalogUrl, location.href);
+    const response = await fetch(url);
+    if (!response.ok) throw new Error(`HTTP ${response.status} ${response.statusText}`.trim());
+    folder = { catalog: await response.json(), assetBase: new URL('.', url).pathname, storageKey: 'luxbox.autosave.catalog.v1' };
+  }
+  window.luxbox = mountLuxbox(host, {
+    storageKey: 'luxbox.autosave.v1',
+    ...folder,
+    shareLinks: true,
+    rememberQuality: true,
+    expert: 'switch',
+    rememberExpert: true,
+    demo,
+    locale,
+    languageSwitch: true,
+    // The app is the whole page: its header is the banner, the plan the main landmark.
+    landmarks: 'page',
+    onLanguageChange: (language) => {
+      writeLocal(LANGUAGE_KEY, language);
+      document.documentElement.lang = language;
+    },
+    ...(isQualityLevel(quality) ? { quality } : {}),
+    ...(exposure !== undefined ? { exposure } : {}),
+    ...(adapt !== undefined ? { adapt } : {}),
+  });
+  // The page's own language follows the configurator's (screen readers and hyphenation read it from <html>).
+  document.documentElement.lang = window.luxbox.getLanguage().language;
+}
+void mount(root).catch((e: Error) => (root.textContent = `The catalog ${catalogUrl} could not be loaded: ${e.message}`));

@@ -29,7 +29,8 @@ commands:
   export radiance <config-or-scene.json> --out <dir> [--near-field split|point]   Radiance scene folder (docs/radiance.md)
   dmx [--artnet] [--sacn] [--port N] [--bind ADDR] [--universes 1-4]   Art-Net/sACN → WebSocket bridge for live control (docs/dmx.md)
   filters [--json] [--cct K]   colour-filter library: x, y, transmission (CCT, Duv near white) for a K source (docs/colour-filters.md)
-  catalog import <product.gldf> [more.gldf …] --into <catalog.json> --out <dir> [--mapping <mapping.json>] [--assets <dir>]   GLDF products into a catalog folder (docs/gldf.md)`;
+  catalog import <product.gldf> [more.gldf …] --into <catalog.json> --out <dir> [--mapping <mapping.json>] [--assets <dir>]   GLDF products into a catalog folder (docs/gldf.md)
+  catalog export <catalog.json> --out <dir> [--type <id> …] [--assets <dir>]   module types back to GLDF, with mapping.json (docs/gldf.md)`;
 
 export async function main(argv: string[]): Promise<number> {
   const [name, ...rest] = argv;

@@ -9,6 +9,8 @@ import { existsSync, mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSy
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, describe, expect, it } from 'vitest';
+import { validateXML } from 'xmllint-wasm';
+import { unzipSync } from 'fflate';
 import { parseCatalogText } from '../../../src/core/model/catalogSchema/catalogSchema';
 import { parsePhotometry } from '../../../src/core/photometry';
 import { gldfBytes, linearSpec, MAPPING_TEXT, pendantSpec, productXml, trackSpotSpec } from '../../core/gldf/buildGldf';
@@ -66,7 +68,9 @@ describe('luxbox catalog import', () => {
     for (const [args, message] of [
       [['import', spot, '--out', join(dir, 'x')], /--into <catalog\.json> is required/],
       [['import', '--into', 'src/core/catalog/default-catalog.json', '--out', join(dir, 'x')], /no GLDF file given/],
-      [['export'], /unknown subcommand "export"/],
+      [['export'], /export: give one catalog\.json/],
+      [['export', 'src/core/catalog/default-catalog.json'], /export: --out <dir> is required/],
+      [['publish'], /unknown subcommand "publish"/],
       [['import', spot, '--into', 'src/core/catalog/default-catalog.json', '--out', join(dir, 'x'), '--mapping', spot], /^luxbox catalog: track-spot\.gldf/],
     ] as const) {
       const r = luxbox('catalog', ...args);
@@ -74,5 +78,59 @@ describe('luxbox catalog import', () => {
       expect(r.stderr.trim().split('\n')).toHaveLength(1);
       expect(r.stderr).toMatch(message);
     }
+  });
+});
+
+describe('luxbox catalog export', () => {
+  const spot = write('export-track-spot.gldf', gldfBytes(trackSpotSpec()));
+  const linear = write('export-linear.gldf', gldfBytes(linearSpec()));
+  const mapping = write('export-mapping.json', MAPPING_TEXT);
+  const schema = { fileName: 'gldf.xsd', contents: readFileSync('vendor/gldf/gldf.xsd', 'utf8') };
+
+  it('round trip: import, export the imported types, import the exports with the exported mapping: the same module types (all but the beams’ source)', async () => {
+    const shop = join(dir, 'export-shop');
+    expect(luxbox('catalog', 'import', spot, linear, '--into', 'src/core/catalog/default-catalog.json', '--assets', 'public', '--mapping', mapping, '--out', shop).status).toBe(0);
+    const gldf = join(dir, 'gldf-out');
+    const r = luxbox('catalog', 'export', join(shop, 'catalog.json'), '--type', 'track-spot', '--type', 'linear-600', '--out', gldf);
+    expect(r.stderr).toBe('');
+    expect(r.status).toBe(0);
+    expect(r.stdout.split('\n')[0]).toBe('track-spot.gldf: 9 variants; each beam’s source text is provenance: the import writes its own, naming the GLDF file and variant');
+    expect(readdirSync(gldf).sort()).toEqual(['linear-600.gldf', 'mapping.json', 'track-spot.gldf']);
+    const entries = unzipSync(new Uint8Array(readFileSync(join(gldf, 'track-spot.gldf'))));
+    const v = await validateXML({ xml: [{ fileName: 'product.xml', contents: new TextDecoder().decode(entries['product.xml']) }], schema: [schema] });
+    expect(v.errors.map((e) => e.rawMessage)).toEqual([]);
+    expect(entries['image/track-spot.png']).toEqual(new Uint8Array(readFileSync(join(shop, 'images', 'track-spot.png'))));
+
+    const again = join(dir, 'export-again');
+    const r2 = luxbox('catalog', 'import', join(gldf, 'track-spot.gldf'), join(gldf, 'linear-600.gldf'), '--into', 'src/core/catalog/default-catalog.json', '--assets', 'public', '--mapping', join(gldf, 'mapping.json'), '--out', again);
+    expect(r2.stderr).toBe('');
+    const before = parseCatalogText(readFileSync(join(shop, 'catalog.json'), 'utf8'), 'catalog.json');
+    const after = parseCatalogText(readFileSync(join(again, 'catalog.json'), 'utf8'), 'catalog.json');
+    const strip = (c: typeof before): unknown => c.moduleTypes.map((t) => ({ ...t, beams: t.beams.map(({ source: _s, ...b }) => b) }));
+    expect(strip(after)).toEqual(strip(before));
+    for (const b of after.moduleTypes.flatMap((t) => t.beams)) expect(readFileSync(join(again, b.photometry))).toEqual(readFileSync(join(shop, b.photometry)));
+  });
+
+  it('exports every type of the demo catalog (its photometry under public/): each validates, the dimming curve is noted as not exported', async () => {
+    const out = join(dir, 'demo-gldf');
+    const r = luxbox('catalog', 'export', 'src/core/catalog/default-catalog.json', '--assets', 'public', '--out', out);
+    expect(r.stderr).toBe('');
+    expect(r.status).toBe(0);
+    const demo = parseCatalogText(readFileSync('src/core/catalog/default-catalog.json', 'utf8'), 'default-catalog.json');
+    expect(readdirSync(out).sort()).toEqual([...demo.moduleTypes.map((t) => `${t.id}.gldf`), 'mapping.json'].sort());
+    for (const t of demo.moduleTypes) {
+      const xml = new TextDecoder().decode(unzipSync(new Uint8Array(readFileSync(join(out, `${t.id}.gldf`))))['product.xml']);
+      const v = await validateXML({ xml: [{ fileName: 'product.xml', contents: xml }], schema: [schema] });
+      expect({ type: t.id, errors: v.errors.map((e) => e.rawMessage) }).toEqual({ type: t.id, errors: [] });
+    }
+    expect(r.stdout).toMatch(/spot-warmdim\.gldf: \d+ variants; .*its dimming curve \(dim-to-warm\) has no GLDF element and is not exported/);
+  });
+
+  it('an unknown type writes nothing, exit 1', () => {
+    const out = join(dir, 'export-never');
+    const r = luxbox('catalog', 'export', 'src/core/catalog/default-catalog.json', '--assets', 'public', '--type', 'spot', '--type', 'nope', '--out', out);
+    expect(r.status).toBe(1);
+    expect(r.stderr).toMatch(/^luxbox catalog: catalog 'luxbox-demo-rail' has no module type 'nope'/);
+    expect(existsSync(out)).toBe(false);
   });
 });

@@ -1,0 +1,86 @@
+import { spawnSync } from 'node:child_process';
+import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, normalize } from 'node:path';
+import { expect, test } from '@playwright/test';
+import { gldfBytes, linearSpec, MAPPING_TEXT, pendantSpec, trackSpotSpec } from '../tests/core/gldf/buildGldf';
+import { sceneFile } from './helpers';
+
+// A catalog folder made by `luxbox catalog import` from the three test GLDF products (tests/core/gldf/buildGldf.ts)
+// loads in the app like the demo's (docs/gldf.md): `?catalog=` hands its JSON to the embedding API's `catalog`
+// option and its folder to `assetBase`. The folder lives in a temp directory, served to the page by route(),
+// so nothing is generated into public/.
+
+let folder = '';
+
+test.beforeAll(() => {
+  const dir = mkdtempSync(join(tmpdir(), 'luxbox-e2e-gldf-'));
+  const write = (name: string, bytes: Uint8Array | string): string => {
+    writeFileSync(join(dir, name), bytes);
+    return join(dir, name);
+  };
+  folder = join(dir, 'shop');
+  const r = spawnSync(
+    process.execPath,
+    [
+      'bin/luxbox.js',
+      'catalog',
+      'import',
+      write('track-spot.gldf', gldfBytes(trackSpotSpec())),
+      write('pendant.gldf', gldfBytes(pendantSpec())),
+      write('linear.gldf', gldfBytes(linearSpec())),
+      '--into',
+      'src/core/catalog/default-catalog.json',
+      '--assets',
+      'public',
+      '--mapping',
+      write('mapping.json', MAPPING_TEXT),
+      '--out',
+      folder,
+    ],
+    { encoding: 'utf8' },
+  );
+  expect(r.stderr).toBe('');
+  expect(r.status).toBe(0);
+});
+
+test.afterAll(() => {
+  if (folder) rmSync(join(folder, '..'), { recursive: true, force: true });
+});
+
+test('an imported GLDF catalog folder: a track spot on the rail in German, priced in the BOM, lit in 3D by its own photometry', async ({ page }) => {
+  const served: string[] = [];
+  // By path: the page's own URL names the folder in its query.
+  await page.route(
+    (url) => url.pathname.startsWith('/gldf-shop/'),
+    async (route) => {
+      const path = normalize(decodeURIComponent(new URL(route.request().url()).pathname.replace(/^\/gldf-shop\//, '')));
+      const file = join(folder, path);
+      if (path.startsWith('..') || !existsSync(file)) return route.fulfill({ status: 404, body: 'not found' });
+      served.push(path);
+      await route.fulfill({ body: readFileSync(file), contentType: path.endsWith('.json') ? 'application/json' : 'text/plain' });
+    },
+  );
+  await page.goto('/?catalog=/gldf-shop/catalog.json&lang=de&quality=balanced');
+  await page.getByRole('button', { name: 'Planung beginnen' }).click();
+  await page.getByTestId('preset-single').click();
+  const railId = (await sceneFile(page)).configuration.systems[0].rails[0].id;
+  const added = await page.evaluate((id) => window.luxbox!.runAction('addModule', { railId: id, type: 'track-spot' }), railId);
+  expect(added).toMatchObject({ ok: true });
+
+  // The GLDF's German Locale texts name the module; the mapping's price and the article number the import made.
+  const bom = page.getByTestId('bom');
+  await expect(bom).toContainText('Schienenstrahler, Mittlerer Spot, 3000 K');
+  const line = await page.evaluate(() => window.luxbox!.getBillOfMaterials().lines.find((l) => l.article === 'LTL-TS-M-3000'));
+  expect(line).toMatchObject({ count: 1, unitPrice: 189 });
+  await expect(bom.locator('tr', { hasText: 'Schienenstrahler, Mittlerer Spot, 3000 K' })).toContainText('189,00');
+
+  // 3D: the bake runs with the imported photometry, fetched from the folder (assetBase).
+  await page.getByTestId('tool-3d').click();
+  await expect.poll(() => page.evaluate(() => window.luxbox!.view3d().lit), { timeout: 90_000, intervals: [250] }).toBe(true);
+  expect(served).toContain('catalog.json');
+  expect(served).toContain('ies/track-spot-medium.ldt');
+  // What was baked: the lighting scene names the imported beam's photometry and its rated flux.
+  const scene = await page.evaluate(() => JSON.stringify(window.luxbox!.getLightingScene()));
+  expect(scene).toContain('"ies/track-spot-medium.ldt"');
+});
