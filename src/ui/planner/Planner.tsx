@@ -13,7 +13,7 @@ import { PlanControls } from './PlanControls';
 import { PlanSvg } from './PlanSvg';
 import { PresetPanel } from './PresetPanel';
 import { FURNITURE_DRAG_TYPE, FurniturePanel } from './FurniturePanel';
-import { ImportPanel } from './ImportPanel';
+import { LazyImportPanel } from './LazyImportPanel';
 import type { MeshUnits } from '../../core/model/configuration/configuration';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
 import { FilePanel } from './FilePanel';
@@ -287,7 +287,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
             }}
           />
           <FurniturePanel gate={gate} onAdd={addFurniture}>
-            <ImportPanel onAdd={addImported} />
+            <LazyImportPanel onAdd={addImported} />
           </FurniturePanel>
           <ScenePanel store={store} />
           <SurfacesPanel room={config.room} finishes={defaultSurfaceFinishes} gate={gate} />
