@@ -42,7 +42,7 @@ import { requestFootprints } from './moduleFootprint';
 import { usePlannerKeys } from './usePlannerKeys';
 import { useFitCompact } from './useFitCompact';
 import { LazyScenePanel as ScenePanel } from '../scenes/LazyScenePanel';
-import { scenePlayerFor } from '../scenes/createScenePlayer';
+import { scenePlayerHandle } from '../scenes/scenePlayerHandle';
 import { mixLevels, outputLevels } from '../../core/model/cues/sceneFade';
 import { PlanAnnouncer } from './PlanAnnouncer';
 import type { Landmarks } from '../shared/landmarks';
@@ -134,7 +134,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
   }, [optionsOpen, selection]);
 
   // A light-scene crossfade: the plan shows each module's level as it fades (docs/light-scenes.md).
-  const player = scenePlayerFor(store);
+  const player = scenePlayerHandle(store);
   const fading = useSyncExternalStore(player.subscribe, () => player.getState().fading);
   const fadeLevelsShown = useMemo(() => (fading ? mixLevels(fading.fromLevels, outputLevels(fading.to), fading.e) : null), [fading]);
 
