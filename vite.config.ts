@@ -115,6 +115,7 @@ function zodWithoutJsonSchema(): Plugin {
       // dist/.vite/manifest.json: lets the bundle benchmark follow each chunk's static imports.
       manifest: true,
       chunkSizeWarningLimit: 1200,
+      modulePreload: { polyfill: false },
       // Two pages: the app at / and the shop-page embedding example at /embed.html (docs/embedding.md).
       rolldownOptions: {
         input: { main: 'index.html', embed: 'embed.html' },

@@ -9,7 +9,7 @@
  * `.min(n)` is `check(gte(n))` on numbers and `check(minLength(n))` on strings
  * and arrays, `.int()` checks the integer format, `.optional()` wraps, and so
  * on (zod/v4/classic/schemas.js). Messages are zod's English ones (the locale
- * classic loads by default). A method luxbox does not use is not here: calling
+ * classic loads by default, cut to what luxbox's schemas can say: zodEnglish.ts). A method luxbox does not use is not here: calling
  * one fails loudly in the browser build and its tests (tests/core/zodClassicOnMini.test.ts).
  */
 import {
@@ -45,9 +45,10 @@ import {
   type ZodMiniObject,
   type ZodMiniType,
 } from 'zod/mini';
-import en from 'zod/v4/locales/en.js';
+import { zodEnglishError } from './zodEnglish';
 
-config(en());
+// zod's English messages, without the names of string formats no luxbox schema has (zodEnglish.ts).
+config({ localeError: zodEnglishError });
 
 /** Classic's per-check params (`'message'` or `{ error, message, abort }`), passed on untouched. */
 type Params = string | { error?: unknown; message?: string; abort?: boolean };

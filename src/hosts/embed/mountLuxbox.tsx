@@ -24,7 +24,7 @@ import { ColourFilterSpectraPending } from '../../core/colour/colourFilterSpectr
 export { EmbedOptionsError };
 import { getViewerStatus } from '../../ui/viewer/viewerStatus';
 import { createBakeHost } from '../../ui/viewer/bakeHost';
-import { scenePlayerFor } from '../../ui/scenes/createScenePlayer';
+import { preparePlayerWhenIdle, scenePlayerHandle } from '../../ui/scenes/scenePlayerHandle';
 import { FADE_LIMITS, sceneByName } from '../../core/model/cues/lightScenes';
 import { createI18n } from '../../ui/i18n/createI18n';
 import { I18nProvider } from '../../ui/i18n/I18nProvider';
@@ -187,7 +187,9 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
   // The 3D bake lives as long as this configurator (started in idle time once the plan shows).
   const bakeHost = createBakeHost(store, footprints.loadPhotometry, { quality: quality ?? null, remember: options.rememberQuality === true, exposure: options.exposure ?? 'auto', ...(adaptation ? { adaptation } : {}) });
   // Light-scene playback, shared by the scene panel, the keyboard and the API below; fades relight the bake host's engine.
-  const scenePlayer = scenePlayerFor(store, { feed: () => bakeHost.current() });
+  // (The player's code is a lazy chunk, made in idle time: scenePlayerHandle.ts.)
+  const scenePlayer = scenePlayerHandle(store, { feed: () => bakeHost.current() });
+  preparePlayerWhenIdle(store);
   // The class scopes every luxbox style rule to this element and makes it the container whose
   // width the layout's breakpoints query (app.css); a class the host put there itself stays on destroy.
   const hadRootClass = element.classList.contains(ROOT_CLASS);

@@ -4,6 +4,8 @@ import type enOptionsPanel from './messages/en/optionsPanel';
 import type enCore from './messages/en/core';
 import type enPanelExtras from './messages/en/panelExtras';
 import type enGuidance from './messages/en/guidance';
+import type enScenes from './messages/en/scenes';
+import type enA11y from './messages/en/a11y';
 
 /**
  * A message that depends on a count: the CLDR plural category of `params.count` picks the text
@@ -24,9 +26,11 @@ export interface PluralMessage {
  * the options panel's (messages/en/optionsPanel.ts) with the options panel's chunk, the share and
  * import-preview parts' (messages/en/panelExtras.ts) with theirs,
  * its core-code areas (messages/en/core.ts) with the first other language loaded, the planner's
- * guidance (messages/en/guidance.ts: first run, remedies) with the guidance chunk.
+ * guidance (messages/en/guidance.ts: first run, remedies) with the guidance chunk, the light scenes'
+ * (messages/en/scenes.ts) with the scene panel's and the 3D view's chunks, the screen-reader
+ * announcements' (messages/en/a11y.ts) with theirs.
  */
-export type SourceMessages = typeof en & typeof enLazy & typeof enOptionsPanel & typeof enCore & typeof enPanelExtras & { guidance: typeof enGuidance };
+export type SourceMessages = typeof en & typeof enLazy & typeof enOptionsPanel & typeof enCore & typeof enPanelExtras & { guidance: typeof enGuidance; scenes: typeof enScenes; a11y: typeof enA11y };
 
 export type Area = keyof SourceMessages & string;
 

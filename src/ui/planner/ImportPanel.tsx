@@ -1,4 +1,4 @@
-import { lazy, Suspense, useRef, useState, type ChangeEvent } from 'react';
+import { lazy, Suspense, useEffect, useRef, useState } from 'react';
 import { InputError } from '../../core/inputError';
 import { MESH_UNITS, type MeshUnits } from '../../core/model/configuration/configuration';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
@@ -6,9 +6,9 @@ import type { ImportedMesh, MeshFile } from '../../engines/meshImport/importedMe
 import { itemDimensions } from './FurniturePanel';
 import { useI18n } from '../i18n/useI18n';
 import type { MessageKey } from '../i18n/messageTypes';
+import { ImportPicker } from './ImportPicker';
 
-/** What the file picker offers: an OBJ with its MTL (picked together), a glTF (with its .bin buffers) or a GLB. */
-export const IMPORT_ACCEPT = '.obj,.mtl,.gltf,.glb,.bin';
+export { IMPORT_ACCEPT } from './ImportPicker';
 
 // The summary of how the model was oriented loads with the first preview (its texts ship with it).
 const ImportOrientation = lazy(() => import('./ImportOrientation'));
@@ -27,6 +27,8 @@ async function readModel(files: readonly MeshFile[], units: 'auto' | MeshUnits):
 export interface ImportPanelProps {
   /** Adds the model to the room; returns null when it was added, else the model's reason. */
   onAdd: (name: string, mesh: TriangleMesh, units: MeshUnits) => string | null;
+  /** Files picked on the stand-in button before this panel's chunk arrived (LazyImportPanel): read at mount. */
+  picked?: readonly File[];
 }
 
 /**
@@ -36,7 +38,7 @@ export interface ImportPanelProps {
  * Problems with the files are shown here, naming the file; the configuration is untouched
  * until the user adds the model.
  */
-export function ImportPanel({ onAdd }: ImportPanelProps) {
+export function ImportPanel({ onAdd, picked: pickedEarly }: ImportPanelProps) {
   const { t, format } = useI18n();
   const [files, setFiles] = useState<MeshFile[] | null>(null);
   const [model, setModel] = useState<ImportedMesh | null>(null);
@@ -63,16 +65,20 @@ export function ImportPanel({ onAdd }: ImportPanelProps) {
     }
   };
 
-  const pick = async (e: ChangeEvent<HTMLInputElement>) => {
-    const input = e.currentTarget;
-    const list = [...(input.files ?? [])];
-    // Cleared so that picking the same files again fires change again.
-    input.value = '';
-    if (list.length === 0) return;
+  const pick = async (list: readonly File[]) => {
     const picked = await Promise.all(list.map(async (f) => ({ name: f.name, bytes: new Uint8Array(await f.arrayBuffer()) })));
     setFiles(picked);
     await read(picked, 'auto');
   };
+
+  // Files picked before the chunk arrived are read once, as a pick now would be.
+  const early = useRef(pickedEarly);
+  useEffect(() => {
+    const list = early.current;
+    early.current = undefined;
+    if (list) void pick(list);
+    // eslint-disable-next-line react-hooks/exhaustive-deps -- once, at mount
+  }, []);
 
   const cancel = () => {
     seq.current++;
@@ -92,11 +98,7 @@ export function ImportPanel({ onAdd }: ImportPanelProps) {
   const b = model?.bounds;
   return (
     <div className="import-model" data-testid="import-panel">
-      <label className="btn import-file-button">
-        <input type="file" multiple accept={IMPORT_ACCEPT} className="file-input" onChange={(e) => void pick(e)} data-testid="import-file" />
-        {t('files.importModel')}
-      </label>
-      <p className="empty-note">{t('files.importHint')}</p>
+      <ImportPicker onPick={(list) => void pick(list)} />
       {busy && (
         <p className="empty-note" role="status">
           {t('files.readingModel')}

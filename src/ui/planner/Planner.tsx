@@ -13,7 +13,7 @@ import { PlanControls } from './PlanControls';
 import { PlanSvg } from './PlanSvg';
 import { PresetPanel } from './PresetPanel';
 import { FURNITURE_DRAG_TYPE, FurniturePanel } from './FurniturePanel';
-import { ImportPanel } from './ImportPanel';
+import { LazyImportPanel } from './LazyImportPanel';
 import type { MeshUnits } from '../../core/model/configuration/configuration';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
 import { FilePanel } from './FilePanel';
@@ -44,7 +44,7 @@ import { requestFootprints } from './moduleFootprint';
 import { usePlannerKeys } from './usePlannerKeys';
 import { useFitCompact } from './useFitCompact';
 import { LazyScenePanel as ScenePanel } from '../scenes/LazyScenePanel';
-import { scenePlayerFor } from '../scenes/createScenePlayer';
+import { scenePlayerHandle } from '../scenes/scenePlayerHandle';
 import { mixLevels, outputLevels } from '../../core/model/cues/sceneFade';
 import { PlanAnnouncer } from './PlanAnnouncer';
 import type { Landmarks } from '../shared/landmarks';
@@ -138,7 +138,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
   }, [optionsOpen, selection]);
 
   // A light-scene crossfade: the plan shows each module's level as it fades (docs/light-scenes.md).
-  const player = scenePlayerFor(store);
+  const player = scenePlayerHandle(store);
   const fading = useSyncExternalStore(player.subscribe, () => player.getState().fading);
   const fadeLevelsShown = useMemo(() => (fading ? mixLevels(fading.fromLevels, outputLevels(fading.to), fading.e) : null), [fading]);
 
@@ -305,7 +305,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
             }}
           />
           <FurniturePanel gate={gate} onAdd={addFurniture}>
-            <ImportPanel onAdd={addImported} />
+            <LazyImportPanel onAdd={addImported} />
           </FurniturePanel>
           <ScenePanel store={store} />
           <SurfacesPanel room={config.room} finishes={defaultSurfaceFinishes} gate={gate} />

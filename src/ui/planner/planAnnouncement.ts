@@ -5,6 +5,7 @@ import type { Format } from '../i18n/createFormat';
 import type { Language } from '../i18n/languages';
 import { localLabel, localName } from '../i18n/localName';
 import type { Translate } from '../i18n/messageTypes';
+import '../i18n/registerA11yEnglish';
 
 /** What the announcer compares between two states of the configurator store. */
 export interface AnnouncedState {

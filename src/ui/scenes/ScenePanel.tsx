@@ -7,6 +7,7 @@ import { translateCoded } from '../i18n/translateCoded';
 import { scenePlayerFor, type RecallResult, type TransportStop } from './createScenePlayer';
 import { useSceneKeys } from './useSceneKeys';
 import './scenes.css';
+import '../i18n/registerScenesEnglish';
 
 /**
  * Focuses the rename field when it appears. Not `autoFocus`: React focuses such an element on mount,

@@ -16,6 +16,7 @@ import { fadeFraction, levelsOutput, mixLevels, mixLights, outputLevels, type Mo
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import type { BakeFeed } from '../viewer/startBakeFeed';
 import { fromScene, lightsOf } from '../../engines/view/sceneLights';
+import { playerOf } from './scenePlayerHandle';
 
 export interface SceneFadeState {
   readonly sceneId: string;
@@ -225,11 +226,10 @@ export function createScenePlayer(store: ConfiguratorStore, options: ScenePlayer
   return player;
 }
 
-const players = new WeakMap<ConfiguratorStore, ScenePlayer>();
-
-/** The store's scene player, created on first use (the panel, the keys and the embedding API share it). */
+/**
+ * The store's scene player, created on first use with the options first given to it or to its
+ * handle (scenePlayerHandle.ts): the panel, the keys, the plan and the embedding API share it.
+ */
 export function scenePlayerFor(store: ConfiguratorStore, options?: ScenePlayerOptions): ScenePlayer {
-  let p = players.get(store);
-  if (!p) players.set(store, (p = createScenePlayer(store, options)));
-  return p;
+  return playerOf(store, options, (o) => createScenePlayer(store, o));
 }

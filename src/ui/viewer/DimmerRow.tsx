@@ -1,6 +1,7 @@
 import { useState } from 'react';
 import { useI18n } from '../i18n/useI18n';
 import './registerView3dEnglish';
+import '../i18n/registerScenesEnglish';
 
 /**
  * A module's dimmer: moves freely while dragged, commits one undoable action on release (follows the stored value when that changes, e.g. on undo).

@@ -18,6 +18,7 @@ import { coreParams, noticeText } from '../../../src/ui/i18n/noticeText';
 import { translateCoded, type CodedMessage } from '../../../src/ui/i18n/translateCoded';
 import refusals from '../../../src/ui/i18n/messages/en/refusals';
 import fileErrors from '../../../src/ui/i18n/messages/en/fileErrors';
+import scenes from '../../../src/ui/i18n/messages/en/scenes';
 import photometry from '../../../src/ui/i18n/messages/en/photometry';
 import { catalog, only, run, withPreset } from '../../core/model/helpers';
 
@@ -209,7 +210,8 @@ describe('the English catalogue has every code the core emits', () => {
     (readdirSyncRecursive(new URL(`../../../src/core/${dir}/`, import.meta.url)) as string[]).filter((f) => f.endsWith('.ts'));
   const source = ['model', 'photometry'].flatMap(files).concat(['inputError.ts', 'untrustedJson.ts', 'zodIssues.ts'].map((f) => new URL(`../../../src/core/${f}`, import.meta.url).pathname));
   it('collects the codes given to refusals, InputErrors, keyed problems and photometry patterns', async () => {
-    const en = { ...(await loadMessages('en')), refusals, fileErrors, photometry };
+    // The scene actions' codes are worded by the scene panel from its area, which ships with that panel's chunk.
+    const en = { ...(await loadMessages('en')), refusals, fileErrors, photometry, scenes };
     const known = new Set(Object.values(en).flatMap((area) => Object.keys(area as object)));
     const found = new Set<string>();
     for (const file of source) {

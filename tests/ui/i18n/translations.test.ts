@@ -5,6 +5,8 @@ import lazyEnglish from '../../../src/ui/i18n/messages/en/lazy';
 import optionsPanelEnglish from '../../../src/ui/i18n/messages/en/optionsPanel';
 import panelExtrasEnglish from '../../../src/ui/i18n/messages/en/panelExtras';
 import guidanceEnglish from '../../../src/ui/i18n/messages/en/guidance';
+import scenesEnglish from '../../../src/ui/i18n/messages/en/scenes';
+import a11yEnglish from '../../../src/ui/i18n/messages/en/a11y';
 import type { MessageTree, PluralMessage } from '../../../src/ui/i18n/messageTypes';
 import { hasWord } from './findHardCodedText';
 import defaultCatalog from '../../../src/core/catalog/default-catalog.json';
@@ -36,6 +38,7 @@ describe('translations', async () => {
   registerEnglishAreas(optionsPanelEnglish);
   registerEnglishAreas(panelExtrasEnglish);
   registerEnglishAreas({ guidance: guidanceEnglish });
+  registerEnglishAreas({ scenes: scenesEnglish, a11y: a11yEnglish });
   // And the English of the core's codes, which comes with the other languages (docs/i18n.md, "Bundles").
   await loadCoreEnglish();
   const en = flatten(await loadMessages('en'));
