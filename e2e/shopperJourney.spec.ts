@@ -34,7 +34,12 @@ async function expectNoJargon(page: Page, step: string): Promise<void> {
   const ids = new Set<string>();
   const collect = (v: unknown) => {
     if (Array.isArray(v)) v.forEach(collect);
-    else if (v && typeof v === 'object') for (const [k, x] of Object.entries(v)) (k === 'id' && typeof x === 'string' ? ids.add(x) : collect(x));
+    else if (v && typeof v === 'object') {
+      for (const [k, x] of Object.entries(v)) {
+        if (k === 'id' && typeof x === 'string') ids.add(x);
+        else collect(x);
+      }
+    }
   };
   collect(file.configuration);
   const words = new Set(text.split(/[^\p{L}\p{N}_-]+/u));
