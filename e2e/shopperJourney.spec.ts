@@ -1,3 +1,4 @@
+import AxeBuilder from '@axe-core/playwright';
 import { expect, test, type Locator, type Page } from '@playwright/test';
 import { footprintsReady, moduleCount, sceneFile, zoomToModuleLevel } from './helpers';
 
@@ -7,7 +8,7 @@ import { footprintsReady, moduleCount, sceneFile, zoomToModuleLevel } from './he
 // card → + until refused → the one-tap remedy at the control → more modules → 3D and back → Teilen…
 // (the Web Share API recorded, as in shareLink.spec.ts) → the shared link in a fresh browser shows
 // the same configuration. At each step the shopper-visible text (Expert off) is checked for ids and
-// Greek letters. Screenshots: test-results/journey-*.png (docs/planner.md, "Issue 27 coverage").
+// Greek letters, and axe finds no violations. Screenshots: test-results/journey-*.png (docs/planner.md, "Issue 27 coverage").
 
 const PHONE = { viewport: { width: 390, height: 844 }, hasTouch: true, isMobile: true, locale: 'de-DE', reducedMotion: 'reduce' } as const;
 
@@ -50,6 +51,12 @@ async function expectNoJargon(page: Page, step: string): Promise<void> {
   expect(text.match(/[\u0370-\u03ff]/g) ?? [], `${step}: Greek letters`).toEqual([]);
 }
 
+/** axe's violations of any impact, as readable lines (the issue's Tests: "an axe scan stays at zero violations"). */
+async function violations(page: Page): Promise<string[]> {
+  const result = await new AxeBuilder({ page }).analyze();
+  return result.violations.flatMap((v) => v.nodes.map((n) => `${v.impact} ${v.id} (${v.help}): ${n.target.join(' ')}`));
+}
+
 const tapIt = (l: Locator) => l.tap({ force: true });
 
 test('German phone, touch: the L corner from the first run, past the full driver by one tap, 3D and back, shared and reopened', async ({ browser }) => {
@@ -69,6 +76,7 @@ test('German phone, touch: the L corner from the first run, past the full driver
   const card = page.getByTestId('first-run');
   await expect(card).toContainText('Mit einer Vorlage beginnen');
   await expectNoJargon(page, 'first run');
+  expect(await violations(page), 'first run').toEqual([]);
   await page.screenshot({ path: 'test-results/journey-1-first-run.png' });
   await tapIt(page.getByTestId('first-run-corner-l'));
   await expect(card).toHaveCount(0);
@@ -90,6 +98,7 @@ test('German phone, touch: the L corner from the first run, past the full driver
   // A message starts with a capital (issue 27, "Words for shoppers").
   expect((await tip.innerText()).trim()).toMatch(/^\p{Lu}/u);
   await expectNoJargon(page, 'refusal tip');
+  expect(await violations(page), 'refusal tip').toEqual([]);
   await page.screenshot({ path: 'test-results/journey-2-remedy.png' });
   await tapIt(tip.getByTestId('remedy'));
   await expect(tip).toHaveCount(0);
@@ -127,6 +136,7 @@ test('German phone, touch: the L corner from the first run, past the full driver
   await expect(page.locator('.viewer3d-modules')).toHaveAttribute('open', '');
   await expect(page.locator('.viewer3d-modules label').first()).toContainText(/^\S.*, Modul 1 von \d+ auf Schiene 1: \d+\s%$/);
   await expectNoJargon(page, '3D view, dimmers open');
+  expect(await violations(page), '3D view, dimmers open').toEqual([]);
   await page.screenshot({ path: 'test-results/journey-4-3d.png' });
   await tapIt(page.getByTestId('tool-3d'));
   await expect(page.getByTestId('plan')).toBeVisible();
@@ -136,6 +146,7 @@ test('German phone, touch: the L corner from the first run, past the full driver
   await tapIt(page.getByTestId('panel-toggle'));
   await expect(page.locator('.side-panel.open')).toBeVisible();
   await expectNoJargon(page, 'side panel');
+  expect(await violations(page), 'side panel').toEqual([]);
   await tapIt(page.getByTestId('share'));
   const native = page.getByTestId('share-native');
   await native.scrollIntoViewIfNeeded();
