@@ -291,8 +291,18 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true, 
   }, [plane, mapsVersion, progress.done]);
 
   const modules = useMemo(
-    () => config.systems.flatMap((s) => s.rails.flatMap((r) => r.modules.map((m) => ({ id: m.id, type: m.type, dimming: m.dimming, on: m.on })))),
-    [config],
+    () =>
+      config.systems.flatMap((s, si) =>
+        s.rails.flatMap((r, ri) =>
+          r.modules.map((m, mi) => {
+            // The shopper's words (issue 27): the catalog's name and the module's place, never its id.
+            const type = catalog.moduleTypes.find((x) => x.id === m.type);
+            const where = t(config.systems.length > 1 ? 'a11y.moduleInSystem' : 'a11y.module', { index: mi + 1, count: r.modules.length, rail: ri + 1, system: si + 1 });
+            return { id: m.id, name: `${type ? localName(type, language) : m.type}, ${where}`, dimming: m.dimming, on: m.on };
+          }),
+        ),
+      ),
+    [config, catalog, t, language],
   );
   const maxPlane = config.room.height - 0.1;
 
@@ -386,7 +396,7 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true, 
               <DimmerRow
                 key={m.id}
                 id={m.id}
-                type={m.type}
+                name={m.name}
                 dimming={m.dimming}
                 onCommit={(d) => store.getState().dispatch('setModuleDimming', { moduleId: m.id, dimming: d })}
                 on={m.on !== false}

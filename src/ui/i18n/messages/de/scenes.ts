@@ -26,7 +26,7 @@ export default {
   renameLabel: '{name} umbenennen',
   moveUp: '{name} nach oben',
   moveDown: '{name} nach unten',
-  moduleOn: 'Modul {id} ein',
+  moduleOn: '{name}: ein',
   deleteLabel: '{name} löschen',
   nameTaken: 'Eine Lichtszene namens „{name}“ gibt es schon',
   nameMissing: 'Eine Lichtszene braucht einen Namen',

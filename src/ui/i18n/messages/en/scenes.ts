@@ -24,7 +24,7 @@ export default {
   renameLabel: 'Rename {name}',
   moveUp: 'Move {name} up',
   moveDown: 'Move {name} down',
-  moduleOn: 'Module {id} on',
+  moduleOn: '{name}: on',
   deleteLabel: 'Delete {name}',
   // Refusals of the scene actions (codes from src/core/model/actions/sceneActions.ts).
   nameTaken: 'A light scene named “{name}” exists already',

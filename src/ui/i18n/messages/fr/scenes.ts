@@ -26,7 +26,7 @@ export default {
   renameLabel: 'Renommer {name}',
   moveUp: 'Monter {name}',
   moveDown: 'Descendre {name}',
-  moduleOn: 'Module {id} allumé',
+  moduleOn: '{name} : allumé',
   deleteLabel: 'Supprimer {name}',
   nameTaken: 'Une scène nommée « {name} » existe déjà',
   nameMissing: 'Une scène lumineuse doit avoir un nom',

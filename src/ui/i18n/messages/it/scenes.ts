@@ -26,7 +26,7 @@ export default {
   renameLabel: 'Rinomina {name}',
   moveUp: 'Sposta su {name}',
   moveDown: 'Sposta giù {name}',
-  moduleOn: 'Modulo {id} acceso',
+  moduleOn: '{name}: acceso',
   deleteLabel: 'Elimina {name}',
   nameTaken: 'Esiste già una scena chiamata «{name}»',
   nameMissing: 'Una scena luminosa ha bisogno di un nome',
