@@ -65,8 +65,12 @@ export function Configurator({ store, ui, languageSwitch = false, onRestoreSaved
 
   const share = () => {
     const { link, leftOut: names } = shareLink();
-    // The clipboard needs a secure context and permission; the link is also shown as text.
-    void navigator.clipboard?.writeText(link).catch(() => undefined);
+    // One tap shares (issue 27): where the browser has the Web Share API (phones, tablets) the
+    // system's share sheet opens at once, inside this tap's user activation; elsewhere the link goes
+    // to the clipboard. Either way the link is also shown, with Copy and Share… beside it.
+    if (typeof navigator.share === 'function') void navigator.share({ url: link }).catch(() => undefined);
+    // The clipboard needs a secure context and permission.
+    else void navigator.clipboard?.writeText(link).catch(() => undefined);
     setLeftOut(names);
     ui.setState({ shareLink: link });
     return names.length > 0 ? t('app.shareCreatedWithoutModels') : t('app.shareCreated');
