@@ -22,6 +22,7 @@ import { LuxLegend } from './LuxLegend';
 import type { ViewMode } from '../../engines/view/roomView';
 import { CLOSED_STATUS, setViewerStatus, type ViewerStatus } from './viewerStatus';
 import { bakeHostFor } from './bakeHost';
+import { initialGlare, storeGlare } from './glarePreference';
 import type { BakeFeed, ResolvedScene } from './startBakeFeed';
 import { aimEvents, SpotlightControls } from './SpotlightControls';
 import { INITIAL_CAMERA_MODE, nextCameraMode, presetPressed, type CameraMode, type CameraModeEvent } from './cameraMode';
@@ -106,6 +107,9 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true, 
   const [progress, setProgress] = useState({ fraction: 0, done: false, lit: false });
   const [error, setError] = useState<string | null>(null);
   const [mode, setMode] = useState<ViewMode>('light');
+  // Veiling glare (docs/viewer.md, "Glare"): on by default, remembered where the host lets luxbox remember.
+  const [glare, setGlare] = useState(() => initialGlare(host.remember));
+  const glareRef = useRef(glare);
   // The camera's mode (a preset's orbit or a module's spotlight view): one state for both sets of buttons.
   const [camera, setCamera] = useState<CameraMode>(INITIAL_CAMERA_MODE);
   const cameraEvent = useCallback((e: CameraModeEvent) => setCamera((m) => nextCameraMode(m, e)), []);
@@ -231,6 +235,7 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true, 
     if (typeof host.exposure === 'number') controller.setEv100(host.exposure);
     // The chromatic adaptation the page asked for (embed option `adapt`, default eye).
     controller.setAdaptation(host.adaptation);
+    controller.setGlare(glareRef.current);
     ctrl.current = controller;
     queueMicrotask(() => setControllerVersion((v) => v + 1));
     // Made while hidden (the feed arrived after the user went back to the plan): no frames until shown.
@@ -353,6 +358,21 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true, 
           </button>
           <button type="button" className={`btn${mode === 'lux' ? ' btn-primary' : ''}`} aria-pressed={mode === 'lux'} onClick={() => { setMode('lux'); ctrl.current?.setMode('lux'); }} data-testid="mode-lux">
             {t('view3d.modeLux')}
+          </button>
+          <button
+            type="button"
+            className={`btn${glare ? ' btn-primary' : ''}`}
+            aria-pressed={glare}
+            title={t('view3d.glareHint')}
+            onClick={() => {
+              setGlare(!glare);
+              glareRef.current = !glare;
+              storeGlare(!glare, host.remember);
+              ctrl.current?.setGlare(!glare);
+            }}
+            data-testid="glare-toggle"
+          >
+            {t('view3d.glare')}
           </button>
         </div>
         <div className="viewer3d-group" role="group" aria-label={t('view3d.quality')}>
