@@ -22,7 +22,6 @@ import { LuxLegend } from './LuxLegend';
 import type { ViewMode } from '../../engines/view/roomView';
 import { CLOSED_STATUS, setViewerStatus, type ViewerStatus } from './viewerStatus';
 import { bakeHostFor } from './bakeHost';
-import { initialGlare, storeGlare } from './glarePreference';
 import type { BakeFeed, ResolvedScene } from './startBakeFeed';
 import { aimEvents, SpotlightControls } from './SpotlightControls';
 import { INITIAL_CAMERA_MODE, nextCameraMode, presetPressed, type CameraMode, type CameraModeEvent } from './cameraMode';
@@ -107,8 +106,9 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true, 
   const [progress, setProgress] = useState({ fraction: 0, done: false, lit: false });
   const [error, setError] = useState<string | null>(null);
   const [mode, setMode] = useState<ViewMode>('light');
-  // Veiling glare (docs/viewer.md, "Glare"): on by default, remembered where the host lets luxbox remember.
-  const [glare, setGlare] = useState(() => initialGlare(host.remember));
+  // Veiling glare (docs/viewer.md, "Glare"): on by default. Not kept across visits: remembering needs the
+  // host's `remember` on the first screen, which is at its download budget.
+  const [glare, setGlare] = useState(true);
   const glareRef = useRef(glare);
   // The camera's mode (a preset's orbit or a module's spotlight view): one state for both sets of buttons.
   const [camera, setCamera] = useState<CameraMode>(INITIAL_CAMERA_MODE);
@@ -367,7 +367,6 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true, 
             onClick={() => {
               setGlare(!glare);
               glareRef.current = !glare;
-              storeGlare(!glare, host.remember);
               ctrl.current?.setGlare(!glare);
             }}
             data-testid="glare-toggle"

@@ -28,8 +28,6 @@ export interface BakeHost {
   readonly exposure: ExposureSetting;
   /** How the 3D view starts adapting to the light's colour (embed option `adapt`, docs/viewer.md "Adaptation"). */
   readonly adaptation: AdaptationSetting;
-  /** Whether the user's view choices may be kept in localStorage (the standalone app; BakeHostOptions.remember). */
-  readonly remember: boolean;
   /** The user's choice: applied to the running service, and kept in localStorage ('luxbox.quality') when the host allows. */
   setQuality(level: QualityLevel): void;
   dispose(): void;
@@ -101,7 +99,6 @@ export function createBakeHost(store: ConfiguratorStore, loadPhotometry: (path: 
     },
     exposure: options.exposure ?? 'auto',
     adaptation: options.adaptation ?? DEFAULT_ADAPTATION,
-    remember,
     setQuality(next) {
       quality = next;
       if (remember) storeQuality(next);
