@@ -3,6 +3,7 @@ import { defaultSurfaceFinishes } from '../../core/catalog/surfaceFinishes';
 import { matchFinish, type SurfaceFinish } from '../../core/model/catalogSchema/surfaceFinish';
 import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 import { encodeModulation, finishModulation, mipChain } from './finishTexture';
+import { FINISH_TEXTURE_OF } from './finishTextureKinds';
 
 /** One finish's pattern on the GPU: the texture, the gain that makes its 8-bit mean exactly 1, and its period in metres. */
 export interface FinishTextureOnGpu {
@@ -28,10 +29,11 @@ export function createFinishTextures(renderer: THREE.WebGLRenderer, finishes: re
   return {
     forReflectance(reflectance) {
       const finish = matchFinish(finishes, reflectance);
-      if (!finish?.texture) return null;
+      const kind = finish ? FINISH_TEXTURE_OF[finish.id] : undefined;
+      if (!finish || !kind) return null;
       let t = made.get(finish.id);
       if (!t) {
-        const mod = finishModulation(finish.texture, reflectance, 1);
+        const mod = finishModulation(kind, reflectance, 1);
         const { data, gain } = encodeModulation(mod);
         const texture = new THREE.DataTexture(data, mod.size, mod.size, THREE.RGBAFormat, THREE.UnsignedByteType);
         texture.wrapS = texture.wrapT = THREE.RepeatWrapping;

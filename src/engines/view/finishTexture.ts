@@ -1,5 +1,5 @@
 import type { Rgb } from '../../core/model/lightingScene/lightingScene';
-import type { FinishTexture } from '../../core/model/catalogSchema/surfaceFinish';
+import type { FinishTexture } from './finishTextureKinds';
 
 /**
  * A finish's surface pattern as a modulation m(u, v) of its reflectance, tiling a square of

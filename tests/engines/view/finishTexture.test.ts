@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { defaultSurfaceFinishes } from '../../../src/core/catalog/surfaceFinishes';
-import { FINISH_TEXTURES } from '../../../src/core/model/catalogSchema/surfaceFinish';
+import { FINISH_TEXTURE_OF, FINISH_TEXTURES } from '../../../src/engines/view/finishTextureKinds';
 import type { Rgb } from '../../../src/core/model/lightingScene/lightingScene';
 import { encodeModulation, finishModulation, mipChain } from '../../../src/engines/view/finishTexture';
 
@@ -15,7 +15,7 @@ describe('finish textures: mean exactly ρ', () => {
   // Every kind at a dark, a mid and the brightest finish reflectance, plus every catalogue finish with its own ρ.
   const cases: [string, (typeof FINISH_TEXTURES)[number], Rgb][] = [
     ...FINISH_TEXTURES.flatMap((k) => [0.1, 0.5, 0.9].map((r): [string, (typeof FINISH_TEXTURES)[number], Rgb] => [`${k} ρ=${r}`, k, [r, r, r]])),
-    ...defaultSurfaceFinishes.filter((f) => f.texture).map((f): [string, (typeof FINISH_TEXTURES)[number], Rgb] => [f.id, f.texture!, rgb(f.reflectance)]),
+    ...defaultSurfaceFinishes.map((f): [string, (typeof FINISH_TEXTURES)[number], Rgb] => [f.id, FINISH_TEXTURE_OF[f.id], rgb(f.reflectance)]),
   ];
   it.each(cases)('%s: mean 1 within 1e-6 per channel, 0 ≤ m, ρ·m ≤ 1, a visible but subtle pattern', (_, kind, rho) => {
     const mod = finishModulation(kind, rho);
@@ -86,7 +86,8 @@ describe('finish textures: mean exactly ρ', () => {
     for (const l of levels.slice(0, 6)) expect(Math.abs(mean(Array.from(l.data.filter((_, k) => k % 4 === 0))) - base)).toBeLessThan(0.1);
   });
 
-  it('every catalogue finish names a texture kind', () => {
-    expect(defaultSurfaceFinishes.every((f) => f.texture && FINISH_TEXTURES.includes(f.texture))).toBe(true);
+  it('every shipped finish has a texture kind, and every kind named is a shipped finish', () => {
+    expect(defaultSurfaceFinishes.every((f) => FINISH_TEXTURES.includes(FINISH_TEXTURE_OF[f.id]))).toBe(true);
+    expect(Object.keys(FINISH_TEXTURE_OF).every((id) => defaultSurfaceFinishes.some((f) => f.id === id))).toBe(true);
   });
 });

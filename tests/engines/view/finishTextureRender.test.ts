@@ -12,6 +12,7 @@ import { surfaceLayouts } from '../../../src/engines/bake/surfaceLayout';
 import { emptyLitMaps } from '../../../src/engines/relight/relightMaps';
 import { createRoomSurfaces } from '../../../src/engines/view/createRoomSurfaces';
 import { finishModulation } from '../../../src/engines/view/finishTexture';
+import { FINISH_TEXTURE_OF } from '../../../src/engines/view/finishTextureKinds';
 
 const W = 192;
 const renderer = headlessRenderer(W, W);
@@ -59,10 +60,10 @@ const channelStats = (px: Float32Array | Uint8Array, c: number) => {
 };
 
 describe('surface textures in the 3D view', () => {
-  const floors = defaultSurfaceFinishes.filter((f) => f.texture && f.uses.includes('floor'));
+  const floors = defaultSurfaceFinishes.filter((f) => FINISH_TEXTURE_OF[f.id] && f.uses.includes('floor'));
   it.each(floors.map((f) => [f.id, f] as const))('%s: the textured floor renders the untextured mean within 1 %', (_, finish) => {
     const rho = rgb(finish.reflectance);
-    const period = finishModulation(finish.texture!, rho).period;
+    const period = finishModulation(FINISH_TEXTURE_OF[finish.id], rho).period;
     const side = period * Math.max(1, Math.round(3 / period));
     const { scene, surfaces, camera } = floorScene(rho, side);
     const textured = renderLinear(scene, camera, surfaces);
@@ -81,7 +82,7 @@ describe('surface textures in the 3D view', () => {
   });
 
   it('lux mode: identical pixels with and without the patterns', () => {
-    const { scene, surfaces, camera } = floorScene(rgb(defaultSurfaceFinishes.find((f) => f.texture === 'wood')!.reflectance), 2.88);
+    const { scene, surfaces, camera } = floorScene(rgb(defaultSurfaceFinishes.find((f) => FINISH_TEXTURE_OF[f.id] === 'wood')!.reflectance), 2.88);
     const shot = () => {
       surfaces.setMode('lux', [100, 200, 300, 500]);
       renderer.render(scene, camera);

@@ -16,10 +16,6 @@ import { describeIssues, schemaFieldNames } from '../../zodIssues';
 export const FINISH_USES = ['floor', 'ceiling', 'walls'] as const;
 export type FinishUse = (typeof FINISH_USES)[number];
 
-/** The surface pattern the 3D view draws for a finish (docs/viewer.md, "Surface textures"); the mean stays the finish's reflectance. */
-export const FINISH_TEXTURES = ['plaster', 'wood', 'tiles', 'concrete', 'carpet', 'fabric'] as const;
-export type FinishTexture = (typeof FINISH_TEXTURES)[number];
-
 const reflectanceValue = z.union([z.number(), z.tuple([z.number(), z.number(), z.number()])]).superRefine((v, ctx) => {
   const problem = reflectanceProblem(v);
   if (problem) ctx.addIssue({ code: 'custom', message: problem });
@@ -35,8 +31,6 @@ const finishSchema = z.strictObject({
   display: z.string().regex(/^#[0-9a-f]{6}$/i, "must be an sRGB colour '#rrggbb'"),
   /** Where the reflectance comes from (free text). */
   source: z.string().min(1),
-  /** The 3D view's surface pattern; absent: drawn plain. Display only: the baker uses the mean, `reflectance`. */
-  texture: z.enum(FINISH_TEXTURES).optional(),
 });
 
 const finishListSchema = z
