@@ -16,7 +16,8 @@ void main() {
 /**
  * A room surface's fragment shader: stored illuminance E (RGB lux) →
  * luminance ρE/π → display (toneMap.glsl.ts), or false-colour lux
- * (uMode 1). In lux mode the isolines follow E averaged over the 4×4 texels
+ * (uMode 1). In light mode ρ is modulated by the finish's pattern m (uFinish, tiled
+ * uFinishRepeat times over the surface, mean 1: docs/viewer.md, "Surface textures"). In lux mode the isolines follow E averaged over the 4×4 texels
  * around the point (four bilinear taps one texel off diagonally): the fill
  * keeps every texel's value, the lines do not wiggle with the noise of the
  * indirect light (falseColor.glsl.ts). `scale` is the false-colour scale's
@@ -33,6 +34,10 @@ uniform vec3 uReflectance;
 uniform float uExposure;
 uniform mat3 uAdapt;
 uniform int uMode;
+uniform sampler2D uFinish;
+uniform vec3 uFinishGain;
+uniform vec2 uFinishRepeat;
+uniform float uFinishOn;
 out vec4 fragColor;
 ${toneMapGlsl}
 ${falseColorGlsl(scale)}
@@ -47,7 +52,9 @@ void main() {
     float facing = abs(dot(uNormal, normalize(cameraPosition - vWorld)));
     fragColor = vec4(luxFalseColor(dot(E, Y), max(dot(Es, Y), 0.0) * 0.25, facing), 1.0);
   } else {
-    vec3 L = uReflectance * E / 3.14159265358979;
+    // The finish's pattern m (mean exactly 1, finishTexture.ts) around the baked reflectance: light mode only.
+    vec3 m = uFinishOn > 0.5 ? texture(uFinish, vUv * uFinishRepeat).rgb * uFinishGain : vec3(1.0);
+    vec3 L = uReflectance * m * E / 3.14159265358979;
     fragColor = vec4(luxShade(L, uExposure, uAdapt, uMode), 1.0);
   }
 }

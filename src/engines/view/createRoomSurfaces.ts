@@ -5,6 +5,7 @@ import type { SurfaceLayout } from '../bake/surfaceLayout';
 import type { LitMaps } from '../relight/relightMaps';
 import { MAX_LEVELS, shaderLevels, TURBO_B, TURBO_G, TURBO_R } from './falseColorScale';
 import { surfaceQuad } from './surfaceQuad';
+import { createFinishTextures } from './createFinishTextures';
 import type { Mat3 } from './colourMatrices';
 import { CANDELA_C_SAMPLES, CANDELA_GAMMA_SAMPLES, createSpotPreviewUniforms, type SpotPreviewUniforms } from './spotPreview';
 
@@ -30,6 +31,8 @@ export interface RoomSurfaces {
   /** The chromatic adaptation (row-major 3×3 on linear sRGB, chromaticAdaptation.ts); a non-finite matrix counts as the identity. */
   setAdaptation(matrix: Mat3): void;
   setMode(mode: ViewMode, levels?: readonly number[]): void;
+  /** Draw the finishes' patterns (default on; light mode only: lux mode always shows the pure map). */
+  setFinishTextures(on: boolean): void;
   /** The exposure, mode and level uniforms every surface shares (the objects' material shares them too). */
   readonly display: SharedDisplayUniforms;
   /** The aiming preview's lamp (spotPreview.ts), shared by all six surfaces; off unless a head is being dragged. */
@@ -42,6 +45,7 @@ interface Surface {
   material: THREE.ShaderMaterial;
   texture: THREE.DataTexture | null;
   key: string;
+  layout: SurfaceLayout;
 }
 
 function quadGeometry(layout: SurfaceLayout): THREE.BufferGeometry {
@@ -65,6 +69,18 @@ export function createRoomSurfaces(scene: THREE.Scene, renderer: THREE.WebGLRend
   const adapt = { value: new THREE.Matrix3() };
   const mode = { value: 0 };
   const preview = createSpotPreviewUniforms();
+  const finishTextures = createFinishTextures(renderer);
+  let texturesOn = true;
+  let lastReflectance: Record<SurfaceName, Rgb> | null = null;
+  /** Each surface's pattern for its reflectance, tiled in metres (uv spans lengthU × lengthV). */
+  const applyFinish = (s: Surface, layout: SurfaceLayout, rho: Rgb) => {
+    const t = texturesOn ? finishTextures.forReflectance(rho) : null;
+    const u = s.material.uniforms;
+    u.uFinishOn.value = t ? 1 : 0;
+    u.uFinish.value = t?.texture ?? null;
+    (u.uFinishGain.value as THREE.Vector3).set(...(t?.gain ?? [1, 1, 1]));
+    (u.uFinishRepeat.value as THREE.Vector2).set(t ? layout.lengthU / t.period : 1, t ? layout.lengthV / t.period : 1);
+  };
 
   const release = (s: Surface) => {
     s.mesh.geometry.dispose();
@@ -75,7 +91,10 @@ export function createRoomSurfaces(scene: THREE.Scene, renderer: THREE.WebGLRend
   const surfaceFor = (layout: SurfaceLayout): Surface => {
     const key = `${layout.width}x${layout.height}@${layout.lengthU}x${layout.lengthV}`;
     let s = surfaces.get(layout.name);
-    if (s && s.key === key) return s;
+    if (s && s.key === key) {
+      s.layout = layout;
+      return s;
+    }
     if (s) {
       scene.remove(s.mesh);
       release(s);
@@ -93,6 +112,10 @@ export function createRoomSurfaces(scene: THREE.Scene, renderer: THREE.WebGLRend
         uMode: mode,
         uLevels: levelUniform,
         uLevelCount: levelCount,
+        uFinish: { value: null },
+        uFinishGain: { value: new THREE.Vector3(1, 1, 1) },
+        uFinishRepeat: { value: new THREE.Vector2(1, 1) },
+        uFinishOn: { value: 0 },
         ...preview,
       },
       side: THREE.FrontSide,
@@ -100,7 +123,7 @@ export function createRoomSurfaces(scene: THREE.Scene, renderer: THREE.WebGLRend
     const mesh = new THREE.Mesh(quadGeometry(layout), material);
     mesh.name = layout.name;
     scene.add(mesh);
-    s = { mesh, material, texture: null, key };
+    s = { mesh, material, texture: null, key, layout };
     surfaces.set(layout.name, s);
     return s;
   };
@@ -131,6 +154,15 @@ export function createRoomSurfaces(scene: THREE.Scene, renderer: THREE.WebGLRend
         }
         s.texture.needsUpdate = true;
         (s.material.uniforms.uReflectance.value as THREE.Vector3).set(...reflectance[name]);
+        applyFinish(s, layout, reflectance[name]);
+      }
+      lastReflectance = reflectance;
+    },
+    setFinishTextures(on) {
+      texturesOn = on;
+      if (!lastReflectance) return;
+      for (const [name, s] of surfaces) {
+        applyFinish(s, s.layout, lastReflectance[name]);
       }
     },
     setExposure(value) {
@@ -150,6 +182,7 @@ export function createRoomSurfaces(scene: THREE.Scene, renderer: THREE.WebGLRend
     dispose() {
       for (const s of surfaces.values()) release(s);
       surfaces.clear();
+      finishTextures.dispose();
     },
   };
 }

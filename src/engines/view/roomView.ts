@@ -50,6 +50,8 @@ export interface RoomView {
   /** Chromatic adaptation before the tone curve (row-major 3×3 on linear sRGB, chromaticAdaptation.ts). */
   setAdaptation(matrix: Mat3): void;
   setMode(mode: ViewMode, levels?: readonly number[]): void;
+  /** Draw the room finishes' patterns (default on; light mode only). */
+  setFinishTextures(on: boolean): void;
   setFixtures(fixtures: Fixtures): void;
   setCamera(pose: CameraPose, aspect: number): void;
   /**
@@ -97,6 +99,7 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
     setExposure: surfaces.setExposure,
     setAdaptation: surfaces.setAdaptation,
     setMode: surfaces.setMode,
+    setFinishTextures: surfaces.setFinishTextures,
     setFixtures: hardware.setFixtures,
     setModuleWeights: hardware.setModuleWeights,
     setObjects: objects.setGeometry,

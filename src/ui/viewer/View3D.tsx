@@ -106,6 +106,10 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true, 
   const [progress, setProgress] = useState({ fraction: 0, done: false, lit: false });
   const [error, setError] = useState<string | null>(null);
   const [mode, setMode] = useState<ViewMode>('light');
+  // Veiling glare (docs/viewer.md, "Glare"): on by default. Not kept across visits: remembering needs the
+  // host's `remember` on the first screen, which is at its download budget.
+  const [glare, setGlare] = useState(true);
+  const glareRef = useRef(glare);
   // The camera's mode (a preset's orbit or a module's spotlight view): one state for both sets of buttons.
   const [camera, setCamera] = useState<CameraMode>(INITIAL_CAMERA_MODE);
   const cameraEvent = useCallback((e: CameraModeEvent) => setCamera((m) => nextCameraMode(m, e)), []);
@@ -231,6 +235,7 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true, 
     if (typeof host.exposure === 'number') controller.setEv100(host.exposure);
     // The chromatic adaptation the page asked for (embed option `adapt`, default eye).
     controller.setAdaptation(host.adaptation);
+    controller.setGlare(glareRef.current);
     ctrl.current = controller;
     queueMicrotask(() => setControllerVersion((v) => v + 1));
     // Made while hidden (the feed arrived after the user went back to the plan): no frames until shown.
@@ -363,6 +368,20 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true, 
           </button>
           <button type="button" className={`btn${mode === 'lux' ? ' btn-primary' : ''}`} aria-pressed={mode === 'lux'} onClick={() => { setMode('lux'); ctrl.current?.setMode('lux'); }} data-testid="mode-lux">
             {t('view3d.modeLux')}
+          </button>
+          <button
+            type="button"
+            className={`btn${glare ? ' btn-primary' : ''}`}
+            aria-pressed={glare}
+            title={t('view3d.glareHint')}
+            onClick={() => {
+              setGlare(!glare);
+              glareRef.current = !glare;
+              ctrl.current?.setGlare(!glare);
+            }}
+            data-testid="glare-toggle"
+          >
+            {t('view3d.glare')}
           </button>
         </div>
         <div className="viewer3d-group" role="group" aria-label={t('view3d.quality')}>

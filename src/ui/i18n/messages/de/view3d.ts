@@ -31,6 +31,8 @@ export default {
   viewMode: 'Darstellung',
   modeLight: 'Licht',
   modeLux: 'Lux',
+  glare: 'Blendung',
+  glareHint: 'Schleierblendung um helle Leuchten, wie das Auge sie sieht',
   quality: 'Qualität',
   qualityLabel: 'Qualität:',
   exposure: 'Belichtung {ev} EV',

@@ -29,6 +29,8 @@ export default {
   viewMode: 'View mode',
   modeLight: 'Light',
   modeLux: 'Lux',
+  glare: 'Glare',
+  glareHint: 'Veiling glare round bright lamps, as the eye sees it',
   quality: 'Quality',
   qualityLabel: 'Quality:',
   exposure: 'Exposure {ev} EV',

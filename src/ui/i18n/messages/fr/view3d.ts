@@ -31,6 +31,8 @@ export default {
   viewMode: 'Mode d’affichage',
   modeLight: 'Lumière',
   modeLux: 'Lux',
+  glare: 'Éblouissement',
+  glareHint: 'Voile d’éblouissement autour des lampes vives, comme l’œil le voit',
   quality: 'Qualité',
   qualityLabel: 'Qualité :',
   exposure: 'Exposition {ev} EV',

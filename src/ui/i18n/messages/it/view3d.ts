@@ -31,6 +31,8 @@ export default {
   viewMode: 'Modalità di visualizzazione',
   modeLight: 'Luce',
   modeLux: 'Lux',
+  glare: 'Abbagliamento',
+  glareHint: 'Velo di abbagliamento attorno alle lampade luminose, come lo vede l’occhio',
   quality: 'Qualità',
   qualityLabel: 'Qualità:',
   exposure: 'Esposizione {ev} EV',
