@@ -2,15 +2,7 @@ import { defineConfig } from '@playwright/test';
 
 // Debian's chromium (no browser download possible here). SwiftShader gives WebGL2
 // with EXT_color_buffer_float in headless mode (docs/architecture.md, "Test machines").
-export const chromiumArgs = [
-  '--no-sandbox',
-  '--disable-background-networking',
-  '--disable-component-update',
-  '--disable-sync',
-  '--no-first-run',
-  '--use-angle=swiftshader',
-  '--enable-unsafe-swiftshader',
-];
+export const chromiumArgs = ['--no-sandbox', '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'];
 
 // LUXBOX_E2E_PORT lets two copies of the tree run their suites side by side.
 const port = Number(process.env.LUXBOX_E2E_PORT ?? 4173);

@@ -18,93 +18,103 @@ function zodWithoutJsonSchema(): Plugin {
   const STUBBED = /[\\/]zod[\\/]v4[\\/]core[\\/](to-json-schema|json-schema-processors)\.js$/;
   const KEEP = new Set(['aggregateChecks']);
   const exportNames = (source: string) =>
-    [...source.matchAll(/^export (?:function|const|let|class) (\w+)/gm), ...[...source.matchAll(/^export \{([^}]*)\}/gm)].flatMap((m) => m[1].split(',').map((s) => [s, s.trim().split(/\s+as\s+/).pop()!]))].map((m) => m[1]);
+    [
+      ...source.matchAll(/^export (?:function|const|let|class) (\w+)/gm),
+      ...[...source.matchAll(/^export \{([^}]*)\}/gm)].flatMap((m) =>
+        m[1].split(',').map((s) => [
+          s,
+          s
+            .trim()
+            .split(/\s+as\s+/)
+            .pop()!,
+        ]),
+      ),
+    ].map((m) => m[1]);
   return {
-      name: 'luxbox-zod-without-json-schema',
-      apply: 'build',
-      load(id) {
-        if (!STUBBED.test(id) || id.includes('?')) return null;
-        const names = [...new Set(exportNames(readFileSync(id, 'utf8')))].filter(Boolean);
-        const message = JSON.stringify('zod JSON Schema generation is not part of the luxbox browser build (vite.config.ts)');
-        const lines = names.map((name) =>
-          KEEP.has(name)
-            ? `export { ${name} } from ${JSON.stringify(`${id}?real`)};`
-            : // createStandardJSONSchemaMethod / createToJSONSchemaMethod run when `~standard` is read: hand back a method that throws.
-              `export function ${name}() { if (${JSON.stringify(name)}.startsWith('create')) return () => { throw new Error(${message}); }; throw new Error(${message}); }`,
-        );
-        return lines.join('\n');
-      },
-    };
-  }
+    name: 'luxbox-zod-without-json-schema',
+    apply: 'build',
+    load(id) {
+      if (!STUBBED.test(id) || id.includes('?')) return null;
+      const names = [...new Set(exportNames(readFileSync(id, 'utf8')))].filter(Boolean);
+      const message = JSON.stringify('zod JSON Schema generation is not part of the luxbox browser build (vite.config.ts)');
+      const lines = names.map((name) =>
+        KEEP.has(name)
+          ? `export { ${name} } from ${JSON.stringify(`${id}?real`)};`
+          : // createStandardJSONSchemaMethod / createToJSONSchemaMethod run when `~standard` is read: hand back a method that throws.
+            `export function ${name}() { if (${JSON.stringify(name)}.startsWith('create')) return () => { throw new Error(${message}); }; throw new Error(${message}); }`,
+      );
+      return lines.join('\n');
+    },
+  };
+}
 
-  /**
-   * One chunk for the first screen (docs/benchmarks.md, "First screen"). Left to itself Rolldown
-   * splits the modules both pages load at start into about ten chunks, by which lazy chunks (3D
-   * view, options panel, language packs) also import them; each is gzipped alone and carries an
-   * export map, so the first screen cost 3 KiB more than the same code in one file. After the module
-   * graph is complete (buildEnd) this plugin works out the modules every page entry imports
-   * statically (directly or through others); `inFirstScreen` puts exactly those into one `app`
-   * chunk. Lazy-only modules stay in their lazy chunks, and a module only one page uses stays with
-   * that page's entry.
-   */
-  function firstScreenChunk(): Plugin & { inFirstScreen: (id: string) => boolean } {
-    let shared: Set<string> | null = null;
-    return {
-      name: 'luxbox-first-screen-chunk',
-      apply: 'build',
-      buildEnd() {
-        const closureOf = (entry: string) => {
-          const seen = new Set<string>();
-          const stack = [entry];
-          while (stack.length > 0) {
-            const id = stack.pop()!;
-            if (seen.has(id)) continue;
-            seen.add(id);
-            stack.push(...(this.getModuleInfo(id)?.importedIds ?? []));
-          }
-          return seen;
-        };
-        const entries = [...this.getModuleIds()].filter((id) => this.getModuleInfo(id)?.isEntry);
-        const closures = entries.map(closureOf);
-        shared = new Set([...(closures[0] ?? [])].filter((id) => !entries.includes(id) && closures.every((c) => c.has(id))));
-      },
-      inFirstScreen: (id) => shared?.has(id) === true,
-    };
-  }
+/**
+ * One chunk for the first screen (docs/benchmarks.md, "First screen"). Left to itself Rolldown
+ * splits the modules both pages load at start into about ten chunks, by which lazy chunks (3D
+ * view, options panel, language packs) also import them; each is gzipped alone and carries an
+ * export map, so the first screen cost 3 KiB more than the same code in one file. After the module
+ * graph is complete (buildEnd) this plugin works out the modules every page entry imports
+ * statically (directly or through others); `inFirstScreen` puts exactly those into one `app`
+ * chunk. Lazy-only modules stay in their lazy chunks, and a module only one page uses stays with
+ * that page's entry.
+ */
+function firstScreenChunk(): Plugin & { inFirstScreen: (id: string) => boolean } {
+  let shared: Set<string> | null = null;
+  return {
+    name: 'luxbox-first-screen-chunk',
+    apply: 'build',
+    buildEnd() {
+      const closureOf = (entry: string) => {
+        const seen = new Set<string>();
+        const stack = [entry];
+        while (stack.length > 0) {
+          const id = stack.pop()!;
+          if (seen.has(id)) continue;
+          seen.add(id);
+          stack.push(...(this.getModuleInfo(id)?.importedIds ?? []));
+        }
+        return seen;
+      };
+      const entries = [...this.getModuleIds()].filter((id) => this.getModuleInfo(id)?.isEntry);
+      const closures = entries.map(closureOf);
+      shared = new Set([...(closures[0] ?? [])].filter((id) => !entries.includes(id) && closures.every((c) => c.has(id))));
+    },
+    inFirstScreen: (id) => shared?.has(id) === true,
+  };
+}
 
-  /**
-   * `zod` → src/core/zodClassicOnMini.ts (classic's API on zod/mini, −10 KiB gzip of the first
-   * screen) in the browser build, and in Vitest when LUXBOX_ZOD_MINI=1 (to run the model's tests
-   * against it: `LUXBOX_ZOD_MINI=1 npx vitest run tests/core/model`).
-   */
-  const zodOnMini = (command: string) =>
-    command === 'build' || process.env.LUXBOX_ZOD_MINI === '1' ? [{ find: /^zod$/, replacement: fileURLToPath(new URL('./src/core/zodClassicOnMini.ts', import.meta.url)) }] : [];
+/**
+ * `zod` → src/core/zodClassicOnMini.ts (classic's API on zod/mini, −10 KiB gzip of the first
+ * screen) in the browser build, and in Vitest when LUXBOX_ZOD_MINI=1 (to run the model's tests
+ * against it: `LUXBOX_ZOD_MINI=1 npx vitest run tests/core/model`).
+ */
+const zodOnMini = (command: string) => (command === 'build' || process.env.LUXBOX_ZOD_MINI === '1' ? [{ find: /^zod$/, replacement: fileURLToPath(new URL('./src/core/zodClassicOnMini.ts', import.meta.url)) }] : []);
 
-  /**
-   * React → preact/compat in the browser build only (−55 KiB gzip of the first screen: react-dom's
-   * client is 62 KiB, preact with compat and hooks about 7). The code uses createRoot, hooks
-   * (useSyncExternalStore, useId, also through zustand), memo, lazy/Suspense and StrictMode, all
-   * in preact/compat (the plan's gestures are its own pointer listeners, usePlanGestures.ts).
-   * Vitest and the dev server keep real React, so the unit tests run the components on React and
-   * the Playwright suite runs them on preact
-   * (docs/architecture.md, "React in tests, preact in the browser build").
-   */
-  const reactOnPreact = (command: string) =>
-    command === 'build'
-      ? [
-          { find: /^react-dom\/client$/, replacement: 'preact/compat/client' },
-          { find: /^react\/jsx-runtime$/, replacement: 'preact/compat/jsx-runtime' },
-          { find: /^react\/jsx-dev-runtime$/, replacement: 'preact/compat/jsx-dev-runtime' },
-          { find: /^react\/compiler-runtime$/, replacement: 'preact/compat/compiler-runtime' },
-          { find: /^react-dom$/, replacement: 'preact/compat' },
-          { find: /^react$/, replacement: 'preact/compat' },
-        ]
-      : [];
+/**
+ * React → preact/compat in the browser build only (−55 KiB gzip of the first screen: react-dom's
+ * client is 62 KiB, preact with compat and hooks about 7). The code uses createRoot, hooks
+ * (useSyncExternalStore, useId, also through zustand), memo, lazy/Suspense and StrictMode, all
+ * in preact/compat (the plan's gestures are its own pointer listeners, usePlanGestures.ts).
+ * Vitest and the dev server keep real React, so the unit tests run the components on React and
+ * the Playwright suite runs them on preact
+ * (docs/architecture.md, "React in tests, preact in the browser build").
+ */
+const reactOnPreact = (command: string) =>
+  command === 'build'
+    ? [
+        { find: /^react-dom\/client$/, replacement: 'preact/compat/client' },
+        { find: /^react\/jsx-runtime$/, replacement: 'preact/compat/jsx-runtime' },
+        { find: /^react\/jsx-dev-runtime$/, replacement: 'preact/compat/jsx-dev-runtime' },
+        { find: /^react\/compiler-runtime$/, replacement: 'preact/compat/compiler-runtime' },
+        { find: /^react-dom$/, replacement: 'preact/compat' },
+        { find: /^react$/, replacement: 'preact/compat' },
+      ]
+    : [];
 
-  // One config for the app build and for Vitest (unit + headless-gl tests).
-  export default defineConfig(({ command }) => {
-    const firstScreen = firstScreenChunk();
-    return {
+// One config for the app build and for Vitest (unit + headless-gl tests).
+export default defineConfig(({ command }) => {
+  const firstScreen = firstScreenChunk();
+  return {
     plugins: [react(), zodWithoutJsonSchema(), firstScreen],
     resolve: { alias: [...zodOnMini(command), ...reactOnPreact(command)] },
     server: { port: 5173, strictPort: false, host: true },

@@ -41,7 +41,9 @@ describe.sequential('the built app in three engines', () => {
       try {
         const report = await runCrossEngineScenario(driver, server.url, OUT_DIR, QUALITY, BAKE_TIMEOUT_MS);
         reports.set(engine, report);
-        console.log(`${engine}: floor Ē ${report.baked.avg.toFixed(2)} lx, Emin ${report.baked.min.toFixed(2)}, Emax ${report.baked.max.toFixed(2)}; dimmed Ē ${report.dimmed.avg.toFixed(2)}; price ${report.price}; first light ${report.firstLitMs} ms, bake ${report.bakeMs} ms, all ${report.totalMs} ms`);
+        console.log(
+          `${engine}: floor Ē ${report.baked.avg.toFixed(2)} lx, Emin ${report.baked.min.toFixed(2)}, Emax ${report.baked.max.toFixed(2)}; dimmed Ē ${report.dimmed.avg.toFixed(2)}; price ${report.price}; first light ${report.firstLitMs} ms, bake ${report.bakeMs} ms, all ${report.totalMs} ms`,
+        );
         // One module of six off: the floor is darker, but not dark.
         expect(report.dimmed.avg).toBeLessThan(report.baked.avg * 0.97);
         expect(report.dimmed.avg).toBeGreaterThan(report.baked.avg * 0.5);

@@ -87,7 +87,11 @@ export async function runCrossEngineScenario(d: EngineDriver, baseUrl: string, o
   const config = () => d.evaluate<SceneFile>('JSON.parse(window.luxbox.getConfig())');
 
   await d.goto(`${baseUrl}/?quality=${quality}`);
-  await until(`${engine}: room setup shown`, () => d.evaluate<boolean>(`!!document.querySelector('input[name="width"]') && !!window.luxbox`), (v) => v);
+  await until(
+    `${engine}: room setup shown`,
+    () => d.evaluate<boolean>(`!!document.querySelector('input[name="width"]') && !!window.luxbox`),
+    (v) => v,
+  );
   const env = await d.evaluate<Pick<EngineReport, 'userAgent' | 'language' | 'intlLocale' | 'webgl' | 'viewport'>>(`(() => {
     const gl = document.createElement('canvas').getContext('webgl2');
     return {
@@ -106,7 +110,11 @@ export async function runCrossEngineScenario(d: EngineDriver, baseUrl: string, o
   await d.fill('input[name="depth"]', '4');
   await d.fill('input[name="height"]', '2,8');
   await d.click('form.setup-card button[type="submit"]');
-  await until(`${engine}: plan shown`, () => d.evaluate<boolean>(`!!document.querySelector('${sel('plan')}')`), (v) => v);
+  await until(
+    `${engine}: plan shown`,
+    () => d.evaluate<boolean>(`!!document.querySelector('${sel('plan')}')`),
+    (v) => v,
+  );
   const room = (await config()).configuration.room;
   check(room.width === 5 && room.depth === 4 && room.height === 2.8, engine, `room from the form is ${JSON.stringify(room)}, expected 5 × 4 × 2.8 m`);
 
@@ -124,7 +132,11 @@ export async function runCrossEngineScenario(d: EngineDriver, baseUrl: string, o
       candidates: { 'system-ui': width('system-ui'), 'DejaVu Sans': width('"DejaVu Sans"'), 'Liberation Sans': width('"Liberation Sans"') },
     };
   })()`);
-  const price = await until(`${engine}: price shown`, () => d.evaluate<string>(`document.querySelector('${sel('header-total')}').textContent.trim()`), (p) => /\d/.test(p));
+  const price = await until(
+    `${engine}: price shown`,
+    () => d.evaluate<string>(`document.querySelector('${sel('header-total')}').textContent.trim()`),
+    (p) => /\d/.test(p),
+  );
 
   // 3D: bake to completion.
   const t3d = Date.now();
@@ -157,8 +169,16 @@ export async function runCrossEngineScenario(d: EngineDriver, baseUrl: string, o
 
   // Lux mode: legend and the floor row of the table.
   await d.click(sel('mode-lux'));
-  await until(`${engine}: lux legend`, () => d.evaluate<boolean>(`!!document.querySelector('${sel('view3d-legend')}')`), (v) => v);
-  const floorRow = await until(`${engine}: floor row`, () => d.evaluate<string>(`Array.from(document.querySelectorAll('${sel('stats-floor')} td')).map((td) => td.textContent.trim()).join(' | ')`), (t) => /\d/.test(t));
+  await until(
+    `${engine}: lux legend`,
+    () => d.evaluate<boolean>(`!!document.querySelector('${sel('view3d-legend')}')`),
+    (v) => v,
+  );
+  const floorRow = await until(
+    `${engine}: floor row`,
+    () => d.evaluate<string>(`Array.from(document.querySelectorAll('${sel('stats-floor')} td')).map((td) => td.textContent.trim()).join(' | ')`),
+    (t) => /\d/.test(t),
+  );
   await shot('lux');
 
   // Scene file round trip: the JSON the app saves, the system deleted, the file opened through the UI.
@@ -167,12 +187,21 @@ export async function runCrossEngineScenario(d: EngineDriver, baseUrl: string, o
   await mkdir(outDir, { recursive: true });
   await writeFile(savedPath, savedText);
   await d.click(sel('back-2d'));
-  await until(`${engine}: back on the plan`, () => d.evaluate<boolean>(`!!document.querySelector('${sel('plan')}')`), (v) => v);
+  await until(
+    `${engine}: back on the plan`,
+    () => d.evaluate<boolean>(`!!document.querySelector('${sel('plan')}')`),
+    (v) => v,
+  );
   const removed = await d.evaluate<{ ok: boolean }>(`window.luxbox.runAction('deleteSystem', { systemId: ${JSON.stringify(placed.configuration.systems[0].id)} })`);
   check(removed.ok, engine, 'deleteSystem refused');
   check((await config()).configuration.systems.length === 0, engine, 'system still there after deleteSystem');
   await d.setInputFile(sel('open-file'), savedPath);
-  const reopened = await until(`${engine}: saved file opened`, () => d.evaluate<string>('window.luxbox.getConfig()'), (t) => t === savedText, 15_000);
+  const reopened = await until(
+    `${engine}: saved file opened`,
+    () => d.evaluate<string>('window.luxbox.getConfig()'),
+    (t) => t === savedText,
+    15_000,
+  );
   check(reopened === savedText, engine, 'the reopened configuration differs from the saved one');
 
   return {

@@ -19,7 +19,10 @@ export async function startPreview(): Promise<PreviewServer> {
   const outDir = process.env.LUXBOX_ENGINES_OUTDIR ?? 'dist';
   const url = `http://localhost:${port}`;
   // Something already answering there would be tested instead of this tree's build: refuse.
-  const taken = await fetch(url).then(() => true, () => false);
+  const taken = await fetch(url).then(
+    () => true,
+    () => false,
+  );
   if (taken) throw new Error(`port ${port} is already in use; set LUXBOX_ENGINES_PORT to a free port`);
   const child = spawn('npx', ['vite', 'preview', '--port', String(port), '--strictPort', '--outDir', outDir], {
     cwd: repoRoot,

@@ -58,7 +58,10 @@ export async function launchWebkit(): Promise<EngineDriver> {
     // window by what is missing so the page gets the same viewport as the other engines.
     await driver.manage().window().setRect({ width: VIEWPORT.width, height: VIEWPORT.height });
     const inner = await driver.executeScript<[number, number]>('return [innerWidth, innerHeight]');
-    await driver.manage().window().setRect({ width: 2 * VIEWPORT.width - inner[0], height: 2 * VIEWPORT.height - inner[1] });
+    await driver
+      .manage()
+      .window()
+      .setRect({ width: 2 * VIEWPORT.width - inner[0], height: 2 * VIEWPORT.height - inner[1] });
   } catch (e) {
     server.kill();
     throw e;

@@ -170,7 +170,8 @@ async function smallTargets(page: Page): Promise<string[]> {
       const target = el instanceof HTMLInputElement && (el.type === 'checkbox' || el.type === 'radio') ? (el.closest('label') ?? el) : el;
       const r = target.getBoundingClientRect();
       if (r.width === 0 || r.height === 0 || getComputedStyle(target).visibility === 'hidden') continue;
-      if (r.width < 44 - 0.5 || r.height < 44 - 0.5) out.push(`${el.tagName.toLowerCase()} ${el.getAttribute('data-testid') ?? el.getAttribute('aria-label') ?? el.textContent?.trim().slice(0, 30)}: ${Math.round(r.width)} × ${Math.round(r.height)}`);
+      if (r.width < 44 - 0.5 || r.height < 44 - 0.5)
+        out.push(`${el.tagName.toLowerCase()} ${el.getAttribute('data-testid') ?? el.getAttribute('aria-label') ?? el.textContent?.trim().slice(0, 30)}: ${Math.round(r.width)} × ${Math.round(r.height)}`);
     }
     return out;
   });

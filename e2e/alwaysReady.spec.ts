@@ -158,8 +158,7 @@ test('an embedded configurator bakes in the background too, and destroy() releas
   await page.goto('/embed.html');
   await page.getByTestId('host-action-single').click();
   await expect.poll(() => page.evaluate(() => window.shopDemo!.instance!.view3d().bake.groupBakes), BAKE).toBe(3);
-  const live = () =>
-    page.evaluate(() => (window as unknown as CanvasTracking).__detachedWebgl2().length);
+  const live = () => page.evaluate(() => (window as unknown as CanvasTracking).__detachedWebgl2().length);
   // The bake context is the one detached WebGL2 canvas still alive (the support checks and the calibration lose theirs).
   expect(await live()).toBe(1);
   await page.getByTestId('toggle-configurator').click();

@@ -83,7 +83,7 @@ test('mounts with the host room and locale; the host total follows actions run b
   expect(keys).toEqual(['lichtwerk.luxbox.de.v1']);
 });
 
-test('the API speaks the configurator\'s language (BOM names, reasons) unless apiLanguage is en; brand null shows none', async ({ page }) => {
+test("the API speaks the configurator's language (BOM names, reasons) unless apiLanguage is en; brand null shows none", async ({ page }) => {
   await page.goto('/embed.html');
   await page.getByTestId('host-action-single').click();
   await page.evaluate(() => window.shopDemo!.instance!.whenReady());
@@ -126,7 +126,7 @@ test('add to cart copies the bill of materials into the host cart', async ({ pag
   expect(await text(page, 'cart-total')).toBe('1.765,80 €');
 });
 
-test('assetBase: the plan and the 3D view load photometry from the host\'s folder, each file once', async ({ page }) => {
+test("assetBase: the plan and the 3D view load photometry from the host's folder, each file once", async ({ page }) => {
   const fromHost: string[] = [];
   const fromApp: string[] = [];
   await page.route('**/shop-assets/ies/**', async (route) => {
@@ -271,7 +271,13 @@ test("luxbox's styles stay inside its root: the shop page keeps its own fonts, m
       foreignRules: foreign.length,
       foreignRulesStylingInside: foreign.filter((rule) => matchesAny(inside, rule.selectorText)).length,
       leaks: foreign.filter((rule) => matchesAny(outside, rule.selectorText)).map((rule) => rule.selectorText),
-      declared: { fontFamily: shopBody.fontFamily, fontSize: shopBody.fontSize, color: shopBody.color, backgroundColor: shopBody.backgroundColor, margin: [shopBody.marginTop, shopBody.marginRight, shopBody.marginBottom, shopBody.marginLeft] },
+      declared: {
+        fontFamily: shopBody.fontFamily,
+        fontSize: shopBody.fontSize,
+        color: shopBody.color,
+        backgroundColor: shopBody.backgroundColor,
+        margin: [shopBody.marginTop, shopBody.marginRight, shopBody.marginBottom, shopBody.marginLeft],
+      },
       body: style(document.body),
       html: style(document.documentElement),
       buyBox: style(document.querySelector('.buy-box')!),

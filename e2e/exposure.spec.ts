@@ -7,8 +7,6 @@ import { viewerStatus as status, meanLevel } from './helpers';
 // module makes the image darker; Re-adapt exposes it again; a locked EV100 holds too.
 test.use({ reducedMotion: 'reduce', viewport: { width: 1280, height: 800 } });
 
-
-
 /** Every module of the configuration to `dimming` through the embed API; waits for the relit floor. */
 async function dimAll(page: Page, dimming: number, floorBelow: number): Promise<void> {
   await page.evaluate((d) => {

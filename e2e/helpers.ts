@@ -3,7 +3,9 @@ import type { ViewerStatus } from '../src/ui/viewer/viewerStatus';
 import { expect, type Page } from '@playwright/test';
 
 /** The running app's embedding API (window.luxbox), called in the page. */
-export async function sceneFile(page: Page): Promise<{ configuration: { room: { width: number; depth: number; height: number }; systems: { id: string; x: number; z: number; rotation: number; rails: { id: string; modules: { id: string; type: string; cct: number; dimming: number }[] }[] }[] } }> {
+export async function sceneFile(page: Page): Promise<{
+  configuration: { room: { width: number; depth: number; height: number }; systems: { id: string; x: number; z: number; rotation: number; rails: { id: string; modules: { id: string; type: string; cct: number; dimming: number }[] }[] }[] };
+}> {
   return JSON.parse(await page.evaluate(() => window.luxbox!.getConfig()));
 }
 

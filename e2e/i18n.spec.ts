@@ -94,7 +94,7 @@ test('the language switch changes the language and keeps the configuration; the 
 
 test.describe('browser language', () => {
   test.use({ locale: 'it-CH' });
-  test("an Italian-Swiss browser gets Italian texts and Swiss formatting", async ({ page }) => {
+  test('an Italian-Swiss browser gets Italian texts and Swiss formatting', async ({ page }) => {
     await page.goto('/?demo');
     await expect(page.getByTestId('plan')).toBeVisible();
     expect(await page.evaluate(() => window.luxbox!.getLanguage())).toEqual({ language: 'it', locale: 'it-CH' });

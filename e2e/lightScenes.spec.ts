@@ -23,14 +23,22 @@ test('record two scenes, GO with a 1 s fade, plan levels fade, Space / Shift+Spa
   await panel.getByTestId('scene-name').fill('Day');
   await panel.getByTestId('scene-record').click();
   // "Evening": every module at 20 %.
-  await page.evaluate((ids) => ids.forEach((moduleId) => window.luxbox!.runAction('setModuleDimming', { moduleId, dimming: 0.2 })), modules.map((m) => m.id));
+  await page.evaluate(
+    (ids) => ids.forEach((moduleId) => window.luxbox!.runAction('setModuleDimming', { moduleId, dimming: 0.2 })),
+    modules.map((m) => m.id),
+  );
   await panel.getByTestId('scene-name').fill('Evening');
   await panel.getByTestId('scene-record').click();
   await expect(panel.getByTestId('scene-row')).toHaveCount(2);
   const fade = panel.getByTestId('scene-fade-input').nth(1);
   await fade.fill('1');
   await fade.press('Enter');
-  await expect.poll(() => page.evaluate(() => window.luxbox!.scenes().map((s) => [s.name, s.fade]))).toEqual([['Day', 3], ['Evening', 1]]);
+  await expect
+    .poll(() => page.evaluate(() => window.luxbox!.scenes().map((s) => [s.name, s.fade])))
+    .toEqual([
+      ['Day', 3],
+      ['Evening', 1],
+    ]);
 
   // Back to Day at once; the plan shows full level.
   expect(await page.evaluate(() => window.luxbox!.recall('Day', { fade: 0 }))).toEqual({ ok: true });
@@ -82,7 +90,10 @@ test('record two scenes, GO with a 1 s fade, plan levels fade, Space / Shift+Spa
   const p2 = await other.newPage();
   await p2.goto(link.replace(/^https?:\/\/[^/]+/, new URL(page.url()).origin));
   await expect(p2.getByTestId('plan')).toBeVisible();
-  expect(await p2.evaluate(() => window.luxbox!.scenes().map((s) => [s.name, s.fade]))).toEqual([['Day', 3], ['Evening', 1]]);
+  expect(await p2.evaluate(() => window.luxbox!.scenes().map((s) => [s.name, s.fade]))).toEqual([
+    ['Day', 3],
+    ['Evening', 1],
+  ]);
   await expect(p2.getByTestId('scene-row')).toHaveCount(2);
   await other.close();
 });

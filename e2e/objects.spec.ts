@@ -103,7 +103,20 @@ test.describe('desktop', () => {
     // Winding (issue #35): an inside-out box is turned outward, a single quad is lit on both sides,
     // and the preview says so before anything is added.
     const cube = ['v 0 0 0', 'v 1 0 0', 'v 0 1 0', 'v 1 1 0', 'v 0 0 1', 'v 1 0 1', 'v 0 1 1', 'v 1 1 1'];
-    const outward = [[1, 5, 7], [1, 7, 3], [2, 4, 8], [2, 8, 6], [1, 2, 6], [1, 6, 5], [3, 7, 8], [3, 8, 4], [1, 3, 4], [1, 4, 2], [5, 6, 8], [5, 8, 7]];
+    const outward = [
+      [1, 5, 7],
+      [1, 7, 3],
+      [2, 4, 8],
+      [2, 8, 6],
+      [1, 2, 6],
+      [1, 6, 5],
+      [3, 7, 8],
+      [3, 8, 4],
+      [1, 3, 4],
+      [1, 4, 2],
+      [5, 6, 8],
+      [5, 8, 7],
+    ];
     const insideOut = [...cube, ...outward.map(([a, b, c]) => `f ${a} ${c} ${b}`)].join('\n');
     await page.getByTestId('import-file').setInputFiles({ name: 'mirrored.obj', mimeType: 'text/plain', buffer: Buffer.from(`${insideOut}\n`) });
     await expect(page.getByTestId('import-orientation')).toHaveText('1 closed part faced inward and was turned outward');

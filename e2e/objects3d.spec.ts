@@ -23,9 +23,7 @@ async function furnishedIn3D(page: Page): Promise<string> {
   await page.goto('/?quality=balanced'); // lux values at a fixed bake quality (docs/viewer.md, "Quality levels")
   await page.getByRole('button', { name: 'Start planning' }).click();
   // The table through the same always-valid action the furniture panel runs, at the room centre.
-  const placed = await page.evaluate(() =>
-    window.luxbox!.runAction('addObject', { source: { kind: 'library', item: 'dining-table' }, placement: { on: 'floor', x: 2.5, z: 2 } }),
-  );
+  const placed = await page.evaluate(() => window.luxbox!.runAction('addObject', { source: { kind: 'library', item: 'dining-table' }, placement: { on: 'floor', x: 2.5, z: 2 } }));
   expect(placed).toEqual({ ok: true });
   // The rail over it: the single-rail preset lands at the room centre (the model's free-spot search).
   // From the side panel where it shows; a phone keeps it in a drawer, so there the same action runs through the API.

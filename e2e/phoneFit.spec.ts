@@ -84,7 +84,7 @@ for (const phone of PHONES) {
         expect(await outside(page)).toEqual([]);
       });
 
-      test('shop embed: the configurator\'s header and bottom bar fit, with a system selected', async ({ page }) => {
+      test("shop embed: the configurator's header and bottom bar fit, with a system selected", async ({ page }) => {
         await page.goto(`/embed.html?locale=${EMBED_LOCALE[lang]}`);
         await expect(page.getByTestId('plan')).toBeVisible();
         expect(await page.evaluate(() => window.shopDemo!.instance!.runAction('placePreset', { presetId: 'single' }))).toEqual({ ok: true });
@@ -175,7 +175,7 @@ async function coveredFraction(page: Page): Promise<number> {
 test.describe('on-plan fields on a phone, 375 × 667', () => {
   test.use({ viewport: { width: 375, height: 667 } });
 
-  test('the selected system\'s x/z and length fields fold behind one button and cover under 2 % of the plan until unfolded', async ({ page }) => {
+  test("the selected system's x/z and length fields fold behind one button and cover under 2 % of the plan until unfolded", async ({ page }) => {
     // The demo: the L corner (three rails) selected, the plan at system level.
     await page.goto('/?demo&lang=de');
     await expect(page.getByTestId('plan')).toHaveAttribute('data-level', 'system');
@@ -223,7 +223,7 @@ test.describe('on-plan fields on a phone, 375 × 667', () => {
     expect(zoomedFolded).toBeLessThan(0.02);
 
     // A new selection starts folded: select round the room's systems and objects back to the system.
-    for (let i = 0; i < 12 && !(await toggle.isVisible()) || i === 0; i++) await page.getByTestId('tool-select').tap();
+    for (let i = 0; (i < 12 && !(await toggle.isVisible())) || i === 0; i++) await page.getByTestId('tool-select').tap();
     await expect(toggle).toHaveAttribute('aria-expanded', 'false');
   });
 });

@@ -255,7 +255,10 @@ for (const device of ['phone', 'desktop'] as const) {
           return new Set([...range.getClientRects()].map((r) => Math.round(r.top))).size;
         }),
       );
-      expect(lines.every((n) => n === 1), lines.join(' ')).toBe(true);
+      expect(
+        lines.every((n) => n === 1),
+        lines.join(' '),
+      ).toBe(true);
       expect(await violations(page, '[data-testid="view3d"]')).toEqual([]);
       await table.scrollIntoViewIfNeeded();
       await shot(page, 'statistics');
@@ -273,7 +276,11 @@ for (const device of ['phone', 'desktop'] as const) {
 }
 
 test('the shop decides: no expert tools and no switch by default, ?expert=switch offers it, ?expert=on shows them', async ({ browser }) => {
-  for (const [query, sw, tools] of [['', 0, 0], ['?expert=switch', 1, 0], ['?expert=on', 0, 1]] as const) {
+  for (const [query, sw, tools] of [
+    ['', 0, 0],
+    ['?expert=switch', 1, 0],
+    ['?expert=on', 0, 1],
+  ] as const) {
     const context = await browser.newContext({ viewport: { width: 1440, height: 900 }, reducedMotion: 'reduce' });
     const page = await context.newPage();
     await page.goto(`/embed.html${query}`);

@@ -18,7 +18,12 @@ test('without WebGL2 the 3D toggle explains why, and the 2D planner keeps workin
   await expect(page.getByTestId('view3d-unsupported')).toContainText('no WebGL2');
   expect(await page.evaluate(() => (window.luxbox!.view3d() as { error: string | null }).error)).toMatch(/WebGL2/);
   // No 3D chunk was downloaded for nothing.
-  const chunks = await page.evaluate(() => performance.getEntriesByType('resource').map((e) => e.name).filter((n) => /View3D/.test(n)));
+  const chunks = await page.evaluate(() =>
+    performance
+      .getEntriesByType('resource')
+      .map((e) => e.name)
+      .filter((n) => /View3D/.test(n)),
+  );
   expect(chunks).toEqual([]);
   await page.getByRole('button', { name: 'Back to 2D plan' }).click();
   await expect(page.getByTestId('plan')).toBeVisible();

@@ -3,8 +3,6 @@ import { trackCanvases, type CanvasTracking, viewerStatus as status, meanLevel }
 
 test.use({ reducedMotion: 'reduce', viewport: { width: 1280, height: 800 } });
 
-
-
 async function openCornerL(page: Page): Promise<void> {
   // Configure in 2D through the UI: default room, then the L-corner preset from the side panel.
   await page.goto('/?quality=balanced'); // lux values at a fixed bake quality (docs/viewer.md, "Quality levels")

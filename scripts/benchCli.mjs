@@ -41,7 +41,10 @@ for (const [label, scene, quality] of [
     for (let i = 0; i < repeats; i++) cold.push(timeCli(['bake', scene, '--out', join(tmp, `${gl}-${i}`), '--gl', gl, ...quality]));
     // Warm: the same scene three times in one process; the last bake's own timing.
     timeCli(['bake', scene, scene, scene, '--out', join(tmp, `${gl}-warm`), '--gl', gl, ...quality]);
-    const stem = scene.split('/').pop().replace(/\.json$/, '');
+    const stem = scene
+      .split('/')
+      .pop()
+      .replace(/\.json$/, '');
     const warm = JSON.parse(readFileSync(join(tmp, `${gl}-warm`, `${stem}-3`, 'report.json'), 'utf8')).timings_ms.total;
     row[gl] = { cold: median(cold), warm };
   }

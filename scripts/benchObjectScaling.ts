@@ -64,5 +64,7 @@ for (const n of [8, 32, 100, 316]) {
 }
 baker.dispose();
 gl.destroy();
-console.log(`Run ${new Date().toISOString()}; ${os.cpus()[0]?.model ?? 'cpu'}, ${os.cpus().length} cores; texel ${settings.texelSize} m, ${settings.samples} samples, ${settings.bounces} bounces; GPU bake best of 2 after a warm-up bake per size (the objects are prepared once per list, so the timed bakes are the GPU passes; preparation timed on its own).\n`);
+console.log(
+  `Run ${new Date().toISOString()}; ${os.cpus()[0]?.model ?? 'cpu'}, ${os.cpus().length} cores; texel ${settings.texelSize} m, ${settings.samples} samples, ${settings.bounces} bounces; GPU bake best of 2 after a warm-up bake per size (the objects are prepared once per list, so the timed bakes are the GPU passes; preparation timed on its own).\n`,
+);
 console.log('| scene | triangles | prepareObjects (CPU) | bake |\n|---|---|---|---|\n' + rows.join('\n'));

@@ -38,7 +38,7 @@ function presetScene(presetId: string) {
   const parsed = new Map<string, Photometry>();
   const luminaires = scene.luminaires.map((l) => {
     if (!parsed.has(l.photometry)) parsed.set(l.photometry, parsePhotometry(readFileSync(PUBLIC_DIR + l.photometry), l.photometry));
-    return { ...l, photometry: parsed.get(l.photometry)!, dimming: l.dimming ?? 1, color: l.color ?? [1, 1, 1] as [number, number, number] };
+    return { ...l, photometry: parsed.get(l.photometry)!, dimming: l.dimming ?? 1, color: l.color ?? ([1, 1, 1] as [number, number, number]) };
   });
   return { room: scene.room, luminaires };
 }
@@ -142,10 +142,14 @@ async function toggleToFirstLit(): Promise<ToggleRun[]> {
       const bakesBefore = bakes(await status(page));
       const t1 = Date.now();
       await page.getByTestId('tool-3d').click();
-      await page.waitForFunction(() => {
-        const s = window.luxbox!.view3d() as ViewerStatus;
-        return s.open && s.lit;
-      }, null, { timeout: 120_000, polling: 10 });
+      await page.waitForFunction(
+        () => {
+          const s = window.luxbox!.view3d() as ViewerStatus;
+          return s.open && s.lit;
+        },
+        null,
+        { timeout: 120_000, polling: 10 },
+      );
       const secondFirstLit = Date.now() - t1;
       const after = await status(page);
       runs.push({ firstLit, done, secondFirstLit, secondFirstLitFrame: after.firstLitFrame, bakesBefore, bakesAfter: bakes(after) });
@@ -183,5 +187,7 @@ const bundles = bundleSizes();
 log(`bundles: planner entry ${(bundles.entry / 1024).toFixed(1)} KiB gzip (${(bundles.entryRaw / 1024).toFixed(0)} KiB raw), 3D chunk ${(bundles.view3d / 1024).toFixed(1)} KiB gzip (${(bundles.view3dRaw / 1024).toFixed(0)} KiB raw)`);
 const toggles = await toggleToFirstLit();
 log(`chromium toggle → first lit frame: ${toggles.map((r) => r.firstLit).join(', ')} ms; → bake done: ${toggles.map((r) => r.done).join(', ')} ms`);
-log(`chromium 3D → 2D → 3D, no change: first lit frame ${toggles.map((r) => r.secondFirstLit).join(', ')} ms (first lit frame number ${toggles.map((r) => r.secondFirstLitFrame ?? '–').join(', ')}); bakes (group bakes + indirect solves) before → after: ${toggles.map((r) => `${r.bakesBefore} → ${r.bakesAfter}`).join(', ')}`);
+log(
+  `chromium 3D → 2D → 3D, no change: first lit frame ${toggles.map((r) => r.secondFirstLit).join(', ')} ms (first lit frame number ${toggles.map((r) => r.secondFirstLitFrame ?? '–').join(', ')}); bakes (group bakes + indirect solves) before → after: ${toggles.map((r) => `${r.bakesBefore} → ${r.bakesAfter}`).join(', ')}`,
+);
 if (process.argv[2]) writeFileSync(process.argv[2], JSON.stringify({ machine, relight, gpuRelight, moduleCount, quality, bundles, toggles }, null, 2));

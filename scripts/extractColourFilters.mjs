@@ -25,15 +25,39 @@ const PICK = {
   nd: ['L298', 'L209', 'L210', 'L211'],
   colour: [
     // reds and pinks
-    'L106', 'L026', 'L164', 'L182', 'L002', 'L035', 'L128', 'L113',
+    'L106',
+    'L026',
+    'L164',
+    'L182',
+    'L002',
+    'L035',
+    'L128',
+    'L113',
     // ambers, oranges, yellows
-    'L020', 'L104', 'L105', 'L147', 'L162', 'L101', 'L010',
+    'L020',
+    'L104',
+    'L105',
+    'L147',
+    'L162',
+    'L101',
+    'L010',
     // greens
-    'L139', 'L121', 'L138', 'L124',
+    'L139',
+    'L121',
+    'L138',
+    'L124',
     // blues
-    'L119', 'L132', 'L118', 'L117', 'L068', 'L181',
+    'L119',
+    'L132',
+    'L118',
+    'L117',
+    'L068',
+    'L181',
     // lavenders and violets
-    'L058', 'L052', 'L136', 'L142',
+    'L058',
+    'L052',
+    'L136',
+    'L142',
   ],
 };
 
@@ -55,7 +79,9 @@ for (const [kind, keys] of Object.entries(PICK)) {
     const f = data.filters[key];
     if (!f) throw new Error(`${input}: no filter ${key}`);
     if (!f.brand.startsWith('Lee') || !f.sd) throw new Error(`${key}: expected a LEE filter with spectral data`);
-    const nms = Object.keys(f.sd).map(Number).sort((a, b) => a - b);
+    const nms = Object.keys(f.sd)
+      .map(Number)
+      .sort((a, b) => a - b);
     const start = nms[0];
     nms.forEach((nm, i) => {
       if (nm !== start + 5 * i) throw new Error(`${key}: wavelengths are not a 5 nm grid at ${nm} nm`);

@@ -65,7 +65,13 @@ function sourceBreakdown(code, map) {
       const end = i + 1 < segs.length ? segs[i + 1][0] : lines[li].length;
       const path = s < 0 ? '(glue)' : map.sources[s];
       const pkg = path.match(/node_modules\/((?:@[^/]+\/)?[^/]+)/);
-      const key = pkg ? pkg[1] : path.replace(/^.*?\bsrc\//, 'src/').split('/').slice(0, 3).join('/');
+      const key = pkg
+        ? pkg[1]
+        : path
+            .replace(/^.*?\bsrc\//, 'src/')
+            .split('/')
+            .slice(0, 3)
+            .join('/');
       parts.set(key, (parts.get(key) ?? '') + lines[li].slice(c, end));
     });
   });
@@ -107,11 +113,20 @@ if (isMain) {
     const ok = r.gzip <= FIRST_SCREEN_BUDGET_BYTES;
     over ||= !ok;
     if (asJson) continue;
-    process.stdout.write(`${r.page}: first screen ${r.gzip} B = ${(r.gzip / 1000).toFixed(1)} kB = ${kib.toFixed(1)} KiB gzip -9 (${(r.raw / 1024).toFixed(0)} KiB raw) in ${r.files.length} files; budget ${FIRST_SCREEN_BUDGET_BYTES / 1000} kB: ${ok ? 'ok' : 'OVER'}\n`);
+    process.stdout.write(
+      `${r.page}: first screen ${r.gzip} B = ${(r.gzip / 1000).toFixed(1)} kB = ${kib.toFixed(1)} KiB gzip -9 (${(r.raw / 1024).toFixed(0)} KiB raw) in ${r.files.length} files; budget ${FIRST_SCREEN_BUDGET_BYTES / 1000} kB: ${ok ? 'ok' : 'OVER'}\n`,
+    );
     for (const f of r.files) process.stdout.write(`  ${(f.gzip / 1024).toFixed(1).padStart(6)} KiB  ${f.file}\n`);
     process.stdout.write('  largest sources (each gzipped alone):\n');
     for (const b of r.breakdown.slice(0, 15)) process.stdout.write(`  ${(b.gzip / 1024).toFixed(1).padStart(6)} KiB  ${b.source}\n`);
   }
-  if (asJson) process.stdout.write(JSON.stringify(results.map(({ page, files, gzip: g, raw }) => ({ page, gzip: g, raw, files })), null, 2) + '\n');
+  if (asJson)
+    process.stdout.write(
+      JSON.stringify(
+        results.map(({ page, files, gzip: g, raw }) => ({ page, gzip: g, raw, files })),
+        null,
+        2,
+      ) + '\n',
+    );
   process.exit(over ? 1 : 0);
 }

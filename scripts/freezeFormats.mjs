@@ -22,9 +22,12 @@ function run(name, params) {
   if (!config) throw new Error('outcome shape ' + Object.keys(o));
   console.log('  ok', name);
 }
-const cube = { positions: new Float32Array([0,0,0, 0.4,0,0, 0.4,0,0.4, 0,0,0.4, 0,0.4,0, 0.4,0.4,0, 0.4,0.4,0.4, 0,0.4,0.4]),
-  indices: new Uint32Array([0,1,2, 0,2,3, 4,6,5, 4,7,6, 0,4,5, 0,5,1, 1,5,6, 1,6,2, 2,6,7, 2,7,3, 3,7,4, 3,4,0]),
-  materialOfTriangle: new Uint16Array(12), materials: [{ name: 'oak', colour: [0.55, 0.4, 0.25], reflectance: [0.55, 0.4, 0.25] }] };
+const cube = {
+  positions: new Float32Array([0, 0, 0, 0.4, 0, 0, 0.4, 0, 0.4, 0, 0, 0.4, 0, 0.4, 0, 0.4, 0.4, 0, 0.4, 0.4, 0.4, 0, 0.4, 0.4]),
+  indices: new Uint32Array([0, 1, 2, 0, 2, 3, 4, 6, 5, 4, 7, 6, 0, 4, 5, 0, 5, 1, 1, 5, 6, 1, 6, 2, 2, 6, 7, 2, 7, 3, 3, 7, 4, 3, 4, 0]),
+  materialOfTriangle: new Uint16Array(12),
+  materials: [{ name: 'oak', colour: [0.55, 0.4, 0.25], reflectance: [0.55, 0.4, 0.25] }],
+};
 run('autoPatch', { universe: 1, address: 1, resolution: 16, cct: true });
 if (v >= 3) run('addObject', { source: { kind: 'library', item: 'dining-table' }, placement: { on: 'floor', x: 1.6, z: 2.6 } });
 if (v >= 3) run('addObject', { source: { kind: 'library', item: 'picture' }, placement: { on: 'wall', wall: 'north', u: 1.2, y: 1.5 } });
@@ -42,7 +45,11 @@ const share = sf.encodeShareString(config, defaultCatalog);
 if (v >= 3) run('addObject', { source: { kind: 'import', name: 'crate.obj', mesh: cube, units: 'm' }, placement: { on: 'floor', x: 3.8, z: 0.8 } });
 writeFileSync(`${out}/configuration-v${v}.luxbox.json`, sf.serializeConfiguration(config, defaultCatalog) + '\n');
 writeFileSync(`${out}/share-link-v${v}.txt`, share + '\n');
-try { await (await import('./src/core/colour/colourFilterSpectra')).loadColourFilterSpectra(); } catch { /* older versions load them eagerly */ }
+try {
+  await (await import('./src/core/colour/colourFilterSpectra')).loadColourFilterSpectra();
+} catch {
+  /* older versions load them eagerly */
+}
 const scene = toLightingScene(config, defaultCatalog);
 writeFileSync(`${out}/lighting-scene-v${scene.version}.json`, JSON.stringify(scene, null, 2) + '\n');
 console.log('version', v, 'lighting scene', scene.version);

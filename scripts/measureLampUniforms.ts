@@ -34,8 +34,7 @@ function basis(scene: BakeScene, luminaires: BakeLuminaire[]): BakeScene {
 function measure(label: string, scene: BakeScene): void {
   const module = groupLuminaires(scene.luminaires)[0].basis;
   const { width, depth } = scene.room;
-  const moved = (dx: number, dz: number) =>
-    module.map((l): BakeLuminaire => ({ ...l, position: [Math.min(width - 0.1, Math.max(0.1, l.position[0] + dx)), l.position[1], Math.min(depth - 0.1, Math.max(0.1, l.position[2] + dz))] }));
+  const moved = (dx: number, dz: number) => module.map((l): BakeLuminaire => ({ ...l, position: [Math.min(width - 0.1, Math.max(0.1, l.position[0] + dx)), l.position[1], Math.min(depth - 0.1, Math.max(0.1, l.position[2] + dz))] }));
   // `--uniforms-first` swaps the order, to see that neither variant gains from running second.
   const order = process.argv.includes('--uniforms-first') ? [true, false] : [false, true];
   for (const lampUniforms of order) {

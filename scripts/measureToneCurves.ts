@@ -35,7 +35,11 @@ const hueOfDisplay = (c: Rgb) => hueAngle(xyzToLab(linearSrgbToXyz(c.map(srgbToL
 await loadColourFilterSpectra();
 const rows: string[] = [];
 rows.push(`| measure | ${CURVES.map(([n]) => n).join(' | ')} |`, `|---|${CURVES.map(() => '---').join('|')}|`);
-for (const [filter, name] of [['lee-106', 'LEE 106 Primary Red'], ['lee-139', 'LEE 139 Primary Green'], ['lee-119', 'LEE 119 Dark Blue']] as const) {
+for (const [filter, name] of [
+  ['lee-106', 'LEE 106 Primary Red'],
+  ['lee-139', 'LEE 139 Primary Green'],
+  ['lee-119', 'LEE 119 Dark Blue'],
+] as const) {
   const gel = moduleColour(3000, filter);
   const ref = hueOfChromaticity(gel.x, gel.y);
   // The filtered light per lux of it: its linear colour over its own luminance τ_v.

@@ -26,7 +26,11 @@ mkdirSync(join(out, 'node_modules'), { recursive: true });
 // 1. The CLI in one file.
 sh(join(root, 'node_modules/.bin/esbuild'), [
   join(root, 'src/hosts/cli/bundleEntry.ts'),
-  '--bundle', '--platform=node', '--format=esm', '--target=node20', '--external:gl',
+  '--bundle',
+  '--platform=node',
+  '--format=esm',
+  '--target=node20',
+  '--external:gl',
   `--outfile=${join(out, 'luxbox.mjs')}`,
   // Bundled CommonJS dependencies call require(): give the ES module one.
   "--banner:js=import { createRequire as __luxboxRequire } from 'node:module'; const require = __luxboxRequire(import.meta.url);",

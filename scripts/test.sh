@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
-echo "== lint";       npx eslint .
+echo "== lint";       npx eslint . && npx prettier --check .
 echo "== typecheck";  npx tsc --noEmit
 echo "== unit + headless WebGL (vitest under xvfb)"
 # Issue 11's bar: 10 000 seeded random action sequences in the always-valid property test (about

@@ -22,11 +22,7 @@ export const REDUCE_GRID = 16;
  * expression calls, declared before main. One block sum for the walls (the texel itself) and the
  * objects' atlas (weighted by coverage and ρ: objectFluxReduce.glsl.ts).
  */
-export function blockSumPass<U extends UniformSpec & { uSource: 'sampler2D'; uBlock: 'int' }>(
-  uniforms: U,
-  texelValue: (q: string) => string,
-  helpers = '',
-): FragmentPass<U> {
+export function blockSumPass<U extends UniformSpec & { uSource: 'sampler2D'; uBlock: 'int' }>(uniforms: U, texelValue: (q: string) => string, helpers = ''): FragmentPass<U> {
   return fragmentPass(
     uniforms,
     /* glsl */ `${helpers}out vec4 outColor;

@@ -20,7 +20,4 @@ export const objectReduceSumPass = blockSumPass(
 );
 
 /** fluxRatioPass with the atlas: uSum6 = Σ E·c, uSum7 = Σ ρ·E·c (partial sums), uObjectArea = texel² × input scale. */
-export const objectFluxRatioPass = fragmentPass(
-  { ...fluxRatioUniforms, uSum6: 'sampler2D', uSum7: 'sampler2D', uObjectArea: 'float' },
-  fluxRatioSource({ flux: 'total(uSum6) * uObjectArea', reflected: 'total(uSum7) * uObjectArea' }),
-);
+export const objectFluxRatioPass = fragmentPass({ ...fluxRatioUniforms, uSum6: 'sampler2D', uSum7: 'sampler2D', uObjectArea: 'float' }, fluxRatioSource({ flux: 'total(uSum6) * uObjectArea', reflected: 'total(uSum7) * uObjectArea' }));

@@ -220,7 +220,10 @@ export function parseUntrustedJson(text: string, source: string, makeError: (mes
   const dup = duplicateKey(text);
   if (dup) {
     const lc = lineAndColumn(text, dup.offset);
-    throw fail(`${source}: ${lineColumn(text, dup.offset)}: field ${excerpt(dup.key).replace(/^"|"$/g, "'")} appears twice in one object`, { code: 'fileDuplicateField', params: { name, line: lc.line, column: lc.column, field: excerpt(dup.key).replace(/^"|"$/g, '') } });
+    throw fail(`${source}: ${lineColumn(text, dup.offset)}: field ${excerpt(dup.key).replace(/^"|"$/g, "'")} appears twice in one object`, {
+      code: 'fileDuplicateField',
+      params: { name, line: lc.line, column: lc.column, field: excerpt(dup.key).replace(/^"|"$/g, '') },
+    });
   }
   const shape = jsonShapeIssue(value);
   if (shape) throw fail(`${source}: ${shape.text}`, { code: 'fileProblem', params: { name }, detail: shape });

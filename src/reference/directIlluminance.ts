@@ -96,25 +96,12 @@ export interface PatchAverageOptions {
  * on its four quarters disagree, or while a cell subtends more than
  * `maxCellAngle` from a source (a 1° spot must not fall between nodes).
  */
-export function patchMeanDirect(
-  sources: readonly ReferencePointSource[],
-  f: RectOnFace,
-  u0: number,
-  u1: number,
-  v0: number,
-  v1: number,
-  opt: PatchAverageOptions,
-): Rgb {
+export function patchMeanDirect(sources: readonly ReferencePointSource[], f: RectOnFace, u0: number, u1: number, v0: number, v1: number, opt: PatchAverageOptions): Rgb {
   const out: Rgb = [0, 0, 0];
   const visit = (a0: number, a1: number, b0: number, b1: number, depth: number, whole: Rgb): void => {
     const am = 0.5 * (a0 + a1);
     const bm = 0.5 * (b0 + b1);
-    const quarters = [
-      gaussMean(sources, f, a0, am, b0, bm),
-      gaussMean(sources, f, am, a1, b0, bm),
-      gaussMean(sources, f, a0, am, bm, b1),
-      gaussMean(sources, f, am, a1, bm, b1),
-    ];
+    const quarters = [gaussMean(sources, f, a0, am, b0, bm), gaussMean(sources, f, am, a1, b0, bm), gaussMean(sources, f, a0, am, bm, b1), gaussMean(sources, f, am, a1, bm, b1)];
     const fine: Rgb = [0, 0, 0];
     for (const q of quarters) for (let c = 0; c < 3; c++) fine[c] += 0.25 * q[c];
     let converged = true;
@@ -137,15 +124,7 @@ export function patchMeanDirect(
 }
 
 /** Does a quarter cell of the rectangle subtend more than maxAngle from some source in front of it? */
-function tooCoarse(
-  sources: readonly ReferencePointSource[],
-  f: RectOnFace,
-  a0: number,
-  a1: number,
-  b0: number,
-  b1: number,
-  maxAngle: number,
-): boolean {
+function tooCoarse(sources: readonly ReferencePointSource[], f: RectOnFace, a0: number, a1: number, b0: number, b1: number, maxAngle: number): boolean {
   const half = 0.5 * Math.hypot(a1 - a0, b1 - b0);
   const c: Vec3 = [0, 0, 0];
   c[f.axis] = f.plane;

@@ -73,8 +73,7 @@ function perpendicularKernel(grid: PatchGrid, aP: Axis, aQ: Axis): Perpendicular
     for (let ja = 0; ja < na; ja++) {
       const base = (ib * na + ja) * ws + ns - 1;
       for (let ds = 0; ds < ns; ds++) {
-        const f =
-          perpendicularExchangeArea(0, hs, ib * hb, (ib + 1) * hb, ds * hs, (ds + 1) * hs, ja * ha, (ja + 1) * ha) / areaP;
+        const f = perpendicularExchangeArea(0, hs, ib * hb, (ib + 1) * hb, ds * hs, (ds + 1) * hs, ja * ha, (ja + 1) * ha) / areaP;
         factor[base + ds] = f;
         factor[base - ds] = f;
       }
@@ -120,12 +119,7 @@ export function buildFaceKernels(grid: PatchGrid): (FaceKernel | null)[] {
       let k = byAxes.get(key);
       if (!k) {
         const reverse = byAxes.get(`${Q.axis}${P.axis}`);
-        k =
-          P.axis === Q.axis
-            ? parallelKernel(grid, P)
-            : reverse?.kind === 'perpendicular'
-              ? transposed(grid, reverse, Q.axis, P.axis)
-              : perpendicularKernel(grid, P.axis, Q.axis);
+        k = P.axis === Q.axis ? parallelKernel(grid, P) : reverse?.kind === 'perpendicular' ? transposed(grid, reverse, Q.axis, P.axis) : perpendicularKernel(grid, P.axis, Q.axis);
         byAxes.set(key, k);
       }
       kernels.push(k);

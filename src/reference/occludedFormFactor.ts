@@ -102,14 +102,7 @@ export interface VisibilityDepth {
  * use Lambert's exact contour integral, so a fully visible emitter is exact
  * (CIE 171:2006 test case 5.7's "configuration factor of the unobstructed portion").
  */
-export function occludedFormFactor(
-  p: Vec3,
-  n: Vec3,
-  poly: readonly Vec3[],
-  polyNormal: Vec3,
-  occ: Occluders | null,
-  depth: VisibilityDepth,
-): number {
+export function occludedFormFactor(p: Vec3, n: Vec3, poly: readonly Vec3[], polyNormal: Vec3, occ: Occluders | null, depth: VisibilityDepth): number {
   // The emitter radiates from its front only; p behind (or in) its plane sees nothing.
   const v0 = poly[0];
   if (polyNormal[0] * (p[0] - v0[0]) + polyNormal[1] * (p[1] - v0[1]) + polyNormal[2] * (p[2] - v0[2]) <= 0) return 0;

@@ -55,13 +55,8 @@ function cellsAlong(size: number, cell: number, max: number): number {
  * reference relies on. `photometries` maps the scene's `photometry` strings to
  * parsed data.
  */
-export function referencePointSources(
-  scene: LightingScene,
-  photometries: ReadonlyMap<string, Photometry> | Record<string, Photometry>,
-  options: PointSourceOptions = {},
-): ReferencePointSource[] {
-  const lookup = (key: string): Photometry | undefined =>
-    photometries instanceof Map ? photometries.get(key) : (photometries as Record<string, Photometry>)[key];
+export function referencePointSources(scene: LightingScene, photometries: ReadonlyMap<string, Photometry> | Record<string, Photometry>, options: PointSourceOptions = {}): ReferencePointSource[] {
+  const lookup = (key: string): Photometry | undefined => (photometries instanceof Map ? photometries.get(key) : (photometries as Record<string, Photometry>)[key]);
   const cell = options.openingCell ?? DEFAULT_OPENING_CELL;
   if (!Number.isFinite(cell) || cell < 0) {
     throw new ReferenceInputError(`reference options: openingCell must be a finite number ≥ 0, got ${cell}`);
@@ -82,9 +77,7 @@ export function referencePointSources(
     }
     lum.position.forEach((c, a) => {
       if (c < 0 || c > extent[a]) {
-        throw new ReferenceInputError(
-          `${where}.position: [${lum.position.join(', ')}] lies outside the room (0..${extent[a]} m along ${'xyz'[a]})`,
-        );
+        throw new ReferenceInputError(`${where}.position: [${lum.position.join(', ')}] lies outside the room (0..${extent[a]} m along ${'xyz'[a]})`);
       }
     });
     for (const key of ['yaw', 'pitch', 'roll'] as const) {
@@ -111,7 +104,7 @@ export function referencePointSources(
         const x = nx > 1 ? ((i + 0.5) / nx - 0.5) * w : 0;
         const z = nz > 1 ? ((k + 0.5) / nz - 0.5) * l : 0;
         // Round openings keep the cells whose centre lies inside the ellipse.
-        if (round && w > 0 && l > 0 && (2 * x / w) ** 2 + (2 * z / l) ** 2 > 1) continue;
+        if (round && w > 0 && l > 0 && ((2 * x) / w) ** 2 + ((2 * z) / l) ** 2 > 1) continue;
         offsets.push([x, 0, z]);
       }
     }
@@ -132,7 +125,12 @@ export function referencePointSources(
       }
       return Math.min(half, Math.max(0, t - 0.01));
     };
-    const faces: [number, -1 | 0 | 1][] = tall ? [[-room(-1), -1], [room(1), 1]] : [[0, 0]];
+    const faces: [number, -1 | 0 | 1][] = tall
+      ? [
+          [-room(-1), -1],
+          [room(1), 1],
+        ]
+      : [[0, 0]];
     for (const [y, hemisphere] of faces) {
       for (const off of offsets) {
         const o = apply(toWorld, [off[0], y, off[2]]);

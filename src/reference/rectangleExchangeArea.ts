@@ -25,17 +25,7 @@ function gParallel(dx: number, dy: number, c2: number): number {
  * Exchange area between rectangle 1 = [x1,x2]×[y1,y2] in the plane z = 0 and
  * rectangle 2 = [ξ1,ξ2]×[η1,η2] (same x/y axes) in the plane z = c, c > 0.
  */
-export function parallelExchangeArea(
-  x1: number,
-  x2: number,
-  y1: number,
-  y2: number,
-  xi1: number,
-  xi2: number,
-  eta1: number,
-  eta2: number,
-  c: number,
-): number {
+export function parallelExchangeArea(x1: number, x2: number, y1: number, y2: number, xi1: number, xi2: number, eta1: number, eta2: number, c: number): number {
   const c2 = c * c;
   const xs = [x1, x2];
   const ys = [y1, y2];
@@ -70,16 +60,7 @@ function gPerpendicular(dx: number, y: number, eta: number): number {
  * rectangle 2 = [ξ1,ξ2] × [η1,η2] in a perpendicular plane, where x/ξ run along
  * the line where the planes meet and y, η ≥ 0 are distances from that line.
  */
-export function perpendicularExchangeArea(
-  x1: number,
-  x2: number,
-  y1: number,
-  y2: number,
-  xi1: number,
-  xi2: number,
-  eta1: number,
-  eta2: number,
-): number {
+export function perpendicularExchangeArea(x1: number, x2: number, y1: number, y2: number, xi1: number, xi2: number, eta1: number, eta2: number): number {
   const xs = [x1, x2];
   const ys = [y1, y2];
   const xis = [xi1, xi2];

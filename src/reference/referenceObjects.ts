@@ -84,9 +84,7 @@ export function placeReferenceObjects(objects: readonly ReferenceObject[], exten
       const w = toWorld(local[0], local[1], local[2]);
       for (let a = 0; a < 3; a++) {
         if (w[a] < -ROOM_SLACK || w[a] > extent[a] + ROOM_SLACK) {
-          throw new ReferenceInputError(
-            `${where}: vertex ${v} at [${w.map((c) => c.toFixed(3)).join(', ')}] lies outside the room (0..${extent[a]} m along ${'xyz'[a]})`,
-          );
+          throw new ReferenceInputError(`${where}: vertex ${v} at [${w.map((c) => c.toFixed(3)).join(', ')}] lies outside the room (0..${extent[a]} m along ${'xyz'[a]})`);
         }
         w[a] = Math.min(Math.max(w[a], 0), extent[a]);
       }

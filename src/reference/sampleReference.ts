@@ -51,9 +51,7 @@ export function sampleReference(result: ReferenceResult, point: Vec3, surface?: 
     }
   });
   if (best < 0 || bestDist > SURFACE_TOLERANCE) {
-    throw new ReferenceInputError(
-      `sample point [${point.join(', ')}]: not on ${surface ?? 'any surface'} of the ${extent.join(' × ')} m room (tolerance ${SURFACE_TOLERANCE} m)`,
-    );
+    throw new ReferenceInputError(`sample point [${point.join(', ')}]: not on ${surface ?? 'any surface'} of the ${extent.join(' × ')} m room (tolerance ${SURFACE_TOLERANCE} m)`);
   }
   const face = BOX_FACES[best];
   // Project onto the face and keep a hair inside it, so the point never sits

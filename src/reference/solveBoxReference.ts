@@ -125,7 +125,10 @@ function maxCellAngle(sources: readonly ReferencePointSource[]): number {
   let step = 2;
   for (const ph of new Set(sources.map((x) => x.photometry))) {
     const va = ph.verticalAngles;
-    const steps = va.slice(1).map((v, i) => v - va[i]).sort((a, b) => a - b);
+    const steps = va
+      .slice(1)
+      .map((v, i) => v - va[i])
+      .sort((a, b) => a - b);
     if (steps.length > 0) step = Math.min(step, steps[steps.length >> 1]);
   }
   return (Math.min(Math.max(4 * step, 0.5), 8) * Math.PI) / 180;
@@ -141,11 +144,7 @@ function maxCellAngle(sources: readonly ReferencePointSource[]): number {
  * where E_dir,i is the patch mean of the point-source direct illuminance (adaptive
  * quadrature). Shares no code with src/engines/bake or the shaders, by design.
  */
-export function solveBoxReference(
-  scene: LightingScene,
-  photometries: ReadonlyMap<string, Photometry> | Record<string, Photometry>,
-  options: ReferenceOptions = {},
-): ReferenceResult {
+export function solveBoxReference(scene: LightingScene, photometries: ReadonlyMap<string, Photometry> | Record<string, Photometry>, options: ReferenceOptions = {}): ReferenceResult {
   const extent = validateRoom(scene);
   if (typeof scene.room.reflectance !== 'object' || scene.room.reflectance === null) throw new ReferenceInputError('room.reflectance: expected an object with one entry per surface');
   const reflectance = {} as Record<SurfaceName, Rgb>;
@@ -203,7 +202,15 @@ export function solveBoxReference(
   let sweeps = 0;
   let residual = 0;
   if (anyReflective) {
-    ({ sweeps, residual } = gaussSeidel(grid, kernels, direct, indirect, BOX_FACES.map((f) => reflectance[f.name]), tolerance, maxSweeps));
+    ({ sweeps, residual } = gaussSeidel(
+      grid,
+      kernels,
+      direct,
+      indirect,
+      BOX_FACES.map((f) => reflectance[f.name]),
+      tolerance,
+      maxSweeps,
+    ));
   }
   const solveMs = performance.now() - t0;
 
@@ -244,15 +251,7 @@ export function solveBoxReference(
  * Gauss–Seidel sweeps over all patches (each update uses the newest neighbours),
  * in place on `indirect`. Returns the sweeps run and the final relative change.
  */
-function gaussSeidel(
-  grid: PatchGrid,
-  kernels: (FaceKernel | null)[],
-  direct: Float64Array[],
-  indirect: Float64Array[],
-  rho: Rgb[],
-  tolerance: number,
-  maxSweeps: number,
-): { sweeps: number; residual: number } {
+function gaussSeidel(grid: PatchGrid, kernels: (FaceKernel | null)[], direct: Float64Array[], indirect: Float64Array[], rho: Rgb[], tolerance: number, maxSweeps: number): { sweeps: number; residual: number } {
   const faces = BOX_FACES;
   // Exitance M = ρ(E_dir + E_ind) per face, RGB interleaved, kept in step with `indirect`.
   const exitance = faces.map((_, fi) => {
@@ -339,15 +338,7 @@ function gatherParallel(k: { nu: number; nv: number; factor: Float64Array }, iu:
   g[2] += gb;
 }
 
-function gatherPerpendicular(
-  k: { ns: number; nb: number; na: number; factor: Float64Array },
-  P: BoxFace,
-  Q: BoxFace,
-  idx: [number, number, number],
-  order: Int32Array,
-  m: Float64Array,
-  g: Float64Array,
-): void {
+function gatherPerpendicular(k: { ns: number; nb: number; na: number; factor: Float64Array }, P: BoxFace, Q: BoxFace, idx: [number, number, number], order: Int32Array, m: Float64Array, g: Float64Array): void {
   const { ns, nb, na, factor } = k;
   const s = 3 - P.axis - Q.axis;
   const is = idx[s];

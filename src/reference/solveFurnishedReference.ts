@@ -86,12 +86,7 @@ function receiverPoints(p: FurnishedPatch, levels: number): Vec3[] {
  * run until the largest change is below `tolerance` × the largest total. Shares no code
  * with src/engines/bake, the shaders or three-mesh-bvh.
  */
-export function solveFurnishedReference(
-  scene: LightingScene,
-  photometries: ReadonlyMap<string, Photometry> | Record<string, Photometry>,
-  objects: readonly ReferenceObject[],
-  options: FurnishedOptions = {},
-): FurnishedResult {
+export function solveFurnishedReference(scene: LightingScene, photometries: ReadonlyMap<string, Photometry> | Record<string, Photometry>, objects: readonly ReferenceObject[], options: FurnishedOptions = {}): FurnishedResult {
   if (typeof scene?.room !== 'object' || scene.room === null) throw new ReferenceInputError('room: expected an object with width, height, depth and reflectance');
   const { width, height, depth } = scene.room;
   const extent: Vec3 = [width, height, depth];

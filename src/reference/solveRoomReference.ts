@@ -132,12 +132,7 @@ function roomPointSources(room: Room, luminaires: readonly LightingLuminaire[], 
  * its shaders; the room's surfaces come from src/core/room (the contract's geometry), checked
  * here by flux balances (tests/reference/roomReference.test.ts).
  */
-export function solveRoomReference(
-  input: RoomInput,
-  luminaires: readonly LightingLuminaire[],
-  photometries: ReadonlyMap<string, Photometry> | Record<string, Photometry>,
-  options: RoomReferenceOptions = {},
-): RoomReferenceResult {
+export function solveRoomReference(input: RoomInput, luminaires: readonly LightingLuminaire[], photometries: ReadonlyMap<string, Photometry> | Record<string, Photometry>, options: RoomReferenceOptions = {}): RoomReferenceResult {
   let room: Room;
   try {
     room = normaliseRoom(input);

@@ -32,8 +32,7 @@ export interface ImportEdge {
   isPackage: boolean;
 }
 
-const SPEC =
-  /(?:^|[\n;])\s*(?:import|export)\s+(?:type\s+)?(?:[^'";]*?\s+from\s+)?['"]([^'"]+)['"]|\bimport\(\s*['"]([^'"]+)['"]\s*\)/g;
+const SPEC = /(?:^|[\n;])\s*(?:import|export)\s+(?:type\s+)?(?:[^'";]*?\s+from\s+)?['"]([^'"]+)['"]|\bimport\(\s*['"]([^'"]+)['"]\s*\)/g;
 
 function listSources(dir: string, out: string[]): string[] {
   for (const name of readdirSync(dir)) {
@@ -109,7 +108,7 @@ export function layerViolations(edges: readonly ImportEdge[]): string[] {
   const folderEdges = new Map<string, Set<string>>();
   for (const e of edges) {
     const from = folderOf(e.from);
-    const kind = from === 'shaders' || from === 'reference' ? from : (layerRank(from) !== null ? LAYERS[layerRank(from)!] : null);
+    const kind = from === 'shaders' || from === 'reference' ? from : layerRank(from) !== null ? LAYERS[layerRank(from)!] : null;
     if (kind === null) {
       problems.push(`${e.from}: lies outside the layer folders (src/core, src/engines, src/ui, src/hosts, src/reference)`);
       continue;

@@ -27,7 +27,11 @@ export function configurationSeeds(): FuzzSeed[] {
 /** What is wrong with an accepted configuration (read from `text`). */
 export function configurationProblems(text: string, config: Configuration): string[] {
   const problems = jsonAcceptedProblems(text, toSceneFile(config, defaultCatalog));
-  problems.push(...validate(config, defaultCatalog).slice(0, 3).map((p) => `invalid: ${p.path}: ${p.message}`));
+  problems.push(
+    ...validate(config, defaultCatalog)
+      .slice(0, 3)
+      .map((p) => `invalid: ${p.path}: ${p.message}`),
+  );
   return problems;
 }
 

@@ -70,7 +70,11 @@ export function runOne(target: FuzzTarget, input: Uint8Array): RunResult {
   } catch (error) {
     const ms = performance.now() - t0;
     const e = error as Error;
-    const where = (e?.stack ?? '').split('\n').find((l) => /src\//.test(l))?.trim() ?? '';
+    const where =
+      (e?.stack ?? '')
+        .split('\n')
+        .find((l) => /src\//.test(l))
+        ?.trim() ?? '';
     return { verdict: 'crash', ms, detail: `${e?.name ?? 'throw'}: ${String(e?.message ?? error).slice(0, 120)} ${where}`, slow: ms > SLOW_MS };
   }
   const ms = performance.now() - t0;
@@ -186,20 +190,22 @@ export function saveRegression(target: string, bytes: Uint8Array, why: string): 
 /** The summary table, one row per target. */
 export function formatTable(tallies: Tally[]): string {
   const head = ['target', 'inputs', 'accepted-valid', 'refused-one-line', 'crashes', 'non-finite accepted', 'dropped fields', 'accepted invalid', 'over 1 s', 'multi-line/overlong msgs', 'max ms', 'mean ms'];
-  const rows = tallies.map((t) => [
-    t.target,
-    t.inputs,
-    t.counts['accepted-valid'],
-    t.counts['refused-one-line'],
-    t.counts.crash,
-    t.counts['non-finite'],
-    t.counts['dropped-field'],
-    t.counts['accepted-invalid'],
-    t.slow,
-    t.counts['bad-message'],
-    Math.round(t.maxMs),
-    t.inputs > 0 ? (t.totalMs / t.inputs).toFixed(2) : '0',
-  ].map(String));
+  const rows = tallies.map((t) =>
+    [
+      t.target,
+      t.inputs,
+      t.counts['accepted-valid'],
+      t.counts['refused-one-line'],
+      t.counts.crash,
+      t.counts['non-finite'],
+      t.counts['dropped-field'],
+      t.counts['accepted-invalid'],
+      t.slow,
+      t.counts['bad-message'],
+      Math.round(t.maxMs),
+      t.inputs > 0 ? (t.totalMs / t.inputs).toFixed(2) : '0',
+    ].map(String),
+  );
   const widths = head.map((h, i) => Math.max(h.length, ...rows.map((r) => r[i].length)));
   const line = (cells: string[]) => `| ${cells.map((c, i) => (i === 0 ? c.padEnd(widths[i]) : c.padStart(widths[i]))).join(' | ')} |`;
   return [line(head), `|${widths.map((w, i) => (i === 0 ? `:${'-'.repeat(w + 1)}` : `${'-'.repeat(w + 1)}:`)).join('|')}|`, ...rows.map(line)].join('\n');

@@ -12,9 +12,7 @@ export interface FuzzSeed {
   bytes: Uint8Array;
 }
 
-export type FuzzOutcome =
-  | { kind: 'accepted'; problems: string[] }
-  | { kind: 'refused'; message: string };
+export type FuzzOutcome = { kind: 'accepted'; problems: string[] } | { kind: 'refused'; message: string };
 
 export interface FuzzTarget {
   /** Short name used in tables and `npm run fuzz -- --target <name>`. */

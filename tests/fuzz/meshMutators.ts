@@ -93,7 +93,11 @@ function mutateGltfJson(json: Json, rng: Rng, applied: string[]): void {
     case 6: {
       const e = randomEntry(json, rng, ['accessors']);
       if (!e) return;
-      e[0].sparse = { count: pickNumber(rng), indices: { bufferView: rng.int(4), byteOffset: pickNumber(rng), componentType: rng.pick([5121, 5123, 5125, 5126]) }, values: { bufferView: rng.int(4), byteOffset: rng.chance(0.5) ? 0 : pickNumber(rng) } };
+      e[0].sparse = {
+        count: pickNumber(rng),
+        indices: { bufferView: rng.int(4), byteOffset: pickNumber(rng), componentType: rng.pick([5121, 5123, 5125, 5126]) },
+        values: { bufferView: rng.int(4), byteOffset: rng.chance(0.5) ? 0 : pickNumber(rng) },
+      };
       applied.push(`${e[1]}.sparse`);
       return;
     }

@@ -31,7 +31,16 @@ const fixture = (name: string): MeshFile => ({ name, bytes: new Uint8Array(readF
 
 /** A unit cube of 12 triangles in centimetres with two materials: written here, small, with every OBJ feature the scanner handles. */
 function cubeObj(): MeshBundle {
-  const v = [[0, 0, 0], [50, 0, 0], [50, 50, 0], [0, 50, 0], [0, 0, 50], [50, 0, 50], [50, 50, 50], [0, 50, 50]];
+  const v = [
+    [0, 0, 0],
+    [50, 0, 0],
+    [50, 50, 0],
+    [0, 50, 0],
+    [0, 0, 50],
+    [50, 0, 50],
+    [50, 50, 50],
+    [0, 50, 50],
+  ];
   const text = [
     '# luxbox fuzz seed: 50 cm cube, two materials, a continued line, negative indices',
     'mtllib cube.mtl',
@@ -48,7 +57,13 @@ function cubeObj(): MeshBundle {
     'f 2 3 7 6',
     'f 1 5 8 4',
   ].join('\n');
-  return { units: 'auto', files: [{ name: 'cube.obj', bytes: encoder.encode(text) }, { name: 'cube.mtl', bytes: encoder.encode('newmtl side\nKd 0.8 0.8 0.8\nnewmtl top\nKd 0.2 0.3 0.4\n') }] };
+  return {
+    units: 'auto',
+    files: [
+      { name: 'cube.obj', bytes: encoder.encode(text) },
+      { name: 'cube.mtl', bytes: encoder.encode('newmtl side\nKd 0.8 0.8 0.8\nnewmtl top\nKd 0.2 0.3 0.4\n') },
+    ],
+  };
 }
 
 /** Seeds: the project's own table fixtures (tests/fixtures/models, written by writeModelFixtures.ts) in every container, and the cube. */
@@ -125,7 +140,11 @@ async function runMeshTimed(bytes: Uint8Array, path: MeshPath, folder: string): 
     const ms = performance.now() - t0;
     if (!(error instanceof InputError)) {
       const e = error as Error;
-      const where = (e?.stack ?? '').split('\n').find((l) => /src\//.test(l))?.trim() ?? '';
+      const where =
+        (e?.stack ?? '')
+          .split('\n')
+          .find((l) => /src\//.test(l))
+          ?.trim() ?? '';
       return { verdict: 'crash', ms, cpuMs: cpuMs(), detail: `${e?.name ?? 'throw'}: ${String(e?.message ?? error).slice(0, 120)} ${where}`, slow: false };
     }
     const bad = messageProblem(error.message, MAX_MESSAGE);
@@ -199,6 +218,9 @@ export async function replayMesh(path: MeshPath): Promise<MeshTally> {
 
 /** Refusals by kind, most frequent first ("triangle budget 812, accessor/view bounds 640, …"), then the CPU time. */
 export function formatRefusals(t: MeshTally): string {
-  const kinds = [...t.refusals].sort((a, b) => b[1] - a[1]).map(([k, n]) => `${k} ${n}`).join(', ');
+  const kinds = [...t.refusals]
+    .sort((a, b) => b[1] - a[1])
+    .map(([k, n]) => `${k} ${n}`)
+    .join(', ');
   return `${kinds}; CPU time: slowest ${Math.round(t.maxCpuMs)} ms, ${t.slowCpu} over 1 s`;
 }

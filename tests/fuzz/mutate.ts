@@ -158,9 +158,7 @@ const structureMutations: Record<string, StructureMutation> = {
     return `extremeNumber ${String(slot.key)}=${n}`;
   },
   numberTweak(d, rng) {
-    const nums = containers(d.root).flatMap((c) =>
-      (Array.isArray(c.node) ? c.node.map((_, i) => i) : Object.keys(c.node)).filter((k) => typeof getSlot(c.node, k) === 'number').map((k) => ({ node: c.node, key: k })),
-    );
+    const nums = containers(d.root).flatMap((c) => (Array.isArray(c.node) ? c.node.map((_, i) => i) : Object.keys(c.node)).filter((k) => typeof getSlot(c.node, k) === 'number').map((k) => ({ node: c.node, key: k })));
     if (nums.length === 0) return 'numberTweak (none)';
     const { node, key } = rng.pick(nums);
     const v = getSlot(node, key) as number;

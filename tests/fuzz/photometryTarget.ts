@@ -1,15 +1,7 @@
 import { readdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import {
-  beamAndField,
-  integrateFlux,
-  intensity,
-  parsePhotometry,
-  PhotometryParseError,
-  photometryWarnings,
-  type Photometry,
-} from '../../src/core/photometry';
+import { beamAndField, integrateFlux, intensity, parsePhotometry, PhotometryParseError, photometryWarnings, type Photometry } from '../../src/core/photometry';
 import type { FuzzOutcome, FuzzSeed, FuzzTarget } from './fuzzTarget';
 
 /**
@@ -98,7 +90,11 @@ export function photometryProblems(ph: Photometry, deep = false): string[] {
   if (ph.candelaScale !== undefined && !(finite(ph.candelaScale) && ph.candelaScale > 0)) add(`candela scale ${ph.candelaScale} is not finite and > 0`);
   if (ph.inputWatts !== null && !(finite(ph.inputWatts) && ph.inputWatts > 0)) add(`input watts ${ph.inputWatts}`);
   const o = ph.luminousOpening;
-  for (const [k, x] of [['width', o.width], ['length', o.length], ['height', o.height]] as const) {
+  for (const [k, x] of [
+    ['width', o.width],
+    ['length', o.length],
+    ['height', o.height],
+  ] as const) {
     if (!(finite(x) && x >= 0 && x <= maxDimensionM)) add(`luminous opening ${k} ${x} m outside 0..${maxDimensionM}`);
   }
   if (ph.tilt) {
@@ -112,7 +108,12 @@ export function photometryProblems(ph: Photometry, deep = false): string[] {
     if (p) add(p);
   }
   // Lookups and beam figures, as the renderer and `ies info` use them.
-  for (const [g, c] of [[0, 0], [37, 123], [90, 271], [180, 359.9]]) {
+  for (const [g, c] of [
+    [0, 0],
+    [37, 123],
+    [90, 271],
+    [180, 359.9],
+  ]) {
     const i = intensity(ph, g, c);
     if (!(finite(i) && i >= 0 && i <= maxCandela)) add(`intensity(${g}, ${c}) = ${i}`);
   }

@@ -35,7 +35,9 @@ async function main(args: string[]): Promise<number> {
     for (const path of paths) {
       const started = performance.now();
       process.stderr.write(`mesh (${path}): `);
-      const tally = args.includes('--replay') ? await replayMesh(path) : await fuzzMesh(path, count, seed, {
+      const tally = args.includes('--replay')
+        ? await replayMesh(path)
+        : await fuzzMesh(path, count, seed, {
             keepFailures: 200,
             // A long campaign reports as it goes: inputs, failures, inputs over 1 s, slowest ms.
             onProgress: (n, t) => process.stderr.write(`${n} (${t.failures.length} failing, ${t.slow} over 1 s, max ${Math.round(t.maxMs)} ms, CPU max ${Math.round(t.maxCpuMs)} ms) `),

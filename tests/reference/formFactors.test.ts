@@ -7,8 +7,8 @@ import { pointToPolygonFormFactor } from '../../src/reference/pointToPolygonForm
 import { parallelExchangeArea, perpendicularExchangeArea } from '../../src/reference/rectangleExchangeArea';
 
 // 8-point Gauss–Legendre nodes/weights on [−1, 1] (Abramowitz & Stegun table 25.4).
-const GL8_X = [-0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498, 0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363];
-const GL8_W = [0.1012285362903763, 0.2223810344533745, 0.3137066458778873, 0.3626837833783620, 0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763];
+const GL8_X = [-0.9602898564975363, -0.7966664774136267, -0.525532409916329, -0.1834346424956498, 0.1834346424956498, 0.525532409916329, 0.7966664774136267, 0.9602898564975363];
+const GL8_W = [0.1012285362903763, 0.2223810344533745, 0.3137066458778873, 0.362683783378362, 0.362683783378362, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763];
 
 /** ∫_A1 F(dA → polygon) dA by composite 8×8 Gauss–Legendre over an m×m split: an independent route to A1·F12. */
 function quadratureExchangeArea(corner: (s: number, t: number) => Vec3, n: Vec3, sLen: number, tLen: number, polygon: Vec3[], m = 6): number {
@@ -48,11 +48,21 @@ describe('exact rectangle-to-rectangle exchange areas', () => {
   it('agree with quadrature of the point-to-polygon contour integral (offset parallel and perpendicular pairs)', () => {
     // Parallel: rect 1 = [0,1]×[0.5,2] at z=0, rect 2 = [1.3,2]×[−1,0.2] at z=0.7.
     const par = parallelExchangeArea(0, 1, 0.5, 2, 1.3, 2, -1, 0.2, 0.7);
-    const parQ = quadratureExchangeArea((s, t) => [s, 0.5 + t, 0], [0, 0, 1], 1, 1.5, [[1.3, -1, 0.7], [2, -1, 0.7], [2, 0.2, 0.7], [1.3, 0.2, 0.7]]);
+    const parQ = quadratureExchangeArea((s, t) => [s, 0.5 + t, 0], [0, 0, 1], 1, 1.5, [
+      [1.3, -1, 0.7],
+      [2, -1, 0.7],
+      [2, 0.2, 0.7],
+      [1.3, 0.2, 0.7],
+    ]);
     expect(Math.abs(par - parQ) / par).toBeLessThan(1e-8);
     // Perpendicular: rect 1 = x∈[0,1], y∈[0.5,2] in z=0; rect 2 = x∈[1.3,2], z∈[0.1,0.4] in y=0.
     const perp = perpendicularExchangeArea(0, 1, 0.5, 2, 1.3, 2, 0.1, 0.4);
-    const perpQ = quadratureExchangeArea((s, t) => [s, 0.5 + t, 0], [0, 0, 1], 1, 1.5, [[1.3, 0, 0.1], [2, 0, 0.1], [2, 0, 0.4], [1.3, 0, 0.4]]);
+    const perpQ = quadratureExchangeArea((s, t) => [s, 0.5 + t, 0], [0, 0, 1], 1, 1.5, [
+      [1.3, 0, 0.1],
+      [2, 0, 0.1],
+      [2, 0, 0.4],
+      [1.3, 0, 0.4],
+    ]);
     expect(Math.abs(perp - perpQ) / perp).toBeLessThan(1e-8);
   });
 
@@ -80,13 +90,24 @@ describe('exact rectangle-to-rectangle exchange areas', () => {
 
 describe('point-to-polygon form factor (Lambert contour integral)', () => {
   it('matches the closed form for a parallel rectangle with a corner above the element (Howell B-3)', () => {
-    for (const [a, b, c] of [[1, 1, 1], [2, 0.5, 0.7], [0.1, 3, 2]]) {
+    for (const [a, b, c] of [
+      [1, 1, 1],
+      [2, 0.5, 0.7],
+      [0.1, 3, 2],
+    ]) {
       const X = a / c;
       const Y = b / c;
-      const exact =
-        (1 / (2 * Math.PI)) *
-        ((X / Math.sqrt(1 + X * X)) * Math.atan(Y / Math.sqrt(1 + X * X)) + (Y / Math.sqrt(1 + Y * Y)) * Math.atan(X / Math.sqrt(1 + Y * Y)));
-      const f = pointToPolygonFormFactor([0, 0, 0], [0, 0, 1], [[0, 0, c], [a, 0, c], [a, b, c], [0, b, c]]);
+      const exact = (1 / (2 * Math.PI)) * ((X / Math.sqrt(1 + X * X)) * Math.atan(Y / Math.sqrt(1 + X * X)) + (Y / Math.sqrt(1 + Y * Y)) * Math.atan(X / Math.sqrt(1 + Y * Y)));
+      const f = pointToPolygonFormFactor(
+        [0, 0, 0],
+        [0, 0, 1],
+        [
+          [0, 0, c],
+          [a, 0, c],
+          [a, b, c],
+          [0, b, c],
+        ],
+      );
       expect(f).toBeCloseTo(exact, 13);
     }
   });
@@ -95,14 +116,43 @@ describe('point-to-polygon form factor (Lambert contour integral)', () => {
     const W = 5;
     const H = 2.7;
     const D = 4;
-    for (const [x, z] of [[2.5, 2], [0.001, 3.999], [4.9, 0.3]]) {
+    for (const [x, z] of [
+      [2.5, 2],
+      [0.001, 3.999],
+      [4.9, 0.3],
+    ]) {
       const p: Vec3 = [x, 0, z];
       const faces: Vec3[][] = [
-        [[0, H, 0], [W, H, 0], [W, H, D], [0, H, D]],
-        [[0, 0, 0], [W, 0, 0], [W, H, 0], [0, H, 0]],
-        [[0, 0, D], [W, 0, D], [W, H, D], [0, H, D]],
-        [[0, 0, 0], [0, 0, D], [0, H, D], [0, H, 0]],
-        [[W, 0, 0], [W, 0, D], [W, H, D], [W, H, 0]],
+        [
+          [0, H, 0],
+          [W, H, 0],
+          [W, H, D],
+          [0, H, D],
+        ],
+        [
+          [0, 0, 0],
+          [W, 0, 0],
+          [W, H, 0],
+          [0, H, 0],
+        ],
+        [
+          [0, 0, D],
+          [W, 0, D],
+          [W, H, D],
+          [0, H, D],
+        ],
+        [
+          [0, 0, 0],
+          [0, 0, D],
+          [0, H, D],
+          [0, H, 0],
+        ],
+        [
+          [W, 0, 0],
+          [W, 0, D],
+          [W, H, D],
+          [W, H, 0],
+        ],
       ];
       const sum = faces.reduce((s, f) => s + pointToPolygonFormFactor(p, [0, 1, 0], f), 0);
       expect(Math.abs(sum - 1)).toBeLessThan(1e-12);

@@ -89,18 +89,31 @@ describe('direct light with an opaque obstruction (CIE 171:2006 §5.2)', () => {
   it('the floor in the umbra gets exactly 0 and the floor outside the shadow is unchanged', () => {
     // The umbra on the floor: the plate's footprint scaled by 2.2 / 1.2 about the source's foot (rotated 20°).
     const t = (20 * Math.PI) / 180;
-    for (const [u, v] of [[0, 0], [0.4, 0.3], [-0.45, 0.2], [0.2, -0.5]]) {
+    for (const [u, v] of [
+      [0, 0],
+      [0.4, 0.3],
+      [-0.45, 0.2],
+      [0.2, -0.5],
+    ]) {
       const p: Vec3 = [2 + Math.cos(t) * u + Math.sin(t) * v, 0, 1.5 - Math.sin(t) * u + Math.cos(t) * v];
       expect(furnishedIlluminanceAt(solved, p, [0, 1, 0]).direct).toBe(0);
     }
-    for (const p of [[0.3, 0, 0.3], [3.7, 0, 2.8], [2, 0, 0.05]] as Vec3[]) {
+    for (const p of [
+      [0.3, 0, 0.3],
+      [3.7, 0, 2.8],
+      [2, 0, 0.05],
+    ] as Vec3[]) {
       // 1e-8: the sample point is kept a nanometre inside the room (furnishedIlluminanceAt).
       expect(Math.abs(furnishedIlluminanceAt(solved, p, [0, 1, 0]).direct / unoccluded(p, [0, 1, 0]) - 1)).toBeLessThan(1e-8);
     }
   });
 
   it('the plate top gets I·cos θ / d² and its black back nothing; no indirect light in a black room', () => {
-    for (const p of [[2, 1, 1.5], [2.2, 1, 1.6], [1.8, 1, 1.3]] as Vec3[]) {
+    for (const p of [
+      [2, 1, 1.5],
+      [2.2, 1, 1.6],
+      [1.8, 1, 1.3],
+    ] as Vec3[]) {
       const s = furnishedIlluminanceAt(solved, p, [0, 1, 0]);
       expect(Math.abs(s.direct / unoccluded(p, [0, 1, 0]) - 1)).toBeLessThan(1e-12);
       expect(s.direct).toBeGreaterThan(0);
@@ -114,7 +127,15 @@ describe('flux conservation with an object in a black room (CIE 171:2006 §5.4 e
   it('Σ E·A over the walls and the object = Φ', () => {
     const table: ReferenceObject = { mesh: tableMesh(1.2, 0.8, 0.75, 0.04, 0.05, [0, 0, 0]), position: [2, 0, 1.5], yaw: 15, scale: 1 };
     const box: ReferenceObject = { mesh: boxMesh([-0.3, 0, -0.2], [0.3, 0.9, 0.2], [0, 0, 0]), position: [0.6, 0, 2.4], yaw: -40, scale: 1 };
-    const r = solveFurnishedReference(scene(uniformRoom(4, 2.6, 3, 0), [[1.7, 1.6, 1.2], [3.3, 2.4, 0.4]]), files, [table, box], { patchSize: 0.3 });
+    const r = solveFurnishedReference(
+      scene(uniformRoom(4, 2.6, 3, 0), [
+        [1.7, 1.6, 1.2],
+        [3.3, 2.4, 0.4],
+      ]),
+      files,
+      [table, box],
+      { patchSize: 0.3 },
+    );
     const f = fluxes(r);
     console.info(`black room with objects: Σ E·A / Φ − 1 = ${(100 * (f.direct / (2 * LUMENS) - 1)).toFixed(3)} %`);
     // The midpoint rule on patches crossed by a shadow edge.
@@ -153,13 +174,9 @@ describe('diffuse light with an internal obstruction (CIE 171:2006 test case 5.7
     const A = Math.abs(a) / c;
     const B = Math.abs(b) / c;
     const s = Math.sign(a) * Math.sign(b);
-    return (
-      (s / (2 * Math.PI)) *
-      ((A / Math.sqrt(1 + A * A)) * Math.atan(B / Math.sqrt(1 + A * A)) + (B / Math.sqrt(1 + B * B)) * Math.atan(A / Math.sqrt(1 + B * B)))
-    );
+    return (s / (2 * Math.PI)) * ((A / Math.sqrt(1 + A * A)) * Math.atan(B / Math.sqrt(1 + A * A)) + (B / Math.sqrt(1 + B * B)) * Math.atan(A / Math.sqrt(1 + B * B)));
   };
-  const rectangle = (x0: number, x1: number, z0: number, z1: number, c: number): number =>
-    corner(x1, z1, c) - corner(x0, z1, c) - corner(x1, z0, c) + corner(x0, z0, c);
+  const rectangle = (x0: number, x1: number, z0: number, z1: number, c: number): number => corner(x1, z1, c) - corner(x0, z1, c) - corner(x1, z0, c) + corner(x0, z0, c);
 
   // Emitter S2: a 2 × 1.5 m rectangle 2.4 m above the receiving points (a ceiling panel,
   // facing down); obstruction: a 0.6 × 0.5 m plate at 1.2 m, off-centre, so its shadow
@@ -183,7 +200,12 @@ describe('diffuse light with an internal obstruction (CIE 171:2006 test case 5.7
   const shifted = emitter.map((v): Vec3 => [v[0] + 0.6, v[1], v[2] + 0.6]);
 
   it('horizontal points: F = F(S2) − F(shadow ∩ S2), Howell B-3 by form-factor algebra', () => {
-    for (const p of [[0.6, 0, 0.6], [0.9, 0, 0.4], [1.2, 0, 1.1], [0.4, 0, 0.3]] as Vec3[]) {
+    for (const p of [
+      [0.6, 0, 0.6],
+      [0.9, 0, 0.4],
+      [1.2, 0, 1.1],
+      [0.4, 0, 0.3],
+    ] as Vec3[]) {
       // Everything relative to p: S2 spans [x0, x1] × [z0, z1] at height H; the plate's shadow
       // on S2's plane is the plate scaled by H / h about p.
       const x0 = shifted[0][0] - p[0];
@@ -239,7 +261,10 @@ describe('diffuse light with an internal obstruction (CIE 171:2006 test case 5.7
 describe('an empty room agrees with the box solver', () => {
   it('direct to 1e-6, indirect within 0.5 % RMS and 2 % anywhere on a 7 × 7 grid per surface', () => {
     const room: LightingScene['room'] = { width: 4, height: 2.6, depth: 3, reflectance: { floor: 0.3, ceiling: 0.8, north: 0.6, south: 0.5, west: [0.7, 0.5, 0.3], east: 0.5 } };
-    const s = scene(room, [[1, 2.2, 1], [3, 1, 2.5]]);
+    const s = scene(room, [
+      [1, 2.2, 1],
+      [3, 1, 2.5],
+    ]);
     const furnished = solveFurnishedReference(s, files, [], { patchSize: 0.25 });
     const box = solveBoxReference(s, files, { patchSize: 0.1 });
     const ext = [4, 2.6, 3];

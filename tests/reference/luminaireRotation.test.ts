@@ -38,9 +38,7 @@ describe('luminaire frame (docs/scene-format.md "Units and frames")', () => {
           const got = apply(luminaireToWorld(yaw, pitch, roll), v);
           const back = apply(worldToLuminaire(yaw, pitch, roll), got);
           // Same composition as Euler order 'YXY' is not offered by three; 'YXZ' with z = 0 then Ry(roll) is a second route.
-          const viaEuler = new Vector3(...v)
-            .applyMatrix4(new Matrix4().makeRotationY(roll * d))
-            .applyMatrix4(new Matrix4().makeRotationFromEuler(new Euler(pitch * d, yaw * d, 0, 'YXZ')));
+          const viaEuler = new Vector3(...v).applyMatrix4(new Matrix4().makeRotationY(roll * d)).applyMatrix4(new Matrix4().makeRotationFromEuler(new Euler(pitch * d, yaw * d, 0, 'YXZ')));
           return (
             Math.abs(got[0] - expected.x) + Math.abs(got[1] - expected.y) + Math.abs(got[2] - expected.z) < 1e-12 &&
             Math.abs(viaEuler.x - expected.x) + Math.abs(viaEuler.y - expected.y) + Math.abs(viaEuler.z - expected.z) < 1e-12 &&

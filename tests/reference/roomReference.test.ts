@@ -67,9 +67,18 @@ describe('room reference: direct light (CIE 171:2006 §5.2)', () => {
     const pos: Vec3 = [2, 2.2, 2];
     const r = solveRoomReference(room, [lamp(pos)], files, { patchSize: 0.5 });
     const points: [Vec3, Vec3][] = [
-      [[1, 0, 1], [0, 1, 0]],
-      [[-0.5, 0, 2.4], [0, 1, 0]],
-      [[3, 2.8, 3], [0, -1, 0]],
+      [
+        [1, 0, 1],
+        [0, 1, 0],
+      ],
+      [
+        [-0.5, 0, 2.4],
+        [0, 1, 0],
+      ],
+      [
+        [3, 2.8, 3],
+        [0, -1, 0],
+      ],
       // Midpoints of the slanted walls 1, 2 and 3 at several heights.
       [[4.5, 1, 1.25], wallNormal(PENTAGON[1], PENTAGON[2])],
       [[3.5, 2.5, 3.5], wallNormal(PENTAGON[2], PENTAGON[3])],
@@ -96,12 +105,25 @@ describe('room reference: direct light (CIE 171:2006 §5.2)', () => {
     const [yaw, pitch, roll] = [35, 20, -50];
     const r = solveRoomReference({ outline: PENTAGON, height: 2.8, reflectance: uniform(0) }, [lamp(pos, 'street', { yaw, pitch, roll, dimming: 0.8 })], { street: ph }, { patchSize: 1, openingCell: 0 });
     const deg = Math.PI / 180;
-    const toLocal = new Matrix4().makeRotationY(yaw * deg).multiply(new Matrix4().makeRotationX(pitch * deg)).multiply(new Matrix4().makeRotationY(roll * deg)).invert();
+    const toLocal = new Matrix4()
+      .makeRotationY(yaw * deg)
+      .multiply(new Matrix4().makeRotationX(pitch * deg))
+      .multiply(new Matrix4().makeRotationY(roll * deg))
+      .invert();
     const points: [Vec3, Vec3][] = [
-      [[1, 0, 1], [0, 1, 0]],
-      [[3.5, 0, 3], [0, 1, 0]],
+      [
+        [1, 0, 1],
+        [0, 1, 0],
+      ],
+      [
+        [3.5, 0, 3],
+        [0, 1, 0],
+      ],
       [[4.5, 1, 1.25], wallNormal(PENTAGON[1], PENTAGON[2])],
-      [[2, 1.5, 0], [0, 0, 1]],
+      [
+        [2, 1.5, 0],
+        [0, 0, 1],
+      ],
     ];
     for (const [q, n] of points) {
       const dir = new Vector3(q[0] - pos[0], q[1] - pos[1], q[2] - pos[2]);
@@ -149,7 +171,17 @@ describe('room reference: direct light (CIE 171:2006 §5.2)', () => {
 
   it('refuses a lamp outside the room: in the notch of the L, above a slope', () => {
     expect(() => solveRoomReference({ outline: L_OUTLINE, height: 2.6, reflectance: uniform(0.5) }, [lamp([5, 2, 4])], files, { patchSize: 1 })).toThrow(ReferenceInputError);
-    const attic: RoomInput = { outline: [[0, 0], [4, 0], [4, 6], [0, 6]], height: 2.6, slopes: [{ wall: 0, kneeHeight: 1.2, pitch: 40 }], reflectance: uniform(0.5) };
+    const attic: RoomInput = {
+      outline: [
+        [0, 0],
+        [4, 0],
+        [4, 6],
+        [0, 6],
+      ],
+      height: 2.6,
+      slopes: [{ wall: 0, kneeHeight: 1.2, pitch: 40 }],
+      reflectance: uniform(0.5),
+    };
     expect(() => solveRoomReference(attic, [lamp([2, 1.6, 0.3])], files, { patchSize: 1 })).toThrow(/luminaires\[0\]\.position: \[2, 1\.6, 0\.3\] lies outside the room/);
   });
 });
@@ -177,12 +209,25 @@ describe('room reference: flux balance (CIE 171:2006 §5.4, §5.8)', () => {
   // ρ 0.7 +0.48 % (+0.28 % at 0.3 m); direct Σ E·A within 6e-5 of Φ.
   const cases: [string, RoomInput, Vec3, number, number][] = [
     ['an L', { outline: L_OUTLINE, height: 2.6, reflectance: uniform(0.5) }, [1, 2.2, 4.5], 0.5, 5e-3],
-    ['an L with a roof slope on wall 0 (the issue\'s attic)', { outline: L_OUTLINE, height: 2.6, slopes: [{ wall: 0, kneeHeight: 1.2, pitch: 40 }], reflectance: uniform(0.5) }, [1, 2.2, 4.5], 0.5, 5e-3],
+    ["an L with a roof slope on wall 0 (the issue's attic)", { outline: L_OUTLINE, height: 2.6, slopes: [{ wall: 0, kneeHeight: 1.2, pitch: 40 }], reflectance: uniform(0.5) }, [1, 2.2, 4.5], 0.5, 5e-3],
     // A 5 × 4 m room with a 1.4 × 0.5 m chimney breast standing out of the north wall at x 1.8..3.2.
     ['a room with a chimney breast', { outline: CHIMNEY_OUTLINE, height: 2.5, reflectance: uniform(0.6) }, [1, 2, 2.5], 0.6, 5e-3],
     [
       'a gable attic with two knee walls',
-      { outline: [[0, 0], [4, 0], [4, 6], [0, 6]], height: 2.6, slopes: [{ wall: 0, kneeHeight: 1.2, pitch: 40 }, { wall: 2, kneeHeight: 1.0, pitch: 50 }], reflectance: uniform(0.7) },
+      {
+        outline: [
+          [0, 0],
+          [4, 0],
+          [4, 6],
+          [0, 6],
+        ],
+        height: 2.6,
+        slopes: [
+          { wall: 0, kneeHeight: 1.2, pitch: 40 },
+          { wall: 2, kneeHeight: 1.0, pitch: 50 },
+        ],
+        reflectance: uniform(0.7),
+      },
       [2, 1.8, 3],
       0.7,
       1e-2,
@@ -198,7 +243,12 @@ describe('room reference: flux balance (CIE 171:2006 §5.4, §5.8)', () => {
       expect(flux.escaped).toBe(0);
       // Per-surface statistics add up to the same flux and the floor's area is the outline's.
       const stats = roomSurfaceStatistics(r);
-      expect(relErr(stats.reduce((sum, s) => sum + s.flux, 0), flux.total)).toBeLessThan(1e-12);
+      expect(
+        relErr(
+          stats.reduce((sum, s) => sum + s.flux, 0),
+          flux.total,
+        ),
+      ).toBeLessThan(1e-12);
       const floor = stats.find((s) => s.id === 'floor')!;
       expect(floor.area).toBeCloseTo(r.surfaces.find((s) => s.id === 'floor')!.area, 9);
       expect(floor.min).toBeLessThanOrEqual(floor.mean);
@@ -210,14 +260,34 @@ describe('room reference: flux balance (CIE 171:2006 §5.4, §5.8)', () => {
 describe('room reference: openings let light out', () => {
   const window: RoomOpening = { wall: 0, offset: 1, width: 1.2, sill: 0.9, height: 1.1, kind: 'window' };
   const door: RoomOpening = { wall: 3, offset: 0.5, width: 0.9, sill: 0, height: 2, kind: 'door' };
-  const room = (rho: number): RoomInput => ({ outline: [[0, 0], [4, 0], [4, 3], [0, 3]], height: 2.5, openings: [window, door], reflectance: uniform(rho) });
+  const room = (rho: number): RoomInput => ({
+    outline: [
+      [0, 0],
+      [4, 0],
+      [4, 3],
+      [0, 3],
+    ],
+    height: 2.5,
+    openings: [window, door],
+    reflectance: uniform(rho),
+  });
   const pos: Vec3 = [2, 1.8, 1.5];
 
   it('black room: the direct light through each opening is I × the solid angle it subtends', () => {
     const r = solveRoomReference(room(0), [lamp(pos)], files, { patchSize: 0.5 });
     // The window: z = 0, x 1..2.2, y 0.9..2; the door: wall 3 runs (0, 3) → (0, 0), so x = 0, z 2.5 → 1.6, y 0..2.
-    const windowOmega = solidAngle(pos, [[1, 0.9, 0], [2.2, 0.9, 0], [2.2, 2, 0], [1, 2, 0]]);
-    const doorOmega = solidAngle(pos, [[0, 0, 2.5], [0, 0, 1.6], [0, 2, 1.6], [0, 2, 2.5]]);
+    const windowOmega = solidAngle(pos, [
+      [1, 0.9, 0],
+      [2.2, 0.9, 0],
+      [2.2, 2, 0],
+      [1, 2, 0],
+    ]);
+    const doorOmega = solidAngle(pos, [
+      [0, 0, 2.5],
+      [0, 0, 1.6],
+      [0, 2, 1.6],
+      [0, 2, 2.5],
+    ]);
     const through = (opening: number) => r.patches.reduce((sum, p, i) => sum + (p.kind === 'opening' && p.opening === opening ? p.area * r.directRgb[3 * i] : 0), 0);
     // Measured: window 0.058 %, door 0.040 % (the midpoint rule on 4 × 4 pieces per patch).
     expect(relErr(through(0), I * windowOmega)).toBeLessThan(1e-3);

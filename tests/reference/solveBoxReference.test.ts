@@ -53,7 +53,13 @@ describe('CIE 171:2006 5.2 — point source: E = I(θ)·cosθ/d²', () => {
     const ph = isotropic(10_000);
     const I = 10_000 / (4 * Math.PI);
     const r = solveBoxReference({ version: 1, room: room(6, 3, 5, 0), luminaires: [lum('iso', [2, 2.5, 1.5])] }, { iso: ph }, { patchSize: 1 });
-    for (const q of [[2, 0, 1.5], [0.3, 0, 4.7], [5.9, 0, 0.1], [6, 1, 2], [3, 3, 4]] as Vec3[]) {
+    for (const q of [
+      [2, 0, 1.5],
+      [0.3, 0, 4.7],
+      [5.9, 0, 0.1],
+      [6, 1, 2],
+      [3, 3, 4],
+    ] as Vec3[]) {
       const d: Vec3 = [2 - q[0], 2.5 - q[1], 1.5 - q[2]];
       const dist = Math.hypot(...d);
       const s = sampleReference(r, q);
@@ -82,7 +88,13 @@ describe('CIE 171:2006 5.2 — point source: E = I(θ)·cosθ/d²', () => {
       .multiply(new Matrix4().makeRotationX(pitch * d))
       .multiply(new Matrix4().makeRotationY(roll * d))
       .invert();
-    for (const q of [[1, 0, 1], [4.5, 0, 3.5], [2.2, 0, 0.2], [0, 1, 2], [3, 1.5, 0]] as Vec3[]) {
+    for (const q of [
+      [1, 0, 1],
+      [4.5, 0, 3.5],
+      [2.2, 0, 0.2],
+      [0, 1, 2],
+      [3, 1.5, 0],
+    ] as Vec3[]) {
       const s = sampleReference(r, q);
       const dir = new Vector3(q[0] - pos[0], q[1] - pos[1], q[2] - pos[2]);
       const dist = dir.length();
@@ -143,7 +155,11 @@ describe('CIE 171:2006 5.8 — 4 m cube, 10 000 lm isotropic source at the centr
     const coarse = solveBoxReference(scene, { iso: isotropic(10_000) }, { patchSize: 0.5 });
     const fine = solveBoxReference(scene, { iso: isotropic(10_000) }, { patchSize: 0.25 });
     // Away from edges: within 0.3 % (measured 0.06–0.25 %).
-    for (const q of [[1, 0, 1.3], [4, 3.5, 2], [2, 2, 0]] as Vec3[]) {
+    for (const q of [
+      [1, 0, 1.3],
+      [4, 3.5, 2],
+      [2, 2, 0],
+    ] as Vec3[]) {
       expect(relErr(sampleReference(coarse, q).indirect, sampleReference(fine, q).indirect)).toBeLessThan(0.003);
     }
     // 5 cm from a corner the patch exitance is coarsest: within 2 % (measured 1.6 %; 0.7 % between 0.25 m and 0.125 m).
@@ -160,12 +176,7 @@ describe('rooms with real IES files', () => {
   const scene: LightingScene = {
     version: 1,
     room: room(5, 2.7, 4, { floor: 0.2, ceiling: 0.8, north: 0.5, south: 0.5, west: 0.5, east: [0.6, 0.5, 0.4] }),
-    luminaires: [
-      lum('down', [1.2, 2.69, 1.0]),
-      lum('down', [3.8, 2.69, 3.0]),
-      lum('pendant', [2.5, 2.0, 2.0], { yaw: 90 }),
-      lum('wash', [4.5, 2.6, 0.5], { pitch: 30, yaw: -45, color: [1, 0.8, 0.6], dimming: 0.7 }),
-    ],
+    luminaires: [lum('down', [1.2, 2.69, 1.0]), lum('down', [3.8, 2.69, 3.0]), lum('pendant', [2.5, 2.0, 2.0], { yaw: 90 }), lum('wash', [4.5, 2.6, 0.5], { pitch: 30, yaw: -45, color: [1, 0.8, 0.6], dimming: 0.7 })],
   };
 
   it('conserves energy: absorbed + nothing lost = emitted (Σ (1−ρ)·E·A = Φ per channel, within 0.1 %)', () => {
@@ -197,7 +208,11 @@ describe('rooms with real IES files', () => {
     const a = solveBoxReference({ ...scene, luminaires: groups[0] }, ies, { patchSize: 0.5 });
     const b = solveBoxReference({ ...scene, luminaires: groups[1] }, ies, { patchSize: 0.5 });
     const ab = solveBoxReference({ ...scene, luminaires: [...groups[0], ...groups[1]] }, ies, { patchSize: 0.5 });
-    for (const q of [[1, 0, 1], [2.5, 2.7, 2], [5, 1, 1]] as Vec3[]) {
+    for (const q of [
+      [1, 0, 1],
+      [2.5, 2.7, 2],
+      [5, 1, 1],
+    ] as Vec3[]) {
       const sum = sampleReference(a, q).total + sampleReference(b, q).total;
       expect(relErr(sampleReference(ab, q).total, sum)).toBeLessThan(1e-4);
     }

@@ -66,7 +66,9 @@ export function formatImportReport(report: GldfImportReport): string {
     for (const s of p.skipped) out.push(`  skipped ${s.variant}: ${s.reason}`);
     for (const a of p.assumed) out.push(`  assumed ${a.field} = ${a.value}: ${a.why}`);
     for (const f of p.flux) {
-      out.push(`  flux ${f.variant} (${f.photometry}): rated ${f.ratedFlux} lm, integrated ${round(f.integratedFlux)} lm (${f.differencePercent >= 0 ? '+' : ''}${round(f.differencePercent)} %)${f.warning ? `: ${f.warning}` : ', within tolerance'}`);
+      out.push(
+        `  flux ${f.variant} (${f.photometry}): rated ${f.ratedFlux} lm, integrated ${round(f.integratedFlux)} lm (${f.differencePercent >= 0 ? '+' : ''}${round(f.differencePercent)} %)${f.warning ? `: ${f.warning}` : ', within tolerance'}`,
+      );
     }
     for (const n of p.notes) out.push(`  note: ${n}`);
     for (const f of p.files) out.push(`  wrote ${f}`);

@@ -44,7 +44,10 @@ const productMapping = z.strictObject({
 export const gldfMappingSchema = z.strictObject({
   formatVersion: z.literal(1),
   /** GLDF mountings that fit the rail ('ceiling-surface', 'ceiling-pendant', …); default both of those. */
-  mountings: z.array(z.string().regex(/^[a-z][a-z-]{0,40}$/)).min(1).optional(),
+  mountings: z
+    .array(z.string().regex(/^[a-z][a-z-]{0,40}$/))
+    .min(1)
+    .optional(),
   /** Per GLDF UniqueProductId. */
   products: z.record(z.string().max(200), productMapping).optional(),
 });

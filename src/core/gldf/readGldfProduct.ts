@@ -8,19 +8,7 @@
  * container, numbers finite and in range. What luxbox does not use is not read.
  */
 import { GldfError, quoteName } from './GldfError';
-import {
-  containerFolder,
-  type GldfEmitter,
-  type GldfEquipment,
-  type GldfFile,
-  type GldfGeometry,
-  type GldfLightEmitter,
-  type GldfLightSource,
-  type GldfPhotometry,
-  type GldfProduct,
-  type GldfVariant,
-  type LocaleTexts,
-} from './gldfProduct';
+import { containerFolder, type GldfEmitter, type GldfEquipment, type GldfFile, type GldfGeometry, type GldfLightEmitter, type GldfLightSource, type GldfPhotometry, type GldfProduct, type GldfVariant, type LocaleTexts } from './gldfProduct';
 import { attr, child, children, parseUploadXml, path, text, type XmlElement } from './parseUploadXml';
 import { readUploadZip, unsafeEntryName, type UploadZip } from './readUploadZip';
 
@@ -211,12 +199,7 @@ class ProductReader {
     return out;
   }
 
-  private emitters(
-    g: XmlElement,
-    photometries: ReadonlyMap<string, GldfPhotometry>,
-    lightSources: ReadonlyMap<string, GldfLightSource>,
-    equipments: ReadonlyMap<string, GldfEquipment>,
-  ): Map<string, GldfEmitter> {
+  private emitters(g: XmlElement, photometries: ReadonlyMap<string, GldfPhotometry>, lightSources: ReadonlyMap<string, GldfLightSource>, equipments: ReadonlyMap<string, GldfEquipment>): Map<string, GldfEmitter> {
     const out = new Map<string, GldfEmitter>();
     for (const e of children(child(g, 'Emitters'), 'Emitter', this.label)) {
       const id = this.id(e, 'Emitter');

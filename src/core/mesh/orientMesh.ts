@@ -86,7 +86,16 @@ export function orientMesh(mesh: TriangleMesh, twoSided: (triangle: number) => b
   const parts = connectedParts(mesh, adjacency, isGlued);
   const out = Uint32Array.from(indices);
   const summary: OrientationSummary = {
-    parts: parts.length, closed: 0, turnedOutward: 0, trianglesReversed: 0, twoSided: 0, oneSided: 0, undecided: 0, enclosedFaces: 0, droppedCopies: 0, backTriangles: 0,
+    parts: parts.length,
+    closed: 0,
+    turnedOutward: 0,
+    trianglesReversed: 0,
+    twoSided: 0,
+    oneSided: 0,
+    undecided: 0,
+    enclosedFaces: 0,
+    droppedCopies: 0,
+    backTriangles: 0,
   };
   const back: BackPart[] = [];
   const inClosed = new Uint8Array(count);
@@ -132,7 +141,11 @@ export function orientMesh(mesh: TriangleMesh, twoSided: (triangle: number) => b
   const drop = new Uint8Array(count);
   if (pairs.length > 0) {
     const sheets = orientCoincidentPairs(mesh, out, pairs, all, inClosed, drop, summary);
-    for (const part of connectedParts(mesh, meshEdges(mesh, (t) => !sheets.has(t)), (t) => !sheets.has(t))) {
+    for (const part of connectedParts(
+      mesh,
+      meshEdges(mesh, (t) => !sheets.has(t)),
+      (t) => !sheets.has(t),
+    )) {
       summary.parts++;
       if (part.flip === null) {
         summary.undecided++;
@@ -156,9 +169,7 @@ export function orientMesh(mesh: TriangleMesh, twoSided: (triangle: number) => b
  * a sheet the file made two-sided: the partners are dropped (marked in `drop`) and the first
  * triangles returned, to be given back sides like an open two-sided part.
  */
-function orientCoincidentPairs(
-  mesh: TriangleMesh, out: Uint32Array, pairs: ReadonlyArray<[number, number]>, all: MeshEdges, inClosed: Uint8Array, drop: Uint8Array, summary: OrientationSummary,
-): Set<number> {
+function orientCoincidentPairs(mesh: TriangleMesh, out: Uint32Array, pairs: ReadonlyArray<[number, number]>, all: MeshEdges, inClosed: Uint8Array, drop: Uint8Array, summary: OrientationSummary): Set<number> {
   const { positions } = mesh;
   const partner = new Map<number, number>();
   for (const [a, b] of pairs) {

@@ -30,13 +30,23 @@ export function dot(a: readonly number[], b: readonly number[]): number {
 export function signedVolume(p: Float32Array, indices: Uint32Array, part: ConnectedPart): number {
   // Relative to a corner of the part: keeps the sum's terms small for a part far from the origin.
   const o = 3 * indices[3 * part.triangles[0]];
-  const cx = p[o], cy = p[o + 1], cz = p[o + 2];
+  const cx = p[o],
+    cy = p[o + 1],
+    cz = p[o + 2];
   let sum = 0;
   part.triangles.forEach((t, k) => {
-    const a = 3 * indices[3 * t], b = 3 * indices[3 * t + 1], c = 3 * indices[3 * t + 2];
-    const ax = p[a] - cx, ay = p[a + 1] - cy, az = p[a + 2] - cz;
-    const bx = p[b] - cx, by = p[b + 1] - cy, bz = p[b + 2] - cz;
-    const qx = p[c] - cx, qy = p[c + 1] - cy, qz = p[c + 2] - cz;
+    const a = 3 * indices[3 * t],
+      b = 3 * indices[3 * t + 1],
+      c = 3 * indices[3 * t + 2];
+    const ax = p[a] - cx,
+      ay = p[a + 1] - cy,
+      az = p[a + 2] - cz;
+    const bx = p[b] - cx,
+      by = p[b + 1] - cy,
+      bz = p[b + 2] - cz;
+    const qx = p[c] - cx,
+      qy = p[c + 1] - cy,
+      qz = p[c + 2] - cz;
     const v = ax * (by * qz - bz * qy) - ay * (bx * qz - bz * qx) + az * (bx * qy - by * qx);
     sum += part.flip![k] ? -v : v;
   });
@@ -60,9 +70,15 @@ export function boxVolume(p: Float32Array, indices: Uint32Array, part: Connected
 
 /** Unnormalised normal (e1 × e2) of triangle t as `indices` winds it. */
 export function crossOf(p: Float32Array, indices: Uint32Array, t: number): [number, number, number] {
-  const a = 3 * indices[3 * t], b = 3 * indices[3 * t + 1], c = 3 * indices[3 * t + 2];
-  const e1x = p[b] - p[a], e1y = p[b + 1] - p[a + 1], e1z = p[b + 2] - p[a + 2];
-  const e2x = p[c] - p[a], e2y = p[c + 1] - p[a + 1], e2z = p[c + 2] - p[a + 2];
+  const a = 3 * indices[3 * t],
+    b = 3 * indices[3 * t + 1],
+    c = 3 * indices[3 * t + 2];
+  const e1x = p[b] - p[a],
+    e1y = p[b + 1] - p[a + 1],
+    e1z = p[b + 2] - p[a + 2];
+  const e2x = p[c] - p[a],
+    e2y = p[c + 1] - p[a + 1],
+    e2z = p[c + 2] - p[a + 2];
   return [e1y * e2z - e1z * e2y, e1z * e2x - e1x * e2z, e1x * e2y - e1y * e2x];
 }
 

@@ -40,12 +40,7 @@ export const TYPE_AB_C_STEP = 1;
  * the luminaire is laterally symmetric", vertical first angle 0 likewise) are
  * mirrored: I(−H, V) = I(H, V) and I(H, −V) = I(H, V).
  */
-export function convertTypeAB(
-  fileName: string,
-  type: 'A' | 'B',
-  grid: TypeCGrid,
-  line: number | null,
-): ExpandedGrid {
+export function convertTypeAB(fileName: string, type: 'A' | 'B', grid: TypeCGrid, line: number | null): ExpandedGrid {
   const { verticalAngles: v, horizontalAngles: h, candela } = grid;
   const hMirror = checkRange(fileName, 'horizontal', h, line);
   const vMirror = checkRange(fileName, 'vertical', v, line);
@@ -87,8 +82,7 @@ export function convertTypeAB(
   // C = 360 is the C = 0 plane; copy it so the seam is exact, not just close.
   out[nC - 1] = out[0].slice();
 
-  const symmetry: Photometry['symmetry'] =
-    hMirror && vMirror ? 'quadrant' : hMirror ? 'bilateral-c90' : vMirror ? 'bilateral-c0' : 'none';
+  const symmetry: Photometry['symmetry'] = hMirror && vMirror ? 'quadrant' : hMirror ? 'bilateral-c90' : vMirror ? 'bilateral-c0' : 'none';
   return { verticalAngles, horizontalAngles, candela: out, symmetry };
 }
 
@@ -99,11 +93,7 @@ function checkRange(fileName: string, which: string, angles: number[], line: num
   if (angles.length >= 2 && Math.abs(last - 90) <= EPS && (Math.abs(first + 90) <= EPS || Math.abs(first) <= EPS)) {
     return Math.abs(first) <= EPS;
   }
-  throw new PhotometryParseError(
-    fileName,
-    line,
-    `unsupported type A/B ${which} angle range ${first}..${last} (expected -90..90 or 0..90)`,
-  );
+  throw new PhotometryParseError(fileName, line, `unsupported type A/B ${which} angle range ${first}..${last} (expected -90..90 or 0..90)`);
 }
 
 const clamp1 = (x: number): number => Math.max(-1, Math.min(1, x));

@@ -80,11 +80,7 @@ export function expandTypeC(fileName: string, grid: TypeCGrid, line: number | nu
   if (v[v.length - 1] >= 180 - EPS) v[v.length - 1] = 180;
   const rule = horizontalRule(h[0], h[h.length - 1], h.length);
   if (!rule) {
-    throw new PhotometryParseError(
-      fileName,
-      line,
-      `unsupported horizontal angle range ${h[0]}..${h[h.length - 1]} (LM-63 type C allows 0, 0..90, 0..180, 0..360, 90..180 or 90..270)`,
-    );
+    throw new PhotometryParseError(fileName, line, `unsupported horizontal angle range ${h[0]}..${h[h.length - 1]} (LM-63 type C allows 0, 0..90, 0..180, 0..360, 90..180 or 90..270)`);
   }
   if (rule.symmetry === 'none' && near(h[h.length - 1], 360)) {
     const warning = seamWarning(candela[0], candela[h.length - 1], v);

@@ -26,10 +26,7 @@ export function integrateFlux(ph: Photometry): number {
     const whole = 2 * Math.sin((g0 + g1) / 2) * Math.sin(dg / 2);
     // For very narrow cells the closed form cancels badly; Simpson's rule on
     // the smooth integrands is then exact to far below float precision.
-    const w1 =
-      dg < 1e-3
-        ? (dg / 6) * (0 + 4 * 0.5 * Math.sin((g0 + g1) / 2) + Math.sin(g1))
-        : (Math.sin(g1) - Math.sin(g0)) / dg - Math.cos(g1);
+    const w1 = dg < 1e-3 ? (dg / 6) * (0 + 4 * 0.5 * Math.sin((g0 + g1) / 2) + Math.sin(g1)) : (Math.sin(g1) - Math.sin(g0)) / dg - Math.cos(g1);
     weights[j] += whole - w1;
     weights[j + 1] += w1;
   }

@@ -159,11 +159,7 @@ export function readIesHeader(lines: string[], fileName: string): { version: str
     }
   }
   if (tiltIndex < 0) {
-    throw new PhotometryParseError(
-      fileName,
-      null,
-      `no "TILT=" line found${lines.length > MAX_IES_HEADER_LINES ? ` in the first ${MAX_IES_HEADER_LINES} lines` : ''}: not an IES LM-63 file`,
-    );
+    throw new PhotometryParseError(fileName, null, `no "TILT=" line found${lines.length > MAX_IES_HEADER_LINES ? ` in the first ${MAX_IES_HEADER_LINES} lines` : ''}: not an IES LM-63 file`);
   }
   const { keywords, freeText } = readKeywords(lines.slice(headerStart, tiltIndex));
   return { version, keywords, freeText, tiltIndex };
@@ -173,13 +169,7 @@ export function readIesHeader(lines: string[], fileName: string): { version: str
  * The `TILT=` line: NONE, INCLUDE (the tilt data follow it) or the name of a separate tilt file that
  * `resolveTilt` supplies. Returns the tilt table and the reader of the numbers after the line.
  */
-export function readIesTilt(
-  lines: string[],
-  tiltIndex: number,
-  fileName: string,
-  resolveTilt: ((name: string) => string | undefined) | undefined,
-  warnings: string[],
-): { reader: NumberReader; tilt: TiltTable | null } {
+export function readIesTilt(lines: string[], tiltIndex: number, fileName: string, resolveTilt: ((name: string) => string | undefined) | undefined, warnings: string[]): { reader: NumberReader; tilt: TiltTable | null } {
   // --- TILT.
   const tiltValue = lines[tiltIndex].slice(lines[tiltIndex].indexOf('=') + 1).trim();
   const reader = new NumberReader(fileName, lines.slice(tiltIndex + 1), tiltIndex + 2);
@@ -190,11 +180,7 @@ export function readIesTilt(
     if (tiltValue === '') throw new PhotometryParseError(fileName, tiltIndex + 1, 'TILT= names no file (expected NONE, INCLUDE or a file name)');
     const supplied = resolveTilt?.(tiltValue);
     if (supplied === undefined) {
-      throw new PhotometryParseError(
-        fileName,
-        tiltIndex + 1,
-        `TILT=${excerpt(tiltValue, 60)} refers to a separate tilt file that was not supplied`,
-      );
+      throw new PhotometryParseError(fileName, tiltIndex + 1, `TILT=${excerpt(tiltValue, 60)} refers to a separate tilt file that was not supplied`);
     }
     checkInputSize(tiltValue, supplied.length);
     tilt = readTilt(new NumberReader(tiltValue, splitLines(supplied), 1), tiltValue, warnings);

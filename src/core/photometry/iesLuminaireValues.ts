@@ -3,18 +3,7 @@ import { checkRange } from './checks';
 import { lumensFromText, checkCount } from './iesHeader';
 import type { NumberReader } from './numberReader';
 import { PhotometryParseError } from './PhotometryParseError';
-import {
-  BALLAST_FACTOR_RANGE,
-  MAX_CANDELA_VALUES,
-  MAX_DIMENSION_M,
-  MAX_HORIZONTAL_ANGLES,
-  MAX_LAMPS,
-  MAX_LUMENS,
-  MAX_VERTICAL_ANGLES,
-  MAX_WATTS,
-  MIN_LUMENS,
-  MULTIPLIER_RANGE,
-} from './limits';
+import { BALLAST_FACTOR_RANGE, MAX_CANDELA_VALUES, MAX_DIMENSION_M, MAX_HORIZONTAL_ANGLES, MAX_LAMPS, MAX_LUMENS, MAX_VERTICAL_ANGLES, MAX_WATTS, MIN_LUMENS, MULTIPLIER_RANGE } from './limits';
 
 const FEET_TO_METRES = 0.3048;
 

@@ -17,17 +17,7 @@ function isSeparator(c: number): boolean {
   if (c <= 0x20) return c === 0x20 || (c >= 0x09 && c <= 0x0d) || c === 0x1a || c === 0x00;
   if (c === 0x2c || c === 0x3b) return true; // , ;
   if (c < 0xa0) return false;
-  return (
-    c === 0xa0 ||
-    c === 0x1680 ||
-    (c >= 0x2000 && c <= 0x200a) ||
-    c === 0x2028 ||
-    c === 0x2029 ||
-    c === 0x202f ||
-    c === 0x205f ||
-    c === 0x3000 ||
-    c === 0xfeff
-  );
+  return c === 0xa0 || c === 0x1680 || (c >= 0x2000 && c <= 0x200a) || c === 0x2028 || c === 0x2029 || c === 0x202f || c === 0x205f || c === 0x3000 || c === 0xfeff;
 }
 
 /** What is left after the data: how many tokens, how many numeric, the first few. */
@@ -104,9 +94,7 @@ export class NumberReader {
   next(what: string, progress?: { expected: number; found: number; plural: string }): number {
     const token = this.take();
     if (!token) {
-      const problem = progress
-        ? `expected ${progress.expected} ${progress.plural}, found ${progress.found} (the file ends early)`
-        : `unexpected end of file: expected ${what}`;
+      const problem = progress ? `expected ${progress.expected} ${progress.plural}, found ${progress.found} (the file ends early)` : `unexpected end of file: expected ${what}`;
       throw new PhotometryParseError(this.fileName, this.last?.line ?? null, problem);
     }
     const read = readDecimal(token.text);

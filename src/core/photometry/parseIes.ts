@@ -36,8 +36,7 @@ export function parseIes(text: string, fileName: string, options: ParseIesOption
   const { statedLumens, statedLumensSource } = statedIesLumens(v, keywords, fileName, warnings);
 
   const manufacturer = keywords['MANUFAC'] ?? freeText[0] ?? '';
-  const luminaire =
-    keywords['LUMINAIRE'] ?? (keywords['MANUFAC'] === undefined ? freeText.slice(1) : freeText).filter((t) => !/^-+$/.test(t)).join(' / ');
+  const luminaire = keywords['LUMINAIRE'] ?? (keywords['MANUFAC'] === undefined ? freeText.slice(1) : freeText).filter((t) => !/^-+$/.test(t)).join(' / ');
 
   const ph: Photometry = {
     format: 'IES',
@@ -117,8 +116,6 @@ function readIesGrid(
     warnings.push(`the ${nH} horizontal angles are listed in descending order; read in ascending order with their planes`);
   }
 
-  const grid: ExpandedGrid = typeC
-    ? expandTypeC(fileName, { verticalAngles, horizontalAngles, candela }, anglesLine, warnings)
-    : convertTypeAB(fileName, photometricType, { verticalAngles, horizontalAngles, candela }, anglesLine);
+  const grid: ExpandedGrid = typeC ? expandTypeC(fileName, { verticalAngles, horizontalAngles, candela }, anglesLine, warnings) : convertTypeAB(fileName, photometricType, { verticalAngles, horizontalAngles, candela }, anglesLine);
   return { grid, scale, verticalAngles, horizontalAngles };
 }

@@ -86,10 +86,7 @@ export function parseLdt(text: string, fileName: string): Photometry {
   const mm = 0.001;
   // EULUMDAT: width 0 means a circle of diameter = length; LM-63 signs say the same.
   const lumHeight = Math.max(...heights) * mm;
-  const opening =
-    lumWidth > 0
-      ? luminousOpening(lumWidth * mm, lumLength * mm, lumHeight)
-      : luminousOpening(-lumLength * mm, -lumLength * mm, lumHeight);
+  const opening = lumWidth > 0 ? luminousOpening(lumWidth * mm, lumLength * mm, lumHeight) : luminousOpening(-lumLength * mm, -lumLength * mm, lumHeight);
   const ph: Photometry = {
     format: 'LDT',
     version: 'EULUMDAT',

@@ -15,11 +15,7 @@ export type ParsePhotometryOptions = ParseIesOptions;
  * including input over MAX_PHOTOMETRY_BYTES (checked before decoding).
  * Non-fatal findings are in `warnings` (see photometryWarnings).
  */
-export function parsePhotometry(
-  data: string | Uint8Array,
-  fileName: string,
-  options: ParsePhotometryOptions = {},
-): Photometry {
+export function parsePhotometry(data: string | Uint8Array, fileName: string, options: ParsePhotometryOptions = {}): Photometry {
   checkInputSize(fileName, typeof data === 'string' ? data.length : data.byteLength);
   const text = decodeText(data);
   const ext = /\.([a-z0-9]+)$/i.exec(fileName)?.[1]?.toLowerCase();

@@ -25,7 +25,11 @@ const NOUNS: Record<string, string> = {
 };
 
 const WARNINGS: readonly Pattern[] = [
-  [/^stated lumens (\S+) lm and integrated flux (\S+) lm differ by (\S+) % \(ratio (\S+)\); the integrated flux of the candela data is used$/, 'lumensDiffer', (m) => ({ stated: num(m[1]), flux: num(m[2]), percent: num(m[3]), ratio: num(m[4]) })],
+  [
+    /^stated lumens (\S+) lm and integrated flux (\S+) lm differ by (\S+) % \(ratio (\S+)\); the integrated flux of the candela data is used$/,
+    'lumensDiffer',
+    (m) => ({ stated: num(m[1]), flux: num(m[2]), percent: num(m[3]), ratio: num(m[4]) }),
+  ],
   [/^integrated flux (\S+) lm exceeds the stated lamp lumens (\S+) lm \(light output ratio (\S+) > 1\); the candela data is used$/, 'fluxAboveLamps', (m) => ({ flux: num(m[1]), stated: num(m[2]), ratio: num(m[3]) })],
   [/^integrated flux (\S+) lm is only (\S+) % of the stated lamp lumens (\S+) lm; the candela data is used$/, 'fluxBelowLamps', (m) => ({ flux: num(m[1]), percent: num(m[2]), stated: num(m[3]) })],
   [/^every candela value is 0: the luminaire emits no light$/, 'noLight', () => ({})],

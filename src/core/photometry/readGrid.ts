@@ -16,15 +16,7 @@ export interface AngleList {
  * writes 180 … 0) is returned reversed with `reversed: true`: the caller
  * reverses the data with it and warns. Anything else out of order is refused.
  */
-export function readAngles(
-  reader: NumberReader,
-  fileName: string,
-  count: number,
-  plural: string,
-  min: number,
-  max: number,
-  allowDescending = false,
-): AngleList {
+export function readAngles(reader: NumberReader, fileName: string, count: number, plural: string, min: number, max: number, allowDescending = false): AngleList {
   const singular = plural.replace(/s$/, '');
   const angles: number[] = [];
   let descending = false;
@@ -64,15 +56,7 @@ export function readAngles(
  * checked on the scaled value (issue 18: a valid value × a huge multiplier is
  * Infinity), so every stored value is in [0, MAX_CANDELA].
  */
-export function readCandela(
-  reader: NumberReader,
-  fileName: string,
-  planes: number,
-  perPlane: number,
-  scale: number,
-  planeName: (plane: number) => string,
-  angleName: (index: number) => string,
-): number[][] {
+export function readCandela(reader: NumberReader, fileName: string, planes: number, perPlane: number, scale: number, planeName: (plane: number) => string, angleName: (index: number) => string): number[][] {
   const total = planes * perPlane;
   const grid: number[][] = [];
   for (let p = 0; p < planes; p++) {
@@ -80,19 +64,11 @@ export function readCandela(
     for (let i = 0; i < perPlane; i++) {
       const value = reader.next(`a candela value`, { expected: total, found: p * perPlane + i, plural: 'candela values' });
       if (value < 0) {
-        throw new PhotometryParseError(
-          fileName,
-          reader.lastLine,
-          `negative candela value ${value} at ${planeName(p)}, ${angleName(i)}`,
-        );
+        throw new PhotometryParseError(fileName, reader.lastLine, `negative candela value ${value} at ${planeName(p)}, ${angleName(i)}`);
       }
       const cd = value * scale;
       if (!(cd <= MAX_CANDELA)) {
-        throw new PhotometryParseError(
-          fileName,
-          reader.lastLine,
-          `candela value ${value} × scale ${scale} at ${planeName(p)}, ${angleName(i)} exceeds ${MAX_CANDELA} cd`,
-        );
+        throw new PhotometryParseError(fileName, reader.lastLine, `candela value ${value} × scale ${scale} at ${planeName(p)}, ${angleName(i)} exceeds ${MAX_CANDELA} cd`);
       }
       row.push(cd);
     }
@@ -110,11 +86,7 @@ export function checkLeftovers(reader: NumberReader, fileName: string, perPlane:
   const { count, numeric, first } = reader.leftovers();
   if (count === 0) return;
   if (numeric >= Math.max(perPlane, 2) && numeric === count) {
-    throw new PhotometryParseError(
-      fileName,
-      first[0].line,
-      `${numeric} numbers follow the candela table: the angle counts in the header do not match the data`,
-    );
+    throw new PhotometryParseError(fileName, first[0].line, `${numeric} numbers follow the candela table: the angle counts in the header do not match the data`);
   }
   const shown = first.map((t) => excerpt(t.text, 16)).join(' ');
   warnings.push(`ignored ${count} trailing item(s) after the data from line ${first[0].line} ("${shown}")`);

@@ -177,14 +177,24 @@ export function roomProblems(room: RoomInput): RoomProblem[] {
     }
     const length = wallLength(o.wall);
     if (!(isFiniteNumber(o.offset) && o.offset >= -EPS && o.offset + o.width <= length + EPS)) {
-      out.push(problem('room-opening-beyond-wall', `${at}.offset`, `opening ${i} reaches from ${String(o.offset)} to ${round(o.offset + o.width)} m along wall ${o.wall}, which is ${round(length)} m long; it must stay between the wall's ends`, { opening: i, wall: o.wall, offset: String(o.offset), end: round(o.offset + o.width), length: round(length) }));
+      out.push(
+        problem('room-opening-beyond-wall', `${at}.offset`, `opening ${i} reaches from ${String(o.offset)} to ${round(o.offset + o.width)} m along wall ${o.wall}, which is ${round(length)} m long; it must stay between the wall's ends`, {
+          opening: i,
+          wall: o.wall,
+          offset: String(o.offset),
+          end: round(o.offset + o.width),
+          length: round(length),
+        }),
+      );
       return;
     }
     // The wall's top is concave along it: the opening fits under it when both top corners do.
     const top = o.sill + o.height;
     const ceiling = Math.min(ceilingAlong(o.wall, o.offset), ceilingAlong(o.wall, o.offset + o.width));
     if (top > ceiling + EPS) {
-      out.push(problem('room-opening-above-ceiling', `${at}.height`, `opening ${i} reaches ${round(top)} m up wall ${o.wall}, above its top (${round(ceiling)} m there)`, { opening: i, wall: o.wall, top: round(top), ceiling: round(ceiling) }));
+      out.push(
+        problem('room-opening-above-ceiling', `${at}.height`, `opening ${i} reaches ${round(top)} m up wall ${o.wall}, above its top (${round(ceiling)} m there)`, { opening: i, wall: o.wall, top: round(top), ceiling: round(ceiling) }),
+      );
       return;
     }
     for (const p of placed) {

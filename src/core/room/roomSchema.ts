@@ -10,7 +10,7 @@ import { roomProblems } from './roomProblems';
 import type { RoomInput } from './roomInput';
 
 const show = (v: unknown): string => {
-  const text = typeof v === 'number' && !Number.isFinite(v) ? String(v) : JSON.stringify(v) ?? String(v);
+  const text = typeof v === 'number' && !Number.isFinite(v) ? String(v) : (JSON.stringify(v) ?? String(v));
   return text.length > 40 ? `${text.slice(0, 37)}...` : text;
 };
 
@@ -22,7 +22,10 @@ const reflectanceValue = finite.refine((v) => v >= 0 && v < 1, {
 const reflectance = z.union([reflectanceValue, z.tuple([reflectanceValue, reflectanceValue, reflectanceValue])], {
   error: (i) => (i.input === undefined ? 'is missing' : `must be a number in [0, 1) or [r, g, b], got ${show(i.input)}`),
 });
-const index = z.number({ error: (i) => (i.input === undefined ? 'is missing' : `must be a wall index, got ${show(i.input)}`) }).int('must be a whole number').min(0, 'must be 0 or more');
+const index = z
+  .number({ error: (i) => (i.input === undefined ? 'is missing' : `must be a wall index, got ${show(i.input)}`) })
+  .int('must be a whole number')
+  .min(0, 'must be 0 or more');
 
 const slope = z.strictObject(
   {
@@ -56,7 +59,10 @@ const roomShape = z.strictObject(
       error: (i) => `${show(i.input)} m is outside ${ROOM_SHAPE_LIMITS.minHeight}..${ROOM_SHAPE_LIMITS.maxHeight} m`,
     }),
     slopes: z.array(slope, { error: 'must be a list of slopes' }).max(ROOM_SHAPE_LIMITS.maxCorners, `has more than ${ROOM_SHAPE_LIMITS.maxCorners} slopes`).optional(),
-    openings: z.array(opening, { error: 'must be a list of openings' }).max(4 * ROOM_SHAPE_LIMITS.maxCorners, `has more than ${4 * ROOM_SHAPE_LIMITS.maxCorners} openings`).optional(),
+    openings: z
+      .array(opening, { error: 'must be a list of openings' })
+      .max(4 * ROOM_SHAPE_LIMITS.maxCorners, `has more than ${4 * ROOM_SHAPE_LIMITS.maxCorners} openings`)
+      .optional(),
     reflectance: z.strictObject(
       {
         floor: reflectance,

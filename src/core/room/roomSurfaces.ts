@@ -172,7 +172,10 @@ export function roomSurfaces(room: Room): RoomSurface[] {
   });
   room.walls.forEach((wall, k) => {
     const top = wallTop(room.ceilingPlanes, wall.start, wall.end, wall.length);
-    const bottom: PlanPoint[] = [[0, 0], [wall.length, 0]];
+    const bottom: PlanPoint[] = [
+      [0, 0],
+      [wall.length, 0],
+    ];
     const outline2d = [...bottom, ...[...top].reverse()].filter((p, i, all) => {
       const q = all[(i + all.length - 1) % all.length];
       return Math.abs(p[0] - q[0]) > 1e-12 || Math.abs(p[1] - q[1]) > 1e-12;

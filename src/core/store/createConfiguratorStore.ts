@@ -55,9 +55,7 @@ export type ConfiguratorStore = StoreApi<ConfiguratorState>;
 function selectionExists(config: Configuration, sel: Selection): boolean {
   if (!sel) return true;
   if (sel.kind === 'object') return config.objects.some((o) => o.id === sel.id);
-  return config.systems.some((s) =>
-    sel.kind === 'system' ? s.id === sel.id : s.rails.some((r) => (sel.kind === 'rail' ? r.id === sel.id : r.modules.some((m) => m.id === sel.id))),
-  );
+  return config.systems.some((s) => (sel.kind === 'system' ? s.id === sel.id : s.rails.some((r) => (sel.kind === 'rail' ? r.id === sel.id : r.modules.some((m) => m.id === sel.id)))));
 }
 
 export function createConfiguratorStore(options: ConfiguratorStoreOptions): ConfiguratorStore {

@@ -40,9 +40,7 @@ export function bakeReport(f: BakeFacts): BakeReport {
     pointSources: f.pointSources,
     directSkipped: f.directSkipped,
     indirectEnabled: f.indirectEnabled,
-    brightPatches: selection
-      ? { count: selection.patches.length, peakedness: selection.peakedness, residualPeakedness: selection.residualPeakedness }
-      : { count: 0, peakedness: 1, residualPeakedness: 1 },
+    brightPatches: selection ? { count: selection.patches.length, peakedness: selection.peakedness, residualPeakedness: selection.residualPeakedness } : { count: 0, peakedness: 1, residualPeakedness: 1 },
     samplesPerTexelPerBounce: f.indirectEnabled ? f.settings.samples : 0,
     bouncesComputed: f.bouncesComputed,
     bounceFlux: f.records.map((r) => r.fluxY),

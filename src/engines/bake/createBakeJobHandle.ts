@@ -137,9 +137,7 @@ export function createBakeJobHandle(b: StartedBake): BakeJob {
 
 /** The current maps on the GPU: per surface, and the atlas as shown. */
 function jobTextures(targets: BakeJobTargets): ReturnType<BakeJob['textures']> {
-  const textures = Object.fromEntries(
-    targets.surfaces.map((st) => [st.layout.name, { direct: st.direct.texture, indirect: st.indirect.texture, total: st.total.texture }]),
-  ) as ReturnType<BakeJob['textures']>;
+  const textures = Object.fromEntries(targets.surfaces.map((st) => [st.layout.name, { direct: st.direct.texture, indirect: st.indirect.texture, total: st.total.texture }])) as ReturnType<BakeJob['textures']>;
   const shown = targets.atlasShown;
   if (shown) textures.objects = { direct: shown.direct.texture, indirect: shown.indirect.texture, total: shown.total.texture };
   return textures;
@@ -154,9 +152,7 @@ function readDirectMaps(targets: BakeJobTargets, prepared: PreparedObjects | nul
 }
 
 function readAllMaps(targets: BakeJobTargets, prepared: PreparedObjects | null, read: (t: FloatTarget) => Float32Array): BakedMaps {
-  const maps = Object.fromEntries(
-    targets.surfaces.map((st) => [st.layout.name, { layout: st.layout, direct: read(st.direct), indirect: read(st.indirect), total: read(st.total) }]),
-  ) as unknown as BakedMaps;
+  const maps = Object.fromEntries(targets.surfaces.map((st) => [st.layout.name, { layout: st.layout, direct: read(st.direct), indirect: read(st.indirect), total: read(st.total) }])) as unknown as BakedMaps;
   const shown = targets.atlasShown;
   if (prepared && shown) maps.objects = { atlas: prepared.atlas, direct: read(shown.direct), indirect: read(shown.indirect), total: read(shown.total) };
   return maps;

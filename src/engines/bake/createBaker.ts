@@ -19,9 +19,7 @@ export function createBaker(gl: WebGL2RenderingContext): Baker {
     dispose: () => pool.dispose(),
     start: (scene, settings) => start(scene, settings, null),
     startFromDirect: (room, direct, settings, objects?: GivenObjectDirect) =>
-      objects && objects.objects.length > 0
-        ? start({ room, luminaires: [], objects: objects.objects }, settings, direct, objects.direct)
-        : start({ room, luminaires: [] }, settings, direct),
+      objects && objects.objects.length > 0 ? start({ room, luminaires: [], objects: objects.objects }, settings, direct, objects.direct) : start({ room, luminaires: [] }, settings, direct),
     bake(scene, settings) {
       const job = start(scene, settings, null);
       try {

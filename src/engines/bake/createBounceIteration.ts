@@ -84,7 +84,13 @@ export function createBounceIteration(
         st.sum.swap();
       }
     });
-    timer.timed('blend', () => statistics.record(bounce + 1, surfaces.map((st) => st.samples.read), inv));
+    timer.timed('blend', () =>
+      statistics.record(
+        bounce + 1,
+        surfaces.map((st) => st.samples.read),
+        inv,
+      ),
+    );
     bounce++;
     for (const st of surfaces) {
       // The finished bounce becomes the input; the old input, cleared, collects the next bounce.

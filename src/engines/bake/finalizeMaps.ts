@@ -83,8 +83,7 @@ export function finalizeMaps(
     if (blur) {
       const radius = settings.blurRadius;
       const sigma = radius / 2;
-      const blurInto = (out: FloatTarget, from: FloatTarget, direction: readonly [number, number]) =>
-        runPass(gl, blur, out, { uSource: from.texture, uDirection: direction, uRadius: radius, uInvTwoSigma2: 1 / (2 * sigma * sigma) });
+      const blurInto = (out: FloatTarget, from: FloatTarget, direction: readonly [number, number]) => runPass(gl, blur, out, { uSource: from.texture, uDirection: direction, uRadius: radius, uInvTwoSigma2: 1 / (2 * sigma * sigma) });
       const chartBlurInto = (out: FloatTarget, from: FloatTarget, direction: readonly [number, number]) =>
         runPass(gl, objects!.chartBlur!, out, { uSource: from.texture, uCharts: objects!.charts, uDirection: direction, uRadius: radius, uInvTwoSigma2: 1 / (2 * sigma * sigma) });
       timer.timed('blur', () => {

@@ -43,15 +43,7 @@ export interface FluxObjects {
   maxReflectance: number;
 }
 
-export function createFluxStatistics(
-  gl: WebGL2RenderingContext,
-  pool: TargetPool,
-  layouts: SurfaceLayout[],
-  reflectance: Rgb[],
-  capacity: number,
-  onRead: (bytes: number) => void,
-  objects: FluxObjects | null = null,
-): FluxStatistics {
+export function createFluxStatistics(gl: WebGL2RenderingContext, pool: TargetPool, layouts: SurfaceLayout[], reflectance: Rgb[], capacity: number, onRead: (bytes: number) => void, objects: FluxObjects | null = null): FluxStatistics {
   const maxRatio = Math.min(Math.max(maxFluxRatio(reflectance), objects ? objects.maxReflectance : 0), 0.9999);
   // First level per surface: blocks of block² texels, at most REDUCE_GRID² of them.
   const levels = layouts.map((l) => {

@@ -37,9 +37,13 @@ function lampConstants(lamp: DirectLamp, k: number, subsampled: boolean): string
   return `const vec3 LAMP${k}_SOURCES[${n}] = vec3[${n}](${lamp.sources.map(glslVec3).join(', ')});
 const mat3 LAMP${k}_TO_LOCAL = ${glslMat3Transposed(lamp.rotation)};
 const vec3 LAMP${k}_WEIGHT = ${glslVec3(lamp.weight)};
-${hasSides(lamp) ? `const float LAMP${k}_SIDE[${n}] = float[${n}](${lamp.sides!.map(glslFloat).join(', ')});\n` : ''}${subsampled ? `const vec3 LAMP${k}_CENTRE = ${glslVec3(centre)};
+${hasSides(lamp) ? `const float LAMP${k}_SIDE[${n}] = float[${n}](${lamp.sides!.map(glslFloat).join(', ')});\n` : ''}${
+    subsampled
+      ? `const vec3 LAMP${k}_CENTRE = ${glslVec3(centre)};
 const float LAMP${k}_RADIUS = ${glslFloat(radius)};
-` : ''}`;
+`
+      : ''
+  }`;
 }
 
 /**
@@ -109,9 +113,13 @@ function lampUniformNames(lamp: DirectLamp, k: number, subsampled: boolean): str
   return `#define LAMP${k}_SOURCES uLamp${k}Sources
 #define LAMP${k}_TO_LOCAL mat3(uLamp${k}ToLocal[0], uLamp${k}ToLocal[1], uLamp${k}ToLocal[2])
 #define LAMP${k}_WEIGHT uLamp${k}Weight
-${hasSides(lamp) ? `const float LAMP${k}_SIDE[${n}] = float[${n}](${lamp.sides!.map(glslFloat).join(', ')});\n` : ''}${subsampled ? `#define LAMP${k}_CENTRE uLamp${k}Centre
+${hasSides(lamp) ? `const float LAMP${k}_SIDE[${n}] = float[${n}](${lamp.sides!.map(glslFloat).join(', ')});\n` : ''}${
+    subsampled
+      ? `#define LAMP${k}_CENTRE uLamp${k}Centre
 #define LAMP${k}_RADIUS uLamp${k}Radius
-` : ''}`;
+`
+      : ''
+  }`;
 }
 
 /**
@@ -173,12 +181,7 @@ function lampSum(lamp: DirectLamp, k: number, sub: number, shadowed: boolean): s
  * averages shown stay right at any texel size, even for a hot spot smaller than
  * a texel. `supersampling` = 1 gives the centre value everywhere.
  */
-export function generateDirectShader(
-  surface: SurfaceLayout,
-  lamps: DirectLamp[],
-  supersampling = 1,
-  withLampUniforms = false,
-): DirectPass<typeof directUniforms> {
+export function generateDirectShader(surface: SurfaceLayout, lamps: DirectLamp[], supersampling = 1, withLampUniforms = false): DirectPass<typeof directUniforms> {
   return directShader(surface, lamps, supersampling, null, withLampUniforms);
 }
 
@@ -187,13 +190,7 @@ export function generateDirectShader(
  * where the point (every sub-sample of a texel mean) sees it past the objects, one shadow ray
  * through the objects' BVH per source and point (bvhAnyHit; width `bvhWidth` of its textures).
  */
-export function generateShadowedDirectShader(
-  surface: SurfaceLayout,
-  lamps: DirectLamp[],
-  supersampling: number,
-  bvhWidth: number,
-  withLampUniforms = false,
-): DirectPass<typeof shadowedDirectUniforms> {
+export function generateShadowedDirectShader(surface: SurfaceLayout, lamps: DirectLamp[], supersampling: number, bvhWidth: number, withLampUniforms = false): DirectPass<typeof shadowedDirectUniforms> {
   return directShader(surface, lamps, supersampling, bvhWidth, withLampUniforms);
 }
 
@@ -216,12 +213,7 @@ export type DirectPass<U extends UniformSpec> = FragmentPass<U> & { lampValues?:
  * The pass's uniforms and, when lamp uniforms are asked for and fit (MAX_LAMP_UNIFORM_VECTORS),
  * the lamps' uniforms added after them.
  */
-export function withLampSpec<U extends UniformSpec>(
-  base: U,
-  lamps: readonly DirectLamp[],
-  subsampled: boolean,
-  wanted: boolean,
-): { uniforms: U; lamps: LampUniforms | null } {
+export function withLampSpec<U extends UniformSpec>(base: U, lamps: readonly DirectLamp[], subsampled: boolean, wanted: boolean): { uniforms: U; lamps: LampUniforms | null } {
   if (!wanted || lampUniformVectors(lamps, subsampled) > MAX_LAMP_UNIFORM_VECTORS) return { uniforms: base, lamps: null };
   const u = lampUniforms(lamps, subsampled);
   return { uniforms: { ...base, ...u.spec } as U, lamps: u };
@@ -240,13 +232,7 @@ export function directPointSum(lamps: DirectLamp[], point: string, normal: strin
     .join('\n');
 }
 
-function directShader<U extends typeof directUniforms | typeof shadowedDirectUniforms>(
-  surface: SurfaceLayout,
-  lamps: DirectLamp[],
-  supersampling: number,
-  bvhWidth: number | null,
-  wantLampUniforms: boolean,
-): DirectPass<U> {
+function directShader<U extends typeof directUniforms | typeof shadowedDirectUniforms>(surface: SurfaceLayout, lamps: DirectLamp[], supersampling: number, bvhWidth: number | null, wantLampUniforms: boolean): DirectPass<U> {
   const texelU = surface.lengthU / surface.width;
   const texelV = surface.lengthV / surface.height;
   const sub = Math.max(1, Math.floor(supersampling));
@@ -258,10 +244,14 @@ function directShader<U extends typeof directUniforms | typeof shadowedDirectUni
     spec.uniforms,
     `// direct pass, surface ${surface.name}, ${lamps.length} luminaire(s)${sub > 1 ? `, texel means (≤ ${sub}² sub-samples)` : ''}${shadowed ? ', shadowed by objects' : ''}${spec.lamps ? ', lamps as uniforms' : ''}
 ${profileLookup({ table: 'uProfiles', dataWidth: DATA_TEXTURE_WIDTH })}
-${shadowed ? objectTracing(bvhWidth) : ''}${surfaceFrameGlsl(surface)}${sub > 1 ? `const vec3 TEXEL_U = ${glslVec3(axisVector(surface.uAxisIndex, texelU))};
+${shadowed ? objectTracing(bvhWidth) : ''}${surfaceFrameGlsl(surface)}${
+      sub > 1
+        ? `const vec3 TEXEL_U = ${glslVec3(axisVector(surface.uAxisIndex, texelU))};
 const vec3 TEXEL_V = ${glslVec3(axisVector(surface.vAxisIndex, texelV))};
 const float TEXEL_DIAGONAL = ${glslFloat(Math.hypot(texelU, texelV))};
-` : ''}${profiles.map(profileFunction).join('')}
+`
+        : ''
+    }${profiles.map(profileFunction).join('')}
 ${lamps.map((lamp, k) => lampCode(lamp, k, sub > 1)).join('')}
 out vec4 outColor;
 void main() {

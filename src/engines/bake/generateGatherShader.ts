@@ -73,10 +73,7 @@ function exitanceFunction(receiver: number, reflectance: Rgb[], objects: GatherO
     .sort((a, b) => a.axis - b.axis || Number(a.onMax) - Number(b.onMax));
   const constants = hit.map((t) => `const vec3 RHO${t.index} = ${glslVec3(reflectance[t.index])};\n`).join('');
   const branches = hit
-    .map(
-      (t) =>
-        `  if (axis == ${t.axis} && dir.${AXIS_NAME[t.axis]} ${t.onMax ? '>' : '<'} 0.0) return RHO${t.index} * texture(uSource${t.index}, vec2(hit.${t.u}, hit.${t.v}) / vec2(ROOM.${t.u}, ROOM.${t.v})).rgb;\n`,
-    )
+    .map((t) => `  if (axis == ${t.axis} && dir.${AXIS_NAME[t.axis]} ${t.onMax ? '>' : '<'} 0.0) return RHO${t.index} * texture(uSource${t.index}, vec2(hit.${t.u}, hit.${t.v}) / vec2(ROOM.${t.u}, ROOM.${t.v})).rgb;\n`)
     .join('');
   // With objects the ray ends at the nearer of the box exit and the first object hit; an object
   // emits ρ·E of the atlas texel hit (nearest texel, so no empty neighbour darkens hits near a

@@ -11,13 +11,7 @@ import type { SurfaceLayout } from './surfaceLayout';
  * holds γ ∈ (θ − 90°, θ + 90°). Conservative (ignores C), so it never drops
  * light; it spares the direct pass e.g. the ceiling above a pure downlight.
  */
-export function lampReachesSurface(
-  worldSources: Vec3[],
-  rotation: Mat3,
-  gammaMin: number,
-  gammaMax: number,
-  surface: SurfaceLayout,
-): boolean {
+export function lampReachesSurface(worldSources: Vec3[], rotation: Mat3, gammaMin: number, gammaMax: number, surface: SurfaceLayout): boolean {
   const n = surface.normalAxisIndex;
   const inFront = worldSources.some((p) => (p[n] - surface.origin[n]) * surface.normal[n] > 1e-9);
   if (!inFront) return false;

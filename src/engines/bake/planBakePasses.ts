@@ -7,14 +7,7 @@ import type { BakeSettings } from './bakeSettings';
 import { chartBlurPass } from '../../../shaders/chartBlurPass.glsl';
 import { chartDilatePass } from '../../../shaders/chartDilatePass.glsl';
 import { generateDirectShader, generateShadowedDirectShader, type DirectLamp, type DirectPass, type directUniforms } from './generateDirectShader';
-import {
-  generateGatherShader,
-  generateObjectAwareGatherShader,
-  generateObjectGatherShader,
-  type GatherObjects,
-  type gatherUniforms,
-  type objectGatherUniforms,
-} from './generateGatherShader';
+import { generateGatherShader, generateObjectAwareGatherShader, generateObjectGatherShader, type GatherObjects, type gatherUniforms, type objectGatherUniforms } from './generateGatherShader';
 import { generateObjectDirectShader, type objectDirectUniforms } from './objects/objectPassDirectShader';
 import { lampReachesSurface } from './lampReach';
 import type { SurfaceLayout } from './surfaceLayout';
@@ -64,20 +57,13 @@ export function planBakePasses(
     if (reaching.length === 0) return null;
     // settings.lampUniforms (a relighting basis): lamps as uniforms, one program per surface and photometry.
     const asUniforms = settings.lampUniforms === true;
-    return objects
-      ? generateShadowedDirectShader(layout, reaching, settings.texelSupersampling, objects.bvhWidth, asUniforms)
-      : generateDirectShader(layout, reaching, settings.texelSupersampling, asUniforms);
+    return objects ? generateShadowedDirectShader(layout, reaching, settings.texelSupersampling, objects.bvhWidth, asUniforms) : generateDirectShader(layout, reaching, settings.texelSupersampling, asUniforms);
   });
-  const objectDirect =
-    objects && !directOverride && lamps.length > 0 ? generateObjectDirectShader([...lamps], objects.bvhWidth, settings.lampUniforms === true) : null;
-  const anyDirect = directOverride
-    ? Object.values(directOverride).some((rgb) => rgb.some((v) => v > 0))
-    : direct.some((pass) => pass !== null) || objectDirect !== null;
+  const objectDirect = objects && !directOverride && lamps.length > 0 ? generateObjectDirectShader([...lamps], objects.bvhWidth, settings.lampUniforms === true) : null;
+  const anyDirect = directOverride ? Object.values(directOverride).some((rgb) => rgb.some((v) => v > 0)) : direct.some((pass) => pass !== null) || objectDirect !== null;
   const maxReflectance = Math.max(...reflectance.flat(), objects ? objects.maxReflectance : 0);
   const indirectEnabled = settings.bounces > 0 && maxReflectance > 0 && anyDirect;
-  const gather = indirectEnabled
-    ? layouts.map((layout) => (objects ? generateObjectAwareGatherShader(layout, room, reflectance, objects) : generateGatherShader(layout, room, reflectance)))
-    : [];
+  const gather = indirectEnabled ? layouts.map((layout) => (objects ? generateObjectAwareGatherShader(layout, room, reflectance, objects) : generateGatherShader(layout, room, reflectance))) : [];
   const objectGather = objects && indirectEnabled ? generateObjectGatherShader(room, reflectance, objects) : null;
   const blur = indirectEnabled && settings.blurRadius > 0;
   const sources = [

@@ -25,7 +25,7 @@ export function pointSources(photometry: Photometry, spacing: number, maxPerAxis
     for (let k = 0; k < nz; k++) {
       const x = ((i + 0.5) / nx - 0.5) * w;
       const z = ((k + 0.5) / nz - 0.5) * l;
-      if (round && w > 0 && l > 0 && (2 * x / w) ** 2 + (2 * z / l) ** 2 > 1) continue;
+      if (round && w > 0 && l > 0 && ((2 * x) / w) ** 2 + ((2 * z) / l) ** 2 > 1) continue;
       points.push([x, 0, z]);
     }
   }
@@ -60,22 +60,14 @@ export interface OpeningSource {
  * height has its top face between its centre and the ceiling, not on or
  * beyond it (where its up-light would leave the room and be lost).
  */
-export function openingSources(
-  photometry: Photometry,
-  spacing: number,
-  maxPerAxis: number,
-  room: { down: number; up: number } = { down: Infinity, up: Infinity },
-): { sources: OpeningSource[]; perGrid: number } {
+export function openingSources(photometry: Photometry, spacing: number, maxPerAxis: number, room: { down: number; up: number } = { down: Infinity, up: Infinity }): { sources: OpeningSource[]; perGrid: number } {
   const grid = pointSources(photometry, spacing, maxPerAxis);
   const h = Math.abs(photometry.luminousOpening.height);
   if (!(spacing > 0) || !(h > spacing)) return { sources: grid.map((position) => ({ position, side: 0 })), perGrid: grid.length };
   const down = Math.min(h / 2, Math.max(0, room.down - FACE_MARGIN));
   const up = Math.min(h / 2, Math.max(0, room.up - FACE_MARGIN));
   return {
-    sources: [
-      ...grid.map((p): OpeningSource => ({ position: [p[0], -down, p[2]], side: -1 })),
-      ...grid.map((p): OpeningSource => ({ position: [p[0], up, p[2]], side: 1 })),
-    ],
+    sources: [...grid.map((p): OpeningSource => ({ position: [p[0], -down, p[2]], side: -1 })), ...grid.map((p): OpeningSource => ({ position: [p[0], up, p[2]], side: 1 }))],
     perGrid: grid.length,
   };
 }

@@ -31,13 +31,7 @@ export interface BakeInputs {
  * Given direct maps (startFromDirect) with objects must come with the atlas's direct map, of the
  * atlas's size.
  */
-export function prepareBakeInputs(
-  gl: WebGL2RenderingContext,
-  scene: BakeScene,
-  settings: BakeSettings,
-  directOverride: Record<SurfaceName, Float32Array> | null,
-  objectDirectOverride: Float32Array | null,
-): BakeInputs {
+export function prepareBakeInputs(gl: WebGL2RenderingContext, scene: BakeScene, settings: BakeSettings, directOverride: Record<SurfaceName, Float32Array> | null, objectDirectOverride: Float32Array | null): BakeInputs {
   const { room } = scene;
   const reflectance = SURFACE_NAMES.map((n) => toRgb(room.reflectance[n]));
   const layouts = surfaceLayouts(room, settings.texelSize, settings.maxTextureSize);

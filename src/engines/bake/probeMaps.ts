@@ -39,13 +39,7 @@ export function probeMaps(maps: BakedMaps, room: { width: number; height: number
  * texel, so a map lookup of it is wrong at any texel size; the indirect light is
  * smooth there.
  */
-export function probeExact(
-  maps: BakedMaps,
-  lamps: readonly LampSources[],
-  room: { width: number; height: number; depth: number },
-  point: Vec3,
-  visible?: (p: Vec3, n: Vec3, source: Vec3) => boolean,
-): ProbeValue {
+export function probeExact(maps: BakedMaps, lamps: readonly LampSources[], room: { width: number; height: number; depth: number }, point: Vec3, visible?: (p: Vec3, n: Vec3, source: Vec3) => boolean): ProbeValue {
   const { surface } = nearestSurface(room, point);
   const m = maps[surface];
   const u = point[m.layout.uAxisIndex];

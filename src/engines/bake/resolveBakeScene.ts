@@ -91,10 +91,7 @@ function buildObjects(scene: LightingScene, byPath: ReadonlyMap<string, Triangle
       if (!(below <= OBJECT_ROOM_TOLERANCE) || !(above <= OBJECT_ROOM_TOLERANCE)) {
         const side = below >= above ? low : high.replace('%', `${dims[a]} m`);
         const by = Math.max(below, above);
-        throw new SceneObjectError(
-          i,
-          `: the placed mesh reaches ${by.toPrecision(3)} m beyond the ${side} (the room is ${dims[a]} m ${extent}); objects must be inside the room (${OBJECT_ROOM_TOLERANCE * 100} cm tolerance)`,
-        );
+        throw new SceneObjectError(i, `: the placed mesh reaches ${by.toPrecision(3)} m beyond the ${side} (the room is ${dims[a]} m ${extent}); objects must be inside the room (${OBJECT_ROOM_TOLERANCE * 100} cm tolerance)`);
       }
     }
     return { id: o.id ?? `objects[${i}]`, mesh, ...placement, ...(o.reflectance !== undefined ? { reflectance: o.reflectance } : {}) };
@@ -111,9 +108,7 @@ function firstUses(scene: LightingScene): Map<string, number> {
 }
 
 function buildBakeScene(scene: LightingScene, byPath: ReadonlyMap<string, Photometry>, meshes: ReadonlyMap<string, TriangleMesh>): BakeScene {
-  const luminaires = scene.luminaires.map(
-    (l): BakeLuminaire => ({ photometry: byPath.get(l.photometry)!, position: l.position, yaw: l.yaw, pitch: l.pitch, roll: l.roll, dimming: l.dimming ?? 1, color: l.color ?? [1, 1, 1] }),
-  );
+  const luminaires = scene.luminaires.map((l): BakeLuminaire => ({ photometry: byPath.get(l.photometry)!, position: l.position, yaw: l.yaw, pitch: l.pitch, roll: l.roll, dimming: l.dimming ?? 1, color: l.color ?? [1, 1, 1] }));
   const objects = buildObjects(scene, meshes);
   return { room: scene.room, luminaires, ...(objects.length > 0 ? { objects } : {}), ...(scene.nearField ? { nearField: scene.nearField } : {}) };
 }
@@ -135,11 +130,7 @@ function requireLoader(scene: LightingScene, loadMesh: LoadMesh | undefined): Lo
  * app's `object:<id>` resolver). Always a promise, also for a scene without
  * luminaires. A failure is a LuminairePhotometryError or a SceneObjectError.
  */
-export async function resolveBakeScene(
-  scene: LightingScene,
-  loadPhotometry: (path: string) => Photometry | Promise<Photometry>,
-  loadMesh?: LoadMesh,
-): Promise<BakeScene> {
+export async function resolveBakeScene(scene: LightingScene, loadPhotometry: (path: string) => Photometry | Promise<Photometry>, loadMesh?: LoadMesh): Promise<BakeScene> {
   const firstUse = firstUses(scene);
   const paths = [...firstUse.keys()];
   const photometries = await Promise.all(
@@ -163,11 +154,7 @@ export async function resolveBakeScene(
       }
     }),
   );
-  return buildBakeScene(
-    scene,
-    new Map(paths.map((path, k) => [path, photometries[k]])),
-    new Map(meshPaths.map((path, k) => [path, meshes[k]])),
-  );
+  return buildBakeScene(scene, new Map(paths.map((path, k) => [path, photometries[k]])), new Map(meshPaths.map((path, k) => [path, meshes[k]])));
 }
 
 /** resolveBakeScene for synchronous loaders (Node reads files synchronously): the scene itself, or a thrown LuminairePhotometryError or SceneObjectError. */

@@ -117,9 +117,7 @@ export function runBrightPatchPass(
   });
   const gather = objects ? null : compile(brightGatherPass, 'bright gather');
   const occluded = objects ? compile(occludedBrightGatherPass(objects.bvhWidth), 'bright gather') : null;
-  const objectValues = objects
-    ? { uBvhNodes: objects.uBvhNodes, uBvhTriangles: objects.uBvhTriangles, uPoints: objects.uPoints, uNormals: objects.uNormals }
-    : null;
+  const objectValues = objects ? { uBvhNodes: objects.uBvhNodes, uBvhTriangles: objects.uBvhTriangles, uPoints: objects.uPoints, uNormals: objects.uNormals } : null;
   const bright = layouts.map((layout): FloatTarget | null => {
     if (selection.patches.every((p) => p.surface === layout.index)) return null;
     const out = targets.acquire(layout.width, layout.height, false);

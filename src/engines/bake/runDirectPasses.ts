@@ -18,15 +18,7 @@ export interface GivenDirect {
  * objects, shadowed through the BVH) and the atlas's, or uploaded when given; a surface no
  * luminaire reaches is cleared. Returns the surfaces skipped (for the report).
  */
-export function runDirectPasses(
-  gl: WebGL2RenderingContext,
-  compile: CompilePass,
-  plan: BakePlan,
-  inputs: BakeInputs,
-  views: ObjectPassViews,
-  targets: BakeJobTargets,
-  given: GivenDirect | null,
-): SurfaceName[] {
+export function runDirectPasses(gl: WebGL2RenderingContext, compile: CompilePass, plan: BakePlan, inputs: BakeInputs, views: ObjectPassViews, targets: BakeJobTargets, given: GivenDirect | null): SurfaceName[] {
   const skipped: SurfaceName[] = [];
   targets.surfaces.forEach((st, s) => {
     const pass = plan.direct[s];

@@ -38,13 +38,7 @@ export type Viewport = readonly [number, number, number, number];
  * set through their first element's name (headless-gl 9 rc returns null for
  * the bare name).
  */
-export function runPass<U extends UniformSpec>(
-  gl: WebGL2RenderingContext,
-  pass: PassProgram<U>,
-  target: FloatTarget,
-  values: UniformValues<U>,
-  viewport: Viewport = [0, 0, target.width, target.height],
-): void {
+export function runPass<U extends UniformSpec>(gl: WebGL2RenderingContext, pass: PassProgram<U>, target: FloatTarget, values: UniformValues<U>, viewport: Viewport = [0, 0, target.width, target.height]): void {
   const { program, uniforms } = pass;
   gl.bindFramebuffer(gl.FRAMEBUFFER, target.framebuffer);
   gl.viewport(viewport[0], viewport[1], viewport[2], viewport[3]);

@@ -32,10 +32,7 @@ export function nearFieldOf(scene: BakeScene, settings: { nearField?: NearField 
  * each luminaire is one source at its photometric centre. Lamps that
  * emit nothing (zero dimming, black colour, all-zero candela) are dropped.
  */
-export function scenePointSources(
-  scene: BakeScene,
-  settings: { sourceSpacing: number; maxSourcesPerAxis: number; nearField?: NearField },
-): LampSources[] {
+export function scenePointSources(scene: BakeScene, settings: { sourceSpacing: number; maxSourcesPerAxis: number; nearField?: NearField }): LampSources[] {
   const { room } = scene;
   const roomSize: Vec3 = [room.width, room.height, room.depth];
   const split = nearFieldOf(scene, settings) === 'split';
@@ -48,8 +45,7 @@ export function scenePointSources(
     const rotation = luminaireRotation(l.yaw, l.pitch, l.roll);
     // Room left along the luminaire's local −y and +y (for the faces of a tall opening).
     const up = applyMat3(rotation, [0, 1, 0]);
-    const exit = (sign: number) =>
-      Math.min(...[0, 1, 2].map((a) => (sign * up[a] > 1e-12 ? (roomSize[a] - l.position[a]) / (sign * up[a]) : sign * up[a] < -1e-12 ? -l.position[a] / (sign * up[a]) : Infinity)));
+    const exit = (sign: number) => Math.min(...[0, 1, 2].map((a) => (sign * up[a] > 1e-12 ? (roomSize[a] - l.position[a]) / (sign * up[a]) : sign * up[a] < -1e-12 ? -l.position[a] / (sign * up[a]) : Infinity)));
     const { sources: local, perGrid } = split
       ? openingSources(l.photometry, settings.sourceSpacing, settings.maxSourcesPerAxis, { down: exit(-1), up: exit(1) })
       : { sources: [{ position: [0, 0, 0] as Vec3, side: 0 as const }], perGrid: 1 };

@@ -48,10 +48,7 @@ export interface BrightSelection {
  * above `minContrast` × the room mean (a smooth room selects nothing and pays
  * nothing).
  */
-export function selectBrightPatches(
-  surfaces: SurfaceTileSums[],
-  options: { maxPatches: number; targetPeakedness: number; minContrast: number },
-): BrightSelection {
+export function selectBrightPatches(surfaces: SurfaceTileSums[], options: { maxPatches: number; targetPeakedness: number; minContrast: number }): BrightSelection {
   interface Candidate {
     s: SurfaceTileSums;
     k: number;
@@ -65,9 +62,7 @@ export function selectBrightPatches(
   let scoreAll = 0;
   let yAll = 0;
   const yOfTile = (s: SurfaceTileSums, k: number) =>
-    LUMINANCE_WEIGHTS[0] * Math.max(0, s.sums[4 * k]) * s.reflectance[0] +
-    LUMINANCE_WEIGHTS[1] * Math.max(0, s.sums[4 * k + 1]) * s.reflectance[1] +
-    LUMINANCE_WEIGHTS[2] * Math.max(0, s.sums[4 * k + 2]) * s.reflectance[2];
+    LUMINANCE_WEIGHTS[0] * Math.max(0, s.sums[4 * k]) * s.reflectance[0] + LUMINANCE_WEIGHTS[1] * Math.max(0, s.sums[4 * k + 1]) * s.reflectance[1] + LUMINANCE_WEIGHTS[2] * Math.max(0, s.sums[4 * k + 2]) * s.reflectance[2];
   for (const s of surfaces) {
     area += s.layout.lengthU * s.layout.lengthV;
     for (let k = 0; k < s.tilesU * s.tilesV; k++) {

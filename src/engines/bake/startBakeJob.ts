@@ -71,7 +71,13 @@ export function startBakeJob(
   const recordDirect = () => {
     if (directRecorded) return;
     directRecorded = true;
-    timer.timed('blend', () => statistics.record(0, targets.receivers.map((st) => st.direct), 1));
+    timer.timed('blend', () =>
+      statistics.record(
+        0,
+        targets.receivers.map((st) => st.direct),
+        1,
+      ),
+    );
   };
   if (plan.indirectEnabled) recordDirect();
   const passes = compileFinalPasses(compile, plan);
@@ -81,12 +87,20 @@ export function startBakeJob(
   // Bounce 1 from the brightest tiles of the direct maps, exactly (runBrightPatchPass.ts).
   const brightPass = plan.indirectEnabled
     ? timer.timed('direct', () =>
-        runBrightPatchPass(gl, inputs.layouts, inputs.reflectance, targets.surfaces.map((st) => st.direct), brightPatchOptions(settings), compile, readbacks.counted, pool, views.bright),
+        runBrightPatchPass(
+          gl,
+          inputs.layouts,
+          inputs.reflectance,
+          targets.surfaces.map((st) => st.direct),
+          brightPatchOptions(settings),
+          compile,
+          readbacks.counted,
+          pool,
+          views.bright,
+        ),
       )
     : null;
-  const bounces = plan.indirectEnabled
-    ? createBounceIteration(gl, targets.receivers, { gather, combine: passes.combine }, statistics, brightPass, settings, timer, views.gather)
-    : null;
+  const bounces = plan.indirectEnabled ? createBounceIteration(gl, targets.receivers, { gather, combine: passes.combine }, statistics, brightPass, settings, timer, views.gather) : null;
 
   return createBakeJobHandle({
     gl,

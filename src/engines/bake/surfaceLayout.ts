@@ -47,11 +47,7 @@ export function texelCount(length: number, texelSize: number, maxTexels: number)
 }
 
 /** The six surface layouts of a W×H×D room for a target texel size (metres) and a texture size cap. */
-export function surfaceLayouts(
-  room: { width: number; height: number; depth: number },
-  texelSize: number,
-  maxTexels: number,
-): SurfaceLayout[] {
+export function surfaceLayouts(room: { width: number; height: number; depth: number }, texelSize: number, maxTexels: number): SurfaceLayout[] {
   const dims = [room.width, room.height, room.depth];
   return SURFACE_NAMES.map((name, index) => {
     const [u, v, n, onMax] = SURFACE_FRAMES[name];

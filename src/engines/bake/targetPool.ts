@@ -53,7 +53,11 @@ export function createTargetPool(gl: WebGL2RenderingContext, linear: boolean): T
         for (const e of stale) deleteTarget(gl, e.target);
         count -= stale.length;
         if (stale.length === list.length) free.delete(k);
-        else free.set(k, list.filter((e) => e.job >= job - 1));
+        else
+          free.set(
+            k,
+            list.filter((e) => e.job >= job - 1),
+          );
       }
     },
     get free() {

@@ -18,9 +18,7 @@ export const MAX_IMPORT_COORDINATE_M = 100;
 export function checkExtent(name: string, bounds: Bounds3, unit: string, warnings: string[], warnedSize: boolean): void {
   const reach = Math.max(...bounds.min.map(Math.abs), ...bounds.max.map(Math.abs));
   if (!(reach <= MAX_IMPORT_COORDINATE_M)) {
-    throw new InputError(
-      `${name}: a vertex lies ${round(reach)} m from the model's origin in ${unit}; at most ${MAX_IMPORT_COORDINATE_M} m (no room is larger) — check the units or the file`,
-    );
+    throw new InputError(`${name}: a vertex lies ${round(reach)} m from the model's origin in ${unit}; at most ${MAX_IMPORT_COORDINATE_M} m (no room is larger) — check the units or the file`);
   }
   const extent = Math.max(...bounds.max.map((hi, a) => hi - bounds.min[a]));
   if (!warnedSize && (extent < PLAUSIBLE_EXTENT_M.min || extent > PLAUSIBLE_EXTENT_M.max)) {

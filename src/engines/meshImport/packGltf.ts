@@ -191,14 +191,7 @@ function stripTextures(json: GltfJson, name: string, warnings: string[], fail: (
 }
 
 /** Every buffer's bytes in one BIN chunk (8-byte aligned), buffer views pointed at it. */
-async function packBuffers(
-  json: GltfJson,
-  glbBin: Uint8Array | undefined,
-  files: readonly MeshFile[],
-  options: MeshImportOptions,
-  name: string,
-  fail: (p: string) => never,
-): Promise<Uint8Array> {
+async function packBuffers(json: GltfJson, glbBin: Uint8Array | undefined, files: readonly MeshFile[], options: MeshImportOptions, name: string, fail: (p: string) => never): Promise<Uint8Array> {
   const buffers = list(json, 'buffers', fail);
   const parts: Uint8Array[] = [];
   for (let i = 0; i < buffers.length; i++) {

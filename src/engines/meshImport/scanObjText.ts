@@ -54,8 +54,8 @@ export function scanObjText(bytes: Uint8Array, file: string): ScannedObj {
     const c0 = line.charCodeAt(0);
     const c1 = line.charCodeAt(1);
     if (c0 === 35 /* # */) return;
-    if ((c0 === 103 /* g */ || c0 === 111 /* o */ || c0 === 115 /* s */) && (c1 === 32 || c1 === 9 || line.length === 1)) return;
-    if (c0 === 118 /* v */ && (c1 === 110 /* n */ || c1 === 116 /* t */) && (line.charCodeAt(2) === 32 || line.charCodeAt(2) === 9)) return;
+    if ((c0 === 103 /* g */ || c0 === 111 /* o */ || c0 === 115) /* s */ && (c1 === 32 || c1 === 9 || line.length === 1)) return;
+    if (c0 === 118 /* v */ && (c1 === 110 /* n */ || c1 === 116) /* t */ && (line.charCodeAt(2) === 32 || line.charCodeAt(2) === 9)) return;
     const trimmed = line.trim();
     if (trimmed === '' || trimmed.charCodeAt(0) === 35 /* # */) return;
     const where = `${file}: line ${lineNumber}`;
@@ -129,7 +129,7 @@ export function scanObjText(bytes: Uint8Array, file: string): ScannedObj {
   let continued: string[] = [];
   let continuedLength = 0;
   let continuedFrom = 0;
-  for (let start = 0; start < bytes.length; ) {
+  for (let start = 0; start < bytes.length;) {
     let end = Math.min(bytes.length, start + PIECE_BYTES);
     if (end < bytes.length) {
       const newline = bytes.lastIndexOf(10, end - 1);

@@ -44,6 +44,13 @@ function angleLine(angles: readonly number[]): string {
   const even = angles.every((a, i) => i === 0 || Math.abs(a - angles[i - 1] - step) < 1e-6);
   if (even) return `${num(angles[0])} ${num(angles[angles.length - 1])} ${angles.length}`;
   const rows: string[] = [`0 0 ${angles.length}`];
-  for (let k = 0; k < angles.length; k += 4) rows.push('\t' + angles.slice(k, k + 4).map(num).join('\t'));
+  for (let k = 0; k < angles.length; k += 4)
+    rows.push(
+      '\t' +
+        angles
+          .slice(k, k + 4)
+          .map(num)
+          .join('\t'),
+    );
   return rows.join('\n');
 }

@@ -6,12 +6,66 @@ import { num, toRadiance, vecText } from './radianceFrame';
 function surfaceQuads(room: { width: number; height: number; depth: number }): { name: SurfaceName; corners: Vec3[]; inward: Vec3 }[] {
   const { width: W, height: H, depth: D } = room;
   return [
-    { name: 'floor', corners: [[0, 0, 0], [W, 0, 0], [W, 0, D], [0, 0, D]], inward: [0, 1, 0] },
-    { name: 'ceiling', corners: [[0, H, 0], [W, H, 0], [W, H, D], [0, H, D]], inward: [0, -1, 0] },
-    { name: 'north', corners: [[0, 0, 0], [W, 0, 0], [W, H, 0], [0, H, 0]], inward: [0, 0, 1] },
-    { name: 'south', corners: [[0, 0, D], [W, 0, D], [W, H, D], [0, H, D]], inward: [0, 0, -1] },
-    { name: 'west', corners: [[0, 0, 0], [0, 0, D], [0, H, D], [0, H, 0]], inward: [1, 0, 0] },
-    { name: 'east', corners: [[W, 0, 0], [W, 0, D], [W, H, D], [W, H, 0]], inward: [-1, 0, 0] },
+    {
+      name: 'floor',
+      corners: [
+        [0, 0, 0],
+        [W, 0, 0],
+        [W, 0, D],
+        [0, 0, D],
+      ],
+      inward: [0, 1, 0],
+    },
+    {
+      name: 'ceiling',
+      corners: [
+        [0, H, 0],
+        [W, H, 0],
+        [W, H, D],
+        [0, H, D],
+      ],
+      inward: [0, -1, 0],
+    },
+    {
+      name: 'north',
+      corners: [
+        [0, 0, 0],
+        [W, 0, 0],
+        [W, H, 0],
+        [0, H, 0],
+      ],
+      inward: [0, 0, 1],
+    },
+    {
+      name: 'south',
+      corners: [
+        [0, 0, D],
+        [W, 0, D],
+        [W, H, D],
+        [0, H, D],
+      ],
+      inward: [0, 0, -1],
+    },
+    {
+      name: 'west',
+      corners: [
+        [0, 0, 0],
+        [0, 0, D],
+        [0, H, D],
+        [0, H, 0],
+      ],
+      inward: [1, 0, 0],
+    },
+    {
+      name: 'east',
+      corners: [
+        [W, 0, 0],
+        [W, 0, D],
+        [W, H, D],
+        [W, H, 0],
+      ],
+      inward: [-1, 0, 0],
+    },
   ];
 }
 
@@ -37,19 +91,7 @@ export function roomRad(scene: BakeScene): string {
   for (const { name, corners, inward } of surfaceQuads(scene.room)) {
     const rho: Rgb = toRgb(scene.room.reflectance[name]);
     const vertices = inwardOrder(corners, inward).map(toRadiance);
-    out.push(
-      '',
-      `void plastic ${name}_material`,
-      '0',
-      '0',
-      `5 ${rho.map(num).join(' ')} 0 0`,
-      '',
-      `${name}_material polygon ${name}`,
-      '0',
-      '0',
-      `12`,
-      ...vertices.map((v) => `\t${vecText(v)}`),
-    );
+    out.push('', `void plastic ${name}_material`, '0', '0', `5 ${rho.map(num).join(' ')} 0 0`, '', `${name}_material polygon ${name}`, '0', '0', `12`, ...vertices.map((v) => `\t${vecText(v)}`));
   }
   return out.join('\n') + '\n';
 }

@@ -80,9 +80,22 @@ function calibrationPhotometry(power = 1, step = 5): Photometry {
   const angles = Array.from({ length: 180 / step + 1 }, (_, i) => i * step);
   const candela = angles.map((g) => (g < 90 ? CALIBRATION_PEAK_CD * Math.cos((g * Math.PI) / 180) ** power : 0));
   return {
-    format: 'IES', version: 'calibration', manufacturer: '', luminaire: 'calibration downlight', catalogNumber: '', keywords: {},
-    photometricType: 'C', symmetry: 'rotational', verticalAngles: angles, horizontalAngles: [0], candela: [candela],
-    statedLumens: null, absolute: true, inputWatts: null, luminousOpening: { width: 0.24, length: 0.09, height: 0, shape: 'rectangular' }, warnings: [],
+    format: 'IES',
+    version: 'calibration',
+    manufacturer: '',
+    luminaire: 'calibration downlight',
+    catalogNumber: '',
+    keywords: {},
+    photometricType: 'C',
+    symmetry: 'rotational',
+    verticalAngles: angles,
+    horizontalAngles: [0],
+    candela: [candela],
+    statedLumens: null,
+    absolute: true,
+    inputWatts: null,
+    luminousOpening: { width: 0.24, length: 0.09, height: 0, shape: 'rectangular' },
+    warnings: [],
   };
 }
 
@@ -201,10 +214,7 @@ export function predictQuality(calibration: BakeCalibration, scene: QualityScene
     return {
       level,
       texels,
-      firstLitMs:
-        calibration.compileMs +
-        scene.photometries * calibration.directCompileMs +
-        scene.groups * texels * (scene.pointSourcesPerGroup * calibration.msPerTexelSource + calibration.msPerTexelBasis),
+      firstLitMs: calibration.compileMs + scene.photometries * calibration.directCompileMs + scene.groups * texels * (scene.pointSourcesPerGroup * calibration.msPerTexelSource + calibration.msPerTexelBasis),
       solveMs: scene.indirectSolves * texels * s.samples * Math.max(1, s.bounces) * calibration.msPerTexelSample,
     };
   });

@@ -130,7 +130,15 @@ export function createGpuRelight(gl: WebGL2RenderingContext, precision: BasisPre
     }
   };
 
-  const receiver = (key: string, width: number, height: number, parts: readonly WeightedBasis[], pickBasis: (b: DirectBasis) => Float32Array | undefined, terms: readonly IndirectTerm[], pickIndirect: (s: IndirectSolution) => Float32Array | undefined): GpuDirectTotal => {
+  const receiver = (
+    key: string,
+    width: number,
+    height: number,
+    parts: readonly WeightedBasis[],
+    pickBasis: (b: DirectBasis) => Float32Array | undefined,
+    terms: readonly IndirectTerm[],
+    pickIndirect: (s: IndirectSolution) => Float32Array | undefined,
+  ): GpuDirectTotal => {
     const o = outputFor(key, width, height);
     const direct: { texture: WebGLTexture; weight: Rgb }[] = [];
     for (const { basis, weight } of parts) {
@@ -173,9 +181,26 @@ export function createGpuRelight(gl: WebGL2RenderingContext, precision: BasisPre
       const maps = {} as GpuLitMaps;
       for (const name of SURFACE_NAMES) {
         const l = layouts[name];
-        maps[name] = receiver(name, l.width, l.height, parts, (b) => b.surfaces[name], terms, (s) => s.surfaces[name]);
+        maps[name] = receiver(
+          name,
+          l.width,
+          l.height,
+          parts,
+          (b) => b.surfaces[name],
+          terms,
+          (s) => s.surfaces[name],
+        );
       }
-      if (atlas) maps.objects = receiver('objects', atlas.width, atlas.height, parts, (b) => b.objects?.shown, terms, (s) => s.objects);
+      if (atlas)
+        maps.objects = receiver(
+          'objects',
+          atlas.width,
+          atlas.height,
+          parts,
+          (b) => b.objects?.shown,
+          terms,
+          (s) => s.objects,
+        );
       return maps;
     },
     read(target) {

@@ -29,7 +29,10 @@ import { createSolutionCache } from './solutionCache';
 export const VIEWER_BAKE_SETTINGS: Partial<BakeSettings> = { texelSize: 0.05, maxTextureSize: 256, samples: 128, bounces: 3, samplesPerDraw: 8, blurRadius: 5 };
 
 /** The group keys of a luminaire list, in order: a fade's two scenes must have the same. */
-const groupKeys = (sc: BakeScene) => groupLuminaires(sc.luminaires).map((g) => g.key).join('|');
+const groupKeys = (sc: BakeScene) =>
+  groupLuminaires(sc.luminaires)
+    .map((g) => g.key)
+    .join('|');
 
 /** Throws unless `fade` can be shown: a fraction in [0, 1], a scene to fade to, and the same luminaires (geometry) at both ends. */
 function checkFade(fade: EngineFade, scene: BakeScene | null, order: readonly GroupState[]): void {
@@ -80,8 +83,7 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
   /** The weights key of the scene itself: what a solve works toward. */
   const targetKey = (): string => weightsKey(order, ownWeight);
 
-  const progress = (): EngineProgress =>
-    engineProgress(order.length, order.filter((s) => s.basis).length, cache.isExact(targetKey()), !fade || cache.isExact(weightsKey(order, fromWeight)), solver.fraction());
+  const progress = (): EngineProgress => engineProgress(order.length, order.filter((s) => s.basis).length, cache.isExact(targetKey()), !fade || cache.isExact(weightsKey(order, fromWeight)), solver.fraction());
 
   // The scene's own weights: a fade's intermediate weights are never solved (the blend of the ends is exact).
   const startSolve = () => {

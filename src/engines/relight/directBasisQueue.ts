@@ -30,12 +30,7 @@ export function groupScene(scene: BakeScene, group: LuminaireGroup): BakeScene {
  * shadowed direct passes (seconds on SwiftShader). `onStart` counts each basis started;
  * `onBasis` receives the maps of a group that still wants them.
  */
-export function createDirectBasisQueue(
-  baker: Baker,
-  basisSettings: BakeSettings,
-  onStart: () => void,
-  onBasis: (state: GroupState, direct: DirectMaps) => void,
-): DirectBasisQueue {
+export function createDirectBasisQueue(baker: Baker, basisSettings: BakeSettings, onStart: () => void, onBasis: (state: GroupState, direct: DirectMaps) => void): DirectBasisQueue {
   /** A direct basis whose passes are issued but not read back yet. */
   let pending: { key: string; job: BakeJob } | null = null;
   const drop = () => {

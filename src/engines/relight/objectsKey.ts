@@ -8,9 +8,7 @@ import type { BakeObject } from '../bake/bakeScene';
  */
 export function objectsKey(objects: readonly BakeObject[] | undefined): string {
   if (!objects || objects.length === 0) return '';
-  return JSON.stringify(
-    objects.map((o) => [o.id, o.position, o.yaw, o.scale, o.reflectance ?? null, meshHash(o)]),
-  );
+  return JSON.stringify(objects.map((o) => [o.id, o.position, o.yaw, o.scale, o.reflectance ?? null, meshHash(o)]));
 }
 
 function meshHash(o: BakeObject): number {

@@ -10,13 +10,7 @@ import type { ObjectAtlas } from '../bake/objects/preparedObjects';
  * weighting as the bake's flux statistics, fluxStatistics.ts / shaders/objectFluxReduce.glsl.ts).
  * `atlasDirect` is the atlas's emitted direct map (uncovered texels weigh 0 either way).
  */
-export function reflectedFlux(
-  surfaces: Record<SurfaceName, Float32Array>,
-  layouts: readonly SurfaceLayout[],
-  reflectance: Record<SurfaceName, Rgb>,
-  atlas: ObjectAtlas | null = null,
-  atlasDirect: Float32Array | null = null,
-): Rgb {
+export function reflectedFlux(surfaces: Record<SurfaceName, Float32Array>, layouts: readonly SurfaceLayout[], reflectance: Record<SurfaceName, Rgb>, atlas: ObjectAtlas | null = null, atlasDirect: Float32Array | null = null): Rgb {
   const flux: Rgb = [0, 0, 0];
   for (const layout of layouts) {
     const e = surfaces[layout.name];

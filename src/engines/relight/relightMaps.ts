@@ -51,9 +51,7 @@ export interface WeightedBasis {
 /** Zeroed output buffers for a set of layouts. */
 export function emptyLitMaps(layouts: readonly SurfaceLayout[]): LitMaps {
   const byName = Object.fromEntries(layouts.map((l) => [l.name, l])) as Record<SurfaceName, SurfaceLayout>;
-  const maps = Object.fromEntries(
-    layouts.map((l) => [l.name, { direct: new Float32Array(l.width * l.height * 3), total: new Float32Array(l.width * l.height * 3) }]),
-  ) as LitMaps['maps'];
+  const maps = Object.fromEntries(layouts.map((l) => [l.name, { direct: new Float32Array(l.width * l.height * 3), total: new Float32Array(l.width * l.height * 3) }])) as LitMaps['maps'];
   return { layouts: byName, maps };
 }
 

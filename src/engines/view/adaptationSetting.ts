@@ -27,4 +27,3 @@ export function parseAdaptation(text: string): AdaptationSetting | null {
 export function formatAdaptation(s: AdaptationSetting): string {
   return s.kind === 'camera' ? `camera:${s.cct}` : s.kind;
 }
-

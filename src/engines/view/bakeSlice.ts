@@ -35,12 +35,7 @@ export interface SliceResult {
  * check, and a slice that then did nothing looked like a finished bake to the slicer, which stopped
  * (issue 32: a bake stuck at 59.7 % for 11 minutes). Forward progress is per slice, not per ms.
  */
-export function bakeSlice(
-  engine: Pick<RelightEngine, 'progress' | 'step' | 'settings'>,
-  msPerSample: number,
-  now: () => number = () => performance.now(),
-  fenced = false,
-): SliceResult {
+export function bakeSlice(engine: Pick<RelightEngine, 'progress' | 'step' | 'settings'>, msPerSample: number, now: () => number = () => performance.now(), fenced = false): SliceResult {
   const start = now();
   let p = engine.progress;
   let samples = 0;

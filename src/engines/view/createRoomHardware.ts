@@ -93,7 +93,7 @@ export function createRoomHardware(display: SharedDisplayUniforms, shading: { li
     for (const [id, m] of modules) for (const mesh of m.meshes) mesh.material = id === selected ? selectedMaterial : (mesh.userData.material as THREE.ShaderMaterial);
   };
   const setWeight = (emitters: { material: THREE.ShaderMaterial; luminance: number }[], w: Rgb) => {
-    for (const e of emitters) (e.material.uniforms.uLuminance.value as THREE.Vector3).set(...w.map((c) => (Number.isFinite(c) && c > 0 ? c * e.luminance : 0)) as Rgb);
+    for (const e of emitters) (e.material.uniforms.uLuminance.value as THREE.Vector3).set(...(w.map((c) => (Number.isFinite(c) && c > 0 ? c * e.luminance : 0)) as Rgb));
   };
   const clear = () => {
     group.traverse((o) => (o as THREE.Mesh).geometry?.dispose());
@@ -142,8 +142,20 @@ export function createRoomHardware(display: SharedDisplayUniforms, shading: { li
       // The wires are thinner than a pixel from most views: a one-pixel line along each keeps them visible.
       if (fixtures.cables.length > 0) {
         const g = new THREE.BufferGeometry();
-        g.setAttribute('position', new THREE.Float32BufferAttribute(fixtures.cables.flatMap((c) => [...c.top, ...c.bottom]), 3));
-        g.setAttribute('normal', new THREE.Float32BufferAttribute(fixtures.cables.flatMap(() => [1, 0, 0, 1, 0, 0]), 3));
+        g.setAttribute(
+          'position',
+          new THREE.Float32BufferAttribute(
+            fixtures.cables.flatMap((c) => [...c.top, ...c.bottom]),
+            3,
+          ),
+        );
+        g.setAttribute(
+          'normal',
+          new THREE.Float32BufferAttribute(
+            fixtures.cables.flatMap(() => [1, 0, 0, 1, 0, 0]),
+            3,
+          ),
+        );
         group.add(new THREE.LineSegments(g, cable));
       }
       for (const m of fixtures.modules) addModule(m);

@@ -118,7 +118,13 @@ export function createSpotlight(deps: SpotlightDeps) {
     [target.beamDeg, target.fieldDeg].forEach((full, k) => {
       const hits = room && full > 0 && full < 180 ? coneRoomOutline(target!.position, axis, full / 2, room, OUTLINE_RAYS) : [];
       const g = new THREE.BufferGeometry();
-      g.setAttribute('position', new THREE.Float32BufferAttribute(hits.flatMap((h) => h.point), 3));
+      g.setAttribute(
+        'position',
+        new THREE.Float32BufferAttribute(
+          hits.flatMap((h) => h.point),
+          3,
+        ),
+      );
       lines[k].geometry.dispose();
       lines[k].geometry = g;
     });

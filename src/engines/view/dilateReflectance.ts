@@ -14,7 +14,16 @@ export function dilateReflectance(atlas: ObjectAtlas): Float32Array {
   const out = new Float32Array(atlas.reflectance);
   const filled = new Uint8Array(width * height);
   for (let i = 0; i < filled.length; i++) filled[i] = atlas.position[4 * i + 3] > 0 ? 1 : 0;
-  const offsets = [[-1, 0], [1, 0], [0, -1], [0, 1], [-1, -1], [1, -1], [-1, 1], [1, 1]];
+  const offsets = [
+    [-1, 0],
+    [1, 0],
+    [0, -1],
+    [0, 1],
+    [-1, -1],
+    [1, -1],
+    [-1, 1],
+    [1, 1],
+  ];
   for (let round = 0; round < REFLECTANCE_DILATION; round++) {
     const before = filled.slice();
     for (let j = 0; j < height; j++) {

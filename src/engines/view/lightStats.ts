@@ -82,7 +82,12 @@ function gridUnderObjects(grid: PlanGrid, objects: PreparedObjects | null, above
     if (!standing[geometry.objectOfTriangle[t]]) continue;
     const o = t * 9;
     if (above !== null && !(Math.min(p[o + 1], p[o + 4], p[o + 7]) > above)) continue;
-    const ax = p[o], az = p[o + 2], bx = p[o + 3], bz = p[o + 5], cx = p[o + 6], cz = p[o + 8];
+    const ax = p[o],
+      az = p[o + 2],
+      bx = p[o + 3],
+      bz = p[o + 5],
+      cx = p[o + 6],
+      cz = p[o + 8];
     const area = (bx - ax) * (cz - az) - (bz - az) * (cx - ax);
     if (Math.abs(area) < 1e-12) continue; // a side face, seen edge-on from above: its neighbours cover the plan
     const i0 = Math.max(0, Math.ceil((Math.min(ax, bx, cx) - x0) / dx - 0.5));
@@ -139,7 +144,6 @@ export function floorStats(lit: LitMaps, objects: PreparedObjects | null = null)
   for (let i = 0; i < covered.length; i++) if (!covered[i]) lux.push(Y(rgb[i * 3], rgb[i * 3 + 1], rgb[i * 3 + 2]));
   return statsOf(lux);
 }
-
 
 /**
  * Illuminance on a horizontal work plane at `height` metres, on a grid of

@@ -19,14 +19,20 @@ export function benchTables(r: BenchResult, svgName: string | null): string {
   lines.push('|---|---|---|---|---|---|---|');
   for (const s of r.scenes) {
     const change = s.referenceChange ? `${pct(s.referenceChange.rms)} % / ${pct(s.referenceChange.max)} % (${s.referenceChange.patch} m)` : '—';
-    lines.push(`| ${s.scene.name}: ${s.scene.description} | ${s.luminaires} | ${s.points} (every ${s.scene.sampleSpacing} m) | ${s.referencePatches} (${s.scene.referencePatch} m) | ${s.referenceSweeps} | ${ms(s.referenceMs)} | ${change} |`);
+    lines.push(
+      `| ${s.scene.name}: ${s.scene.description} | ${s.luminaires} | ${s.points} (every ${s.scene.sampleSpacing} m) | ${s.referencePatches} (${s.scene.referencePatch} m) | ${s.referenceSweeps} | ${ms(s.referenceMs)} | ${change} |`,
+    );
   }
   lines.push('');
   lines.push('#### Error against run time');
   lines.push('');
-  lines.push('Relative error of the baked maps, read as `luxbox probe` reads them, against the reference at the comparison points. Bake time is wall clock for `baker.bake` (all passes and the read-back; each timed bake follows an untimed warm-up bake with the same texel size and luminaires, so program compilation is excluded; the compile column shows what was left).');
+  lines.push(
+    'Relative error of the baked maps, read as `luxbox probe` reads them, against the reference at the comparison points. Bake time is wall clock for `baker.bake` (all passes and the read-back; each timed bake follows an untimed warm-up bake with the same texel size and luminaires, so program compilation is excluded; the compile column shows what was left).',
+  );
   lines.push('');
-  lines.push('Method: **bright patches** = today\'s default (texel-mean direct maps, bounce 1 from the brightest tiles by exact form factors, probe evaluates direct light at the point); **Monte Carlo only** = the method before issue #8 (texel-centre direct maps, cosine-sampled gather for every bounce, probe reads direct light from the maps).');
+  lines.push(
+    "Method: **bright patches** = today's default (texel-mean direct maps, bounce 1 from the brightest tiles by exact form factors, probe evaluates direct light at the point); **Monte Carlo only** = the method before issue #8 (texel-centre direct maps, cosine-sampled gather for every bounce, probe reads direct light from the maps).",
+  );
   lines.push('');
   lines.push('| scene | method | rung | texel | samples | bounces | texels | bake time | of which compile | total RMS | total max | direct RMS | indirect RMS | mean total bake / ref (lx) |');
   lines.push('|---|---|---|---|---|---|---|---|---|---|---|---|---|---|');

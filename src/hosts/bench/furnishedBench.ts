@@ -166,7 +166,9 @@ export function runFurnishedBench(baker: Baker, root: string, log: (line: string
         fluxError: bakeFlux / refFlux - 1,
       };
       rows.push(row);
-      log(`  texel ${quality.texelSize} m: bake ${Math.round(bakeMs)} ms; RMS walls direct ${(100 * row.wallsDirect).toFixed(2)} % total ${(100 * row.wallsTotal).toFixed(2)} %, objects direct ${(100 * row.atlasDirect).toFixed(2)} % total ${(100 * row.atlasTotal).toFixed(2)} %, flux ${(100 * row.fluxError).toFixed(2)} %`);
+      log(
+        `  texel ${quality.texelSize} m: bake ${Math.round(bakeMs)} ms; RMS walls direct ${(100 * row.wallsDirect).toFixed(2)} % total ${(100 * row.wallsTotal).toFixed(2)} %, objects direct ${(100 * row.atlasDirect).toFixed(2)} % total ${(100 * row.atlasTotal).toFixed(2)} %, flux ${(100 * row.fluxError).toFixed(2)} %`,
+      );
     }
     parts.push({ scene: s, patches: reference.patches.length, sweeps: reference.sweeps, referenceMs: solveMs + queryMs, rows });
   }

@@ -169,7 +169,14 @@ export function statsRecordMs(): number {
     const layouts = surfaceLayouts(room, 0.05, 512);
     const pool = createTargetPool(gl, false);
     const maps = layouts.map((l) => pool.acquire(l.width, l.height));
-    const stats = createFluxStatistics(gl, pool, layouts, layouts.map(() => [0.5, 0.5, 0.5]), 50, () => {});
+    const stats = createFluxStatistics(
+      gl,
+      pool,
+      layouts,
+      layouts.map(() => [0.5, 0.5, 0.5]),
+      50,
+      () => {},
+    );
     stats.record(0, maps, 1);
     gl.finish();
     const t0 = performance.now();
@@ -224,11 +231,13 @@ export function directSourcesExperiment(root: string, repeats: number): { constA
     };
     const time = (uniform: boolean) => {
       run(uniform);
-      return median(Array.from({ length: repeats }, () => {
-        const t0 = performance.now();
-        run(uniform);
-        return performance.now() - t0;
-      }));
+      return median(
+        Array.from({ length: repeats }, () => {
+          const t0 = performance.now();
+          run(uniform);
+          return performance.now() - t0;
+        }),
+      );
     };
     const constArrays = time(false);
     const a = variants.map((v) => readRgba(gl, v.target));
@@ -255,8 +264,17 @@ export function gpuBenchTable(rows: GpuBenchRow[]): string {
     'Per pass, one warm bake with a GPU wait after every pass (ms):',
     '',
     '| case | ' + Object.keys(rows[0]?.breakdown ?? {}).join(' | ') + ' |',
-    '|---|' + Object.keys(rows[0]?.breakdown ?? {}).map(() => '---:').join('|') + '|',
-    ...rows.map((r) => `| ${r.case} | ${Object.values(r.breakdown).map((v) => v.toFixed(2)).join(' | ')} |`),
+    '|---|' +
+      Object.keys(rows[0]?.breakdown ?? {})
+        .map(() => '---:')
+        .join('|') +
+      '|',
+    ...rows.map(
+      (r) =>
+        `| ${r.case} | ${Object.values(r.breakdown)
+          .map((v) => v.toFixed(2))
+          .join(' | ')} |`,
+    ),
   ].join('\n');
 }
 

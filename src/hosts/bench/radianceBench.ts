@@ -92,7 +92,12 @@ export function runRadiancePeerBench(root: string, log: (line: string) => void):
       counts[scene.name] = sampled.length;
       log(`${scene.name}: ${sampled.length} points`);
       for (const quality of QUALITY_LADDER) {
-        const run = luxboxRun(baker, loaded, quality, sampled.map((s) => s.point));
+        const run = luxboxRun(
+          baker,
+          loaded,
+          quality,
+          sampled.map((s) => s.point),
+        );
         const e = relativeErrors(run.values, ref);
         rows.push({ scene: scene.name, solver: 'luxbox', settings: `${quality.texelSize} m, ${quality.samples} samples, ${quality.bounces} bounces`, ms: run.ms, values: run.texels, total: { rms: e.rms, max: e.max } });
         log(`  luxbox ${rows.at(-1)!.settings}: ${Math.round(run.ms)} ms, RMS ${(100 * e.rms).toFixed(2)} %`);
@@ -170,7 +175,7 @@ export function peerTables(r: PeerResult): string {
         : `| ${x.scene} (${r.points[x.scene]} points) | ${x.solver} | ${x.settings} | ${time(x.ms)} | ${x.values} ${x.solver === 'luxbox' ? 'texels' : 'points'} | ${Math.round((1000 * x.values) / x.ms)} | ${pct(x.total.rms)} % | ${pct(x.total.max)} % |`,
     ),
     '',
-    '**At equal error**: for each Radiance run, luxbox\'s fastest run with a total RMS error at most Radiance\'s, and the ratio of illuminance values per second (luxbox counts every texel of its six maps, Radiance the points it traced):',
+    "**At equal error**: for each Radiance run, luxbox's fastest run with a total RMS error at most Radiance's, and the ratio of illuminance values per second (luxbox counts every texel of its six maps, Radiance the points it traced):",
     '',
     '| scene | Radiance | RMS | luxbox | RMS | time Radiance / luxbox | values/s luxbox / Radiance |',
     '|---|---|---|---|---|---|---|',

@@ -175,7 +175,10 @@ export function runBench(options: BenchOptions): BenchResult {
       // Today's method over the ladder; the old one (issue #8) beside it: over the stiff
       // ladder and with 4× samples on stiff scenes, at the default rung on smooth ones.
       const runs: [BenchMethod, BenchQuality][] = options.quick
-        ? ladder.flatMap((q): [BenchMethod, BenchQuality][] => [['bright-patches', q], ['monte-carlo', q]])
+        ? ladder.flatMap((q): [BenchMethod, BenchQuality][] => [
+            ['bright-patches', q],
+            ['monte-carlo', q],
+          ])
         : scene.stiff
           ? [...STIFF_LADDER.map((q): [BenchMethod, BenchQuality] => ['bright-patches', q]), ...[...STIFF_LADDER, ...STIFF_EXTRA_OLD].map((q): [BenchMethod, BenchQuality] => ['monte-carlo', q])]
           : [...ladder.map((q): [BenchMethod, BenchQuality] => ['bright-patches', q]), ['monte-carlo', DEFAULT_QUALITY]];
@@ -185,7 +188,12 @@ export function runBench(options: BenchOptions): BenchResult {
         const probes =
           method === 'monte-carlo'
             ? points.map(({ point }) => probeMaps(maps, loaded.scene.room, point))
-            : probeScene(loaded.bakeScene, maps, { ...quality }, points.map((p) => p.point));
+            : probeScene(
+                loaded.bakeScene,
+                maps,
+                { ...quality },
+                points.map((p) => p.point),
+              );
         const pick = (kind: 'total' | 'direct' | 'indirect') => ({
           bake: probes.map((p) => p[kind]),
           reference: ref.map((r) => r[kind]),
@@ -211,9 +219,7 @@ export function runBench(options: BenchOptions): BenchResult {
           meanReference: ref.reduce((s, r) => s + r.total, 0) / ref.length,
         };
         rows.push(row);
-        options.log(
-          `  ${method}, texel ${quality.texelSize} m, ${quality.samples} samples, ${quality.bounces} bounces: ${Math.round(ms)} ms, total RMS ${(100 * row.total.rms).toFixed(2)} %, max ${(100 * row.total.max).toFixed(1)} %`,
-        );
+        options.log(`  ${method}, texel ${quality.texelSize} m, ${quality.samples} samples, ${quality.bounces} bounces: ${Math.round(ms)} ms, total RMS ${(100 * row.total.rms).toFixed(2)} %, max ${(100 * row.total.max).toFixed(1)} %`);
       }
     }
 

@@ -10,8 +10,7 @@ import { writeBakeOutput, type SceneObjectsOutput } from '../node/writeBakeOutpu
 import { resolveBakeSettings } from '../../engines/bake/bakeSettings';
 import { cliReadableFolders } from '../node/cliReadableFolders';
 
-export const bakeUsage =
-  'bake <scene.json> [more.json …] --out <dir> [--samples N --bounces N --texel m --blur texels --seed N --no-tail --gl vulkan|glx|auto]';
+export const bakeUsage = 'bake <scene.json> [more.json …] --out <dir> [--samples N --bounces N --texel m --blur texels --seed N --no-tail --gl vulkan|glx|auto]';
 
 /** The scene's objects with their ids, mesh paths, triangle counts and units, for report.json and objects.json. */
 function objectsOutput(loaded: LoadedLightingScene): SceneObjectsOutput {
@@ -68,9 +67,7 @@ export async function run(args: string[]): Promise<number> {
         },
         objectsOutput(scene),
       );
-      process.stdout.write(
-        `baked ${positional[i]} → ${folders[i]} (${report.totalTexels} texels, ${report.bouncesComputed} bounces, ${Math.round(report.timings_ms.total)} ms, ${compiled} programs compiled, gl ${backend})\n`,
-      );
+      process.stdout.write(`baked ${positional[i]} → ${folders[i]} (${report.totalTexels} texels, ${report.bouncesComputed} bounces, ${Math.round(report.timings_ms.total)} ms, ${compiled} programs compiled, gl ${backend})\n`);
     });
   } finally {
     sceneBaker.destroy();

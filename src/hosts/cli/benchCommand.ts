@@ -35,8 +35,7 @@ export async function run(args: string[]): Promise<number> {
     else if (a === '--repeats') {
       repeats = Number(args[++i]);
       if (!Number.isInteger(repeats) || repeats < 1 || repeats > 1000) throw new InputError(`--repeats must be an integer in 1..1000 (usage: luxbox ${usage})`);
-    }
-    else if (a === '--out') {
+    } else if (a === '--out') {
       out = args[++i] ?? null;
       if (!out) throw new InputError(`--out needs a folder (usage: luxbox ${usage})`);
     } else if (a === '--gl') {
@@ -50,10 +49,15 @@ export async function run(args: string[]): Promise<number> {
     // Bundled (docs/gpu-server.md) the module URL is the bundle's: scenes are read from the working folder.
     const rows = runGpuBench(process.cwd(), repeats, (line) => process.stderr.write(line + '\n'));
     const perDraw = drawOverheadMs();
-    process.stdout.write(`GL back end: ${backend}\n\n${gpuBenchTable(rows)}\n\nOne 256² combine draw in a stream of 200 (per-draw cost): ${perDraw.toFixed(3)} ms\nOne flux-statistics record (living room, 0.05 m): ${statsRecordMs().toFixed(3)} ms\n`);
-    for (const r of profileLookupExperiment(process.cwd(), repeats)) process.stdout.write(`Profile lookup, ${r.case}: measured grid ${r.measuredMs.toFixed(2)} ms, dense ${r.denseMs.toFixed(2)} ms, ratio ${(r.denseMs / r.measuredMs).toFixed(3)}\n`);
+    process.stdout.write(
+      `GL back end: ${backend}\n\n${gpuBenchTable(rows)}\n\nOne 256² combine draw in a stream of 200 (per-draw cost): ${perDraw.toFixed(3)} ms\nOne flux-statistics record (living room, 0.05 m): ${statsRecordMs().toFixed(3)} ms\n`,
+    );
+    for (const r of profileLookupExperiment(process.cwd(), repeats))
+      process.stdout.write(`Profile lookup, ${r.case}: measured grid ${r.measuredMs.toFixed(2)} ms, dense ${r.denseMs.toFixed(2)} ms, ratio ${(r.denseMs / r.measuredMs).toFixed(3)}\n`);
     const x = directSourcesExperiment(process.cwd(), repeats);
-    process.stdout.write(`Direct pass, 20 lamps, 6 × 256², centres: source positions in const arrays ${x.constArrays.toFixed(2)} ms, in uniform arrays ${x.uniformArrays.toFixed(2)} ms (largest relative difference ${x.maxError.toExponential(1)})\n`);
+    process.stdout.write(
+      `Direct pass, 20 lamps, 6 × 256², centres: source positions in const arrays ${x.constArrays.toFixed(2)} ms, in uniform arrays ${x.uniformArrays.toFixed(2)} ms (largest relative difference ${x.maxError.toExponential(1)})\n`,
+    );
     return 0;
   }
   const root = resolve(fileURLToPath(new URL('../../..', import.meta.url)));

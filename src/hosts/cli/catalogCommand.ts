@@ -12,8 +12,7 @@ import { INPUT_LIMITS } from '../../core/untrustedJson';
 import { MAX_PHOTOMETRY_BYTES } from '../../core/photometry';
 import { readRegularFile } from '../node/readRegularFile';
 
-export const catalogUsage =
-  'catalog import <product.gldf> [more.gldf …] --into <catalog.json> --out <dir> [--mapping <mapping.json>] [--assets <dir>] | catalog export <catalog.json> --out <dir> [--type <id> …] [--assets <dir>]';
+export const catalogUsage = 'catalog import <product.gldf> [more.gldf …] --into <catalog.json> --out <dir> [--mapping <mapping.json>] [--assets <dir>] | catalog export <catalog.json> --out <dir> [--type <id> …] [--assets <dir>]';
 
 const decoder = new TextDecoder('utf-8');
 

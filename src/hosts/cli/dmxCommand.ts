@@ -8,8 +8,7 @@ export class DmxCommandError extends InputError {
   override name = 'DmxCommandError';
 }
 
-const USAGE =
-  'usage: luxbox dmx [--artnet] [--sacn] [--port N] [--bind ADDR] [--universes 1-4] [--artnet-port N] [--sacn-port N]';
+const USAGE = 'usage: luxbox dmx [--artnet] [--sacn] [--port N] [--bind ADDR] [--universes 1-4] [--artnet-port N] [--sacn-port N]';
 
 /** The most sACN multicast groups one bridge joins; Linux allows 20 per socket by default (igmp_max_memberships). */
 const MAX_MULTICAST_UNIVERSES = 64;

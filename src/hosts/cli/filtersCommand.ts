@@ -88,6 +88,10 @@ function toText(listing: FiltersListing): string {
     f.duv === null ? '' : f.duv.toFixed(4),
   ]);
   const widths = head.map((h, k) => Math.max(h.length, ...rows.map((r) => r[k].length)));
-  const line = (r: string[]) => r.map((c, k) => (k >= 3 ? c.padStart(widths[k]) : c.padEnd(widths[k]))).join('  ').trimEnd();
+  const line = (r: string[]) =>
+    r
+      .map((c, k) => (k >= 3 ? c.padStart(widths[k]) : c.padEnd(widths[k])))
+      .join('  ')
+      .trimEnd();
   return [`${listing.filters.length} colour filters through a ${listing.sourceCct} K Planckian source (CIE 1931 2°; transmission = luminous transmittance τ_v)`, line(head), ...rows.map(line)].join('\n') + '\n';
 }

@@ -1,15 +1,6 @@
 import { basename, dirname, join } from 'node:path';
 import { InputError } from '../../core/inputError';
-import {
-  beamAndField,
-  integrateFlux,
-  MAX_PHOTOMETRY_BYTES,
-  parsePhotometry,
-  peakIntensity,
-  photometryWarnings,
-  PhotometryParseError,
-  type Photometry,
-} from '../../core/photometry';
+import { beamAndField, integrateFlux, MAX_PHOTOMETRY_BYTES, parsePhotometry, peakIntensity, photometryWarnings, PhotometryParseError, type Photometry } from '../../core/photometry';
 import { readRegularFile, realFolders } from '../node/readRegularFile';
 
 /** A command-line usage problem (missing file argument, unknown option, unreadable file). */

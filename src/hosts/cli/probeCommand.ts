@@ -23,9 +23,11 @@ const finiteNumbers = (p: number[]) => p.every(Number.isFinite);
 // Strict (issue 18): an unknown or misspelt field is refused, not ignored.
 const pointsSchema = z.strictObject({
   points: z.array(
-    z.union([z.tuple([z.number(), z.number(), z.number()]), z.tuple([z.number(), z.number(), z.number(), z.number(), z.number(), z.number()])], {
-      error: 'must be [x, y, z] (a point on a surface) or [x, y, z, nx, ny, nz] (a point and a normal)',
-    }).refine(finiteNumbers, 'must be finite numbers'),
+    z
+      .union([z.tuple([z.number(), z.number(), z.number()]), z.tuple([z.number(), z.number(), z.number(), z.number(), z.number(), z.number()])], {
+        error: 'must be [x, y, z] (a point on a surface) or [x, y, z, nx, ny, nz] (a point and a normal)',
+      })
+      .refine(finiteNumbers, 'must be finite numbers'),
   ),
 });
 
@@ -53,7 +55,10 @@ export async function run(args: string[]): Promise<number> {
     const issue = parsed.error.issues[0];
     // `points.json: pointz: unknown field 'pointz' (did you mean 'points'?)`, before any "points is missing".
     if (parsed.error.issues.some((i) => i.code === 'unrecognized_keys')) throw new InputError(`${source}: ${describeIssues(parsed.error.issues, ['points'])}`);
-    const path = issue.path.map((k) => (typeof k === 'number' ? `[${k}]` : `.${String(k)}`)).join('').replace(/^\./, '');
+    const path = issue.path
+      .map((k) => (typeof k === 'number' ? `[${k}]` : `.${String(k)}`))
+      .join('')
+      .replace(/^\./, '');
     throw new InputError(`${source}: ${path ? `${path}: ` : ''}${issue.path.length ? issue.message : 'expected { "points": [[x, y, z], ...] }'}`);
   }
   // Checked before the scene file is read, and passed on resolved to the bake and the probe.
@@ -66,9 +71,7 @@ export async function run(args: string[]): Promise<number> {
     if (p.length === 3) {
       const { surface, distance } = nearestSurface(room, point);
       if (distance > PROBE_TOLERANCE) {
-        throw new InputError(
-          `${source}: points[${i}]: [${p.join(', ')}] is ${distance.toPrecision(3)} m from the nearest surface (${surface}); probe points must lie within ${PROBE_TOLERANCE} m of a surface`,
-        );
+        throw new InputError(`${source}: points[${i}]: [${p.join(', ')}] is ${distance.toPrecision(3)} m from the nearest surface (${surface}); probe points must lie within ${PROBE_TOLERANCE} m of a surface`);
       }
       return { point };
     }

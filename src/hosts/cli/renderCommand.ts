@@ -159,7 +159,9 @@ export async function run(args: string[]): Promise<number> {
         failed,
       };
       writeFileSync(join(out, 'summary.json'), JSON.stringify(summary, null, 2) + '\n');
-      process.stdout.write(`${images.length} images of ${positional.length - failed.length}/${positional.length} scenes × ${cameras.length} cameras in ${out} (summary.json; programs linked: ${session.programsLinked().baker} baker, ${session.programsLinked().view} view)\n`);
+      process.stdout.write(
+        `${images.length} images of ${positional.length - failed.length}/${positional.length} scenes × ${cameras.length} cameras in ${out} (summary.json; programs linked: ${session.programsLinked().baker} baker, ${session.programsLinked().view} view)\n`,
+      );
     }
   } finally {
     session.destroy();

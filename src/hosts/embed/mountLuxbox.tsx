@@ -42,7 +42,7 @@ function checkLocale(locale: unknown): string | readonly string[] | undefined {
     return locale;
   }
   if (Array.isArray(locale) && locale.every((t) => typeof t === 'string')) return locale;
-  throw new EmbedOptionsError('options.locale must be a BCP 47 tag such as \'de-CH\' or a list of them');
+  throw new EmbedOptionsError("options.locale must be a BCP 47 tag such as 'de-CH' or a list of them");
 }
 
 /** The header's brand from options.brand: absent → luxbox, null → none, else a name (1–80 characters) and an optional logo URL. */
@@ -198,7 +198,16 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
   root.render(
     <StrictMode>
       <I18nProvider i18n={i18n}>
-        <Configurator store={store} ui={ui} languageSwitch={options.languageSwitch === true} onRestoreSaved={restoreSaved} shareLink={shareLinkForUi} footprints={footprints} landmarks={options.landmarks ?? 'region'} firstRun={options.firstRun} />
+        <Configurator
+          store={store}
+          ui={ui}
+          languageSwitch={options.languageSwitch === true}
+          onRestoreSaved={restoreSaved}
+          shareLink={shareLinkForUi}
+          footprints={footprints}
+          landmarks={options.landmarks ?? 'region'}
+          firstRun={options.firstRun}
+        />
       </I18nProvider>
     </StrictMode>,
   );
@@ -264,7 +273,7 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
       try {
         return toLightingScene(store.getState().config, catalog);
       } catch (e) {
-        if (e instanceof ColourFilterSpectraPending) throw new InputError('getLightingScene: the colour filters\' spectra are still loading; await whenReady() first');
+        if (e instanceof ColourFilterSpectraPending) throw new InputError("getLightingScene: the colour filters' spectra are still loading; await whenReady() first");
         throw e;
       }
     },

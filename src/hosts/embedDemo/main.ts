@@ -70,9 +70,7 @@ window.shopDemo = {
 };
 
 function renderRegions(): void {
-  byId('region').replaceChildren(
-    ...SHOP_VARIANTS.map((v) => element('a', { href: `?shop=${v.id}`, className: v.id === shop.id ? 'current' : '', textContent: v.label })),
-  );
+  byId('region').replaceChildren(...SHOP_VARIANTS.map((v) => element('a', { href: `?shop=${v.id}`, className: v.id === shop.id ? 'current' : '', textContent: v.label })));
   for (const a of byId('region').querySelectorAll('a.current')) a.setAttribute('aria-current', 'page');
 }
 
@@ -114,7 +112,15 @@ function renderActions(lx: LuxboxInstance | null): void {
 function renderCart(): void {
   cartList.replaceChildren(
     ...(cart.length > 0
-      ? cart.map((l) => element('li', {}, element('span', { className: 'cart-article', textContent: l.article }), element('span', { className: 'cart-name', textContent: `${l.count}× ${l.name}` }), element('span', { className: 'num', textContent: money(l.total) })))
+      ? cart.map((l) =>
+          element(
+            'li',
+            {},
+            element('span', { className: 'cart-article', textContent: l.article }),
+            element('span', { className: 'cart-name', textContent: `${l.count}× ${l.name}` }),
+            element('span', { className: 'num', textContent: money(l.total) }),
+          ),
+        )
       : [element('li', { className: 'muted', textContent: 'Your cart is empty.' })]),
   );
   cartTotalOut.textContent = money(cartTotal(cart));

@@ -8,7 +8,10 @@ import { basename } from 'node:path';
 export function batchFolderNames(paths: string[]): string[] {
   const used = new Set<string>();
   return paths.map((p) => {
-    const stem = basename(p).replace(/(\.luxbox)?\.json$/i, '').replace(/[^\w.-]+/g, '_') || 'scene';
+    const stem =
+      basename(p)
+        .replace(/(\.luxbox)?\.json$/i, '')
+        .replace(/[^\w.-]+/g, '_') || 'scene';
     let name = stem;
     for (let k = 2; used.has(name); k++) name = `${stem}-${k}`;
     used.add(name);

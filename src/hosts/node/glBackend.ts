@@ -94,9 +94,7 @@ export interface VulkanDrivers {
 
 function listManifests(): string[] {
   const explicit = process.env.VK_DRIVER_FILES ?? process.env.VK_ICD_FILENAMES;
-  const entries = explicit
-    ? explicit.split(delimiter).filter(Boolean)
-    : ['/usr/share/vulkan/icd.d', '/etc/vulkan/icd.d', '/usr/local/share/vulkan/icd.d'];
+  const entries = explicit ? explicit.split(delimiter).filter(Boolean) : ['/usr/share/vulkan/icd.d', '/etc/vulkan/icd.d', '/usr/local/share/vulkan/icd.d'];
   const files: string[] = [];
   for (const entry of entries) {
     try {
@@ -158,9 +156,7 @@ export function selectGlBackend(choice: GlBackendChoice): BackendSelection {
   if (process.env.DISPLAY) return { backend: 'glx', reason: 'X display set, no hardware Vulkan' };
   if (onPath('xvfb-run')) return { backend: 'glx', reason: 'no hardware Vulkan; GLX under xvfb-run' };
   if (loader && drivers.manifests.length > 0) return { backend: 'vulkan', reason: 'no X display and no xvfb-run; software Vulkan' };
-  throw new InputError(
-    'no graphics back end: no Vulkan driver (apt-get install mesa-vulkan-drivers libvulkan1) and no X display (set DISPLAY or apt-get install xvfb)',
-  );
+  throw new InputError('no graphics back end: no Vulkan driver (apt-get install mesa-vulkan-drivers libvulkan1) and no X display (set DISPLAY or apt-get install xvfb)');
 }
 
 /**
@@ -178,7 +174,7 @@ export function activateGlBackend(backend: GlBackend): void {
     throw new InputError(`--gl vulkan: no Vulkan loader (${LOADER}) for ANGLE in ${glReleaseDir()}: apt-get install libvulkan1, then npm ci (or run scripts/linkVulkanLoader.mjs)`);
   }
   if (vulkanDrivers().manifests.length === 0) {
-    throw new InputError('--gl vulkan: no Vulkan driver found (apt-get install mesa-vulkan-drivers, or set VK_DRIVER_FILES to your GPU driver\'s ICD file)');
+    throw new InputError("--gl vulkan: no Vulkan driver found (apt-get install mesa-vulkan-drivers, or set VK_DRIVER_FILES to your GPU driver's ICD file)");
   }
   process.env.ANGLE_DEFAULT_PLATFORM = 'vulkan';
 }

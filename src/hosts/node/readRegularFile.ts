@@ -64,7 +64,7 @@ export function readRegularFile(path: string, limits: ReadLimits): Uint8Array {
     real = realpathSync(path);
   } catch (error) {
     const code = (error as NodeJS.ErrnoException).code;
-    throw new InputError(code === 'ENOENT' ? 'no such file' : code ?? 'read error');
+    throw new InputError(code === 'ENOENT' ? 'no such file' : (code ?? 'read error'));
   }
   if (limits.within && !limits.within.some((folder) => inside(real, folder))) {
     throw new InputError(`${real} is outside the scene's folder and the current folder`);

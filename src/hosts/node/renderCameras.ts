@@ -58,7 +58,10 @@ export function takeRenderCameras(args: string[]): { cameras: RenderCamera[]; re
       add(name, trimmed, '--camera');
       continue;
     }
-    const names = trimmed.split(',').map((s) => s.trim()).filter(Boolean);
+    const names = trimmed
+      .split(',')
+      .map((s) => s.trim())
+      .filter(Boolean);
     if (names.length === 0) throw new InputError('render: --camera needs a preset name or JSON');
     for (const name of names) if (!cameras.some((c) => c.name === name)) add(name, name, '--camera');
   }

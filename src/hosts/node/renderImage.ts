@@ -68,7 +68,8 @@ export interface RenderSession {
  * bake touched the context. Every render of a session has the session's size.
  */
 export function createRenderSession(width: number, height: number): RenderSession {
-  const gl = createGL(width, height, { createWebGL2Context: true, preserveDrawingBuffer: true, antialias: false }) as unknown as (WebGL2RenderingContext & { getExtension(name: 'STACKGL_destroy_context'): { destroy(): void } | null }) | null;
+  const gl = createGL(width, height, { createWebGL2Context: true, preserveDrawingBuffer: true, antialias: false }) as unknown as
+    (WebGL2RenderingContext & { getExtension(name: 'STACKGL_destroy_context'): { destroy(): void } | null }) | null;
   if (!gl || !('texStorage2D' in gl)) throw new NoWebGLError(noContextMessage(`a ${width}×${height} headless WebGL2 context`));
   const canvas = { width, height, style: {}, addEventListener() {}, removeEventListener() {} } as unknown as HTMLCanvasElement;
   // headless-gl contexts have no canvas; three reads gl.canvas for the default scissor and viewport.

@@ -65,11 +65,20 @@ export function loadRenderInput(path: string, access: SceneFileAccess = {}): Ren
   const { bakeScene } = resolveSceneFiles({ ...scene, objects: [] }, PUBLIC_DIR, source);
   let objects: BakeScene['objects'];
   try {
-    objects = resolveBakeSceneSync({ ...scene, luminaires: [] }, () => {
-      throw new Error('no photometry here');
-    }, configurationMeshLoader(config)).objects;
+    objects = resolveBakeSceneSync(
+      { ...scene, luminaires: [] },
+      () => {
+        throw new Error('no photometry here');
+      },
+      configurationMeshLoader(config),
+    ).objects;
   } catch (error) {
     throw error instanceof SceneObjectError ? new LightingSceneError(`${source}: ${error.message}`) : error;
   }
-  return { scene, bakeScene: objects ? { ...bakeScene, objects } : bakeScene, fixtures: fixturesFromConfiguration(config, defaultCatalog, new Map(scene.luminaires.map((l, i) => [l.id ?? '', bakeScene.luminaires[i]]))), kind: 'configuration' };
+  return {
+    scene,
+    bakeScene: objects ? { ...bakeScene, objects } : bakeScene,
+    fixtures: fixturesFromConfiguration(config, defaultCatalog, new Map(scene.luminaires.map((l, i) => [l.id ?? '', bakeScene.luminaires[i]]))),
+    kind: 'configuration',
+  };
 }

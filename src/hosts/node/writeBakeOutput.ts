@@ -23,14 +23,7 @@ export interface SceneObjectsOutput {
  * (false colour of total lux, one scale for all six), and with objects the atlas's
  * objects.direct/.indirect/.total.pfm, objects.png, objects.mask.pfm and objects.json.
  */
-export function writeBakeOutput(
-  out: string,
-  scenePath: string,
-  maps: BakedMaps,
-  report: BakeReport,
-  extra: Record<string, unknown> = {},
-  objects: SceneObjectsOutput = { objects: [], ids: [], sources: [] },
-): void {
+export function writeBakeOutput(out: string, scenePath: string, maps: BakedMaps, report: BakeReport, extra: Record<string, unknown> = {}, objects: SceneObjectsOutput = { objects: [], ids: [], sources: [] }): void {
   const started = performance.now();
   try {
     mkdirSync(out, { recursive: true });

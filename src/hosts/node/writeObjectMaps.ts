@@ -44,9 +44,7 @@ export function writeObjectMaps(out: string, maps: ObjectMaps, objects: readonly
       if (!e) continue;
       mask[k] = object + 1;
       e.texels++;
-      e.rect = e.rect
-        ? { i0: Math.min(e.rect.i0, i), j0: Math.min(e.rect.j0, j), i1: Math.max(e.rect.i1, i), j1: Math.max(e.rect.j1, j) }
-        : { i0: i, j0: j, i1: i, j1: j };
+      e.rect = e.rect ? { i0: Math.min(e.rect.i0, i), j0: Math.min(e.rect.j0, j), i1: Math.max(e.rect.i1, i), j1: Math.max(e.rect.j1, j) } : { i0: i, j0: j, i1: i, j1: j };
     }
   }
   writeFileSync(join(out, 'objects.mask.pfm'), encodePfmGrey(width, height, mask));

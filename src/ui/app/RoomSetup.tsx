@@ -67,8 +67,7 @@ export function RoomSetup({ initial, onSubmit, onDemo, onResume, landmarks = 're
   }));
   const [reflectance, setReflectance] = useState<Record<SurfaceName, Reflectance>>({ ...DEFAULT_REFLECTANCE, ...initial?.reflectance });
   const wallsAlike = WALL_NAMES.every((w) => sameReflectance(reflectance[w], reflectance.north));
-  const chooseFinish = (target: SurfaceTarget) => (f: { reflectance: Reflectance }) =>
-    setReflectance((r) => ({ ...r, ...Object.fromEntries(targetSurfaces(target).map((s) => [s, f.reflectance])) }));
+  const chooseFinish = (target: SurfaceTarget) => (f: { reflectance: Reflectance }) => setReflectance((r) => ({ ...r, ...Object.fromEntries(targetSurfaces(target).map((s) => [s, f.reflectance])) }));
   const [touched, setTouched] = useState<Record<Field, boolean>>({ width: false, depth: false, height: false });
   const errors: Record<Field, string | null> = {
     width: roomFieldError('width', values.width, t),

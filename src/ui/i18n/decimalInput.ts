@@ -55,7 +55,5 @@ function groupedInThrees(s: string, group: string): boolean {
 
 /** Intl's options for a field's value: the locale's decimal mark, no grouping, `decimals` fraction digits (or up to `maxDecimals`). */
 export function decimalFieldFormat(decimals: number | { max: number }): Intl.NumberFormatOptions {
-  return typeof decimals === 'number'
-    ? { useGrouping: false, minimumFractionDigits: decimals, maximumFractionDigits: decimals }
-    : { useGrouping: false, maximumFractionDigits: decimals.max };
+  return typeof decimals === 'number' ? { useGrouping: false, minimumFractionDigits: decimals, maximumFractionDigits: decimals } : { useGrouping: false, maximumFractionDigits: decimals.max };
 }

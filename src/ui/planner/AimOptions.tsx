@@ -31,7 +31,13 @@ export function AimOptions({ module, catalog, gate, aimMode }: AimOptionsProps) 
   const { rotation, tilt } = type.adjustable;
   return (
     <OptionChips title={t('aim.title')}>
-      <span className="aim-values" data-testid="aim-values" data-rotation={aim.rotation} data-tilt={aim.tilt} title={t('aim.limits', { rotationMin: deg(rotation.min), rotationMax: deg(rotation.max), tiltMin: deg(tilt.min), tiltMax: deg(tilt.max) })}>
+      <span
+        className="aim-values"
+        data-testid="aim-values"
+        data-rotation={aim.rotation}
+        data-tilt={aim.tilt}
+        title={t('aim.limits', { rotationMin: deg(rotation.min), rotationMax: deg(rotation.max), tiltMin: deg(tilt.min), tiltMax: deg(tilt.max) })}
+      >
         <span>{t('aim.rotation', { degrees: deg(aim.rotation) })}</span> <span>{t('aim.tilt', { degrees: deg(aim.tilt) })}</span>
       </span>
       <GatedButton gate={gate} action="setAim" params={{ moduleId: module.id, aim: { rotation: aim.rotation, tilt: 0 } }} label={t('aim.straightDown')} current={aim.tilt === 0} testId="aim-straight-down" />

@@ -69,11 +69,7 @@ export function BomPanel({ bom, needs, locale, catalog }: BomPanelProps) {
           </tfoot>
         </table>
       )}
-      {bom.lines.length > 0 && (
-        <p className="preset-detail">
-          {t('planner.bomPowerAndFlux', { watts: Math.round(bom.watts * 10) / 10, lumens: Math.round(bom.lumens) })}
-        </p>
-      )}
+      {bom.lines.length > 0 && <p className="preset-detail">{t('planner.bomPowerAndFlux', { watts: Math.round(bom.watts * 10) / 10, lumens: Math.round(bom.lumens) })}</p>}
       {needs && needs.systems.length > 0 && <InstallationNeedsSummary needs={needs} />}
     </section>
   );

@@ -60,10 +60,22 @@ export function BranchOptions({ rail, system, catalog, gate }: { rail: Rail; sys
       {node ? (
         <>
           <p className="preset-detail">{t('connectors.ports', { name: localName(node, language), free: Math.max(0, connectorPorts(node) - 1 - at.length), ports: connectorPorts(node) })}</p>
-          <OptionChips title={t('connectors.addBranch')}>{portTurns(node).filter((turn) => !taken.has(turn)).map((turn) => branchButton(node, turn, false))}</OptionChips>
+          <OptionChips title={t('connectors.addBranch')}>
+            {portTurns(node)
+              .filter((turn) => !taken.has(turn))
+              .map((turn) => branchButton(node, turn, false))}
+          </OptionChips>
           <OptionChips title={t('connectors.change')}>
             {catalog.connectors.map((c) => (
-              <GatedButton key={c.id} gate={gate} action="setConnector" params={{ railId: rail.id, connector: c.id }} label={t('connectors.changeTo', { n, name: localName(c, language) })} current={c.id === node.id} testId={`connector-${rail.id}-${c.id}`}>
+              <GatedButton
+                key={c.id}
+                gate={gate}
+                action="setConnector"
+                params={{ railId: rail.id, connector: c.id }}
+                label={t('connectors.changeTo', { n, name: localName(c, language) })}
+                current={c.id === node.id}
+                testId={`connector-${rail.id}-${c.id}`}
+              >
                 {localName(c, language)}
               </GatedButton>
             ))}

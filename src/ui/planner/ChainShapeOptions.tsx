@@ -29,7 +29,14 @@ export function ChainShapeOptions({ system, catalog, gate }: { system: LightSyst
       {flexJoints.map(({ joint, turn, con, step, max }) => (
         <div className="field" key={joint} data-testid={`joint-angle-${joint}`}>
           <h3>{t('options.connectorAngleHeading', { n: joint + 1 })}</h3>
-          <CommitField label={t('options.connectorAngleField', { n: joint + 1 })} value={turn} decimals={0} onCommit={(degrees) => gate.attempt('setJointTurn', { systemId, joint, degrees })} onRefused={gate.explain} testId={`joint-angle-field-${joint}`} />
+          <CommitField
+            label={t('options.connectorAngleField', { n: joint + 1 })}
+            value={turn}
+            decimals={0}
+            onCommit={(degrees) => gate.attempt('setJointTurn', { systemId, joint, degrees })}
+            onRefused={gate.explain}
+            testId={`joint-angle-field-${joint}`}
+          />
           <OptionChips title={t('options.connectorAngle', { n: joint + 1 })}>
             <GatedButton gate={gate} action="setJointTurn" params={{ systemId, joint, degrees: turn + step }} label={t('options.turnConnectorLeft', { n: joint + 1, step })} testId={`joint-left-${joint}`}>
               ↰ {step}°
@@ -41,9 +48,7 @@ export function ChainShapeOptions({ system, catalog, gate }: { system: LightSyst
               ↱ {step}°
             </GatedButton>
           </OptionChips>
-          <span className="empty-note">
-            {t('options.connectorRange', { name: con.name, max, step })}
-          </span>
+          <span className="empty-note">{t('options.connectorRange', { name: con.name, max, step })}</span>
         </div>
       ))}
       <div className="field" data-testid="fixing-points">
@@ -52,11 +57,15 @@ export function ChainShapeOptions({ system, catalog, gate }: { system: LightSyst
           <p key={index} className="fixing-point" data-testid={`fixing-${index}`}>
             {t(surface ? 'options.clipN' : 'options.suspensionN', { n: index + 1 })}{' '}
             {p.joint !== null ? (
-              <span className="preset-detail">
-                {t('options.fixingAtConnector', { position: format.metres(p.s), n: p.joint + 1 })}
-              </span>
+              <span className="preset-detail">{t('options.fixingAtConnector', { position: format.metres(p.s), n: p.joint + 1 })}</span>
             ) : (
-              <CommitField label={t(surface ? 'options.clipPosition' : 'options.suspensionPosition', { n: index + 1 })} value={p.s} onCommit={(s) => gate.attempt('moveFixingPoint', { systemId, index, s })} onRefused={gate.explain} testId={`fixing-field-${index}`} />
+              <CommitField
+                label={t(surface ? 'options.clipPosition' : 'options.suspensionPosition', { n: index + 1 })}
+                value={p.s}
+                onCommit={(s) => gate.attempt('moveFixingPoint', { systemId, index, s })}
+                onRefused={gate.explain}
+                testId={`fixing-field-${index}`}
+              />
             )}
           </p>
         ))}

@@ -66,13 +66,7 @@ export function FilePanel({ store, ui, loadPhotometry }: FilePanelProps) {
       {/* A label is the one element that opens a file picker on click or tap without script;
           the input inside stays focusable (visually hidden, not display:none) for the keyboard. */}
       <label className="btn file-button">
-        <input
-          type="file"
-          accept=".json,application/json"
-          className="file-input"
-          onChange={(e) => void open(e)}
-          data-testid="open-file"
-        />
+        <input type="file" accept=".json,application/json" className="file-input" onChange={(e) => void open(e)} data-testid="open-file" />
         {t('files.openFile')}
       </label>
       {expert && (

@@ -57,7 +57,7 @@ function LoadedFilterPicker({ module, catalog, gate }: FilterPickerProps) {
   const moduleId = module.id;
   // Every filter's colour for this module's CCT: 43 small spectral sums, redone only when the CCT changes.
   const all = useMemo(() => catalogFilters(catalog).map((item) => ({ ...item, colour: moduleColour(module.cct, item.filter.id) })), [catalog, module.cct]);
-  const current = module.filter === undefined ? null : all.find((f) => f.filter.id === module.filter) ?? null;
+  const current = module.filter === undefined ? null : (all.find((f) => f.filter.id === module.filter) ?? null);
   const colour = current?.colour ?? moduleColour(module.cct, undefined);
   const shown = all.filter(({ filter }) => filterMatches(filter, query));
   const xy = (v: number) => format.number(v, { minimumFractionDigits: 4, maximumFractionDigits: 4 });

@@ -37,55 +37,52 @@ export function FirstRunHint({ room, catalog, gate, options, onPlaced, ui }: Fir
   // A shop's list is compared by its content: a new array with the same ids is the same choice.
   const key = only === false ? false : only === undefined ? undefined : only.join('\n');
   const { width, depth, height } = room;
-  const suggestions = useMemo(
-    () => (key === false ? [] : suggestedPresets({ width, depth, height }, catalog, 3, key === undefined ? undefined : key.split('\n'))),
-    [width, depth, height, catalog, key],
-  );
+  const suggestions = useMemo(() => (key === false ? [] : suggestedPresets({ width, depth, height }, catalog, 3, key === undefined ? undefined : key.split('\n'))), [width, depth, height, catalog, key]);
   return (
     // The area below the zoom buttons, the card centred in it (app.css).
     <div className="first-run-area">
-    <div className="first-run" data-plan-control data-testid="first-run" role="group" aria-labelledby="first-run-title">
-      <p id="first-run-title" className="first-run-title">
-        {t('guidance.firstRunTitle')}
-      </p>
-      <p className="first-run-hint">{t('guidance.firstRunHint')}</p>
-      {suggestions.length > 0 && (
-        <ul className="first-run-list">
-          {suggestions.map(({ presetId }) => {
-            const preset = catalog.presets.find((p) => p.id === presetId)!;
-            const name = localName(preset, language);
-            return (
-              <li key={presetId}>
-                <ActionButton
-                  label={t('guidance.firstRunPlace', { name })}
-                  disabledReason={gate.reason('placePreset', { presetId })}
-                  onPress={() => {
-                    gate.run('placePreset', { presetId });
-                    onPlaced();
-                  }}
-                  onDisabledPress={gate.explain}
-                  testId={`first-run-${presetId}`}
-                >
-                  <PresetThumbnail preset={preset} catalog={catalog} />
-                  <span className="preset-name">{name}</span>
-                </ActionButton>
-              </li>
-            );
-          })}
-        </ul>
-      )}
-      <button
-        type="button"
-        className="btn btn-link"
-        onClick={() => {
-          ui.setState({ panelOpen: true });
-          document.getElementById('presets-title')?.scrollIntoView({ block: 'start' });
-        }}
-        data-testid="first-run-all"
-      >
-        {t('guidance.firstRunAll')}
-      </button>
-    </div>
+      <div className="first-run" data-plan-control data-testid="first-run" role="group" aria-labelledby="first-run-title">
+        <p id="first-run-title" className="first-run-title">
+          {t('guidance.firstRunTitle')}
+        </p>
+        <p className="first-run-hint">{t('guidance.firstRunHint')}</p>
+        {suggestions.length > 0 && (
+          <ul className="first-run-list">
+            {suggestions.map(({ presetId }) => {
+              const preset = catalog.presets.find((p) => p.id === presetId)!;
+              const name = localName(preset, language);
+              return (
+                <li key={presetId}>
+                  <ActionButton
+                    label={t('guidance.firstRunPlace', { name })}
+                    disabledReason={gate.reason('placePreset', { presetId })}
+                    onPress={() => {
+                      gate.run('placePreset', { presetId });
+                      onPlaced();
+                    }}
+                    onDisabledPress={gate.explain}
+                    testId={`first-run-${presetId}`}
+                  >
+                    <PresetThumbnail preset={preset} catalog={catalog} />
+                    <span className="preset-name">{name}</span>
+                  </ActionButton>
+                </li>
+              );
+            })}
+          </ul>
+        )}
+        <button
+          type="button"
+          className="btn btn-link"
+          onClick={() => {
+            ui.setState({ panelOpen: true });
+            document.getElementById('presets-title')?.scrollIntoView({ block: 'start' });
+          }}
+          data-testid="first-run-all"
+        >
+          {t('guidance.firstRunAll')}
+        </button>
+      </div>
     </div>
   );
 }

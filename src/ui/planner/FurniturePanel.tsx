@@ -26,7 +26,17 @@ export function itemDimensions(size: { width: number; depth: number; height: num
  * from above, or for a wall item its front (width × height), as it is seen on the wall.
  */
 const ItemThumbnail = memo(function ItemThumbnail({ item }: { item: FurnitureItem }) {
-  const polygons = item.mount === 'wall' ? [[{ x: -item.width / 2, z: -item.height / 2 }, { x: item.width / 2, z: -item.height / 2 }, { x: item.width / 2, z: item.height / 2 }, { x: -item.width / 2, z: item.height / 2 }]] : libraryItemOutline(item.id);
+  const polygons =
+    item.mount === 'wall'
+      ? [
+          [
+            { x: -item.width / 2, z: -item.height / 2 },
+            { x: item.width / 2, z: -item.height / 2 },
+            { x: item.width / 2, z: item.height / 2 },
+            { x: -item.width / 2, z: item.height / 2 },
+          ],
+        ]
+      : libraryItemOutline(item.id);
   const size = Math.max(item.width, item.mount === 'wall' ? item.height : item.depth);
   const pad = size * 0.08;
   const d = polygons.map((p) => `M${p.map((q) => `${q.x},${q.z}`).join('L')}Z`).join('');

@@ -43,9 +43,7 @@ export function ObjectOptions({ config, object, gate, onClose }: { config: Confi
           </p>
         )}
         <CommitField label={t('options.scale')} value={object.scale} onCommit={(scale) => gate.attempt('resizeObject', { objectId, scale })} onRefused={gate.explain} testId="object-scale" />
-        <span className="empty-note">
-          {t(object.source.kind === 'library' ? 'options.scaleRangeLibrary' : 'options.scaleRangeImported', { min: limits.min, max: limits.max })}
-        </span>
+        <span className="empty-note">{t(object.source.kind === 'library' ? 'options.scaleRangeLibrary' : 'options.scaleRangeImported', { min: limits.min, max: limits.max })}</span>
         {object.scale !== 1 && <GatedButton gate={gate} action="resizeObject" params={{ objectId, scale: 1 }} label={t('options.backToRealSize')} />}
       </div>
       {p.on === 'floor' ? (
@@ -68,7 +66,14 @@ export function ObjectOptions({ config, object, gate, onClose }: { config: Confi
             {WALL_NAMES.map((wall) => {
               const along = wall === 'north' || wall === 'south' ? config.room.width : config.room.depth;
               return (
-                <GatedButton key={wall} gate={gate} action="moveObject" params={{ objectId, placement: { on: 'wall', wall, u: along / 2, y: p.y } }} label={t('options.hangOnWall', { wall: t(`planner.wall_${wall}`) })} current={p.wall === wall}>
+                <GatedButton
+                  key={wall}
+                  gate={gate}
+                  action="moveObject"
+                  params={{ objectId, placement: { on: 'wall', wall, u: along / 2, y: p.y } }}
+                  label={t('options.hangOnWall', { wall: t(`planner.wall_${wall}`) })}
+                  current={p.wall === wall}
+                >
                   {t(`planner.wall_${wall}`)}
                 </GatedButton>
               );

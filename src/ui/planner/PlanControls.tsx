@@ -135,46 +135,55 @@ function SystemLevelControls({ system, catalog, view, viewport, gate }: { system
           {!folded && (
             <>
               <span aria-hidden>x</span>
-              <CommitField
-                label={t('planner.systemPositionX')}
-                value={system.x}
-                onCommit={(x) => gate.attempt('moveSystem', { systemId: system.id, x, z: system.z })}
-                onRefused={gate.explain}
-              />
+              <CommitField label={t('planner.systemPositionX')} value={system.x} onCommit={(x) => gate.attempt('moveSystem', { systemId: system.id, x, z: system.z })} onRefused={gate.explain} />
               <span aria-hidden>z</span>
-              <CommitField
-                label={t('planner.systemPositionZ')}
-                value={system.z}
-                onCommit={(z) => gate.attempt('moveSystem', { systemId: system.id, x: system.x, z })}
-                onRefused={gate.explain}
-              />
+              <CommitField label={t('planner.systemPositionZ')} value={system.z} onCommit={(z) => gate.attempt('moveSystem', { systemId: system.id, x: system.x, z })} onRefused={gate.explain} />
             </>
           )}
         </Positioned>
       )}
-      {!folded && rails.map((r, i) => {
-        const mid = worldToScreen(view, { x: (r.start[0] + r.end[0]) / 2, z: (r.start[1] + r.end[1]) / 2 });
-        const nn = upNormal(view, r.start, r.end);
-        const pos = { sx: mid.sx + nn.nx * NEAR_PX, sy: mid.sy + nn.ny * NEAR_PX };
-        // A field longer than its rail on screen, or one that would cover another field, is left
-        // out until the user zooms in far enough for it to have room.
-        if (!visible(pos, viewport) || r.length * view.scale < MIN_RAIL_PX_FOR_FIELD) return null;
-        const box = { ...pos, ...LENGTH_FIELD_BOX };
-        if (placed.some((b) => overlaps(b, box))) return null;
-        placed.push(box);
-        return (
-          <Positioned key={r.railId} at={pos} className="length-field" testId={`length-${r.railId}`}>
-            <RailLengthField railId={r.railId} railNumber={i + 1} length={r.length} gate={gate} />
-            <span aria-hidden>m</span>
-          </Positioned>
-        );
-      })}
+      {!folded &&
+        rails.map((r, i) => {
+          const mid = worldToScreen(view, { x: (r.start[0] + r.end[0]) / 2, z: (r.start[1] + r.end[1]) / 2 });
+          const nn = upNormal(view, r.start, r.end);
+          const pos = { sx: mid.sx + nn.nx * NEAR_PX, sy: mid.sy + nn.ny * NEAR_PX };
+          // A field longer than its rail on screen, or one that would cover another field, is left
+          // out until the user zooms in far enough for it to have room.
+          if (!visible(pos, viewport) || r.length * view.scale < MIN_RAIL_PX_FOR_FIELD) return null;
+          const box = { ...pos, ...LENGTH_FIELD_BOX };
+          if (placed.some((b) => overlaps(b, box))) return null;
+          placed.push(box);
+          return (
+            <Positioned key={r.railId} at={pos} className="length-field" testId={`length-${r.railId}`}>
+              <RailLengthField railId={r.railId} railNumber={i + 1} length={r.length} gate={gate} />
+              <span aria-hidden>m</span>
+            </Positioned>
+          );
+        })}
     </>
   );
 }
 
 /** Figures 7–10: plus buttons above rails, distribution options, type switches below modules. */
-function ModuleLevelControls({ system, catalog, view, viewport, selection, gate, onSelect, onOpenOptions }: { system: LightSystem; catalog: Catalog; view: PlanView; viewport: Viewport; selection: SelectionPath; gate: ActionGate; onSelect: (s: Selection) => void; onOpenOptions: () => void }) {
+function ModuleLevelControls({
+  system,
+  catalog,
+  view,
+  viewport,
+  selection,
+  gate,
+  onSelect,
+  onOpenOptions,
+}: {
+  system: LightSystem;
+  catalog: Catalog;
+  view: PlanView;
+  viewport: Viewport;
+  selection: SelectionPath;
+  gate: ActionGate;
+  onSelect: (s: Selection) => void;
+  onOpenOptions: () => void;
+}) {
   const { t, language } = useI18n();
   const rails = railPlacements(system, catalog);
   const modules = modulePlacements(system, catalog);
@@ -203,7 +212,13 @@ function ModuleLevelControls({ system, catalog, view, viewport, selection, gate,
         out.push(
           <Positioned key={`dist-${rail.id}`} at={distPos} className="chip-row" testId={`distribution-${rail.id}`}>
             {/* The pictures read along the rail: its start on the right where the rail runs right to left on screen. */}
-            <LazyDistributionButtons railId={rail.id} current={isFreeRail(rail) ? null : rail.distribution} gate={gate} compact flipped={worldToScreen(view, { x: r.end[0], z: r.end[1] }).sx < worldToScreen(view, { x: r.start[0], z: r.start[1] }).sx - 1} />
+            <LazyDistributionButtons
+              railId={rail.id}
+              current={isFreeRail(rail) ? null : rail.distribution}
+              gate={gate}
+              compact
+              flipped={worldToScreen(view, { x: r.end[0], z: r.end[1] }).sx < worldToScreen(view, { x: r.start[0], z: r.start[1] }).sx - 1}
+            />
           </Positioned>,
         );
       }

@@ -45,17 +45,29 @@ const points = (r: PlanRect) => {
   return [c[0], c[1], c[3], c[2]].map((p) => `${p[0]},${p[1]}`).join(' ');
 };
 
-function SystemShape({ system, catalog, scale, selected, selectedRailId, selectedModuleId, levels }: { system: LightSystem; catalog: Catalog; scale: number; selected: boolean; selectedRailId?: string; selectedModuleId?: string; levels?: ReadonlyMap<string, number> | null }) {
+function SystemShape({
+  system,
+  catalog,
+  scale,
+  selected,
+  selectedRailId,
+  selectedModuleId,
+  levels,
+}: {
+  system: LightSystem;
+  catalog: Catalog;
+  scale: number;
+  selected: boolean;
+  selectedRailId?: string;
+  selectedModuleId?: string;
+  levels?: ReadonlyMap<string, number> | null;
+}) {
   const { elements, kinds } = systemElementTree(system, catalog);
   const modules = modulePlacements(system, catalog);
   const railIds = system.rails.map((r) => r.id);
   return (
     <g data-system-id={system.id} className="plan-system" style={{ cursor: 'move' }}>
-      {elements.map((rects, i) =>
-        rects.map((r, k) => (
-          <polygon key={`hit-${i}-${k}`} points={points(hitStrip(r, scale))} data-rail-id={railIds[kinds[i].rail]} fill="transparent" />
-        )),
-      )}
+      {elements.map((rects, i) => rects.map((r, k) => <polygon key={`hit-${i}-${k}`} points={points(hitStrip(r, scale))} data-rail-id={railIds[kinds[i].rail]} fill="transparent" />))}
       {elements.map((rects, i) => {
         // A rail, or the connector node at a rail's end (a T or X: its incoming arm and one arm per branch); a node selects the rail it ends.
         const isRail = kinds[i].kind === 'rail';
@@ -183,10 +195,12 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
   useColourFilterSpectra(configurationFilterIds(config).length > 0);
   // Every optic in use has its measured footprint (or failed to load): tests wait for this.
   const footprintsReady = config.systems.every((s) =>
-    s.rails.every((r) => r.modules.every((m) => {
-      const p = modulePhotometryPath(m, catalog);
-      return p === null || footprints.get(p) !== undefined;
-    })),
+    s.rails.every((r) =>
+      r.modules.every((m) => {
+        const p = modulePhotometryPath(m, catalog);
+        return p === null || footprints.get(p) !== undefined;
+      }),
+    ),
   );
   const systemDrag = drag && 'systemId' in drag ? drag : null;
   // A module dragged along its rail: its system is drawn as it would be with the module there.
@@ -200,7 +214,13 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
   for (let i = 1; i * step < depth - 1e-9; i++) gridLines.push({ x1: 0, z1: i * step, x2: width, z2: i * step, major: Math.abs(i * step - Math.round(i * step)) < 1e-9 });
 
   return (
-    <svg className="plan-svg" role="img" aria-label={t('planner.planLabel', { width, depth, systems: t('planner.systemCount', { count: config.systems.length }), objects: t('planner.objectCount', { count: config.objects.length }) })} data-testid="plan-svg" data-footprints={footprintsReady ? 'ready' : 'loading'}>
+    <svg
+      className="plan-svg"
+      role="img"
+      aria-label={t('planner.planLabel', { width, depth, systems: t('planner.systemCount', { count: config.systems.length }), objects: t('planner.objectCount', { count: config.objects.length }) })}
+      data-testid="plan-svg"
+      data-footprints={footprintsReady ? 'ready' : 'loading'}
+    >
       <defs>
         <clipPath id={clipId}>
           <rect x={0} y={0} width={width} height={depth} />
@@ -236,17 +256,7 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
                   };
                   if (f.kind === 'polygon') return <polygon key={m.moduleId} points={f.points.map((p) => `${p.x},${p.z}`).join(' ')} {...paint} />;
                   const e = f.ellipse;
-                  return (
-                    <ellipse
-                      key={m.moduleId}
-                      cx={e.center.x}
-                      cy={e.center.z}
-                      rx={Math.max(e.rx, 1e-3)}
-                      ry={Math.max(e.ry, 1e-3)}
-                      transform={`rotate(${e.rotationDeg} ${e.center.x} ${e.center.z})`}
-                      {...paint}
-                    />
-                  );
+                  return <ellipse key={m.moduleId} cx={e.center.x} cy={e.center.z} rx={Math.max(e.rx, 1e-3)} ry={Math.max(e.ry, 1e-3)} transform={`rotate(${e.rotationDeg} ${e.center.x} ${e.center.z})`} {...paint} />;
                 })}
               </g>
             );

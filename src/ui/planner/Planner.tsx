@@ -121,7 +121,11 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
   useLayoutEffect(() => controller.setViewport(viewport), [roomKey, viewport, controller]);
 
   useEffect(() => {
-    requestFootprints(footprints, config.systems.flatMap((s) => s.rails.flatMap((r) => r.modules)), catalog);
+    requestFootprints(
+      footprints,
+      config.systems.flatMap((s) => s.rails.flatMap((r) => r.modules)),
+      catalog,
+    );
   }, [footprints, config, catalog]);
 
   // Status messages disappear after a few seconds (they explain, they do not block).
@@ -230,7 +234,15 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
         <span className="total" data-testid="header-total" aria-label={t('planner.totalPrice')}>
           {format.money(bom.total, bom.currency)}
         </span>
-        <button type="button" className="btn panel-toggle" aria-expanded={panelOpen} aria-label={panelOpen ? t('common.close') : t('planner.presetsToggle')} title={panelOpen ? t('common.close') : t('planner.presetsToggle')} data-testid="panel-toggle" onClick={() => (panelOpen ? closeDrawer() : ui.setState({ panelOpen: true }))}>
+        <button
+          type="button"
+          className="btn panel-toggle"
+          aria-expanded={panelOpen}
+          aria-label={panelOpen ? t('common.close') : t('planner.presetsToggle')}
+          title={panelOpen ? t('common.close') : t('planner.presetsToggle')}
+          data-testid="panel-toggle"
+          onClick={() => (panelOpen ? closeDrawer() : ui.setState({ panelOpen: true }))}
+        >
           <span className="toggle-text">{panelOpen ? t('common.close') : t('planner.presetsToggle')}</span>
         </button>
       </header>

@@ -9,12 +9,5 @@ import { useI18n } from '../i18n/useI18n';
  */
 export function RailLengthField({ railId, railNumber, length, gate }: { railId: string; railNumber: number; length: number; gate: ActionGate }) {
   const { t } = useI18n();
-  return (
-    <CommitField
-      label={t('planner.railLengthField', { n: railNumber })}
-      value={length}
-      onCommit={(value) => gate.attempt('setRailLength', { railId, length: value })}
-      onRefused={gate.explain}
-    />
-  );
+  return <CommitField label={t('planner.railLengthField', { n: railNumber })} value={length} onCommit={(value) => gate.attempt('setRailLength', { railId, length: value })} onRefused={gate.explain} />;
 }

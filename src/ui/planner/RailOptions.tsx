@@ -21,9 +21,7 @@ export function RailOptions({ rail, system, catalog, gate, onClose }: { rail: Ra
       <div className="field">
         <h3>{t('options.railLength')}</h3>
         <RailLengthField railId={rail.id} railNumber={railIndex + 1} length={rail.length} gate={gate} />
-        <span className="empty-note">
-          {t('options.railLengthRange', { min: catalog.rail.minLength, max: catalog.rail.maxLength, step: catalog.rail.step })}
-        </span>
+        <span className="empty-note">{t('options.railLengthRange', { min: catalog.rail.minLength, max: catalog.rail.maxLength, step: catalog.rail.step })}</span>
       </div>
       <OptionChips title={t('options.moduleDistribution')}>
         <DistributionButtons railId={rail.id} current={isFreeRail(rail) ? null : rail.distribution} gate={gate} />

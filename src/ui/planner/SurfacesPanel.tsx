@@ -26,7 +26,17 @@ export function SurfacesPanel({ room, finishes, gate }: SurfacesPanelProps) {
   const choose = (surface: SurfaceTarget) => (f: SurfaceFinish) => gate.run('setReflectance', { surface, value: f.reflectance });
   const reason = (surface: SurfaceTarget) => (f: SurfaceFinish) => gate.reason('setReflectance', { surface, value: f.reflectance });
   const row = (surface: SurfaceName, label: string) => (
-    <FinishSelect key={surface} id={`finish-${surface}`} label={label} use={surface === 'floor' || surface === 'ceiling' ? surface : 'walls'} value={r[surface]} finishes={finishes} onChoose={choose(surface)} disabledReason={reason(surface)} testId={`finish-${surface}`} />
+    <FinishSelect
+      key={surface}
+      id={`finish-${surface}`}
+      label={label}
+      use={surface === 'floor' || surface === 'ceiling' ? surface : 'walls'}
+      value={r[surface]}
+      finishes={finishes}
+      onChoose={choose(surface)}
+      disabledReason={reason(surface)}
+      testId={`finish-${surface}`}
+    />
   );
   return (
     <section className="panel-section" aria-labelledby="surfaces-title" data-testid="surfaces">

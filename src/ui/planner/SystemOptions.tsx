@@ -26,7 +26,14 @@ export function SystemOptions({ system, catalog, gate, onClose }: { system: Ligh
   const systemId = system.id;
   // Each connector either way it turns (a flexible one at its default angle, adjusted below), named by
   // direction — straight on, left, right — with the connector as the second line, in that order.
-  const turns = catalog.connectors.flatMap((c) => (c.angle === 0 ? [{ c, turn: 0 }] : [{ c, turn: c.angle }, { c, turn: -c.angle }]));
+  const turns = catalog.connectors.flatMap((c) =>
+    c.angle === 0
+      ? [{ c, turn: 0 }]
+      : [
+          { c, turn: c.angle },
+          { c, turn: -c.angle },
+        ],
+  );
   const rank = (turn: number) => (turn === 0 ? 0 : turn > 0 ? 1 : 2);
   turns.sort((a, b) => rank(a.turn) - rank(b.turn));
   const direction = (turn: number, angle: number) => (turn === 0 ? t('options.extendStraight') : t(turn > 0 ? 'options.extendLeft' : 'options.extendRight', { angle }));
@@ -44,7 +51,15 @@ export function SystemOptions({ system, catalog, gate, onClose }: { system: Ligh
       </div>
       <OptionChips title={t('options.mounting')}>
         {MOUNTINGS.map((mounting) => (
-          <GatedButton key={mounting} gate={gate} action="setMounting" params={{ systemId, mounting }} label={t('options.mountingLabel', { mounting: t(MOUNTING_LABELS[mounting]) })} current={system.mounting === mounting} testId={`mounting-${mounting}`}>
+          <GatedButton
+            key={mounting}
+            gate={gate}
+            action="setMounting"
+            params={{ systemId, mounting }}
+            label={t('options.mountingLabel', { mounting: t(MOUNTING_LABELS[mounting]) })}
+            current={system.mounting === mounting}
+            testId={`mounting-${mounting}`}
+          >
             {t(MOUNTING_LABELS[mounting])}
           </GatedButton>
         ))}
@@ -61,7 +76,14 @@ export function SystemOptions({ system, catalog, gate, onClose }: { system: Ligh
         {turns.map(({ c, turn }) => {
           const name = localName(c, language);
           return (
-            <GatedButton key={`${c.id}${turn}`} gate={gate} action="addRail" params={{ systemId, connector: c.id, turn }} label={t('options.extendLabel', { direction: direction(turn, Math.abs(turn)), name })} testId={`extend-${c.id}-${turn > 0 ? 'left' : turn < 0 ? 'right' : 'straight'}`}>
+            <GatedButton
+              key={`${c.id}${turn}`}
+              gate={gate}
+              action="addRail"
+              params={{ systemId, connector: c.id, turn }}
+              label={t('options.extendLabel', { direction: direction(turn, Math.abs(turn)), name })}
+              testId={`extend-${c.id}-${turn > 0 ? 'left' : turn < 0 ? 'right' : 'straight'}`}
+            >
               <span className="extend-chip">
                 <TurnArrow heading={endHeading} turn={turn} />
                 <span aria-hidden="true">
@@ -102,7 +124,15 @@ function PowerFeeds({ system, catalog, gate }: { system: LightSystem; catalog: C
           </p>
           <OptionChips title={t('options.feedDriver', { n: l.index + 1 })}>
             {driversBySize(catalog).map((d) => (
-              <GatedButton key={d.id} gate={gate} action="setFeedDriver" params={{ feedId: l.feed.id, driver: d.id }} label={t('options.driverChoice', { name: d.name, watts: watts(d.capacity) })} current={l.feed.driver === d.id} testId={`driver-${l.feed.id}-${d.id}`}>
+              <GatedButton
+                key={d.id}
+                gate={gate}
+                action="setFeedDriver"
+                params={{ feedId: l.feed.id, driver: d.id }}
+                label={t('options.driverChoice', { name: d.name, watts: watts(d.capacity) })}
+                current={l.feed.driver === d.id}
+                testId={`driver-${l.feed.id}-${d.id}`}
+              >
                 {format.number(watts(d.capacity))} W
               </GatedButton>
             ))}
@@ -115,7 +145,14 @@ function PowerFeeds({ system, catalog, gate }: { system: LightSystem; catalog: C
       {free.length > 0 && (
         <OptionChips title={t('options.addFeed')}>
           {free.map((at) => (
-            <GatedButton key={JSON.stringify(at)} gate={gate} action="addFeed" params={{ systemId, at }} label={t('options.addFeedAt', { at: feedAtText(t, at) })} testId={`add-feed-${typeof at === 'string' ? at : 'joint' in at ? `joint-${at.joint}` : `end-${at.end}`}`}>
+            <GatedButton
+              key={JSON.stringify(at)}
+              gate={gate}
+              action="addFeed"
+              params={{ systemId, at }}
+              label={t('options.addFeedAt', { at: feedAtText(t, at) })}
+              testId={`add-feed-${typeof at === 'string' ? at : 'joint' in at ? `joint-${at.joint}` : `end-${at.end}`}`}
+            >
               + {feedAtText(t, at)}
             </GatedButton>
           ))}

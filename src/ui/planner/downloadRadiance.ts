@@ -18,7 +18,9 @@ export async function downloadRadiance(config: Configuration, catalog: Catalog, 
     import('../../engines/radiance/radianceZip'),
     loadColourFilterSpectra(), // a filtered module's colour (docs/colour-filters.md, "Two files")
   ]);
-  const stem = sceneFileName(config).replace(/\.json$/i, '').replace(/\.luxbox$/i, '');
+  const stem = sceneFileName(config)
+    .replace(/\.json$/i, '')
+    .replace(/\.luxbox$/i, '');
   const scene = await resolveBakeScene(toLightingScene(config, catalog), loadPhotometry);
   const folder = `${stem}-radiance`;
   const zip = radianceZip(exportRadiance(scene, {}, stem), folder);

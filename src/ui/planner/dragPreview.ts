@@ -5,11 +5,7 @@ import type { PlanPoint } from './viewTransform';
  * A system or an object being dragged: drawn offset by `delta` (metres) until dropped; `invalid`
  * where it may not be dropped. A wall item's delta is only the part along its wall.
  */
-export type DragPreview =
-  | { systemId: string; delta: PlanPoint; invalid: boolean }
-  | { objectId: string; delta: PlanPoint; invalid: boolean }
-  | ModuleDragPreview
-  | FixingDragPreview;
+export type DragPreview = { systemId: string; delta: PlanPoint; invalid: boolean } | { objectId: string; delta: PlanPoint; invalid: boolean } | ModuleDragPreview | FixingDragPreview;
 
 /**
  * A fixing point being dragged along its chain (system level, its system selected): the system as

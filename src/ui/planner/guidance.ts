@@ -15,4 +15,3 @@ export { remedyOffer } from './remedyOffer';
 export function GuidanceView(props: { firstRun: FirstRunHintProps } | { tips: ComponentProps<typeof TipHost> }) {
   return 'firstRun' in props ? createElement(FirstRunHint, props.firstRun) : createElement(TipHost, props.tips);
 }
-

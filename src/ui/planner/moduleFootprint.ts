@@ -36,14 +36,7 @@ export function modulePhotometryPath(module: ModuleInstance, catalog: Catalog): 
  * turns the footprint about the vertical; tilted, the catalog beam cone is traced to the room's
  * surfaces (`room`, needed then) and drawn from above.
  */
-export function moduleFootprint(
-  placement: ModulePlacement,
-  module: ModuleInstance,
-  catalog: Catalog,
-  heightAboveFloor: number,
-  measured: FloorFootprint | null | undefined,
-  room?: RoomBox,
-): ModuleFootprintShape | null {
+export function moduleFootprint(placement: ModulePlacement, module: ModuleInstance, catalog: Catalog, heightAboveFloor: number, measured: FloorFootprint | null | undefined, room?: RoomBox): ModuleFootprintShape | null {
   let beam: BeamSpec;
   try {
     beam = findBeam(findModuleType(catalog, module.type), module.beam);

@@ -29,7 +29,10 @@ export function meshOutline(mesh: TriangleMesh): Loop[] {
   const hit = localOutlines.get(mesh);
   if (hit) return hit;
   const p = mesh.positions;
-  let minX = Infinity, maxX = -Infinity, minZ = Infinity, maxZ = -Infinity;
+  let minX = Infinity,
+    maxX = -Infinity,
+    minZ = Infinity,
+    maxZ = -Infinity;
   for (let i = 0; i < p.length; i += 3) {
     minX = Math.min(minX, p[i]);
     maxX = Math.max(maxX, p[i]);
@@ -48,9 +51,12 @@ export function meshOutline(mesh: TriangleMesh): Loop[] {
   const clampZ = (k: number) => Math.min(nz - 1, Math.max(0, k));
   const idx = mesh.indices;
   for (let t = 0; t < idx.length; t += 3) {
-    const ax = p[idx[t] * 3], az = p[idx[t] * 3 + 2];
-    const bx = p[idx[t + 1] * 3], bz = p[idx[t + 1] * 3 + 2];
-    const cx = p[idx[t + 2] * 3], cz = p[idx[t + 2] * 3 + 2];
+    const ax = p[idx[t] * 3],
+      az = p[idx[t] * 3 + 2];
+    const bx = p[idx[t + 1] * 3],
+      bz = p[idx[t + 1] * 3 + 2];
+    const cx = p[idx[t + 2] * 3],
+      cz = p[idx[t + 2] * 3 + 2];
     const area = (bx - ax) * (cz - az) - (bz - az) * (cx - ax);
     if (Math.abs(area) < 1e-12) continue; // seen edge-on from above (a side face): its neighbours cover it
     const i0 = clampX(Math.floor((Math.min(ax, bx, cx) - minX) / cell));
@@ -72,7 +78,12 @@ export function meshOutline(mesh: TriangleMesh): Loop[] {
       }
     }
   }
-  const loops = traceCells(filled, nx, nz).map((loop) => simplifyLoop(loop.map(([i, k]) => ({ x: minX + i * cell, z: minZ + k * cell })), cell * 0.75));
+  const loops = traceCells(filled, nx, nz).map((loop) =>
+    simplifyLoop(
+      loop.map(([i, k]) => ({ x: minX + i * cell, z: minZ + k * cell })),
+      cell * 0.75,
+    ),
+  );
   localOutlines.set(mesh, loops);
   return loops;
 }

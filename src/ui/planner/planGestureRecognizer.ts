@@ -3,10 +3,7 @@ import { DRAG_THRESHOLD_PX } from './PlannerController';
 import type { ScreenPoint } from './viewTransform';
 
 /** What the recogniser drives: the controller's input methods (tests pass a recording fake). */
-export type PlanGestureSink = Pick<
-  PlannerController,
-  'pointerDown' | 'pointerMove' | 'pointerUp' | 'pointerCancel' | 'pinchStart' | 'pinchMove' | 'pinchEnd' | 'wheel'
->;
+export type PlanGestureSink = Pick<PlannerController, 'pointerDown' | 'pointerMove' | 'pointerUp' | 'pointerCancel' | 'pinchStart' | 'pinchMove' | 'pinchEnd' | 'wheel'>;
 
 /** One pointer event in plan pixels (relative to the plan's top-left corner). */
 export interface PointerRecord {

@@ -46,10 +46,7 @@ export function ScenePanel({ store }: { store: ConfiguratorStore }) {
   };
   const currentName = scenes.find((s) => s.id === playback.current)?.name ?? '';
   /** A transport stop worded for the user: GO at the last scene, BACK at the first, … */
-  const stopText = useCallback(
-    (stop: TransportStop): string => (stop === 'lastScene' || stop === 'firstScene' ? t(`scenes.${stop}`, { name: currentName }) : t(`scenes.${stop}`)),
-    [t, currentName],
-  );
+  const stopText = useCallback((stop: TransportStop): string => (stop === 'lastScene' || stop === 'firstScene' ? t(`scenes.${stop}`, { name: currentName }) : t(`scenes.${stop}`)), [t, currentName]);
   const play = useCallback(
     (p: Promise<RecallResult>) => {
       void p.then((r) => {

@@ -5,4 +5,3 @@
  * luxbox is one region named "luxbox lighting configurator" (in the UI language) and draws neither.
  */
 export type Landmarks = 'page' | 'region';
-

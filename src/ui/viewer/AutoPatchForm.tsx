@@ -27,7 +27,17 @@ export function AutoPatchForm({ onAutoPatch, onClear, canClear }: { onAutoPatch(
       <div className="viewer3d-patch-fields">
         <label className="viewer3d-patch-num">
           {t('live.universeShort')}
-          <input type="number" min={DMX_UNIVERSE_MIN} max={DMX_UNIVERSE_MAX} step={1} inputMode="numeric" value={universe} onChange={(e) => setUniverse(e.target.value)} aria-label={t('live.autoPatchUniverse')} data-testid="autopatch-universe" />
+          <input
+            type="number"
+            min={DMX_UNIVERSE_MIN}
+            max={DMX_UNIVERSE_MAX}
+            step={1}
+            inputMode="numeric"
+            value={universe}
+            onChange={(e) => setUniverse(e.target.value)}
+            aria-label={t('live.autoPatchUniverse')}
+            data-testid="autopatch-universe"
+          />
         </label>
         <label className="viewer3d-patch-num">
           @

@@ -56,9 +56,29 @@ export function ExposureControl({ initial, target }: Props) {
         <>
           <label className="viewer3d-field">
             {t('exposure.compensation', { ev: ev(compensation, true) })}
-            <input type="range" min={-4} max={4} step={0.5} value={compensation} onChange={(e) => { const v = Number(e.target.value); setCompensation(v); target()?.setExposureEv(v); }} data-testid="exposure" />
+            <input
+              type="range"
+              min={-4}
+              max={4}
+              step={0.5}
+              value={compensation}
+              onChange={(e) => {
+                const v = Number(e.target.value);
+                setCompensation(v);
+                target()?.setExposureEv(v);
+              }}
+              data-testid="exposure"
+            />
           </label>
-          <button type="button" className="btn" disabled={compensation === 0} onClick={() => { setCompensation(0); target()?.setExposureEv(0); }}>
+          <button
+            type="button"
+            className="btn"
+            disabled={compensation === 0}
+            onClick={() => {
+              setCompensation(0);
+              target()?.setExposureEv(0);
+            }}
+          >
             {t('exposure.resetCompensation')}
           </button>
           <button type="button" className="btn" title={t('exposure.reAdaptHint')} onClick={() => target()?.reAdapt()} data-testid="exposure-readapt">
@@ -68,7 +88,16 @@ export function ExposureControl({ initial, target }: Props) {
       ) : (
         <label className="viewer3d-field">
           {t('exposure.ev100', { ev: ev(ev100, false) })}
-          <input type="range" min={Math.min(SLIDER_MIN, Math.floor(ev100))} max={Math.max(SLIDER_MAX, Math.ceil(ev100))} step={0.1} value={ev100} aria-label={t('exposure.ev100Field')} onChange={(e) => fix(Number(e.target.value))} data-testid="exposure-ev100" />
+          <input
+            type="range"
+            min={Math.min(SLIDER_MIN, Math.floor(ev100))}
+            max={Math.max(SLIDER_MAX, Math.ceil(ev100))}
+            step={0.1}
+            value={ev100}
+            aria-label={t('exposure.ev100Field')}
+            onChange={(e) => fix(Number(e.target.value))}
+            data-testid="exposure-ev100"
+          />
         </label>
       )}
     </div>

@@ -154,11 +154,7 @@ export function LiveControl({ store, onLevels, onStatus }: LiveControlProps) {
             {describe(t, bridge, url)}
           </p>
           <p className="viewer3d-dim">{t('live.viewOnly')}</p>
-          <AutoPatchForm
-            onAutoPatch={(p) => dispatch('autoPatch', p)}
-            onClear={() => dispatch('clearPatch', {})}
-            canClear={rows.some((r) => r.patch)}
-          />
+          <AutoPatchForm onAutoPatch={(p) => dispatch('autoPatch', p)} onClear={() => dispatch('clearPatch', {})} canClear={rows.some((r) => r.patch)} />
           {rows.length > 0 ? (
             <ul className="viewer3d-patch" aria-label={t('live.patch')}>
               {rows.map((r) => (

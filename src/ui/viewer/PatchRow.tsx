@@ -73,11 +73,34 @@ export function PatchRow({ id, typeName, tunable, patch, live, onPatch }: PatchR
           <>
             <label className="viewer3d-patch-num">
               {t('live.universeShort')}
-              <input type="number" min={1} step={1} inputMode="numeric" value={universe} aria-label={t('live.universeOf', { id })} onChange={(e) => edit('universe', e.target.value)} onBlur={commitNumbers} onKeyDown={onKey} data-testid={`patch-universe-${id}`} />
+              <input
+                type="number"
+                min={1}
+                step={1}
+                inputMode="numeric"
+                value={universe}
+                aria-label={t('live.universeOf', { id })}
+                onChange={(e) => edit('universe', e.target.value)}
+                onBlur={commitNumbers}
+                onKeyDown={onKey}
+                data-testid={`patch-universe-${id}`}
+              />
             </label>
             <label className="viewer3d-patch-num">
               @
-              <input type="number" min={1} max={512} step={1} inputMode="numeric" value={address} aria-label={t('live.addressOf', { id })} onChange={(e) => edit('address', e.target.value)} onBlur={commitNumbers} onKeyDown={onKey} data-testid={`patch-address-${id}`} />
+              <input
+                type="number"
+                min={1}
+                max={512}
+                step={1}
+                inputMode="numeric"
+                value={address}
+                aria-label={t('live.addressOf', { id })}
+                onChange={(e) => edit('address', e.target.value)}
+                onBlur={commitNumbers}
+                onKeyDown={onKey}
+                data-testid={`patch-address-${id}`}
+              />
             </label>
             {tunable && (
               <label className="viewer3d-patch-cct">

@@ -67,7 +67,14 @@ export function SpotlightControls({ store, controllerRef, ready, spotlight, onCa
   const aimingHere = aimAt === target.moduleId;
   return (
     <div className="viewer3d-group" role="group" aria-label={t('aim.title')} data-testid="view3d-aim">
-      <button type="button" className={`btn${spotOn ? ' btn-primary' : ''}`} aria-pressed={spotOn} title={t('aim.spotlightHint')} onClick={() => onCameraMode({ kind: 'spotlight', moduleId: spotOn ? null : target.moduleId })} data-testid="spotlight-view">
+      <button
+        type="button"
+        className={`btn${spotOn ? ' btn-primary' : ''}`}
+        aria-pressed={spotOn}
+        title={t('aim.spotlightHint')}
+        onClick={() => onCameraMode({ kind: 'spotlight', moduleId: spotOn ? null : target.moduleId })}
+        data-testid="spotlight-view"
+      >
         {spotOn ? t('aim.spotlightLeave') : t('aim.spotlightView')}
       </button>
       <button type="button" className={`btn${aimingHere ? ' btn-primary' : ''}`} aria-pressed={aimingHere} title={t('aim.aimAtHint')} onClick={() => aimAtMode(store).set(aimingHere ? null : target.moduleId)} data-testid="view3d-aim-at">

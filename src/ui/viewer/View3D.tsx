@@ -363,10 +363,27 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true, 
           ))}
         </div>
         <div className="viewer3d-group" role="group" aria-label={t('view3d.viewMode')}>
-          <button type="button" className={`btn${mode === 'light' ? ' btn-primary' : ''}`} aria-pressed={mode === 'light'} onClick={() => { setMode('light'); ctrl.current?.setMode('light'); }}>
+          <button
+            type="button"
+            className={`btn${mode === 'light' ? ' btn-primary' : ''}`}
+            aria-pressed={mode === 'light'}
+            onClick={() => {
+              setMode('light');
+              ctrl.current?.setMode('light');
+            }}
+          >
             {t('view3d.modeLight')}
           </button>
-          <button type="button" className={`btn${mode === 'lux' ? ' btn-primary' : ''}`} aria-pressed={mode === 'lux'} onClick={() => { setMode('lux'); ctrl.current?.setMode('lux'); }} data-testid="mode-lux">
+          <button
+            type="button"
+            className={`btn${mode === 'lux' ? ' btn-primary' : ''}`}
+            aria-pressed={mode === 'lux'}
+            onClick={() => {
+              setMode('lux');
+              ctrl.current?.setMode('lux');
+            }}
+            data-testid="mode-lux"
+          >
             {t('view3d.modeLux')}
           </button>
           <button

@@ -91,7 +91,14 @@ export function startBakeFeed(store: ConfiguratorStore, loadPhotometry: (path: s
         scene.luminaires.forEach((l, i) => {
           if (!files.has(l.photometry)) files.set(l.photometry, { file: l.photometry, warnings: photometryWarnings(bake.luminaires[i].photometry) });
         });
-        latest = { bake, config, catalog, fixtures: fixturesFromConfiguration(config, catalog, new Map(scene.luminaires.map((l, i) => [l.id ?? '', bake.luminaires[i]]))), ids: scene.luminaires.map((l) => l.id ?? ''), notes: [...files.values()] };
+        latest = {
+          bake,
+          config,
+          catalog,
+          fixtures: fixturesFromConfiguration(config, catalog, new Map(scene.luminaires.map((l, i) => [l.id ?? '', bake.luminaires[i]]))),
+          ids: scene.luminaires.map((l) => l.id ?? ''),
+          notes: [...files.values()],
+        };
         error = null;
         service.setScene(bake);
         notify();

@@ -64,8 +64,23 @@ const bakeSources = new WeakMap<object, () => BakeStatus>();
 export const IDLE_BAKE: BakeStatus = { running: false, paused: false, done: false, groupBakes: 0, relightsOnly: 0, indirectSolves: 0, restarts: 0, quality: 'balanced' };
 
 export const CLOSED_STATUS: ViewerStatus = {
-  open: false, lit: false, done: false, progress: 0, groupBakes: 0, relightsOnly: 0, frames: 0,
-  firstLitMs: null, firstLitFrame: null, lastRelightMs: null, contextLosses: 0, error: null, floor: null, live: null, compare: null, objects: null, bake: IDLE_BAKE,
+  open: false,
+  lit: false,
+  done: false,
+  progress: 0,
+  groupBakes: 0,
+  relightsOnly: 0,
+  frames: 0,
+  firstLitMs: null,
+  firstLitFrame: null,
+  lastRelightMs: null,
+  contextLosses: 0,
+  error: null,
+  floor: null,
+  live: null,
+  compare: null,
+  objects: null,
+  bake: IDLE_BAKE,
 };
 
 export function setViewerStatus(owner: object, status: ViewerStatus): void {

@@ -18,7 +18,7 @@ describe('filtered colour (CIE 15:2004 colorimetry)', () => {
     expect(Math.abs(clear.y - 0.40745)).toBeLessThan(0.0005);
   });
 
-  it('unfiltered is exactly today\'s cctToLinearRgb; a clear (τ = 1) filter matches it to 1e-12', () => {
+  it("unfiltered is exactly today's cctToLinearRgb; a clear (τ = 1) filter matches it to 1e-12", () => {
     for (const k of [1800, 2700, 3000, 4000, 6500, 12000]) {
       expect(moduleColour(k, undefined).linearRgb).toEqual(cctToLinearRgb(k));
       const clear = filteredColour(k, Array(81).fill(1));
@@ -36,7 +36,7 @@ describe('filtered colour (CIE 15:2004 colorimetry)', () => {
     c.linearRgb.forEach((v, i) => expect(v).toBeCloseTo(0.4 * ref.linearRgb[i], 12));
   });
 
-  it('the baker\'s colour carries the lumen loss: luminance of the linear RGB = τ_v for every library gel at 3000 K', () => {
+  it("the baker's colour carries the lumen loss: luminance of the linear RGB = τ_v for every library gel at 3000 K", () => {
     for (const id of ['lee-204', 'lee-201', 'lee-209', 'lee-106', 'lee-119', 'lee-139']) {
       const c = moduleColour(3000, id);
       expect(luminance(c.linearRgb)).toBeCloseTo(c.transmission, 12);
@@ -57,7 +57,7 @@ describe('filtered colour (CIE 15:2004 colorimetry)', () => {
     expect(Math.abs(stated.cct - c.white!.cct)).toBeLessThan(120);
   });
 
-  it('CTO/CTB under 3200 K land on LEE\'s stated tungsten chromaticities within 0.003 (their stated tungsten source fits 3200 K)', () => {
+  it("CTO/CTB under 3200 K land on LEE's stated tungsten chromaticities within 0.003 (their stated tungsten source fits 3200 K)", () => {
     for (const id of ['lee-204', 'lee-205', 'lee-206', 'lee-285', 'lee-201', 'lee-202', 'lee-203', 'lee-281', 'lee-106']) {
       const c = moduleColour(3200, id);
       const s = filterSpectrum(id).stated.sourceA!;
@@ -66,8 +66,12 @@ describe('filtered colour (CIE 15:2004 colorimetry)', () => {
     }
   });
 
-  it('neutral densities 0.3/0.6/0.9 pass LEE\'s stated tungsten Y (50.0/24.5/11.8 %) within 0.007, and ≈ 10^−D within 0.012', () => {
-    const cases: [string, number][] = [['lee-209', 0.3], ['lee-210', 0.6], ['lee-211', 0.9]];
+  it("neutral densities 0.3/0.6/0.9 pass LEE's stated tungsten Y (50.0/24.5/11.8 %) within 0.007, and ≈ 10^−D within 0.012", () => {
+    const cases: [string, number][] = [
+      ['lee-209', 0.3],
+      ['lee-210', 0.6],
+      ['lee-211', 0.9],
+    ];
     for (const [id, density] of cases) {
       const tau = moduleColour(3200, id).transmission;
       expect(Math.abs(tau - filterSpectrum(id).stated.sourceA!.Y / 100)).toBeLessThan(0.007);

@@ -230,7 +230,14 @@ export function linearSpec(): GldfSpec {
     variants: [
       { id: 'ln-4000', name: { en: 'Linear 600 4000 K' }, productNumber: 'LTL-LN600-40', mountings: CEILING_SURFACE, emitterId: 'em-4000', productSize: [600, 35, 50] },
       { id: 'ln-3000', name: { en: 'Linear 600 3000 K' }, productNumber: 'LTL-LN600-30', mountings: CEILING_SURFACE, emitterId: 'em-3000', productSize: [600, 35, 50] },
-      { id: 'ln-rec-3000', name: { en: 'Linear 600 recessed' }, productNumber: 'LTL-LN600-R30', mountings: '<Ceiling><Recessed recessedDepth="60"><RectangularCutout><Width>40</Width><Length>605</Length><Depth>60</Depth></RectangularCutout></Recessed></Ceiling>', emitterId: 'em-3000', productSize: [600, 35, 50] },
+      {
+        id: 'ln-rec-3000',
+        name: { en: 'Linear 600 recessed' },
+        productNumber: 'LTL-LN600-R30',
+        mountings: '<Ceiling><Recessed recessedDepth="60"><RectangularCutout><Width>40</Width><Length>605</Length><Depth>60</Depth></RectangularCutout></Recessed></Ceiling>',
+        emitterId: 'em-3000',
+        productSize: [600, 35, 50],
+      },
     ],
   };
 }

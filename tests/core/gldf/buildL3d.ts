@@ -7,7 +7,11 @@ import { zipSync, type Zippable } from 'fflate';
 
 export const encode = (s: string): Uint8Array => new TextEncoder().encode(s);
 /** A 2 cm cube in millimetres: 8 vertices, 12 triangles (the OBJ content is not read by the structure reader). */
-export const CUBE = encode(['v 0 0 0', 'v 20 0 0', 'v 20 20 0', 'v 0 20 0', 'v 0 0 20', 'v 20 0 20', 'v 20 20 20', 'v 0 20 20', 'f 1 2 3', 'f 1 3 4', 'f 5 6 7', 'f 5 7 8', 'f 1 2 6', 'f 1 6 5', 'f 2 3 7', 'f 2 7 6', 'f 3 4 8', 'f 3 8 7', 'f 4 1 5', 'f 4 5 8'].join('\n'));
+export const CUBE = encode(
+  ['v 0 0 0', 'v 20 0 0', 'v 20 20 0', 'v 0 20 0', 'v 0 0 20', 'v 20 0 20', 'v 20 20 20', 'v 0 20 20', 'f 1 2 3', 'f 1 3 4', 'f 5 6 7', 'f 5 7 8', 'f 1 2 6', 'f 1 6 5', 'f 2 3 7', 'f 2 7 6', 'f 3 4 8', 'f 3 8 7', 'f 4 1 5', 'f 4 5 8'].join(
+    '\n',
+  ),
+);
 
 export const STRUCTURE = `<?xml version="1.0" encoding="UTF-8"?>
 <Luminaire>
@@ -65,4 +69,3 @@ export const STRUCTURE = `<?xml version="1.0" encoding="UTF-8"?>
 
 export const files = (): Zippable => ({ 'adapter/adapter.obj': CUBE, 'yoke/yoke.obj': CUBE, 'head/head.obj': CUBE });
 export const l3d = (xml = STRUCTURE, extra: Zippable = {}): Uint8Array => zipSync({ 'structure.xml': encode(xml), ...files(), ...extra });
-

@@ -36,9 +36,7 @@ const readFile = (path: string): Uint8Array => {
   return bytes;
 };
 const createdAt = new Date('2026-11-27T09:00:00Z');
-const exported = IMPORTED.map((id) =>
-  exportGldfProduct(first.catalog, id, { createdAt, readFile, ...(folder.has(`images/${id}.png`) ? { picture: { name: `${id}.png`, bytes: readFile(`images/${id}.png`) } } : {}) }),
-);
+const exported = IMPORTED.map((id) => exportGldfProduct(first.catalog, id, { createdAt, readFile, ...(folder.has(`images/${id}.png`) ? { picture: { name: `${id}.png`, bytes: readFile(`images/${id}.png`) } } : {}) }));
 const exportedMapping: GldfMapping = { formatVersion: 1, products: Object.fromEntries(IMPORTED.map((id, i) => [id, exported[i].mapping])) };
 
 const typeOf = (c: Catalog, id: string): ModuleTypeSpec => c.moduleTypes.find((t) => t.id === id) as ModuleTypeSpec;
@@ -72,7 +70,9 @@ describe('module types back to GLDF', () => {
     expect(xml.match(/<Variant /g)).toHaveLength(9);
     // The default CCT first, so the import takes it as the default again.
     expect(/<Variant id="v-narrow-3000" sortOrder="0"><ProductNumber><Locale language="en">LTL-TS-N-3000<\/Locale>/.test(xml)).toBe(true);
-    expect(xml).toContain('<FixedLightSource id="ls-narrow-2700"><Name><Locale language="en">Narrow spot 2700 K</Locale></Name><RatedInputPower>43</RatedInputPower><ColorInformation><CorrelatedColorTemperature>2700</CorrelatedColorTemperature></ColorInformation></FixedLightSource>');
+    expect(xml).toContain(
+      '<FixedLightSource id="ls-narrow-2700"><Name><Locale language="en">Narrow spot 2700 K</Locale></Name><RatedInputPower>43</RatedInputPower><ColorInformation><CorrelatedColorTemperature>2700</CorrelatedColorTemperature></ColorInformation></FixedLightSource>',
+    );
     expect(xml).toContain('<RatedLuminousFlux>2044</RatedLuminousFlux>');
     expect(xml).toContain('<Name><Locale language="en">Track spot</Locale><Locale language="de">Schienenstrahler</Locale><Locale language="fr">Spot sur rail</Locale><Locale language="it">Faretto a binario</Locale></Name>');
     expect(xml).toContain('<ListPrice currency="EUR">199</ListPrice>');

@@ -101,14 +101,11 @@ describe('hostile GLDF containers are refused in one line naming file and entry'
       expect(refusal(zip)).toBe(`bad.gldf: entry '${name.replace(/\\/g, '\\\\')}' ${why}`);
     }
     // A File element that names a path instead of a file name.
-    expect(refusal(xmlWith((x) => x.replace('>bega_84693_narrow_spot.ies<', '>../bega_84693_narrow_spot.ies<')))).toBe(
-      "bad.gldf: entry 'product.xml': File 'f-narrow': '../bega_84693_narrow_spot.ies' climbs out of the container ('..')",
-    );
+    expect(refusal(xmlWith((x) => x.replace('>bega_84693_narrow_spot.ies<', '>../bega_84693_narrow_spot.ies<')))).toBe("bad.gldf: entry 'product.xml': File 'f-narrow': '../bega_84693_narrow_spot.ies' climbs out of the container ('..')");
   });
 
   it('DTDs and entity declarations: entity expansion and external entities never reach the parser', () => {
-    const laughs = (x: string): string =>
-      x.replace('<Root>', '<!DOCTYPE Root [<!ENTITY lol "lol"><!ENTITY lol2 "&lol;&lol;&lol;&lol;&lol;&lol;&lol;&lol;&lol;&lol;">]><Root>').replace('>Luxbox Test Lighting<', '>&lol2;<');
+    const laughs = (x: string): string => x.replace('<Root>', '<!DOCTYPE Root [<!ENTITY lol "lol"><!ENTITY lol2 "&lol;&lol;&lol;&lol;&lol;&lol;&lol;&lol;&lol;&lol;">]><Root>').replace('>Luxbox Test Lighting<', '>&lol2;<');
     expect(refusal(xmlWith(laughs))).toBe("bad.gldf: entry 'product.xml': has a DTD (<!DOCTYPE); DTDs and entity declarations are refused");
     const external = (x: string): string => x.replace('<Root>', '<!DOCTYPE Root SYSTEM "file:///etc/passwd"><Root>');
     expect(refusal(xmlWith(external))).toMatch(/has a DTD/);
@@ -119,7 +116,7 @@ describe('hostile GLDF containers are refused in one line naming file and entry'
   it('XML nested deeper than 40 levels, and more than 5000 siblings of one name', () => {
     expect(refusal(xmlWith((x) => x.replace('<Header>', `<Header>${'<A>'.repeat(60)}${'</A>'.repeat(60)}`)))).toBe("bad.gldf: entry 'product.xml': Maximum nested tags exceeded");
     const files = Array.from({ length: 5001 }, (_, i) => `<File id="x${i}" contentType="other" type="url">u</File>`).join('');
-    expect(refusal(xmlWith((x) => x.replace('<Files>', `<Files>${files}`)))).toBe("bad.gldf: entry 'product.xml': 5005 <File> elements, over the limit of 5000") // 5001 + the spot's 4;
+    expect(refusal(xmlWith((x) => x.replace('<Files>', `<Files>${files}`)))).toBe("bad.gldf: entry 'product.xml': 5005 <File> elements, over the limit of 5000"); // 5001 + the spot's 4;
   });
 
   it('malformed XML is refused with its line', () => {
@@ -127,20 +124,14 @@ describe('hostile GLDF containers are refused in one line naming file and entry'
   });
 
   it('references to missing ids and duplicate ids', () => {
-    expect(refusal(xmlWith((x) => x.replace('photometryId="ph-wide"', 'photometryId="ph-missing"')))).toBe(
-      "bad.gldf: entry 'product.xml': Emitter 'em-wide-3000': photometryId 'ph-missing' names no Photometry",
-    );
+    expect(refusal(xmlWith((x) => x.replace('photometryId="ph-wide"', 'photometryId="ph-missing"')))).toBe("bad.gldf: entry 'product.xml': Emitter 'em-wide-3000': photometryId 'ph-missing' names no Photometry");
     expect(refusal(xmlWith((x) => x.replace('<EmitterReference emitterId="em-medium-2700"/>', '<EmitterReference emitterId="em-gone"/>')))).toBe(
       "bad.gldf: entry 'product.xml': Variant 'v-medium-2700'/Geometry: emitterId 'em-gone' names no Emitter",
     );
-    expect(refusal(xmlWith((x) => x.replace('fixedLightSourceId="ls-narrow-4000"', 'fixedLightSourceId="nowhere"')))).toBe(
-      "bad.gldf: entry 'product.xml': Emitter 'em-narrow-4000': fixedLightSourceId 'nowhere' names no light source",
-    );
+    expect(refusal(xmlWith((x) => x.replace('fixedLightSourceId="ls-narrow-4000"', 'fixedLightSourceId="nowhere"')))).toBe("bad.gldf: entry 'product.xml': Emitter 'em-narrow-4000': fixedLightSourceId 'nowhere' names no light source");
     expect(refusal(xmlWith((x) => x.replace('<Variant id="v-medium-3000"', '<Variant id="v-narrow-3000"')))).toBe("bad.gldf: entry 'product.xml': Variant: duplicate id 'v-narrow-3000'");
     // xs:ID is unique across the document: a Photometry may not share a File's id.
-    expect(refusal(xmlWith((x) => x.replace('<Photometry id="ph-wide">', '<Photometry id="f-wide">').replace(/photometryId="ph-wide"/g, 'photometryId="f-wide"')))).toBe(
-      "bad.gldf: entry 'product.xml': Photometry: duplicate id 'f-wide'",
-    );
+    expect(refusal(xmlWith((x) => x.replace('<Photometry id="ph-wide">', '<Photometry id="f-wide">').replace(/photometryId="ph-wide"/g, 'photometryId="f-wide"')))).toBe("bad.gldf: entry 'product.xml': Photometry: duplicate id 'f-wide'");
   });
 
   it('a File the container lacks, and a container without product.xml', () => {
@@ -153,7 +144,7 @@ describe('hostile GLDF containers are refused in one line naming file and entry'
   it('photometry the IES/EULUMDAT parsers refuse refuses the GLDF, naming the entry', () => {
     const spec = linearSpec();
     spec.files[0].bytes = new TextEncoder().encode('not a EULUMDAT file\n1\n2\n');
-    expect(refusal(gldfBytes(spec))).toBe("bad.gldf: entry 'ldc/zumtobel_sloin_linear_isym4.ldt' line 4: expected the number of C-planes Mc (a number), found \"\"");
+    expect(refusal(gldfBytes(spec))).toBe('bad.gldf: entry \'ldc/zumtobel_sloin_linear_isym4.ldt\' line 4: expected the number of C-planes Mc (a number), found ""');
   });
 
   it('nothing partial: one bad file among good ones refuses the whole import', () => {

@@ -53,7 +53,16 @@ describe('L3D structure', () => {
     });
     const head = node('head', 'head', {
       lightEmittingObjects: [{ partName: 'lens', position: [0, 0, -0.045], rotation: [0, 0, 0], shape: { kind: 'circle', diameter: 0.05 } }],
-      lightEmittingSurfaces: [{ partName: 'lens-faces', objects: [{ partName: 'lens' }], faces: [{ begin: 0, end: 0 }, { begin: 2, end: 3 }] }],
+      lightEmittingSurfaces: [
+        {
+          partName: 'lens-faces',
+          objects: [{ partName: 'lens' }],
+          faces: [
+            { begin: 0, end: 0 },
+            { begin: 2, end: 3 },
+          ],
+        },
+      ],
     });
     const tilt = { partName: 'tilt', position: [0, 0, -0.06], rotation: [0, 0, 0], axes: [{ axis: 'x', min: 0, max: 90, step: 5 }], defaultRotation: [30, 0, 0], geometries: [head] };
     const yoke = node('yoke', 'yoke', { joints: [tilt as never] });
@@ -69,7 +78,9 @@ describe('L3D structure', () => {
   it('refuses hostile or broken structures in one line naming file, entry and part', () => {
     expect(refusal(l3d(STRUCTURE.replace('partName="yoke"', 'partName="adapter"')))).toBe("spot.l3d: entry 'structure.xml': Geometry 'adapter': duplicate partName");
     expect(refusal(l3d(STRUCTURE.replace('<GeometryReference geometryId="yoke"/>', '<GeometryReference geometryId="arm"/>')))).toBe("spot.l3d: entry 'structure.xml': Geometry 'yoke': geometryId 'arm' names no GeometryFileDefinition");
-    expect(refusal(l3d(STRUCTURE.replace('lightEmittingPartName="lens"', 'lightEmittingPartName="bulb"')))).toBe("spot.l3d: entry 'structure.xml': LightEmittingSurface 'lens-faces': lightEmittingPartName 'bulb' names no LightEmittingObject");
+    expect(refusal(l3d(STRUCTURE.replace('lightEmittingPartName="lens"', 'lightEmittingPartName="bulb"')))).toBe(
+      "spot.l3d: entry 'structure.xml': LightEmittingSurface 'lens-faces': lightEmittingPartName 'bulb' names no LightEmittingObject",
+    );
     expect(refusal(l3d(STRUCTURE.replace('<XAxis min="0" max="90"', '<XAxis min="95" max="90"')))).toBe("spot.l3d: entry 'structure.xml': Joint 'tilt' XAxis: min 95 exceeds max 90");
     expect(refusal(l3d(STRUCTURE.replace('filename="head.obj"', 'filename="../head.obj"')))).toBe("spot.l3d: entry 'structure.xml': GeometryFileDefinition 'head': filename '../head.obj' climbs out of the container ('..')");
     expect(refusal(l3d(STRUCTURE.replace('units="cm"', 'units="furlong"')))).toMatch(/^spot\.l3d: entry 'structure\.xml': GeometryFileDefinition 'head': units 'furlong' is not one of m, dm/);

@@ -11,11 +11,30 @@ const grey = [{ name: 'm', reflectance: [0.8, 0.8, 0.8] as [number, number, numb
 export function wedgeMesh(w = 1.5, h = 1, d = 4): TriangleMesh {
   const positions = new Float32Array([0, 0, 0, w, 0, 0, 0, h, 0, 0, 0, d, w, 0, d, 0, h, d]);
   const indices = [
-    0, 2, 1, // z = 0 end (normal −z)
-    3, 4, 5, // z = d end (normal +z)
-    0, 1, 4, 0, 4, 3, // floor side (normal −y)
-    0, 3, 5, 0, 5, 2, // wall side (normal −x)
-    1, 2, 5, 1, 5, 4, // the slope (normal up and toward +x)
+    0,
+    2,
+    1, // z = 0 end (normal −z)
+    3,
+    4,
+    5, // z = d end (normal +z)
+    0,
+    1,
+    4,
+    0,
+    4,
+    3, // floor side (normal −y)
+    0,
+    3,
+    5,
+    0,
+    5,
+    2, // wall side (normal −x)
+    1,
+    2,
+    5,
+    1,
+    5,
+    4, // the slope (normal up and toward +x)
   ];
   return { positions, indices: Uint32Array.from(indices), materialOfTriangle: new Uint16Array(8), materials: grey };
 }
@@ -61,7 +80,8 @@ export function mobiusMesh(n = 6): TriangleMesh {
   }
   const idx: number[] = [];
   for (let i = 0; i < n; i++) {
-    const a = 2 * i, b = 2 * i + 1;
+    const a = 2 * i,
+      b = 2 * i + 1;
     // The last segment joins the first with its two edges swapped (the half turn).
     const [c, d] = i === n - 1 ? [1, 0] : [2 * i + 2, 2 * i + 3];
     idx.push(a, c, b, b, c, d);

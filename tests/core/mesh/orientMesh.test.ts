@@ -152,7 +152,10 @@ describe('open parts', () => {
   });
 
   it('a one-sided open part is left exactly as the file winds it, each triangle its own way', () => {
-    const quad = withIndices(quadMesh(), [0, 1, 2, 0, 2, 3].map((v, i) => (i === 4 ? 3 : i === 5 ? 2 : v)));
+    const quad = withIndices(
+      quadMesh(),
+      [0, 1, 2, 0, 2, 3].map((v, i) => (i === 4 ? 3 : i === 5 ? 2 : v)),
+    );
     const { mesh: out, summary } = orientMesh(quad, never);
     expect(Array.from(out.indices)).toEqual(Array.from(quad.indices));
     expect(summary).toMatchObject({ oneSided: 1, twoSided: 0, backTriangles: 0 });

@@ -98,7 +98,7 @@ describe('createPhotometryLoader', () => {
     expect(() => loadSync('a.ies')).toThrow(new PhotometryReadError('a.ies', 'EACCES'));
   });
 
-  it('two hosts\' loaders have independent caches', async () => {
+  it("two hosts' loaders have independent caches", async () => {
     const r1 = countingReader({ [GOOD]: bytes(GOOD) });
     const r2 = countingReader({ [GOOD]: bytes(GOOD) });
     const one = createPhotometryLoader(r1.async);

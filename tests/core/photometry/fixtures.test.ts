@@ -150,9 +150,7 @@ describe('TILT, multipliers, versions, units', () => {
   it('TILT=<file> reads the supplied file, and fails clearly without it', () => {
     expect(intensity(loadFixture('tilt_file.ies'), 10, 0)).toBeCloseTo(75, 9);
     const bytes = readFileSync(`${FIXTURE_DIR}/tilt_file.ies`);
-    expect(() => parsePhotometry(bytes, 'tilt_file.ies')).toThrow(
-      'tilt_file.ies line 6: TILT=lamp_tilt.tlt refers to a separate tilt file that was not supplied',
-    );
+    expect(() => parsePhotometry(bytes, 'tilt_file.ies')).toThrow('tilt_file.ies line 6: TILT=lamp_tilt.tlt refers to a separate tilt file that was not supplied');
   });
 
   it('candela multiplier and relative lumens', () => {
@@ -200,13 +198,7 @@ describe('TILT, multipliers, versions, units', () => {
 });
 
 describe('EULUMDAT symmetry indicators 0–4', () => {
-  const shapes = [
-    (c: number) => 1 + 0.5 * cosd(c) + 0.3 * sind(2 * c),
-    () => 1,
-    (c: number) => 1 + 0.5 * cosd(c),
-    (c: number) => 1 + 0.5 * sind(c),
-    (c: number) => 1 + 0.5 * cosd(2 * c),
-  ];
+  const shapes = [(c: number) => 1 + 0.5 * cosd(c) + 0.3 * sind(2 * c), () => 1, (c: number) => 1 + 0.5 * cosd(c), (c: number) => 1 + 0.5 * sind(c), (c: number) => 1 + 0.5 * cosd(2 * c)];
   const names = ['none', 'rotational', 'bilateral-c0', 'bilateral-c90', 'quadrant'];
   shapes.forEach((shape, isym) => {
     it(`Isym ${isym} (${names[isym]}) unfolds to the written distribution`, () => {

@@ -6,8 +6,14 @@ import { createRng } from '../../fuzz/mutate';
 export const REAL_DIR = 'public/ies';
 export const FIXTURE_DIR = 'tests/fixtures/photometry';
 
-export const realFiles = (): string[] => readdirSync(REAL_DIR).filter((f) => /\.(ies|ldt)$/i.test(f)).sort();
-export const fixtureFiles = (): string[] => readdirSync(FIXTURE_DIR).filter((f) => /\.(ies|ldt)$/i.test(f)).sort();
+export const realFiles = (): string[] =>
+  readdirSync(REAL_DIR)
+    .filter((f) => /\.(ies|ldt)$/i.test(f))
+    .sort();
+export const fixtureFiles = (): string[] =>
+  readdirSync(FIXTURE_DIR)
+    .filter((f) => /\.(ies|ldt)$/i.test(f))
+    .sort();
 
 export function loadReal(name: string): Photometry {
   return parsePhotometry(readFileSync(join(REAL_DIR, name)), name);

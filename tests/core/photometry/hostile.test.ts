@@ -1,13 +1,6 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import {
-  integrateFlux,
-  intensity,
-  MAX_PHOTOMETRY_BYTES,
-  parsePhotometry,
-  PhotometryParseError,
-  type Photometry,
-} from '../../../src/core/photometry';
+import { integrateFlux, intensity, MAX_PHOTOMETRY_BYTES, parsePhotometry, PhotometryParseError, type Photometry } from '../../../src/core/photometry';
 import { isDecimal, readDecimal } from '../../../src/core/photometry/decimal';
 import { FIXTURE_DIR, loadFixture, loadReal } from './helpers';
 
@@ -111,12 +104,8 @@ describe('numerals of absurd length: linear time, short messages', () => {
   });
 
   it('a numeral > 100 characters is refused with its length, not quoted', () => {
-    expect(refusal(iso(undefined, `${'1'.repeat(100_000)} 1 10`), 'long.ies')).toBe(
-      'long.ies line 8: the ballast factor: a numeral of 100000 characters is too long (limit 100)',
-    );
-    expect(refusal(ldtWith(4, '0.' + '0'.repeat(200)), 'long.ldt')).toBe(
-      'long.ldt line 5: the C-plane distance Dc: a numeral of 202 characters is too long (limit 100)',
-    );
+    expect(refusal(iso(undefined, `${'1'.repeat(100_000)} 1 10`), 'long.ies')).toBe('long.ies line 8: the ballast factor: a numeral of 100000 characters is too long (limit 100)');
+    expect(refusal(ldtWith(4, '0.' + '0'.repeat(200)), 'long.ldt')).toBe('long.ldt line 5: the C-plane distance Dc: a numeral of 202 characters is too long (limit 100)');
   });
 
   it('the decimal scanner: grammar and extremes', () => {
@@ -151,11 +140,7 @@ describe('values are checked after every scaling step', () => {
       'f.ies',
       'f.ies line 12: candela value 1e+308 × scale 1 at horizontal angle 0, vertical angle 90 exceeds 1000000000 cd',
     ],
-    'integrated flux over 1e7 lm': [
-      iso('1 -1 1e4 19 1 1 2 0 0 0', undefined, '1e5 1e5 1e5 1e5 1e5 1e5 1e5 1e5 1e5 1e5'),
-      'g.ies',
-      'g.ies: integrated flux 6836000000 lm is out of range (0 to 10000000 lm)',
-    ],
+    'integrated flux over 1e7 lm': [iso('1 -1 1e4 19 1 1 2 0 0 0', undefined, '1e5 1e5 1e5 1e5 1e5 1e5 1e5 1e5 1e5 1e5'), 'g.ies', 'g.ies: integrated flux 6836000000 lm is out of range (0 to 10000000 lm)'],
     'lumens per lamp 1e308 (stated lumens Infinity)': [iso('1 1e308 1 19 1 1 2 0 0 0'), 'l.ies', 'l.ies line 7: lumens per lamp 1e+308 is out of range (0.001 to 10000000)'],
     'lamps × lumens per lamp over 1e7': [iso('1000 1e6 1 19 1 1 2 0 0 0'), 'n.ies', 'n.ies line 7: stated lumens (lamps × lumens per lamp × ballast factor) 1000000000 is out of range'],
     'lumens per lamp 5e-324': [iso('1 5e-324 1 19 1 1 2 0 0 0'), 's.ies', 's.ies line 7: lumens per lamp 5e-324 is out of range'],
@@ -164,11 +149,7 @@ describe('values are checked after every scaling step', () => {
     'candela "Infinity"': [iso(undefined, undefined, '100 Infinity'), 'inf.ies', 'inf.ies line 12: expected 19 candela values, found 1: expected a candela value, found "Infinity"'],
     'candela 1e400': [iso(undefined, undefined, '100 1e400'), 'e.ies', 'e.ies line 12: expected 19 candela values, found 1: a candela value "1e400" is out of range'],
     'multiplier -0': [iso('1 -1 -0 19 1 1 2 0 0 0'), 'z.ies', 'z.ies line 7: candela multiplier must be positive, found 0'],
-    'TILT factor 0 at tilt 0 (zero scale)': [
-      ISO.replace('TILT=NONE', 'TILT=INCLUDE\n1\n2\n0 90\n0 1'),
-      't.ies',
-      't.ies line 6: the TILT factor at tilt 0 is 0: every candela value would be 0',
-    ],
+    'TILT factor 0 at tilt 0 (zero scale)': [ISO.replace('TILT=NONE', 'TILT=INCLUDE\n1\n2\n0 90\n0 1'), 't.ies', 't.ies line 6: the TILT factor at tilt 0 is 0: every candela value would be 0'],
     'LDT conversion factor 1e308 (was NaN cd)': [ldtWith(23, '1e308'), 'c.ldt', 'c.ldt line 24: intensity conversion factor 1e+308 is out of range (0.000001 to 1000000)'],
     'LDT lamp flux 5e-324 (was a zero scale)': [ldtWith(28, '5e-324'), 'z.ldt', 'z.ldt line 29: lamp flux (set 1, lm) 5e-324 is out of range (0.001 to 10000000)'],
     'LDT lamp flux 1e308': [ldtWith(28, '1e308'), 'y.ldt', 'y.ldt line 29: lamp flux (set 1, lm) 1e+308 is out of range'],
@@ -234,9 +215,7 @@ describe('EULUMDAT is line-based: empty optional lines are "not given"', () => {
     // One direct-ratio line deleted: the first C angle becomes ratio 10 and the C list runs into the γ list.
     const lines = LDT.split(LDT_NL);
     lines.splice(32, 1);
-    expect(refusal(lines.join(LDT_NL), 'dr.ldt')).toBe(
-      'dr.ldt line 66: expected 24 C-plane angles, found 23 before 0, which does not ascend after 345 (the count in the header does not match the data, or the angles are out of order)',
-    );
+    expect(refusal(lines.join(LDT_NL), 'dr.ldt')).toBe('dr.ldt line 66: expected 24 C-plane angles, found 23 before 0, which does not ascend after 345 (the count in the header does not match the data, or the angles are out of order)');
     expect(refusal(ldtWith(35, 'abc'), 'txt.ldt')).toBe('txt.ldt line 36: expected direct ratio 4 of 10 (a number or an empty line), found "abc"');
   });
 

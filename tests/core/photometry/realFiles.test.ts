@@ -120,7 +120,11 @@ describe('shared photometric files', () => {
       ['rab_pipxl70_flood_type_b_feet.ies', true],
     ] as const) {
       const text = readFileSync(`public/ies/${file}`, 'latin1');
-      const nums = text.slice(text.indexOf('TILT=NONE') + 9).trim().split(/\s+/).map(Number);
+      const nums = text
+        .slice(text.indexOf('TILT=NONE') + 9)
+        .trim()
+        .split(/\s+/)
+        .map(Number);
       const [, , mult, nV, nH] = nums;
       const ballast = nums[10];
       const vs = nums.slice(13, 13 + nV);

@@ -10,9 +10,7 @@ const ISO = readFileSync(`${FIXTURE_DIR}/c_rotational_isotropic.ies`, 'latin1');
 describe('photometry warnings', () => {
   it('a 360° plane that differs from the 0° plane is said; the 0° plane is used', () => {
     const ph = loadFixture('c_full_360_seam_differs.ies');
-    expect(photometryWarnings(ph)).toEqual([
-      'the 360° plane differs from the 0° plane (by up to 30 cd, 16.7 % of their peak, at γ 0°); the 0° plane is used for both',
-    ]);
+    expect(photometryWarnings(ph)).toEqual(['the 360° plane differs from the 0° plane (by up to 30 cd, 16.7 % of their peak, at γ 0°); the 0° plane is used for both']);
     const same = loadFixture('c_full_360.ies');
     expect(photometryWarnings(same)).toEqual([]);
     // Everything but the dropped 360° plane is the same light.
@@ -24,9 +22,7 @@ describe('photometry warnings', () => {
     const ph = loadFixture('lumens_mismatch_60x.ies');
     expect(ph.statedLumens).toBe(34);
     expect(integrateFlux(ph)).toBeCloseTo(2047.1, 1);
-    expect(photometryWarnings(ph)).toEqual([
-      'stated lumens 34 lm and integrated flux 2047 lm differ by 5921 % (ratio 60.21); the integrated flux of the candela data is used',
-    ]);
+    expect(photometryWarnings(ph)).toEqual(['stated lumens 34 lm and integrated flux 2047 lm differ by 5921 % (ratio 60.21); the integrated flux of the candela data is used']);
     // The file it was derived from states 2044 lm: no warning.
     expect(photometryWarnings(loadReal('bega_84693_narrow_spot.ies'))).toEqual([]);
   });
@@ -34,13 +30,9 @@ describe('photometry warnings', () => {
   it('relative photometry: a light output ratio above 1.05 or below 0.1 is said', () => {
     // Isotropic 100 cd = 1256.6 lm against 1000 lamp lumens: LOR 1.257.
     const high = parsePhotometry(ISO.replace('1 -1 1 19', '1 1000 1 19'), 'high.ies');
-    expect(photometryWarnings(high)).toEqual([
-      'integrated flux 1257 lm exceeds the stated lamp lumens 1000 lm (light output ratio 1.257 > 1); the candela data is used',
-    ]);
+    expect(photometryWarnings(high)).toEqual(['integrated flux 1257 lm exceeds the stated lamp lumens 1000 lm (light output ratio 1.257 > 1); the candela data is used']);
     const low = parsePhotometry(ISO.replace('1 -1 1 19', '1 20000 1 19'), 'low.ies');
-    expect(photometryWarnings(low)).toEqual([
-      'integrated flux 1257 lm is only 6.283 % of the stated lamp lumens 20000 lm; the candela data is used',
-    ]);
+    expect(photometryWarnings(low)).toEqual(['integrated flux 1257 lm is only 6.283 % of the stated lamp lumens 20000 lm; the candela data is used']);
     expect(photometryWarnings(parsePhotometry(ISO.replace('1 -1 1 19', '1 1500 1 19'), 'ok.ies'))).toEqual([]);
   });
 

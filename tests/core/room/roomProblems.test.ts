@@ -20,20 +20,75 @@ describe('roomProblems', () => {
   });
 
   it('names the outline problems with code, params and path', () => {
-    expect(first(withOutline([[0, 0], [1, 0]]))).toMatchObject({ code: 'room-corner-count', params: { count: 2, min: 3, max: 64 } });
-    expect(first(withOutline([[0, 0], [4, 0], [4, 0.05], [4, 3], [0, 3]]))).toMatchObject({
+    expect(
+      first(
+        withOutline([
+          [0, 0],
+          [1, 0],
+        ]),
+      ),
+    ).toMatchObject({ code: 'room-corner-count', params: { count: 2, min: 3, max: 64 } });
+    expect(
+      first(
+        withOutline([
+          [0, 0],
+          [4, 0],
+          [4, 0.05],
+          [4, 3],
+          [0, 3],
+        ]),
+      ),
+    ).toMatchObject({
       code: 'room-wall-short',
       path: 'room.outline[1]',
       params: { wall: 1, length: 0.05, min: 0.1 },
       message: 'wall 1 (corner 1 to corner 2) is 0.05 m long; each wall must be at least 0.1 m',
     });
     // Corners 1 and 3 of this dart are 0.05 m apart though no wall is short.
-    expect(first(withOutline([[0, 0], [3, 1], [0, 2], [3.05, 1], [4, 3], [-1, 3]]))).toMatchObject({ code: 'room-corners-close', params: { corner: 1, other: 3, distance: 0.05 } });
+    expect(
+      first(
+        withOutline([
+          [0, 0],
+          [3, 1],
+          [0, 2],
+          [3.05, 1],
+          [4, 3],
+          [-1, 3],
+        ]),
+      ),
+    ).toMatchObject({ code: 'room-corners-close', params: { corner: 1, other: 3, distance: 0.05 } });
     // A bow tie: walls 0 and 2 cross.
-    expect(first(withOutline([[0, 0], [2, 2], [2, 0], [0, 2]]))).toMatchObject({ code: 'room-self-intersection', params: { wall: 0, other: 2 } });
+    expect(
+      first(
+        withOutline([
+          [0, 0],
+          [2, 2],
+          [2, 0],
+          [0, 2],
+        ]),
+      ),
+    ).toMatchObject({ code: 'room-self-intersection', params: { wall: 0, other: 2 } });
     // Wall 2 folds back along wall 1.
-    expect(first(withOutline([[0, 0], [4, 0], [4, 3], [4, 1], [0, 3]]))).toMatchObject({ code: 'room-self-intersection', params: { wall: 1, other: 2 } });
-    expect(first(withOutline([[0, 0], [4, 0], [4, Number.NaN]]))).toMatchObject({ code: 'room-corner-invalid', path: 'room.outline[2]' });
+    expect(
+      first(
+        withOutline([
+          [0, 0],
+          [4, 0],
+          [4, 3],
+          [4, 1],
+          [0, 3],
+        ]),
+      ),
+    ).toMatchObject({ code: 'room-self-intersection', params: { wall: 1, other: 2 } });
+    expect(
+      first(
+        withOutline([
+          [0, 0],
+          [4, 0],
+          [4, Number.NaN],
+        ]),
+      ),
+    ).toMatchObject({ code: 'room-corner-invalid', path: 'room.outline[2]' });
   });
 
   it('names the slope problems', () => {
@@ -42,7 +97,15 @@ describe('roomProblems', () => {
     expect(slope({ wall: 0, kneeHeight: 1, pitch: 90 })).toMatchObject({ code: 'room-slope-pitch', path: 'room.slopes[0].pitch' });
     expect(slope({ wall: 0, kneeHeight: 1, pitch: 0 })).toMatchObject({ code: 'room-slope-pitch' });
     expect(slope({ wall: 0, kneeHeight: 2.7, pitch: 30 })).toMatchObject({ code: 'room-slope-knee', params: { slope: 0, value: '2.7', height: 2.6 } });
-    expect(first({ ...attic, slopes: [{ wall: 0, kneeHeight: 1, pitch: 30 }, { wall: 0, kneeHeight: 1.5, pitch: 20 }] })).toMatchObject({ code: 'room-slope-twice', params: { slope: 1, other: 0, wall: 0 } });
+    expect(
+      first({
+        ...attic,
+        slopes: [
+          { wall: 0, kneeHeight: 1, pitch: 30 },
+          { wall: 0, kneeHeight: 1.5, pitch: 20 },
+        ],
+      }),
+    ).toMatchObject({ code: 'room-slope-twice', params: { slope: 1, other: 0, wall: 0 } });
     // In the L, a steep slope on wall 2 ((6, 3) → (3.5, 3), facing north into the east wing) runs on beyond
     // its wall's line over the west wing: at corner 4 (3.5, 5) the plane is 0.5 − tan 60°·2 < 0.
     expect(first({ ...issueExample, slopes: [{ wall: 2, kneeHeight: 0.5, pitch: 60 }], openings: [] })).toMatchObject({ code: 'room-ceiling-below-floor', path: 'room.outline[4]', params: { corner: 4 } });

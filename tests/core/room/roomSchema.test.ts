@@ -20,10 +20,28 @@ describe('version-3 room schema', () => {
     expect(roomSchema.safeParse({ ...attic, slopes: [{ wall: 0, kneeHeight: 1.2, pitch: 40, reflectance: 0.6 }] }).success).toBe(true);
   });
 
-  it('refuses bad structure with zod\'s path and message', () => {
+  it("refuses bad structure with zod's path and message", () => {
     expect(firstIssue({ ...attic, width: 4 })).toMatchObject({ code: 'unrecognized_keys' });
-    expect(firstIssue({ ...attic, outline: [[0, 0], [1, 0]] }).where).toBe('outline: needs at least 3 corners');
-    expect(firstIssue({ ...attic, outline: [[0, 0], [4, 0], [4, 'x'], [0, 6]] }).where).toBe('outline.2.1: must be a number, got "x"');
+    expect(
+      firstIssue({
+        ...attic,
+        outline: [
+          [0, 0],
+          [1, 0],
+        ],
+      }).where,
+    ).toBe('outline: needs at least 3 corners');
+    expect(
+      firstIssue({
+        ...attic,
+        outline: [
+          [0, 0],
+          [4, 0],
+          [4, 'x'],
+          [0, 6],
+        ],
+      }).where,
+    ).toBe('outline.2.1: must be a number, got "x"');
     expect(firstIssue({ ...attic, height: 0 }).where).toBe('height: 0 m is outside 0.1..500 m');
     expect(firstIssue({ ...attic, slopes: [{ wall: 0, kneeHeight: 1, pitch: 95 }] }).where).toBe('slopes.0.pitch: 95° is not between 0° and 90°');
     expect(firstIssue({ ...attic, slopes: [{ wall: 0.5, kneeHeight: 1, pitch: 30 }] }).where).toBe('slopes.0.wall: must be a whole number');
@@ -32,12 +50,33 @@ describe('version-3 room schema', () => {
     expect(firstIssue({ ...attic, reflectance: { floor: 0.2, ceiling: 0.8 } }).where).toBe('reflectance.walls: is missing');
   });
 
-  it('refuses each geometric rule with its message at its path, and the rule\'s code', () => {
-    expect(firstIssue({ ...attic, outline: [[0, 0], [4, 0], [4, 0.05], [4, 6], [0, 6]] })).toEqual({
+  it("refuses each geometric rule with its message at its path, and the rule's code", () => {
+    expect(
+      firstIssue({
+        ...attic,
+        outline: [
+          [0, 0],
+          [4, 0],
+          [4, 0.05],
+          [4, 6],
+          [0, 6],
+        ],
+      }),
+    ).toEqual({
       where: 'outline.1: wall 1 (corner 1 to corner 2) is 0.05 m long; each wall must be at least 0.1 m',
       code: 'room-wall-short',
     });
-    expect(firstIssue({ ...attic, outline: [[0, 0], [2, 2], [2, 0], [0, 2]] })).toEqual({ where: 'outline.2: wall 0 and wall 2 cross or touch; the outline must not intersect itself', code: 'room-self-intersection' });
+    expect(
+      firstIssue({
+        ...attic,
+        outline: [
+          [0, 0],
+          [2, 2],
+          [2, 0],
+          [0, 2],
+        ],
+      }),
+    ).toEqual({ where: 'outline.2: wall 0 and wall 2 cross or touch; the outline must not intersect itself', code: 'room-self-intersection' });
     expect(firstIssue({ ...attic, slopes: [{ wall: 0, kneeHeight: 3, pitch: 30 }] })).toEqual({
       where: 'slopes.0.kneeHeight: slope 0 has a knee height of 3 m; it must lie between 0 and the ceiling height 2.6 m',
       code: 'room-slope-knee',

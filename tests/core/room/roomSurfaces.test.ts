@@ -33,7 +33,7 @@ function closure(surfaces: RoomSurface[]): { sum: Point3; volume: number } {
 }
 
 describe('room geometry', () => {
-  it('the rectangle outline is today\'s box: the same six faces, names and inward normals', () => {
+  it("the rectangle outline is today's box: the same six faces, names and inward normals", () => {
     const box = { width: 4, height: 2.6, depth: 3, reflectance: { floor: 0.2, ceiling: 0.8, north: 0.5, east: 0.6, south: 0.4, west: [0.1, 0.2, 0.3] as [number, number, number] } };
     const room = normaliseRoom(boxRoomInput(box));
     expect(room.reversed).toBe(false);
@@ -45,7 +45,12 @@ describe('room geometry', () => {
       const s = byId(surfaces, id);
       // The face's four corners: u and v over their extents, the normal axis at 0 or the extent.
       const corners: Point3[] = [];
-      for (const [u, v] of [[0, 0], [1, 0], [1, 1], [0, 1]]) {
+      for (const [u, v] of [
+        [0, 0],
+        [1, 0],
+        [1, 1],
+        [0, 1],
+      ]) {
         const p: Point3 = [0, 0, 0];
         p[face.axis] = face.side === 0 ? 0 : extent[face.axis];
         p[face.uAxis] = u * extent[face.uAxis];
@@ -103,7 +108,15 @@ describe('room geometry', () => {
     expect(surfaces.map((s) => s.id)).toEqual(['floor', 'slope-0', 'slope-1', 'wall-0', 'wall-1', 'wall-2', 'wall-3']);
     const east = byId(surfaces, 'wall-1');
     // In the east wall's frame (u from (5, 0) toward (5, 4), v up): (0,0), (4,0), (4,1), ridge (2,3), (0,1).
-    expect(sortedPoints(east.polygons2d[0].map(([u, v]): Point3 => [u, v, 0]))).toEqual(sortedPoints([[0, 0, 0], [4, 0, 0], [4, 1, 0], [2, 3, 0], [0, 1, 0]]));
+    expect(sortedPoints(east.polygons2d[0].map(([u, v]): Point3 => [u, v, 0]))).toEqual(
+      sortedPoints([
+        [0, 0, 0],
+        [4, 0, 0],
+        [4, 1, 0],
+        [2, 3, 0],
+        [0, 1, 0],
+      ]),
+    );
     expect(east.area).toBeCloseTo(4 + 4, 12); // 4 × 1 below the knee, a 4 × 2 triangle above
     expect(byId(surfaces, 'slope-0').area).toBeCloseTo(5 * 2 * Math.SQRT2, 12);
     const { sum, volume } = closure(surfaces);
@@ -111,14 +124,21 @@ describe('room geometry', () => {
     expect(volume).toBeCloseTo(5 * 8, 10);
   });
 
-  it('the L with the issue\'s slope and door: inside test, a hole in wall 4, closed', () => {
+  it("the L with the issue's slope and door: inside test, a hole in wall 4, closed", () => {
     const room = normaliseRoom(issueExample);
     const surfaces = roomSurfaces(room);
     const wall4 = byId(surfaces, 'wall-4');
     expect(wall4.openings).toHaveLength(1);
     expect(wall4.openings[0].area).toBeCloseTo(1.8, 12);
     // Wall 4 runs (3.5, 5) → (0, 5): the door spans x from 2.7 down to 1.8 at z = 5, y 0..2.
-    expect(sortedPoints(wall4.openings[0].polygon)).toEqual(sortedPoints([[2.7, 0, 5], [1.8, 0, 5], [1.8, 2, 5], [2.7, 2, 5]]));
+    expect(sortedPoints(wall4.openings[0].polygon)).toEqual(
+      sortedPoints([
+        [2.7, 0, 5],
+        [1.8, 0, 5],
+        [1.8, 2, 5],
+        [2.7, 2, 5],
+      ]),
+    );
     expect(wall4.area).toBeCloseTo(3.5 * 2.6 - 1.8, 12);
     expect(pointInsideRoom(room, [5, 1.5, 2])).toBe(true);
     expect(pointInsideRoom(room, [5, 1.5, 4])).toBe(false); // in the notch

@@ -32,7 +32,11 @@ describe('room triangles', () => {
     for (let t = 0; t < mesh.surfaceOf.length; t++) {
       if (mesh.surfaceOf[t] !== wall) continue;
       const p = mesh.positions.slice(9 * t, 9 * t + 9);
-      const tri: PlanPoint[] = [[p[0], p[1]], [p[3], p[4]], [p[6], p[7]]];
+      const tri: PlanPoint[] = [
+        [p[0], p[1]],
+        [p[3], p[4]],
+        [p[6], p[7]],
+      ];
       expect(pointInPolygon([2.25, 1], tri, 0)).toBe(false);
     }
   });

@@ -10,9 +10,22 @@ import { texelArea } from '../../../src/engines/bake/surfaceLayout';
 
 export function basePhotometry(over: Partial<Photometry>): Photometry {
   return {
-    format: 'IES', version: 'test', manufacturer: '', luminaire: '', catalogNumber: '', keywords: {},
-    photometricType: 'C', symmetry: 'rotational', verticalAngles: [0, 180], horizontalAngles: [0], candela: [[1, 1]],
-    statedLumens: null, absolute: true, inputWatts: null, luminousOpening: { width: 0, length: 0, height: 0, shape: 'point' }, warnings: [],
+    format: 'IES',
+    version: 'test',
+    manufacturer: '',
+    luminaire: '',
+    catalogNumber: '',
+    keywords: {},
+    photometricType: 'C',
+    symmetry: 'rotational',
+    verticalAngles: [0, 180],
+    horizontalAngles: [0],
+    candela: [[1, 1]],
+    statedLumens: null,
+    absolute: true,
+    inputWatts: null,
+    luminousOpening: { width: 0, length: 0, height: 0, shape: 'point' },
+    warnings: [],
     ...over,
   };
 }

@@ -18,7 +18,11 @@ import type { Photometry } from '../../../src/core/photometry/types';
 import { alignedAxis, denseIntensity, foldC, resampleProfile } from '../../../src/engines/bake/denseProfileGrid';
 
 const dirs = ['public/ies', 'tests/fixtures/photometry', 'tests/fixtures/bench'];
-const files = dirs.flatMap((d) => readdirSync(d).filter((f) => /\.(ies|ldt)$/i.test(f)).map((f) => join(d, f)));
+const files = dirs.flatMap((d) =>
+  readdirSync(d)
+    .filter((f) => /\.(ies|ldt)$/i.test(f))
+    .map((f) => join(d, f)),
+);
 
 /** Mulberry32: a seeded generator, so the directions are the same every run. */
 function random(seed: number): () => number {

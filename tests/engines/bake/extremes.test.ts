@@ -41,10 +41,7 @@ describe('extremes stay finite and non-negative', () => {
   });
 
   it('100 m hall: texture size capped, finite', () => {
-    const { maps, report } = baker.bake(
-      { room: uniformRoom(100, 12, 100, 0.5), luminaires: [lampAt(loadIes('interlight_ovni_highbay_latin1_361v.ies'), [50, 11.5, 50])] },
-      { texelSize: 0.025, maxTextureSize: 128, samples: 8, bounces: 2 },
-    );
+    const { maps, report } = baker.bake({ room: uniformRoom(100, 12, 100, 0.5), luminaires: [lampAt(loadIes('interlight_ovni_highbay_latin1_361v.ies'), [50, 11.5, 50])] }, { texelSize: 0.025, maxTextureSize: 128, samples: 8, bounces: 2 });
     expect(allFiniteNonNegative(maps)).toBe(true);
     expect(report.texels.floor).toEqual([128, 128]);
     expect(report.texels.north).toEqual([128, 128]);
@@ -61,7 +58,7 @@ describe('extremes stay finite and non-negative', () => {
     const expected = 1e5 / (3 * 3 + 2 * 0.005 ** 2);
     expect(Math.abs(texelE - expected) / expected).toBeLessThan(0.01);
     // Beyond 1° from the axis (3·tan 1° = 5.2 cm) there is no direct light.
-    const outside = ((100) * 200 + 100 + 7) * 3;
+    const outside = (100 * 200 + 100 + 7) * 3;
     expect(floor.direct[outside]).toBe(0);
   });
 
@@ -76,7 +73,10 @@ describe('extremes stay finite and non-negative', () => {
     const scene = {
       version: 1,
       room: { width: 5, height: 2.8, depth: 4, reflectance: { floor: 0.2, ceiling: 0.8, north: 0.5, south: 0.5, west: 0.5, east: 0.5 } },
-      luminaires: [{ photometry: 'a.ies', position: [2, 2, 2], yaw: 0, pitch: 0, roll: 0 }, { photometry: 'a.ies', position: [2, 2, 4.5], yaw: 0, pitch: 0, roll: 0 }],
+      luminaires: [
+        { photometry: 'a.ies', position: [2, 2, 2], yaw: 0, pitch: 0, roll: 0 },
+        { photometry: 'a.ies', position: [2, 2, 4.5], yaw: 0, pitch: 0, roll: 0 },
+      ],
     };
     expect(() => parseLightingScene(scene, 'scene.json')).toThrow(InputError);
     expect(() => parseLightingScene(scene, 'scene.json')).toThrow('scene.json: luminaires[1].position[2]: 4.5 m is beyond the south wall (z = depth 4 m): luminaires must be inside the room');

@@ -22,7 +22,7 @@ requireFloatTargets(gl);
 /** Seeded LCG in [0, 1). */
 function random(seed: number): () => number {
   let s = seed >>> 0;
-  return () => ((s = (Math.imul(s, 1664525) + 1013904223) >>> 0) / 2 ** 32);
+  return () => (s = (Math.imul(s, 1664525) + 1013904223) >>> 0) / 2 ** 32;
 }
 
 describe('GPU flux reduction', () => {
@@ -30,12 +30,19 @@ describe('GPU flux reduction', () => {
     // Sizes that are not powers of 4, down to 1×1 and 1×n, so partial blocks are exercised.
     const room = { width: 3.3, height: 0.05, depth: 1.7 };
     const layouts = surfaceLayouts(room, 0.05, 512);
-    const rho: Rgb[] = [[0.2, 0.3, 0.4], [0.8, 0.8, 0.8], [0.5, 0.1, 0.9], [0.95, 0.95, 0.95], [0, 0, 0], [0.6, 0.5, 0.4]];
+    const rho: Rgb[] = [
+      [0.2, 0.3, 0.4],
+      [0.8, 0.8, 0.8],
+      [0.5, 0.1, 0.9],
+      [0.95, 0.95, 0.95],
+      [0, 0, 0],
+      [0.6, 0.5, 0.4],
+    ];
     const next = random(7);
     const data = layouts.map((l, s) => {
       const a = new Float32Array(l.width * l.height * 3);
       for (let i = 0; i < a.length; i++) a[i] = next() * 10;
-      if (s === 2) a[3 * Math.floor(l.width * l.height / 2)] = 3e7; // a spot on one texel, red channel
+      if (s === 2) a[3 * Math.floor((l.width * l.height) / 2)] = 3e7; // a spot on one texel, red channel
       return a;
     });
     const targets = layouts.map((l, s) => {

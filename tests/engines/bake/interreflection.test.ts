@@ -62,8 +62,7 @@ describe('grey furnace: uniform emission, uniform ρ, per texel', () => {
   const room = { width: 3, height: 2.5, depth: 4 };
   const settings = { texelSize: 0.125, samples: 16, bounces: 3 };
   const layouts = surfaceLayouts(room, settings.texelSize, resolveBakeSettings().maxTextureSize);
-  const emission = (e0: number) =>
-    Object.fromEntries(layouts.map((l) => [l.name, new Float32Array(l.width * l.height * 3).fill(e0)])) as Record<SurfaceName, Float32Array>;
+  const emission = (e0: number) => Object.fromEntries(layouts.map((l) => [l.name, new Float32Array(l.width * l.height * 3).fill(e0)])) as Record<SurfaceName, Float32Array>;
 
   it('grey ρ = 0.7: every texel E0·ρ/(1−ρ) within 0.1 % (tail), and E0·(ρ+ρ²+ρ³) without it', () => {
     const e0 = 100;

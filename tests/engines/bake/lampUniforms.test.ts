@@ -95,8 +95,7 @@ describe('direct passes with the lamps as uniforms', () => {
   it('are the same programs for the same photometry wherever the lamp is (profile code included)', () => {
     const settings = resolveBakeSettings(SETTINGS);
     const layouts = surfaceLayouts(room, settings.texelSize, settings.maxTextureSize);
-    const at = (position: BakeLuminaire['position'], yaw: number, photometry: Photometry = pendant) =>
-      prepareLamps({ room, luminaires: [{ photometry, position, yaw, pitch: 0, roll: 0 }] }, settings).lamps;
+    const at = (position: BakeLuminaire['position'], yaw: number, photometry: Photometry = pendant) => prepareLamps({ room, luminaires: [{ photometry, position, yaw, pitch: 0, roll: 0 }] }, settings).lamps;
     const a = at([0.9, 2.0, 0.9], 0);
     const b = at([1.7, 2.2, 2.1], 70);
     expect(a[0].sources).not.toEqual(b[0].sources);

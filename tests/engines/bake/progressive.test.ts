@@ -61,7 +61,10 @@ describe('basis maps per luminaire group (light is linear)', () => {
     const whole = baker.bake({ room, luminaires: [a, b] }, settings).maps;
     const onlyA = baker.bake({ room, luminaires: [a] }, settings).maps;
     const onlyB = baker.bake({ room, luminaires: [b] }, settings).maps;
-    const sum = combineMaps([{ maps: onlyA, weight: 1 }, { maps: onlyB, weight: 1 }]);
+    const sum = combineMaps([
+      { maps: onlyA, weight: 1 },
+      { maps: onlyB, weight: 1 },
+    ]);
     for (const name of SURFACE_NAMES) {
       const x = sum[name].direct;
       const y = whole[name].direct;

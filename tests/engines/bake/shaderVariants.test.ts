@@ -92,7 +92,10 @@ describe('generated shaders compile', () => {
     const lamp: DirectLamp = {
       profile: table.layouts[1],
       rotation: luminaireRotation(0, 10, 0),
-      sources: [[1, 2.2, 2], [1, 2.4, 2]],
+      sources: [
+        [1, 2.2, 2],
+        [1, 2.4, 2],
+      ],
       sides: [-1, 1],
       weight: [1, 1, 1],
     };
@@ -103,7 +106,10 @@ describe('generated shaders compile', () => {
     const lamp: DirectLamp = {
       profile: table.layouts[3],
       rotation: luminaireRotation(0, 10, 0),
-      sources: [[1, 2.2, 2], [1, 2.4, 2]],
+      sources: [
+        [1, 2.2, 2],
+        [1, 2.4, 2],
+      ],
       sides: [-1, 1],
       weight: [1, 1, 1],
     };

@@ -41,7 +41,12 @@ function compareWithReference(scene: LightingScene, files: Record<string, Photom
   const reference = solveBoxReference(scene, files, { patchSize, openingCell: scene.nearField === 'point' ? 0 : 0.05 });
   const points = samplePoints(scene.room, 0.2);
   const ref = points.map(({ surface, point }) => sampleReference(reference, point, surface));
-  const probe = probeScene(bakeScene, maps, {}, points.map((p) => p.point));
+  const probe = probeScene(
+    bakeScene,
+    maps,
+    {},
+    points.map((p) => p.point),
+  );
   const total = relativeErrors(
     probe.map((p) => p.total),
     ref.map((r) => r.total),
@@ -99,8 +104,7 @@ describe('stiff scenes: default settings against the exact reference', () => {
 const cornerSolidAngle = (a: number, b: number, h: number) => Math.sign(a * b) * Math.atan(Math.abs(a * b) / (h * Math.hypot(a, b, h)));
 
 /** Solid angle of [u0,u1]×[v0,v1] from height h above the origin, by inclusion–exclusion of corner rectangles. */
-const rectSolidAngle = (u0: number, u1: number, v0: number, v1: number, h: number) =>
-  cornerSolidAngle(u1, v1, h) - cornerSolidAngle(u0, v1, h) - cornerSolidAngle(u1, v0, h) + cornerSolidAngle(u0, v0, h);
+const rectSolidAngle = (u0: number, u1: number, v0: number, v1: number, h: number) => cornerSolidAngle(u1, v1, h) - cornerSolidAngle(u0, v1, h) - cornerSolidAngle(u1, v0, h) + cornerSolidAngle(u0, v0, h);
 
 describe('texel means of direct light', () => {
   it('isotropic source 5 cm from a wall: each texel holds I·Ω/A (the exact mean), not the centre value', () => {
@@ -154,8 +158,19 @@ describe('near field', () => {
     const reference = solveBoxReference(s, { t: tall }, { patchSize: 0.5 });
     const points = samplePoints(s.room, 0.3);
     const ref = points.map(({ surface, point }) => sampleReference(reference, point, surface));
-    const probe = probeScene(bakeScene, maps, { texelSize: 0.05 }, points.map((p) => p.point));
-    expect(relativeErrors(probe.map((p) => p.direct), ref.map((r) => r.direct), 1e-9).max).toBeLessThan(1e-6);
+    const probe = probeScene(
+      bakeScene,
+      maps,
+      { texelSize: 0.05 },
+      points.map((p) => p.point),
+    );
+    expect(
+      relativeErrors(
+        probe.map((p) => p.direct),
+        ref.map((r) => r.direct),
+        1e-9,
+      ).max,
+    ).toBeLessThan(1e-6);
     // The top face sits 6.7 cm above the centre: the ceiling right above gets I(180°)/(0.15 − 0.067)².
     const above = probeScene(bakeScene, maps, {}, [[1.5, 2.6, 1.5]])[0].direct;
     expect(above / (tall.candela[0][tall.candela[0].length - 1] / (2.6 - 2.45 - 0.067) ** 2)).toBeCloseTo(1, 1);
@@ -174,9 +189,20 @@ describe('near field', () => {
     expect(above / (tall.candela[0][tall.candela[0].length - 1] / 3 / 0.01 ** 2)).toBeLessThan(1.1);
     const reference = solveBoxReference(s, { t: tall }, { patchSize: 0.5 });
     const points = samplePoints(s.room, 0.3);
-    const probe = probeScene(bakeScene, maps, {}, points.map((p) => p.point));
+    const probe = probeScene(
+      bakeScene,
+      maps,
+      {},
+      points.map((p) => p.point),
+    );
     const ref = points.map(({ surface, point }) => sampleReference(reference, point, surface));
-    expect(relativeErrors(probe.map((p) => p.direct), ref.map((r) => r.direct), 1e-9).max).toBeLessThan(1e-6);
+    expect(
+      relativeErrors(
+        probe.map((p) => p.direct),
+        ref.map((r) => r.direct),
+        1e-9,
+      ).max,
+    ).toBeLessThan(1e-6);
   });
 
   it("'point' equals the reference's unsplit model at every probe point (direct exact, total within 3 % RMS)", () => {
@@ -186,9 +212,25 @@ describe('near field', () => {
     const reference = solveBoxReference(s, { p: pendant }, { patchSize: 0.25, openingCell: 0 });
     const points = samplePoints(s.room, 0.3);
     const ref = points.map(({ surface, point }) => sampleReference(reference, point, surface));
-    const probe = probeScene(bakeScene, maps, { texelSize: 0.05 }, points.map((p) => p.point));
-    expect(relativeErrors(probe.map((p) => p.direct), ref.map((r) => r.direct), 1e-9).max).toBeLessThan(1e-6);
-    expect(relativeErrors(probe.map((p) => p.total), ref.map((r) => r.total)).rms).toBeLessThan(0.03);
+    const probe = probeScene(
+      bakeScene,
+      maps,
+      { texelSize: 0.05 },
+      points.map((p) => p.point),
+    );
+    expect(
+      relativeErrors(
+        probe.map((p) => p.direct),
+        ref.map((r) => r.direct),
+        1e-9,
+      ).max,
+    ).toBeLessThan(1e-6);
+    expect(
+      relativeErrors(
+        probe.map((p) => p.total),
+        ref.map((r) => r.total),
+      ).rms,
+    ).toBeLessThan(0.03);
     expect(averageLux(maps, 'total')).toBeGreaterThan(0);
   });
 });

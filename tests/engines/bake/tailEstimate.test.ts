@@ -33,7 +33,12 @@ describe('fluxRecord', () => {
   });
 
   it('maxFluxRatio: the largest reflectance, kept below 1 so that r/(1−r) stays finite', () => {
-    expect(maxFluxRatio([[0.2, 0.5, 0.1], [0.3, 0.3, 0.3]])).toBe(0.5);
+    expect(
+      maxFluxRatio([
+        [0.2, 0.5, 0.1],
+        [0.3, 0.3, 0.3],
+      ]),
+    ).toBe(0.5);
     expect(maxFluxRatio([[1, 1, 1]])).toBe(0.9999);
   });
 });

@@ -43,8 +43,7 @@ describe('importMesh: broken files are InputErrors naming the file (and the OBJ 
     new DataView(out.buffer).setUint32(offset, value, true);
     return out;
   };
-  const gltfJson = (): Record<string, unknown> & { accessors: Record<string, unknown>[]; nodes: Record<string, unknown>[] } =>
-    JSON.parse(readFileSync(join(MODELS, 'table.gltf'), 'utf8'));
+  const gltfJson = (): Record<string, unknown> & { accessors: Record<string, unknown>[]; nodes: Record<string, unknown>[] } => JSON.parse(readFileSync(join(MODELS, 'table.gltf'), 'utf8'));
 
   it.each<[string, () => MeshFile, string]>([
     ['wrong GLB magic', () => ({ name: 'x.glb', bytes: withU32(glb(), 0, 0x12345678) }), 'x.glb: not a GLB file (the first 4 bytes are not "glTF")'],
@@ -100,9 +99,7 @@ describe('importMesh: broken files are InputErrors naming the file (and the OBJ 
   });
 
   it('a file luxbox does not read', async () => {
-    await expect(importMesh([textFile('chair.fbx', 'Kaydara')])).rejects.toThrow(
-      new InputError('chair.fbx: not a model luxbox reads (pick an .obj with its .mtl, or one .gltf or .glb)'),
-    );
+    await expect(importMesh([textFile('chair.fbx', 'Kaydara')])).rejects.toThrow(new InputError('chair.fbx: not a model luxbox reads (pick an .obj with its .mtl, or one .gltf or .glb)'));
   });
 });
 
@@ -130,12 +127,7 @@ function corruptObj(text: string, rng: Rng): string {
 }
 
 describe('importMesh: seeded fuzz of the fixtures (only InputError or a valid mesh)', () => {
-  const seeds: MeshFile[][] = [
-    [modelFile('table.obj'), modelFile('table.mtl')],
-    [modelFile('table.gltf')],
-    [modelFile('table.glb')],
-    [modelFile('table-external.gltf'), modelFile('table-external.bin')],
-  ];
+  const seeds: MeshFile[][] = [[modelFile('table.obj'), modelFile('table.mtl')], [modelFile('table.gltf')], [modelFile('table.glb')], [modelFile('table-external.gltf'), modelFile('table-external.bin')]];
 
   it('150 mutants per fixture', async () => {
     const rng = createRng(20261123);

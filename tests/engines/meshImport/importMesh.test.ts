@@ -71,9 +71,7 @@ describe('importMesh: the fixture table in every format', () => {
     });
     expect(asked).toEqual(['table-external.bin']);
     expect(viaReader.mesh.positions).toEqual(withFile.mesh.positions);
-    await expect(importMesh([modelFile('table-external.gltf')])).rejects.toThrow(
-      new InputError('table-external.gltf: buffers[0]: table-external.bin is missing (pick it together with table-external.gltf)'),
-    );
+    await expect(importMesh([modelFile('table-external.gltf')])).rejects.toThrow(new InputError('table-external.gltf: buffers[0]: table-external.bin is missing (pick it together with table-external.gltf)'));
   });
 
   it('a mirroring node transform keeps the faces counterclockwise from outside', async () => {
@@ -109,10 +107,7 @@ describe('importMesh: materials', () => {
       { name: 'white', reflectance: [MAX_REFLECTANCE, MAX_REFLECTANCE, MAX_REFLECTANCE] },
       { name: 'ghost', reflectance: [0.5, 0.5, 0.5] },
     ]);
-    expect(r.warnings).toEqual([
-      `m.mtl: material 'white': Kd [1, 1, 1.2] clamped to [0, ${MAX_REFLECTANCE}] → [${MAX_REFLECTANCE}, ${MAX_REFLECTANCE}, ${MAX_REFLECTANCE}]`,
-      "t.obj: material 'ghost' is not defined in m.mtl; grey 0.5 used",
-    ]);
+    expect(r.warnings).toEqual([`m.mtl: material 'white': Kd [1, 1, 1.2] clamped to [0, ${MAX_REFLECTANCE}] → [${MAX_REFLECTANCE}, ${MAX_REFLECTANCE}, ${MAX_REFLECTANCE}]`, "t.obj: material 'ghost' is not defined in m.mtl; grey 0.5 used"]);
     // Two open triangles from an OBJ (no sides in the format): their back sides follow with the same materials.
     expect(Array.from(r.mesh.materialOfTriangle)).toEqual([0, 1, 0, 1]);
     expect(r.orientation).toMatchObject({ twoSided: 1, backTriangles: 2 });
@@ -130,8 +125,7 @@ describe('importMesh: materials', () => {
 });
 
 describe('importMesh: units', () => {
-  const tableIn = (factor: number): string =>
-    readFileSync(join(MODELS, 'table.obj'), 'utf8').replace(/^v (\S+) (\S+) (\S+)$/gm, (_, x, y, z) => `v ${x * factor} ${y * factor} ${z * factor}`);
+  const tableIn = (factor: number): string => readFileSync(join(MODELS, 'table.obj'), 'utf8').replace(/^v (\S+) (\S+) (\S+)$/gm, (_, x, y, z) => `v ${x * factor} ${y * factor} ${z * factor}`);
 
   it.each([
     [1, 'm'],
@@ -185,10 +179,11 @@ describe('importMesh: the triangle budget (48 000, what a saved configuration ho
   const grid = (n: number): string => {
     const lines: string[] = [];
     for (let j = 0; j <= n; j++) for (let i = 0; i <= n; i++) lines.push(`v ${i / n} 0 ${j / n}`);
-    for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) {
-      const a = j * (n + 1) + i + 1;
-      lines.push(`f ${a} ${a + n + 1} ${a + n + 2} ${a + 1}`);
-    }
+    for (let j = 0; j < n; j++)
+      for (let i = 0; i < n; i++) {
+        const a = j * (n + 1) + i + 1;
+        lines.push(`f ${a} ${a + n + 1} ${a + n + 2} ${a + 1}`);
+      }
     return lines.join('\n');
   };
 

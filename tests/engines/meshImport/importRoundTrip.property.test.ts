@@ -42,10 +42,11 @@ const objModel = fc
 const gridModel = fc.record({ n: fc.integer({ min: 100, max: 135 }), size: fc.double({ min: 0.5, max: 20, noNaN: true }) }).map(({ n, size }): MeshFile[] => {
   const lines: string[] = [];
   for (let j = 0; j <= n; j++) for (let i = 0; i <= n; i++) lines.push(`v ${(i / n) * size} 0 ${(j / n) * size}`);
-  for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) {
-    const a = j * (n + 1) + i + 1;
-    lines.push(`f ${a} ${a + n + 1} ${a + n + 2} ${a + 1}`);
-  }
+  for (let j = 0; j < n; j++)
+    for (let i = 0; i < n; i++) {
+      const a = j * (n + 1) + i + 1;
+      lines.push(`f ${a} ${a + n + 1} ${a + n + 2} ${a + 1}`);
+    }
   return [textFile('grid.obj', lines.join('\n'))];
 });
 

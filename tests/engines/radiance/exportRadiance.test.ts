@@ -92,15 +92,16 @@ describe('Radiance export (docs/radiance.md)', () => {
   it('writes a complete folder: scene, distributions, source.cal, views, grids, script, README', () => {
     const files = exportRadiance(loadRenderInput('tests/fixtures/scenes/small-room.json').bakeScene);
     const paths = files.map((f) => f.path).sort();
-    expect(paths).toEqual(
-      ['README.md', 'luminaires/p0.dat', 'luminaires/p1.dat', 'points/floor.pts', 'points/workplane.pts', 'render.sh', 'scene.rad', 'source.cal', 'views/corner.vf', 'views/eye.vf', 'views/top.vf'].sort(),
-    );
+    expect(paths).toEqual(['README.md', 'luminaires/p0.dat', 'luminaires/p1.dat', 'points/floor.pts', 'points/workplane.pts', 'render.sh', 'scene.rad', 'source.cal', 'views/corner.vf', 'views/eye.vf', 'views/top.vf'].sort());
     expect(files.find((f) => f.path === 'render.sh')!.executable).toBe(true);
     const rad = files.find((f) => f.path === 'scene.rad')!.text;
     // Every file the scene names is in the folder.
     for (const dat of rad.matchAll(/corr (\S+\.dat) source\.cal/g)) expect(paths).toContain(dat[1]);
     // 3 m × 2 m room, 0.25 m grid: 12 × 8 points, "X Y Z 0 0 1".
-    const floor = files.find((f) => f.path === 'points/floor.pts')!.text.trim().split('\n');
+    const floor = files
+      .find((f) => f.path === 'points/floor.pts')!
+      .text.trim()
+      .split('\n');
     expect(floor).toHaveLength(96);
     expect(floor[0]).toBe('0.125 -0.125 0.001 0 0 1');
     // The top view looks straight down with north (+Y) up.

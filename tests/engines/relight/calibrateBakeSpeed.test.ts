@@ -42,7 +42,12 @@ describe('calibrateBakeSpeed on headless-gl', () => {
       // interpolation of cos γ is off by < 0.03 % within the 5° these points see; the texel mean differs from its centre by less.
       const exact = (px: number, pz: number) => sources.reduce((e, [sx, sz]) => e + ((CALIBRATION_PEAK_CD / 10) * h * h) / (h * h + (px - sx) ** 2 + (pz - sz) ** 2) ** 2, 0);
       // The four texels around the centre (5 cm texels, centres 2.5 cm off each axis); the floor's u, v run along x, z.
-      for (const [i, j] of [[29, 29], [30, 29], [29, 30], [30, 30]]) {
+      for (const [i, j] of [
+        [29, 29],
+        [30, 29],
+        [29, 30],
+        [30, 30],
+      ]) {
         const e = y[j * w + i];
         const ref = exact(0.05 * (i + 0.5), 0.05 * (j + 0.5));
         expect(Math.abs(e / ref - 1)).toBeLessThan(0.005);

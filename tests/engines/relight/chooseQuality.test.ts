@@ -1,18 +1,18 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { resolveBakeSettings } from '../../../src/engines/bake/bakeSettings';
-import {
-  chooseQuality,
-  FIRST_LIT_TARGET_MS,
-  levelTexels,
-  predictQuality,
-  SOLVE_TARGET_MS,
-  TYPICAL_QUALITY_SCENE,
-  type BakeCalibration,
-} from '../../../src/engines/relight/calibrateBakeSpeed';
+import { chooseQuality, FIRST_LIT_TARGET_MS, levelTexels, predictQuality, SOLVE_TARGET_MS, TYPICAL_QUALITY_SCENE, type BakeCalibration } from '../../../src/engines/relight/calibrateBakeSpeed';
 import { QUALITY_LEVEL_NAMES, QUALITY_LEVELS } from '../../../src/engines/relight/qualityLevels';
 
-const device = (msPerTexelSample: number, msPerTexelSource: number, directCompileMs = 0, msPerTexelBasis = 0, compileMs = 0): BakeCalibration => ({ msPerTexelSample, msPerTexelSource, msPerTexelBasis, directCompileMs, compileMs, renderer: 'test', work: { texels: 19200, pointSources: 10, samples: 32, bounces: 1 } });
+const device = (msPerTexelSample: number, msPerTexelSource: number, directCompileMs = 0, msPerTexelBasis = 0, compileMs = 0): BakeCalibration => ({
+  msPerTexelSample,
+  msPerTexelSource,
+  msPerTexelBasis,
+  directCompileMs,
+  compileMs,
+  renderer: 'test',
+  work: { texels: 19200, pointSources: 10, samples: 32, bounces: 1 },
+});
 const rank = (level: string) => QUALITY_LEVEL_NAMES.indexOf(level as never);
 
 describe('quality levels: predicted cost', () => {
@@ -50,7 +50,7 @@ describe('chooseQuality', () => {
     expect(ratio * 0.9).toBeGreaterThan(1); // best is more than 1/0.9 times balanced's solve
     const perSource = (0.1 * FIRST_LIT_TARGET_MS) / best.firstLitMs;
     expect(chooseQuality(device(perSample, perSource))).toBe('balanced');
-    expect(chooseQuality(device(perSample * 0.5 / ratio, perSource))).toBe('best');
+    expect(chooseQuality(device((perSample * 0.5) / ratio, perSource))).toBe('best');
   });
 
   it('refuses a calibration without finite costs (a stored one from another version), naming the field', () => {

@@ -25,9 +25,21 @@ const scene = (looks: [number, Rgb][]): BakeScene => ({
   room,
   luminaires: looks.map(([dimming, color], k) => ({ photometry: photometries[k], position: [0.8 + 1.2 * k, 2.3, 0.9 + 0.5 * k] as [number, number, number], yaw: 0, pitch: 15 * k, roll: 0, dimming, color })),
 });
-const A = scene([[1, [1, 0.8, 0.6]], [0.3, [1, 1, 1]], [0, [1, 1, 1]]]);
-const B = scene([[0.2, [1, 0.8, 0.6]], [1, [0.9, 0.95, 1]], [0.8, [1, 0.7, 0.4]]]);
-const C = scene([[0.5, [1, 1, 1]], [0, [1, 1, 1]], [1, [1, 1, 1]]]);
+const A = scene([
+  [1, [1, 0.8, 0.6]],
+  [0.3, [1, 1, 1]],
+  [0, [1, 1, 1]],
+]);
+const B = scene([
+  [0.2, [1, 0.8, 0.6]],
+  [1, [0.9, 0.95, 1]],
+  [0.8, [1, 0.7, 0.4]],
+]);
+const C = scene([
+  [0.5, [1, 1, 1]],
+  [0, [1, 1, 1]],
+  [1, [1, 1, 1]],
+]);
 
 /** A copy of every receiver's direct and total map. */
 function snapshot(lit: LitMaps): { direct: Float32Array; total: Float32Array }[] {

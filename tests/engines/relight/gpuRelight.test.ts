@@ -108,7 +108,13 @@ describe('GPU relight = CPU relight (relightMaps) on the same bases', () => {
       const terms = [{ solution: solution('a'), scale: [1, 1, 1] as Rgb }];
       gpuRelight.relight(parts, terms, byName, atlas);
       const bytes = gpuRelight.textureBytes();
-      for (let k = 1; k <= 10; k++) gpuRelight.relight(parts.map((p) => ({ ...p, weight: p.weight.map((w) => w * (k / 10)) as Rgb })), terms, byName, atlas);
+      for (let k = 1; k <= 10; k++)
+        gpuRelight.relight(
+          parts.map((p) => ({ ...p, weight: p.weight.map((w) => w * (k / 10)) as Rgb })),
+          terms,
+          byName,
+          atlas,
+        );
       expect(gpuRelight.readbacks).toEqual({ count: 0, bytes: 0 });
       expect(gpuRelight.textureBytes()).toBe(bytes);
       // 12 bases: two draws for each direct map (8 + 4; the off module skipped), one for each total map.

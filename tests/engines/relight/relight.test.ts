@@ -52,34 +52,33 @@ describe('relighting = weighted direct bases + one shared indirect solve', () =>
     ['pure Monte Carlo', { brightPatches: 0 }, false],
     ['default bright patches', {}, false],
     ['with objects', {}, true],
-  ] as const) it(`matches a full bake of the dimmed, coloured scene (${label}): direct to 1e-5, total to 1e-5 of the peak`, () => {
-    const settings = { ...SETTINGS, ...extra, ...(objects ? OBJECT_SETTINGS : {}) };
-    const engine = createRelightEngine(gl, settings);
-    const weights: [number, Rgb][] = [
-      [0.3, [1, 0.8, 0.6]],
-      [0.9, [0.7, 0.9, 1]],
-    ];
-    const scene: BakeScene = {
-      room,
-      // With objects, synthetic point-source spots: a real file's luminous opening splits into
-      // many point sources, each traced against the objects per sub-sample (slow on software GL).
-      luminaires: objects
-        ? [lum(synthSpot, 1, 1, ...weights[0]), lum(synthWide, 2.1, 2.5, ...weights[1])]
-        : [lum(spot, 1, 1, ...weights[0]), lum(down, 2.1, 2.5, ...weights[1])],
-      ...(objects ? { objects: [table] } : {}),
-    };
-    engine.setScene(scene);
-    engine.finish();
-    expect(engine.counters.indirectSolves).toBe(1);
-    const lit = engine.maps();
-    const reference = createBaker(gl).bake(scene, settings).maps;
-    const d = compareWithBake(lit, reference);
-    expect(d.peak).toBeGreaterThan(100);
-    if (objects) expect(d.objectTexels).toBeGreaterThan(20);
-    expect(d.direct / d.peak).toBeLessThan(1e-5);
-    expect(d.total / d.peak).toBeLessThan(1e-5);
-    engine.dispose();
-  });
+  ] as const)
+    it(`matches a full bake of the dimmed, coloured scene (${label}): direct to 1e-5, total to 1e-5 of the peak`, () => {
+      const settings = { ...SETTINGS, ...extra, ...(objects ? OBJECT_SETTINGS : {}) };
+      const engine = createRelightEngine(gl, settings);
+      const weights: [number, Rgb][] = [
+        [0.3, [1, 0.8, 0.6]],
+        [0.9, [0.7, 0.9, 1]],
+      ];
+      const scene: BakeScene = {
+        room,
+        // With objects, synthetic point-source spots: a real file's luminous opening splits into
+        // many point sources, each traced against the objects per sub-sample (slow on software GL).
+        luminaires: objects ? [lum(synthSpot, 1, 1, ...weights[0]), lum(synthWide, 2.1, 2.5, ...weights[1])] : [lum(spot, 1, 1, ...weights[0]), lum(down, 2.1, 2.5, ...weights[1])],
+        ...(objects ? { objects: [table] } : {}),
+      };
+      engine.setScene(scene);
+      engine.finish();
+      expect(engine.counters.indirectSolves).toBe(1);
+      const lit = engine.maps();
+      const reference = createBaker(gl).bake(scene, settings).maps;
+      const d = compareWithBake(lit, reference);
+      expect(d.peak).toBeGreaterThan(100);
+      if (objects) expect(d.objectTexels).toBeGreaterThan(20);
+      expect(d.direct / d.peak).toBeLessThan(1e-5);
+      expect(d.total / d.peak).toBeLessThan(1e-5);
+      engine.dispose();
+    });
 
   it('dimming and colour changes bake no group and re-solve once; a moved luminaire bakes only its group; a room change bakes all', () => {
     // Pure Monte Carlo without the tail: the solve is then a linear operator of its direct maps

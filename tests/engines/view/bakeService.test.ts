@@ -99,7 +99,16 @@ describe('fence-limited slices', () => {
   it('never has more than one slice in flight, and sizes slices by the time until the fence signalled', () => {
     const q = manualQueue();
     const d = gpuBound(400);
-    const slicer = createBakeSlicer({ engine: () => d.engine, onSlice: () => {}, onError: (m) => { throw new Error(m); }, defer: q.defer, now: () => d.clock.t, fence: d.fence });
+    const slicer = createBakeSlicer({
+      engine: () => d.engine,
+      onSlice: () => {},
+      onError: (m) => {
+        throw new Error(m);
+      },
+      defer: q.defer,
+      now: () => d.clock.t,
+      fence: d.fence,
+    });
     slicer.run();
     // A second request while the first slice is in flight only queues it behind the fence.
     slicer.run();
@@ -203,7 +212,13 @@ describe('createBakeService on a real engine (headless-gl)', () => {
     const gl = createHeadlessGL();
     const canvas = () => ({ getContext: () => gl, addEventListener: () => {}, removeEventListener: () => {} });
     const s = createBakeService({ quality: 'fast', visibility: page as unknown as VisibilitySource, input: null, canvas, defer: q.defer, lowMemory });
-    return { s, dispose: () => { s.dispose(); gl.destroy(); } };
+    return {
+      s,
+      dispose: () => {
+        s.dispose();
+        gl.destroy();
+      },
+    };
   }
 
   it('pauses while the page is hidden (counters and maps stay still, nothing queued) and resumes when visible', () => {
@@ -237,16 +252,22 @@ describe('createBakeService on a real engine (headless-gl)', () => {
     expect(page.listeners).toBe(0);
   });
 
-  it('luminaireWeights: the scene\'s dimming × colour, with the overlay, and during a crossfade (1 − e)·from + e·scene (the glow follows them)', () => {
+  it("luminaireWeights: the scene's dimming × colour, with the overlay, and during a crossfade (1 − e)·from + e·scene (the glow follows them)", () => {
     const q = manualQueue();
     const { s, dispose } = service(fakePage(), q);
     try {
       expect(s.luminaireWeights()).toBeNull();
       const coloured: BakeScene = { ...scene, luminaires: [{ ...scene.luminaires[0], dimming: 0.5, color: [1, 0.8, 0.6] }, scene.luminaires[1]] };
       s.setScene(coloured);
-      expect(s.luminaireWeights()).toEqual([[0.5, 0.4, 0.3], [1, 1, 1]]);
+      expect(s.luminaireWeights()).toEqual([
+        [0.5, 0.4, 0.3],
+        [1, 1, 1],
+      ]);
       s.setOverlay((sc) => ({ ...sc, luminaires: sc.luminaires.map((l) => ({ ...l, dimming: 0 })) }));
-      expect(s.luminaireWeights()).toEqual([[0, 0, 0], [0, 0, 0]]);
+      expect(s.luminaireWeights()).toEqual([
+        [0, 0, 0],
+        [0, 0, 0],
+      ]);
       s.setOverlay(null);
       s.setFade({ from: (sc) => ({ ...sc, luminaires: sc.luminaires.map((l) => ({ ...l, dimming: 1, color: [1, 1, 1] as [number, number, number] })) }), e: 0.25 });
       const w = s.luminaireWeights()!;
@@ -369,7 +390,16 @@ describe('bakes never stall', () => {
       const { now } = overloaded(5 * SLICE_MS);
       const worked: number[] = [];
       const fence = (): GpuFence => ({ signalled: () => true, dispose: () => {} });
-      const slicer = createBakeSlicer({ engine: () => engine, onSlice: (_e, _p, n) => worked.push(n), onError: (m) => { throw new Error(m); }, defer: q.defer, now, ...(fenced ? { fence } : {}) });
+      const slicer = createBakeSlicer({
+        engine: () => engine,
+        onSlice: (_e, _p, n) => worked.push(n),
+        onError: (m) => {
+          throw new Error(m);
+        },
+        defer: q.defer,
+        now,
+        ...(fenced ? { fence } : {}),
+      });
       slicer.run();
       q.drain();
       expect(engine.progress.done).toBe(true);
@@ -384,7 +414,16 @@ describe('bakes never stall', () => {
     const q = manualQueue();
     let issued = 0;
     const progress = () => ({ groupsDone: 1, groups: 1, fraction: issued / 4, done: issued >= 4, lit: true, exact: issued >= 4 }) as EngineProgress;
-    const engine = { get progress() { return progress(); }, settings: { samplesPerDraw: 1 } as RelightEngine['settings'], step() { issued++; return progress(); } } as unknown as RelightEngine;
+    const engine = {
+      get progress() {
+        return progress();
+      },
+      settings: { samplesPerDraw: 1 } as RelightEngine['settings'],
+      step() {
+        issued++;
+        return progress();
+      },
+    } as unknown as RelightEngine;
     const { now } = overloaded(1000);
     const slicer = createBakeSlicer({ engine: () => engine, onSlice: () => {}, onError: () => {}, defer: q.defer, now, fence: () => ({ signalled: () => false, dispose: () => {} }) });
     slicer.run();
@@ -404,7 +443,13 @@ describe('bakes never stall', () => {
     const gl = createHeadlessGL();
     const canvas = () => ({ getContext: () => gl, addEventListener: () => {}, removeEventListener: () => {} });
     const s = createBakeService({ quality: 'fast', visibility: page, input: null, canvas, defer: q.defer, now, fence: null });
-    return { s, dispose: () => { s.dispose(); gl.destroy(); } };
+    return {
+      s,
+      dispose: () => {
+        s.dispose();
+        gl.destroy();
+      },
+    };
   }
 
   it('a real headless-gl bake finishes when every slice overruns its budget: one step per slice, progress on every slice', () => {

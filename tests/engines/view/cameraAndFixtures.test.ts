@@ -91,7 +91,7 @@ describe('fixtures', () => {
     for (const c of f.connectors) expect(c.y).toBe(f.rails[0].start[1]);
   });
 
-  it('an aimed module keeps the rail heading and takes the lighting scene\'s orientation', () => {
+  it("an aimed module keeps the rail heading and takes the lighting scene's orientation", () => {
     const store = createConfiguratorStore({ catalog: defaultCatalog, initial: createConfiguration() });
     expect(store.getState().dispatch('placePreset', { presetId: 'corner-l' })).toEqual({ ok: true });
     const c0 = store.getState().config;

@@ -42,7 +42,12 @@ describe('CAT16 (Li et al. 2017) and the CAM16 degree of adaptation', () => {
   });
 
   it('no NaN: a black, negative or non-finite white gives the identity', () => {
-    for (const white of [[0, 0, 0], [-1, 0.5, 0.2], [Number.NaN, 1, 1], [1, 0, 0]] as [number, number, number][]) {
+    for (const white of [
+      [0, 0, 0],
+      [-1, 0.5, 0.2],
+      [Number.NaN, 1, 1],
+      [1, 0, 0],
+    ] as [number, number, number][]) {
       const m = cat16LinearSrgb(white, 1);
       expect(m.every(Number.isFinite)).toBe(true);
     }

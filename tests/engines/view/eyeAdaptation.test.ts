@@ -53,9 +53,13 @@ describe('eye adaptation: slow, within limits, held on relights', () => {
     expect(Number.isFinite(limitAutoExposure(0))).toBe(true);
   });
 
-  it('held: dimming to 50 % halves every pixel\'s scene value before the tone curve, the exposure and adaptation stay, the mean screen level falls', () => {
+  it("held: dimming to 50 % halves every pixel's scene value before the tone curve, the exposure and adaptation stay, the mean screen level falls", () => {
     const { view, state } = fakeView();
-    const display = createMapDisplay(() => view, () => {}, () => 0);
+    const display = createMapDisplay(
+      () => view,
+      () => {},
+      () => 0,
+    );
     const white = warm;
     const full = roomAt(300);
     display.show(full, grey, 0, { white, key: 'room', done: true });
@@ -84,7 +88,11 @@ describe('eye adaptation: slow, within limits, held on relights', () => {
   it('follows the maps of a configuration until its light is done; a new room, a camera cut (reAdapt) adapt again', () => {
     const { view, state } = fakeView();
     let now = 0;
-    const display = createMapDisplay(() => view, () => {}, () => now);
+    const display = createMapDisplay(
+      () => view,
+      () => {},
+      () => now,
+    );
     // Progressive bake of the first room: not done yet, the exposure follows (first maps: at once).
     display.show(roomAt(100), grey, 0, { white: warm, key: 'a', done: false });
     const first = state.exposure;

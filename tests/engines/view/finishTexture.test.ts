@@ -58,7 +58,10 @@ describe('finish textures: mean exactly ρ', () => {
       const edges = Array.from({ length: m.size / step }, (_, k) => k * step);
       return { edges: edges.map(dip), middles: edges.map((j) => dip(j + step / 2)) };
     };
-    for (const [kind, width] of [['wood', 0.18], ['tiles', 0.6]] as const) {
+    for (const [kind, width] of [
+      ['wood', 0.18],
+      ['tiles', 0.6],
+    ] as const) {
       const { edges, middles } = seam(kind, width);
       edges.forEach((d) => expect(d).toBeLessThan(0.96));
       middles.forEach((d) => expect(d).toBeGreaterThan(0.96));

@@ -107,7 +107,9 @@ describe('a furnished room in luxbox render', () => {
     // For a look: test-results/furnished/side.png (not compared: the light's noise moves pixels between runs of different settings).
     mkdirSync('test-results/furnished', { recursive: true });
     writeFileSync('test-results/furnished/side.png', png);
-    console.log(`table top ${table.top!.toFixed(0)} lx, floor under ${table.floorUnder!.toFixed(0)} lx, object mean ${table.avg.toFixed(0)} lx; pixels: top ${top.toFixed(0)}, floor ${floor.toFixed(0)} at (${xTop}, ${yTop}) / (${xFloor}, ${yFloor})`);
+    console.log(
+      `table top ${table.top!.toFixed(0)} lx, floor under ${table.floorUnder!.toFixed(0)} lx, object mean ${table.avg.toFixed(0)} lx; pixels: top ${top.toFixed(0)}, floor ${floor.toFixed(0)} at (${xTop}, ${yTop}) / (${xFloor}, ${yFloor})`,
+    );
     expect(top).toBeGreaterThan(floor + 40);
   }, 240_000);
 });

@@ -39,14 +39,25 @@ describe('the CIE 146 glare PSF', () => {
       }
       return s * (Math.PI / 180) ** 2;
     };
-    for (const [a, b] of [[0.1, 0.3], [0.5, 2], [3, 30], [0.1, 100]]) expect(annulusShare(a, b)).toBeCloseTo(quadrature(a, b), 6);
+    for (const [a, b] of [
+      [0.1, 0.3],
+      [0.5, 2],
+      [3, 30],
+      [0.1, 100],
+    ])
+      expect(annulusShare(a, b)).toBeCloseTo(quadrature(a, b), 6);
     // The whole domain scatters about 29 % of the light (young eyes less, old eyes more).
     expect(annulusShare(0.1, 100)).toBeGreaterThan(0.2);
     expect(annulusShare(0.1, 100)).toBeLessThan(0.4);
   });
 
   it('the discretised PSF integrates to 1: core + levels = 1, every weight ≥ 0', () => {
-    for (const [w, h, fov] of [[1280, 800, 60], [780, 1688, 90], [320, 200, 60], [64, 64, 30]]) {
+    for (const [w, h, fov] of [
+      [1280, 800, 60],
+      [780, 1688, 90],
+      [320, 200, 60],
+      [64, 64, 30],
+    ]) {
       const n = glareLevels(w, h);
       const g = glareWeights(fov / h, n, Math.hypot(w, h));
       expect(g.levels).toHaveLength(n);
@@ -133,7 +144,13 @@ describe('the glare pass (three.js on headless-gl)', () => {
     const out = glare(imageWith(value), true) as Float32Array;
     // 60 and more pixels (≥ 28°) away: the CIE veil there is < 0.3 % of the background.
     expect(veil(value, 60) / background).toBeLessThan(0.003);
-    for (const [x, y] of [[110, 64], [100, 120], [127, 127], [105, 10]]) expect(Math.abs(at(out, x, y) / background - 1)).toBeLessThan(0.01);
+    for (const [x, y] of [
+      [110, 64],
+      [100, 120],
+      [127, 127],
+      [105, 10],
+    ])
+      expect(Math.abs(at(out, x, y) / background - 1)).toBeLessThan(0.01);
     // 4 px (1.9°) away the CIE veil is ≈ 0.76 × the background: require at least + 30 %.
     expect(veil(value, 4) / background).toBeGreaterThan(0.6);
     expect(at(out, source.x + 4, source.y)).toBeGreaterThan(1.3 * background);
@@ -148,14 +165,27 @@ describe('the glare pass (three.js on headless-gl)', () => {
     for (let i = 0; i < W * H; i++) flat.set([0.18, 0.12, 0.3, 1], i * 4);
     const out = glare(flat, false) as Uint8Array;
     const want = displayColor([0.18, 0.12, 0.3], 1).map((c) => c * 255);
-    for (const [x, y] of [[0, 0], [64, 64], [127, 5], [3, 127]]) for (let k = 0; k < 3; k++) expect(Math.abs(out[(y * W + x) * 4 + k] - want[k])).toBeLessThanOrEqual(1.01);
+    for (const [x, y] of [
+      [0, 0],
+      [64, 64],
+      [127, 5],
+      [3, 127],
+    ])
+      for (let k = 0; k < 3; k++) expect(Math.abs(out[(y * W + x) * 4 + k] - want[k])).toBeLessThanOrEqual(1.01);
   });
 
-  it('in the room view: on in light mode (the emitter\'s halo lights pixels beside it), off in lux mode (same pixels as without)', () => {
+  it("in the room view: on in light mode (the emitter's halo lights pixels beside it), off in lux mode (same pixels as without)", () => {
     const ph = parsePhotometry(readFileSync(join(__dirname, '../../../public/ies/bega_50975_downlight_lm1995_crlf.ies')), 'bega');
     const weight: Rgb = [1, 1, 1];
     const module: FixtureModule = {
-      id: 'd1', centre: [0, 2, 0], heading: 0, length: 0.15, on: true, kind: 'downlight', orientation: { yaw: 0, pitch: 0, roll: 0 }, mount: 0,
+      id: 'd1',
+      centre: [0, 2, 0],
+      heading: 0,
+      length: 0.15,
+      on: true,
+      kind: 'downlight',
+      orientation: { yaw: 0, pitch: 0, roll: 0 },
+      mount: 0,
       light: { opening: ph.luminousOpening, flux: hemisphereFlux(ph), weight },
     };
     const fixtures: Fixtures = { rails: [], railWidth: 0, connectors: [], cables: [], modules: [module] };

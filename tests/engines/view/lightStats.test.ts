@@ -88,7 +88,7 @@ describe('illuminance statistics', () => {
     expect(checked).toBeGreaterThan(500);
   });
 
-  it('work plane adds the floor\'s indirect illuminance (total − direct) at the same plan point', () => {
+  it("work plane adds the floor's indirect illuminance (total − direct) at the same plan point", () => {
     const scene: BakeScene = { room: uniformRoom(2, 2.8, 2, 0.5), luminaires: [] };
     const lit = emptyLitMaps(surfaceLayouts(scene.room, 0.1, 64));
     lit.maps.floor.total.fill(40);

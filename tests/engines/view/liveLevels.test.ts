@@ -47,7 +47,14 @@ describe('levels from frames', () => {
     expect(levels.has(ids[0])).toBe(false);
     expect(levels.has(ids[1])).toBe(false);
     expect(levels.get(ids[2])).toEqual({ dimming: 1, cct: 4000 });
-    const both = levelsFromFrames(c, catalog, new Map([[1, new Array(512).fill(255)], [2, [102]]]));
+    const both = levelsFromFrames(
+      c,
+      catalog,
+      new Map([
+        [1, new Array(512).fill(255)],
+        [2, [102]],
+      ]),
+    );
     expect(both.get(ids[1])).toEqual({ dimming: 0.4, cct: null }); // 8-bit, no CCT channel: the module's own colour
     expect(levelsFromFrames(c, catalog, new Map())).toEqual(new Map());
   });

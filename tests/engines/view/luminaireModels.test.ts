@@ -64,7 +64,7 @@ describe('luminaire models of the default catalog', () => {
     });
   });
 
-  it('emitter area = the photometry\'s luminous opening (model and mesh), every vertex and normal finite, triangles bounded', () => {
+  it("emitter area = the photometry's luminous opening (model and mesh), every vertex and normal finite, triangles bounded", () => {
     for (const { type, beam, ph, model } of catalogModels) {
       const area = openingArea(ph.luminousOpening);
       expect(area, `${type}/${beam}`).toBeGreaterThan(0);
@@ -103,7 +103,7 @@ function centroid(p: LuminaireModel['parts'][number]): THREE.Vector3 {
 }
 
 describe('the spot head turns with the aim', () => {
-  it('the head\'s axis (from its cylinder\'s centre through its emitter) points along aimAxis(heading, aim) within 0.5°; the yoke turns about the vertical only', () => {
+  it("the head's axis (from its cylinder's centre through its emitter) points along aimAxis(heading, aim) within 0.5°; the yoke turns about the vertical only", () => {
     const ph = load('ies/bega_84693_narrow_spot.ies');
     const model = buildLuminaireModel({ kind: 'spot', opening: ph.luminousOpening, length: 0.15, mount: 0.3 });
     const head = model.parts.find((p) => p.role === 'housing' && p.frame === 'aim')!;
@@ -135,7 +135,7 @@ describe('the spot head turns with the aim', () => {
   });
 });
 
-describe('a standing spot (a lighting scene\'s luminaire in the lower half of the room)', () => {
+describe("a standing spot (a lighting scene's luminaire in the lower half of the room)", () => {
   it('its yoke is below the head, its base plate on the floor, the head still turns about its pivot', () => {
     const ph = load('ies/erco_kubus_floor_washlight.ies');
     const model = buildLuminaireModel({ kind: 'spot', opening: ph.luminousOpening, length: 0.12, mount: 0, stand: 0.1 });
@@ -230,7 +230,7 @@ describe('the emitter on screen (three.js on headless-gl)', () => {
     return [px[0], px[1], px[2]];
   }
 
-  it('on screen: the room\'s display transform of that (exposure from the shared uniforms); off and in lux mode it does not glow', () => {
+  it("on screen: the room's display transform of that (exposure from the shared uniforms); off and in lux mode it does not glow", () => {
     // An exposure that puts the face at linear 0.3 in green: on the curve's shoulder-free part.
     const exposure = 0.3 / (L * weight[1]);
     const on = centrePixel((v) => {
@@ -246,10 +246,12 @@ describe('the emitter on screen (three.js on headless-gl)', () => {
     });
     expect(brighter[1]).toBeGreaterThan(on[1] + 20);
     // Switched off: the face is dark (no room light yet: the housing's ambient is 0).
-    expect(centrePixel((v) => {
-      v.setFixtures(fixtures(false));
-      v.setExposure(exposure);
-    })).toEqual([0, 0, 0]);
+    expect(
+      centrePixel((v) => {
+        v.setFixtures(fixtures(false));
+        v.setExposure(exposure);
+      }),
+    ).toEqual([0, 0, 0]);
     // Lux mode: the face shows the housing's flat colour, no glow.
     const lux = centrePixel((v) => {
       v.setFixtures(fixtures(true));

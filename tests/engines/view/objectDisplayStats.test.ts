@@ -95,7 +95,7 @@ describe('objectStats', () => {
 });
 
 describe('dilateReflectance', () => {
-  it('fills every empty texel next to a chart with a covered neighbour\'s ρ and object index, keeps covered texels', () => {
+  it("fills every empty texel next to a chart with a covered neighbour's ρ and object index, keeps covered texels", () => {
     const out = dilateReflectance(atlas);
     let filledNext = 0;
     for (let j = 0; j < atlas.height; j++) {
@@ -105,7 +105,12 @@ describe('dilateReflectance', () => {
           expect(Array.from(out.subarray(4 * t, 4 * t + 4))).toEqual(Array.from(atlas.reflectance.subarray(4 * t, 4 * t + 4)));
           continue;
         }
-        const nextToChart = [[-1, 0], [1, 0], [0, -1], [0, 1]].some(([di, dj]) => {
+        const nextToChart = [
+          [-1, 0],
+          [1, 0],
+          [0, -1],
+          [0, 1],
+        ].some(([di, dj]) => {
           const x = i + di;
           const y = j + dj;
           return x >= 0 && y >= 0 && x < atlas.width && y < atlas.height && atlas.position[4 * (y * atlas.width + x) + 3] > 0;

@@ -48,7 +48,11 @@ describe('objectRenderGeometry', () => {
     it(`texel ${texelSize} m: uvs are the charts' isometric projection (edge lengths within 1e-4 m)`, () => {
       let worst = 0;
       for (let k = 0; k < geometry.triangleCount; k++) {
-        for (const [a, b] of [[0, 1], [1, 2], [2, 0]]) {
+        for (const [a, b] of [
+          [0, 1],
+          [1, 2],
+          [2, 0],
+        ]) {
           const world = Math.hypot(...[0, 1, 2].map((c) => geometry.positions[9 * k + 3 * b + c] - geometry.positions[9 * k + 3 * a + c]));
           const du = (geometry.uvs[6 * k + 2 * b] - geometry.uvs[6 * k + 2 * a]) * atlas.width;
           const dv = (geometry.uvs[6 * k + 2 * b + 1] - geometry.uvs[6 * k + 2 * a + 1]) * atlas.height;

@@ -64,7 +64,11 @@ describe('EV100 → exposure (saturation-based)', () => {
     const view = { setMaps() {}, setObjectLight() {}, setMode() {}, setAdaptation() {}, setExposure: (x: number) => (lastExposure = x) } as unknown as RoomView;
     const heard: number[] = [];
     let now = 0;
-    const display = createMapDisplay(() => view, (_lit, info) => heard.push(info.ev100), () => now);
+    const display = createMapDisplay(
+      () => view,
+      (_lit, info) => heard.push(info.ev100),
+      () => now,
+    );
     const room = { white: null, key: 'room', done: true };
     display.show(uniformRoom(400), grey, 0, room);
     const autoAt400 = lastExposure;
@@ -95,6 +99,8 @@ describe('uniform room on screen (three.js on headless-gl)', () => {
 
   function centrePixel(lux: number, ev100: number): number[] {
     const view = createRoomView(renderer);
+    // One pixel against ρE/π: without the finish's texture (its mean is ρ over a period, not at one pixel: finishTextureRender.test.ts).
+    view.setFinishTextures(false);
     presentMaps(view, uniformRoom(lux), grey, { exposureEv: 0, ev100, mode: 'light' });
     // Looking at the north wall from the middle of the room.
     view.setCamera({ position: [2, 1.25, 2.5], target: [2, 1.25, 0], fov: 40 }, W / H);

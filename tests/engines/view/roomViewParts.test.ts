@@ -17,7 +17,7 @@ import { surfaceQuad } from '../../../src/engines/view/surfaceQuad';
 const room = { width: 4, height: 2.5, depth: 3 };
 
 describe('surfaceQuad', () => {
-  it('covers each surface with uv following the baker\'s texel grid, both triangles facing into the room', () => {
+  it("covers each surface with uv following the baker's texel grid, both triangles facing into the room", () => {
     for (const l of surfaceLayouts(room, 0.25, 64)) {
       const q = surfaceQuad(l);
       const corner = (k: number) => q.positions.slice(3 * k, 3 * k + 3);

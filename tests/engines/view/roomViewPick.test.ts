@@ -73,7 +73,7 @@ describe('RoomView.pick', () => {
     expect(view.pick(...ndcOf(corner, tableTop))).toEqual({ kind: 'object', id: 'table' });
   });
 
-  it('the selection: the selected object\'s edges (none for an unknown id), the selected module in the accent colour', () => {
+  it("the selection: the selected object's edges (none for an unknown id), the selected module in the accent colour", () => {
     view.setSelectedObject('table');
     const edges = view.scene.getObjectByName('objects-selection') as THREE.LineSegments | undefined;
     expect(edges).toBeDefined();

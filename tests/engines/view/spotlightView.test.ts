@@ -118,7 +118,9 @@ describe('spotlight view outlines', () => {
     const field = ringRadius(px, (r, g, b) => r > 200 && g > 80 && g < 160 && b < 80);
     const floorBeam = h * Math.tan((beamDeg * Math.PI) / 360);
     const floorField = h * Math.tan((fieldDeg * Math.PI) / 360);
-    console.info(`spotlight outlines: beam ${beamDeg.toFixed(2)}° → ${floorBeam.toFixed(3)} m on the floor, ${beam.radius.toFixed(2)} px (want ${((scale * floorBeam) / h).toFixed(2)}); field ${fieldDeg.toFixed(2)}° → ${field.radius.toFixed(2)} px (want ${((scale * floorField) / h).toFixed(2)})`);
+    console.info(
+      `spotlight outlines: beam ${beamDeg.toFixed(2)}° → ${floorBeam.toFixed(3)} m on the floor, ${beam.radius.toFixed(2)} px (want ${((scale * floorBeam) / h).toFixed(2)}); field ${fieldDeg.toFixed(2)}° → ${field.radius.toFixed(2)} px (want ${((scale * floorField) / h).toFixed(2)})`,
+    );
     expect(beam.count).toBeGreaterThan(100);
     expect(field.count).toBeGreaterThan(100);
     // Within one pixel (line rasterisation).
@@ -155,9 +157,16 @@ describe('fast preview', () => {
     view.render(renderer);
     const px = readRgb();
     let worst = 0;
-    for (const [x, y] of [[120, 120], [130, 118], [140, 125], [150, 120], [120, 160], [100, 100]]) {
+    for (const [x, y] of [
+      [120, 120],
+      [130, 118],
+      [140, 125],
+      [150, 120],
+      [120, 160],
+      [100, 100],
+    ]) {
       const e = previewIlluminance(lamp, floorPoint(x, y), [0, 1, 0]);
-      const want = displayColor([0.5 * e[0] / Math.PI, 0.5 * e[1] / Math.PI, 0.5 * e[2] / Math.PI], exposure).map((v) => v * 255);
+      const want = displayColor([(0.5 * e[0]) / Math.PI, (0.5 * e[1]) / Math.PI, (0.5 * e[2]) / Math.PI], exposure).map((v) => v * 255);
       const i = (y * N + x) * 4;
       for (let k = 0; k < 3; k++) worst = Math.max(worst, Math.abs(px[i + k] - want[k]));
     }
@@ -169,7 +178,7 @@ describe('fast preview', () => {
     const half = displayColor([0, (0.5 * 0.5 * peak * cos3) / Math.PI, 0], exposure)[1] * 255;
     let edge = 0;
     for (let x = N / 2; x < N; x++) if (px[(row * N + x) * 4 + 1] >= half) edge = x + 1 - N / 2;
-    const outline = (scale * Math.tan((beamDeg * Math.PI) / 360));
+    const outline = scale * Math.tan((beamDeg * Math.PI) / 360);
     console.info(`preview half-peak radius ${edge} px, beam outline ${outline.toFixed(2)} px`);
     expect(Math.abs(edge - outline)).toBeLessThan(2);
     spotlight.dispose();
@@ -183,7 +192,28 @@ describe('fast preview', () => {
     const toLocal = [m[0], m[3], m[6], m[1], m[4], m[7], m[2], m[5], m[8]];
     const lamp = { position, toLocal, photometry: medium, weight: [0.9, 0.8, 0.7] as [number, number, number] };
     const source = { position, toLocal: worldToLuminaire(o.yaw, o.pitch, o.roll), photometry: medium, scale: lamp.weight, luminaire: 0, hemisphere: 0 as const };
-    const points: [Vec3, Vec3][] = [[[3.3, 0, 1.6], [0, 1, 0]], [[3.8, 0, 1.2], [0, 1, 0]], [[2.5, 0, 2.5], [0, 1, 0]], [[5, 1.2, 1.5], [-1, 0, 0]], [[4, 1.5, 0], [0, 0, 1]]];
+    const points: [Vec3, Vec3][] = [
+      [
+        [3.3, 0, 1.6],
+        [0, 1, 0],
+      ],
+      [
+        [3.8, 0, 1.2],
+        [0, 1, 0],
+      ],
+      [
+        [2.5, 0, 2.5],
+        [0, 1, 0],
+      ],
+      [
+        [5, 1.2, 1.5],
+        [-1, 0, 0],
+      ],
+      [
+        [4, 1.5, 0],
+        [0, 0, 1],
+      ],
+    ];
     for (const [p, n] of points) {
       const got = previewIlluminance(lamp, p, n);
       const want = directIlluminanceAt([source], p, n);

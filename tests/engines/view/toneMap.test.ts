@@ -84,7 +84,14 @@ describe('display transform (exposure → adaptation → gamut map → AgX on ma
       ['eye 2700 K at L_A 20', adaptationFor({ kind: 'eye' }, cctToLinearRgb(2700), 20).matrix],
       ['camera 6500 K', adaptationFor({ kind: 'camera', cct: 6500 }, null, 0).matrix],
     ];
-    const colours: [number, number, number][] = [[1, 0.5, 0.25], [1.77, 0.84, 0.27], [4.7, 0, 0], [0, 1.2, 0.1], [0.2, 0.3, 1.5], [1, 1, 1]];
+    const colours: [number, number, number][] = [
+      [1, 0.5, 0.25],
+      [1.77, 0.84, 0.27],
+      [4.7, 0, 0],
+      [0, 1.2, 0.1],
+      [0.2, 0.3, 1.5],
+      [1, 1, 1],
+    ];
     for (const [, m] of adaptations) {
       for (const col of colours) {
         const got = runShader(inputs, `uniform mat3 uAdapt;\n${toneMapGlsl}`, `c = luxDisplay(vec3(${col.map((v) => v.toFixed(6)).join(', ')}) * x, 0.7, uAdapt);`, { uAdapt: { value: new THREE.Matrix3().set(...m) } });
@@ -145,7 +152,7 @@ describe('chromatic adaptation on the compiled GLSL (CAT16, docs/viewer.md "Adap
     expect(hueDifference(hueAngle(lEye), hueAngle(lNone))).toBeLessThan(15);
   });
 
-  it('a LEE 106 primary red patch on a white wall at 300 lx keeps the gel\'s hue within 10° (not peach)', async () => {
+  it("a LEE 106 primary red patch on a white wall at 300 lx keeps the gel's hue within 10° (not peach)", async () => {
     await loadColourFilterSpectra();
     const gel = moduleColour(3000, 'lee-106');
     const want = hueOfChromaticity(gel.x, gel.y);

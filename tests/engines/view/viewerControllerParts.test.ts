@@ -129,7 +129,13 @@ describe('createBakeSlicer', () => {
   it('a failing step is reported once and stops the slices', () => {
     const q = manualQueue();
     const errors: string[] = [];
-    const engine = { progress: { done: false }, settings: { samplesPerDraw: 8 }, step: () => { throw new Error('GL_OUT_OF_MEMORY'); } } as unknown as RelightEngine;
+    const engine = {
+      progress: { done: false },
+      settings: { samplesPerDraw: 8 },
+      step: () => {
+        throw new Error('GL_OUT_OF_MEMORY');
+      },
+    } as unknown as RelightEngine;
     createBakeSlicer({ engine: () => engine, onSlice: () => {}, onError: (m) => errors.push(m), defer: q.schedule }).run();
     expect(errors).toEqual(['Baking failed: GL_OUT_OF_MEMORY']);
     expect(q.size).toBe(0);

@@ -17,12 +17,7 @@ const box = (id: string, w: number, h: number, d: number, position: [number, num
 describe('work plane at 0.75 m with furniture', () => {
   // 4 × 3 × 4 m, black; a 2 m shelf (x 0.5…1.5, z 3.0…3.5), a coffee table below the plane, a desk
   // whose top is the plane, a box hung at 1.5 m.
-  const objects = [
-    box('shelf', 1, 2, 0.5, [1, 0, 3.25]),
-    box('coffee-table', 1, 0.45, 0.6, [3, 0, 1]),
-    box('desk', 1.2, 0.75, 0.6, [3, 0, 3]),
-    box('hung', 0.8, 0.3, 0.4, [1, 1.5, 1]),
-  ];
+  const objects = [box('shelf', 1, 2, 0.5, [1, 0, 3.25]), box('coffee-table', 1, 0.45, 0.6, [3, 0, 1]), box('desk', 1.2, 0.75, 0.6, [3, 0, 3]), box('hung', 0.8, 0.3, 0.4, [1, 1.5, 1])];
   const scene: BakeScene = { room: uniformRoom(4, 3, 4, 0), luminaires: [{ photometry: isotropic(800), position: [2, 2.6, 2], yaw: 0, pitch: 0, roll: 0 }], objects };
   const lit = emptyLitMaps(surfaceLayouts(scene.room, 0.1, 64));
   const prepared = prepareObjects(objects, { texelSize: 0.1 });

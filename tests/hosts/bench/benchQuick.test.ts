@@ -21,7 +21,10 @@ describe('luxbox bench --quick', () => {
     expect(rows).toHaveLength(4);
     expect(rows.filter((r) => r.includes('| Monte Carlo only |'))).toHaveLength(2);
     for (const row of rows) {
-      const cells = row.split('|').slice(1, -1).map((c) => c.trim());
+      const cells = row
+        .split('|')
+        .slice(1, -1)
+        .map((c) => c.trim());
       expect(cells).toHaveLength(14);
       const [rms, max] = [parseFloat(cells[9]), parseFloat(cells[10])];
       // A real bake against the converged reference: errors finite, > 0 (Monte Carlo noise), RMS ≤ max, and the

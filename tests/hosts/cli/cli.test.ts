@@ -75,7 +75,13 @@ describe('luxbox bake / probe', () => {
     const photometries = new Map(loaded.scene.luminaires.map((l, i) => [l.photometry, loaded.bakeScene.luminaires[i].photometry]));
     const sources = referencePointSources(loaded.scene, photometries);
     const pts = JSON.parse(readFileSync(points, 'utf8')).points as [number, number, number][];
-    const normals: [number, number, number][] = [[0, 1, 0], [0, -1, 0], [1, 0, 0], [-1, 0, 0], [0, 0, 1]];
+    const normals: [number, number, number][] = [
+      [0, 1, 0],
+      [0, -1, 0],
+      [1, 0, 0],
+      [-1, 0, 0],
+      [0, 0, 1],
+    ];
     pts.forEach((p, i) => {
       const onPlane: [number, number, number] = [p[0], p[1], i === 4 ? 0 : p[2]];
       const [r, g, b] = directIlluminanceAt(sources, onPlane, normals[i]);
@@ -85,7 +91,10 @@ describe('luxbox bake / probe', () => {
     // The indirect part is the bilinear lookup of the indirect map: point 0 [1.5, 0, 1.0] is a
     // texel corner of the 0.1 m floor map, so it is the mean of the four texels around it.
     const floor = decodePfm(readFileSync(join(out, 'floor.indirect.pfm')));
-    const at = (i: number, j: number) => { const o = (j * floor.width + i) * 3; return 0.2126 * floor.rgb[o] + 0.7152 * floor.rgb[o + 1] + 0.0722 * floor.rgb[o + 2]; };
+    const at = (i: number, j: number) => {
+      const o = (j * floor.width + i) * 3;
+      return 0.2126 * floor.rgb[o] + 0.7152 * floor.rgb[o + 1] + 0.0722 * floor.rgb[o + 2];
+    };
     const avg4 = (at(14, 9) + at(15, 9) + at(14, 10) + at(15, 10)) / 4;
     expect(Math.abs(values.indirect[0] - avg4)).toBeLessThan(1e-5 * avg4);
   });
@@ -102,12 +111,36 @@ describe('luxbox bake / probe', () => {
 
   const dir = mkdtempSync(join(tmpdir(), 'luxbox-bad-'));
   const bad: [string, string, string[], RegExp][] = [
-    ['lamp above the ceiling', JSON.stringify({ version: 1, room: { width: 3, height: 2.5, depth: 2, reflectance: { floor: 0.2, ceiling: 0.8, north: 0.5, south: 0.5, west: 0.5, east: 0.5 } }, luminaires: [{ photometry: 'x.ies', position: [1, 3.1, 1], yaw: 0, pitch: 0, roll: 0 }] }), [], /^luxbox bake: scene\.json: luminaires\[0\]\.position\[1\]: 3\.1 m is above the ceiling/],
+    [
+      'lamp above the ceiling',
+      JSON.stringify({
+        version: 1,
+        room: { width: 3, height: 2.5, depth: 2, reflectance: { floor: 0.2, ceiling: 0.8, north: 0.5, south: 0.5, west: 0.5, east: 0.5 } },
+        luminaires: [{ photometry: 'x.ies', position: [1, 3.1, 1], yaw: 0, pitch: 0, roll: 0 }],
+      }),
+      [],
+      /^luxbox bake: scene\.json: luminaires\[0\]\.position\[1\]: 3\.1 m is above the ceiling/,
+    ],
     ['broken JSON', '{ "version": 1,\n  "room": { ', [], /^luxbox bake: scene\.json: line 2, column \d+: invalid JSON/],
-    ['missing photometry file', JSON.stringify({ version: 1, room: { width: 3, height: 2.5, depth: 2, reflectance: { floor: 0.2, ceiling: 0.8, north: 0.5, south: 0.5, west: 0.5, east: 0.5 } }, luminaires: [{ photometry: 'nope.ies', position: [1, 2, 1] }] }), [], /^luxbox bake: scene\.json: luminaires\[0\]\.photometry: cannot read "nope\.ies" \(no such file\)\n$/],
+    [
+      'missing photometry file',
+      JSON.stringify({ version: 1, room: { width: 3, height: 2.5, depth: 2, reflectance: { floor: 0.2, ceiling: 0.8, north: 0.5, south: 0.5, west: 0.5, east: 0.5 } }, luminaires: [{ photometry: 'nope.ies', position: [1, 2, 1] }] }),
+      [],
+      /^luxbox bake: scene\.json: luminaires\[0\]\.photometry: cannot read "nope\.ies" \(no such file\)\n$/,
+    ],
     // Issue 32: read forever before (a character device reports size 0).
-    ['photometry /dev/zero', JSON.stringify({ version: 1, room: { width: 3, height: 2.5, depth: 2, reflectance: { floor: 0.2, ceiling: 0.8, north: 0.5, south: 0.5, west: 0.5, east: 0.5 } }, luminaires: [{ photometry: '/dev/zero', position: [1, 2, 1] }] }), [], /^luxbox bake: scene\.json: luminaires\[0\]\.photometry: cannot read "\/dev\/zero" \(\/dev\/zero is outside the scene's folder and the current folder\)\n$/],
-    ['bad flag value', JSON.stringify({ version: 1, room: { width: 3, height: 2.5, depth: 2, reflectance: { floor: 0.2, ceiling: 0.8, north: 0.5, south: 0.5, west: 0.5, east: 0.5 } }, luminaires: [] }), ['--samples', '0'], /^luxbox bake: samples 0 is not an integer in 1\.\.65536\n$/],
+    [
+      'photometry /dev/zero',
+      JSON.stringify({ version: 1, room: { width: 3, height: 2.5, depth: 2, reflectance: { floor: 0.2, ceiling: 0.8, north: 0.5, south: 0.5, west: 0.5, east: 0.5 } }, luminaires: [{ photometry: '/dev/zero', position: [1, 2, 1] }] }),
+      [],
+      /^luxbox bake: scene\.json: luminaires\[0\]\.photometry: cannot read "\/dev\/zero" \(\/dev\/zero is outside the scene's folder and the current folder\)\n$/,
+    ],
+    [
+      'bad flag value',
+      JSON.stringify({ version: 1, room: { width: 3, height: 2.5, depth: 2, reflectance: { floor: 0.2, ceiling: 0.8, north: 0.5, south: 0.5, west: 0.5, east: 0.5 } }, luminaires: [] }),
+      ['--samples', '0'],
+      /^luxbox bake: samples 0 is not an integer in 1\.\.65536\n$/,
+    ],
   ];
   for (const [name, text, extra, message] of bad) {
     it(`bad input (${name}): one stderr line, exit 1`, () => {
@@ -122,7 +155,15 @@ describe('luxbox bake / probe', () => {
 
   it('probe point off every surface: one clear line, exit 1', () => {
     const file = join(dir, 'points.json');
-    writeFileSync(file, JSON.stringify({ points: [[1.5, 0, 1], [1.5, 1.2, 1]] }));
+    writeFileSync(
+      file,
+      JSON.stringify({
+        points: [
+          [1.5, 0, 1],
+          [1.5, 1.2, 1],
+        ],
+      }),
+    );
     const r = luxbox(['probe', scene, file, ...quick]);
     expect(r.status).toBe(1);
     expect(r.stderr).toBe('luxbox probe: points.json: points[1]: [1.5, 1.2, 1] is 1.00 m from the nearest surface (north); probe points must lie within 0.01 m of a surface\n');

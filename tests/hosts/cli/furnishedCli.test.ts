@@ -82,20 +82,38 @@ describe('luxbox bake: a furnished scene', () => {
 describe('luxbox probe: points with normals in a furnished scene', () => {
   const points: [Vec3, Vec3 | null][] = [
     // 0: under the OBJ table's top (0.71 m), facing up: the lamp 2.45 m above is hidden by the top.
-    [[1.3, 0.3, 1.5], [0, 1, 0]],
+    [
+      [1.3, 0.3, 1.5],
+      [0, 1, 0],
+    ],
     // 1: above the top, facing up: unoccluded.
-    [[1.3, 0.76, 1.5], [0, 1, 0]],
+    [
+      [1.3, 0.76, 1.5],
+      [0, 1, 0],
+    ],
     // 2: in free space, facing the south-west: unoccluded.
-    [[0.5, 1.0, 0.5], [-0.6, 0.8, 0]],
+    [
+      [0.5, 1.0, 0.5],
+      [-0.6, 0.8, 0],
+    ],
     // 3, 4: on the floor under the table, as a surface point and with a normal.
     [[1.3, 0, 1.5], null],
-    [[1.3, 0, 1.5], [0, 1, 0]],
+    [
+      [1.3, 0, 1.5],
+      [0, 1, 0],
+    ],
     // 5, 6: on the open floor (the lamp's ray passes beside the table), both ways.
     [[2.2, 0, 0.4], null],
-    [[2.2, 0, 0.4], [0, 1, 0]],
+    [
+      [2.2, 0, 0.4],
+      [0, 1, 0],
+    ],
     // 7, 8: on the north wall, both ways.
     [[2.0, 1.2, 0], null],
-    [[2.0, 1.2, 0], [0, 0, 1]],
+    [
+      [2.0, 1.2, 0],
+      [0, 0, 1],
+    ],
   ];
 
   it('occlusion exactly 0 under the table, directAtPoint where nothing is in the way, gather ≈ maps', async () => {
@@ -139,7 +157,15 @@ describe('luxbox probe: points with normals in a furnished scene', () => {
   it('refuses a point outside the room and a normal without direction, as one line', () => {
     const dir = mkdtempSync(join(tmpdir(), 'luxbox-probe-bad-'));
     const file = join(dir, 'points.json');
-    writeFileSync(file, JSON.stringify({ points: [[1, 1, 1, 0, 1, 0], [5, 1, 1, 0, 1, 0]] }));
+    writeFileSync(
+      file,
+      JSON.stringify({
+        points: [
+          [1, 1, 1, 0, 1, 0],
+          [5, 1, 1, 0, 1, 0],
+        ],
+      }),
+    );
     let r = luxbox(['probe', scene, file, ...settings]);
     expect(r.status).toBe(1);
     expect(r.stderr).toBe('luxbox probe: points.json: points[1]: x = 5 m is outside the room (0..4 m)\n');

@@ -42,8 +42,7 @@ describe('luxbox ies info', () => {
   });
 
   it('warnings appear in the text output and in --json', () => {
-    const warning =
-      'stated lumens 34 lm and integrated flux 2047 lm differ by 5921 % (ratio 60.21); the integrated flux of the candela data is used';
+    const warning = 'stated lumens 34 lm and integrated flux 2047 lm differ by 5921 % (ratio 60.21); the integrated flux of the candela data is used';
     const json = luxbox('ies', 'info', 'tests/fixtures/photometry/lumens_mismatch_60x.ies', '--json');
     expect(json.status).toBe(0);
     expect(JSON.parse(json.stdout).warnings).toEqual([warning]);

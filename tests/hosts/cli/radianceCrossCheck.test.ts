@@ -24,7 +24,10 @@ describe.skipIf(!bin)('Radiance renders the export as luxbox bakes it', () => {
     // What render.sh does first: the scene compiles as exported.
     compileOctree(bin!, dir);
     // Every 12th point of the exported floor grid (1 mm above the floor) and the same points on the floor for luxbox.
-    const grid = readFileSync(join(dir, 'points/floor.pts'), 'utf8').trim().split('\n').filter((_, i) => i % 12 === 5);
+    const grid = readFileSync(join(dir, 'points/floor.pts'), 'utf8')
+      .trim()
+      .split('\n')
+      .filter((_, i) => i % 12 === 5);
     const points = grid.map((line) => line.split(' ').map(Number)).map(([x, y]) => [x, 0, -y]);
     const pointsFile = join(dir, 'probe.json');
     writeFileSync(pointsFile, JSON.stringify({ points }));

@@ -21,7 +21,7 @@ function luxbox(args: string[]) {
 
 const expected = [
   '../photometry/lumens_mismatch_60x.ies: stated lumens 34 lm and integrated flux 2047 lm differ by 5921 % (ratio 60.21); the integrated flux of the candela data is used',
-  "../photometry/c_full_360_seam_differs.ies: the 360° plane differs from the 0° plane (by up to 30 cd, 16.7 % of their peak, at γ 0°); the 0° plane is used for both",
+  '../photometry/c_full_360_seam_differs.ies: the 360° plane differs from the 0° plane (by up to 30 cd, 16.7 % of their peak, at γ 0°); the 0° plane is used for both',
 ];
 
 describe('luxbox bake: photometry warnings', () => {
@@ -44,7 +44,7 @@ describe('luxbox bake: photometry warnings', () => {
     expect(JSON.parse(readFileSync(join(out, 'report.json'), 'utf8')).warnings).toEqual([]);
   });
 
-  it('a batch: each report has its own scene\'s warnings, stderr each line once', () => {
+  it("a batch: each report has its own scene's warnings, stderr each line once", () => {
     const out = mkdtempSync(join(tmpdir(), 'luxbox-warn-'));
     const r = luxbox(['bake', clean, warned, warned, '--out', out, ...quick]);
     expect(r.status).toBe(0);

@@ -22,9 +22,7 @@ describe('loadLightingSceneFileAsync: a furnished scene', () => {
   });
 
   it('the synchronous loader reads OBJ objects and says glTF needs the asynchronous one', () => {
-    expect(() => loadLightingSceneFile(FIXTURE)).toThrow(
-      new LightingSceneError('furnished-room.json: objects[1].mesh: table.glb: glTF models need the asynchronous scene loader (loadLightingSceneFileAsync); this caller reads OBJ only'),
-    );
+    expect(() => loadLightingSceneFile(FIXTURE)).toThrow(new LightingSceneError('furnished-room.json: objects[1].mesh: table.glb: glTF models need the asynchronous scene loader (loadLightingSceneFileAsync); this caller reads OBJ only'));
   });
 
   it('a missing mesh file and a table through the wall are one line naming the scene and the object', async () => {
@@ -43,14 +41,10 @@ describe('loadLightingSceneFileAsync: a furnished scene', () => {
       );
       return path;
     };
-    await expect(loadLightingSceneFileAsync(write([{ mesh: 'models/gone.obj', position: [1, 0, 1] }]))).rejects.toThrow(
-      new LightingSceneError('scene.json: objects[0].mesh: cannot read models/gone.obj (no such file)'),
-    );
+    await expect(loadLightingSceneFileAsync(write([{ mesh: 'models/gone.obj', position: [1, 0, 1] }]))).rejects.toThrow(new LightingSceneError('scene.json: objects[0].mesh: cannot read models/gone.obj (no such file)'));
     // The 1.2 m table centred 0.3 m from the west wall reaches 0.3 m through it (0.6 − 0.3).
     await expect(loadLightingSceneFileAsync(write([{ mesh: 'table.obj', position: [0.3, 0, 1] }]))).rejects.toThrow(
-      new LightingSceneError(
-        'scene.json: objects[0]: the placed mesh reaches 0.300 m beyond the west wall (x = 0) (the room is 3 m wide); objects must be inside the room (1 cm tolerance)',
-      ),
+      new LightingSceneError('scene.json: objects[0]: the placed mesh reaches 0.300 m beyond the west wall (x = 0) (the room is 3 m wide); objects must be inside the room (1 cm tolerance)'),
     );
     // Without its MTL the table still loads, grey, with a warning kept for the report.
     const loaded = await loadLightingSceneFileAsync(write([{ mesh: 'table.obj', position: [1.5, 0, 1] }]));

@@ -76,38 +76,54 @@ function expectOneLine(message: string, names: string, reason: RegExp) {
 }
 
 describe('a scene names a file that is not a regular file, too large, or outside its folder', () => {
-  it.each([...SPECIALS, ['huge.ies', /file is too large/] as [string, RegExp]])('photometry %s: refused at once, naming it', async (name, reason) => {
-    const scene = writeScene('photometry', { luminaires: [{ photometry: name, position: [1, 2.4, 1] }] });
-    const { message, ms } = await refusal(scene);
-    expectOneLine(message, `photometry.json: luminaires[0].photometry: cannot read "${name}"`, reason);
-    expect(ms).toBeLessThan(2000);
-  }, 10_000);
+  it.each([...SPECIALS, ['huge.ies', /file is too large/] as [string, RegExp]])(
+    'photometry %s: refused at once, naming it',
+    async (name, reason) => {
+      const scene = writeScene('photometry', { luminaires: [{ photometry: name, position: [1, 2.4, 1] }] });
+      const { message, ms } = await refusal(scene);
+      expectOneLine(message, `photometry.json: luminaires[0].photometry: cannot read "${name}"`, reason);
+      expect(ms).toBeLessThan(2000);
+    },
+    10_000,
+  );
 
-  it.each([...SPECIALS, ['huge.bin', /file is too large/] as [string, RegExp]])('OBJ mtllib %s: refused at once, naming it', async (name, reason) => {
-    writeFileSync(join(folder, 'box.obj'), readFileSync(join(MODELS, 'table.obj'), 'utf8').replace('mtllib table.mtl', `mtllib ${name}`));
-    const scene = writeScene('obj', { objects: [{ mesh: 'box.obj', position: [1.5, 0, 1.5] }] });
-    const { message, ms } = await refusal(scene);
-    expectOneLine(message, `obj.json: objects[0].mesh: box.obj: cannot read ${name}`, reason);
-    expect(ms).toBeLessThan(2000);
-    // The synchronous loader (OBJ only) refuses the same way.
-    expect(() => loadLightingSceneFile(scene, { within: cliReadableFolders(scene) })).toThrow(`cannot read ${name}`);
-  }, 10_000);
+  it.each([...SPECIALS, ['huge.bin', /file is too large/] as [string, RegExp]])(
+    'OBJ mtllib %s: refused at once, naming it',
+    async (name, reason) => {
+      writeFileSync(join(folder, 'box.obj'), readFileSync(join(MODELS, 'table.obj'), 'utf8').replace('mtllib table.mtl', `mtllib ${name}`));
+      const scene = writeScene('obj', { objects: [{ mesh: 'box.obj', position: [1.5, 0, 1.5] }] });
+      const { message, ms } = await refusal(scene);
+      expectOneLine(message, `obj.json: objects[0].mesh: box.obj: cannot read ${name}`, reason);
+      expect(ms).toBeLessThan(2000);
+      // The synchronous loader (OBJ only) refuses the same way.
+      expect(() => loadLightingSceneFile(scene, { within: cliReadableFolders(scene) })).toThrow(`cannot read ${name}`);
+    },
+    10_000,
+  );
 
-  it.each([...SPECIALS, ['huge.bin', /file is too large/] as [string, RegExp]])('glTF buffer uri %s: refused at once, naming it', async (name, reason) => {
-    const gltf = JSON.parse(readFileSync(join(MODELS, 'table-external.gltf'), 'utf8')) as { buffers: { uri: string }[] };
-    gltf.buffers[0].uri = name;
-    writeFileSync(join(folder, 'box.gltf'), JSON.stringify(gltf));
-    const scene = writeScene('gltf', { objects: [{ mesh: 'box.gltf', position: [1.5, 0, 1.5] }] });
-    const { message, ms } = await refusal(scene);
-    expectOneLine(message, `gltf.json: objects[0].mesh: box.gltf: cannot read ${name}`, reason);
-    expect(ms).toBeLessThan(2000);
-  }, 10_000);
+  it.each([...SPECIALS, ['huge.bin', /file is too large/] as [string, RegExp]])(
+    'glTF buffer uri %s: refused at once, naming it',
+    async (name, reason) => {
+      const gltf = JSON.parse(readFileSync(join(MODELS, 'table-external.gltf'), 'utf8')) as { buffers: { uri: string }[] };
+      gltf.buffers[0].uri = name;
+      writeFileSync(join(folder, 'box.gltf'), JSON.stringify(gltf));
+      const scene = writeScene('gltf', { objects: [{ mesh: 'box.gltf', position: [1.5, 0, 1.5] }] });
+      const { message, ms } = await refusal(scene);
+      expectOneLine(message, `gltf.json: objects[0].mesh: box.gltf: cannot read ${name}`, reason);
+      expect(ms).toBeLessThan(2000);
+    },
+    10_000,
+  );
 
   it('the model file itself: a link to /dev/zero, a pipe or a folder named as the mesh is refused the same way', async () => {
     symlinkSync('/dev/zero', join(folder, 'zero.obj'));
     execFileSync('mkfifo', [join(folder, 'pipe.obj')]);
     mkdirSync(join(folder, 'folder.obj'));
-    for (const [mesh, reason] of [['zero.obj', /outside the scene's folder/], ['pipe.obj', /a named pipe, not a regular file/], ['folder.obj', /a directory, not a regular file/]] as const) {
+    for (const [mesh, reason] of [
+      ['zero.obj', /outside the scene's folder/],
+      ['pipe.obj', /a named pipe, not a regular file/],
+      ['folder.obj', /a directory, not a regular file/],
+    ] as const) {
       const { message } = await refusal(writeScene('model', { objects: [{ mesh, position: [1.5, 0, 1.5] }] }));
       expectOneLine(message, `model.json: objects[0].mesh: cannot read ${mesh} (`, reason);
     }
@@ -132,7 +148,11 @@ describe('a scene names a file that is not a regular file, too large, or outside
   });
 
   it('a scene file given on the command line is read wherever it is, but only if it is a regular file', async () => {
-    for (const [path, reason] of [['/dev/zero', /^zero: cannot read \/dev\/zero \(a character device, not a regular file\)$/], [join(folder, 'pipe'), /a named pipe, not a regular file/], [folder, /a directory, not a regular file/]] as const) {
+    for (const [path, reason] of [
+      ['/dev/zero', /^zero: cannot read \/dev\/zero \(a character device, not a regular file\)$/],
+      [join(folder, 'pipe'), /a named pipe, not a regular file/],
+      [folder, /a directory, not a regular file/],
+    ] as const) {
       await expect(loadLightingSceneFileAsync(path)).rejects.toThrow(reason);
     }
   });

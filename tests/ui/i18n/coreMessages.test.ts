@@ -84,7 +84,11 @@ describe('core messages in every language', async () => {
       else r = e;
     }
     expect(r?.code).toMatch(/^driverFull|noRoomForModule|noFreeGap$/);
-    expectWorded(r!, r!.reason, Object.values(r!.params ?? {}).filter((v): v is number => typeof v === 'number' && !Number.isInteger(v)));
+    expectWorded(
+      r!,
+      r!.reason,
+      Object.values(r!.params ?? {}).filter((v): v is number => typeof v === 'number' && !Number.isInteger(v)),
+    );
   });
 
   it('branches and connectors: a connector that does not turn, named from the catalog in each language', () => {
@@ -206,8 +210,7 @@ describe('core messages in every language', async () => {
 
 /** Every code the core can emit, collected from its source, so a new sentence without a message fails here. */
 describe('the English catalogue has every code the core emits', () => {
-  const files = (dir: string): string[] =>
-    (readdirSyncRecursive(new URL(`../../../src/core/${dir}/`, import.meta.url)) as string[]).filter((f) => f.endsWith('.ts'));
+  const files = (dir: string): string[] => (readdirSyncRecursive(new URL(`../../../src/core/${dir}/`, import.meta.url)) as string[]).filter((f) => f.endsWith('.ts'));
   const source = ['model', 'photometry'].flatMap(files).concat(['inputError.ts', 'untrustedJson.ts', 'zodIssues.ts'].map((f) => new URL(`../../../src/core/${f}`, import.meta.url).pathname));
   it('collects the codes given to refusals, InputErrors, keyed problems and photometry patterns', async () => {
     // The scene actions' codes are worded by the scene panel from its area, which ships with that panel's chunk.

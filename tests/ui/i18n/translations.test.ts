@@ -27,9 +27,88 @@ const placeholders = (v: string | PluralMessage) => [...new Set(forms(v).flatMap
  * same way (checked by hand). Anything else equal to English is an untranslated string.
  */
 const SAME_AS_ENGLISH: Record<string, readonly string[]> = {
-  de: ['common.ok', 'view3d.compareToggle', 'view3d.compareA', 'view3d.compareB', 'common.labelWithReason', 'app.fieldInMetres', 'options.kelvin', 'planner.finishOption', 'options.driverChoice', 'live.cct', 'live.universeShort', 'view3d.modeLux', 'planner.bomModule', 'options.clipN', 'a11y.system', 'filters.chromaticity', 'filters.transmission', 'furniture.sideboard', 'scenes.go', 'scenes.goTo', 'scenes.seconds'],
-  fr: ['common.ok', 'view3d.compareToggle', 'view3d.compareA', 'view3d.compareB', 'app.fieldInMetres', 'options.kelvin', 'planner.finishOption', 'options.driverChoice', 'live.cct', 'live.universeShort', 'view3d.modeLux', 'planner.bomModule', 'planner.bomLineTotal', 'planner.bomArticle', 'options.panel', 'commands.options', 'app.surfaces', 'options.rotation', 'options.railTitle', 'options.suspensionField', 'options.mounting', 'files.triangles', 'live.sources', 'live.connectedStatus', 'view3d.selectedModule', 'furniture.sofa', 'planner.bomTotal', 'planner.toolOptions', 'a11y.railCount', 'a11y.moduleCount', 'aim.rotation', 'filters.chromaticity', 'filters.transmission', 'scenes.go', 'scenes.seconds'],
-  it: ['common.ok', 'view3d.compareToggle', 'view3d.compareA', 'view3d.compareB', 'common.labelWithReason', 'app.fieldInMetres', 'options.kelvin', 'planner.finishOption', 'options.driverChoice', 'live.cct', 'live.universeShort', 'view3d.modeLux', 'planner.bomModule', 'finishes.terracotta', 'options.clipN', 'exposure.ev100', 'filters.chromaticity', 'scenes.go', 'scenes.goTo', 'scenes.seconds'],
+  de: [
+    'common.ok',
+    'view3d.compareToggle',
+    'view3d.compareA',
+    'view3d.compareB',
+    'common.labelWithReason',
+    'app.fieldInMetres',
+    'options.kelvin',
+    'planner.finishOption',
+    'options.driverChoice',
+    'live.cct',
+    'live.universeShort',
+    'view3d.modeLux',
+    'planner.bomModule',
+    'options.clipN',
+    'a11y.system',
+    'filters.chromaticity',
+    'filters.transmission',
+    'furniture.sideboard',
+    'scenes.go',
+    'scenes.goTo',
+    'scenes.seconds',
+  ],
+  fr: [
+    'common.ok',
+    'view3d.compareToggle',
+    'view3d.compareA',
+    'view3d.compareB',
+    'app.fieldInMetres',
+    'options.kelvin',
+    'planner.finishOption',
+    'options.driverChoice',
+    'live.cct',
+    'live.universeShort',
+    'view3d.modeLux',
+    'planner.bomModule',
+    'planner.bomLineTotal',
+    'planner.bomArticle',
+    'options.panel',
+    'commands.options',
+    'app.surfaces',
+    'options.rotation',
+    'options.railTitle',
+    'options.suspensionField',
+    'options.mounting',
+    'files.triangles',
+    'live.sources',
+    'live.connectedStatus',
+    'view3d.selectedModule',
+    'furniture.sofa',
+    'planner.bomTotal',
+    'planner.toolOptions',
+    'a11y.railCount',
+    'a11y.moduleCount',
+    'aim.rotation',
+    'filters.chromaticity',
+    'filters.transmission',
+    'scenes.go',
+    'scenes.seconds',
+  ],
+  it: [
+    'common.ok',
+    'view3d.compareToggle',
+    'view3d.compareA',
+    'view3d.compareB',
+    'common.labelWithReason',
+    'app.fieldInMetres',
+    'options.kelvin',
+    'planner.finishOption',
+    'options.driverChoice',
+    'live.cct',
+    'live.universeShort',
+    'view3d.modeLux',
+    'planner.bomModule',
+    'finishes.terracotta',
+    'options.clipN',
+    'exposure.ev100',
+    'filters.chromaticity',
+    'scenes.go',
+    'scenes.goTo',
+    'scenes.seconds',
+  ],
 };
 
 describe('translations', async () => {
@@ -63,16 +142,25 @@ describe('translations', async () => {
 
   it('the demo catalog names every module type, beam, preset, connector, fixing and feed kit in de, fr and it', () => {
     const c = defaultCatalog as unknown as Record<string, unknown> & {
-      rail: { names?: object }; suspension: { names?: object }; surfaceMount: { names?: object }; feed: { names?: object };
+      rail: { names?: object };
+      suspension: { names?: object };
+      surfaceMount: { names?: object };
+      feed: { names?: object };
       connectors: { id: string; names?: object }[];
       moduleTypes: { id: string; names?: object; beams: { id: string; labels?: object }[] }[];
       presets: { id: string; names?: object; descriptions?: object }[];
     };
     const entries: [string, object | undefined][] = [
-      ['rail', c.rail.names], ['suspension', c.suspension.names], ['surfaceMount', c.surfaceMount.names], ['feed', c.feed.names],
+      ['rail', c.rail.names],
+      ['suspension', c.suspension.names],
+      ['surfaceMount', c.surfaceMount.names],
+      ['feed', c.feed.names],
       ...c.connectors.map((x): [string, object | undefined] => [`connector ${x.id}`, x.names]),
       ...c.moduleTypes.flatMap((t): [string, object | undefined][] => [[`type ${t.id}`, t.names], ...t.beams.map((b): [string, object | undefined] => [`beam ${t.id}/${b.id}`, b.labels])]),
-      ...c.presets.flatMap((p): [string, object | undefined][] => [[`preset ${p.id}`, p.names], [`preset ${p.id} description`, p.descriptions]]),
+      ...c.presets.flatMap((p): [string, object | undefined][] => [
+        [`preset ${p.id}`, p.names],
+        [`preset ${p.id} description`, p.descriptions],
+      ]),
     ];
     const missing = entries.filter(([, t]) => !t || !['de', 'fr', 'it'].every((l) => typeof (t as Record<string, unknown>)[l] === 'string')).map(([n]) => n);
     expect(entries.length).toBeGreaterThan(30);

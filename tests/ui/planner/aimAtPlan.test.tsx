@@ -34,7 +34,10 @@ describe('aim at in the plan', () => {
     t.controller.pointerUp(at);
     expect(mode.get()).toBeNull();
     expect(t.store.getState().history.past).toHaveLength(past + 1);
-    const aimed = t.config.systems.find((s) => s.id === system.id)!.rails.flatMap((r) => r.modules).find((m) => m.id === module.id)!;
+    const aimed = t.config.systems
+      .find((s) => s.id === system.id)!
+      .rails.flatMap((r) => r.modules)
+      .find((m) => m.id === module.id)!;
     expect(aimed.aim).toBeDefined();
     const heading = modulePlacements(system, catalog).find((p) => p.moduleId === module.id)!.heading;
     const axis = aimAxis(heading, aimed.aim);
@@ -55,7 +58,12 @@ describe('aim at in the plan', () => {
     t.store.getState().dispatch('setAim', { moduleId: module.id, aim: { rotation: 30, tilt: 25 } });
     const aimed = t.config.systems.flatMap((s) => s.rails.flatMap((r) => r.modules)).find((m) => m.id === module.id)!;
     expect(aimed.aim).toEqual({ rotation: 30, tilt: 25 });
-    const gate = createActionGate(t.config, catalog, () => {}, () => {});
+    const gate = createActionGate(
+      t.config,
+      catalog,
+      () => {},
+      () => {},
+    );
     const mode = aimAtMode(t.store);
     const html = () => renderToStaticMarkup(<AimOptions module={aimed} catalog={catalog} gate={gate} aimMode={mode} />);
     expect(html()).toContain('data-rotation="30" data-tilt="25"');
@@ -72,7 +80,12 @@ describe('aim at in the plan', () => {
     const t = new TestPlanner();
     const fixed = t.config.systems.flatMap((s) => s.rails.flatMap((r) => r.modules)).find((m) => !catalog.moduleTypes.find((x) => x.id === m.type)?.adjustable);
     expect(fixed).toBeDefined();
-    const gate = createActionGate(t.config, catalog, () => {}, () => {});
+    const gate = createActionGate(
+      t.config,
+      catalog,
+      () => {},
+      () => {},
+    );
     expect(renderToStaticMarkup(<AimOptions module={fixed!} catalog={catalog} gate={gate} aimMode={aimAtMode(t.store)} />)).toBe('');
   });
 });

@@ -17,7 +17,9 @@ describe('beamChangeNote', () => {
     expect(note).toMatch(/„.*30°.*“.*„.*48°.*“/);
     expect(note).not.toMatch(/[a-z]+\.[a-z]+[A-Z]/); // no message key
     const en = createI18n({ locale: 'en' }).getSnapshot();
-    expect(beamChangeNote(spot30, module('flood', 'flood48'), catalog, en.t, 'en')).toBe('Flood has no “Spot 30°”: the nearest beam, “Flood 48°”, is set'.replace('Flood has', `${catalog.moduleTypes.find((m) => m.id === 'flood')!.name} has`));
+    expect(beamChangeNote(spot30, module('flood', 'flood48'), catalog, en.t, 'en')).toBe(
+      'Flood has no “Spot 30°”: the nearest beam, “Flood 48°”, is set'.replace('Flood has', `${catalog.moduleTypes.find((m) => m.id === 'flood')!.name} has`),
+    );
   });
   it('says nothing when the beam was kept, for a beam change on the same type, or for another module', () => {
     const { t } = createI18n({ locale: 'en' }).getSnapshot();

@@ -27,7 +27,20 @@ const a = placed.systems[0].rails[0].id;
 const tree = run(run(placed, 'addBranch', { railId: a, connector: 'tee', turn: 0, length: 1 }), 'addBranch', { railId: a, turn: 90, length: 1 });
 const sys = tree.systems[0];
 const render = (railIndex: number) =>
-  renderToStaticMarkup(<RailOptions rail={sys.rails[railIndex]} system={sys} catalog={catalog} gate={createActionGate(tree, catalog, () => {}, () => {})} onClose={() => {}} />);
+  renderToStaticMarkup(
+    <RailOptions
+      rail={sys.rails[railIndex]}
+      system={sys}
+      catalog={catalog}
+      gate={createActionGate(
+        tree,
+        catalog,
+        () => {},
+        () => {},
+      )}
+      onClose={() => {}}
+    />,
+  );
 const control = (html: string, testId: string) => new RegExp(`<button[^>]*data-testid="${testId}"[^>]*>`).exec(html)?.[0] ?? '';
 
 describe('planner: branches of a tree', () => {
@@ -57,7 +70,12 @@ describe('planner: branches of a tree', () => {
     const view = { scale: 100, offsetX: 0, offsetY: 0 };
     // What PlanSvg draws: rail A, the T (its incoming arm and one arm per branch), B, C.
     const { elements, kinds } = systemElementTree(sys, catalog);
-    expect(kinds).toEqual([{ kind: 'rail', rail: 0 }, { kind: 'node', rail: 0 }, { kind: 'rail', rail: 1 }, { kind: 'rail', rail: 2 }]);
+    expect(kinds).toEqual([
+      { kind: 'rail', rail: 0 },
+      { kind: 'node', rail: 0 },
+      { kind: 'rail', rail: 1 },
+      { kind: 'rail', rail: 2 },
+    ]);
     expect(elements[1].length).toBe(3);
     const hit = planHitTest(tree, catalog, view, worldToScreen(view, { x: 2.55, z: 3 }));
     expect(hit).toEqual({ systemId: sys.id, railId: a });

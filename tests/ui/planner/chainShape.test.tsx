@@ -20,7 +20,20 @@ const run = (s: Configuration, name: string, params: unknown) => {
 // 90° left: the hinge at (2.56, 1), the new rail from z = 0.94 to 0.44 (inside the 6 × 4 m room).
 const placed = run(createConfiguration({ width: 6, depth: 4, height: 3 }), 'placePreset', { presetId: 'single', x: 1, z: 1 });
 const config = run(placed, 'addRail', { systemId: placed.systems[0].id, connector: 'flex', turn: 90, length: 0.5 });
-const render = (c: Configuration) => renderToStaticMarkup(<SystemOptions system={c.systems[0]} catalog={catalog} gate={createActionGate(c, catalog, () => {}, () => {})} onClose={() => {}} />);
+const render = (c: Configuration) =>
+  renderToStaticMarkup(
+    <SystemOptions
+      system={c.systems[0]}
+      catalog={catalog}
+      gate={createActionGate(
+        c,
+        catalog,
+        () => {},
+        () => {},
+      )}
+      onClose={() => {}}
+    />,
+  );
 const html = render(config);
 const control = (testId: string) => new RegExp(`<(?:button|input)[^>]*data-testid="${testId}"[^>]*>`).exec(html)?.[0] ?? '';
 

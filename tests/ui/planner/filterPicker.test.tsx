@@ -16,8 +16,17 @@ const base = withPreset('corner-l', 1, 3);
 const mods = only(base).rails.flatMap((r) => r.modules);
 const spot = mods.find((m) => m.type === 'spot')!;
 const flood = mods.find((m) => m.type === 'flood')!;
-const gate = (c: Configuration) => createActionGate(c, catalog, () => {}, () => {});
-const moduleIn = (c: Configuration, id: string): ModuleInstance => only(c).rails.flatMap((r) => r.modules).find((m) => m.id === id)!;
+const gate = (c: Configuration) =>
+  createActionGate(
+    c,
+    catalog,
+    () => {},
+    () => {},
+  );
+const moduleIn = (c: Configuration, id: string): ModuleInstance =>
+  only(c)
+    .rails.flatMap((r) => r.modules)
+    .find((m) => m.id === id)!;
 const picker = (c: Configuration, id: string) => renderToStaticMarkup(<FilterPicker module={moduleIn(c, id)} catalog={catalog} gate={gate(c)} />);
 
 describe('filter picker', () => {

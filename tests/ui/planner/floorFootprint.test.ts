@@ -3,10 +3,7 @@ import { describe, expect, it } from 'vitest';
 import { parsePhotometry } from '../../../src/core/photometry/parsePhotometry';
 import { floorFootprint } from '../../../src/ui/planner/floorFootprint';
 
-const iso = parsePhotometry(
-  ['IESNA:LM-63-2002', 'TILT=NONE', '1 1000 1 3 1 1 2 0 0 0', '1 1 10', '0 90 180', '0', '79.577 79.577 79.577'].join('\n'),
-  'iso.ies',
-);
+const iso = parsePhotometry(['IESNA:LM-63-2002', 'TILT=NONE', '1 1000 1 3 1 1 2 0 0 0', '1 1 10', '0 90 180', '0', '79.577 79.577 79.577'].join('\n'), 'iso.ies');
 const real = (name: string) => parsePhotometry(readFileSync(`public/ies/${name}`), name);
 
 describe('floorFootprint (half-maximum floor illuminance, units of mounting height)', () => {
@@ -35,10 +32,7 @@ describe('floorFootprint (half-maximum floor illuminance, units of mounting heig
   });
 
   it('returns null for a luminaire that sends nothing downward', () => {
-    const up = parsePhotometry(
-      ['IESNA:LM-63-2002', 'TILT=NONE', '1 1000 1 3 1 1 2 0 0 0', '1 1 10', '0 90 180', '0', '0 0 100'].join('\n'),
-      'up.ies',
-    );
+    const up = parsePhotometry(['IESNA:LM-63-2002', 'TILT=NONE', '1 1000 1 3 1 1 2 0 0 0', '1 1 10', '0 90 180', '0', '0 0 100'].join('\n'), 'up.ies');
     expect(floorFootprint(up)).toBeNull();
   });
 });

@@ -10,7 +10,6 @@ import { detailLevel } from '../../../src/ui/planner/detailLevel';
 import { zoomAt } from '../../../src/ui/planner/viewTransform';
 import { TestPlanner, twoRailSystem } from './testPlanner';
 
-
 function zoomedIn(): TestPlanner {
   const t = new TestPlanner(twoRailSystem());
   t.controller.setView(zoomAt(t.view, t.screenOf({ x: 1.75, z: 1 }), 2.5), false);
@@ -33,14 +32,23 @@ describe('dragging a module along its rail', () => {
     expect(d && 'moduleId' in d ? [d.moduleId, d.offset, d.invalid] : null).toEqual(['m4', expect.closeTo(0.5, 9), false]);
     // The preview system has the module there; the store does not yet.
     expect(d && 'moduleId' in d ? d.preview.rails[0].modules[1].offset : null).toBe(0.5);
-    expect(offsets(t)).toEqual([['m3', undefined], ['m4', undefined]]);
+    expect(offsets(t)).toEqual([
+      ['m3', undefined],
+      ['m4', undefined],
+    ]);
     t.controller.pointerUp({ sx: from.sx + 0.33 * k, sy: from.sy + 0.2 * k });
     expect(t.controller.drag).toBeNull();
-    expect(offsets(t)).toEqual([['m3', 0], ['m4', 0.5]]);
+    expect(offsets(t)).toEqual([
+      ['m3', 0],
+      ['m4', 0.5],
+    ]);
     expect(t.store.getState().history.past).toHaveLength(1);
     expect(t.problems()).toEqual([]);
     t.press('Mod+z');
-    expect(offsets(t)).toEqual([['m3', undefined], ['m4', undefined]]);
+    expect(offsets(t)).toEqual([
+      ['m3', undefined],
+      ['m4', undefined],
+    ]);
   });
 
   it('a refused position shows the reason and keeps the module at the last accepted one', () => {
@@ -56,7 +64,10 @@ describe('dragging a module along its rail', () => {
     expect(d && 'moduleId' in d ? [d.offset, d.invalid] : null).toEqual([expect.closeTo(0.35, 9), true]);
     expect(t.status).toBe('Linear diffuser at 0.05–0.65 m would overlap Spot m3');
     t.controller.pointerUp({ sx: from.sx - 0.1 * k, sy: from.sy });
-    expect(offsets(t)).toEqual([['m3', 0], ['m4', 0.35]]);
+    expect(offsets(t)).toEqual([
+      ['m3', 0],
+      ['m4', 0.35],
+    ]);
     expect(t.store.getState().history.past).toHaveLength(1);
   });
 
@@ -64,7 +75,10 @@ describe('dragging a module along its rail', () => {
     const t = zoomedIn();
     const from = t.moduleCentre(1);
     t.drag(from, { sx: from.sx, sy: from.sy + 0.3 * t.view.scale });
-    expect(offsets(t)).toEqual([['m3', undefined], ['m4', undefined]]);
+    expect(offsets(t)).toEqual([
+      ['m3', undefined],
+      ['m4', undefined],
+    ]);
     expect(t.store.getState().history.past).toHaveLength(0);
   });
 
@@ -74,7 +88,10 @@ describe('dragging a module along its rail', () => {
     const from = t.moduleCentre(1);
     t.drag(from, { sx: from.sx + 0.5 * t.view.scale, sy: from.sy });
     expect(t.system().x).toBeCloseTo(1.5, 9);
-    expect(offsets(t)).toEqual([['m3', undefined], ['m4', undefined]]);
+    expect(offsets(t)).toEqual([
+      ['m3', undefined],
+      ['m4', undefined],
+    ]);
   });
 });
 
@@ -84,18 +101,33 @@ describe('arrow keys on a selected module', () => {
     t.tap(t.moduleCentre(1));
     expect(t.store.getState().selection).toEqual({ kind: 'module', id: 'm4' });
     expect(t.press('ArrowRight')).toBe(true);
-    expect(offsets(t)).toEqual([['m3', 0], ['m4', 0.2]]);
+    expect(offsets(t)).toEqual([
+      ['m3', 0],
+      ['m4', 0.2],
+    ]);
     t.press('ArrowRight');
-    expect(offsets(t)).toEqual([['m3', 0], ['m4', 0.25]]);
+    expect(offsets(t)).toEqual([
+      ['m3', 0],
+      ['m4', 0.25],
+    ]);
     t.press('ArrowLeft');
-    expect(offsets(t)).toEqual([['m3', 0], ['m4', 0.2]]);
+    expect(offsets(t)).toEqual([
+      ['m3', 0],
+      ['m4', 0.2],
+    ]);
     t.press('ArrowUp');
     expect(t.status).toBe('a module slides along its rail: use the arrows along it');
-    expect(offsets(t)).toEqual([['m3', 0], ['m4', 0.2]]);
+    expect(offsets(t)).toEqual([
+      ['m3', 0],
+      ['m4', 0.2],
+    ]);
     // Left twice more: 0.15 touches the spot, then 0.1 would overlap it.
     t.press('ArrowLeft');
     t.press('ArrowLeft');
-    expect(offsets(t)).toEqual([['m3', 0], ['m4', 0.15]]);
+    expect(offsets(t)).toEqual([
+      ['m3', 0],
+      ['m4', 0.15],
+    ]);
     expect(t.status).toBe('Linear diffuser at 0.1–0.7 m would overlap Spot m3');
   });
 });

@@ -19,7 +19,13 @@ function withItems(items: { item: string; x: number; z: number }[], room = {}): 
   return store.getState().config;
 }
 
-const gate = (c: Configuration) => createActionGate(c, catalog, () => {}, () => {});
+const gate = (c: Configuration) =>
+  createActionGate(
+    c,
+    catalog,
+    () => {},
+    () => {},
+  );
 const decode = (html: string) => html.replace(/&#x27;/g, "'").replace(/&amp;/g, '&');
 
 describe('object options', () => {

@@ -8,7 +8,18 @@ import type { PlanPoint } from '../../../src/ui/planner/viewTransform';
 
 /** Shoelace area of loops, even-odd: holes (the opposite winding) subtract. */
 function area(loops: PlanPoint[][]): number {
-  return Math.abs(loops.reduce((sum, l) => sum + l.reduce((s, p, i) => { const q = l[(i + 1) % l.length]; return s + p.x * q.z - q.x * p.z; }, 0) / 2, 0));
+  return Math.abs(
+    loops.reduce(
+      (sum, l) =>
+        sum +
+        l.reduce((s, p, i) => {
+          const q = l[(i + 1) % l.length];
+          return s + p.x * q.z - q.x * p.z;
+        }, 0) /
+          2,
+      0,
+    ),
+  );
 }
 
 function bounds(loops: PlanPoint[][]) {
@@ -28,7 +39,13 @@ describe('object outlines seen from above', () => {
     const loops = libraryItemOutline('dining-table');
     expect(loops).toHaveLength(1);
     const b = bounds(loops);
-    for (const [got, want] of [[b.minX, -0.9], [b.maxX, 0.9], [b.minZ, -0.45], [b.maxZ, 0.45]]) expect(Math.abs(got - want)).toBeLessThanOrEqual(OUTLINE_CELL + 1e-9);
+    for (const [got, want] of [
+      [b.minX, -0.9],
+      [b.maxX, 0.9],
+      [b.minZ, -0.45],
+      [b.maxZ, 0.45],
+    ])
+      expect(Math.abs(got - want)).toBeLessThanOrEqual(OUTLINE_CELL + 1e-9);
     // A rectangle traced on cells aligned with it: exact up to float noise; simplified to its four corners.
     expect(area(loops)).toBeCloseTo(1.8 * 0.9, 6);
     expect(loops[0]).toHaveLength(4);
@@ -45,12 +62,7 @@ describe('object outlines seen from above', () => {
   });
 
   it('a frame (four bars round a hole) gives two loops; the hole is not part of the object', () => {
-    const mesh = composeParts([
-      boxPart('f', [0, 0, 0], [1, 0.1, 0.1]),
-      boxPart('f', [0, 0, 0.9], [1, 0.1, 1]),
-      boxPart('f', [0, 0, 0.1], [0.1, 0.1, 0.9]),
-      boxPart('f', [0.9, 0, 0.1], [1, 0.1, 0.9]),
-    ], grey);
+    const mesh = composeParts([boxPart('f', [0, 0, 0], [1, 0.1, 0.1]), boxPart('f', [0, 0, 0.9], [1, 0.1, 1]), boxPart('f', [0, 0, 0.1], [0.1, 0.1, 0.9]), boxPart('f', [0.9, 0, 0.1], [1, 0.1, 0.9])], grey);
     const config = withMesh(mesh);
     const loops = objectPolygons(config, 'o1');
     expect(loops).toHaveLength(2);

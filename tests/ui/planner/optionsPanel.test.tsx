@@ -10,7 +10,13 @@ import { catalog } from './testPlanner';
 
 const config = demoConfiguration(catalog);
 const system = config.systems[0];
-const gate = (c: Configuration = config, runs: [string, unknown][] = []) => createActionGate(c, catalog, (n, p) => runs.push([n, p]), () => {});
+const gate = (c: Configuration = config, runs: [string, unknown][] = []) =>
+  createActionGate(
+    c,
+    catalog,
+    (n, p) => runs.push([n, p]),
+    () => {},
+  );
 const panel = (path: SelectionPath) => renderToStaticMarkup(<OptionsPanel config={config} catalog={catalog} path={path} gate={gate()} onClose={() => {}} />);
 const title = (html: string) => /<h2[^>]*>([^<]*)<\/h2>/.exec(html)?.[1];
 
@@ -34,7 +40,7 @@ describe('options panel: one component per selection kind', () => {
 });
 
 describe('GatedButton: the gate pattern in one place', () => {
-  it('enabled as the model says, with the model\'s reason as the disabled title; the current choice is pressed and never refused', () => {
+  it("enabled as the model says, with the model's reason as the disabled title; the current choice is pressed and never refused", () => {
     const g = gate();
     const enabled = renderToStaticMarkup(<GatedButton gate={g} action="rotateSystem" params={{ systemId: system.id, by: 15 }} label="Turn" />);
     const refused = renderToStaticMarkup(<GatedButton gate={g} action="deleteSystem" params={{ systemId: 'nope' }} label="Delete" />);

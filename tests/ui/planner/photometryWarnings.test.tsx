@@ -44,7 +44,12 @@ function moduleOptions(catalog: Catalog) {
   const system = config.systems[0];
   const rail = system.rails.find((r) => r.modules.length > 0)!;
   const module = rail.modules[0];
-  const gate = createActionGate(config, catalog, () => {}, () => {});
+  const gate = createActionGate(
+    config,
+    catalog,
+    () => {},
+    () => {},
+  );
   const path = { systemId: system.id, railId: rail.id, moduleId: module.id };
   return { config, gate, path, photometry: modulePhotometryPath(module, catalog)! };
 }
@@ -63,7 +68,14 @@ async function loaded(source: ReturnType<typeof createFootprintSource>, path: st
 
 describe('PhotometryWarnings', () => {
   it('a note (role, label) with the file name and one item per warning; nothing without warnings', () => {
-    const html = renderToStaticMarkup(<PhotometryWarnings notes={[{ file: 'ies/odd.ies', warnings: ['a & b', 'c'] }, { file: 'ies/fine.ies', warnings: [] }]} />);
+    const html = renderToStaticMarkup(
+      <PhotometryWarnings
+        notes={[
+          { file: 'ies/odd.ies', warnings: ['a & b', 'c'] },
+          { file: 'ies/fine.ies', warnings: [] },
+        ]}
+      />,
+    );
     expect(html).toContain('role="note"');
     expect(html).toContain('aria-label="Photometric data warnings"');
     expect(html).toContain('data-testid="photometry-warnings"');
@@ -76,8 +88,8 @@ describe('PhotometryWarnings', () => {
   });
 });
 
-describe('module options: the module\'s photometric file', () => {
-  it('shows the file\'s warnings once the plan has loaded it', async () => {
+describe("module options: the module's photometric file", () => {
+  it("shows the file's warnings once the plan has loaded it", async () => {
     const catalog = oddCatalog();
     const { config, gate, path, photometry } = moduleOptions(catalog);
     const source = createFootprintSource('', fetchFixture);
@@ -95,7 +107,7 @@ describe('module options: the module\'s photometric file', () => {
     expect(html.indexOf('module-photometry-warnings')).toBeLessThan(html.indexOf('aria-label="Colour temperature"'));
   });
 
-  it('the catalog\'s own files: no note', async () => {
+  it("the catalog's own files: no note", async () => {
     const { config, gate, path, photometry } = moduleOptions(defaultCatalog);
     const source = createFootprintSource('', fetchFixture);
     await loaded(source, photometry);
@@ -109,7 +121,14 @@ describe('module options: the module\'s photometric file', () => {
 describe('PhotometryWarnings collapsed (the 3D view)', () => {
   it('one summary line counting the warnings, the text inside a closed <details>', () => {
     const html = renderToStaticMarkup(
-      <PhotometryWarnings collapsed testId="view3d-photometry-warnings" notes={[{ file: 'ies/a.ies', warnings: ['x', 'y'] }, { file: 'ies/b.ldt', warnings: ['z'] }]} />,
+      <PhotometryWarnings
+        collapsed
+        testId="view3d-photometry-warnings"
+        notes={[
+          { file: 'ies/a.ies', warnings: ['x', 'y'] },
+          { file: 'ies/b.ldt', warnings: ['z'] },
+        ]}
+      />,
     );
     expect(html).toMatch(/^<div class="photometry-warnings" role="note" aria-label="Photometric data warnings" data-testid="view3d-photometry-warnings"><details><summary>/);
     expect(html).toContain('Photometric data: 3 warnings</summary>');

@@ -13,11 +13,15 @@ import { selectionPath } from '../../../src/ui/planner/selection';
 import { zoomAt } from '../../../src/ui/planner/viewTransform';
 import { TestPlanner, catalog, twoRailSystem } from './testPlanner';
 
-
 /** The controls as the planner renders them now, with the controller's drag. */
 function controls(t: TestPlanner): string {
   const config = t.config;
-  const gate = createActionGate(config, catalog, () => {}, () => {});
+  const gate = createActionGate(
+    config,
+    catalog,
+    () => {},
+    () => {},
+  );
   const path = selectionPath(config, t.store.getState().selection);
   return renderToStaticMarkup(
     <PlanControls config={config} catalog={catalog} view={t.view} viewport={t.controller.viewport} level={detailLevel(t.view.scale)} selection={path} gate={gate} onSelect={() => {}} onOpenOptions={() => {}} drag={t.controller.drag} />,

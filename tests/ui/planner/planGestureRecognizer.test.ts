@@ -1,14 +1,6 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import {
-  CTRL_WHEEL_MAX_DELTA_PX,
-  type PlanGestureSink,
-  PlanGestureRecognizer,
-  type PointerRecord,
-  TRACKPAD_PINCH_SPAN_PX,
-  WHEEL_LINE_PX,
-  WHEEL_PAGE_PX,
-} from '../../../src/ui/planner/planGestureRecognizer';
+import { CTRL_WHEEL_MAX_DELTA_PX, type PlanGestureSink, PlanGestureRecognizer, type PointerRecord, TRACKPAD_PINCH_SPAN_PX, WHEEL_LINE_PX, WHEEL_PAGE_PX } from '../../../src/ui/planner/planGestureRecognizer';
 import { DRAG_THRESHOLD_PX } from '../../../src/ui/planner/PlannerController';
 import type { ScreenPoint } from '../../../src/ui/planner/viewTransform';
 import { screenToWorld, worldToScreen } from '../../../src/ui/planner/viewTransform';
@@ -156,12 +148,7 @@ describe('pinches', () => {
     g.move(finger(1, 100, 40));
     g.up(finger(1, 100, 40));
     g.move(finger(2, 310, 100)); // the finger left over neither pinches nor drags
-    expect(c.calls).toEqual([
-      ['pinchStart', at(150, 100), 100],
-      ['pinchMove', at(200, 100), 200],
-      ['pinchMove', at(200, 70), Math.hypot(200, 60)],
-      ['pinchEnd'],
-    ]);
+    expect(c.calls).toEqual([['pinchStart', at(150, 100), 100], ['pinchMove', at(200, 100), 200], ['pinchMove', at(200, 70), Math.hypot(200, 60)], ['pinchEnd']]);
     // A new finger pinches with the one left over, from where that one is now.
     g.down(finger(3, 310, 200));
     expect(c.calls.at(-1)).toEqual(['pinchStart', at(310, 150), 100]);
@@ -180,12 +167,7 @@ describe('pinches', () => {
     g.down(finger(3, 500, 500)); // a third finger is ignored
     g.move(finger(3, 600, 600));
     g.up(finger(3, 600, 600));
-    expect(c.calls).toEqual([
-      ['pointerDown', at(0, 0)],
-      ['pointerMove', at(30, 40)],
-      ['pointerCancel'],
-      ['pinchStart', at(30, 90), 100],
-    ]);
+    expect(c.calls).toEqual([['pointerDown', at(0, 0)], ['pointerMove', at(30, 40)], ['pointerCancel'], ['pinchStart', at(30, 90), 100]]);
     g.cancel(2);
     expect(c.calls.at(-1)).toEqual(['pinchEnd']);
     expect(c.violations).toEqual([]);
@@ -273,12 +255,7 @@ describe('wheel and trackpad pinch', () => {
     g.gestureChange({ x: 25, y: 30, scale: 0.5 });
     g.wheel({ x: 0, y: 0, deltaY: -5, deltaMode: 0, ctrlKey: true }); // not both at once
     g.gestureEnd();
-    expect(c.calls).toEqual([
-      ['pinchStart', at(20, 30), TRACKPAD_PINCH_SPAN_PX],
-      ['pinchMove', at(20, 30), 2 * TRACKPAD_PINCH_SPAN_PX],
-      ['pinchMove', at(20, 30), 0.5 * TRACKPAD_PINCH_SPAN_PX],
-      ['pinchEnd'],
-    ]);
+    expect(c.calls).toEqual([['pinchStart', at(20, 30), TRACKPAD_PINCH_SPAN_PX], ['pinchMove', at(20, 30), 2 * TRACKPAD_PINCH_SPAN_PX], ['pinchMove', at(20, 30), 0.5 * TRACKPAD_PINCH_SPAN_PX], ['pinchEnd']]);
   });
 
   it('abort ends a drag or a pinch in progress without effect', () => {
@@ -323,11 +300,7 @@ describe('with the real controller', () => {
   });
 });
 
-type Op =
-  | { kind: 'down' | 'move' | 'up'; id: number; x: number; y: number; button: number; onControl: boolean }
-  | { kind: 'cancel'; id: number }
-  | { kind: 'wheel'; deltaY: number; ctrlKey: boolean }
-  | { kind: 'wheelIdle' };
+type Op = { kind: 'down' | 'move' | 'up'; id: number; x: number; y: number; button: number; onControl: boolean } | { kind: 'cancel'; id: number } | { kind: 'wheel'; deltaY: number; ctrlKey: boolean } | { kind: 'wheelIdle' };
 
 describe('random sequences (seeded)', () => {
   const coord = fc.integer({ min: -20, max: 220 });
@@ -367,7 +340,8 @@ describe('random sequences (seeded)', () => {
             if (down.has(o.id)) continue;
             down.add(o.id);
             g.down(record(o));
-          } else if (o.kind === 'move') g.move(record(o)); // also for pointers that are not down (a hovering mouse)
+          } else if (o.kind === 'move')
+            g.move(record(o)); // also for pointers that are not down (a hovering mouse)
           else if (o.kind === 'up') {
             down.delete(o.id);
             g.up(record(o));

@@ -24,14 +24,17 @@ const buttonIds = PLANNER_COMMANDS.map((c) => c.id).filter((id) => id !== 'toggl
 
 // Drags and keys are what change the configuration: they come up most.
 const step: fc.Arbitrary<Step> = fc.oneof(
-  { weight: 4, arbitrary: fc.record({
-    kind: fc.constant('drag' as const),
-    // A third of the drags start on a system (its first rail's middle), a third on an object, the rest anywhere.
-    on: fc.constantFrom('system' as const, 'object' as const, 'anywhere' as const),
-    from: point,
-    by: fc.tuple(fc.integer({ min: -200, max: 200 }), fc.integer({ min: -200, max: 200 })),
-    steps: fc.integer({ min: 1, max: 6 }),
-  }) },
+  {
+    weight: 4,
+    arbitrary: fc.record({
+      kind: fc.constant('drag' as const),
+      // A third of the drags start on a system (its first rail's middle), a third on an object, the rest anywhere.
+      on: fc.constantFrom('system' as const, 'object' as const, 'anywhere' as const),
+      from: point,
+      by: fc.tuple(fc.integer({ min: -200, max: 200 }), fc.integer({ min: -200, max: 200 })),
+      steps: fc.integer({ min: 1, max: 6 }),
+    }),
+  },
   fc.record({ kind: fc.constant('tap' as const), at: point }),
   // Furniture from the panel: tapped (the middle of the visible plan) or dropped at a point.
   fc.record({ kind: fc.constant('add' as const), item: fc.constantFrom(...FURNITURE_LIBRARY.map((i) => i.id)), at: fc.option(point, { nil: null }) }),

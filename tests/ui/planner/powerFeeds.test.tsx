@@ -23,7 +23,19 @@ const run = (s: Configuration, name: string, params: unknown) => {
 const config = run(createConfiguration({ width: 6, depth: 4, height: 3 }), 'placePreset', { presetId: 'single', x: 1, z: 1 });
 const system = config.systems[0];
 const feed = system.feeds[0];
-const html = renderToStaticMarkup(<SystemOptions system={system} catalog={catalog} gate={createActionGate(config, catalog, () => {}, () => {})} onClose={() => {}} />);
+const html = renderToStaticMarkup(
+  <SystemOptions
+    system={system}
+    catalog={catalog}
+    gate={createActionGate(
+      config,
+      catalog,
+      () => {},
+      () => {},
+    )}
+    onClose={() => {}}
+  />,
+);
 const control = (testId: string) => new RegExp(`<button[^>]*data-testid="${testId}"[^>]*>`).exec(html)?.[0] ?? '';
 
 describe('system options: power and mounting', () => {
@@ -31,7 +43,7 @@ describe('system options: power and mounting', () => {
     expect(html).toContain('Feed 1: 129 / 240 W');
     expect(html).toContain('at the chain start, 111 W left');
   });
-  it('drivers too small for the load are disabled with the model\'s reason; the current one is pressed', () => {
+  it("drivers too small for the load are disabled with the model's reason; the current one is pressed", () => {
     expect(control(`driver-${feed.id}-lpv-60-48`)).toContain('aria-disabled="true"');
     expect(control(`driver-${feed.id}-lpv-60-48`)).toContain('cannot carry the 129 W on Feed 1');
     expect(control(`driver-${feed.id}-hlg-240h-48`)).toContain('aria-pressed="true"');

@@ -17,9 +17,7 @@ describe('readSceneFile', () => {
   it('names the file and the problem for corrupt and foreign files', async () => {
     const text = serializeConfiguration(config, catalog);
     await expect(readSceneFile(named('cut.json', text.slice(0, text.length / 2)), catalog)).rejects.toThrow(/^“cut\.json” is not valid JSON/);
-    await expect(readSceneFile(named('pkg.json', '{"name":"x","version":"1.0.0"}'), catalog)).rejects.toThrow(
-      /^“pkg\.json” is not a luxbox configuration \(format must be 'luxbox-configuration'\)/,
-    );
+    await expect(readSceneFile(named('pkg.json', '{"name":"x","version":"1.0.0"}'), catalog)).rejects.toThrow(/^“pkg\.json” is not a luxbox configuration \(format must be 'luxbox-configuration'\)/);
     await expect(readSceneFile(named('x.json', '[]'), catalog)).rejects.toBeInstanceOf(SceneFileError);
   });
 

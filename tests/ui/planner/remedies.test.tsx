@@ -53,7 +53,12 @@ describe('the tip offers and runs a remedy (remedyOffer)', () => {
     const store = createConfiguratorStore({ catalog, initial: lCorner() });
     const config = store.getState().config;
     const railId = config.systems[0].rails[0].id;
-    const gate = createActionGate(config, catalog, (n, p) => store.getState().dispatch(n, p), () => {});
+    const gate = createActionGate(
+      config,
+      catalog,
+      (n, p) => store.getState().dispatch(n, p),
+      () => {},
+    );
     expect(gate.reason('addModule', { railId, type: 'spot' })).toMatch(/driver is full/);
     const offer = remedyOffer(store, 'addModule', { railId, type: 'spot' }, en)!;
     expect(offer.label).toBe('Use the 321.6 W driver (+€28.00)');
@@ -89,7 +94,12 @@ describe('first run', () => {
     expect(suggestedPresets(room, catalog, 3, ['single', 'long-line', 'corner-l']).map((s) => s.presetId)).toEqual(['single', 'corner-l']);
   });
   it('renders one button per suggestion, the shop’s list, or none', () => {
-    const gate = createActionGate(createConfiguration(room), catalog, () => {}, () => {});
+    const gate = createActionGate(
+      createConfiguration(room),
+      catalog,
+      () => {},
+      () => {},
+    );
     const html = (options?: { presets?: string[] | false }) => renderToStaticMarkup(<FirstRunHint room={room} catalog={catalog} gate={gate} options={options} onPlaced={() => {}} ui={createUiStore()} />);
     expect(html().match(/data-testid="first-run-[a-z-]+"/g)).toEqual(['data-testid="first-run-snake"', 'data-testid="first-run-u-shape"', 'data-testid="first-run-corner-l"', 'data-testid="first-run-all"']);
     expect(html({ presets: ['corner-l'] })).toContain('Place L corner');

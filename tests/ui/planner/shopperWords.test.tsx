@@ -52,14 +52,29 @@ describe('distribution pictures', () => {
   it('are buttons named in shopper words, in English and German, with a picture each', async () => {
     const config = run(createConfiguration({ width: 5, depth: 4, height: 2.8 }), 'placePreset', { presetId: 'single', x: 1, z: 1 });
     const rail = config.systems[0].rails[0];
-    const gate = createActionGate(config, catalog, () => {}, () => {});
+    const gate = createActionGate(
+      config,
+      catalog,
+      () => {},
+      () => {},
+    );
     const en = renderToStaticMarkup(<DistributionButtons railId={rail.id} current="inside-centred" gate={gate} />);
-    expect(names(en)).toEqual(['Line the modules up from the start of the rail', 'Line the modules up against the end of the rail', 'Space the modules evenly, with room at both ends', 'Space the modules evenly, the outer ones at the rail ends']);
+    expect(names(en)).toEqual([
+      'Line the modules up from the start of the rail',
+      'Line the modules up against the end of the rail',
+      'Space the modules evenly, with room at both ends',
+      'Space the modules evenly, the outer ones at the rail ends',
+    ]);
     expect(en.match(/<svg class="distribution-picture"/g)).toHaveLength(4);
     expect(en).toContain('From the start');
     expect(en).not.toMatch(/inside-centred<|▮/);
     const de = await inGerman(<DistributionButtons railId={rail.id} current="inside-centred" gate={gate} compact />);
-    expect(names(de)).toEqual(['Module ab dem Anfang der Schiene reihen', 'Module an das Ende der Schiene reihen', 'Module gleichmäßig verteilen, mit Abstand zu beiden Enden', 'Module gleichmäßig verteilen, die äußeren an den Schienenenden']);
+    expect(names(de)).toEqual([
+      'Module ab dem Anfang der Schiene reihen',
+      'Module an das Ende der Schiene reihen',
+      'Module gleichmäßig verteilen, mit Abstand zu beiden Enden',
+      'Module gleichmäßig verteilen, die äußeren an den Schienenenden',
+    ]);
     // Compact (on the plan): the picture alone; the current one pressed.
     expect(de).not.toContain('Ab Anfang');
     expect(de).toMatch(/aria-pressed="true"[^>]*data-testid="distribution-[^"]*-inside-centred"/);
@@ -84,7 +99,13 @@ describe('Extend the chain: by direction', () => {
     it(`each arrow points where the model puts the new rail on the plan (system turned ${rotation}°)`, () => {
       const config = rotation === 0 ? base : run(base, 'rotateSystem', { systemId: base.systems[0].id, by: rotation });
       const heading = railPlacements(config.systems[0], catalog).at(-1)!.heading;
-      for (const [connector, turn] of [['straight', 0], ['corner90', 90], ['corner90', -90], ['flex', 45], ['flex', -45]] as const) {
+      for (const [connector, turn] of [
+        ['straight', 0],
+        ['corner90', 90],
+        ['corner90', -90],
+        ['flex', 45],
+        ['flex', -45],
+      ] as const) {
         const p = turnArrowPoints(heading, turn);
         const len = Math.hypot(p.to[0] - p.joint[0], p.to[1] - p.joint[1]);
         const arrow = [(p.to[0] - p.joint[0]) / len, (p.to[1] - p.joint[1]) / len];
@@ -102,7 +123,12 @@ describe('Extend the chain: by direction', () => {
   });
 
   it('names each button by its direction and connector, straight on first, in English and German', async () => {
-    const gate = createActionGate(base, catalog, () => {}, () => {});
+    const gate = createActionGate(
+      base,
+      catalog,
+      () => {},
+      () => {},
+    );
     const el = <SystemOptions system={base.systems[0]} catalog={catalog} gate={gate} onClose={() => {}} />;
     const en = names(renderToStaticMarkup(el)).filter((n) => n.startsWith('Add a rail'));
     expect(en).toEqual([

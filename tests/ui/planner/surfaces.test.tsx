@@ -12,7 +12,12 @@ const finishes = defaultSurfaceFinishes;
 const slate = finishes.find((f) => f.id === 'dark-slate')!;
 
 function panel(config: Configuration, runs: [string, unknown][] = []) {
-  const gate = createActionGate(config, defaultCatalog, (name, params) => runs.push([name, params]), () => {});
+  const gate = createActionGate(
+    config,
+    defaultCatalog,
+    (name, params) => runs.push([name, params]),
+    () => {},
+  );
   return renderToStaticMarkup(<SurfacesPanel room={config.room} finishes={finishes} gate={gate} />);
 }
 

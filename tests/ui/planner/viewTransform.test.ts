@@ -1,17 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
-import {
-  MAX_SCALE,
-  MIN_SCALE,
-  centerOn,
-  constrainPan,
-  fitRoom,
-  panBy,
-  screenToWorld,
-  wheelZoomFactor,
-  worldToScreen,
-  zoomAt,
-} from '../../../src/ui/planner/viewTransform';
+import { MAX_SCALE, MIN_SCALE, centerOn, constrainPan, fitRoom, panBy, screenToWorld, wheelZoomFactor, worldToScreen, zoomAt } from '../../../src/ui/planner/viewTransform';
 
 const viewArb = fc.record({
   scale: fc.double({ min: MIN_SCALE, max: MAX_SCALE, noNaN: true }),

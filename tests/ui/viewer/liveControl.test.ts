@@ -6,15 +6,29 @@ describe('frame latch', () => {
   it('keeps only the latest frame per universe and applies once per scheduled frame', () => {
     const scheduled: (() => void)[] = [];
     const applied: Map<number, readonly number[]>[] = [];
-    const latch = createFrameLatch((f) => applied.push(new Map(f)), (f) => scheduled.push(f), () => {});
+    const latch = createFrameLatch(
+      (f) => applied.push(new Map(f)),
+      (f) => scheduled.push(f),
+      () => {},
+    );
     for (let i = 0; i < 100; i++) latch.put(1, [i]);
     latch.put(2, [7]);
     expect(scheduled.length).toBe(1); // 101 frames, one animation frame asked for
     scheduled.shift()!();
-    expect(applied).toEqual([new Map([[1, [99]], [2, [7]]])]);
+    expect(applied).toEqual([
+      new Map([
+        [1, [99]],
+        [2, [7]],
+      ]),
+    ]);
     latch.put(1, [100]);
     scheduled.shift()!();
-    expect(applied[1]).toEqual(new Map([[1, [100]], [2, [7]]]));
+    expect(applied[1]).toEqual(
+      new Map([
+        [1, [100]],
+        [2, [7]],
+      ]),
+    );
     expect(latch.counts).toEqual({ received: 102, applied: 2 });
     latch.reapply();
     scheduled.shift()!();
@@ -84,7 +98,10 @@ describe('bridge client', () => {
     expect(frames).toEqual([[1, [1, 2, 3]]]);
     ws.onclose!({});
     expect(states.at(-1)).toEqual({ kind: 'lost' });
-    timers.filter((t) => t.ms === 3000).pop()!.f();
+    timers
+      .filter((t) => t.ms === 3000)
+      .pop()!
+      .f();
     expect(FakeSocket.made.length).toBe(3);
     client.close();
     expect(FakeSocket.made[2].closed).toBe(true);

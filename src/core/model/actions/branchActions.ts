@@ -109,7 +109,13 @@ export const setConnector: ActionDefinition<z.infer<typeof connectorParams>> = {
     const at = nodeJoints(system, railIndex);
     if (at.length === 0) return refuse('no connector sits at the end of this rail; add a rail or a branch there', { code: 'noConnectorAtEnd' });
     const con = findConnector(catalog, p.connector);
-    return connectorFits(con, at.map((k) => system.joints[k].turn), catalog) ?? true;
+    return (
+      connectorFits(
+        con,
+        at.map((k) => system.joints[k].turn),
+        catalog,
+      ) ?? true
+    );
   },
   perform(state, p, catalog) {
     const { systemIndex: si, system, railIndex } = findRail(state, p.railId);

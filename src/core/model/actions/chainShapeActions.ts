@@ -57,7 +57,8 @@ export const setJointTurn: ActionDefinition<z.infer<typeof turnParams>> = {
   explain(problem, state, p, catalog): string | CodedReason {
     const { con } = jointOf(state, p.systemId, p.joint, catalog);
     const turn = snapTurn(p.degrees, con);
-    if (problem.code === 'bad-turn') return { reason: `the ${con.name} turns at most ±${con.flex?.maxAngle ?? con.angle}°`, code: 'connectorTurnsAtMost', params: { name: con.name, connectorId: con.id, max: con.flex?.maxAngle ?? con.angle } };
+    if (problem.code === 'bad-turn')
+      return { reason: `the ${con.name} turns at most ±${con.flex?.maxAngle ?? con.angle}°`, code: 'connectorTurnsAtMost', params: { name: con.name, connectorId: con.id, max: con.flex?.maxAngle ?? con.angle } };
     if (problem.code === 'outside-room') return { reason: `at ${turn}° the chain would reach outside the room`, code: 'turnOutsideRoom', params: { turn } };
     if (problem.code === 'self-overlap') return { reason: `at ${turn}° the chain would run into itself`, code: 'turnSelfOverlap', params: { turn } };
     if (problem.code === 'system-overlap') return { reason: `at ${turn}° ${problem.message.replace(/^system \S+ /, 'the chain ')}`, code: 'turnOverlap', params: { turn, other: problem.params?.other ?? '' } };

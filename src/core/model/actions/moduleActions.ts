@@ -64,7 +64,11 @@ export const addModule: ActionDefinition<z.infer<typeof addParams>> = {
     const { rail } = findRail(state, p.railId);
     if (isFreeRail(rail) && railModuleOffsets(rail, catalog)) {
       const { gap } = placeInLargestGap(type.length, rail.length, occupied(rail, catalog), placementStep(catalog));
-      return { reason: `no free gap on this rail holds a ${type.name} (${type.length} m): the largest is ${gap} m; move modules apart or choose a distribution`, code: 'noFreeGap', params: { name: type.name, typeId: type.id, length: type.length, gap } };
+      return {
+        reason: `no free gap on this rail holds a ${type.name} (${type.length} m): the largest is ${gap} m; move modules apart or choose a distribution`,
+        code: 'noFreeGap',
+        params: { name: type.name, typeId: type.id, length: type.length, gap },
+      };
     }
     return { reason: `no room for another ${type.name} (${type.length} m) on this rail`, code: 'noRoomForModule', params: { name: type.name, typeId: type.id, length: type.length } };
   },
@@ -72,7 +76,10 @@ export const addModule: ActionDefinition<z.infer<typeof addParams>> = {
 
 /** Free modules sorted by offset (stable), so the list stays in rail order. */
 function inRailOrder(mods: readonly ModuleInstance[]): ModuleInstance[] {
-  return mods.map((m, i) => [m, i] as const).sort((a, b) => a[0].offset! - b[0].offset! || a[1] - b[1]).map(([m]) => m);
+  return mods
+    .map((m, i) => [m, i] as const)
+    .sort((a, b) => a[0].offset! - b[0].offset! || a[1] - b[1])
+    .map(([m]) => m);
 }
 
 const moveParams = z.object({
@@ -110,17 +117,29 @@ export const moveModule: ActionDefinition<z.infer<typeof moveParams>> = {
     const named = { name: type.name, typeId: type.id };
     if (offset < 0) {
       const atConnector = ref.railIndex > 0;
-      return { reason: `${type.name} would start ${fmt(-offset)} m before the ${atConnector ? 'connector at the ' : ''}start of this rail`, code: atConnector ? 'moduleBeforeConnector' : 'moduleBeforeStart', params: { ...named, by: Number(fmt(-offset)) } };
+      return {
+        reason: `${type.name} would start ${fmt(-offset)} m before the ${atConnector ? 'connector at the ' : ''}start of this rail`,
+        code: atConnector ? 'moduleBeforeConnector' : 'moduleBeforeStart',
+        params: { ...named, by: Number(fmt(-offset)) },
+      };
     }
     if (offset + type.length > L) {
       const atConnector = ref.railIndex < ref.system.rails.length - 1;
-      return { reason: `${type.name} would reach ${fmt(offset + type.length)} m, past the ${atConnector ? 'connector at the ' : ''}end of this ${fmt(L)} m rail`, code: atConnector ? 'modulePastConnector' : 'modulePastEnd', params: { ...named, reach: Number(fmt(offset + type.length)), length: Number(fmt(L)) } };
+      return {
+        reason: `${type.name} would reach ${fmt(offset + type.length)} m, past the ${atConnector ? 'connector at the ' : ''}end of this ${fmt(L)} m rail`,
+        code: atConnector ? 'modulePastConnector' : 'modulePastEnd',
+        params: { ...named, reach: Number(fmt(offset + type.length)), length: Number(fmt(L)) },
+      };
     }
     const other = occupied(ref.rail, catalog, ref.moduleIndex).findIndex(([a, b]) => offset < b - 1e-9 && offset + type.length > a + 1e-9);
     if (other >= 0) {
       const m = ref.rail.modules.filter((_, i) => i !== ref.moduleIndex)[other];
       const otherType = findModuleType(catalog, m.type);
-      return { reason: `${type.name} at ${fmt(offset)}–${fmt(offset + type.length)} m would overlap ${otherType.name} ${m.id}`, code: 'moduleWouldOverlap', params: { ...named, from: Number(fmt(offset)), to: Number(fmt(offset + type.length)), other: otherType.name, otherTypeId: otherType.id, otherId: m.id } };
+      return {
+        reason: `${type.name} at ${fmt(offset)}–${fmt(offset + type.length)} m would overlap ${otherType.name} ${m.id}`,
+        code: 'moduleWouldOverlap',
+        params: { ...named, from: Number(fmt(offset)), to: Number(fmt(offset + type.length)), other: otherType.name, otherTypeId: otherType.id, otherId: m.id },
+      };
     }
     return problem.message;
   },
@@ -161,7 +180,11 @@ export const setModuleType: ActionDefinition<z.infer<typeof typeParams>> = {
   perform(state, p, catalog) {
     const { module } = findModule(state, p.moduleId);
     const type = findModuleType(catalog, p.type);
-    const beam = beamForType(catalog.moduleTypes.find((t) => t.id === module.type), module.beam, type);
+    const beam = beamForType(
+      catalog.moduleTypes.find((t) => t.id === module.type),
+      module.beam,
+      type,
+    );
     const cct = type.ccts.includes(module.cct) ? module.cct : type.defaultCct;
     // A type with one CCT has no CCT channel: the patch keeps its level channels and shrinks, so it never meets a neighbour.
     const dmx = module.dmx?.cct && !isTunable(type) ? { ...module.dmx, cct: false } : module.dmx;

@@ -17,10 +17,7 @@ import { fitPlacement, sourceMesh, sourceName } from '../objects/objectGeometry'
 import { meshDataProblem } from '../objects/objectProblems';
 import { takeId } from './lookup';
 
-const placementSchema = z.discriminatedUnion('on', [
-  z.strictObject({ on: z.literal('floor'), x: z.number(), z: z.number() }),
-  z.strictObject({ on: z.literal('wall'), wall: z.enum(WALL_NAMES), u: z.number(), y: z.number() }),
-]);
+const placementSchema = z.discriminatedUnion('on', [z.strictObject({ on: z.literal('floor'), x: z.number(), z: z.number() }), z.strictObject({ on: z.literal('wall'), wall: z.enum(WALL_NAMES), u: z.number(), y: z.number() })]);
 
 /** A TriangleMesh handed over by the importer; its contents are validate()'s business (meshDataProblem). */
 const meshSchema = z.custom<TriangleMesh>((v) => typeof v === 'object' && v !== null && 'positions' in v && 'indices' in v && 'materialOfTriangle' in v && 'materials' in v, 'must be a TriangleMesh');

@@ -73,7 +73,10 @@ function presetSystem(preset: PresetSpec, catalog: Catalog, placement: Placement
  */
 const presetFeeds = perCatalog((preset: PresetSpec, catalog: Catalog) => {
   let n = 0;
-  return plannedFeeds(presetSystem(preset, catalog, { x: 0, z: 0, rotation: 0 }, catalog.suspension.default, (p) => `${p}${n++}`), catalog);
+  return plannedFeeds(
+    presetSystem(preset, catalog, { x: 0, z: 0, rotation: 0 }, catalog.suspension.default, (p) => `${p}${n++}`),
+    catalog,
+  );
 });
 
 /**

@@ -51,7 +51,11 @@ export const setRailLength: ActionDefinition<z.infer<typeof lengthParams>> = {
     if (!FIT_CODES.has(problem.code)) return problem.message;
     const { rail } = findRail(state, p.railId);
     const needed = minRailLength(rail, catalog) ?? catalog.rail.maxLength;
-    return { reason: `${snapRailLength(p.length, catalog)} m would cut off modules; this rail needs at least ${needed} m (remove modules to shorten it)`, code: 'railWouldCutModules', params: { length: snapRailLength(p.length, catalog), needed } };
+    return {
+      reason: `${snapRailLength(p.length, catalog)} m would cut off modules; this rail needs at least ${needed} m (remove modules to shorten it)`,
+      code: 'railWouldCutModules',
+      params: { length: snapRailLength(p.length, catalog), needed },
+    };
   },
 };
 

@@ -32,9 +32,7 @@ function explainName(problem: Problem, state: Configuration, name: string): stri
     return { reason: `a light scene named '${taken}' exists already`, code: 'nameTaken', params: { name: taken } };
   }
   if (problem.code === 'scene-name') {
-    return name.trim() === ''
-      ? { reason: 'a light scene needs a name', code: 'nameMissing' }
-      : { reason: `a light scene name has at most ${SCENE_NAME_MAX} characters`, code: 'nameTooLong', params: { max: SCENE_NAME_MAX } };
+    return name.trim() === '' ? { reason: 'a light scene needs a name', code: 'nameMissing' } : { reason: `a light scene name has at most ${SCENE_NAME_MAX} characters`, code: 'nameTooLong', params: { max: SCENE_NAME_MAX } };
   }
   return problem.message;
 }
@@ -117,8 +115,7 @@ export const setSceneFade: ActionDefinition<z.infer<typeof fadeParams>> = {
   label: 'Fade time',
   params: fadeParams,
   perform: (state, p) => replaceScene(state, p.sceneId, { fade: p.fade }),
-  explain: (problem) =>
-    problem.code === 'scene-fade' ? { reason: `a fade takes ${FADE_LIMITS.min} to ${FADE_LIMITS.max} s`, code: 'fadeRange', params: { min: FADE_LIMITS.min, max: FADE_LIMITS.max } } : problem.message,
+  explain: (problem) => (problem.code === 'scene-fade' ? { reason: `a fade takes ${FADE_LIMITS.min} to ${FADE_LIMITS.max} s`, code: 'fadeRange', params: { min: FADE_LIMITS.min, max: FADE_LIMITS.max } } : problem.message),
 };
 
 /**

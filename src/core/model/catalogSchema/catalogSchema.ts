@@ -141,7 +141,10 @@ export function parseCatalog(data: unknown, source = 'catalog'): Catalog {
 
 /** Reads a catalog file's text (size, syntax, duplicate keys, depth limits first); throws CatalogError, one line. */
 export function parseCatalogText(text: string, source = 'catalog'): Catalog {
-  return parseCatalog(parseUntrustedJson(text, source, (m) => new CatalogError(m)), source);
+  return parseCatalog(
+    parseUntrustedJson(text, source, (m) => new CatalogError(m)),
+    source,
+  );
 }
 
 /** 'presets[2].rails[0].length' style path for messages; '(root)' for the root. */

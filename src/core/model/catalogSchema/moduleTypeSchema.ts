@@ -28,15 +28,13 @@ const beamSchema = z.strictObject({
  * max must lie (and which divide 360 for rotation, so the circle closes on a stop).
  */
 function aimRangeSchema(limit: number) {
-  return z
-    .strictObject({ min: z.number().finite().min(0).lt(limit), max: z.number().finite().min(0).lt(limit), stops: positive.max(90).optional() })
-    .superRefine((r, ctx) => {
-      if (r.min > r.max) ctx.addIssue({ code: 'custom', path: ['min'], message: 'must not exceed max' });
-      if (r.stops !== undefined) {
-        for (const key of ['min', 'max'] as const) if (!onGrid(r[key], r.stops)) ctx.addIssue({ code: 'custom', path: [key], message: `must be a multiple of stops ${r.stops}` });
-        if (limit === 360 && !onGrid(360, r.stops)) ctx.addIssue({ code: 'custom', path: ['stops'], message: 'must divide 360' });
-      }
-    });
+  return z.strictObject({ min: z.number().finite().min(0).lt(limit), max: z.number().finite().min(0).lt(limit), stops: positive.max(90).optional() }).superRefine((r, ctx) => {
+    if (r.min > r.max) ctx.addIssue({ code: 'custom', path: ['min'], message: 'must not exceed max' });
+    if (r.stops !== undefined) {
+      for (const key of ['min', 'max'] as const) if (!onGrid(r[key], r.stops)) ctx.addIssue({ code: 'custom', path: [key], message: `must be a multiple of stops ${r.stops}` });
+      if (limit === 360 && !onGrid(360, r.stops)) ctx.addIssue({ code: 'custom', path: ['stops'], message: 'must divide 360' });
+    }
+  });
 }
 
 export const moduleTypeSchema = z

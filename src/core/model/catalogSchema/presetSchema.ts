@@ -10,9 +10,7 @@ export const presetSchema = z.strictObject({
   names: translations,
   description: z.string(),
   descriptions: translations,
-  rails: z
-    .array(z.strictObject({ length: positive, distribution: z.enum(DISTRIBUTIONS), modules: z.array(presetModuleSchema) }))
-    .min(1),
+  rails: z.array(z.strictObject({ length: positive, distribution: z.enum(DISTRIBUTIONS), modules: z.array(presetModuleSchema) })).min(1),
   joints: z.array(z.strictObject({ connector: nonEmpty, turn: z.number().finite(), parent: z.number().int().nonnegative().optional() })),
   /**
    * The driver the preset ships with (a driver id): its one feed at the chain start gets it instead

@@ -33,18 +33,16 @@ const finishSchema = z.strictObject({
   source: z.string().min(1),
 });
 
-const finishListSchema = z
-  .strictObject({ formatVersion: z.literal(1), finishes: z.array(finishSchema).min(1) })
-  .superRefine((list, ctx) => {
-    const seen = new Set<string>();
-    list.finishes.forEach((f, i) => {
-      if (seen.has(f.id)) ctx.addIssue({ code: 'custom', path: ['finishes', i, 'id'], message: `duplicate finish id '${f.id}'` });
-      seen.add(f.id);
-    });
-    for (const use of FINISH_USES) {
-      if (!list.finishes.some((f) => f.uses.includes(use))) ctx.addIssue({ code: 'custom', path: ['finishes'], message: `no finish is offered for the ${use}` });
-    }
+const finishListSchema = z.strictObject({ formatVersion: z.literal(1), finishes: z.array(finishSchema).min(1) }).superRefine((list, ctx) => {
+  const seen = new Set<string>();
+  list.finishes.forEach((f, i) => {
+    if (seen.has(f.id)) ctx.addIssue({ code: 'custom', path: ['finishes', i, 'id'], message: `duplicate finish id '${f.id}'` });
+    seen.add(f.id);
   });
+  for (const use of FINISH_USES) {
+    if (!list.finishes.some((f) => f.uses.includes(use))) ctx.addIssue({ code: 'custom', path: ['finishes'], message: `no finish is offered for the ${use}` });
+  }
+});
 
 export type SurfaceFinish = z.infer<typeof finishSchema>;
 

@@ -174,9 +174,7 @@ export const WALL_NAMES = ['north', 'south', 'west', 'east'] as const;
 export type WallName = (typeof WALL_NAMES)[number];
 
 /** Where an object's mesh comes from: the furniture library (src/core/catalog/furniture) or a mesh the user imported. */
-export type ObjectSource =
-  | { readonly kind: 'library'; /** Furniture library item id ('dining-table'). */ readonly item: string }
-  | { readonly kind: 'imported'; /** Key in Configuration.importedMeshes ('i7'). */ readonly mesh: string };
+export type ObjectSource = { readonly kind: 'library'; /** Furniture library item id ('dining-table'). */ readonly item: string } | { readonly kind: 'imported'; /** Key in Configuration.importedMeshes ('i7'). */ readonly mesh: string };
 
 /**
  * Where an object stands. Floor: the mesh origin on the floor at (x, z), turned by the object's
@@ -185,9 +183,7 @@ export type ObjectSource =
  * u = x, west/east: u = z) and y the height of the mesh origin above the floor (library wall
  * items have their origin at the back's centre).
  */
-export type ObjectPlacement =
-  | { readonly on: 'floor'; readonly x: number; readonly z: number }
-  | { readonly on: 'wall'; readonly wall: WallName; readonly u: number; readonly y: number };
+export type ObjectPlacement = { readonly on: 'floor'; readonly x: number; readonly z: number } | { readonly on: 'wall'; readonly wall: WallName; readonly u: number; readonly y: number };
 
 /** A material's finish: a surface-finish id (src/core/catalog/surface-finishes.json) or linear RGB, each channel in [0, 0.95]. */
 export type ObjectFinish = string | Rgb;

@@ -102,12 +102,16 @@ export function lightSceneProblems(config: Configuration): Problem[] {
     const twin = scenes.findIndex((o, k) => k < i && sameSceneName(o.name, s.name));
     if (twin >= 0 && s.name.trim() !== '') out.push(keyed({ code: 'scene-name-taken', path: `${at}.name`, message: `a light scene named '${scenes[twin].name}' exists already` }, 'sceneNameTaken', { name: scenes[twin].name }));
     if (!Number.isFinite(s.fade) || s.fade < FADE_LIMITS.min || s.fade > FADE_LIMITS.max)
-      out.push(keyed({ code: 'scene-fade', path: `${at}.fade`, message: `fade time must be between ${FADE_LIMITS.min} and ${FADE_LIMITS.max} s (got ${s.fade})` }, 'sceneFadeRange', { min: FADE_LIMITS.min, max: FADE_LIMITS.max, value: s.fade }));
+      out.push(
+        keyed({ code: 'scene-fade', path: `${at}.fade`, message: `fade time must be between ${FADE_LIMITS.min} and ${FADE_LIMITS.max} s (got ${s.fade})` }, 'sceneFadeRange', { min: FADE_LIMITS.min, max: FADE_LIMITS.max, value: s.fade }),
+      );
     for (const [moduleId, look] of Object.entries(s.looks)) {
       const lp = `${at}.looks.${moduleId}`;
       if (!ids.has(moduleId)) out.push(keyed({ code: 'scene-module', path: lp, message: `light scene '${s.name}' has a look for module ${moduleId}, which does not exist` }, 'sceneModuleMissing', { name: s.name, id: moduleId }));
-      if (!Number.isFinite(look.level) || look.level < 0 || look.level > 1) out.push(keyed({ code: 'scene-level', path: `${lp}.level`, message: `level must be between 0 and 1 (got ${look.level})` }, 'sceneLevelRange', { value: look.level }));
-      if (!Number.isFinite(look.cct) || look.cct < 1000 || look.cct > 20000) out.push(keyed({ code: 'scene-cct', path: `${lp}.cct`, message: `colour temperature must be between 1000 and 20000 K (got ${look.cct})` }, 'sceneCctRange', { min: '1000', max: '20000', value: String(look.cct) }));
+      if (!Number.isFinite(look.level) || look.level < 0 || look.level > 1)
+        out.push(keyed({ code: 'scene-level', path: `${lp}.level`, message: `level must be between 0 and 1 (got ${look.level})` }, 'sceneLevelRange', { value: look.level }));
+      if (!Number.isFinite(look.cct) || look.cct < 1000 || look.cct > 20000)
+        out.push(keyed({ code: 'scene-cct', path: `${lp}.cct`, message: `colour temperature must be between 1000 and 20000 K (got ${look.cct})` }, 'sceneCctRange', { min: '1000', max: '20000', value: String(look.cct) }));
     }
   });
   return out;

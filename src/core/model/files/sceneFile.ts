@@ -75,7 +75,8 @@ export function configurationFromData(data: unknown, catalog: Catalog, source = 
     throw new SceneFileError(`${source} is not a luxbox configuration (format must be '${SCENE_FILE_FORMAT}')`, { code: 'fileWrongFormat', params: { name, format: SCENE_FILE_FORMAT } });
   }
   if (typeof doc.version !== 'number' || !Number.isInteger(doc.version) || doc.version < 1) throw new SceneFileError(`${source}: version must be a positive integer`, { code: 'fileVersionInvalid', params: { name } });
-  if (doc.version > SCENE_FILE_VERSION) throw new SceneFileError(`${source} was made by a newer luxbox (version ${doc.version}; this one reads up to ${SCENE_FILE_VERSION})`, { code: 'fileTooNew', params: { name, version: doc.version, max: SCENE_FILE_VERSION } });
+  if (doc.version > SCENE_FILE_VERSION)
+    throw new SceneFileError(`${source} was made by a newer luxbox (version ${doc.version}; this one reads up to ${SCENE_FILE_VERSION})`, { code: 'fileTooNew', params: { name, version: doc.version, max: SCENE_FILE_VERSION } });
   let migrated: Record<string, unknown>;
   try {
     migrated = migrateSceneFile(doc, catalog);
@@ -108,7 +109,11 @@ function normaliseRoom(data: SceneFile['configuration'], source: string): Config
   const importedMeshes: Record<string, ImportedMesh> = {};
   for (const [key, m] of Object.entries(data.importedMeshes ?? {})) {
     const mesh = decodeMesh(m);
-    if ('problem' in mesh) throw new SceneFileError(`${source}: configuration.importedMeshes.${key}.${mesh.field}: ${mesh.problem}`, { code: 'fileMeshField', params: { name: unquoted(source), path: `configuration.importedMeshes.${key}.${mesh.field}`, problem: mesh.problem } });
+    if ('problem' in mesh)
+      throw new SceneFileError(`${source}: configuration.importedMeshes.${key}.${mesh.field}: ${mesh.problem}`, {
+        code: 'fileMeshField',
+        params: { name: unquoted(source), path: `configuration.importedMeshes.${key}.${mesh.field}`, problem: mesh.problem },
+      });
     importedMeshes[key] = { name: m.name, units: m.units, mesh };
   }
   const { objects, importedMeshes: _encoded, ...rest } = data;

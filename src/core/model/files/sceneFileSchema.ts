@@ -35,9 +35,7 @@ const configurationSchema = z.strictObject({
     depth: z.number(),
     height: z.number(),
     // Optional per surface and as a whole: a hand-written file may leave out the finishes, which then default.
-    reflectance: z
-      .strictObject(Object.fromEntries(SURFACE_NAMES.map((s) => [s, reflectance.optional()])) as Record<(typeof SURFACE_NAMES)[number], z.ZodOptional<typeof reflectance>>)
-      .optional(),
+    reflectance: z.strictObject(Object.fromEntries(SURFACE_NAMES.map((s) => [s, reflectance.optional()])) as Record<(typeof SURFACE_NAMES)[number], z.ZodOptional<typeof reflectance>>).optional(),
   }),
   systems: z.array(
     z.strictObject({
@@ -86,10 +84,7 @@ const configurationSchema = z.strictObject({
       z.strictObject({
         id,
         source: z.discriminatedUnion('kind', [z.strictObject({ kind: z.literal('library'), item: ref }), z.strictObject({ kind: z.literal('imported'), mesh: id })]),
-        placement: z.discriminatedUnion('on', [
-          z.strictObject({ on: z.literal('floor'), x: z.number(), z: z.number() }),
-          z.strictObject({ on: z.literal('wall'), wall: z.enum(WALL_NAMES), u: z.number(), y: z.number() }),
-        ]),
+        placement: z.discriminatedUnion('on', [z.strictObject({ on: z.literal('floor'), x: z.number(), z: z.number() }), z.strictObject({ on: z.literal('wall'), wall: z.enum(WALL_NAMES), u: z.number(), y: z.number() })]),
         yaw: z.number(),
         scale: z.number(),
         // Material names and finish ids are checked against the mesh and the finish list by validate().

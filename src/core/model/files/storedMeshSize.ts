@@ -30,12 +30,5 @@ const base64Length = (bytes: number): number => 4 * Math.ceil(bytes / 3);
  */
 export function storedMeshChars(name: string, mesh: TriangleMesh): number {
   const materials = mesh.materials.reduce((sum, m) => sum + JSON.stringify(m.name).length + 3 * 24 + 160, 0);
-  return (
-    base64Length(mesh.positions.length * 4) +
-    base64Length(mesh.indices.length * 4) +
-    base64Length(mesh.materialOfTriangle.length * 2) +
-    materials +
-    JSON.stringify(name).length +
-    300
-  );
+  return base64Length(mesh.positions.length * 4) + base64Length(mesh.indices.length * 4) + base64Length(mesh.materialOfTriangle.length * 2) + materials + JSON.stringify(name).length + 300;
 }

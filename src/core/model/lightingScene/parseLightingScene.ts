@@ -48,10 +48,7 @@ export const OBJECT_ROOM_TOLERANCE = 0.01;
 const show = (value: unknown): string => excerpt(value);
 
 const finite = z.number({ error: (i) => (i.input === undefined ? 'is missing' : `must be a number, got ${show(i.input)}`) }).refine(Number.isFinite, 'must be a finite number');
-const dimension = finite.refine(
-  (v) => v >= SCENE_LIMITS.minDimension && v <= SCENE_LIMITS.maxDimension,
-  { error: (i) => `${show(i.input)} m is outside ${SCENE_LIMITS.minDimension}..${SCENE_LIMITS.maxDimension} m` },
-);
+const dimension = finite.refine((v) => v >= SCENE_LIMITS.minDimension && v <= SCENE_LIMITS.maxDimension, { error: (i) => `${show(i.input)} m is outside ${SCENE_LIMITS.minDimension}..${SCENE_LIMITS.maxDimension} m` });
 const reflectanceValue = finite.refine((v) => v >= 0 && v < 1, {
   error: (i) => `reflectance ${show(i.input)} is outside [0, 1) (at 1 a closed room would never lose light)`,
 });
@@ -64,59 +61,67 @@ const angle = finite.optional();
 /** A mesh file luxbox reads, or the configurator's `object:<id>` (docs/scene-format.md, "Objects"). */
 const MESH_REFERENCE = /(\.(obj|gltf|glb)$)|(^object:)/i;
 
-const sceneObject = z.strictObject({
-  mesh: z
-    .string({ error: 'must be a path to an OBJ, glTF or GLB file' })
-    .min(1, 'must not be empty')
-    .refine((p) => MESH_REFERENCE.test(p), { error: (i) => `${show(i.input)} is not an .obj, .gltf or .glb file` }),
-  position: vec3,
-  yaw: angle,
-  scale: finite
-    .refine((v) => v >= SCENE_LIMITS.minObjectScale && v <= SCENE_LIMITS.maxObjectScale, {
-      error: (i) => `scale ${show(i.input)} is outside ${SCENE_LIMITS.minObjectScale}..${SCENE_LIMITS.maxObjectScale}`,
-    })
-    .optional(),
-  reflectance: reflectance.optional(),
-  id: z.string({ error: 'must be a string' }).optional(),
-}, { error: 'must be an object' });
+const sceneObject = z.strictObject(
+  {
+    mesh: z
+      .string({ error: 'must be a path to an OBJ, glTF or GLB file' })
+      .min(1, 'must not be empty')
+      .refine((p) => MESH_REFERENCE.test(p), { error: (i) => `${show(i.input)} is not an .obj, .gltf or .glb file` }),
+    position: vec3,
+    yaw: angle,
+    scale: finite
+      .refine((v) => v >= SCENE_LIMITS.minObjectScale && v <= SCENE_LIMITS.maxObjectScale, {
+        error: (i) => `scale ${show(i.input)} is outside ${SCENE_LIMITS.minObjectScale}..${SCENE_LIMITS.maxObjectScale}`,
+      })
+      .optional(),
+    reflectance: reflectance.optional(),
+    id: z.string({ error: 'must be a string' }).optional(),
+  },
+  { error: 'must be an object' },
+);
 
-const schema = z.strictObject({
-  version: z.union([z.literal(1), z.literal(2)]),
-  nearField: z.enum(NEAR_FIELD_MODELS, { error: (i) => `must be "split" or "point", got ${show(i.input)}` }).optional(),
-  objects: z
-    .array(sceneObject, { error: 'must be an array' })
-    .max(SCENE_LIMITS.maxObjects, `more than ${SCENE_LIMITS.maxObjects} objects`)
-    .optional(),
-  // Checked before zod (a clear "not baked yet"); only empty lists reach here.
-  windows: z.array(z.never()).optional(),
-  room: z.strictObject({
-    width: dimension,
-    height: dimension,
-    depth: dimension,
-    reflectance: z.strictObject(
-      Object.fromEntries(SURFACE_NAMES.map((s) => [s, reflectance])) as Record<SurfaceName, typeof reflectance>,
-      { error: (i) => (i.input === undefined ? 'is missing' : 'must be an object with floor, ceiling, north, south, west, east') },
+const schema = z.strictObject(
+  {
+    version: z.union([z.literal(1), z.literal(2)]),
+    nearField: z.enum(NEAR_FIELD_MODELS, { error: (i) => `must be "split" or "point", got ${show(i.input)}` }).optional(),
+    objects: z.array(sceneObject, { error: 'must be an array' }).max(SCENE_LIMITS.maxObjects, `more than ${SCENE_LIMITS.maxObjects} objects`).optional(),
+    // Checked before zod (a clear "not baked yet"); only empty lists reach here.
+    windows: z.array(z.never()).optional(),
+    room: z.strictObject(
+      {
+        width: dimension,
+        height: dimension,
+        depth: dimension,
+        reflectance: z.strictObject(Object.fromEntries(SURFACE_NAMES.map((s) => [s, reflectance])) as Record<SurfaceName, typeof reflectance>, {
+          error: (i) => (i.input === undefined ? 'is missing' : 'must be an object with floor, ceiling, north, south, west, east'),
+        }),
+      },
+      { error: (i) => (i.input === undefined ? 'is missing' : 'must be an object') },
     ),
-  }, { error: (i) => (i.input === undefined ? 'is missing' : 'must be an object') }),
-  luminaires: z
-    .array(
-      z.strictObject({
-        photometry: z.string({ error: 'must be a path to an IES or LDT file' }).min(1, 'must not be empty'),
-        position: vec3,
-        yaw: angle,
-        pitch: angle,
-        roll: angle,
-        dimming: finite.refine((v) => v >= 0 && v <= 1, { error: (i) => `dimming ${show(i.input)} is outside 0..1` }).optional(),
-        color: z
-          .tuple([finite, finite, finite], { error: 'must be [r, g, b]' })
-          .refine((c) => c.every((x) => x >= 0 && x <= SCENE_LIMITS.maxColor), `colour components must lie in 0..${SCENE_LIMITS.maxColor}`)
-          .optional(),
-        id: z.string({ error: 'must be a string' }).optional(),
-      }, { error: 'must be an object' }),
-      { error: (i) => (i.input === undefined ? 'is missing' : 'must be an array') },
-    )
-    .max(SCENE_LIMITS.maxLuminaires, `more than ${SCENE_LIMITS.maxLuminaires} luminaires`),
-}, { error: 'a lighting scene must be a JSON object' });
+    luminaires: z
+      .array(
+        z.strictObject(
+          {
+            photometry: z.string({ error: 'must be a path to an IES or LDT file' }).min(1, 'must not be empty'),
+            position: vec3,
+            yaw: angle,
+            pitch: angle,
+            roll: angle,
+            dimming: finite.refine((v) => v >= 0 && v <= 1, { error: (i) => `dimming ${show(i.input)} is outside 0..1` }).optional(),
+            color: z
+              .tuple([finite, finite, finite], { error: 'must be [r, g, b]' })
+              .refine((c) => c.every((x) => x >= 0 && x <= SCENE_LIMITS.maxColor), `colour components must lie in 0..${SCENE_LIMITS.maxColor}`)
+              .optional(),
+            id: z.string({ error: 'must be a string' }).optional(),
+          },
+          { error: 'must be an object' },
+        ),
+        { error: (i) => (i.input === undefined ? 'is missing' : 'must be an array') },
+      )
+      .max(SCENE_LIMITS.maxLuminaires, `more than ${SCENE_LIMITS.maxLuminaires} luminaires`),
+  },
+  { error: 'a lighting scene must be a JSON object' },
+);
 
 /** The structure zod checks (tests walk it to reach every numeric field). */
 export const lightingSceneSchema: z.ZodType = schema;

@@ -35,7 +35,11 @@ function cross(a: Vec3, b: Vec3): Vec3 {
 /** First surface of the room box a ray from `p` (inside) along `d` reaches; null if p is outside or d is zero. */
 export function traceToRoom(p: Vec3, d: Vec3, room: RoomBox): ConeHit | null {
   const max: Vec3 = [room.width, room.height, room.depth];
-  const names: [ConeHit['surface'], ConeHit['surface']][] = [['west', 'east'], ['floor', 'ceiling'], ['north', 'south']];
+  const names: [ConeHit['surface'], ConeHit['surface']][] = [
+    ['west', 'east'],
+    ['floor', 'ceiling'],
+    ['north', 'south'],
+  ];
   let best = Infinity;
   let surface: ConeHit['surface'] | null = null;
   let axisOf = -1;

@@ -41,8 +41,10 @@ export function patchRangeProblem(p: DmxPatch, type: Pick<ModuleTypeSpec, 'ccts'
 
 /** patchRangeProblem with its sentence's code and params (docs/i18n.md). */
 export function patchRangeIssue(p: DmxPatch, type: Pick<ModuleTypeSpec, 'ccts' | 'name'> & { id?: string }): ({ message: string } & Keyed) | null {
-  if (!Number.isInteger(p.universe) || p.universe < DMX_UNIVERSE_MIN || p.universe > DMX_UNIVERSE_MAX) return keyed({ message: `DMX universe must be an integer in ${DMX_UNIVERSE_MIN}..${DMX_UNIVERSE_MAX} (got ${p.universe})` }, 'dmxUniverseRange', { min: DMX_UNIVERSE_MIN, max: DMX_UNIVERSE_MAX, value: String(p.universe) });
-  if (!Number.isInteger(p.address) || p.address < 1 || p.address > DMX_CHANNELS) return keyed({ message: `DMX address must be an integer in 1..${DMX_CHANNELS} (got ${p.address})` }, 'dmxAddressRange', { max: DMX_CHANNELS, value: String(p.address) });
+  if (!Number.isInteger(p.universe) || p.universe < DMX_UNIVERSE_MIN || p.universe > DMX_UNIVERSE_MAX)
+    return keyed({ message: `DMX universe must be an integer in ${DMX_UNIVERSE_MIN}..${DMX_UNIVERSE_MAX} (got ${p.universe})` }, 'dmxUniverseRange', { min: DMX_UNIVERSE_MIN, max: DMX_UNIVERSE_MAX, value: String(p.universe) });
+  if (!Number.isInteger(p.address) || p.address < 1 || p.address > DMX_CHANNELS)
+    return keyed({ message: `DMX address must be an integer in 1..${DMX_CHANNELS} (got ${p.address})` }, 'dmxAddressRange', { max: DMX_CHANNELS, value: String(p.address) });
   if (p.resolution !== 8 && p.resolution !== 16) return keyed({ message: `DMX resolution must be 8 or 16 bits (got ${String(p.resolution)})` }, 'dmxResolution', { value: String(p.resolution) });
   if (p.cct && !isTunable(type)) return keyed({ message: `${type.name} has one colour temperature only: no CCT channel` }, 'dmxNoCctChannel', { name: type.name, typeId: type.id ?? '' });
   const last = p.address + patchWidth(p) - 1;

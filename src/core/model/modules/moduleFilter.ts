@@ -38,7 +38,11 @@ export function catalogFilters(catalog: Catalog): { accessory: FilterAccessory; 
  */
 export function filterMatches(filter: Pick<ColourFilter, 'maker' | 'number' | 'name'>, query: string): boolean {
   const text = `${filter.number} ${filter.name} ${filter.maker}`.toLowerCase();
-  return query.toLowerCase().split(/\s+/).filter(Boolean).every((word) => text.includes(word));
+  return query
+    .toLowerCase()
+    .split(/\s+/)
+    .filter(Boolean)
+    .every((word) => text.includes(word));
 }
 
 export interface FilterProblem {

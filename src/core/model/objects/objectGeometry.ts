@@ -96,7 +96,11 @@ export function fitPlacement(object: RoomObject, mesh: TriangleMesh, room: Room,
   const dy = shift(b.min[1], b.max[1], room.height, 'high');
   const p = object.placement;
   if (p.on === 'floor') {
-    if (dy !== 0) throw new InputError(`the ${label} does not fit between floor and ceiling (${fmt(b.min[1])} … ${fmt(b.max[1])} m; room height ${fmt(room.height)} m)`, { code: 'objectNotBetweenFloorAndCeiling', params: { ...named, bottom: Number(fmt(b.min[1])), top: Number(fmt(b.max[1])), height: Number(fmt(room.height)) } });
+    if (dy !== 0)
+      throw new InputError(`the ${label} does not fit between floor and ceiling (${fmt(b.min[1])} … ${fmt(b.max[1])} m; room height ${fmt(room.height)} m)`, {
+        code: 'objectNotBetweenFloorAndCeiling',
+        params: { ...named, bottom: Number(fmt(b.min[1])), top: Number(fmt(b.max[1])), height: Number(fmt(room.height)) },
+      });
     return { ...object, placement: { on: 'floor', x: p.x + dx, z: p.z + dz } };
   }
   // Along the wall the shift moves u; across it (the depth into the room) nothing can help.

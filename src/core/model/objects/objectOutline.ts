@@ -30,7 +30,15 @@ export function objectOutline(config: Configuration, objectId: string): PlanPoly
   const { position, yaw } = objectPlacement(object, config.room);
   // Ry: (x, z) → (c·x + s·z, −s·x + c·z), as src/core/mesh/placeMesh.ts; scale is already in the local outline.
   const t = (yaw * Math.PI) / 180;
-  const [c, s] = yaw % 90 === 0 ? [[1, 0], [0, 1], [-1, 0], [0, -1]][(yaw / 90) % 4] : [Math.cos(t), Math.sin(t)];
+  const [c, s] =
+    yaw % 90 === 0
+      ? [
+          [1, 0],
+          [0, 1],
+          [-1, 0],
+          [0, -1],
+        ][(yaw / 90) % 4]
+      : [Math.cos(t), Math.sin(t)];
   return local.map((poly) => poly.map(([x, z]) => [position[0] + c * x + s * z, position[2] - s * x + c * z] as const));
 }
 
@@ -69,13 +77,20 @@ function traceOutline(mesh: TriangleMesh, scale: number): PlanPolygon[] {
     filled[j * nx + i] = 1;
   };
   for (let t = 0; t < idx.length; t += 3) {
-    const ax = p[idx[t] * 3] * scale, az = p[idx[t] * 3 + 2] * scale;
-    const bx = p[idx[t + 1] * 3] * scale, bz = p[idx[t + 1] * 3 + 2] * scale;
-    const cx = p[idx[t + 2] * 3] * scale, cz = p[idx[t + 2] * 3 + 2] * scale;
+    const ax = p[idx[t] * 3] * scale,
+      az = p[idx[t] * 3 + 2] * scale;
+    const bx = p[idx[t + 1] * 3] * scale,
+      bz = p[idx[t + 1] * 3 + 2] * scale;
+    const cx = p[idx[t + 2] * 3] * scale,
+      cz = p[idx[t + 2] * 3 + 2] * scale;
     const area = (bx - ax) * (cz - az) - (cx - ax) * (bz - az);
     if (Math.abs(area) < 1e-4 * hx * hz) {
       // Seen edge-on (a vertical face): its projection is a segment; mark the cells it crosses.
-      for (const [px, pz, qx, qz] of [[ax, az, bx, bz], [bx, bz, cx, cz], [cx, cz, ax, az]]) {
+      for (const [px, pz, qx, qz] of [
+        [ax, az, bx, bz],
+        [bx, bz, cx, cz],
+        [cx, cz, ax, az],
+      ]) {
         const n = Math.ceil(Math.hypot(qx - px, qz - pz) / (0.5 * Math.min(hx, hz))) + 1;
         for (let k = 0; k <= n; k++) mark(px + ((qx - px) * k) / n, pz + ((qz - pz) * k) / n);
       }
@@ -100,7 +115,12 @@ function traceOutline(mesh: TriangleMesh, scale: number): PlanPolygon[] {
     }
   }
   const loops = traceCells(filled, nx, nz);
-  return loops.map((loop) => simplify(loop.map(([i, j]) => [x0 + i * hx, z0 + j * hz] as [number, number]), 0.6 * Math.min(hx, hz)));
+  return loops.map((loop) =>
+    simplify(
+      loop.map(([i, j]) => [x0 + i * hx, z0 + j * hz] as [number, number]),
+      0.6 * Math.min(hx, hz),
+    ),
+  );
 }
 
 /**
@@ -141,7 +161,11 @@ function traceCells(filled: Uint8Array, nx: number, nz: number): [number, number
         if (k === start) break; // every boundary is closed: the walk comes back
         const options = out.get(k)!;
         // Prefer the left (counterclockwise) turn, then straight on, then right.
-        const prefs: [number, number][] = [[-dj, di], [di, dj], [dj, -di]];
+        const prefs: [number, number][] = [
+          [-dj, di],
+          [di, dj],
+          [dj, -di],
+        ];
         const pickIndex = prefs.map(([a, b]) => options.findIndex(([u, v]) => u === a && v === b)).find((n) => n >= 0) ?? 0;
         [di, dj] = options.splice(pickIndex, 1)[0];
         loop.push([i, j]);

@@ -72,10 +72,17 @@ export function objectProblems(config: Configuration, index: number): Problem[] 
     return out;
   }
   const item = o.source.kind === 'library' ? findFurnitureItem(o.source.item) : undefined;
-  if (item && item.mount !== o.placement.on) p('object-mount', '.placement.on', `a ${item.name} goes on ${item.mount === 'wall' ? 'a wall' : 'the floor'}`, item.mount === 'wall' ? 'objectGoesOnWall' : 'objectGoesOnFloor', { name: item.name, furnitureId: item.id });
+  if (item && item.mount !== o.placement.on)
+    p('object-mount', '.placement.on', `a ${item.name} goes on ${item.mount === 'wall' ? 'a wall' : 'the floor'}`, item.mount === 'wall' ? 'objectGoesOnWall' : 'objectGoesOnFloor', { name: item.name, furnitureId: item.id });
   const limits = OBJECT_SCALE_LIMITS[o.source.kind];
   if (!Number.isFinite(o.scale) || o.scale < limits.min || o.scale > limits.max) {
-    p('object-scale', '.scale', `scale must be between ${limits.min} and ${limits.max} for ${o.source.kind === 'library' ? 'library furniture' : 'imported models'} (got ${o.scale})`, o.source.kind === 'library' ? 'objectScaleFurniture' : 'objectScaleImported', { min: limits.min, max: limits.max, value: o.scale });
+    p(
+      'object-scale',
+      '.scale',
+      `scale must be between ${limits.min} and ${limits.max} for ${o.source.kind === 'library' ? 'library furniture' : 'imported models'} (got ${o.scale})`,
+      o.source.kind === 'library' ? 'objectScaleFurniture' : 'objectScaleImported',
+      { min: limits.min, max: limits.max, value: o.scale },
+    );
   }
   if (!Number.isFinite(o.yaw) || o.yaw < 0 || o.yaw >= 360) p('object-yaw', '.yaw', `yaw must be in [0, 360) degrees (got ${o.yaw})`, 'objectYawRange', { value: o.yaw });
   else if (o.placement.on === 'wall' && o.yaw !== 0) p('object-yaw', '.yaw', `an object on a wall faces into the room and does not turn (yaw must be 0, got ${o.yaw})`, 'objectYawOnWall', { value: o.yaw });
@@ -86,7 +93,12 @@ export function objectProblems(config: Configuration, index: number): Problem[] 
   const materials = new Set(mesh.materials.map((m) => m.name));
   for (const [material, finish] of Object.entries(o.finishes)) {
     if (!materials.has(material)) {
-      p('unknown-material', `.finishes.${material}`, `${sourceName(config, o.source)} has no material '${material}' (it has: ${[...materials].join(', ')})`, 'unknownMaterial', { name: sourceName(config, o.source), ...furnitureOf(o.source), material, materials: [...materials].join(', ') });
+      p('unknown-material', `.finishes.${material}`, `${sourceName(config, o.source)} has no material '${material}' (it has: ${[...materials].join(', ')})`, 'unknownMaterial', {
+        name: sourceName(config, o.source),
+        ...furnitureOf(o.source),
+        material,
+        materials: [...materials].join(', '),
+      });
     } else if (typeof finish === 'string') {
       if (!findObjectFinish(finish)) p('unknown-finish', `.finishes.${material}`, `unknown finish '${finish}'`, 'unknownFinish', { id: finish });
     } else {

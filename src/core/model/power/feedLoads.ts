@@ -54,7 +54,10 @@ function moduleLoads(system: LightSystem, catalog: Catalog, chain: ChainCoordina
 
 /** Index (into `coords`) of the nearest feed to s on a snake; ties to the one nearer the chain start. */
 export function nearestFeed(coords: readonly number[], s: number): number {
-  return nearestBy(coords.map((c) => Math.abs(c - s)), coords);
+  return nearestBy(
+    coords.map((c) => Math.abs(c - s)),
+    coords,
+  );
 }
 
 /** Index of the smallest distance; ties (1e-12) to the smaller chain coordinate. */
@@ -77,7 +80,10 @@ function nearestBy(distances: readonly number[], coords: readonly number[]): num
  * are never nearest, as Infinity in nearestBy.
  */
 function snakeNearest(depths: readonly number[], coords: readonly number[]): (depth: number) => number {
-  const order = depths.map((_, j) => j).filter((j) => !Number.isNaN(depths[j])).sort((a, b) => depths[a] - depths[b] || a - b);
+  const order = depths
+    .map((_, j) => j)
+    .filter((j) => !Number.isNaN(depths[j]))
+    .sort((a, b) => depths[a] - depths[b] || a - b);
   if (order.length === 0) return () => 0;
   return (x) => {
     let lo = 0;
@@ -118,9 +124,19 @@ export function feedLoads(system: LightSystem, catalog: Catalog): FeedLoad[] {
   const loads = system.feeds.map(() => 0);
   const ids: string[][] = system.feeds.map(() => []);
   if (system.feeds.length > 0) {
-    const nearestOnSnake = chain.snake ? snakeNearest(system.feeds.map((f) => feedLocation(f.at, chain)?.depth ?? NaN), coords) : null;
+    const nearestOnSnake = chain.snake
+      ? snakeNearest(
+          system.feeds.map((f) => feedLocation(f.at, chain)?.depth ?? NaN),
+          coords,
+        )
+      : null;
     for (const m of moduleLoads(system, catalog, chain)) {
-      const j = nearestOnSnake ? nearestOnSnake(m.at.depth) : nearestBy(fields.map((d) => (d ? d(m.at) : Infinity)), coords);
+      const j = nearestOnSnake
+        ? nearestOnSnake(m.at.depth)
+        : nearestBy(
+            fields.map((d) => (d ? d(m.at) : Infinity)),
+            coords,
+          );
       loads[j] += m.watts;
       ids[j].push(m.id);
     }
@@ -254,7 +270,12 @@ export function overloadRefusal(before: Configuration, after: Configuration, pro
     // Power in the system's options), or, when none does, a second feed.
     const larger = driversBySize(catalog).find((d) => now.load <= d.capacity + LOAD_EPS);
     const params = { capacity: Number(formatWatts(now.capacity)), used: Number(formatWatts(was.load)) };
-    if (larger) return { reason: `the ${formatWatts(now.capacity)} W driver is full: ${formatWatts(was.load)} W used; choose the ${formatWatts(larger.capacity)} W driver in the system options or add a second feed`, code: 'driverFull', params: { ...params, larger: Number(formatWatts(larger.capacity)) } };
+    if (larger)
+      return {
+        reason: `the ${formatWatts(now.capacity)} W driver is full: ${formatWatts(was.load)} W used; choose the ${formatWatts(larger.capacity)} W driver in the system options or add a second feed`,
+        code: 'driverFull',
+        params: { ...params, larger: Number(formatWatts(larger.capacity)) },
+      };
     return { reason: `the ${formatWatts(now.capacity)} W driver is full: ${formatWatts(was.load)} W used; add a second feed in the system options`, code: 'driverFullAddFeed', params };
   }
   return {

@@ -31,7 +31,6 @@ export interface FixingProblem {
 
 const fmt = (x: number) => String(Math.round(x * 1000) / 1000);
 
-
 /** The first rule a fixing list breaks on this system's chain, or null when it keeps them all. */
 export function fixingProblem(system: LightSystem, points: readonly number[], catalog: Catalog): FixingProblem | null {
   const rule = mountingRule(system, catalog);
@@ -52,7 +51,12 @@ export function fixingProblem(system: LightSystem, points: readonly number[], ca
   const nodePoint = (p: number): number => points.findIndex((s) => Math.abs(s - chain.nodeAt[p]) <= FIXING_EPS);
   // Free ends: the chain start, and the end of every rail without a node (the last rail's: "the chain end").
   const first = onRail[0].length > 0 ? onRail[0][0].depth : located[0].depth;
-  if (points[0] < -FIXING_EPS || first > rule.maxOverhang + FIXING_EPS) return keyed({ code: 'fixing-overhang', index: 0, message: `the chain start would overhang its first ${what} by ${fmt(Math.max(first, points[0]))} m (at most ${rule.maxOverhang} m)` }, 'fixingOverhangStart', { what, by: Number(fmt(Math.max(first, points[0]))), max: rule.maxOverhang });
+  if (points[0] < -FIXING_EPS || first > rule.maxOverhang + FIXING_EPS)
+    return keyed({ code: 'fixing-overhang', index: 0, message: `the chain start would overhang its first ${what} by ${fmt(Math.max(first, points[0]))} m (at most ${rule.maxOverhang} m)` }, 'fixingOverhangStart', {
+      what,
+      by: Number(fmt(Math.max(first, points[0]))),
+      max: rule.maxOverhang,
+    });
   for (let i = 0; i < n; i++) {
     if (!Number.isNaN(chain.nodeAt[i])) continue;
     const mine = onRail[i];
@@ -62,7 +66,8 @@ export function fixingProblem(system: LightSystem, points: readonly number[], ca
     const index = mine.length > 0 ? mine[mine.length - 1].index : points.length - 1;
     const end = i === n - 1 ? 'the chain end' : `the end of rail ${i + 1}`;
     const key = i === n - 1 ? 'fixingOverhangEnd' : 'fixingOverhangRailEnd';
-    if (tail < -FIXING_EPS || tail > rule.maxOverhang + FIXING_EPS) return keyed({ code: 'fixing-overhang', index, message: `${end} would overhang its last ${what} by ${fmt(tail)} m (at most ${rule.maxOverhang} m)` }, key, { what, rail: i + 1, by: Number(fmt(tail)), max: rule.maxOverhang });
+    if (tail < -FIXING_EPS || tail > rule.maxOverhang + FIXING_EPS)
+      return keyed({ code: 'fixing-overhang', index, message: `${end} would overhang its last ${what} by ${fmt(tail)} m (at most ${rule.maxOverhang} m)` }, key, { what, rail: i + 1, by: Number(fmt(tail)), max: rule.maxOverhang });
   }
   // Spacing along each rail, from the node it hangs on (if any) through its points.
   for (let i = 0; i < n; i++) {
@@ -73,7 +78,11 @@ export function fixingProblem(system: LightSystem, points: readonly number[], ca
       if (gap > rule.spacing + FIXING_EPS) {
         const a = seq[k - 1].index;
         const params = { what, a: a + 1, b: seq[k].index + 1, gap: Number(fmt(gap)), max: rule.spacing };
-        return keyed({ code: 'fixing-spacing', index: seq[k].index, message: `${what} points ${a >= 0 ? a + 1 : `at connector`} and ${seq[k].index + 1} would be ${fmt(gap)} m apart (at most ${rule.spacing} m)` }, a >= 0 ? 'fixingSpacing' : 'fixingSpacingFromConnector', params);
+        return keyed(
+          { code: 'fixing-spacing', index: seq[k].index, message: `${what} points ${a >= 0 ? a + 1 : `at connector`} and ${seq[k].index + 1} would be ${fmt(gap)} m apart (at most ${rule.spacing} m)` },
+          a >= 0 ? 'fixingSpacing' : 'fixingSpacingFromConnector',
+          params,
+        );
       }
     }
   }

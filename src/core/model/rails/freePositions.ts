@@ -59,17 +59,37 @@ export function freeRailProblem(rail: Pick<Rail, 'id' | 'length' | 'modules'>, l
   for (let i = 0; i < mods.length; i++) {
     const o = mods[i].offset;
     if (o === undefined || !Number.isFinite(o)) {
-      return keyed({ code: 'module-position', index: i, message: `module ${mods[i].id} on rail ${rail.id} needs a finite offset (every module of a freely arranged rail has one; got ${String(o)})` }, 'moduleOffsetMissing', { id: mods[i].id, rail: rail.id, value: String(o) });
+      return keyed({ code: 'module-position', index: i, message: `module ${mods[i].id} on rail ${rail.id} needs a finite offset (every module of a freely arranged rail has one; got ${String(o)})` }, 'moduleOffsetMissing', {
+        id: mods[i].id,
+        rail: rail.id,
+        value: String(o),
+      });
     }
   }
   for (let i = 0; i < mods.length; i++) {
     const o = mods[i].offset!;
-    if (o < -FREE_EPS) return keyed({ code: 'module-past-end', index: i, message: `module ${mods[i].id} starts ${fmt(-o)} m before the start of rail ${rail.id}` }, 'moduleStartsBefore', { id: mods[i].id, by: Number(fmt(-o)), rail: rail.id });
-    if (o + lengths[i] > rail.length + FREE_EPS) return keyed({ code: 'module-past-end', index: i, message: `module ${mods[i].id} (${fmt(o)}–${fmt(o + lengths[i])} m) passes the end of the ${fmt(rail.length)} m rail ${rail.id}` }, 'modulePassesEnd', { id: mods[i].id, from: Number(fmt(o)), to: Number(fmt(o + lengths[i])), length: Number(fmt(rail.length)), rail: rail.id });
+    if (o < -FREE_EPS)
+      return keyed({ code: 'module-past-end', index: i, message: `module ${mods[i].id} starts ${fmt(-o)} m before the start of rail ${rail.id}` }, 'moduleStartsBefore', { id: mods[i].id, by: Number(fmt(-o)), rail: rail.id });
+    if (o + lengths[i] > rail.length + FREE_EPS)
+      return keyed({ code: 'module-past-end', index: i, message: `module ${mods[i].id} (${fmt(o)}–${fmt(o + lengths[i])} m) passes the end of the ${fmt(rail.length)} m rail ${rail.id}` }, 'modulePassesEnd', {
+        id: mods[i].id,
+        from: Number(fmt(o)),
+        to: Number(fmt(o + lengths[i])),
+        length: Number(fmt(rail.length)),
+        rail: rail.id,
+      });
   }
   for (let i = 0; i + 1 < mods.length; i++) {
     const end = mods[i].offset! + lengths[i];
-    if (mods[i + 1].offset! < end - FREE_EPS) return keyed({ code: 'module-overlap', index: i + 1, message: `module ${mods[i + 1].id} at ${fmt(mods[i + 1].offset!)} m overlaps module ${mods[i].id} (${fmt(mods[i].offset!)}–${fmt(end)} m) on rail ${rail.id}` }, 'moduleOverlap', { id: mods[i + 1].id, at: Number(fmt(mods[i + 1].offset!)), other: mods[i].id, from: Number(fmt(mods[i].offset!)), to: Number(fmt(end)), rail: rail.id });
+    if (mods[i + 1].offset! < end - FREE_EPS)
+      return keyed({ code: 'module-overlap', index: i + 1, message: `module ${mods[i + 1].id} at ${fmt(mods[i + 1].offset!)} m overlaps module ${mods[i].id} (${fmt(mods[i].offset!)}–${fmt(end)} m) on rail ${rail.id}` }, 'moduleOverlap', {
+        id: mods[i + 1].id,
+        at: Number(fmt(mods[i + 1].offset!)),
+        other: mods[i].id,
+        from: Number(fmt(mods[i].offset!)),
+        to: Number(fmt(end)),
+        rail: rail.id,
+      });
   }
   return null;
 }

@@ -81,7 +81,11 @@ export function treeProblem(system: Pick<LightSystem, 'rails' | 'joints'>, catal
   for (let k = 0; k < system.joints.length; k++) {
     const p = system.joints[k].parent;
     if (p !== undefined && !(Number.isInteger(p) && p >= 0 && p <= k)) {
-      return keyed({ code: 'joint-parent', joint: k, field: 'parent', message: `rail ${k + 2} must hang on an earlier rail (parent 1 to ${k + 1}, got ${String(typeof p === 'number' ? p + 1 : p)})` }, 'jointParent', { rail: k + 2, max: k + 1, value: String(typeof p === 'number' ? p + 1 : p) });
+      return keyed({ code: 'joint-parent', joint: k, field: 'parent', message: `rail ${k + 2} must hang on an earlier rail (parent 1 to ${k + 1}, got ${String(typeof p === 'number' ? p + 1 : p)})` }, 'jointParent', {
+        rail: k + 2,
+        max: k + 1,
+        value: String(typeof p === 'number' ? p + 1 : p),
+      });
     }
   }
   const byNode = new Map<number, number[]>();
@@ -95,16 +99,35 @@ export function treeProblem(system: Pick<LightSystem, 'rails' | 'joints'>, catal
     const first = system.joints[ks[0]];
     for (const k of ks.slice(1)) {
       const j = system.joints[k];
-      if (j.connector !== first.connector) return keyed({ code: 'node-connector', joint: k, field: 'connector', message: `the connector at the end of rail ${p + 1} is '${first.connector}'; rail ${k + 2} cannot hang on it through '${j.connector}'` }, 'nodeConnector', { rail: p + 1, connector: first.connector, branch: k + 2, other: j.connector });
+      if (j.connector !== first.connector)
+        return keyed({ code: 'node-connector', joint: k, field: 'connector', message: `the connector at the end of rail ${p + 1} is '${first.connector}'; rail ${k + 2} cannot hang on it through '${j.connector}'` }, 'nodeConnector', {
+          rail: p + 1,
+          connector: first.connector,
+          branch: k + 2,
+          other: j.connector,
+        });
     }
     const con = catalog.connectors.find((c) => c.id === first.connector);
     if (!con) continue;
     const ports = connectorPorts(con);
-    if (ks.length > ports - 1) return keyed({ code: 'node-ports', joint: ks[ports - 1], field: 'connector', message: `the ${con.name} at the end of rail ${p + 1} joins ${ports} rail ends; it cannot hold ${ks.length} branches` }, 'nodePorts', { name: con.name, connectorId: con.id, rail: p + 1, ports, count: ks.length });
+    if (ks.length > ports - 1)
+      return keyed({ code: 'node-ports', joint: ks[ports - 1], field: 'connector', message: `the ${con.name} at the end of rail ${p + 1} joins ${ports} rail ends; it cannot hold ${ks.length} branches` }, 'nodePorts', {
+        name: con.name,
+        connectorId: con.id,
+        rail: p + 1,
+        ports,
+        count: ks.length,
+      });
     const turns = new Set<number>();
     for (const k of ks) {
       const t = system.joints[k].turn;
-      if (turns.has(t) && allowedTurn(con, t)) return keyed({ code: 'node-port-taken', joint: k, field: 'turn', message: `two rails leave the ${con.name} at the end of rail ${p + 1} through one port (${t}°)` }, 'nodeOnePort', { name: con.name, connectorId: con.id, rail: p + 1, turn: t });
+      if (turns.has(t) && allowedTurn(con, t))
+        return keyed({ code: 'node-port-taken', joint: k, field: 'turn', message: `two rails leave the ${con.name} at the end of rail ${p + 1} through one port (${t}°)` }, 'nodeOnePort', {
+          name: con.name,
+          connectorId: con.id,
+          rail: p + 1,
+          turn: t,
+        });
       turns.add(t);
     }
   }

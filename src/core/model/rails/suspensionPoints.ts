@@ -40,9 +40,7 @@ export interface SuspensionPoint {
 
 /** The spacing rules of the system's mounting. */
 export function mountingRule(system: LightSystem, catalog: Catalog): MountingRule {
-  return system.mounting === 'surface'
-    ? { spacing: catalog.surfaceMount.spacing, maxOverhang: catalog.surfaceMount.maxOverhang }
-    : { spacing: catalog.suspension.maxSpacing, maxOverhang: catalog.suspension.maxOverhang };
+  return system.mounting === 'surface' ? { spacing: catalog.surfaceMount.spacing, maxOverhang: catalog.surfaceMount.maxOverhang } : { spacing: catalog.suspension.maxSpacing, maxOverhang: catalog.suspension.maxOverhang };
 }
 
 /** Chain coordinates of the fixing points: the user's moved ones, or else the derived ones; with the connector each sits at. */

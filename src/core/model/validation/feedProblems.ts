@@ -17,10 +17,25 @@ export function feedProblems(s: LightSystem, catalog: Catalog, p: ReportProblem)
     const at = f.at;
     if (typeof at === 'object' && 'joint' in at) {
       if (!catalog.feed.positions.includes('joints')) p('feed-position', `${fp}.at`, `${catalog.name} feeds only at the chain ends, not at connectors`, { catalog: catalog.name }, 'feedOnlyAtEnds');
-      else if (!Number.isInteger(at.joint) || at.joint < 0 || at.joint >= s.joints.length) p('feed-position', `${fp}.at`, `${feedLabel(k)} is at connector ${at.joint + 1}, but the chain has ${s.joints.length} connector${s.joints.length === 1 ? '' : 's'}`, { n: k + 1, joint: at.joint + 1, count: s.joints.length }, 'feedAtMissingConnector');
+      else if (!Number.isInteger(at.joint) || at.joint < 0 || at.joint >= s.joints.length)
+        p(
+          'feed-position',
+          `${fp}.at`,
+          `${feedLabel(k)} is at connector ${at.joint + 1}, but the chain has ${s.joints.length} connector${s.joints.length === 1 ? '' : 's'}`,
+          { n: k + 1, joint: at.joint + 1, count: s.joints.length },
+          'feedAtMissingConnector',
+        );
     } else if (typeof at === 'object' && 'end' in at) {
-      if (!Number.isInteger(at.end) || at.end < 0 || at.end >= s.rails.length) p('feed-position', `${fp}.at`, `${feedLabel(k)} is at the end of rail ${at.end + 1}, but the system has ${s.rails.length} rail${s.rails.length === 1 ? '' : 's'}`, { n: k + 1, rail: at.end + 1, count: s.rails.length }, 'feedAtMissingRail');
-      else if (firstJoint[at.end] !== undefined) p('feed-position', `${fp}.at`, `${feedLabel(k)} is at the end of rail ${at.end + 1}, but a connector sits there (feed at the connector instead)`, { n: k + 1, rail: at.end + 1 }, 'feedAtRailEndConnector');
+      if (!Number.isInteger(at.end) || at.end < 0 || at.end >= s.rails.length)
+        p(
+          'feed-position',
+          `${fp}.at`,
+          `${feedLabel(k)} is at the end of rail ${at.end + 1}, but the system has ${s.rails.length} rail${s.rails.length === 1 ? '' : 's'}`,
+          { n: k + 1, rail: at.end + 1, count: s.rails.length },
+          'feedAtMissingRail',
+        );
+      else if (firstJoint[at.end] !== undefined)
+        p('feed-position', `${fp}.at`, `${feedLabel(k)} is at the end of rail ${at.end + 1}, but a connector sits there (feed at the connector instead)`, { n: k + 1, rail: at.end + 1 }, 'feedAtRailEndConnector');
     } else if (at !== 'start' && at !== 'end') p('feed-position', `${fp}.at`, `a feed sits at 'start', 'end', { joint: k } or { end: i } (got ${String(at)})`, { value: String(at) }, 'feedPositionUnknown');
     // One key per physical position: the joints of one node share it, and 'end' is the last rail's end.
     const key = typeof at !== 'object' ? (at === 'end' ? `end:${s.rails.length - 1}` : String(at)) : 'joint' in at ? `node:${s.joints[at.joint] ? jointParent(s.joints[at.joint], at.joint) : `?${at.joint}`}` : `end:${at.end}`;
@@ -29,4 +44,3 @@ export function feedProblems(s: LightSystem, catalog: Catalog, p: ReportProblem)
     else p('feed-duplicate', `${fp}.at`, `${feedLabel(twin)} and ${feedLabel(k)} both sit at ${describeFeedAt(f.at)}`, { n: twin + 1, other: k + 1, feedAt: feedAtParam(f.at) }, 'feedsBothAt');
   });
 }
-

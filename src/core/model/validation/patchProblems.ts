@@ -12,5 +12,12 @@ export function patchProblems(config: Configuration): Problem[] {
   const hit = firstPatchOverlap(config);
   if (!hit) return [];
   const { at, other } = hit;
-  return [keyed({ code: 'dmx-overlap', path: `${at.path}.dmx`, message: `DMX ${formatPatchRange(at.patch)} of module ${at.module.id} overlaps module ${other.module.id} (${formatPatchRange(other.patch)})` }, 'dmxOverlap', { range: formatPatchRange(at.patch), id: at.module.id, other: other.module.id, otherRange: formatPatchRange(other.patch) })];
+  return [
+    keyed({ code: 'dmx-overlap', path: `${at.path}.dmx`, message: `DMX ${formatPatchRange(at.patch)} of module ${at.module.id} overlaps module ${other.module.id} (${formatPatchRange(other.patch)})` }, 'dmxOverlap', {
+      range: formatPatchRange(at.patch),
+      id: at.module.id,
+      other: other.module.id,
+      otherRange: formatPatchRange(other.patch),
+    }),
+  ];
 }

@@ -28,12 +28,7 @@ const MAX_CELLS_PER_AXIS = 64;
  * exact: touching or separated boxes mean separated or touching rectangles,
  * and rectsOverlap calls touching rectangles disjoint.
  */
-export function forEachOverlap(
-  rects: readonly PlanRect[],
-  stats: { pairTests: number },
-  found: (p: number, q: number) => 'continue' | 'skip' | 'stop',
-  wanted: (p: number, q: number) => boolean = () => true,
-): void {
+export function forEachOverlap(rects: readonly PlanRect[], stats: { pairTests: number }, found: (p: number, q: number) => 'continue' | 'skip' | 'stop', wanted: (p: number, q: number) => boolean = () => true): void {
   const boxes = rects.map(boxOf);
   const cells = new Map<string, number[]>();
   const oversize: number[] = [];

@@ -46,8 +46,7 @@ function computeOwnProblems(s: LightSystem, roomHeight: number, catalog: Catalog
   const at = '';
   const out: Problem[] = [];
   // `key`: the sentence's own code where the rule has several (docs/i18n.md); its params then travel non-enumerable.
-  const p: ReportProblem = (code, path, message, params, key) =>
-    out.push(key ? keyed({ code, path: `${at}${path}`, message }, key, params) : { code, path: `${at}${path}`, message, ...(params ? { params } : {}) });
+  const p: ReportProblem = (code, path, message, params, key) => out.push(key ? keyed({ code, path: `${at}${path}`, message }, key, params) : { code, path: `${at}${path}`, message, ...(params ? { params } : {}) });
   // A sub-rule's problem (fixing points, free positions, the tree, aim, filter, patch) with its own coding.
   const sub = (code: string, path: string, found: { message: string } & Keyed) => p(code, path, found.message, found.params, found.key);
   if (![s.x, s.z, s.rotation].every(Number.isFinite)) p('position', '', `system ${s.id} has a non-finite position or rotation`, { id: s.id }, 'systemPosition');
@@ -66,12 +65,20 @@ function computeOwnProblems(s: LightSystem, roomHeight: number, catalog: Catalog
     else p('suspension-floor', '.suspension', message, { hang: Number(hang), min: susp.minHeightAboveFloor });
   }
   if (s.rails.length === 0) p('no-rails', '.rails', `system ${s.id} has no rails`, { id: s.id }, 'noRails');
-  if (s.joints.length !== Math.max(0, s.rails.length - 1)) p('joint-count', '.joints', `${s.rails.length} rails need ${Math.max(0, s.rails.length - 1)} joints, found ${s.joints.length}`, { rails: s.rails.length, needed: Math.max(0, s.rails.length - 1), found: s.joints.length }, 'jointCount');
+  if (s.joints.length !== Math.max(0, s.rails.length - 1))
+    p('joint-count', '.joints', `${s.rails.length} rails need ${Math.max(0, s.rails.length - 1)} joints, found ${s.joints.length}`, { rails: s.rails.length, needed: Math.max(0, s.rails.length - 1), found: s.joints.length }, 'jointCount');
   s.joints.forEach((j, i) => {
     const con = catalog.connectors.find((c) => c.id === j.connector);
     if (!con) p('unknown-connector', `.joints[${i}].connector`, `unknown connector '${j.connector}'`, { id: j.connector }, 'unknownConnector');
     else if (!allowedTurn(con, j.turn)) {
-      if (con.flex) p('bad-turn', `.joints[${i}].turn`, `connector '${con.id}' turns by a multiple of ${con.flex.step}° within ±${con.flex.maxAngle}°, not ${j.turn}°`, { id: con.id, connectorId: con.id, step: con.flex.step, max: con.flex.maxAngle, turn: j.turn }, 'badTurnFlex');
+      if (con.flex)
+        p(
+          'bad-turn',
+          `.joints[${i}].turn`,
+          `connector '${con.id}' turns by a multiple of ${con.flex.step}° within ±${con.flex.maxAngle}°, not ${j.turn}°`,
+          { id: con.id, connectorId: con.id, step: con.flex.step, max: con.flex.maxAngle, turn: j.turn },
+          'badTurnFlex',
+        );
       else p('bad-turn', `.joints[${i}].turn`, `connector '${con.id}' turns by ±${con.angle}°, not ${j.turn}°`, { id: con.id, connectorId: con.id, angle: con.angle, turn: j.turn }, 'badTurn');
     }
   });
@@ -106,7 +113,13 @@ function computeOwnProblems(s: LightSystem, roomHeight: number, catalog: Catalog
       const patch = m.dmx ? patchRangeIssue(m.dmx, type) : null;
       if (patch) sub('dmx-range', `${mp}.dmx`, patch);
     });
-    const free = refsOk && Number.isFinite(r.length) && isFreeRail(r) ? freeRailProblem(r, r.modules.map((m) => findModuleType(catalog, m.type).length)) : null;
+    const free =
+      refsOk && Number.isFinite(r.length) && isFreeRail(r)
+        ? freeRailProblem(
+            r,
+            r.modules.map((m) => findModuleType(catalog, m.type).length),
+          )
+        : null;
     if (free) sub(free.code, `${rp}.modules[${free.index}].offset`, free);
     else if (refsOk && Number.isFinite(r.length) && !railModuleOffsets(r, catalog)) {
       p('modules-do-not-fit', `${rp}.modules`, `the modules of rail ${r.id} do not fit its ${fmt(r.length)} m with distribution '${r.distribution}'`, { rail: r.id, length: Number(fmt(r.length)), distribution: r.distribution });
@@ -115,7 +128,14 @@ function computeOwnProblems(s: LightSystem, roomHeight: number, catalog: Catalog
   feedProblems(s, catalog, p);
   if (out.length === 0) {
     for (const l of feedLoads(s, catalog)) {
-      if (isOverloaded(l)) p('feed-overload', `.feeds[${l.index}]`, `${feedLabel(l.index)} carries ${formatWatts(l.load)} W, more than its ${formatWatts(l.capacity)} W driver (${l.driver.name})`, { n: l.index + 1, load: Number(formatWatts(l.load)), capacity: Number(formatWatts(l.capacity)), driver: l.driver.name, driverId: l.driver.id }, 'feedCarries');
+      if (isOverloaded(l))
+        p(
+          'feed-overload',
+          `.feeds[${l.index}]`,
+          `${feedLabel(l.index)} carries ${formatWatts(l.load)} W, more than its ${formatWatts(l.capacity)} W driver (${l.driver.name})`,
+          { n: l.index + 1, load: Number(formatWatts(l.load)), capacity: Number(formatWatts(l.capacity)), driver: l.driver.name, driverId: l.driver.id },
+          'feedCarries',
+        );
     }
   }
   // Moved fixing points (fixingRules.ts), once the chain itself is sound.

@@ -56,7 +56,12 @@ function crossesItself(tree: SystemElementTree): boolean {
   const rects = tree.elements.flat();
   const chainIndex = tree.elements.flatMap((group, a) => group.map(() => a));
   let crosses = false;
-  forEachOverlap(rects, { pairTests: 0 }, () => ((crosses = true), 'stop'), (p, q) => !tree.near[chainIndex[p]].has(chainIndex[q]));
+  forEachOverlap(
+    rects,
+    { pairTests: 0 },
+    () => ((crosses = true), 'stop'),
+    (p, q) => !tree.near[chainIndex[p]].has(chainIndex[q]),
+  );
   return crosses;
 }
 
@@ -71,7 +76,12 @@ interface Footprint {
 const footprintOf = perCatalog((s: LightSystem, catalog: Catalog): Footprint => {
   const rects = systemElementTree(s, catalog).elements.flat();
   const boxes = rects.map(boxOf);
-  const box = boxes.reduce((u, b) => ({ minX: Math.min(u.minX, b.minX), minZ: Math.min(u.minZ, b.minZ), maxX: Math.max(u.maxX, b.maxX), maxZ: Math.max(u.maxZ, b.maxZ) }), { minX: Infinity, minZ: Infinity, maxX: -Infinity, maxZ: -Infinity });
+  const box = boxes.reduce((u, b) => ({ minX: Math.min(u.minX, b.minX), minZ: Math.min(u.minZ, b.minZ), maxX: Math.max(u.maxX, b.maxX), maxZ: Math.max(u.maxZ, b.maxZ) }), {
+    minX: Infinity,
+    minZ: Infinity,
+    maxX: -Infinity,
+    maxZ: -Infinity,
+  });
   return { rects, boxes, box };
 });
 
@@ -87,7 +97,10 @@ function clashes(mine: Footprint, other: LightSystem, roomHeight: number, catalo
 
 export function outsideRoom(elements: PlanRect[][], width: number, depth: number): boolean {
   // "Not inside" rather than "outside": a NaN corner fails every comparison and must count as outside (issue 32).
-  return elements.flat().flatMap(rectCorners).some(([x, z]) => !(x >= -EPS && x <= width + EPS && z >= -EPS && z <= depth + EPS));
+  return elements
+    .flat()
+    .flatMap(rectCorners)
+    .some(([x, z]) => !(x >= -EPS && x <= width + EPS && z >= -EPS && z <= depth + EPS));
 }
 
 export function outsideProblem(s: LightSystem, index: number, room: Configuration['room']): Problem {

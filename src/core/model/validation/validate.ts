@@ -70,22 +70,27 @@ export function validate(config: Configuration, catalog: Catalog, options: Valid
   elements.forEach((el, i) => el?.forEach((group, a) => group.forEach((r) => (rects.push(r), owner.push(i), chainIndex.push(a)))));
   const selfCrossing = new Set<number>();
   const clashes = Array.from({ length: n }, () => new Set<number>());
-  forEachOverlap(rects, stats, (p, q) => {
-    const [i, j] = [owner[p], owner[q]];
-    if (i === j) {
-      if (trees[i]!.near[chainIndex[p]].has(chainIndex[q]) || selfCrossing.has(i)) return 'skip';
-      selfCrossing.add(i);
-    } else {
-      if (clashes[i].has(j)) return 'skip';
-      clashes[i].add(j);
-      clashes[j].add(i);
-    }
-    return first ? 'stop' : 'continue';
-  }, (p, q) => {
-    // Cheap pre-filter: pairs whose answer is already known need no exact test.
-    const [i, j] = [owner[p], owner[q]];
-    return i === j ? !trees[i]!.near[chainIndex[p]].has(chainIndex[q]) && !selfCrossing.has(i) : !clashes[i].has(j);
-  });
+  forEachOverlap(
+    rects,
+    stats,
+    (p, q) => {
+      const [i, j] = [owner[p], owner[q]];
+      if (i === j) {
+        if (trees[i]!.near[chainIndex[p]].has(chainIndex[q]) || selfCrossing.has(i)) return 'skip';
+        selfCrossing.add(i);
+      } else {
+        if (clashes[i].has(j)) return 'skip';
+        clashes[i].add(j);
+        clashes[j].add(i);
+      }
+      return first ? 'stop' : 'continue';
+    },
+    (p, q) => {
+      // Cheap pre-filter: pairs whose answer is already known need no exact test.
+      const [i, j] = [owner[p], owner[q]];
+      return i === j ? !trees[i]!.near[chainIndex[p]].has(chainIndex[q]) && !selfCrossing.has(i) : !clashes[i].has(j);
+    },
+  );
   config.systems.forEach((s, i) => {
     if (own[i].length > 0) return problems.push(...own[i]);
     const at = `systems[${i}]`;

@@ -41,8 +41,7 @@ const normalize = (a: V3): V3 => {
 export function convexHull(points: [number, number][]): [number, number][] {
   const p = [...points].sort((a, b) => a[0] - b[0] || a[1] - b[1]);
   if (p.length < 3) return p;
-  const turn = (o: [number, number], a: [number, number], b: [number, number]): number =>
-    (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+  const turn = (o: [number, number], a: [number, number], b: [number, number]): number => (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
   const lower: [number, number][] = [];
   for (const q of p) {
     while (lower.length >= 2 && turn(lower[lower.length - 2], lower[lower.length - 1], q) <= 0) lower.pop();
@@ -62,12 +61,17 @@ function minimumAreaAngle(hull: [number, number][]): number {
   const areaAt = (theta: number): number => {
     const c = Math.cos(theta);
     const s = Math.sin(theta);
-    let u0 = Infinity, u1 = -Infinity, v0 = Infinity, v1 = -Infinity;
+    let u0 = Infinity,
+      u1 = -Infinity,
+      v0 = Infinity,
+      v1 = -Infinity;
     for (const [x, y] of hull) {
       const u = c * x + s * y;
       const v = -s * x + c * y;
-      u0 = Math.min(u0, u); u1 = Math.max(u1, u);
-      v0 = Math.min(v0, v); v1 = Math.max(v1, v);
+      u0 = Math.min(u0, u);
+      u1 = Math.max(u1, u);
+      v0 = Math.min(v0, v);
+      v1 = Math.max(v1, v);
     }
     return (u1 - u0) * (v1 - v0);
   };
@@ -136,13 +140,7 @@ export function buildCharts(tris: WorldTriangles): Chart[] {
   return charts;
 }
 
-function projectChart(
-  object: number,
-  members: number[],
-  vertex: (t: number, c: number) => V3,
-  normalOf: (t: number) => V3,
-  areas: Float64Array,
-): Chart {
+function projectChart(object: number, members: number[], vertex: (t: number, c: number) => V3, normalOf: (t: number) => V3, areas: Float64Array): Chart {
   // Area-weighted mean normal: the best plane through a nearly planar chart.
   const sum: V3 = [0, 0, 0];
   for (const t of members) {
@@ -170,14 +168,19 @@ function projectChart(
     b = b2;
   }
   const uv = new Float64Array(members.length * 6);
-  let u0 = Infinity, u1 = -Infinity, v0 = Infinity, v1 = -Infinity;
+  let u0 = Infinity,
+    u1 = -Infinity,
+    v0 = Infinity,
+    v1 = -Infinity;
   members.forEach((tri, i) => {
     for (let c = 0; c < 3; c++) {
       const [u, v] = project(vertex(tri, c), t, b);
       uv[6 * i + 2 * c] = u;
       uv[6 * i + 2 * c + 1] = v;
-      u0 = Math.min(u0, u); u1 = Math.max(u1, u);
-      v0 = Math.min(v0, v); v1 = Math.max(v1, v);
+      u0 = Math.min(u0, u);
+      u1 = Math.max(u1, u);
+      v0 = Math.min(v0, v);
+      v1 = Math.max(v1, v);
     }
   });
   let width = u1 - u0;

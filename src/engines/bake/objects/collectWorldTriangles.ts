@@ -85,9 +85,7 @@ export function collectWorldTriangles(objects: readonly BakeObject[]): WorldTria
     // Weld by exact world position: a mesh that repeats a corner per face (split normals) still
     // has edge-connected faces for the chart builder. Sorting the vertices by position puts equal
     // ones next to each other.
-    const order = Array.from({ length: vertexCount }, (_, v) => v).sort(
-      (a, b) => world[3 * a] - world[3 * b] || world[3 * a + 1] - world[3 * b + 1] || world[3 * a + 2] - world[3 * b + 2],
-    );
+    const order = Array.from({ length: vertexCount }, (_, v) => v).sort((a, b) => world[3 * a] - world[3 * b] || world[3 * a + 1] - world[3 * b + 1] || world[3 * a + 2] - world[3 * b + 2]);
     const idOfVertex = new Uint32Array(vertexCount);
     order.forEach((v, i) => {
       const u = order[i - 1];
@@ -111,9 +109,15 @@ export function collectWorldTriangles(objects: readonly BakeObject[]): WorldTria
         if (m >= materialRgb.length) throw new InputError(`${name}: triangle ${t} names material ${m}, but the mesh has ${materialRgb.length} materials`);
         rgb = materialRgb[m];
       }
-      const ax = world[3 * ia], ay = world[3 * ia + 1], az = world[3 * ia + 2];
-      const e1x = world[3 * ib] - ax, e1y = world[3 * ib + 1] - ay, e1z = world[3 * ib + 2] - az;
-      const e2x = world[3 * ic] - ax, e2y = world[3 * ic + 1] - ay, e2z = world[3 * ic + 2] - az;
+      const ax = world[3 * ia],
+        ay = world[3 * ia + 1],
+        az = world[3 * ia + 2];
+      const e1x = world[3 * ib] - ax,
+        e1y = world[3 * ib + 1] - ay,
+        e1z = world[3 * ib + 2] - az;
+      const e2x = world[3 * ic] - ax,
+        e2y = world[3 * ic + 1] - ay,
+        e2z = world[3 * ic + 2] - az;
       const cx = e1y * e2z - e1z * e2y;
       const cy = e1z * e2x - e1x * e2z;
       const cz = e1x * e2y - e1y * e2x;

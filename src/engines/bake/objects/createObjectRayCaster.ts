@@ -101,16 +101,24 @@ export function traverseBvh(bvh: ObjectBvhTextures, origin: Vec3, dir: Vec3, tMa
 /** Möller & Trumbore 1997 on texture triangle k, both faces, t in (0, tMax). */
 function triangleHit(tri: Float32Array, k: number, origin: Vec3, dir: Vec3, tMax: number): RawHit | null {
   const o = 16 * k;
-  const v0x = tri[o], v0y = tri[o + 1], v0z = tri[o + 2];
-  const e1x = tri[o + 4], e1y = tri[o + 5], e1z = tri[o + 6];
-  const e2x = tri[o + 8], e2y = tri[o + 9], e2z = tri[o + 10];
+  const v0x = tri[o],
+    v0y = tri[o + 1],
+    v0z = tri[o + 2];
+  const e1x = tri[o + 4],
+    e1y = tri[o + 5],
+    e1z = tri[o + 6];
+  const e2x = tri[o + 8],
+    e2y = tri[o + 9],
+    e2z = tri[o + 10];
   const px = dir[1] * e2z - dir[2] * e2y;
   const py = dir[2] * e2x - dir[0] * e2z;
   const pz = dir[0] * e2y - dir[1] * e2x;
   const det = e1x * px + e1y * py + e1z * pz;
   if (det === 0) return null;
   const invDet = 1 / det;
-  const sx = origin[0] - v0x, sy = origin[1] - v0y, sz = origin[2] - v0z;
+  const sx = origin[0] - v0x,
+    sy = origin[1] - v0y,
+    sz = origin[2] - v0z;
   const u = (sx * px + sy * py + sz * pz) * invDet;
   if (u < 0 || u > 1) return null;
   const qx = sy * e1z - sz * e1y;

@@ -10,8 +10,10 @@ export type Triangle2 = ArrayLike<number>;
 
 /** Area of triangle ∩ [x0, x0 + 1] × [y0, y0 + 1] (either winding). */
 export function overlapWithTexel(tri: Triangle2, x0: number, y0: number): number {
-  const minX = Math.min(tri[0], tri[2], tri[4]), maxX = Math.max(tri[0], tri[2], tri[4]);
-  const minY = Math.min(tri[1], tri[3], tri[5]), maxY = Math.max(tri[1], tri[3], tri[5]);
+  const minX = Math.min(tri[0], tri[2], tri[4]),
+    maxX = Math.max(tri[0], tri[2], tri[4]);
+  const minY = Math.min(tri[1], tri[3], tri[5]),
+    maxY = Math.max(tri[1], tri[3], tri[5]);
   if (maxX <= x0 || minX >= x0 + 1 || maxY <= y0 || minY >= y0 + 1) return 0;
   if (minX >= x0 && maxX <= x0 + 1 && minY >= y0 && maxY <= y0 + 1) {
     // Wholly inside the texel (the common case for small triangles): no clipping.
@@ -29,13 +31,15 @@ export function overlapWithTexel(tri: Triangle2, x0: number, y0: number): number
     const out: number[] = [];
     const n = poly.length / 2;
     for (let i = 0; i < n; i++) {
-      const px = poly[2 * i], py = poly[2 * i + 1];
+      const px = poly[2 * i],
+        py = poly[2 * i + 1];
       const j = (i + 1) % n;
-      const qx = poly[2 * j], qy = poly[2 * j + 1];
+      const qx = poly[2 * j],
+        qy = poly[2 * j + 1];
       const dp = sign * (axis === 0 ? px : py) - limit;
       const dq = sign * (axis === 0 ? qx : qy) - limit;
       if (dp >= 0) out.push(px, py);
-      if ((dp >= 0) !== (dq >= 0)) {
+      if (dp >= 0 !== dq >= 0) {
         const s = dp / (dp - dq);
         out.push(px + s * (qx - px), py + s * (qy - py));
       }
@@ -54,9 +58,12 @@ export function overlapWithTexel(tri: Triangle2, x0: number, y0: number): number
 
 /** Barycentric weights [wa, wb, wc] of the point (px, py) in the triangle's plane (any point, inside or not). */
 export function barycentric(tri: Triangle2, px: number, py: number): [number, number, number] {
-  const e1x = tri[2] - tri[0], e1y = tri[3] - tri[1];
-  const e2x = tri[4] - tri[0], e2y = tri[5] - tri[1];
-  const dx = px - tri[0], dy = py - tri[1];
+  const e1x = tri[2] - tri[0],
+    e1y = tri[3] - tri[1];
+  const e2x = tri[4] - tri[0],
+    e2y = tri[5] - tri[1];
+  const dx = px - tri[0],
+    dy = py - tri[1];
   const det = e1x * e2y - e1y * e2x;
   const wb = (dx * e2y - dy * e2x) / det;
   const wc = (e1x * dy - e1y * dx) / det;
@@ -65,9 +72,18 @@ export function barycentric(tri: Triangle2, px: number, py: number): [number, nu
 
 /** Closest point of the (closed) triangle to (px, py): its barycentric weights and the squared distance. */
 export function closestOnTriangle(tri: Triangle2, px: number, py: number): { weights: [number, number, number]; distanceSq: number } {
-  const ax = tri[0], ay = tri[1], bx = tri[2], by = tri[3], cx = tri[4], cy = tri[5];
-  const abx = bx - ax, aby = by - ay, acx = cx - ax, acy = cy - ay;
-  const apx = px - ax, apy = py - ay;
+  const ax = tri[0],
+    ay = tri[1],
+    bx = tri[2],
+    by = tri[3],
+    cx = tri[4],
+    cy = tri[5];
+  const abx = bx - ax,
+    aby = by - ay,
+    acx = cx - ax,
+    acy = cy - ay;
+  const apx = px - ax,
+    apy = py - ay;
   const result = (wa: number, wb: number, wc: number): { weights: [number, number, number]; distanceSq: number } => {
     const qx = wa * ax + wb * bx + wc * cx;
     const qy = wa * ay + wb * by + wc * cy;
@@ -76,7 +92,8 @@ export function closestOnTriangle(tri: Triangle2, px: number, py: number): { wei
   const d1 = abx * apx + aby * apy;
   const d2 = acx * apx + acy * apy;
   if (d1 <= 0 && d2 <= 0) return result(1, 0, 0);
-  const bpx = px - bx, bpy = py - by;
+  const bpx = px - bx,
+    bpy = py - by;
   const d3 = abx * bpx + aby * bpy;
   const d4 = acx * bpx + acy * bpy;
   if (d3 >= 0 && d4 <= d3) return result(0, 1, 0);
@@ -85,7 +102,8 @@ export function closestOnTriangle(tri: Triangle2, px: number, py: number): { wei
     const v = d1 / (d1 - d3);
     return result(1 - v, v, 0);
   }
-  const cpx = px - cx, cpy = py - cy;
+  const cpx = px - cx,
+    cpy = py - cy;
   const d5 = abx * cpx + aby * cpy;
   const d6 = acx * cpx + acy * cpy;
   if (d6 >= 0 && d5 <= d6) return result(0, 0, 1);

@@ -78,8 +78,10 @@ export function rasterizeAtlas(tris: WorldTriangles, charts: readonly Chart[], l
     for (let i = 0; i < m; i++) {
       const tri = local.subarray(6 * i, 6 * i + 6);
       const [minX, minY, maxX, maxY] = box(i);
-      const i0 = Math.max(0, Math.floor(minX)), i1 = Math.min(cols - 1, Math.ceil(maxX) - 1);
-      const j0 = Math.max(0, Math.floor(minY)), j1 = Math.min(rows - 1, Math.ceil(maxY) - 1);
+      const i0 = Math.max(0, Math.floor(minX)),
+        i1 = Math.min(cols - 1, Math.ceil(maxX) - 1);
+      const j0 = Math.max(0, Math.floor(minY)),
+        j1 = Math.min(rows - 1, Math.ceil(maxY) - 1);
       for (let j = j0; j <= j1; j++) {
         for (let ii = i0; ii <= i1; ii++) {
           const a = overlapWithTexel(tri, ii, j);
@@ -102,8 +104,10 @@ export function rasterizeAtlas(tris: WorldTriangles, charts: readonly Chart[], l
     for (let k = 0; k < cols * rows; k++) if (coverage[k] > MIN_COVERAGE && owner[k] < 0) outside++;
     for (let i = 0; i < m && outside > 0; i++) {
       const [minX, minY, maxX, maxY] = box(i);
-      const i0 = Math.max(0, Math.floor(minX) - 1), i1 = Math.min(cols - 1, Math.ceil(maxX));
-      const j0 = Math.max(0, Math.floor(minY) - 1), j1 = Math.min(rows - 1, Math.ceil(maxY));
+      const i0 = Math.max(0, Math.floor(minX) - 1),
+        i1 = Math.min(cols - 1, Math.ceil(maxX));
+      const j0 = Math.max(0, Math.floor(minY) - 1),
+        j1 = Math.min(rows - 1, Math.ceil(maxY));
       for (let j = j0; j <= j1; j++) {
         for (let ii = i0; ii <= i1; ii++) {
           const k = j * cols + ii;
@@ -123,9 +127,13 @@ export function rasterizeAtlas(tris: WorldTriangles, charts: readonly Chart[], l
         if (coverage[k] <= MIN_COVERAGE) continue;
         const t = chart.triangles[owner[k]];
         // Clamp the weights of a centre a float hair outside its triangle back onto it.
-        let w0 = Math.max(0, weights[3 * k]), w1 = Math.max(0, weights[3 * k + 1]), w2 = Math.max(0, weights[3 * k + 2]);
+        let w0 = Math.max(0, weights[3 * k]),
+          w1 = Math.max(0, weights[3 * k + 1]),
+          w2 = Math.max(0, weights[3 * k + 2]);
         const sum = w0 + w1 + w2;
-        w0 /= sum; w1 /= sum; w2 /= sum;
+        w0 /= sum;
+        w1 /= sum;
+        w2 /= sum;
         const g = 4 * ((y0 + j) * width + x0 + ii);
         for (let a = 0; a < 3; a++) {
           position[g + a] = w0 * P[9 * t + a] + w1 * P[9 * t + 3 + a] + w2 * P[9 * t + 6 + a];

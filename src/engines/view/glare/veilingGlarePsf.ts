@@ -32,8 +32,7 @@ export function annulusShare(aDeg: number, bDeg: number, observer: { age: number
   const ageFactor = 1 + (observer.age / 62.5) ** 4;
   const p = observer.pigmentation;
   const twoPi = 2 * Math.PI;
-  const integral =
-    twoPi * 10 * (1 / aDeg - 1 / bDeg) + twoPi * 5 * ageFactor * Math.log(bDeg / aDeg) + twoPi * 0.1 * p * ageFactor * (bDeg - aDeg) + Math.PI * 0.0025 * p * (bDeg * bDeg - aDeg * aDeg);
+  const integral = twoPi * 10 * (1 / aDeg - 1 / bDeg) + twoPi * 5 * ageFactor * Math.log(bDeg / aDeg) + twoPi * 0.1 * p * ageFactor * (bDeg - aDeg) + Math.PI * 0.0025 * p * (bDeg * bDeg - aDeg * aDeg);
   return integral * RAD2;
 }
 

@@ -26,8 +26,7 @@ export function buildLuminaireModel(input: ModelInput): LuminaireModel {
   const alongX = o.x >= o.z;
   const long = Math.max(o.x, o.z);
   const short = Math.min(o.x, o.z);
-  const bar = (w: number, h: number, y0: number, len: number) =>
-    boxPart(alongX ? [len, h, w] : [w, h, len], 'housing', 'aim', [0, y0 + h / 2, 0]);
+  const bar = (w: number, h: number, y0: number, len: number) => boxPart(alongX ? [len, h, w] : [w, h, len], 'housing', 'aim', [0, y0 + h / 2, 0]);
   switch (input.kind) {
     case 'spot': {
       const head = spotHead(o);

@@ -107,4 +107,3 @@ export function downlightCan(o: { x: number; z: number; shape: 'round' | 'rectan
   const radius = Math.max(0.02, inner + WALL + 0.006);
   return { radius, height: Math.max(0.05, 0.6 * radius) };
 }
-

@@ -2,18 +2,8 @@ import * as THREE from 'three';
 import type { LuminairePart, PartFrame, PartRole } from './luminaireModel';
 
 /** A three.js primitive (centred as three builds it) turned into a part: optionally rotated, then moved. */
-export function partFrom(
-  geometry: THREE.BufferGeometry,
-  role: PartRole,
-  frame: PartFrame,
-  place: { at?: [number, number, number]; rotate?: [number, number, number]; scale?: [number, number, number] } = {},
-  side?: -1 | 1,
-): LuminairePart {
-  const m = new THREE.Matrix4().compose(
-    new THREE.Vector3(...(place.at ?? [0, 0, 0])),
-    new THREE.Quaternion().setFromEuler(new THREE.Euler(...(place.rotate ?? [0, 0, 0]))),
-    new THREE.Vector3(...(place.scale ?? [1, 1, 1])),
-  );
+export function partFrom(geometry: THREE.BufferGeometry, role: PartRole, frame: PartFrame, place: { at?: [number, number, number]; rotate?: [number, number, number]; scale?: [number, number, number] } = {}, side?: -1 | 1): LuminairePart {
+  const m = new THREE.Matrix4().compose(new THREE.Vector3(...(place.at ?? [0, 0, 0])), new THREE.Quaternion().setFromEuler(new THREE.Euler(...(place.rotate ?? [0, 0, 0]))), new THREE.Vector3(...(place.scale ?? [1, 1, 1])));
   geometry.applyMatrix4(m);
   const positions = new Float32Array(geometry.getAttribute('position').array);
   const normals = new Float32Array(geometry.getAttribute('normal').array);

@@ -1,16 +1,7 @@
 import { createSocket, type RemoteInfo, type Socket } from 'node:dgram';
 import { WebSocketServer, type WebSocket } from 'ws';
 import { createFrameQueue, type FrameQueue } from './createFrameQueue';
-import {
-  ARTNET_SOURCE_TIMEOUT_MS,
-  createUniverseStore,
-  SACN_SOURCE_TIMEOUT_MS,
-  STORE_IGNORE_REASONS,
-  type DmxProtocol,
-  type DmxSourceInfo,
-  type StoreIgnoreReason,
-  type UniverseStoreOptions,
-} from './createUniverseStore';
+import { ARTNET_SOURCE_TIMEOUT_MS, createUniverseStore, SACN_SOURCE_TIMEOUT_MS, STORE_IGNORE_REASONS, type DmxProtocol, type DmxSourceInfo, type StoreIgnoreReason, type UniverseStoreOptions } from './createUniverseStore';
 import { ARTNET_IGNORE_REASONS, parseArtDmx, type ArtNetIgnoreReason } from './parseArtDmx';
 import { parseE131, SACN_IGNORE_REASONS, type SacnIgnoreReason } from './parseE131';
 import { sacnMulticastGroup } from './sacnMulticastGroup';
@@ -162,7 +153,9 @@ function groupSources(perUniverse: readonly DmxSourceInfo[]): DmxSourceStatus[] 
 }
 
 function ignoredSummary(ignored: Record<string, number>): string {
-  const parts = Object.entries(ignored).filter(([, n]) => n > 0).map(([r, n]) => `${r} ${n}`);
+  const parts = Object.entries(ignored)
+    .filter(([, n]) => n > 0)
+    .map(([r, n]) => `${r} ${n}`);
   return parts.length ? parts.join(', ') : '0';
 }
 
@@ -313,9 +306,12 @@ export async function createDmxBridge(options: DmxBridgeOptions = {}): Promise<D
 
   // Source loss (E1.31-2018 §6.7.1): checked often enough that a source leaves within a fifth of its timeout.
   const shortestTimeout = Math.min(options.sacnTimeoutMs ?? SACN_SOURCE_TIMEOUT_MS, options.artnetTimeoutMs ?? ARTNET_SOURCE_TIMEOUT_MS);
-  const expireTimer = setInterval(() => {
-    for (const universe of store.expire(now())) broadcast(universe);
-  }, Math.max(10, Math.min(500, shortestTimeout / 5)));
+  const expireTimer = setInterval(
+    () => {
+      for (const universe of store.expire(now())) broadcast(universe);
+    },
+    Math.max(10, Math.min(500, shortestTimeout / 5)),
+  );
 
   let lastLine = '';
   const statusTimer = setInterval(() => {

@@ -108,14 +108,7 @@ export function createUniverseStore(options: UniverseStoreOptions = {}): Univers
     return true;
   }
 
-  function accept(
-    universe: number,
-    key: string,
-    incoming: Omit<SourceState, 'channels' | 'lastSeen'>,
-    data: Uint8Array,
-    terminated: boolean,
-    now: number,
-  ): AcceptResult {
+  function accept(universe: number, key: string, incoming: Omit<SourceState, 'channels' | 'lastSeen'>, data: Uint8Array, terminated: boolean, now: number): AcceptResult {
     let state = table.get(universe);
     if (!state) {
       // A terminating packet for a universe we never saw has nothing to end.
@@ -148,24 +141,10 @@ export function createUniverseStore(options: UniverseStoreOptions = {}): Univers
   return {
     acceptArtDmx(packet, address, now) {
       const ip = address.replace(/:\d+$/, '');
-      return accept(
-        packet.portAddress + 1,
-        `artnet:${ip}`,
-        { protocol: 'artnet', id: ip, address, name: '', priority: ARTNET_PRIORITY, sequence: packet.sequence },
-        packet.data,
-        false,
-        now,
-      );
+      return accept(packet.portAddress + 1, `artnet:${ip}`, { protocol: 'artnet', id: ip, address, name: '', priority: ARTNET_PRIORITY, sequence: packet.sequence }, packet.data, false, now);
     },
     acceptE131(packet, address, now) {
-      return accept(
-        packet.universe,
-        `sacn:${packet.cid}`,
-        { protocol: 'sacn', id: packet.cid, address, name: packet.sourceName, priority: packet.priority, sequence: packet.sequence },
-        packet.data,
-        packet.terminated,
-        now,
-      );
+      return accept(packet.universe, `sacn:${packet.cid}`, { protocol: 'sacn', id: packet.cid, address, name: packet.sourceName, priority: packet.priority, sequence: packet.sequence }, packet.data, packet.terminated, now);
     },
     expire(now) {
       const changed: number[] = [];
@@ -186,7 +165,10 @@ export function createUniverseStore(options: UniverseStoreOptions = {}): Univers
       return table.get(universe)?.levels ?? undefined;
     },
     universes() {
-      return [...table].filter(([, s]) => s.levels !== null).map(([u]) => u).sort((a, b) => a - b);
+      return [...table]
+        .filter(([, s]) => s.levels !== null)
+        .map(([u]) => u)
+        .sort((a, b) => a - b);
     },
     sources(now) {
       const out: DmxSourceInfo[] = [];

@@ -45,14 +45,7 @@ export type ArtNetIgnoreReason =
   /** More bytes than an ArtDmx packet can have (18 + 512). */
   | 'oversized';
 
-export const ARTNET_IGNORE_REASONS: readonly ArtNetIgnoreReason[] = [
-  'too-short',
-  'not-art-net',
-  'not-artdmx',
-  'old-protocol',
-  'bad-length',
-  'oversized',
-];
+export const ARTNET_IGNORE_REASONS: readonly ArtNetIgnoreReason[] = ['too-short', 'not-art-net', 'not-artdmx', 'old-protocol', 'bad-length', 'oversized'];
 
 export type ArtDmxResult = { ok: true; packet: ArtDmxPacket } | { ok: false; reason: ArtNetIgnoreReason };
 

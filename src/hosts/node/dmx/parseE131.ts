@@ -73,18 +73,7 @@ export type SacnIgnoreReason =
   /** Alternate START Code (per-address priority 0xDD, text, ...): only START Code 0 is DMX levels. */
   | 'start-code';
 
-export const SACN_IGNORE_REASONS: readonly SacnIgnoreReason[] = [
-  'too-short',
-  'oversized',
-  'not-acn',
-  'bad-flags-length',
-  'bad-vector',
-  'extended',
-  'bad-dmp',
-  'bad-priority',
-  'bad-universe',
-  'start-code',
-];
+export const SACN_IGNORE_REASONS: readonly SacnIgnoreReason[] = ['too-short', 'oversized', 'not-acn', 'bad-flags-length', 'bad-vector', 'extended', 'bad-dmp', 'bad-priority', 'bad-universe', 'start-code'];
 
 export type E131Result = { ok: true; packet: E131Packet } | { ok: false; reason: SacnIgnoreReason };
 

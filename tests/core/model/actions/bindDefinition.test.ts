@@ -105,5 +105,4 @@ describe('perform runs once', () => {
     action.isEnabled(next);
     expect(perform).toHaveBeenCalledTimes(2);
   });
-
 });

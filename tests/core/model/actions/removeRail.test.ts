@@ -35,7 +35,11 @@ describe('removeRail', () => {
   it('the last rail: the chain ends one connector earlier', () => {
     const s = u();
     const after = run(s, 'removeRail', { railId: only(s).rails[2].id });
-    expect(only(after).rails.map((r) => r.id)).toEqual(only(s).rails.slice(0, 2).map((r) => r.id));
+    expect(only(after).rails.map((r) => r.id)).toEqual(
+      only(s)
+        .rails.slice(0, 2)
+        .map((r) => r.id),
+    );
     expect(only(after).joints).toEqual(only(s).joints.slice(0, 1));
     expectModulesStay(s, after, only(s).rails[2].id);
   });
@@ -46,7 +50,11 @@ describe('removeRail', () => {
     expect(sys.x).toBeCloseTo(2.55, 9);
     expect(sys.z).toBeCloseTo(3.95, 9);
     expect(sys.rotation).toBe(90);
-    expect(sys.rails.map((r) => r.id)).toEqual(only(s).rails.slice(1).map((r) => r.id));
+    expect(sys.rails.map((r) => r.id)).toEqual(
+      only(s)
+        .rails.slice(1)
+        .map((r) => r.id),
+    );
     expect(sys.joints).toEqual([{ connector: 'corner90', turn: 90 }]);
     expect(sys.feeds).toEqual(only(s).feeds); // the start feed slides to the new start
     expectModulesStay(s, after, only(s).rails[0].id);
@@ -77,7 +85,7 @@ describe('removeRail', () => {
       [expect.closeTo(1.375, 9), expect.closeTo(1.9, 9)],
     ]);
   });
-  it('feeds at the connectors of the removed rail become the parts\' ends; nothing new is added then', () => {
+  it("feeds at the connectors of the removed rail become the parts' ends; nothing new is added then", () => {
     let s = u();
     const sys = only(s);
     s = run(s, 'setFeedDriver', { feedId: sys.feeds[0].id, driver: 'hlg-320h-48' });
@@ -89,7 +97,7 @@ describe('removeRail', () => {
     expect(after.systems[1].feeds).toEqual([{ ...f2, at: 'start' }]);
     expect(after.nextId).toBe(s.nextId + 1);
   });
-  it('a snake split in the middle keeps each side\'s joints', () => {
+  it("a snake split in the middle keeps each side's joints", () => {
     const s = withPreset('snake', 1, 5, 0, { width: 10, depth: 8, height: 3 });
     const before = only(s);
     const after = run(s, 'removeRail', { railId: before.rails[2].id });

@@ -8,7 +8,12 @@ import { catalog } from '../helpers';
 describe('default catalog', () => {
   it('has rails, straight, 90° and flexible connectors, ≥ 4 module types and ≥ 5 presets', () => {
     expect(catalog.rail).toMatchObject({ minLength: 0.5, maxLength: 3, step: 0.1 });
-    expect(catalog.connectors.filter((c) => !c.flex && (c.ports ?? 2) === 2).map((c) => c.angle).sort()).toEqual([0, 90]);
+    expect(
+      catalog.connectors
+        .filter((c) => !c.flex && (c.ports ?? 2) === 2)
+        .map((c) => c.angle)
+        .sort(),
+    ).toEqual([0, 90]);
     expect(catalog.connectors.find((c) => c.flex)?.flex).toEqual({ maxAngle: 90, step: 5 });
     expect(catalog.moduleTypes.length).toBeGreaterThanOrEqual(4);
     expect(catalog.presets.length).toBeGreaterThanOrEqual(5);

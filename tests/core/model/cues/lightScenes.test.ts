@@ -69,7 +69,10 @@ describe('scene actions', () => {
     let s = run(evening, 'setSceneFade', { sceneId: ev.id, fade: 30 });
     s = run(s, 'renameScene', { sceneId: ev.id, name: 'Dinner' });
     s = run(s, 'reorderScene', { sceneId: ev.id, index: 0 });
-    expect(s.lightScenes!.map((x) => [x.name, x.fade])).toEqual([['Dinner', 30], ['Full', 3]]);
+    expect(s.lightScenes!.map((x) => [x.name, x.fade])).toEqual([
+      ['Dinner', 30],
+      ['Full', 3],
+    ]);
     s = run(s, 'setModuleDimming', { moduleId: a.id, dimming: 0.5 });
     s = run(s, 'updateScene', { sceneId: full.id });
     expect(s.lightScenes![1].looks[a.id].level).toBe(0.5);

@@ -56,7 +56,9 @@ describe('levels shown during a fade', () => {
     expect(mid.get(a.id)).toBeCloseTo(0.75 * a.dimming + 0.25 * 0.2, 12);
     expect(mid.get(b.id)).toBeCloseTo(0.75 * b.dimming, 12);
     const lumens = (m: typeof a) => catalog.moduleTypes.find((t) => t.id === m.type)!.beams.find((x) => x.id === m.beam)!.lumens;
-    const others = allModules(from).filter((m) => m.id !== a.id && m.id !== b.id).reduce((s, m) => s + m.dimming * lumens(m), 0);
+    const others = allModules(from)
+      .filter((m) => m.id !== a.id && m.id !== b.id)
+      .reduce((s, m) => s + m.dimming * lumens(m), 0);
     expect(luminousOutput(to, catalog)).toBeCloseTo(0.2 * lumens(a) + others, 9);
   });
 });
@@ -64,14 +66,30 @@ describe('levels shown during a fade', () => {
 describe('a fade that starts in the middle of another (a console cue fades from the current state)', () => {
   // Three spots of the same beam (lumens L each). Old fade A → B of equal output (L): e = t, so at
   // t = 0.5 the mix is m1 0.5, m2 0.5, m3 0. The new fade goes to C = m2 1, m3 1 (output 2 L).
-  const a = new Map([['m1', 1], ['m2', 0], ['m3', 0]]);
-  const b = new Map([['m1', 0], ['m2', 1], ['m3', 0]]);
-  const c = new Map([['m1', 0], ['m2', 1], ['m3', 1]]);
+  const a = new Map([
+    ['m1', 1],
+    ['m2', 0],
+    ['m3', 0],
+  ]);
+  const b = new Map([
+    ['m1', 0],
+    ['m2', 1],
+    ['m3', 0],
+  ]);
+  const c = new Map([
+    ['m1', 0],
+    ['m2', 1],
+    ['m3', 1],
+  ]);
 
   it('the mix at the instant, then the new fade at t = 0, 0.5, 1 against hand-computed levels', () => {
     expect(fadeFraction(0.5, 1, 1)).toBe(0.5); // equal outputs cross linearly
     const shown = mixLevels(a, b, 0.5);
-    expect([...shown]).toEqual([['m1', 0.5], ['m2', 0.5], ['m3', 0]]);
+    expect([...shown]).toEqual([
+      ['m1', 0.5],
+      ['m2', 0.5],
+      ['m3', 0],
+    ]);
     // Outputs relative to L: from 0.5 + 0.5 = 1, to 2; Yn = 2. L*(1/2) = 116·0.5^(1/3) − 16 = 76.069261,
     // L*(1) = 100; halfway L* = 88.034631 → f = 104.034631 / 116 = 0.896850, Y/Yn = f³ = 0.721373,
     // e(0.5) = (2·0.721373 − 1) / (2 − 1) = 0.442746.
@@ -107,6 +125,9 @@ describe('a fade that starts in the middle of another (a console cue fades from 
     expect(mixed.color[1]).toBeCloseTo(0.8, 12);
     expect(mixed.color[2]).toBeCloseTo(0.55 / 0.75, 12);
     // Both dark: the target colour (it does not show).
-    expect(mixLights(new Map([['m1', { dimming: 0, color: [1, 0, 0] as [number, number, number] }]]), new Map([['m1', { dimming: 0, color: [0, 0, 1] as [number, number, number] }]]), 0.3).get('m1')).toEqual({ dimming: 0, color: [0, 0, 1] });
+    expect(mixLights(new Map([['m1', { dimming: 0, color: [1, 0, 0] as [number, number, number] }]]), new Map([['m1', { dimming: 0, color: [0, 0, 1] as [number, number, number] }]]), 0.3).get('m1')).toEqual({
+      dimming: 0,
+      color: [0, 0, 1],
+    });
   });
 });

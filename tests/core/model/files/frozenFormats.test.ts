@@ -17,8 +17,7 @@ import { loadColourFilterSpectra } from '../../../../src/core/colour/colourFilte
 const DIR = join(__dirname, '../../../fixtures/formats');
 const text = (name: string) => readFileSync(join(DIR, name), 'utf8');
 const files = readdirSync(DIR);
-const versionsOf = (prefix: string, suffix: string) =>
-  files.flatMap((f) => (f.startsWith(prefix) && f.endsWith(suffix) ? [Number(f.slice(prefix.length, -suffix.length))] : [])).sort((a, b) => a - b);
+const versionsOf = (prefix: string, suffix: string) => files.flatMap((f) => (f.startsWith(prefix) && f.endsWith(suffix) ? [Number(f.slice(prefix.length, -suffix.length))] : [])).sort((a, b) => a - b);
 const oneToCurrent = (n: number) => Array.from({ length: n }, (_, i) => i + 1);
 
 beforeAll(loadColourFilterSpectra);

@@ -52,7 +52,9 @@ describe('configuration files', () => {
   });
 
   it('says a newer version was made by a newer luxbox', () => {
-    expect(refusal(JSON.stringify({ ...file(), version: SCENE_FILE_VERSION + 1, configuration: { hologram: true } }))).toBe(`a.json was made by a newer luxbox (version ${SCENE_FILE_VERSION + 1}; this one reads up to ${SCENE_FILE_VERSION})`);
+    expect(refusal(JSON.stringify({ ...file(), version: SCENE_FILE_VERSION + 1, configuration: { hologram: true } }))).toBe(
+      `a.json was made by a newer luxbox (version ${SCENE_FILE_VERSION + 1}; this one reads up to ${SCENE_FILE_VERSION})`,
+    );
   });
 
   it('keeps syntax errors to one short line (no excerpt of the text)', () => {

@@ -16,10 +16,11 @@ function grid(n: number): TriangleMesh {
   const positions: number[] = [];
   const indices: number[] = [];
   for (let j = 0; j <= n; j++) for (let i = 0; i <= n; i++) positions.push(i / n, 0, j / n);
-  for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) {
-    const a = j * (n + 1) + i;
-    indices.push(a, a + n + 1, a + n + 2, a, a + n + 2, a + 1);
-  }
+  for (let j = 0; j < n; j++)
+    for (let i = 0; i < n; i++) {
+      const a = j * (n + 1) + i;
+      indices.push(a, a + n + 1, a + n + 2, a, a + n + 2, a + 1);
+    }
   return { positions: new Float32Array(positions), indices: new Uint32Array(indices), materialOfTriangle: new Uint16Array(indices.length / 3), materials: [{ name: 'floor', reflectance: [0.5, 0.5, 0.5] }] };
 }
 

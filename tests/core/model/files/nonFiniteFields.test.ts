@@ -79,7 +79,11 @@ async function sceneDownstream(scene: LightingScene): Promise<string[]> {
   const out = nonFinitePaths(scene).map((p) => `non-finite ${p}`);
   let bake;
   try {
-    bake = await resolveBakeScene(scene, () => photometry, () => cube);
+    bake = await resolveBakeScene(
+      scene,
+      () => photometry,
+      () => cube,
+    );
   } catch (e) {
     // The room check of placed meshes refuses, naming the object.
     return [...out, ...(/^objects\[\d+\]: /.test((e as Error).message) ? [] : [`refused without naming the object: ${(e as Error).message}`])];
@@ -100,7 +104,11 @@ describe('angles and bounds at the ends of the double range', () => {
 
   it('actions refuse an object placed at the ends of the double range (never placed with non-finite vertices)', () => {
     const state = livingRoom(catalog);
-    for (const placement of [{ on: 'floor', x: 1e308, z: 1 }, { on: 'floor', x: 1, z: -1e308 }, { on: 'wall', wall: 'north', u: 1e308, y: 1 }]) {
+    for (const placement of [
+      { on: 'floor', x: 1e308, z: 1 },
+      { on: 'floor', x: 1, z: -1e308 },
+      { on: 'wall', wall: 'north', u: 1e308, y: 1 },
+    ]) {
       const outcome = attemptAction(state, 'addObject', { source: { kind: 'library', item: 'dining-table' }, placement }, catalog);
       expect(outcome.ok).toBe(false);
     }

@@ -62,7 +62,7 @@ describe('a module type that does not fit: remedy or reason', () => {
 
   it('a packed 3 m rail (the longest there is) offers nothing: the model’s reason stays', () => {
     let config = withPreset('single', 1, 1, 0, { width: 12, depth: 8, height: 3 });
-        const rail = config.systems[0].rails[0];
+    const rail = config.systems[0].rails[0];
     config = run(config, 'setRailLength', { railId: rail.id, length: catalog.rail.maxLength });
     config = run(config, 'setFeedDriver', { feedId: config.systems[0].feeds[0].id, driver: 'hlg-320h-48' });
     config = pack(config, rail.id);

@@ -34,7 +34,11 @@ describe('setReflectance', () => {
     const s = createConfiguration();
     expect(enabled(s, 'setReflectance', { surface: 'ceiling', value: MAX_REFLECTANCE })).toBe(true);
     expect(enabled(s, 'setReflectance', { surface: 'floor', value: 0 })).toBe(true);
-    for (const [surface, value] of [['ceiling', 0.96], ['floor', -0.01], ['walls', [0.5, 1.2, 0.5]]] as const) {
+    for (const [surface, value] of [
+      ['ceiling', 0.96],
+      ['floor', -0.01],
+      ['walls', [0.5, 1.2, 0.5]],
+    ] as const) {
       const e = enabled(s, 'setReflectance', { surface, value });
       expect(e).not.toBe(true);
       if (e !== true) expect(e.reason).toMatch(new RegExp(`^${surface}: reflectance .* is outside \\[0, 0\\.95\\]`));

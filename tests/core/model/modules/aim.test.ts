@@ -154,7 +154,12 @@ describe('aimed orientation in the lighting scene', () => {
 
   it('the peak-intensity direction hits the aimed point within 0.5°, for rails at several headings', () => {
     const peak = localPeak();
-    const targets: Vec3[] = [[6, 0, 5], [0.5, 1.2, 0.4], [7.9, 1.5, 2.5], [2.2, 0, 3.05]];
+    const targets: Vec3[] = [
+      [6, 0, 5],
+      [0.5, 1.2, 0.4],
+      [7.9, 1.5, 2.5],
+      [2.2, 0, 3.05],
+    ];
     for (const heading of [0, 45, 90, 300]) {
       for (const target of targets) {
         const s = spots(heading);
@@ -172,7 +177,11 @@ describe('aimed orientation in the lighting scene', () => {
   });
 
   it('untilted, rotation turns C0 about the vertical; tilted, C0 stays across the tilt plane (the head turns, then tilts)', () => {
-    for (const [heading, rotation] of [[0, 0], [30, 100], [200, 355]] as const) {
+    for (const [heading, rotation] of [
+      [0, 0],
+      [30, 100],
+      [200, 355],
+    ] as const) {
       const flat = aimedOrientation(heading, 0, { rotation, tilt: 0 });
       const c0 = apply(luminaireToWorld(flat.yaw, flat.pitch, flat.roll), [1, 0, 0]);
       const a = (heading + rotation) * DEG;

@@ -14,7 +14,13 @@ describe('beamForType', () => {
   it('takes the nearest beam angle otherwise (30° → 48° flood, 12° → 48°), the narrower on a tie', () => {
     expect(beamForType(type('spot'), 'medium', type('flood'))).toBe('flood48');
     expect(beamForType(type('flood'), 'flood55', type('spot'))).toBe('medium');
-    const twin = { ...type('flood'), beams: [{ ...type('flood').beams[0], id: 'a', beamAngle: 20 }, { ...type('flood').beams[0], id: 'b', beamAngle: 40 }] };
+    const twin = {
+      ...type('flood'),
+      beams: [
+        { ...type('flood').beams[0], id: 'a', beamAngle: 20 },
+        { ...type('flood').beams[0], id: 'b', beamAngle: 40 },
+      ],
+    };
     expect(beamForType(type('spot'), 'medium', twin)).toBe('a');
   });
   it('falls back to the default where angles cannot be compared (diffuser, washer)', () => {

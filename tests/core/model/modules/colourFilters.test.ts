@@ -33,9 +33,13 @@ describe('colour filters on modules', () => {
 
   it('refuses a type without a holder and an unknown filter, with the reason; validate() names the field', () => {
     const s = withPreset('corner-l', 1, 3);
-    const flood = only(s).rails.flatMap((r) => r.modules).find((m) => m.type === 'flood')!;
+    const flood = only(s)
+      .rails.flatMap((r) => r.modules)
+      .find((m) => m.type === 'flood')!;
     expect(enabled(s, 'setModuleFilter', { moduleId: flood.id, filter: 'lee-201' })).toMatchObject({ ok: false, reason: 'Wide flood has no filter holder: it takes no colour filter' });
-    const spot = only(s).rails.flatMap((r) => r.modules).find((m) => m.type === 'spot')!;
+    const spot = only(s)
+      .rails.flatMap((r) => r.modules)
+      .find((m) => m.type === 'spot')!;
     expect(enabled(s, 'setModuleFilter', { moduleId: spot.id, filter: 'lee-999' })).toMatchObject({ ok: false, reason: "unknown colour filter 'lee-999' (not among the catalog's filters)" });
     // A state built by hand (a file) is judged the same way.
     const bad = { ...s, systems: [{ ...only(s), rails: only(s).rails.map((r) => ({ ...r, modules: r.modules.map((m) => (m.id === flood.id ? { ...m, filter: 'lee-201' } : m)) })) }] };
@@ -92,11 +96,15 @@ describe('colour filters on modules', () => {
 
   it('a filter travels in scene files and share links; a file naming a filter a flood cannot take is refused', () => {
     const s = withPreset('corner-l', 1, 3);
-    const spot = only(s).rails.flatMap((r) => r.modules).find((m) => m.type === 'spot')!;
+    const spot = only(s)
+      .rails.flatMap((r) => r.modules)
+      .find((m) => m.type === 'spot')!;
     const f = run(s, 'setModuleFilter', { moduleId: spot.id, filter: 'lee-205' });
     expect(deserializeConfiguration(serializeConfiguration(f, catalog), catalog)).toEqual(f);
     expect(decodeShareString(encodeShareString(f, catalog), catalog)).toEqual(f);
-    const flood = only(s).rails.flatMap((r) => r.modules).find((m) => m.type === 'flood')!;
+    const flood = only(s)
+      .rails.flatMap((r) => r.modules)
+      .find((m) => m.type === 'flood')!;
     const text = serializeConfiguration(f, catalog).replace(`"id": "${flood.id}",`, `"id": "${flood.id}",\n"filter": "lee-205",`);
     expect(text).toContain('"filter": "lee-205",');
     expect(() => deserializeConfiguration(text, catalog)).toThrow(/filter.*Wide flood has no filter holder/);

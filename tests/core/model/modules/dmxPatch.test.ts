@@ -143,7 +143,7 @@ describe('DMX patch: scene file version 2', () => {
   it('is saved with the configuration, and round-trips through files and share links', () => {
     const c = patched();
     const file = JSON.parse(serializeConfiguration(c, catalog));
-        expect(file.version).toBe(SCENE_FILE_VERSION);
+    expect(file.version).toBe(SCENE_FILE_VERSION);
     expect(file.configuration.systems[0].rails[0].modules[0].dmx).toEqual({ universe: 7, address: 100, resolution: 16, cct: true });
     expect(deserializeConfiguration(serializeConfiguration(c, catalog), catalog)).toEqual(c);
     expect(decodeShareString(encodeShareString(c, catalog), catalog)).toEqual(c);

@@ -18,7 +18,12 @@ describe('object outline', () => {
     const s = run(room(), 'addObject', { source: { kind: 'library', item: 'dining-table' }, placement: { on: 'floor', x: 3, z: 2 } });
     const outline = objectOutline(s, 'o1');
     expect(outline.length).toBe(1);
-    expect(sorted(outline[0])).toEqual([[2.1, 1.55], [2.1, 2.45], [3.9, 1.55], [3.9, 2.45]]);
+    expect(sorted(outline[0])).toEqual([
+      [2.1, 1.55],
+      [2.1, 2.45],
+      [3.9, 1.55],
+      [3.9, 2.45],
+    ]);
     expect(area(outline[0])).toBeCloseTo(1.8 * 0.9, 6);
   });
 
@@ -26,7 +31,14 @@ describe('object outline', () => {
     const l = composeParts([boxPart('a', [0, 0, 0], [2, 0.9, 0.6]), boxPart('a', [0, 0, 0.6], [0.6, 0.9, 1.6])], grey);
     const [poly, ...rest] = localOutline(l, 1);
     expect(rest).toEqual([]);
-    expect(sorted(poly)).toEqual([[0, 0], [0, 1.6], [0.6, 0.6], [0.6, 1.6], [2, 0], [2, 0.6]]);
+    expect(sorted(poly)).toEqual([
+      [0, 0],
+      [0, 1.6],
+      [0.6, 0.6],
+      [0.6, 1.6],
+      [2, 0],
+      [2, 0.6],
+    ]);
     expect(area(poly)).toBeCloseTo(2 * 0.6 + 0.6 * 1, 6);
     // scaled: the same L, twice the size (cached separately per scale)
     expect(area(localOutline(l, 2)[0])).toBeCloseTo(4 * 1.8, 6);
@@ -34,11 +46,21 @@ describe('object outline', () => {
 
   it('rotation follows the yaw: turned by 90°, local (x, z) lands at (z, −x) from the origin', () => {
     const s = run(room(), 'addObject', { source: { kind: 'library', item: 'dining-table' }, placement: { on: 'floor', x: 3, z: 2.5 }, yaw: 90 });
-    expect(sorted(objectOutline(s, 'o1')[0])).toEqual([[2.55, 1.6], [2.55, 3.4], [3.45, 1.6], [3.45, 3.4]]);
+    expect(sorted(objectOutline(s, 'o1')[0])).toEqual([
+      [2.55, 1.6],
+      [2.55, 3.4],
+      [3.45, 1.6],
+      [3.45, 3.4],
+    ]);
     // at 30°, each corner (±0.9, ±0.45) turns to (c·x + s·z, −s·x + c·z)
     const t = run(s, 'rotateObject', { objectId: 'o1', yaw: 30 });
     const [c, sn] = [Math.cos(Math.PI / 6), Math.sin(Math.PI / 6)];
-    const expected = [[-0.9, -0.45], [-0.9, 0.45], [0.9, -0.45], [0.9, 0.45]].map(([x, z]) => [3 + c * x + sn * z, 2.5 - sn * x + c * z] as const);
+    const expected = [
+      [-0.9, -0.45],
+      [-0.9, 0.45],
+      [0.9, -0.45],
+      [0.9, 0.45],
+    ].map(([x, z]) => [3 + c * x + sn * z, 2.5 - sn * x + c * z] as const);
     expect(sorted(objectOutline(t, 'o1')[0])).toEqual(sorted(expected));
   });
 
@@ -50,7 +72,9 @@ describe('object outline', () => {
     expect(Math.abs(area(poly) - 0.5 * 64 * 0.25 * Math.sin((2 * Math.PI) / 64))).toBeLessThan(0.02);
     // four bars around a 1 m square hole: an outer contour (counterclockwise) and a hole (clockwise)
     const frame = composeParts([boxPart('f', [0, 0, 0], [2, 0.1, 0.5]), boxPart('f', [0, 0, 1.5], [2, 0.1, 2]), boxPart('f', [0, 0, 0.5], [0.5, 0.1, 1.5]), boxPart('f', [1.5, 0, 0.5], [2, 0.1, 1.5])], grey);
-    const areas = localOutline(frame, 1).map(area).sort((a, b) => a - b);
+    const areas = localOutline(frame, 1)
+      .map(area)
+      .sort((a, b) => a - b);
     expect(areas[0]).toBeCloseTo(-1, 6);
     expect(areas[1]).toBeCloseTo(4, 6);
   });

@@ -88,7 +88,10 @@ describe('object actions', () => {
     expect(refusal(s, 'refinishObject', { objectId: 'o1', material: 'top', finish: [0.5, 0.97, 0.5] })).toMatch(/outside \[0, 0.95\]/);
     const t = run(run(s, 'refinishObject', { objectId: 'o1', material: 'top', finish: 'white-lacquer' }), 'refinishObject', { objectId: 'o1', material: 'legs', finish: [0.1, 0.2, 0.3] });
     const mesh = objectMesh(t, 'o1');
-    expect(mesh.materials).toEqual([{ name: 'top', reflectance: [0.8, 0.8, 0.8] }, { name: 'legs', reflectance: [0.1, 0.2, 0.3] }]);
+    expect(mesh.materials).toEqual([
+      { name: 'top', reflectance: [0.8, 0.8, 0.8] },
+      { name: 'legs', reflectance: [0.1, 0.2, 0.3] },
+    ]);
     expect(mesh.positions).toBe(sourceMesh(t, t.objects[0].source)!.positions); // shared, not copied
     expect(objectMesh(run(t, 'refinishObject', { objectId: 'o1', material: 'top', finish: null }), 'o1').materials[0].reflectance).toEqual([0.493, 0.327, 0.158]);
   });
@@ -138,7 +141,7 @@ describe('object actions', () => {
   });
 
   it('refuses malformed imported meshes and meshes that reach below their origin', () => {
-    const bad = { ...block(), indices: new Uint32Array([0, 1, 99]) , materialOfTriangle: new Uint16Array(1) };
+    const bad = { ...block(), indices: new Uint32Array([0, 1, 99]), materialOfTriangle: new Uint16Array(1) };
     expect(refusal(room(), 'addObject', { source: { kind: 'import', name: 'bad.obj', mesh: bad, units: 'm' } })).toMatch(/imported model 'bad.obj': indices\[2\] = 99 is past the last vertex \(7\)/);
     const sunk = composeParts([boxPart('body', [-0.5, -0.1, -0.5], [0.5, 0.5, 0.5])], grey);
     expect(refusal(room(), 'addObject', { source: { kind: 'import', name: 'sunk.obj', mesh: sunk, units: 'm' } })).toMatch(/does not fit between floor and ceiling/);

@@ -32,7 +32,10 @@ describe('bill of materials', () => {
     s = run(s, 'setModuleCct', { moduleId: m, cct: 2700 });
     const bom = billOfMaterials(s, catalog);
     for (const l of bom.lines) expect(l.total).toBeCloseTo(l.count * l.unitPrice, 10);
-    expect(bom.total).toBeCloseTo(bom.lines.reduce((a, l) => a + l.total, 0), 10);
+    expect(bom.total).toBeCloseTo(
+      bom.lines.reduce((a, l) => a + l.total, 0),
+      10,
+    );
     expect(bom.lines.some((l) => l.article === 'LX-SPOT-N12-2700' && l.count === 1)).toBe(true);
     expect(railUnitPrice(1.3, catalog)).toBe(118);
   });

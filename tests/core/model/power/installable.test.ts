@@ -53,18 +53,33 @@ describe('suspension points (derived, suspensionPoints.ts)', () => {
   it('one rail of 1, 2.5 and 3 m: two points, inset min(0.5, L/4) from the ends', () => {
     // 1 m: inset 0.25 → 0.25, 0.75 (gap 0.5). 2.5 m: inset 0.5 → 0.5, 2.0 (gap 1.5).
     // 3 m: inset 0.5 → 0.5, 2.5: the gap is exactly 2.0 m, so no third point.
-    near(suspensionCoordinates(only(railOf(1)), catalog).map((p) => p.s), [0.25, 0.75]);
-    near(suspensionCoordinates(only(railOf(2.5)), catalog).map((p) => p.s), [0.5, 2.0]);
-    near(suspensionCoordinates(only(railOf(3)), catalog).map((p) => p.s), [0.5, 2.5]);
+    near(
+      suspensionCoordinates(only(railOf(1)), catalog).map((p) => p.s),
+      [0.25, 0.75],
+    );
+    near(
+      suspensionCoordinates(only(railOf(2.5)), catalog).map((p) => p.s),
+      [0.5, 2.0],
+    );
+    near(
+      suspensionCoordinates(only(railOf(3)), catalog).map((p) => p.s),
+      [0.5, 2.5],
+    );
     // plan: the rail starts at (0.5, 1) heading +x
-    near(suspensionPoints(only(railOf(2.5)), catalog).flatMap((p) => [...p.plan]), [1.0, 1, 2.5, 1]);
+    near(
+      suspensionPoints(only(railOf(2.5)), catalog).flatMap((p) => [...p.plan]),
+      [1.0, 1, 2.5, 1],
+    );
   });
   it('two 3 m rails joined straight: a point at the connector and one mid-span each side', () => {
     const s = withPreset('long-line', 1, 1); // 3.0 + 0.02 + 3.0 m
     // ends: 0.5 and 6.02 − 0.5 = 5.52; connector point 3.0 + 0.01 = 3.01;
     // 0.5 → 3.01 is 2.51 m > 2: one interior at 0.5 + 1.255 = 1.755; 3.01 → 5.52 likewise at 4.265
     const pts = suspensionCoordinates(only(s), catalog);
-    near(pts.map((p) => p.s), [0.5, 1.755, 3.01, 4.265, 5.52]);
+    near(
+      pts.map((p) => p.s),
+      [0.5, 1.755, 3.01, 4.265, 5.52],
+    );
     expect(pts.map((p) => p.joint)).toEqual([null, null, 0, null, null]);
     expect(chainCoordinates(only(s), catalog).length).toBeCloseTo(6.02, 12);
   });
@@ -72,21 +87,33 @@ describe('suspension points (derived, suspensionPoints.ts)', () => {
     const s = withPreset('corner-l', 1, 3); // 2.0 m heading +x, corner (arms 0.05), 1.5 m heading −z
     // s: 0.5 (inset min(0.5, 2/4)); corner 2.0 + 0.05 = 2.05; end 2.1 + 1.5 − min(0.5, 1.5/4) = 3.225
     const pts = suspensionPoints(only(s), catalog);
-    near(pts.map((p) => p.s), [0.5, 2.05, 3.225]);
+    near(
+      pts.map((p) => p.s),
+      [0.5, 2.05, 3.225],
+    );
     // plan: (1.5, 3); the corner point (3.05, 3); second leg starts at (3.05, 2.95), 1.125 m along −z → (3.05, 1.825)
-    near(pts.flatMap((p) => [...p.plan]), [1.5, 3, 3.05, 3, 3.05, 1.825]);
+    near(
+      pts.flatMap((p) => [...p.plan]),
+      [1.5, 3, 3.05, 3, 3.05, 1.825],
+    );
   });
   it('the snake: five rails, four corners, interior points where a span exceeds 2 m', () => {
     const s = run(createConfiguration({ width: 12, depth: 10, height: 3 }), 'placePreset', { presetId: 'snake' });
     // rails 2.5, 1, 2.5, 1, 2.5 with corners (span 0.1): corner points 2.55, 3.65, 6.25, 7.35; length 9.9
     // spans: 0.5 → 2.55 (2.05: one interior, 1.525), 2.55 → 3.65, 3.65 → 6.25 (2.6: 4.95), 6.25 → 7.35, 7.35 → 9.4 (2.05: 8.375)
-    near(suspensionCoordinates(only(s), catalog).map((p) => p.s), [0.5, 1.525, 2.55, 3.65, 4.95, 6.25, 7.35, 8.375, 9.4]);
+    near(
+      suspensionCoordinates(only(s), catalog).map((p) => p.s),
+      [0.5, 1.525, 2.55, 3.65, 4.95, 6.25, 7.35, 8.375, 9.4],
+    );
   });
   it('surface mounting: clips every 1 m at most, 0.25 m from free ends', () => {
     let s = railOf(3);
     s = run(s, 'setMounting', { systemId: only(s).id, mounting: 'surface' });
     // inset min(0.25, 0.75) = 0.25; 0.25 → 2.75 is 2.5 m: ⌈2.5⌉ − 1 = 2 interior → 1.0833…, 1.9166…
-    near(suspensionCoordinates(only(s), catalog).map((p) => p.s), [0.25, 0.25 + 2.5 / 3, 0.25 + 5 / 3, 2.75]);
+    near(
+      suspensionCoordinates(only(s), catalog).map((p) => p.s),
+      [0.25, 0.25 + 2.5 / 3, 0.25 + 5 / 3, 2.75],
+    );
   });
 });
 
@@ -107,7 +134,10 @@ describe('power feeds: load per feed, overload refused with the reason', () => {
     // nearest feed along the 9.9 m chain (midway 4.95 m): rail 1 (43 + 9.39 + 43), the first 1 m rail's flood (50),
     // the middle rail's first spot (43) and its linear, centred exactly at 4.95 m (a tie goes to the start):
     // 197.78 W; the rest 188.39 W; both above 153.6 W, so 240 W drivers
-    expect(only(s).feeds.map((f) => [f.at, f.driver])).toEqual([['start', 'hlg-240h-48'], ['end', 'hlg-240h-48']]);
+    expect(only(s).feeds.map((f) => [f.at, f.driver])).toEqual([
+      ['start', 'hlg-240h-48'],
+      ['end', 'hlg-240h-48'],
+    ]);
     const loads = feedLoads(only(s), catalog).map((l) => l.load);
     expect(loads).toEqual([197.78, 188.39]);
     expect(loads[0] + loads[1]).toBeCloseTo(386.17, 9);
@@ -232,7 +262,10 @@ describe('bill of materials and installation needs', () => {
     const needs = installationNeeds(s, catalog);
     expect(needs.systems.map((x) => x.feeds.map((f) => [f.label, f.load, f.capacity, f.driver.article]))).toEqual([
       [['Feed 1', 129, 240, 'MW-HLG-240H-48']],
-      [['Feed 1', 197.78, 240, 'MW-HLG-240H-48'], ['Feed 2', 188.39, 240, 'MW-HLG-240H-48']],
+      [
+        ['Feed 1', 197.78, 240, 'MW-HLG-240H-48'],
+        ['Feed 2', 188.39, 240, 'MW-HLG-240H-48'],
+      ],
     ]);
     // single 1.5 m: 0.375, 1.125 → 2 fixings; snake: 9 (above)
     expect(needs).toMatchObject({ feeds: 3, ceilingFixings: 11, totalLoad: 515.17 });
@@ -258,7 +291,10 @@ describe('scene files from before feeds (version 3 and older) still load', () =>
     const n = file.configuration.nextId;
     expect(read.systems.map((x) => x.feeds)).toEqual([
       [{ id: `f${n}`, at: 'start', driver: 'hlg-240h-48' }],
-      [{ id: `f${n + 1}`, at: 'start', driver: 'hlg-240h-48' }, { id: `f${n + 2}`, at: 'end', driver: 'hlg-240h-48' }],
+      [
+        { id: `f${n + 1}`, at: 'start', driver: 'hlg-240h-48' },
+        { id: `f${n + 2}`, at: 'end', driver: 'hlg-240h-48' },
+      ],
     ]);
     expect(read.systems.map((x) => x.mounting)).toEqual(['suspended', 'suspended']);
     // and as a share link of version 3
@@ -313,7 +349,7 @@ describe('catalog rules for feeds, drivers and mounting name the field', () => {
       ['hlg-320h-48', 321.6],
     ]);
     // rated power = 48 V × rated current (datasheets): 1.25, 2.1, 3.2, 5, 6.7 A
-    expect(catalog.drivers.map((d) => Math.round(d.capacity / 48 * 1000) / 1000)).toEqual([1.25, 2.1, 3.2, 5, 6.7]);
+    expect(catalog.drivers.map((d) => Math.round((d.capacity / 48) * 1000) / 1000)).toEqual([1.25, 2.1, 3.2, 5, 6.7]);
     for (const d of catalog.drivers) expect(d.source).toMatch(/Mean Well .* datasheet/);
   });
 });

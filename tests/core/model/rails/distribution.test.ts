@@ -36,8 +36,14 @@ describe('layoutModules', () => {
   });
   it('exactly full rails fit (float noise tolerated)', () => {
     const l = Array(10).fill(0.1);
-    close(layoutModules(l, 1, 'inside-centred'), l.map((_, i) => i / 10));
-    close(layoutModules(l, 1, 'outside-centred'), l.map((_, i) => i / 10));
+    close(
+      layoutModules(l, 1, 'inside-centred'),
+      l.map((_, i) => i / 10),
+    );
+    close(
+      layoutModules(l, 1, 'outside-centred'),
+      l.map((_, i) => i / 10),
+    );
     expect(layoutModules([...l, 0.1], 1, 'start')).toBeNull();
   });
 });

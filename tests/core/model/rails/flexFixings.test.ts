@@ -108,7 +108,12 @@ describe('moving fixing points', () => {
     expect(points(c)).toEqual([0.25, 1.06, 1.87]);
     const moved = run(c, 'moveFixingPoint', { systemId: 's1', index: 0, s: 0.403 });
     // Snapped to the centimetre; the others keep their derived values exactly.
-    expect(moved.systems[0].fixings).toEqual([0.4, ...suspensionCoordinates(c.systems[0], catalog).slice(1).map((p) => p.s)]);
+    expect(moved.systems[0].fixings).toEqual([
+      0.4,
+      ...suspensionCoordinates(c.systems[0], catalog)
+        .slice(1)
+        .map((p) => p.s),
+    ]);
     expect(points(moved)).toEqual([0.4, 1.06, 1.87]);
     expect(suspensionPoints(moved.systems[0], catalog)[0].plan[0]).toBeCloseTo(1.4, 12);
     expect(billOfMaterials(moved, catalog).lines.find((l) => l.kind === 'suspension')?.count).toBe(3);

@@ -35,7 +35,12 @@ function twoRails(): Configuration {
 }
 
 const rail0 = (c: Configuration) => c.systems[0].rails[0];
-const offsets = (c: Configuration, cat: Catalog = catalog) => Object.fromEntries(modulePlacements(c.systems[0], cat).filter((p) => p.railId === 'r2').map((p) => [p.moduleId, p.offset]));
+const offsets = (c: Configuration, cat: Catalog = catalog) =>
+  Object.fromEntries(
+    modulePlacements(c.systems[0], cat)
+      .filter((p) => p.railId === 'r2')
+      .map((p) => [p.moduleId, p.offset]),
+  );
 const refusal = (c: Configuration, name: string, params: unknown, cat: Catalog = catalog): string => {
   const e = enabled(c, name, params, cat);
   if (e === true) throw new Error(`${name} was enabled`);
@@ -56,13 +61,26 @@ describe('snapOffset', () => {
     expect(snapOffset(7.33, 0.15, 1.5, others, 0.1)).toBeCloseTo(7.3, 9); // far past the end: snapped, not clamped
   });
   it('gaps and the largest-gap placement', () => {
-    expect(freeGaps(1.5, [[0.6, 1.2]])).toEqual([[0, 0.6], [1.2, 1.5]]);
+    expect(freeGaps(1.5, [[0.6, 1.2]])).toEqual([
+      [0, 0.6],
+      [1.2, 1.5],
+    ]);
     // Centred in [0, 0.6]: 0.225, on the 0.1 grid 0.2 (inside the gap).
     expect(placeInLargestGap(0.15, 1.5, [[0.6, 1.2]], 0.1)).toEqual({ offset: 0.2, gap: 0.6 });
     // Gap [0, 0.65] on the 0.05 grid: centred start (0.65 − 0.15) / 2 = 0.25, on the grid.
     expect(placeInLargestGap(0.15, 1.5, [[0.65, 1.2]], 0.05)).toEqual({ offset: 0.25, gap: 0.65 });
     // Nothing long enough: the largest gap's start, for validate() to refuse.
-    expect(placeInLargestGap(0.6, 1.5, [[0, 0.2], [0.35, 1.2]], 0.1)).toEqual({ offset: 1.2, gap: 0.3 });
+    expect(
+      placeInLargestGap(
+        0.6,
+        1.5,
+        [
+          [0, 0.2],
+          [0.35, 1.2],
+        ],
+        0.1,
+      ),
+    ).toEqual({ offset: 1.2, gap: 0.3 });
   });
 });
 
@@ -90,7 +108,10 @@ describe('moveModule', () => {
     for (const offset of [0.7, 1.36, 1.42, -0.3, 40]) expect(forcedIsInvalid(c, 'moveModule', { moduleId: 'm3', offset }, coarse).map((p) => p.code)).toEqual([expect.stringMatching(/module-overlap|module-past-end/)]);
     // Linear back to 0.3 (grid), then the spot past it to 1.3: [1.3, 1.45); the list follows rail order.
     const d = run(run(c, 'moveModule', { moduleId: 'm4', offset: 0.3 }, coarse), 'moveModule', { moduleId: 'm3', offset: 1.3 }, coarse);
-    expect(rail0(d).modules.map((m) => [m.id, m.offset])).toEqual([['m4', 0.3], ['m3', 1.3]]);
+    expect(rail0(d).modules.map((m) => [m.id, m.offset])).toEqual([
+      ['m4', 0.3],
+      ['m3', 1.3],
+    ]);
   });
   it('on the second rail, the start is a connector', () => {
     const c = run(twoRails(), 'addModule', { railId: 'r5', type: 'spot' });
@@ -107,7 +128,10 @@ describe('a freely arranged rail', () => {
   });
   it('addModule goes centred and snapped into the largest gap, or is refused naming it', () => {
     const c = run(free(), 'addModule', { railId: 'r2', type: 'spot', index: 1 }, coarse); // index ignored on a free rail
-    expect(rail0(c).modules.map((m) => [m.id, m.offset])).toEqual([['m7', 0.2], ['m4', 0.6]]);
+    expect(rail0(c).modules.map((m) => [m.id, m.offset])).toEqual([
+      ['m7', 0.2],
+      ['m4', 0.6],
+    ]);
     // gaps now [0, 0.2], [0.35, 0.6], [1.2, 1.5]: largest 0.3 m, a 0.6 m linear does not fit
     expect(refusal(c, 'addModule', { railId: 'r2', type: 'linear' }, coarse)).toBe('no free gap on this rail holds a Linear diffuser (0.6 m): the largest is 0.3 m; move modules apart or choose a distribution');
     expect(forcedIsInvalid(c, 'addModule', { railId: 'r2', type: 'linear' }, coarse).map((p) => p.code)).toEqual(['module-past-end']); // at 1.2, the largest gap's start
@@ -129,13 +153,33 @@ describe('validate() of free positions', () => {
   };
   it('names mixed, past-end, overlapping and out-of-order modules', () => {
     const problem = (mods: { id: string; type: string; offset?: number }[]) => validate(withMods(mods), catalog).map((p) => [p.code, p.path]);
-    expect(problem([{ id: 'm3', type: 'spot', offset: 0 }, { id: 'm4', type: 'linear', offset: 0.15 }])).toEqual([]);
-    expect(problem([{ id: 'm3', type: 'spot', offset: 0 }, { id: 'm4', type: 'linear' }])).toEqual([['module-position', 'systems[0].rails[0].modules[1].offset']]);
+    expect(
+      problem([
+        { id: 'm3', type: 'spot', offset: 0 },
+        { id: 'm4', type: 'linear', offset: 0.15 },
+      ]),
+    ).toEqual([]);
+    expect(
+      problem([
+        { id: 'm3', type: 'spot', offset: 0 },
+        { id: 'm4', type: 'linear' },
+      ]),
+    ).toEqual([['module-position', 'systems[0].rails[0].modules[1].offset']]);
     expect(problem([{ id: 'm3', type: 'spot', offset: -0.01 }])).toEqual([['module-past-end', 'systems[0].rails[0].modules[0].offset']]);
     expect(problem([{ id: 'm4', type: 'linear', offset: 0.95 }])).toEqual([['module-past-end', 'systems[0].rails[0].modules[0].offset']]); // 0.95 + 0.6 > 1.5
     expect(problem([{ id: 'm4', type: 'linear', offset: 0.9 }])).toEqual([]); // touches the end exactly
-    expect(problem([{ id: 'm3', type: 'spot', offset: 0 }, { id: 'm4', type: 'linear', offset: 0.1 }])).toEqual([['module-overlap', 'systems[0].rails[0].modules[1].offset']]);
-    expect(problem([{ id: 'm4', type: 'linear', offset: 0.5 }, { id: 'm3', type: 'spot', offset: 0 }])).toEqual([['module-overlap', 'systems[0].rails[0].modules[1].offset']]);
+    expect(
+      problem([
+        { id: 'm3', type: 'spot', offset: 0 },
+        { id: 'm4', type: 'linear', offset: 0.1 },
+      ]),
+    ).toEqual([['module-overlap', 'systems[0].rails[0].modules[1].offset']]);
+    expect(
+      problem([
+        { id: 'm4', type: 'linear', offset: 0.5 },
+        { id: 'm3', type: 'spot', offset: 0 },
+      ]),
+    ).toEqual([['module-overlap', 'systems[0].rails[0].modules[1].offset']]);
   });
 });
 
@@ -155,7 +199,12 @@ describe('scene file version 5', () => {
     const v4 = { ...JSON.parse(serializeConfiguration(fromV1, catalog)), version: 4 };
     expect(deserializeConfiguration(JSON.stringify(v4), catalog)).toEqual(fromV1);
     expect(fromV1.systems.flatMap((s) => s.rails.flatMap((r) => r.modules)).every((m) => m.offset === undefined)).toBe(true);
-    for (const [version, doc] of [[1, v1], [2, v1], [3, v1], [4, v4]] as const) {
+    for (const [version, doc] of [
+      [1, v1],
+      [2, v1],
+      [3, v1],
+      [4, v4],
+    ] as const) {
       const withOffset = structuredClone(doc);
       withOffset.version = version;
       withOffset.configuration.systems[0].rails[0].modules[0].offset = 0;

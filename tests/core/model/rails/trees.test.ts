@@ -35,7 +35,10 @@ const close = (got: readonly number[], want: readonly number[]) => want.forEach(
 describe('trees of rails', () => {
   it('places branches of a T-connector by hand', () => {
     const sys = only(tee());
-    expect(sys.joints).toEqual([{ connector: 'tee', turn: 0 }, { connector: 'tee', turn: 90, parent: 0 }]);
+    expect(sys.joints).toEqual([
+      { connector: 'tee', turn: 0 },
+      { connector: 'tee', turn: 90, parent: 0 },
+    ]);
     const p = railPlacements(sys, catalog);
     close([...p[0].start, ...p[0].end], [1, 3, 2.5, 3]);
     close([...p[1].start, ...p[1].end], [2.6, 3, 3.6, 3]);
@@ -75,9 +78,15 @@ describe('trees of rails', () => {
 
   it('derives a suspension on every branch and one at the connector', () => {
     const pts = suspensionPoints(only(tee()), catalog);
-    close(pts.map((q) => q.s), [0.375, 1.55, 2.35, 3.45]);
+    close(
+      pts.map((q) => q.s),
+      [0.375, 1.55, 2.35, 3.45],
+    );
     expect(pts.map((q) => q.joint)).toEqual([null, 0, null, null]);
-    close(pts.flatMap((q) => [...q.plan]), [1.375, 3, 2.55, 3, 3.35, 3, 2.55, 2.2]);
+    close(
+      pts.flatMap((q) => [...q.plan]),
+      [1.375, 3, 2.55, 3, 3.35, 3, 2.55, 2.2],
+    );
     const bom = billOfMaterials(tee(), catalog);
     expect(bom.lines.filter((l) => l.kind === 'connector').map((l) => [l.article, l.count])).toEqual([['LX-CON-T', 1]]);
     expect(bom.lines.find((l) => l.kind === 'suspension')?.count).toBe(4);
@@ -109,7 +118,11 @@ describe('trees of rails', () => {
     const p = railPlacements(only(x), catalog);
     close([...p[3].start, ...p[3].end], [2.55, 3.05, 2.55, 4.05]);
     expect(validate(x, catalog)).toEqual([]);
-    expect(billOfMaterials(x, catalog).lines.filter((l) => l.kind === 'connector').map((l) => [l.article, l.count])).toEqual([['LX-CON-X', 1]]);
+    expect(
+      billOfMaterials(x, catalog)
+        .lines.filter((l) => l.kind === 'connector')
+        .map((l) => [l.article, l.count]),
+    ).toEqual([['LX-CON-X', 1]]);
     // A branch into the rail it hangs on: B turned back through a corner runs into A's T.
     expect(enabled(x, 'addBranch', { railId: only(x).rails[1].id, connector: 'corner90', turn: 90, length: 3 })).toMatchObject({ ok: false });
   });

@@ -28,7 +28,7 @@ function randomStep(s: Configuration, rng: Rng): [string, unknown] {
   const systems = s.systems.map((x) => x.id);
   const rails = s.systems.flatMap((x) => x.rails.map((r) => r.id));
   const modules = s.systems.flatMap((x) => x.rails.flatMap((r) => r.modules.map((m) => m.id)));
-  const pick = <T,>(xs: readonly T[], fallback: T): T => (xs.length ? rng.pick(xs) : fallback);
+  const pick = <T>(xs: readonly T[], fallback: T): T => (xs.length ? rng.pick(xs) : fallback);
   const preset = rng.pick(catalog.presets).id;
   const { width: W, depth: D } = s.room;
   switch (rng.int(12)) {

@@ -64,7 +64,10 @@ describe('validateResult', () => {
     fc.assert(
       fc.property(edit, edit, (e1, e2) => {
         const mid = apply(base, e1);
-        for (const [before, after] of [[base, mid], [mid, apply(mid, e2)]]) {
+        for (const [before, after] of [
+          [base, mid],
+          [mid, apply(mid, e2)],
+        ]) {
           const full = validate(after, catalog);
           const found = validateResult(before, after, catalog);
           expect(found.length === 0).toBe(full.length === 0);

@@ -45,7 +45,8 @@ function makeRays(): { origin: V3; dir: V3; tMax: number }[] {
     } else if (r % 2 === 0) {
       // Aim at a random point of a random triangle.
       const k = rng.int(brute.count);
-      let a = rng.next(), b = rng.next();
+      let a = rng.next(),
+        b = rng.next();
       if (a + b > 1) [a, b] = [1 - a, 1 - b];
       const P = brute.positions;
       const target = [0, 1, 2].map((i) => P[9 * k + i] + a * (P[9 * k + 3 + i] - P[9 * k + i]) + b * (P[9 * k + 6 + i] - P[9 * k + i]));

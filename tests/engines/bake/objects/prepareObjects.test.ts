@@ -44,7 +44,11 @@ function pointTriangleDistance(p: V3, [a, b, c]: V3[]): number {
   const len = Math.hypot(...n);
   const h = dot(sub(p, a), n) / len;
   const q: V3 = [p[0] - (h * n[0]) / len, p[1] - (h * n[1]) / len, p[2] - (h * n[2]) / len];
-  const inside = [[a, b], [b, c], [c, a]].every(([u, v]) => dot(cross(sub(v, u), sub(q, u)), n) >= 0);
+  const inside = [
+    [a, b],
+    [b, c],
+    [c, a],
+  ].every(([u, v]) => dot(cross(sub(v, u), sub(q, u)), n) >= 0);
   if (inside) return Math.abs(h);
   const segment = (u: V3, v: V3): number => {
     const d = sub(v, u);
@@ -112,7 +116,8 @@ describe('prepareObjects: charts', () => {
     for (let i = 0; i < sides; i++) {
       const phi = (2 * Math.PI * i) / sides;
       cyl.push(0.3 * Math.cos(phi), 0, -0.3 * Math.sin(phi), 0.3 * Math.cos(phi), 1, -0.3 * Math.sin(phi));
-      const a = 2 * i, b = 2 * ((i + 1) % sides);
+      const a = 2 * i,
+        b = 2 * ((i + 1) % sides);
       cylIndices.push(a, b, b + 1, a, b + 1, a + 1);
     }
     const cylinder = { positions: new Float32Array(cyl), indices: new Uint32Array(cylIndices), materialOfTriangle: new Uint16Array(2 * sides), materials: material };
@@ -171,7 +176,8 @@ describe('prepareObjects: charts', () => {
     const sorted = [...prepared.charts].sort((a, b) => a.x - b.x);
     for (let a = 0; a < sorted.length; a++) {
       for (let b = a + 1; b < sorted.length && sorted[b].x < sorted[a].x + sorted[a].columns + 2; b++) {
-        const A = sorted[a], B = sorted[b];
+        const A = sorted[a],
+          B = sorted[b];
         const gapX = Math.max(B.x - (A.x + A.columns), A.x - (B.x + B.columns));
         const gapY = Math.max(B.y - (A.y + A.rows), A.y - (B.y + B.rows));
         expect(Math.max(gapX, gapY)).toBeGreaterThanOrEqual(2);
@@ -253,10 +259,7 @@ describe('prepareObjects: G-buffer', () => {
 
   it("reflectance is the object's override, else the triangle's material, clamped to [0, 0.999]", () => {
     const soup = triangleSoup(3, 40, 0, 1, 0.2);
-    const p = prepareObjects(
-      [placed('grey', boxMesh(1, 1, 1, 0.3), [1, 0, 1]), { ...placed('bright', boxMesh(1, 1, 1), [3, 0, 1]), reflectance: [1.5, 0.2, -1] }, placed('soup', soup, [0, 0, 3])],
-      { texelSize: 0.1 },
-    );
+    const p = prepareObjects([placed('grey', boxMesh(1, 1, 1, 0.3), [1, 0, 1]), { ...placed('bright', boxMesh(1, 1, 1), [3, 0, 1]), reflectance: [1.5, 0.2, -1] }, placed('soup', soup, [0, 0, 3])], { texelSize: 0.1 });
     const seen = new Set<string>();
     for (let g = 0; g < p.atlas.reflectance.length; g += 4) {
       if (p.atlas.position[g + 3] === 0) continue;
@@ -275,7 +278,8 @@ describe('prepareObjects: G-buffer', () => {
       // A ray straight at a random point of a random triangle, from 2 cm in front of it.
       const k = rng.int(prepared.triangleCount);
       const o = 16 * k;
-      let a = rng.next(), b = rng.next();
+      let a = rng.next(),
+        b = rng.next();
       if (a + b > 1) [a, b] = [1 - a, 1 - b];
       const point: V3 = [0, 1, 2].map((i) => T[o + i] + a * T[o + 4 + i] + b * T[o + 8 + i]) as V3;
       const n = cross([T[o + 4], T[o + 5], T[o + 6]], [T[o + 8], T[o + 9], T[o + 10]]);
@@ -370,7 +374,7 @@ describe('prepareObjects: BVH textures', () => {
     expect(maxDepth).toBeLessThanOrEqual(30);
     // three-mesh-bvh's SAH tree with ~6 triangles per leaf: far fewer leaves than triangles.
     expect(leaves).toBeLessThan(prepared.triangleCount / 2);
-    expect(prepared.bvh.nodesHeight).toBe(Math.ceil((2 * leaves - 1) * 2 / prepared.bvh.width));
+    expect(prepared.bvh.nodesHeight).toBe(Math.ceil(((2 * leaves - 1) * 2) / prepared.bvh.width));
     expect(prepared.bvh.trianglesHeight).toBe(Math.ceil((4 * prepared.triangleCount) / prepared.bvh.width));
   });
 

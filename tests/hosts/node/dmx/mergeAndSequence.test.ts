@@ -19,7 +19,10 @@ describe('mergeUniverse', () => {
     ])!;
     expect(Array.from(m.subarray(0, 4))).toEqual([50, 200, 0, 0]);
     expect(m.length).toBe(512);
-    const top = mergeUniverse([{ priority: 0, channels: u8(9) }, { priority: 200, channels: u8(1) }])!;
+    const top = mergeUniverse([
+      { priority: 0, channels: u8(9) },
+      { priority: 200, channels: u8(1) },
+    ])!;
     expect(top[0]).toBe(1);
   });
 });

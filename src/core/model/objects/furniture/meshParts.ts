@@ -43,11 +43,24 @@ export function boxPart(material: string, min: P3, max: P3): MeshPart {
   for (let k = 0; k < 8; k++) points.push([k & 1 ? max[0] : min[0], k & 2 ? max[1] : min[1], k & 4 ? max[2] : min[2]]);
   // Vertex k has x from bit 0, y from bit 1, z from bit 2; each face is the 4 vertices sharing one bit value.
   const quads: [number, number, number, number][] = [
-    [0, 2, 6, 4], [1, 3, 7, 5], // x = min, x = max
-    [0, 1, 5, 4], [2, 3, 7, 6], // y
-    [0, 1, 3, 2], [4, 5, 7, 6], // z
+    [0, 2, 6, 4],
+    [1, 3, 7, 5], // x = min, x = max
+    [0, 1, 5, 4],
+    [2, 3, 7, 6], // y
+    [0, 1, 3, 2],
+    [4, 5, 7, 6], // z
   ];
-  return orientConvex(material, points, quads.flatMap(([a, b, c, d]) => [[a, b, c], [a, c, d]] as [number, number, number][]));
+  return orientConvex(
+    material,
+    points,
+    quads.flatMap(
+      ([a, b, c, d]) =>
+        [
+          [a, b, c],
+          [a, c, d],
+        ] as [number, number, number][],
+    ),
+  );
 }
 
 /**
@@ -58,11 +71,22 @@ export function boxPart(material: string, min: P3, max: P3): MeshPart {
 export function frustumPart(material: string, cx: number, cz: number, y0: number, y1: number, r0: number, r1: number = r0, segments = 16): MeshPart {
   if (!(y0 < y1 && r0 > 0 && r1 > 0) || segments % 4 !== 0 || segments < 4) throw new Error(`frustum '${material}' is degenerate`);
   const points: P3[] = [];
-  for (const [y, r] of [[y0, r0], [y1, r1]]) {
+  for (const [y, r] of [
+    [y0, r0],
+    [y1, r1],
+  ]) {
     for (let i = 0; i < segments; i++) {
       const t = (2 * Math.PI * i) / segments;
       // Exact axis points at quarter turns (cos 90° is 6e-17 in floating point, not 0).
-      const [c, s] = i % (segments / 4) === 0 ? [[1, 0], [0, 1], [-1, 0], [0, -1]][(4 * i) / segments] : [Math.cos(t), Math.sin(t)];
+      const [c, s] =
+        i % (segments / 4) === 0
+          ? [
+              [1, 0],
+              [0, 1],
+              [-1, 0],
+              [0, -1],
+            ][(4 * i) / segments]
+          : [Math.cos(t), Math.sin(t)];
       points.push([cx + r * c, y, cz + r * s]);
     }
   }

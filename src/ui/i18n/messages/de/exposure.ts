@@ -11,7 +11,8 @@ export default {
   ev100: 'LW100 {ev}',
   ev100Field: 'Lichtwert bei ISO 100 (höher ist dunkler)',
   reAdapt: 'Neu anpassen',
-  reAdaptHint: 'Jetzt an das Licht auf dem Bildschirm anpassen. Die automatische Belichtung bleibt beim Dimmen, bei Filtern und Lichtszenen fest, damit dunkler auch dunkler aussieht; ein neuer Raum oder eine neue Kameraansicht passt sie neu an.',
+  reAdaptHint:
+    'Jetzt an das Licht auf dem Bildschirm anpassen. Die automatische Belichtung bleibt beim Dimmen, bei Filtern und Lichtszenen fest, damit dunkler auch dunkler aussieht; ein neuer Raum oder eine neue Kameraansicht passt sie neu an.',
   adaptation: 'Farbanpassung',
   adaptEye: 'Auge',
   adaptEyeHint: 'So, wie eine Person im Raum es sieht: Das Auge passt sich der Lichtfarbe weitgehend, aber nicht ganz an',

@@ -11,7 +11,8 @@ export default {
   ev100: 'IL100 {ev}',
   ev100Field: 'Indice de lumination à ISO 100 (plus haut = plus sombre)',
   reAdapt: 'Réadapter',
-  reAdaptHint: 'S’adapter maintenant à la lumière affichée. L’exposition automatique reste fixe pendant la gradation, les filtres et les scènes lumineuses, pour que plus sombre paraisse plus sombre ; une nouvelle pièce ou vue de caméra la réadapte.',
+  reAdaptHint:
+    'S’adapter maintenant à la lumière affichée. L’exposition automatique reste fixe pendant la gradation, les filtres et les scènes lumineuses, pour que plus sombre paraisse plus sombre ; une nouvelle pièce ou vue de caméra la réadapte.',
   adaptation: 'Adaptation chromatique',
   adaptEye: 'Œil',
   adaptEyeHint: 'Comme le voit une personne dans la pièce : l’œil s’adapte en grande partie, mais pas entièrement, à la couleur de la lumière',
