@@ -31,7 +31,7 @@ export interface EngineReport {
   room: { width: number; depth: number; height: number };
   baked: FloorStats;
   dimmed: FloorStats;
-  /** The floor row of the lux-mode table as shown (Ē, Emin, Emax, U0). */
+  /** The floor's statistics in the lux-mode table as shown (Ē, Emin, Emax, U0). */
   floorRow: string;
   groupBakes: number;
   relightsOnly: number;
@@ -176,8 +176,9 @@ export async function runCrossEngineScenario(d: EngineDriver, baseUrl: string, o
   );
   const floorRow = await until(
     `${engine}: floor row`,
-    () => d.evaluate<string>(`Array.from(document.querySelectorAll('${sel('stats-floor')} td')).map((td) => td.textContent.trim()).join(' | ')`),
-    (t) => /\d/.test(t),
+    // The floor's column of the statistics table (a row per quantity: Ē, Emin, Emax, U0; IlluminanceTable.tsx).
+    () => d.evaluate<string>(`['avg', 'min', 'max', 'u0'].map((k) => document.querySelector('[data-testid="stats-floor-' + k + '"]')?.textContent.trim() ?? '').join(' | ')`),
+    (t) => t.split(' | ').every((v) => /\d/.test(v)),
   );
   await shot('lux');
 
