@@ -1,8 +1,8 @@
 import type { Rgb, Vec3 } from '../core/model/lightingScene/lightingScene';
-import { directIlluminanceAt } from './directIlluminance';
 import { subdivideTriangle, type FurnishedPatch } from './furnishedPatches';
 import { segmentClear, type Occluders } from './occluders';
 import type { ReferencePointSource } from './pointSources';
+import { nearestSourceGap, visibleDirectAt } from './visibleDirectAt';
 
 /**
  * Direct illuminance (lux, RGB) at point q with unit normal n in a furnished room:
@@ -11,30 +11,12 @@ import type { ReferencePointSource } from './pointSources';
  * Each source's unoccluded term comes from the box reference's directIlluminanceAt.
  */
 export function occludedDirectAt(sources: readonly ReferencePointSource[], occ: Occluders | null, q: Vec3, n: Vec3, out: Rgb = [0, 0, 0]): Rgb {
-  out[0] = 0;
-  out[1] = 0;
-  out[2] = 0;
-  const one: ReferencePointSource[] = [sources[0]];
-  const e: Rgb = [0, 0, 0];
-  for (const s of sources) {
-    one[0] = s;
-    directIlluminanceAt(one, q, n, e);
-    if (!(e[0] > 0 || e[1] > 0 || e[2] > 0)) continue;
-    if (occ && !segmentClear(occ, q, n, s.position, null)) continue;
-    out[0] += e[0];
-    out[1] += e[1];
-    out[2] += e[2];
-  }
-  return out;
+  return visibleDirectAt(sources, q, n, (source) => !occ || segmentClear(occ, q, n, source, null), out);
 }
 
 /** Cells per side of a patch for its mean direct light: ~3 per patch diameter over the distance to the nearest source, within [2, 12]. */
 function cellsFor(patch: FurnishedPatch, sources: readonly ReferencePointSource[]): number {
-  let near = Infinity;
-  for (const s of sources) {
-    const d = Math.hypot(s.position[0] - patch.centroid[0], s.position[1] - patch.centroid[1], s.position[2] - patch.centroid[2]);
-    near = Math.min(near, Math.max(d - 0.5 * patch.diameter, 1e-3));
-  }
+  const near = nearestSourceGap(patch, sources);
   return Math.min(12, Math.max(2, Math.ceil((3 * patch.diameter) / near)));
 }
 

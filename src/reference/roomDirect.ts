@@ -1,6 +1,6 @@
 import type { Rgb, Vec3 } from '../core/model/lightingScene/lightingScene';
-import { directIlluminanceAt } from './directIlluminance';
 import type { ReferencePointSource } from './pointSources';
+import { nearestSourceGap, visibleDirectAt } from './visibleDirectAt';
 import { patchPieces, type RoomPatch } from './roomPatches';
 import { sightClear, type RoomSightlines } from './roomSightlines';
 
@@ -11,31 +11,12 @@ import { sightClear, type RoomSightlines } from './roomSightlines';
  * reference's directIlluminanceAt.
  */
 export function roomDirectAt(sources: readonly ReferencePointSource[], sight: RoomSightlines, q: Vec3, n: Vec3, out: Rgb = [0, 0, 0]): Rgb {
-  out[0] = 0;
-  out[1] = 0;
-  out[2] = 0;
-  if (sources.length === 0) return out;
-  const one: ReferencePointSource[] = [sources[0]];
-  const e: Rgb = [0, 0, 0];
-  for (const s of sources) {
-    one[0] = s;
-    directIlluminanceAt(one, q, n, e);
-    if (!(e[0] > 0 || e[1] > 0 || e[2] > 0)) continue;
-    if (!sightClear(sight, q, n, s.position, null)) continue;
-    out[0] += e[0];
-    out[1] += e[1];
-    out[2] += e[2];
-  }
-  return out;
+  return visibleDirectAt(sources, q, n, (source) => sightClear(sight, q, n, source, null), out);
 }
 
 /** Sub-pieces per side for a patch's mean: ~8 per patch diameter over the distance to the nearest source, within [4, 16]. */
 function piecesPerSide(patch: RoomPatch, sources: readonly ReferencePointSource[]): number {
-  let near = Infinity;
-  for (const s of sources) {
-    const d = Math.hypot(s.position[0] - patch.centroid[0], s.position[1] - patch.centroid[1], s.position[2] - patch.centroid[2]);
-    near = Math.min(near, Math.max(d - 0.5 * patch.diameter, 1e-3));
-  }
+  const near = nearestSourceGap(patch, sources);
   return Math.min(16, Math.max(4, Math.ceil((8 * patch.diameter) / near)));
 }
 

@@ -26,7 +26,7 @@ export function turnArrowPoints(heading: number, turn: number): { from: [number,
 
 /**
  * The direction an "Extend the chain" button adds its rail, drawn as the plan shows it (issue 27:
- * branch buttons named by direction): the chain's end as a grey stub along its real heading on
+ * branch buttons named by direction): the chain's last rail as a short grey line along its real heading on
  * screen, the new rail as an arrow turned by the connector's angle. Decorative: the button names it.
  */
 export function TurnArrow({ heading, turn }: { heading: number; turn: number }) {
