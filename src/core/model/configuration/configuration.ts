@@ -7,6 +7,8 @@
 import type { Distribution } from '../catalogSchema/railSystemSchema';
 import type { Reflectance, Rgb, SurfaceName } from '../lightingScene/lightingScene';
 import type { TriangleMesh } from '../../mesh/triangleMesh';
+import type { PlanPoint } from '../../room/planPolygon';
+import type { RoomOpening, RoomSlope } from '../../room/roomInput';
 
 export type { Distribution };
 
@@ -19,6 +21,26 @@ export interface Room {
   height: number;
   /** Surface reflectances handed to the baker. */
   reflectance: Record<SurfaceName, Reflectance>;
+  /**
+   * A room that is not a plain box (issue 29, docs/model.md "Room shape"); absent: the box
+   * [0, width] × [0, depth], today's fast path. When present, its outline's bounding box is
+   * [0, width] × [0, depth] (the editor keeps it there, validate() refuses anything else), so
+   * everything that only needs the room's extent keeps reading width and depth.
+   */
+  shape?: RoomShape;
+}
+
+/** The floor outline, roof slopes and openings of a room of any shape (src/core/room, "Version 3 room" in docs/scene-format.md). */
+export interface RoomShape {
+  /** Corners [x, z], metres, either orientation; wall i runs from corner i to corner i + 1. */
+  readonly outline: readonly PlanPoint[];
+  readonly slopes: readonly RoomSlope[];
+  readonly openings: readonly RoomOpening[];
+  /**
+   * One finish per wall in outline order. Absent: each wall takes the box wall (north, east,
+   * south, west) whose inward normal is nearest its own, so a rectangle keeps today's finishes.
+   */
+  readonly wallReflectance?: readonly Reflectance[];
 }
 
 /** The DMX patch of a module (docs/live-control.md); its rules are in core/model/modules/dmxPatch.ts. */

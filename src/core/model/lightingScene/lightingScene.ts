@@ -2,6 +2,8 @@
  * Lighting scene, versions 1 and 2: the contract between the configurator, the baker
  * and the command line (docs/scene-format.md). Extend, never break.
  */
+import type { Room as ShapedRoom } from '../../room/normaliseRoom';
+
 export type Rgb = [number, number, number];
 export type Vec3 = [number, number, number];
 
@@ -19,6 +21,13 @@ export interface LightingRoom {
   /** z extent, metres */
   depth: number;
   reflectance: Record<SurfaceName, Reflectance>;
+  /**
+   * Version 3 (issue 29): the room of any shape, normalised (src/core/room/normaliseRoom), in
+   * world coordinates. Absent: the box [0, width] × [0, height] × [0, depth]. Present: width and
+   * depth are the outline's bounding-box extents and `reflectance` the box finishes it was made
+   * from (or the nearest box wall's), kept for readers that only know the box.
+   */
+  shape?: ShapedRoom;
 }
 
 export interface LightingLuminaire {
