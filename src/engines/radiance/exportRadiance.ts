@@ -4,6 +4,7 @@ import { nearFieldOf, scenePointSources } from '../bake/scenePointSources';
 import { cameraPreset } from '../view/cameraPresets';
 import { planeGrid, rtracePoints } from './illuminanceGrid';
 import { luminairesRad } from './luminairesRad';
+import { objectsRad } from './objectsRad';
 import { exportReadme } from './exportReadme';
 import { EXPORT_GRIDS, EXPORT_VIEWS, GRID_SPACING, IMAGE_SIZE, renderScript } from './renderScript';
 import { roomRad } from './roomRad';
@@ -19,7 +20,7 @@ export interface ExportFile {
 
 /**
  * A self-contained Radiance folder for a scene (docs/radiance.md): `scene.rad` (room and every
- * luminaire), the candela distributions as brightdata files, source.cal, view files for the
+ * luminaire, and the objects as polygons), the candela distributions as brightdata files, source.cal, view files for the
  * eye, top and corner cameras, illuminance grids, `render.sh` and a README. The near field
  * follows the scene's `nearField` (or the settings' override) through the baker's own point
  * sources, so Radiance and luxbox solve the same physical problem.
@@ -36,8 +37,9 @@ export function exportRadiance(scene: BakeScene, settings: Partial<BakeSettings>
     '',
   ].join('\n');
   const aspect = IMAGE_SIZE.width / IMAGE_SIZE.height;
+  const objects = scene.objects && scene.objects.length > 0 ? '\n' + objectsRad(scene.objects).rad : '';
   return [
-    { path: 'scene.rad', text: header + roomRad(scene) + '\n' + luminaires.rad },
+    { path: 'scene.rad', text: header + roomRad(scene) + objects + '\n' + luminaires.rad },
     ...luminaires.files,
     { path: 'source.cal', text: SOURCE_CAL },
     ...EXPORT_VIEWS.map((name) => ({ path: `views/${name}.vf`, text: viewFile(cameraPreset(name, scene.room, { scene, aspect }), aspect) })),

@@ -33,7 +33,9 @@ X ∈ [0, ${width}], Y ∈ [−${depth}, 0], Z ∈ [0, ${height}]; north (luxbox
 ## What is in the scene
 
 - \`scene.rad\`: the room's six surfaces (\`plastic\`, no specular part: Lambertian with the
-  scene's reflectances), then every luminaire.
+  scene's reflectances), then the objects (furniture, imported models: one polygon per triangle,
+  \`plastic\` with each material's reflectance, or the object's where it overrides them, as luxbox
+  bakes them), then every luminaire.
 - Luminaires: near field **${nearField}** — ${nearField === 'split' ? 'each luminous opening larger than 5 cm is the same grid of point sources luxbox bakes with' : 'one point source per luminaire at its photometric centre'}.
   Each point source is a sphere of ${SOURCE_RADIUS * 1000} mm radius with \`light\` material; its \`brightdata\`
   modifier holds the luminaire's candela distribution (\`luminaires/*.dat\`, W/sr = cd / 179, in

@@ -3,7 +3,7 @@ import { InputError } from '../../core/inputError';
 import { exportRadiance } from '../../engines/radiance/exportRadiance';
 import { parseBakeCli } from '../node/bakeCliOptions';
 import { writeExportFiles } from '../node/radianceTools';
-import { loadRenderInput } from '../node/renderInput';
+import { loadRenderInputAsync } from '../node/renderInput';
 import { cliReadableFolders } from '../node/cliReadableFolders';
 
 export const exportUsage = 'export radiance <config-or-scene.json> --out <dir> [--near-field split|point]';
@@ -19,7 +19,7 @@ export async function run(args: string[]): Promise<number> {
   if (positional.length !== 1) throw new InputError(`radiance: expected one scene file (usage: luxbox ${exportUsage})`);
   const out = options['--out'];
   if (!out) throw new InputError(`radiance: --out <dir> is required (usage: luxbox ${exportUsage})`);
-  const input = loadRenderInput(positional[0], { within: cliReadableFolders(positional[0]) });
+  const input = await loadRenderInputAsync(positional[0], { within: cliReadableFolders(positional[0]) });
   const title = basename(positional[0]).replace(/\.json$/i, '');
   const files = exportRadiance(input.bakeScene, settings, title);
   writeExportFiles(out, files);

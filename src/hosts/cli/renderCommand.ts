@@ -11,7 +11,7 @@ import { batchFolderNames } from '../node/batchFolderNames';
 import { prepareGl } from '../node/prepareGl';
 import { takeRenderCameras } from '../node/renderCameras';
 import { createRenderSession } from '../node/renderImage';
-import { loadRenderInput } from '../node/renderInput';
+import { loadRenderInputAsync } from '../node/renderInput';
 import { RENDER_SUMMARY_FORMAT, type RenderSummary, type RenderSummaryImage } from '../node/renderSummary';
 import { cliReadableFolders } from '../node/cliReadableFolders';
 
@@ -82,7 +82,7 @@ export async function run(args: string[]): Promise<number> {
   const glare = glareOption === 'on';
   const batch = positional.length > 1 || cameras.length > 1 || /[/\\]$/.test(out) || (existsSync(out) && statSync(out).isDirectory());
   // A single render keeps the old contract: bad input is one line on stderr before any GL work.
-  const single = batch ? null : loadRenderInput(positional[0], { within: cliReadableFolders(positional[0]) });
+  const single = batch ? null : await loadRenderInputAsync(positional[0], { within: cliReadableFolders(positional[0]) });
   const sceneNames = batchFolderNames(positional);
   const { exit } = prepareGl(options['--gl']);
   if (exit !== null) return exit;
@@ -99,11 +99,11 @@ export async function run(args: string[]): Promise<number> {
   const linkedAfterScene: RenderSummary['programs_linked_after_scene'] = [];
   const session = createRenderSession(width, height);
   try {
-    positional.forEach((path, i) => {
+    for (const [i, path] of positional.entries()) {
       let input;
       let results;
       try {
-        const loaded = single ?? loadRenderInput(path, { within: cliReadableFolders(path) });
+        const loaded = single ?? (await loadRenderInputAsync(path, { within: cliReadableFolders(path) }));
         input = loaded;
         const room = loaded.scene.room;
         // The eye preset frames this scene's light (frameTheLight.ts), as the browser's does.
@@ -114,7 +114,7 @@ export async function run(args: string[]): Promise<number> {
         if (!batch) throw error;
         failed.push({ file: path, error: errorLine(error) });
         process.stderr.write(`luxbox render: ${path}: ${errorLine(error)}\n`);
-        return;
+        continue;
       }
       linkedAfterScene.push(session.programsLinked());
       cameras.forEach((camera, k) => {
@@ -142,7 +142,7 @@ export async function run(args: string[]): Promise<number> {
           `rendered ${path} → ${file} (${width}×${height}, EV100 ${result.ev100.toFixed(2)}${ev100 === null ? ' auto' : ''}, bake ${Math.round(result.timings_ms.bake)} ms, render ${Math.round(result.timings_ms.render)} ms; floor Ē ${f.avg.toFixed(1)} lx, Emin ${f.min.toFixed(1)} lx, U0 ${f.u0.toFixed(2)})\n`,
         );
       });
-    });
+    }
     if (batch) {
       const summary: RenderSummary = {
         format: RENDER_SUMMARY_FORMAT,

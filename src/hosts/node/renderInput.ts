@@ -13,7 +13,7 @@ import { fixturesFromConfiguration, fixturesFromScene, type Fixtures } from '../
 import { resolveBakeSceneSync, SceneObjectError } from '../../engines/bake/resolveBakeScene';
 import { InputError } from '../../core/inputError';
 import { INPUT_LIMITS } from '../../core/untrustedJson';
-import { loadLightingSceneFile, parseJsonText, resolveSceneFiles, type SceneFileAccess } from './loadLightingSceneFile';
+import { loadLightingSceneFile, loadLightingSceneFileAsync, parseJsonText, resolveSceneFiles, type LoadedLightingScene, type SceneFileAccess } from './loadLightingSceneFile';
 import { readRegularFile } from './readRegularFile';
 
 /** What `luxbox render` draws: the baker's scene and the hardware to show. */
@@ -42,9 +42,21 @@ function resolvePublicDir(): string {
  * Read a configurator scene file (format "luxbox-configuration", default
  * catalog, photometry from public/) or a lighting scene v1 (photometry
  * relative to the file), telling them apart by the format tag. `access`: where a lighting
- * scene's files may lie (the CLI passes cliReadableFolders).
+ * scene's files may lie (the CLI passes cliReadableFolders). Lighting scenes' objects load from
+ * OBJ only here; loadRenderInputAsync reads every mesh format.
  */
 export function loadRenderInput(path: string, access: SceneFileAccess = {}): RenderInput {
+  const file = readInputFile(path);
+  return file.isConfiguration ? configurationInput(file.text, file.source) : lightingSceneInput(loadLightingSceneFile(path, access));
+}
+
+/** loadRenderInput for every mesh format (OBJ, glTF, GLB): what `luxbox render` and `export radiance` use. */
+export async function loadRenderInputAsync(path: string, access: SceneFileAccess = {}): Promise<RenderInput> {
+  const file = readInputFile(path);
+  return file.isConfiguration ? configurationInput(file.text, file.source) : lightingSceneInput(await loadLightingSceneFileAsync(path, access));
+}
+
+function readInputFile(path: string): { source: string; text: string; isConfiguration: boolean } {
   const source = basename(path);
   let text: string;
   try {
@@ -55,10 +67,14 @@ export function loadRenderInput(path: string, access: SceneFileAccess = {}): Ren
   }
   const data = parseJsonText(text, source);
   const isConfiguration = typeof data === 'object' && data !== null && (data as { format?: unknown }).format === SCENE_FILE_FORMAT;
-  if (!isConfiguration) {
-    const loaded = loadLightingSceneFile(path, access);
-    return { scene: loaded.scene, bakeScene: loaded.bakeScene, fixtures: fixturesFromScene(loaded.scene, loaded.bakeScene.luminaires), kind: 'lighting-scene' };
-  }
+  return { source, text, isConfiguration };
+}
+
+function lightingSceneInput(loaded: LoadedLightingScene): RenderInput {
+  return { scene: loaded.scene, bakeScene: loaded.bakeScene, fixtures: fixturesFromScene(loaded.scene, loaded.bakeScene.luminaires), kind: 'lighting-scene' };
+}
+
+function configurationInput(text: string, source: string): RenderInput {
   const config = deserializeConfiguration(text, defaultCatalog, source);
   const scene = toLightingScene(config, defaultCatalog);
   // Photometry from public/ (the scene file's loader and messages); the objects' meshes from the configuration itself (`object:<id>`).
