@@ -13,8 +13,9 @@
  *   (Lambert's contour integral, clipped to p's front). For a uniform sky and an unglazed window
  *   every piece's weight is exact and the sum is π L × the window's form factor (the partition
  *   does not change Lambert's integral); for CIE skies and glass it is a midpoint rule in solid
- *   angle, m = 6·(window diagonal)/(distance to the window) within [4, 24]. (E = π L F: F is the
- *   view factor, 1 for a whole hemisphere, where E = π L.)
+ *   angle, m = 12·(window diagonal)/(distance to the window) within [8, 32]. In a non-convex room
+ *   the columns of cells are cut where a wall starts to hide the window (visibleColumns).
+ *   (E = π L F: F is the view factor, 1 for a whole hemisphere, where E = π L.)
  * - The sun, a parallel source toward unit s with normal illuminance E_n: at p
  *     E = E_n·τ(θ_W)·max(0, n·s)
  *   when the ray from p toward the sun leaves through W (clipped by the window's outline) and the
@@ -104,6 +105,42 @@ function distanceToWindow(w: DaylightWindow, p: Vec3): number {
 const UP: Vec3 = [0, 1, 0];
 const DOWN: Vec3 = [0, -1, 0];
 
+/**
+ * The window's columns [s_a, s_b] (m equal ones across its width) that p sees. Sight lines are
+ * decided in plan (roomSightlines.ts) and the window stands in a vertical wall, so whether p sees
+ * a window point depends only on its s along the wall: in a non-convex room a column whose two
+ * sides disagree is cut where the view changes (bisection to 1e-9 of the width), so the part of
+ * the window a wall hides is cut off exactly, not by samples.
+ */
+function visibleColumns(ctx: DaylightContext, w: DaylightWindow, p: Vec3, n: Vec3, m: number): [number, number][] {
+  const [s0, s1, t0, t1] = w.bounds;
+  const tMid = (t0 + t1) / 2;
+  const width = s1 - s0;
+  const columns: [number, number][] = [];
+  for (let i = 0; i < m; i++) columns.push([s0 + (width * i) / m, s0 + (width * (i + 1)) / m]);
+  if (ctx.sight.convex) return columns;
+  const sees = (s: number): boolean => sightClear(ctx.sight, p, n, toWorld(w.frame, s, tMid), w.inward);
+  const inset = width * 1e-9;
+  const out: [number, number][] = [];
+  for (const [a, b] of columns) {
+    const va = sees(a + inset);
+    const vb = sees(b - inset);
+    if (va === vb) {
+      if (va && sees((a + b) / 2)) out.push([a, b]);
+      continue;
+    }
+    let lo = a + inset;
+    let hi = b - inset;
+    while (hi - lo > inset) {
+      const mid = (lo + hi) / 2;
+      if (sees(mid) === va) lo = mid;
+      else hi = mid;
+    }
+    out.push(va ? [a, lo] : [hi, b]);
+  }
+  return out;
+}
+
 /** Sky and ground illuminance (lux) at p, normal n, through one window (see the file's comment). */
 export function skyThroughWindow(ctx: DaylightContext, w: DaylightWindow, p: Vec3, n: Vec3): number {
   if (!ctx.sky && !(ctx.groundLuminance > 0)) return 0;
@@ -112,24 +149,20 @@ export function skyThroughWindow(ctx: DaylightContext, w: DaylightWindow, p: Vec
   const diagonal = Math.hypot(s1 - s0, t1 - t0);
   const m = Math.min(32, Math.max(8, Math.ceil((12 * diagonal) / Math.max(distanceToWindow(w, p), 1e-6))));
   let e = 0;
-  for (let j = 0; j < m; j++) {
-    const ta = t0 + ((t1 - t0) * j) / m;
-    const tb = t0 + ((t1 - t0) * (j + 1)) / m;
-    for (let i = 0; i < m; i++) {
-      const sa = s0 + ((s1 - s0) * i) / m;
-      const sb = s0 + ((s1 - s0) * (i + 1)) / m;
+  for (const [sa, sb] of visibleColumns(ctx, w, p, n, m)) {
+    for (let j = 0; j < m; j++) {
+      const ta = t0 + ((t1 - t0) * j) / m;
+      const tb = t0 + ((t1 - t0) * (j + 1)) / m;
       const cell = [toWorld(w.frame, sa, ta), toWorld(w.frame, sb, ta), toWorld(w.frame, sb, tb), toWorld(w.frame, sa, tb)];
       for (const above of [true, false]) {
         const part = clipToFront(p, above ? UP : DOWN, cell);
         if (part.length < 3) continue;
         const f = frontFormFactor(p, n, part);
         if (!(f > 0)) continue;
-        const c = polygonCentroid(part);
-        if (!ctx.sight.convex && !sightClear(ctx.sight, p, n, c, w.inward)) continue;
-        const d = sub(c, p);
+        const d = sub(polygonCentroid(part), p);
         const len = Math.hypot(d[0], d[1], d[2]);
         const dir: Vec3 = [d[0] / len, d[1] / len, d[2] / len];
-        // A piece straddling nothing but touching the horizon plane keeps its side's luminance.
+        // A piece touching the horizon plane keeps its side's luminance.
         const l = above ? (ctx.sky ? ctx.sky.luminance(dir[1] > 0 ? dir : [dir[0], 1e-9, dir[2]]) : 0) : ctx.groundLuminance;
         e += l * glazingTransmittance(w.glazing, Math.abs(dot(dir, w.inward))) * f;
       }

@@ -10,7 +10,7 @@ import { cieGeneralSky, cieOvercastSky, uniformSky, type Sky } from '../../src/c
 import { sunDirection } from '../../src/core/daylight/solarPosition';
 import type { Vec3 } from '../../src/core/model/lightingScene/lightingScene';
 import type { RoomInput } from '../../src/core/room/roomInput';
-import { sunThroughWindow } from '../../src/reference/daylightDirect';
+import { skyThroughWindow, sunThroughWindow } from '../../src/reference/daylightDirect';
 import { pointToPolygonFormFactor } from '../../src/reference/pointToPolygonFormFactor';
 import { daylightIlluminanceAt, solveDaylightReference, type DaylightReferenceInput } from '../../src/reference/solveDaylightReference';
 import { roomFluxes } from '../../src/reference/solveRoomReference';
@@ -54,7 +54,8 @@ const G4 = [
  * area integral E = ∫∫ L τ cos θ_p cos θ_w / r² dx dy over the rectangle, split at p's height,
  * with composite 4-point Gauss–Legendre on 40 × 40 cells: no form factors, no centroids.
  */
-function areaIntegral(p: Vec3, n: Vec3, sky: (d: Vec3) => number, ground: number, tau: (c: number) => number): number {
+function areaIntegral(p: Vec3, n: Vec3, sky: (d: Vec3) => number, ground: number, tau: (c: number) => number, window = WINDOW): number {
+  const WINDOW = window;
   const ys = [WINDOW.y0, WINDOW.y1];
   if (p[1] > WINDOW.y0 && p[1] < WINDOW.y1) ys.splice(1, 0, p[1]);
   let e = 0;
@@ -229,7 +230,7 @@ describe('daylight reference: the sun', () => {
     expect(relErr(total, E_N * low[2] * 1.5 * 1.4)).toBeLessThan(1e-9);
   });
 
-  it('in an L, the room itself shadows the sun: none behind the inner corner', () => {
+  it('in an L, the room itself shadows the sun and hides part of the sky: none behind the inner corner', () => {
     // An L: the window in the south wall of the west wing; the east wing's floor behind the corner stays dark.
     const L: RoomInput = {
       outline: [
@@ -268,6 +269,22 @@ describe('daylight reference: the sun', () => {
     expect(sunThroughWindow(lowSun, w, hidden, UP)).toBe(0);
     // Without the room in the way (a convex room's rule) the same point would be lit: the shadow is the wall's.
     expect(sunThroughWindow({ ...lowSun, sight: { ...lowSun.sight, convex: true } }, w, hidden, UP)).toBeGreaterThan(0);
+    // The sky: a point of the east wing sees the window only left of the line through it and the
+    // inner corner (3, 3): the independent integral over exactly that part, within 1 %.
+    const overcast = cieOvercastSky(10000);
+    const skyLit = { ...r.daylight, sky: overcast };
+    for (const p of [
+      [3.5, 0.8, 0.5],
+      [4.2, 0.8, 0.4],
+    ] as Vec3[]) {
+      const cut = p[0] + ((3 - p[0]) * (6 - p[2])) / (3 - p[2]);
+      expect(cut).toBeGreaterThan(0.5);
+      expect(cut).toBeLessThan(2.5);
+      const expected = areaIntegral(p, UP, overcast.luminance, 0, () => 1, { x0: 0.5, x1: cut, y0: 0.5, y1: 2.3, z: 6 });
+      expect(relErr(skyThroughWindow(skyLit, w, p, UP), expected), `at ${p}`).toBeLessThan(0.01);
+    }
+    // Deep in the east wing the whole window is behind the wall.
+    expect(skyThroughWindow(skyLit, w, [5.5, 0.8, 0.5], UP)).toBe(0);
     const entering = r.entering.sun;
     const landed = r.patches.reduce((sum, p, i) => sum + r.sunDirect[i] * p.area, 0);
     // Sampled on 16 × 16 pieces per patch in a non-convex room: within 1 % (measured +0.17 %).
