@@ -19,12 +19,13 @@ const caches = new WeakMap<RoomReferenceResult, PieceCache>();
  * the room's own shadows, plus the final gather Σ_j F_vis(p → patch j)·M_j over all patches. A
  * patch within two of its diameters is taken in 16 pieces, each with its own sight line and
  * exitance ρ·(exact direct light at the piece's centroid + the patch's E_ind), so corners and
- * hot spots next to p are resolved.
+ * hot spots next to p are resolved. `directAt` gives the direct light at a point (default: the
+ * luminaires' point sources with the room's shadows; daylight passes its own).
  */
-export function roomIlluminanceAt(r: RoomReferenceResult, p: Vec3, n: Vec3): RoomSample {
+export function roomIlluminanceAt(r: RoomReferenceResult, p: Vec3, n: Vec3, directAt: (q: Vec3, m: Vec3, out: Rgb) => Rgb = (q, m, out) => roomDirectAt(r.sources, r.sight, q, m, out)): RoomSample {
   let cache = caches.get(r);
   if (!cache) caches.set(r, (cache = new PieceCache(r.patches)));
-  const directRgb = roomDirectAt(r.sources, r.sight, p, n);
+  const directRgb = directAt(p, n, [0, 0, 0]);
   const indirectRgb: Rgb = [0, 0, 0];
   const e: Rgb = [0, 0, 0];
   r.patches.forEach((patch, j) => {
@@ -42,7 +43,7 @@ export function roomIlluminanceAt(r: RoomReferenceResult, p: Vec3, n: Vec3): Roo
       if (!sightClear(r.sight, p, n, piece.centroid, patch.normal)) continue;
       const f = frontFormFactor(p, n, piece.vertices);
       if (!(f > 0)) continue;
-      roomDirectAt(r.sources, r.sight, piece.centroid, patch.normal, e);
+      directAt(piece.centroid, patch.normal, e);
       for (let c = 0; c < 3; c++) indirectRgb[c] += f * patch.reflectance[c] * (e[c] + r.indirectRgb[k + c]);
     }
   });

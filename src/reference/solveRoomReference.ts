@@ -5,11 +5,11 @@ import { normaliseRoom, type Room } from '../core/room/normaliseRoom';
 import type { RoomInput } from '../core/room/roomInput';
 import { roomSurfaces, type RoomSurface } from '../core/room/roomSurfaces';
 import { InputError } from '../core/inputError';
-import { frontFormFactor } from './occludedFormFactor';
 import { referencePointSources, type PointSourceOptions, type ReferencePointSource } from './pointSources';
 import { patchMeanRoomDirect } from './roomDirect';
-import { patchPieces, roomPatches, type PatchPiece, type RoomPatch } from './roomPatches';
-import { sightClear, type RoomSightlines } from './roomSightlines';
+import { roomPatches, type RoomPatch } from './roomPatches';
+import { interreflectRoom } from './roomInterreflection';
+import type { RoomSightlines } from './roomSightlines';
 import { ReferenceInputError } from './referenceInputError';
 import { LUMINANCE_WEIGHTS } from './solveBoxReference';
 
@@ -24,11 +24,6 @@ export interface RoomReferenceOptions extends PointSourceOptions {
 
 /** The dense form-factor matrix is N² numbers: keep it within a few hundred MB. */
 export const MAX_ROOM_PATCHES = 8000;
-
-/** A receiver patch larger than this fraction of the distance to the emitter averages over 16 pieces of itself, … */
-const NEAR_RECEIVER = 0.6;
-/** … larger than this fraction over 4 pieces, else its centroid alone (point-to-patch error ~ (size/distance)²). */
-const MID_RECEIVER = 0.3;
 
 export interface RoomReferenceResult {
   room: Room;
@@ -51,49 +46,7 @@ export function luminanceOf(rgb: ArrayLike<number>, k: number): number {
   return LUMINANCE_WEIGHTS[0] * rgb[k] + LUMINANCE_WEIGHTS[1] * rgb[k + 1] + LUMINANCE_WEIGHTS[2] * rgb[k + 2];
 }
 
-/** Pieces of a patch at a level (1, 4 or 16 pieces), cached per patch. */
-export class PieceCache {
-  private readonly levels = new Map<number, PatchPiece[][]>();
-  constructor(private readonly patches: readonly RoomPatch[]) {}
-  get(k: number, level: 1 | 2): PatchPiece[] {
-    let list = this.levels.get(k);
-    if (!list) this.levels.set(k, (list = []));
-    return (list[level] ??= patchPieces(this.patches[k], level === 1 ? 2 : 4));
-  }
-}
-
-/**
- * The share of emitter patch e that point x (normal n) sees, by sight lines to the centroids of
- * its 2 × 2 pieces, refined to its 4 × 4 pieces where they disagree (a shadow edge crosses it);
- * area-weighted. 1 in a convex room.
- */
-export function visibleShare(sight: RoomSightlines, x: Vec3, n: Vec3, e: RoomPatch, k: number, cache: PieceCache): number {
-  if (sight.convex) return 1;
-  const coarse = cache.get(k, 1);
-  let seen = 0;
-  let any = false;
-  let all = true;
-  for (const p of coarse) {
-    const clear = sightClear(sight, x, n, p.centroid, e.normal);
-    any ||= clear;
-    all &&= clear;
-    if (clear) seen += p.area;
-  }
-  if (all) return 1;
-  if (!any) return 0;
-  seen = 0;
-  for (const p of cache.get(k, 2)) if (sightClear(sight, x, n, p.centroid, e.normal)) seen += p.area;
-  return seen / e.area;
-}
-
-/** Form factor from point x (normal n) to patch e, visible part only: Lambert's contour integral × the visible share. */
-export function pointToPatch(sight: RoomSightlines, x: Vec3, n: Vec3, e: RoomPatch, k: number, cache: PieceCache): number {
-  const v0 = e.vertices[0];
-  // The emitter radiates from its front only.
-  if (e.normal[0] * (x[0] - v0[0]) + e.normal[1] * (x[1] - v0[1]) + e.normal[2] * (x[2] - v0[2]) <= 1e-12) return 0;
-  const f = frontFormFactor(x, n, e.vertices);
-  return f > 0 ? f * visibleShare(sight, x, n, e, k, cache) : 0;
-}
+export { PieceCache, pointToPatch, visibleShare } from './roomFormFactors';
 
 /** The luminaires as point sources, each checked to lie inside the room (and under every slope). */
 function roomPointSources(room: Room, luminaires: readonly LightingLuminaire[], photometries: ReadonlyMap<string, Photometry> | Record<string, Photometry>, options: PointSourceOptions): ReferencePointSource[] {
@@ -127,7 +80,8 @@ function roomPointSources(room: Room, luminaires: readonly LightingLuminaire[], 
  * F_re from the centroid — or 4 or 16 pieces — of the smaller patch r of each pair to the
  * polygon of the larger e by Lambert's contour integral times the visible share of e (sight lines
  * decided in plan, roomSightlines.ts), and F_er = F_re·A_r/A_e by reciprocity. E_dir is the
- * patch mean of point-source light shadowed by the room itself. Openings are patches that
+ * patch mean of point-source light shadowed by the room itself; the form factors and the sweeps
+ * are roomInterreflection.ts, which daylight (solveDaylightReference.ts) shares. Openings are patches that
  * reflect nothing: the light reaching them leaves the room. Independent of src/engines/bake and
  * its shaders; the room's surfaces come from src/core/room (the contract's geometry), checked
  * here by flux balances (tests/reference/roomReference.test.ts).
@@ -155,81 +109,12 @@ export function solveRoomReference(input: RoomInput, luminaires: readonly Lighti
   const N = patches.length;
   if (N > MAX_ROOM_PATCHES) throw new ReferenceInputError(`reference options: ${N} patches exceed the limit of ${MAX_ROOM_PATCHES}; choose a larger patchSize`);
 
-  let t0 = performance.now();
+  const t0 = performance.now();
   const directRgb = new Float64Array(3 * N);
   patches.forEach((p, i) => directRgb.set(patchMeanRoomDirect(sources, sight, p), 3 * i));
   const directMs = performance.now() - t0;
 
-  t0 = performance.now();
-  const reflective = patches.map((p) => p.reflectance.some((c) => c > 0));
-  const anyReflective = reflective.some(Boolean);
-  const F = anyReflective ? new Float32Array(N * N) : new Float32Array(0);
-  const cache = new PieceCache(patches);
-  if (anyReflective) {
-    for (let i = 0; i < N; i++) {
-      for (let j = i + 1; j < N; j++) {
-        if (!reflective[i] && !reflective[j]) continue;
-        if (patches[i].surface === patches[j].surface) continue; // one plane: they cannot see each other
-        // Integrate over the smaller patch (points) against the larger (exact polygon); the other
-        // direction by reciprocity, A_i·F_ij = A_j·F_ji, which the discrete system then keeps exactly.
-        const [r, e] = patches[j].diameter < patches[i].diameter ? [j, i] : [i, j];
-        const R = patches[r];
-        const E = patches[e];
-        const gap = Math.hypot(R.centroid[0] - E.centroid[0], R.centroid[1] - E.centroid[1], R.centroid[2] - E.centroid[2]);
-        let f = 0;
-        if (R.diameter > MID_RECEIVER * gap) {
-          for (const piece of cache.get(r, R.diameter > NEAR_RECEIVER * gap ? 2 : 1)) f += piece.area * pointToPatch(sight, piece.centroid, R.normal, E, e, cache);
-          f /= R.area;
-        } else {
-          f = pointToPatch(sight, R.centroid, R.normal, E, e, cache);
-        }
-        F[r * N + e] = f;
-        F[e * N + r] = (f * R.area) / E.area;
-      }
-    }
-  }
-  const formFactorMs = performance.now() - t0;
-
-  t0 = performance.now();
-  const indirectRgb = new Float64Array(3 * N);
-  const exitanceRgb = new Float64Array(3 * N);
-  for (let i = 0; i < N; i++) for (let c = 0; c < 3; c++) exitanceRgb[3 * i + c] = patches[i].reflectance[c] * directRgb[3 * i + c];
-  let sweeps = 0;
-  let residual = 0;
-  let maxTotal = 0;
-  for (const v of directRgb) maxTotal = Math.max(maxTotal, v);
-  if (anyReflective && maxTotal > 0) {
-    residual = Infinity;
-    const gathered = [0, 0, 0];
-    while (residual > tolerance) {
-      if (sweeps >= maxSweeps) throw new ReferenceInputError(`room reference: no convergence after ${maxSweeps} sweeps (relative change ${residual.toExponential(2)}); raise maxSweeps`);
-      sweeps++;
-      let change = 0;
-      for (let i = 0; i < N; i++) {
-        gathered[0] = 0;
-        gathered[1] = 0;
-        gathered[2] = 0;
-        const row = i * N;
-        for (let j = 0; j < N; j++) {
-          const f = F[row + j];
-          if (f === 0) continue;
-          gathered[0] += f * exitanceRgb[3 * j];
-          gathered[1] += f * exitanceRgb[3 * j + 1];
-          gathered[2] += f * exitanceRgb[3 * j + 2];
-        }
-        const rho = patches[i].reflectance;
-        for (let c = 0; c < 3; c++) {
-          const k = 3 * i + c;
-          change = Math.max(change, Math.abs(gathered[c] - indirectRgb[k]));
-          indirectRgb[k] = gathered[c];
-          exitanceRgb[k] = rho[c] * (directRgb[k] + gathered[c]);
-          maxTotal = Math.max(maxTotal, directRgb[k] + gathered[c]);
-        }
-      }
-      residual = change / maxTotal;
-    }
-  }
-  const solveMs = performance.now() - t0;
+  const { indirectRgb, exitanceRgb, sweeps, residual, formFactorMs, solveMs } = interreflectRoom(patches, sight, directRgb, { tolerance, maxSweeps });
   return { room, surfaces, sight, sources, patches, directRgb, indirectRgb, exitanceRgb, sweeps, residual, timingsMs: { direct: directMs, formFactors: formFactorMs, solve: solveMs } };
 }
 
