@@ -8,7 +8,7 @@
  * Dimensions and their sources: docs/furniture.md.
  */
 import type { TriangleMesh } from '../../../mesh/triangleMesh';
-import { boxPart, composeParts, ellipsoidRings, frustumPart, ringedPart, slabRings, type MeshPart, type Ring } from './meshParts';
+import { boxPart, composeParts, ellipsoidRings, frustumPart, ringedPart, slabRings, type MeshPart } from './meshParts';
 import { objectFinishRgb } from './objectFinishes';
 
 export interface FurnitureItem {
@@ -54,36 +54,26 @@ function table(w: number, d: number, h: number, t: number, leg: number, inset: n
 }
 
 /**
- * An upholstered or eased block over x0…x1, y0…y1, z0…z1 (its widest ring exactly these bounds):
- * edges rounded with radius e, the middle plumped out by `bulge`, leaning by dz from bottom to top.
+ * An upholstered or eased block over x0…x1, y0…y1, z0…z1 (exactly these bounds), its plan corners
+ * and top edge bevelled (eTop), its bottom edge too where it shows (eBottom), leaning by dz from
+ * bottom to top. Flat facets only: few light-map charts (meshParts.ts, slabRings).
  */
-function cushion(material: string, x0: number, x1: number, y0: number, y1: number, z0: number, z1: number, e: number, bulge = 0, dz = 0): MeshPart {
+function cushion(material: string, x0: number, x1: number, y0: number, y1: number, z0: number, z1: number, eTop: number, eBottom = 0, dz = 0): MeshPart {
   const hx = (x1 - x0) / 2;
   const hz = (z1 - z0) / 2;
-  return ringedPart(material, (x0 + x1) / 2, (z0 + z1) / 2, slabRings(y0, y1, hx, hz, Math.min(hx, hz, e + bulge + 0.02), e, 2, bulge, 0, dz));
+  const rc = Math.min(hx, hz, Math.max(eTop, eBottom) + 0.02);
+  return ringedPart(material, (x0 + x1) / 2, (z0 + z1) / 2, slabRings(y0, y1, hx, hz, rc, eTop, eBottom, dz), 1);
 }
 
-/** A limb from y0 (radius r0) to y1 (radius r1) about (x, z), with rounded ends (a shin, a forearm). */
-function limb(material: string, x: number, z: number, y0: number, y1: number, r0: number, r1: number): MeshPart {
-  const c = Math.SQRT1_2;
-  const rings: Ring[] = [
-    [y0 + r0 * (1 - c), r0 * c, r0 * c, r0 * c],
-    [y0 + r0, r0, r0, r0],
-    [y1 - r1, r1, r1, r1],
-    [y1 - r1 * (1 - c), r1 * c, r1 * c, r1 * c],
-  ];
-  return ringedPart(material, x, z, rings, 3, y0, y1);
-}
-
-/** An ellipsoid centred at (x, yc, z) with semi-axes hx, ay, hz (a head, a hand, a cluster of leaves). */
-function blob(material: string, x: number, yc: number, z: number, hx: number, ay: number, hz: number, k = 3): MeshPart {
+/** An ellipsoid centred at (x, yc, z) with semi-axes hx, ay, hz, 2k − 1 rings (a head, a cluster of leaves). */
+function blob(material: string, x: number, yc: number, z: number, hx: number, ay: number, hz: number, k = 2): MeshPart {
   return ringedPart(material, x, z, ellipsoidRings(yc, ay, hx, hz, k), 2, yc - ay, yc + ay);
 }
 
 /** Both sides: the parts for x and for −x. */
 const mirrored = (make: (side: number) => MeshPart): MeshPart[] => [make(-1), make(1)];
 
-/** A sofa or armchair: a base on round feet, a back, rolled arms, plump seat cushions and back cushions leaning back. */
+/** A sofa or armchair: a base on round feet, a back, arms, seat cushions and back cushions leaning back. */
 function seating(w: number, d: number, h: number, seats: number): MeshPart[] {
   const feet = 0.1;
   const arm = 0.16;
@@ -92,21 +82,21 @@ function seating(w: number, d: number, h: number, seats: number): MeshPart[] {
     ...roundFeet('legs', w, d, 0.025, 0.05, feet + 0.02),
     cushion('frame', -w / 2, w / 2, feet, 0.34, -d / 2, d / 2, 0.02),
     cushion('frame', -w / 2, w / 2, 0.3, h, -d / 2, -d / 2 + back, 0.06),
-    ...mirrored((s) => cushion('frame', s < 0 ? -w / 2 : w / 2 - arm, s < 0 ? -w / 2 + arm : w / 2, 0.3, 0.62, -d / 2 + 0.1, d / 2, 0.06)),
+    ...mirrored((s) => cushion('frame', s < 0 ? -w / 2 : w / 2 - arm, s < 0 ? -w / 2 + arm : w / 2, 0.3, 0.62, -d / 2 + 0.1, d / 2, 0.05)),
   ];
   const inner = w - 2 * arm;
   for (let i = 0; i < seats; i++) {
-    const x0 = -w / 2 + arm + (inner * i) / seats + 0.004;
-    const x1 = -w / 2 + arm + (inner * (i + 1)) / seats - 0.004;
-    parts.push(cushion('cushions', x0, x1, 0.32, 0.47, -d / 2 + back, d / 2 - 0.01, 0.04, 0.012));
-    parts.push(cushion('cushions', x0, x1, 0.44, h - 0.05, -d / 2 + back - 0.02, -d / 2 + back + 0.16, 0.05, 0.015, -0.08));
+    const x0 = -w / 2 + arm + (inner * i) / seats + 0.006;
+    const x1 = -w / 2 + arm + (inner * (i + 1)) / seats - 0.006;
+    parts.push(cushion('cushions', x0, x1, 0.32, 0.47, -d / 2 + back, d / 2 - 0.01, 0.04));
+    parts.push(cushion('cushions', x0, x1, 0.44, h - 0.05, -d / 2 + back - 0.02, -d / 2 + back + 0.16, 0.05, 0.03, -0.08));
   }
   return parts;
 }
 
 /** Books standing on a board from y0, filling x0…x1 with a repeating pattern of widths and heights. */
 function bookRow(x0: number, x1: number, y0: number, z0: number, z1: number, maxHeight: number, seed: number): MeshPart[] {
-  const widths = [0.03, 0.045, 0.025, 0.05, 0.035, 0.04, 0.028];
+  const widths = [0.042, 0.06, 0.035, 0.07, 0.048, 0.055, 0.04];
   const heights = [0.24, 0.21, 0.28, 0.19, 0.3, 0.23, 0.26];
   const parts: MeshPart[] = [];
   let x = x0 + 0.01;
@@ -162,8 +152,8 @@ export const FURNITURE_LIBRARY: readonly FurnitureItem[] = [
           [0.9, 0.02, 0.02, 0.02, -0.02],
         ]),
       ),
-      cushion('back', -0.2, 0.2, 0.74, 0.88, -0.248, -0.222, 0.01, 0, -0.006),
-      cushion('back', -0.2, 0.2, 0.56, 0.62, -0.244, -0.222, 0.008, 0, -0.002),
+      cushion('back', -0.2, 0.2, 0.74, 0.88, -0.248, -0.222, 0.01, 0.01, -0.006),
+      cushion('back', -0.2, 0.2, 0.56, 0.62, -0.244, -0.222, 0.008, 0.008, -0.002),
     ],
   },
   {
@@ -236,10 +226,10 @@ export const FURNITURE_LIBRARY: readonly FurnitureItem[] = [
       cushion('frame', -0.85, 0.85, 0.12, 1, -1.075, -0.995, 0.03),
       ...[-0.96, 1.02].flatMap((z) => mirrored((s) => frustumPart('legs', s * 0.79, z, 0, 0.14, 0.03, 0.03, 8))),
       cushion('frame', -0.85, 0.85, 0.12, 0.32, -1, 1.075, 0.015),
-      cushion('mattress', -0.8, 0.8, 0.3, 0.52, -0.95, 1.055, 0.05, 0.008),
-      cushion('bedding', -0.83, 0.83, 0.47, 0.6, -0.35, 1.07, 0.06, 0.01),
-      cushion('bedding', -0.83, 0.83, 0.5, 0.64, -0.42, -0.2, 0.05, 0.01),
-      ...mirrored((s) => cushion('bedding', s < 0 ? -0.76 : 0.05, s < 0 ? -0.05 : 0.76, 0.5, 0.67, -0.94, -0.56, 0.06, 0.015)),
+      cushion('mattress', -0.8, 0.8, 0.3, 0.52, -0.95, 1.055, 0.05),
+      cushion('bedding', -0.83, 0.83, 0.47, 0.6, -0.35, 1.07, 0.05),
+      cushion('bedding', -0.83, 0.83, 0.5, 0.64, -0.42, -0.2, 0.05, 0.03),
+      ...mirrored((s) => cushion('bedding', s < 0 ? -0.76 : 0.05, s < 0 ? -0.05 : 0.76, 0.5, 0.67, -0.94, -0.56, 0.06, 0.04)),
     ],
   },
   {
@@ -297,14 +287,12 @@ export const FURNITURE_LIBRARY: readonly FurnitureItem[] = [
     finishes: { pot: 'terracotta', stem: 'walnut-veneer', leaves: 'leaf-green' },
     source: 'a large indoor plant (e.g. Ficus) 1.2-1.8 m high in a 30-40 cm pot',
     parts: () => [
-      frustumPart('pot', 0, 0, 0, 0.38, 0.14, 0.18),
+      frustumPart('pot', 0, 0, 0, 0.38, 0.14, 0.18, 12),
       frustumPart('stem', 0, 0, 0.36, 0.95, 0.022, 0.014, 8),
-      blob('leaves', 0.18, 0.95, 0, 0.12, 0.16, 0.1),
-      blob('leaves', -0.18, 0.85, 0.02, 0.12, 0.15, 0.1),
-      blob('leaves', 0.02, 1.05, 0.18, 0.1, 0.17, 0.12),
-      blob('leaves', -0.02, 0.9, -0.18, 0.1, 0.15, 0.12),
-      blob('leaves', 0, 1.02, 0, 0.17, 0.2, 0.17),
-      blob('leaves', 0.03, 1.28, -0.02, 0.15, 0.22, 0.14),
+      blob('leaves', 0, 0.92, 0, 0.3, 0.22, 0.3),
+      blob('leaves', 0.1, 1.1, -0.1, 0.16, 0.17, 0.16),
+      blob('leaves', -0.11, 1.08, 0.1, 0.15, 0.16, 0.15),
+      blob('leaves', 0.02, 1.29, 0, 0.16, 0.21, 0.16),
     ],
   },
   {
@@ -318,30 +306,42 @@ export const FURNITURE_LIBRARY: readonly FurnitureItem[] = [
     source: 'DIN 33402-2: adult stature about 1.75 m (men 50th percentile), shoulder width about 45-50 cm',
     parts: () => [
       ...mirrored((s) => cushion('shoes', s * 0.095 - 0.05, s * 0.095 + 0.05, 0, 0.085, -0.11, 0.15, 0.03)),
-      ...mirrored((s) => limb('trousers', s * 0.095, -0.005, 0.05, 0.53, 0.045, 0.058)),
-      ...mirrored((s) => limb('trousers', s * 0.095, 0, 0.46, 0.92, 0.06, 0.085)),
-      cushion('trousers', -0.175, 0.175, 0.8, 1.02, -0.15, 0.09, 0.06, 0.01),
+      ...mirrored((s) => frustumPart('trousers', s * 0.095, -0.005, 0.05, 0.53, 0.045, 0.058, 8)),
+      ...mirrored((s) => frustumPart('trousers', s * 0.095, 0, 0.5, 0.92, 0.06, 0.085, 8)),
+      cushion('trousers', -0.175, 0.175, 0.8, 1.02, -0.15, 0.09, 0.06, 0.05),
       ringedPart(
         'shirt',
         0,
         -0.025,
         [
           [0.95, 0.165, 0.105, 0.09],
-          [1.15, 0.18, 0.116, 0.095],
-          [1.32, 0.192, 0.125, 0.1],
-          [1.41, 0.195, 0.115, 0.1],
-          [1.46, 0.17, 0.09, 0.085],
-          [1.485, 0.12, 0.07, 0.065],
+          [1.3, 0.19, 0.125, 0.1],
+          [1.42, 0.195, 0.115, 0.1],
+          [1.485, 0.14, 0.08, 0.07],
         ],
-        3,
+        2,
         0.95,
         1.49,
       ),
-      ...mirrored((s) => limb('shirt', s * 0.205, -0.03, 1.07, 1.46, 0.04, 0.045)),
-      ...mirrored((s) => limb('skin', s * 0.21, -0.01, 0.8, 1.12, 0.03, 0.038)),
-      ...mirrored((s) => blob('skin', s * 0.21, 0.74, 0, 0.022, 0.085, 0.045, 2)),
+      // upper arms (sleeves), rounded over the shoulder
+      ...mirrored((s) =>
+        ringedPart(
+          'shirt',
+          s * 0.205,
+          -0.03,
+          [
+            [1.07, 0.04, 0.04, 0.04],
+            [1.38, 0.045, 0.045, 0.045],
+            [1.44, 0.03, 0.03, 0.03],
+          ],
+          2,
+          1.07,
+          1.46,
+        ),
+      ),
+      ...mirrored((s) => frustumPart('skin', s * 0.21, -0.01, 0.7, 1.1, 0.026, 0.036, 8)),
       frustumPart('skin', 0, -0.02, 1.44, 1.58, 0.055, 0.052, 8),
-      blob('skin', 0, 1.64, -0.005, 0.078, 0.11, 0.098, 4),
+      blob('skin', 0, 1.64, -0.005, 0.078, 0.11, 0.098, 3),
     ],
   },
 ];

@@ -166,23 +166,16 @@ export function ringedPart(material: string, cx: number, cz: number, rings: read
 }
 
 /**
- * Rings of a slab from y0 to y1 with plan half-sizes hx × hz, plan corner radius rc and its top
- * and bottom edges rounded with radius e < rc (quarter arcs of `steps` segments): an upholstered
- * cushion, a padded headboard, a table top with eased edges. `bulge` widens the middle (a plump cushion).
+ * Rings of a slab from y0 to y1 with plan half-sizes hx × hz and plan corner radius rc, its top edge
+ * bevelled by eTop and its bottom edge by eBottom (0: square, for a face that rests on something),
+ * the whole slab sheared by dz from bottom to top (a back cushion leaning back). With ringedPart's
+ * k = 1 every face is a flat facet: each side and bevel one quad, so the baker's planar light-map
+ * charts (docs/baker.md, "Objects: geometry") stay few — a bevelled cushion is 18 to 26 charts, a
+ * smoothly rounded one over 70.
  */
-export function slabRings(y0: number, y1: number, hx: number, hz: number, rc: number, e: number, steps = 2, bulge = 0, dz0 = 0, dz1 = dz0): Ring[] {
-  const rings: Ring[] = [];
-  const heights: [number, number][] = [];
-  for (let i = 0; i <= steps; i++) heights.push([y0 + e - e * Math.cos((i * Math.PI) / 2 / steps), e - e * Math.sin((i * Math.PI) / 2 / steps)]);
-  if (bulge > 0) heights.push([(y0 + y1) / 2, -bulge]);
-  for (let i = steps; i >= 0; i--) heights.push([y1 - e + e * Math.cos((i * Math.PI) / 2 / steps), e - e * Math.sin((i * Math.PI) / 2 / steps)]);
-  const grow = bulge > 0 ? bulge : 0;
-  for (const [y, inset] of heights) {
-    const d = inset + grow;
-    const t = (y - y0) / (y1 - y0);
-    rings.push([y, hx - d, hz - d, rc - d, dz0 + (dz1 - dz0) * t]);
-  }
-  return rings;
+export function slabRings(y0: number, y1: number, hx: number, hz: number, rc: number, eTop: number, eBottom = 0, dz = 0): Ring[] {
+  const at = (y: number, inset: number): Ring => [y, hx - inset, hz - inset, rc - inset, (dz * (y - y0)) / (y1 - y0)];
+  return [...(eBottom > 0 ? [at(y0, eBottom), at(y0 + eBottom, 0)] : [at(y0, 0)]), at(y1 - eTop, 0), at(y1, eTop)];
 }
 
 /**
