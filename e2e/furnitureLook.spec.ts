@@ -64,3 +64,20 @@ for (const [name, viewport] of Object.entries(SIZES)) {
     await page.screenshot({ path: `test-results/furniture/${name}-eye.png` });
   });
 }
+
+test('the furnished dining room in 3D at desktop size (for review: chairs, table veneer)', async ({ page }) => {
+  test.setTimeout(420_000);
+  await page.setViewportSize(SIZES.desktop);
+  await openDemo(page, 'fast');
+  await page.getByTestId('room-dining-room').click();
+  await expect.poll(async () => JSON.parse(await page.evaluate(() => window.luxbox!.getConfig())).configuration.room.width).toBe(5);
+  await page.getByTestId('tool-3d').click();
+  await expect(page.getByTestId('view3d-canvas')).toBeVisible();
+  await expect.poll(async () => (await status(page)).done, { timeout: 360_000, intervals: [2000] }).toBe(true);
+  mkdirSync('test-results/furniture', { recursive: true });
+  await page.screenshot({ path: 'test-results/furniture/dining-desktop-3d.png' });
+  await page.getByTestId('camera-eye').click();
+  await expect.poll(async () => (await status(page)).frames).toBeGreaterThan(0);
+  await page.waitForTimeout(500);
+  await page.screenshot({ path: 'test-results/furniture/dining-desktop-eye.png' });
+});

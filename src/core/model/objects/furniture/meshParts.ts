@@ -191,11 +191,6 @@ export function ellipsoidRings(yc: number, ay: number, hx: number, hz: number, k
   return rings;
 }
 
-/** The part moved by (x, y, z). */
-export function movedPart(part: MeshPart, x: number, y: number, z: number): MeshPart {
-  return { ...part, positions: part.positions.map((v, i) => v + [x, y, z][i % 3]) };
-}
-
 /**
  * The parts as one mesh: vertices concatenated, one material per distinct part material in
  * order of first use, each with its reflectance from `reflectanceOf`.
