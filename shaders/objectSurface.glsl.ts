@@ -31,7 +31,12 @@ void main() {
  * Y(E). The back of a surface is dark (the baker lights only the counterclockwise side; closed
  * meshes never show it). The isolines follow E itself (no 4-tap smoothing as on the walls: the
  * taps would cross into a neighbouring chart's gutter). The selected object (uSelected = its
- * index, −1 = none) is tinted towards the UI accent.
+ * index, −1 = none) is tinted towards the UI accent. In light mode a texel whose ρ is one of
+ * the textured object finishes' (uSlotRho, createRoomObjects.ts) is modulated by that finish's
+ * pattern m (mean exactly 1, finishTexture.ts), so the mean displayed reflectance stays the ρ the
+ * baker used (docs/viewer.md, "Surface textures"). The pattern is projected on the plane the face
+ * turns to most (world metres): tops and seats show it in x, z; upright faces with u along y, so
+ * the grain of legs and sides runs up.
  */
 export const objectSurfaceFragment = (scale: FalseColorScaleFacts): string => /* glsl */ `
 precision highp float;
@@ -45,6 +50,12 @@ uniform float uExposure;
 uniform mat3 uAdapt;
 uniform int uMode;
 uniform float uSelected;
+uniform sampler2D uSlot0;
+uniform sampler2D uSlot1;
+uniform vec3 uSlotRho[2];
+uniform vec3 uSlotGain[2];
+uniform float uSlotPeriod[2];
+uniform float uSlotOn[2];
 out vec4 fragColor;
 ${toneMapGlsl}
 ${falseColorGlsl(scale)}
@@ -60,7 +71,15 @@ void main() {
     float lux = dot(E, Y);
     color = luxFalseColor(lux, lux, facing);
   } else {
-    color = luxShade(rho * E / 3.14159265358979, uExposure, uAdapt, uMode);
+    vec3 n = abs(vNormal);
+    vec2 st = n.y >= max(n.x, n.z) ? vWorld.xz : (n.x >= n.z ? vWorld.yz : vWorld.yx);
+    // Both patterns sampled outside the branch: implicit mip derivatives are undefined in non-uniform control flow.
+    vec3 m0 = texture(uSlot0, st / uSlotPeriod[0]).rgb * uSlotGain[0];
+    vec3 m1 = texture(uSlot1, st / uSlotPeriod[1]).rgb * uSlotGain[1];
+    vec3 m = vec3(1.0);
+    if (uSlotOn[0] > 0.5 && all(lessThan(abs(rho - uSlotRho[0]), vec3(1e-4)))) m = m0;
+    else if (uSlotOn[1] > 0.5 && all(lessThan(abs(rho - uSlotRho[1]), vec3(1e-4)))) m = m1;
+    color = luxShade(rho * m * E / 3.14159265358979, uExposure, uAdapt, uMode);
   }
   if (abs(vObject - uSelected) < 0.5) color = mix(color, vec3(0.16, 0.56, 0.98), 0.3);
   fragColor = vec4(color, 1.0);

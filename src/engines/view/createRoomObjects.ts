@@ -6,6 +6,10 @@ import { dilateReflectance } from './dilateReflectance';
 import { MAX_LEVELS, TURBO_B, TURBO_G, TURBO_R } from './falseColorScale';
 import type { ObjectLight } from './objectLight';
 import { objectRenderGeometry, type ObjectRenderGeometry } from './objectRenderGeometry';
+import { objectFinishRgb } from '../../core/model/objects/furniture/objectFinishes';
+import { uploadModulation, type FinishTextureOnGpu } from './createFinishTextures';
+import { finishModulation } from './finishTexture';
+import { OBJECT_FINISH_TEXTURE_OF, OBJECT_TEXTURE_SLOTS } from './finishTextureKinds';
 
 const fragmentShader = objectSurfaceFragment({ maxLevels: MAX_LEVELS, turbo: [TURBO_R, TURBO_G, TURBO_B] });
 
@@ -26,6 +30,8 @@ export interface RoomObjects {
   setLight(light: ObjectLight | null): void;
   /** Highlight one object by id (null: none). */
   setSelected(id: string | null): void;
+  /** Draw the veneers' wood grain (default on; light mode only): OBJECT_FINISH_TEXTURE_OF. */
+  setFinishTextures(on: boolean): void;
   /** The object id of a triangle of the drawn mesh (three's Raycaster faceIndex), or null. */
   objectAt(faceIndex: number): string | null;
   readonly geometry: ObjectRenderGeometry | null;
@@ -41,7 +47,18 @@ export function createRoomObjects(display: SharedDisplayUniforms, renderer: THRE
     glslVersion: THREE.GLSL3,
     vertexShader: objectSurfaceVertex,
     fragmentShader,
-    uniforms: { uIlluminance: { value: null }, uReflectance: { value: null }, uSelected: selected, ...display },
+    uniforms: {
+      uIlluminance: { value: null },
+      uReflectance: { value: null },
+      uSelected: selected,
+      uSlot0: { value: null },
+      uSlot1: { value: null },
+      uSlotRho: { value: Array.from({ length: OBJECT_TEXTURE_SLOTS }, () => new THREE.Vector3(-1, -1, -1)) },
+      uSlotGain: { value: Array.from({ length: OBJECT_TEXTURE_SLOTS }, () => new THREE.Vector3(1, 1, 1)) },
+      uSlotPeriod: { value: new Array<number>(OBJECT_TEXTURE_SLOTS).fill(1) },
+      uSlotOn: { value: new Array<number>(OBJECT_TEXTURE_SLOTS).fill(0) },
+      ...display,
+    },
     side: THREE.DoubleSide,
     // Pushed back a hair in depth so the selection's edge lines, which lie in the surfaces, win the depth test.
     polygonOffset: true,
@@ -56,6 +73,25 @@ export function createRoomObjects(display: SharedDisplayUniforms, renderer: THRE
   let illuminance: THREE.DataTexture | null = null;
   let reflectance: THREE.DataTexture | null = null;
   let selectedId: string | null = null;
+  // The textured object finishes' patterns, made on first use (a 512² pattern takes a moment on the CPU).
+  const slotFinishes = Object.entries(OBJECT_FINISH_TEXTURE_OF).slice(0, OBJECT_TEXTURE_SLOTS);
+  let slots: FinishTextureOnGpu[] | null = null;
+  let texturesOn = true;
+  const applySlots = () => {
+    const u = material.uniforms;
+    if (texturesOn && mesh && !slots) {
+      const anisotropy = Math.min(8, renderer.capabilities.getMaxAnisotropy());
+      slots = slotFinishes.map(([id, kind]) => uploadModulation(finishModulation(kind, objectFinishRgb(id), 1), anisotropy));
+    }
+    slotFinishes.forEach(([id], i) => {
+      const t = texturesOn && slots ? slots[i] : null;
+      u[`uSlot${i}`].value = t?.texture ?? null;
+      (u.uSlotRho.value as THREE.Vector3[])[i].set(...objectFinishRgb(id));
+      (u.uSlotGain.value as THREE.Vector3[])[i].set(...(t?.gain ?? [1, 1, 1]));
+      (u.uSlotPeriod.value as number[])[i] = t?.period ?? 1;
+      (u.uSlotOn.value as number[])[i] = t ? 1 : 0;
+    });
+  };
 
   const clearEdges = () => {
     if (!edges) return;
@@ -129,6 +165,7 @@ export function createRoomObjects(display: SharedDisplayUniforms, renderer: THRE
       reflectance.generateMipmaps = false;
       reflectance.needsUpdate = true;
       material.uniforms.uReflectance.value = reflectance;
+      applySlots();
       showSelection();
     },
     setLight(light) {
@@ -161,6 +198,10 @@ export function createRoomObjects(display: SharedDisplayUniforms, renderer: THRE
       mesh.visible = true;
       if (edges) edges.visible = true;
     },
+    setFinishTextures(on) {
+      texturesOn = on;
+      applySlots();
+    },
     setSelected(id) {
       if (id === selectedId) return;
       selectedId = id;
@@ -172,6 +213,8 @@ export function createRoomObjects(display: SharedDisplayUniforms, renderer: THRE
     },
     dispose() {
       clear();
+      for (const t of slots ?? []) t.texture.dispose();
+      slots = null;
       material.dispose();
       edgeMaterial.dispose();
     },

@@ -107,6 +107,18 @@ function woodField(x: number, y: number, noise: NoiseSet): number {
   return joint * tone * grain;
 }
 
+/**
+ * Wood veneer on furniture: one sheet, no plank joints (a table top is not a floor), grain lines
+ * about 3 cm apart along u that wander slowly (12 per 0.4 m period, warped by a coarse noise), with fine
+ * fibres along them. All its variation is fine, so a table top's mean under a pool of light is the
+ * pattern's mean (tests/engines/view/objectWoodTexture.test.ts).
+ */
+function veneerField(x: number, y: number, noise: NoiseSet): number {
+  const t = y * 12 + 1.5 * fbm(noise, x, y, [2, 4]);
+  const line = 0.5 - 0.5 * Math.cos(2 * Math.PI * t);
+  return 0.8 + 0.35 * line * line + 0.1 * noise.stretched(4, 256)(x, y);
+}
+
 /** Square tiles 0.6 m (a 1.2 m period of 2 × 2), grout joints 5 mm, a slight per-tile shade and a fine mottle. */
 function tileField(x: number, y: number, noise: NoiseSet): number {
   const n = 2;
@@ -122,6 +134,7 @@ const RECIPES: Record<FinishTexture, KindRecipe> = {
   // Painted plaster: a soft trowel mottle of 3 to 25 cm.
   plaster: { period: 1, size: 256, amplitude: 0.06, tint: [1, 1, 1], field: (x, y, noise) => fbm(noise, x, y, [4, 8, 16, 32]) },
   wood: { period: 1.44, size: 512, amplitude: 0.22, tint: [1, 1.15, 1.35], field: woodField },
+  veneer: { period: 0.4, size: 512, amplitude: 0.18, tint: [1, 1.15, 1.35], field: veneerField },
   tiles: { period: 1.2, size: 512, amplitude: 0.2, tint: [1, 1, 1], field: tileField },
   // Concrete: cloudy patches of 10 to 50 cm with small dark pores.
   concrete: {

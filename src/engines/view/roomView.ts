@@ -99,7 +99,10 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
     setExposure: surfaces.setExposure,
     setAdaptation: surfaces.setAdaptation,
     setMode: surfaces.setMode,
-    setFinishTextures: surfaces.setFinishTextures,
+    setFinishTextures(on) {
+      surfaces.setFinishTextures(on);
+      objects.setFinishTextures(on);
+    },
     setFixtures: hardware.setFixtures,
     setModuleWeights: hardware.setModuleWeights,
     setObjects: objects.setGeometry,

@@ -1,12 +1,12 @@
 import { memo, type ReactNode } from 'react';
-import { FURNITURE_LIBRARY, type FurnitureItem } from '../../core/model/objects/furniture/furnitureLibrary';
+import { FURNITURE_LIBRARY } from '../../core/model/objects/furniture/furnitureLibrary';
 import { ActionButton } from './ActionButton';
 import type { ActionGate } from './actionGate';
-import { libraryItemOutline } from './objectShapes';
 import { useI18n } from '../i18n/useI18n';
 import { ENGLISH } from '../i18n/english';
 import type { Format } from '../i18n/createFormat';
 import { furnitureName } from '../i18n/catalogNames';
+import thumbnailSheet from './furnitureThumbnails.png';
 
 /** The drag-and-drop data type carrying a library item id from the panel onto the plan. */
 export const FURNITURE_DRAG_TYPE = 'application/x-luxbox-furniture';
@@ -21,30 +21,18 @@ export function itemDimensions(size: { width: number; depth: number; height: num
   return `${centimetres(size.width * scale, format)} × ${centimetres(size.depth * scale, format)} × ${centimetres(size.height * scale, format)} cm`;
 }
 
+/** CSS pixels a side of a library thumbnail (the sheet has twice as many, for high-density screens). */
+const THUMBNAIL_CSS_PIXELS = 48;
+
 /**
- * A small drawing of an item from the model's own geometry (not an image): its outline seen
- * from above, or for a wall item its front (width × height), as it is seen on the wall.
+ * An item's picture: its cell of the sprite sheet drawn from the item's own mesh and default
+ * finishes by scripts/furnitureThumbnails.ts (a three-quarter view, flat-shaded), one image for
+ * the whole library so the first screen loads one small file and no drawing code. The cells are
+ * in FURNITURE_LIBRARY's order; a test checks the committed sheet is what the meshes give.
  */
-const ItemThumbnail = memo(function ItemThumbnail({ item }: { item: FurnitureItem }) {
-  const polygons =
-    item.mount === 'wall'
-      ? [
-          [
-            { x: -item.width / 2, z: -item.height / 2 },
-            { x: item.width / 2, z: -item.height / 2 },
-            { x: item.width / 2, z: item.height / 2 },
-            { x: -item.width / 2, z: item.height / 2 },
-          ],
-        ]
-      : libraryItemOutline(item.id);
-  const size = Math.max(item.width, item.mount === 'wall' ? item.height : item.depth);
-  const pad = size * 0.08;
-  const d = polygons.map((p) => `M${p.map((q) => `${q.x},${q.z}`).join('L')}Z`).join('');
-  return (
-    <svg width={40} height={40} viewBox={`${-size / 2 - pad} ${-size / 2 - pad} ${size + 2 * pad} ${size + 2 * pad}`} aria-hidden>
-      <path d={d} fillRule="evenodd" fill="#8a6d4b" fillOpacity={0.35} stroke="#4a5160" strokeWidth={size / 40} />
-    </svg>
-  );
+const ItemThumbnail = memo(function ItemThumbnail({ index }: { index: number }) {
+  const s = THUMBNAIL_CSS_PIXELS;
+  return <span className="furniture-thumbnail" aria-hidden style={{ width: s, height: s, backgroundImage: `url(${thumbnailSheet})`, backgroundSize: `${s * FURNITURE_LIBRARY.length}px ${s}px`, backgroundPosition: `${-s * index}px 0` }} />;
 });
 
 export interface FurniturePanelProps {
@@ -66,7 +54,7 @@ export function FurniturePanel({ gate, onAdd, children }: FurniturePanelProps) {
     <section className="panel-section" aria-labelledby="furniture-title" data-testid="furniture-panel">
       <h2 id="furniture-title">{t('planner.furniture')}</h2>
       <ul className="furniture-grid">
-        {FURNITURE_LIBRARY.map((item) => (
+        {FURNITURE_LIBRARY.map((item, index) => (
           <li
             key={item.id}
             draggable
@@ -82,7 +70,7 @@ export function FurniturePanel({ gate, onAdd, children }: FurniturePanelProps) {
               onDisabledPress={gate.explain}
               testId={`furniture-${item.id}`}
             >
-              <ItemThumbnail item={item} />
+              <ItemThumbnail index={index} />
               <span>
                 <span className="preset-name">{furnitureName(t, item)}</span>
                 <span className="preset-detail">{itemDimensions(item, 1, format)}</span>

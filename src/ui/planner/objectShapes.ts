@@ -5,7 +5,7 @@
  * src/core/mesh/placeMesh.ts), so moving, turning or resizing an object costs a few hundred
  * point transforms, not a new trace.
  */
-import { createConfiguration, type Configuration } from '../../core/model/configuration/configuration';
+import type { Configuration } from '../../core/model/configuration/configuration';
 import { objectPlacement, sourceMesh } from '../../core/model/objects/objectGeometry';
 import { placementTransform } from '../../core/mesh/placeMesh';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
@@ -181,14 +181,4 @@ export function objectPolygons(config: Configuration, objectId: string): PlanPoi
       return { x: w[0], z: w[2] };
     }),
   );
-}
-
-/** An item's outline from above at scale 1 and yaw 0, about its origin (the panel's thumbnails). */
-export function libraryItemOutline(itemId: string): PlanPoint[][] {
-  const id = 'thumbnail';
-  const config: Configuration = {
-    ...createConfiguration({ width: 30, depth: 30, height: 8 }),
-    objects: [{ id, source: { kind: 'library', item: itemId }, placement: { on: 'floor', x: 15, z: 15 }, yaw: 0, scale: 1, finishes: {} }],
-  };
-  return objectPolygons(config, id).map((poly) => poly.map((p) => ({ x: p.x - 15, z: p.z - 15 })));
 }

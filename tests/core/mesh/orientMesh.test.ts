@@ -88,7 +88,7 @@ describe('closed parts', () => {
     expect(normalOf(out, 2)[1]).toBeCloseTo(-1, 12);
   });
 
-  it('two boxes glued face to face (shared corners, as the library’s sofa cushions): one closed solid, the glued faces inside it; inside-out gives the same triangles', () => {
+  it('two boxes glued face to face (shared corners, as cushions modelled side by side): one closed solid, the glued faces inside it; inside-out gives the same triangles', () => {
     const glued = gluedBoxes();
     const written = orientMesh(glued, always);
     expect(written.summary).toMatchObject({ parts: 1, closed: 1, turnedOutward: 0, enclosedFaces: 4, backTriangles: 0, undecided: 0 });

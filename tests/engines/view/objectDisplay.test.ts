@@ -32,6 +32,8 @@ describe('objects on screen', () => {
     const exposure = 0.02;
     view.setExposure(exposure);
     view.setMode('light');
+    // The pure map: the veneer's grain (objectWoodTexture.test.ts) would modulate ρ around its mean.
+    view.setFinishTextures(false);
     // Straight down from 1.75 m above the top (a hair off vertical so "up" is defined): the top spans every column.
     view.setCamera({ position: [2.5, 2.5, 2.0 + 1e-3], target: [2.5, 0.75, 2.0], fov: 40 }, W / H);
     view.render(renderer);

@@ -3,7 +3,7 @@ import { createConfiguration, type Configuration, type ObjectPlacement } from '.
 import { boxPart, composeParts } from '../../../src/core/model/objects/furniture/meshParts';
 import type { TriangleMesh } from '../../../src/core/mesh/triangleMesh';
 import { insidePolygon, objectAt } from '../../../src/ui/planner/planHitTest';
-import { OUTLINE_CELL, libraryItemOutline, objectPolygons } from '../../../src/ui/planner/objectShapes';
+import { OUTLINE_CELL, objectPolygons } from '../../../src/ui/planner/objectShapes';
 import type { PlanPoint } from '../../../src/ui/planner/viewTransform';
 
 /** Shoelace area of loops, even-odd: holes (the opposite winding) subtract. */
@@ -30,6 +30,16 @@ function bounds(loops: PlanPoint[][]) {
 /** A configuration holding one imported mesh as object 'o1'. */
 function withMesh(mesh: TriangleMesh, placement: ObjectPlacement = { on: 'floor', x: 2, z: 2 }, yaw = 0, scale = 1): Configuration {
   return { ...createConfiguration(), objects: [{ id: 'o1', source: { kind: 'imported', mesh: 'i1' }, placement, yaw, scale, finishes: {} }], importedMeshes: { i1: { name: 'test.obj', mesh, units: 'm' } } };
+}
+
+/** A library item's outline from above at scale 1 and yaw 0, about its origin (placed alone in a large room). */
+function libraryItemOutline(itemId: string): PlanPoint[][] {
+  const id = 'alone';
+  const config: Configuration = {
+    ...createConfiguration({ width: 30, depth: 30, height: 8 }),
+    objects: [{ id, source: { kind: 'library', item: itemId }, placement: { on: 'floor', x: 15, z: 15 }, yaw: 0, scale: 1, finishes: {} }],
+  };
+  return objectPolygons(config, id).map((poly) => poly.map((p) => ({ x: p.x - 15, z: p.z - 15 })));
 }
 
 const grey = () => [0.5, 0.5, 0.5] as [number, number, number];

@@ -1,12 +1,14 @@
 /**
- * The furniture library: real-size items built from closed boxes and frusta (meshParts.ts).
+ * The furniture library: real-size items built from closed convex parts (meshParts.ts): boxes,
+ * frusta, and ringed solids for what is upholstered or alive (cushions with rounded edges, limbs,
+ * heads, leaf clusters), so each piece reads as what it is.
  * Frame of every item: metres, y up, front toward +z. Floor items: origin at the centre of the
  * footprint on the floor (x ∈ ±width/2, z ∈ ±depth/2, y ∈ [0, height]). Wall items: origin at
  * the centre of the back (x ∈ ±width/2, y ∈ ±height/2, z ∈ [0, depth], back on z = 0).
  * Dimensions and their sources: docs/furniture.md.
  */
 import type { TriangleMesh } from '../../../mesh/triangleMesh';
-import { boxPart, composeParts, frustumPart, type MeshPart } from './meshParts';
+import { boxPart, composeParts, ellipsoidRings, frustumPart, ringedPart, slabRings, type MeshPart } from './meshParts';
 import { objectFinishRgb } from './objectFinishes';
 
 export interface FurnitureItem {
@@ -51,33 +53,50 @@ function table(w: number, d: number, h: number, t: number, leg: number, inset: n
   return [box('top', [-w / 2, h - t, -d / 2], [w / 2, h, d / 2]), ...fourLegs('legs', w, d, leg, inset, h - t)];
 }
 
-/** A sofa or armchair: plinth frame on round feet, arms, back, seat and back cushions. */
+/**
+ * An upholstered or eased block over x0…x1, y0…y1, z0…z1 (exactly these bounds), its plan corners
+ * and top edge bevelled (eTop), its bottom edge too where it shows (eBottom), leaning by dz from
+ * bottom to top. Flat facets only: few light-map charts (meshParts.ts, slabRings).
+ */
+function cushion(material: string, x0: number, x1: number, y0: number, y1: number, z0: number, z1: number, eTop: number, eBottom = 0, dz = 0): MeshPart {
+  const hx = (x1 - x0) / 2;
+  const hz = (z1 - z0) / 2;
+  const rc = Math.min(hx, hz, Math.max(eTop, eBottom) + 0.02);
+  return ringedPart(material, (x0 + x1) / 2, (z0 + z1) / 2, slabRings(y0, y1, hx, hz, rc, eTop, eBottom, dz), 1);
+}
+
+/** An ellipsoid centred at (x, yc, z) with semi-axes hx, ay, hz, 2k − 1 rings (a head, a cluster of leaves). */
+function blob(material: string, x: number, yc: number, z: number, hx: number, ay: number, hz: number, k = 2): MeshPart {
+  return ringedPart(material, x, z, ellipsoidRings(yc, ay, hx, hz, k), 2, yc - ay, yc + ay);
+}
+
+/** Both sides: the parts for x and for −x. */
+const mirrored = (make: (side: number) => MeshPart): MeshPart[] => [make(-1), make(1)];
+
+/** A sofa or armchair: a base on round feet, a back, arms, seat cushions and back cushions leaning back. */
 function seating(w: number, d: number, h: number, seats: number): MeshPart[] {
   const feet = 0.1;
-  const seatTop = 0.44;
   const arm = 0.16;
-  const armTop = 0.62;
   const back = 0.2;
   const parts: MeshPart[] = [
-    ...roundFeet('legs', w, d, 0.025, 0.05, feet),
-    box('frame', [-w / 2, feet, -d / 2], [w / 2, 0.32, d / 2]),
-    box('frame', [-w / 2, 0.32, -d / 2], [w / 2, h, -d / 2 + back]),
-    box('frame', [-w / 2, 0.32, -d / 2 + back], [-w / 2 + arm, armTop, d / 2]),
-    box('frame', [w / 2 - arm, 0.32, -d / 2 + back], [w / 2, armTop, d / 2]),
+    ...roundFeet('legs', w, d, 0.025, 0.05, feet + 0.02),
+    cushion('frame', -w / 2, w / 2, feet, 0.34, -d / 2, d / 2, 0.02),
+    cushion('frame', -w / 2, w / 2, 0.3, h, -d / 2, -d / 2 + back, 0.06),
+    ...mirrored((s) => cushion('frame', s < 0 ? -w / 2 : w / 2 - arm, s < 0 ? -w / 2 + arm : w / 2, 0.3, 0.62, -d / 2 + 0.1, d / 2, 0.05)),
   ];
   const inner = w - 2 * arm;
   for (let i = 0; i < seats; i++) {
-    const x0 = -w / 2 + arm + (inner * i) / seats;
-    const x1 = -w / 2 + arm + (inner * (i + 1)) / seats;
-    parts.push(box('cushions', [x0, 0.32, -d / 2 + back], [x1, seatTop, d / 2]));
-    parts.push(box('cushions', [x0, seatTop, -d / 2 + back], [x1, h - 0.08, -d / 2 + back + 0.16]));
+    const x0 = -w / 2 + arm + (inner * i) / seats + 0.006;
+    const x1 = -w / 2 + arm + (inner * (i + 1)) / seats - 0.006;
+    parts.push(cushion('cushions', x0, x1, 0.32, 0.47, -d / 2 + back, d / 2 - 0.01, 0.04));
+    parts.push(cushion('cushions', x0, x1, 0.44, h - 0.05, -d / 2 + back - 0.02, -d / 2 + back + 0.16, 0.05, 0.03, -0.08));
   }
   return parts;
 }
 
 /** Books standing on a board from y0, filling x0…x1 with a repeating pattern of widths and heights. */
 function bookRow(x0: number, x1: number, y0: number, z0: number, z1: number, maxHeight: number, seed: number): MeshPart[] {
-  const widths = [0.03, 0.045, 0.025, 0.05, 0.035, 0.04, 0.028];
+  const widths = [0.042, 0.06, 0.035, 0.07, 0.048, 0.055, 0.04];
   const heights = [0.24, 0.21, 0.28, 0.19, 0.3, 0.23, 0.26];
   const parts: MeshPart[] = [];
   let x = x0 + 0.01;
@@ -112,7 +131,7 @@ export const FURNITURE_LIBRARY: readonly FurnitureItem[] = [
     height: 0.45,
     finishes: { top: 'walnut-veneer', legs: 'black-metal' },
     source: 'common sizes 100-130 × 50-70 cm, 40-45 cm high (about sofa seat height)',
-    parts: () => table(1.2, 0.6, 0.45, 0.03, 0.04, 0.03),
+    parts: () => [cushion('top', -0.6, 0.6, 0.42, 0.45, -0.3, 0.3, 0.01), ...roundFeet('legs', 1.2, 0.6, 0.018, 0.05, 0.43)],
   },
   {
     id: 'chair',
@@ -123,7 +142,19 @@ export const FURNITURE_LIBRARY: readonly FurnitureItem[] = [
     height: 0.9,
     finishes: { seat: 'oak-veneer', back: 'oak-veneer', legs: 'oak-veneer' },
     source: 'Neufert / EN 1729 adult chair: seat height 45 cm, seat 40-45 cm wide and deep, backrest to 85-90 cm',
-    parts: () => [box('seat', [-0.225, 0.42, -0.26], [0.225, 0.46, 0.26]), box('back', [-0.225, 0.46, -0.26], [0.225, 0.9, -0.23]), ...fourLegs('legs', 0.45, 0.52, 0.035, 0.01, 0.42)],
+    parts: () => [
+      cushion('seat', -0.225, 0.225, 0.42, 0.46, -0.24, 0.26, 0.012),
+      ...mirrored((s) => frustumPart('legs', s * 0.19, 0.215, 0, 0.44, 0.015, 0.019, 8)),
+      // back posts run from the floor to the top rail, leaning back 2 cm
+      ...mirrored((s) =>
+        ringedPart('back', s * 0.195, -0.22, [
+          [0, 0.02, 0.02, 0.02],
+          [0.9, 0.02, 0.02, 0.02, -0.02],
+        ]),
+      ),
+      cushion('back', -0.2, 0.2, 0.74, 0.88, -0.248, -0.222, 0.01, 0.01, -0.006),
+      cushion('back', -0.2, 0.2, 0.56, 0.62, -0.244, -0.222, 0.008, 0.008, -0.002),
+    ],
   },
   {
     id: 'sofa',
@@ -192,13 +223,13 @@ export const FURNITURE_LIBRARY: readonly FurnitureItem[] = [
     finishes: { frame: 'oak-veneer', legs: 'oak-veneer', mattress: 'white-linen', bedding: 'white-linen' },
     source: 'DIN 68880 / Neufert: mattress 160 × 200 cm, about 45-55 cm top height; frame adds 5 cm each side; headboard about 1 m',
     parts: () => [
-      box('frame', [-0.85, 0, -1.075], [0.85, 1, -0.995]),
-      ...[-0.83, 0.77].flatMap((x) => [-0.975, 0.995].map((z) => box('legs', [x, 0, z], [x + 0.06, 0.12, z + 0.06]))),
-      box('frame', [-0.85, 0.12, -0.995], [0.85, 0.3, 1.075]),
-      box('mattress', [-0.8, 0.3, -0.945], [0.8, 0.5, 1.055]),
-      box('bedding', [-0.8, 0.5, -0.3], [0.8, 0.56, 1.06]),
-      box('bedding', [-0.75, 0.5, -0.93], [-0.05, 0.62, -0.55]),
-      box('bedding', [0.05, 0.5, -0.93], [0.75, 0.62, -0.55]),
+      cushion('frame', -0.85, 0.85, 0.12, 1, -1.075, -0.995, 0.03),
+      ...[-0.96, 1.02].flatMap((z) => mirrored((s) => frustumPart('legs', s * 0.79, z, 0, 0.14, 0.03, 0.03, 8))),
+      cushion('frame', -0.85, 0.85, 0.12, 0.32, -1, 1.075, 0.015),
+      cushion('mattress', -0.8, 0.8, 0.3, 0.52, -0.95, 1.055, 0.05),
+      cushion('bedding', -0.83, 0.83, 0.47, 0.6, -0.35, 1.07, 0.05),
+      cushion('bedding', -0.83, 0.83, 0.5, 0.64, -0.42, -0.2, 0.05, 0.03),
+      ...mirrored((s) => cushion('bedding', s < 0 ? -0.76 : 0.05, s < 0 ? -0.05 : 0.76, 0.5, 0.67, -0.94, -0.56, 0.06, 0.04)),
     ],
   },
   {
@@ -255,7 +286,14 @@ export const FURNITURE_LIBRARY: readonly FurnitureItem[] = [
     height: 1.5,
     finishes: { pot: 'terracotta', stem: 'walnut-veneer', leaves: 'leaf-green' },
     source: 'a large indoor plant (e.g. Ficus) 1.2-1.8 m high in a 30-40 cm pot',
-    parts: () => [frustumPart('pot', 0, 0, 0, 0.38, 0.14, 0.18), frustumPart('stem', 0, 0, 0.38, 0.7, 0.02, 0.015, 8), frustumPart('leaves', 0, 0, 0.6, 1.05, 0.12, 0.3), frustumPart('leaves', 0, 0, 1.05, 1.5, 0.26, 0.05)],
+    parts: () => [
+      frustumPart('pot', 0, 0, 0, 0.38, 0.14, 0.18, 12),
+      frustumPart('stem', 0, 0, 0.36, 0.95, 0.022, 0.014, 8),
+      blob('leaves', 0, 0.92, 0, 0.3, 0.22, 0.3),
+      blob('leaves', 0.1, 1.1, -0.1, 0.16, 0.17, 0.16),
+      blob('leaves', -0.11, 1.08, 0.1, 0.15, 0.16, 0.15),
+      blob('leaves', 0.02, 1.29, 0, 0.16, 0.21, 0.16),
+    ],
   },
   {
     id: 'person',
@@ -267,17 +305,43 @@ export const FURNITURE_LIBRARY: readonly FurnitureItem[] = [
     finishes: { shoes: 'black-metal', trousers: 'denim', shirt: 'mid-grey-paint', skin: 'skin' },
     source: 'DIN 33402-2: adult stature about 1.75 m (men 50th percentile), shoulder width about 45-50 cm',
     parts: () => [
-      box('shoes', [-0.16, 0, -0.15], [-0.04, 0.07, 0.15]),
-      box('shoes', [0.04, 0, -0.15], [0.16, 0.07, 0.15]),
-      box('trousers', [-0.155, 0.07, -0.08], [-0.01, 0.9, 0.08]),
-      box('trousers', [0.01, 0.07, -0.08], [0.155, 0.9, 0.08]),
-      box('shirt', [-0.19, 0.88, -0.11], [0.19, 1.47, 0.11]),
-      box('shirt', [-0.25, 1.0, -0.06], [-0.19, 1.45, 0.06]),
-      box('shirt', [0.19, 1.0, -0.06], [0.25, 1.45, 0.06]),
-      box('skin', [-0.245, 0.8, -0.05], [-0.195, 1.0, 0.05]),
-      box('skin', [0.195, 0.8, -0.05], [0.245, 1.0, 0.05]),
-      frustumPart('skin', 0, 0, 1.47, 1.54, 0.055, 0.055, 8),
-      frustumPart('skin', 0, 0, 1.54, 1.75, 0.095, 0.085, 16),
+      ...mirrored((s) => cushion('shoes', s * 0.095 - 0.05, s * 0.095 + 0.05, 0, 0.085, -0.11, 0.15, 0.03)),
+      ...mirrored((s) => frustumPart('trousers', s * 0.095, -0.005, 0.05, 0.53, 0.045, 0.058, 8)),
+      ...mirrored((s) => frustumPart('trousers', s * 0.095, 0, 0.5, 0.92, 0.06, 0.085, 8)),
+      cushion('trousers', -0.175, 0.175, 0.8, 1.02, -0.15, 0.09, 0.06, 0.05),
+      ringedPart(
+        'shirt',
+        0,
+        -0.025,
+        [
+          [0.95, 0.165, 0.105, 0.09],
+          [1.3, 0.19, 0.125, 0.1],
+          [1.42, 0.195, 0.115, 0.1],
+          [1.485, 0.14, 0.08, 0.07],
+        ],
+        2,
+        0.95,
+        1.49,
+      ),
+      // upper arms (sleeves), rounded over the shoulder
+      ...mirrored((s) =>
+        ringedPart(
+          'shirt',
+          s * 0.205,
+          -0.03,
+          [
+            [1.07, 0.04, 0.04, 0.04],
+            [1.38, 0.045, 0.045, 0.045],
+            [1.44, 0.03, 0.03, 0.03],
+          ],
+          2,
+          1.07,
+          1.46,
+        ),
+      ),
+      ...mirrored((s) => frustumPart('skin', s * 0.21, -0.01, 0.7, 1.1, 0.026, 0.036, 8)),
+      frustumPart('skin', 0, -0.02, 1.44, 1.58, 0.055, 0.052, 8),
+      blob('skin', 0, 1.64, -0.005, 0.078, 0.11, 0.098, 3),
     ],
   },
 ];

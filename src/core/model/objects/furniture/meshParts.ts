@@ -101,6 +101,97 @@ export function frustumPart(material: string, cx: number, cz: number, y0: number
 }
 
 /**
+ * One horizontal ring of a {@link ringedPart}: at height y, a rectangle of half-sizes hx × hz with
+ * its corners rounded to radius r (0 < r ≤ min(hx, hz); r = hx = hz is a circle), its centre
+ * moved by dx, dz from the part's (a shear: a cushion leaning back stays made of level rings).
+ */
+export type Ring = readonly [y: number, hx: number, hz: number, r: number, dz?: number, dx?: number];
+
+/** cos, sin of a multiple of a quarter turn exactly, others from Math (bounds stay exact on the axes). */
+function unitCircle(quarters: number): [number, number] {
+  if (Number.isInteger(quarters))
+    return (
+      [
+        [1, 0],
+        [0, 1],
+        [-1, 0],
+        [0, -1],
+      ] as [number, number][]
+    )[((quarters % 4) + 4) % 4];
+  return [Math.cos((quarters * Math.PI) / 2), Math.sin((quarters * Math.PI) / 2)];
+}
+
+/**
+ * A closed solid of stacked rounded-rectangle rings (bottom to top, y increasing) joined by quads,
+ * closed by a fan from (cx, yBottom, cz) and one from (cx, yTop, cz): a cushion, a rounded slab, a
+ * capsule, an ellipsoid, a tapered limb. Each corner arc has `k` segments; where a ring's straight
+ * side has zero length (r = hx or r = hz) its two end points are one. Convex when every ring lies
+ * in the convex hull of its neighbours' (sizes concave in y), which orientConvex needs.
+ */
+export function ringedPart(material: string, cx: number, cz: number, rings: readonly Ring[], k = 2, yBottom = rings[0][0], yTop = rings[rings.length - 1][0]): MeshPart {
+  const points: P3[] = [];
+  let n = -1;
+  for (const [y, hx, hz, r, dz = 0, dx = 0] of rings) {
+    if (!(r > 0 && r <= hx + 1e-12 && r <= hz + 1e-12)) throw new Error(`ring of '${material}' at y ${y} has corner radius ${r} outside (0, ${Math.min(hx, hz)}]`);
+    const ox = hx - r > 1e-12 ? hx - r : 0;
+    const oz = hz - r > 1e-12 ? hz - r : 0;
+    const start = points.length;
+    for (let q = 0; q < 4; q++) {
+      const sx = q === 0 || q === 3 ? ox : -ox;
+      const sz = q < 2 ? oz : -oz;
+      // The arc's first point repeats the previous arc's last where the side between them has no length.
+      for (let j = (q % 2 ? ox : oz) === 0 ? 1 : 0; j <= k; j++) {
+        const [c, s] = unitCircle(q + j / k);
+        points.push([cx + dx + sx + r * c, y, cz + dz + sz + r * s]);
+      }
+    }
+    if (n >= 0 && points.length - start !== n) throw new Error(`rings of '${material}' differ in shape`);
+    n = points.length - start;
+  }
+  const bottom = points.length;
+  points.push([cx + (rings[0][5] ?? 0), yBottom, cz + (rings[0][4] ?? 0)]);
+  const last = rings[rings.length - 1];
+  points.push([cx + (last[5] ?? 0), yTop, cz + (last[4] ?? 0)]);
+  const tris: [number, number, number][] = [];
+  const top = (rings.length - 1) * n;
+  for (let i = 0; i < n; i++) {
+    const j = (i + 1) % n;
+    tris.push([bottom, i, j], [bottom + 1, top + i, top + j]);
+    for (let ring = 0; ring + 1 < rings.length; ring++) {
+      const a = ring * n;
+      tris.push([a + i, a + j, a + n + j], [a + i, a + n + j, a + n + i]);
+    }
+  }
+  return orientConvex(material, points, tris);
+}
+
+/**
+ * Rings of a slab from y0 to y1 with plan half-sizes hx × hz and plan corner radius rc, its top edge
+ * bevelled by eTop and its bottom edge by eBottom (0: square, for a face that rests on something),
+ * the whole slab sheared by dz from bottom to top (a back cushion leaning back). With ringedPart's
+ * k = 1 every face is a flat facet: each side and bevel one quad, so the baker's planar light-map
+ * charts (docs/baker.md, "Objects: geometry") stay few — a bevelled cushion is 18 to 26 charts, a
+ * smoothly rounded one over 70.
+ */
+export function slabRings(y0: number, y1: number, hx: number, hz: number, rc: number, eTop: number, eBottom = 0, dz = 0): Ring[] {
+  const at = (y: number, inset: number): Ring => [y, hx - inset, hz - inset, rc - inset, (dz * (y - y0)) / (y1 - y0)];
+  return [...(eBottom > 0 ? [at(y0, eBottom), at(y0 + eBottom, 0)] : [at(y0, 0)]), at(y1 - eTop, 0), at(y1, eTop)];
+}
+
+/**
+ * Rings of an ellipsoid centred at height yc with semi-axes hx, hz, ay (k rings a hemisphere,
+ * apexes at yc ± ay closing it): a head, a leaf cluster. Pass the apexes as the part's ends.
+ */
+export function ellipsoidRings(yc: number, ay: number, hx: number, hz: number, k = 3): Ring[] {
+  const rings: Ring[] = [];
+  for (let i = 1 - k; i < k; i++) {
+    const [c, s] = unitCircle(i / k);
+    rings.push([yc + ay * s, hx * c, hz * c, Math.min(hx, hz) * c]);
+  }
+  return rings;
+}
+
+/**
  * The parts as one mesh: vertices concatenated, one material per distinct part material in
  * order of first use, each with its reflectance from `reflectanceOf`.
  */
