@@ -11,7 +11,7 @@ import { FURNISHED_PRESETS } from '../../../../src/core/catalog/furnishedPresets
 import { objectMesh, objectPlacement } from '../../../../src/core/model/objects/objectGeometry';
 import { buildCharts } from '../../../../src/engines/bake/objects/buildCharts';
 import { collectWorldTriangles } from '../../../../src/engines/bake/objects/collectWorldTriangles';
-import { layoutAtlas } from '../../../../src/engines/bake/objects/layoutAtlas';
+import { ATLAS_CEILING, layoutAtlas, TEXEL_GROWTH } from '../../../../src/engines/bake/objects/layoutAtlas';
 import { QUALITY_LEVELS } from '../../../../src/engines/relight/qualityLevels';
 
 function presetCharts(id: string) {
@@ -30,4 +30,19 @@ describe('furnished presets in the objects atlas', () => {
       }
     });
   }
+
+  it("shop window: 2 000-odd facets do not fit Fast's 128² atlas even at one texel each, so the limit doubles to 256² and the texel search starts again", () => {
+    const charts = presetCharts('shop-window');
+    const fast = QUALITY_LEVELS.fast;
+    // One texel each needs a 3 × 3 cell per chart: more than 128² holds.
+    expect(9 * charts.length).toBeGreaterThan(128 * 128);
+    const layout = layoutAtlas(charts, fast.texelSize!, fast.maxTextureSize!);
+    expect(Math.max(layout.width, layout.height)).toBeGreaterThan(128);
+    expect(Math.max(layout.width, layout.height)).toBeLessThanOrEqual(256);
+    // The search restarted from the level's own texel size at 256², not from where 128² gave up.
+    expect(layout.texelSize).toBeLessThan(fast.texelSize! * TEXEL_GROWTH ** 6);
+    // Still an error, with the size it reached, where no atlas up to the ceiling holds them.
+    const many = Array.from({ length: Math.ceil((ATLAS_CEILING / 3) ** 2) + 1 }, () => charts[0]);
+    expect(() => layoutAtlas(many, 0.1, 128)).toThrow(`do not fit in a ${ATLAS_CEILING} × ${ATLAS_CEILING} atlas even at one texel each`);
+  });
 });
