@@ -1,8 +1,9 @@
+import { mkdirSync, writeFileSync } from 'node:fs';
 import { dirname, resolve, basename } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { defineConfig, type Plugin } from 'vite';
 import react from '@vitejs/plugin-react';
-import { reactOnPreact, zodOnMini, zodWithoutJsonSchema } from './vite.config.ts';
+import { reactOnPreact, zodOnMini, zodWithoutJsonSchema } from './vite.config';
 
 /**
  * The npm package's builds (docs/package.md), one per UI runtime, chosen by LUXBOX_LIB
@@ -41,16 +42,39 @@ function injectCss(): Plugin {
   };
 }
 
-// `zod` itself is not among them: it is aliased to src/core/zodClassicOnMini.ts (bundled) as in the
-// app's build, which imports `zod/mini` from the package.
-const DEPENDENCIES = ['preact', 'three', 'three-mesh-bvh', 'zod/mini', 'fflate', 'fast-xml-parser'];
-const asImports = (names: string[]) => new RegExp(`^(${names.join('|')})(/|$)`);
+/**
+ * Writes the npm packages this build bundles (rather than leaves as imports) to
+ * build/bundled-<mode>.json, for lib/THIRD-PARTY-NOTICES.md (scripts/thirdPartyNotices.mjs).
+ */
+function recordBundledPackages(mode: string): Plugin {
+  return {
+    name: 'luxbox-record-bundled-packages',
+    generateBundle(_options, bundle) {
+      const names = new Set<string>();
+      for (const chunk of Object.values(bundle)) {
+        if (chunk.type !== 'chunk') continue;
+        for (const id of chunk.moduleIds) {
+          const m = /[\\/]node_modules[\\/]((?:@[^\\/]+[\\/])?[^\\/]+)/.exec(id);
+          if (m) names.add(m[1].replace('\\', '/'));
+        }
+      }
+      mkdirSync(fromRoot('build'), { recursive: true });
+      writeFileSync(fromRoot(`build/bundled-${mode}.json`), JSON.stringify([...names].sort()));
+    },
+  };
+}
+
+// The packages the library builds leave as imports (package.json dependencies). Bare `zod` is
+// aliased to src/core/zodClassicOnMini.ts (bundled) as in the app's build; its subpaths (`zod/mini`,
+// `zod/v4/core`) stay imports, so the shop's bundle holds one zod.
+export const DEPENDENCIES = ['preact', 'three', 'three-mesh-bvh', 'zod', 'fflate'];
+const asImports = (names: string[]) => new RegExp(`^(${names.filter((n) => n !== 'zod').join('|')})(/|$)|^zod/`);
 
 export default defineConfig(() => {
   const mode = process.env.LUXBOX_LIB ?? 'preact';
   if (!['preact', 'react', 'script'].includes(mode)) throw new Error(`LUXBOX_LIB=${mode}: expected preact, react or script`);
   const onPreact = mode !== 'react';
-  const entry =
+  const entry: Record<string, string> =
     mode === 'preact'
       ? { luxbox: fromRoot('src/hosts/package/index.ts'), element: fromRoot('src/hosts/package/element.ts'), engine: fromRoot('src/hosts/package/engine.ts') }
       : mode === 'react'
@@ -58,12 +82,11 @@ export default defineConfig(() => {
         : { 'luxbox-element': fromRoot('src/hosts/package/elementScript.ts') };
   const external = mode === 'script' ? [] : [asImports(mode === 'react' ? [...DEPENDENCIES, 'react', 'react-dom'] : DEPENDENCIES)];
   return {
-    configFile: false,
-    plugins: [react(), injectCss(), ...(mode === 'script' ? [zodWithoutJsonSchema()] : [])],
+    plugins: [react(), injectCss(), recordBundledPackages(mode), ...(mode === 'script' ? [zodWithoutJsonSchema()] : [])],
     resolve: { alias: [...zodOnMini('build'), ...(onPreact ? reactOnPreact('build') : [])] },
     // Public files (the demo's photometry) are copied by scripts/buildPackage.mjs where each door expects them.
-    publicDir: false,
-    logLevel: 'warn',
+    publicDir: false as const,
+    logLevel: 'warn' as const,
     build: {
       outDir: fromRoot(mode === 'script' ? 'lib/standalone' : 'lib'),
       emptyOutDir: false,
@@ -71,7 +94,7 @@ export default defineConfig(() => {
       sourcemap: mode !== 'script',
       minify: mode === 'script',
       target: 'es2022',
-      lib: { entry, formats: ['es'] },
+      lib: { entry, formats: ['es' as const] },
       rolldownOptions: {
         external,
         output: { entryFileNames: '[name].js', chunkFileNames: `chunks/${mode === 'react' ? 'react-' : ''}[name]-[hash].js` },

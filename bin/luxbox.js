@@ -11,5 +11,13 @@ if (existsSync(sources)) {
   const { main } = await import(sources.href);
   process.exitCode = await main(process.argv.slice(2));
 } else {
-  await import('../lib/cli/luxbox.mjs');
+  try {
+    await import('../lib/cli/luxbox.mjs');
+  } catch (e) {
+    // headless-gl is an optional dependency (a shop installing the web doors needs no native build):
+    // say what is missing instead of Node's stack trace.
+    if (e?.code !== 'ERR_MODULE_NOT_FOUND' || !/'gl'/.test(String(e.message))) throw e;
+    console.error('luxbox: the command line needs headless-gl, an optional dependency that is not installed here: npm install gl (docs/gpu-server.md)');
+    process.exitCode = 1;
+  }
 }

@@ -7,10 +7,11 @@
 //                                    API is checked against docs/api/*.api.md (--update-api accepts a change)
 //   lib/cli/luxbox.mjs               the CLI in one file (esbuild; headless-gl stays a dependency)
 import { execFileSync } from 'node:child_process';
-import { cpSync, rmSync } from 'node:fs';
+import { cpSync, mkdirSync, readFileSync, rmSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { extractApi } from './packageApi.mjs';
+import { copyCatalogPhotometry, packagesInMetafile, writeThirdPartyNotices } from './thirdPartyNotices.mjs';
 
 const root = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 const bin = (name) => join(root, 'node_modules/.bin', name);
@@ -19,7 +20,9 @@ const run = (cmd, args, env = {}) => execFileSync(cmd, args, { cwd: root, stdio:
 rmSync(join(root, 'lib'), { recursive: true, force: true });
 rmSync(join(root, 'build/types'), { recursive: true, force: true });
 for (const mode of ['preact', 'react', 'script']) run(bin('vite'), ['build', '--config', 'vite.lib.config.ts'], { LUXBOX_LIB: mode });
-cpSync(join(root, 'public/ies'), join(root, 'lib/standalone/ies'), { recursive: true });
+// Only the photometry the bundled demo catalog names (all of it MIT or the makers' own data, public/ies/SOURCES.md).
+mkdirSync(join(root, 'lib/standalone/ies'), { recursive: true });
+copyCatalogPhotometry(root, join(root, 'src/core/catalog/default-catalog.json'), join(root, 'public/ies/SOURCES.md'), join(root, 'lib/standalone/ies'), (from, to) => cpSync(from, to));
 
 run(bin('tsc'), ['-p', 'tsconfig.lib.json']);
 const failures = extractApi({ update: process.argv.includes('--update-api') });
@@ -32,10 +35,18 @@ run(bin('esbuild'), [
   '--target=node20',
   '--external:gl',
   '--outfile=lib/cli/luxbox.mjs',
+  '--metafile=build/cli-meta.json',
   // Bundled CommonJS dependencies call require(): give the ES module one (as scripts/packGpuBench.mjs).
   "--banner:js=import { createRequire as __luxboxRequire } from 'node:module'; const require = __luxboxRequire(import.meta.url);",
   '--log-level=warning',
 ]);
+
+const bundled = (mode) => JSON.parse(readFileSync(join(root, `build/bundled-${mode}.json`), 'utf8'));
+writeThirdPartyNotices(
+  root,
+  { 'lib/*.js (preact)': bundled('preact'), 'lib/react.js': bundled('react'), 'lib/standalone': bundled('script'), 'lib/cli': [...packagesInMetafile(join(root, 'build/cli-meta.json'))] },
+  join(root, 'lib/THIRD-PARTY-NOTICES.md'),
+);
 
 if (failures.length > 0) {
   for (const f of failures) console.error(`API report: ${f}`);

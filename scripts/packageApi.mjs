@@ -4,11 +4,22 @@
 // `node scripts/packageApi.mjs` fails when a report differs (a public change nobody reviewed);
 // `--update` writes the new reports, to be committed with the change.
 import { Extractor, ExtractorConfig } from '@microsoft/api-extractor';
+import { appendFileSync } from 'node:fs';
 import { dirname, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 const root = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 export const DOORS = { luxbox: 'index', react: 'react', element: 'element', engine: 'engine' };
+
+/**
+ * api-extractor leaves `declare global` blocks out of its rollups (a documented limitation,
+ * "ae-global-augmentation" is not supported), so the element's tag-name typing
+ * (`document.createElement('luxbox-configurator')` → LuxboxConfiguratorElement, in
+ * src/hosts/package/LuxboxConfiguratorElement.ts) is appended to lib/element.d.ts here.
+ */
+const GLOBAL_AUGMENTATIONS = {
+  element: "\ndeclare global {\n  interface HTMLElementTagNameMap {\n    'luxbox-configurator': LuxboxConfiguratorElement;\n  }\n}\n",
+};
 
 export function extractApi({ update }) {
   const failures = [];
@@ -45,6 +56,7 @@ export function extractApi({ update }) {
       packageJsonFullPath: resolve(root, 'package.json'),
     });
     const result = Extractor.invoke(config, { localBuild: update, showVerboseMessages: false });
+    if (GLOBAL_AUGMENTATIONS[door]) appendFileSync(resolve(root, `lib/${door}.d.ts`), GLOBAL_AUGMENTATIONS[door]);
     if (!result.succeeded || (!update && result.apiReportChanged))
       failures.push(`${door}: ${result.apiReportChanged ? 'the public API differs from docs/api/' + door + '.api.md (review it and run `npm run api:update`)' : `${result.errorCount} errors, ${result.warningCount} warnings`}`);
   }
