@@ -24,8 +24,13 @@ export function writeThirdPartyNotices(root, bundledBy, out) {
     const dir = join(root, 'node_modules', name);
     const pkg = JSON.parse(readFileSync(join(dir, 'package.json'), 'utf8'));
     const file = readdirSync(dir).find((f) => LICENCE_FILE.test(f));
-    if (!file) throw new Error(`${name}: no licence file in node_modules/${name}; add its licence text to the notices by hand`);
-    return `## ${name} ${pkg.version} (${pkg.license}) — in ${where.get(name).join(', ')}\n\n\`\`\`text\n${readFileSync(join(dir, file), 'utf8').trim()}\n\`\`\`\n`;
+    const title = `## ${name} ${pkg.version} (${pkg.license}) — in ${where.get(name).join(', ')}\n\n`;
+    if (file) return `${title}\`\`\`text\n${readFileSync(join(dir, file), 'utf8').trim()}\n\`\`\`\n`;
+    // A few small packages declare their licence only in package.json: say so, with who made it and where it lives.
+    if (typeof pkg.license !== 'string') throw new Error(`${name}: neither a licence file nor a licence in package.json`);
+    const author = typeof pkg.author === 'string' ? pkg.author : (pkg.author?.name ?? 'not stated');
+    const repository = typeof pkg.repository === 'string' ? pkg.repository : (pkg.repository?.url ?? 'not stated');
+    return `${title}Licensed ${pkg.license} (its package.json; the package ships no licence text). Author: ${author}. Repository: ${repository}.\n`;
   });
   const header = [
     '# Third-party software in this package',

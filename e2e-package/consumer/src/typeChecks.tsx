@@ -17,6 +17,20 @@ export function useInstance(lx: LuxboxInstance): number {
   return bom.total + bom.lines.length;
 }
 
+// Actions are typed by name and parameters (ActionName, ActionParams from the model's schemas).
+export function actions(lx: LuxboxInstance): number {
+  lx.runAction('placePreset', { presetId: 'single' });
+  lx.runAction('setModuleDimming', { moduleId: 'm1', dimming: 0.5 });
+  // @ts-expect-error: no action of that name
+  lx.runAction('placePresett', { presetId: 'single' });
+  // @ts-expect-error: placePreset's parameter is presetId
+  lx.runAction('placePreset', { preset: 'single' });
+  // @ts-expect-error: dimming is a number
+  lx.runAction('setModuleDimming', { moduleId: 'm1', dimming: 'half' });
+  const listed = lx.listActions({ deleteSystem: { systemId: 's1' } });
+  return listed.length + lx.getLightingScene().luminaires.length;
+}
+
 export const options: LuxboxOptions = { room: { width: 6, depth: 4.5, height: 3 }, exposure: 'auto' };
 // @ts-expect-error: the room needs a height
 export const badOptions: LuxboxOptions = { room: { width: 6, depth: 4.5 } };
