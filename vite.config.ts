@@ -58,7 +58,7 @@ export function zodWithoutJsonSchema(): Plugin {
  * chunk. Lazy-only modules stay in their lazy chunks, and a module only one page uses stays with
  * that page's entry.
  */
-function firstScreenChunk(): Plugin & { inFirstScreen: (id: string) => boolean } {
+export function firstScreenChunk(): Plugin & { inFirstScreen: (id: string) => boolean } {
   let shared: Set<string> | null = null;
   return {
     name: 'luxbox-first-screen-chunk',

@@ -3,7 +3,7 @@ import { dirname, resolve, basename } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { defineConfig, type Plugin } from 'vite';
 import react from '@vitejs/plugin-react';
-import { reactOnPreact, zodOnMini, zodWithoutJsonSchema } from './vite.config';
+import { firstScreenChunk, reactOnPreact, zodOnMini, zodWithoutJsonSchema } from './vite.config';
 
 /**
  * The npm package's builds (docs/package.md), one per UI runtime, chosen by LUXBOX_LIB
@@ -68,12 +68,15 @@ function recordBundledPackages(mode: string): Plugin {
 // aliased to src/core/zodClassicOnMini.ts (bundled) as in the app's build; its subpaths (`zod/mini`,
 // `zod/v4/core`) stay imports, so the shop's bundle holds one zod.
 export const DEPENDENCIES = ['preact', 'three', 'three-mesh-bvh', 'zod', 'fflate'];
-const asImports = (names: string[]) => new RegExp(`^(${names.filter((n) => n !== 'zod').join('|')})(/|$)|^zod/`);
+const asImports = (names: string[]) => new RegExp(`^(${names.filter((n) => n !== 'zod').join('|')})(/|$)${names.includes('zod') ? '|^zod/' : ''}`);
 
 export default defineConfig(() => {
   const mode = process.env.LUXBOX_LIB ?? 'preact';
   if (!['preact', 'react', 'script'].includes(mode)) throw new Error(`LUXBOX_LIB=${mode}: expected preact, react or script`);
   const onPreact = mode !== 'react';
+  // The first screen of the script and of the React door in one chunk, as the app's pages (vite.config.ts): each file is
+  // gzipped alone, so 40 chunks cost more than one, and a shop's bundler keeps a file's modules together.
+  const firstScreen = firstScreenChunk();
   const entry: Record<string, string> =
     mode === 'preact'
       ? { luxbox: fromRoot('src/hosts/package/index.ts'), element: fromRoot('src/hosts/package/element.ts'), engine: fromRoot('src/hosts/package/engine.ts') }
@@ -82,7 +85,7 @@ export default defineConfig(() => {
         : { 'luxbox-element': fromRoot('src/hosts/package/elementScript.ts') };
   const external = mode === 'script' ? [] : [asImports(mode === 'react' ? [...DEPENDENCIES, 'react', 'react-dom'] : DEPENDENCIES)];
   return {
-    plugins: [react(), injectCss(), recordBundledPackages(mode), ...(mode === 'script' ? [zodWithoutJsonSchema()] : [])],
+    plugins: [react(), injectCss(), recordBundledPackages(mode), ...(mode === 'script' ? [zodWithoutJsonSchema()] : []), ...(mode !== 'preact' ? [firstScreen] : [])],
     resolve: { alias: [...zodOnMini('build'), ...(onPreact ? reactOnPreact('build') : [])] },
     // Public files (the demo's photometry) are copied by scripts/buildPackage.mjs where each door expects them.
     publicDir: false as const,
@@ -97,7 +100,11 @@ export default defineConfig(() => {
       lib: { entry, formats: ['es' as const] },
       rolldownOptions: {
         external,
-        output: { entryFileNames: '[name].js', chunkFileNames: `chunks/${mode === 'react' ? 'react-' : ''}[name]-[hash].js` },
+        output: {
+          entryFileNames: '[name].js',
+          chunkFileNames: `chunks/${mode === 'react' ? 'react-' : ''}[name]-[hash].js`,
+          ...(mode !== 'preact' ? { codeSplitting: { groups: [{ name: 'first-screen', test: firstScreen.inFirstScreen }] } } : {}),
+        },
       },
     },
   };

@@ -5,13 +5,15 @@
 //   1. type-checks a shop's TypeScript against the tarball's declarations (e2e-package/consumer/src),
 //   2. runs `luxbox/engine` and the `luxbox` bin under Node on a photometric file,
 //   3. builds the consumer's React page with Vite, puts the plain page with the element's
-//      single-file script beside it, and opens both in Chromium (e2e-package/consumer.spec.ts).
+//      single-file script beside it, checks the first-screen budgets (scripts/packageBudgets.mjs),
+//      and opens both pages in Chromium (e2e-package/consumer.spec.ts).
 // Usage: node scripts/checkPackage.mjs [--keep]   (--keep leaves the consumer folder for a look)
 import { execFileSync, spawnSync } from 'node:child_process';
 import { cpSync, mkdirSync, mkdtempSync, readFileSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { gzipBytes, pageFirstScreen, REACT_DOOR_BUDGET_BYTES, REACT_DOOR_TARGET_BYTES, STANDALONE_BUDGET_BYTES, staticClosure } from './packageBudgets.mjs';
 
 const root = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 const bin = (name) => join(root, 'node_modules/.bin', name);
@@ -91,6 +93,15 @@ run(bin('vite'), ['build', consumer, '--logLevel', 'warn']);
 // The plain page: no bundler, the element's script folder copied as a shop would upload it.
 cpSync(join(consumer, 'node_modules/luxbox/lib/standalone'), join(consumer, 'dist/luxbox'), { recursive: true });
 cpSync(join(consumer, 'static/element.html'), join(consumer, 'dist/element.html'));
+run(bin('vite'), ['build', join(consumer, 'baseline'), '--logLevel', 'warn']);
+
+step('first-screen budgets');
+const reactAdds = pageFirstScreen(join(consumer, 'dist'), 'index.html') - pageFirstScreen(join(consumer, 'baseline/dist'), 'index.html');
+const standaloneFiles = staticClosure(join(consumer, 'dist/luxbox'), ['luxbox-element.js']);
+const standalone = gzipBytes(join(consumer, 'dist/luxbox'), standaloneFiles);
+console.log(`luxbox/react adds ${(reactAdds / 1000).toFixed(1)} kB gzip to the React page's first screen (held at ${REACT_DOOR_BUDGET_BYTES / 1000} kB; the issue's target ${REACT_DOOR_TARGET_BYTES / 1000} kB)`);
+console.log(`the single-file element's first screen: ${(standalone / 1000).toFixed(1)} kB gzip in ${standaloneFiles.length} files (budget ${STANDALONE_BUDGET_BYTES / 1000} kB)`);
+if (reactAdds > REACT_DOOR_BUDGET_BYTES || standalone > STANDALONE_BUDGET_BYTES) throw new Error('a first-screen budget is exceeded (docs/package.md, "Budgets")');
 writeFileSync(join(consumer, 'expected-bom.json'), read(bin('tsx'), ['e2e-package/expectedBom.ts']));
 
 step('open both pages in Chromium');
