@@ -5,7 +5,7 @@
 //   - the single-file element (lib/standalone/luxbox-element.js): at most 150 kB;
 //   - what `luxbox/react` adds to a React app: the consumer page with <Luxbox> minus the same
 //     shop page without it (React itself not counted). The issue asks for at most 110 kB; on
-//     2026-11-27 it is 112.1 kB (the planner UI itself, which the app's pages carry too: embed.html
+//     2026-11-27 it is 112.2 kB (the planner UI itself, which the app's pages carry too: embed.html
 //     is 116.9 kB with preact's 4 kB), so the check holds it at 113 kB: lower it as the UI shrinks,
 //     never raise it.
 import { readFileSync } from 'node:fs';
