@@ -1,9 +1,11 @@
 // The package's type declarations and API report (docs/package.md, "API report"): for each door,
 // api-extractor rolls the declarations tsc emitted (tsconfig.lib.json → build/types) into one
 // lib/<door>.d.ts, and compares the door's public API with its reviewed report docs/api/<door>.api.md.
-// `node scripts/packageApi.mjs` fails when a report differs (a public change nobody reviewed);
-// `--update` writes the new reports, to be committed with the change.
+// `node scripts/packageApi.mjs` (run by scripts/test.sh) emits the declarations and fails when a
+// report differs (a public change nobody reviewed); `--update` writes the new reports, to be
+// committed with the change (as `npm run api:update` does with the whole package build).
 import { Extractor, ExtractorConfig } from '@microsoft/api-extractor';
+import { execFileSync } from 'node:child_process';
 import { appendFileSync } from 'node:fs';
 import { dirname, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -64,6 +66,8 @@ export function extractApi({ update }) {
 }
 
 if (process.argv[1] === fileURLToPath(import.meta.url)) {
+  // Alone (scripts/test.sh), it emits the declarations first; scripts/buildPackage.mjs has already.
+  execFileSync(resolve(root, 'node_modules/.bin/tsc'), ['-p', 'tsconfig.lib.json'], { cwd: root, stdio: 'inherit' });
   const failures = extractApi({ update: process.argv.includes('--update') });
   for (const f of failures) console.error(f);
   process.exitCode = failures.length > 0 ? 1 : 0;
