@@ -14,7 +14,7 @@ import react from '@vitejs/plugin-react';
  * read from the installed files, so a zod update with new names still builds, and the
  * CLI and Vitest use the untouched package. docs/benchmarks.md, "First screen".
  */
-function zodWithoutJsonSchema(): Plugin {
+export function zodWithoutJsonSchema(): Plugin {
   const STUBBED = /[\\/]zod[\\/]v4[\\/]core[\\/](to-json-schema|json-schema-processors)\.js$/;
   const KEEP = new Set(['aggregateChecks']);
   const exportNames = (source: string) =>
@@ -58,7 +58,7 @@ function zodWithoutJsonSchema(): Plugin {
  * chunk. Lazy-only modules stay in their lazy chunks, and a module only one page uses stays with
  * that page's entry.
  */
-function firstScreenChunk(): Plugin & { inFirstScreen: (id: string) => boolean } {
+export function firstScreenChunk(): Plugin & { inFirstScreen: (id: string) => boolean } {
   let shared: Set<string> | null = null;
   return {
     name: 'luxbox-first-screen-chunk',
@@ -88,7 +88,7 @@ function firstScreenChunk(): Plugin & { inFirstScreen: (id: string) => boolean }
  * screen) in the browser build, and in Vitest when LUXBOX_ZOD_MINI=1 (to run the model's tests
  * against it: `LUXBOX_ZOD_MINI=1 npx vitest run tests/core/model`).
  */
-const zodOnMini = (command: string) => (command === 'build' || process.env.LUXBOX_ZOD_MINI === '1' ? [{ find: /^zod$/, replacement: fileURLToPath(new URL('./src/core/zodClassicOnMini.ts', import.meta.url)) }] : []);
+export const zodOnMini = (command: string) => (command === 'build' || process.env.LUXBOX_ZOD_MINI === '1' ? [{ find: /^zod$/, replacement: fileURLToPath(new URL('./src/core/zodClassicOnMini.ts', import.meta.url)) }] : []);
 
 /**
  * React → preact/compat in the browser build only (−55 KiB gzip of the first screen: react-dom's
@@ -99,7 +99,7 @@ const zodOnMini = (command: string) => (command === 'build' || process.env.LUXBO
  * the Playwright suite runs them on preact
  * (docs/architecture.md, "React in tests, preact in the browser build").
  */
-const reactOnPreact = (command: string) =>
+export const reactOnPreact = (command: string) =>
   command === 'build'
     ? [
         { find: /^react-dom\/client$/, replacement: 'preact/compat/client' },

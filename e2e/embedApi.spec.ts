@@ -8,7 +8,10 @@ test('window.luxbox: list and run actions, set/get config, subscribe, bill of ma
     const off = lx.subscribe((json) => changes.push(json));
     const listed = lx.listActions({ placePreset: { presetId: 'single' }, deleteSystem: { systemId: 'nope' } });
     const place = lx.runAction('placePreset', { presetId: 'single' });
+    // Both are type errors (LuxboxInstance.runAction is typed); plain JavaScript can still make them.
+    // @ts-expect-error: no action of that name
     const unknown = lx.runAction('launchRocket', {});
+    // @ts-expect-error: x is a number
     const badParams = lx.runAction('moveSystem', { systemId: 's1', x: 'left' });
     const config = JSON.parse(lx.getConfig());
     const bom = lx.getBillOfMaterials();

@@ -1,5 +1,6 @@
 import { readFileSync } from 'node:fs';
 import { expect, test, type Page } from '@playwright/test';
+import type { ActionParams } from '../src/core/model/actions/actionDefinitions';
 
 // Springs are skipped under prefers-reduced-motion, so views land at once.
 test.use({ reducedMotion: 'reduce' });
@@ -188,7 +189,7 @@ async function furnish(page: Page): Promise<void> {
   await startEmptyRoom(page);
   await page.evaluate(() => {
     const l = window.luxbox!;
-    const add = (item: string, placement: unknown, yaw = 0) => {
+    const add = (item: string, placement: ActionParams<'addObject'>['placement'], yaw = 0) => {
       const r = l.runAction('addObject', { source: { kind: 'library', item }, placement, yaw });
       if (!r.ok) throw new Error(r.reason);
     };

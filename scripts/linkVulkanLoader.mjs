@@ -1,4 +1,4 @@
-// postinstall: let ANGLE (inside headless-gl) find the system's Vulkan loader.
+// prepare (npm ci / npm install in the repository): let ANGLE (inside headless-gl) find the system's Vulkan loader.
 // ANGLE dlopens libvulkan.so.1 from its own folder (node_modules/gl/build/Release),
 // not from the system library path, so link it there. Harmless when either side
 // is missing (no gl installed yet, or no libvulkan1: the GLX back end still works).

@@ -249,7 +249,8 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
         .listActions(paramsByName)
         .map((a) => ({ name: a.name, label: a.label, enabled: a.enabled === true, reason: a.enabled === true ? null : apiText(a.enabled) }));
     },
-    runAction(name, params = {}) {
+    // Typed for callers (LuxboxInstance.runAction); plain JavaScript may pass anything, refused below.
+    runAction(name: string, params: unknown = {}) {
       alive();
       if (!isActionName(name)) return { ok: false, reason: `unknown action '${name}'` };
       const r = store.getState().dispatch(name, params);

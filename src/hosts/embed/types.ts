@@ -1,4 +1,5 @@
-import type { ActionName } from '../../core/model/actions/actionDefinitions';
+import type { ActionName, ActionParams } from '../../core/model/actions/actionDefinitions';
+import type { LightingScene } from '../../core/model/lightingScene/lightingScene';
 import type { BillOfMaterials } from '../../core/model/power/billOfMaterials';
 import type { InstallationNeeds } from '../../core/model/power/installationNeeds';
 import type { ViewerStatus } from '../../ui/viewer/viewerStatus';
@@ -113,6 +114,9 @@ export interface LuxboxSceneInfo {
 
 export type LuxboxRunResult = { ok: true } | { ok: false; reason: string };
 
+/** runAction's parameters after the name: optional when the action's parameters have no required field. */
+export type LuxboxActionArguments<N extends ActionName> = object extends ActionParams<N> ? [params?: ActionParams<N>] : [params: ActionParams<N>];
+
 /** A mounted configurator. */
 export interface LuxboxInstance {
   /** The current configuration as scene-file JSON (format 'luxbox-configuration'). */
@@ -124,16 +128,21 @@ export interface LuxboxInstance {
   getBillOfMaterials(): BillOfMaterials;
   /** What the installer must know for the cart hand-off: feeds with load and capacity, ceiling fixings, total load (docs/model.md). */
   getInstallationNeeds(): InstallationNeeds;
-  /** Every action with its enabled state for the given parameters (per action name). */
-  listActions(paramsByName?: Partial<Record<ActionName, unknown>>): LuxboxActionInfo[];
-  /** Runs an action by name if the model allows it; never throws for bad names or parameters. */
-  runAction(name: string, params?: unknown): LuxboxRunResult;
+  /** Every action with its enabled state for the given parameters (per action name, each typed as runAction's). */
+  listActions(paramsByName?: { readonly [N in ActionName]?: ActionParams<N> }): LuxboxActionInfo[];
+  /**
+   * Runs an action by name if the model allows it. Typed: `name` is one of the model's actions
+   * (ActionName) and `params` that action's parameters (ActionParams, from its schema; optional
+   * where every field is). At run time it never throws, also for names and parameters the types
+   * would refuse (from plain JavaScript): it refuses them with a reason.
+   */
+  runAction<N extends ActionName>(name: N, ...params: LuxboxActionArguments<N>): LuxboxRunResult;
   undo(): boolean;
   redo(): boolean;
   /** A link that opens this configuration (base URL + `#c=<share string>`). */
   getShareLink(): string;
-  /** The lighting scene (version 1) the baker takes, for the current configuration. */
-  getLightingScene(): unknown;
+  /** The lighting scene the baker and `luxbox bake` take (docs/scene-format.md), for the current configuration. */
+  getLightingScene(): LightingScene;
   /**
    * Resolves once the configurator's language is loaded (the API's texts then come in it, option
    * apiLanguage) and everything getLightingScene needs for the current configuration is loaded: the

@@ -51,7 +51,7 @@ export function systemVulkanLoader(): string | null {
 
 /**
  * Make ANGLE find the Vulkan loader: a link `libvulkan.so.1` next to
- * libGLESv2.so pointing at the system's loader (run by `npm ci`'s postinstall
+ * libGLESv2.so pointing at the system's loader (run by `npm ci`'s prepare
  * and again here at run time, so a moved system library is followed). A real
  * file already there (a packed GPU folder ships one) is left alone. Returns
  * the loader ANGLE will load, or null when there is none.
