@@ -36,8 +36,7 @@ export interface BakeInputs {
 export function prepareBakeInputs(gl: WebGL2RenderingContext, scene: BakeScene, settings: BakeSettings, directOverride: Record<SurfaceName, Float32Array> | null, objectDirectOverride: Float32Array | null): BakeInputs {
   const { room } = scene;
   const reflectance = SURFACE_NAMES.map((n) => toRgb(room.reflectance[n]));
-  // A shaped room's enclosure (shapedRoom/encloseShapedRoom.ts): its box surfaces are black sinks, one texel each.
-  const layouts = room.enclosure ? surfaceLayouts(room, settings.texelSize, 1) : surfaceLayouts(room, settings.texelSize, settings.maxTextureSize);
+  const layouts = surfaceLayouts(room, settings.texelSize, settings.maxTextureSize);
   const lamps = prepareLamps(scene, settings);
   const prepared = scene.objects && scene.objects.length > 0 ? prepareSceneObjects(scene, settings) : null;
   if (directOverride && prepared) checkGivenAtlasMap(prepared, objectDirectOverride);

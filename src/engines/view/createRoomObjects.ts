@@ -6,6 +6,13 @@ import { dilateReflectance } from './dilateReflectance';
 import { MAX_LEVELS, TURBO_B, TURBO_G, TURBO_R } from './falseColorScale';
 import type { ObjectLight } from './objectLight';
 import { objectRenderGeometry, type ObjectRenderGeometry } from './objectRenderGeometry';
+import { ROOM_OBJECT_PREFIX } from '../bake/shapedRoom/roomSurfaceObjects';
+
+/** A shaped room's surfaces come first among the objects (encloseShapedRoom): how many ids lead with the room's prefix. */
+function roomSurfaceCount(ids: readonly string[]): number {
+  const k = ids.findIndex((id) => !id.startsWith(ROOM_OBJECT_PREFIX));
+  return k < 0 ? ids.length : k;
+}
 
 const fragmentShader = objectSurfaceFragment({ maxLevels: MAX_LEVELS, turbo: [TURBO_R, TURBO_G, TURBO_B] });
 
@@ -26,8 +33,10 @@ export interface RoomObjects {
   setLight(light: ObjectLight | null): void;
   /** Highlight one object by id (null: none). */
   setSelected(id: string | null): void;
-  /** The object id of a triangle of the drawn mesh (three's Raycaster faceIndex), or null. */
+  /** The object id of a triangle of the drawn mesh (three's Raycaster faceIndex), or null (none, or a shaped room's surface). */
   objectAt(faceIndex: number): string | null;
+  /** The shaped room's surface id ('floor', 'wall-2', …) of a triangle of the drawn mesh, or null (an object). */
+  roomSurfaceAt(faceIndex: number): string | null;
   readonly geometry: ObjectRenderGeometry | null;
   dispose(): void;
 }
@@ -37,11 +46,13 @@ export function createRoomObjects(display: SharedDisplayUniforms, renderer: THRE
   const group = new THREE.Group();
   group.name = 'objects-group';
   const selected = { value: -1 };
+  /** How many of the first objects are a shaped room's surfaces (front side only, never picked). */
+  const frontOnlyBelow = { value: 0 };
   const material = new THREE.ShaderMaterial({
     glslVersion: THREE.GLSL3,
     vertexShader: objectSurfaceVertex,
     fragmentShader,
-    uniforms: { uIlluminance: { value: null }, uReflectance: { value: null }, uSelected: selected, ...display },
+    uniforms: { uIlluminance: { value: null }, uReflectance: { value: null }, uSelected: selected, uFrontOnlyBelow: frontOnlyBelow, ...display },
     side: THREE.DoubleSide,
     // Pushed back a hair in depth so the selection's edge lines, which lie in the surfaces, win the depth test.
     polygonOffset: true,
@@ -110,6 +121,7 @@ export function createRoomObjects(display: SharedDisplayUniforms, renderer: THRE
       if (!next || next.triangleCount === 0) return;
       prepared = next;
       geometry = objectRenderGeometry(next);
+      frontOnlyBelow.value = roomSurfaceCount(geometry.ids);
       const g = new THREE.BufferGeometry();
       g.setAttribute('position', new THREE.BufferAttribute(geometry.positions, 3));
       g.setAttribute('normal', new THREE.BufferAttribute(geometry.normals, 3));
@@ -168,7 +180,13 @@ export function createRoomObjects(display: SharedDisplayUniforms, renderer: THRE
     },
     objectAt(faceIndex) {
       if (!geometry || faceIndex < 0 || faceIndex >= geometry.triangleCount) return null;
-      return geometry.ids[geometry.objectOfTriangle[faceIndex]];
+      const object = geometry.objectOfTriangle[faceIndex];
+      return object < frontOnlyBelow.value ? null : geometry.ids[object];
+    },
+    roomSurfaceAt(faceIndex) {
+      if (!geometry || faceIndex < 0 || faceIndex >= geometry.triangleCount) return null;
+      const object = geometry.objectOfTriangle[faceIndex];
+      return object < frontOnlyBelow.value ? geometry.ids[object].slice(ROOM_OBJECT_PREFIX.length) : null;
     },
     dispose() {
       clear();
