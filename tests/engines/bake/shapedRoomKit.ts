@@ -1,19 +1,12 @@
 /**
- * Shared by the shaped-room bake tests (issue 29): scenes of any shape as the baker takes them,
- * and the comparison of the atlas texels that hold a room's surfaces with the independent room
- * reference (src/reference/solveRoomReference.ts), at each texel's G-buffer point.
+ * Shared by the shaped-room bake tests (issue 29): scenes of any shape as the baker takes them; the
+ * comparison with the room reference is src/hosts/bench/shapedRoomComparison.ts (the bench uses it too).
  */
-import type { LightingLuminaire, Vec3 } from '../../../src/core/model/lightingScene/lightingScene';
+import type { LightingLuminaire } from '../../../src/core/model/lightingScene/lightingScene';
 import type { Photometry } from '../../../src/core/photometry/types';
 import { normaliseRoom, type Room } from '../../../src/core/room/normaliseRoom';
 import type { RoomInput } from '../../../src/core/room/roomInput';
-import { roomSurfaces, type RoomSurface } from '../../../src/core/room/roomSurfaces';
-import type { PlanPoint } from '../../../src/core/room/planPolygon';
 import type { BakeScene } from '../../../src/engines/bake/bakeScene';
-import { luxOf, type BakedMaps } from '../../../src/engines/bake/bakedMaps';
-import { encloseShapedRoom } from '../../../src/engines/bake/shapedRoom/encloseShapedRoom';
-import { roomSurfaceIlluminanceAt } from '../../../src/reference/roomIlluminanceAt';
-import type { RoomReferenceResult } from '../../../src/reference/solveRoomReference';
 
 /** The box a shaped room's LightingRoom carries (width/depth the outline's extents), with the shape. */
 export function shapedBakeRoom(input: RoomInput): BakeScene['room'] & { shape: Room } {
@@ -28,78 +21,4 @@ export function bakeLuminaires(lamps: readonly LightingLuminaire[], files: Recor
   return lamps.map((l) => ({ ...l, photometry: files[l.photometry], dimming: l.dimming ?? 1, color: l.color ?? [1, 1, 1] }));
 }
 
-export interface SurfacePoint {
-  surface: string;
-  /** World point and the bake's and the reference's values there (lux, Y). */
-  point: Vec3;
-  bake: { direct: number; total: number };
-  reference: { direct: number; total: number };
-}
-
-export interface ShapedComparison {
-  points: SurfacePoint[];
-  /** Fully covered texels left out because their point lies within EDGE_BAND of a surface's edge or an opening's. */
-  nearEdge: number;
-}
-
-/** Points this close (m) to an edge of their surface or of an opening are left out of the accuracy figures (issue 29). */
-export const EDGE_BAND = 0.05;
-
-function distanceToSegment(p: PlanPoint, a: PlanPoint, b: PlanPoint): number {
-  const [dx, dz] = [b[0] - a[0], b[1] - a[1]];
-  const t = Math.max(0, Math.min(1, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dz) / (dx * dx + dz * dz)));
-  return Math.hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dz);
-}
-
-function distanceToEdges(s: RoomSurface, p: Vec3): number {
-  const d = [p[0] - s.frame.origin[0], p[1] - s.frame.origin[1], p[2] - s.frame.origin[2]];
-  const q: PlanPoint = [d[0] * s.frame.u[0] + d[1] * s.frame.u[1] + d[2] * s.frame.u[2], d[0] * s.frame.v[0] + d[1] * s.frame.v[1] + d[2] * s.frame.v[2]];
-  let best = Infinity;
-  for (const poly of [...s.polygons2d, ...s.openings.map((o) => o.polygon2d)]) {
-    for (let i = 0; i < poly.length; i++) best = Math.min(best, distanceToSegment(q, poly[i], poly[(i + 1) % poly.length]));
-  }
-  return best;
-}
-
-/** Every `stride`-th fully covered atlas texel of the room's surfaces: the bake's direct and total against the reference's at the texel's point. */
-export function compareWithReference(scene: BakeScene, maps: BakedMaps, reference: RoomReferenceResult, stride: number): ShapedComparison {
-  const enclosure = encloseShapedRoom(scene).room.enclosure;
-  const o = maps.objects;
-  if (!enclosure || !o) throw new Error('not a shaped room bake');
-  const surfaces = new Map(roomSurfaces(enclosure.shape).map((s) => [s.id, s]));
-  const [direct, total] = [luxOf(o.direct), luxOf(o.total)];
-  const { position, reflectance } = o.atlas;
-  const out: ShapedComparison = { points: [], nearEdge: 0 };
-  let covered = 0;
-  for (let k = 0; k < o.atlas.width * o.atlas.height; k++) {
-    if (position[4 * k + 3] < 0.999) continue;
-    const object = reflectance[4 * k + 3] - 1;
-    if (object >= enclosure.surfaces.length) continue;
-    if (covered++ % stride !== 0) continue;
-    const id = enclosure.surfaces[object];
-    const p: Vec3 = [position[4 * k] - enclosure.offset[0], position[4 * k + 1] - enclosure.offset[1], position[4 * k + 2] - enclosure.offset[2]];
-    if (distanceToEdges(surfaces.get(id)!, p) < EDGE_BAND) {
-      out.nearEdge++;
-      continue;
-    }
-    const r = roomSurfaceIlluminanceAt(reference, id, p);
-    out.points.push({ surface: id, point: p, bake: { direct: direct[k], total: total[k] }, reference: { direct: r.direct, total: r.total } });
-  }
-  return out;
-}
-
-/** RMS and largest relative error of `kind` over the points whose reference exceeds `floor` lux. */
-export function relativeErrors(points: readonly SurfacePoint[], kind: 'direct' | 'total', floor: number): { n: number; rms: number; max: number; worst: SurfacePoint | null } {
-  let sum = 0;
-  let max = 0;
-  let worst: SurfacePoint | null = null;
-  let n = 0;
-  for (const p of points) {
-    if (!(p.reference[kind] > floor)) continue;
-    const e = Math.abs(p.bake[kind] / p.reference[kind] - 1);
-    n++;
-    sum += e * e;
-    if (e > max) [max, worst] = [e, p];
-  }
-  return { n, rms: n ? Math.sqrt(sum / n) : 0, max, worst };
-}
+export { compareWithReference, relativeErrors, EDGE_BAND, type SurfacePoint, type ShapedComparison } from '../../../src/hosts/bench/shapedRoomComparison';
