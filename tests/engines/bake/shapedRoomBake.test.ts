@@ -4,6 +4,9 @@
  * (CIE 171:2006 §5.8: Σ E·A = Φ/(1 − ρ) for uniform ρ), an opening lets out what the reference
  * says, and the enclosure's box surfaces are one-texel black sinks that never show.
  */
+import { existsSync, mkdtempSync, readFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { describe, expect, it } from 'vitest';
 import type { LightingLuminaire, Vec3 } from '../../../src/core/model/lightingScene/lightingScene';
 import type { RoomInput } from '../../../src/core/room/roomInput';
@@ -14,6 +17,7 @@ import { ENCLOSURE_MARGIN, encloseShapedRoom } from '../../../src/engines/bake/s
 import { ROOM_OBJECT_PREFIX } from '../../../src/engines/bake/shapedRoom/roomSurfaceObjects';
 import { roomDirectAt } from '../../../src/reference/roomDirect';
 import { roomFluxes, solveRoomReference } from '../../../src/reference/solveRoomReference';
+import { writeBakeOutput } from '../../../src/hosts/node/writeBakeOutput';
 import { isotropic } from '../../reference/photometryFixtures';
 import { bakeLuminaires, shapedBakeRoom } from './shapedRoomKit';
 import { withHeadlessGL } from './withHeadlessGL';
@@ -165,5 +169,23 @@ describe('shaped rooms in the baker', () => {
     expect(total.sinks).toBeGreaterThan(0);
     expect(Math.abs(total.room / reference.total - 1)).toBeLessThan(0.02);
     expect(Math.abs(escaped / reference.escaped - 1)).toBeLessThan(0.15);
+  }, 300_000);
+
+  it('luxbox bake’s output: report.json’s surfaces are the room’s (floor area of the polygon), objects.json lists them first, no sink files', () => {
+    const input: RoomInput = { outline: L_OUTLINE, height: 2.6, reflectance: uniform(0.5), openings: [{ wall: 5, offset: 2, width: 0.9, sill: 0, height: 2, kind: 'door' }] };
+    const scene = sceneOf(input, [lamp([2, 2, 2])]);
+    const { maps, report } = baker.bake(scene, { texelSize: 0.2, samples: 16, bounces: 1 });
+    const dir = mkdtempSync(join(tmpdir(), 'luxbox-shaped-'));
+    writeBakeOutput(dir, 'l.json', maps, report);
+    const json = JSON.parse(readFileSync(join(dir, 'report.json'), 'utf8'));
+    expect(Object.keys(json.surfaces)).toEqual(['floor', 'ceiling', 'wall-0', 'wall-1', 'wall-2', 'wall-3', 'wall-4', 'wall-5']);
+    expect(json.surfaces.floor.area).toBeCloseTo(25, 4);
+    // Wall 5 (x = 0, 5 m × 2.6 m) less its 0.9 × 2 m door.
+    expect(json.surfaces['wall-5'].area).toBeCloseTo(5 * 2.6 - 0.9 * 2, 4);
+    expect(json.surfaces.floor.avg).toBeGreaterThan(0);
+    expect(existsSync(join(dir, 'north.pfm'))).toBe(false);
+    expect(existsSync(join(dir, 'north.total.pfm'))).toBe(false);
+    const objects = JSON.parse(readFileSync(join(dir, 'objects.json'), 'utf8'));
+    expect(objects.objects.map((o: { id: string }) => o.id)).toEqual(Object.keys(json.surfaces).map((id) => ROOM_OBJECT_PREFIX + id));
   }, 300_000);
 });
