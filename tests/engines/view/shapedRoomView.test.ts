@@ -12,7 +12,11 @@ import type { LightingScene, Vec3 } from '../../../src/core/model/lightingScene/
 import { ceilingHeightAt } from '../../../src/core/room/ceilingHeightAt';
 import type { RoomInput } from '../../../src/core/room/roomInput';
 import type { BakeScene } from '../../../src/engines/bake/bakeScene';
-import { VIEWER_BAKE_SETTINGS } from '../../../src/engines/relight/createRelightEngine';
+import createGL from 'gl';
+import { prepareObjects } from '../../../src/engines/bake/objects/prepareObjects';
+import { encloseShapedRoom } from '../../../src/engines/bake/shapedRoom/encloseShapedRoom';
+import { createRelightEngine, VIEWER_BAKE_SETTINGS } from '../../../src/engines/relight/createRelightEngine';
+import { floorStats, workPlaneStats } from '../../../src/engines/view/lightStats';
 import { cameraPreset, type CameraPose } from '../../../src/engines/view/cameraPresets';
 import { fixturesFromScene } from '../../../src/engines/view/fixtures';
 import { EYE_MARGIN } from '../../../src/engines/view/frameTheLight';
@@ -118,5 +122,37 @@ describe('shaped rooms in the 3D view', () => {
     expect(lit).toBeGreaterThan(1.5 * shadow + 10);
     // The view's background (0x1d2126): no box floor drawn in the notch.
     expect(notch).toEqual([0x1d, 0x21, 0x26]);
+  }, 300_000);
+
+  it('work-plane statistics: the notch left out, the plane behind the inner corner in shadow, the floor numbers from the atlas', () => {
+    const input: RoomInput = { outline: L_OUTLINE, height: 2.6, reflectance: finishes };
+    const s = scene(input, [[5, 2, 1]]);
+    const gl = createGL(8, 8, { createWebGL2Context: true }) as unknown as WebGL2RenderingContext;
+    const settings = { ...VIEWER_BAKE_SETTINGS, texelSize: 0.1, samples: 16, bounces: 2 };
+    const engine = createRelightEngine(gl, settings);
+    try {
+      engine.setScene(s);
+      engine.finish();
+      const lit = engine.maps();
+      const enclosed = encloseShapedRoom(s);
+      const prepared = prepareObjects(enclosed.objects!, { texelSize: engine.settings.texelSize, maxAtlasSize: engine.settings.maxTextureSize });
+      const plane = workPlaneStats(s, lit, 0.8, 0.25, settings, prepared);
+      const at = (x: number, z: number) => plane.values[Math.floor(z / 0.25) * plane.nx + Math.floor(x / 0.25)];
+      const coveredAt = (x: number, z: number) => plane.covered[Math.floor(z / 0.25) * plane.nx + Math.floor(x / 0.25)];
+      // 24 × 20 cells, the notch's 10 × 8 left out.
+      expect([plane.nx, plane.nz]).toEqual([24, 20]);
+      expect(plane.points).toBe(24 * 20 - 10 * 8);
+      expect(coveredAt(5, 4.5)).toBe(1);
+      expect(coveredAt(1, 4.5)).toBe(0);
+      // Behind the corner (no direct light: only what the room reflects) and beside it.
+      console.info(`work plane: behind the corner ${at(3.2, 4.7).toFixed(1)} lx, beside it ${at(1, 4.6).toFixed(1)} lx, mean ${plane.avg.toFixed(1)} lx`);
+      expect(at(1, 4.6)).toBeGreaterThan(2 * at(3.2, 4.7));
+      expect(at(3.2, 4.7)).toBeGreaterThan(0);
+      const floor = floorStats(lit, prepared);
+      expect(floor.points).toBeGreaterThan(2000);
+      expect(floor.avg).toBeGreaterThan(0);
+    } finally {
+      engine.dispose();
+    }
   }, 300_000);
 });
