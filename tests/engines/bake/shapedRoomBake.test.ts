@@ -135,7 +135,7 @@ describe('shaped rooms in the baker', () => {
     ['an L', { outline: L_OUTLINE, height: 2.6 }],
     ['an attic under two slopes', ATTIC],
   ] as const) {
-    it(`closed room, ρ = 0.6: Σ E·A over the room's surfaces = Φ/(1 − ρ) within 1 %, and Σ E_dir·A = Φ within 0.5 %`, () => {
+    it(`${name}, closed, ρ = 0.6: Σ E·A over the room's surfaces = Φ/(1 − ρ) within 1 %, and Σ E_dir·A = Φ within 0.5 %`, () => {
       const rho = 0.6;
       const scene = sceneOf({ ...input, reflectance: uniform(rho) }, [lamp([1.5, 1.8, 2])]);
       const { maps } = baker.bake(scene, { texelSize: 0.1, samples: 64, bounces: 4 });
