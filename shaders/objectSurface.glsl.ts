@@ -56,10 +56,13 @@ uniform vec3 uSlotRho[2];
 uniform vec3 uSlotGain[2];
 uniform float uSlotPeriod[2];
 uniform float uSlotOn[2];
+// Objects with an index below this are a shaped room's surfaces (engines/bake/shapedRoom): seen from outside they are not drawn, as the box's walls are culled.
+uniform float uFrontOnlyBelow;
 out vec4 fragColor;
 ${toneMapGlsl}
 ${falseColorGlsl(scale)}
 void main() {
+  if (!gl_FrontFacing && vObject < uFrontOnlyBelow) discard;
   vec3 E = gl_FrontFacing ? max(texture(uIlluminance, vUv).rgb, 0.0) : vec3(0.0);
   ivec2 size = textureSize(uReflectance, 0);
   ivec2 texel = clamp(ivec2(floor(vUv * vec2(size))), ivec2(0), size - 1);

@@ -1,7 +1,8 @@
-import { SURFACE_NAMES, type LightingLuminaire, type NearField, type Rgb, type SurfaceName } from '../../core/model/lightingScene/lightingScene';
+import { SURFACE_NAMES, type LightingLuminaire, type NearField, type Rgb, type SurfaceName, type Vec3 } from '../../core/model/lightingScene/lightingScene';
 import type { Photometry } from '../../core/photometry/types';
 import type { MeshPlacement } from '../../core/mesh/placeMesh';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
+import type { Room as ShapedRoom } from '../../core/room/normaliseRoom';
 
 /**
  * One luminaire with its photometry already parsed (the baker reads no files):
@@ -21,6 +22,14 @@ export interface BakeScene {
     height: number;
     depth: number;
     reflectance: Record<SurfaceName, number | Rgb>;
+    /**
+     * A room of any shape (issue 29; the lighting scene's `room.shape`), in world coordinates:
+     * the baker bakes it inside an enclosing box of sinks (shapedRoom/encloseShapedRoom.ts,
+     * docs/baker.md "Rooms of any shape"). Absent: the box [0, width] × [0, height] × [0, depth].
+     */
+    shape?: ShapedRoom;
+    /** Set by encloseShapedRoom on the box it bakes a shaped room in (never by a caller): see RoomEnclosure. */
+    enclosure?: RoomEnclosure;
   };
   luminaires: BakeLuminaire[];
   /**
@@ -31,6 +40,18 @@ export interface BakeScene {
   objects?: BakeObject[];
   /** Near-field model of the luminaires (scene file v2 `nearField`; absent = 'split'); the bake setting `nearField` overrides it. */
   nearField?: NearField;
+}
+
+/**
+ * How a shaped room sits in the box it is baked in: bake coordinates = world + `offset`; the
+ * first `surfaces.length` objects of the enclosed scene are the room's surfaces, in this order;
+ * the box's six surfaces are black sinks of one texel each.
+ */
+export interface RoomEnclosure {
+  offset: Vec3;
+  shape: ShapedRoom;
+  /** The room's surface ids ('floor', 'ceiling', 'slope-<i>', 'wall-<i>'), as src/core/room/roomSurfaces.ts names them; object id = ROOM_OBJECT_PREFIX + id. */
+  surfaces: string[];
 }
 
 /** One object with its mesh already loaded; `reflectance` (grey or RGB) overrides every material of the mesh. */

@@ -3,6 +3,7 @@ import type { BakeScene } from './bakeScene';
 import { resolveBakeSettings, type BakeSettings } from './bakeSettings';
 import type { Baker, GivenObjectDirect } from './bakeJob';
 import { requireFloatTargets } from './floatTarget';
+import { encloseShapedRoom } from './shapedRoom/encloseShapedRoom';
 import { startBakeJob } from './startBakeJob';
 import { createTargetPool } from './targetPool';
 
@@ -13,13 +14,15 @@ export function createBaker(gl: WebGL2RenderingContext): Baker {
   const { linear } = requireFloatTargets(gl);
   // Render targets outlive a job: the next bake of the same room reuses them (targetPool.ts).
   const pool = createTargetPool(gl, linear);
+  // A room of any shape bakes as its enclosure (shapedRoom/encloseShapedRoom.ts); a box scene passes unchanged.
   const start = (scene: BakeScene, partial: Partial<BakeSettings> | undefined, direct: Record<SurfaceName, Float32Array> | null, objectDirect: Float32Array | null = null) =>
-    startBakeJob(gl, linear, pool, scene, resolveBakeSettings(partial), direct, objectDirect);
+    startBakeJob(gl, linear, pool, encloseShapedRoom(scene), resolveBakeSettings(partial), direct, objectDirect);
   return {
     dispose: () => pool.dispose(),
     start: (scene, settings) => start(scene, settings, null),
     startFromDirect: (room, direct, settings, objects?: GivenObjectDirect) =>
-      objects && objects.objects.length > 0 ? start({ room, luminaires: [], objects: objects.objects }, settings, direct, objects.direct) : start({ room, luminaires: [] }, settings, direct),
+      // A shaped room's surfaces are objects: its given maps always include the atlas (objects.objects may be empty).
+      objects && (objects.objects.length > 0 || room.shape || room.enclosure) ? start({ room, luminaires: [], objects: objects.objects }, settings, direct, objects.direct) : start({ room, luminaires: [] }, settings, direct),
     bake(scene, settings) {
       const job = start(scene, settings, null);
       try {

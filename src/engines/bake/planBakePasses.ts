@@ -48,11 +48,17 @@ export function planBakePasses(
   /** Given direct maps (startFromDirect), per surface and, with objects, the atlas's: no direct passes. */
   directOverride: Readonly<Record<string, Float32Array>> | null,
   objects: PlanObjects | null = null,
+  /**
+   * The six surfaces are a shaped room's black sinks (shapedRoom/encloseShapedRoom.ts): no direct
+   * pass (light that reaches them leaves the room and reflects nothing; the lamps sit inside the
+   * room's own surfaces), which spares compiling up to six shadowed programs for one texel each.
+   */
+  sinks = false,
 ): BakePlan {
   // With objects, a lamp still reaches every surface it reaches in the empty room (objects only
   // take light away, per point, in the shader); the atlas gets its own pass with every lamp.
   const direct = layouts.map((layout) => {
-    if (directOverride) return null;
+    if (directOverride || sinks) return null;
     const reaching = lamps.filter((l) => lampReachesSurface(l.sources, l.rotation, l.profile.gammaMin, l.profile.gammaMax, layout));
     if (reaching.length === 0) return null;
     // settings.lampUniforms (a relighting basis): lamps as uniforms, one program per surface and photometry.

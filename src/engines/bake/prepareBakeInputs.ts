@@ -14,6 +14,8 @@ import type { PreparedObjects } from './objects/preparedObjects';
 /** Everything a bake knows before it draws: the room's surfaces, its lamps and its objects, uploaded. */
 export interface BakeInputs {
   roomSize: Vec3;
+  /** A shaped room's enclosure (shapedRoom/encloseShapedRoom.ts): the six box surfaces are black one-texel sinks and get no direct pass. */
+  sinks: boolean;
   /** Per surface index. */
   reflectance: Rgb[];
   layouts: SurfaceLayout[];
@@ -42,6 +44,7 @@ export function prepareBakeInputs(gl: WebGL2RenderingContext, scene: BakeScene, 
   const objects = prepared ? { prepared, inputs: uploadObjectPassInputs(gl, prepared) } : null;
   return {
     roomSize: [room.width, room.height, room.depth],
+    sinks: room.enclosure !== undefined,
     reflectance,
     layouts,
     lamps,

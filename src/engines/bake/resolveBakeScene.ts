@@ -74,6 +74,9 @@ const ROOM_SIDES = [
  */
 function buildObjects(scene: LightingScene, byPath: ReadonlyMap<string, TriangleMesh>): BakeObject[] {
   const dims = [scene.room.width, scene.room.height, scene.room.depth];
+  // A room of any shape: its outline's bounding box, wherever its minimum corner lies (issue 29).
+  const shape = scene.room.shape;
+  const origin = shape ? [Math.min(...shape.corners.map((c) => c[0])), 0, Math.min(...shape.corners.map((c) => c[1]))] : [0, 0, 0];
   return (scene.objects ?? []).map((o, i): BakeObject => {
     const mesh = byPath.get(o.mesh)!;
     const placement = { position: o.position, yaw: o.yaw, scale: o.scale };
@@ -84,8 +87,8 @@ function buildObjects(scene: LightingScene, byPath: ReadonlyMap<string, Triangle
     }
     const { min, max } = positionBounds(placed);
     for (let a = 0; a < 3; a++) {
-      const below = -min[a];
-      const above = max[a] - dims[a];
+      const below = origin[a] - min[a];
+      const above = max[a] - origin[a] - dims[a];
       const [low, high, extent] = ROOM_SIDES[a];
       // Written so that NaN fails (a comparison with NaN is false): issue 32.
       if (!(below <= OBJECT_ROOM_TOLERANCE) || !(above <= OBJECT_ROOM_TOLERANCE)) {

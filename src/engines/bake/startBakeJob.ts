@@ -127,7 +127,7 @@ export function startBakeJob(
 /** Step 3: the plan, and every program it names compiling at once. Given direct maps with objects decide with the atlas's map whether any light enters. */
 function planPasses(gl: WebGL2RenderingContext, inputs: BakeInputs, settings: BakeSettings, given: GivenDirect | null, objects: ReturnType<typeof objectPassViews>['plan']): BakePlan {
   const givenMaps = given && inputs.objects && given.objects ? { ...given.surfaces, objects: given.objects } : (given?.surfaces ?? null);
-  const plan = planBakePasses(inputs.layouts, inputs.lamps.lamps, inputs.roomSize, inputs.reflectance, settings, givenMaps, objects);
+  const plan = planBakePasses(inputs.layouts, inputs.lamps.lamps, inputs.roomSize, inputs.reflectance, settings, givenMaps, objects, inputs.sinks);
   startPrograms(gl, plan.sources);
   return plan;
 }

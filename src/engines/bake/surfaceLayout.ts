@@ -25,6 +25,8 @@ export interface SurfaceLayout {
   /** Texels along u and v. */
   width: number;
   height: number;
+  /** A black one-texel sink of a shaped room's enclosure (shapedRoom/encloseShapedRoom.ts): no part of the room; views and statistics leave it out. */
+  sink?: true;
 }
 
 /** (u axis, v axis, normal axis, sits on the max side of the normal axis) per surface, as in docs/baker.md. */
@@ -46,9 +48,14 @@ export function texelCount(length: number, texelSize: number, maxTexels: number)
   return Math.max(1, Math.min(maxTexels, Math.ceil(length / texelSize - 1e-9)));
 }
 
-/** The six surface layouts of a W×H×D room for a target texel size (metres) and a texture size cap. */
-export function surfaceLayouts(room: { width: number; height: number; depth: number }, texelSize: number, maxTexels: number): SurfaceLayout[] {
+/**
+ * The six surface layouts of a W×H×D room for a target texel size (metres) and a texture size cap.
+ * A shaped room's enclosure (`enclosure` set, shapedRoom/encloseShapedRoom.ts) has black sinks of
+ * one texel each: the room's own surfaces are in the objects' atlas.
+ */
+export function surfaceLayouts(room: { width: number; height: number; depth: number; enclosure?: unknown }, texelSize: number, maxTexels: number): SurfaceLayout[] {
   const dims = [room.width, room.height, room.depth];
+  const cap = room.enclosure ? 1 : maxTexels;
   return SURFACE_NAMES.map((name, index) => {
     const [u, v, n, onMax] = SURFACE_FRAMES[name];
     const origin: Vec3 = [0, 0, 0];
@@ -65,8 +72,9 @@ export function surfaceLayouts(room: { width: number; height: number; depth: num
       normal,
       lengthU: dims[u],
       lengthV: dims[v],
-      width: texelCount(dims[u], texelSize, maxTexels),
-      height: texelCount(dims[v], texelSize, maxTexels),
+      width: texelCount(dims[u], texelSize, cap),
+      height: texelCount(dims[v], texelSize, cap),
+      ...(room.enclosure ? { sink: true as const } : {}),
     };
   });
 }

@@ -14,6 +14,7 @@ import { groupLuminaires, groupWeight, roomKey } from './luminaireGroups';
 import { objectsKey } from './objectsKey';
 import { reflectedFlux, weightedFlux } from './reflectedFlux';
 import type { EngineCounters, EngineFade, EngineProgress, RelightEngine, SetSceneResult } from './RelightEngine';
+import { encloseShapedRoom } from '../bake/shapedRoom/encloseShapedRoom';
 import { emptyLitMaps, relightMaps, sumDirect, type LitMaps } from './relightMaps';
 import { createSolutionCache } from './solutionCache';
 
@@ -115,7 +116,9 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
     out = emptyLitMaps(layouts);
   };
 
-  const setScene = (next: BakeScene): SetSceneResult => {
+  const setScene = (given: BakeScene): SetSceneResult => {
+    // A room of any shape is lit inside its enclosure, as the baker bakes it (remembered per shape and objects: one atlas).
+    const next = encloseShapedRoom(given);
     // Objects are part of the room: moving, adding or removing one is a new scene and rebakes every group.
     const nextRoom = roomKey(next.room) + objectsKey(next.objects);
     if (nextRoom !== room) changeRoom(next, nextRoom);
@@ -149,10 +152,12 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
 
   return {
     setScene,
-    setFade(next) {
+    setFade(given) {
+      // The scene faded from in the same coordinates as the scene (a shaped room's enclosure).
+      const next = given ? { from: encloseShapedRoom(given.from), e: given.e } : null;
       if (next) checkFade(next, scene, order);
       if (!next && !fade) return;
-      fade = next ? { from: next.from, e: next.e } : null;
+      fade = next;
       version++;
     },
     step,

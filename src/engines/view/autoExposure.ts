@@ -24,6 +24,8 @@ export function autoExposure(lit: LitMaps, reflectance: Record<SurfaceName, Rgb>
   let area = 0;
   let any = false;
   for (const name of SURFACE_NAMES) {
+    // A shaped room's enclosure: the six box surfaces are sinks, its surfaces are in the atlas.
+    if (lit.layouts[name].sink) continue;
     const rgb = lit.maps[name].total;
     const a = texelArea(lit.layouts[name]);
     const rho = reflectance[name];

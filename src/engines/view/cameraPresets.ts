@@ -2,6 +2,7 @@ import { InputError } from '../../core/inputError';
 import type { Vec3 } from '../../core/model/lightingScene/lightingScene';
 import { unknownFieldMessage } from '../../core/zodIssues';
 import type { BakeScene } from '../bake/bakeScene';
+import type { Room as ShapedRoom } from '../../core/room/normaliseRoom';
 import { eyeAcrossTheRoom, frameTheLight } from './frameTheLight';
 
 export interface CameraPose {
@@ -33,8 +34,11 @@ export interface FramingLight {
  * - corner: the "doll's house" view from above the south-east corner, outside the room; the
  *   walls facing away from the camera are culled, so the inside shows.
  */
-export function cameraPreset(name: CameraPresetName, room: { width: number; height: number; depth: number }, light?: FramingLight): CameraPose {
+export function cameraPreset(name: CameraPresetName, room: { width: number; height: number; depth: number; shape?: ShapedRoom }, light?: FramingLight): CameraPose {
   const { width: W, height: H, depth: D } = room;
+  // A shaped room's outline may start anywhere: the views from outside frame its bounding box.
+  const [x0, z0] = room.shape ? [Math.min(...room.shape.corners.map((c) => c[0])), Math.min(...room.shape.corners.map((c) => c[1]))] : [0, 0];
+  const moved = (pose: CameraPose): CameraPose => (x0 === 0 && z0 === 0 ? pose : { ...pose, position: [pose.position[0] + x0, pose.position[1], pose.position[2] + z0], target: [pose.target[0] + x0, pose.target[1], pose.target[2] + z0] });
   switch (name) {
     case 'eye':
       return light ? frameTheLight(light.scene, light.aspect).pose : eyeAcrossTheRoom(room);
@@ -44,11 +48,11 @@ export function cameraPreset(name: CameraPresetName, room: { width: number; heig
       const extent = Math.max(W, D) * 0.6;
       const distance = extent / Math.tan(((fov / 2) * Math.PI) / 180);
       // A hair off the vertical so the view's "up" (−z, north) is well defined.
-      return { position: [W / 2, H + distance, D / 2 + 1e-3], target: [W / 2, 0, D / 2], fov };
+      return moved({ position: [W / 2, H + distance, D / 2 + 1e-3], target: [W / 2, 0, D / 2], fov });
     }
     case 'corner': {
       const r = Math.max(W, D, H);
-      return { position: [W + 0.55 * r, H + 0.9 * r, D + 0.75 * r], target: [W / 2, H * 0.3, D / 2], fov: 45 };
+      return moved({ position: [W + 0.55 * r, H + 0.9 * r, D + 0.75 * r], target: [W / 2, H * 0.3, D / 2], fov: 45 });
     }
   }
 }
@@ -58,7 +62,7 @@ const CAMERA_FIELDS = ['position', 'target', 'fov'] as const;
 const isVec3 = (v: unknown): v is Vec3 => Array.isArray(v) && v.length === 3 && v.every((x) => typeof x === 'number' && Number.isFinite(x));
 
 /** `--camera eye|top|corner` or a JSON object `{"position":[x,y,z],"target":[x,y,z],"fov":deg}`. */
-export function parseCameraSpec(spec: string, room: { width: number; height: number; depth: number }, light?: FramingLight): CameraPose {
+export function parseCameraSpec(spec: string, room: { width: number; height: number; depth: number; shape?: ShapedRoom }, light?: FramingLight): CameraPose {
   if ((CAMERA_PRESETS as readonly string[]).includes(spec)) return cameraPreset(spec as CameraPresetName, room, light);
   let data: unknown;
   try {

@@ -1,4 +1,5 @@
 import type { BakeScene } from '../bake/bakeScene';
+import { encloseShapedRoom } from '../bake/shapedRoom/encloseShapedRoom';
 import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 import { resolveBakeSettings, type BakeSettings } from '../bake/bakeSettings';
 import type { PreparedObjects } from '../bake/objects/preparedObjects';
@@ -156,7 +157,8 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
   /** Targets freed for the engine version that finished (low memory), so the free runs once per bake. */
   let trimmedAt = -1;
 
-  const lit = (s: BakeScene) => (overlay ? overlay(s) : s);
+  // A room of any shape is lit as the baker bakes it, inside its enclosure (encloseShapedRoom: remembered per shape and objects, so every change of dimming keeps one atlas).
+  const lit = (s: BakeScene) => encloseShapedRoom(overlay ? overlay(s) : s);
   /** The engine's scene and, during a fade, its fade; a fade whose scenes no longer match (a module added meanwhile) ends. */
   const light = (engine: RelightEngine | null, s: BakeScene) => {
     if (!engine) return;
@@ -260,7 +262,7 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
     setScene(next) {
       if (disposed) return;
       scene = next;
-      prepared = prepareFor(next.objects, settings());
+      prepared = prepareFor(encloseShapedRoom(next).objects, settings());
       light(context.engine, next);
       slicer.queue();
     },
@@ -315,7 +317,7 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
       if (level === quality || disposed) return;
       quality = level;
       const engine = context.setSettings(levelSettings(level));
-      if (scene) prepared = prepareFor(scene.objects, settings());
+      if (scene) prepared = prepareFor(encloseShapedRoom(scene).objects, settings());
       if (scene) light(engine, scene);
       emit({ type: 'engine', engine });
       slicer.queue();

@@ -10,6 +10,13 @@ import { objectFinishRgb } from '../../core/model/objects/furniture/objectFinish
 import { uploadModulation, type FinishTextureOnGpu } from './createFinishTextures';
 import { finishModulation } from './finishTexture';
 import { OBJECT_FINISH_TEXTURE_OF, OBJECT_TEXTURE_SLOTS } from './finishTextureKinds';
+import { ROOM_OBJECT_PREFIX } from '../bake/shapedRoom/roomSurfaceObjects';
+
+/** A shaped room's surfaces come first among the objects (encloseShapedRoom): how many ids lead with the room's prefix. */
+function roomSurfaceCount(ids: readonly string[]): number {
+  const k = ids.findIndex((id) => !id.startsWith(ROOM_OBJECT_PREFIX));
+  return k < 0 ? ids.length : k;
+}
 
 const fragmentShader = objectSurfaceFragment({ maxLevels: MAX_LEVELS, turbo: [TURBO_R, TURBO_G, TURBO_B] });
 
@@ -32,8 +39,10 @@ export interface RoomObjects {
   setSelected(id: string | null): void;
   /** Draw the veneers' wood grain (default on; light mode only): OBJECT_FINISH_TEXTURE_OF. */
   setFinishTextures(on: boolean): void;
-  /** The object id of a triangle of the drawn mesh (three's Raycaster faceIndex), or null. */
+  /** The object id of a triangle of the drawn mesh (three's Raycaster faceIndex), or null (none, or a shaped room's surface). */
   objectAt(faceIndex: number): string | null;
+  /** The shaped room's surface id ('floor', 'wall-2', …) of a triangle of the drawn mesh, or null (an object). */
+  roomSurfaceAt(faceIndex: number): string | null;
   readonly geometry: ObjectRenderGeometry | null;
   dispose(): void;
 }
@@ -43,6 +52,8 @@ export function createRoomObjects(display: SharedDisplayUniforms, renderer: THRE
   const group = new THREE.Group();
   group.name = 'objects-group';
   const selected = { value: -1 };
+  /** How many of the first objects are a shaped room's surfaces (front side only, never picked). */
+  const frontOnlyBelow = { value: 0 };
   const material = new THREE.ShaderMaterial({
     glslVersion: THREE.GLSL3,
     vertexShader: objectSurfaceVertex,
@@ -51,6 +62,7 @@ export function createRoomObjects(display: SharedDisplayUniforms, renderer: THRE
       uIlluminance: { value: null },
       uReflectance: { value: null },
       uSelected: selected,
+      uFrontOnlyBelow: frontOnlyBelow,
       uSlot0: { value: null },
       uSlot1: { value: null },
       uSlotRho: { value: Array.from({ length: OBJECT_TEXTURE_SLOTS }, () => new THREE.Vector3(-1, -1, -1)) },
@@ -146,6 +158,7 @@ export function createRoomObjects(display: SharedDisplayUniforms, renderer: THRE
       if (!next || next.triangleCount === 0) return;
       prepared = next;
       geometry = objectRenderGeometry(next);
+      frontOnlyBelow.value = roomSurfaceCount(geometry.ids);
       const g = new THREE.BufferGeometry();
       g.setAttribute('position', new THREE.BufferAttribute(geometry.positions, 3));
       g.setAttribute('normal', new THREE.BufferAttribute(geometry.normals, 3));
@@ -209,7 +222,13 @@ export function createRoomObjects(display: SharedDisplayUniforms, renderer: THRE
     },
     objectAt(faceIndex) {
       if (!geometry || faceIndex < 0 || faceIndex >= geometry.triangleCount) return null;
-      return geometry.ids[geometry.objectOfTriangle[faceIndex]];
+      const object = geometry.objectOfTriangle[faceIndex];
+      return object < frontOnlyBelow.value ? null : geometry.ids[object];
+    },
+    roomSurfaceAt(faceIndex) {
+      if (!geometry || faceIndex < 0 || faceIndex >= geometry.triangleCount) return null;
+      const object = geometry.objectOfTriangle[faceIndex];
+      return object < frontOnlyBelow.value ? geometry.ids[object].slice(ROOM_OBJECT_PREFIX.length) : null;
     },
     dispose() {
       clear();

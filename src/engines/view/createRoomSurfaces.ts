@@ -122,6 +122,8 @@ export function createRoomSurfaces(scene: THREE.Scene, renderer: THREE.WebGLRend
     });
     const mesh = new THREE.Mesh(quadGeometry(layout), material);
     mesh.name = layout.name;
+    // A shaped room's enclosure: the box surface is a black sink, never drawn (the room's own surfaces are objects, shapedRoomView.ts).
+    mesh.visible = layout.sink !== true;
     scene.add(mesh);
     s = { mesh, material, texture: null, key, layout };
     surfaces.set(layout.name, s);

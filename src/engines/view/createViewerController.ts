@@ -121,6 +121,7 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
       view.setGlare(glareNow());
       camera.attach(view);
       if (fixtures) view.setFixtures(fixtures);
+      view.setRoomShape(scene?.room.shape ?? null);
       view.setObjects(prepared);
       view.setSelectedObject(selectedObject);
       view.setSelectedModule(selectedModule);
@@ -206,6 +207,7 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
       compareView = createRoomView(renderer);
       compareView.setGlare(glareNow());
       if (fixtures) compareView.setFixtures(fixtures);
+      compareView.setRoomShape(scene.room.shape ?? null);
       compareView.setObjects(prepared);
     }
     const sides: [RoomView, BakeScene][] = [
@@ -297,6 +299,8 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
       fixtures = nextFixtures;
       view.setFixtures(nextFixtures);
       compareView?.setFixtures(nextFixtures);
+      view.setRoomShape(next.room.shape ?? null);
+      compareView?.setRoomShape(next.room.shape ?? null);
       syncWeights();
       syncObjects();
       camera.setScene(next);

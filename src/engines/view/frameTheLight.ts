@@ -4,6 +4,7 @@ import { LUMINANCE_WEIGHTS } from '../bake/bakedMaps';
 import { directAtPoint } from '../bake/directAtPoint';
 import { scenePointSources } from '../bake/scenePointSources';
 import type { CameraPose } from './cameraPresets';
+import { clampInsideShape, eyeAcrossShapedRoom, frameShapedRoom } from './shapedRoomCamera';
 
 type Room = BakeScene['room'];
 
@@ -41,8 +42,9 @@ function wallMargin(room: Pick<Room, 'width' | 'depth'>): number {
   return Math.min(EYE_MARGIN, room.width / 4, room.depth / 4);
 }
 
-/** A point clamped into the room shrunk by `margin` on every side (the eye camera's orbit limit). */
-export function clampInsideRoom(p: Vec3, room: Pick<Room, 'width' | 'height' | 'depth'>, margin = EYE_MARGIN): Vec3 {
+/** A point clamped into the room shrunk by `margin` on every side (the eye camera's orbit limit; a shaped room: clampInsideShape). */
+export function clampInsideRoom(p: Vec3, room: Pick<Room, 'width' | 'height' | 'depth' | 'shape'>, margin = EYE_MARGIN): Vec3 {
+  if (room.shape) return clampInsideShape(p, room.shape, margin);
   const size: Vec3 = [room.width, room.height, room.depth];
   return p.map((v, a) => {
     const m = Math.min(margin, size[a] / 2);
@@ -57,8 +59,9 @@ export function eyeFov(aspect: number): number {
   return Math.min(100, (2 * half * 180) / Math.PI);
 }
 
-/** The eye view without light to frame: from the middle of the south wall, EYE_MARGIN inside it, across the room. */
-export function eyeAcrossTheRoom(room: Pick<Room, 'width' | 'height' | 'depth'>, aspect = 1.6): CameraPose {
+/** The eye view without light to frame: from the middle of the south wall, EYE_MARGIN inside it, across the room (a shaped room: from its longest wall). */
+export function eyeAcrossTheRoom(room: Pick<Room, 'width' | 'height' | 'depth' | 'shape'>, aspect = 1.6): CameraPose {
+  if (room.shape) return eyeAcrossShapedRoom(room.shape, { margin: EYE_MARGIN, height: eyeHeight, fov: eyeFov(aspect) });
   const { width: W, height: H, depth: D } = room;
   const h = eyeHeight(H);
   return { position: [W / 2, h, D - Math.min(EYE_MARGIN, D / 4)], target: [W / 2, h * 0.6, D * 0.3], fov: eyeFov(aspect) };
@@ -140,6 +143,12 @@ function project(c: Vec3, axes: { f: Vec3; r: Vec3; u: Vec3 }, p: Vec3): { x: nu
  * a luminaire in one view at that field gets a wider lens (+15°, then +30°).
  */
 export function frameTheLight(scene: BakeScene, aspect = 1.6): LightFraming {
+  // A room of any shape: a person stands inside its outline, clear of every wall (shapedRoomCamera.ts).
+  const shape = scene.room.shape;
+  if (shape) {
+    const eye = { margin: EYE_MARGIN, height: eyeHeight, fov: eyeFov(aspect) };
+    return { pose: frameShapedRoom(scene, shape, aspect, eye) ?? eyeAcrossShapedRoom(shape, eye), pool: null, luminairesInView: [] };
+  }
   const room = scene.room;
   const { width: W, height: H, depth: D } = room;
   const m = wallMargin(room);

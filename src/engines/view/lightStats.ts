@@ -10,6 +10,8 @@ import { createObjectRayCaster } from '../bake/objects/createObjectRayCaster';
 import type { PreparedObjects } from '../bake/objects/preparedObjects';
 import type { SurfaceLayout } from '../bake/surfaceLayout';
 import { objectRenderGeometry } from './objectRenderGeometry';
+import { roomSurfaceStats } from './roomSurfaceStats';
+import { shapedWorkPlaneStats } from './shapedWorkPlaneStats';
 
 /** Shadow rays toward the lamps start this far above the work plane (metres): clear of a table top lying in it. */
 const SHADOW_RAY_OFFSET = 1e-4;
@@ -138,6 +140,8 @@ export function workPlaneUnderObjects(room: { width: number; depth: number }, nx
  * the area furniture occupies. `points` counts the texels taken.
  */
 export function floorStats(lit: LitMaps, objects: PreparedObjects | null = null): IlluminanceStats {
+  // A shaped room's floor is in the atlas (engines/bake/shapedRoom): its texels there, the box's floor is a sink.
+  if (lit.layouts.floor.sink && objects && lit.maps.objects) return roomSurfaceStats(objects, lit.maps.objects.total, lit.maps.objects.atlas).find((s) => s.surface === 'floor') ?? statsOf([]);
   const rgb = lit.maps.floor.total;
   const covered = floorUnderObjects(lit.layouts.floor, objects);
   const lux: number[] = [];
@@ -173,6 +177,8 @@ export function workPlaneStats(
   settings: Partial<BakeSettings> = {},
   objects: PreparedObjects | null = null,
 ): IlluminanceStats & { values: Float32Array; covered: Uint8Array; nx: number; nz: number } {
+  // A room of any shape: the grid over its outline, shadows of its own corners, indirect light from the atlas floor.
+  if (scene.room.shape) return shapedWorkPlaneStats(scene, lit, height, spacing, settings, objects);
   const { width, depth } = scene.room;
   const lamps = scenePointSources(scene, resolveBakeSettings(settings));
   const caster = objects && objects.triangleCount > 0 ? createObjectRayCaster(objects) : null;

@@ -20,6 +20,8 @@ export function luxScaleTop(lit: LitMaps, percentile = 0.99, objects: ObjectLigh
   let count = 0;
   const bin = (y: number) => Math.min(bins.length - 1, Math.max(0, y > 0 ? Math.floor((Math.log10(y) - LOW) * BINS_PER_DECADE) : 0));
   for (const n of SURFACE_NAMES) {
+    // A shaped room's enclosure: the box surfaces are sinks, the room's surfaces are in the atlas.
+    if (lit.layouts[n].sink) continue;
     const m = lit.maps[n].total;
     for (let i = 0; i < m.length; i += 3) {
       const y = LUMINANCE_WEIGHTS[0] * m[i] + LUMINANCE_WEIGHTS[1] * m[i + 1] + LUMINANCE_WEIGHTS[2] * m[i + 2];

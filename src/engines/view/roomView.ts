@@ -5,6 +5,8 @@ import type { LitMaps } from '../relight/relightMaps';
 import type { CameraPose } from './cameraPresets';
 import type { PreparedObjects } from '../bake/objects/preparedObjects';
 import { createRoomHardware } from './createRoomHardware';
+import type { Room as ShapedRoom } from '../../core/room/normaliseRoom';
+import { applyRoomShape, firstSeenHit } from './shapedRoomView';
 import { createRoomObjects, OBJECTS_MESH_NAME } from './createRoomObjects';
 import { createRoomSurfaces, type SharedDisplayUniforms, type ViewMode } from './createRoomSurfaces';
 import type { Fixtures } from './fixtures';
@@ -32,6 +34,8 @@ export interface RoomView {
   setMaps(lit: LitMaps, reflectance: Record<SurfaceName, Rgb>): void;
   /** The objects' geometry (PreparedObjects of the scene's objects, the same the baker lights; null: none). */
   setObjects(prepared: PreparedObjects | null): void;
+  /** A room of any shape (null: the box): its own surfaces are drawn from the atlas, the box's hidden (shapedRoomView.ts). */
+  setRoomShape(shape: ShapedRoom | null): void;
   /** The objects' relit light (null: not yet, they stay hidden). */
   setObjectLight(light: ObjectLight | null): void;
   /** Highlight an object by id (null: none). */
@@ -106,6 +110,7 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
     setFixtures: hardware.setFixtures,
     setModuleWeights: hardware.setModuleWeights,
     setObjects: objects.setGeometry,
+    setRoomShape: (shape) => applyRoomShape(objects, shape),
     setObjectLight: objects.setLight,
     setSelectedObject: objects.setSelected,
     setSelectedModule: hardware.setSelectedModule,
@@ -118,7 +123,7 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
       // materials, which the raycaster honours: the walls the corner view looks through (back faces) do not block.
       const walls = scene.children.filter((c) => (SURFACE_NAMES as readonly string[]).includes(c.name));
       const targets = [...walls, ...hardware.moduleMeshes(), ...objects.group.children.filter((c) => c.name === OBJECTS_MESH_NAME && c.visible)];
-      const hit = raycaster.intersectObjects(targets, false)[0];
+      const hit = firstSeenHit(raycaster.intersectObjects(targets, false), objects, raycaster.ray);
       if (!hit) return null;
       if (hit.object.name === OBJECTS_MESH_NAME) {
         const id = hit.faceIndex != null ? objects.objectAt(hit.faceIndex) : null;
@@ -132,7 +137,7 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
       camera.updateMatrixWorld();
       raycaster.setFromCamera(new THREE.Vector2(ndcX, ndcY), camera);
       const targets = [...scene.children.filter((c) => (SURFACE_NAMES as readonly string[]).includes(c.name)), ...objects.group.children.filter((c) => c.name === OBJECTS_MESH_NAME && c.visible)];
-      const hit = raycaster.intersectObjects(targets, false)[0];
+      const hit = firstSeenHit(raycaster.intersectObjects(targets, false), objects, raycaster.ray);
       return hit ? [hit.point.x, hit.point.y, hit.point.z] : null;
     },
     setCamera(pose, aspect) {

@@ -1,4 +1,5 @@
 import { furnishedTables } from './furnishedBench';
+import { shapedRoomTables } from './shapedRoomBench';
 import type { BenchResult } from './runBench';
 
 const pct = (e: number): string => (100 * e < 0.1 ? (100 * e).toFixed(3) : (100 * e).toFixed(2));
@@ -69,6 +70,12 @@ export function benchTables(r: BenchResult, svgName: string | null): string {
     lines.push('#### Furnished rooms (objects, against the furnished CPU reference)');
     lines.push('');
     lines.push(furnishedTables(r.furnished));
+    lines.push('');
+  }
+  if (r.shaped && r.shaped.length > 0) {
+    lines.push('#### Rooms of any shape (the room reference; issue 29)');
+    lines.push('');
+    lines.push(shapedRoomTables(r.shaped));
     lines.push('');
   }
   return lines.join('\n');

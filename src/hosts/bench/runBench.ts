@@ -27,6 +27,7 @@ import {
 } from './benchScenes';
 import { relativeErrors } from './errorStats';
 import { runFurnishedBench, type FurnishedBenchScenePart } from './furnishedBench';
+import { runShapedRoomBench, type ShapedBenchScenePart } from './shapedRoomBench';
 import { machineInfo, type MachineInfo } from './machineInfo';
 
 export interface BenchRow {
@@ -78,6 +79,8 @@ export interface BenchResult {
   scalingQuality: Omit<BenchQuality, 'texelSize'>;
   /** Furnished scenes (issue #10) against the furnished reference; full runs only. */
   furnished?: FurnishedBenchScenePart[];
+  /** Rooms of any shape (issue 29) against the room reference; full runs only. */
+  shaped?: ShapedBenchScenePart[];
   totalMs: number;
 }
 
@@ -242,10 +245,12 @@ export function runBench(options: BenchOptions): BenchResult {
       options.log(`scaling: texel ${texelSize} m (${report.totalTexels} texels): ${Math.round(ms)} ms`);
     }
     const furnished = options.quick ? undefined : runFurnishedBench(baker, options.root, options.log);
+    const shaped = options.quick ? undefined : runShapedRoomBench(baker, options.root, options.log);
     return {
       quick: options.quick,
       machine,
       furnished,
+      shaped,
       scenes: infos,
       rows,
       scaling,

@@ -3,6 +3,17 @@ import { SURFACE_NAMES, type SurfaceName } from '../../core/model/lightingScene/
 import { luxOf, type BakedMaps } from '../../engines/bake/bakedMaps';
 import type { BakeReport } from '../../engines/bake/createBaker';
 import { texelArea } from '../../engines/bake/surfaceLayout';
+import { ROOM_OBJECT_PREFIX } from '../../engines/bake/shapedRoom/roomSurfaceObjects';
+
+/** A shaped room's surface ids, in atlas object order (the leading 'room:' objects of the report). */
+export function roomSurfaceIds(report: BakeReport): string[] {
+  const out: string[] = [];
+  for (const o of report.objects ?? []) {
+    if (!o.id.startsWith(ROOM_OBJECT_PREFIX)) break;
+    out.push(o.id.slice(ROOM_OBJECT_PREFIX.length));
+  }
+  return out;
+}
 
 export interface SurfaceSummary {
   /** m² */
@@ -44,6 +55,51 @@ export function summarizeSurfaces(maps: BakedMaps): Record<SurfaceName, SurfaceS
   return out;
 }
 
+/** A shaped room's surface in report.json (issue 29): the numbers of its atlas texels, coverage-weighted. */
+export interface RoomSurfaceSummary {
+  /** m², openings left out (Σ coverage · texel²). */
+  area: number;
+  /** lux (photometric Y), over covered texels; avg weighted by coverage */
+  min: number;
+  avg: number;
+  max: number;
+  direct_avg: number;
+  indirect_avg: number;
+  /** Covered atlas texels. */
+  texels: number;
+}
+
+/**
+ * Per surface of a shaped room (its surfaces are the first objects of the atlas, ids
+ * 'room:<surface>', engines/bake/shapedRoom), keyed by surface id ('floor', 'ceiling', 'slope-<i>',
+ * 'wall-<i>'). The enclosure's six sink surfaces are no part of the room and are not reported.
+ */
+export function summarizeRoomSurfaces(maps: BakedMaps, ids: readonly string[]): Record<string, RoomSurfaceSummary> {
+  const o = maps.objects;
+  const out: Record<string, RoomSurfaceSummary> = {};
+  if (!o) return out;
+  const [total, direct, indirect] = [luxOf(o.total), luxOf(o.direct), luxOf(o.indirect)];
+  const sums = ids.map(() => ({ w: 0, t: 0, d: 0, i: 0, n: 0, min: Infinity, max: -Infinity }));
+  for (let k = 0; k < total.length; k++) {
+    const w = o.atlas.position[4 * k + 3];
+    const s = sums[Math.round(o.atlas.reflectance[4 * k + 3]) - 1];
+    if (!(w > 0) || !s) continue;
+    s.w += w;
+    s.t += w * total[k];
+    s.d += w * direct[k];
+    s.i += w * indirect[k];
+    s.n++;
+    s.min = Math.min(s.min, total[k]);
+    s.max = Math.max(s.max, total[k]);
+  }
+  ids.forEach((id, k) => {
+    const s = sums[k];
+    const mean = (v: number) => (s.w > 0 ? v / s.w : 0);
+    out[id] = { area: s.w * o.atlas.texelSize ** 2, min: s.n ? s.min : 0, avg: mean(s.t), max: s.n ? s.max : 0, direct_avg: mean(s.d), indirect_avg: mean(s.i), texels: s.n };
+  });
+  return out;
+}
+
 /** What report.json says about an object's mesh besides the baker's statistics. */
 export interface ObjectSource {
   /** The mesh path as the scene gives it. */
@@ -63,10 +119,13 @@ export interface ObjectSource {
 export function reportJson(scenePath: string, maps: BakedMaps, report: BakeReport, sources: readonly ObjectSource[] = []) {
   const { settings, timings_ms, ...bake } = report;
   const objects = report.objects;
+  // A shaped room (issue 29): its own surfaces, from the atlas; the enclosure's sinks are not the room's.
+  const room = maps.floor.layout.sink ? roomSurfaceIds(report) : null;
   return {
     scene: scenePath,
-    surfaces: summarizeSurfaces(maps),
-    ...(objects ? { objects: objects.map((o, i) => ({ ...o, ...(sources[i] ?? {}) })) } : {}),
+    surfaces: room ? summarizeRoomSurfaces(maps, room) : summarizeSurfaces(maps),
+    // The room's surfaces lead a shaped room's objects: the scene's objects' sources start after them.
+    ...(objects ? { objects: objects.map((o, i) => ({ ...o, ...(sources[i - (room?.length ?? 0)] ?? {}) })) } : {}),
     timings_ms,
     settings,
     bake,

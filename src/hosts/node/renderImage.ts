@@ -4,6 +4,7 @@ import * as THREE from 'three';
 import type { BakeSettings } from '../../engines/bake/bakeSettings';
 import { reflectanceRgb } from '../../engines/bake/bakeScene';
 import { prepareObjects } from '../../engines/bake/objects/prepareObjects';
+import { encloseShapedRoom } from '../../engines/bake/shapedRoom/encloseShapedRoom';
 import { createRelightEngine, VIEWER_BAKE_SETTINGS } from '../../engines/relight/createRelightEngine';
 import type { CameraPose } from '../../engines/view/cameraPresets';
 import { floorStats, type IlluminanceStats } from '../../engines/view/lightStats';
@@ -104,8 +105,10 @@ export function createRenderSession(width: number, height: number): RenderSessio
         renderer.resetState();
         const view = createRoomView(renderer);
         // The objects' geometry on the atlas the baker lit (same objects, same texel size and limit).
-        const objects = input.bakeScene.objects ?? [];
+        // A room of any shape: its surfaces are the first objects of the enclosure the engine lit (encloseShapedRoom), the box hidden.
+        const objects = encloseShapedRoom(input.bakeScene).objects ?? [];
         const prepared = objects.length > 0 ? prepareObjects(objects, { texelSize: engine.settings.texelSize, maxAtlasSize: engine.settings.maxTextureSize }) : null;
+        view.setRoomShape(input.bakeScene.room.shape ?? null);
         view.setObjects(prepared);
         const { exposure, ev100 } = presentMaps(view, lit, reflectanceRgb(input.bakeScene.room), {
           exposureEv: options.exposureEv,

@@ -1,0 +1,174 @@
+/**
+ * Rooms of any shape in `luxbox bench` (issue 29): an L-shaped living room, an attic with a knee
+ * wall and a spot aimed under the slope, a room with a chimney breast — each baked at every rung
+ * of SHAPED_LADDER (after an untimed warm-up bake) and compared with the independent room
+ * reference (src/reference/solveRoomReference.ts) at fully covered atlas texels of the room's
+ * surfaces (shapedRoomComparison.ts: points within 5 cm of an edge left out and counted).
+ */
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import type { LightingLuminaire } from '../../core/model/lightingScene/lightingScene';
+import { parsePhotometry } from '../../core/photometry/parsePhotometry';
+import type { Photometry } from '../../core/photometry/types';
+import { normaliseRoom } from '../../core/room/normaliseRoom';
+import type { RoomInput } from '../../core/room/roomInput';
+import type { BakeScene } from '../../engines/bake/bakeScene';
+import type { Baker } from '../../engines/bake/createBaker';
+import { solveRoomReference } from '../../reference/solveRoomReference';
+import type { BenchQuality } from './benchScenes';
+import { compareWithReference, relativeErrors } from './shapedRoomComparison';
+
+export interface ShapedBenchScene {
+  name: string;
+  description: string;
+  room: RoomInput;
+  luminaires: LightingLuminaire[];
+  /** `photometry` key → file under public/ies. */
+  files: Record<string, string>;
+}
+
+const finishes = { floor: 0.3, ceiling: 0.8, walls: 0.6 };
+const lamp = (photometry: string, position: [number, number, number], pitch = 0): LightingLuminaire => ({ photometry, position, yaw: 0, pitch, roll: 0 });
+
+export const SHAPED_SCENES: readonly ShapedBenchScene[] = [
+  {
+    name: 'l-living',
+    description: 'L-shaped living room, 6 × 5 m outline (2.5 × 2 m notch), 2.6 m, a downlight (BEGA 50975) in each arm',
+    room: {
+      outline: [
+        [0, 0],
+        [6, 0],
+        [6, 3],
+        [3.5, 3],
+        [3.5, 5],
+        [0, 5],
+      ],
+      height: 2.6,
+      reflectance: finishes,
+    },
+    luminaires: [lamp('down', [4.5, 2.5, 1.5]), lamp('down', [1.5, 2.5, 4])],
+    files: { down: 'bega_50975_downlight_lm1995_crlf.ies' },
+  },
+  {
+    name: 'attic-spot',
+    description: 'attic 5 × 4 m, 2.5 m, a 40° slope from a 1 m knee wall; a narrow spot (BEGA 84693) aimed up under the slope and a downlight',
+    room: {
+      outline: [
+        [0, 0],
+        [5, 0],
+        [5, 4],
+        [0, 4],
+      ],
+      height: 2.5,
+      slopes: [{ wall: 0, kneeHeight: 1, pitch: 40 }],
+      reflectance: finishes,
+    },
+    luminaires: [lamp('spot', [2.5, 1.6, 3], 120), lamp('down', [1.2, 2.4, 2.8])],
+    files: { spot: 'bega_84693_narrow_spot.ies', down: 'bega_50975_downlight_lm1995_crlf.ies' },
+  },
+  {
+    name: 'chimney-breast',
+    description: 'room 5 × 4 m, 2.5 m, a 1.4 × 0.5 m chimney breast on the north wall, two downlights (BEGA 50975)',
+    room: {
+      outline: [
+        [0, 0],
+        [1.8, 0],
+        [1.8, 0.5],
+        [3.2, 0.5],
+        [3.2, 0],
+        [5, 0],
+        [5, 4],
+        [0, 4],
+      ],
+      height: 2.5,
+      reflectance: finishes,
+    },
+    luminaires: [lamp('down', [1, 2.4, 1]), lamp('down', [4, 2.4, 2.5])],
+    files: { down: 'bega_50975_downlight_lm1995_crlf.ies' },
+  },
+];
+
+/** Default samples and bounces at two texel sizes, and 4× the samples (what the first bounce from a hot spot on a chart needs). */
+export const SHAPED_LADDER: readonly BenchQuality[] = [
+  { texelSize: 0.1, samples: 64, bounces: 4 },
+  { texelSize: 0.05, samples: 64, bounces: 4 },
+  { texelSize: 0.1, samples: 256, bounces: 4 },
+];
+
+export interface ShapedBenchRow {
+  scene: string;
+  quality: BenchQuality;
+  bakeMs: number;
+  points: number;
+  nearEdge: number;
+  directRms: number;
+  totalRms: number;
+  totalMax: number;
+}
+
+export interface ShapedBenchScenePart {
+  scene: ShapedBenchScene;
+  patches: number;
+  referenceMs: number;
+  rows: ShapedBenchRow[];
+}
+
+export function runShapedRoomBench(baker: Baker, root: string, log: (line: string) => void): ShapedBenchScenePart[] {
+  const parts: ShapedBenchScenePart[] = [];
+  for (const s of SHAPED_SCENES) {
+    const files: Record<string, Photometry> = {};
+    for (const [key, file] of Object.entries(s.files)) files[key] = parsePhotometry(readFileSync(join(root, 'public/ies', file)), file);
+    const t0 = performance.now();
+    const reference = solveRoomReference(s.room, s.luminaires, files, { patchSize: 0.25, openingCell: 0.05 });
+    let referenceMs = performance.now() - t0;
+    log(`${s.name}: room reference ${reference.patches.length} patches, ${Math.round(referenceMs)} ms`);
+    const shape = normaliseRoom(s.room);
+    const xs = shape.corners.map((c) => c[0]);
+    const zs = shape.corners.map((c) => c[1]);
+    const grey = { floor: 0.5, ceiling: 0.5, north: 0.5, south: 0.5, west: 0.5, east: 0.5 };
+    const scene: BakeScene = {
+      room: { width: Math.max(...xs) - Math.min(...xs), height: shape.height, depth: Math.max(...zs) - Math.min(...zs), reflectance: grey, shape },
+      luminaires: s.luminaires.map((l) => ({ ...l, photometry: files[l.photometry], dimming: 1, color: [1, 1, 1] })),
+    };
+    const rows: ShapedBenchRow[] = [];
+    for (const quality of SHAPED_LADDER) {
+      const settings = { ...quality, sourceSpacing: 0.05 };
+      baker.bake(scene, { ...settings, samples: 16, bounces: 1 });
+      const started = performance.now();
+      const { maps } = baker.bake(scene, settings);
+      const bakeMs = performance.now() - started;
+      const t1 = performance.now();
+      // About one point per 0.1 m × 0.1 m whatever the texel size.
+      const c = compareWithReference(scene, maps, reference, Math.max(1, Math.round(0.1 / quality.texelSize) ** 2));
+      referenceMs += performance.now() - t1;
+      const peak = Math.max(...c.points.map((p) => p.reference.total));
+      const direct = relativeErrors(c.points, 'direct', 0.01 * peak);
+      const total = relativeErrors(c.points, 'total', 0.01 * peak);
+      const row: ShapedBenchRow = { scene: s.name, quality, bakeMs, points: total.n, nearEdge: c.nearEdge, directRms: direct.rms, totalRms: total.rms, totalMax: total.max };
+      rows.push(row);
+      log(
+        `  texel ${quality.texelSize} m, ${quality.samples} samples: bake ${Math.round(bakeMs)} ms; direct RMS ${(100 * row.directRms).toFixed(2)} %, total RMS ${(100 * row.totalRms).toFixed(2)} %, worst ${(100 * row.totalMax).toFixed(1)} % (${row.points} points, ${row.nearEdge} near an edge)`,
+      );
+    }
+    parts.push({ scene: s, patches: reference.patches.length, referenceMs, rows });
+  }
+  return parts;
+}
+
+/** The shaped-room rows as markdown (docs/benchmarks.md, "Rooms of any shape"). */
+export function shapedRoomTables(parts: readonly ShapedBenchScenePart[]): string {
+  const pct = (e: number): string => `${(100 * e).toFixed(2)} %`;
+  const lines: string[] = [];
+  lines.push('| scene | reference patches | reference time (solve + queries) |');
+  lines.push('|---|---|---|');
+  for (const p of parts) lines.push(`| ${p.scene.name}: ${p.scene.description} | ${p.patches} | ${(p.referenceMs / 1000).toFixed(1)} s |`);
+  lines.push('');
+  lines.push('| scene | texel | samples | bounces | bake time | points (near an edge, left out) | direct RMS | total RMS | worst point |');
+  lines.push('|---|---|---|---|---|---|---|---|---|');
+  for (const p of parts) {
+    for (const r of p.rows) {
+      lines.push(`| ${r.scene} | ${r.quality.texelSize} m | ${r.quality.samples} | ${r.quality.bounces} | ${Math.round(r.bakeMs)} ms | ${r.points} (${r.nearEdge}) | ${pct(r.directRms)} | ${pct(r.totalRms)} | ${pct(r.totalMax)} |`);
+    }
+  }
+  return lines.join('\n');
+}
