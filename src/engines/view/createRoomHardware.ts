@@ -5,7 +5,7 @@ import type { SharedDisplayUniforms } from './createRoomSurfaces';
 import type { FixtureModule, Fixtures } from './fixtures';
 import { buildLuminaireModel } from './luminaires/buildLuminaireModel';
 import { emitterLuminance } from './luminaires/emitterLuminance';
-import { l3dLuminaireModel } from './luminaires/l3dBody';
+import { l3dLuminaireModel } from './luminaires/l3dLuminaireModel';
 import type { LuminaireModel, LuminairePart, PartFrame } from './luminaires/luminaireModel';
 import { trackPieces } from './luminaires/trackParts';
 

@@ -24,9 +24,8 @@
  */
 import type { L3dGeometryNode, L3dJoint, L3dLightEmittingObject, L3dLuminaire, Vec3 } from '../../../core/gldf/readL3dStructure';
 import { l3dLocalTransform, multiply, Z_UP_TO_Y_UP, type Affine, type L3dPartMesh } from '../../meshImport/readL3dMeshes';
-import { ADAPTER, emitterRadius, PROUD, STEM_RADIUS } from './luminaireDimensions';
-import type { LuminaireModel, LuminairePart } from './luminaireModel';
-import { boxPart, rodPart } from './partMesh';
+import { emitterRadius, PROUD } from './luminaireDimensions';
+import type { LuminairePart } from './luminaireModel';
 
 /** One aiming degree of freedom: a joint's axis with its limits (degrees). */
 export interface L3dDof {
@@ -311,21 +310,6 @@ export function mountFrameAxis(p: Pick<BodyPlacement, 'heading' | 'orientation'>
   const yaw = (p.orientation.yaw - p.heading) * DEG;
   const t = p.orientation.pitch * DEG;
   return [-Math.sin(yaw) * Math.sin(t), -Math.cos(t), -Math.cos(yaw) * Math.sin(t)];
-}
-
-/**
- * The model of a placed module with an L3D body: every part in frame 'mount' (posed here, so the
- * view's frames need no pivot), the joints aimed as the module is, and, when it hangs in a rail
- * above the body's top, a stem up to an adapter in the profile (as the generic models have).
- */
-export function l3dLuminaireModel(body: L3dBody, p: BodyPlacement): { model: LuminaireModel; angles: Map<string, Vec3> } {
-  const angles = aimJoints(body, mountFrameAxis(p), p.orientation.yaw - p.heading);
-  const parts = poseL3dBody(body, angles).parts;
-  if (p.mount > 0) {
-    parts.push(boxPart(ADAPTER, 'housing', 'mount', [0, p.mount + ADAPTER[1] / 2, 0]));
-    if (p.mount - body.top > 0.002) parts.push(rodPart(STEM_RADIUS, body.top, p.mount, 'housing', 'mount'));
-  }
-  return { model: { parts, pivot: [0, 0, 0], emitterArea: body.emitterArea.down || body.emitterArea.up, emitterAreaUp: body.emitterArea.up || body.emitterArea.down }, angles };
 }
 
 /** The body's housings and emitters for given joint angles (no rail hardware). */
