@@ -61,6 +61,10 @@ test('an imported GLDF catalog folder: a track spot on the rail in German, price
       await route.fulfill({ body: readFileSync(file), contentType: path.endsWith('.json') ? 'application/json' : 'text/plain' });
     },
   );
+  const warnings: string[] = [];
+  page.on('console', (m) => {
+    if (m.type() === 'warning') warnings.push(m.text());
+  });
   await page.goto('/?catalog=/gldf-shop/catalog.json&lang=de&quality=balanced');
   await page.getByRole('button', { name: 'Planung beginnen' }).click();
   await page.getByTestId('preset-single').click();
@@ -80,6 +84,9 @@ test('an imported GLDF catalog folder: a track spot on the rail in German, price
   await expect.poll(() => page.evaluate(() => window.luxbox!.view3d().lit), { timeout: 90_000, intervals: [250] }).toBe(true);
   expect(served).toContain('catalog.json');
   expect(served).toContain('ies/track-spot-medium.ldt');
+  // Its L3D body (catalog `model`), fetched from the folder and read: no "drawn as its kind" fallback.
+  expect(served).toContain('geo/track-spot.l3d');
+  expect(warnings.filter((w) => w.includes('luminaire body'))).toEqual([]);
   // What was baked: the lighting scene names the imported beam's photometry and its rated flux.
   const scene = await page.evaluate(() => JSON.stringify(window.luxbox!.getLightingScene()));
   expect(scene).toContain('"ies/track-spot-medium.ldt"');
