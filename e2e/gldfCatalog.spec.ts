@@ -72,6 +72,13 @@ test('an imported GLDF catalog folder: a track spot on the rail in German, price
   const added = await page.evaluate((id) => window.luxbox!.runAction('addModule', { railId: id, type: 'track-spot' }), railId);
   expect(added).toMatchObject({ ok: true });
 
+  // The plan draws it as its L3D body's outline from above (the convex hull; docs/gldf.md "L3D in the plan"), loaded from the folder.
+  const spotId = (await sceneFile(page)).configuration.systems[0].rails[0].modules.find((m) => m.type === 'track-spot')!.id;
+  const symbol = page.locator(`[data-module-id="${spotId}"][data-module-outline="model"]`);
+  await expect(symbol).toHaveCount(1);
+  // A hull of the yoke, head and barn door: more than the rectangle's four corners.
+  expect((await symbol.getAttribute('points'))!.trim().split(/\s+/).length).toBeGreaterThan(4);
+
   // The GLDF's German Locale texts name the module; the mapping's price and the article number the import made.
   const bom = page.getByTestId('bom');
   await expect(bom).toContainText('Schienenstrahler, Mittlerer Spot, 3000 K');
