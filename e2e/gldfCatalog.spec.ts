@@ -2,7 +2,7 @@ import { spawnSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, normalize } from 'node:path';
-import { expect, test } from '@playwright/test';
+import { expect, test, type Page } from '@playwright/test';
 import { gldfBytes, linearSpec, MAPPING_TEXT, pendantSpec, trackSpotSpec } from '../tests/core/gldf/buildGldf';
 import { sceneFile } from './helpers';
 
@@ -48,7 +48,8 @@ test.afterAll(() => {
   if (folder) rmSync(join(folder, '..'), { recursive: true, force: true });
 });
 
-test('an imported GLDF catalog folder: a track spot on the rail in German, priced in the BOM, lit in 3D by its own photometry', async ({ page }) => {
+/** Serves the catalog folder under /gldf-shop/ and lists what was asked for. */
+async function serveFolder(page: Page): Promise<string[]> {
   const served: string[] = [];
   // By path: the page's own URL names the folder in its query.
   await page.route(
@@ -61,6 +62,11 @@ test('an imported GLDF catalog folder: a track spot on the rail in German, price
       await route.fulfill({ body: readFileSync(file), contentType: path.endsWith('.json') ? 'application/json' : 'text/plain' });
     },
   );
+  return served;
+}
+
+test('an imported GLDF catalog folder: a track spot on the rail in German, priced in the BOM, lit in 3D by its own photometry', async ({ page }) => {
+  const served = await serveFolder(page);
   const warnings: string[] = [];
   page.on('console', (m) => {
     if (m.type() === 'warning') warnings.push(m.text());
@@ -97,4 +103,19 @@ test('an imported GLDF catalog folder: a track spot on the rail in German, price
   // What was baked: the lighting scene names the imported beam's photometry and its rated flux.
   const scene = await page.evaluate(() => JSON.stringify(window.luxbox!.getLightingScene()));
   expect(scene).toContain('"ies/track-spot-medium.ldt"');
+});
+
+test('the demo shop page (embed.html) opens the same folder with ?catalog=: the imported spot in its bill of materials, drawn as its L3D outline', async ({ page }) => {
+  const served = await serveFolder(page);
+  await page.goto('/embed.html?catalog=/gldf-shop/catalog.json');
+  await expect.poll(() => page.evaluate(() => window.shopDemo?.instance !== null && window.shopDemo?.instance !== undefined)).toBe(true);
+  await page.evaluate(() => window.shopDemo!.instance!.whenReady());
+  expect(await page.evaluate(() => window.shopDemo!.instance!.runAction('placePreset', { presetId: 'single' }))).toMatchObject({ ok: true });
+  const railId = await page.evaluate(() => JSON.parse(window.shopDemo!.instance!.getConfig()).configuration.systems[0].rails[0].id as string);
+  expect(await page.evaluate((id) => window.shopDemo!.instance!.runAction('addModule', { railId: id, type: 'track-spot' }), railId)).toMatchObject({ ok: true });
+  const line = await page.evaluate(() => window.shopDemo!.instance!.getBillOfMaterials().lines.find((l) => l.article === 'LTL-TS-M-3000'));
+  expect(line).toMatchObject({ count: 1, unitPrice: 189 });
+  expect(served).toContain('catalog.json');
+  await expect(page.locator('[data-module-outline="model"]')).toHaveCount(1);
+  expect(served).toContain('geo/track-spot.l3d');
 });
