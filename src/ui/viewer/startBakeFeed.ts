@@ -13,9 +13,7 @@ import type { QualityLevel } from '../../engines/relight/qualityLevels';
 import { configurationMeshLoader } from '../../engines/view/configurationMeshLoader';
 import { createBakeService, type BakeService } from '../../engines/view/createBakeService';
 import { fixturesFromConfiguration, type Fixtures } from '../../engines/view/fixtures';
-import type { L3dBody } from '../../engines/view/luminaires/l3dBody';
-import { readL3dBody } from '../../engines/view/luminaires/readL3dBody';
-import { pageFileLoaderOf } from '../shared/pagePhotometryLoader';
+import { loadModelBodies } from '../shared/loadModelBodies';
 import type { PhotometryNote } from '../shared/PhotometryWarnings';
 import { deviceQuality } from './deviceQuality';
 
@@ -67,27 +65,6 @@ export function startBakeFeed(store: ConfiguratorStore, loadPhotometry: (path: s
   let settled = 0;
   let disposed = false;
 
-  // Each catalog `model` (L3D) once: a file that cannot be loaded or read is drawn as its kind's generic body, with a console note.
-  const loadFile = pageFileLoaderOf(loadPhotometry);
-  const bodyCache = new Map<string, Promise<L3dBody | null>>();
-  const bodyFor = (path: string): Promise<L3dBody | null> => {
-    let body = bodyCache.get(path);
-    if (!body) {
-      body = (loadFile ? loadFile(path).then((bytes) => readL3dBody(bytes, path)) : Promise.resolve(null)).catch((e: unknown) => {
-        console.warn('luxbox: the luminaire body', path, 'is drawn as its kind:', e instanceof Error ? e.message : e);
-        return null;
-      });
-      bodyCache.set(path, body);
-    }
-    return body;
-  };
-  const modelBodies = async (config: Configuration, catalog: Catalog): Promise<Map<string, L3dBody>> => {
-    const used = new Set(config.systems.flatMap((s) => s.rails.flatMap((r) => r.modules.map((m) => m.type))));
-    const paths = [...new Set(catalog.moduleTypes.filter((t) => used.has(t.id) && t.model).map((t) => t.model!))];
-    const bodies = await Promise.all(paths.map(bodyFor));
-    return new Map(paths.flatMap((p, i) => (bodies[i] ? [[p, bodies[i]] as [string, L3dBody]] : [])));
-  };
-
   const feed = (config: Configuration, catalog: Catalog) => {
     const n = ++sequence;
     // A filter's colour needs the spectra (loaded on first need): wait for them, then feed this configuration unless a newer one came.
@@ -107,7 +84,7 @@ export function startBakeFeed(store: ConfiguratorStore, loadPhotometry: (path: s
     }
     const scene = toLightingScene(config, catalog);
     // Objects' meshes come from the configuration itself (`object:<id>`, with their finishes); L3D bodies from the asset folder.
-    Promise.all([resolveBakeScene(scene, loadPhotometry, configurationMeshLoader(config)), modelBodies(config, catalog)])
+    Promise.all([resolveBakeScene(scene, loadPhotometry, configurationMeshLoader(config)), loadModelBodies(loadPhotometry, config, catalog)])
       .then(([bake, bodies]) => {
         if (n !== sequence || disposed) return;
         settled = n;
