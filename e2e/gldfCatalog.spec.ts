@@ -1,5 +1,7 @@
 import { spawnSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { readFile } from 'node:fs/promises';
+import { strFromU8, unzipSync } from 'fflate';
 import { tmpdir } from 'node:os';
 import { join, normalize } from 'node:path';
 import { expect, test, type Page } from '@playwright/test';
@@ -103,6 +105,21 @@ test('an imported GLDF catalog folder: a track spot on the rail in German, price
   // What was baked: the lighting scene names the imported beam's photometry and its rated flux.
   const scene = await page.evaluate(() => JSON.stringify(window.luxbox!.getLightingScene()));
   expect(scene).toContain('"ies/track-spot-medium.ldt"');
+});
+
+test('Download for Radiance writes the imported spot’s L3D body as polygons of a grey plastic', async ({ page }) => {
+  await serveFolder(page);
+  await page.goto('/?catalog=/gldf-shop/catalog.json&lang=en&expert=1');
+  await page.getByRole('button', { name: 'Start planning' }).click();
+  await page.getByTestId('preset-single').click();
+  const railId = (await sceneFile(page)).configuration.systems[0].rails[0].id;
+  expect(await page.evaluate((id) => window.luxbox!.runAction('addModule', { railId: id, type: 'track-spot' }), railId)).toMatchObject({ ok: true });
+  const [download] = await Promise.all([page.waitForEvent('download'), page.getByTestId('download-radiance').click()]);
+  const files = unzipSync(new Uint8Array(await readFile(await download.path())));
+  const rad = strFromU8(files[Object.keys(files).find((f) => f.endsWith('/scene.rad'))!]);
+  expect(rad).toContain('void plastic luminaire_body');
+  // The test spot: 156 triangles less the 24 of the head's bottom cap (tests/engines/radiance/bodiesRad.test.ts).
+  expect(rad.match(/^luminaire_body polygon /gm)).toHaveLength(132);
 });
 
 test('the demo shop page (embed.html) opens the same folder with ?catalog=: the imported spot in its bill of materials, drawn as its L3D outline', async ({ page }) => {
