@@ -22,6 +22,7 @@
  *   (L = Φ/(π·A), emitterLuminance.ts). The LightEmittingSurfaces' OBJ faces are not drawn glowing:
  *   the objects are what the L3D declares as the luminous opening.
  */
+import { GldfError } from '../../../core/gldf/GldfError';
 import type { L3dGeometryNode, L3dJoint, L3dLightEmittingObject, L3dLuminaire, Vec3 } from '../../../core/gldf/readL3dStructure';
 import { l3dLocalTransform, multiply, Z_UP_TO_Y_UP, type Affine, type L3dPartMesh } from '../../meshImport/readL3dMeshes';
 import { emitterRadius, PROUD } from './luminaireDimensions';
@@ -198,7 +199,7 @@ export function aimJoints(body: Pick<L3dBody, 'luminaire' | 'dofs' | 'primary'>,
 /** Prepares an L3D luminaire's parts (readL3dMeshes) for drawing: its degrees of freedom, reference pose, origin, emitting areas and height. */
 export function l3dBody(luminaire: L3dLuminaire, parts: readonly L3dPartMesh[]): L3dBody {
   const leos = lightEmittingObjects(luminaire);
-  if (leos.length === 0) throw new Error(`${luminaire.source}: no LightEmittingObject: the photometric centre is unknown`);
+  if (leos.length === 0) throw new GldfError(`${luminaire.source}: no LightEmittingObject: the photometric centre is unknown`);
   const rest = frames(luminaire, new Map());
   const primary = leos.find((l) => leoPose(rest, l.object.partName).normal[1] < 0) ?? leos[0];
   const candidates: L3dDof[] = primary.chain.flatMap((j) => j.axes.map((a) => ({ joint: j.partName, axis: a.axis, min: a.min, max: a.max, vertical: false })));
