@@ -6,7 +6,7 @@
  * change product.xml inside a well-formed container (gldfCodec), so they reach the XML and the
  * id checks rather than stopping at a checksum; raw container bytes are mutated too. Accepted
  * means a complete catalog: it validates again after a JSON round trip, holds no non-finite
- * number, and every photometry it names is among the files the import returns or the base's.
+ * number, and every photometry (and L3D model) it names is among the files the import returns or the base's.
  */
 import { readFileSync } from 'node:fs';
 import { unzipSync, zipSync } from 'fflate';
@@ -69,6 +69,8 @@ export const gldfFuzzTarget: FuzzTarget = {
     const files = new Set(result.files.map((f) => f.path));
     const baseFiles = new Set(base.moduleTypes.flatMap((t) => t.beams.map((b) => b.photometry)));
     for (const b of result.catalog.moduleTypes.flatMap((t) => t.beams)) if (!files.has(b.photometry) && !baseFiles.has(b.photometry)) problems.push(`partial catalog: ${b.photometry} not written`);
+    // An L3D body the catalog names is written too (the track spot carries one).
+    for (const t of result.catalog.moduleTypes) if (t.model && !files.has(t.model)) problems.push(`partial catalog: ${t.model} not written`);
     if (result.report.products.every((p) => p.typeId === null)) problems.push('partial catalog: accepted with no module type');
     return { kind: 'accepted', problems };
   },

@@ -14,6 +14,8 @@ import type { BeamSpec, ModuleTypeSpec } from '../model/catalogSchema/moduleType
 import { GldfError } from './GldfError';
 import type { GldfProductMapping } from './gldfMapping';
 import { GLDF_DEFAULTS, catalogSlug, commonArticle } from './gldfToModuleType';
+import { l3dAimLimits } from './l3dModelOf';
+import { readL3dStructure, type L3dGeometryNode } from './readL3dStructure';
 
 export interface GldfExportOptions {
   /** GldfCreationTimeCode and the zip entries' time (a fixed one gives identical bytes run to run). */
@@ -86,6 +88,18 @@ function importedAdjustable(kinds: string[]): ModuleTypeSpec['adjustable'] {
   return { tilt: tilts ? { ...GLDF_DEFAULTS.tilt } : { min: 0, max: 0 }, rotation: turns ? { ...GLDF_DEFAULTS.rotation } : { min: 0, max: 0 } };
 }
 
+/** The first light-emitting object of an L3D tree, depth first: the one the emitters are said to be. */
+function firstLightEmittingObject(nodes: readonly L3dGeometryNode[]): string | undefined {
+  for (const n of nodes) {
+    if (n.lightEmittingObjects.length) return n.lightEmittingObjects[0].partName;
+    for (const j of n.joints) {
+      const found = firstLightEmittingObject(j.geometries);
+      if (found) return found;
+    }
+  }
+  return undefined;
+}
+
 export function exportGldfProduct(catalog: Catalog, typeId: string, options: GldfExportOptions): GldfExport {
   const type = catalog.moduleTypes.find((t) => t.id === typeId);
   if (!type) throw new GldfError(`catalog '${catalog.id}' has no module type '${typeId}' (its types: ${catalog.moduleTypes.map((t) => t.id).join(', ')})`);
@@ -101,6 +115,27 @@ export function exportGldfProduct(catalog: Catalog, typeId: string, options: Gld
   const beamMappings: NonNullable<GldfProductMapping['beams']> = {};
   const ccts = cctOrder(type);
   let sort = 0;
+  // The L3D body (catalog `model`) goes back as a ModelGeometry; the import reads its joints' ranges, so the mapping need not repeat them.
+  let model: { fileName: string; emitterObject: string; limits: ModuleTypeSpec['adjustable'] | null } | null = null;
+  if (type.model) {
+    let bytes: Uint8Array;
+    try {
+      bytes = options.readFile(type.model);
+    } catch (error) {
+      throw new GldfError(`module type '${type.id}': model ${type.model} cannot be read (${error instanceof Error ? error.message : String(error)})`);
+    }
+    const { luminaire } = readL3dStructure(bytes, `module type '${type.id}': model ${type.model}`);
+    const emitterObject = firstLightEmittingObject(luminaire.structure);
+    if (!emitterObject) throw new GldfError(`module type '${type.id}': model ${type.model} has no LightEmittingObject for the emitters to name`);
+    const fileName = `${catalogSlug(type.id)}.l3d`;
+    entries[`geo/${fileName}`] = bytes;
+    files.push(`<File id="f-geometry" contentType="geo/l3d" type="localFileName">${esc(fileName)}</File>`);
+    model = { fileName, emitterObject, limits: l3dAimLimits(luminaire) };
+  }
+  const geometry = (emitterId: string): string =>
+    model
+      ? `<Geometry><ModelGeometryReference geometryId="geo-model"><EmitterReference emitterId="${emitterId}"><EmitterObjectExternalName>${esc(model.emitterObject)}</EmitterObjectExternalName></EmitterReference></ModelGeometryReference></Geometry>`
+      : `<Geometry><EmitterReference emitterId="${emitterId}"/></Geometry>`;
 
   for (const beam of type.beams) {
     const kind = photometryKind(beam.photometry);
@@ -139,7 +174,7 @@ export function exportGldfProduct(catalog: Catalog, typeId: string, options: Gld
           `<Name>${locales(`${type.name} ${beam.label} ${cct} K`, undefined)}</Name>` +
           // The rail hangs from the ceiling: its modules are surface-mounted on it (docs/gldf.md, "Mounting").
           `<Mountings><Ceiling><SurfaceMounted/></Ceiling></Mountings>` +
-          `<Geometry><EmitterReference emitterId="em-${key}"/></Geometry>` +
+          geometry(`em-${key}`) +
           `<DescriptiveAttributes>${mechanical}${marketing}</DescriptiveAttributes></Variant>`,
       );
     }
@@ -162,7 +197,9 @@ export function exportGldfProduct(catalog: Catalog, typeId: string, options: Gld
     if (MAPPING_ID.test(type.defaultBeam)) mapping.defaultBeam = type.defaultBeam;
     else notes.push(`its default beam comes back as the first, '${catalogSlug(type.beams[0].id)}'`);
   }
-  if (!sameRange(type.adjustable, importedAdjustable(adjustabilities(type)))) mapping.adjustable = type.adjustable ?? false;
+  const kinds = adjustabilities(type);
+  const imported = kinds.length && model?.limits ? model.limits : importedAdjustable(kinds);
+  if (!sameRange(type.adjustable, imported)) mapping.adjustable = type.adjustable ?? false;
   if (type.filterHolder) mapping.filterHolder = true;
   if (type.names?.en !== type.name) notes.push(`its names come back with en = '${type.name}' (the name is the English Locale text)`);
   if (type.dimming) notes.push(`its dimming curve (${type.dimming.curve}) has no GLDF element and is not exported`);
@@ -185,7 +222,9 @@ export function exportGldfProduct(catalog: Catalog, typeId: string, options: Gld
     `<CreatedWithApplication>luxbox catalog export</CreatedWithApplication><GldfCreationTimeCode>${created.toISOString().replace('.000Z', 'Z')}</GldfCreationTimeCode>` +
     `<UniqueGldfId>${esc(`${catalog.id}-${type.id}`)}</UniqueGldfId><DefaultLanguage>en</DefaultLanguage></Header>` +
     `<GeneralDefinitions><Files>${files.join('')}</Files><Photometries>${photometries.join('')}</Photometries>` +
-    `<LightSources>${lightSources.join('')}</LightSources><Emitters>${emitters.join('')}</Emitters></GeneralDefinitions>` +
+    `<LightSources>${lightSources.join('')}</LightSources><Emitters>${emitters.join('')}</Emitters>` +
+    (model ? `<Geometries><ModelGeometry id="geo-model"><GeometryFileReference fileId="f-geometry"/></ModelGeometry></Geometries>` : '') +
+    `</GeneralDefinitions>` +
     `<ProductDefinitions><ProductMetaData><UniqueProductId>${esc(type.id)}</UniqueProductId>` +
     `<ProductNumber><Locale language="en">${esc(type.id)}</Locale></ProductNumber><Name>${locales(type.name, type.names)}</Name>${pictures}</ProductMetaData>` +
     `<Variants>${variants.join('')}</Variants></ProductDefinitions></Root>\n`;

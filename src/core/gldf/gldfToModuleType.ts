@@ -14,6 +14,7 @@ import { GldfError, quoteName } from './GldfError';
 import type { FluxCheck, ProductReport } from './gldfImportReport';
 import { DEFAULT_RAIL_MOUNTINGS, type GldfBeamMapping, type GldfProductMapping } from './gldfMapping';
 import type { GldfFile, GldfProduct, GldfVariant, LocaleTexts } from './gldfProduct';
+import { l3dAimLimits, l3dModelOf } from './l3dModelOf';
 import type { UploadZip } from './readUploadZip';
 
 /** Defaults for what neither the GLDF nor the mapping gives (docs/gldf.md, "Defaults"). */
@@ -221,7 +222,14 @@ export function gldfToModuleType(product: GldfProduct, zip: UploadZip, options: 
     length = size && size > 0 ? size / 1000 : GLDF_DEFAULTS.length;
     assume('length', `${length} m`, size && size > 0 ? `the GLDF ProductSize length of ${lead.id} (mapping: length)` : 'the GLDF gives no ProductSize (mapping: length)');
   }
-  const adjustable = adjustableFor(lead, map, assume);
+  const model = l3dModelOf(product, zip, lead, typeId);
+  if (model) {
+    files.push({ path: model.path, bytes: model.bytes });
+    report.files.push(model.path);
+    const others = used.filter((u) => u.variant.geometryId !== lead.geometryId).map((u) => u.variant.id);
+    if (others.length) report.notes.push(`variants ${others.join(', ')} name another geometry; the type is drawn with ${lead.id}'s (${model.entry})`);
+  }
+  const adjustable = adjustableFor(lead, map, assume, model ? { limits: l3dAimLimits(model.luminaire), entry: model.entry, note: (n) => report.notes.push(n) } : null);
   if (map.filterHolder === undefined) assume('filterHolder', 'none', 'GLDF does not say whether a colour filter fits (mapping: filterHolder)');
   const picture = product.pictureFileIds.map((id) => product.files.get(id)).find((f) => f?.type === 'localFileName');
   if (picture) {
@@ -242,6 +250,7 @@ export function gldfToModuleType(product: GldfProduct, zip: UploadZip, options: 
     defaultBeam,
     ...(map.filterHolder ? { filterHolder: true } : {}),
     ...(adjustable ? { adjustable } : {}),
+    ...(model ? { model: model.path } : {}),
   };
   report.typeId = typeId;
   return { type, files, report };
@@ -334,9 +343,21 @@ function beamAngle(ph: Photometry): number | undefined {
   return Math.round((c0.beam + c90.beam) / 2);
 }
 
-function adjustableFor(v: GldfVariant, map: GldfProductMapping, assume: (f: string, v: string, why: string) => void): ModuleTypeSpec['adjustable'] {
+function adjustableFor(
+  v: GldfVariant,
+  map: GldfProductMapping,
+  assume: (f: string, v: string, why: string) => void,
+  joints: { limits: ModuleTypeSpec['adjustable'] | null; entry: string; note: (n: string) => void } | null,
+): ModuleTypeSpec['adjustable'] {
   if (map.adjustable === false) return undefined;
   if (map.adjustable) return map.adjustable;
+  // The L3D's joints say how far the head turns: they replace the typical ranges (docs/gldf.md "Aiming").
+  if (joints?.limits) {
+    const { tilt, rotation } = joints.limits;
+    const stops = (r: { stops?: number }) => (r.stops ? ` in ${r.stops}° stops` : '');
+    joints.note(`aiming from the joints of ${joints.entry}: tilt ${tilt.min}–${tilt.max}°${stops(tilt)}, rotation ${rotation.min}–${rotation.max}°${stops(rotation)}`);
+    return joints.limits;
+  }
   const a = new Set(v.adjustabilities);
   const tilts = a.has('Tilt') || a.has('Cardanic');
   const turns = a.has('Turn') || a.has('Cardanic') || a.has('Orientation');

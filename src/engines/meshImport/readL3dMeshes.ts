@@ -44,11 +44,11 @@ export interface L3dMeshes {
 }
 
 /** A 3×4 affine transform, row-major: [r00 r01 r02 tx; r10 r11 r12 ty; r20 r21 r22 tz]. */
-type Affine = number[];
+export type Affine = number[];
 
-const IDENTITY: Affine = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0];
+export const IDENTITY: Affine = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0];
 
-function multiply(a: Affine, b: Affine): Affine {
+export function multiply(a: Affine, b: Affine): Affine {
   const out = new Array<number>(12);
   for (let r = 0; r < 3; r++) {
     for (let c = 0; c < 4; c++) {
@@ -78,7 +78,7 @@ export function l3dLocalTransform(position: Vec3, rotationDegrees: Vec3): Affine
 }
 
 /** L3D's Z-up frame into luxbox's y-up one: (x, y, z) → (x, z, −y). */
-const Z_UP_TO_Y_UP: Affine = [1, 0, 0, 0, 0, 0, 1, 0, 0, -1, 0, 0];
+export const Z_UP_TO_Y_UP: Affine = [1, 0, 0, 0, 0, 0, 1, 0, 0, -1, 0, 0];
 
 /** The project's mesh unit for an L3D unit, when it has one; otherwise metres, scaled afterwards. */
 function meshUnitFor(metresPerUnit: number): MeshUnit | null {

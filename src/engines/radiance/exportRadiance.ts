@@ -2,7 +2,9 @@ import type { BakeScene } from '../bake/bakeScene';
 import { resolveBakeSettings, type BakeSettings } from '../bake/bakeSettings';
 import { nearFieldOf, scenePointSources } from '../bake/scenePointSources';
 import { cameraPreset } from '../view/cameraPresets';
+import type { FixtureModule } from '../view/fixtures';
 import { planeGrid, rtracePoints } from './illuminanceGrid';
+import { bodiesRad } from './bodiesRad';
 import { luminairesRad } from './luminairesRad';
 import { objectsRad } from './objectsRad';
 import { exportReadme } from './exportReadme';
@@ -20,16 +22,18 @@ export interface ExportFile {
 
 /**
  * A self-contained Radiance folder for a scene (docs/radiance.md): `scene.rad` (room and every
- * luminaire, and the objects as polygons), the candela distributions as brightdata files, source.cal, view files for the
+ * luminaire, the objects as polygons: objectsRad.ts, and the L3D bodies of `modules` that have one: bodiesRad.ts), the candela distributions as brightdata files, source.cal, view files for the
  * eye, top and corner cameras, illuminance grids, `render.sh` and a README. The near field
  * follows the scene's `nearField` (or the settings' override) through the baker's own point
  * sources, so Radiance and luxbox solve the same physical problem.
  */
-export function exportRadiance(scene: BakeScene, settings: Partial<BakeSettings> = {}, title = 'luxbox scene'): ExportFile[] {
+export function exportRadiance(scene: BakeScene, settings: Partial<BakeSettings> = {}, title = 'luxbox scene', modules: readonly FixtureModule[] = []): ExportFile[] {
   const resolved = resolveBakeSettings(settings);
   const lamps = scenePointSources(scene, resolved);
   const luminaires = luminairesRad(scene, lamps);
   const nearField = nearFieldOf(scene, resolved);
+  // Modules with an L3D body (fixturesFromConfiguration with their bodies): drawn as grey polygons.
+  const bodies = bodiesRad(modules);
   const header = [
     `# ${title}: exported by luxbox for Radiance.`,
     '# Frame: Radiance (X, Y, Z) = luxbox (x, -z, y), metres; Z up, north is +Y.',
@@ -39,7 +43,7 @@ export function exportRadiance(scene: BakeScene, settings: Partial<BakeSettings>
   const aspect = IMAGE_SIZE.width / IMAGE_SIZE.height;
   const objects = scene.objects && scene.objects.length > 0 ? '\n' + objectsRad(scene.objects).rad : '';
   return [
-    { path: 'scene.rad', text: header + roomRad(scene) + objects + '\n' + luminaires.rad },
+    { path: 'scene.rad', text: header + roomRad(scene) + objects + '\n' + luminaires.rad + (bodies ? '\n' + bodies : '') },
     ...luminaires.files,
     { path: 'source.cal', text: SOURCE_CAL },
     ...EXPORT_VIEWS.map((name) => ({ path: `views/${name}.vf`, text: viewFile(cameraPreset(name, scene.room, { scene, aspect }), aspect) })),

@@ -5,6 +5,7 @@ import type { SharedDisplayUniforms } from './createRoomSurfaces';
 import type { FixtureModule, Fixtures } from './fixtures';
 import { buildLuminaireModel } from './luminaires/buildLuminaireModel';
 import { emitterLuminance } from './luminaires/emitterLuminance';
+import { l3dLuminaireModel } from './luminaires/l3dLuminaireModel';
 import type { LuminaireModel, LuminairePart, PartFrame } from './luminaires/luminaireModel';
 import { trackPieces } from './luminaires/trackParts';
 
@@ -102,8 +103,8 @@ export function createRoomHardware(display: SharedDisplayUniforms, shading: { li
     modules = new Map();
   };
   const addModule = (m: FixtureModule) => {
-    const model = buildLuminaireModel({ kind: m.kind, opening: m.light?.opening ?? null, length: m.length, mount: m.mount, ...(m.stand ? { stand: m.stand } : {}) });
-    const lum = m.light ? emitterLuminance(m.light.flux, model.emitterArea) : { down: 0, up: 0 };
+    const model = m.body ? l3dLuminaireModel(m.body, m).model : buildLuminaireModel({ kind: m.kind, opening: m.light?.opening ?? null, length: m.length, mount: m.mount, ...(m.stand ? { stand: m.stand } : {}) });
+    const lum = m.light ? { down: emitterLuminance(m.light.flux, model.emitterArea).down, up: emitterLuminance(m.light.flux, model.emitterAreaUp ?? model.emitterArea).up } : { down: 0, up: 0 };
     const entry = { meshes: [] as THREE.Mesh[], all: [] as THREE.Mesh[], emitters: [] as { material: THREE.ShaderMaterial; luminance: number }[] };
     const frames = new Map<PartFrame, THREE.Group>();
     for (const part of model.parts) {

@@ -9,6 +9,7 @@ import type { BakeLuminaire } from '../bake/bakeScene';
 import { modelHeight } from './luminaires/luminaireDimensions';
 import { hemisphereFlux } from './luminaires/emitterLuminance';
 import { kindOfLuminaire, kindOfModuleType, type LuminaireKind } from './luminaires/luminaireKind';
+import type { L3dBody } from './luminaires/l3dBody';
 
 /** A module's light as the view's glow needs it: its opening, its flux per hemisphere (lm, full power), its weight now (dimming × colour). */
 export interface ModuleLight {
@@ -36,6 +37,8 @@ export interface FixtureModule {
   stand?: number;
   /** Null: its photometry is not known (nothing glows). */
   light: ModuleLight | null;
+  /** The real body of its type's L3D geometry (catalog `model`), when loaded: drawn instead of the kind's model (luminaires/l3dBody.ts). */
+  body?: L3dBody;
 }
 
 /** What the 3D view draws of the hardware, at true positions (metres, world frame). */
@@ -69,9 +72,10 @@ export function moduleLight(l: BakeLuminaire | undefined): ModuleLight | null {
  * at the derived fixing points the bill of materials counts (suspensionPoints). A system's rail
  * hangs above its tallest module (modelHeight), since the suspension is measured to the
  * photometric centre (catalog `suspension`), never above the ceiling. `lights` (module id → its
- * resolved luminaire) gives the openings and the glow.
+ * resolved luminaire) gives the openings and the glow; `bodies` (a catalog `model` path → its
+ * loaded L3D body) the real bodies of the types that have one.
  */
-export function fixturesFromConfiguration(config: Configuration, catalog: Catalog, lights: ReadonlyMap<string, BakeLuminaire> = new Map()): Fixtures {
+export function fixturesFromConfiguration(config: Configuration, catalog: Catalog, lights: ReadonlyMap<string, BakeLuminaire> = new Map(), bodies: ReadonlyMap<string, L3dBody> = new Map()): Fixtures {
   const out: Fixtures = { rails: [], railWidth: catalog.rail.width, connectors: [], modules: [], cables: [] };
   const H = config.room.height;
   for (const system of config.systems) {
@@ -82,7 +86,9 @@ export function fixturesFromConfiguration(config: Configuration, catalog: Catalo
       const type = findModuleType(catalog, m.type);
       const light = moduleLight(lights.get(m.id));
       const kind = kindOfModuleType(type);
-      return { p, m, type, light, kind, height: modelHeight({ kind, opening: light?.opening ?? null, length: p.length }) };
+      const body = type.model ? bodies.get(type.model) : undefined;
+      // An L3D body's own top (its track adapter) is what the rail must clear; a stem joins any gap.
+      return { p, m, type, light, kind, body, height: body ? body.top : modelHeight({ kind, opening: light?.opening ?? null, length: p.length }) };
     });
     // The rail's underside above the tallest module, and the profile under the ceiling.
     const drop = Math.max(0.03, ...placed.map((q) => q.height));
@@ -96,9 +102,9 @@ export function fixturesFromConfiguration(config: Configuration, catalog: Catalo
     if (system.mounting !== 'surface') {
       for (const p of suspensionPoints(system, catalog)) out.cables.push({ top: [p.plan[0], H, p.plan[1]], bottom: [p.plan[0], railY + RAIL_HEIGHT / 2, p.plan[1]] });
     }
-    for (const { p, m, type, light, kind } of placed) {
+    for (const { p, m, type, light, kind, body } of placed) {
       const orientation = aimedOrientation(p.heading, findBeam(type, m.beam).roll, m.aim);
-      out.modules.push({ id: m.id, centre: [p.centre[0], y, p.centre[1]], heading: p.heading, length: p.length, on: m.on !== false && m.dimming > 0, kind, orientation, mount, light });
+      out.modules.push({ id: m.id, centre: [p.centre[0], y, p.centre[1]], heading: p.heading, length: p.length, on: m.on !== false && m.dimming > 0, kind, orientation, mount, light, ...(body ? { body } : {}) });
     }
   }
   return out;

@@ -1,4 +1,5 @@
 import { EXPERT_KEY, mountLuxbox } from '../embed/mountLuxbox';
+import { fetchCatalogFolder } from '../embed/fetchCatalogFolder';
 import { parseAdaptation } from '../../engines/view/adaptationSetting';
 import type { LuxboxInstance } from '../embed/types';
 import { isQualityLevel } from '../../engines/relight/qualityLevels';
@@ -47,10 +48,7 @@ const catalogUrl = params.get('catalog');
 async function mount(host: HTMLElement): Promise<void> {
   let folder = {};
   if (catalogUrl) {
-    const url = new URL(catalogUrl, location.href);
-    const response = await fetch(url);
-    if (!response.ok) throw new Error(`HTTP ${response.status} ${response.statusText}`.trim());
-    folder = { catalog: await response.json(), assetBase: new URL('.', url).pathname, storageKey: 'luxbox.autosave.catalog.v1' };
+    folder = { ...(await fetchCatalogFolder(catalogUrl, location.href)), storageKey: 'luxbox.autosave.catalog.v1' };
   }
   window.luxbox = mountLuxbox(host, {
     storageKey: 'luxbox.autosave.v1',

@@ -7,6 +7,7 @@ import { mountLuxbox } from '../embed/mountLuxbox';
 import type { LuxboxInstance } from '../embed/types';
 import { formatMoney } from '../../ui/planner/formatMoney';
 import { addToCart, cartTotal, type CartLine } from './cart';
+import { fetchCatalogFolder } from '../embed/fetchCatalogFolder';
 import { SHOP_ROOM, SHOP_VARIANTS, shopVariant } from './shopVariants';
 import './shop.css';
 
@@ -38,7 +39,13 @@ function element<K extends keyof HTMLElementTagNameMap>(tag: K, props: Partial<H
 const query = new URLSearchParams(location.search);
 const shop = shopVariant(query.get('shop'));
 const firstRun = query.get('firstRun');
-const presets = (shop.catalog as { presets: PresetData[] }).presets;
+// `?catalog=<url of a catalog.json>` opens the configurator on a catalog folder as `luxbox catalog import`
+// writes it, as the standalone app does (docs/gldf.md): its JSON as `catalog`, its folder as `assetBase`,
+// and an autosave of its own so the shop's usual catalog's plan is not mixed in.
+const catalogUrl = query.get('catalog');
+let catalogData: unknown = shop.catalog;
+let catalogAssets: string | undefined;
+let presets = (shop.catalog as { presets: PresetData[] }).presets;
 const money = (x: number) => formatMoney(x, shop.currency, shop.locale);
 const count = (x: number) => new Intl.NumberFormat(shop.locale).format(x);
 
@@ -140,10 +147,10 @@ function open(): void {
     // The storefront's locale picks the configurator's language and formatting (de-DE: German); `?locale=fr-CH` tries another.
     locale: query.get('locale') ?? shop.locale,
     currency: shop.currency,
-    catalog: shop.catalog,
-    storageKey: shop.storageKey,
+    catalog: catalogData,
+    storageKey: catalogUrl ? `${shop.storageKey}.catalog` : shop.storageKey,
     // A shop may serve the photometry from its own asset folder (?assetBase=/cdn/ tries it).
-    assetBase: query.get('assetBase') ?? undefined,
+    assetBase: query.get('assetBase') ?? catalogAssets,
     // The empty plan's suggestions: the best for the room by default; `?firstRun=corner-l,single` tries a shop's own list, `?firstRun=off` none.
     firstRun: firstRun === null ? undefined : firstRun === 'off' ? false : { presets: firstRun.split(',') },
     // The shop's own name in the configurator's header (`?brand=none` shows none); the API's texts in the
@@ -188,4 +195,14 @@ undoButton.addEventListener('click', () => instance?.undo());
 redoButton.addEventListener('click', () => instance?.redo());
 
 renderRegions();
-open();
+if (catalogUrl) {
+  fetchCatalogFolder(catalogUrl, location.href).then(
+    (folder) => {
+      catalogData = folder.catalog;
+      catalogAssets = folder.assetBase;
+      presets = (folder.catalog as { presets?: PresetData[] }).presets ?? [];
+      open();
+    },
+    (e: Error) => (closedNote.textContent = `The catalog ${catalogUrl} could not be loaded: ${e.message}`),
+  );
+} else open();

@@ -9,6 +9,7 @@ import type { FootprintSource } from './footprintSource';
 import { useColourFilterSpectra } from './useColourFilterSpectra';
 import { configurationFilterIds } from '../../core/model/modules/moduleFilter';
 import { moduleTint } from './moduleTint';
+import { modelSymbolPoints } from './modelSymbol';
 import { floorTint } from './finishColour';
 import { defaultSurfaceFinishes } from '../../core/catalog/surfaceFinishes';
 import { gridStep } from './detailLevel';
@@ -53,6 +54,7 @@ function SystemShape({
   selectedRailId,
   selectedModuleId,
   levels,
+  outline,
 }: {
   system: LightSystem;
   catalog: Catalog;
@@ -61,6 +63,8 @@ function SystemShape({
   selectedRailId?: string;
   selectedModuleId?: string;
   levels?: ReadonlyMap<string, number> | null;
+  /** A catalog `model`'s plan outline, when loaded (footprintSource). */
+  outline?: (path: string) => readonly [number, number][] | null | undefined;
 }) {
   const { elements, kinds } = systemElementTree(system, catalog);
   const modules = modulePlacements(system, catalog);
@@ -88,11 +92,21 @@ function SystemShape({
       {modules.map((m) => {
         const module = system.rails.flatMap((r) => r.modules).find((x) => x.id === m.moduleId);
         const rect = moduleSymbol(m.footprint);
+        // A type with an L3D body: its outline from above (docs/gldf.md "L3D in the plan"); the rectangle until it loads.
+        const model = module ? catalog.moduleTypes.find((t) => t.id === module.type)?.model : undefined;
+        const hull = model ? outline?.(model) : undefined;
         return (
           <polygon
             key={m.moduleId}
-            points={points(rect)}
+            points={
+              hull && hull.length >= 3
+                ? modelSymbolPoints(hull, m.centre, m.heading)
+                    .map((p) => `${p[0]},${p[1]}`)
+                    .join(' ')
+                : points(rect)
+            }
             data-module-id={m.moduleId}
+            data-module-outline={hull && hull.length >= 3 ? 'model' : undefined}
             data-level={module ? shownLevel(levels, module).toFixed(3) : undefined}
             fill={module ? moduleTint(module) : '#fff'}
             fillOpacity={module ? levelOpacity(shownLevel(levels, module)) : 1}
@@ -277,6 +291,7 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
                 selectedRailId={selection.systemId === s.id ? selection.railId : undefined}
                 selectedModuleId={selection.systemId === s.id ? selection.moduleId : undefined}
                 levels={levels}
+                outline={footprints.outline}
               />
             </g>
           );

@@ -1,6 +1,6 @@
 import { photometryWarnings } from '../../core/photometry/checks';
 import type { Photometry } from '../../core/photometry/types';
-import { pagePhotometryLoader } from '../shared/pagePhotometryLoader';
+import { pageFileLoaderOf, pagePhotometryLoader } from '../shared/pagePhotometryLoader';
 import { floorFootprint, type FloorFootprint } from './floorFootprint';
 
 /**
@@ -24,6 +24,14 @@ export interface FootprintSource {
   version(): number;
   /** The page's photometry loader for the same folder (the 3D view loads through it: one fetch per file for both). */
   loadPhotometry(path: string): Promise<Photometry>;
+  /**
+   * The plan outline of a catalog `model` (L3D): the body's convex hull from above, [x, z] metres
+   * about the photometric centre, x along the rail (l3dPlanOutline); undefined while loading,
+   * null if unavailable (the module's rectangle stands in).
+   */
+  outline(path: string): readonly [number, number][] | null | undefined;
+  /** Starts loading the outlines of model paths not seen before. */
+  requestOutlines(paths: readonly string[]): void;
 }
 
 export function createFootprintSource(baseUrl: string, fetchFn?: typeof fetch): FootprintSource {
@@ -33,14 +41,40 @@ export function createFootprintSource(baseUrl: string, fetchFn?: typeof fetch): 
   const pending = new Set<string>();
   const listeners = new Set<() => void>();
   let version = 0;
+  const outlines = new Map<string, readonly [number, number][] | null>();
+  const pendingOutlines = new Set<string>();
+  const loadFile = pageFileLoaderOf(loadPhotometry);
   const done = (path: string, value: FloorFootprint | null) => {
     pending.delete(path);
     results.set(path, value);
     version++;
     for (const l of [...listeners]) l();
   };
+  const outlineDone = (path: string, value: readonly [number, number][] | null) => {
+    outlines.set(path, value);
+    version++;
+    for (const l of [...listeners]) l();
+  };
   return {
     loadPhotometry,
+    outline: (path) => outlines.get(path),
+    requestOutlines(paths) {
+      for (const path of paths) {
+        if (outlines.has(path) || pendingOutlines.has(path)) continue;
+        if (!loadFile) {
+          outlineDone(path, null);
+          continue;
+        }
+        pendingOutlines.add(path);
+        Promise.all([loadFile(path), import('./modelOutline')])
+          .then(([bytes, { modelOutline }]) => outlineDone(path, modelOutline(bytes, path)))
+          .catch((e: unknown) => {
+            console.warn('luxbox: no plan outline for', path, e);
+            outlineDone(path, null);
+          })
+          .finally(() => pendingOutlines.delete(path));
+      }
+    },
     get: (path) => results.get(path),
     warnings: (path) => warnings.get(path) ?? [],
     request(paths) {

@@ -89,4 +89,11 @@ export function requestFootprints(source: FootprintSource, modules: readonly Mod
     if (p) paths.add(p);
   }
   source.request([...paths]);
+  // The L3D bodies' plan outlines (catalog `model`), for the module symbols.
+  const models = new Set<string>();
+  for (const m of modules) {
+    const model = catalog.moduleTypes.find((t) => t.id === m.type)?.model;
+    if (model) models.add(model);
+  }
+  if (models.size > 0) source.requestOutlines([...models]);
 }

@@ -5,6 +5,17 @@ import type { Photometry } from '../../core/photometry/types';
 const pageFetch: typeof fetch = (...args) => fetch(...args);
 
 const loaders = new WeakMap<typeof fetch, Map<string, (path: string) => Promise<Photometry>>>();
+/** Each photometry loader's companion for other files of the same folder (a catalog `model`'s L3D). */
+const fileLoaders = new WeakMap<(path: string) => Promise<Photometry>, (path: string) => Promise<Uint8Array>>();
+
+/**
+ * The loader of raw files from the folder a page photometry loader reads (`baseUrl + path`), or
+ * null for a loader made otherwise: the 3D view's bake feed loads catalog `model` files (L3D)
+ * through it, so whoever hands the view its photometry loader hands it the asset folder too.
+ */
+export function pageFileLoaderOf(loadPhotometry: (path: string) => Promise<Photometry>): ((path: string) => Promise<Uint8Array>) | null {
+  return fileLoaders.get(loadPhotometry) ?? null;
+}
 
 /**
  * The browser host's photometry loader: `load(path)` fetches `baseUrl + path`
@@ -39,6 +50,11 @@ export function pagePhotometryLoader(baseUrl: string, fetchFn: typeof fetch = pa
       return parsing.then((loader) => loader(path));
     };
     byFolder.set(key, load);
+    fileLoaders.set(load, async (path: string) => {
+      const response = await fetchFn(baseUrl + path);
+      if (!response.ok) throw new Error(`${path}: HTTP ${response.status}`);
+      return new Uint8Array(await response.arrayBuffer());
+    });
   }
   return load;
 }

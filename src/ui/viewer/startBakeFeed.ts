@@ -13,6 +13,7 @@ import type { QualityLevel } from '../../engines/relight/qualityLevels';
 import { configurationMeshLoader } from '../../engines/view/configurationMeshLoader';
 import { createBakeService, type BakeService } from '../../engines/view/createBakeService';
 import { fixturesFromConfiguration, type Fixtures } from '../../engines/view/fixtures';
+import { loadModelBodies } from '../shared/loadModelBodies';
 import type { PhotometryNote } from '../shared/PhotometryWarnings';
 import { deviceQuality } from './deviceQuality';
 
@@ -82,9 +83,9 @@ export function startBakeFeed(store: ConfiguratorStore, loadPhotometry: (path: s
       return;
     }
     const scene = toLightingScene(config, catalog);
-    // Objects' meshes come from the configuration itself (`object:<id>`, with their finishes).
-    resolveBakeScene(scene, loadPhotometry, configurationMeshLoader(config))
-      .then((bake) => {
+    // Objects' meshes come from the configuration itself (`object:<id>`, with their finishes); L3D bodies from the asset folder.
+    Promise.all([resolveBakeScene(scene, loadPhotometry, configurationMeshLoader(config)), loadModelBodies(loadPhotometry, config, catalog)])
+      .then(([bake, bodies]) => {
         if (n !== sequence || disposed) return;
         settled = n;
         const files = new Map<string, PhotometryNote>();
@@ -95,7 +96,7 @@ export function startBakeFeed(store: ConfiguratorStore, loadPhotometry: (path: s
           bake,
           config,
           catalog,
-          fixtures: fixturesFromConfiguration(config, catalog, new Map(scene.luminaires.map((l, i) => [l.id ?? '', bake.luminaires[i]]))),
+          fixtures: fixturesFromConfiguration(config, catalog, new Map(scene.luminaires.map((l, i) => [l.id ?? '', bake.luminaires[i]])), bodies),
           ids: scene.luminaires.map((l) => l.id ?? ''),
           notes: [...files.values()],
         };

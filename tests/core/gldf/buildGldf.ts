@@ -6,6 +6,7 @@
  */
 import { readFileSync } from 'node:fs';
 import { zipSync, type Zippable } from 'fflate';
+import { spotL3d } from './buildL3dSpot';
 
 export type Lang = 'en' | 'de' | 'fr' | 'it';
 export type Texts = Partial<Record<Lang, string>>;
@@ -42,6 +43,8 @@ export interface SpecVariant {
   productSize?: [number, number, number];
   adjustabilities?: string[];
   listPrice?: { currency: string; price: number };
+  /** A ModelGeometry (L3D) the variant is drawn with, and the light-emitting object its emitter is. */
+  model?: { geometryId: string; emitterObject: string };
 }
 export interface GldfSpec {
   uniqueProductId: string;
@@ -53,6 +56,8 @@ export interface GldfSpec {
   emitters: SpecEmitter[];
   variants: SpecVariant[];
   pictureFileId?: string;
+  /** ModelGeometry elements: id and the L3D File they reference. */
+  modelGeometries?: { id: string; fileId: string }[];
 }
 
 const esc = (s: string): string => s.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
@@ -87,6 +92,7 @@ export function productXml(s: GldfSpec): string {
         `<LightSourceReference fixedLightSourceId="${e.lightSourceId}"/><RatedLuminousFlux>${e.flux}</RatedLuminousFlux></FixedLightEmitter></Emitter>`,
     )
     .join('');
+  const geometries = s.modelGeometries?.length ? `<Geometries>${s.modelGeometries.map((g) => `<ModelGeometry id="${g.id}"><GeometryFileReference fileId="${g.fileId}"/></ModelGeometry>`).join('')}</Geometries>` : '';
   const variants = s.variants
     .map((v) => {
       const mech =
@@ -101,7 +107,9 @@ export function productXml(s: GldfSpec): string {
         `<ProductNumber><Locale language="en">${esc(v.productNumber)}</Locale></ProductNumber><Name>${locales(v.name)}</Name>` +
         (v.gtin ? `<GTIN>${v.gtin}</GTIN>` : '') +
         (v.mountings !== null ? `<Mountings>${v.mountings}</Mountings>` : '') +
-        `<Geometry><EmitterReference emitterId="${v.emitterId}"/></Geometry>` +
+        (v.model
+          ? `<Geometry><ModelGeometryReference geometryId="${v.model.geometryId}"><EmitterReference emitterId="${v.emitterId}"><EmitterObjectExternalName>${esc(v.model.emitterObject)}</EmitterObjectExternalName></EmitterReference></ModelGeometryReference></Geometry>`
+          : `<Geometry><EmitterReference emitterId="${v.emitterId}"/></Geometry>`) +
         (mech || marketing ? `<DescriptiveAttributes>${mech}${marketing}</DescriptiveAttributes>` : '') +
         `</Variant>`
       );
@@ -112,7 +120,7 @@ export function productXml(s: GldfSpec): string {
     `<Root><Header><Manufacturer>Luxbox Test Lighting</Manufacturer><FormatVersion major="1" minor="0" pre-release="3"/>` +
     `<CreatedWithApplication>luxbox tests</CreatedWithApplication><GldfCreationTimeCode>2026-11-27T08:00:00Z</GldfCreationTimeCode>` +
     `<UniqueGldfId>${esc(s.uniqueProductId)}-gldf</UniqueGldfId><DefaultLanguage>en</DefaultLanguage></Header>` +
-    `<GeneralDefinitions><Files>${files}</Files><Photometries>${photometries}</Photometries><LightSources>${lightSources}</LightSources><Emitters>${emitters}</Emitters></GeneralDefinitions>` +
+    `<GeneralDefinitions><Files>${files}</Files><Photometries>${photometries}</Photometries><LightSources>${lightSources}</LightSources><Emitters>${emitters}</Emitters>${geometries}</GeneralDefinitions>` +
     `<ProductDefinitions><ProductMetaData><UniqueProductId>${esc(s.uniqueProductId)}</UniqueProductId><ProductNumber><Locale language="en">${esc(s.productNumber)}</Locale></ProductNumber>` +
     `<Name>${locales(s.name)}</Name>${s.pictureFileId ? `<Pictures><Image fileId="${s.pictureFileId}" imageType="Product Picture"/></Pictures>` : ''}</ProductMetaData>` +
     `<Variants>${variants}</Variants></ProductDefinitions></Root>\n`
@@ -136,7 +144,7 @@ export const PNG_1X1 = new Uint8Array(Buffer.from('iVBORw0KGgoAAAANSUhEUgAAAAEAA
 const CEILING_SURFACE = '<Ceiling><SurfaceMounted/></Ceiling>';
 const CEILING_PENDANT = '<Ceiling><Pendant pendantLength="1500"/></Ceiling>';
 
-/** The track spot: narrow (BEGA 84693, IES), medium (Zumtobel Arcos 3, LDT), wide (BEGA 50975, IES), each in 2700, 3000 and 4000 K. */
+/** The track spot: narrow (BEGA 84693, IES), medium (Zumtobel Arcos 3, LDT), wide (BEGA 50975, IES), each in 2700, 3000 and 4000 K, drawn with the hand-made L3D of buildL3dSpot.ts. */
 export function trackSpotSpec(): GldfSpec {
   const optics = [
     { key: 'narrow', file: 'bega_84693_narrow_spot.ies', type: 'ldc/ies' as const, flux3000: 2044, watts: 43, texts: { en: 'Narrow spot', de: 'Enger Spot', fr: 'Spot étroit', it: 'Spot stretto' } },
@@ -153,7 +161,12 @@ export function trackSpotSpec(): GldfSpec {
     uniqueProductId: 'LTL-TRACK-SPOT',
     productNumber: 'LTL-TS',
     name: { en: 'Track spot', de: 'Schienenstrahler', fr: 'Spot sur rail', it: 'Faretto a binario' },
-    files: [...optics.map((o) => ({ id: `f-${o.key}`, contentType: o.type, name: o.file, bytes: ies(o.file) })), { id: 'f-picture', contentType: 'image/png', name: 'track-spot.png', bytes: PNG_1X1 }],
+    files: [
+      ...optics.map((o) => ({ id: `f-${o.key}`, contentType: o.type, name: o.file, bytes: ies(o.file) })),
+      { id: 'f-picture', contentType: 'image/png', name: 'track-spot.png', bytes: PNG_1X1 },
+      { id: 'f-geometry', contentType: 'geo/l3d', name: 'track-spot.l3d', bytes: spotL3d() },
+    ],
+    modelGeometries: [{ id: 'geo-spot', fileId: 'f-geometry' }],
     photometries: optics.map((o) => ({ id: `ph-${o.key}`, fileId: `f-${o.key}` })),
     lightSources: [],
     emitters: [],
@@ -176,6 +189,7 @@ export function trackSpotSpec(): GldfSpec {
         emitterId: `em-${suffix}`,
         sortOrder: sort++,
         adjustabilities: ['Cardanic'],
+        model: { geometryId: 'geo-spot', emitterObject: 'lens' },
       });
     }
   }

@@ -15,6 +15,7 @@ import { parseGldfMapping, type GldfMapping } from '../../../src/core/gldf/gldfM
 import { parseCatalogText, type Catalog } from '../../../src/core/model/catalogSchema/catalogSchema';
 import type { ModuleTypeSpec } from '../../../src/core/model/catalogSchema/moduleTypeSchema';
 import { gldfBytes, linearSpec, MAPPING_TEXT, pendantSpec, PNG_1X1, trackSpotSpec } from './buildGldf';
+import { spotL3d } from './buildL3dSpot';
 
 const base = parseCatalogText(readFileSync('src/core/catalog/default-catalog.json', 'utf8'), 'default-catalog.json');
 const schema = { fileName: 'gldf.xsd', contents: readFileSync('vendor/gldf/gldf.xsd', 'utf8') };
@@ -59,7 +60,9 @@ describe('module types back to GLDF', () => {
 
   it('the container holds product.xml, each beam’s photometry byte for byte, and the picture', () => {
     const entries = unzipSync(exported[0].bytes);
-    expect(Object.keys(entries).sort()).toEqual(['image/track-spot.png', 'ldc/track-spot-medium.ldt', 'ldc/track-spot-narrow.ies', 'ldc/track-spot-wide.ies', 'product.xml']);
+    expect(Object.keys(entries).sort()).toEqual(['geo/track-spot.l3d', 'image/track-spot.png', 'ldc/track-spot-medium.ldt', 'ldc/track-spot-narrow.ies', 'ldc/track-spot-wide.ies', 'product.xml']);
+    // The L3D body byte for byte (the import wrote it as geo/track-spot.l3d).
+    expect(entries['geo/track-spot.l3d']).toEqual(spotL3d());
     expect(entries['ldc/track-spot-medium.ldt']).toEqual(readFile('ies/track-spot-medium.ldt'));
     expect(entries['image/track-spot.png']).toEqual(PNG_1X1);
     expect(new TextDecoder().decode(entries['product.xml'])).toBe(exported[0].productXml);
@@ -111,7 +114,9 @@ describe('module types back to GLDF', () => {
     expect(diff('ltl-pendant')).toEqual([]);
     expect(diff('linear-600')).toEqual(['beams', 'length']);
     expect(typeOf(again.catalog, 'linear-600').beams[0].roll).toBe(0);
-    expect(typeOf(again.catalog, 'track-spot').adjustable).toEqual({ tilt: { min: 0, max: 90 }, rotation: { min: 0, max: 355 } });
+    // Without the mapping the ranges come from the exported L3D's joints (tilt 0–90° in 5° stops, a 340° swivel in 1° stops).
+    expect(typeOf(again.catalog, 'track-spot').adjustable).toEqual({ tilt: { min: 0, max: 90, stops: 5 }, rotation: { min: 0, max: 340, stops: 1 } });
+    expect(typeOf(again.catalog, 'track-spot').model).toBe('geo/track-spot.l3d');
   });
 
   it('ids that are not XML names or file names: safe ids in the file; the mapping gives back what it may hold, the rest is noted', async () => {
@@ -121,7 +126,7 @@ describe('module types back to GLDF', () => {
     const out = exportGldfProduct(catalog, 'Track Spot/2', { createdAt, readFile });
     const r = await validateXML({ xml: [{ fileName: 'product.xml', contents: out.productXml }], schema: [schema] });
     expect(r.errors.map((e) => e.rawMessage)).toEqual([]);
-    expect(Object.keys(unzipSync(out.bytes)).sort()).toEqual(['ldc/track-spot-2-ph-2-medium.ldt', 'ldc/track-spot-2-ph-2-narrow.ies', 'ldc/track-spot-2-ph-2-wide.ies', 'product.xml']);
+    expect(Object.keys(unzipSync(out.bytes)).sort()).toEqual(['geo/track-spot-2.l3d', 'ldc/track-spot-2-ph-2-medium.ldt', 'ldc/track-spot-2-ph-2-narrow.ies', 'ldc/track-spot-2-ph-2-wide.ies', 'product.xml']);
     expect(out.mapping).toEqual({ length: 0.15, adjustable: spot.adjustable, filterHolder: true });
     expect(out.notes).toContain("its id comes back as 'track-spot-2' (imported ids are lower-case letters, digits and -)");
     expect(out.notes).toContain("beam '2 narrow' comes back as 'ph-2-narrow' (imported ids are lower-case letters, digits and -)");

@@ -15,6 +15,7 @@ import { billOfMaterials } from '../../../src/core/model/power/billOfMaterials';
 import { toLightingScene } from '../../../src/core/model/files/toLightingScene';
 import { integrateFlux, parsePhotometry } from '../../../src/core/photometry';
 import { only, run, withPreset } from '../model/helpers';
+import { spotL3d } from './buildL3dSpot';
 import { changeablePendantXml, gldfBytes, ies, linearSpec, MAPPING_TEXT, pendantSpec, trackSpotSpec } from './buildGldf';
 
 const base = parseCatalogText(readFileSync('src/core/catalog/default-catalog.json', 'utf8'), 'default-catalog.json');
@@ -51,6 +52,8 @@ const EXPECTED: ModuleTypeSpec[] = [
     defaultBeam: 'medium',
     filterHolder: true,
     adjustable: { tilt: { min: 0, max: 90, stops: 5 }, rotation: { min: 0, max: 355, stops: 5 } },
+    // The hand-made L3D (buildL3dSpot.ts), byte for byte.
+    model: 'geo/track-spot.l3d',
   },
   {
     // No mapping: every default applies (and is reported below).
@@ -127,9 +130,10 @@ describe('GLDF import into the rail catalog', () => {
 
   it('writes each beam’s photometry byte for byte from the container, and the product picture', () => {
     const byPath = new Map(result.files.map((f) => [f.path, f.bytes]));
-    expect([...byPath.keys()]).toEqual(['ies/track-spot-narrow.ies', 'ies/track-spot-medium.ldt', 'ies/track-spot-wide.ies', 'images/track-spot.png', 'ies/ltl-pendant-ph-pendant.ies', 'ies/linear-600-opal.ldt']);
+    expect([...byPath.keys()]).toEqual(['ies/track-spot-narrow.ies', 'ies/track-spot-medium.ldt', 'ies/track-spot-wide.ies', 'geo/track-spot.l3d', 'images/track-spot.png', 'ies/ltl-pendant-ph-pendant.ies', 'ies/linear-600-opal.ldt']);
     expect(byPath.get('ies/track-spot-medium.ldt')).toEqual(ies('zumtobel_arcos3_spot_isym1.ldt'));
     expect(byPath.get('ies/linear-600-opal.ldt')).toEqual(ies('zumtobel_sloin_linear_isym4.ldt'));
+    expect(byPath.get('geo/track-spot.l3d')).toEqual(spotL3d());
     for (const t of EXPECTED) for (const b of t.beams) expect(byPath.has(b.photometry)).toBe(true);
   });
 
@@ -205,9 +209,16 @@ describe('GLDF import into the rail catalog', () => {
       ['ph-medium', 0, 0],
       ['ph-wide', 0, 0],
     ]);
-    // GLDF Adjustability 'Cardanic' gives no angles: the demo spot's ranges, reported.
-    expect(spot?.adjustable).toEqual({ tilt: { min: 0, max: 90 }, rotation: { min: 0, max: 355 } });
-    expect(bare.report.products[0].assumed.find((a) => a.field === 'adjustable')?.why).toMatch(/Cardanic/);
+    // The L3D's joints give the ranges: tilt 0–90° in 5° steps, the swivel's −170…170° as a 340° span in 1° steps; noted, not assumed.
+    expect(spot?.adjustable).toEqual({ tilt: { min: 0, max: 90, stops: 5 }, rotation: { min: 0, max: 340, stops: 1 } });
+    expect(bare.report.products[0].assumed.find((a) => a.field === 'adjustable')).toBeUndefined();
+    expect(bare.report.products[0].notes).toContain('aiming from the joints of geo/track-spot.l3d: tilt 0–90° in 5° stops, rotation 0–340° in 1° stops');
+    // Without the L3D, GLDF Adjustability 'Cardanic' gives no angles: the demo spot's ranges, reported.
+    const plain = trackSpotSpec();
+    const noModel = importGldfCatalog(base, [{ name: 'spot.gldf', bytes: gldfBytes({ ...plain, variants: plain.variants.map(({ model: _model, ...v }) => v) }) }], null);
+    expect(noModel.catalog.moduleTypes.find((t) => t.id === 'ltl-track-spot')?.adjustable).toEqual({ tilt: { min: 0, max: 90 }, rotation: { min: 0, max: 355 } });
+    expect(noModel.catalog.moduleTypes.find((t) => t.id === 'ltl-track-spot')?.model).toBeUndefined();
+    expect(noModel.report.products[0].assumed.find((a) => a.field === 'adjustable')?.why).toMatch(/Cardanic/);
     expect(bare.catalog.moduleTypes.find((t) => t.id === 'ltl-linear-600')?.length).toBe(0.6); // from ProductSize 600 mm
   });
 

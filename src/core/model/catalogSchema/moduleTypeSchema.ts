@@ -52,6 +52,14 @@ export const moduleTypeSchema = z
     filterHolder: z.boolean().optional(),
     /** An adjustable head (docs/aiming.md): how far it turns and tilts, degrees; absent: fixed, straight down. */
     adjustable: z.strictObject({ tilt: aimRangeSchema(180), rotation: aimRangeSchema(360) }).optional(),
+    /**
+     * The luminaire's L3D geometry (docs/gldf.md "L3D in the 3D view"), relative to the web root like
+     * a photometry path, e.g. 'geo/track-spot.l3d': the 3D view draws its body, the plan its outline.
+     */
+    model: z
+      .string()
+      .regex(/^[\w./-]+\.(l3d|L3D)$/, 'must be a relative path to an .l3d file')
+      .optional(),
     /** How the CCT follows the level (dimmingCurve.ts, docs/catalog-format.md "Dimming curve"); omitted: constant-cct. */
     dimming: dimmingCurveSchema.optional(),
   })

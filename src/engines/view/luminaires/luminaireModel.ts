@@ -42,6 +42,8 @@ export interface LuminaireModel {
    * the photometry (LM-63 / EULUMDAT luminous area), or the drawn face when the file gives a point.
    */
   emitterArea: number;
+  /** Area of the surface emitting the upper hemisphere where it differs (an L3D body's objects facing up); absent: `emitterArea`. */
+  emitterAreaUp?: number;
 }
 
 /** Number of triangles of a model. */
