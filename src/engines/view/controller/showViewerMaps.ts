@@ -4,7 +4,7 @@ import { adoptedWhite } from '../adoptedWhite';
 import { applyLiveLevels } from '../applyLiveLevels';
 import { sceneGeometryKey } from '../sceneGeometryKey';
 import { showCompare } from './compareSides';
-import { luminaireWeight } from './viewerOverlay';
+import { luminaireWeight } from '../luminaireWeight';
 import { syncGlare, type Viewer } from './viewer';
 
 /** The engine's maps on screen (both compare sides during the A/B compare), glare as the bake's progress says. */

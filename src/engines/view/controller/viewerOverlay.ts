@@ -1,6 +1,6 @@
 import type { BakeScene } from '../../bake/bakeScene';
-import type { Rgb } from '../../../core/model/lightingScene/lightingScene';
 import { applyLiveLevels } from '../applyLiveLevels';
+import { luminaireWeight } from '../luminaireWeight';
 import { beamAndFieldDeg, withoutModule, type SpotlightDeps } from '../createSpotlight';
 import type { Viewer } from './viewer';
 
@@ -15,13 +15,6 @@ export function applyOverlay(v: Viewer): void {
         }
       : null,
   );
-}
-
-/** The RGB weight of a luminaire: dimming (never below 0) × colour. */
-export function luminaireWeight(l: BakeScene['luminaires'][number]): Rgb {
-  const d = Math.max(0, l.dimming ?? 1);
-  const c = l.color ?? [1, 1, 1];
-  return [d * c[0], d * c[1], d * c[2]];
 }
 
 /** The spotlight view the host asked for, shown once the scene has its module's luminaire (beam and field from its photometry). */
