@@ -16,7 +16,6 @@ const ALLOWED: ReadonlyMap<string, string> = new Map([
   ['src/hosts/embed/mountLuxbox.tsx:mountLuxbox', 'another helper is editing mountLuxbox today; split after that merge'],
   ['src/core/model/validation/systemOwnProblems.ts:computeOwnProblems', 'another helper is editing systemOwnProblems today; split after that merge'],
   ['src/core/room/roomProblems.ts:roomProblems', 'issue 29 (shaped rooms) is building on it today'],
-  ['src/engines/view/createSpotlight.ts:createSpotlight', LATER],
   ['src/engines/relight/createGpuRelight.ts:createGpuRelight', LATER],
   ['src/ui/scenes/ScenePanel.tsx:ScenePanel', LATER],
   ['src/core/gldf/gldfToModuleType.ts:gldfToModuleType', LATER],
