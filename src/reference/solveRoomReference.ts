@@ -12,15 +12,12 @@ import { patchPieces, roomPatches, type PatchPiece, type RoomPatch } from './roo
 import { sightClear, type RoomSightlines } from './roomSightlines';
 import { ReferenceInputError } from './referenceInputError';
 import { LUMINANCE_WEIGHTS } from './solveBoxReference';
+import { gaussSeidelRadiosity } from './gaussSeidelRadiosity';
+import { pairFormFactors } from './pairFormFactors';
+import { referenceSolverOptions, type ReferenceSolverOptions } from './referenceSolverOptions';
 
-export interface RoomReferenceOptions extends PointSourceOptions {
-  /** Edge of the patch lattice on every surface, metres (default 0.25). */
-  patchSize?: number;
-  /** Stop when the largest change of indirect illuminance in a sweep is below tolerance × the largest total (default 1e-6). */
-  tolerance?: number;
-  /** Give up (with an error) after this many Gauss–Seidel sweeps (default 10 000). */
-  maxSweeps?: number;
-}
+/** Patch size (default 0.25 m), tolerance and sweeps (referenceSolverOptions.ts), and how luminaires become point sources. */
+export interface RoomReferenceOptions extends PointSourceOptions, ReferenceSolverOptions {}
 
 /** The dense form-factor matrix is N² numbers: keep it within a few hundred MB. */
 export const MAX_ROOM_PATCHES = 8000;
@@ -141,12 +138,7 @@ export function solveRoomReference(input: RoomInput, luminaires: readonly Lighti
     throw e;
   }
   if (!Array.isArray(luminaires)) throw new ReferenceInputError('luminaires: expected an array');
-  const patchSize = options.patchSize ?? 0.25;
-  if (!(Number.isFinite(patchSize) && patchSize > 0)) throw new ReferenceInputError(`reference options: patchSize must be a finite length > 0 m, got ${patchSize}`);
-  const tolerance = options.tolerance ?? 1e-6;
-  if (!(tolerance > 0 && tolerance < 1)) throw new ReferenceInputError(`reference options: tolerance must be in (0, 1), got ${tolerance}`);
-  const maxSweeps = options.maxSweeps ?? 10_000;
-  if (!Number.isInteger(maxSweeps) || maxSweeps < 1) throw new ReferenceInputError(`reference options: maxSweeps must be an integer ≥ 1, got ${maxSweeps}`);
+  const { patchSize, tolerance, maxSweeps } = referenceSolverOptions(options);
 
   const sources = roomPointSources(room, luminaires, photometries, options);
   const surfaces = roomSurfaces(room);
@@ -161,74 +153,24 @@ export function solveRoomReference(input: RoomInput, luminaires: readonly Lighti
   const directMs = performance.now() - t0;
 
   t0 = performance.now();
-  const reflective = patches.map((p) => p.reflectance.some((c) => c > 0));
-  const anyReflective = reflective.some(Boolean);
-  const F = anyReflective ? new Float32Array(N * N) : new Float32Array(0);
   const cache = new PieceCache(patches);
-  if (anyReflective) {
-    for (let i = 0; i < N; i++) {
-      for (let j = i + 1; j < N; j++) {
-        if (!reflective[i] && !reflective[j]) continue;
-        if (patches[i].surface === patches[j].surface) continue; // one plane: they cannot see each other
-        // Integrate over the smaller patch (points) against the larger (exact polygon); the other
-        // direction by reciprocity, A_i·F_ij = A_j·F_ji, which the discrete system then keeps exactly.
-        const [r, e] = patches[j].diameter < patches[i].diameter ? [j, i] : [i, j];
-        const R = patches[r];
-        const E = patches[e];
-        const gap = Math.hypot(R.centroid[0] - E.centroid[0], R.centroid[1] - E.centroid[1], R.centroid[2] - E.centroid[2]);
-        let f = 0;
-        if (R.diameter > MID_RECEIVER * gap) {
-          for (const piece of cache.get(r, R.diameter > NEAR_RECEIVER * gap ? 2 : 1)) f += piece.area * pointToPatch(sight, piece.centroid, R.normal, E, e, cache);
-          f /= R.area;
-        } else {
-          f = pointToPatch(sight, R.centroid, R.normal, E, e, cache);
-        }
-        F[r * N + e] = f;
-        F[e * N + r] = (f * R.area) / E.area;
-      }
-    }
-  }
+  const F = pairFormFactors(
+    patches,
+    (r, e, gap) => {
+      const R = patches[r];
+      if (R.diameter <= MID_RECEIVER * gap) return pointToPatch(sight, R.centroid, R.normal, patches[e], e, cache);
+      let f = 0;
+      for (const piece of cache.get(r, R.diameter > NEAR_RECEIVER * gap ? 2 : 1)) f += piece.area * pointToPatch(sight, piece.centroid, R.normal, patches[e], e, cache);
+      return f / R.area;
+    },
+    // One plane: they cannot see each other.
+    (i, j) => patches[i].surface === patches[j].surface,
+  );
   const formFactorMs = performance.now() - t0;
 
   t0 = performance.now();
-  const indirectRgb = new Float64Array(3 * N);
-  const exitanceRgb = new Float64Array(3 * N);
-  for (let i = 0; i < N; i++) for (let c = 0; c < 3; c++) exitanceRgb[3 * i + c] = patches[i].reflectance[c] * directRgb[3 * i + c];
-  let sweeps = 0;
-  let residual = 0;
-  let maxTotal = 0;
-  for (const v of directRgb) maxTotal = Math.max(maxTotal, v);
-  if (anyReflective && maxTotal > 0) {
-    residual = Infinity;
-    const gathered = [0, 0, 0];
-    while (residual > tolerance) {
-      if (sweeps >= maxSweeps) throw new ReferenceInputError(`room reference: no convergence after ${maxSweeps} sweeps (relative change ${residual.toExponential(2)}); raise maxSweeps`);
-      sweeps++;
-      let change = 0;
-      for (let i = 0; i < N; i++) {
-        gathered[0] = 0;
-        gathered[1] = 0;
-        gathered[2] = 0;
-        const row = i * N;
-        for (let j = 0; j < N; j++) {
-          const f = F[row + j];
-          if (f === 0) continue;
-          gathered[0] += f * exitanceRgb[3 * j];
-          gathered[1] += f * exitanceRgb[3 * j + 1];
-          gathered[2] += f * exitanceRgb[3 * j + 2];
-        }
-        const rho = patches[i].reflectance;
-        for (let c = 0; c < 3; c++) {
-          const k = 3 * i + c;
-          change = Math.max(change, Math.abs(gathered[c] - indirectRgb[k]));
-          indirectRgb[k] = gathered[c];
-          exitanceRgb[k] = rho[c] * (directRgb[k] + gathered[c]);
-          maxTotal = Math.max(maxTotal, directRgb[k] + gathered[c]);
-        }
-      }
-      residual = change / maxTotal;
-    }
-  }
+  const reflectance = patches.map((p) => p.reflectance);
+  const { indirectRgb, exitanceRgb, sweeps, residual } = gaussSeidelRadiosity(F, reflectance, directRgb, tolerance, maxSweeps, 'room reference');
   const solveMs = performance.now() - t0;
   return { room, surfaces, sight, sources, patches, directRgb, indirectRgb, exitanceRgb, sweeps, residual, timingsMs: { direct: directMs, formFactors: formFactorMs, solve: solveMs } };
 }
