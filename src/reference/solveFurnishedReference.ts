@@ -6,19 +6,16 @@ import { patchMeanOccludedDirect } from './occludedDirect';
 import { mayOcclude, segmentClear, type Occluders } from './occluders';
 import { referencePointSources, type PointSourceOptions, type ReferencePointSource } from './pointSources';
 import { placeReferenceObjects, type PlacedTriangles, type ReferenceObject } from './referenceObjects';
+import { gaussSeidelRadiosity } from './gaussSeidelRadiosity';
+import { pairFormFactors } from './pairFormFactors';
+import { referenceSolverOptions, type ReferenceSolverOptions } from './referenceSolverOptions';
 import { ReferenceInputError } from './referenceInputError';
 import { LUMINANCE_WEIGHTS } from './solveBoxReference';
 import { buildTriangleBvh } from './triangleBvh';
 
-export interface FurnishedOptions extends PointSourceOptions {
-  /** Edge of the wall patches, metres (each axis in ⌈extent/patchSize⌉ equal parts; default 0.25). */
-  patchSize?: number;
-  /** Longest edge of the object patches (mesh triangles cut by longest-edge bisection), metres (default patchSize). */
+export interface FurnishedOptions extends PointSourceOptions, ReferenceSolverOptions {
+  /** Longest edge of the object patches (mesh triangles cut by longest-edge bisection), metres (default patchSize: the walls' in each axis in ⌈extent/patchSize⌉ equal parts). */
   objectPatchSize?: number;
-  /** Stop when the largest change of indirect illuminance in a sweep is below tolerance × the largest total (default 1e-6). */
-  tolerance?: number;
-  /** Give up (with an error) after this many Gauss–Seidel sweeps (default 10 000). */
-  maxSweeps?: number;
 }
 
 /** The dense form-factor matrix is N² numbers: keep it within a few hundred MB. */
@@ -97,14 +94,9 @@ export function solveFurnishedReference(scene: LightingScene, photometries: Read
   const reflectance = {} as Record<SurfaceName, Rgb>;
   for (const name of SURFACE_NAMES) reflectance[name] = rgbOf(scene.room.reflectance[name], `room.reflectance.${name}`);
   if (!Array.isArray(scene.luminaires)) throw new ReferenceInputError('luminaires: expected an array');
-  const patchSize = options.patchSize ?? 0.25;
-  if (!(Number.isFinite(patchSize) && patchSize > 0)) throw new ReferenceInputError(`reference options: patchSize must be a finite length > 0 m, got ${patchSize}`);
+  const { patchSize, tolerance, maxSweeps } = referenceSolverOptions(options);
   const objectPatchSize = options.objectPatchSize ?? patchSize;
   if (!(Number.isFinite(objectPatchSize) && objectPatchSize > 0)) throw new ReferenceInputError(`reference options: objectPatchSize must be a finite length > 0 m, got ${objectPatchSize}`);
-  const tolerance = options.tolerance ?? 1e-6;
-  if (!(tolerance > 0 && tolerance < 1)) throw new ReferenceInputError(`reference options: tolerance must be in (0, 1), got ${tolerance}`);
-  const maxSweeps = options.maxSweeps ?? 10_000;
-  if (!Number.isInteger(maxSweeps) || maxSweeps < 1) throw new ReferenceInputError(`reference options: maxSweeps must be an integer ≥ 1, got ${maxSweeps}`);
 
   const sources = referencePointSources(scene, photometries, options);
   const placed = placeReferenceObjects(objects, extent);
@@ -121,85 +113,30 @@ export function solveFurnishedReference(scene: LightingScene, photometries: Read
   patches.forEach((p, i) => directRgb.set(patchMeanOccludedDirect(sources, occluders, p), 3 * i));
   const directMs = performance.now() - t0;
 
-  // Form factors, row i = what patch i sees. Float32 halves the memory; 1e-7 relative is far below the method's error.
+  // Form factors, row i = what patch i sees.
   t0 = performance.now();
-  const anyReflective = patches.some((p) => p.reflectance.some((c) => c > 0));
-  const F = anyReflective ? new Float32Array(N * N) : new Float32Array(0);
-  if (anyReflective) {
-    const far = { minDepth: 0, maxDepth: 2 };
-    const levels = patches.map(() => [] as Vec3[][]);
-    const pointsOf = (k: number, level: number): Vec3[] => (levels[k][level] ??= receiverPoints(patches[k], level));
-    const reflective = patches.map((p) => p.reflectance.some((c) => c > 0));
-    for (let i = 0; i < N; i++) {
-      for (let j = i + 1; j < N; j++) {
-        if (!reflective[i] && !reflective[j]) continue;
-        // Integrate over the smaller patch (points) against the larger (exact polygon); the
-        // other direction follows by reciprocity, A_i·F_ij = A_j·F_ji, which the discrete
-        // system then keeps exactly.
-        const [r, e] = patches[j].diameter < patches[i].diameter ? [j, i] : [i, j];
-        const R = patches[r];
-        const E = patches[e];
-        const gap = Math.hypot(R.centroid[0] - E.centroid[0], R.centroid[1] - E.centroid[1], R.centroid[2] - E.centroid[2]);
-        let f = 0;
-        const level = R.diameter > NEAR_RECEIVER * gap ? 2 : R.diameter > MID_RECEIVER * gap ? 1 : 0;
-        if (level > 0) {
-          const points = pointsOf(r, level);
-          for (const x of points) f += occludedFormFactor(x, R.normal, E.vertices, E.normal, occluders, far);
-          f /= points.length;
-        } else if (!occluders || E.diameter > SMALL_ANGLE * gap) {
-          f = occludedFormFactor(R.centroid, R.normal, E.vertices, E.normal, occluders, far);
-        } else {
-          f = occludedFormFactor(R.centroid, R.normal, E.vertices, E.normal, null, far);
-          if (f > 0 && occluders && mayOcclude(occluders, R.centroid, E.bounds) && !segmentClear(occluders, R.centroid, R.normal, E.centroid, E.normal)) f = 0;
-        }
-        F[r * N + e] = f;
-        F[e * N + r] = (f * R.area) / E.area;
-      }
+  const far = { minDepth: 0, maxDepth: 2 };
+  const levels = patches.map(() => [] as Vec3[][]);
+  const pointsOf = (k: number, level: number): Vec3[] => (levels[k][level] ??= receiverPoints(patches[k], level));
+  const F = pairFormFactors(patches, (r, e, gap) => {
+    const R = patches[r];
+    const E = patches[e];
+    const level = R.diameter > NEAR_RECEIVER * gap ? 2 : R.diameter > MID_RECEIVER * gap ? 1 : 0;
+    if (level > 0) {
+      const points = pointsOf(r, level);
+      let f = 0;
+      for (const x of points) f += occludedFormFactor(x, R.normal, E.vertices, E.normal, occluders, far);
+      return f / points.length;
     }
-  }
+    if (!occluders || E.diameter > SMALL_ANGLE * gap) return occludedFormFactor(R.centroid, R.normal, E.vertices, E.normal, occluders, far);
+    const f = occludedFormFactor(R.centroid, R.normal, E.vertices, E.normal, null, far);
+    return f > 0 && mayOcclude(occluders, R.centroid, E.bounds) && !segmentClear(occluders, R.centroid, R.normal, E.centroid, E.normal) ? 0 : f;
+  });
   const formFactorMs = performance.now() - t0;
 
   t0 = performance.now();
-  const indirectRgb = new Float64Array(3 * N);
-  const exitanceRgb = new Float64Array(3 * N);
-  for (let i = 0; i < N; i++) for (let c = 0; c < 3; c++) exitanceRgb[3 * i + c] = patches[i].reflectance[c] * directRgb[3 * i + c];
-  let sweeps = 0;
-  let residual = 0;
-  let maxTotal = 0;
-  for (const v of directRgb) maxTotal = Math.max(maxTotal, v);
-  if (anyReflective && maxTotal > 0) {
-    residual = Infinity;
-    while (residual > tolerance) {
-      if (sweeps >= maxSweeps) {
-        throw new ReferenceInputError(`furnished reference: no convergence after ${maxSweeps} sweeps (relative change ${residual.toExponential(2)}); raise maxSweeps`);
-      }
-      sweeps++;
-      let change = 0;
-      for (let i = 0; i < N; i++) {
-        let r = 0;
-        let g = 0;
-        let b = 0;
-        const row = i * N;
-        for (let j = 0; j < N; j++) {
-          const f = F[row + j];
-          if (f === 0) continue;
-          r += f * exitanceRgb[3 * j];
-          g += f * exitanceRgb[3 * j + 1];
-          b += f * exitanceRgb[3 * j + 2];
-        }
-        const rho = patches[i].reflectance;
-        const gathered = [r, g, b];
-        for (let c = 0; c < 3; c++) {
-          const k = 3 * i + c;
-          change = Math.max(change, Math.abs(gathered[c] - indirectRgb[k]));
-          indirectRgb[k] = gathered[c];
-          exitanceRgb[k] = rho[c] * (directRgb[k] + gathered[c]);
-          maxTotal = Math.max(maxTotal, directRgb[k] + gathered[c]);
-        }
-      }
-      residual = change / maxTotal;
-    }
-  }
+  const reflectanceOfPatch = patches.map((p) => p.reflectance);
+  const { indirectRgb, exitanceRgb, sweeps, residual } = gaussSeidelRadiosity(F, reflectanceOfPatch, directRgb, tolerance, maxSweeps, 'furnished reference');
   const solveMs = performance.now() - t0;
   return {
     extent,

@@ -12,15 +12,10 @@ import { interreflectRoom } from './roomInterreflection';
 import type { RoomSightlines } from './roomSightlines';
 import { ReferenceInputError } from './referenceInputError';
 import { LUMINANCE_WEIGHTS } from './solveBoxReference';
+import { referenceSolverOptions, type ReferenceSolverOptions } from './referenceSolverOptions';
 
-export interface RoomReferenceOptions extends PointSourceOptions {
-  /** Edge of the patch lattice on every surface, metres (default 0.25). */
-  patchSize?: number;
-  /** Stop when the largest change of indirect illuminance in a sweep is below tolerance × the largest total (default 1e-6). */
-  tolerance?: number;
-  /** Give up (with an error) after this many Gauss–Seidel sweeps (default 10 000). */
-  maxSweeps?: number;
-}
+/** Patch size (default 0.25 m), tolerance and sweeps (referenceSolverOptions.ts), and how luminaires become point sources. */
+export interface RoomReferenceOptions extends PointSourceOptions, ReferenceSolverOptions {}
 
 /** The dense form-factor matrix is N² numbers: keep it within a few hundred MB. */
 export const MAX_ROOM_PATCHES = 8000;
@@ -95,12 +90,7 @@ export function solveRoomReference(input: RoomInput, luminaires: readonly Lighti
     throw e;
   }
   if (!Array.isArray(luminaires)) throw new ReferenceInputError('luminaires: expected an array');
-  const patchSize = options.patchSize ?? 0.25;
-  if (!(Number.isFinite(patchSize) && patchSize > 0)) throw new ReferenceInputError(`reference options: patchSize must be a finite length > 0 m, got ${patchSize}`);
-  const tolerance = options.tolerance ?? 1e-6;
-  if (!(tolerance > 0 && tolerance < 1)) throw new ReferenceInputError(`reference options: tolerance must be in (0, 1), got ${tolerance}`);
-  const maxSweeps = options.maxSweeps ?? 10_000;
-  if (!Number.isInteger(maxSweeps) || maxSweeps < 1) throw new ReferenceInputError(`reference options: maxSweeps must be an integer ≥ 1, got ${maxSweeps}`);
+  const { patchSize, tolerance, maxSweeps } = referenceSolverOptions(options);
 
   const sources = roomPointSources(room, luminaires, photometries, options);
   const surfaces = roomSurfaces(room);

@@ -37,9 +37,39 @@ function encodeSrgb(c: number): number {
  * committed thumbnails are checked against it (tests/hosts/node/furnitureThumbnails.test.ts).
  */
 export function meshThumbnail(mesh: TriangleMesh, size: number): RgbaImage {
-  const { azimuth, elevation, supersample: ss, light, ambient } = THUMBNAIL_VIEW;
-  const a = (azimuth * Math.PI) / 180;
-  const e = (elevation * Math.PI) / 180;
+  const { view, bounds } = viewCoordinates(mesh);
+  const s = size * THUMBNAIL_VIEW.supersample;
+  const margin = 0.06 * s;
+  const { minX, maxX, minY, maxY } = bounds;
+  const scale = (s - 2 * margin) / Math.max(maxX - minX, maxY - minY);
+  const offX = (s - scale * (maxX - minX)) / 2;
+  const offY = (s - scale * (maxY - minY)) / 2;
+  const screen: Screen = {
+    size: s,
+    x: (i) => offX + (view[3 * i] - minX) * scale,
+    y: (i) => s - offY - (view[3 * i + 1] - minY) * scale,
+  };
+  const samples = rasterize(mesh, view, screen);
+  return resolveSamples(samples, size, THUMBNAIL_VIEW.supersample);
+}
+
+/** The supersampled picture's pixel positions of the mesh's vertices. */
+interface Screen {
+  size: number;
+  x: (vertex: number) => number;
+  y: (vertex: number) => number;
+}
+
+/** Subsamples: depth (−∞ where nothing is drawn) and linear colour. */
+interface Samples {
+  depth: Float64Array;
+  colour: Float64Array;
+}
+
+/** Every vertex in view coordinates (right, up, toward the viewer) for THUMBNAIL_VIEW's camera, and their extent on screen. */
+function viewCoordinates(mesh: TriangleMesh): { view: Float64Array; bounds: { minX: number; maxX: number; minY: number; maxY: number } } {
+  const a = (THUMBNAIL_VIEW.azimuth * Math.PI) / 180;
+  const e = (THUMBNAIL_VIEW.elevation * Math.PI) / 180;
   // View axes: right, up and toward the viewer, for a camera at azimuth a, elevation e.
   const right = [Math.cos(a), 0, -Math.sin(a)];
   const toward = [Math.sin(a) * Math.cos(e), Math.sin(e), Math.cos(a) * Math.cos(e)];
@@ -60,15 +90,14 @@ export function meshThumbnail(mesh: TriangleMesh, size: number): RgbaImage {
     minY = Math.min(minY, vy);
     maxY = Math.max(maxY, vy);
   }
-  const s = size * ss;
-  const margin = 0.06 * s;
-  const scale = (s - 2 * margin) / Math.max(maxX - minX, maxY - minY);
-  const offX = (s - scale * (maxX - minX)) / 2;
-  const offY = (s - scale * (maxY - minY)) / 2;
-  const sx = (i: number) => offX + (view[3 * i] - minX) * scale;
-  const sy = (i: number) => s - offY - (view[3 * i + 1] - minY) * scale;
-  const depth = new Float64Array(s * s).fill(-Infinity);
-  const colour = new Float64Array(s * s * 3);
+  return { view, bounds: { minX, maxX, minY, maxY } };
+}
+
+/** Each front face flat-shaded (Lambert plus ambient) into the subsamples it covers, nearest face kept (depth buffer). */
+function rasterize(mesh: TriangleMesh, view: Float64Array, screen: Screen): Samples {
+  const { light, ambient } = THUMBNAIL_VIEW;
+  const s = screen.size;
+  const samples: Samples = { depth: new Float64Array(s * s).fill(-Infinity), colour: new Float64Array(s * s * 3) };
   const lightLength = Math.hypot(light[0], light[1], light[2]);
   const l = light.map((c) => c / lightLength);
   for (let t = 0; t < mesh.indices.length / 3; t++) {
@@ -84,33 +113,42 @@ export function meshThumbnail(mesh: TriangleMesh, size: number): RgbaImage {
     const shade = ambient + (1 - ambient) * Math.max(0, nl);
     const rho = mesh.materials[mesh.materialOfTriangle[t]].reflectance;
     const rgb = typeof rho === 'number' ? [rho, rho, rho] : rho;
-    const [x0, y0, x1, y1, x2, y2] = [sx(i0), sy(i0), sx(i1), sy(i1), sx(i2), sy(i2)];
-    const area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
-    if (area === 0) continue;
-    const [z0, z1, z2] = [view[3 * i0 + 2], view[3 * i1 + 2], view[3 * i2 + 2]];
-    const colMin = Math.max(0, Math.floor(Math.min(x0, x1, x2)));
-    const colMax = Math.min(s - 1, Math.ceil(Math.max(x0, x1, x2)));
-    const rowMin = Math.max(0, Math.floor(Math.min(y0, y1, y2)));
-    const rowMax = Math.min(s - 1, Math.ceil(Math.max(y0, y1, y2)));
-    for (let row = rowMin; row <= rowMax; row++) {
-      const py = row + 0.5;
-      for (let col = colMin; col <= colMax; col++) {
-        const px = col + 0.5;
-        // Barycentric weights (edge functions over the signed area): inside when all are ≥ 0.
-        const w0 = ((x1 - px) * (y2 - py) - (x2 - px) * (y1 - py)) / area;
-        const w1 = ((x2 - px) * (y0 - py) - (x0 - px) * (y2 - py)) / area;
-        const w2 = 1 - w0 - w1;
-        if (w0 < 0 || w1 < 0 || w2 < 0) continue;
-        const z = w0 * z0 + w1 * z1 + w2 * z2;
-        const k = row * s + col;
-        if (z <= depth[k]) continue;
-        depth[k] = z;
-        colour[3 * k] = rgb[0] * shade;
-        colour[3 * k + 1] = rgb[1] * shade;
-        colour[3 * k + 2] = rgb[2] * shade;
-      }
+    fillTriangle(samples, s, [screen.x(i0), screen.y(i0), screen.x(i1), screen.y(i1), screen.x(i2), screen.y(i2)], [view[3 * i0 + 2], view[3 * i1 + 2], view[3 * i2 + 2]], [rgb[0] * shade, rgb[1] * shade, rgb[2] * shade]);
+  }
+  return samples;
+}
+
+/** One triangle's subsamples: inside by barycentric edge functions, depth interpolated, nearer than what is there. */
+function fillTriangle(samples: Samples, s: number, [x0, y0, x1, y1, x2, y2]: number[], [z0, z1, z2]: number[], rgb: number[]): void {
+  const area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
+  if (area === 0) return;
+  const colMin = Math.max(0, Math.floor(Math.min(x0, x1, x2)));
+  const colMax = Math.min(s - 1, Math.ceil(Math.max(x0, x1, x2)));
+  const rowMin = Math.max(0, Math.floor(Math.min(y0, y1, y2)));
+  const rowMax = Math.min(s - 1, Math.ceil(Math.max(y0, y1, y2)));
+  for (let row = rowMin; row <= rowMax; row++) {
+    const py = row + 0.5;
+    for (let col = colMin; col <= colMax; col++) {
+      const px = col + 0.5;
+      // Barycentric weights (edge functions over the signed area): inside when all are ≥ 0.
+      const w0 = ((x1 - px) * (y2 - py) - (x2 - px) * (y1 - py)) / area;
+      const w1 = ((x2 - px) * (y0 - py) - (x0 - px) * (y2 - py)) / area;
+      const w2 = 1 - w0 - w1;
+      if (w0 < 0 || w1 < 0 || w2 < 0) continue;
+      const z = w0 * z0 + w1 * z1 + w2 * z2;
+      const k = row * s + col;
+      if (z <= samples.depth[k]) continue;
+      samples.depth[k] = z;
+      samples.colour[3 * k] = rgb[0];
+      samples.colour[3 * k + 1] = rgb[1];
+      samples.colour[3 * k + 2] = rgb[2];
     }
   }
+}
+
+/** ss × ss subsamples per pixel: linear colours averaged over the covered ones, then encoded; coverage is the alpha. */
+function resolveSamples({ depth, colour }: Samples, size: number, ss: number): RgbaImage {
+  const s = size * ss;
   const data = new Uint8Array(size * size * 4);
   for (let row = 0; row < size; row++) {
     for (let col = 0; col < size; col++) {
@@ -125,7 +163,6 @@ export function meshThumbnail(mesh: TriangleMesh, size: number): RgbaImage {
         }
       }
       const o = 4 * (row * size + col);
-      // Linear colours averaged over the covered samples, then encoded; coverage is the alpha.
       for (let c = 0; c < 3; c++) data[o + c] = covered ? encodeSrgb(sum[c] / covered) : 0;
       data[o + 3] = Math.round((255 * covered) / (ss * ss));
     }
