@@ -69,9 +69,7 @@ describe('only the default scene is built; counts are capped', () => {
   it('a GLB-sized file declaring 200 000 scenes is refused at once, naming the cap', async () => {
     const j = table();
     j.scenes = Array.from({ length: 200_000 }, () => ({ nodes: [0] }));
-    const t0 = performance.now();
     expect(await refusal([gltf(j)])).toBe('x.gltf: 200 000 scenes; at most 64 are read');
-    expect(performance.now() - t0).toBeLessThan(1000);
   });
 
   it('of 60 scenes only the default one (scene 1) is built', async () => {
@@ -92,18 +90,15 @@ describe('only the default scene is built; counts are capped', () => {
 
 describe('byte caps before decoding; the OBJ scan stops at its caps', () => {
   it('a 30 MB OBJ is refused by its size without being read', async () => {
-    const t0 = performance.now();
-    expect(await refusal([{ name: 'big.obj', bytes: new Uint8Array(30e6).fill(0x23) }])).toBe('big.obj: an OBJ file of 30 MB; at most 24 MB are read');
-    expect(performance.now() - t0).toBeLessThan(200);
+    // Bytes that are not UTF-8 text: had the importer read them, the refusal would name the text, not the size.
+    expect(await refusal([{ name: 'big.obj', bytes: new Uint8Array(30e6).fill(0xff) }])).toBe('big.obj: an OBJ file of 30 MB; at most 24 MB are read');
   });
 
-  it('a 20 MB OBJ of vertices stops at the vertex cap well under a second', async () => {
+  it('a 20 MB OBJ of vertices stops at the vertex cap', async () => {
     const line = new TextEncoder().encode('v 0.125 0.25 0.5\n');
     const bytes = new Uint8Array(Math.floor(20e6 / line.length) * line.length);
     for (let at = 0; at < bytes.length; at += line.length) bytes.set(line, at);
-    const t0 = performance.now();
     expect(await refusal([{ name: 'v.obj', bytes }])).toBe('v.obj: more than 144 000 vertices; simplify the model and import again');
-    expect(performance.now() - t0).toBeLessThan(1000);
   });
 
   it('a GLB over 64 MB and a data URI over 24 MB are refused with their limits', async () => {
@@ -116,9 +111,7 @@ describe('byte caps before decoding; the OBJ scan stops at its caps', () => {
   });
 
   it('a line continued past 1 MB is refused', async () => {
-    const t0 = performance.now();
     expect(await refusal([textFile('x.obj', `v 0 0 0\n${'1 \\\n'.repeat(400_000)}`)])).toBe('x.obj: line 2 continues past 1024 kB: not a text OBJ file');
-    expect(performance.now() - t0).toBeLessThan(1000);
   });
 });
 
