@@ -63,10 +63,7 @@ export function selectBrightPatchesOnGpu(
   grids.forEach((g, s) => {
     const l = g.layout;
     const rho = reflectance[l.index];
-    surfaces.set(
-      [g.column, g.tilesU, g.tilesV, g.tile, l.width, l.height, l.lengthU / l.width, l.lengthV / l.height, l.lengthU, l.lengthV, first, l.index, rho[0], rho[1], rho[2], l.uAxisIndex, ...l.origin, l.vAxisIndex],
-      s * 20,
-    );
+    surfaces.set([g.column, g.tilesU, g.tilesV, g.tile, l.width, l.height, l.lengthU / l.width, l.lengthV / l.height, l.lengthU, l.lengthV, first, l.index, rho[0], rho[1], rho[2], l.uAxisIndex, ...l.origin, l.vAxisIndex], s * 20);
     first += g.tilesU * g.tilesV;
   });
   const surfaceTable = createDataTexture(gl, surfaces, 5, grids.length, 4);
