@@ -62,6 +62,47 @@ float tileArea(int s, int iu, int iv) {
 }
 `;
 
+/**
+ * The CPU's loop over the ranked list (selectBrightPatches.ts), as a GLSL function over the keys
+ * 0 … n − 1 of uList: `takeStep(i)` is −1 where the loop stops at key i, 0 where it skips it (under
+ * the contrast), 1 where it takes it; `loopState` carries the count taken and the score left. Both
+ * the patch table and the early stop of the top-k rounds use it.
+ */
+const selectionLoop = /* glsl */ `float yAll;
+float peak(float score) { return yAll > 0.0 ? uArea * score / (yAll * yAll) : 1.0; }
+int loopCount;
+float loopScore;
+float loopMean;
+vec2 loopKey;
+void startLoop() {
+  vec4 totals = texelFetch(uTotals, ivec2(0), 0);
+  yAll = totals.x;
+  loopMean = yAll / uArea;
+  loopScore = totals.y;
+  loopCount = 0;
+}
+int takeStep(int i) {
+  if (!(yAll > 0.0) || loopCount >= uMaxPatches || peak(loopScore) <= uTargetPeakedness) return -1;
+  vec4 pairs = texelFetch(uList, ivec2(i / 2, 0), 0);
+  loopKey = i % 2 == 0 ? pairs.xy : pairs.zw;
+  if (loopKey.x < 0.0) return -1;
+  int s = surfaceOfTile(loopKey.y);
+  vec4 a = surfaceRow(s, 0);
+  int k = int(loopKey.y) - int(surfaceRow(s, 2).z);
+  int iu = k % int(a.y);
+  int iv = k / int(a.y);
+  float y = tileY(texelFetch(uSums, ivec2(int(a.x) + iu, iv), 0), surfaceRow(s, 3).rgb);
+  vec4 e = tileExtent(s, iu, iv);
+  if (y / ((e.z - e.x) * (e.w - e.y)) < uMinContrast * loopMean) return 0;
+  return 1;
+}
+// After a taken step.
+void took() {
+  loopCount++;
+  loopScore -= loopKey.x;
+}
+`;
+
 /** Ranking: a comes before b (higher score; equal scores: lower global index). */
 const ranking = /* glsl */ `bool before(vec2 a, vec2 b) { return a.x > b.x || (a.x == b.x && a.y < b.y); }
 vec2 top[${KEYS_PER_ROUND}];
@@ -127,9 +168,23 @@ void main() {
  * texel 4·uRound − 1). A candidate is a tile the CPU makes one: y ≥ minContrast · mean · area. The
  * output has KEYS_PER_ROUND/2 rows per block (pairs of keys).
  */
-export const topBlockPass = fragmentPass(
-  { uKeys: 'sampler2D', uTotals: 'sampler2D', uList: 'sampler2D', uRound: 'int', uBlock: 'int', uArea: 'float', uMinContrast: 'float' },
-  /* glsl */ `${ranking}out vec4 outColor;
+export const topBlockPass = (luminance: readonly [number, number, number]) =>
+  fragmentPass(
+    {
+      uKeys: 'sampler2D',
+      uTotals: 'sampler2D',
+      uList: 'sampler2D',
+      uSums: 'sampler2D',
+      uSurfaces: 'sampler2D',
+      uSurfaceCount: 'int',
+      uRound: 'int',
+      uBlock: 'int',
+      uArea: 'float',
+      uMinContrast: 'float',
+      uMaxPatches: 'int',
+      uTargetPeakedness: 'float',
+    },
+    /* glsl */ `${surfaceTable(luminance)}${selectionLoop}${ranking}out vec4 outColor;
 void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
   const int PAIRS = ${KEYS_PER_ROUND / 2};
@@ -142,6 +197,16 @@ void main() {
     if (bound.x < 0.0) {
       outColor = vec4(-1.0);
       return;
+    }
+    // The CPU's loop already stops inside the keys found: no more are read (the table pass stops there too).
+    startLoop();
+    for (int i = 0; i < 2 * PAIRS * uRound; i++) {
+      int taken = takeStep(i);
+      if (taken < 0) {
+        outColor = vec4(-1.0);
+        return;
+      }
+      if (taken > 0) took();
     }
   }
   float mean = texelFetch(uTotals, ivec2(0), 0).x / uArea;
@@ -161,7 +226,7 @@ void main() {
   outColor = vec4(top[2 * pair], top[2 * pair + 1]);
 }
 `,
-);
+  );
 
 /** Round uRound, the merge: texels 4·uRound … of the list (pairs of keys) from every block's keys; the other texels copied from the last list. */
 export const topMergePass = fragmentPass(
@@ -214,22 +279,16 @@ export const patchTablePass = (luminance: readonly [number, number, number]) =>
       uTargetPeakedness: 'float',
       uMinContrast: 'float',
     },
-    /* glsl */ `${surfaceTable(luminance)}out vec4 outColor;
-float yAll;
-float peak(float score) { return yAll > 0.0 ? uArea * score / (yAll * yAll) : 1.0; }
+    /* glsl */ `${surfaceTable(luminance)}${selectionLoop}out vec4 outColor;
 void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
-  vec4 totals = texelFetch(uTotals, ivec2(0), 0);
-  yAll = totals.x;
-  float mean = yAll / uArea;
-  float score = totals.y;
-  int count = 0;
+  startLoop();
   vec4 texel = p.x == 0 ? vec4(0.0, 0.0, 0.0, -1.0) : vec4(0.0);
-  for (int i = 0; yAll > 0.0 && i < uListLength; i++) {
-    if (count >= uMaxPatches || count > p.y || peak(score) <= uTargetPeakedness) break;
-    vec4 pairs = texelFetch(uList, ivec2(i / 2, 0), 0);
-    vec2 key = i % 2 == 0 ? pairs.xy : pairs.zw;
-    if (key.x < 0.0) break;
+  for (int i = 0; i < uListLength && loopCount <= p.y; i++) {
+    int taken = takeStep(i);
+    if (taken < 0) break;
+    if (taken == 0) continue;
+    vec2 key = loopKey;
     int s = surfaceOfTile(key.y);
     vec4 a = surfaceRow(s, 0);
     int k = int(key.y) - int(surfaceRow(s, 2).z);
@@ -240,8 +299,7 @@ void main() {
     vec4 rhoU = surfaceRow(s, 3);
     float y = tileY(sums, rhoU.rgb);
     vec4 e = tileExtent(s, iu, iv);
-    if (y / ((e.z - e.x) * (e.w - e.y)) < uMinContrast * mean) continue;
-    if (count == p.y) {
+    if (loopCount == p.y) {
       vec4 b = surfaceRow(s, 1);
       vec4 originV = surfaceRow(s, 4);
       vec4 m = texelFetch(uSums, at + ivec2(0, uRowsPerMode), 0);
@@ -271,10 +329,9 @@ void main() {
       else if (p.x == 2) texel = vec4(hv, 0.0);
       else texel = vec4(flux / rectArea, 0.0);
     }
-    count++;
-    score -= key.x;
+    took();
   }
-  if (p.y == uRows) texel = p.x == 0 ? vec4(float(count), peak(totals.y), peak(max(0.0, score)), 0.0) : vec4(0.0);
+  if (p.y == uRows) texel = p.x == 0 ? vec4(float(loopCount), peak(texelFetch(uTotals, ivec2(0), 0).y), peak(max(0.0, loopScore)), 0.0) : vec4(0.0);
   outColor = texel;
 }
 `,

@@ -34,6 +34,7 @@ export interface GpuBrightSelection {
 
 export const gpuTileKeys = tileKeyPass(LUMINANCE_WEIGHTS);
 export const gpuPatchTable = patchTablePass(LUMINANCE_WEIGHTS);
+export const gpuTopBlock = topBlockPass(LUMINANCE_WEIGHTS);
 
 /**
  * Select the bright patches from the tile-sum atlas on the GPU, by selectBrightPatches.ts's rule
@@ -100,10 +101,23 @@ export function selectBrightPatchesOnGpu(
   const blocks = acquire(Math.ceil(keys.width / BLOCK), Math.ceil(keys.height / BLOCK) * pairs);
   let list = acquire(rounds * pairs, 1);
   let other = acquire(rounds * pairs, 1);
-  const topBlock = compile(topBlockPass, 'bright top-k');
+  const topBlock = compile(gpuTopBlock, 'bright top-k');
   const topMerge = compile(topMergePass, 'bright top-k');
   for (let round = 0; round < rounds; round++) {
-    runPass(gl, topBlock, blocks, { uKeys: keys.texture, uTotals: totals.texture, uList: list.texture, uRound: round, uBlock: BLOCK, uArea: area, uMinContrast: options.minContrast });
+    runPass(gl, topBlock, blocks, {
+      uKeys: keys.texture,
+      uTotals: totals.texture,
+      uList: list.texture,
+      uSums: atlas.texture,
+      uSurfaces: surfaceTable,
+      uSurfaceCount: grids.length,
+      uRound: round,
+      uBlock: BLOCK,
+      uArea: area,
+      uMinContrast: options.minContrast,
+      uMaxPatches: options.maxPatches,
+      uTargetPeakedness: options.targetPeakedness,
+    });
     runPass(gl, topMerge, other, { uBlocks: blocks.texture, uList: list.texture, uRound: round });
     [list, other] = [other, list];
   }

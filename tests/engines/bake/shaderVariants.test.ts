@@ -12,8 +12,8 @@ import { fluxRatioPass, reduceSumPass } from '../../../shaders/fluxReduce.glsl';
 import { brightGatherPass } from '../../../shaders/brightGatherPass.glsl';
 import { residualPass } from '../../../shaders/residualPass.glsl';
 import { tileSums } from '../../../src/engines/bake/readTileSums';
-import { blockSumPass, patchMaskPass, topBlockPass, topMergePass } from '../../../shaders/brightSelection.glsl';
-import { gpuPatchTable, gpuTileKeys } from '../../../src/engines/bake/selectBrightPatchesOnGpu';
+import { blockSumPass, patchMaskPass, topMergePass } from '../../../shaders/brightSelection.glsl';
+import { gpuPatchTable, gpuTileKeys, gpuTopBlock } from '../../../src/engines/bake/selectBrightPatchesOnGpu';
 import { cachedProgramCount, getProgram } from '../../../src/engines/bake/glResources';
 import { generateDirectShader, generateShadowedDirectShader, type DirectLamp } from '../../../src/engines/bake/generateDirectShader';
 import { generateGatherShader, generateObjectAwareGatherShader, generateObjectGatherShader } from '../../../src/engines/bake/generateGatherShader';
@@ -138,7 +138,7 @@ describe('generated shaders compile', () => {
     compiles(residualPass);
     compiles(brightGatherPass);
     // The selection on the GPU (selectBrightPatchesOnGpu.ts).
-    for (const pass of [gpuTileKeys, blockSumPass, topBlockPass, topMergePass, gpuPatchTable, patchMaskPass]) compiles(pass);
+    for (const pass of [gpuTileKeys, blockSumPass, gpuTopBlock, topMergePass, gpuPatchTable, patchMaskPass]) compiles(pass);
     compiles(blurPass);
   });
 
