@@ -7,7 +7,7 @@
  * differs from the exact one by about 1e-3 relative: Howell's catalogue, the A₂ ≪ d² limit).
  * `patches` holds 4 texels per patch (row k, src/engines/bake/patchTable.ts): (centre.xyz, source
  * surface index), (half edge along u as a world vector, ·), (half edge along v, ·), (exitance
- * M.rgb, ·).
+ * M.rgb, ·). A row with surface index −1 ends the table early (selectBrightPatchesOnGpu.ts).
  *
  * The receiver cosine. E = ∫ L cos θ dω is taken over the hemisphere in front of the receiver:
  * light arriving from behind a surface does not light its front, so the geometry term is
@@ -69,6 +69,8 @@ ${objects ? `${objectTracing(objects.bvhWidth)}${clippedRectFormFactor}` : ''}ve
   vec3 e = vec3(0.0);
   for (int k = 0; k < patchCount; k++) {
     vec4 a = texelFetch(patches, ivec2(0, k), 0);
+    // Surface index −1: the end of a table chosen on the GPU (its length is not known on the CPU).
+    if (a.w < -0.5) break;
     if (int(a.w + 0.5) == receiver) continue;
     vec3 hu = texelFetch(patches, ivec2(1, k), 0).xyz;
     vec3 hv = texelFetch(patches, ivec2(2, k), 0).xyz;

@@ -2,7 +2,7 @@ import type { SurfaceName } from '../../core/model/lightingScene/lightingScene';
 import type { BakeReport } from './bakeJob';
 import type { BakeSettings } from './bakeSettings';
 import type { FluxRecord } from './fluxRecord';
-import type { BrightSelection } from './selectBrightPatches';
+import type { BrightSummary } from './selectBrightPatchesOnGpu';
 import type { SurfaceLayout } from './surfaceLayout';
 import type { ObjectReportEntry } from './objects/objectPassReport';
 import { tailFactor } from './tailFactor';
@@ -16,7 +16,7 @@ export interface BakeFacts {
   directSkipped: SurfaceName[];
   indirectEnabled: boolean;
   /** The bright-patch selection (null: the pass did not run). */
-  brightSelection: BrightSelection | null;
+  brightSelection: BrightSummary | null;
   bouncesComputed: number;
   /** Flux records 0..bouncesComputed (fluxRecord.ts), read back from the GPU. */
   records: readonly FluxRecord[];
@@ -40,7 +40,7 @@ export function bakeReport(f: BakeFacts): BakeReport {
     pointSources: f.pointSources,
     directSkipped: f.directSkipped,
     indirectEnabled: f.indirectEnabled,
-    brightPatches: selection ? { count: selection.patches.length, peakedness: selection.peakedness, residualPeakedness: selection.residualPeakedness } : { count: 0, peakedness: 1, residualPeakedness: 1 },
+    brightPatches: selection ? { ...selection } : { count: 0, peakedness: 1, residualPeakedness: 1 },
     samplesPerTexelPerBounce: f.indirectEnabled ? f.settings.samples : 0,
     bouncesComputed: f.bouncesComputed,
     bounceFlux: f.records.map((r) => r.fluxY),

@@ -31,6 +31,12 @@ export interface BakeSettings {
   nearField?: 'split' | 'point';
   /** At most this many bright tiles of the direct maps gathered exactly in bounce 1 (0 = pure Monte Carlo; docs/baker.md, "Bright patches"). */
   brightPatches: number;
+  /**
+   * Where the bright patches are chosen (docs/baker.md, "Bright patches selected on the GPU"): 'gpu'
+   * (unset) ranks and compacts the tile sums on the GPU, no read-back; 'cpu' reads the tile sums back
+   * and selects in JavaScript (selectBrightPatches.ts), kept for comparison.
+   */
+  brightSelection?: 'gpu' | 'cpu';
   /** Direct light as the mean over each texel: at most this many sub-samples per texel edge near sources (1 = texel centre only). */
   texelSupersampling: number;
   /** Wait for the GPU after each pass so timings_ms attributes time to passes (profiling; costs a pipeline stall per pass). */
@@ -93,6 +99,7 @@ export function resolveBakeSettings(partial: Partial<BakeSettings> = {}): BakeSe
   check(s.nearField === undefined || s.nearField === 'split' || s.nearField === 'point', `nearField "${String(s.nearField)}" is not split or point`);
   check(s.profileLookup === undefined || s.profileLookup === 'dense' || s.profileLookup === 'measured', `profileLookup ${String(s.profileLookup)} is not 'dense' or 'measured'`);
   check(s.lampUniforms === undefined || typeof s.lampUniforms === 'boolean', `lampUniforms ${String(s.lampUniforms)} is not true or false`);
+  check(s.brightSelection === undefined || s.brightSelection === 'gpu' || s.brightSelection === 'cpu', `brightSelection ${String(s.brightSelection)} is not 'gpu' or 'cpu'`);
   check(Number.isInteger(s.brightPatches) && s.brightPatches >= 0 && s.brightPatches <= 1024, `brightPatches ${s.brightPatches} is not an integer in 0..1024`);
   check(Number.isInteger(s.texelSupersampling) && s.texelSupersampling >= 1 && s.texelSupersampling <= 32, `texelSupersampling ${s.texelSupersampling} is not an integer in 1..32`);
   check(Number.isInteger(s.maxSourcesPerAxis) && s.maxSourcesPerAxis >= 1 && s.maxSourcesPerAxis <= 64, `maxSourcesPerAxis ${s.maxSourcesPerAxis} is not an integer in 1..64`);

@@ -11,9 +11,11 @@ export interface BrightPatchOptions {
   targetPeakedness: number;
   /** Only tiles whose mean exitance is at least this × the room's mean. */
   minContrast: number;
+  /** Select on the GPU (selectBrightPatchesOnGpu.ts, no read-back) rather than on the CPU (selectBrightPatches.ts). */
+  onGpu: boolean;
 }
 
 /** The pass's options for given bake settings. */
-export function brightPatchOptions(settings: { brightPatches: number }): BrightPatchOptions {
-  return { maxPatches: settings.brightPatches, tileSize: BRIGHT_TILE_SIZE, targetPeakedness: 1, minContrast: 3 };
+export function brightPatchOptions(settings: { brightPatches: number; brightSelection?: 'gpu' | 'cpu' }): BrightPatchOptions {
+  return { maxPatches: settings.brightPatches, tileSize: BRIGHT_TILE_SIZE, targetPeakedness: 1, minContrast: 3, onGpu: settings.brightSelection !== 'cpu' };
 }

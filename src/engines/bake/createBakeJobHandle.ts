@@ -114,7 +114,7 @@ export function createBakeJobHandle(b: StartedBake): BakeJob {
         pointSources: b.inputs.lamps.pointSources,
         directSkipped: b.directSkipped,
         indirectEnabled: b.indirectEnabled,
-        brightSelection: b.brightPass?.selection ?? null,
+        brightSelection: b.brightPass?.summary() ?? null,
         bouncesComputed,
         records,
         linearFiltering: b.linear,

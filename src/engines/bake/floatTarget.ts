@@ -1,3 +1,5 @@
+import { countReadBack } from './readBackCounter';
+
 /** A float render target: texture + framebuffer, RGBA32F (no overflow: half floats stop at 65 504 lx). */
 export interface FloatTarget {
   texture: WebGLTexture;
@@ -58,9 +60,18 @@ export function uploadRgb(gl: WebGL2RenderingContext, target: FloatTarget, rgb: 
 
 /** Read a target back as RGBA floats (4 per texel), row j = 0 first: one readPixels, a full pipeline wait. */
 export function readRgba(gl: WebGL2RenderingContext, target: FloatTarget): Float32Array {
-  const rgba = new Float32Array(target.width * target.height * 4);
+  return readRgbaRect(gl, target, 0, 0, target.width, target.height);
+}
+
+/**
+ * Read a rectangle of a target back as RGBA floats, row y first: the one readPixels of the baker,
+ * counted on the context (readBackCounter.ts).
+ */
+export function readRgbaRect(gl: WebGL2RenderingContext, target: FloatTarget, x: number, y: number, width: number, height: number): Float32Array {
+  const rgba = new Float32Array(width * height * 4);
   gl.bindFramebuffer(gl.FRAMEBUFFER, target.framebuffer);
-  gl.readPixels(0, 0, target.width, target.height, gl.RGBA, gl.FLOAT, rgba);
+  gl.readPixels(x, y, width, height, gl.RGBA, gl.FLOAT, rgba);
+  countReadBack(gl, rgba.byteLength);
   return rgba;
 }
 

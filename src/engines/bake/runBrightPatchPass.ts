@@ -6,10 +6,11 @@ import type { BrightPatchOptions } from './brightPatchOptions';
 import type { FloatTarget } from './floatTarget';
 import { createDataTexture } from './createDataTexture';
 import { patchTable, PATCH_TABLE_WIDTH } from './patchTable';
-import { readTileSums, tileSums } from './readTileSums';
+import { drawTileSums, readTileSums, tileSums } from './readTileSums';
+import { selectBrightPatchesOnGpu, type BrightSummary } from './selectBrightPatchesOnGpu';
 import type { CompilePass } from './createPassCompiler';
 import { runPass } from './runPass';
-import { selectBrightPatches, type BrightSelection } from './selectBrightPatches';
+import { selectBrightPatches } from './selectBrightPatches';
 import { axisVector, type SurfaceLayout } from './surfaceLayout';
 import type { TargetPool } from './targetPool';
 
@@ -29,7 +30,8 @@ import type { TargetPool } from './targetPool';
  * replaces, and exact in flux: Σ over the receivers = the tile's reflected flux).
  */
 export interface BrightPatchPass {
-  selection: BrightSelection;
+  /** The selection's count and peakedness for the report (chosen on the GPU: one read-back of one texel, counted by the pass's `countRead`). */
+  summary(): BrightSummary;
   /** Per surface index: the residual direct map (null: gather the direct map itself). */
   residual: (FloatTarget | null)[];
   /** Per surface index (then the objects' atlas, index 6, with objects): E from the bright patches at texel centres (null when there are none). */
@@ -56,9 +58,11 @@ export interface BrightPatchObjects {
 /**
  * Run the tile pass on the direct maps, select the bright patches, and build
  * the residual maps and the bright-patch illuminance per surface. Render
- * targets come from the baker's pool (targetPool.ts); `countRead` is told
- * about the one read-back (the tile sums of all surfaces: the selection is
- * made on the CPU).
+ * targets come from the baker's pool (targetPool.ts). With `options.onGpu` the
+ * selection stays on the GPU (selectBrightPatchesOnGpu.ts: no read-back; every
+ * reflecting surface gets a residual map and every surface a bright map, since
+ * which ones hold patches is not known on the CPU); otherwise `countRead` is told
+ * about the one read-back of the tile sums and the selection is made on the CPU.
  */
 export function runBrightPatchPass(
   gl: WebGL2RenderingContext,
@@ -71,8 +75,9 @@ export function runBrightPatchPass(
   targets: Pick<TargetPool, 'acquire' | 'release'>,
   objects: BrightPatchObjects | null = null,
 ): BrightPatchPass {
+  const noSummary: BrightSummary = { count: 0, peakedness: 1, residualPeakedness: 1 };
   const none: BrightPatchPass = {
-    selection: { patches: [], peakedness: 1, residualPeakedness: 1 },
+    summary: () => noSummary,
     residual: layouts.map(() => null),
     bright: layouts.map(() => null),
     dispose() {},
@@ -80,9 +85,11 @@ export function runBrightPatchPass(
   if (options.maxPatches <= 0) return none;
   const reflecting = layouts.filter((l) => reflectance[l.index].some((r) => r > 0));
   if (reflecting.length === 0) return none;
+  if (options.onGpu) return brightOnGpu(gl, layouts, reflecting, reflectance, direct, options, compile, countRead, targets, objects);
   const sums = readTileSums(gl, compile(tileSums, 'bright tiles'), reflecting, reflectance, direct, options.tileSize, targets, countRead);
   const selection = selectBrightPatches(sums, options);
-  if (selection.patches.length === 0) return { ...none, selection };
+  const summary: BrightSummary = { count: selection.patches.length, peakedness: selection.peakedness, residualPeakedness: selection.residualPeakedness };
+  if (selection.patches.length === 0) return { ...none, summary: () => summary };
 
   const n = selection.patches.length;
   const patchTexture = createDataTexture(gl, patchTable(selection.patches, layouts), PATCH_TABLE_WIDTH, n, 4);
@@ -100,14 +107,78 @@ export function runBrightPatchPass(
     textures.push(maskTexture);
     const out = targets.acquire(layout.width, layout.height, false);
     made.push(out);
-    runPass(gl, compile(residualPass, 'bright residual'), out, { uMap: direct[layout.index].texture, uMask: maskTexture, uTile: s.tile });
+    runPass(gl, compile(residualPass, 'bright residual'), out, { uMap: direct[layout.index].texture, uMask: maskTexture, uTile: s.tile, uMaskOffset: [0, 0] });
     return out;
   });
+  const bright = gatherBright(gl, layouts, patchTexture, n, (layout) => selection.patches.every((p) => p.surface === layout.index), compile, targets, objects, made);
+  return {
+    summary: () => summary,
+    residual,
+    bright,
+    dispose() {
+      for (const t of made) targets.release(t);
+      for (const t of textures) gl.deleteTexture(t);
+    },
+  };
+}
 
-  // Exact gather from the bright patches at every texel centre of every surface (and every covered atlas texel).
+/** The pass with the selection on the GPU: the patch table and the residual mask never leave it. */
+function brightOnGpu(
+  gl: WebGL2RenderingContext,
+  layouts: SurfaceLayout[],
+  reflecting: SurfaceLayout[],
+  reflectance: Rgb[],
+  direct: FloatTarget[],
+  options: BrightPatchOptions,
+  compile: CompilePass,
+  countRead: (bytes: number) => void,
+  targets: Pick<TargetPool, 'acquire' | 'release'>,
+  objects: BrightPatchObjects | null,
+): BrightPatchPass {
+  const tiles = drawTileSums(gl, compile(tileSums, 'bright tiles'), reflecting, reflectance, direct, options.tileSize, targets);
+  const selected = selectBrightPatchesOnGpu(gl, tiles, reflectance, options, compile, targets);
+  targets.release(tiles.atlas);
+  const made: FloatTarget[] = [];
+  const residualProgram = compile(residualPass, 'bright residual');
+  const residual = layouts.map((layout): FloatTarget | null => {
+    const grid = tiles.grids.find((g) => g.layout.index === layout.index);
+    if (!grid) return null;
+    const out = targets.acquire(layout.width, layout.height, false);
+    made.push(out);
+    runPass(gl, residualProgram, out, { uMap: direct[layout.index].texture, uMask: selected.mask.texture, uTile: grid.tile, uMaskOffset: [grid.column, 0] });
+    return out;
+  });
+  const bright = gatherBright(gl, layouts, selected.table.texture, selected.rows, () => false, compile, targets, objects, made);
+  let summary: BrightSummary | null = null;
+  return {
+    summary: () => (summary ??= selected.readSummary(countRead)),
+    residual,
+    bright,
+    dispose() {
+      for (const t of made) targets.release(t);
+      selected.dispose();
+    },
+  };
+}
+
+/**
+ * The exact gather from the patch table (`rows` rows, or fewer up to a sentinel) at every texel
+ * centre of every surface that `skip` does not exclude, then of every covered atlas texel.
+ */
+function gatherBright(
+  gl: WebGL2RenderingContext,
+  layouts: SurfaceLayout[],
+  patchTexture: WebGLTexture,
+  rows: number,
+  skip: (layout: SurfaceLayout) => boolean,
+  compile: CompilePass,
+  targets: Pick<TargetPool, 'acquire' | 'release'>,
+  objects: BrightPatchObjects | null,
+  made: FloatTarget[],
+): (FloatTarget | null)[] {
   const frame = (layout: SurfaceLayout) => ({
     uPatches: patchTexture,
-    uPatchCount: n,
+    uPatchCount: rows,
     uOrigin: layout.origin,
     uAxisU: axisVector(layout.uAxisIndex, layout.lengthU),
     uAxisV: axisVector(layout.vAxisIndex, layout.lengthV),
@@ -119,7 +190,7 @@ export function runBrightPatchPass(
   const occluded = objects ? compile(occludedBrightGatherPass(objects.bvhWidth), 'bright gather') : null;
   const objectValues = objects ? { uBvhNodes: objects.uBvhNodes, uBvhTriangles: objects.uBvhTriangles, uPoints: objects.uPoints, uNormals: objects.uNormals } : null;
   const bright = layouts.map((layout): FloatTarget | null => {
-    if (selection.patches.every((p) => p.surface === layout.index)) return null;
+    if (skip(layout)) return null;
     const out = targets.acquire(layout.width, layout.height, false);
     made.push(out);
     if (occluded && objectValues) runPass(gl, occluded, out, { ...frame(layout), ...objectValues, uFromAtlas: 0 });
@@ -133,14 +204,5 @@ export function runBrightPatchPass(
     runPass(gl, occluded, out, { ...frame(layouts[0]), uSurface: -1, ...objectValues, uFromAtlas: 1 });
     bright.push(out);
   }
-
-  return {
-    selection,
-    residual,
-    bright,
-    dispose() {
-      for (const t of made) targets.release(t);
-      for (const t of textures) gl.deleteTexture(t);
-    },
-  };
+  return bright;
 }

@@ -46,26 +46,38 @@ const sha = (s: string) => createHash('sha256').update(s).digest('hex').slice(0,
  * Issue #34 changed the direct passes (5 sources): candela now comes from dense profile grids
  * (four fetches, no bin-table search; docs/baker.md "Profile table"). The map checksums below did
  * not move beyond their 1e-6 tolerance (worst 1.6e-7 relative), so they stay as recorded.
+ * Issue #34 then moved the bright-patch selection onto the GPU (docs/baker.md "Bright patches
+ * selected on the GPU"): six new passes (tile keys, block sums, top-k block and merge, patch table,
+ * mask), the bright gather (9d936dc33d591134 → one of the new hashes: it stops at a table's
+ * sentinel row) and the residual pass (eec5549dca83b451 → one of the new hashes: its mask is the
+ * atlas, at an offset). The same tiles are taken; the rectangles are computed in float32 on the
+ * GPU, and the checksums moved by at most 2.9e-7 relative, within the tolerance.
  */
 const SHADERS = [
   '01baa4265d839960',
   '0f60c96f28184550',
   '1ad908f9e2dd7117',
+  '28a3626c550b850b',
   '2a54593de58f3546',
   '2ac43edf303fe17e',
   '2ec6a6d30aa4a1d6',
+  '34d6979c4db75101',
   '38b39ce0be018d75',
+  '3bce97f088147e49',
+  '3ce4092c26be7783',
   '5541ac5901f6fe22',
   '55d1f4d319b557d2',
+  '6004a25e159cde27',
   '6bdeafb5d0119a64',
   '6f8ec08bc124a86f',
   '99d4fc4d46d1af2c',
-  '9d936dc33d591134',
   '9de21ee0f4e0551d',
   'a22e5be0a7dd81f4',
   'aa386da2ab6976d6',
+  'b19e0774297d3ba4',
   'b1e956c5c41a7e88',
-  'eec5549dca83b451',
+  'dbf7665cb8fb53bc',
+  'e3d3056b459aafc0',
   'efe5f9b5bd2b432e',
   'f15cdd941093e784',
   'fe783aec8587b550',

@@ -84,8 +84,8 @@ describe('read-backs of a bake', () => {
     room: { width: 3, height: 2.5, depth: 4, reflectance: Object.fromEntries(SURFACE_NAMES.map((s) => [s, 0.6])) as Record<(typeof SURFACE_NAMES)[number], number> },
     luminaires: [{ photometry: spot(20000, 8, 4, 1), position: [1.5, 2.4, 2] as [number, number, number], yaw: 0, pitch: 30, roll: 0 }],
   };
-  // brightPatches 0: the bright-patch pass (brightPatches.ts) adds one read-back of its tile sums
-  // before the first bounce; counted separately below.
+  // brightPatches 0: the bright-patch pass (runBrightPatchPass.ts) adds the report's read-back of its
+  // summary (or, chosen on the CPU, one of its tile sums before the first bounce); counted separately below.
   const settings = { texelSize: 0.1, samples: 16, bounces: 4, brightPatches: 0 };
 
   it('none between bounces: a run makes 0 read-backs; the report 1 (stats row); maps 18 (6 surfaces × direct/indirect/total)', () => {
@@ -107,8 +107,17 @@ describe('read-backs of a bake', () => {
     expect(report.readbacks.count).toBe(19);
   });
 
-  it('the bright-patch pass adds exactly one read-back (its tile sums, before the first bounce), still none between bounces', () => {
+  it('bright patches chosen on the GPU (default) add no read-back to the bake; the report reads their summary (one texel) besides its stats row', () => {
     const job = createBaker(gl).start(scene, { ...settings, brightPatches: 64 });
+    job.run();
+    const report = job.report();
+    expect(report.brightPatches?.count ?? 0).toBeGreaterThan(0);
+    expect(report.readbacks).toEqual({ count: 1 + 1, bytes: (settings.bounces + 1) * 16 + 16 });
+    job.dispose();
+  });
+
+  it("chosen on the CPU (brightSelection 'cpu'), the pass adds exactly one read-back (its tile sums, before the first bounce), still none between bounces", () => {
+    const job = createBaker(gl).start(scene, { ...settings, brightPatches: 64, brightSelection: 'cpu' });
     job.run();
     // Tile sums + the report's stats row.
     expect(job.report().readbacks.count).toBe(1 + 1);

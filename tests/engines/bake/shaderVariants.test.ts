@@ -12,6 +12,8 @@ import { fluxRatioPass, reduceSumPass } from '../../../shaders/fluxReduce.glsl';
 import { brightGatherPass } from '../../../shaders/brightGatherPass.glsl';
 import { residualPass } from '../../../shaders/residualPass.glsl';
 import { tileSums } from '../../../src/engines/bake/readTileSums';
+import { blockSumPass, patchMaskPass, topMergePass } from '../../../shaders/brightSelection.glsl';
+import { gpuPatchTable, gpuTileKeys, gpuTopBlock } from '../../../src/engines/bake/selectBrightPatchesOnGpu';
 import { cachedProgramCount, getProgram } from '../../../src/engines/bake/glResources';
 import { generateDirectShader, generateShadowedDirectShader, type DirectLamp } from '../../../src/engines/bake/generateDirectShader';
 import { generateGatherShader, generateObjectAwareGatherShader, generateObjectGatherShader } from '../../../src/engines/bake/generateGatherShader';
@@ -135,6 +137,8 @@ describe('generated shaders compile', () => {
     compiles(tileSums);
     compiles(residualPass);
     compiles(brightGatherPass);
+    // The selection on the GPU (selectBrightPatchesOnGpu.ts).
+    for (const pass of [gpuTileKeys, blockSumPass, gpuTopBlock, topMergePass, gpuPatchTable, patchMaskPass]) compiles(pass);
     compiles(blurPass);
   });
 

@@ -146,8 +146,8 @@ describe('batches', () => {
     expect(first.batch.programsCompiled).toBeGreaterThan(0);
     // Only the gather shaders differ (they encode the reflectances); direct and fixed passes are reused.
     expect(second.batch.programsCompiled).toBeLessThan(first.batch.programsCompiled);
-    // 18 map read-backs (6 surfaces × direct, indirect, total) + the stats row + the bright-patch tile
-    // sums (one, before the first bounce), nothing between bounces.
+    // 18 map read-backs (6 surfaces × direct, indirect, total) + the stats row + the bright-patch
+    // summary texel (the report's; the patches are chosen on the GPU), nothing during the bake.
     expect(first.bake.readbacks.count).toBe(20);
   });
 

@@ -1,0 +1,166 @@
+import type { Rgb } from '../../core/model/lightingScene/lightingScene';
+import { blockSumPass, KEYS_PER_ROUND, patchMaskPass, patchTablePass, tileKeyPass, topBlockPass, topMergePass } from '../../../shaders/brightSelection.glsl';
+import { LUMINANCE_WEIGHTS } from './bakedMaps';
+import type { BrightPatchOptions } from './brightPatchOptions';
+import { createDataTexture } from './createDataTexture';
+import type { CompilePass } from './createPassCompiler';
+import { readRgbaRect, type FloatTarget } from './floatTarget';
+import { PATCH_TABLE_WIDTH } from './patchTable';
+import type { TileSumAtlas } from './readTileSums';
+import { runPass } from './runPass';
+import type { TargetPool } from './targetPool';
+
+/** Tiles per block edge in the reductions (16 × 16 tiles per fragment). */
+const BLOCK = 16;
+
+/** What the report says of a selection (bakeReport.ts). */
+export interface BrightSummary {
+  count: number;
+  peakedness: number;
+  residualPeakedness: number;
+}
+
+/** The bright patches chosen on the GPU: the patch table and the residual mask stay textures. */
+export interface GpuBrightSelection {
+  /** patchTable.ts's layout, `rows` rows: the patches, then the sentinel (surface index −1); row `rows` the summary. */
+  table: FloatTarget;
+  rows: number;
+  /** Per tile of the atlas (same columns as the tile sums): 1 where the tile is a patch. */
+  mask: FloatTarget;
+  /** The summary for the report: one read-back of one texel (counted by `countRead`). */
+  readSummary(countRead: (bytes: number) => void): BrightSummary;
+  dispose(): void;
+}
+
+export const gpuTileKeys = tileKeyPass(LUMINANCE_WEIGHTS);
+export const gpuPatchTable = patchTablePass(LUMINANCE_WEIGHTS);
+export const gpuTopBlock = topBlockPass(LUMINANCE_WEIGHTS);
+
+/**
+ * Select the bright patches from the tile-sum atlas on the GPU, by selectBrightPatches.ts's rule
+ * (docs/baker.md, "Bright patches selected on the GPU"):
+ * 1. per tile its y = Y(ρ·Σ E·a), score Σ y²·a, global index g and area (tileKeyPass);
+ * 2. the totals Σ y and Σ score by block sums to one texel;
+ * 3. the ranked candidates by rounds of a top-k search: each round every block of 16 × 16 tiles
+ *    keeps its first KEYS_PER_ROUND candidates after the last key found, and a merge keeps the
+ *    first KEYS_PER_ROUND of all blocks (comparisons only: the CPU's order of the float32 scores);
+ * 4. the compaction into the patch table: each texel runs the CPU's loop (stop at maxPatches or
+ *    when the peakedness left is at most the target; skip a candidate under the contrast) up to
+ *    its own row;
+ * 5. the residual mask: the tiles whose index is in the table.
+ * No read-back; `readSummary` reads the count and peakedness for the report.
+ */
+export function selectBrightPatchesOnGpu(
+  gl: WebGL2RenderingContext,
+  tiles: TileSumAtlas,
+  reflectance: readonly Rgb[],
+  options: BrightPatchOptions,
+  compile: CompilePass,
+  targets: Pick<TargetPool, 'acquire' | 'release'>,
+): GpuBrightSelection {
+  const { atlas, grids, rowsPerMode } = tiles;
+  const surfaces = new Float32Array(grids.length * 5 * 4);
+  let first = 0;
+  grids.forEach((g, s) => {
+    const l = g.layout;
+    const rho = reflectance[l.index];
+    surfaces.set([g.column, g.tilesU, g.tilesV, g.tile, l.width, l.height, l.lengthU / l.width, l.lengthV / l.height, l.lengthU, l.lengthV, first, l.index, rho[0], rho[1], rho[2], l.uAxisIndex, ...l.origin, l.vAxisIndex], s * 20);
+    first += g.tilesU * g.tilesV;
+  });
+  const surfaceTable = createDataTexture(gl, surfaces, 5, grids.length, 4);
+  const area = grids.reduce((a, g) => a + g.layout.lengthU * g.layout.lengthV, 0);
+  const used: FloatTarget[] = [];
+  const acquire = (w: number, h: number) => {
+    const t = targets.acquire(w, h, false);
+    used.push(t);
+    return t;
+  };
+  const done = (t: FloatTarget) => {
+    targets.release(t);
+    used.splice(used.indexOf(t), 1);
+  };
+
+  // 1. Keys per tile.
+  const keys = acquire(atlas.width, rowsPerMode);
+  runPass(gl, compile(gpuTileKeys, 'bright keys'), keys, { uSums: atlas.texture, uSurfaces: surfaceTable, uSurfaceCount: grids.length });
+
+  // 2. Totals: block sums until one texel is left.
+  const sum = compile(blockSumPass, 'bright totals');
+  let level = keys;
+  do {
+    const next = acquire(Math.ceil(level.width / BLOCK), Math.ceil(level.height / BLOCK));
+    runPass(gl, sum, next, { uMap: level.texture, uBlock: BLOCK });
+    if (level !== keys) done(level);
+    level = next;
+  } while (level.width > 1 || level.height > 1);
+  const totals = level;
+
+  // 3. Ranked candidates, KEYS_PER_ROUND per round; one round more than maxPatches needs covers a candidate the contrast test skips.
+  const pairs = KEYS_PER_ROUND / 2;
+  const rounds = Math.ceil(options.maxPatches / KEYS_PER_ROUND) + 1;
+  const blocks = acquire(Math.ceil(keys.width / BLOCK), Math.ceil(keys.height / BLOCK) * pairs);
+  let list = acquire(rounds * pairs, 1);
+  let other = acquire(rounds * pairs, 1);
+  const topBlock = compile(gpuTopBlock, 'bright top-k');
+  const topMerge = compile(topMergePass, 'bright top-k');
+  for (let round = 0; round < rounds; round++) {
+    runPass(gl, topBlock, blocks, {
+      uKeys: keys.texture,
+      uTotals: totals.texture,
+      uList: list.texture,
+      uSums: atlas.texture,
+      uSurfaces: surfaceTable,
+      uSurfaceCount: grids.length,
+      uRound: round,
+      uBlock: BLOCK,
+      uArea: area,
+      uMinContrast: options.minContrast,
+      uMaxPatches: options.maxPatches,
+      uTargetPeakedness: options.targetPeakedness,
+    });
+    runPass(gl, topMerge, other, { uBlocks: blocks.texture, uList: list.texture, uRound: round });
+    [list, other] = [other, list];
+  }
+  done(other);
+  done(blocks);
+
+  // 4. The patch table (compaction), and the summary row.
+  const rows = options.maxPatches;
+  const table = acquire(PATCH_TABLE_WIDTH, rows + 1);
+  runPass(gl, compile(gpuPatchTable, 'bright table'), table, {
+    uList: list.texture,
+    uSums: atlas.texture,
+    uTotals: totals.texture,
+    uSurfaces: surfaceTable,
+    uSurfaceCount: grids.length,
+    uListLength: rounds * KEYS_PER_ROUND,
+    uRowsPerMode: rowsPerMode,
+    uRows: rows,
+    uMaxPatches: options.maxPatches,
+    uArea: area,
+    uTargetPeakedness: options.targetPeakedness,
+    uMinContrast: options.minContrast,
+  });
+  done(list);
+  done(totals);
+
+  // 5. The residual mask.
+  const mask = acquire(atlas.width, rowsPerMode);
+  runPass(gl, compile(patchMaskPass, 'bright mask'), mask, { uKeys: keys.texture, uPatches: table.texture, uRows: rows });
+  done(keys);
+  gl.deleteTexture(surfaceTable);
+
+  return {
+    table,
+    rows,
+    mask,
+    readSummary(countRead) {
+      const row = readRgbaRect(gl, table, 0, rows, 1, 1);
+      countRead(row.byteLength);
+      return { count: Math.round(row[0]), peakedness: row[1], residualPeakedness: row[2] };
+    },
+    dispose() {
+      for (const t of [...used]) done(t);
+    },
+  };
+}
