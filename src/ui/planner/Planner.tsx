@@ -50,6 +50,7 @@ import { PlanAnnouncer } from './PlanAnnouncer';
 import type { Landmarks } from '../shared/landmarks';
 import type { FirstRunOptions } from './FirstRunHint';
 import { LazyGuidance } from './lazyGuidance';
+import { LazyRoomShapeEditor } from './LazyRoomShapeEditor';
 
 export interface PlannerProps {
   store: ConfiguratorStore;
@@ -85,6 +86,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
   const shareLink = useStore(ui, (s) => s.shareLink);
   const expert = useStore(ui, (s) => s.expert);
   const expertSwitch = useStore(ui, (s) => s.expertSwitch);
+  const roomEdit = useStore(ui, (s) => s.roomEdit);
 
   const wrapRef = useRef<HTMLDivElement>(null);
   const [viewport, setViewport] = useState<Viewport>(DEFAULT_VIEWPORT);
@@ -288,6 +290,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
                   }}
                 />
               )}
+              {roomEdit && <LazyRoomShapeEditor config={config} view={view} gate={gate} onDone={() => ui.setState({ roomEdit: false })} />}
               {status && (
                 <div className="status-line" role="status" data-testid="status-line" key={status.seq}>
                   {sentenceStart(noticeText(t, language, catalog, status), locale)}
@@ -320,7 +323,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
             <LazyImportPanel onAdd={addImported} />
           </FurniturePanel>
           <ScenePanel store={store} />
-          <SurfacesPanel room={config.room} finishes={defaultSurfaceFinishes} gate={gate} />
+          <SurfacesPanel room={config.room} finishes={defaultSurfaceFinishes} gate={gate} onEditShape={() => ui.setState({ roomEdit: true, mode: '2d', panelOpen: false, optionsOpen: false })} />
           <BomPanel bom={bom} needs={needs} catalog={catalog} />
           <section className="panel-section">
             <div className="setup-actions">
