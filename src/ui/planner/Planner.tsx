@@ -101,6 +101,8 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
   const path = selectionPath(config, selection);
   const select = useCallback((sel: Selection) => store.getState().select(sel), [store]);
   const bom = useMemo(() => billOfMaterials(config, catalog), [config, catalog]);
+  // The room-shape mode's bar and sheet cover the plan's edges: the room is fitted between them.
+  const fitBetween = useCallback((top: number, bottom: number) => controller.setFitInsets(top, bottom), [controller]);
   const needs = useMemo(() => installationNeeds(config, catalog), [config, catalog]);
 
   // Fit the room when the plan first gets its size and whenever the room's dimensions change.
@@ -278,7 +280,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
                   ⤢
                 </CommandButton>
               </div>
-              {config.systems.length === 0 && config.objects.length === 0 && firstRun !== false && (
+              {config.systems.length === 0 && config.objects.length === 0 && firstRun !== false && !roomEdit && (
                 <LazyGuidance
                   firstRun={{
                     room: config.room,
@@ -290,7 +292,18 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
                   }}
                 />
               )}
-              {roomEdit && <LazyRoomShapeEditor config={config} view={view} gate={gate} onDone={() => ui.setState({ roomEdit: false })} />}
+              {roomEdit && (
+                <LazyRoomShapeEditor
+                  config={config}
+                  view={view}
+                  gate={gate}
+                  onInsets={fitBetween}
+                  onDone={() => {
+                    controller.setFitInsets(0, 0);
+                    ui.setState({ roomEdit: false });
+                  }}
+                />
+              )}
               {status && (
                 <div className="status-line" role="status" data-testid="status-line" key={status.seq}>
                   {sentenceStart(noticeText(t, language, catalog, status), locale)}

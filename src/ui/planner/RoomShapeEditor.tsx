@@ -1,6 +1,6 @@
 import './registerRoomShapeEnglish';
 import './roomShape.css';
-import { useState, type PointerEvent as ReactPointerEvent } from 'react';
+import { useLayoutEffect, useRef, useState, type PointerEvent as ReactPointerEvent } from 'react';
 import type { Configuration } from '../../core/model/configuration/configuration';
 import { cornerAngle, currentShape, SHAPE_PRESETS, wallFinishes, wallLength } from '../../core/model/actions/roomShapeGeometry';
 import type { PlanPoint } from '../../core/room/planPolygon';
@@ -20,6 +20,8 @@ export interface RoomShapeEditorProps {
   view: PlanView;
   gate: ActionGate;
   onDone: () => void;
+  /** The plan pixels the bar (top) and the sheet's room (bottom) cover: the planner fits the room between them (a stable callback). */
+  onInsets: (top: number, bottom: number) => void;
 }
 
 type Picked = { kind: 'wall' | 'corner' | 'opening'; index: number } | null;
@@ -27,6 +29,8 @@ type Dragging = { kind: 'corner'; index: number; at: PlanPoint } | { kind: 'open
 
 /** A press that moves less than this (px) is a tap: it picks what it is on instead of dragging it. */
 const TAP_PX = 6;
+/** How far outside its wall a wall's length label sits, px. */
+const LABEL_OUT_PX = 20;
 
 const KIND_KEYS = { door: 'roomShape.door', window: 'roomShape.window', opening: 'roomShape.opening' } as const satisfies Record<string, MessageKey>;
 const PRESET_KEYS = { rectangle: 'roomShape.rectangle', L: 'roomShape.L', U: 'roomShape.U', T: 'roomShape.T' } as const satisfies Record<(typeof SHAPE_PRESETS)[number], MessageKey>;
@@ -38,13 +42,32 @@ const PRESET_KEYS = { rectangle: 'roomShape.rectangle', L: 'roomShape.L', U: 'ro
  * action through the gate, so a refused edit shows the model's reason and changes nothing. A chunk
  * of its own (LazyRoomShapeEditor): nothing of it is on the first screen.
  */
-export default function RoomShapeEditor({ config, view, gate, onDone }: RoomShapeEditorProps) {
+export default function RoomShapeEditor({ config, view, gate, onDone, onInsets }: RoomShapeEditorProps) {
   const { t, format } = useI18n();
   const shape = currentShape(config.room);
   const { outline } = shape;
   const [picked, setPicked] = useState<Picked>(null);
   const [dragging, setDragging] = useState<Dragging>(null);
   const [press, setPress] = useState<{ x: number; y: number; moved: boolean } | null>(null);
+  // The sheet's room at the bottom: 40 % of the plan's height, at most 280 px, kept free whatever is picked so the room does not jump.
+  const rootRef = useRef<HTMLDivElement>(null);
+  const barRef = useRef<HTMLDivElement>(null);
+  const [sheetRoom, setSheetRoom] = useState(0);
+  useLayoutEffect(() => {
+    const root = rootRef.current;
+    const bar = barRef.current;
+    if (!root || !bar) return;
+    const measure = () => {
+      const reserve = Math.min(280, Math.round(0.4 * root.clientHeight));
+      setSheetRoom(reserve);
+      onInsets(bar.offsetTop + bar.offsetHeight + 8, reserve + 16);
+    };
+    measure();
+    const ro = new ResizeObserver(measure);
+    ro.observe(root);
+    ro.observe(bar);
+    return () => ro.disconnect();
+  }, [onInsets]);
   const screen = (p: PlanPoint) => worldToScreen(view, { x: p[0], z: p[1] });
   const m = (v: number) => format.number(v, { minimumFractionDigits: 2, maximumFractionDigits: 2 });
 
@@ -73,7 +96,7 @@ export default function RoomShapeEditor({ config, view, gate, onDone }: RoomShap
   const selectedWall = picked?.kind === 'wall' ? picked.index : -1;
 
   return (
-    <div className="room-shape-editor plan-overlay" data-testid="room-shape-editor">
+    <div ref={rootRef} className="room-shape-editor plan-overlay" data-testid="room-shape-editor">
       <svg className="room-shape-lines" aria-hidden>
         <path d={`M${shown.map((p) => `${screen(p).sx},${screen(p).sy}`).join('L')}Z`} className={dragging ? 'room-shape-preview' : 'room-shape-outline'} />
         {selectedWall >= 0 && <line x1={screen(outline[selectedWall]).sx} y1={screen(outline[selectedWall]).sy} x2={screen(outline[(selectedWall + 1) % outline.length]).sx} y2={screen(outline[(selectedWall + 1) % outline.length]).sy} className="room-shape-picked" />}
@@ -81,13 +104,15 @@ export default function RoomShapeEditor({ config, view, gate, onDone }: RoomShap
       {outline.map((_, i) => {
         const a = screen(shown[i]);
         const b = screen(shown[(i + 1) % shown.length]);
-        const length = wallLength(shown, i);
+        const { length, n } = shapeWall(shown, i);
+        // Outside the wall, so the label never covers an opening's handle on it (the view does not turn the plan: screen and plan normals agree).
+        const out = LABEL_OUT_PX;
         return (
           <button
             key={`w${i}`}
             type="button"
             className={`room-wall-label${selectedWall === i ? ' picked' : ''}`}
-            style={{ left: (a.sx + b.sx) / 2, top: (a.sy + b.sy) / 2 }}
+            style={{ left: (a.sx + b.sx) / 2 - n[0] * out, top: (a.sy + b.sy) / 2 - n[1] * out }}
             aria-label={t('roomShape.wallButton', { wall: i, length: m(length) })}
             data-plan-control
             data-testid={`room-wall-${i}`}
@@ -156,7 +181,7 @@ export default function RoomShapeEditor({ config, view, gate, onDone }: RoomShap
           </button>
         );
       })}
-      <div className="room-shape-bar" data-plan-control role="toolbar" aria-label={t('roomShape.title')}>
+      <div ref={barRef} className="room-shape-bar" data-plan-control role="toolbar" aria-label={t('roomShape.title')}>
         <span className="room-shape-title">{t('roomShape.startFrom')}</span>
         {SHAPE_PRESETS.map((preset) => (
           <GatedButton key={preset} gate={gate} action="setRoomShapePreset" params={{ preset }} label={t(PRESET_KEYS[preset])} testId={`room-preset-${preset}`} onRan={() => setPicked(null)}>
@@ -168,18 +193,18 @@ export default function RoomShapeEditor({ config, view, gate, onDone }: RoomShap
         </button>
       </div>
       {picked === null ? (
-        <p className="room-shape-sheet room-shape-hint" data-plan-control>
+        <p className="room-shape-sheet room-shape-hint" data-plan-control style={{ maxHeight: sheetRoom }}>
           {t('roomShape.hint')}
         </p>
       ) : (
-        <Sheet config={config} picked={picked} gate={gate} onClose={() => setPicked(null)} />
+        <Sheet config={config} picked={picked} gate={gate} onClose={() => setPicked(null)} maxHeight={sheetRoom} />
       )}
     </div>
   );
 }
 
 /** What was tapped, edited: a wall's length, split, slope and openings; a corner's angle; an opening's place and size. */
-function Sheet({ config, picked, gate, onClose }: { config: Configuration; picked: NonNullable<Picked>; gate: ActionGate; onClose: () => void }) {
+function Sheet({ config, picked, gate, onClose, maxHeight }: { config: Configuration; picked: NonNullable<Picked>; gate: ActionGate; onClose: () => void; maxHeight: number }) {
   const { t } = useI18n();
   const shape = currentShape(config.room);
   const n = shape.outline.length;
@@ -266,7 +291,7 @@ function Sheet({ config, picked, gate, onClose }: { config: Configuration; picke
     return null;
   }
   return (
-    <section className="room-shape-sheet" data-plan-control aria-label={title} data-testid="room-shape-sheet">
+    <section className="room-shape-sheet" data-plan-control aria-label={title} data-testid="room-shape-sheet" style={{ maxHeight }}>
       <header>
         <h3>{title}</h3>
         <button type="button" className="btn" onClick={onClose} aria-label={t('common.close')}>

@@ -53,10 +53,13 @@ export function SurfacesPanel({ room, finishes, gate, onEditShape }: SurfacesPan
         <FinishSelect id="finish-walls" label={t('app.walls')} use="walls" value={wallsAlike ? r.north : null} finishes={finishes} onChoose={choose('walls')} disabledReason={reason('walls')} testId="finish-walls" />
         {row('ceiling', t('app.ceiling'))}
       </div>
-      <details className="finish-walls">
-        <summary>{t('planner.wallsOneByOne')}</summary>
-        <div className="finish-list">{WALL_NAMES.map((w) => row(w, t(WALL_LABELS[w])))}</div>
-      </details>
+      {/* A drawn room's walls are not the box's four: each has its finish in the room-shape mode's wall sheet. */}
+      {!room.shape && (
+        <details className="finish-walls">
+          <summary>{t('planner.wallsOneByOne')}</summary>
+          <div className="finish-list">{WALL_NAMES.map((w) => row(w, t(WALL_LABELS[w])))}</div>
+        </details>
+      )}
     </section>
   );
 }

@@ -53,6 +53,7 @@ const SAME_AS_ENGLISH: Record<string, readonly string[]> = {
   ],
   fr: [
     'common.ok',
+    'roomShape.rectangle',
     'view3d.compareToggle',
     'view3d.compareA',
     'view3d.compareB',

@@ -183,6 +183,10 @@ describe('slopes, openings and finishes', () => {
     // Walls 1 and 3 face west into the room: they take the east wall's 0.3.
     expect(currentShape(s.room).wallReflectance).toEqual([0.5, 0.3, 0.5, 0.3, 0.7, 0.5]);
     expect(refusal(s, 'setWallFinish', { wall: 0, value: 1.2 }).code).toBe('room-reflectance');
+    // All walls at once: the walls' own finishes give way to it.
+    const all = run(s, 'setReflectance', { surface: 'walls', value: 0.6 });
+    expect(currentShape(all.room).wallReflectance).toBeUndefined();
+    expect(new Set(shapeRoomInput(all.room).reflectance.walls as number[])).toEqual(new Set([0.6]));
   });
 
   it("an edit that leaves a rail outside the room is refused with validate()'s rule", () => {
