@@ -267,7 +267,11 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
             );
           })}
         </g>
-        {shape ? <LazyRoomShapeDrawing shape={shape} height={height} clipId={clipId} hatchId={`${clipId}h`} /> : <rect x={0} y={0} width={width} height={depth} fill="none" stroke="#1d2330" strokeWidth={3} vectorEffect="non-scaling-stroke" />}
+        {shape ? (
+          <LazyRoomShapeDrawing shape={shape} height={height} clipId={clipId} hatchId={`${clipId}h`} />
+        ) : (
+          <rect x={0} y={0} width={width} height={depth} fill="none" stroke="#1d2330" strokeWidth={3} vectorEffect="non-scaling-stroke" />
+        )}
         {systems.map((s) => {
           const d = systemDrag?.systemId === s.id ? systemDrag.delta : { x: 0, z: 0 };
           const refused = systemDrag?.systemId === s.id && systemDrag.invalid;

@@ -40,7 +40,16 @@ export default function RoomShapeDrawing({ shape, height, clipId, hatchId }: { s
           return (
             <g key={slope.wall} data-slope-wall={slope.wall}>
               <path d={`M${at(a, u, -FAR, n, -FAR)}L${at(a, u, FAR, n, -FAR)}L${at(a, u, FAR, n, d)}L${at(a, u, -FAR, n, d)}Z`} fill={`url(#${hatchId})`} fillOpacity={0.6} />
-              <line x1={a[0] + n[0] * d - u[0] * FAR} y1={a[1] + n[1] * d - u[1] * FAR} x2={a[0] + n[0] * d + u[0] * FAR} y2={a[1] + n[1] * d + u[1] * FAR} stroke="#8a6d3b" strokeWidth={1.5} strokeDasharray="6 4" vectorEffect="non-scaling-stroke" />
+              <line
+                x1={a[0] + n[0] * d - u[0] * FAR}
+                y1={a[1] + n[1] * d - u[1] * FAR}
+                x2={a[0] + n[0] * d + u[0] * FAR}
+                y2={a[1] + n[1] * d + u[1] * FAR}
+                stroke="#8a6d3b"
+                strokeWidth={1.5}
+                strokeDasharray="6 4"
+                vectorEffect="non-scaling-stroke"
+              />
             </g>
           );
         })}

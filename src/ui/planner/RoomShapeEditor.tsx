@@ -99,7 +99,15 @@ export default function RoomShapeEditor({ config, view, gate, onDone, onInsets }
     <div ref={rootRef} className="room-shape-editor plan-overlay" data-testid="room-shape-editor">
       <svg className="room-shape-lines" aria-hidden>
         <path d={`M${shown.map((p) => `${screen(p).sx},${screen(p).sy}`).join('L')}Z`} className={dragging ? 'room-shape-preview' : 'room-shape-outline'} />
-        {selectedWall >= 0 && <line x1={screen(outline[selectedWall]).sx} y1={screen(outline[selectedWall]).sy} x2={screen(outline[(selectedWall + 1) % outline.length]).sx} y2={screen(outline[(selectedWall + 1) % outline.length]).sy} className="room-shape-picked" />}
+        {selectedWall >= 0 && (
+          <line
+            x1={screen(outline[selectedWall]).sx}
+            y1={screen(outline[selectedWall]).sy}
+            x2={screen(outline[(selectedWall + 1) % outline.length]).sx}
+            y2={screen(outline[(selectedWall + 1) % outline.length]).sy}
+            className="room-shape-picked"
+          />
+        )}
       </svg>
       {outline.map((_, i) => {
         const a = screen(shown[i]);
@@ -229,7 +237,14 @@ function Sheet({ config, picked, gate, onClose, maxHeight }: { config: Configura
             {t('roomShape.split')}
           </GatedButton>
           {(['door', 'window', 'opening'] as const).map((kind) => (
-            <GatedButton key={kind} gate={gate} action="addRoomOpening" params={{ wall, kind }} label={t(kind === 'door' ? 'roomShape.addDoor' : kind === 'window' ? 'roomShape.addWindow' : 'roomShape.addOpening')} testId={`room-add-${kind}`}>
+            <GatedButton
+              key={kind}
+              gate={gate}
+              action="addRoomOpening"
+              params={{ wall, kind }}
+              label={t(kind === 'door' ? 'roomShape.addDoor' : kind === 'window' ? 'roomShape.addWindow' : 'roomShape.addOpening')}
+              testId={`room-add-${kind}`}
+            >
               {t(kind === 'door' ? 'roomShape.addDoor' : kind === 'window' ? 'roomShape.addWindow' : 'roomShape.addOpening')}
             </GatedButton>
           ))}
