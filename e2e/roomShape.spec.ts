@@ -128,6 +128,11 @@ test.describe('phone', () => {
     await page.mouse.move(c.x + c.width / 2, c.y + c.height / 2 + 40, { steps: 3 });
     await page.mouse.up();
     await expect.poll(async () => (await room(page)).shape!.outline[3][1]).toBeGreaterThan(z + 0.2);
+    // Without a pointer: the arrow keys move a corner 5 cm.
+    const x = (await room(page)).shape!.outline[3][0];
+    await page.getByTestId('room-corner-3').focus();
+    await page.keyboard.press('ArrowLeft');
+    await expect.poll(async () => (await room(page)).shape!.outline[3][0]).toBeCloseTo(x - 0.05, 6);
     await page.getByTestId('room-corner-3').tap();
     await expect(page.getByTestId('room-corner-angle')).toBeVisible();
     await page.screenshot({ path: test.info().outputPath('room-shape-phone.png') });

@@ -29,6 +29,8 @@ type Dragging = { kind: 'corner'; index: number; at: PlanPoint } | { kind: 'open
 
 /** A press that moves less than this (px) is a tap: it picks what it is on instead of dragging it. */
 const TAP_PX = 6;
+/** A corner's move per arrow key, metres (plan x right, z down on screen). */
+const ARROW_STEPS: Record<string, PlanPoint | undefined> = { ArrowLeft: [-0.05, 0], ArrowRight: [0.05, 0], ArrowUp: [0, -0.05], ArrowDown: [0, 0.05] };
 /** How far outside its wall a wall's length label sits, px. */
 const LABEL_OUT_PX = 20;
 
@@ -151,6 +153,12 @@ export default function RoomShapeEditor({ config, view, gate, onDone, onInsets }
             onPointerCancel={() => (setPress(null), setDragging(null))}
             onKeyDown={(e) => {
               if (e.key === 'Enter' || e.key === ' ') setPicked({ kind: 'corner', index: i });
+              // Arrow keys move the corner 5 cm (no pointer needed).
+              const step = ARROW_STEPS[e.key];
+              if (!step) return;
+              e.preventDefault();
+              const refused = gate.attempt('moveRoomCorner', { corner: i, x: Math.round((p[0] + step[0]) * 1000) / 1000, z: Math.round((p[1] + step[1]) * 1000) / 1000 });
+              if (refused) gate.explain(refused);
             }}
           />
         );
