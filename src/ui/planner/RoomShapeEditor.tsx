@@ -31,8 +31,10 @@ type Dragging = { kind: 'corner'; index: number; at: PlanPoint } | { kind: 'open
 const TAP_PX = 6;
 /** A corner's move per arrow key, metres (plan x right, z down on screen). */
 const ARROW_STEPS: Record<string, PlanPoint | undefined> = { ArrowLeft: [-0.05, 0], ArrowRight: [0.05, 0], ArrowUp: [0, -0.05], ArrowDown: [0, 0.05] };
-/** How far outside its wall a wall's length label sits, px. */
-const LABEL_OUT_PX = 20;
+/** How far inside its wall a wall's length label's centre sits, px: half the label (32 px high, about 56 wide) and a little. */
+const LABEL_CLEAR_PX = { across: 22, along: 34 };
+/** How far outside its wall an opening's handle sits, px. */
+const HANDLE_OUT_PX = 16;
 
 const KIND_KEYS = { door: 'roomShape.door', window: 'roomShape.window', opening: 'roomShape.opening' } as const satisfies Record<string, MessageKey>;
 const PRESET_KEYS = { rectangle: 'roomShape.rectangle', L: 'roomShape.L', U: 'roomShape.U', T: 'roomShape.T' } as const satisfies Record<(typeof SHAPE_PRESETS)[number], MessageKey>;
@@ -55,6 +57,7 @@ export default function RoomShapeEditor({ config, view, gate, onDone, onInsets }
   const rootRef = useRef<HTMLDivElement>(null);
   const barRef = useRef<HTMLDivElement>(null);
   const [sheetRoom, setSheetRoom] = useState(0);
+  const [planWidth, setPlanWidth] = useState(Infinity);
   useLayoutEffect(() => {
     const root = rootRef.current;
     const bar = barRef.current;
@@ -62,7 +65,9 @@ export default function RoomShapeEditor({ config, view, gate, onDone, onInsets }
     const measure = () => {
       const reserve = Math.min(280, Math.round(0.4 * root.clientHeight));
       setSheetRoom(reserve);
-      onInsets(bar.offsetTop + bar.offsetHeight + 8, reserve + 16);
+      setPlanWidth(root.clientWidth);
+      // Room for the opening handles outside the top and bottom walls too.
+      onInsets(bar.offsetTop + bar.offsetHeight + 8 + HANDLE_OUT_PX, reserve + 16 + HANDLE_OUT_PX);
     };
     measure();
     const ro = new ResizeObserver(measure);
@@ -115,14 +120,15 @@ export default function RoomShapeEditor({ config, view, gate, onDone, onInsets }
         const a = screen(shown[i]);
         const b = screen(shown[(i + 1) % shown.length]);
         const { length, n } = shapeWall(shown, i);
-        // Outside the wall, so the label never covers an opening's handle on it (the view does not turn the plan: screen and plan normals agree).
-        const out = LABEL_OUT_PX;
+        // Inside the wall (outside, the labels of an L's notch walls would crowd its inner corner), clear of the opening handles, which sit outside; labels are wider than tall, so further in from an upright wall. The view does not turn the plan: screen and plan normals agree.
+        const out = LABEL_CLEAR_PX.across * Math.abs(n[1]) + LABEL_CLEAR_PX.along * Math.abs(n[0]);
+        const left = Math.min(Math.max((a.sx + b.sx) / 2 + n[0] * out, 30), planWidth - 30);
         return (
           <button
             key={`w${i}`}
             type="button"
             className={`room-wall-label${selectedWall === i ? ' picked' : ''}`}
-            style={{ left: (a.sx + b.sx) / 2 - n[0] * out, top: (a.sy + b.sy) / 2 - n[1] * out }}
+            style={{ left, top: (a.sy + b.sy) / 2 + n[1] * out }}
             aria-label={t('roomShape.wallButton', { wall: i, length: m(length) })}
             data-plan-control
             data-testid={`room-wall-${i}`}
@@ -164,9 +170,11 @@ export default function RoomShapeEditor({ config, view, gate, onDone, onInsets }
         );
       })}
       {shape.openings.map((o, k) => {
-        const { a, u, length } = shapeWall(outline, o.wall);
+        const { a, u, n, length } = shapeWall(outline, o.wall);
         const offset = dragging?.kind === 'opening' && dragging.index === k ? dragging.offset : o.offset;
-        const s = screen([a[0] + u[0] * (offset + o.width / 2), a[1] + u[1] * (offset + o.width / 2)]);
+        const centre = screen([a[0] + u[0] * (offset + o.width / 2), a[1] + u[1] * (offset + o.width / 2)]);
+        // Just outside its wall, so it covers neither the door's swing nor the wall's length label.
+        const s = { sx: centre.sx - n[0] * HANDLE_OUT_PX, sy: centre.sy - n[1] * HANDLE_OUT_PX };
         return (
           <button
             key={`o${k}`}
