@@ -65,7 +65,6 @@ export default {
   westWall: 'Westwand',
   eastWall: 'Ostwand',
   wallsOneByOne: 'Wände einzeln',
-  editRoomShape: 'Raumform…',
   feedAtStart: 'am Kettenanfang',
   feedAtEnd: 'am Kettenende',
   feedAtConnector: 'an Verbinder {n}',

@@ -65,7 +65,6 @@ export default {
   westWall: 'Parete ovest',
   eastWall: 'Parete est',
   wallsOneByOne: 'Pareti una per una',
-  editRoomShape: 'Forma della stanza…',
   feedAtStart: 'all’inizio della catena',
   feedAtEnd: 'alla fine della catena',
   feedAtConnector: 'al connettore {n}',
