@@ -70,7 +70,9 @@ export async function run(args: string[]): Promise<number> {
         },
         objectsOutput(scene),
       );
-      process.stdout.write(`baked ${positional[i]} → ${folders[i]} (${report.totalTexels} texels, ${report.bouncesComputed} bounces, ${Math.round(report.timings_ms.total)} ms, ${compiled} programs compiled, gl ${backend})\n`);
+      // Covered atlas texels count too: a room of any shape is all atlas (its six box surfaces are one-texel sinks).
+      const texels = report.totalTexels + (report.objects ?? []).reduce((n, o) => n + o.texels, 0);
+      process.stdout.write(`baked ${positional[i]} → ${folders[i]} (${texels} texels, ${report.bouncesComputed} bounces, ${Math.round(report.timings_ms.total)} ms, ${compiled} programs compiled, gl ${backend})\n`);
     });
   } finally {
     sceneBaker.destroy();
