@@ -55,7 +55,6 @@ const ALLOWED: ReadonlyMap<string, string> = new Map([
   ['src/core/photometry/parseLdt.ts:parseLdt', 'reads one format top to bottom: to be split by section of the format'],
   ['src/engines/bake/createBounceIteration.ts:createBounceIteration', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
   ['src/hosts/bench/furnishedBench.ts:runFurnishedBench', "a command's steps in order: to be split into named steps, as startBakeJob was"],
-  ['src/engines/bake/runBrightPatchPass.ts:runBrightPatchPass', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
   ['src/hosts/node/renderImage.ts:createRenderSession', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/engines/bake/profileTable.ts:buildProfileTable', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
 ]);

@@ -59,74 +59,34 @@ export function selectBrightPatchesOnGpu(
   targets: Pick<TargetPool, 'acquire' | 'release'>,
 ): GpuBrightSelection {
   const { atlas, grids, rowsPerMode } = tiles;
-  const surfaces = new Float32Array(grids.length * 5 * 4);
-  let first = 0;
-  grids.forEach((g, s) => {
-    const l = g.layout;
-    const rho = reflectance[l.index];
-    surfaces.set([g.column, g.tilesU, g.tilesV, g.tile, l.width, l.height, l.lengthU / l.width, l.lengthV / l.height, l.lengthU, l.lengthV, first, l.index, rho[0], rho[1], rho[2], l.uAxisIndex, ...l.origin, l.vAxisIndex], s * 20);
-    first += g.tilesU * g.tilesV;
-  });
-  const surfaceTable = createDataTexture(gl, surfaces, 5, grids.length, 4);
+  const surfaceTable = surfaceTableOf(gl, tiles, reflectance);
   const area = grids.reduce((a, g) => a + g.layout.lengthU * g.layout.lengthV, 0);
   const used: FloatTarget[] = [];
-  const acquire = (w: number, h: number) => {
-    const t = targets.acquire(w, h, false);
-    used.push(t);
-    return t;
+  const pool: PassPool = {
+    acquire(w, h) {
+      const t = targets.acquire(w, h, false);
+      used.push(t);
+      return t;
+    },
+    done(t) {
+      targets.release(t);
+      used.splice(used.indexOf(t), 1);
+    },
   };
-  const done = (t: FloatTarget) => {
-    targets.release(t);
-    used.splice(used.indexOf(t), 1);
-  };
+  const { done } = pool;
 
   // 1. Keys per tile.
-  const keys = acquire(atlas.width, rowsPerMode);
+  const keys = pool.acquire(atlas.width, rowsPerMode);
   runPass(gl, compile(gpuTileKeys, 'bright keys'), keys, { uSums: atlas.texture, uSurfaces: surfaceTable, uSurfaceCount: grids.length });
-
   // 2. Totals: block sums until one texel is left.
-  const sum = compile(blockSumPass, 'bright totals');
-  let level = keys;
-  do {
-    const next = acquire(Math.ceil(level.width / BLOCK), Math.ceil(level.height / BLOCK));
-    runPass(gl, sum, next, { uMap: level.texture, uBlock: BLOCK });
-    if (level !== keys) done(level);
-    level = next;
-  } while (level.width > 1 || level.height > 1);
-  const totals = level;
-
+  const totals = blockTotals(gl, keys, compile, pool);
   // 3. Ranked candidates, KEYS_PER_ROUND per round; one round more than maxPatches needs covers a candidate the contrast test skips.
-  const pairs = KEYS_PER_ROUND / 2;
   const rounds = Math.ceil(options.maxPatches / KEYS_PER_ROUND) + 1;
-  const blocks = acquire(Math.ceil(keys.width / BLOCK), Math.ceil(keys.height / BLOCK) * pairs);
-  let list = acquire(rounds * pairs, 1);
-  let other = acquire(rounds * pairs, 1);
-  const topBlock = compile(gpuTopBlock, 'bright top-k');
-  const topMerge = compile(topMergePass, 'bright top-k');
-  for (let round = 0; round < rounds; round++) {
-    runPass(gl, topBlock, blocks, {
-      uKeys: keys.texture,
-      uTotals: totals.texture,
-      uList: list.texture,
-      uSums: atlas.texture,
-      uSurfaces: surfaceTable,
-      uSurfaceCount: grids.length,
-      uRound: round,
-      uBlock: BLOCK,
-      uArea: area,
-      uMinContrast: options.minContrast,
-      uMaxPatches: options.maxPatches,
-      uTargetPeakedness: options.targetPeakedness,
-    });
-    runPass(gl, topMerge, other, { uBlocks: blocks.texture, uList: list.texture, uRound: round });
-    [list, other] = [other, list];
-  }
-  done(other);
-  done(blocks);
+  const list = rankedCandidates(gl, { keys, totals, tiles, surfaceTable, area, rounds }, options, compile, pool);
 
   // 4. The patch table (compaction), and the summary row.
   const rows = options.maxPatches;
-  const table = acquire(PATCH_TABLE_WIDTH, rows + 1);
+  const table = pool.acquire(PATCH_TABLE_WIDTH, rows + 1);
   runPass(gl, compile(gpuPatchTable, 'bright table'), table, {
     uList: list.texture,
     uSums: atlas.texture,
@@ -145,7 +105,7 @@ export function selectBrightPatchesOnGpu(
   done(totals);
 
   // 5. The residual mask.
-  const mask = acquire(atlas.width, rowsPerMode);
+  const mask = pool.acquire(atlas.width, rowsPerMode);
   runPass(gl, compile(patchMaskPass, 'bright mask'), mask, { uKeys: keys.texture, uPatches: table.texture, uRows: rows });
   done(keys);
   gl.deleteTexture(surfaceTable);
@@ -163,4 +123,74 @@ export function selectBrightPatchesOnGpu(
       for (const t of [...used]) done(t);
     },
   };
+}
+
+/** Render targets taken for the selection and given back when done with. */
+interface PassPool {
+  acquire(width: number, height: number): FloatTarget;
+  done(target: FloatTarget): void;
+}
+
+/** Per surface five RGBA texels: its tile grid, texel size, extent, first global tile, ρ and frame (what the passes read). */
+function surfaceTableOf(gl: WebGL2RenderingContext, { grids }: TileSumAtlas, reflectance: readonly Rgb[]): WebGLTexture {
+  const surfaces = new Float32Array(grids.length * 5 * 4);
+  let first = 0;
+  grids.forEach((g, s) => {
+    const l = g.layout;
+    const rho = reflectance[l.index];
+    surfaces.set([g.column, g.tilesU, g.tilesV, g.tile, l.width, l.height, l.lengthU / l.width, l.lengthV / l.height, l.lengthU, l.lengthV, first, l.index, rho[0], rho[1], rho[2], l.uAxisIndex, ...l.origin, l.vAxisIndex], s * 20);
+    first += g.tilesU * g.tilesV;
+  });
+  return createDataTexture(gl, surfaces, 5, grids.length, 4);
+}
+
+/** Σ y and Σ score of all tiles: BLOCK × BLOCK sums, level after level, down to one texel. */
+function blockTotals(gl: WebGL2RenderingContext, keys: FloatTarget, compile: CompilePass, pool: PassPool): FloatTarget {
+  const sum = compile(blockSumPass, 'bright totals');
+  let level = keys;
+  do {
+    const next = pool.acquire(Math.ceil(level.width / BLOCK), Math.ceil(level.height / BLOCK));
+    runPass(gl, sum, next, { uMap: level.texture, uBlock: BLOCK });
+    if (level !== keys) pool.done(level);
+    level = next;
+  } while (level.width > 1 || level.height > 1);
+  return level;
+}
+
+/** The candidates in the CPU's order, KEYS_PER_ROUND per round: each block's next ones after the last key found, then a merge of all blocks. */
+function rankedCandidates(
+  gl: WebGL2RenderingContext,
+  input: { keys: FloatTarget; totals: FloatTarget; tiles: TileSumAtlas; surfaceTable: WebGLTexture; area: number; rounds: number },
+  options: BrightPatchOptions,
+  compile: CompilePass,
+  pool: PassPool,
+): FloatTarget {
+  const { keys, totals, tiles, surfaceTable, area, rounds } = input;
+  const pairs = KEYS_PER_ROUND / 2;
+  const blocks = pool.acquire(Math.ceil(keys.width / BLOCK), Math.ceil(keys.height / BLOCK) * pairs);
+  let list = pool.acquire(rounds * pairs, 1);
+  let other = pool.acquire(rounds * pairs, 1);
+  const topBlock = compile(gpuTopBlock, 'bright top-k');
+  const topMerge = compile(topMergePass, 'bright top-k');
+  for (let round = 0; round < rounds; round++) {
+    runPass(gl, topBlock, blocks, {
+      uKeys: keys.texture,
+      uTotals: totals.texture,
+      uList: list.texture,
+      uSums: tiles.atlas.texture,
+      uSurfaces: surfaceTable,
+      uSurfaceCount: tiles.grids.length,
+      uRound: round,
+      uBlock: BLOCK,
+      uArea: area,
+      uMinContrast: options.minContrast,
+      uMaxPatches: options.maxPatches,
+      uTargetPeakedness: options.targetPeakedness,
+    });
+    runPass(gl, topMerge, other, { uBlocks: blocks.texture, uList: list.texture, uRound: round });
+    [list, other] = [other, list];
+  }
+  pool.done(other);
+  pool.done(blocks);
+  return list;
 }
