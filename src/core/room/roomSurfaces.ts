@@ -55,8 +55,11 @@ export interface RoomSurface {
 const sub = (a: Point3, b: Point3): Point3 => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
 const dot = (a: Point3, b: Point3): number => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 
-/** Newell's normal of a planar polygon (its direction follows the winding; Sutherland, Sproull & Schumacker 1974). */
-function newellNormal(poly: readonly Point3[]): Point3 {
+/**
+ * Newell's normal of a planar polygon (its direction follows the winding; Sutherland, Sproull &
+ * Schumacker 1974): twice the polygon's area vector, so its length is twice the area.
+ */
+export function newellNormal(poly: readonly Point3[]): Point3 {
   const n: Point3 = [0, 0, 0];
   for (let i = 0; i < poly.length; i++) {
     const a = poly[i];
