@@ -19,6 +19,7 @@ import {
   custom,
   discriminatedUnion,
   enum as zEnum,
+  extend,
   gt,
   gte,
   int,
@@ -84,6 +85,7 @@ function classic<T extends ZodMiniType>(schema: T): T {
     refine: (fn: (v: unknown) => unknown, p?: Parameters<typeof refine>[1]) => check(refine(fn, p)),
     superRefine: (fn: Parameters<typeof superRefine>[0]) => check(superRefine(fn)),
     pick: (mask: Record<string, true>) => classic(pick(s as unknown as ZodMiniObject, mask)),
+    extend: (shape: Record<string, ZodMiniType>) => classic(extend(s as unknown as ZodMiniObject, shape)),
   });
   return schema;
 }

@@ -80,6 +80,17 @@ const cases: { name: string; build: (z: Z) => { safeParse(v: unknown): { success
     inputs: [{ c: { p: 1 } }, { c: {} }, { c: { p: 1 }, n: 1 }],
   },
   { name: 'pick', build: (z) => z.object({ a: z.number(), b: z.string() }).pick({ a: true }), inputs: [{ a: 1 }, { b: 'x' }] },
+  // parseLightingScene's version 3 extends version 2's object (the browser's bake chunk threw "extend is not a function" without it).
+  {
+    name: 'extend',
+    build: (z) => z.strictObject({ version: z.literal(2), a: z.number() }).extend({ version: z.literal(3), b: z.string().optional() }),
+    inputs: [
+      { version: 3, a: 1 },
+      { version: 2, a: 1 },
+      { version: 3, a: 1, b: 'x' },
+      { version: 3, a: 1, c: 1 },
+    ],
+  },
 ];
 
 describe('zod classic API on zod/mini (browser build) agrees with zod classic', () => {
