@@ -1,5 +1,6 @@
 import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 import type { FinishTexture } from './finishTextureKinds';
+import { mulberry32 } from '../../core/mulberry32';
 
 /**
  * A finish's surface pattern as a modulation m(u, v) of its reflectance, tiling a square of
@@ -25,18 +26,6 @@ interface KindRecipe {
   /** Per channel exponent on the raw field: > 1 darkens the dark parts more in that channel (wood grain grows warmer). */
   tint: Rgb;
   field: (x: number, y: number, noise: NoiseSet) => number;
-}
-
-/** mulberry32 (Tommy Ettinger's 32-bit generator): small, seeded, the same on every platform. */
-function mulberry32(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
 }
 
 /** Periodic value noise on a cx × cy lattice over the unit square (smoothstep between lattice values, wrapping), values in [0, 1]. */

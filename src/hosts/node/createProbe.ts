@@ -8,6 +8,7 @@ import { nearestSurface } from '../../engines/bake/nearestSurface';
 import { createObjectRayCaster, type ObjectRayCaster } from '../../engines/bake/objects/createObjectRayCaster';
 import { prepareObjects } from '../../engines/bake/objects/prepareObjects';
 import { scenePointSources, type LampSources } from '../../engines/bake/scenePointSources';
+import { mulberry32 } from '../../core/mulberry32';
 
 /** Rays of the indirect gather at a point with a normal (a 64 × 64 stratified grid). */
 export const PROBE_GATHER_RAYS = 4096;
@@ -32,18 +33,6 @@ export interface Probe {
 }
 
 const lux = (rgb: Rgb): number => LUMINANCE_WEIGHTS[0] * rgb[0] + LUMINANCE_WEIGHTS[1] * rgb[1] + LUMINANCE_WEIGHTS[2] * rgb[2];
-
-/** mulberry32 (Tommy Ettinger's 32-bit generator): small and identical everywhere. */
-function mulberry32(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 /**
  * `luxbox probe` after a bake (docs/scene-format.md, "Probe points"). Direct light is
