@@ -10,13 +10,13 @@
 import type { Glazing } from '../core/daylight/glazing';
 import { OPEN_OPENING } from '../core/daylight/glazing';
 import { groundLuminance, type Sky } from '../core/daylight/skies';
-import { InputError } from '../core/inputError';
 import type { Rgb, Vec3 } from '../core/model/lightingScene/lightingScene';
-import { normaliseRoom, type Room } from '../core/room/normaliseRoom';
+
 import type { RoomInput } from '../core/room/roomInput';
 import { roomSurfaces } from '../core/room/roomSurfaces';
 import { daylightDirectAt, daylightWindows, patchMeanDaylight, transmittedSkyOnWindow, transmittedSunOnWindow, type DaylightContext, type ReferenceSun } from './daylightDirect';
 import { ReferenceInputError } from './referenceInputError';
+import { referenceRoom } from './referenceRoom';
 import { roomIlluminanceAt, type RoomSample } from './roomIlluminanceAt';
 import { interreflectRoom } from './roomInterreflection';
 import { roomPatches } from './roomPatches';
@@ -51,13 +51,7 @@ export interface DaylightReferenceResult extends RoomReferenceResult {
 
 /** Solve the room's daylight; throws ReferenceInputError for a bad room or option. */
 export function solveDaylightReference(input: RoomInput, daylight: DaylightReferenceInput, options: DaylightReferenceOptions = {}): DaylightReferenceResult {
-  let room: Room;
-  try {
-    room = normaliseRoom(input);
-  } catch (e) {
-    if (e instanceof InputError) throw new ReferenceInputError(e.message);
-    throw e;
-  }
+  const room = referenceRoom(input);
   const patchSize = options.patchSize ?? 0.25;
   if (!(Number.isFinite(patchSize) && patchSize > 0)) throw new ReferenceInputError(`reference options: patchSize must be a finite length > 0 m, got ${patchSize}`);
   const tolerance = options.tolerance ?? 1e-6;

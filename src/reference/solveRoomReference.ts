@@ -1,16 +1,16 @@
 import type { LightingLuminaire, LightingScene, Vec3 } from '../core/model/lightingScene/lightingScene';
 import type { Photometry } from '../core/photometry/types';
 import { pointInsideRoom } from '../core/room/ceilingHeightAt';
-import { normaliseRoom, type Room } from '../core/room/normaliseRoom';
+import type { Room } from '../core/room/normaliseRoom';
 import type { RoomInput } from '../core/room/roomInput';
 import { roomSurfaces, type RoomSurface } from '../core/room/roomSurfaces';
-import { InputError } from '../core/inputError';
 import { referencePointSources, type PointSourceOptions, type ReferencePointSource } from './pointSources';
 import { patchMeanRoomDirect } from './roomDirect';
 import { roomPatches, type RoomPatch } from './roomPatches';
 import { interreflectRoom } from './roomInterreflection';
 import type { RoomSightlines } from './roomSightlines';
 import { ReferenceInputError } from './referenceInputError';
+import { referenceRoom } from './referenceRoom';
 import { LUMINANCE_WEIGHTS } from './solveBoxReference';
 import { referenceSolverOptions, type ReferenceSolverOptions } from './referenceSolverOptions';
 
@@ -82,13 +82,7 @@ function roomPointSources(room: Room, luminaires: readonly LightingLuminaire[], 
  * here by flux balances (tests/reference/roomReference.test.ts).
  */
 export function solveRoomReference(input: RoomInput, luminaires: readonly LightingLuminaire[], photometries: ReadonlyMap<string, Photometry> | Record<string, Photometry>, options: RoomReferenceOptions = {}): RoomReferenceResult {
-  let room: Room;
-  try {
-    room = normaliseRoom(input);
-  } catch (e) {
-    if (e instanceof InputError) throw new ReferenceInputError(e.message);
-    throw e;
-  }
+  const room = referenceRoom(input);
   if (!Array.isArray(luminaires)) throw new ReferenceInputError('luminaires: expected an array');
   const { patchSize, tolerance, maxSweeps } = referenceSolverOptions(options);
 
