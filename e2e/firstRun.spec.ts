@@ -87,6 +87,8 @@ test('a disabled control explains itself at the control and the tip closes with 
   // The tip host is in the guidance chunk (lazy, with the first-run card): until it has loaded, a
   // refused press explains itself in the status line instead (ActionButton). The card shows it has.
   await expect(page.getByTestId('first-run')).toBeVisible();
+  // The card and the tip host render apart: wait until the host listens (its effect has run), or the press below may still go to the status line.
+  await expect(page.locator('[data-testid="tip-host"][data-listening]')).toBeAttached();
   // Redo with nothing to redo: the bottom bar's reason at its button, no remedy, and not in the status line too.
   await page.getByTestId('tool-redo').click({ force: true });
   const tip = page.getByTestId('disabled-tip');

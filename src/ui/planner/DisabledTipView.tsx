@@ -96,12 +96,14 @@ export function TipHost({ store, mode, explain }: { store: ConfiguratorStore; mo
       setPressed({ ...(e as CustomEvent<RefusedDetail>).detail, target: e.target as Element, config: store.getState().config, seq: ++seq });
     };
     layer?.addEventListener(REFUSED_EVENT, show);
+    // Says when refused presses reach the tip (tests wait for it: the host listens only after its effect ran).
+    ref.current?.setAttribute('data-listening', '');
     return () => layer?.removeEventListener(REFUSED_EVENT, show);
   }, [store]);
   const tip = pressed && pressed.config === config && mode === '2d' ? pressed : null;
   return (
     <>
-      <span ref={ref} hidden />
+      <span ref={ref} hidden data-testid="tip-host" />
       {tip && <DisabledTip key={tip.seq} tip={tip} onClose={() => setPressed(null)} store={store} explain={explain} />}
     </>
   );
