@@ -164,17 +164,7 @@ function SystemLevelControls({ system, catalog, view, viewport, gate }: { system
   );
 }
 
-/** Figures 7–10: plus buttons above rails, distribution options, type switches below modules. */
-function ModuleLevelControls({
-  system,
-  catalog,
-  view,
-  viewport,
-  selection,
-  gate,
-  onSelect,
-  onOpenOptions,
-}: {
+interface ModuleLevelProps {
   system: LightSystem;
   catalog: Catalog;
   view: PlanView;
@@ -183,12 +173,26 @@ function ModuleLevelControls({
   gate: ActionGate;
   onSelect: (s: Selection) => void;
   onOpenOptions: () => void;
-}) {
+}
+
+/** Figures 7–10: plus buttons above rails, distribution options, type switches below modules. */
+function ModuleLevelControls(props: ModuleLevelProps) {
   const { t, language } = useI18n();
-  const rails = railPlacements(system, catalog);
-  const modules = modulePlacements(system, catalog);
+  return (
+    <>
+      {railControls(props, t, language)}
+      {moduleSwitches(props, t, language)}
+    </>
+  );
+}
+
+type Words = ReturnType<typeof useI18n>['t'];
+type Language = ReturnType<typeof useI18n>['language'];
+
+/** Above each rail: its plus button, and the distribution options when the rail (not a module) is selected. */
+function railControls({ system, catalog, view, viewport, selection, gate, onSelect }: ModuleLevelProps, t: Words, language: Language): ReactNode[] {
   const out: ReactNode[] = [];
-  rails.forEach((r, i) => {
+  railPlacements(system, catalog).forEach((r, i) => {
     const rail = system.rails[i];
     const nn = upNormal(view, r.start, r.end);
     const mid = worldToScreen(view, { x: (r.start[0] + r.end[0]) / 2, z: (r.start[1] + r.end[1]) / 2 });
@@ -206,42 +210,45 @@ function ModuleLevelControls({
         </Positioned>,
       );
     }
-    if (selection.railId === rail.id && !selection.moduleId) {
-      const distPos = { sx: mid.sx + nn.nx * FAR_PX, sy: mid.sy + nn.ny * FAR_PX };
-      if (visible(distPos, viewport)) {
-        out.push(
-          <Positioned key={`dist-${rail.id}`} at={distPos} className="chip-row" testId={`distribution-${rail.id}`}>
-            {/* The pictures read along the rail: its start on the right where the rail runs right to left on screen. */}
-            <LazyDistributionButtons
-              railId={rail.id}
-              current={isFreeRail(rail) ? null : rail.distribution}
-              gate={gate}
-              compact
-              flipped={worldToScreen(view, { x: r.end[0], z: r.end[1] }).sx < worldToScreen(view, { x: r.start[0], z: r.start[1] }).sx - 1}
-            />
-          </Positioned>,
-        );
-      }
+    const distPos = { sx: mid.sx + nn.nx * FAR_PX, sy: mid.sy + nn.ny * FAR_PX };
+    if (selection.railId === rail.id && !selection.moduleId && visible(distPos, viewport)) {
+      out.push(
+        <Positioned key={`dist-${rail.id}`} at={distPos} className="chip-row" testId={`distribution-${rail.id}`}>
+          {/* The pictures read along the rail: its start on the right where the rail runs right to left on screen. */}
+          <LazyDistributionButtons
+            railId={rail.id}
+            current={isFreeRail(rail) ? null : rail.distribution}
+            gate={gate}
+            compact
+            flipped={worldToScreen(view, { x: r.end[0], z: r.end[1] }).sx < worldToScreen(view, { x: r.start[0], z: r.start[1] }).sx - 1}
+          />
+        </Positioned>,
+      );
     }
   });
-  for (const m of modules) {
+  return out;
+}
+
+/** Below each module: its type switch, which selects it and opens its options. */
+function moduleSwitches({ system, catalog, view, viewport, selection, onSelect, onOpenOptions }: ModuleLevelProps, t: Words, language: Language): ReactNode[] {
+  const rails = railPlacements(system, catalog);
+  const out: ReactNode[] = [];
+  for (const m of modulePlacements(system, catalog)) {
     const rail = system.rails.find((r) => r.id === m.railId);
     const module = rail?.modules.find((x) => x.id === m.moduleId);
-    const railIndex = system.rails.findIndex((r) => r.id === m.railId);
-    const r = rails[railIndex];
+    const r = rails[system.rails.findIndex((x) => x.id === m.railId)];
     if (!module || !r) continue;
     const nn = upNormal(view, r.start, r.end);
     const c = worldToScreen(view, { x: m.centre[0], z: m.centre[1] });
     const pos = { sx: c.sx - nn.nx * NEAR_PX, sy: c.sy - nn.ny * NEAR_PX };
     if (!visible(pos, viewport)) continue;
-    const type = catalog.moduleTypes.find((m) => m.id === module.type);
+    const type = catalog.moduleTypes.find((x) => x.id === module.type);
     const name = type ? localName(type, language) : module.type;
-    const selected = selection.moduleId === module.id;
     out.push(
       <Positioned key={`type-${module.id}`} at={pos} className="type-switch" testId={`module-${module.id}`}>
         <ActionButton
           label={t('planner.moduleSettings', { name, cct: String(module.cct) })}
-          pressed={selected}
+          pressed={selection.moduleId === module.id}
           disabledReason={null}
           onPress={() => {
             onSelect({ kind: 'module', id: module.id });
@@ -253,7 +260,7 @@ function ModuleLevelControls({
       </Positioned>,
     );
   }
-  return <>{out}</>;
+  return out;
 }
 
 /**

@@ -90,140 +90,171 @@ const pageFrame = (callback: () => void): (() => void) => {
   return () => clearTimeout(id);
 };
 
-export function createScenePlayer(store: ConfiguratorStore, options: ScenePlayerOptions = {}): ScenePlayer {
-  const frame = options.frame ?? pageFrame;
-  const now = options.now ?? (() => performance.now());
-  const listeners = new Set<() => void>();
-  let state: ScenePlayerState = { current: null, fading: null };
-  let run: { start: number; yFrom: number; yTo: number; cancelFrame: () => void; resolve: (r: RecallResult) => void; lights: ReadonlyMap<string, ModuleLight> } | null = null;
-  const set = (next: ScenePlayerState) => {
-    state = next;
-    for (const l of [...listeners]) l();
-  };
-  const scenes = () => store.getState().config.lightScenes ?? [];
-  const feed = () => options.feed?.() ?? null;
+type FadeRun = { start: number; yFrom: number; yTo: number; cancelFrame: () => void; resolve: (r: RecallResult) => void; lights: ReadonlyMap<string, ModuleLight> };
 
-  const showFade = (f: SceneFadeState) => {
-    const bake = feed();
-    if (!bake || !run) return;
-    const lights = run.lights;
-    bake.service.setFade({ from: (scene) => fromScene(scene, bake.latest()?.ids ?? [], lights), e: f.e });
-  };
+/** What the player's parts share: the store, the clock, the listeners, the state and the running fade. */
+interface PlayerCore {
+  readonly store: ConfiguratorStore;
+  readonly frame: (callback: () => void) => () => void;
+  readonly now: () => number;
+  readonly feed: () => BakeFeed | null;
+  readonly listeners: Set<() => void>;
+  state: ScenePlayerState;
+  run: FadeRun | null;
+}
 
-  const end = () => {
-    if (!run) return;
-    const r = run;
-    run = null;
-    r.cancelFrame();
-    feed()?.service.setFade(null);
-    set({ ...state, fading: null });
-    r.resolve({ ok: true });
-  };
+const setState = (core: PlayerCore, next: ScenePlayerState) => {
+  core.state = next;
+  for (const l of [...core.listeners]) l();
+};
+const scenesOf = (core: PlayerCore) => core.store.getState().config.lightScenes ?? [];
 
-  /** The running fade's time fraction and eased fraction at this instant. */
-  const position = (f: SceneFadeState, r: NonNullable<typeof run>) => {
-    const t = f.seconds > 0 ? Math.min(1, (now() - r.start) / (f.seconds * 1000)) : 1;
-    return { t, e: fadeFraction(t, r.yFrom, r.yTo) };
-  };
+/** The fade on the 3D view: the bake service relights from the two scenes' weights (no bake). */
+function showFade(core: PlayerCore, f: SceneFadeState) {
+  const bake = core.feed();
+  if (!bake || !core.run) return;
+  const lights = core.run.lights;
+  bake.service.setFade({ from: (scene) => fromScene(scene, bake.latest()?.ids ?? [], lights), e: f.e });
+}
 
-  /** The look shown now, as levels (the plan) and lights (the 3D view): the running fade's mix at this instant, else the configuration's. */
-  const shownLook = (config: Configuration, catalog: Catalog) => {
-    const f = state.fading;
-    if (!run || !f) return { levels: outputLevels(config), lights: lightsOf(config, catalog), fading: false };
-    const { e } = position(f, run);
-    return { levels: mixLevels(f.fromLevels, outputLevels(f.to), e), lights: mixLights(run.lights, lightsOf(f.to, catalog), e), fading: true };
-  };
+/** Ends the running fade at its end state (the configuration already is that state). */
+function endFade(core: PlayerCore) {
+  if (!core.run) return;
+  const r = core.run;
+  core.run = null;
+  r.cancelFrame();
+  core.feed()?.service.setFade(null);
+  setState(core, { ...core.state, fading: null });
+  r.resolve({ ok: true });
+}
 
-  const tick = () => {
-    if (!run || !state.fading) return;
-    const f = state.fading;
-    const { t, e } = position(f, run);
-    if (t >= 1) return end();
-    const next = { ...f, t, e };
-    set({ ...state, fading: next });
-    showFade(next);
-    run.cancelFrame = frame(tick);
-  };
+/** The running fade's time fraction and eased fraction at this instant. */
+function position(core: PlayerCore, f: SceneFadeState, r: FadeRun) {
+  const t = f.seconds > 0 ? Math.min(1, (core.now() - r.start) / (f.seconds * 1000)) : 1;
+  return { t, e: fadeFraction(t, r.yFrom, r.yTo) };
+}
 
-  // Any other change of the configuration (an edit, undo) during a fade ends it: the plan and the view show the configuration.
-  const unsubscribe = store.subscribe((s, prev) => {
-    if (s.config !== prev.config && state.fading && s.config !== state.fading.to) end();
+/** The look shown now, as levels (the plan) and lights (the 3D view): the running fade's mix at this instant, else the configuration's. */
+function shownLook(core: PlayerCore, config: Configuration, catalog: Catalog) {
+  const f = core.state.fading;
+  if (!core.run || !f) return { levels: outputLevels(config), lights: lightsOf(config, catalog), fading: false };
+  const { e } = position(core, f, core.run);
+  return { levels: mixLevels(f.fromLevels, outputLevels(f.to), e), lights: mixLights(core.run.lights, lightsOf(f.to, catalog), e), fading: true };
+}
+
+function tick(core: PlayerCore) {
+  const { run, state } = core;
+  if (!run || !state.fading) return;
+  const { t, e } = position(core, state.fading, run);
+  if (t >= 1) return endFade(core);
+  const next = { ...state.fading, t, e };
+  setState(core, { ...state, fading: next });
+  showFade(core, next);
+  run.cancelFrame = core.frame(() => tick(core));
+}
+
+/** Recalls a scene (one undoable action) and runs its fade from the look on screen; see ScenePlayer.recall. */
+function recall(core: PlayerCore, sceneId: string, opts: { fade?: number }): Promise<RecallResult> {
+  const { store } = core;
+  // The fade weights each module's light by its colour: a filter's needs the spectra (docs/colour-filters.md, "Two files").
+  if (needsColourFilterSpectra(configurationFilterIds(store.getState().config))) {
+    return loadColourFilterSpectra().then(
+      () => recall(core, sceneId, opts),
+      (e: Error) => ({ ok: false, reason: `the colour filters' spectra could not be loaded (${e.message})` }),
+    );
+  }
+  const { catalog, config: from } = store.getState();
+  // Taken before the running fade ends: a recall during a fade starts from the mix on screen.
+  const shown = shownLook(core, from, catalog);
+  endFade(core);
+  const scene = scenesOf(core).find((s) => s.id === sceneId);
+  const result = store.getState().dispatch('recallScene', { sceneId });
+  if (!result.ok) return Promise.resolve({ ok: false, reason: result.reason });
+  const to = store.getState().config;
+  const seconds = opts.fade ?? scene?.fade ?? 0;
+  if (!(seconds > 0) || (to === from && !shown.fading)) {
+    setState(core, { current: sceneId, fading: null });
+    return Promise.resolve({ ok: true });
+  }
+  return new Promise<RecallResult>((resolve) => {
+    const run: FadeRun = { start: core.now(), yFrom: levelsOutput(shown.levels, to, catalog), yTo: levelsOutput(outputLevels(to), to, catalog), cancelFrame: () => undefined, resolve, lights: shown.lights };
+    core.run = run;
+    const fading: SceneFadeState = { sceneId, fromLevels: shown.levels, to, t: 0, e: 0, seconds };
+    setState(core, { current: sceneId, fading });
+    showFade(core, fading);
+    run.cancelFrame = core.frame(() => tick(core));
   });
+}
 
-  const player: ScenePlayer = {
-    getState: () => state,
-    subscribe(listener) {
-      listeners.add(listener);
-      return () => listeners.delete(listener);
-    },
-    recall(sceneId, opts = {}) {
-      // The fade weights each module's light by its colour: a filter's needs the spectra (docs/colour-filters.md, "Two files").
-      if (needsColourFilterSpectra(configurationFilterIds(store.getState().config))) {
-        return loadColourFilterSpectra().then(
-          () => player.recall(sceneId, opts),
-          (e: Error) => ({ ok: false, reason: `the colour filters' spectra could not be loaded (${e.message})` }),
-        );
-      }
-      const { catalog, config: from } = store.getState();
-      // Taken before the running fade ends: a recall during a fade starts from the mix on screen.
-      const shown = shownLook(from, catalog);
-      end();
-      const scene = scenes().find((s) => s.id === sceneId);
-      const result = store.getState().dispatch('recallScene', { sceneId });
-      if (!result.ok) return Promise.resolve({ ok: false, reason: result.reason });
-      const to = store.getState().config;
-      const seconds = opts.fade ?? scene?.fade ?? 0;
-      if (!(seconds > 0) || (to === from && !shown.fading)) {
-        set({ current: sceneId, fading: null });
-        return Promise.resolve({ ok: true });
-      }
-      return new Promise<RecallResult>((resolve) => {
-        run = { start: now(), yFrom: levelsOutput(shown.levels, to, catalog), yTo: levelsOutput(outputLevels(to), to, catalog), cancelFrame: () => undefined, resolve, lights: shown.lights };
-        const fading: SceneFadeState = { sceneId, fromLevels: shown.levels, to, t: 0, e: 0, seconds };
-        set({ current: sceneId, fading });
-        showFade(fading);
-        run.cancelFrame = frame(tick);
-      });
-    },
+/** GO / BACK through the list in order, stopping at its ends as a console does (no wrap round). */
+function transport(core: PlayerCore, recallScene: (sceneId: string) => Promise<RecallResult>): Pick<ScenePlayer, 'next' | 'previous' | 'go' | 'back' | 'stop'> {
+  const indexOfCurrent = (list: readonly LightScene[]) => list.findIndex((s) => s.id === core.state.current);
+  const t: Pick<ScenePlayer, 'next' | 'previous' | 'go' | 'back' | 'stop'> = {
     next() {
-      const list = scenes();
-      const i = list.findIndex((s) => s.id === state.current);
-      return list[i + 1] ?? null;
+      const list = scenesOf(core);
+      return list[indexOfCurrent(list) + 1] ?? null;
     },
     previous() {
-      const list = scenes();
-      const i = list.findIndex((s) => s.id === state.current);
+      const list = scenesOf(core);
+      const i = indexOfCurrent(list);
       return i > 0 ? list[i - 1] : null;
     },
     go() {
-      const s = player.next();
-      const code = player.stop('go');
-      return s ? player.recall(s.id) : Promise.resolve({ ok: false, reason: code === 'noScenes' ? 'no light scenes' : 'no next scene', code: code ?? 'lastScene' });
+      const s = t.next();
+      const code = t.stop('go');
+      return s ? recallScene(s.id) : Promise.resolve({ ok: false, reason: code === 'noScenes' ? 'no light scenes' : 'no next scene', code: code ?? 'lastScene' });
     },
     back() {
-      const s = player.previous();
-      const code = player.stop('back');
-      return s ? player.recall(s.id) : Promise.resolve({ ok: false, reason: code === 'noScenes' ? 'no light scenes' : 'no previous scene', code: code ?? 'firstScene' });
+      const s = t.previous();
+      const code = t.stop('back');
+      return s ? recallScene(s.id) : Promise.resolve({ ok: false, reason: code === 'noScenes' ? 'no light scenes' : 'no previous scene', code: code ?? 'firstScene' });
     },
     stop(direction) {
-      const list = scenes();
+      const list = scenesOf(core);
       if (list.length === 0) return 'noScenes';
-      if (direction === 'go') return player.next() ? null : 'lastScene';
-      if (player.previous()) return null;
-      return list.some((s) => s.id === state.current) ? 'firstScene' : 'nothingRecalled';
-    },
-    levels() {
-      const f = state.fading;
-      return f ? mixLevels(f.fromLevels, outputLevels(f.to), f.e) : null;
-    },
-    finish: end,
-    dispose() {
-      end();
-      unsubscribe();
-      listeners.clear();
+      if (direction === 'go') return t.next() ? null : 'lastScene';
+      if (t.previous()) return null;
+      return list.some((s) => s.id === core.state.current) ? 'firstScene' : 'nothingRecalled';
     },
   };
-  return player;
+  return t;
+}
+
+export function createScenePlayer(store: ConfiguratorStore, options: ScenePlayerOptions = {}): ScenePlayer {
+  const core: PlayerCore = {
+    store,
+    frame: options.frame ?? pageFrame,
+    now: options.now ?? (() => performance.now()),
+    feed: () => options.feed?.() ?? null,
+    listeners: new Set(),
+    state: { current: null, fading: null },
+    run: null,
+  };
+  // Any other change of the configuration (an edit, undo) during a fade ends it: the plan and the view show the configuration.
+  const unsubscribe = store.subscribe((s, prev) => {
+    const fading = core.state.fading;
+    if (s.config !== prev.config && fading && s.config !== fading.to) endFade(core);
+  });
+  const recallScene = (sceneId: string, opts: { fade?: number } = {}) => recall(core, sceneId, opts);
+  return {
+    getState: () => core.state,
+    subscribe(listener) {
+      core.listeners.add(listener);
+      return () => core.listeners.delete(listener);
+    },
+    recall: recallScene,
+    ...transport(core, recallScene),
+    levels() {
+      const f = core.state.fading;
+      return f ? mixLevels(f.fromLevels, outputLevels(f.to), f.e) : null;
+    },
+    finish: () => endFade(core),
+    dispose() {
+      endFade(core);
+      unsubscribe();
+      core.listeners.clear();
+    },
+  };
 }
 
 /**

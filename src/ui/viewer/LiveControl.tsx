@@ -1,14 +1,14 @@
-import { useEffect, useMemo, useRef, useState } from 'react';
+import { useMemo, useState } from 'react';
 import { useStore } from 'zustand';
 import { findModuleType } from '../../core/model/catalogSchema/catalogSchema';
 import { isTunable, modulesInOrder } from '../../core/model/modules/dmxPatch';
 import { type DmxPatch } from '../../core/model/configuration/configuration';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
-import { levelsFromFrames, sameLevels, type LiveLevel } from '../../engines/view/liveLevels';
+import type { LiveLevel } from '../../engines/view/liveLevels';
 import { AutoPatchForm } from './AutoPatchForm';
-import { BRIDGE_RETRY_S, createBridgeClient, type BridgeState } from './createBridgeClient';
-import { createFrameLatch, type FrameLatch } from './createFrameLatch';
+import { BRIDGE_RETRY_S, type BridgeState } from './createBridgeClient';
 import { PatchRow } from './PatchRow';
+import { useLiveBridge } from './useLiveBridge';
 import type { ViewerStatus } from './viewerStatus';
 import { useI18n } from '../i18n/useI18n';
 import type { Translate } from '../i18n/messageTypes';
@@ -55,59 +55,9 @@ export function LiveControl({ store, onLevels, onStatus }: LiveControlProps) {
   const config = useStore(store, (s) => s.config);
   const catalog = useStore(store, (s) => s.catalog);
   const [on, setOn] = useState(false);
-  const [portText, setPortText] = useState(String(DEFAULT_BRIDGE_PORT));
   const [port, setPort] = useState(DEFAULT_BRIDGE_PORT);
-  const [bridge, setBridge] = useState<BridgeState>({ kind: 'connecting' });
-  const [levels, setLevels] = useState<ReadonlyMap<string, LiveLevel>>(new Map());
-  const latch = useRef<FrameLatch | null>(null);
-  // The latest props and configuration for callbacks that outlive a render (the latch, the socket).
-  const latest = useRef({ config, onLevels, onStatus });
-  useEffect(() => {
-    latest.current = { config, onLevels, onStatus };
-  });
+  const { bridge, levels } = useLiveBridge({ on, port, config, catalog, onLevels, onStatus });
   const url = `ws://127.0.0.1:${port}`;
-
-  useEffect(() => {
-    if (!on) return;
-    let state: BridgeState = { kind: 'connecting' };
-    let applied = 0;
-    let last: ReadonlyMap<string, LiveLevel> | null = null;
-    const report = () => latest.current.onStatus({ state: state.kind, received: l.counts.received, applied });
-    const l = createFrameLatch((frames) => {
-      const next = levelsFromFrames(latest.current.config, catalog, frames);
-      if (!sameLevels(last, next)) {
-        last = next;
-        applied++;
-        latest.current.onLevels(next);
-        setLevels(next);
-      }
-      report();
-    });
-    latch.current = l;
-    const client = createBridgeClient({
-      url: `ws://127.0.0.1:${port}`,
-      onState(s) {
-        state = s;
-        setBridge(s);
-        report();
-      },
-      onFrame: (universe, channels) => l.put(universe, channels),
-    });
-    return () => {
-      client.close();
-      l.dispose();
-      latch.current = null;
-      // Off (or another port): the configuration's own dimming again.
-      latest.current.onLevels(null);
-      latest.current.onStatus(null);
-      setLevels(new Map());
-    };
-  }, [on, port, catalog]);
-
-  // A patch edit (or any change) re-reads the frames already held: the view follows at once.
-  useEffect(() => {
-    latch.current?.reapply();
-  }, [config]);
 
   const rows = useMemo(
     () =>
@@ -121,12 +71,6 @@ export function LiveControl({ store, onLevels, onStatus }: LiveControlProps) {
     const r = store.getState().dispatch(name, params);
     return r.ok ? null : r.reason;
   };
-  const commitPort = () => {
-    const p = Number(portText);
-    if (Number.isInteger(p) && p >= 1 && p <= 65535) setPort(p);
-    else setPortText(String(port));
-  };
-
   return (
     <div className="viewer3d-live" data-testid="live-control">
       <label className="viewer3d-field viewer3d-inline">
@@ -134,22 +78,7 @@ export function LiveControl({ store, onLevels, onStatus }: LiveControlProps) {
       </label>
       {on && (
         <>
-          <label className="viewer3d-field viewer3d-inline">
-            {t('live.bridgePort')}
-            <input
-              type="number"
-              min={1}
-              max={65535}
-              step={1}
-              inputMode="numeric"
-              value={portText}
-              onChange={(e) => setPortText(e.target.value)}
-              onBlur={commitPort}
-              onKeyDown={(e) => e.key === 'Enter' && commitPort()}
-              aria-label={t('live.bridgePortLabel')}
-              data-testid="live-port"
-            />
-          </label>
+          <BridgePortField port={port} onPort={setPort} />
           <p className={`viewer3d-live-state viewer3d-live-${bridge.kind}`} role="status" data-testid="live-state" data-state={bridge.kind}>
             {describe(t, bridge, url)}
           </p>
@@ -167,5 +96,34 @@ export function LiveControl({ store, onLevels, onStatus }: LiveControlProps) {
         </>
       )}
     </div>
+  );
+}
+
+/** The bridge's port, typed; anything but a port number 1–65535 snaps back to the one in use. */
+function BridgePortField({ port, onPort }: { port: number; onPort(port: number): void }) {
+  const { t } = useI18n();
+  const [portText, setPortText] = useState(String(port));
+  const commitPort = () => {
+    const p = Number(portText);
+    if (Number.isInteger(p) && p >= 1 && p <= 65535) onPort(p);
+    else setPortText(String(port));
+  };
+  return (
+    <label className="viewer3d-field viewer3d-inline">
+      {t('live.bridgePort')}
+      <input
+        type="number"
+        min={1}
+        max={65535}
+        step={1}
+        inputMode="numeric"
+        value={portText}
+        onChange={(e) => setPortText(e.target.value)}
+        onBlur={commitPort}
+        onKeyDown={(e) => e.key === 'Enter' && commitPort()}
+        aria-label={t('live.bridgePortLabel')}
+        data-testid="live-port"
+      />
+    </label>
   );
 }

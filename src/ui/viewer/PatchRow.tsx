@@ -54,54 +54,11 @@ export function PatchRow({ id, typeName, tunable, patch, live, onPatch }: PatchR
         </span>
       </div>
       <div className="viewer3d-patch-fields">
-        <select
-          aria-label={t('live.modeOf', { id })}
-          value={patch ? String(patch.resolution) : 'off'}
-          onChange={(e) => {
-            const v = e.target.value;
-            if (v === 'off') return attempt(null);
-            const resolution = v === '16' ? 16 : 8;
-            attempt(patch ? { ...patch, resolution } : { universe: 1, address: 1, resolution, cct: tunable });
-          }}
-          data-testid={`patch-mode-${id}`}
-        >
-          <option value="off">{t('live.notPatched')}</option>
-          <option value="8">{t('live.eightBit')}</option>
-          <option value="16">{t('live.sixteenBit')}</option>
-        </select>
+        <PatchModeSelect id={id} patch={patch} tunable={tunable} onPatch={attempt} />
         {patch && (
           <>
-            <label className="viewer3d-patch-num">
-              {t('live.universeShort')}
-              <input
-                type="number"
-                min={1}
-                step={1}
-                inputMode="numeric"
-                value={universe}
-                aria-label={t('live.universeOf', { id })}
-                onChange={(e) => edit('universe', e.target.value)}
-                onBlur={commitNumbers}
-                onKeyDown={onKey}
-                data-testid={`patch-universe-${id}`}
-              />
-            </label>
-            <label className="viewer3d-patch-num">
-              @
-              <input
-                type="number"
-                min={1}
-                max={512}
-                step={1}
-                inputMode="numeric"
-                value={address}
-                aria-label={t('live.addressOf', { id })}
-                onChange={(e) => edit('address', e.target.value)}
-                onBlur={commitNumbers}
-                onKeyDown={onKey}
-                data-testid={`patch-address-${id}`}
-              />
-            </label>
+            <PatchNumberField label={t('live.universeShort')} ariaLabel={t('live.universeOf', { id })} value={universe} onChange={(v) => edit('universe', v)} onCommit={commitNumbers} onKey={onKey} testId={`patch-universe-${id}`} />
+            <PatchNumberField label="@" max={512} ariaLabel={t('live.addressOf', { id })} value={address} onChange={(v) => edit('address', v)} onCommit={commitNumbers} onKey={onKey} testId={`patch-address-${id}`} />
             {tunable && (
               <label className="viewer3d-patch-cct">
                 <input type="checkbox" checked={patch.cct} onChange={(e) => attempt({ ...patch, cct: e.target.checked })} aria-label={t('live.cctOf', { id })} /> {t('live.cct')}
@@ -116,5 +73,48 @@ export function PatchRow({ id, typeName, tunable, patch, live, onPatch }: PatchR
         </p>
       )}
     </li>
+  );
+}
+
+/** 8-bit, 16-bit or not patched; patching a module starts at universe 1, address 1 (with CCT where it is tunable). */
+function PatchModeSelect({ id, patch, tunable, onPatch }: { id: string; patch: DmxPatch | undefined; tunable: boolean; onPatch(next: DmxPatch | null): void }) {
+  const { t } = useI18n();
+  return (
+    <select
+      aria-label={t('live.modeOf', { id })}
+      value={patch ? String(patch.resolution) : 'off'}
+      onChange={(e) => {
+        const v = e.target.value;
+        if (v === 'off') return onPatch(null);
+        const resolution = v === '16' ? 16 : 8;
+        onPatch(patch ? { ...patch, resolution } : { universe: 1, address: 1, resolution, cct: tunable });
+      }}
+      data-testid={`patch-mode-${id}`}
+    >
+      <option value="off">{t('live.notPatched')}</option>
+      <option value="8">{t('live.eightBit')}</option>
+      <option value="16">{t('live.sixteenBit')}</option>
+    </select>
+  );
+}
+
+interface PatchNumberFieldProps {
+  label: string;
+  ariaLabel: string;
+  value: string;
+  max?: number;
+  testId: string;
+  onChange(value: string): void;
+  onCommit(): void;
+  onKey(e: React.KeyboardEvent<HTMLInputElement>): void;
+}
+
+/** A universe or address number: edited as a draft, committed on Enter or blur. */
+function PatchNumberField({ label, ariaLabel, value, max, testId, onChange, onCommit, onKey }: PatchNumberFieldProps) {
+  return (
+    <label className="viewer3d-patch-num">
+      {label}
+      <input type="number" min={1} max={max} step={1} inputMode="numeric" value={value} aria-label={ariaLabel} onChange={(e) => onChange(e.target.value)} onBlur={onCommit} onKeyDown={onKey} data-testid={testId} />
+    </label>
   );
 }
