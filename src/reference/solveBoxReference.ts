@@ -145,11 +145,7 @@ function maxCellAngle(sources: readonly ReferencePointSource[]): number {
  * quadrature). Shares no code with src/engines/bake or the shaders, by design.
  */
 export function solveBoxReference(scene: LightingScene, photometries: ReadonlyMap<string, Photometry> | Record<string, Photometry>, options: ReferenceOptions = {}): ReferenceResult {
-  const extent = validateRoom(scene);
-  if (typeof scene.room.reflectance !== 'object' || scene.room.reflectance === null) throw new ReferenceInputError('room.reflectance: expected an object with one entry per surface');
-  const reflectance = {} as Record<SurfaceName, Rgb>;
-  for (const name of SURFACE_NAMES) reflectance[name] = toRgb(scene.room.reflectance[name], `room.reflectance.${name}`);
-  if (!Array.isArray(scene.luminaires)) throw new ReferenceInputError('luminaires: expected an array');
+  const { extent, reflectance, tolerance, maxSweeps, relTol } = checkedBoxInput(scene, options);
   const sources = referencePointSources(scene, photometries, options);
   const grid = makePatchGrid(extent, choosePatchSize(extent, options));
   const faceN = BOX_FACES.map((f) => grid.count[f.uAxis] * grid.count[f.vAxis]);
@@ -157,39 +153,9 @@ export function solveBoxReference(scene: LightingScene, photometries: ReadonlyMa
   if (patches > MAX_PATCHES) {
     throw new ReferenceInputError(`reference options: ${patches} patches exceed the limit of ${MAX_PATCHES}; choose a larger patchSize`);
   }
-  const tolerance = options.tolerance ?? 1e-6;
-  const maxSweeps = options.maxSweeps ?? 20_000;
-  if (!(tolerance > 0 && tolerance < 1)) throw new ReferenceInputError(`reference options: tolerance must be in (0, 1), got ${tolerance}`);
-  if (!Number.isInteger(maxSweeps) || maxSweeps < 1) throw new ReferenceInputError(`reference options: maxSweeps must be an integer ≥ 1, got ${maxSweeps}`);
-  const relTol = options.directRelTol ?? 1e-3;
-  if (!(relTol > 0 && relTol < 1)) throw new ReferenceInputError(`reference options: directRelTol must be in (0, 1), got ${relTol}`);
 
-  // Direct light: patch means. Quadrature errors are judged against the room's
-  // mean direct illuminance Φ/S, so dark patches are not refined for nothing.
   let t0 = performance.now();
-  const area = 2 * (extent[0] * extent[1] + extent[0] * extent[2] + extent[1] * extent[2]);
-  const meanDirect = sources.reduce((sum, s) => sum + gridFlux(s.photometry) * Math.max(...s.scale), 0) / area;
-  const quadrature: PatchAverageOptions = {
-    relTol,
-    absTol: 1e-4 * meanDirect,
-    maxDepth: 6,
-    maxCellAngle: maxCellAngle(sources),
-  };
-  const direct = BOX_FACES.map((f, fi) => {
-    const out = new Float64Array(3 * faceN[fi]);
-    if (sources.length === 0) return out;
-    const nu = grid.count[f.uAxis];
-    const hu = grid.size[f.uAxis];
-    const hv = grid.size[f.vAxis];
-    const rect = { axis: f.axis, plane: f.side === 0 ? 0 : extent[f.axis], uAxis: f.uAxis, vAxis: f.vAxis, normal: f.normal };
-    for (let i = 0; i < faceN[fi]; i++) {
-      const iu = i % nu;
-      const iv = (i - iu) / nu;
-      const e = patchMeanDirect(sources, rect, iu * hu, (iu + 1) * hu, iv * hv, (iv + 1) * hv, quadrature);
-      out.set(e, 3 * i);
-    }
-    return out;
-  });
+  const direct = boxDirect(sources, extent, grid, faceN, relTol);
   const directMs = performance.now() - t0;
 
   // Indirect light.
@@ -213,10 +179,61 @@ export function solveBoxReference(scene: LightingScene, photometries: ReadonlyMa
     ));
   }
   const solveMs = performance.now() - t0;
+  const surfaces = boxSurfaces(extent, grid, reflectance, direct, indirect);
+  return { scene, sources, grid, surfaces, patches, sweeps, residual, timingsMs: { direct: directMs, formFactors: formFactorMs, solve: solveMs } };
+}
 
+/** The room, its reflectances and the solver options, each checked with a message naming the field. */
+function checkedBoxInput(scene: LightingScene, options: ReferenceOptions) {
+  const extent = validateRoom(scene);
+  if (typeof scene.room.reflectance !== 'object' || scene.room.reflectance === null) throw new ReferenceInputError('room.reflectance: expected an object with one entry per surface');
+  const reflectance = {} as Record<SurfaceName, Rgb>;
+  for (const name of SURFACE_NAMES) reflectance[name] = toRgb(scene.room.reflectance[name], `room.reflectance.${name}`);
+  if (!Array.isArray(scene.luminaires)) throw new ReferenceInputError('luminaires: expected an array');
+  const tolerance = options.tolerance ?? 1e-6;
+  const maxSweeps = options.maxSweeps ?? 20_000;
+  if (!(tolerance > 0 && tolerance < 1)) throw new ReferenceInputError(`reference options: tolerance must be in (0, 1), got ${tolerance}`);
+  if (!Number.isInteger(maxSweeps) || maxSweeps < 1) throw new ReferenceInputError(`reference options: maxSweeps must be an integer ≥ 1, got ${maxSweeps}`);
+  const relTol = options.directRelTol ?? 1e-3;
+  if (!(relTol > 0 && relTol < 1)) throw new ReferenceInputError(`reference options: directRelTol must be in (0, 1), got ${relTol}`);
+  return { extent, reflectance, tolerance, maxSweeps, relTol };
+}
+
+/**
+ * Direct light: patch means, RGB per patch per face. Quadrature errors are judged against the
+ * room's mean direct illuminance Φ/S, so dark patches are not refined for nothing.
+ */
+function boxDirect(sources: ReturnType<typeof referencePointSources>, extent: ReturnType<typeof validateRoom>, grid: ReturnType<typeof makePatchGrid>, faceN: number[], relTol: number): Float64Array[] {
+  const area = 2 * (extent[0] * extent[1] + extent[0] * extent[2] + extent[1] * extent[2]);
+  const meanDirect = sources.reduce((sum, s) => sum + gridFlux(s.photometry) * Math.max(...s.scale), 0) / area;
+  const quadrature: PatchAverageOptions = {
+    relTol,
+    absTol: 1e-4 * meanDirect,
+    maxDepth: 6,
+    maxCellAngle: maxCellAngle(sources),
+  };
+  return BOX_FACES.map((f, fi) => {
+    const out = new Float64Array(3 * faceN[fi]);
+    if (sources.length === 0) return out;
+    const nu = grid.count[f.uAxis];
+    const hu = grid.size[f.uAxis];
+    const hv = grid.size[f.vAxis];
+    const rect = { axis: f.axis, plane: f.side === 0 ? 0 : extent[f.axis], uAxis: f.uAxis, vAxis: f.vAxis, normal: f.normal };
+    for (let i = 0; i < faceN[fi]; i++) {
+      const iu = i % nu;
+      const iv = (i - iu) / nu;
+      const e = patchMeanDirect(sources, rect, iu * hu, (iu + 1) * hu, iv * hv, (iv + 1) * hv, quadrature);
+      out.set(e, 3 * i);
+    }
+    return out;
+  });
+}
+
+/** Each face's patches as the result reports them: direct, indirect and total, in RGB and as luminance-weighted lux. */
+function boxSurfaces(extent: ReturnType<typeof validateRoom>, grid: ReturnType<typeof makePatchGrid>, reflectance: Record<SurfaceName, Rgb>, direct: Float64Array[], indirect: Float64Array[]) {
   const surfaces = {} as Record<SurfaceName, ReferenceSurface>;
   BOX_FACES.forEach((f, fi) => {
-    const n = faceN[fi];
+    const n = direct[fi].length / 3;
     const totalRgb = new Float64Array(3 * n);
     const y = (rgb: Float64Array): Float64Array => {
       const out = new Float64Array(n);
@@ -244,7 +261,7 @@ export function solveBoxReference(scene: LightingScene, photometries: ReadonlyMa
       totalRgb,
     };
   });
-  return { scene, sources, grid, surfaces, patches, sweeps, residual, timingsMs: { direct: directMs, formFactors: formFactorMs, solve: solveMs } };
+  return surfaces;
 }
 
 /**

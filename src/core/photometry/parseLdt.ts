@@ -8,7 +8,7 @@ import { PhotometryParseError } from './PhotometryParseError';
 import { checkLeftovers, readAngles, readCandela } from './readGrid';
 import type { Photometry } from './types';
 import { LdtLineReader } from './ldtLineReader';
-import { readLdtHeader, readLdtLamps, skipDirectRatios } from './ldtSections';
+import { readLdtHeader, readLdtLamps, skipDirectRatios, type LdtHeader } from './ldtSections';
 
 /**
  * Parses EULUMDAT (.ldt) text. The format is line-oriented: lines 1–26 are
@@ -39,8 +39,9 @@ export function parseLdt(text: string, fileName: string): Photometry {
 
   const r = new LdtLineReader(fileName, lines);
   const h = readLdtHeader(r, warnings);
-  const { company, ityp, isym, mc, ng, reportNumber, luminaireName, luminaireNumber, sourceFileName, dateUser, dims, lumLength, lumWidth, heights, dff, lorl, cfliLine, tiltAngle } = h;
-  const { totalFlux, watts, lampTypes, cfli, statedLumens } = readLdtLamps(r, h, warnings);
+  const { company, isym, mc, ng, luminaireName, luminaireNumber, cfliLine } = h;
+  const lamps = readLdtLamps(r, h, warnings);
+  const { totalFlux, watts, cfli, statedLumens } = lamps;
   skipDirectRatios(r);
 
   // From here on: numbers with known counts, tolerated several per line.
@@ -67,33 +68,13 @@ export function parseLdt(text: string, fileName: string): Photometry {
   const { horizontalAngles, candela } = unfoldPlanes(fileName, isym, mc, cAngles, stored, planes, anglesLine);
   const grid = expandTypeC(fileName, { verticalAngles: gammas, horizontalAngles, candela }, anglesLine, warnings);
 
-  const keywords: Record<string, string> = {
-    COMPANY: company,
-    ITYP: String(ityp),
-    ISYM: String(isym),
-    REPORT: reportNumber,
-    LUMINAIRE: luminaireName,
-    LUMCAT: luminaireNumber,
-    FILENAME: sourceFileName,
-    DATE: dateUser,
-    LUMINAIRE_DIMENSIONS_MM: dims.join(' × '),
-    DFF: dff === null ? '' : String(dff),
-    LORL: lorl === null ? '' : String(lorl),
-    TILT: tiltAngle === null ? '' : String(tiltAngle),
-    LAMP: lampTypes.join('; '),
-    LAMP_FLUX: String(totalFlux),
-  };
-  const mm = 0.001;
-  // EULUMDAT: width 0 means a circle of diameter = length; LM-63 signs say the same.
-  const lumHeight = Math.max(...heights) * mm;
-  const opening = lumWidth > 0 ? luminousOpening(lumWidth * mm, lumLength * mm, lumHeight) : luminousOpening(-lumLength * mm, -lumLength * mm, lumHeight);
   const ph: Photometry = {
     format: 'LDT',
     version: 'EULUMDAT',
     manufacturer: company,
     luminaire: luminaireName,
     catalogNumber: luminaireNumber,
-    keywords,
+    keywords: ldtKeywords(h, lamps),
     photometricType: 'C',
     symmetry: grid.symmetry,
     verticalAngles: grid.verticalAngles,
@@ -103,7 +84,7 @@ export function parseLdt(text: string, fileName: string): Photometry {
     statedLumensSource: statedLumens === null ? null : 'lamp flux × LORL',
     absolute: false,
     inputWatts: watts > 0 && watts <= MAX_WATTS ? watts : null,
-    luminousOpening: opening,
+    luminousOpening: ldtOpening(h),
     warnings,
     tilt: null,
     fileGrid: {
@@ -115,6 +96,34 @@ export function parseLdt(text: string, fileName: string): Photometry {
     candelaScale: scale,
   };
   return finishPhotometry(ph, fileName, 'luminaire');
+}
+
+/** The header's fields as keywords, under the LM-63 names where one exists, so both formats read alike. */
+function ldtKeywords(h: LdtHeader, lamps: ReturnType<typeof readLdtLamps>): Record<string, string> {
+  const { dff, lorl, tiltAngle } = h;
+  return {
+    COMPANY: h.company,
+    ITYP: String(h.ityp),
+    ISYM: String(h.isym),
+    REPORT: h.reportNumber,
+    LUMINAIRE: h.luminaireName,
+    LUMCAT: h.luminaireNumber,
+    FILENAME: h.sourceFileName,
+    DATE: h.dateUser,
+    LUMINAIRE_DIMENSIONS_MM: h.dims.join(' × '),
+    DFF: dff === null ? '' : String(dff),
+    LORL: lorl === null ? '' : String(lorl),
+    TILT: tiltAngle === null ? '' : String(tiltAngle),
+    LAMP: lamps.lampTypes.join('; '),
+    LAMP_FLUX: String(lamps.totalFlux),
+  };
+}
+
+/** The luminous area in metres. EULUMDAT: width 0 means a circle of diameter = length; LM-63 signs say the same. */
+function ldtOpening({ lumLength, lumWidth, heights }: LdtHeader) {
+  const mm = 0.001;
+  const lumHeight = Math.max(...heights) * mm;
+  return lumWidth > 0 ? luminousOpening(lumWidth * mm, lumLength * mm, lumHeight) : luminousOpening(-lumLength * mm, -lumLength * mm, lumHeight);
 }
 
 function range(from: number, to: number): number[] {
