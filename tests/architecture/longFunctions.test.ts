@@ -33,7 +33,6 @@ const ALLOWED: ReadonlyMap<string, string> = new Map([
   ['src/ui/planner/PlanSvg.tsx:PlanSvg', "a component whose markup is most of it: its groups become components, as View3D's did"],
   ['src/engines/bake/objects/rasterizeAtlas.ts:<charts.forEach callback>', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
   ['src/engines/meshImport/collectTriangles.ts:collectTriangles', 'walks the loaded scene graph once: to be split by primitive kind'],
-  ['src/engines/view/frameTheLight.ts:frameTheLight', 'one geometric construction (pool, luminaires, eye): to be split by step'],
   ['src/engines/bake/objects/collectWorldTriangles.ts:collectWorldTriangles', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
   ['src/engines/view/createGpuStats.ts:createGpuStats', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/engines/bake/createBakeJobHandle.ts:createBakeJobHandle', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],

@@ -151,17 +151,64 @@ export function frameTheLight(scene: BakeScene, aspect = 1.6): LightFraming {
   }
   const room = scene.room;
   const { width: W, height: H, depth: D } = room;
-  const m = wallMargin(room);
-  const h = eyeHeight(H);
   const cell = Math.max(0.1, Math.max(W, H, D) / 20);
   const patches = litPatches(scene, cell);
   const emitting = scenePointSources(scene, { sourceSpacing: 1, maxSourcesPerAxis: 1, nearField: 'point' }).map((l) => l.luminaire);
   const lampPositions = emitting.map((i) => clampInsideRoom(scene.luminaires[i].position, room, 0) as Vec3);
   let pool: Patch | null = null;
   for (const q of patches) if (q.n[1] >= 0 && q.luminance > 0 && (!pool || q.luminance > pool.luminance)) pool = q;
+  const views: ViewSet = { stands: standingPoints(room), patches, emitting, lampPositions, pool, aspect };
 
-  // Standing points: corners and 1/4, 1/2, 3/4 of each wall, each with the direction straight into the room.
-  const stands: { c: Vec3; inward: number }[] = [];
+  // A room too small (or low) to show the pool and a luminaire in one 60° view gets a wider lens, as a photographer would.
+  const base = eyeFov(aspect);
+  let fov = base;
+  let candidates = candidateViews(views, fov);
+  for (const wider of [base + 15, base + 30]) {
+    if (candidates.some((k) => k.pool && k.lamps.length > 0)) break;
+    const next = candidateViews(views, Math.min(100, wider));
+    if (next.some((k) => k.pool && k.lamps.length > 0)) {
+      fov = Math.min(100, wider);
+      candidates = next;
+      break;
+    }
+  }
+  const best = bestCandidate(candidates, emitting.length);
+  if (!best) return { pose: eyeAcrossTheRoom(room, aspect), pool: null, luminairesInView: [] };
+  return { pose: { position: [...best.c] as Vec3, target: orbitTarget(best, [W, H, D]), fov }, pool: pool ? pool.p : null, luminairesInView: best.lamps };
+}
+
+/** A standing point of the eye and the yaw straight into the room from it. */
+interface Stand {
+  c: Vec3;
+  inward: number;
+}
+
+/** One candidate view and what it shows: the flux at the lens, the pool in frame, the luminaires in frame. */
+interface Candidate {
+  c: Vec3;
+  yaw: number;
+  pitch: number;
+  flux: number;
+  pool: boolean;
+  lamps: number[];
+}
+
+/** What every candidate view is judged on. */
+interface ViewSet {
+  stands: Stand[];
+  patches: Patch[];
+  emitting: number[];
+  lampPositions: Vec3[];
+  pool: Patch | null;
+  aspect: number;
+}
+
+/** Standing points: corners and 1/4, 1/2, 3/4 of each wall at eye height, each with the direction straight into the room. */
+function standingPoints(room: Room): Stand[] {
+  const { width: W, height: H, depth: D } = room;
+  const m = wallMargin(room);
+  const h = eyeHeight(H);
+  const stands: Stand[] = [];
   const xs = [m, W / 4, W / 2, (3 * W) / 4, W - m];
   const zs = [m, D / 4, D / 2, (3 * D) / 4, D - m];
   const yawOf = (dx: number, dz: number) => Math.atan2(dx, -dz);
@@ -173,75 +220,63 @@ export function frameTheLight(scene: BakeScene, aspect = 1.6): LightFraming {
     stands.push({ c: [m, h, z], inward: yawOf(1, 0) });
     stands.push({ c: [W - m, h, z], inward: yawOf(-1, 0) });
   }
-  interface Candidate {
-    c: Vec3;
-    yaw: number;
-    pitch: number;
-    flux: number;
-    pool: boolean;
-    lamps: number[];
-  }
-  const candidatesFor = (fov: number): Candidate[] => {
-    const tanV = Math.tan(((fov / 2) * Math.PI) / 180);
-    const tanH = tanV * (aspect > 0 ? aspect : 1.6);
-    const inFrame = (v: { x: number; y: number } | null, k: number) => v !== null && Math.abs(v.x) <= k * tanH && Math.abs(v.y) <= k * tanV;
-    const candidates: Candidate[] = [];
-    for (const { c, inward } of stands) {
-      for (let dy = -70; dy <= 70; dy += 10) {
-        const yaw = inward + (dy * Math.PI) / 180;
-        for (const pitchDeg of [-5, -15, -25, -35]) {
-          const pitch = (pitchDeg * Math.PI) / 180;
-          const axes = viewAxes(yaw, pitch);
-          let flux = 0;
-          for (const q of patches) {
-            if (!(q.luminance > 0)) continue;
-            const v = project(c, axes, q.p);
-            if (!inFrame(v, 1)) continue;
-            const d = sub(c, q.p);
-            const d2 = dot(d, d);
-            const cos = dot(q.n, d) / Math.sqrt(d2);
-            if (cos > 0) flux += (q.luminance * q.area * cos) / d2;
-          }
-          const lamps = emitting.filter((_, k) => inFrame(project(c, axes, lampPositions[k]), 0.75));
-          candidates.push({ c, yaw, pitch, flux, pool: pool !== null && inFrame(project(c, axes, pool.p), 0.7), lamps });
+  return stands;
+}
+
+/** Every standing point × looking direction (±70° every 10°) × pitch (5°…35° down) at a vertical field of `fov` degrees. */
+function candidateViews({ stands, patches, emitting, lampPositions, pool, aspect }: ViewSet, fov: number): Candidate[] {
+  const tanV = Math.tan(((fov / 2) * Math.PI) / 180);
+  const tanH = tanV * (aspect > 0 ? aspect : 1.6);
+  const inFrame = (v: { x: number; y: number } | null, k: number) => v !== null && Math.abs(v.x) <= k * tanH && Math.abs(v.y) <= k * tanV;
+  const candidates: Candidate[] = [];
+  for (const { c, inward } of stands) {
+    for (let dy = -70; dy <= 70; dy += 10) {
+      const yaw = inward + (dy * Math.PI) / 180;
+      for (const pitchDeg of [-5, -15, -25, -35]) {
+        const pitch = (pitchDeg * Math.PI) / 180;
+        const axes = viewAxes(yaw, pitch);
+        let flux = 0;
+        for (const q of patches) {
+          if (!(q.luminance > 0)) continue;
+          const v = project(c, axes, q.p);
+          if (!inFrame(v, 1)) continue;
+          const d = sub(c, q.p);
+          const d2 = dot(d, d);
+          const cos = dot(q.n, d) / Math.sqrt(d2);
+          if (cos > 0) flux += (q.luminance * q.area * cos) / d2;
         }
+        const lamps = emitting.filter((_, k) => inFrame(project(c, axes, lampPositions[k]), 0.75));
+        candidates.push({ c, yaw, pitch, flux, pool: pool !== null && inFrame(project(c, axes, pool.p), 0.7), lamps });
       }
     }
-    return candidates;
-  };
-  // A room too small (or low) to show the pool and a luminaire in one 60° view gets a wider lens, as a photographer would.
-  const base = eyeFov(aspect);
-  let fov = base;
-  let candidates = candidatesFor(fov);
-  for (const wider of [base + 15, base + 30]) {
-    if (candidates.some((k) => k.pool && k.lamps.length > 0)) break;
-    const next = candidatesFor(Math.min(100, wider));
-    if (next.some((k) => k.pool && k.lamps.length > 0)) {
-      fov = Math.min(100, wider);
-      candidates = next;
-      break;
-    }
   }
+  return candidates;
+}
+
+/** The highest score (see frameTheLight); ties keep the first. Null when nothing lit is in any view or no luminaire emits. */
+function bestCandidate(candidates: Candidate[], emittingCount: number): Candidate | null {
   const maxFlux = Math.max(...candidates.map((k) => k.flux));
-  if (!(maxFlux > 0) || emitting.length === 0) return { pose: eyeAcrossTheRoom(room, aspect), pool: null, luminairesInView: [] };
+  if (!(maxFlux > 0) || emittingCount === 0) return null;
   let best = candidates[0];
   let bestScore = -Infinity;
   for (const k of candidates) {
-    const score = k.flux / maxFlux + (k.pool ? 0.5 : 0) + (k.lamps.length > 0 ? 0.5 : 0) + (0.5 * k.lamps.length) / emitting.length;
+    const score = k.flux / maxFlux + (k.pool ? 0.5 : 0) + (k.lamps.length > 0 ? 0.5 : 0) + (0.5 * k.lamps.length) / emittingCount;
     if (score > bestScore + 1e-12) {
       bestScore = score;
       best = k;
     }
   }
-  // The orbit target: along the view, half way to where it meets the room's surfaces (the camera turns about a point in the room).
+  return best;
+}
+
+/** The orbit target: along the view, half way to where it meets the room's surfaces (the camera turns about a point in the room). */
+function orbitTarget(best: Candidate, size: Vec3): Vec3 {
   const { f } = viewAxes(best.yaw, best.pitch);
-  const size: Vec3 = [W, H, D];
   let reach = Infinity;
   for (let a = 0; a < 3; a++) {
     if (f[a] > 1e-9) reach = Math.min(reach, (size[a] - best.c[a]) / f[a]);
     else if (f[a] < -1e-9) reach = Math.min(reach, -best.c[a] / f[a]);
   }
   const t = Math.max(0.5, reach / 2);
-  const target: Vec3 = [best.c[0] + f[0] * t, best.c[1] + f[1] * t, best.c[2] + f[2] * t];
-  return { pose: { position: [...best.c] as Vec3, target, fov }, pool: pool ? pool.p : null, luminairesInView: best.lamps };
+  return [best.c[0] + f[0] * t, best.c[1] + f[1] * t, best.c[2] + f[2] * t];
 }
