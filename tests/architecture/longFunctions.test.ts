@@ -29,7 +29,6 @@ const ALLOWED: ReadonlyMap<string, string> = new Map([
   ['src/hosts/node/createProbe.ts:createProbe', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/core/gldf/exportGldfProduct.ts:exportGldfProduct', 'writes product.xml section by section: to be split by section'],
   ['src/hosts/cli/renderCommand.ts:run', "a command's steps in order: to be split into named steps, as startBakeJob was"],
-  ['src/engines/view/glare/createGlarePass.ts:createGlarePass', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/ui/planner/PlanSvg.tsx:PlanSvg', "a component whose markup is most of it: its groups become components, as View3D's did"],
   ['src/engines/bake/objects/rasterizeAtlas.ts:<charts.forEach callback>', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
   ['src/engines/meshImport/collectTriangles.ts:collectTriangles', 'walks the loaded scene graph once: to be split by primitive kind'],

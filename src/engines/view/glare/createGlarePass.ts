@@ -30,105 +30,139 @@ function material(fragmentShader: string, uniforms: Record<string, THREE.IUnifor
   return new THREE.ShaderMaterial({ glslVersion: THREE.GLSL3, vertexShader: glareVertex, fragmentShader, uniforms, depthTest: false, depthWrite: false });
 }
 
+/** Mirrored edges: a filter's taps beyond the border read the image reflected about it, so the light a
+ * symmetric kernel would carry out of the picture comes back in and none is lost or doubled (clamping
+ * to the edge would count the border pixels several times). */
+const HDR_OPTIONS = {
+  type: THREE.HalfFloatType,
+  format: THREE.RGBAFormat,
+  minFilter: THREE.LinearFilter,
+  magFilter: THREE.LinearFilter,
+  wrapS: THREE.MirroredRepeatWrapping,
+  wrapT: THREE.MirroredRepeatWrapping,
+  generateMipmaps: false,
+  depthBuffer: false,
+} as const;
+
+/** What the pass's parts share: the targets of the pyramid, the full-screen quad and the three materials. */
+interface GlareCore {
+  readonly target: THREE.WebGLRenderTarget;
+  down: THREE.WebGLRenderTarget[];
+  up: THREE.WebGLRenderTarget[];
+  size: { width: number; height: number };
+  readonly camera: THREE.OrthographicCamera;
+  readonly quad: THREE.Mesh;
+  readonly scene: THREE.Scene;
+  readonly downMaterial: THREE.ShaderMaterial;
+  readonly upMaterial: THREE.ShaderMaterial;
+  readonly compositeMaterial: THREE.ShaderMaterial;
+}
+
+function draw(core: GlareCore, renderer: THREE.WebGLRenderer, m: THREE.ShaderMaterial, out: THREE.WebGLRenderTarget | null) {
+  core.quad.material = m;
+  renderer.setRenderTarget(out);
+  renderer.render(core.scene, core.camera);
+}
+
+function disposeLevels(core: GlareCore) {
+  for (const t of [...core.down, ...core.up]) t.dispose();
+  core.down = [];
+  core.up = [];
+}
+
+/** The HDR target at full size and the pyramid's levels, each half the previous (rounded up). */
+function resize(core: GlareCore, width: number, height: number) {
+  if (width === core.size.width && height === core.size.height) return;
+  core.size = { width, height };
+  core.target.setSize(width, height);
+  disposeLevels(core);
+  const n = glareLevels(width, height);
+  for (let k = 1; k <= n; k++) {
+    const w = Math.max(1, Math.ceil(width / 2 ** k));
+    const h = Math.max(1, Math.ceil(height / 2 ** k));
+    core.down.push(new THREE.WebGLRenderTarget(w, h, HDR_OPTIONS));
+    core.up.push(new THREE.WebGLRenderTarget(w, h, HDR_OPTIONS));
+  }
+}
+
+/** The scattered light: down the pyramid from the HDR image, then up from the coarsest level, each adding its share of the PSF. */
+function scatter(core: GlareCore, renderer: THREE.WebGLRenderer, levelWeights: readonly number[]) {
+  const { down, up, downMaterial, upMaterial } = core;
+  let source: THREE.WebGLRenderTarget = core.target;
+  down.forEach((level) => {
+    downMaterial.uniforms.uSource.value = source.texture;
+    downMaterial.uniforms.uTexel.value.set(1 / source.width, 1 / source.height);
+    draw(core, renderer, downMaterial, level);
+    source = level;
+  });
+  for (let k = down.length - 1; k >= 0; k--) {
+    upMaterial.uniforms.uLevel.value = down[k].texture;
+    upMaterial.uniforms.uWeight.value = levelWeights[k];
+    const coarser = up[k + 1];
+    upMaterial.uniforms.uHasCoarser.value = coarser ? 1 : 0;
+    upMaterial.uniforms.uCoarser.value = coarser ? coarser.texture : null;
+    if (coarser) upMaterial.uniforms.uCoarserTexel.value.set(1 / coarser.width, 1 / coarser.height);
+    draw(core, renderer, upMaterial, up[k]);
+  }
+}
+
+/** The core of the PSF on the sharp image plus the scattered sum, through the display curve (or linear, for tests). */
+function composite(core: GlareCore, renderer: THREE.WebGLRenderer, coreWeight: number, output: THREE.WebGLRenderTarget | null, linear: boolean) {
+  const { up } = core;
+  const u = core.compositeMaterial.uniforms;
+  u.uHdr.value = core.target.texture;
+  u.uHasScattered.value = up.length > 0 ? 1 : 0;
+  u.uScattered.value = up[0]?.texture ?? null;
+  if (up[0]) u.uScatteredTexel.value.set(1 / up[0].width, 1 / up[0].height);
+  u.uCore.value = coreWeight;
+  u.uLinear.value = linear ? 1 : 0;
+  draw(core, renderer, core.compositeMaterial, output);
+}
+
 /** `background`: the display colour (sRGB 0…1) of pixels nothing was drawn on; `samples`: the HDR target's multisampling. */
 export function createGlarePass(options: { samples?: number; background?: [number, number, number] } = {}): GlarePass {
-  // Mirrored edges: a filter's taps beyond the border read the image reflected about it, so the light a
-  // symmetric kernel would carry out of the picture comes back in and none is lost or doubled (clamping
-  // to the edge would count the border pixels several times).
-  const hdrOptions = {
-    type: THREE.HalfFloatType,
-    format: THREE.RGBAFormat,
-    minFilter: THREE.LinearFilter,
-    magFilter: THREE.LinearFilter,
-    wrapS: THREE.MirroredRepeatWrapping,
-    wrapT: THREE.MirroredRepeatWrapping,
-    generateMipmaps: false,
-    depthBuffer: false,
-  } as const;
-  const target = new THREE.WebGLRenderTarget(1, 1, { ...hdrOptions, depthBuffer: true, samples: options.samples ?? 0 });
-  let down: THREE.WebGLRenderTarget[] = [];
-  let up: THREE.WebGLRenderTarget[] = [];
-  let size = { width: 0, height: 0 };
-  const camera = new THREE.OrthographicCamera(-1, 1, 1, -1, 0, 1);
   const quad = new THREE.Mesh(new THREE.PlaneGeometry(2, 2));
   quad.frustumCulled = false;
   const scene = new THREE.Scene();
   scene.add(quad);
-  const downMaterial = material(glareDownFragment, { uSource: { value: null }, uTexel: { value: new THREE.Vector2() } });
-  const upMaterial = material(glareUpFragment, { uLevel: { value: null }, uCoarser: { value: null }, uCoarserTexel: { value: new THREE.Vector2() }, uWeight: { value: 0 }, uHasCoarser: { value: 0 } });
-  const compositeMaterial = material(glareCompositeFragment, {
-    uHdr: { value: null },
-    uScattered: { value: null },
-    uScatteredTexel: { value: new THREE.Vector2() },
-    uCore: { value: 1 },
-    uHasScattered: { value: 0 },
-    uLinear: { value: 0 },
-    uBackground: { value: new THREE.Vector3(...(options.background ?? [0, 0, 0])) },
-  });
-  const draw = (renderer: THREE.WebGLRenderer, m: THREE.ShaderMaterial, out: THREE.WebGLRenderTarget | null) => {
-    quad.material = m;
-    renderer.setRenderTarget(out);
-    renderer.render(scene, camera);
-  };
-  const disposeLevels = () => {
-    for (const t of [...down, ...up]) t.dispose();
-    down = [];
-    up = [];
+  const core: GlareCore = {
+    target: new THREE.WebGLRenderTarget(1, 1, { ...HDR_OPTIONS, depthBuffer: true, samples: options.samples ?? 0 }),
+    down: [],
+    up: [],
+    size: { width: 0, height: 0 },
+    camera: new THREE.OrthographicCamera(-1, 1, 1, -1, 0, 1),
+    quad,
+    scene,
+    downMaterial: material(glareDownFragment, { uSource: { value: null }, uTexel: { value: new THREE.Vector2() } }),
+    upMaterial: material(glareUpFragment, { uLevel: { value: null }, uCoarser: { value: null }, uCoarserTexel: { value: new THREE.Vector2() }, uWeight: { value: 0 }, uHasCoarser: { value: 0 } }),
+    compositeMaterial: material(glareCompositeFragment, {
+      uHdr: { value: null },
+      uScattered: { value: null },
+      uScatteredTexel: { value: new THREE.Vector2() },
+      uCore: { value: 1 },
+      uHasScattered: { value: 0 },
+      uLinear: { value: 0 },
+      uBackground: { value: new THREE.Vector3(...(options.background ?? [0, 0, 0])) },
+    }),
   };
   return {
-    target,
-    setSize(width, height) {
-      if (width === size.width && height === size.height) return;
-      size = { width, height };
-      target.setSize(width, height);
-      disposeLevels();
-      const n = glareLevels(width, height);
-      for (let k = 1; k <= n; k++) {
-        const w = Math.max(1, Math.ceil(width / 2 ** k));
-        const h = Math.max(1, Math.ceil(height / 2 ** k));
-        down.push(new THREE.WebGLRenderTarget(w, h, hdrOptions));
-        up.push(new THREE.WebGLRenderTarget(w, h, hdrOptions));
-      }
-    },
+    target: core.target,
+    setSize: (width, height) => resize(core, width, height),
     finish(renderer, pixelDeg, output, linear = false) {
       const previous = renderer.getRenderTarget();
-      const weights = glareWeights(pixelDeg, down.length, Math.hypot(size.width, size.height));
-      // Down: the HDR image, then each level from the one before.
-      let source: THREE.WebGLRenderTarget = target;
-      down.forEach((level) => {
-        downMaterial.uniforms.uSource.value = source.texture;
-        downMaterial.uniforms.uTexel.value.set(1 / source.width, 1 / source.height);
-        draw(renderer, downMaterial, level);
-        source = level;
-      });
-      // Up: from the coarsest, each level's share of the PSF plus the coarser sum.
-      for (let k = down.length - 1; k >= 0; k--) {
-        upMaterial.uniforms.uLevel.value = down[k].texture;
-        upMaterial.uniforms.uWeight.value = weights.levels[k];
-        const coarser = up[k + 1];
-        upMaterial.uniforms.uHasCoarser.value = coarser ? 1 : 0;
-        upMaterial.uniforms.uCoarser.value = coarser ? coarser.texture : null;
-        if (coarser) upMaterial.uniforms.uCoarserTexel.value.set(1 / coarser.width, 1 / coarser.height);
-        draw(renderer, upMaterial, up[k]);
-      }
-      const u = compositeMaterial.uniforms;
-      u.uHdr.value = target.texture;
-      u.uHasScattered.value = up.length > 0 ? 1 : 0;
-      u.uScattered.value = up[0]?.texture ?? null;
-      if (up[0]) u.uScatteredTexel.value.set(1 / up[0].width, 1 / up[0].height);
-      u.uCore.value = weights.core;
-      u.uLinear.value = linear ? 1 : 0;
-      draw(renderer, compositeMaterial, output);
+      const weights = glareWeights(pixelDeg, core.down.length, Math.hypot(core.size.width, core.size.height));
+      scatter(core, renderer, weights.levels);
+      composite(core, renderer, weights.core, output, linear);
       renderer.setRenderTarget(previous);
       return weights;
     },
     dispose() {
-      disposeLevels();
-      target.dispose();
+      disposeLevels(core);
+      core.target.dispose();
       quad.geometry.dispose();
-      downMaterial.dispose();
-      upMaterial.dispose();
-      compositeMaterial.dispose();
+      core.downMaterial.dispose();
+      core.upMaterial.dispose();
+      core.compositeMaterial.dispose();
     },
   };
 }
