@@ -90,94 +90,110 @@ function sameLevels(a: Uint8Array | null, b: Uint8Array | null): boolean {
   return true;
 }
 
-/** Per-universe, per-source state and the merge; pure (time is passed in), so it is tested without sockets. */
-export function createUniverseStore(options: UniverseStoreOptions = {}): UniverseStore {
-  const sacnTimeout = options.sacnTimeoutMs ?? SACN_SOURCE_TIMEOUT_MS;
-  const artnetTimeout = options.artnetTimeoutMs ?? ARTNET_SOURCE_TIMEOUT_MS;
-  const maxUniverses = options.maxUniverses ?? 512;
-  const maxSources = options.maxSourcesPerUniverse ?? 16;
-  const resyncMs = options.sequenceResyncMs ?? SEQUENCE_RESYNC_MS;
-  const table = new Map<number, UniverseState>();
+/** The store's limits and its table of universes, shared by its parts. */
+interface StoreCore {
+  readonly sacnTimeout: number;
+  readonly artnetTimeout: number;
+  readonly maxUniverses: number;
+  readonly maxSources: number;
+  readonly resyncMs: number;
+  readonly table: Map<number, UniverseState>;
+}
 
-  /** Recomputes the merge; returns whether the levels the app sees changed. */
-  function remerge(state: UniverseState): boolean {
-    const merged = mergeUniverse([...state.sources.values()]);
-    // No source left: hold the last look rather than black out (E1.31 §6.7.1 leaves it to the receiver).
-    if (merged === null || sameLevels(merged, state.levels)) return false;
-    state.levels = merged;
-    return true;
+/** Recomputes the merge; returns whether the levels the app sees changed. */
+function remerge(state: UniverseState): boolean {
+  const merged = mergeUniverse([...state.sources.values()]);
+  // No source left: hold the last look rather than black out (E1.31 §6.7.1 leaves it to the receiver).
+  if (merged === null || sameLevels(merged, state.levels)) return false;
+  state.levels = merged;
+  return true;
+}
+
+function accept(core: StoreCore, universe: number, key: string, incoming: Omit<SourceState, 'channels' | 'lastSeen'>, data: Uint8Array, terminated: boolean, now: number): AcceptResult {
+  let state = core.table.get(universe);
+  if (!state) {
+    // A terminating packet for a universe we never saw has nothing to end.
+    if (terminated) return { ok: true, universe, changed: false };
+    if (core.table.size >= core.maxUniverses) return { ok: false, reason: 'universe-limit' };
+    state = { sources: new Map(), levels: null };
+    core.table.set(universe, state);
   }
-
-  function accept(universe: number, key: string, incoming: Omit<SourceState, 'channels' | 'lastSeen'>, data: Uint8Array, terminated: boolean, now: number): AcceptResult {
-    let state = table.get(universe);
-    if (!state) {
-      // A terminating packet for a universe we never saw has nothing to end.
-      if (terminated) return { ok: true, universe, changed: false };
-      if (table.size >= maxUniverses) return { ok: false, reason: 'universe-limit' };
-      state = { sources: new Map(), levels: null };
-      table.set(universe, state);
-    }
-    const known = state.sources.get(key);
-    if (terminated) {
-      // Stream_Terminated (E1.31 §6.2.6): the source leaves at once; its data is not used.
-      if (!known) return { ok: true, universe, changed: false };
-      state.sources.delete(key);
-      return { ok: true, universe, changed: remerge(state) };
-    }
-    // Art-Net 4 (ArtDmx, Sequence): 0 disables the check; in E1.31 0 is an ordinary sequence number.
-    const sequenced = incoming.protocol === 'sacn' || (known?.sequence !== 0 && incoming.sequence !== 0);
-    // Written so that a NaN time resynchronises rather than freezing the source.
-    const recent = known !== undefined && now - known.lastSeen <= resyncMs;
-    if (known && sequenced && recent && isStaleSequence(known.sequence, incoming.sequence)) {
-      return { ok: false, reason: 'stale-sequence' };
-    }
-    if (!known && state.sources.size >= maxSources) return { ok: false, reason: 'source-limit' };
-    const channels = new Uint8Array(DMX_SLOTS);
-    channels.set(data.subarray(0, DMX_SLOTS));
-    state.sources.set(key, { ...incoming, channels, lastSeen: now });
+  const known = state.sources.get(key);
+  if (terminated) {
+    // Stream_Terminated (E1.31 §6.2.6): the source leaves at once; its data is not used.
+    if (!known) return { ok: true, universe, changed: false };
+    state.sources.delete(key);
     return { ok: true, universe, changed: remerge(state) };
   }
+  // Art-Net 4 (ArtDmx, Sequence): 0 disables the check; in E1.31 0 is an ordinary sequence number.
+  const sequenced = incoming.protocol === 'sacn' || (known?.sequence !== 0 && incoming.sequence !== 0);
+  // Written so that a NaN time resynchronises rather than freezing the source.
+  const recent = known !== undefined && now - known.lastSeen <= core.resyncMs;
+  if (known && sequenced && recent && isStaleSequence(known.sequence, incoming.sequence)) {
+    return { ok: false, reason: 'stale-sequence' };
+  }
+  if (!known && state.sources.size >= core.maxSources) return { ok: false, reason: 'source-limit' };
+  const channels = new Uint8Array(DMX_SLOTS);
+  channels.set(data.subarray(0, DMX_SLOTS));
+  state.sources.set(key, { ...incoming, channels, lastSeen: now });
+  return { ok: true, universe, changed: remerge(state) };
+}
 
+/** Drops sources past their protocol's timeout; returns the universes whose merged levels changed. */
+function expire(core: StoreCore, now: number): number[] {
+  const changed: number[] = [];
+  for (const [universe, state] of core.table) {
+    let dropped = false;
+    for (const [key, source] of state.sources) {
+      const timeout = source.protocol === 'sacn' ? core.sacnTimeout : core.artnetTimeout;
+      if (now - source.lastSeen > timeout) {
+        state.sources.delete(key);
+        dropped = true;
+      }
+    }
+    if (dropped && remerge(state)) changed.push(universe);
+  }
+  return changed;
+}
+
+function sourcesOf(core: StoreCore, now: number): DmxSourceInfo[] {
+  const out: DmxSourceInfo[] = [];
+  for (const [universe, state] of core.table) {
+    for (const s of state.sources.values()) {
+      out.push({ protocol: s.protocol, address: s.address, id: s.id, name: s.name, priority: s.priority, universe, ageMs: now - s.lastSeen });
+    }
+  }
+  return out.sort((a, b) => a.universe - b.universe || a.id.localeCompare(b.id));
+}
+
+/** Per-universe, per-source state and the merge; pure (time is passed in), so it is tested without sockets. */
+export function createUniverseStore(options: UniverseStoreOptions = {}): UniverseStore {
+  const core: StoreCore = {
+    sacnTimeout: options.sacnTimeoutMs ?? SACN_SOURCE_TIMEOUT_MS,
+    artnetTimeout: options.artnetTimeoutMs ?? ARTNET_SOURCE_TIMEOUT_MS,
+    maxUniverses: options.maxUniverses ?? 512,
+    maxSources: options.maxSourcesPerUniverse ?? 16,
+    resyncMs: options.sequenceResyncMs ?? SEQUENCE_RESYNC_MS,
+    table: new Map(),
+  };
   return {
     acceptArtDmx(packet, address, now) {
       const ip = address.replace(/:\d+$/, '');
-      return accept(packet.portAddress + 1, `artnet:${ip}`, { protocol: 'artnet', id: ip, address, name: '', priority: ARTNET_PRIORITY, sequence: packet.sequence }, packet.data, false, now);
+      return accept(core, packet.portAddress + 1, `artnet:${ip}`, { protocol: 'artnet', id: ip, address, name: '', priority: ARTNET_PRIORITY, sequence: packet.sequence }, packet.data, false, now);
     },
     acceptE131(packet, address, now) {
-      return accept(packet.universe, `sacn:${packet.cid}`, { protocol: 'sacn', id: packet.cid, address, name: packet.sourceName, priority: packet.priority, sequence: packet.sequence }, packet.data, packet.terminated, now);
+      return accept(core, packet.universe, `sacn:${packet.cid}`, { protocol: 'sacn', id: packet.cid, address, name: packet.sourceName, priority: packet.priority, sequence: packet.sequence }, packet.data, packet.terminated, now);
     },
-    expire(now) {
-      const changed: number[] = [];
-      for (const [universe, state] of table) {
-        let dropped = false;
-        for (const [key, source] of state.sources) {
-          const timeout = source.protocol === 'sacn' ? sacnTimeout : artnetTimeout;
-          if (now - source.lastSeen > timeout) {
-            state.sources.delete(key);
-            dropped = true;
-          }
-        }
-        if (dropped && remerge(state)) changed.push(universe);
-      }
-      return changed;
-    },
+    expire: (now) => expire(core, now),
     get(universe) {
-      return table.get(universe)?.levels ?? undefined;
+      return core.table.get(universe)?.levels ?? undefined;
     },
     universes() {
-      return [...table]
+      return [...core.table]
         .filter(([, s]) => s.levels !== null)
         .map(([u]) => u)
         .sort((a, b) => a - b);
     },
-    sources(now) {
-      const out: DmxSourceInfo[] = [];
-      for (const [universe, state] of table) {
-        for (const s of state.sources.values()) {
-          out.push({ protocol: s.protocol, address: s.address, id: s.id, name: s.name, priority: s.priority, universe, ageMs: now - s.lastSeen });
-        }
-      }
-      return out.sort((a, b) => a.universe - b.universe || a.id.localeCompare(b.id));
-    },
+    sources: (now) => sourcesOf(core, now),
   };
 }
