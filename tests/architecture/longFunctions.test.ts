@@ -36,8 +36,6 @@ const ALLOWED: ReadonlyMap<string, string> = new Map([
   ['src/engines/view/createGpuStats.ts:createGpuStats', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/engines/bake/createBakeJobHandle.ts:createBakeJobHandle', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
   ['src/engines/bake/selectBrightPatches.ts:selectBrightPatches', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
-  ['src/ui/app/RoomSetup.tsx:RoomSetup', "a component whose markup is most of it: its groups become components, as View3D's did"],
-  ['src/ui/app/Configurator.tsx:Configurator', "a component whose markup is most of it: its groups become components, as View3D's did"],
   ['src/engines/bake/startBakeJob.ts:startBakeJob', 'already a sequence of named steps (issue 28): 88 lines of step calls and their comments'],
   ['src/ui/viewer/startBakeFeed.ts:startBakeFeed', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/core/mesh/orientMesh.ts:orientMesh', 'one mesh pass (winding, normals, outward test): to be split by step'],

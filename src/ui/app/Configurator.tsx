@@ -8,7 +8,7 @@ import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore
 import { Planner } from '../planner/Planner';
 import type { FirstRunOptions } from '../planner/FirstRunHint';
 import type { FootprintSource } from '../planner/footprintSource';
-import { RoomSetup } from './RoomSetup';
+import { RoomSetup, type RoomSetupProps } from './RoomSetup';
 import type { UiStore } from '../../core/store/uiStore';
 import { useI18n } from '../i18n/useI18n';
 import { LanguageSwitch } from '../i18n/LanguageSwitch';
@@ -40,7 +40,7 @@ export interface ConfiguratorProps {
 
 /** The configurator's top-level component: room setup first, then the planner (configurator paper §3.2). */
 export function Configurator({ store, ui, languageSwitch = false, onRestoreSaved, shareLink, footprints, landmarks = 'region', firstRun }: ConfiguratorProps) {
-  const { t, locale, language } = useI18n();
+  const { t, locale } = useI18n();
   const phase = useStore(ui, (s) => s.phase);
   const banner = useStore(ui, (s) => s.banner);
   const room = useStore(store, (s) => s.config.room);
@@ -81,37 +81,19 @@ export function Configurator({ store, ui, languageSwitch = false, onRestoreSaved
   const Root = landmarks === 'page' ? 'div' : 'section';
   return (
     <Root className="app" lang={locale} aria-label={landmarks === 'page' ? undefined : t('app.regionLabel')}>
-      {banner && (
-        <div className="banner" role="alert" data-testid="banner">
-          <span className="banner-text">{translateCoded(t, 'app', banner, coreParams(t, language))}</span>
-          {banner.canRestore && (
-            <button type="button" className="btn" onClick={onRestoreSaved}>
-              {t('app.openSaved')}
-            </button>
-          )}
-          <button type="button" className="btn" aria-label={t('common.dismissMessage')} onClick={() => ui.setState({ banner: null })}>
-            ✕
-          </button>
-        </div>
-      )}
+      {banner && <Banner ui={ui} onRestoreSaved={onRestoreSaved} />}
       {phase === 'setup' ? (
-        <>
-          <header className="app-header">
-            <BrandMark ui={ui} />
-            <span className="room-label">{t('app.tagline')}</span>
-            <span className="spacer" />
-            {languageSwitch && <LanguageSwitch />}
-          </header>
-          <RoomSetup
-            initial={room}
-            onSubmit={(r) => {
-              store.getState().load(createConfiguration(r));
-              ui.setState({ phase: 'planner', mode: '2d' });
-            }}
-            onDemo={startDemo}
-            landmarks={landmarks}
-          />
-        </>
+        <SetupPage
+          ui={ui}
+          languageSwitch={languageSwitch}
+          landmarks={landmarks}
+          initial={room}
+          onSubmit={(r) => {
+            store.getState().load(createConfiguration(r));
+            ui.setState({ phase: 'planner', mode: '2d' });
+          }}
+          onDemo={startDemo}
+        />
       ) : (
         <Planner
           store={store}
@@ -126,5 +108,50 @@ export function Configurator({ store, ui, languageSwitch = false, onRestoreSaved
         />
       )}
     </Root>
+  );
+}
+
+/** A notice across the top (a broken link, a refused file), with "open saved" where that helps, and dismiss. */
+function Banner({ ui, onRestoreSaved }: { ui: UiStore; onRestoreSaved: () => void }) {
+  const { t, language } = useI18n();
+  const banner = useStore(ui, (s) => s.banner);
+  if (!banner) return null;
+  return (
+    <div className="banner" role="alert" data-testid="banner">
+      <span className="banner-text">{translateCoded(t, 'app', banner, coreParams(t, language))}</span>
+      {banner.canRestore && (
+        <button type="button" className="btn" onClick={onRestoreSaved}>
+          {t('app.openSaved')}
+        </button>
+      )}
+      <button type="button" className="btn" aria-label={t('common.dismissMessage')} onClick={() => ui.setState({ banner: null })}>
+        ✕
+      </button>
+    </div>
+  );
+}
+
+interface SetupPageProps {
+  ui: UiStore;
+  languageSwitch: boolean;
+  landmarks: Landmarks;
+  initial: RoomSetupProps['initial'];
+  onSubmit: RoomSetupProps['onSubmit'];
+  onDemo: () => void;
+}
+
+/** The first page: the brand, the tagline and the language switch over the room form. */
+function SetupPage({ ui, languageSwitch, landmarks, initial, onSubmit, onDemo }: SetupPageProps) {
+  const { t } = useI18n();
+  return (
+    <>
+      <header className="app-header">
+        <BrandMark ui={ui} />
+        <span className="room-label">{t('app.tagline')}</span>
+        <span className="spacer" />
+        {languageSwitch && <LanguageSwitch />}
+      </header>
+      <RoomSetup initial={initial} onSubmit={onSubmit} onDemo={onDemo} landmarks={landmarks} />
+    </>
   );
 }

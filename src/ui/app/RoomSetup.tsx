@@ -66,8 +66,6 @@ export function RoomSetup({ initial, onSubmit, onDemo, onResume, landmarks = 're
     height: shown(initial?.height ?? DEFAULT_ROOM.height),
   }));
   const [reflectance, setReflectance] = useState<Record<SurfaceName, Reflectance>>({ ...DEFAULT_REFLECTANCE, ...initial?.reflectance });
-  const wallsAlike = WALL_NAMES.every((w) => sameReflectance(reflectance[w], reflectance.north));
-  const chooseFinish = (target: SurfaceTarget) => (f: { reflectance: Reflectance }) => setReflectance((r) => ({ ...r, ...Object.fromEntries(targetSurfaces(target).map((s) => [s, f.reflectance])) }));
   const [touched, setTouched] = useState<Record<Field, boolean>>({ width: false, depth: false, height: false });
   const errors: Record<Field, string | null> = {
     width: roomFieldError('width', values.width, t),
@@ -94,40 +92,23 @@ export function RoomSetup({ initial, onSubmit, onDemo, onResume, landmarks = 're
         <h2 id={`${id}-title`}>{t('app.yourRoom')}</h2>
         <p>{t('app.setupIntro')}</p>
         <div className="setup-fields">
-          {FIELDS.map(({ key, labelKey, hintKey }) => {
-            const err = touched[key] ? errors[key] : null;
-            return (
-              <div className="field" key={key}>
-                <label htmlFor={`${id}-${key}`}>{t('app.fieldInMetres', { field: t(labelKey) })}</label>
-                <input
-                  id={`${id}-${key}`}
-                  name={key}
-                  inputMode="decimal"
-                  autoComplete="off"
-                  value={values[key]}
-                  aria-invalid={err ? true : undefined}
-                  aria-describedby={`${id}-${key}-msg`}
-                  onChange={(e) => {
-                    const v = e.target.value;
-                    setValues((s) => ({ ...s, [key]: v }));
-                    setTouched((t) => ({ ...t, [key]: true }));
-                  }}
-                />
-                <span id={`${id}-${key}-msg`} className={err ? 'error' : 'empty-note'} role={err ? 'alert' : undefined}>
-                  {err ?? t(hintKey)}
-                </span>
-              </div>
-            );
-          })}
+          {FIELDS.map(({ key, labelKey, hintKey }) => (
+            <RoomDimensionField
+              key={key}
+              inputId={`${id}-${key}`}
+              name={key}
+              label={t('app.fieldInMetres', { field: t(labelKey) })}
+              hint={t(hintKey)}
+              value={values[key]}
+              error={touched[key] ? errors[key] : null}
+              onChange={(v) => {
+                setValues((s) => ({ ...s, [key]: v }));
+                setTouched((t) => ({ ...t, [key]: true }));
+              }}
+            />
+          ))}
         </div>
-        <fieldset className="setup-finishes">
-          <legend>{t('app.surfaces')}</legend>
-          <div className="finish-list">
-            <FinishSelect id={`${id}-floor`} label={t('app.floor')} use="floor" value={reflectance.floor} finishes={defaultSurfaceFinishes} onChoose={chooseFinish('floor')} testId="setup-finish-floor" />
-            <FinishSelect id={`${id}-walls`} label={t('app.walls')} use="walls" value={wallsAlike ? reflectance.north : null} finishes={defaultSurfaceFinishes} onChoose={chooseFinish('walls')} testId="setup-finish-walls" />
-            <FinishSelect id={`${id}-ceiling`} label={t('app.ceiling')} use="ceiling" value={reflectance.ceiling} finishes={defaultSurfaceFinishes} onChoose={chooseFinish('ceiling')} testId="setup-finish-ceiling" />
-          </div>
-        </fieldset>
+        <SetupFinishes idPrefix={id} reflectance={reflectance} onReflectance={setReflectance} />
         <div className="setup-actions">
           <button type="submit" className="btn btn-primary" aria-disabled={!valid || undefined}>
             {t('app.startPlanning')}
@@ -143,5 +124,48 @@ export function RoomSetup({ initial, onSubmit, onDemo, onResume, landmarks = 're
         )}
       </form>
     </Root>
+  );
+}
+
+interface RoomDimensionFieldProps {
+  inputId: string;
+  name: Field;
+  label: string;
+  hint: string;
+  value: string;
+  /** Shown (as an alert) instead of the hint once the field was touched. */
+  error: string | null;
+  onChange: (value: string) => void;
+}
+
+/** One dimension in metres, typed with either decimal mark; its hint, or its error once touched. */
+function RoomDimensionField({ inputId, name, label, hint, value, error, onChange }: RoomDimensionFieldProps) {
+  return (
+    <div className="field">
+      <label htmlFor={inputId}>{label}</label>
+      <input id={inputId} name={name} inputMode="decimal" autoComplete="off" value={value} aria-invalid={error ? true : undefined} aria-describedby={`${inputId}-msg`} onChange={(e) => onChange(e.target.value)} />
+      <span id={`${inputId}-msg`} className={error ? 'error' : 'empty-note'} role={error ? 'alert' : undefined}>
+        {error ?? hint}
+      </span>
+    </div>
+  );
+}
+
+type Finishes = Record<SurfaceName, Reflectance>;
+
+/** Floor, walls (one choice for all four; none shown when they differ) and ceiling finishes. */
+function SetupFinishes({ idPrefix, reflectance, onReflectance }: { idPrefix: string; reflectance: Finishes; onReflectance: (update: (r: Finishes) => Finishes) => void }) {
+  const { t } = useI18n();
+  const wallsAlike = WALL_NAMES.every((w) => sameReflectance(reflectance[w], reflectance.north));
+  const chooseFinish = (target: SurfaceTarget) => (f: { reflectance: Reflectance }) => onReflectance((r) => ({ ...r, ...Object.fromEntries(targetSurfaces(target).map((s) => [s, f.reflectance])) }));
+  return (
+    <fieldset className="setup-finishes">
+      <legend>{t('app.surfaces')}</legend>
+      <div className="finish-list">
+        <FinishSelect id={`${idPrefix}-floor`} label={t('app.floor')} use="floor" value={reflectance.floor} finishes={defaultSurfaceFinishes} onChoose={chooseFinish('floor')} testId="setup-finish-floor" />
+        <FinishSelect id={`${idPrefix}-walls`} label={t('app.walls')} use="walls" value={wallsAlike ? reflectance.north : null} finishes={defaultSurfaceFinishes} onChoose={chooseFinish('walls')} testId="setup-finish-walls" />
+        <FinishSelect id={`${idPrefix}-ceiling`} label={t('app.ceiling')} use="ceiling" value={reflectance.ceiling} finishes={defaultSurfaceFinishes} onChoose={chooseFinish('ceiling')} testId="setup-finish-ceiling" />
+      </div>
+    </fieldset>
   );
 }
