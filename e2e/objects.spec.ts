@@ -124,6 +124,10 @@ test.describe('desktop', () => {
     await page.getByTestId('import-file').setInputFiles({ name: 'sheet.obj', mimeType: 'text/plain', buffer: Buffer.from('v 0 0 0\nv 0 0 1\nv 1 0 1\nv 1 0 0\nf 1 2 3 4\n') });
     await expect(page.getByTestId('import-orientation')).toHaveText('1 open surface is lit and reflects on both sides');
     await expect(page.getByTestId('import-triangles')).toContainText('2 triangles');
+    // Three triangles of one part on one edge: no winding fits, so it is lit on both sides, with a warning.
+    const fan = ['v 0 0 0', 'v 0 0 1', 'v 1 0 0.5', 'v -0.5 0.866 0.5', 'v -0.5 -0.866 0.5', 'f 1 2 3', 'f 3 4 2', 'f 1 2 4', 'f 4 5 1', 'f 1 2 5'].join('\n');
+    await page.getByTestId('import-file').setInputFiles({ name: 'fan.obj', mimeType: 'text/plain', buffer: Buffer.from(`${fan}\n`) });
+    await expect(page.getByTestId('import-undecided')).toContainText('1 part has no clear inside (faces that cannot be wound alike): it is lit on both sides');
     expect(await page.evaluate(() => window.luxbox!.getConfig())).toBe(before);
 
     // Import the OBJ fixture with its MTL: units, triangle count and size shown before adding.

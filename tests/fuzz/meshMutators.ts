@@ -6,6 +6,7 @@
  * in node transforms, sparse accessors, wrong types; for OBJ/MTL huge coordinates, indices out of
  * range, long material names, continuations, NUL bytes and runs of thousands of lines.
  */
+import { MODEL_BYTE_CAPS } from '../../src/engines/meshImport/byteCaps';
 import type { Rng } from './mutate';
 import type { MeshBundle } from './meshBundle';
 
@@ -60,8 +61,11 @@ function mutateGltfJson(json: Json, rng: Rng, applied: string[]): void {
       // Huge arrays: copies of an entry (or of the whole list) up to 20 000.
       const key = rng.pick(['accessors', 'nodes', 'meshes', 'materials', 'bufferViews', 'buffers', 'cameras']);
       const list = Array.isArray(json[key]) ? (json[key] as unknown[]) : [];
-      const n = rng.pick([100, 1000, 4097, 8193, 20_000]);
+      const wanted = rng.pick([100, 1000, 4097, 8193, 20_000]);
       const entry = list.length > 0 ? list[rng.int(list.length)] : { type: 'perspective', perspective: { yfov: 1, znear: 0.1 } };
+      // Copies stop at twice the glTF JSON cap: a buffer whose data URI an earlier round made 400 kB,
+      // copied 20 000 times, took the mutator (not the importer) past a 4 GB heap at seed 3532.
+      const n = Math.max(1, Math.min(wanted, Math.floor((2 * MODEL_BYTE_CAPS.gltfJson) / JSON.stringify(entry).length)));
       json[key] = list.concat(Array.from({ length: n }, () => structuredClone(entry)));
       applied.push(`${key}×${n}`);
       return;

@@ -2,6 +2,7 @@ import type { TriangleMesh } from './triangleMesh';
 import { coincidentPairs } from './coincidentPairs';
 import { connectedParts, type ConnectedPart } from './connectedParts';
 import { meshEdges, type MeshEdges } from './meshEdges';
+import { partSelfIntersects } from './partSelfIntersects';
 import { boxVolume, canonicalFacing, canonicalTurn, crossOf, dot, signedVolume, unit } from './partGeometry';
 
 /**
@@ -33,7 +34,7 @@ export interface OrientationSummary {
   twoSided: number;
   /** Open parts kept one-sided as the file says (glTF materials without `doubleSided`). */
   oneSided: number;
-  /** Parts whose inside and outside cannot be told (non-manifold edges, a Möbius-like winding, no volume): two-sided. */
+  /** Parts whose inside and outside cannot be told (non-manifold edges, a Möbius-like winding, no volume, a closed part crossing itself): two-sided. */
   undecided: number;
   /** Triangles where two parts are glued face to face (coincident pairs inside a solid), wound one canonical way. */
   enclosedFaces: number;
@@ -63,8 +64,8 @@ export interface OrientedMesh {
  *   otherwise it is left exactly as the file winds it (glTF: counterclockwise is the front,
  *   spec §3.7.2.1, and a one-sided material is not seen from behind);
  * - a part that cannot be oriented (an edge three or more of its own triangles share, a winding
- *   that cannot be made consistent, a closed part without volume) is two-sided, each triangle's
- *   copy moved along its own normal;
+ *   that cannot be made consistent, a closed part without volume or one that passes through
+ *   itself, partSelfIntersects) is two-sided, each triangle's copy moved along its own normal;
  * - **coincident triangles** (two on the same three corners) are left out of the parts: where two
  *   solids are glued face to face (a cushion against its neighbour), the rest of both is one closed
  *   surface and the glued faces lie inside it, where no light reaches (each pair is wound one
@@ -117,7 +118,7 @@ export function orientMesh(mesh: TriangleMesh, twoSided: (triangle: number) => b
     }
     if (part.closed) {
       const volume = signedVolume(positions, indices, part);
-      if (!(Math.abs(volume) > FLAT_VOLUME_FRACTION * boxVolume(positions, indices, part))) {
+      if (!(Math.abs(volume) > FLAT_VOLUME_FRACTION * boxVolume(positions, indices, part)) || partSelfIntersects(positions, indices, all.vertexId, part)) {
         summary.undecided++;
         back.push({ part, smooth: false });
         continue;

@@ -9,9 +9,9 @@ import { sceneWarnings } from '../node/sceneWarnings';
 import { shapedRoomReport } from '../node/bakeSummary';
 import { writeBakeOutput, type SceneObjectsOutput } from '../node/writeBakeOutput';
 import { resolveBakeSettings } from '../../engines/bake/bakeSettings';
-import { cliReadableFolders } from '../node/cliReadableFolders';
+import { ALLOW_FLAG, cliReadableFolders } from '../node/cliReadableFolders';
 
-export const bakeUsage = 'bake <scene.json> [more.json …] --out <dir> [--samples N --bounces N --texel m --blur texels --seed N --no-tail --gl vulkan|glx|auto]';
+export const bakeUsage = 'bake <scene.json> [more.json …] --out <dir> [--samples N --bounces N --texel m --blur texels --seed N --no-tail --gl vulkan|glx|auto --allow <folder>]';
 
 /** The scene's objects with their ids, mesh paths, triangle counts and units, for report.json and objects.json. */
 function objectsOutput(loaded: LoadedLightingScene): SceneObjectsOutput {
@@ -33,7 +33,7 @@ function objectsOutput(loaded: LoadedLightingScene): SceneObjectsOutput {
  * Every scene file is read and checked before the first bake starts.
  */
 export async function run(args: string[]): Promise<number> {
-  const { positional, settings: given, options } = parseBakeCli('bake', args, ['--out', '--gl']);
+  const { positional, settings: given, options } = parseBakeCli('bake', args, ['--out', '--gl', ALLOW_FLAG]);
   if (positional.length === 0) throw new InputError(`expected a scene file (usage: luxbox ${bakeUsage})`);
   const out = options['--out'];
   if (!out) throw new InputError(`--out <dir> is required (usage: luxbox ${bakeUsage})`);
@@ -43,7 +43,7 @@ export async function run(args: string[]): Promise<number> {
   if (exit !== null) return exit;
 
   const loaded: LoadedLightingScene[] = [];
-  for (const p of positional) loaded.push(await loadLightingSceneFileAsync(p, { within: cliReadableFolders(p) }));
+  for (const p of positional) loaded.push(await loadLightingSceneFileAsync(p, { within: cliReadableFolders(p, options[ALLOW_FLAG]) }));
   // Suspicious-but-readable photometry (docs/photometry.md, "Warnings"): in each
   // report.json, and once per line on stderr (nothing on stderr when there are none).
   const warnings = loaded.map((scene, i) => sceneWarnings(scene, positional[i]));

@@ -10,7 +10,7 @@ import { resolveBakeSettings } from '../../engines/bake/bakeSettings';
 import { prepareGl } from '../node/prepareGl';
 import { loadLightingSceneFileAsync, parseJsonText } from '../node/loadLightingSceneFile';
 import { describeIssues } from '../../core/zodIssues';
-import { cliReadableFolders } from '../node/cliReadableFolders';
+import { ALLOW_FLAG, cliReadableFolders } from '../node/cliReadableFolders';
 import { INPUT_LIMITS } from '../../core/untrustedJson';
 import { readRegularFile } from '../node/readRegularFile';
 import type { Room as ShapedRoom } from '../../core/room/normaliseRoom';
@@ -18,7 +18,7 @@ import { roomSurfaces } from '../../core/room/roomSurfaces';
 import { roomSurfaceAt } from '../../core/room/roomSurfaceAt';
 import { pointInsideRoom } from '../../core/room/ceilingHeightAt';
 
-export const probeUsage = 'probe <scene.json> <points.json> [--samples N --bounces N --texel m --gl vulkan|glx|auto] (points [x, y, z] on a surface or [x, y, z, nx, ny, nz])';
+export const probeUsage = 'probe <scene.json> <points.json> [--samples N --bounces N --texel m --gl vulkan|glx|auto --allow <folder>] (points [x, y, z] on a surface or [x, y, z, nx, ny, nz])';
 
 /** Probe points must lie on a surface (or, with a normal, inside the room), within this distance (metres). */
 export const PROBE_TOLERANCE = 0.01;
@@ -43,7 +43,7 @@ const AXES = ['x', 'y', 'z'];
  * (docs/scene-format.md, "Probe points").
  */
 export async function run(args: string[]): Promise<number> {
-  const { positional, settings, options } = parseBakeCli('probe', args, ['--gl']);
+  const { positional, settings, options } = parseBakeCli('probe', args, ['--gl', ALLOW_FLAG]);
   if (positional.length !== 2) throw new InputError(`expected a scene file and a points file (usage: luxbox ${probeUsage})`);
   const [scenePath, pointsPath] = positional;
   const source = basename(pointsPath);
@@ -67,7 +67,7 @@ export async function run(args: string[]): Promise<number> {
   }
   // Checked before the scene file is read, and passed on resolved to the bake and the probe.
   const resolved = resolveBakeSettings(settings);
-  const loaded = await loadLightingSceneFileAsync(scenePath, { within: cliReadableFolders(scenePath) });
+  const loaded = await loadLightingSceneFileAsync(scenePath, { within: cliReadableFolders(scenePath, options[ALLOW_FLAG]) });
   const room = loaded.scene.room;
   if (room.shape) shapedRoomPoints(room.shape, parsed.data.points, source);
   const dims = [room.width, room.height, room.depth];

@@ -13,10 +13,10 @@ import { takeRenderCameras } from '../node/renderCameras';
 import { createRenderSession } from '../node/renderImage';
 import { loadRenderInputAsync } from '../node/renderInput';
 import { RENDER_SUMMARY_FORMAT, type RenderSummary, type RenderSummaryImage } from '../node/renderSummary';
-import { cliReadableFolders } from '../node/cliReadableFolders';
+import { ALLOW_FLAG, cliReadableFolders } from '../node/cliReadableFolders';
 
 export const renderUsage =
-  'render <config-or-scene.json> [more.json …] --out image.png|<dir>/ [--camera eye|top|corner|<json>|eye,top,… (repeatable)] [--cameras cameras.json] [--width 960 --height 600] [--ev EV100 | --exposure stops] [--adapt eye|none|camera:<K>] [--mode light|lux] [--glare on|off] [--samples N --bounces N --texel m] [--gl vulkan|glx|auto]';
+  'render <config-or-scene.json> [more.json …] --out image.png|<dir>/ [--camera eye|top|corner|<json>|eye,top,… (repeatable)] [--cameras cameras.json] [--width 960 --height 600] [--ev EV100 | --exposure stops] [--adapt eye|none|camera:<K>] [--mode light|lux] [--glare on|off] [--samples N --bounces N --texel m] [--gl vulkan|glx|auto] [--allow <folder>]';
 
 function intOption(name: string, value: string | undefined, fallback: number, min: number, max: number): number {
   if (value === undefined) return fallback;
@@ -66,7 +66,7 @@ const errorLine = (error: unknown) => oneLine(error instanceof Error ? error.mes
  */
 export async function run(args: string[]): Promise<number> {
   const { cameras, rest } = takeRenderCameras(args);
-  const { positional, settings, options } = parseBakeCli('render', rest, ['--out', '--width', '--height', '--exposure', '--ev', '--adapt', '--mode', '--glare', '--gl']);
+  const { positional, settings, options } = parseBakeCli('render', rest, ['--out', '--width', '--height', '--exposure', '--ev', '--adapt', '--mode', '--glare', '--gl', ALLOW_FLAG]);
   if (positional.length === 0) throw new InputError(`render: expected a scene file (usage: luxbox ${renderUsage})`);
   const out = options['--out'];
   if (!out) throw new InputError(`render: --out <image.png> is required (usage: luxbox ${renderUsage})`);
@@ -82,7 +82,7 @@ export async function run(args: string[]): Promise<number> {
   const glare = glareOption === 'on';
   const batch = positional.length > 1 || cameras.length > 1 || /[/\\]$/.test(out) || (existsSync(out) && statSync(out).isDirectory());
   // A single render keeps the old contract: bad input is one line on stderr before any GL work.
-  const single = batch ? null : await loadRenderInputAsync(positional[0], { within: cliReadableFolders(positional[0]) });
+  const single = batch ? null : await loadRenderInputAsync(positional[0], { within: cliReadableFolders(positional[0], options[ALLOW_FLAG]) });
   const sceneNames = batchFolderNames(positional);
   const { exit } = prepareGl(options['--gl']);
   if (exit !== null) return exit;
@@ -103,7 +103,7 @@ export async function run(args: string[]): Promise<number> {
       let input;
       let results;
       try {
-        const loaded = single ?? (await loadRenderInputAsync(path, { within: cliReadableFolders(path) }));
+        const loaded = single ?? (await loadRenderInputAsync(path, { within: cliReadableFolders(path, options[ALLOW_FLAG]) }));
         input = loaded;
         const room = loaded.scene.room;
         // The eye preset frames this scene's light (frameTheLight.ts), as the browser's does.

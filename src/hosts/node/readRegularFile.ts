@@ -67,7 +67,7 @@ export function readRegularFile(path: string, limits: ReadLimits): Uint8Array {
     throw new InputError(code === 'ENOENT' ? 'no such file' : (code ?? 'read error'));
   }
   if (limits.within && !limits.within.some((folder) => inside(real, folder))) {
-    throw new InputError(`${real} is outside the scene's folder and the current folder`);
+    throw new InputError(`${real} is outside the scene's folder (give more with --allow)`);
   }
   let fd: number;
   try {

@@ -88,3 +88,37 @@ export function mobiusMesh(n = 6): TriangleMesh {
   }
   return { positions: new Float32Array(positions), indices: Uint32Array.from(idx), materialOfTriangle: new Uint16Array(2 * n), materials: grey };
 }
+
+/**
+ * A closed unit box [0, 1]³ whose top is a fan of four triangles round a centre vertex at height
+ * `apexY`, every face counterclockwise from outside as long as the apex stays above the floor
+ * (0 < apexY: a dent, or a tent above 1). With apexY < 0 the fan passes through the floor: the
+ * part crosses itself and still encloses a positive signed volume (1 − (1 − apexY)/3 for the box
+ * minus the pyramid), so the volume alone would call it outward.
+ */
+export function pushedThroughBox(apexY: number): TriangleMesh {
+  // 0–3 floor corners, 4–7 top corners (x, z) = (0,0) (1,0) (1,1) (0,1); 8 the apex.
+  const positions = new Float32Array([0, 0, 0, 1, 0, 0, 1, 0, 1, 0, 0, 1, 0, 1, 0, 1, 1, 0, 1, 1, 1, 0, 1, 1, 0.5, apexY, 0.5]);
+  const indices = [
+    ...[0, 1, 2, 0, 2, 3], // floor (normal −y)
+    ...[0, 4, 5, 0, 5, 1], // z = 0 (normal −z)
+    ...[1, 5, 6, 1, 6, 2], // x = 1
+    ...[2, 6, 7, 2, 7, 3], // z = 1
+    ...[3, 7, 4, 3, 4, 0], // x = 0
+    ...[4, 8, 5, 5, 8, 6, 6, 8, 7, 7, 8, 4], // the top fan (normal +y while the apex is above the floor)
+  ];
+  return { positions, indices: Uint32Array.from(indices), materialOfTriangle: new Uint16Array(indices.length / 3), materials: grey };
+}
+
+/**
+ * Five triangles joined over manifold edges into one part, three of which share the spine P–Q
+ * (P = origin, Q = (0, 0, 1); R, S, T round it): a non-manifold edge inside one part, so no winding
+ * makes every edge run both ways once.
+ */
+export function spineFanMesh(): TriangleMesh {
+  const ring = [0, 1, 2].map((k) => [Math.cos((2 * Math.PI * k) / 3), Math.sin((2 * Math.PI * k) / 3), 0.5]);
+  const positions = new Float32Array([0, 0, 0, 0, 0, 1, ...ring.flat()]);
+  const [P, Q, R, S, T] = [0, 1, 2, 3, 4];
+  const indices = [P, Q, R, R, S, Q, P, Q, S, S, T, P, P, Q, T];
+  return { positions, indices: Uint32Array.from(indices), materialOfTriangle: new Uint16Array(5), materials: grey };
+}

@@ -14,7 +14,8 @@ import { FURNITURE_LIBRARY, furnitureMesh } from '../../../src/core/model/object
 import { createRng } from '../../fuzz/mutate';
 import { boxMesh } from '../../engines/bake/objects/objectFixtures';
 import { isClosedAndConsistent, signedVolume } from '../../engines/meshImport/modelFixtures';
-import { wedgeMesh, insideOut, mobiusMesh, quadMesh } from './orientFixtures';
+import { partSelfIntersects } from '../../../src/core/mesh/partSelfIntersects';
+import { wedgeMesh, insideOut, mobiusMesh, pushedThroughBox, quadMesh, spineFanMesh } from './orientFixtures';
 
 const never = () => false;
 const always = () => true;
@@ -186,7 +187,7 @@ describe('parts that cannot be oriented', () => {
     expect(Array.from(out.indices)).toEqual(Array.from(mesh.indices));
   });
 
-  it('an edge three triangles of one part share (non-manifold inside a part): two-sided, each copy along its own normal', () => {
+  it('a fin on the middle edge of a strip (three triangles on one edge) is a part of its own; made two-sided, each copy along its own normal', () => {
     // A strip of two quads (manifold edges join them) plus a fin on the middle edge that also touches both quads' far corners.
     const positions = new Float32Array([0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 0, 1, 1, 0, 1, 2, 0, 1, 1, 1, 0.5]);
     const idx = [0, 3, 4, 0, 4, 1, 1, 4, 5, 1, 5, 2, 1, 4, 6];
@@ -196,6 +197,35 @@ describe('parts that cannot be oriented', () => {
     const { mesh: out, summary } = orientMesh(mesh, always);
     expect(summary.backTriangles).toBe(5);
     for (let t = 0; t < out.indices.length / 3; t++) expect(normalOf(out, t).every(Number.isFinite)).toBe(true);
+  });
+
+  it('three triangles of one part on one edge (non-manifold inside a part): no winding, two-sided whatever the file says', () => {
+    const mesh = spineFanMesh();
+    const parts = connectedParts(mesh);
+    expect(parts).toHaveLength(1);
+    expect(parts[0].flip).toBeNull();
+    // One-sided by the file (a glTF material without doubleSided): still two-sided, counted as undecided.
+    expect(orientMesh(mesh, never).summary).toMatchObject({ parts: 1, undecided: 1, oneSided: 0, backTriangles: 5 });
+  });
+
+  it('a closed box whose top is pushed through its floor crosses itself: two-sided and undecided, although its signed volume is positive', () => {
+    const through = pushedThroughBox(-0.5);
+    // What the volume alone would say: closed, consistent, positive (1 − 1.5/3 = 0.5 m³).
+    expect(isClosedAndConsistent(through)).toBe(true);
+    expect(signedVolume(through)).toBeCloseTo(0.5, 6);
+    expect(orientMesh(through, never).summary).toMatchObject({ parts: 1, closed: 0, undecided: 1, backTriangles: 14 });
+    expect(orientMesh(insideOut(through), never).summary).toMatchObject({ parts: 1, closed: 0, undecided: 1, backTriangles: 14 });
+  });
+
+  it('the same box with its top dented, raised into a tent or touching the floor at one point does not cross itself: closed and outward', () => {
+    for (const apexY of [1.5, 1, 0.5, 0.01, 0]) {
+      const box = pushedThroughBox(apexY);
+      expect(partSelfIntersects(box.positions, box.indices, meshEdges(box).vertexId, connectedParts(box)[0]), `apex ${apexY}`).toBe(false);
+      expect(orientMesh(insideOut(box), never).summary, `apex ${apexY}`).toMatchObject({ closed: 1, turnedOutward: 1, undecided: 0, backTriangles: 0 });
+    }
+    // Just below the floor the fan crosses it.
+    const through = pushedThroughBox(-1e-3);
+    expect(partSelfIntersects(through.positions, through.indices, meshEdges(through).vertexId, connectedParts(through)[0])).toBe(true);
   });
 
   it('a Möbius strip has no consistent winding: two-sided', () => {

@@ -57,7 +57,7 @@ function mapDifference(a: BakedMaps, b: BakedMaps): number {
   return diff / peak;
 }
 
-function meanLux(maps: BakedMaps, surface: 'floor' | 'ceiling', kind: 'indirect' | 'total', inside: (x: number, z: number) => boolean = () => true): number {
+function meanLux(maps: BakedMaps, surface: 'floor' | 'ceiling', kind: 'direct' | 'indirect' | 'total', inside: (x: number, z: number) => boolean = () => true): number {
   const m = maps[surface];
   const lux = luxOf(m[kind]);
   let sum = 0;
@@ -112,6 +112,66 @@ describe('library furniture written out and read back in any winding: the same m
       expect(corners(c), id).toEqual(corners(a));
       expect(a.indices.length, id).toBe(mesh.indices.length);
     }
+  });
+});
+
+describe('library furniture imported as written and inside out: identical maps', async () => {
+  // The sofa (closed parts, glued cushions) in a 4 × 2.5 × 4 m room, centred on the floor, lit from above.
+  const sofa = furnitureMesh('sofa');
+  const [written, inverted] = await Promise.all([importObj(sofa, 'sofa.obj'), importObj(insideOut(sofa), 'sofa.obj')]);
+  const p = written.positions;
+  const centre = [0, 2].map((a) => {
+    let lo = Infinity;
+    let hi = -Infinity;
+    for (let i = a; i < p.length; i += 3) [lo, hi] = [Math.min(lo, p[i]), Math.max(hi, p[i])];
+    return 2 - (lo + hi) / 2;
+  });
+  const scene = (mesh: TriangleMesh): BakeScene => ({
+    room: uniformRoom(4, 2.5, 4, 0.5),
+    luminaires: [{ photometry: isotropic(300), position: [2, 2.3, 2], yaw: 0, pitch: 0, roll: 0 }],
+    objects: [placed('sofa', mesh, [centre[0], 0, centre[1]], 0.6)],
+  });
+  const settings = { texelSize: 0.2, samples: 16, bounces: 3 };
+
+  it('the inside-out sofa bakes the maps of the sofa as written (1e-6 relative), and the raw inside-out one does not', () => {
+    const reference = baker.bake(scene(written), settings).maps;
+    expect(mapDifference(baker.bake(scene(inverted), settings).maps, reference)).toBeLessThanOrEqual(1e-6);
+    // Without the orientation the difference is visible to this comparison.
+    expect(mapDifference(baker.bake(scene(insideOut(sofa)), settings).maps, reference)).toBeGreaterThan(0.01);
+  });
+});
+
+describe('two-sided open surfaces cast shadows whichever side the lamp is on', async () => {
+  // 3 m cube, ρ 0.3; the 1 × 1 m quad at 2 m height between x, z = 1 … 2. A lamp 0.8 m above it
+  // shadows the whole floor patch |x − 1.5|, |z − 1.5| < 1.75 (similar triangles: 0.5 · 2.8 / 0.8);
+  // one 0.8 m below it shadows the ceiling patch within 1.125 (0.5 · 1.8 / 0.8). Texels whose
+  // every point lies within 0.9 of the centre are wholly in the umbra: their direct light is 0.
+  const inside = (x: number, z: number) => Math.abs(x - 1.5) < 0.9 - 0.15 && Math.abs(z - 1.5) < 0.9 - 0.15;
+  const settings = { texelSize: 0.15, samples: 4, bounces: 1 };
+  const scene = (mesh: TriangleMesh | null, lampY: number): BakeScene => ({
+    room: uniformRoom(3, 3, 3, 0.3),
+    luminaires: [{ photometry: isotropic(200), position: [1.5, lampY, 1.5], yaw: 0, pitch: 0, roll: 0 }],
+    objects: mesh ? [placed('quad', mesh, [1, 2, 1], 0.8)] : [],
+  });
+  const open = {
+    floor: meanLux(baker.bake(scene(null, 2.8), settings).maps, 'floor', 'direct', inside),
+    ceiling: meanLux(baker.bake(scene(null, 1.2), settings).maps, 'ceiling', 'direct', inside),
+  };
+  const models: Array<[string, string, string]> = [
+    ['an OBJ quad facing up', 'quad.obj', objText(quadMesh())],
+    ['an OBJ quad facing down', 'quad.obj', objText(insideOut(quadMesh()))],
+    ['a glTF doubleSided plane', 'plane.gltf', gltfQuad(true)],
+  ];
+
+  it.each(models)('%s: the floor under it (lamp above) and the ceiling over it (lamp below) get no direct light', async (_, name, text) => {
+    const imported = await importMesh([textFile(name, text)]);
+    expect(imported.orientation.twoSided).toBe(1);
+    expect(open.floor).toBeGreaterThan(10);
+    expect(open.ceiling).toBeGreaterThan(10);
+    const floor = meanLux(baker.bake(scene(imported.mesh, 2.8), settings).maps, 'floor', 'direct', inside);
+    const ceiling = meanLux(baker.bake(scene(imported.mesh, 1.2), settings).maps, 'ceiling', 'direct', inside);
+    expect(floor).toBeLessThanOrEqual(1e-6 * open.floor);
+    expect(ceiling).toBeLessThanOrEqual(1e-6 * open.ceiling);
   });
 });
 

@@ -133,7 +133,7 @@ describe('luxbox bake / probe', () => {
       'photometry /dev/zero',
       JSON.stringify({ version: 1, room: { width: 3, height: 2.5, depth: 2, reflectance: { floor: 0.2, ceiling: 0.8, north: 0.5, south: 0.5, west: 0.5, east: 0.5 } }, luminaires: [{ photometry: '/dev/zero', position: [1, 2, 1] }] }),
       [],
-      /^luxbox bake: scene\.json: luminaires\[0\]\.photometry: cannot read "\/dev\/zero" \(\/dev\/zero is outside the scene's folder and the current folder\)\n$/,
+      /^luxbox bake: scene\.json: luminaires\[0\]\.photometry: cannot read "\/dev\/zero" \(\/dev\/zero is outside the scene's folder \(give more with --allow\)\)\n$/,
     ],
     [
       'bad flag value',

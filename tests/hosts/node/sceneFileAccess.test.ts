@@ -2,14 +2,14 @@
  * Issue 32, "Files": the CLI read `/dev/zero` forever when a scene named it as photometry, as a
  * glTF buffer URI or as an OBJ `mtllib` (a character device reports size 0, so size checks from
  * stat passed). Now only regular files are read, the size cap holds while reading, and a scene
- * given on the command line may name files only in its own folder or the current folder
+ * given on the command line may name files only in its own folder, luxbox's public folder or a folder given with --allow
  * (docs/scene-format.md, "Which files a scene may name"). Each refusal is one line naming the
  * file and the reason, and comes at once.
  */
 import { execFileSync } from 'node:child_process';
 import { copyFileSync, mkdirSync, mkdtempSync, readFileSync, rmSync, symlinkSync, truncateSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { join, resolve } from 'node:path';
+import { delimiter, join, resolve } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { MAX_PHOTOMETRY_BYTES } from '../../../src/core/photometry/limits';
 import { cliReadableFolders } from '../../../src/hosts/node/cliReadableFolders';
@@ -43,11 +43,11 @@ afterAll(() => rmSync(root, { recursive: true, force: true }));
 
 /** What each special name is, and the reason its refusal must give. */
 const SPECIALS: [name: string, reason: RegExp][] = [
-  ['/dev/zero', /\/dev\/zero is outside the scene's folder and the current folder/],
-  ['zero-link', /\/dev\/zero is outside the scene's folder and the current folder/],
+  ['/dev/zero', /\/dev\/zero is outside the scene's folder \(give more with --allow\)/],
+  ['zero-link', /\/dev\/zero is outside the scene's folder \(give more with --allow\)/],
   ['pipe', /a named pipe, not a regular file/],
   ['folder', /a directory, not a regular file/],
-  ['../outside.ies', /luxbox-files-\w+\/outside\.ies is outside the scene's folder and the current folder\)$/],
+  ['../outside.ies', /luxbox-files-\w+\/outside\.ies is outside the scene's folder \(give more with --allow\)\)$/],
 ];
 
 function writeScene(name: string, extra: object): string {
@@ -129,7 +129,7 @@ describe('a scene names a file that is not a regular file, too large, or outside
     }
   }, 10_000);
 
-  it('a scene and its files in its own folder load; so do the fixtures that reach into public/ from the current folder', async () => {
+  it('a scene and its files in its own folder load; so do the fixtures that reach into luxbox’s public/ folder', async () => {
     copyFileSync(join(MODELS, 'table.obj'), join(folder, 'table.obj'));
     copyFileSync(join(MODELS, 'table.mtl'), join(folder, 'table.mtl'));
     const scene = writeScene('good', { objects: [{ mesh: 'table.obj', position: [1.5, 0, 1.5] }] });
@@ -138,6 +138,21 @@ describe('a scene names a file that is not a regular file, too large, or outside
     expect(loaded.meshes.get('table.obj')!.warnings).toEqual([]);
     const fixture = 'tests/fixtures/models/furnished-room.json';
     expect((await loadLightingSceneFileAsync(fixture, { within: cliReadableFolders(fixture) })).bakeScene.objects).toHaveLength(2);
+  });
+
+  it('a file in the current folder but outside the scene’s is refused (a scene run from a home folder cannot name ../.ssh/…); --allow opens more folders', async () => {
+    // The current folder is the repository: the fixture lies in it, not in the scene's folder or public/.
+    const elsewhere = resolve('tests/fixtures/photometry/lumens_mismatch_60x.ies');
+    const scene = writeScene('cwd', { luminaires: [{ photometry: elsewhere, position: [1, 2.4, 1] }] });
+    const { message } = await refusal(scene);
+    expect(message).toMatch(/^cwd\.json: luminaires\[0\]\.photometry: cannot read ".* \(.*lumens_mismatch_60x\.ies is outside the scene's folder/);
+    expect(() => readRegularFile(elsewhere, { maxBytes: MAX_PHOTOMETRY_BYTES, within: cliReadableFolders(scene) })).toThrow(`${elsewhere} is outside the scene's folder (give more with --allow)`);
+    // Given on the command line (--allow, several joined like PATH), the folder is read.
+    for (const allow of ['tests/fixtures/photometry', `${root}${delimiter}tests/fixtures`]) {
+      const loaded = await loadLightingSceneFileAsync(scene, { within: cliReadableFolders(scene, allow) });
+      expect(loaded.bakeScene.luminaires).toHaveLength(1);
+    }
+    expect(cliReadableFolders(scene, `${root}${delimiter}`)).toHaveLength(3); // the scene's folder, public/, root
   });
 
   it('a missing MTL library stays a warning (grey materials), as before', async () => {
@@ -176,7 +191,7 @@ describe('readRegularFile', () => {
   it('refuses a file outside the given folders once links are resolved', () => {
     const within = cliReadableFolders(join(folder, 'x.json'));
     expect(() => readRegularFile(join(root, 'outside.ies'), { maxBytes: MAX_PHOTOMETRY_BYTES, within })).toThrow(/outside the scene's folder/);
-    expect(() => readRegularFile(join(folder, 'zero-link'), { maxBytes: 1000, within })).toThrow(/^\/dev\/zero is outside the scene's folder and the current folder$/);
+    expect(() => readRegularFile(join(folder, 'zero-link'), { maxBytes: 1000, within })).toThrow(/^\/dev\/zero is outside the scene's folder \(give more with --allow\)$/);
     expect(readRegularFile(join(folder, 'lamp.ies'), { maxBytes: MAX_PHOTOMETRY_BYTES, within }).length).toBeGreaterThan(0);
   });
 });
