@@ -58,6 +58,15 @@ export function realFolders(folders: readonly string[]): string[] {
  * message is the reason alone ("no such file", "a character device, not a regular file", …): the
  * caller names the file.
  */
+/**
+ * A resolved path as the refusal quotes it: its last 40 characters. The caller already names the
+ * file as the scene wrote it, and the message is one line of at most 200 characters, so a long
+ * absolute path must not push the reason itself off its end.
+ */
+function pathTail(path: string): string {
+  return path.length > 40 ? `…${path.slice(-39)}` : path;
+}
+
 export function readRegularFile(path: string, limits: ReadLimits): Uint8Array {
   let real: string;
   try {
@@ -67,7 +76,7 @@ export function readRegularFile(path: string, limits: ReadLimits): Uint8Array {
     throw new InputError(code === 'ENOENT' ? 'no such file' : (code ?? 'read error'));
   }
   if (limits.within && !limits.within.some((folder) => inside(real, folder))) {
-    throw new InputError(`${real} is outside the scene's folder (give more with --allow)`);
+    throw new InputError(`${pathTail(real)} is outside the scene's folder (give more with --allow)`);
   }
   let fd: number;
   try {

@@ -140,13 +140,25 @@ describe('a scene names a file that is not a regular file, too large, or outside
     expect((await loadLightingSceneFileAsync(fixture, { within: cliReadableFolders(fixture) })).bakeScene.objects).toHaveLength(2);
   });
 
+  it('a long absolute path keeps the reason inside the one-line message (the resolved path is cut from its start)', async () => {
+    const deep = mkdtempSync(join(tmpdir(), 'luxbox-deep-'));
+    const folder = join(deep, 'a-folder-with-a-long-name-'.repeat(4), 'and-another-one-below-it');
+    mkdirSync(folder, { recursive: true });
+    const far = join(folder, 'lamp.ies');
+    writeFileSync(far, readFileSync('tests/fixtures/photometry/lumens_mismatch_60x.ies'));
+    const scene = writeScene('deep', { luminaires: [{ photometry: far, position: [1, 2.4, 1] }] });
+    const { message } = await refusal(scene);
+    expect(far.length).toBeGreaterThan(150);
+    expect(message).toMatch(/…[^ ]*lamp\.ies is outside the scene's folder \(give more with --allow\)\)$/);
+  });
+
   it('a file in the current folder but outside the scene’s is refused (a scene run from a home folder cannot name ../.ssh/…); --allow opens more folders', async () => {
     // The current folder is the repository: the fixture lies in it, not in the scene's folder or public/.
     const elsewhere = resolve('tests/fixtures/photometry/lumens_mismatch_60x.ies');
     const scene = writeScene('cwd', { luminaires: [{ photometry: elsewhere, position: [1, 2.4, 1] }] });
     const { message } = await refusal(scene);
     expect(message).toMatch(/^cwd\.json: luminaires\[0\]\.photometry: cannot read ".* \(.*lumens_mismatch_60x\.ies is outside the scene's folder/);
-    expect(() => readRegularFile(elsewhere, { maxBytes: MAX_PHOTOMETRY_BYTES, within: cliReadableFolders(scene) })).toThrow(`${elsewhere} is outside the scene's folder (give more with --allow)`);
+    expect(() => readRegularFile(elsewhere, { maxBytes: MAX_PHOTOMETRY_BYTES, within: cliReadableFolders(scene) })).toThrow(/lumens_mismatch_60x\.ies is outside the scene's folder \(give more with --allow\)$/);
     // Given on the command line (--allow, several joined like PATH), the folder is read.
     for (const allow of ['tests/fixtures/photometry', `${root}${delimiter}tests/fixtures`]) {
       const loaded = await loadLightingSceneFileAsync(scene, { within: cliReadableFolders(scene, allow) });
