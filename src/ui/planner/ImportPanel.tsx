@@ -39,7 +39,7 @@ export interface ImportPanelProps {
  * until the user adds the model.
  */
 export function ImportPanel({ onAdd, picked: pickedEarly }: ImportPanelProps) {
-  const { t, format } = useI18n();
+  const { t } = useI18n();
   const [files, setFiles] = useState<MeshFile[] | null>(null);
   const [model, setModel] = useState<ImportedMesh | null>(null);
   const [error, setError] = useState<string | null>(null);
@@ -95,7 +95,6 @@ export function ImportPanel({ onAdd, picked: pickedEarly }: ImportPanelProps) {
     else cancel();
   };
 
-  const b = model?.bounds;
   return (
     <div className="import-model" data-testid="import-panel">
       <ImportPicker onPick={(list) => void pick(list)} />
@@ -109,42 +108,57 @@ export function ImportPanel({ onAdd, picked: pickedEarly }: ImportPanelProps) {
           {error}
         </p>
       )}
-      {model && files && b && (
-        <div className="import-preview" data-testid="import-preview">
-          <p className="preset-name">{model.name}</p>
-          <p className="preset-detail" data-testid="import-triangles">
-            {t('files.triangles', { count: model.triangleCount })} · {itemDimensions({ width: b.max[0] - b.min[0], depth: b.max[2] - b.min[2], height: b.max[1] - b.min[1] }, 1, format)}
-          </p>
-          <div className="field">
-            <label htmlFor="import-units">{t('files.unitsOfFile', { detected: model.detectedUnits })}</label>
-            <select id="import-units" value={model.units} data-testid="import-units" onChange={(e) => void read(files, e.target.value as MeshUnits)}>
-              {MESH_UNITS.map((u) => (
-                <option key={u} value={u}>
-                  {u === model.detectedUnits ? t('files.unitDetected', { unit: t(UNIT_NAMES[u]) }) : t(UNIT_NAMES[u])}
-                </option>
-              ))}
-            </select>
-          </div>
-          <Suspense fallback={null}>
-            <ImportOrientation orientation={model.orientation} />
-          </Suspense>
-          {model.warnings.length > 0 && (
-            <ul className="import-warnings" aria-label={t('files.importWarnings')}>
-              {model.warnings.map((w) => (
-                <li key={w}>{w}</li>
-              ))}
-            </ul>
-          )}
-          <div className="setup-actions">
-            <button type="button" className="btn btn-primary" onClick={add} disabled={busy} data-testid="import-add">
-              {t('files.addToRoom')}
-            </button>
-            <button type="button" className="btn" onClick={cancel}>
-              {t('common.cancel')}
-            </button>
-          </div>
-        </div>
+      {model && files && model.bounds && <ImportPreview model={model} busy={busy} onUnits={(units) => void read(files, units)} onAdd={add} onCancel={cancel} />}
+    </div>
+  );
+}
+
+interface ImportPreviewProps {
+  model: ImportedMesh;
+  busy: boolean;
+  onUnits: (units: MeshUnits) => void;
+  onAdd: () => void;
+  onCancel: () => void;
+}
+
+/** What was read, before anything is added: name, triangles, size, the unit (detected, changeable), orientation, warnings. */
+function ImportPreview({ model, busy, onUnits, onAdd, onCancel }: ImportPreviewProps) {
+  const { t, format } = useI18n();
+  const b = model.bounds;
+  return (
+    <div className="import-preview" data-testid="import-preview">
+      <p className="preset-name">{model.name}</p>
+      <p className="preset-detail" data-testid="import-triangles">
+        {t('files.triangles', { count: model.triangleCount })} · {itemDimensions({ width: b.max[0] - b.min[0], depth: b.max[2] - b.min[2], height: b.max[1] - b.min[1] }, 1, format)}
+      </p>
+      <div className="field">
+        <label htmlFor="import-units">{t('files.unitsOfFile', { detected: model.detectedUnits })}</label>
+        <select id="import-units" value={model.units} data-testid="import-units" onChange={(e) => onUnits(e.target.value as MeshUnits)}>
+          {MESH_UNITS.map((u) => (
+            <option key={u} value={u}>
+              {u === model.detectedUnits ? t('files.unitDetected', { unit: t(UNIT_NAMES[u]) }) : t(UNIT_NAMES[u])}
+            </option>
+          ))}
+        </select>
+      </div>
+      <Suspense fallback={null}>
+        <ImportOrientation orientation={model.orientation} />
+      </Suspense>
+      {model.warnings.length > 0 && (
+        <ul className="import-warnings" aria-label={t('files.importWarnings')}>
+          {model.warnings.map((w) => (
+            <li key={w}>{w}</li>
+          ))}
+        </ul>
       )}
+      <div className="setup-actions">
+        <button type="button" className="btn btn-primary" onClick={onAdd} disabled={busy} data-testid="import-add">
+          {t('files.addToRoom')}
+        </button>
+        <button type="button" className="btn" onClick={onCancel}>
+          {t('common.cancel')}
+        </button>
+      </div>
     </div>
   );
 }
