@@ -48,6 +48,10 @@ export interface L3dBody {
   dofs: readonly L3dDof[];
   /** The light-emitting object the photometry belongs to. */
   primary: string;
+  /** That object (its shape is the near field's luminous opening, l3dOpening.ts). */
+  primaryObject: L3dLightEmittingObject;
+  /** That object's local x (its Rectangle's sizeX side) in the reference pose, luxbox frame of the body: which way the opening lies. */
+  primaryAxisX: Vec3;
   /** Joint angles aiming straight down with the swivel at 0. */
   reference: JointAngles;
   /** The primary object's centre in the reference pose, in the rest meshes' frame: subtracted from every vertex. */
@@ -196,12 +200,29 @@ export function aimJoints(body: Pick<L3dBody, 'luminaire' | 'dofs' | 'primary'>,
   return withAngles(base, dofs, best);
 }
 
-/** Prepares an L3D luminaire's parts (readL3dMeshes) for drawing: its degrees of freedom, reference pose, origin, emitting areas and height. */
-export function l3dBody(luminaire: L3dLuminaire, parts: readonly L3dPartMesh[]): L3dBody {
+/**
+ * The light-emitting object the photometry belongs to: the one named `emitter` (a GLDF
+ * EmitterObjectExternalName, catalog `modelEmitter`), else the first facing down at rest, else the first.
+ */
+function primaryObject(luminaire: L3dLuminaire, leos: Leo[], rest: Map<string, Affine>, emitter: string | undefined): Leo {
+  if (emitter !== undefined) {
+    const named = leos.find((l) => l.object.partName === emitter);
+    if (!named) throw new GldfError(`${luminaire.source}: no LightEmittingObject '${emitter}' (it has ${leos.map((l) => `'${l.object.partName}'`).join(', ')})`);
+    return named;
+  }
+  return leos.find((l) => leoPose(rest, l.object.partName).normal[1] < 0) ?? leos[0];
+}
+
+/**
+ * Prepares an L3D luminaire's parts (readL3dMeshes) for drawing: its degrees of freedom, reference
+ * pose, origin, emitting areas and height. `emitter` names the light-emitting object the
+ * photometry belongs to (catalog `modelEmitter`); absent: the first facing down.
+ */
+export function l3dBody(luminaire: L3dLuminaire, parts: readonly L3dPartMesh[], emitter?: string): L3dBody {
   const leos = lightEmittingObjects(luminaire);
   if (leos.length === 0) throw new GldfError(`${luminaire.source}: no LightEmittingObject: the photometric centre is unknown`);
   const rest = frames(luminaire, new Map());
-  const primary = leos.find((l) => leoPose(rest, l.object.partName).normal[1] < 0) ?? leos[0];
+  const primary = primaryObject(luminaire, leos, rest, emitter);
   const candidates: L3dDof[] = primary.chain.flatMap((j) => j.axes.map((a) => ({ joint: j.partName, axis: a.axis, min: a.min, max: a.max, vertical: false })));
   const dofs = candidates.slice(0, 2).map((d) => {
     // The axis in the luxbox frame at rest: vertical when within about 8° of y.
@@ -211,14 +232,16 @@ export function l3dBody(luminaire: L3dLuminaire, parts: readonly L3dPartMesh[]):
   const partial = { luminaire, dofs, primary: primary.object.partName };
   const reference = aimJoints(partial, [0, -1, 0], 0);
   const f = frames(luminaire, reference);
-  const origin = leoPose(f, primary.object.partName).centre;
+  const primaryPose = leoPose(f, primary.object.partName);
+  const origin = primaryPose.centre;
+  const primaryAxisX = turn(primaryPose.frame, [1, 0, 0]);
   const emitterArea = { down: 0, up: 0 };
   for (const { object } of leos) {
     const area = object.shape.kind === 'rectangle' ? object.shape.sizeX * object.shape.sizeY : (Math.PI * object.shape.diameter ** 2) / 4;
     if (leoPose(f, object.partName).normal[1] > 0) emitterArea.up += area;
     else emitterArea.down += area;
   }
-  const body: L3dBody = { luminaire, parts, dofs, primary: primary.object.partName, reference, origin, emitterArea, top: 0 };
+  const body: L3dBody = { luminaire, parts, dofs, primary: primary.object.partName, primaryObject: primary.object, primaryAxisX, reference, origin, emitterArea, top: 0 };
   let top = 0;
   for (const p of poseL3dBody(body, reference).parts) for (let i = 1; i < p.positions.length; i += 3) top = Math.max(top, p.positions[i]);
   return { ...body, top };
