@@ -14,7 +14,7 @@ import { GldfError, quoteName } from './GldfError';
 import type { FluxCheck, ProductReport } from './gldfImportReport';
 import { DEFAULT_RAIL_MOUNTINGS, type GldfBeamMapping, type GldfProductMapping } from './gldfMapping';
 import type { GldfFile, GldfProduct, GldfVariant, LocaleTexts } from './gldfProduct';
-import { l3dAimLimits, l3dModelOf } from './l3dModelOf';
+import { checkEmitterObjects, l3dAimLimits, l3dModelOf } from './l3dModelOf';
 import type { UploadZip } from './readUploadZip';
 
 /** Defaults for what neither the GLDF nor the mapping gives (docs/gldf.md, "Defaults"). */
@@ -228,6 +228,11 @@ export function gldfToModuleType(product: GldfProduct, zip: UploadZip, options: 
     report.files.push(model.path);
     const others = used.filter((u) => u.variant.geometryId !== lead.geometryId).map((u) => u.variant.id);
     if (others.length) report.notes.push(`variants ${others.join(', ')} name another geometry; the type is drawn with ${lead.id}'s (${model.entry})`);
+    model.emitterObject = checkEmitterObjects(
+      product,
+      model,
+      used.filter((u) => u.variant.geometryId === lead.geometryId).map((u) => u.variant),
+    );
   }
   const adjustable = adjustableFor(lead, map, assume, model ? { limits: l3dAimLimits(model.luminaire), entry: model.entry, note: (n) => report.notes.push(n) } : null);
   if (map.filterHolder === undefined) assume('filterHolder', 'none', 'GLDF does not say whether a colour filter fits (mapping: filterHolder)');
@@ -251,6 +256,7 @@ export function gldfToModuleType(product: GldfProduct, zip: UploadZip, options: 
     ...(map.filterHolder ? { filterHolder: true } : {}),
     ...(adjustable ? { adjustable } : {}),
     ...(model ? { model: model.path } : {}),
+    ...(model?.emitterObject !== undefined ? { modelEmitter: model.emitterObject } : {}),
   };
   report.typeId = typeId;
   return { type, files, report };

@@ -5,8 +5,9 @@
  * aiming ranges its joints give.
  */
 import type { ModuleTypeSpec } from '../model/catalogSchema/moduleTypeSchema';
+import { GldfError, quoteName } from './GldfError';
 import type { GldfProduct, GldfVariant } from './gldfProduct';
-import { l3dJoints, readL3dStructure, type L3dLuminaire } from './readL3dStructure';
+import { l3dJoints, readL3dStructure, type L3dGeometryNode, type L3dLuminaire } from './readL3dStructure';
 import type { UploadZip } from './readUploadZip';
 
 export interface ProductModel {
@@ -16,6 +17,32 @@ export interface ProductModel {
   luminaire: L3dLuminaire;
   /** The container entry it came from. */
   entry: string;
+  /** The light-emitting object the lead variant's emitter names (EmitterObjectExternalName), checked to exist; the catalog's `modelEmitter`. */
+  emitterObject?: string;
+}
+
+/** Every LightEmittingObject's partName, depth first. */
+export function l3dLightEmittingObjectNames(nodes: readonly L3dGeometryNode[]): string[] {
+  return nodes.flatMap((n) => [...n.lightEmittingObjects.map((o) => o.partName), ...n.joints.flatMap((j) => l3dLightEmittingObjectNames(j.geometries))]);
+}
+
+/**
+ * The EmitterObjectExternalName of each variant drawn with `model` must name one of its
+ * LightEmittingObjects (docs/gldf.md "Which object emits"): refused otherwise, naming the product,
+ * the variant and the missing name. Returns the lead variant's (its first emitter's), if any.
+ */
+export function checkEmitterObjects(product: GldfProduct, model: Pick<ProductModel, 'luminaire' | 'entry'>, variants: readonly GldfVariant[]): string | undefined {
+  const known = l3dLightEmittingObjectNames(model.luminaire.structure);
+  for (const v of variants) {
+    for (const name of v.emitterObjects?.values() ?? []) {
+      if (!known.includes(name)) {
+        const has = known.length ? `it has ${known.slice(0, 3).map((k) => quoteName(k, 30)).join(', ')}${known.length > 3 ? ', …' : ''}` : 'it has none';
+        throw new GldfError(`${product.source}: product ${quoteName(product.uniqueProductId, 40)}: Variant ${quoteName(v.id, 40)}: EmitterObjectExternalName ${quoteName(name, 40)} is no LightEmittingObject of ${quoteName(model.entry, 40)} (${has})`);
+      }
+    }
+  }
+  const lead = variants[0];
+  return lead ? lead.emitterObjects?.get(lead.emitterIds[0]) : undefined;
 }
 
 /** The L3D a variant is drawn with (its ModelGeometry's first local L3D file), or null. */
