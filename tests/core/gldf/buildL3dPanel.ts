@@ -5,7 +5,9 @@
  *   faces 0 and 1 are the two triangles of the bottom (z = 0), faces 2 and 3 the top;
  * - light-emitting object `panel` on the bottom, z = 0: a Rectangle sizeX × sizeY (default 0.6 ×
  *   0.3 m), turned about z by `turn` degrees;
- * - with `surfaces`, a LightEmittingSurface `diffuser` assigning the bottom's faces 0–1 to `panel`.
+ * - with `surfaces`, a LightEmittingSurface `diffuser` assigning the bottom's faces 0–1 to `panel`
+ *   (or the `faces` given), so the glowing area is the housing's bottom, 0.62 × 0.32 m, not the
+ *   object's 0.6 × 0.3 m.
  */
 import { zipSync } from 'fflate';
 import { encode } from './buildL3d';
@@ -17,11 +19,15 @@ export interface PanelOptions {
   turn?: number;
   /** Give the housing's bottom faces as a LightEmittingSurface. */
   surfaces?: boolean;
+  /** The surface's FaceAssignments content instead of the bottom's range 0–1. */
+  faces?: string;
+  /** The housing OBJ instead of the box. */
+  housing?: Uint8Array;
   /** The object's name. */
   name?: string;
 }
 
-const HOUSING = encode(
+export const HOUSING = encode(
   [
     'v -310 -160 0',
     'v 310 -160 0',
@@ -54,7 +60,7 @@ export function panelStructure(o: PanelOptions = {}): string {
       <LightEmittingSurfaces>
         <LightEmittingSurface partName="diffuser">
           <LightEmittingObjectReference lightEmittingPartName="${name}"/>
-          <FaceAssignments><FaceRangeAssignment faceIndexBegin="0" faceIndexEnd="1"/></FaceAssignments>
+          <FaceAssignments>${o.faces ?? '<FaceRangeAssignment faceIndexBegin="0" faceIndexEnd="1"/>'}</FaceAssignments>
         </LightEmittingSurface>
       </LightEmittingSurfaces>`
     : '';
@@ -81,5 +87,5 @@ export function panelStructure(o: PanelOptions = {}): string {
 }
 
 export function panelL3d(o: PanelOptions = {}): Uint8Array {
-  return zipSync({ 'structure.xml': encode(panelStructure(o)), 'housing/housing.obj': HOUSING }, { mtime: new Date('2026-11-27T08:00:00Z') });
+  return zipSync({ 'structure.xml': encode(panelStructure(o)), 'housing/housing.obj': o.housing ?? HOUSING }, { mtime: new Date('2026-11-27T08:00:00Z') });
 }

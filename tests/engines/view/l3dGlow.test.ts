@@ -1,8 +1,10 @@
 /**
  * An L3D body's light-emitting object glows at its real luminance (docs/gldf.md "L3D in the 3D
  * view"): the hand-made track spot (buildL3dSpot.ts: a Ø 50 mm lens) drawn by the room's hardware on
- * headless-gl, seen from 10 cm below the lens so its face fills the view. Before the tone curve the
- * pixel is L × weight × exposure with L = Φ↓/(π·A), A = π·(0.05 m)²/4 the lens's area and Φ↓ the
+ * headless-gl, seen from 10 cm below the lens so its face fills the view, and the same for the panel
+ * (buildL3dPanel.ts) whose LightEmittingSurface (the housing's bottom faces) glows. Before the tone
+ * curve the pixel is L × weight × exposure with L = Φ↓/(π·A), A the area worked out by hand
+ * (π·(0.05 m)²/4 for the lens, 0.62 × 0.32 m for the faces) and Φ↓ the
  * downward flux integrated from the photometry (an independent sum, not the code's emitterLuminance);
  * on screen it is the room's display transform of that (displayColor), within one 8-bit step.
  */
@@ -20,6 +22,7 @@ import { l3dOpening } from '../../../src/engines/view/luminaires/l3dOpening';
 import { readL3dBody } from '../../../src/engines/view/luminaires/readL3dBody';
 import { createRoomView } from '../../../src/engines/view/roomView';
 import { displayColor } from '../../../src/engines/view/toneMap';
+import { panelL3d } from '../../core/gldf/buildL3dPanel';
 import { spotL3d } from '../../core/gldf/buildL3dSpot';
 import { headlessRenderer } from './headlessRenderer';
 
@@ -37,10 +40,13 @@ function downwardFlux(ph: Parameters<typeof intensity>[0]): number {
   return sum * ((dg * Math.PI) / 180) * ((dc * Math.PI) / 180);
 }
 
-describe('the L3D lens on screen (three.js on headless-gl)', () => {
+describe.each([
+  { what: 'the track spot’s lens (a Circle, Ø 50 mm)', bytes: spotL3d(), area: (Math.PI * 0.05 ** 2) / 4 },
+  { what: 'the panel’s LightEmittingSurface (the housing’s 0.62 × 0.32 m bottom, not its 0.6 × 0.3 m object)', bytes: panelL3d({ surfaces: true }), area: 0.62 * 0.32 },
+])('$what on screen (three.js on headless-gl)', ({ bytes, area }) => {
   const renderer = headlessRenderer(W, H);
   const gl = renderer.getContext();
-  const body = readL3dBody(spotL3d(), 'spot.l3d');
+  const body = readL3dBody(bytes, 'test.l3d');
   const ph = parsePhotometry(readFileSync('public/ies/bega_50975_downlight_lm1995_crlf.ies'), 'bega.ies');
   const weight: Rgb = [0.5 * 1.2, 0.5 * 1.0, 0.5 * 0.7];
   const module = (on: boolean): FixtureModule => ({
@@ -49,14 +55,13 @@ describe('the L3D lens on screen (three.js on headless-gl)', () => {
     heading: 0,
     length: 0.15,
     on,
-    kind: 'track-spot',
+    kind: 'spot',
     orientation: { yaw: 0, pitch: 0, roll: 0 },
     mount: 0,
     light: { opening: l3dOpening(body, 0), flux: hemisphereFlux(ph), weight },
     body,
   });
   const fixtures = (on: boolean): Fixtures => ({ rails: [], railWidth: 0, connectors: [], cables: [], modules: [module(on)] });
-  const area = (Math.PI * 0.05 ** 2) / 4;
   const L = downwardFlux(ph) / (Math.PI * area);
   // 10 cm under the lens (beyond the view's near plane) with a 20° field: the view's half-width there is 17.6 mm, inside the 25 mm radius.
   const pose = { position: [0, 1.9, 0.0005] as Vec3, target: [0, 2, 0] as Vec3, fov: 20 };
