@@ -36,8 +36,15 @@ export function checkEmitterObjects(product: GldfProduct, model: Pick<ProductMod
   for (const v of variants) {
     for (const name of v.emitterObjects?.values() ?? []) {
       if (!known.includes(name)) {
-        const has = known.length ? `it has ${known.slice(0, 3).map((k) => quoteName(k, 30)).join(', ')}${known.length > 3 ? ', …' : ''}` : 'it has none';
-        throw new GldfError(`${product.source}: product ${quoteName(product.uniqueProductId, 40)}: Variant ${quoteName(v.id, 40)}: EmitterObjectExternalName ${quoteName(name, 40)} is no LightEmittingObject of ${quoteName(model.entry, 40)} (${has})`);
+        const has = known.length
+          ? `it has ${known
+              .slice(0, 3)
+              .map((k) => quoteName(k, 30))
+              .join(', ')}${known.length > 3 ? ', …' : ''}`
+          : 'it has none';
+        throw new GldfError(
+          `${product.source}: product ${quoteName(product.uniqueProductId, 40)}: Variant ${quoteName(v.id, 40)}: EmitterObjectExternalName ${quoteName(name, 40)} is no LightEmittingObject of ${quoteName(model.entry, 40)} (${has})`,
+        );
       }
     }
   }

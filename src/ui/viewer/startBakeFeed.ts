@@ -90,7 +90,13 @@ export function startBakeFeed(store: ConfiguratorStore, loadPhotometry: (path: s
         if (n !== sequence || disposed) return;
         settled = n;
         // An L3D body's light-emitting object is the near field's opening (docs/gldf.md "The L3D's opening in the near field").
-        const bake = withModelOpenings(resolved, scene.luminaires.map((l) => l.id ?? ''), config, catalog, bodies);
+        const bake = withModelOpenings(
+          resolved,
+          scene.luminaires.map((l) => l.id ?? ''),
+          config,
+          catalog,
+          bodies,
+        );
         const files = new Map<string, PhotometryNote>();
         scene.luminaires.forEach((l, i) => {
           if (!files.has(l.photometry)) files.set(l.photometry, { file: l.photometry, warnings: photometryWarnings(bake.luminaires[i].photometry) });

@@ -70,7 +70,7 @@ function splitIlluminance(ph: Photometry, px: number, h: number, pz: number): nu
     const r = Math.hypot(d[0], d[1], d[2]);
     const gamma = (Math.acos(h / r) * 180) / Math.PI;
     const c = (Math.atan2(-d[2], d[0]) * 180) / Math.PI;
-    e += (intensity(ph, gamma, c) / points.length) * (h / r) / (r * r);
+    e += ((intensity(ph, gamma, c) / points.length) * (h / r)) / (r * r);
   }
   return e;
 }
@@ -154,9 +154,16 @@ describe('withModelOpenings: the bake scene of a configuration with an imported 
     c = run(c, 'addModule', { railId, type: 'track-spot' }, catalog);
     const scene = toLightingScene(c, catalog);
     const demo = parsePhotometry(readFileSync('public/ies/bega_50975_downlight_lm1995_crlf.ies'), 'demo.ies');
-    const types = new Map(only(c).rails.flatMap((r) => r.modules).map((m) => [m.id, m.type]));
+    const types = new Map(
+      only(c)
+        .rails.flatMap((r) => r.modules)
+        .map((m) => [m.id, m.type]),
+    );
     const ids = scene.luminaires.map((l) => l.id ?? '');
-    const bake = { room: { width: 8, height: 3, depth: 6, reflectance: { floor: 0.2, ceiling: 0.8, north: 0.5, south: 0.5, east: 0.5, west: 0.5 } }, luminaires: scene.luminaires.map((l) => ({ ...l, photometry: types.get(l.id ?? '') === 'track-spot' ? spotPhotometry : demo })) } as unknown as BakeScene;
+    const bake = {
+      room: { width: 8, height: 3, depth: 6, reflectance: { floor: 0.2, ceiling: 0.8, north: 0.5, south: 0.5, east: 0.5, west: 0.5 } },
+      luminaires: scene.luminaires.map((l) => ({ ...l, photometry: types.get(l.id ?? '') === 'track-spot' ? spotPhotometry : demo })),
+    } as unknown as BakeScene;
     const out = withModelOpenings(bake, ids, c, catalog, new Map([[modelBodyKey(type)!, body]]));
     const spots = out.luminaires.filter((_, i) => types.get(ids[i]) === 'track-spot');
     expect(spots).toHaveLength(2);

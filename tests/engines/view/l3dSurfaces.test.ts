@@ -62,7 +62,9 @@ describe('LightEmittingSurfaces', () => {
     const both = body({ surfaces: true, faces: '<FaceRangeAssignment faceIndexBegin="0" faceIndexEnd="3"/>' });
     expect(both.emitterArea).toEqual({ down: expect.closeTo(BOTTOM, 6), up: expect.closeTo(BOTTOM, 6) });
     expect(l3dOpening(both, 0)).toEqual({ width: 0.62, length: 0.32, height: 0.04, shape: 'rectangular' });
-    const sides = l3dLuminaireModel(both, placement).model.parts.filter((p) => p.role === 'emitter').map((p) => p.side);
+    const sides = l3dLuminaireModel(both, placement)
+      .model.parts.filter((p) => p.role === 'emitter')
+      .map((p) => p.side);
     expect(sides.sort()).toEqual([-1, 1]);
   });
 
@@ -78,6 +80,8 @@ describe('LightEmittingSurfaces', () => {
       "panel.l3d: LightEmittingSurface 'diffuser' (entry 'housing/housing.obj'): face 12 does not exist (12 faces)",
     );
     expect(() => readL3dBody(zipSync({ 'structure.xml': encode(xml), 'housing/housing.obj': grouped }), 'g.l3d')).not.toThrow();
-    expect(() => readL3dBody(zipSync({ 'structure.xml': encode(panelStructure({ surfaces: true, faces: '<FaceAssignment groupIndex="2" faceIndex="0"/>' })), 'housing/housing.obj': grouped }), 'g.l3d')).toThrow('face 0 of group 2 does not exist (0 faces of group 2)');
+    expect(() => readL3dBody(zipSync({ 'structure.xml': encode(panelStructure({ surfaces: true, faces: '<FaceAssignment groupIndex="2" faceIndex="0"/>' })), 'housing/housing.obj': grouped }), 'g.l3d')).toThrow(
+      'face 0 of group 2 does not exist (0 faces of group 2)',
+    );
   });
 });
