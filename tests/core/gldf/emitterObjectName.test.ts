@@ -95,3 +95,17 @@ describe('EmitterObjectExternalName', () => {
     expect(() => readL3dBody(spotL3d(WITH_UPLIGHT), 'spot.l3d', 'lense')).toThrow("spot.l3d: no LightEmittingObject 'lense' (it has 'uplight', 'lens')");
   });
 });
+
+describe("the import report names a header opening that differs from the L3D's", () => {
+  it('one note per beam whose photometric header disagrees with the lens', () => {
+    const report = importGldfCatalog(base, [{ name: 'spot.gldf', bytes: gldfBytes(trackSpotSpec()) }], mapping).report.products[0];
+    expect(report.notes.filter((n) => n.includes('luminous opening'))).toEqual([
+      "beam narrow: the photometry's luminous opening is Ø 150 mm, the L3D's light-emitting object 'lens' Ø 50 mm; the near field uses the L3D's",
+      "beam medium: the photometry's luminous opening is Ø 110 mm, the L3D's light-emitting object 'lens' Ø 50 mm; the near field uses the L3D's",
+      "beam wide: the photometry's luminous opening is Ø 80 mm, the L3D's light-emitting object 'lens' Ø 50 mm; the near field uses the L3D's",
+    ]);
+    // A lens as wide as the narrow beam's header (within 1 mm): no note for that beam.
+    const wide = importGldfCatalog(base, [{ name: 'spot.gldf', bytes: gldfBytes(spotNaming('lens', SPOT_STRUCTURE.replace('diameter="0.05"', 'diameter="0.1505"'))) }], mapping).report.products[0];
+    expect(wide.notes.filter((n) => n.includes('luminous opening')).map((n) => n.split(':')[0])).toEqual(['beam medium', 'beam wide']);
+  });
+});
