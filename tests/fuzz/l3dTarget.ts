@@ -11,8 +11,10 @@ import { unzipSync, zipSync } from 'fflate';
 import { GldfError } from '../../src/core/gldf/GldfError';
 import { readL3dStructure, type L3dGeometryNode } from '../../src/core/gldf/readL3dStructure';
 import { readL3dMeshes, type L3dMeshes } from '../../src/engines/meshImport/readL3dMeshes';
+import { readL3dEmittingFaces } from '../../src/engines/meshImport/readL3dEmittingFaces';
 import { l3dBody, type L3dBody } from '../../src/engines/view/luminaires/l3dBody';
 import { l3dLuminaireModel } from '../../src/engines/view/luminaires/l3dLuminaireModel';
+import { l3dOpening } from '../../src/engines/view/luminaires/l3dOpening';
 import { files, l3d } from '../core/gldf/buildL3d';
 import { nonFinitePaths } from './checks';
 import type { FuzzOutcome, FuzzSeed, FuzzTarget } from './fuzzTarget';
@@ -62,14 +64,16 @@ export const l3dFuzzTarget: FuzzTarget = {
       if (!positions.every(Number.isFinite)) problems.push(`part ${part.partName}: non-finite vertex`);
       if (indices.some((i) => i >= positions.length / 3)) problems.push(`part ${part.partName}: index beyond its vertices`);
     }
-    // The 3D view's body (l3dBody): prepared, then posed for an aim; every vertex and joint angle finite.
+    // The 3D view's body (l3dBody, with its light-emitting faces): prepared, its opening, then posed for an aim; every vertex and joint angle finite.
     let body: L3dBody;
     try {
-      body = l3dBody(luminaire, meshes.parts);
+      body = l3dBody(luminaire, meshes.parts, undefined, readL3dEmittingFaces(luminaire, zip));
     } catch (error) {
       if (error instanceof GldfError) return { kind: 'refused', message: error.message };
       throw error;
     }
+    const opening = l3dOpening(body, 90);
+    if (![opening.width, opening.length, opening.height].every((v) => Number.isFinite(v) && v >= 0)) problems.push('opening not finite');
     const { model, angles } = l3dLuminaireModel(body, { heading: 30, orientation: { yaw: 15, pitch: 40, roll: 0 }, mount: 0.3 });
     if (![...angles.values()].flat().every(Number.isFinite)) problems.push('non-finite joint angle');
     for (const p of model.parts) if (!p.positions.every(Number.isFinite) || !p.normals.every(Number.isFinite)) problems.push(`posed ${p.role}: non-finite vertex`);

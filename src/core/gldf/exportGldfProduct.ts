@@ -14,8 +14,8 @@ import type { BeamSpec, ModuleTypeSpec } from '../model/catalogSchema/moduleType
 import { GldfError } from './GldfError';
 import type { GldfProductMapping } from './gldfMapping';
 import { GLDF_DEFAULTS, catalogSlug, commonArticle } from './gldfToModuleType';
-import { l3dAimLimits } from './l3dModelOf';
-import { readL3dStructure, type L3dGeometryNode } from './readL3dStructure';
+import { l3dAimLimits, l3dLightEmittingObjectNames } from './l3dModelOf';
+import { readL3dStructure } from './readL3dStructure';
 
 export interface GldfExportOptions {
   /** GldfCreationTimeCode and the zip entries' time (a fixed one gives identical bytes run to run). */
@@ -88,18 +88,6 @@ function importedAdjustable(kinds: string[]): ModuleTypeSpec['adjustable'] {
   return { tilt: tilts ? { ...GLDF_DEFAULTS.tilt } : { min: 0, max: 0 }, rotation: turns ? { ...GLDF_DEFAULTS.rotation } : { min: 0, max: 0 } };
 }
 
-/** The first light-emitting object of an L3D tree, depth first: the one the emitters are said to be. */
-function firstLightEmittingObject(nodes: readonly L3dGeometryNode[]): string | undefined {
-  for (const n of nodes) {
-    if (n.lightEmittingObjects.length) return n.lightEmittingObjects[0].partName;
-    for (const j of n.joints) {
-      const found = firstLightEmittingObject(j.geometries);
-      if (found) return found;
-    }
-  }
-  return undefined;
-}
-
 export function exportGldfProduct(catalog: Catalog, typeId: string, options: GldfExportOptions): GldfExport {
   const type = catalog.moduleTypes.find((t) => t.id === typeId);
   if (!type) throw new GldfError(`catalog '${catalog.id}' has no module type '${typeId}' (its types: ${catalog.moduleTypes.map((t) => t.id).join(', ')})`);
@@ -125,8 +113,10 @@ export function exportGldfProduct(catalog: Catalog, typeId: string, options: Gld
       throw new GldfError(`module type '${type.id}': model ${type.model} cannot be read (${error instanceof Error ? error.message : String(error)})`);
     }
     const { luminaire } = readL3dStructure(bytes, `module type '${type.id}': model ${type.model}`);
-    const emitterObject = firstLightEmittingObject(luminaire.structure);
+    // The type's own emitter object (catalog `modelEmitter`, from the GLDF it came from), else the model's first.
+    const emitterObject = type.modelEmitter ?? l3dLightEmittingObjectNames(luminaire.structure)[0];
     if (!emitterObject) throw new GldfError(`module type '${type.id}': model ${type.model} has no LightEmittingObject for the emitters to name`);
+    if (!l3dLightEmittingObjectNames(luminaire.structure).includes(emitterObject)) throw new GldfError(`module type '${type.id}': modelEmitter '${emitterObject}' is no LightEmittingObject of ${type.model}`);
     const fileName = `${catalogSlug(type.id)}.l3d`;
     entries[`geo/${fileName}`] = bytes;
     files.push(`<File id="f-geometry" contentType="geo/l3d" type="localFileName">${esc(fileName)}</File>`);

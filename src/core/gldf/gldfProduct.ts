@@ -80,6 +80,8 @@ export interface GldfVariant {
   mountings: GldfMounting[] | null;
   /** Emitters the variant's Geometry names (one for a simple luminaire). */
   emitterIds: string[];
+  /** Per emitter id, the EmitterObjectExternalName of its ModelGeometryReference: the L3D light-emitting object it is. */
+  emitterObjects?: ReadonlyMap<string, string>;
   geometryId?: string;
   pictureFileIds: string[];
   /** DescriptiveAttributes/Mechanical/ProductSize, mm. */

@@ -14,7 +14,7 @@ import { GldfError, quoteName } from './GldfError';
 import type { FluxCheck, ProductReport } from './gldfImportReport';
 import { DEFAULT_RAIL_MOUNTINGS, type GldfBeamMapping, type GldfProductMapping } from './gldfMapping';
 import type { GldfFile, GldfProduct, GldfVariant, LocaleTexts } from './gldfProduct';
-import { l3dAimLimits, l3dModelOf } from './l3dModelOf';
+import { checkEmitterObjects, l3dAimLimits, l3dModelOf, openingNote } from './l3dModelOf';
 import type { UploadZip } from './readUploadZip';
 
 /** Defaults for what neither the GLDF nor the mapping gives (docs/gldf.md, "Defaults"). */
@@ -144,6 +144,7 @@ export function gldfToModuleType(product: GldfProduct, zip: UploadZip, options: 
   const files: ConvertedProduct['files'] = [];
   const beams: BeamSpec[] = [];
   const usedBeamIds = new Set<string>();
+  const openings: { beamId: string; opening: Photometry['luminousOpening'] }[] = [];
   for (const pid of beamOrder) {
     const mine = used.filter((a) => a.photometryId === pid);
     const bm: GldfBeamMapping = map.beams?.[pid] ?? {};
@@ -176,6 +177,7 @@ export function gldfToModuleType(product: GldfProduct, zip: UploadZip, options: 
     const watts = Math.max(...mine.map((a) => a.watts));
     if (mine.some((a) => a.watts !== watts)) report.notes.push(`beam ${beamId}: rated power differs by CCT; the largest, ${watts} W, sizes the drivers`);
     if (mine.some((a) => a.flux !== lead.flux)) report.notes.push(`beam ${beamId}: rated flux differs by CCT; the ${lead.cct} K variant's ${lead.flux} lm is the catalog's`);
+    openings.push({ beamId, opening: ph.luminousOpening });
     const angle = beamAngle(ph);
     const ext = lead.file.contentType === 'ldc/ies' ? 'ies' : 'ldt';
     const photometryPath = `ies/${typeId}-${beamId}.${ext}`;
@@ -228,6 +230,12 @@ export function gldfToModuleType(product: GldfProduct, zip: UploadZip, options: 
     report.files.push(model.path);
     const others = used.filter((u) => u.variant.geometryId !== lead.geometryId).map((u) => u.variant.id);
     if (others.length) report.notes.push(`variants ${others.join(', ')} name another geometry; the type is drawn with ${lead.id}'s (${model.entry})`);
+    model.emitterObject = checkEmitterObjects(
+      product,
+      model,
+      used.filter((u) => u.variant.geometryId === lead.geometryId).map((u) => u.variant),
+    );
+    for (const o of openings) report.notes.push(...[openingNote(model.luminaire, model.emitterObject, o.beamId, o.opening)].filter((n): n is string => n !== null));
   }
   const adjustable = adjustableFor(lead, map, assume, model ? { limits: l3dAimLimits(model.luminaire), entry: model.entry, note: (n) => report.notes.push(n) } : null);
   if (map.filterHolder === undefined) assume('filterHolder', 'none', 'GLDF does not say whether a colour filter fits (mapping: filterHolder)');
@@ -251,6 +259,7 @@ export function gldfToModuleType(product: GldfProduct, zip: UploadZip, options: 
     ...(map.filterHolder ? { filterHolder: true } : {}),
     ...(adjustable ? { adjustable } : {}),
     ...(model ? { model: model.path } : {}),
+    ...(model?.emitterObject !== undefined ? { modelEmitter: model.emitterObject } : {}),
   };
   report.typeId = typeId;
   return { type, files, report };

@@ -5,8 +5,10 @@
  * aiming ranges its joints give.
  */
 import type { ModuleTypeSpec } from '../model/catalogSchema/moduleTypeSchema';
+import type { Photometry } from '../photometry/types';
+import { GldfError, quoteName } from './GldfError';
 import type { GldfProduct, GldfVariant } from './gldfProduct';
-import { l3dJoints, readL3dStructure, type L3dLuminaire } from './readL3dStructure';
+import { l3dJoints, readL3dStructure, type L3dGeometryNode, type L3dLuminaire } from './readL3dStructure';
 import type { UploadZip } from './readUploadZip';
 
 export interface ProductModel {
@@ -16,6 +18,39 @@ export interface ProductModel {
   luminaire: L3dLuminaire;
   /** The container entry it came from. */
   entry: string;
+  /** The light-emitting object the lead variant's emitter names (EmitterObjectExternalName), checked to exist; the catalog's `modelEmitter`. */
+  emitterObject?: string;
+}
+
+/** Every LightEmittingObject's partName, depth first. */
+export function l3dLightEmittingObjectNames(nodes: readonly L3dGeometryNode[]): string[] {
+  return nodes.flatMap((n) => [...n.lightEmittingObjects.map((o) => o.partName), ...n.joints.flatMap((j) => l3dLightEmittingObjectNames(j.geometries))]);
+}
+
+/**
+ * The EmitterObjectExternalName of each variant drawn with `model` must name one of its
+ * LightEmittingObjects (docs/gldf.md "Which object emits"): refused otherwise, naming the product,
+ * the variant and the missing name. Returns the lead variant's (its first emitter's), if any.
+ */
+export function checkEmitterObjects(product: GldfProduct, model: Pick<ProductModel, 'luminaire' | 'entry'>, variants: readonly GldfVariant[]): string | undefined {
+  const known = l3dLightEmittingObjectNames(model.luminaire.structure);
+  for (const v of variants) {
+    for (const name of v.emitterObjects?.values() ?? []) {
+      if (!known.includes(name)) {
+        const has = known.length
+          ? `it has ${known
+              .slice(0, 3)
+              .map((k) => quoteName(k, 30))
+              .join(', ')}${known.length > 3 ? ', …' : ''}`
+          : 'it has none';
+        throw new GldfError(
+          `${product.source}: product ${quoteName(product.uniqueProductId, 40)}: Variant ${quoteName(v.id, 40)}: EmitterObjectExternalName ${quoteName(name, 40)} is no LightEmittingObject of ${quoteName(model.entry, 40)} (${has})`,
+        );
+      }
+    }
+  }
+  const lead = variants[0];
+  return lead ? lead.emitterObjects?.get(lead.emitterIds[0]) : undefined;
 }
 
 /** The L3D a variant is drawn with (its ModelGeometry's first local L3D file), or null. */
@@ -60,4 +95,36 @@ export function l3dAimLimits(luminaire: L3dLuminaire): ModuleTypeSpec['adjustabl
   const span = swivel ? swivel.max - swivel.min + (both ? 180 : 0) : both ? 180 : 0;
   const rotationRange = range(0, Math.min(355, span), swivel?.step ?? 0, 360, true);
   return { tilt: tiltRange, rotation: rotationRange };
+}
+
+function lightEmittingObject(nodes: readonly L3dGeometryNode[], name: string | undefined): L3dGeometryNode['lightEmittingObjects'][number] | undefined {
+  for (const n of nodes) {
+    const here = n.lightEmittingObjects.find((o) => name === undefined || o.partName === name);
+    if (here) return here;
+    for (const j of n.joints) {
+      const found = lightEmittingObject(j.geometries, name);
+      if (found) return found;
+    }
+  }
+  return undefined;
+}
+
+const mm = (m: number): string => `${Math.round(Math.abs(m) * 1e4) / 10}`;
+
+/**
+ * A report note where a beam's photometric header gives another luminous opening than the L3D's
+ * light-emitting object (`emitterObject`, else the first): the 3D view's near field uses the L3D's
+ * (docs/gldf.md "The L3D's opening in the near field"), so a shop sees which numbers it gets. Sizes
+ * agreeing within 1 mm (either way round) make no note.
+ */
+export function openingNote(luminaire: L3dLuminaire, emitterObject: string | undefined, beamId: string, opening: Photometry['luminousOpening']): string | null {
+  const object = lightEmittingObject(luminaire.structure, emitterObject);
+  if (!object) return null;
+  const [a, b] = object.shape.kind === 'circle' ? [object.shape.diameter, object.shape.diameter] : [object.shape.sizeX, object.shape.sizeY];
+  const [w, l] = [Math.abs(opening.width), Math.abs(opening.length)];
+  const near = (x: number, y: number) => Math.abs(x - y) <= 0.001;
+  if ((near(a, w) && near(b, l)) || (near(a, l) && near(b, w))) return null;
+  const header = w === 0 && l === 0 ? 'a point' : opening.shape === 'circular' && w === l ? `Ø ${mm(w)} mm` : `${mm(w)} × ${mm(l)} mm (${opening.shape})`;
+  const l3d = object.shape.kind === 'circle' ? `Ø ${mm(a)} mm` : `${mm(a)} × ${mm(b)} mm`;
+  return `beam ${beamId}: the photometry's luminous opening is ${header}, the L3D's light-emitting object ${quoteName(object.partName, 40)} ${l3d}; the near field uses the L3D's`;
 }

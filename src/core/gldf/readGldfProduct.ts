@@ -259,6 +259,7 @@ class ProductReader {
     const sortText = attr(v, 'sortOrder');
     if (sortText !== undefined && !/^-?\d{1,9}$/.test(sortText)) this.fail(where, `sortOrder ${quoteName(sortText)} is not a whole number`);
     const emitterIds: string[] = [];
+    const emitterObjects = new Map<string, string>();
     let geometryId: string | undefined;
     const geo = child(v, 'Geometry');
     const emitterRef = (el: XmlElement | undefined): void => {
@@ -275,7 +276,13 @@ class ProductReader {
       }
       if (model) {
         geometryId = this.ref(model, 'geometryId', `${where}/Geometry`, geometries, 'geometry');
-        for (const r of children(model, 'EmitterReference', this.label)) emitterRef(r);
+        for (const r of children(model, 'EmitterReference', this.label)) {
+          emitterRef(r);
+          // The light-emitting object of the L3D this emitter is (checked against the L3D by gldfToModuleType).
+          const name = text(child(r, 'EmitterObjectExternalName')).trim();
+          if (name.length > 200) this.fail(`${where}/Geometry`, `EmitterObjectExternalName is longer than 200 characters`);
+          if (name) emitterObjects.set(emitterIds[emitterIds.length - 1], name);
+        }
       }
     }
     const mountingsEl = child(v, 'Mountings');
@@ -302,6 +309,7 @@ class ProductReader {
       ...(gtin ? { gtin } : {}),
       mountings: mountingsEl ? mountings : null,
       emitterIds,
+      ...(emitterObjects.size ? { emitterObjects } : {}),
       ...(geometryId ? { geometryId } : {}),
       pictureFileIds: this.images(child(v, 'Pictures'), `${where}/Pictures`, files),
       ...(size

@@ -10,6 +10,7 @@ import { modelHeight } from './luminaires/luminaireDimensions';
 import { hemisphereFlux } from './luminaires/emitterLuminance';
 import { kindOfLuminaire, kindOfModuleType, type LuminaireKind } from './luminaires/luminaireKind';
 import type { L3dBody } from './luminaires/l3dBody';
+import { modelBodyKey } from './luminaires/modelBodyKey';
 
 /** A module's light as the view's glow needs it: its opening, its flux per hemisphere (lm, full power), its weight now (dimming × colour). */
 export interface ModuleLight {
@@ -72,8 +73,8 @@ export function moduleLight(l: BakeLuminaire | undefined): ModuleLight | null {
  * at the derived fixing points the bill of materials counts (suspensionPoints). A system's rail
  * hangs above its tallest module (modelHeight), since the suspension is measured to the
  * photometric centre (catalog `suspension`), never above the ceiling. `lights` (module id → its
- * resolved luminaire) gives the openings and the glow; `bodies` (a catalog `model` path → its
- * loaded L3D body) the real bodies of the types that have one.
+ * resolved luminaire) gives the openings and the glow; `bodies` (modelBodyKey: a catalog `model`
+ * path, with its `modelEmitter` → its loaded L3D body) the real bodies of the types that have one.
  */
 export function fixturesFromConfiguration(config: Configuration, catalog: Catalog, lights: ReadonlyMap<string, BakeLuminaire> = new Map(), bodies: ReadonlyMap<string, L3dBody> = new Map()): Fixtures {
   const out: Fixtures = { rails: [], railWidth: catalog.rail.width, connectors: [], modules: [], cables: [] };
@@ -86,7 +87,8 @@ export function fixturesFromConfiguration(config: Configuration, catalog: Catalo
       const type = findModuleType(catalog, m.type);
       const light = moduleLight(lights.get(m.id));
       const kind = kindOfModuleType(type);
-      const body = type.model ? bodies.get(type.model) : undefined;
+      const key = modelBodyKey(type);
+      const body = key ? bodies.get(key) : undefined;
       // An L3D body's own top (its track adapter) is what the rail must clear; a stem joins any gap.
       return { p, m, type, light, kind, body, height: body ? body.top : modelHeight({ kind, opening: light?.opening ?? null, length: p.length }) };
     });

@@ -13,6 +13,7 @@ import type { QualityLevel } from '../../engines/relight/qualityLevels';
 import { configurationMeshLoader } from '../../engines/view/configurationMeshLoader';
 import { createBakeService, type BakeService } from '../../engines/view/createBakeService';
 import { fixturesFromConfiguration, type Fixtures } from '../../engines/view/fixtures';
+import { withModelOpenings } from '../../engines/view/modelOpenings';
 import { loadModelBodies } from '../shared/loadModelBodies';
 import type { PhotometryNote } from '../shared/PhotometryWarnings';
 import { deviceQuality } from './deviceQuality';
@@ -85,9 +86,17 @@ export function startBakeFeed(store: ConfiguratorStore, loadPhotometry: (path: s
     const scene = toLightingScene(config, catalog);
     // Objects' meshes come from the configuration itself (`object:<id>`, with their finishes); L3D bodies from the asset folder.
     Promise.all([resolveBakeScene(scene, loadPhotometry, configurationMeshLoader(config)), loadModelBodies(loadPhotometry, config, catalog)])
-      .then(([bake, bodies]) => {
+      .then(([resolved, bodies]) => {
         if (n !== sequence || disposed) return;
         settled = n;
+        // An L3D body's light-emitting object is the near field's opening (docs/gldf.md "The L3D's opening in the near field").
+        const bake = withModelOpenings(
+          resolved,
+          scene.luminaires.map((l) => l.id ?? ''),
+          config,
+          catalog,
+          bodies,
+        );
         const files = new Map<string, PhotometryNote>();
         scene.luminaires.forEach((l, i) => {
           if (!files.has(l.photometry)) files.set(l.photometry, { file: l.photometry, warnings: photometryWarnings(bake.luminaires[i].photometry) });

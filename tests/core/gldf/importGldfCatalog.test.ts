@@ -54,6 +54,7 @@ const EXPECTED: ModuleTypeSpec[] = [
     adjustable: { tilt: { min: 0, max: 90, stops: 5 }, rotation: { min: 0, max: 355, stops: 5 } },
     // The hand-made L3D (buildL3dSpot.ts), byte for byte.
     model: 'geo/track-spot.l3d',
+    modelEmitter: 'lens',
   },
   {
     // No mapping: every default applies (and is reported below).

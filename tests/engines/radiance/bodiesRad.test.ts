@@ -20,7 +20,8 @@ import { only, run, withPreset } from '../../core/model/helpers';
 
 const base = parseCatalogText(readFileSync('src/core/catalog/default-catalog.json', 'utf8'), 'default-catalog.json');
 const imported = importGldfCatalog(base, [{ name: 'track-spot.gldf', bytes: gldfBytes(trackSpotSpec()) }], parseGldfMapping(MAPPING_TEXT, 'mapping.json'));
-const bodies = new Map([['geo/track-spot.l3d', readL3dBody(imported.files.find((f) => f.path === 'geo/track-spot.l3d')!.bytes, 'geo/track-spot.l3d')]]);
+// Keyed as the bake feed keys them: the model with its emitter object (modelBodyKey).
+const bodies = new Map([['geo/track-spot.l3d#lens', readL3dBody(imported.files.find((f) => f.path === 'geo/track-spot.l3d')!.bytes, 'geo/track-spot.l3d', 'lens')]]);
 
 function spotOnRail() {
   let c = withPreset('single', 3, 3);

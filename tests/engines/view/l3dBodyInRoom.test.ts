@@ -16,6 +16,7 @@ import { createRoomHardware } from '../../../src/engines/view/createRoomHardware
 import type { SharedDisplayUniforms } from '../../../src/engines/view/createRoomSurfaces';
 import { fixturesFromConfiguration, RAIL_HEIGHT } from '../../../src/engines/view/fixtures';
 import { PROUD } from '../../../src/engines/view/luminaires/luminaireDimensions';
+import { modelBodyKey } from '../../../src/engines/view/luminaires/modelBodyKey';
 import { readL3dBody } from '../../../src/engines/view/luminaires/readL3dBody';
 import { gldfBytes, MAPPING_TEXT, trackSpotSpec } from '../../core/gldf/buildGldf';
 import { SPOT } from '../../core/gldf/buildL3dSpot';
@@ -25,7 +26,8 @@ const base = parseCatalogText(readFileSync('src/core/catalog/default-catalog.jso
 const imported = importGldfCatalog(base, [{ name: 'track-spot.gldf', bytes: gldfBytes(trackSpotSpec()) }], parseGldfMapping(MAPPING_TEXT, 'mapping.json'));
 const catalog = imported.catalog;
 const modelFile = imported.files.find((f) => f.path === 'geo/track-spot.l3d')!;
-const bodies = new Map([['geo/track-spot.l3d', readL3dBody(modelFile.bytes, 'geo/track-spot.l3d')]]);
+const spotType = catalog.moduleTypes.find((t) => t.id === 'track-spot')!;
+const bodies = new Map([[modelBodyKey(spotType)!, readL3dBody(modelFile.bytes, 'geo/track-spot.l3d', spotType.modelEmitter)]]);
 const display: SharedDisplayUniforms = { uExposure: { value: 2.5e-5 }, uAdapt: { value: new THREE.Matrix3() }, uMode: { value: 0 }, uLevels: { value: [] }, uLevelCount: { value: 0 } };
 
 function placed(aim?: { rotation: number; tilt: number }) {
@@ -58,7 +60,7 @@ const emitterOf = (meshes: THREE.Mesh[]) => meshes.filter((m) => (m.material as 
 describe('an imported L3D body on the rail', () => {
   it('the fixtures carry the body; the rail hangs just above its top', () => {
     const { fixtures, module, hardware } = placed();
-    expect(module.body).toBe(bodies.get('geo/track-spot.l3d'));
+    expect(module.body).toBe(bodies.get(modelBodyKey(spotType)!));
     // The rail clears the tallest module: the body's top (128 mm) or the preset's own spots, whichever is taller.
     expect(module.mount).toBeGreaterThanOrEqual(SPOT.insert);
     expect(fixtures.rails[0].start[1] - RAIL_HEIGHT / 2 - module.centre[1]).toBeCloseTo(module.mount, 9);

@@ -60,6 +60,11 @@ export const moduleTypeSchema = z
       .string()
       .regex(/^[\w./-]+\.(l3d|L3D)$/, 'must be a relative path to an .l3d file')
       .optional(),
+    /**
+     * The light-emitting object of `model` the photometry belongs to (a GLDF emitter's
+     * EmitterObjectExternalName, docs/gldf.md); absent: the model's first one facing down.
+     */
+    modelEmitter: z.string().min(1).max(200).optional(),
     /** How the CCT follows the level (dimmingCurve.ts, docs/catalog-format.md "Dimming curve"); omitted: constant-cct. */
     dimming: dimmingCurveSchema.optional(),
   })
@@ -69,6 +74,7 @@ export const moduleTypeSchema = z
       if (d.cctMin >= d.cctFull) ctx.addIssue({ code: 'custom', path: ['dimming', 'cctMin'], message: `${d.cctMin} K must be below cctFull (${d.cctFull} K)` });
       if (t.ccts.length !== 1 || t.ccts[0] !== d.cctFull) ctx.addIssue({ code: 'custom', path: ['ccts'], message: `a dim-to-warm type offers exactly its cctFull (${d.cctFull} K)` });
     }
+    if (t.modelEmitter !== undefined && t.model === undefined) ctx.addIssue({ code: 'custom', path: ['modelEmitter'], message: 'names an object of `model`, which is absent' });
     if (!t.ccts.includes(t.defaultCct)) ctx.addIssue({ code: 'custom', path: ['defaultCct'], message: `${t.defaultCct} K is not one of ccts` });
     if (!t.beams.some((b) => b.id === t.defaultBeam)) ctx.addIssue({ code: 'custom', path: ['defaultBeam'], message: `'${t.defaultBeam}' is not a beam id` });
     if (new Set(t.beams.map((b) => b.id)).size !== t.beams.length) ctx.addIssue({ code: 'custom', path: ['beams'], message: 'beam ids must be unique' });

@@ -25,7 +25,9 @@
 import { GldfError } from '../../../core/gldf/GldfError';
 import type { L3dGeometryNode, L3dJoint, L3dLightEmittingObject, L3dLuminaire, Vec3 } from '../../../core/gldf/readL3dStructure';
 import { l3dLocalTransform, multiply, Z_UP_TO_Y_UP, type Affine, type L3dPartMesh } from '../../meshImport/readL3dMeshes';
+import type { L3dEmittingSurfaceMesh } from '../../meshImport/readL3dEmittingFaces';
 import { emitterRadius, PROUD } from './luminaireDimensions';
+import { surfaceAreaBySide, surfaceEmitterParts } from './l3dSurfaceEmitters';
 import type { LuminairePart } from './luminaireModel';
 
 /** One aiming degree of freedom: a joint's axis with its limits (degrees). */
@@ -48,10 +50,18 @@ export interface L3dBody {
   dofs: readonly L3dDof[];
   /** The light-emitting object the photometry belongs to. */
   primary: string;
+  /** That object (its shape is the near field's luminous opening, l3dOpening.ts). */
+  primaryObject: L3dLightEmittingObject;
+  /** That object's local x (its Rectangle's sizeX side) in the reference pose, luxbox frame of the body: which way the opening lies. */
+  primaryAxisX: Vec3;
   /** Joint angles aiming straight down with the swivel at 0. */
   reference: JointAngles;
   /** The primary object's centre in the reference pose, in the rest meshes' frame: subtracted from every vertex. */
   origin: Vec3;
+  /** The LightEmittingSurfaces' faces at rest (readL3dEmittingFaces): drawn glowing instead of the objects they belong to. */
+  surfaces: readonly L3dEmittingSurfaceMesh[];
+  /** The primary object's surfaces' vertices in the reference pose, less the origin (x y z each), or null when it has none: its opening (l3dOpening). */
+  primarySurfacePoints: Float32Array | null;
   /** Emitting area facing down and up in the reference pose (m²). */
   emitterArea: { down: number; up: number };
   /** Height of the body's top above the photometric centre in the reference pose (m). */
@@ -196,12 +206,31 @@ export function aimJoints(body: Pick<L3dBody, 'luminaire' | 'dofs' | 'primary'>,
   return withAngles(base, dofs, best);
 }
 
-/** Prepares an L3D luminaire's parts (readL3dMeshes) for drawing: its degrees of freedom, reference pose, origin, emitting areas and height. */
-export function l3dBody(luminaire: L3dLuminaire, parts: readonly L3dPartMesh[]): L3dBody {
+/**
+ * The light-emitting object the photometry belongs to: the one named `emitter` (a GLDF
+ * EmitterObjectExternalName, catalog `modelEmitter`), else the first facing down at rest, else the first.
+ */
+function primaryObject(luminaire: L3dLuminaire, leos: Leo[], rest: Map<string, Affine>, emitter: string | undefined): Leo {
+  if (emitter !== undefined) {
+    const named = leos.find((l) => l.object.partName === emitter);
+    if (!named) throw new GldfError(`${luminaire.source}: no LightEmittingObject '${emitter}' (it has ${leos.map((l) => `'${l.object.partName}'`).join(', ')})`);
+    return named;
+  }
+  return leos.find((l) => leoPose(rest, l.object.partName).normal[1] < 0) ?? leos[0];
+}
+
+/**
+ * Prepares an L3D luminaire's parts (readL3dMeshes) for drawing: its degrees of freedom, reference
+ * pose, origin, emitting areas and height. `emitter` names the light-emitting object the
+ * photometry belongs to (catalog `modelEmitter`); absent: the first facing down. `surfaces`
+ * (readL3dEmittingFaces) glow instead of the objects they belong to, and their area is those
+ * objects' emitting area.
+ */
+export function l3dBody(luminaire: L3dLuminaire, parts: readonly L3dPartMesh[], emitter?: string, surfaces: readonly L3dEmittingSurfaceMesh[] = []): L3dBody {
   const leos = lightEmittingObjects(luminaire);
   if (leos.length === 0) throw new GldfError(`${luminaire.source}: no LightEmittingObject: the photometric centre is unknown`);
   const rest = frames(luminaire, new Map());
-  const primary = leos.find((l) => leoPose(rest, l.object.partName).normal[1] < 0) ?? leos[0];
+  const primary = primaryObject(luminaire, leos, rest, emitter);
   const candidates: L3dDof[] = primary.chain.flatMap((j) => j.axes.map((a) => ({ joint: j.partName, axis: a.axis, min: a.min, max: a.max, vertical: false })));
   const dofs = candidates.slice(0, 2).map((d) => {
     // The axis in the luxbox frame at rest: vertical when within about 8° of y.
@@ -211,37 +240,57 @@ export function l3dBody(luminaire: L3dLuminaire, parts: readonly L3dPartMesh[]):
   const partial = { luminaire, dofs, primary: primary.object.partName };
   const reference = aimJoints(partial, [0, -1, 0], 0);
   const f = frames(luminaire, reference);
-  const origin = leoPose(f, primary.object.partName).centre;
+  const primaryPose = leoPose(f, primary.object.partName);
+  const origin = primaryPose.centre;
+  const primaryAxisX = turn(primaryPose.frame, [1, 0, 0]);
   const emitterArea = { down: 0, up: 0 };
+  const fromRest = (part: string): Affine => restToPosed(rest, f, part);
+  for (const s of surfaces) {
+    const a = surfaceAreaBySide(s.positions, fromRest(s.part));
+    emitterArea.down += a.down;
+    emitterArea.up += a.up;
+  }
+  const primarySurfaces = surfaces.filter((s) => s.objects.includes(primary.object.partName));
+  const primarySurfacePoints = primarySurfaces.length ? Float32Array.from(primarySurfaces.flatMap((s) => movedPoints(s.positions, fromRest(s.part), origin))) : null;
   for (const { object } of leos) {
+    if (surfaces.some((s) => s.objects.includes(object.partName))) continue;
     const area = object.shape.kind === 'rectangle' ? object.shape.sizeX * object.shape.sizeY : (Math.PI * object.shape.diameter ** 2) / 4;
     if (leoPose(f, object.partName).normal[1] > 0) emitterArea.up += area;
     else emitterArea.down += area;
   }
-  const body: L3dBody = { luminaire, parts, dofs, primary: primary.object.partName, reference, origin, emitterArea, top: 0 };
+  const body: L3dBody = { luminaire, parts, dofs, primary: primary.object.partName, primaryObject: primary.object, primaryAxisX, reference, origin, surfaces, primarySurfacePoints, emitterArea, top: 0 };
   let top = 0;
   for (const p of poseL3dBody(body, reference).parts) for (let i = 1; i < p.positions.length; i += 3) top = Math.max(top, p.positions[i]);
   return { ...body, top };
+}
+
+/** A part's rest mesh (luxbox frame) → L3D at rest → the part's own frame → posed by `posed` → back to luxbox. */
+function restToPosed(rest: Map<string, Affine>, posed: Map<string, Affine>, part: string): Affine {
+  return multiply(Z_UP_TO_Y_UP, multiply(posed.get(part)!, multiply(invertRigid(rest.get(part)!), invertRigid(Z_UP_TO_Y_UP))));
+}
+
+/** Points (x y z each) moved by `m`, less `origin`. */
+function movedPoints(positions: Float32Array, m: Affine, origin: Vec3): number[] {
+  const out: number[] = [];
+  for (let i = 0; i + 2 < positions.length; i += 3) out.push(...apply(m, [positions[i], positions[i + 1], positions[i + 2]]).map((c, k) => c - origin[k]));
+  return out;
 }
 
 /** The body's parts for given joint angles: housings and emitters in the model's frame (origin at the photometric centre). */
 function posedParts(body: L3dBody, angles: JointAngles): LuminairePart[] {
   const restFrames = frames(body.luminaire, new Map());
   const posed = frames(body.luminaire, angles);
-  const toLuxbox = Z_UP_TO_Y_UP;
-  const fromLuxbox = invertRigid(Z_UP_TO_Y_UP);
   const [ox, oy, oz] = body.origin;
   const parts: LuminairePart[] = [];
-  for (const p of body.parts) {
-    // rest mesh → L3D at rest → the part's own frame → posed; then back to luxbox, less the origin.
-    const delta = multiply(toLuxbox, multiply(posed.get(p.partName)!, multiply(invertRigid(restFrames.get(p.partName)!), fromLuxbox)));
-    parts.push(flatPart(p.mesh.positions, p.mesh.indices, delta, [ox, oy, oz]));
-  }
+  for (const p of body.parts) parts.push(flatPart(p.mesh.positions, p.mesh.indices, restToPosed(restFrames, posed, p.partName), [ox, oy, oz]));
   const reference = frames(body.luminaire, body.reference);
   for (const { object } of lightEmittingObjects(body.luminaire)) {
+    // An object with LightEmittingSurfaces glows as those faces (below), not as its Rectangle or Circle.
+    if (body.surfaces.some((s) => s.objects.includes(object.partName))) continue;
     const side: -1 | 1 = leoPose(reference, object.partName).normal[1] > 0 ? 1 : -1;
     parts.push(emitterFace(object, leoPose(posed, object.partName).frame, [ox, oy, oz], side));
   }
+  for (const s of body.surfaces) parts.push(...surfaceEmitterParts(s.positions, restToPosed(restFrames, posed, s.part), restToPosed(restFrames, reference, s.part), [ox, oy, oz]));
   return parts;
 }
 
