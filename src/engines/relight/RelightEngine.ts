@@ -41,6 +41,8 @@ export interface RelightParts {
   atlas: ObjectAtlas | null;
   /** The engine version these parts are of. */
   version: number;
+  /** A crossfade is shown (setFade): its fraction, else null. */
+  fade: number | null;
 }
 
 export interface SetSceneResult {

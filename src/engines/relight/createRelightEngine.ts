@@ -144,7 +144,7 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
     if (!scene || !out) return null;
     const parts = weightedBases(order, shownWeight);
     const fadeKeys = fade ? { fromKey: weightsKey(order, fromWeight), toKey: targetKey(), e: fade.e } : null;
-    return { parts, terms: indirectTerms(weightsKey(order, shownWeight), parts, cache, solver.latest, fadeKeys), layouts: out.layouts, atlas, version };
+    return { parts, terms: indirectTerms(weightsKey(order, shownWeight), parts, cache, solver.latest, fadeKeys), layouts: out.layouts, atlas, version, fade: fade ? fade.e : null };
   };
 
   const maps = (): LitMaps => {

@@ -4,6 +4,9 @@ import type { FloatTarget } from '../bake/floatTarget';
 import { createGpuRelight, type BasisPrecision, type GpuRelight, type ReadbackCounter } from '../relight/createGpuRelight';
 import type { RelightParts } from '../relight/RelightEngine';
 import { createGpuStats, type GpuStats, type PendingStats } from './createGpuStats';
+import { programsReady, startPrograms } from '../bake/glResources';
+import { relightCombinePass } from '../../../shaders/relightCombine.glsl';
+import { statsBlockPass, statsMergePass } from '../../../shaders/statsReduce.glsl';
 import { lowMemoryDevice } from './lowMemoryDevice';
 
 /**
@@ -37,8 +40,17 @@ export interface ViewRelightCounters {
   uploads: ReadbackCounter;
 }
 
+/** The programs the view's relight and statistics draw with: compiled in the background from the view's start (startPrograms). */
+const VIEW_RELIGHT_PROGRAMS = [relightCombinePass.source, statsBlockPass.source, statsMergePass.source];
+
 export interface ViewRelight {
   readonly precision: BasisPrecision;
+  /**
+   * Whether the relight's programs can be used without waiting for the driver (programsReady:
+   * KHR_parallel_shader_compile's COMPLETION_STATUS_KHR where the context has it). Until then the
+   * view relights on the CPU, so a first relight never blocks the page on a compile.
+   */
+  ready(): boolean;
   /** Whether these parts fit the device's texture budget (LOW_MEMORY_RELIGHT_BYTES on low-memory devices, else always). */
   fits(parts: RelightParts): boolean;
   /** Combine the parts on the GPU into the display textures (draws only: nothing is read back). */
@@ -72,6 +84,9 @@ export function createViewRelight(renderer: THREE.WebGLRenderer, precision: Basi
   let gpu: GpuRelight | null = null;
   let stats: GpuStats | null = null;
   const wrapped = new Map<WebGLTexture, THREE.ExternalTexture>();
+  // Issued now, waited for by nobody: the driver compiles them beside the first frames (ANGLE has a worker pool).
+  startPrograms(gl, VIEW_RELIGHT_PROGRAMS);
+  renderer.resetState();
   const counters: ViewRelightCounters = { relights: 0, mapReadbacks: { count: 0, bytes: 0 }, statsReadbacks: { count: 0, bytes: 0 }, uploads: { count: 0, bytes: 0 } };
 
   const gpuRelight = (): GpuRelight => {
@@ -92,6 +107,7 @@ export function createViewRelight(renderer: THREE.WebGLRenderer, precision: Basi
 
   return {
     precision,
+    ready: () => programsReady(gl, VIEW_RELIGHT_PROGRAMS),
     fits(parts) {
       if (budget === null) return true;
       let texels = 0;

@@ -19,6 +19,7 @@ import { createViewRelight, LOW_MEMORY_RELIGHT_BYTES } from '../../../src/engine
 import { floorStats, type IlluminanceStats } from '../../../src/engines/view/lightStats';
 import { spot } from '../bake/bakeTestKit';
 import { withHeadlessGL } from '../bake/withHeadlessGL';
+import { COMPLETION_STATUS_KHR } from '../../../src/engines/bake/glResources';
 import { headlessRenderer } from './headlessRenderer';
 
 const bakeGl = withHeadlessGL();
@@ -171,6 +172,28 @@ describe('the view relights on its own GPU', () => {
       surfaces.dispose();
       relight.dispose();
     }
+  });
+
+  it('the relight waits for its programs where KHR_parallel_shader_compile says they are still compiling (the CPU path shows meanwhile), and never on headless-gl, which has no such extension', () => {
+    expect(viewGl.getExtension('KHR_parallel_shader_compile')).toBeNull();
+    expect(createViewRelight(renderer, 'half', null).ready()).toBe(true);
+    // A driver that compiles in parallel: the extension present, COMPLETION_STATUS_KHR false until the compile is done.
+    // A proxy is another key for the per-context program cache: the programs are compiled anew for it.
+    let compiled = false;
+    const parallel = new Proxy(viewGl, {
+      get(target, key) {
+        if (key === 'getExtension') return (name: string) => (name === 'KHR_parallel_shader_compile' ? {} : target.getExtension(name));
+        if (key === 'getProgramParameter') return (p: WebGLProgram, pname: number) => (pname === COMPLETION_STATUS_KHR ? compiled : target.getProgramParameter(p, pname));
+        const value = Reflect.get(target, key) as unknown;
+        return typeof value === 'function' ? (value as (...a: unknown[]) => unknown).bind(target) : value;
+      },
+    }) as WebGL2RenderingContext;
+    const fakeRenderer = { getContext: () => parallel, resetState() {} } as unknown as THREE.WebGLRenderer;
+    const relight = createViewRelight(fakeRenderer, 'half', null);
+    expect(relight.ready()).toBe(false);
+    compiled = true;
+    expect(relight.ready()).toBe(true);
+    relight.dispose();
   });
 
   it('on a low-memory device a configuration over the budget is refused (the CPU path shows it)', () => {

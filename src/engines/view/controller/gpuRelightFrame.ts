@@ -92,8 +92,9 @@ function floorMask(g: ViewerGpu, layout: SurfaceLayout, prepared: PreparedObject
 
 /**
  * Show the engine's maps by the GPU combine when this is a relight of what is on screen: the same
- * geometry and layouts the CPU path showed last, the eye held (so no exposure is taken from the
- * maps), no A/B compare, the textures within the device's budget. Returns false when the CPU path
+ * geometry and layouts the CPU path showed last, not yet the final look (light not done, or a
+ * crossfade under way), the eye held (so no exposure is taken from the
+ * maps), no A/B compare, the relight's programs compiled (programsReady: never a wait on the driver), the textures within the device's budget. Returns false when the CPU path
  * must show them. Nothing is read back: the floor's statistics are requested (16 bytes after a
  * fence) and reported when they arrive; the CPU relight follows once after GPU_SETTLE_MS of quiet.
  */
@@ -101,7 +102,9 @@ export function showRelightOnGpu(v: Viewer, engine: RelightEngine, showOnCpu: ()
   const g = v.gpu;
   if (!v.scene || v.compare || !v.maps.held() || g.key !== sceneGeometryKey(v.scene)) return false;
   const parts = engine.relightParts();
-  if (!parts || parts.layouts !== g.layouts || !v.gpu.relight.fits(parts)) return false;
+  // The final look (done, no crossfade under way) is shown on the CPU at once: its statistics, legend and work plane are final with it.
+  if (!parts || (engine.progress.done && parts.fade === null)) return false;
+  if (parts.layouts !== g.layouts || !g.relight.ready() || !g.relight.fits(parts)) return false;
   const t0 = performance.now();
   const maps = g.relight.relight(parts);
   v.view.setLightTextures(maps.surfaces, maps.objects);
