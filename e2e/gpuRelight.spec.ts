@@ -31,16 +31,14 @@ test('a crossfade and a dimming drag are relit on the GPU: no map read back, flo
   const day = await status(page);
   expect(day.gpu).toMatchObject({ precision: 'half', mapReadbacks: 0 });
 
-  // The crossfade: a relight per frame, each on the GPU.
-  expect(await page.evaluate(() => window.luxbox!.recall('Evening', { fade: 1 }))).toEqual({ ok: true });
-  await expect.poll(async () => (await status(page)).gpu!.gpuRelights, { timeout: 10_000 }).toBeGreaterThan(day.gpu!.gpuRelights + 2);
+  // The crossfade (2 s): a relight per frame, each on the GPU but the last (the final look, shown on the CPU with its statistics).
+  expect(await page.evaluate(() => window.luxbox!.recall('Evening', { fade: 2 }))).toEqual({ ok: true });
+  await expect.poll(async () => (await status(page)).gpu!.gpuRelights, { timeout: 10_000 }).toBeGreaterThan(day.gpu!.gpuRelights + 1);
   const faded = await status(page);
   expect(faded.gpu!.mapReadbacks).toBe(0);
-  // At most the one CPU relight after the fade has settled (GPU_SETTLE_MS).
   expect(faded.gpu!.cpuRelights - day.gpu!.cpuRelights).toBeLessThanOrEqual(1);
-  // Evening is darker: the floor's statistics arrive from the GPU reduction (16 bytes read after a fence).
+  // Evening is darker.
   await expect.poll(async () => (await status(page)).floor!.avg, { timeout: 10_000 }).toBeLessThan(day.floor!.avg * 0.8);
-  expect((await status(page)).gpu!.statsReadbacks).toBeGreaterThan(0);
   expect((await status(page)).gpu!.textureBytes).toBeGreaterThan(0);
 
   // A dimming drag: ten steps, each committed (a relight each), none read back.
@@ -53,7 +51,8 @@ test('a crossfade and a dimming drag are relit on the GPU: no map read back, flo
   const dragged = await status(page);
   expect(dragged.gpu!.mapReadbacks).toBe(0);
   expect(dragged.groupBakes).toBe(beforeDrag.groupBakes);
-  // Brighter than before the drag, the floor's statistics again from the GPU.
+  // Brighter than before the drag; the floor's statistics of the drag's relights come from the GPU reduction (16 bytes read after a fence).
+  await expect.poll(async () => (await status(page)).gpu!.statsReadbacks, { timeout: 10_000 }).toBeGreaterThan(beforeDrag.gpu!.statsReadbacks);
   await expect.poll(async () => (await status(page)).floor!.avg, { timeout: 10_000 }).toBeGreaterThan(beforeDrag.floor!.avg * 1.05);
   expect((await status(page)).gpu!.mapReadbacks).toBe(0);
 });
