@@ -104,6 +104,8 @@ export function showRelightOnGpu(v: Viewer, engine: RelightEngine, showOnCpu: ()
   const parts = engine.relightParts();
   // The final look (done, no crossfade under way) is shown on the CPU at once: its statistics, legend and work plane are final with it.
   if (!parts || (engine.progress.done && parts.fade === null)) return false;
+  // A room's first solve shows previews (not final solutions): bake progress, shown on the CPU as it was baked, not a relight.
+  if (parts.terms.some((t) => !t.solution.final)) return false;
   if (parts.layouts !== g.layouts || !g.relight.ready() || !g.relight.fits(parts)) return false;
   const t0 = performance.now();
   const maps = g.relight.relight(parts);
