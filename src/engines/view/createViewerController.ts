@@ -14,7 +14,7 @@ import { drawViewerFrame, followBakeService, restoreViewer, tapViewer } from './
 import { viewerSceneApi } from './controller/viewerSceneApi';
 import { viewerDisplayApi } from './controller/viewerDisplayApi';
 import { viewerCompareApi } from './controller/viewerCompareApi';
-import { cancelSettle, createViewerGpu, gpuViewStatus } from './controller/gpuRelightFrame';
+import { createViewerGpu, disposeViewerGpu, gpuViewStatus } from './controller/gpuRelightFrame';
 
 export type { CompareRequest, ViewerEvents } from './controller/viewer';
 
@@ -66,8 +66,7 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
       stopTaps();
       spotlight.dispose();
       controls.dispose();
-      cancelSettle(gpu);
-      gpu.relight.dispose();
+      disposeViewerGpu(gpu);
       v.view.dispose();
       renderer.dispose();
       display.dispose();

@@ -60,6 +60,8 @@ export interface ViewerGpu {
   /** Counts at the previous frame (for the per-frame numbers). */
   lastTotals: { readbacks: number; readbackBytes: number; uploadBytes: number };
   frame: GpuViewStatus['frame'];
+  /** The view was disposed: pending statistics are not polled any more. */
+  disposed: boolean;
 }
 
 export function createViewerGpu(v: Pick<Viewer, 'renderer'>): ViewerGpu {
@@ -74,6 +76,7 @@ export function createViewerGpu(v: Pick<Viewer, 'renderer'>): ViewerGpu {
     pending: null,
     lastTotals: { readbacks: 0, readbackBytes: 0, uploadBytes: 0 },
     frame: { readbacks: 0, readbackBytes: 0, uploadBytes: 0 },
+    disposed: false,
   };
 }
 
@@ -134,7 +137,7 @@ function pollFloorStats(v: Viewer, pending: PendingStats): void {
   const relight = gpu.relight;
   const tick = () => {
     // A context lost and restored meanwhile: the request's objects belong to the disposed relight.
-    if (gpu.relight !== relight) return;
+    if (gpu.relight !== relight || gpu.disposed) return;
     const stats = pending.poll();
     if (!stats) {
       requestAnimationFrame(tick);
@@ -176,6 +179,13 @@ export function countGpuFrame(g: ViewerGpu): void {
   const now = { readbacks: c.mapReadbacks.count + c.statsReadbacks.count, readbackBytes: c.mapReadbacks.bytes + c.statsReadbacks.bytes, uploadBytes: c.uploads.bytes + g.cpuUploadBytes };
   g.frame = { readbacks: now.readbacks - g.lastTotals.readbacks, readbackBytes: now.readbackBytes - g.lastTotals.readbackBytes, uploadBytes: now.uploadBytes - g.lastTotals.uploadBytes };
   g.lastTotals = now;
+}
+
+/** The view is going: no more statistics polls, the relight's textures and programs freed. */
+export function disposeViewerGpu(g: ViewerGpu): void {
+  cancelSettle(g);
+  g.disposed = true;
+  g.relight.dispose();
 }
 
 /** After a context loss the relight's textures are gone: a fresh one (the next show is on the CPU). */
