@@ -182,6 +182,9 @@ test('a console dims a module through the real bridge: the 3D view relights live
   expect(burst.live!.received - dimmed.live!.received).toBeGreaterThanOrEqual(2);
   expect(burst.live!.applied - dimmed.live!.applied).toBeLessThan(burst.live!.received - dimmed.live!.received);
   expect(burst.groupBakes).toBe(6);
+  // The stream is relit on the view's GPU (docs/viewer.md, "Relighting on the GPU"): no map read back.
+  expect(burst.gpu!.gpuRelights).toBeGreaterThan(atFull.gpu!.gpuRelights);
+  expect(burst.gpu!.mapReadbacks).toBe(0);
   // The configuration is not touched by live levels (dimming stays 1).
   expect(await getConfig(page)).toBe(patchedText);
 

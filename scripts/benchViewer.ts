@@ -177,6 +177,11 @@ log(
     `GPU combine ${gpuRelight.gpuMs.float.toFixed(2)} ms (RGBA32F bases, ${gpuRelight.textureMiB.float.toFixed(1)} MiB) / ${gpuRelight.gpuMs.half.toFixed(2)} ms (RGBA16F, ${gpuRelight.textureMiB.half.toFixed(1)} MiB); ` +
     `ratio CPU+upload / GPU ${(gpuRelight.cpuUploadMs / gpuRelight.gpuMs.float).toFixed(2)}×; read-backs ${gpuRelight.readbacks}`,
 );
+log(
+  `view frame (relight + floor statistics): today ${gpuRelight.cpuViewMs.toFixed(2)} ms (maps read back ${gpuRelight.perFrame.cpu.mapReadbacks}, uploaded ${gpuRelight.perFrame.cpu.uploadBytes} B), ` +
+    `GPU ${gpuRelight.gpuViewMs.toFixed(2)} ms (maps read back ${gpuRelight.perFrame.gpu.mapReadbacks}, statistics ${gpuRelight.perFrame.gpu.readbackBytes} B, uploaded ${gpuRelight.perFrame.gpu.uploadBytes} B); ratio ${(gpuRelight.cpuViewMs / gpuRelight.gpuViewMs).toFixed(2)}×; ` +
+    `the bases' one transfer into the view: ${(gpuRelight.transferBytes / 2 ** 20).toFixed(1)} MiB in ${gpuRelight.firstRelightMs.toFixed(0)} ms`,
+);
 log('bake cost against module count (8 × 6 × 2.8 m, balanced):');
 const moduleCount = benchModuleCount(3, log);
 const at = (n: number) => moduleCount.find((r) => r.modules === n)!;

@@ -12,6 +12,11 @@ import { createGpuRelight, type BasisPrecision } from '../../src/engines/relight
 import { VIEWER_BAKE_SETTINGS } from '../../src/engines/relight/createRelightEngine';
 import { emptyLitMaps, relightMaps, type DirectBasis, type IndirectSolution, type WeightedBasis } from '../../src/engines/relight/relightMaps';
 import { createHeadlessGL } from '../../src/hosts/node/createHeadlessGL';
+import createGL from 'gl';
+import * as THREE from 'three';
+import type { RelightParts } from '../../src/engines/relight/RelightEngine';
+import { createViewRelight } from '../../src/engines/view/createViewRelight';
+import { floorStats } from '../../src/engines/view/lightStats';
 
 export interface GpuRelightBench {
   modules: number;
@@ -23,6 +28,94 @@ export interface GpuRelightBench {
   gpuMs: Record<BasisPrecision, number>;
   readbacks: number;
   textureMiB: Record<BasisPrecision, number>;
+  /** Today's view frame in full: the CPU relight, the upload, and the floor's statistics on the CPU (floorStats). */
+  cpuViewMs: number;
+  /** The view's GPU frame (createViewRelight in a three.js context, RGBA16F bases): the combine, the floor's statistics requested and read after the fence. */
+  gpuViewMs: number;
+  /** Per frame, CPU path and GPU path: maps and statistics texels read back, bytes read back and uploaded. */
+  perFrame: Record<'cpu' | 'gpu', { mapReadbacks: number; readbackBytes: number; uploadBytes: number }>;
+  /** The first GPU relight of the view: every basis and the solution uploaded (RGB → RGBA16F on the CPU, then texImage2D), and its bytes. */
+  firstRelightMs: number;
+  transferBytes: number;
+}
+
+/** A three.js renderer on its own headless-gl context, as the 3D view's (tests/engines/view/headlessRenderer.ts). */
+function headlessThree(): { renderer: THREE.WebGLRenderer; destroy(): void } {
+  const gl = createGL(64, 64, { createWebGL2Context: true, preserveDrawingBuffer: true, antialias: false }) as unknown as WebGL2RenderingContext & { getExtension(n: 'STACKGL_destroy_context'): { destroy(): void } | null };
+  const canvas = { width: 64, height: 64, style: {}, addEventListener() {}, removeEventListener() {} } as unknown as HTMLCanvasElement;
+  Object.defineProperty(gl, 'canvas', { value: canvas, configurable: true });
+  const renderer = new THREE.WebGLRenderer({ canvas, context: gl, antialias: false });
+  return {
+    renderer,
+    destroy() {
+      renderer.dispose();
+      gl.getExtension('STACKGL_destroy_context')?.destroy();
+    },
+  };
+}
+
+/**
+ * The view's frame both ways, in one run: today's (relightMaps, the RGBA32F upload, floorStats on the
+ * CPU) and the GPU path (createViewRelight's combine, the floor's statistics reduced on the GPU and
+ * read after the fence), with what each reads back and uploads per frame.
+ */
+function benchViewFrames(frames: number, parts: (k: number) => RelightParts, out: ReturnType<typeof emptyLitMaps>, texels: number) {
+  const three = headlessThree();
+  const gl = three.renderer.getContext() as WebGL2RenderingContext;
+  try {
+    const shown = Object.values(out.layouts).map((l) => {
+      const texture = gl.createTexture()!;
+      gl.bindTexture(gl.TEXTURE_2D, texture);
+      gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, l.width, l.height, 0, gl.RGBA, gl.FLOAT, null);
+      return { layout: l, texture, rgba: new Float32Array(l.width * l.height * 4) };
+    });
+    const cpu: number[] = [];
+    for (let k = 0; k < frames; k++) {
+      const s = performance.now();
+      const p = parts(k);
+      relightMaps(p.parts, p.terms, null, out);
+      for (const { layout, texture, rgba } of shown) {
+        const total = out.maps[layout.name].total;
+        for (let i = 0, j = 0; i < total.length; i += 3, j += 4) {
+          rgba[j] = total[i];
+          rgba[j + 1] = total[i + 1];
+          rgba[j + 2] = total[i + 2];
+          rgba[j + 3] = 1;
+        }
+        gl.bindTexture(gl.TEXTURE_2D, texture);
+        gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, layout.width, layout.height, gl.RGBA, gl.FLOAT, rgba);
+      }
+      floorStats(out);
+      gl.finish();
+      cpu.push(performance.now() - s);
+    }
+    for (const { texture } of shown) gl.deleteTexture(texture);
+    const view = createViewRelight(three.renderer, 'half', null);
+    // The one transfer into the view's context: every basis and the solution uploaded by the first relight (its programs compiled by then too).
+    const first = performance.now();
+    view.relight(parts(-1));
+    gl.finish();
+    const firstRelightMs = performance.now() - first;
+    const transferBytes = view.counters.uploads.bytes;
+    const before = { uploads: view.counters.uploads.bytes, readbacks: view.counters.mapReadbacks.count };
+    const gpu: number[] = [];
+    for (let k = 0; k < frames; k++) {
+      const s = performance.now();
+      const maps = view.relight(parts(k));
+      const pending = view.floorStats(maps, null);
+      gl.finish();
+      if (!pending.poll()) throw new Error('the statistics fence had not signalled after gl.finish()');
+      gpu.push(performance.now() - s);
+    }
+    const perFrame = {
+      cpu: { mapReadbacks: 0, readbackBytes: 0, uploadBytes: texels * 16 },
+      gpu: { mapReadbacks: (view.counters.mapReadbacks.count - before.readbacks) / frames, readbackBytes: view.counters.statsReadbacks.bytes / frames, uploadBytes: (view.counters.uploads.bytes - before.uploads) / frames },
+    };
+    view.dispose();
+    return { cpuViewMs: median(cpu), gpuViewMs: median(gpu), perFrame, firstRelightMs, transferBytes };
+  } finally {
+    three.destroy();
+  }
 }
 
 const median = (xs: number[]) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
@@ -97,5 +190,7 @@ export function benchGpuRelight(modules = 12, frames = 41): GpuRelightBench {
   } finally {
     gl.destroy();
   }
-  return { modules, texels, frames, cpuMs: median(cpu), cpuUploadMs: median(cpuUpload), gpuMs, readbacks, textureMiB };
+  const partsAt = (k: number): RelightParts => ({ parts: weightsAt(k), terms, layouts: byName, atlas: null, version: k, fade: null });
+  const view = benchViewFrames(frames, partsAt, out, texels);
+  return { modules, texels, frames, cpuMs: median(cpu), cpuUploadMs: median(cpuUpload), gpuMs, readbacks, textureMiB, ...view };
 }

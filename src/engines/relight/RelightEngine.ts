@@ -1,6 +1,9 @@
 import type { BakeScene } from '../bake/bakeScene';
 import type { BakeSettings } from '../bake/bakeSettings';
-import type { LitMaps } from './relightMaps';
+import type { SurfaceName } from '../../core/model/lightingScene/lightingScene';
+import type { ObjectAtlas } from '../bake/objects/preparedObjects';
+import type { SurfaceLayout } from '../bake/surfaceLayout';
+import type { IndirectTerm, LitMaps, WeightedBasis } from './relightMaps';
 
 export interface EngineProgress {
   /** Groups whose direct basis is baked. */
@@ -25,6 +28,21 @@ export interface EngineCounters {
   relights: number;
   /** Shared indirect solves started (the first of a room and every re-solve after a change of weights or groups). */
   indirectSolves: number;
+}
+
+/**
+ * What `maps()` sums, without summing it: the baked groups at the weights shown and the indirect
+ * terms (indirectTerms.ts). The 3D view combines them on its GPU (createGpuRelight.ts).
+ */
+export interface RelightParts {
+  parts: WeightedBasis[];
+  terms: IndirectTerm[];
+  layouts: Record<SurfaceName, SurfaceLayout>;
+  atlas: ObjectAtlas | null;
+  /** The engine version these parts are of. */
+  version: number;
+  /** A crossfade is shown (setFade): its fraction, else null. */
+  fade: number | null;
 }
 
 export interface SetSceneResult {
@@ -74,6 +92,8 @@ export interface RelightEngine {
   readonly progress: EngineProgress;
   /** The relit maps for the current scene's weights (recomputed only when something changed). */
   maps(): LitMaps;
+  /** The parts `maps()` would sum for the current weights (null before a scene); sums nothing, counts no relight. */
+  relightParts(): RelightParts | null;
   /** Monotonic: bumps whenever `maps()` would return new values. */
   readonly version: number;
   readonly counters: EngineCounters;

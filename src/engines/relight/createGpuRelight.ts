@@ -31,6 +31,8 @@ export interface GpuRelight {
   /** One display map read back as RGB floats (3 per texel): counted in `readbacks`. Statistics and tests only. */
   read(target: FloatTarget): Float32Array;
   readonly readbacks: ReadbackCounter;
+  /** CPU → GPU uploads of basis and indirect maps (each map once, while a relight uses it) and their bytes. */
+  readonly uploads: ReadbackCounter;
   /** Draws of the combine pass so far. */
   readonly draws: number;
   /** Bytes of GPU texture memory held now: basis/indirect textures at their precision, display targets at 16 B/texel. */
@@ -56,11 +58,13 @@ const HALF_MAX = 65504;
  * indirectTerms.ts) are the CPU relight's, so both show the same light.
  */
 export function createGpuRelight(gl: WebGL2RenderingContext, precision: BasisPrecision = 'float'): GpuRelight {
-  requireFloatTargets(gl);
+  // The display targets are sampled by the view: linear only where float textures filter (else nearest, as the view's DataTextures).
+  const { linear } = requireFloatTargets(gl);
   const program = passProgram(gl, relightCombinePass);
   const uploads = new Map<Float32Array, Uploaded>();
   const outputs = new Map<string, GpuDirectTotal & { scratch: FloatTarget }>();
   const readbacks: ReadbackCounter = { count: 0, bytes: 0 };
+  const uploaded: ReadbackCounter = { count: 0, bytes: 0 };
   let draws = 0;
   const zero = createFloatTarget(gl, 1, 1, false);
   // Zero textures of each size: the accumulator of a direct map. Cleared on creation (createFloatTarget).
@@ -88,6 +92,8 @@ export function createGpuRelight(gl: WebGL2RenderingContext, precision: BasisPre
     else gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, width, height, 0, gl.RGBA, gl.FLOAT, rgba);
     for (const p of [gl.TEXTURE_MIN_FILTER, gl.TEXTURE_MAG_FILTER]) gl.texParameteri(gl.TEXTURE_2D, p, gl.NEAREST);
     uploads.set(data, { texture, bytes: width * height * (half ? 8 : 16) });
+    uploaded.count++;
+    uploaded.bytes += rgba.byteLength;
     return texture;
   };
 
@@ -97,7 +103,7 @@ export function createGpuRelight(gl: WebGL2RenderingContext, precision: BasisPre
       for (const t of [o.direct, o.total, o.scratch]) deleteTarget(gl, t);
       o = undefined;
     }
-    if (!o) outputs.set(key, (o = { direct: createFloatTarget(gl, width, height, true), total: createFloatTarget(gl, width, height, true), scratch: createFloatTarget(gl, width, height, false) }));
+    if (!o) outputs.set(key, (o = { direct: createFloatTarget(gl, width, height, linear), total: createFloatTarget(gl, width, height, linear), scratch: createFloatTarget(gl, width, height, false) }));
     return o;
   };
 
@@ -209,6 +215,7 @@ export function createGpuRelight(gl: WebGL2RenderingContext, precision: BasisPre
       return readRgb(gl, target);
     },
     readbacks,
+    uploads: uploaded,
     get draws() {
       return draws;
     },

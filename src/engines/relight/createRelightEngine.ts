@@ -13,7 +13,7 @@ import { indirectTerms } from './indirectTerms';
 import { groupLuminaires, groupWeight, roomKey } from './luminaireGroups';
 import { objectsKey } from './objectsKey';
 import { reflectedFlux, weightedFlux } from './reflectedFlux';
-import type { EngineCounters, EngineFade, EngineProgress, RelightEngine, SetSceneResult } from './RelightEngine';
+import type { EngineCounters, EngineFade, EngineProgress, RelightEngine, RelightParts, SetSceneResult } from './RelightEngine';
 import { encloseShapedRoom } from '../bake/shapedRoom/encloseShapedRoom';
 import { emptyLitMaps, relightMaps, sumDirect, type LitMaps } from './relightMaps';
 import { createSolutionCache } from './solutionCache';
@@ -139,12 +139,19 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
     return { bake, reused: groups.length - bake };
   };
 
+  /** What the maps shown are made of: the shown weights of the baked groups and the indirect terms (exact, blend or Φ-scaled). */
+  const relightParts = (): RelightParts | null => {
+    if (!scene || !out) return null;
+    const parts = weightedBases(order, shownWeight);
+    const fadeKeys = fade ? { fromKey: weightsKey(order, fromWeight), toKey: targetKey(), e: fade.e } : null;
+    return { parts, terms: indirectTerms(weightsKey(order, shownWeight), parts, cache, solver.latest, fadeKeys), layouts: out.layouts, atlas, version, fade: fade ? fade.e : null };
+  };
+
   const maps = (): LitMaps => {
     if (!out) out = emptyLitMaps(surfaceLayouts({ width: 1, height: 1, depth: 1 }, settings.texelSize, settings.maxTextureSize));
     if (composedVersion === version || !scene) return out;
-    const weighted = weightedBases(order, shownWeight);
-    const fadeKeys = fade ? { fromKey: weightsKey(order, fromWeight), toKey: targetKey(), e: fade.e } : null;
-    relightMaps(weighted, indirectTerms(weightsKey(order, shownWeight), weighted, cache, solver.latest, fadeKeys), atlas, out);
+    const { parts, terms } = relightParts()!;
+    relightMaps(parts, terms, atlas, out);
     counters.relights++;
     composedVersion = version;
     return out;
@@ -168,6 +175,7 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
       return progress();
     },
     maps,
+    relightParts,
     get version() {
       return version;
     },

@@ -35,6 +35,8 @@ export interface RoomObjects {
   setGeometry(prepared: PreparedObjects | null): void;
   /** The objects' relit light on the atlas of the current geometry (null: none yet). */
   setLight(light: ObjectLight | null): void;
+  /** Light the GPU relight wrote on the current atlas (createViewRelight.ts): shown where `setLight` showed light before (a relight). */
+  setLightTexture(texture: THREE.Texture): void;
   /** Highlight one object by id (null: none). */
   setSelected(id: string | null): void;
   /** Draw the veneers' wood grain (default on; light mode only): OBJECT_FINISH_TEXTURE_OF. */
@@ -197,8 +199,8 @@ export function createRoomObjects(display: SharedDisplayUniforms, renderer: THRE
         illuminance.minFilter = illuminance.magFilter = linear ? THREE.LinearFilter : THREE.NearestFilter;
         illuminance.wrapS = illuminance.wrapT = THREE.ClampToEdgeWrapping;
         illuminance.generateMipmaps = false;
-        material.uniforms.uIlluminance.value = illuminance;
       }
+      material.uniforms.uIlluminance.value = illuminance;
       const dst = illuminance.image.data as Float32Array;
       const src = light.total;
       for (let i = 0; i < n; i++) {
@@ -210,6 +212,9 @@ export function createRoomObjects(display: SharedDisplayUniforms, renderer: THRE
       illuminance.needsUpdate = true;
       mesh.visible = true;
       if (edges) edges.visible = true;
+    },
+    setLightTexture(texture) {
+      if (mesh?.visible) material.uniforms.uIlluminance.value = texture;
     },
     setFinishTextures(on) {
       texturesOn = on;

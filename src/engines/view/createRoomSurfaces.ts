@@ -27,6 +27,11 @@ const fragmentShader = roomSurfaceFragment({ maxLevels: MAX_LEVELS, turbo: [TURB
 export interface RoomSurfaces {
   /** Upload relit maps (RGB lux) and the room's reflectances; a surface whose layout changed is rebuilt. */
   setMaps(lit: LitMaps, reflectance: Record<SurfaceName, Rgb>): void;
+  /**
+   * Show light the GPU relight wrote in the view's context (createViewRelight.ts) on the surfaces the
+   * last `setMaps` laid out (same layouts: a relight); the next `setMaps` shows its own textures again.
+   */
+  setLightTextures(textures: Record<SurfaceName, THREE.Texture>): void;
   setExposure(exposure: number): void;
   /** The chromatic adaptation (row-major 3×3 on linear sRGB, chromaticAdaptation.ts); a non-finite matrix counts as the identity. */
   setAdaptation(matrix: Mat3): void;
@@ -144,8 +149,8 @@ export function createRoomSurfaces(scene: THREE.Scene, renderer: THREE.WebGLRend
           s.texture.minFilter = s.texture.magFilter = linear ? THREE.LinearFilter : THREE.NearestFilter;
           s.texture.wrapS = s.texture.wrapT = THREE.ClampToEdgeWrapping;
           s.texture.generateMipmaps = false;
-          s.material.uniforms.uIlluminance.value = s.texture;
         }
+        s.material.uniforms.uIlluminance.value = s.texture;
         const dst = s.texture.image.data as Float32Array;
         const src = lit.maps[name].total;
         for (let i = 0; i < n; i++) {
@@ -159,6 +164,9 @@ export function createRoomSurfaces(scene: THREE.Scene, renderer: THREE.WebGLRend
         applyFinish(s, layout, reflectance[name]);
       }
       lastReflectance = reflectance;
+    },
+    setLightTextures(textures) {
+      for (const [name, s] of surfaces) s.material.uniforms.uIlluminance.value = textures[name];
     },
     setFinishTextures(on) {
       texturesOn = on;

@@ -14,6 +14,7 @@ import { drawViewerFrame, followBakeService, restoreViewer, tapViewer } from './
 import { viewerSceneApi } from './controller/viewerSceneApi';
 import { viewerDisplayApi } from './controller/viewerDisplayApi';
 import { viewerCompareApi } from './controller/viewerCompareApi';
+import { createViewerGpu, disposeViewerGpu, gpuViewStatus } from './controller/gpuRelightFrame';
 
 export type { CompareRequest, ViewerEvents } from './controller/viewer';
 
@@ -44,7 +45,8 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
   const stopTaps = watchTaps(canvas, (x, y) => tapViewer(v, x, y));
   const spotlight = createSpotlight(viewerSpotlightDeps(canvas, controls, renderer.extensions.has('OES_texture_float_linear'), () => v));
   const maps = createMapDisplay(() => v.view, events.onMaps);
-  const v: Viewer = Object.assign(state, { renderer, service, events, controls, display, frames, camera, spotlight, maps });
+  const gpu = createViewerGpu({ renderer });
+  const v: Viewer = Object.assign(state, { renderer, service, events, controls, display, frames, camera, spotlight, maps, gpu });
 
   const unsubscribe = followBakeService(v);
   if (service.error) queueMicrotask(() => events.onError(service.error!));
@@ -53,6 +55,8 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
     ...viewerSceneApi(v),
     ...viewerDisplayApi(v),
     ...viewerCompareApi(v),
+    /** Read-backs, uploads and texture memory of the view's relight (`view3d().gpu`). */
+    gpuStatus: () => gpuViewStatus(v.gpu),
     /** Frees the display only: the service keeps its engine, maps and pending work. */
     dispose() {
       v.compareView?.dispose();
@@ -62,6 +66,7 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
       stopTaps();
       spotlight.dispose();
       controls.dispose();
+      disposeViewerGpu(gpu);
       v.view.dispose();
       renderer.dispose();
       display.dispose();

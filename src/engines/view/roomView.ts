@@ -32,6 +32,8 @@ export interface RoomView {
   readonly display: SharedDisplayUniforms;
   /** Upload relit maps (RGB lux) and the room's reflectances. */
   setMaps(lit: LitMaps, reflectance: Record<SurfaceName, Rgb>): void;
+  /** Show the GPU relight's textures (createViewRelight.ts) on the surfaces and objects the last setMaps/setObjectLight laid out: a relight. */
+  setLightTextures(surfaces: Record<SurfaceName, THREE.Texture>, objects: THREE.Texture | null): void;
   /** The objects' geometry (PreparedObjects of the scene's objects, the same the baker lights; null: none). */
   setObjects(prepared: PreparedObjects | null): void;
   /** A room of any shape (null: the box): its own surfaces are drawn from the atlas, the box's hidden (shapedRoomView.ts). */
@@ -99,6 +101,10 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
     setMaps(lit, reflectance) {
       surfaces.setMaps(lit, reflectance);
       hardware.setAmbient(meanIlluminance(lit));
+    },
+    setLightTextures(textures, objectsTexture) {
+      surfaces.setLightTextures(textures);
+      if (objectsTexture) objects.setLightTexture(objectsTexture);
     },
     setExposure: surfaces.setExposure,
     setAdaptation: surfaces.setAdaptation,

@@ -18,5 +18,5 @@ export { resolveBakeScene, resolveBakeSceneSync, LuminairePhotometryError, Scene
 export { DEFAULT_BAKE_SETTINGS, resolveBakeSettings, type BakeSettings } from '../../engines/bake/bakeSettings';
 export { luxOf, combineMaps, LUMINANCE_WEIGHTS, type BakedMaps, type SurfaceMaps, type ObjectMaps } from '../../engines/bake/bakedMaps';
 export { createRelightEngine, VIEWER_BAKE_SETTINGS } from '../../engines/relight/createRelightEngine';
-export type { RelightEngine, EngineProgress, EngineCounters, EngineFade, SetSceneResult } from '../../engines/relight/RelightEngine';
+export type { RelightEngine, EngineProgress, EngineCounters, EngineFade, RelightParts, SetSceneResult } from '../../engines/relight/RelightEngine';
 export type { TriangleMesh } from '../../core/mesh/triangleMesh';

@@ -11,6 +11,7 @@ export { SceneFileError } from '../../core/model/files/sceneFileError';
 export type { BillOfMaterials } from '../../core/model/power/billOfMaterials';
 export type { InstallationNeeds } from '../../core/model/power/installationNeeds';
 export type { ViewerStatus } from '../../ui/viewer/viewerStatus';
+export type { GpuViewStatus } from '../../engines/view/controller/gpuRelightFrame';
 export type { QualityLevel } from '../../engines/relight/qualityLevels';
 export type { Language } from '../../ui/i18n/languages';
 export type { LightingScene } from '../../core/model/lightingScene/lightingScene';

@@ -63,8 +63,14 @@ function viewerEvents({ store, controllerRef, litRef, record, shown }: ViewerCon
       const objects = prepared && light && light.atlas.width === prepared.atlas.width && light.atlas.height === prepared.atlas.height ? objectStats(lit, prepared, light) : null;
       publish({ lastRelightMs: info.relightMs, floor: { avg: f.avg, min: f.min, max: f.max, u0: f.u0 }, objects });
     },
+    // A relight on the GPU: no CPU maps; the floor's statistics arrive from the GPU reduction, the rest with the settled CPU relight.
+    onGpuRelight: (info) => publish({ lastRelightMs: info.relightMs, gpu: controllerRef.current?.gpuStatus() ?? null }),
+    onFloorStats: (f) => {
+      shown.setFloor(f);
+      publish({ floor: { avg: f.avg, min: f.min, max: f.max, u0: f.u0 }, gpu: controllerRef.current?.gpuStatus() ?? null });
+    },
     onFrame: (frames) => {
-      const patch: Partial<ViewerStatus> = { frames, compare: controllerRef.current?.compareState() ?? null };
+      const patch: Partial<ViewerStatus> = { frames, compare: controllerRef.current?.compareState() ?? null, gpu: controllerRef.current?.gpuStatus() ?? null };
       if (!status.current.lit && litRef.current) {
         patch.lit = true;
         patch.firstLitMs = performance.now() - mountedAt.current;

@@ -1,4 +1,5 @@
 import type { BakeStatus } from '../../engines/view/createBakeService';
+import type { GpuViewStatus } from '../../engines/view/controller/gpuRelightFrame';
 
 /**
  * What the 3D view reports about itself, readable without loading three.js
@@ -27,7 +28,7 @@ export interface ViewerStatus {
    * light the service had already baked (nothing was waited for).
    */
   firstLitFrame: number | null;
-  /** Milliseconds of the last relight (weighted sum + texture upload). */
+  /** Milliseconds of the last relight (weighted sum + texture upload on the CPU path; the combine's draws on the GPU path). */
   lastRelightMs: number | null;
   /** WebGL contexts lost and recovered. */
   contextLosses: number;
@@ -55,6 +56,12 @@ export interface ViewerStatus {
    * configurator started, and the quality level.
    */
   bake: BakeStatus;
+  /**
+   * The relight in the view's context (docs/viewer.md, "Relighting on the GPU"), null while closed:
+   * GPU and CPU relights, maps and statistics texels read back, bytes uploaded, the last frame's
+   * read-backs and bytes, the texture memory held and the bases' precision.
+   */
+  gpu: GpuViewStatus | null;
 }
 
 const statuses = new WeakMap<object, ViewerStatus>();
@@ -81,6 +88,7 @@ export const CLOSED_STATUS: ViewerStatus = {
   compare: null,
   objects: null,
   bake: IDLE_BAKE,
+  gpu: null,
 };
 
 export function setViewerStatus(owner: object, status: ViewerStatus): void {

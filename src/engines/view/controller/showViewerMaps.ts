@@ -6,6 +6,7 @@ import { sceneGeometryKey } from '../sceneGeometryKey';
 import { showCompare } from './compareSides';
 import { luminaireWeight } from '../luminaireWeight';
 import { syncGlare, type Viewer } from './viewer';
+import { cancelSettle, noteCpuShow, showRelightOnGpu } from './gpuRelightFrame';
 
 /** The engine's maps on screen (both compare sides during the A/B compare), glare as the bake's progress says. */
 export function showMaps(v: Viewer, engine: RelightEngine): void {
@@ -17,10 +18,21 @@ export function showMaps(v: Viewer, engine: RelightEngine): void {
     v.frames.request();
     return;
   }
-  const t0 = performance.now();
-  v.maps.show(engine.maps(), reflectanceRgb(v.scene.room), t0, { white: adoptedWhite(v.scene.luminaires), key: sceneGeometryKey(v.scene), done: engine.progress.done });
+  if (!showRelightOnGpu(v, engine, () => showOnCpu(v, engine))) showOnCpu(v, engine);
   syncWeights(v);
   v.shownVersion = engine.version;
+  v.frames.request();
+}
+
+/** The engine's maps summed on the CPU (engine.maps()) and uploaded: new geometry, the eye adapting, the compare, or a settled GPU relight stream. */
+function showOnCpu(v: Viewer, engine: RelightEngine): void {
+  if (!v.scene) return;
+  cancelSettle(v.gpu);
+  const t0 = performance.now();
+  const lit = engine.maps();
+  const key = sceneGeometryKey(v.scene);
+  v.maps.show(lit, reflectanceRgb(v.scene.room), t0, { white: adoptedWhite(v.scene.luminaires), key, done: engine.progress.done });
+  noteCpuShow(v.gpu, lit, key);
   v.frames.request();
 }
 

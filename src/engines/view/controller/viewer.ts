@@ -13,6 +13,8 @@ import type { Fixtures } from '../fixtures';
 import type { LiveLevel } from '../liveLevels';
 import type { PickTarget, RoomView } from '../roomView';
 import type { ContextWatch } from '../watchContextLoss';
+import type { IlluminanceStats } from '../lightStats';
+import type { ViewerGpu } from './gpuRelightFrame';
 
 /** The A/B compare (docs/viewer.md, "A/B compare"): two light scenes of the configuration, A left of the wipe at `split` (0…1 of the width), B right of it. */
 export interface CompareRequest {
@@ -26,6 +28,10 @@ export interface ViewerEvents {
   onProgress(p: { fraction: number; done: boolean; lit: boolean; groupBakes: number; relightsOnly: number; indirectSolves: number }): void;
   /** New relit maps are on screen (for statistics and the legend). */
   onMaps: MapsListener;
+  /** A relight combined on the GPU is on screen (no CPU maps: createViewRelight.ts); `relightMs` is the time its draws took to issue. */
+  onGpuRelight?(info: { relightMs: number }): void;
+  /** The floor's statistics of the GPU relight on screen, once its reduction is read (createGpuStats.ts). */
+  onFloorStats?(stats: IlluminanceStats): void;
   onFrame(frames: number): void;
   onContext(state: 'lost' | 'restored'): void;
   onError(message: string): void;
@@ -85,6 +91,8 @@ export interface Viewer extends ViewerState {
   readonly camera: CameraRig;
   readonly spotlight: Spotlight;
   readonly maps: MapDisplay;
+  /** The relight in the view's context and its counters (gpuRelightFrame.ts). */
+  readonly gpu: ViewerGpu;
 }
 
 /** A viewer before any scene: glare on, nothing shown yet. */

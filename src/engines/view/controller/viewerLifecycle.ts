@@ -2,6 +2,7 @@ import { createRoomView } from '../roomView';
 import { drawCompare } from './compareSides';
 import { bakeCounters, showMaps, syncObjects } from './showViewerMaps';
 import { glareNow, syncGlare, type Viewer } from './viewer';
+import { countGpuFrame, resetViewerGpu } from './gpuRelightFrame';
 
 /** After a context loss: three re-creates its GL objects; the room is rebuilt so every texture and program is uploaded anew. */
 export function restoreViewer(v: Viewer): void {
@@ -9,6 +10,7 @@ export function restoreViewer(v: Viewer): void {
   v.compareView?.dispose();
   v.compareView = null;
   v.view = createRoomView(v.renderer);
+  resetViewerGpu(v);
   v.view.setGlare(glareNow(v));
   v.camera.attach(v.view);
   if (v.fixtures) v.view.setFixtures(v.fixtures);
@@ -29,6 +31,7 @@ export function drawViewerFrame(v: Viewer): void {
   if (v.maps.advance(performance.now())) v.frames.request();
   v.view.render(v.renderer);
   if (v.compare && v.compareView) drawCompare(v, v.compare, v.compareView);
+  countGpuFrame(v.gpu);
 }
 
 /** A tap at canvas pixel (x, y): an aim-at point, or a pick (none in the spotlight view, where a tap ends a drag of the head). */

@@ -1,0 +1,196 @@
+import type { SurfaceLayout } from '../../bake/surfaceLayout';
+import type { PreparedObjects } from '../../bake/objects/preparedObjects';
+import type { BasisPrecision } from '../../relight/createGpuRelight';
+import type { RelightEngine } from '../../relight/RelightEngine';
+import type { LitMaps } from '../../relight/relightMaps';
+import { createViewRelight, type ViewRelight } from '../createViewRelight';
+import type { PendingStats } from '../createGpuStats';
+import { floorUnderObjects } from '../lightStats';
+import { sceneGeometryKey } from '../sceneGeometryKey';
+import type { Viewer } from './viewer';
+
+/**
+ * After the last GPU relight of a stream (a crossfade, a dimming drag, a DMX stream) has stood this
+ * long, the maps are relit once on the CPU as well, for what still reads CPU maps: the legend's
+ * percentile, the work plane, the objects' statistics, the housings' ambient light. A stream never
+ * waits for it; the floor's statistics follow every GPU relight (createGpuStats).
+ */
+export const GPU_SETTLE_MS = 400;
+
+/** Bytes the CPU path uploads for a relit map set: RGBA32F per texel of every receiver shown (createRoomSurfaces, createRoomObjects). */
+export function displayUploadBytes(lit: LitMaps): number {
+  let texels = 0;
+  for (const l of Object.values(lit.layouts)) texels += l.width * l.height;
+  const objects = lit.maps.objects;
+  if (objects) texels += objects.atlas.width * objects.atlas.height;
+  return texels * 16;
+}
+
+/** What `view3d().gpu` reports (docs/viewer.md, "Relighting on the GPU"). */
+export interface GpuViewStatus {
+  /** Precision of the bases in the view's context. */
+  precision: BasisPrecision;
+  /** Relights combined on the GPU, and relights summed on the CPU and uploaded. */
+  gpuRelights: number;
+  cpuRelights: number;
+  /** Maps read back from the view's context (0: the relight writes textures three samples). */
+  mapReadbacks: number;
+  mapReadbackBytes: number;
+  /** Statistics texels read back (16 bytes each, after their fence). */
+  statsReadbacks: number;
+  /** Bytes uploaded to the view's context: bases and solutions (each once) and the CPU path's display maps. */
+  uploadBytes: number;
+  /** The last drawn frame: read-backs and bytes read back and uploaded since the frame before it. */
+  frame: { readbacks: number; readbackBytes: number; uploadBytes: number };
+  /** GPU texture memory the relight holds (bases, solutions, display targets). */
+  textureBytes: number;
+}
+
+/** The GPU side of the viewer: the view's relight, what the CPU path showed last, the settle timer and the floor mask. */
+export interface ViewerGpu {
+  relight: ViewRelight;
+  /** The layouts and geometry key of the last CPU show: a GPU relight draws onto those surfaces. */
+  layouts: LitMaps['layouts'] | null;
+  key: string | null;
+  cpuRelights: number;
+  cpuUploadBytes: number;
+  settle: ReturnType<typeof setTimeout> | null;
+  mask: { layout: SurfaceLayout; prepared: PreparedObjects | null; covered: Uint8Array } | null;
+  pending: PendingStats | null;
+  /** Counts at the previous frame (for the per-frame numbers). */
+  lastTotals: { readbacks: number; readbackBytes: number; uploadBytes: number };
+  frame: GpuViewStatus['frame'];
+  /** The view was disposed: pending statistics are not polled any more. */
+  disposed: boolean;
+}
+
+export function createViewerGpu(v: Pick<Viewer, 'renderer'>): ViewerGpu {
+  return {
+    relight: createViewRelight(v.renderer),
+    layouts: null,
+    key: null,
+    cpuRelights: 0,
+    cpuUploadBytes: 0,
+    settle: null,
+    mask: null,
+    pending: null,
+    lastTotals: { readbacks: 0, readbackBytes: 0, uploadBytes: 0 },
+    frame: { readbacks: 0, readbackBytes: 0, uploadBytes: 0 },
+    disposed: false,
+  };
+}
+
+/** The CPU path showed these maps: GPU relights may follow on the same surfaces. */
+export function noteCpuShow(g: ViewerGpu, lit: LitMaps, key: string): void {
+  g.layouts = lit.layouts;
+  g.key = key;
+  g.cpuRelights++;
+  g.cpuUploadBytes += displayUploadBytes(lit);
+}
+
+function floorMask(g: ViewerGpu, layout: SurfaceLayout, prepared: PreparedObjects | null): Uint8Array {
+  if (!g.mask || g.mask.layout !== layout || g.mask.prepared !== prepared) g.mask = { layout, prepared, covered: floorUnderObjects(layout, prepared) };
+  return g.mask.covered;
+}
+
+/**
+ * Show the engine's maps by the GPU combine when this is a relight of what is on screen: the same
+ * geometry and layouts the CPU path showed last, not yet the final look (light not done, or a
+ * crossfade under way), the eye held (so no exposure is taken from the
+ * maps), no A/B compare, the relight's programs compiled (programsReady: never a wait on the driver), the textures within the device's budget. Returns false when the CPU path
+ * must show them. Nothing is read back: the floor's statistics are requested (16 bytes after a
+ * fence) and reported when they arrive; the CPU relight follows once after GPU_SETTLE_MS of quiet.
+ */
+export function showRelightOnGpu(v: Viewer, engine: RelightEngine, showOnCpu: () => void): boolean {
+  const g = v.gpu;
+  if (!v.scene || v.compare || !v.maps.held() || g.key !== sceneGeometryKey(v.scene)) return false;
+  const parts = engine.relightParts();
+  // The final look (done, no crossfade under way) is shown on the CPU at once: its statistics, legend and work plane are final with it.
+  if (!parts || (engine.progress.done && parts.fade === null)) return false;
+  // A room's first solve shows previews (not final solutions): bake progress, shown on the CPU as it was baked, not a relight.
+  if (parts.terms.some((t) => !t.solution.final)) return false;
+  if (parts.layouts !== g.layouts || !g.relight.ready() || !g.relight.fits(parts)) return false;
+  const t0 = performance.now();
+  const maps = g.relight.relight(parts);
+  v.view.setLightTextures(maps.surfaces, maps.objects);
+  v.events.onGpuRelight?.({ relightMs: performance.now() - t0 });
+  // A room of any shape has its floor in the atlas: its statistics wait for the settled CPU relight.
+  if (!parts.layouts.floor.sink) {
+    g.pending = g.relight.floorStats(maps, floorMask(g, parts.layouts.floor, v.prepared));
+    pollFloorStats(v, g.pending);
+  }
+  if (g.settle) clearTimeout(g.settle);
+  g.settle = setTimeout(() => {
+    g.settle = null;
+    if (v.service.engine === engine) showOnCpu();
+  }, GPU_SETTLE_MS);
+  return true;
+}
+
+/**
+ * Poll a floor statistics request once per animation frame until the GPU has finished it (never
+ * waits). A request superseded by a newer one is still polled to its end (that frees its fence and
+ * texel) but not reported.
+ */
+function pollFloorStats(v: Viewer, pending: PendingStats): void {
+  const gpu = v.gpu;
+  const relight = gpu.relight;
+  const tick = () => {
+    // A context lost and restored meanwhile: the request's objects belong to the disposed relight.
+    if (gpu.relight !== relight || gpu.disposed) return;
+    const stats = pending.poll();
+    if (!stats) {
+      requestAnimationFrame(tick);
+      return;
+    }
+    if (gpu.pending !== pending) return;
+    gpu.pending = null;
+    v.events.onFloorStats?.(stats);
+  };
+  requestAnimationFrame(tick);
+}
+
+/** Cancel the settle timer (a CPU show replaces it, the view is disposed). */
+export function cancelSettle(g: ViewerGpu): void {
+  if (g.settle) clearTimeout(g.settle);
+  g.settle = null;
+  g.pending = null;
+}
+
+/** The counters of `view3d().gpu`, with the per-frame numbers of the last drawn frame. */
+export function gpuViewStatus(g: ViewerGpu): GpuViewStatus {
+  const c = g.relight.counters;
+  return {
+    precision: g.relight.precision,
+    gpuRelights: c.relights,
+    cpuRelights: g.cpuRelights,
+    mapReadbacks: c.mapReadbacks.count,
+    mapReadbackBytes: c.mapReadbacks.bytes,
+    statsReadbacks: c.statsReadbacks.count,
+    uploadBytes: c.uploads.bytes + g.cpuUploadBytes,
+    frame: { ...g.frame },
+    textureBytes: g.relight.textureBytes(),
+  };
+}
+
+/** At each drawn frame: what was read back and uploaded since the previous one. */
+export function countGpuFrame(g: ViewerGpu): void {
+  const c = g.relight.counters;
+  const now = { readbacks: c.mapReadbacks.count + c.statsReadbacks.count, readbackBytes: c.mapReadbacks.bytes + c.statsReadbacks.bytes, uploadBytes: c.uploads.bytes + g.cpuUploadBytes };
+  g.frame = { readbacks: now.readbacks - g.lastTotals.readbacks, readbackBytes: now.readbackBytes - g.lastTotals.readbackBytes, uploadBytes: now.uploadBytes - g.lastTotals.uploadBytes };
+  g.lastTotals = now;
+}
+
+/** The view is going: no more statistics polls, the relight's textures and programs freed. */
+export function disposeViewerGpu(g: ViewerGpu): void {
+  cancelSettle(g);
+  g.disposed = true;
+  g.relight.dispose();
+}
+
+/** After a context loss the relight's textures are gone: a fresh one (the next show is on the CPU). */
+export function resetViewerGpu(v: Viewer): void {
+  cancelSettle(v.gpu);
+  v.gpu.relight.dispose();
+  Object.assign(v.gpu, createViewerGpu(v), { cpuRelights: v.gpu.cpuRelights, cpuUploadBytes: v.gpu.cpuUploadBytes });
+}
