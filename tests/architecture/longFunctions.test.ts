@@ -22,7 +22,6 @@ const ALLOWED: ReadonlyMap<string, string> = new Map([
   ['src/engines/view/createRoomHardware.ts:createRoomHardware', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/engines/bake/objects/rasterizeAtlas.ts:rasterizeAtlas', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
   ['src/hosts/bench/runBench.ts:runBench', "a command's steps in order: to be split into named steps, as startBakeJob was"],
-  ['src/engines/meshImport/scanObjText.ts:scanObjText', 'one pass over the OBJ text with its caps inline (importLimits.test.ts proves each cap by its refusal): to be split by statement kind'],
   ['src/engines/view/createBakeSlicer.ts:createBakeSlicer', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/engines/view/roomView.ts:createRoomView', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's; shaped rooms (issue 29) add hooks to the viewer today"],
   ['src/hosts/node/createProbe.ts:createProbe', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],

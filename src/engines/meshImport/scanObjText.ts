@@ -39,90 +39,30 @@ const PIECE_BYTES = 1 << 20;
  */
 export function scanObjText(bytes: Uint8Array, file: string): ScannedObj {
   checkByteCap(file, bytes.length, MODEL_BYTE_CAPS.obj, 'an OBJ file');
+  const scan: ObjScan = { file, out: [], mtllibs: [], ignored: new Map(), vertices: 0, triangles: 0, currentMaterial: '', materialChanges: 0 };
+  forEachObjStatement(bytes, file, (line, lineNumber) => statement(scan, line, lineNumber));
+  if (scan.triangles === 0) throw new InputError(`${file}: no faces (luxbox needs a surface model with 'f' lines)`);
+  return { text: scan.out.join('\n'), triangles: scan.triangles, vertices: scan.vertices, mtllibs: scan.mtllibs, ignored: scan.ignored };
+}
+
+/** What the scan has read so far. */
+interface ObjScan {
+  readonly file: string;
+  readonly out: string[];
+  readonly mtllibs: string[];
+  readonly ignored: Map<string, number>;
+  vertices: number;
+  triangles: number;
+  currentMaterial: string;
+  materialChanges: number;
+}
+
+/**
+ * Calls `statement` for each logical line (continuations joined) with the number of its first line.
+ * The bytes are decoded a piece at a time, each ending at a line break.
+ */
+function forEachObjStatement(bytes: Uint8Array, file: string, statement: (line: string, lineNumber: number) => void): void {
   const decoder = new TextDecoder('utf-8', { fatal: false, ignoreBOM: false });
-  const out: string[] = [];
-  const mtllibs: string[] = [];
-  const ignored = new Map<string, number>();
-  let vertices = 0;
-  let triangles = 0;
-  let currentMaterial = '';
-  let materialChanges = 0;
-
-  const statement = (line: string, lineNumber: number): void => {
-    // The common statements luxbox drops (comments, groups, objects, smoothing, normals, texture
-    // coordinates) are recognised by their first bytes, without trimming or tokenising.
-    const c0 = line.charCodeAt(0);
-    const c1 = line.charCodeAt(1);
-    if (c0 === 35 /* # */) return;
-    if ((c0 === 103 /* g */ || c0 === 111 /* o */ || c0 === 115) /* s */ && (c1 === 32 || c1 === 9 || line.length === 1)) return;
-    if (c0 === 118 /* v */ && (c1 === 110 /* n */ || c1 === 116) /* t */ && (line.charCodeAt(2) === 32 || line.charCodeAt(2) === 9)) return;
-    const trimmed = line.trim();
-    if (trimmed === '' || trimmed.charCodeAt(0) === 35 /* # */) return;
-    const where = `${file}: line ${lineNumber}`;
-    if (trimmed.includes('\0')) {
-      if (/^[\0\s]*$/.test(trimmed)) return;
-      throw new InputError(`${where}: binary data (a NUL byte): not a text OBJ file`);
-    }
-    const space = trimmed.search(/\s/);
-    const keyword = space < 0 ? trimmed : trimmed.slice(0, space);
-    switch (keyword) {
-      case 'v': {
-        const tokens = trimmed.split(/\s+/);
-        if (tokens.length < 4) throw new InputError(`${where}: a vertex needs three coordinates, got ${tokens.length - 1}`);
-        const xyz = tokens.slice(1, 4).map((t) => {
-          const value = Number(t);
-          if (!Number.isFinite(value)) throw new InputError(`${where}: vertex coordinate ${quote(t)} is not a finite number`);
-          return value;
-        });
-        vertices++;
-        if (vertices > MAX_OBJ_VERTICES) throw new InputError(`${file}: more than ${formatCount(MAX_OBJ_VERTICES)} vertices; simplify the model and import again`);
-        out.push(`v ${xyz[0]} ${xyz[1]} ${xyz[2]}`);
-        break;
-      }
-      case 'f': {
-        const tokens = trimmed.split(/\s+/);
-        if (tokens.length < 4) throw new InputError(`${where}: a face needs at least 3 vertices, got ${tokens.length - 1}`);
-        const indices = tokens.slice(1).map((t) => {
-          const part = t.split('/')[0];
-          if (!/^[+-]?\d{1,9}$/.test(part)) throw new InputError(`${where}: face vertex ${quote(t)} is not a vertex index`);
-          const k = Number(part);
-          // Negative indices count back from the last vertex defined so far (OBJ spec, "Referencing vertex data").
-          const absolute = k < 0 ? vertices + 1 + k : k;
-          if (k === 0 || absolute < 1 || absolute > vertices) {
-            throw new InputError(`${where}: face refers to vertex ${k}, but ${vertices === 1 ? 'only 1 vertex is' : `${vertices} vertices are`} defined so far`);
-          }
-          return absolute;
-        });
-        triangles += indices.length - 2;
-        // Refuse at once: the rest of a huge file is not worth reading.
-        checkTriangleBudget(file, triangles, true);
-        out.push(`f ${indices.join(' ')}`);
-        break;
-      }
-      case 'o':
-      case 'g':
-        // Objects and groups carry nothing luxbox keeps (materials come from usemtl), and OBJLoader
-        // builds a mesh for each: 600 000 `g` lines took 5 s (issue 32). Not passed on.
-        break;
-      case 'usemtl': {
-        const material = space > 0 ? trimmed.slice(6).trim() : '';
-        // Only a change of material starts a new group in OBJLoader; each costs a draw group.
-        if (material === '' || material === currentMaterial) break;
-        currentMaterial = material;
-        materialChanges++;
-        if (materialChanges > MAX_OBJ_MATERIAL_CHANGES) throw new InputError(`${where}: more than ${formatCount(MAX_OBJ_MATERIAL_CHANGES)} changes of material (usemtl); merge faces of one material`);
-        out.push(`usemtl ${material}`);
-        break;
-      }
-      case 'mtllib':
-        // File names may not contain spaces in OBJ; several libraries may share one line.
-        for (const name of trimmed.split(/\s+/).slice(1)) if (!mtllibs.includes(name)) mtllibs.push(name);
-        break;
-      default:
-        if (!SILENT.has(keyword)) ignored.set(keyword.slice(0, 16), (ignored.get(keyword.slice(0, 16)) ?? 0) + 1);
-    }
-  };
-
   let lineNumber = 0;
   // A trailing backslash continues the statement on the next line (OBJ spec, "Line continuation");
   // the pieces are joined once at the end (joining line by line would be quadratic).
@@ -156,8 +96,87 @@ export function scanObjText(bytes: Uint8Array, file: string): ScannedObj {
     }
   }
   if (continued.length > 0) statement(continued.join(''), continuedFrom);
-  if (triangles === 0) throw new InputError(`${file}: no faces (luxbox needs a surface model with 'f' lines)`);
-  return { text: out.join('\n'), triangles, vertices, mtllibs, ignored };
+}
+
+function statement(scan: ObjScan, line: string, lineNumber: number): void {
+  // The common statements luxbox drops (comments, groups, objects, smoothing, normals, texture
+  // coordinates) are recognised by their first bytes, without trimming or tokenising.
+  const c0 = line.charCodeAt(0);
+  const c1 = line.charCodeAt(1);
+  if (c0 === 35 /* # */) return;
+  if ((c0 === 103 /* g */ || c0 === 111 /* o */ || c0 === 115) /* s */ && (c1 === 32 || c1 === 9 || line.length === 1)) return;
+  if (c0 === 118 /* v */ && (c1 === 110 /* n */ || c1 === 116) /* t */ && (line.charCodeAt(2) === 32 || line.charCodeAt(2) === 9)) return;
+  const trimmed = line.trim();
+  if (trimmed === '' || trimmed.charCodeAt(0) === 35 /* # */) return;
+  const where = `${scan.file}: line ${lineNumber}`;
+  if (trimmed.includes('\0')) {
+    if (/^[\0\s]*$/.test(trimmed)) return;
+    throw new InputError(`${where}: binary data (a NUL byte): not a text OBJ file`);
+  }
+  const space = trimmed.search(/\s/);
+  const keyword = space < 0 ? trimmed : trimmed.slice(0, space);
+  switch (keyword) {
+    case 'v':
+      return vertex(scan, trimmed, where);
+    case 'f':
+      return face(scan, trimmed, where);
+    case 'o':
+    case 'g':
+      // Objects and groups carry nothing luxbox keeps (materials come from usemtl), and OBJLoader
+      // builds a mesh for each: 600 000 `g` lines took 5 s (issue 32). Not passed on.
+      return;
+    case 'usemtl':
+      return materialChange(scan, space > 0 ? trimmed.slice(6).trim() : '', where);
+    case 'mtllib':
+      // File names may not contain spaces in OBJ; several libraries may share one line.
+      for (const name of trimmed.split(/\s+/).slice(1)) if (!scan.mtllibs.includes(name)) scan.mtllibs.push(name);
+      return;
+    default:
+      if (!SILENT.has(keyword)) scan.ignored.set(keyword.slice(0, 16), (scan.ignored.get(keyword.slice(0, 16)) ?? 0) + 1);
+  }
+}
+
+function vertex(scan: ObjScan, trimmed: string, where: string): void {
+  const tokens = trimmed.split(/\s+/);
+  if (tokens.length < 4) throw new InputError(`${where}: a vertex needs three coordinates, got ${tokens.length - 1}`);
+  const xyz = tokens.slice(1, 4).map((t) => {
+    const value = Number(t);
+    if (!Number.isFinite(value)) throw new InputError(`${where}: vertex coordinate ${quote(t)} is not a finite number`);
+    return value;
+  });
+  scan.vertices++;
+  if (scan.vertices > MAX_OBJ_VERTICES) throw new InputError(`${scan.file}: more than ${formatCount(MAX_OBJ_VERTICES)} vertices; simplify the model and import again`);
+  scan.out.push(`v ${xyz[0]} ${xyz[1]} ${xyz[2]}`);
+}
+
+function face(scan: ObjScan, trimmed: string, where: string): void {
+  const tokens = trimmed.split(/\s+/);
+  if (tokens.length < 4) throw new InputError(`${where}: a face needs at least 3 vertices, got ${tokens.length - 1}`);
+  const vertices = scan.vertices;
+  const indices = tokens.slice(1).map((t) => {
+    const part = t.split('/')[0];
+    if (!/^[+-]?\d{1,9}$/.test(part)) throw new InputError(`${where}: face vertex ${quote(t)} is not a vertex index`);
+    const k = Number(part);
+    // Negative indices count back from the last vertex defined so far (OBJ spec, "Referencing vertex data").
+    const absolute = k < 0 ? vertices + 1 + k : k;
+    if (k === 0 || absolute < 1 || absolute > vertices) {
+      throw new InputError(`${where}: face refers to vertex ${k}, but ${vertices === 1 ? 'only 1 vertex is' : `${vertices} vertices are`} defined so far`);
+    }
+    return absolute;
+  });
+  scan.triangles += indices.length - 2;
+  // Refuse at once: the rest of a huge file is not worth reading.
+  checkTriangleBudget(scan.file, scan.triangles, true);
+  scan.out.push(`f ${indices.join(' ')}`);
+}
+
+/** Only a change of material starts a new group in OBJLoader; each costs a draw group. */
+function materialChange(scan: ObjScan, material: string, where: string): void {
+  if (material === '' || material === scan.currentMaterial) return;
+  scan.currentMaterial = material;
+  scan.materialChanges++;
+  if (scan.materialChanges > MAX_OBJ_MATERIAL_CHANGES) throw new InputError(`${where}: more than ${formatCount(MAX_OBJ_MATERIAL_CHANGES)} changes of material (usemtl); merge faces of one material`);
+  scan.out.push(`usemtl ${material}`);
 }
 
 function quote(token: string): string {
