@@ -9,6 +9,20 @@ import type { Catalog } from '../catalogSchema/catalogSchema';
 import { formatPath } from '../catalogSchema/catalogSchema';
 import type { Configuration } from '../configuration/configuration';
 import { setRoom } from './roomActions';
+import {
+  addRoomOpening,
+  moveRoomCorner,
+  removeRoomCorner,
+  removeRoomOpening,
+  removeRoomSlope,
+  setRoomCornerAngle,
+  setRoomOpening,
+  setRoomShapePreset,
+  setRoomSlope,
+  setRoomWallLength,
+  setWallFinish,
+  splitRoomWall,
+} from './roomShapeActions';
 import { setReflectance } from './surfaceActions';
 import { deleteSystem, moveSystem, placePreset, rotateSystem, setMounting, setSuspension } from './systemActions';
 import { addFeed, moveFeed, removeFeed, setFeedDriver } from './feedActions';
@@ -24,6 +38,18 @@ import { addObject, moveObject, refinishObject, removeObject, resizeObject, rota
 
 export const actionDefinitions = {
   setRoom,
+  setRoomShapePreset,
+  moveRoomCorner,
+  splitRoomWall,
+  setRoomWallLength,
+  setRoomCornerAngle,
+  removeRoomCorner,
+  setRoomSlope,
+  removeRoomSlope,
+  addRoomOpening,
+  setRoomOpening,
+  removeRoomOpening,
+  setWallFinish,
   setReflectance,
   placePreset,
   deleteSystem,
