@@ -1,5 +1,5 @@
 /**
- * Lighting scene, versions 1 and 2: the contract between the configurator, the baker
+ * Lighting scene, versions 1, 2 and 3: the contract between the configurator, the baker
  * and the command line (docs/scene-format.md). Extend, never break.
  */
 import type { Room as ShapedRoom } from '../../room/normaliseRoom';
@@ -76,12 +76,12 @@ export interface LightingObject {
 }
 
 export interface LightingScene {
-  /** 1, or 2 when the scene uses a version-2 field (nearField, objects). */
-  version: 1 | 2;
-  /** Version 2 only; absent means DEFAULT_NEAR_FIELD ('split'). */
+  /** 1, or 2 when the scene uses a version-2 field (nearField, objects), or 3 when its room has a shape (room.shape). */
+  version: 1 | 2 | 3;
+  /** Versions 2 and 3; absent means DEFAULT_NEAR_FIELD ('split'). */
   nearField?: NearField;
   room: LightingRoom;
   luminaires: LightingLuminaire[];
-  /** Version 2 only; absent or empty: an empty room. */
+  /** Versions 2 and 3; absent or empty: an empty room. */
   objects?: LightingObject[];
 }

@@ -1,5 +1,5 @@
 /**
- * Reading a lighting scene (versions 1 and 2, docs/scene-format.md) from
+ * Reading a lighting scene (versions 1, 2 and 3, docs/scene-format.md) from
  * untrusted JSON: size and shape limits (untrustedJson.ts),
  * the version, structure and types with zod (strict: an unknown field is
  * refused, naming it, with a suggestion for a misspelling), then the physical
@@ -11,7 +11,12 @@
  */
 import { z } from 'zod';
 import { InputError } from '../../inputError';
-import { NEAR_FIELD_MODELS, SURFACE_NAMES, type LightingScene, type SurfaceName } from './lightingScene';
+import { NEAR_FIELD_MODELS, SURFACE_NAMES, type LightingRoom, type LightingScene, type SurfaceName } from './lightingScene';
+import { normaliseRoom, type Room as ShapedRoom } from '../../room/normaliseRoom';
+import { pointInsideRoom } from '../../room/ceilingHeightAt';
+import type { RoomInput } from '../../room/roomInput';
+import { roomSchema } from '../../room/roomSchema';
+import { boxReflectanceOf } from './boxWallFacing';
 import { excerpt, jsonShapeProblem, oneLine } from '../../untrustedJson';
 import { describeIssues, schemaFieldNames } from '../../zodIssues';
 
@@ -23,7 +28,7 @@ export class LightingSceneError extends InputError {
 }
 
 /** Newest lighting scene version this program reads. */
-export const LIGHTING_SCENE_VERSION = 2;
+export const LIGHTING_SCENE_VERSION = 3;
 
 /** Version-2 fields: a version-1 file that uses one is told to say "version": 2. */
 const V2_FIELDS = ['nearField', 'objects', 'windows', 'sky'] as const;
@@ -123,10 +128,19 @@ const schema = z.strictObject(
   { error: 'a lighting scene must be a JSON object' },
 );
 
+/** Version 3 (issue 29): a version-2 scene whose room is any shape (roomSchema: outline, height, slopes, openings, reflectance). */
+const schemaV3 = schema.extend({ version: z.literal(3), room: roomSchema });
+
 /** The structure zod checks (tests walk it to reach every numeric field). */
 export const lightingSceneSchema: z.ZodType = schema;
+/** The version-3 structure. */
+export const lightingSceneSchemaV3: z.ZodType = schemaV3;
 
-const FIELD_NAMES = new Set([...schemaFieldNames(schema), 'sky']);
+const FIELD_NAMES = new Set([...schemaFieldNames(schema), ...schemaFieldNames(schemaV3), 'sky']);
+
+/** Fields of a box room (versions 1 and 2) and of a version-3 room: a file that mixes them is told which version means what. */
+const BOX_ROOM_FIELDS = ['width', 'depth'] as const;
+const SHAPED_ROOM_FIELDS = ['outline', 'slopes', 'openings'] as const;
 
 /**
  * The checks before the structure: object, version, version-2 fields in a
@@ -137,13 +151,23 @@ function versionProblem(json: unknown): string | null {
   if (typeof json !== 'object' || json === null || Array.isArray(json)) return 'a lighting scene must be a JSON object';
   const doc = json as Record<string, unknown>;
   const v = doc.version;
-  if (v === undefined) return 'version: is missing (1 or 2)';
+  if (v === undefined) return 'version: is missing (1, 2 or 3)';
   if (typeof v === 'number' && Number.isInteger(v) && v > LIGHTING_SCENE_VERSION) {
-    return `version: made by a newer luxbox (version ${show(v)}; this one reads versions 1 and 2)`;
+    return `version: made by a newer luxbox (version ${show(v)}; this one reads versions 1 to ${LIGHTING_SCENE_VERSION})`;
   }
-  if (v !== 1 && v !== 2) return `version: unsupported version ${show(v)} (this program reads versions 1 and 2)`;
+  if (v !== 1 && v !== 2 && v !== 3) return `version: unsupported version ${show(v)} (this program reads versions 1 to ${LIGHTING_SCENE_VERSION})`;
   for (const field of V2_FIELDS) {
     if (v === 1 && field in doc) return `${field}: needs "version": 2 (this file says version 1)`;
+  }
+  const room = doc.room;
+  if (typeof room === 'object' && room !== null && !Array.isArray(room)) {
+    if (v === 3) {
+      const box = BOX_ROOM_FIELDS.find((f) => f in room);
+      if (box) return `room.${box}: a version-3 room has an outline instead of width and depth (or say "version": 2 for a box)`;
+    } else {
+      const shaped = SHAPED_ROOM_FIELDS.find((f) => f in room);
+      if (shaped) return `room.${shaped}: needs "version": 3 (this file says version ${v})`;
+    }
   }
   for (const field of ['windows'] as const) {
     const list = doc[field];
@@ -160,6 +184,7 @@ export function parseLightingScene(json: unknown, source: string): LightingScene
   // Depth and length first: nothing below may recurse into a hostile value.
   const problem = jsonShapeProblem(json) ?? versionProblem(json);
   if (problem) throw new LightingSceneError(`${source}: ${problem}`);
+  if ((json as { version: unknown }).version === 3) return parseVersion3(json, source);
   const result = schema.safeParse(json);
   if (!result.success) {
     // Report the first problem with its field path: one line, as the CLI prints it.
@@ -189,28 +214,85 @@ export function parseLightingScene(json: unknown, source: string): LightingScene
     version,
     ...(nearField !== undefined ? { nearField } : {}),
     room: { width: room.width, height: room.height, depth: room.depth, reflectance: room.reflectance },
-    luminaires: luminaires.map((l) => ({
-      photometry: l.photometry,
-      position: l.position,
-      yaw: l.yaw ?? 0,
-      pitch: l.pitch ?? 0,
-      roll: l.roll ?? 0,
-      ...(l.dimming !== undefined ? { dimming: l.dimming } : {}),
-      ...(l.color !== undefined ? { color: l.color } : {}),
-      ...(l.id !== undefined ? { id: l.id } : {}),
+    luminaires: readLuminaires(luminaires),
+    ...readObjects(objects),
+  };
+}
+
+type ParsedLuminaire = z.infer<typeof schema>['luminaires'][number];
+type ParsedObject = NonNullable<z.infer<typeof schema>['objects']>[number];
+
+function readLuminaires(luminaires: readonly ParsedLuminaire[]): LightingScene['luminaires'] {
+  return luminaires.map((l) => ({
+    photometry: l.photometry,
+    position: l.position,
+    yaw: l.yaw ?? 0,
+    pitch: l.pitch ?? 0,
+    roll: l.roll ?? 0,
+    ...(l.dimming !== undefined ? { dimming: l.dimming } : {}),
+    ...(l.color !== undefined ? { color: l.color } : {}),
+    ...(l.id !== undefined ? { id: l.id } : {}),
+  }));
+}
+
+/** Where a placed mesh lies is known only once it is loaded: resolveBakeScene checks it against the room. */
+function readObjects(objects: readonly ParsedObject[] | undefined): Pick<LightingScene, 'objects'> {
+  if (objects === undefined) return {};
+  return {
+    objects: objects.map((o) => ({
+      mesh: o.mesh,
+      position: o.position,
+      yaw: o.yaw ?? 0,
+      scale: o.scale ?? 1,
+      ...(o.reflectance !== undefined ? { reflectance: o.reflectance } : {}),
+      ...(o.id !== undefined ? { id: o.id } : {}),
     })),
-    // Where a placed mesh lies is known only once it is loaded: resolveBakeScene checks it against the room.
-    ...(objects !== undefined
-      ? {
-          objects: objects.map((o) => ({
-            mesh: o.mesh,
-            position: o.position,
-            yaw: o.yaw ?? 0,
-            scale: o.scale ?? 1,
-            ...(o.reflectance !== undefined ? { reflectance: o.reflectance } : {}),
-            ...(o.id !== undefined ? { id: o.id } : {}),
-          })),
-        }
-      : {}),
+  };
+}
+
+/** How far (metres) a luminaire's photometric centre may lie outside a version-3 room's surfaces: float noise of a lamp written on a wall or under a slope. */
+const SHAPED_ROOM_TOLERANCE = 1e-6;
+
+/** Why a point is not inside a room of any shape (outside the outline, below the floor, above the ceiling or a slope), or null. */
+function outsideShapedRoom(room: ShapedRoom, p: readonly [number, number, number], tolerance: number): string | null {
+  if (pointInsideRoom(room, p, tolerance)) return null;
+  if (!pointInsideRoom(room, [p[0], 0, p[2]], tolerance)) return `(${p[0]}, ${p[2]}) in plan is outside the room's outline`;
+  if (!(p[1] >= -tolerance)) return `${p[1]} m is below the floor`;
+  const ceiling = Math.min(...room.ceilingPlanes.map((c) => c.c + c.gx * p[0] + c.gz * p[2]));
+  const under = room.ceilingPlanes.findIndex((c) => c.c + c.gx * p[0] + c.gz * p[2] === ceiling);
+  const what = under <= 0 ? `the ceiling (${round3(ceiling)} m)` : `slope ${room.slopes[under - 1].inputIndex} (${round3(ceiling)} m there)`;
+  return `${p[1]} m is above ${what}`;
+}
+
+const round3 = (v: number): number => Math.round(v * 1000) / 1000;
+
+/**
+ * Version 3: the room by roomSchema (structure, then the room's own rules at their paths), then
+ * every luminaire's photometric centre and every object's origin inside it (the outline, under
+ * the ceiling and every slope); an object's whole mesh is checked once loaded (resolveBakeScene).
+ */
+function parseVersion3(json: unknown, source: string): LightingScene {
+  const result = schemaV3.safeParse(json);
+  if (!result.success) throw new LightingSceneError(`${source}: ${describeIssues(result.error.issues, FIELD_NAMES).replace(/^\(root\): /, '')}`);
+  const { nearField, room: input, luminaires, objects } = result.data;
+  // roomSchema has checked every rule normaliseRoom enforces, so this never throws here.
+  const shape = normaliseRoom(input as RoomInput);
+  luminaires.forEach((l, i) => {
+    const why = outsideShapedRoom(shape, l.position, SHAPED_ROOM_TOLERANCE);
+    if (why) throw new LightingSceneError(`${source}: luminaires[${i}].position: ${why}: luminaires must be inside the room`);
+  });
+  (objects ?? []).forEach((o, i) => {
+    const why = outsideShapedRoom(shape, o.position, OBJECT_ROOM_TOLERANCE);
+    if (why) throw new LightingSceneError(`${source}: objects[${i}].position: ${why}: objects must be inside the room`);
+  });
+  const xs = shape.corners.map((c) => c[0]);
+  const zs = shape.corners.map((c) => c[1]);
+  const room: LightingRoom = { width: Math.max(...xs) - Math.min(...xs), height: shape.height, depth: Math.max(...zs) - Math.min(...zs), reflectance: boxReflectanceOf(shape), shape };
+  return {
+    version: 3,
+    ...(nearField !== undefined ? { nearField } : {}),
+    room,
+    luminaires: readLuminaires(luminaires),
+    ...readObjects(objects),
   };
 }

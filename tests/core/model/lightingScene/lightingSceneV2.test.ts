@@ -39,7 +39,7 @@ describe('lighting scene version 2', () => {
     [scene({ nearField: 'far' }), 'scene.json: nearField: must be "split" or "point", got "far"'],
     [scene({ version: 1, nearField: 'point' }), 'scene.json: nearField: needs "version": 2 (this file says version 1)'],
     [scene({ version: 1, objects: [] }), 'scene.json: objects: needs "version": 2 (this file says version 1)'],
-    [scene({ version: 7 }), 'scene.json: version: made by a newer luxbox (version 7; this one reads versions 1 and 2)'],
+    [scene({ version: 7 }), 'scene.json: version: made by a newer luxbox (version 7; this one reads versions 1 to 3)'],
     [scene({ objects: [{ mesh: 'table.obj' }] }), 'scene.json: objects[0].position: must be [x, y, z] in metres, got undefined'],
     [scene({ windows: [{ wall: 'south' }] }), 'scene.json: windows: this luxbox does not bake windows yet (remove them or use a newer luxbox)'],
     [scene({ sky: { type: 'uniform' } }), 'scene.json: sky: this luxbox does not bake a sky yet (remove it or use a newer luxbox)'],
