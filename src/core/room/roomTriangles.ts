@@ -81,38 +81,51 @@ export function roomTriangles(room: Room): RoomTriangles {
       });
       return;
     }
-    const wall = room.walls.find((w) => w.inputIndex === s.inputIndex)!;
-    const top = wallTop(room.ceilingPlanes, wall.start, wall.end, wall.length);
-    const topAt = (u: number): number => {
-      for (let i = 0; i + 1 < top.length; i++) {
-        const [a, b] = [top[i], top[i + 1]];
-        if (u <= b[0] + 1e-12) return a[1] + ((b[1] - a[1]) * (u - a[0])) / (b[0] - a[0]);
-      }
-      return top[top.length - 1][1];
-    };
-    const cuts = [...top.map((p) => p[0]), ...s.openings.flatMap((o) => [o.polygon2d[0][0], o.polygon2d[1][0]])].sort((x, y) => x - y);
-    const at = (u: number, v: number): Point3 => [wall.start[0] + u * wall.direction[0], v, wall.start[1] + u * wall.direction[1]];
-    for (let i = 0; i + 1 < cuts.length; i++) {
-      const [u0, u1] = [cuts[i], cuts[i + 1]];
-      if (!(u1 - u0 > 1e-12)) continue;
-      const mid = 0.5 * (u0 + u1);
-      // The openings over this strip span it whole (their sides are cuts): the wall between them.
-      const gaps = s.openings
-        .map((o) => [o.polygon2d[0][0], o.polygon2d[1][0], o.polygon2d[0][1], o.polygon2d[2][1]])
-        .filter(([a, b]) => a < mid && mid < b)
-        .sort((x, y) => x[2] - y[2]);
-      let v = 0;
-      for (const [, , sill, head] of gaps) {
-        if (sill > v) {
-          pushTriangle(out, k, at(u0, v), at(u1, v), at(u1, sill), s.inward);
-          pushTriangle(out, k, at(u0, v), at(u1, sill), at(u0, sill), s.inward);
-        }
-        v = head;
-      }
-      const [t0, t1] = [topAt(u0), topAt(u1)];
-      pushTriangle(out, k, at(u0, v), at(u1, v), at(u1, t1), s.inward);
-      pushTriangle(out, k, at(u0, v), at(u1, t1), at(u0, t0), s.inward);
+    // Each piece a planar quadrilateral wound counterclockwise seen from inside: two triangles.
+    for (const [a, b, c, d] of wallQuads(room, s)) {
+      pushTriangle(out, k, a, b, c, s.inward);
+      pushTriangle(out, k, a, c, d, s.inward);
     }
   });
+  return out;
+}
+
+/**
+ * A wall with its openings left out, as quadrilaterals in vertical strips between its bends and
+ * its openings' sides: per strip the wall below each opening, then from the last opening's head
+ * (or the floor) up to the wall's top (straight within a strip, the bends being cuts). Corners in
+ * the order floor-side left, right, then top right, top left, in the wall's own direction; an
+ * opening's sill or head on a strip's edge leaves no piece.
+ */
+export function wallQuads(room: Room, s: RoomSurface): [Point3, Point3, Point3, Point3][] {
+  const out: [Point3, Point3, Point3, Point3][] = [];
+  const wall = room.walls.find((w) => w.inputIndex === s.inputIndex)!;
+  const top = wallTop(room.ceilingPlanes, wall.start, wall.end, wall.length);
+  const topAt = (u: number): number => {
+    for (let i = 0; i + 1 < top.length; i++) {
+      const [a, b] = [top[i], top[i + 1]];
+      if (u <= b[0] + 1e-12) return a[1] + ((b[1] - a[1]) * (u - a[0])) / (b[0] - a[0]);
+    }
+    return top[top.length - 1][1];
+  };
+  const cuts = [...top.map((p) => p[0]), ...s.openings.flatMap((o) => [o.polygon2d[0][0], o.polygon2d[1][0]])].sort((x, y) => x - y);
+  const at = (u: number, v: number): Point3 => [wall.start[0] + u * wall.direction[0], v, wall.start[1] + u * wall.direction[1]];
+  for (let i = 0; i + 1 < cuts.length; i++) {
+    const [u0, u1] = [cuts[i], cuts[i + 1]];
+    if (!(u1 - u0 > 1e-12)) continue;
+    const mid = 0.5 * (u0 + u1);
+    // The openings over this strip span it whole (their sides are cuts): the wall between them.
+    const gaps = s.openings
+      .map((o) => [o.polygon2d[0][0], o.polygon2d[1][0], o.polygon2d[0][1], o.polygon2d[2][1]])
+      .filter(([a, b]) => a < mid && mid < b)
+      .sort((x, y) => x[2] - y[2]);
+    let v = 0;
+    for (const [, , sill, head] of gaps) {
+      if (sill > v) out.push([at(u0, v), at(u1, v), at(u1, sill), at(u0, sill)]);
+      v = head;
+    }
+    const [t0, t1] = [topAt(u0), topAt(u1)];
+    out.push([at(u0, v), at(u1, v), at(u1, t1), at(u0, t0)]);
+  }
   return out;
 }
