@@ -2,7 +2,8 @@ import type { BakeScene } from '../bake/bakeScene';
 import { resolveBakeSettings, type BakeSettings } from '../bake/bakeSettings';
 import { nearFieldOf, scenePointSources } from '../bake/scenePointSources';
 import { cameraPreset } from '../view/cameraPresets';
-import { planeGrid, rtracePoints } from './illuminanceGrid';
+import { roomPlaneGrid, rtracePoints } from './illuminanceGrid';
+import type { Room as ShapedRoom } from '../../core/room/normaliseRoom';
 import { luminairesRad } from './luminairesRad';
 import { exportReadme } from './exportReadme';
 import { EXPORT_GRIDS, EXPORT_VIEWS, GRID_SPACING, IMAGE_SIZE, renderScript } from './renderScript';
@@ -41,7 +42,7 @@ export function exportRadiance(scene: BakeScene, settings: Partial<BakeSettings>
     ...luminaires.files,
     { path: 'source.cal', text: SOURCE_CAL },
     ...EXPORT_VIEWS.map((name) => ({ path: `views/${name}.vf`, text: viewFile(cameraPreset(name, scene.room, { scene, aspect }), aspect) })),
-    ...EXPORT_GRIDS.map((g) => ({ path: `points/${g.name}.pts`, text: rtracePoints(planeGrid(scene.room, g.height, GRID_SPACING)) })),
+    ...EXPORT_GRIDS.map((g) => ({ path: `points/${g.name}.pts`, text: rtracePoints(roomPlaneGrid(scene.room as BakeScene['room'] & { shape?: ShapedRoom }, g.height, GRID_SPACING)) })),
     { path: 'render.sh', text: renderScript(), executable: true },
     { path: 'README.md', text: exportReadme(title, scene, nearField, lamps.length) },
   ];

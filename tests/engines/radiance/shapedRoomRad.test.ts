@@ -79,6 +79,20 @@ describe('Radiance export of a room of any shape', () => {
     expect(polygons).toBe(surfaces.length - 2 + 3 + 6);
   });
 
+  it('the illuminance grids keep only points inside the outline and under the ceiling', () => {
+    const files = exportRadiance(bakeScene);
+    const floor = files
+      .find((f) => f.path === 'points/floor.pts')!
+      .text.trim()
+      .split('\n');
+    const plan = floor.map((line) => line.split(' ').map(Number)).map(([X, Y]) => [X, -Y]);
+    // The L is 6 × 5 m less its 2.5 × 2 m notch: 26 of 30 m², so about 26/30 of the box's grid.
+    expect(plan.every(([x, z]) => !(x > 3.5 && z > 3))).toBe(true);
+    expect(plan.length).toBeGreaterThan(0);
+    const box = Math.round(6 / 0.25) * Math.round(5 / 0.25);
+    expect(Math.abs(plan.length / box - 26 / 30)).toBeLessThan(0.02);
+  });
+
   const bin = process.env.LUXBOX_RADIANCE_BIN ?? findRadianceBin(join(__dirname, '../../..'));
   it.skipIf(!bin)(
     'Radiance (rtrace, direct only) agrees with the reference at floor points, one in the shadow of the inner corner',
