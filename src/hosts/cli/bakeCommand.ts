@@ -6,6 +6,7 @@ import { createSceneBaker } from '../node/bakeSceneFile';
 import { loadLightingSceneFileAsync, type LoadedLightingScene } from '../node/loadLightingSceneFile';
 import { prepareGl } from '../node/prepareGl';
 import { sceneWarnings } from '../node/sceneWarnings';
+import { shapedRoomReport } from '../node/bakeSummary';
 import { writeBakeOutput, type SceneObjectsOutput } from '../node/writeBakeOutput';
 import { resolveBakeSettings } from '../../engines/bake/bakeSettings';
 import { cliReadableFolders } from '../node/cliReadableFolders';
@@ -64,6 +65,8 @@ export async function run(args: string[]): Promise<number> {
           gl: backend,
           batch: { index: i, of: positional.length, programsCompiled: compiled },
           warnings: warnings[i],
+          // A room of any shape: its floor area and surfaces from the geometry (issue 29).
+          ...(scene.scene.room.shape ? { room: shapedRoomReport(scene.scene.room.shape) } : {}),
         },
         objectsOutput(scene),
       );

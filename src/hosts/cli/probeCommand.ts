@@ -13,6 +13,10 @@ import { describeIssues } from '../../core/zodIssues';
 import { cliReadableFolders } from '../node/cliReadableFolders';
 import { INPUT_LIMITS } from '../../core/untrustedJson';
 import { readRegularFile } from '../node/readRegularFile';
+import type { Room as ShapedRoom } from '../../core/room/normaliseRoom';
+import { roomSurfaces } from '../../core/room/roomSurfaces';
+import { roomSurfaceAt } from '../../core/room/roomSurfaceAt';
+import { pointInsideRoom } from '../../core/room/ceilingHeightAt';
 
 export const probeUsage = 'probe <scene.json> <points.json> [--samples N --bounces N --texel m --gl vulkan|glx|auto] (points [x, y, z] on a surface or [x, y, z, nx, ny, nz])';
 
@@ -65,6 +69,7 @@ export async function run(args: string[]): Promise<number> {
   const resolved = resolveBakeSettings(settings);
   const loaded = await loadLightingSceneFileAsync(scenePath, { within: cliReadableFolders(scenePath) });
   const room = loaded.scene.room;
+  if (room.shape) shapedRoomPoints(room.shape, parsed.data.points, source);
   const dims = [room.width, room.height, room.depth];
   const points = parsed.data.points.map((p, i): { point: Vec3; normal?: Vec3 } => {
     const point: Vec3 = [p[0], p[1], p[2]];
@@ -93,4 +98,27 @@ export async function run(args: string[]): Promise<number> {
   const result = { total: values.map((v) => v.total), direct: values.map((v) => v.direct), indirect: values.map((v) => v.indirect) };
   process.stdout.write(JSON.stringify(result) + '\n');
   return 0;
+}
+
+/**
+ * Probe points in a room of any shape (lighting scene version 3): a point [x, y, z] must lie on a
+ * surface of roomSurfaces (within PROBE_TOLERANCE, not in an opening), a point with a normal inside
+ * the room (outline, floor to ceiling and slopes). The baker has no charts for such rooms yet, so
+ * once the points are sound the probe says so rather than print the bounding box's light.
+ */
+function shapedRoomPoints(room: ShapedRoom, points: readonly number[][], source: string): void {
+  const surfaces = roomSurfaces(room);
+  points.forEach((p, i) => {
+    const point: Vec3 = [p[0], p[1], p[2]];
+    if (p.length === 6) {
+      if (!pointInsideRoom(room, point, PROBE_TOLERANCE)) throw new InputError(`${source}: points[${i}]: [${point.join(', ')}] is outside the room (its outline, floor, ceiling and slopes)`);
+      return;
+    }
+    const at = roomSurfaceAt(room, point, PROBE_TOLERANCE, surfaces);
+    if (at.surface) return;
+    if (at.opening) throw new InputError(`${source}: points[${i}]: [${point.join(', ')}] lies in opening ${at.opening.index} of ${at.opening.surface.id}, where the room has no surface`);
+    const near = at.nearest ? ` (nearest: ${at.nearest.surface.id}, ${at.nearest.distance.toPrecision(3)} m away)` : '';
+    throw new InputError(`${source}: points[${i}]: [${point.join(', ')}] is on no surface of the room${near}; probe points must lie within ${PROBE_TOLERANCE} m of a surface`);
+  });
+  throw new InputError(`${source}: the points lie on the room's surfaces, but this luxbox does not bake rooms of any shape yet (lighting scene version 3, issue 29)`);
 }

@@ -3,6 +3,9 @@ import { SURFACE_NAMES, type SurfaceName } from '../../core/model/lightingScene/
 import { luxOf, type BakedMaps } from '../../engines/bake/bakedMaps';
 import type { BakeReport } from '../../engines/bake/createBaker';
 import { texelArea } from '../../engines/bake/surfaceLayout';
+import type { Room as ShapedRoom } from '../../core/room/normaliseRoom';
+import { doubleSignedArea } from '../../core/room/planPolygon';
+import { roomSurfaces } from '../../core/room/roomSurfaces';
 
 export interface SurfaceSummary {
   /** m² */
@@ -71,4 +74,19 @@ export function reportJson(scenePath: string, maps: BakedMaps, report: BakeRepor
     settings,
     bake,
   };
+}
+
+/** What report.json says about a room of any shape (lighting scene version 3): its geometry, which needs no baked map. */
+export interface ShapedRoomReport {
+  /** The floor polygon's area, m² (shoelace). */
+  floor_area: number;
+  /** Every surface of roomSurfaces ('floor', 'ceiling', 'slope-i', 'wall-i'; i as written): m² without its openings, and the openings' m². */
+  surfaces: { id: string; kind: string; area: number; openings_area: number }[];
+  /** m² of all openings (doors, windows, passages): where light leaves the room. */
+  openings_area: number;
+}
+
+export function shapedRoomReport(room: ShapedRoom): ShapedRoomReport {
+  const surfaces = roomSurfaces(room).map((s) => ({ id: s.id, kind: s.kind, area: s.area, openings_area: s.openings.reduce((a, o) => a + o.area, 0) }));
+  return { floor_area: Math.abs(doubleSignedArea(room.corners)) / 2, surfaces, openings_area: surfaces.reduce((a, s) => a + s.openings_area, 0) };
 }

@@ -1,0 +1,46 @@
+/** `luxbox probe` on a room of any shape (issue 29): every point checked against the room's own surfaces, each refusal naming the point. */
+import { mkdtempSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { describe, expect, it } from 'vitest';
+import { run } from '../../../src/hosts/cli/probeCommand';
+
+const SCENE = 'tests/fixtures/scenes/attic-l-room.json';
+const dir = mkdtempSync(join(tmpdir(), 'luxbox-probe-shape-'));
+const pointsFile = (points: number[][]): string => {
+  const path = join(dir, `p${Math.random().toString(36).slice(2)}.json`);
+  writeFileSync(path, JSON.stringify({ points }));
+  return path;
+};
+const probe = (points: number[][]) => run([SCENE, pointsFile(points)]);
+
+describe('probe in a room of any shape', () => {
+  it('refuses a point in the notch, in the door, or off every surface, naming it and the nearest surface', async () => {
+    await expect(
+      probe([
+        [1, 0, 1],
+        [5, 0, 4],
+      ]),
+    ).rejects.toThrow(/: points\[1\]: \[5, 0, 4\] is on no surface of the room \(nearest: wall-2, 1\.00 m away\); probe points must lie within 0\.01 m of a surface$/);
+    await expect(probe([[2.2, 1, 5]])).rejects.toThrow(/: points\[0\]: \[2\.2, 1, 5\] lies in opening 0 of wall-4, where the room has no surface$/);
+    await expect(
+      probe([
+        [1, 0, 1, 0, 1, 0],
+        [5, 1, 4, 0, 1, 0],
+      ]),
+    ).rejects.toThrow(/: points\[1\]: \[5, 1, 4\] is outside the room \(its outline, floor, ceiling and slopes\)$/);
+  });
+
+  it('says plainly that it cannot bake the room yet once the points are sound (floor, slope, walls, a plane point)', async () => {
+    const t = Math.tan((40 * Math.PI) / 180);
+    await expect(
+      probe([
+        [1, 0, 1],
+        [2, 1.2 + 0.5 * t, 0.5],
+        [6, 1, 1],
+        [3.5, 1, 4],
+        [2, 1, 3, 0, 1, 0],
+      ]),
+    ).rejects.toThrow(/does not bake rooms of any shape yet \(lighting scene version 3, issue 29\)$/);
+  });
+});
