@@ -52,8 +52,8 @@ function inside([x, z]: readonly number[], poly: readonly (readonly number[])[])
   return odd;
 }
 
-/** The ceiling over (x, z): the flat 2.8 m or the slope on the north wall (z = 0), 1.6 + z·tan 35°. */
-const ceilingAt = (z: number) => Math.min(2.8, 1.6 + z * Math.tan((35 * Math.PI) / 180));
+/** The ceiling over (x, z): the flat ceiling (setRoom changes its height) or the slope on the north wall (z = 0), 1.6 + z·tan 35°. */
+const ceilingAt = (z: number, height: number) => Math.min(height, 1.6 + z * Math.tan((35 * Math.PI) / 180));
 
 function toAction(s: Configuration, st: Step): [string, unknown] {
   const { width: W, depth: D } = s.room;
@@ -135,10 +135,10 @@ describe('always valid in a room with a shape', () => {
           tally.systems++;
           const corners = systemElementTree(sys, catalog).elements.flat().flatMap(rectCorners);
           for (const c of corners) if (!inside(c, outline)) throw new Error(`system ${sys.id}: corner ${c} outside the L`);
-          const lowest = Math.min(...corners.map(([, z]) => ceilingAt(z)));
-          if (lowest < 2.8 - 1e-9) tally.underSlope++;
+          const lowest = Math.min(...corners.map(([, z]) => ceilingAt(z, s.room.height)));
+          if (lowest < s.room.height - 1e-9) tally.underSlope++;
           if (sys.mounting === 'surface') {
-            if (lowest < s.room.height - 1e-9 && lowest < 2.8 - 1e-9) throw new Error(`system ${sys.id}: clips under the slope`);
+            if (lowest < s.room.height - 1e-9) throw new Error(`system ${sys.id}: clips under the slope`);
           } else if (lowest - moduleHeight(sys, s.room, catalog) < catalog.suspension.min - 1e-9) throw new Error(`system ${sys.id}: closer to the slope than the shortest suspension`);
         }
         for (const o of s.objects) {
@@ -146,7 +146,7 @@ describe('always valid in a room with a shape', () => {
           const placed = placedPositions(objectMesh(s, o.id), objectPlacement(o, s.room));
           for (let k = 0; k < placed.length; k += 3) {
             if (!inside([placed[k], placed[k + 2]], outline)) throw new Error(`object ${o.id}: a vertex outside the L`);
-            if (placed[k + 1] > Math.min(s.room.height, ceilingAt(placed[k + 2])) + 1e-6) throw new Error(`object ${o.id}: a vertex above the ceiling`);
+            if (placed[k + 1] > ceilingAt(placed[k + 2], s.room.height) + 1e-6) throw new Error(`object ${o.id}: a vertex above the ceiling`);
           }
         }
       }),
