@@ -3,9 +3,13 @@ import { z } from 'zod';
 import { DISTRIBUTIONS } from '../catalogSchema/railSystemSchema';
 import { MESH_UNITS, MOUNTINGS, WALL_NAMES } from '../configuration/configuration';
 import { SURFACE_NAMES } from '../lightingScene/lightingScene';
+import { ROOM_SHAPE_LIMITS } from '../../room/roomInput';
+import { roomOpeningSchema, roomOutlineSchema, roomSlopeSchema } from '../../room/roomSchema';
 
 export const SCENE_FILE_FORMAT = 'luxbox-configuration';
 /**
+ * 9: the room may have a shape (`room.shape`: outline, slopes, openings, per-wall finishes),
+ *    docs/model.md "Room shape"; a room without one is the box it always was.
  * 8: a system's rails form a tree: a joint may name the rail it hangs on (`parent`, T and X
  *    connectors), a feed may sit at a branch's free end (`{ end: i }`), docs/model.md "Trees of rails".
  * 7: modules may be switched off (`on`), carry a colour filter (`filter`) and an aim (`aim`); the
@@ -17,7 +21,7 @@ export const SCENE_FILE_FORMAT = 'luxbox-configuration';
  * 3: objects (furniture, imported models) and imported meshes (docs/model.md, "Objects").
  * 2: modules may carry a DMX patch (`dmx`, docs/live-control.md). Older files are migrated on reading.
  */
-export const SCENE_FILE_VERSION = 8;
+export const SCENE_FILE_VERSION = 9;
 /**
  * Read side of a reflectance: [0, 1) as version 1 files have always allowed. Channels above
  * MAX_REFLECTANCE (0.95, src/core/model/lightingScene/reflectance.ts) in files written before that cap are lowered
@@ -36,6 +40,15 @@ const configurationSchema = z.strictObject({
     height: z.number(),
     // Optional per surface and as a whole: a hand-written file may leave out the finishes, which then default.
     reflectance: z.strictObject(Object.fromEntries(SURFACE_NAMES.map((s) => [s, reflectance.optional()])) as Record<(typeof SURFACE_NAMES)[number], z.ZodOptional<typeof reflectance>>).optional(),
+    // Version 9: the room's shape, with the lighting scene's limits (roomSchema.ts); its rules and its fit to width and depth are validate()'s (room-*).
+    shape: z
+      .strictObject({
+        outline: roomOutlineSchema,
+        slopes: z.array(roomSlopeSchema).max(ROOM_SHAPE_LIMITS.maxCorners),
+        openings: z.array(roomOpeningSchema).max(4 * ROOM_SHAPE_LIMITS.maxCorners),
+        wallReflectance: z.array(reflectance).max(ROOM_SHAPE_LIMITS.maxCorners).optional(),
+      })
+      .optional(),
   }),
   systems: z.array(
     z.strictObject({

@@ -7,6 +7,10 @@ import { rectCorners, rectsOverlap, systemElementTree, type PlanRect, type Syste
 import { boxesMeet, boxOf, forEachOverlap, type Box } from './planOverlaps';
 import { EPS } from './reporting';
 import { ownProblems } from './systemOwnProblems';
+import { shapedRoom, shapeProblems } from '../configuration/roomShape';
+import { footprintInsideOutline, lowestCeilingOver } from '../../room/footprintInsideRoom';
+import { photometricDrop } from '../rails/suspensionPoints';
+import type { Room, RoomShape } from '../configuration/configuration';
 
 /**
  * Problems of one system: its own rules, its fit in the room and clashes with
@@ -20,7 +24,8 @@ export function systemProblems(config: Configuration, index: number, catalog: Ca
   if (out.length > 0) return out; // geometry needs sound references and numbers
   const tree = systemElementTree(s, catalog);
   const elements = tree.elements;
-  if (outsideRoom(elements, config.room.width, config.room.depth)) out.push(outsideProblem(s, index, config.room));
+  const misfit = roomFitProblem(s, index, elements, config.room, catalog);
+  if (misfit) out.push(misfit);
   if (crossesItself(tree)) out.push({ code: 'self-overlap', path: at, message: `system ${s.id} runs into itself`, params: { id: s.id } });
   const mine = footprintOf(s, catalog);
   config.systems.forEach((other, j) => {
@@ -45,7 +50,7 @@ export function systemOwnProblems(s: LightSystem, roomHeight: number, catalog: C
 export function systemFitsAt(config: Configuration, index: number, catalog: Catalog): boolean {
   const s = config.systems[index];
   const tree = systemElementTree(s, catalog);
-  if (outsideRoom(tree.elements, config.room.width, config.room.depth)) return false;
+  if (roomFitProblem(s, index, tree.elements, config.room, catalog)) return false;
   const mine = footprintOf(s, catalog);
   if (config.systems.some((other, j) => j !== index && clashes(mine, other, config.room.height, catalog))) return false;
   return !crossesItself(tree);
@@ -106,3 +111,44 @@ export function outsideRoom(elements: PlanRect[][], width: number, depth: number
 export function outsideProblem(s: LightSystem, index: number, room: Configuration['room']): Problem {
   return { code: 'outside-room', path: `systems[${index}]`, message: `system ${s.id} reaches outside the ${room.width} × ${room.depth} m room`, params: { id: s.id, width: room.width, depth: room.depth } };
 }
+
+/**
+ * Whether a sound system fits its room: inside the box, or, in a room with a shape (issue 29),
+ * every rail, connector and module rectangle inside the outline (footprintInsideOutline: a rail
+ * past the inner corner of an L is outside even with both ends in the room) and clear of the
+ * ceiling above it. Under a slope a pendant system's wires grow shorter toward the slope (each
+ * fixing point's wire is the ceiling above it less the modules' height, suspensionWireLength);
+ * along every rectangle the ceiling must stay at least the shortest suspension (catalog
+ * suspension.min, ceiling to photometric centre) above the modules, checked at the rectangle's
+ * corners since the ceiling is concave. A surface-mounted system's clips need the flat ceiling
+ * over its whole footprint. A shape that breaks its own rules is the room's problem, not the
+ * system's: then only the box is checked.
+ */
+export function roomFitProblem(s: LightSystem, index: number, elements: PlanRect[][], room: Room, catalog: Catalog): Problem | null {
+  if (outsideRoom(elements, room.width, room.depth)) return outsideProblem(s, index, room);
+  if (!room.shape || shapeProblems(room as Room & { shape: RoomShape }).length > 0) return null;
+  const shaped = shapedRoom(room)!;
+  const rects = elements.flat().map(rectCorners);
+  if (rects.some((c) => !footprintInsideOutline(shaped.corners, c, EPS))) {
+    return { code: 'outside-room', path: `systems[${index}]`, message: `system ${s.id} reaches outside the room's outline`, params: { id: s.id } };
+  }
+  const lowest = Math.min(...rects.map((c) => lowestCeilingOver(shaped, c)));
+  const at = `systems[${index}]`;
+  if (s.mounting === 'surface') {
+    if (lowest < room.height - EPS) {
+      const message = `system ${s.id} is mounted on the ceiling but reaches under a slope (${fmt(lowest)} m there); clips need the flat ${fmt(room.height)} m ceiling`;
+      return { code: 'under-slope', path: `${at}.mounting`, message, params: { id: s.id, ceiling: Number(fmt(lowest)), height: room.height } };
+    }
+    return null;
+  }
+  const modules = room.height - photometricDrop(s, catalog);
+  const clearance = lowest - modules;
+  const min = catalog.suspension.min;
+  if (clearance < min - EPS) {
+    const message = `system ${s.id} hangs ${fmt(clearance)} m under a slope at its closest; the ceiling must stay at least ${min} m above its modules`;
+    return { code: 'under-slope', path: `${at}.suspension`, message, params: { id: s.id, clearance: Number(fmt(clearance)), min } };
+  }
+  return null;
+}
+
+const fmt = (x: number): string => String(Math.round(x * 1000) / 1000);
