@@ -61,6 +61,8 @@ run('addBranch', { railId: rails()[rails().length - 1].id, connector: 'tee', tur
 // notch misses the demo's systems and objects, a slope on its east wall, a door and a window, and
 // its own finish on one wall.
 if (v >= 9) {
+  // Rooms of any shape are a lazy chunk in the browser (roomShapeSupport.ts); here it is loaded before the shape goes in.
+  await (await import('./src/core/model/roomShape/roomShapeSupport')).loadRoomShapeSupport();
   const shape = {
     outline: [
       [0, 0],

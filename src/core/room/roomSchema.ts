@@ -57,7 +57,7 @@ export const roomOpeningSchema = z.strictObject(
  * reads them by (wallReflectances: three bare numbers are [r, g, b]) rather than by a zod union, so
  * a bad entry of a per-wall list is reported at its own path (`walls[2][0]`), not as the whole list.
  */
-const wallReflectances = z.unknown().superRefine((value, ctx) => {
+const wallReflectances = z.custom<unknown>().superRefine((value, ctx) => {
   const perWall = Array.isArray(value) && !(value.length === 3 && value.every((v) => typeof v === 'number'));
   const check = (v: unknown, at: number[]) => {
     const r = reflectance.safeParse(v);

@@ -21,7 +21,7 @@ import { hitStrip, moduleSymbol } from './planHitTest';
 import type { DragPreview } from './dragPreview';
 import type { SelectionPath } from './selection';
 import { useI18n } from '../i18n/useI18n';
-import { LazyRoomShapeDrawing } from './LazyRoomShapeDrawing';
+import { LazyRoomShapeDrawing } from './LazyRoomShape';
 
 export interface PlanSvgProps {
   config: Configuration;

@@ -50,7 +50,7 @@ import { PlanAnnouncer } from './PlanAnnouncer';
 import type { Landmarks } from '../shared/landmarks';
 import type { FirstRunOptions } from './FirstRunHint';
 import { LazyGuidance } from './lazyGuidance';
-import { LazyRoomShapeEditor } from './LazyRoomShapeEditor';
+import { LazyRoomShapeEditor } from './LazyRoomShape';
 
 export interface PlannerProps {
   store: ConfiguratorStore;

@@ -10,6 +10,7 @@
 import { z } from 'zod';
 import { InputError } from '../../inputError';
 import type { ActionDefinition } from './action';
+import { ROOM_SHAPE_ACTION_LABELS } from './roomShapeActionNames';
 import type { Configuration, RoomShape } from '../configuration/configuration';
 import type { Reflectance } from '../lightingScene/lightingScene';
 import { roomProblems } from '../../room/roomProblems';
@@ -42,7 +43,7 @@ const metres = z.number();
 const presetParams = z.object({ preset: z.enum(SHAPE_PRESETS) });
 export const setRoomShapePreset: ActionDefinition<z.infer<typeof presetParams>> = {
   name: 'setRoomShapePreset',
-  label: 'Room shape',
+  label: ROOM_SHAPE_ACTION_LABELS.setRoomShapePreset,
   params: presetParams,
   perform(state, p) {
     // A new outline: slopes, openings and per-wall finishes named walls that are gone.
@@ -53,7 +54,7 @@ export const setRoomShapePreset: ActionDefinition<z.infer<typeof presetParams>> 
 const cornerParams = z.object({ corner: index, x: metres, z: metres });
 export const moveRoomCorner: ActionDefinition<z.infer<typeof cornerParams>> = {
   name: 'moveRoomCorner',
-  label: 'Move corner',
+  label: ROOM_SHAPE_ACTION_LABELS.moveRoomCorner,
   params: cornerParams,
   perform(state, p) {
     const shape = currentShape(state.room);
@@ -65,7 +66,7 @@ export const moveRoomCorner: ActionDefinition<z.infer<typeof cornerParams>> = {
 const splitParams = z.object({ wall: index, at: metres });
 export const splitRoomWall: ActionDefinition<z.infer<typeof splitParams>> = {
   name: 'splitRoomWall',
-  label: 'Split wall',
+  label: ROOM_SHAPE_ACTION_LABELS.splitRoomWall,
   params: splitParams,
   perform(state, p) {
     const shape = currentShape(state.room);
@@ -79,7 +80,7 @@ export const splitRoomWall: ActionDefinition<z.infer<typeof splitParams>> = {
 const lengthParams = z.object({ wall: index, length: metres });
 export const setRoomWallLength: ActionDefinition<z.infer<typeof lengthParams>> = {
   name: 'setRoomWallLength',
-  label: 'Wall length',
+  label: ROOM_SHAPE_ACTION_LABELS.setRoomWallLength,
   params: lengthParams,
   perform(state, p) {
     const shape = currentShape(state.room);
@@ -91,7 +92,7 @@ export const setRoomWallLength: ActionDefinition<z.infer<typeof lengthParams>> =
 const angleParams = z.object({ corner: index, degrees: z.number().gt(0).lt(360) });
 export const setRoomCornerAngle: ActionDefinition<z.infer<typeof angleParams>> = {
   name: 'setRoomCornerAngle',
-  label: 'Corner angle',
+  label: ROOM_SHAPE_ACTION_LABELS.setRoomCornerAngle,
   params: angleParams,
   perform(state, p) {
     const shape = currentShape(state.room);
@@ -103,7 +104,7 @@ export const setRoomCornerAngle: ActionDefinition<z.infer<typeof angleParams>> =
 const removeCornerParams = z.object({ corner: index });
 export const removeRoomCorner: ActionDefinition<z.infer<typeof removeCornerParams>> = {
   name: 'removeRoomCorner',
-  label: 'Remove corner',
+  label: ROOM_SHAPE_ACTION_LABELS.removeRoomCorner,
   params: removeCornerParams,
   perform(state, p) {
     const shape = currentShape(state.room);
@@ -115,7 +116,7 @@ export const removeRoomCorner: ActionDefinition<z.infer<typeof removeCornerParam
 const slopeParams = z.object({ wall: index, kneeHeight: metres, pitch: z.number() });
 export const setRoomSlope: ActionDefinition<z.infer<typeof slopeParams>> = {
   name: 'setRoomSlope',
-  label: 'Slope',
+  label: ROOM_SHAPE_ACTION_LABELS.setRoomSlope,
   params: slopeParams,
   perform(state, p) {
     const shape = currentShape(state.room);
@@ -130,7 +131,7 @@ export const setRoomSlope: ActionDefinition<z.infer<typeof slopeParams>> = {
 const wallParams = z.object({ wall: index });
 export const removeRoomSlope: ActionDefinition<z.infer<typeof wallParams>> = {
   name: 'removeRoomSlope',
-  label: 'Remove slope',
+  label: ROOM_SHAPE_ACTION_LABELS.removeRoomSlope,
   params: wallParams,
   perform(state, p) {
     const shape = currentShape(state.room);
@@ -150,7 +151,7 @@ const kind = z.enum(OPENING_KINDS);
 const addOpeningParams = z.object({ wall: index, kind, offset: metres.optional(), width: metres.optional(), sill: metres.optional(), height: metres.optional() });
 export const addRoomOpening: ActionDefinition<z.infer<typeof addOpeningParams>> = {
   name: 'addRoomOpening',
-  label: 'Add opening',
+  label: ROOM_SHAPE_ACTION_LABELS.addRoomOpening,
   params: addOpeningParams,
   perform(state, p) {
     const shape = currentShape(state.room);
@@ -168,7 +169,7 @@ const setOpeningParams = z.object({ opening: index, offset: metres.optional(), w
 /** Moves an opening along its wall (offset) or resizes it (width, sill, height) or changes its kind; unspecified fields stay. */
 export const setRoomOpening: ActionDefinition<z.infer<typeof setOpeningParams>> = {
   name: 'setRoomOpening',
-  label: 'Opening',
+  label: ROOM_SHAPE_ACTION_LABELS.setRoomOpening,
   params: setOpeningParams,
   perform(state, p) {
     const shape = currentShape(state.room);
@@ -181,7 +182,7 @@ export const setRoomOpening: ActionDefinition<z.infer<typeof setOpeningParams>> 
 const openingParams = z.object({ opening: index });
 export const removeRoomOpening: ActionDefinition<z.infer<typeof openingParams>> = {
   name: 'removeRoomOpening',
-  label: 'Remove opening',
+  label: ROOM_SHAPE_ACTION_LABELS.removeRoomOpening,
   params: openingParams,
   perform(state, p) {
     const shape = currentShape(state.room);
@@ -194,7 +195,7 @@ const finishParams = z.object({ wall: index, value: z.union([z.number(), z.tuple
 /** One wall's own finish; the other walls keep theirs (their own, or the nearest box wall's written out). */
 export const setWallFinish: ActionDefinition<z.infer<typeof finishParams>> = {
   name: 'setWallFinish',
-  label: 'Wall finish',
+  label: ROOM_SHAPE_ACTION_LABELS.setWallFinish,
   params: finishParams,
   perform(state, p) {
     const shape = currentShape(state.room);

@@ -8,7 +8,7 @@ import type { Configuration, Room, RoomShape, RoomObject, LightSystem } from '..
 import type { Reflectance } from '../lightingScene/lightingScene';
 import { doubleSignedArea, type PlanPoint } from '../../room/planPolygon';
 import type { RoomInput } from '../../room/roomInput';
-import { BOX_WALL_NAMES } from '../../room/boxRoom';
+import { shapeRoomInput as configurationShapeRoomInput, wallFinishes as configurationWallFinishes } from '../configuration/roomShape';
 
 export const SHAPE_PRESETS = ['rectangle', 'L', 'U', 'T'] as const;
 export type ShapePreset = (typeof SHAPE_PRESETS)[number];
@@ -76,39 +76,14 @@ export function orientationOf(outline: readonly PlanPoint[]): 1 | -1 {
   return doubleSignedArea(outline) >= 0 ? 1 : -1;
 }
 
-const BOX_INWARD: Record<(typeof BOX_WALL_NAMES)[number], PlanPoint> = { north: [0, 1], east: [-1, 0], south: [0, -1], west: [1, 0] };
-
-/** The box wall (north, east, south, west) whose inward normal is nearest wall i's: where a wall without its own finish takes it from (configuration.ts, RoomShape). */
-export function nearestBoxWall(outline: readonly PlanPoint[], i: number): (typeof BOX_WALL_NAMES)[number] {
-  const a = outline[i];
-  const b = outline[(i + 1) % outline.length];
-  const len = Math.hypot(b[0] - a[0], b[1] - a[1]) || 1;
-  const s = orientationOf(outline);
-  const inward: PlanPoint = [(-s * (b[1] - a[1])) / len, (s * (b[0] - a[0])) / len];
-  let best: (typeof BOX_WALL_NAMES)[number] = 'north';
-  let bestDot = -Infinity;
-  for (const name of BOX_WALL_NAMES) {
-    const d = inward[0] * BOX_INWARD[name][0] + inward[1] * BOX_INWARD[name][1];
-    // Strictly better only: at 45° the earlier wall in north, east, south, west order wins.
-    if (d > bestDot + 1e-12) [best, bestDot] = [name, d];
-  }
-  return best;
-}
-
-/** Every wall's finish: its own, else the nearest box wall's. */
+/** Every wall's finish: its own, else the nearest box wall's (configuration/roomShape.ts, one rule for the editor and validate()). */
 export function wallFinishes(room: Room, shape: RoomShape = currentShape(room)): Reflectance[] {
-  return shape.outline.map((_, i) => shape.wallReflectance?.[i] ?? room.reflectance[nearestBoxWall(shape.outline, i)]);
+  return configurationWallFinishes({ reflectance: room.reflectance, shape });
 }
 
 /** The room as src/core/room reads it: what roomProblems and normaliseRoom judge. */
 export function shapeRoomInput(room: Room, shape: RoomShape = currentShape(room)): RoomInput {
-  return {
-    outline: shape.outline,
-    height: room.height,
-    slopes: shape.slopes,
-    openings: shape.openings,
-    reflectance: { floor: room.reflectance.floor, ceiling: room.reflectance.ceiling, walls: wallFinishes(room, shape) },
-  };
+  return configurationShapeRoomInput({ ...room, shape });
 }
 
 export const wallLength = (outline: readonly PlanPoint[], i: number): number => {

@@ -3,8 +3,6 @@ import { z } from 'zod';
 import { DISTRIBUTIONS } from '../catalogSchema/railSystemSchema';
 import { MESH_UNITS, MOUNTINGS, WALL_NAMES } from '../configuration/configuration';
 import { SURFACE_NAMES } from '../lightingScene/lightingScene';
-import { ROOM_SHAPE_LIMITS } from '../../room/roomInput';
-import { roomOpeningSchema, roomOutlineSchema, roomSlopeSchema } from '../../room/roomSchema';
 
 export const SCENE_FILE_FORMAT = 'luxbox-configuration';
 /**
@@ -27,7 +25,7 @@ export const SCENE_FILE_VERSION = 9;
  * MAX_REFLECTANCE (0.95, src/core/model/lightingScene/reflectance.ts) in files written before that cap are lowered
  * to it on load (normaliseRoom), so old files keep loading; new files never hold them.
  */
-const reflectance = z.union([z.number().min(0).lt(1), z.tuple([z.number().min(0).lt(1), z.number().min(0).lt(1), z.number().min(0).lt(1)])]);
+export const fileReflectanceSchema = z.union([z.number().min(0).lt(1), z.tuple([z.number().min(0).lt(1), z.number().min(0).lt(1), z.number().min(0).lt(1)])]);
 const id = z.string().regex(/^[A-Za-z0-9_-]{1,64}$/, 'must be 1-64 letters, digits, _ or -');
 /** A catalog reference (module type, beam, connector, preset id); validate() checks it exists. */
 const ref = z.string().max(200);
@@ -39,16 +37,10 @@ const configurationSchema = z.strictObject({
     depth: z.number(),
     height: z.number(),
     // Optional per surface and as a whole: a hand-written file may leave out the finishes, which then default.
-    reflectance: z.strictObject(Object.fromEntries(SURFACE_NAMES.map((s) => [s, reflectance.optional()])) as Record<(typeof SURFACE_NAMES)[number], z.ZodOptional<typeof reflectance>>).optional(),
-    // Version 9: the room's shape, with the lighting scene's limits (roomSchema.ts); its rules and its fit to width and depth are validate()'s (room-*).
-    shape: z
-      .strictObject({
-        outline: roomOutlineSchema,
-        slopes: z.array(roomSlopeSchema).max(ROOM_SHAPE_LIMITS.maxCorners),
-        openings: z.array(roomOpeningSchema).max(4 * ROOM_SHAPE_LIMITS.maxCorners),
-        wallReflectance: z.array(reflectance).max(ROOM_SHAPE_LIMITS.maxCorners).optional(),
-      })
-      .optional(),
+    reflectance: z.strictObject(Object.fromEntries(SURFACE_NAMES.map((s) => [s, fileReflectanceSchema.optional()])) as Record<(typeof SURFACE_NAMES)[number], z.ZodOptional<typeof fileReflectanceSchema>>).optional(),
+    // Version 9: the room's shape. Its schema is in the room-shape chunk (roomShapeFileSchema.ts), which the
+    // reader asks once this structure has passed (sceneFile.ts); its rules and its fit to width and depth are validate()'s.
+    shape: z.custom<unknown>().optional(),
   }),
   systems: z.array(
     z.strictObject({

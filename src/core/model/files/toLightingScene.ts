@@ -14,7 +14,7 @@ import { moduleLightColour } from '../modules/moduleFilter';
 import type { LightingLuminaire, LightingObject, LightingScene, Rgb } from '../lightingScene/lightingScene';
 import { objectPlacement } from '../objects/objectGeometry';
 import { moduleHeight } from '../rails/suspensionPoints';
-import { shapedRoom } from '../configuration/roomShape';
+import { requireRoomShapeSupport } from '../roomShape/roomShapeSupport';
 
 /** The mesh reference of a configuration's object in its lighting scene; objectMesh(config, id) resolves it. */
 export const OBJECT_MESH_PREFIX = 'object:';
@@ -54,7 +54,7 @@ export function toLightingScene(config: Configuration, catalog: Catalog, options
   }
   const { width, depth, height, reflectance } = config.room;
   // A shape (issue 29) makes it version 3; its bounding box is [0, width] × [0, depth] (validate()), so width and depth stay the extents.
-  const shape = shapedRoom(config.room);
+  const shape = config.room.shape ? requireRoomShapeSupport().shapedRoom(config.room) : null;
   const room = { width, height, depth, reflectance: { ...reflectance }, ...(shape ? { shape } : {}) };
   if (config.objects.length === 0) return { version: shape ? 3 : 1, room, luminaires };
   // Objects are a version 2 field (docs/scene-format.md); their finishes travel in the mesh (objectMesh), not as a reflectance override.

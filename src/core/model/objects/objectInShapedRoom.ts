@@ -12,6 +12,9 @@ import { ceilingHeightAt } from '../../room/ceilingHeightAt';
 import { footprintInsideOutline } from '../../room/footprintInsideRoom';
 import type { Room as ShapedRoom } from '../../room/normaliseRoom';
 import type { PlanPoint } from '../../room/planPolygon';
+import type { Room, RoomShape } from '../configuration/configuration';
+import { shapedRoom, shapeProblems } from '../configuration/roomShape';
+import { fmt, OBJECT_EPS } from './objectGeometry';
 
 /** Convex hull of plan points, counterclockwise (Andrew's monotone chain, Inf. Proc. Letters 9(5), 1979). */
 export function convexHull(points: readonly PlanPoint[]): PlanPoint[] {
@@ -46,4 +49,21 @@ export function objectMisfit(room: ShapedRoom, mesh: TriangleMesh, placement: Me
     if (over > tolerance && (!worst || over > worst.over)) worst = { top: placed[i + 1], ceiling, over };
   }
   return worst ? { kind: 'ceiling', top: worst.top, ceiling: worst.ceiling } : null;
+}
+
+/** An object's words as objectProblems names it: its name, id and library item. */
+export type NamedObject = { name: string } & Record<string, string | number>;
+
+/**
+ * validate()'s sentence for an object that does not fit a configuration's room with a shape
+ * (`object-outside`: objectOutsideOutline, objectAboveSlope), or null when it fits, the room is a
+ * box, or the shape breaks its own rules (then it is the room's problem, not the object's).
+ */
+export function configurationObjectMisfit(room: Room, mesh: TriangleMesh, placement: MeshPlacement, named: NamedObject): { message: string; key: string; params: Record<string, string | number> } | null {
+  if (!room.shape || shapeProblems(room as Room & { shape: RoomShape }).length > 0) return null;
+  const misfit = objectMisfit(shapedRoom(room)!, mesh, placement, OBJECT_EPS);
+  if (misfit?.kind === 'outline') return { message: `${named.name} reaches outside the room's outline`, key: 'objectOutsideOutline', params: named };
+  if (misfit?.kind !== 'ceiling') return null;
+  const [top, ceiling] = [fmt(misfit.top), fmt(misfit.ceiling)];
+  return { message: `${named.name} reaches ${top} m, above the ceiling there (${ceiling} m under a slope)`, key: 'objectAboveSlope', params: { ...named, top: Number(top), ceiling: Number(ceiling) } };
 }

@@ -14,9 +14,7 @@ import { findObjectFinish } from './furniture/objectFinishes';
 import { fmt, OBJECT_EPS, objectPlacement, placedBounds, sourceMesh, sourceName } from './objectGeometry';
 import { reflectanceProblem } from '../lightingScene/reflectance';
 import type { Problem } from '../configuration/problem';
-import { shapedRoom, shapeProblems } from '../configuration/roomShape';
-import type { Room, RoomShape } from '../configuration/configuration';
-import { objectMisfit } from './objectInShapedRoom';
+import { requireRoomShapeSupport } from '../roomShape/roomShapeSupport';
 
 /** Most triangles one imported mesh may have (the importer simplifies to fewer; the baker's BVH stays small). */
 export const MAX_MESH_TRIANGLES = 200_000;
@@ -138,15 +136,9 @@ export function objectProblems(config: Configuration, index: number): Problem[] 
   if (!(b.min[1] >= -OBJECT_EPS)) p('object-outside', '.placement', `${name} reaches ${fmt(-b.min[1])} m below the floor`, 'objectBelowFloor', { ...named, depth: Number(fmt(-b.min[1])) });
   // A room with a shape (issue 29): inside its outline and under every slope too; a shape that breaks its own rules is the room's problem.
   const room = config.room;
-  if (out.length === 0 && room.shape && shapeProblems(room as Room & { shape: RoomShape }).length === 0) {
-    const misfit = objectMisfit(shapedRoom(room)!, mesh, objectPlacement(o, room), OBJECT_EPS);
-    if (misfit?.kind === 'outline') p('object-outside', '.placement', `${name} reaches outside the room's outline`, 'objectOutsideOutline', named);
-    else if (misfit?.kind === 'ceiling')
-      p('object-outside', '.placement', `${name} reaches ${fmt(misfit.top)} m, above the ceiling there (${fmt(misfit.ceiling)} m under a slope)`, 'objectAboveSlope', {
-        ...named,
-        top: Number(fmt(misfit.top)),
-        ceiling: Number(fmt(misfit.ceiling)),
-      });
+  if (out.length === 0 && room.shape) {
+    const misfit = requireRoomShapeSupport().objectMisfit(room, mesh, objectPlacement(o, room), named);
+    if (misfit) p('object-outside', '.placement', misfit.message, misfit.key, misfit.params);
   }
   return out;
 }

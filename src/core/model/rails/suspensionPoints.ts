@@ -21,8 +21,7 @@ import type { LightSystem, Room } from '../configuration/configuration';
 import { chainCoordinates, chainPoint } from './chainCoordinates';
 import { firstNodeJoints } from './railTree';
 import type { PlanVec } from './geometry';
-import { shapedRoom } from '../configuration/roomShape';
-import { ceilingHeightAt } from '../../room/ceilingHeightAt';
+import { requireRoomShapeSupport } from '../roomShape/roomShapeSupport';
 
 export interface MountingRule {
   /** Largest distance between two points along the chain, metres. */
@@ -103,7 +102,8 @@ export function moduleHeight(system: LightSystem, room: Pick<Room, 'height'>, ca
 export function suspensionWireLengths(system: LightSystem, room: Room, catalog: Catalog): number[] {
   const points = suspensionPoints(system, catalog);
   if (system.mounting === 'surface') return points.map(() => 0);
-  const shaped = shapedRoom(room);
   const modules = moduleHeight(system, room, catalog);
-  return points.map((p) => (shaped ? ceilingHeightAt(shaped, p.plan[0], p.plan[1]) : room.height) - modules);
+  if (!room.shape) return points.map(() => room.height - modules);
+  const { ceilingAt } = requireRoomShapeSupport();
+  return points.map((p) => ceilingAt(room, p.plan[0], p.plan[1]) - modules);
 }

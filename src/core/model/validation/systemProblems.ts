@@ -7,10 +7,8 @@ import { rectCorners, rectsOverlap, systemElementTree, type PlanRect, type Syste
 import { boxesMeet, boxOf, forEachOverlap, type Box } from './planOverlaps';
 import { EPS } from './reporting';
 import { ownProblems } from './systemOwnProblems';
-import { shapedRoom, shapeProblems } from '../configuration/roomShape';
-import { footprintInsideOutline, lowestCeilingOver } from '../../room/footprintInsideRoom';
-import { photometricDrop } from '../rails/suspensionPoints';
-import type { Room, RoomShape } from '../configuration/configuration';
+import { requireRoomShapeSupport } from '../roomShape/roomShapeSupport';
+import type { Room } from '../configuration/configuration';
 
 /**
  * Problems of one system: its own rules, its fit in the room and clashes with
@@ -113,42 +111,10 @@ export function outsideProblem(s: LightSystem, index: number, room: Configuratio
 }
 
 /**
- * Whether a sound system fits its room: inside the box, or, in a room with a shape (issue 29),
- * every rail, connector and module rectangle inside the outline (footprintInsideOutline: a rail
- * past the inner corner of an L is outside even with both ends in the room) and clear of the
- * ceiling above it. Under a slope a pendant system's wires grow shorter toward the slope (each
- * fixing point's wire is the ceiling above it less the modules' height, suspensionWireLength);
- * along every rectangle the ceiling must stay at least the shortest suspension (catalog
- * suspension.min, ceiling to photometric centre) above the modules, checked at the rectangle's
- * corners since the ceiling is concave. A surface-mounted system's clips need the flat ceiling
- * over its whole footprint. A shape that breaks its own rules is the room's problem, not the
- * system's: then only the box is checked.
+ * Whether a sound system fits its room: inside the box, and in a room with a shape (issue 29)
+ * inside its outline and clear of its slopes (shapedSystemFit.ts, in the room-shape chunk).
  */
 export function roomFitProblem(s: LightSystem, index: number, elements: PlanRect[][], room: Room, catalog: Catalog): Problem | null {
   if (outsideRoom(elements, room.width, room.depth)) return outsideProblem(s, index, room);
-  if (!room.shape || shapeProblems(room as Room & { shape: RoomShape }).length > 0) return null;
-  const shaped = shapedRoom(room)!;
-  const rects = elements.flat().map(rectCorners);
-  if (rects.some((c) => !footprintInsideOutline(shaped.corners, c, EPS))) {
-    return { code: 'outside-room', path: `systems[${index}]`, message: `system ${s.id} reaches outside the room's outline`, params: { id: s.id } };
-  }
-  const lowest = Math.min(...rects.map((c) => lowestCeilingOver(shaped, c)));
-  const at = `systems[${index}]`;
-  if (s.mounting === 'surface') {
-    if (lowest < room.height - EPS) {
-      const message = `system ${s.id} is mounted on the ceiling but reaches under a slope (${fmt(lowest)} m there); clips need the flat ${fmt(room.height)} m ceiling`;
-      return { code: 'under-slope', path: `${at}.mounting`, message, params: { id: s.id, ceiling: Number(fmt(lowest)), height: room.height } };
-    }
-    return null;
-  }
-  const modules = room.height - photometricDrop(s, catalog);
-  const clearance = lowest - modules;
-  const min = catalog.suspension.min;
-  if (clearance < min - EPS) {
-    const message = `system ${s.id} hangs ${fmt(clearance)} m under a slope at its closest; the ceiling must stay at least ${min} m above its modules`;
-    return { code: 'under-slope', path: `${at}.suspension`, message, params: { id: s.id, clearance: Number(fmt(clearance)), min } };
-  }
-  return null;
+  return room.shape ? requireRoomShapeSupport().systemFit(s, index, elements, room, catalog) : null;
 }
-
-const fmt = (x: number): string => String(Math.round(x * 1000) / 1000);

@@ -60,7 +60,7 @@ describe('a room with a shape in validate()', () => {
       }),
       catalog,
     );
-    expect(short).toEqual([{ code: 'room-wall-short', path: 'room.shape.outline[1]', message: 'wall 1 (corner 1 to corner 2) is 0.05 m long; each wall must be at least 0.1 m', params: { wall: 1, length: 0.05, min: 0.1 } }]);
+    expect(short).toEqual([{ code: 'room-wall-short', path: 'room.shape.outline[1]', message: 'wall 1 (corner 1 to corner 2) is 0.05 m long; each wall must be at least 0.1 m', params: { wall: 1, to: 2, length: 0.05, min: 0.1 } }]);
     expect(codes(shaped({ slopes: [{ wall: 0, kneeHeight: 1.2, pitch: 95 }] }))).toEqual(['room-slope-pitch room.shape.slopes[0].pitch']);
     expect(codes(shaped({ openings: [{ wall: 1, offset: 2.5, width: 1, sill: 0, height: 2, kind: 'door' }] }))).toEqual(['room-opening-beyond-wall room.shape.openings[0].offset']);
     expect(codes(shaped({ openings: [{ wall: 1, offset: 0.5, width: 1, sill: 0, height: 2.7, kind: 'window' }] }))).toEqual(['room-opening-above-ceiling room.shape.openings[0].height']);

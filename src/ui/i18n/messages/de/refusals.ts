@@ -192,4 +192,14 @@ export default {
   roomNoOpening: 'der Raum hat keine Öffnung {opening}',
   roomNoSlope: 'Wand {wall} trägt keine Dachschräge',
   roomSplitInOpening: 'Öffnung {opening} ist im Weg: eine Wand kann nicht innerhalb einer Öffnung geteilt werden',
+  // Rooms of any shape in validate() and their lazy chunk (docs/model.md "Room shape", roomShapeSupport.ts).
+  objectOutsideOutline: '{name} ragt aus dem Grundriss des Raums hinaus',
+  objectAboveSlope: '{name} reicht {top} m hoch, über die Decke an dieser Stelle ({ceiling} m unter einer Dachschräge)',
+  outsideOutline: 'System {id} ragt aus dem Grundriss des Raums hinaus',
+  underSlopeClips: 'System {id} ist an der Decke montiert, reicht aber unter eine Dachschräge ({ceiling} m dort); Clips brauchen die flache Decke auf {height} m',
+  underSlopeClearance: 'System {id} hängt an der engsten Stelle {clearance} m unter einer Dachschräge; die Decke muss mindestens {min} m über den Leuchten bleiben',
+  'room-shape-bounds': 'der Grundriss reicht in x von {minX} bis {maxX} m und in z von {minZ} bis {maxZ} m; er muss genau von 0 bis zur Raumbreite von {width} m und von 0 bis zur Raumtiefe von {depth} m reichen',
+  'room-shape': 'die Raumform braucht Listen von Ecken, Dachschrägen und Öffnungen',
+  roomShapeLoading: 'dieser Teil von luxbox wird noch geladen; bitte gleich noch einmal versuchen',
+  roomShapeUnavailable: 'Räume beliebiger Form konnten nicht geladen werden ({problem})',
 } satisfies AreaMessages<typeof en>;

@@ -201,4 +201,14 @@ export default {
   roomNoOpening: 'the room has no opening {opening}',
   roomNoSlope: 'wall {wall} carries no slope',
   roomSplitInOpening: 'opening {opening} is in the way: a wall cannot be split inside an opening',
+  // Rooms of any shape in validate() and their lazy chunk (docs/model.md "Room shape", roomShapeSupport.ts).
+  objectOutsideOutline: "{name} reaches outside the room's outline",
+  objectAboveSlope: '{name} reaches {top} m, above the ceiling there ({ceiling} m under a slope)',
+  outsideOutline: "system {id} reaches outside the room's outline",
+  underSlopeClips: 'system {id} is mounted on the ceiling but reaches under a slope ({ceiling} m there); clips need the flat {height} m ceiling',
+  underSlopeClearance: 'system {id} hangs {clearance} m under a slope at its closest; the ceiling must stay at least {min} m above its modules',
+  'room-shape-bounds': "the outline spans x {minX} to {maxX} m and z {minZ} to {maxZ} m; it must span exactly 0 to the room's {width} m width and 0 to its {depth} m depth",
+  'room-shape': "the room's shape needs lists of corners, slopes and openings",
+  roomShapeLoading: 'this part of luxbox is still loading; try again in a moment',
+  roomShapeUnavailable: 'rooms of any shape could not be loaded ({problem})',
 };

@@ -192,4 +192,14 @@ export default {
   roomNoOpening: 'la pièce n’a pas d’ouverture {opening}',
   roomNoSlope: 'le mur {wall} ne porte aucun rampant',
   roomSplitInOpening: 'l’ouverture {opening} gêne\u00a0: un mur ne peut pas être divisé à l’intérieur d’une ouverture',
+  // Rooms of any shape in validate() and their lazy chunk (docs/model.md "Room shape", roomShapeSupport.ts).
+  objectOutsideOutline: '{name} dépasse du plan de la pièce',
+  objectAboveSlope: '{name} monte à {top} m, au-dessus du plafond à cet endroit ({ceiling} m sous un rampant)',
+  outsideOutline: 'le système {id} dépasse du plan de la pièce',
+  underSlopeClips: 'le système {id} est fixé au plafond mais passe sous un rampant ({ceiling} m à cet endroit) ; les clips demandent le plafond plat à {height} m',
+  underSlopeClearance: 'le système {id} pend à {clearance} m sous un rampant au plus près ; le plafond doit rester au moins {min} m au-dessus de ses luminaires',
+  'room-shape-bounds': 'le plan va de {minX} à {maxX} m en x et de {minZ} à {maxZ} m en z ; il doit aller exactement de 0 à la largeur de {width} m et de 0 à la profondeur de {depth} m de la pièce',
+  'room-shape': 'la forme de la pièce demande des listes de coins, de rampants et d’ouvertures',
+  roomShapeLoading: 'cette partie de luxbox est encore en cours de chargement ; réessayez dans un instant',
+  roomShapeUnavailable: 'les pièces de toute forme n’ont pas pu être chargées ({problem})',
 } satisfies AreaMessages<typeof en>;

@@ -192,4 +192,14 @@ export default {
   roomNoOpening: 'la stanza non ha l’apertura {opening}',
   roomNoSlope: 'la parete {wall} non porta alcuna falda',
   roomSplitInOpening: 'l’apertura {opening} è d’intralcio: una parete non può essere divisa all’interno di un’apertura',
+  // Rooms of any shape in validate() and their lazy chunk (docs/model.md "Room shape", roomShapeSupport.ts).
+  objectOutsideOutline: '{name} esce dalla pianta della stanza',
+  objectAboveSlope: '{name} arriva a {top} m, sopra il soffitto in quel punto ({ceiling} m sotto una falda)',
+  outsideOutline: 'il sistema {id} esce dalla pianta della stanza',
+  underSlopeClips: 'il sistema {id} è montato a soffitto ma arriva sotto una falda ({ceiling} m lì); le clip richiedono il soffitto piano a {height} m',
+  underSlopeClearance: 'il sistema {id} pende a {clearance} m sotto una falda nel punto più vicino; il soffitto deve restare almeno {min} m sopra i suoi moduli',
+  'room-shape-bounds': 'la pianta va da {minX} a {maxX} m in x e da {minZ} a {maxZ} m in z; deve andare esattamente da 0 alla larghezza di {width} m e da 0 alla profondità di {depth} m della stanza',
+  'room-shape': 'la forma della stanza richiede elenchi di angoli, falde e aperture',
+  roomShapeLoading: 'questa parte di luxbox si sta ancora caricando; riprova tra un momento',
+  roomShapeUnavailable: 'non è stato possibile caricare le stanze di qualsiasi forma ({problem})',
 } satisfies AreaMessages<typeof en>;
