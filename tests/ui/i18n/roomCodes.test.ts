@@ -8,6 +8,12 @@ import { translateCoded } from '../../../src/ui/i18n/translateCoded';
 import { roomProblems } from '../../../src/core/room/roomProblems';
 import type { RoomInput } from '../../../src/core/room/roomInput';
 import { issueExample } from '../../core/room/roomFixtures';
+import { createConfiguration, type Configuration, type LightSystem, type RoomShape } from '../../../src/core/model/configuration/configuration';
+import { validate } from '../../../src/core/model/validation/validate';
+import { problemText } from '../../../src/core/model/configuration/coding';
+import { RoomShapeSupportMissing } from '../../../src/core/model/roomShape/roomShapeSupport';
+import { noticeText } from '../../../src/ui/i18n/noticeText';
+import { catalog, run } from '../../core/model/helpers';
 
 /**
  * The room-shape rules' codes (src/core/room/roomProblems.ts, issue 29) in every language: each
@@ -111,4 +117,83 @@ describe('room-shape codes in every language', async () => {
       }
     });
   }
+});
+
+/**
+ * validate()'s own sentences for a room with a shape (docs/model.md "Room shape"): systems and
+ * objects outside the outline or under a slope, the outline's bounding box, a malformed shape,
+ * and the lazy chunk's refusal before it has loaded. Each comes from a real configuration; its
+ * sentence code (problemText) must be worded in de, fr and it. A code added to these rules
+ * without its translations fails here.
+ */
+describe("validate()'s room-shape sentences in every language", async () => {
+  const tr = {} as Record<Language, Translate>;
+  for (const [language, locale] of [
+    ['de', 'de-CH'],
+    ['fr', 'fr-CH'],
+    ['it', 'it-CH'],
+    ['en', 'en'],
+  ] as const)
+    tr[language] = createTranslator(await loadMessages(language), locale, (x) => createFormat(locale).number(x));
+
+  const L: RoomShape = {
+    outline: [
+      [0, 0],
+      [6, 0],
+      [6, 3],
+      [3.5, 3],
+      [3.5, 5],
+      [0, 5],
+    ],
+    slopes: [{ wall: 0, kneeHeight: 1.2, pitch: 45 }],
+    openings: [],
+  };
+  const room = createConfiguration({ width: 6, depth: 5, height: 2.6, shape: L });
+  const system = (x: number, z: number, over: Partial<LightSystem> = {}): LightSystem => ({
+    id: 's1',
+    x,
+    z,
+    rotation: 0,
+    suspension: 0.4,
+    rails: [{ id: 'r2', length: 1, distribution: 'start', modules: [] }],
+    joints: [],
+    feeds: [{ id: 'f3', at: 'start', driver: catalog.feed.defaultDriver }],
+    mounting: 'suspended',
+    ...over,
+  });
+  const withSystem = (s: LightSystem): Configuration => ({ ...room, systems: [s], nextId: 20 });
+  const table = run(room, 'addObject', { source: { kind: 'library', item: 'dining-table' }, placement: { on: 'floor', x: 1.5, z: 3.5 } });
+  const placed = (item: string, x: number, z: number): Configuration => {
+    const c = run(room, 'addObject', { source: { kind: 'library', item }, placement: { on: 'floor', x: 1.5, z: 3.5 } });
+    return { ...c, objects: c.objects.map((o) => ({ ...o, placement: { on: 'floor' as const, x, z } })) };
+  };
+  const CASES: Record<string, Configuration> = {
+    outsideOutline: withSystem(system(4, 4)),
+    underSlopeClearance: withSystem(system(0.5, 0.9)),
+    underSlopeClips: withSystem(system(0.5, 1.0, { mounting: 'surface' })),
+    objectOutsideOutline: { ...table, objects: table.objects.map((o) => ({ ...o, placement: { on: 'floor' as const, x: 4.8, z: 4 } })) },
+    objectAboveSlope: placed('open-shelf', 1.5, 0.5),
+    'room-shape-bounds': { ...room, room: { ...room.room, width: 7 } },
+    'room-shape': { ...room, room: { ...room.room, shape: { ...L, slopes: undefined } as unknown as RoomShape } },
+  };
+
+  for (const [code, config] of Object.entries(CASES)) {
+    it(code, () => {
+      const problem = validate(config, catalog)[0];
+      expect(problem, code).toBeDefined();
+      const msg = problemText(problem);
+      expect(msg.code).toBe(code);
+      expect(noticeText(tr.en, 'en', catalog, msg)).toBe(problem.message);
+      for (const language of ['de', 'fr', 'it'] as const) {
+        const text = noticeText(tr[language], language, catalog, msg);
+        expect(text, language).not.toBe(problem.message);
+        expect(text, `${language}: ${text}`).not.toMatch(/\{\w+\}/);
+      }
+    });
+  }
+
+  it('roomShapeLoading: a room-shape action refused before its chunk has loaded', () => {
+    const msg = { text: new RoomShapeSupportMissing('setRoomShapePreset').message, code: 'roomShapeLoading' };
+    for (const language of ['de', 'fr', 'it'] as const) expect(noticeText(tr[language], language, catalog, msg)).not.toBe(noticeText(tr.en, 'en', catalog, msg));
+  });
 });
