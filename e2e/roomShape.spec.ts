@@ -89,8 +89,8 @@ test.describe('desktop', () => {
     await expect(page.getByTestId('status-line')).toContainText('at least 0.1 m');
     expect((await room(page)).width).toBe(7);
 
-    // A rail in the wide wing; pulling the east wall in to 5 m would leave it outside.
-    expect(await page.evaluate(() => window.luxbox!.runAction('placePreset', { presetId: 'single', x: 5.5, z: 1, rotation: 0 }))).toEqual({ ok: true });
+    // A rail in the wide wing, past the slope (its ceiling is flat from z ≈ 1.9 m); pulling the east wall in to 5 m would leave it outside.
+    expect(await page.evaluate(() => window.luxbox!.runAction('placePreset', { presetId: 'single', x: 5.5, z: 2.4, rotation: 0 }))).toEqual({ ok: true });
     await page.getByTestId('room-wall-0').click();
     await typeInto(page, 'room-wall-length', '5');
     await expect(page.getByTestId('status-line')).toContainText('outside');
