@@ -7,8 +7,8 @@
 import { readFileSync, writeFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { ACTION_NAMES, actionDefinition } from '../src/core/model/actions/actionDefinitions';
-import { installRoomShapeSupport } from '../src/core/model/roomShape/roomShapeSupport';
-import { roomShapeSupportChunk } from '../src/core/model/roomShape/roomShapeChunk';
+import { installRoomShapeSupport } from '../src/core/model/configuration/roomShapeSupport';
+import { roomShapeSupportChunk } from '../src/core/model/actions/roomShapeChunk';
 
 // The room-shape actions' definitions come with their chunk (roomShapeSupport.ts): installed here as the CLI does.
 installRoomShapeSupport(roomShapeSupportChunk);

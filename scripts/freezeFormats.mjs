@@ -62,7 +62,7 @@ run('addBranch', { railId: rails()[rails().length - 1].id, connector: 'tee', tur
 // its own finish on one wall.
 if (v >= 9) {
   // Rooms of any shape are a lazy chunk in the browser (roomShapeSupport.ts); here it is loaded before the shape goes in.
-  await (await import('./src/core/model/roomShape/roomShapeSupport')).loadRoomShapeSupport();
+  await (await import('./src/core/model/actions/loadRoomShapeSupport')).loadRoomShapeSupport();
   const shape = {
     outline: [
       [0, 0],

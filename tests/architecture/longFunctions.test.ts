@@ -27,6 +27,8 @@ const ALLOWED: ReadonlyMap<string, string> = new Map([
   ['src/engines/meshImport/scanObjText.ts:scanObjText', 'one pass over the OBJ text with its caps inline (importLimits.test.ts proves each cap by its refusal): to be split by statement kind'],
   ['src/ui/viewer/LiveControl.tsx:LiveControl', "a component whose markup is most of it: its groups become components, as View3D's did"],
   ['src/engines/view/createBakeSlicer.ts:createBakeSlicer', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
+  ['src/ui/planner/RoomShapeEditor.tsx:RoomShapeEditor', "a component whose markup is most of it (issue 29's editor, merged back): its bar and handles become components, as View3D's did"],
+  ['src/ui/planner/RoomShapeEditor.tsx:Sheet', "a component whose markup is most of it (issue 29's edit sheet): its wall, corner and opening forms become components"],
   ['src/ui/planner/ImportPanel.tsx:ImportPanel', "a component whose markup is most of it: its groups become components, as View3D's did"],
   ['src/engines/view/roomView.ts:createRoomView', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's; shaped rooms (issue 29) add hooks to the viewer today"],
   ['src/hosts/node/createProbe.ts:createProbe', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],

@@ -54,7 +54,7 @@ describe('planner bundle', () => {
 
   /** What rooms of any shape add to the model: the lazy room-shape chunk (roomShapeSupport.ts, docs/architecture.md). */
   const SHAPE_CHUNK = [
-    'src/core/model/roomShape/roomShapeChunk.ts',
+    'src/core/model/actions/roomShapeChunk.ts',
     'src/core/model/configuration/roomShape.ts',
     'src/core/model/actions/roomShapeActions.ts',
     'src/core/model/actions/roomShapeGeometry.ts',
@@ -70,13 +70,13 @@ describe('planner bundle', () => {
   it('neither page reaches the room-shape chunk through static imports: only its hook is on the first screen', () => {
     for (const entry of ['src/hosts/app/main.tsx', 'src/hosts/embedDemo/main.ts']) {
       const { files } = staticPackages(entry);
-      expect(files).toContain(resolve('src/core/model/roomShape/roomShapeSupport.ts'));
+      expect(files).toContain(resolve('src/core/model/configuration/roomShapeSupport.ts'));
       expect(SHAPE_CHUNK.filter((f) => files.has(f))).toEqual([]);
     }
   });
 
   it('the same walk from the chunk reaches all of it (the check can fail)', () => {
-    const { files } = staticPackages('src/core/model/roomShape/roomShapeChunk.ts');
+    const { files } = staticPackages('src/core/model/actions/roomShapeChunk.ts');
     expect(SHAPE_CHUNK.filter((f) => !files.has(f))).toEqual([]);
   });
 });

@@ -1,7 +1,7 @@
 import { InputError } from '../../core/inputError';
 import { oneLine } from '../../core/untrustedJson';
 import { loadColourFilterSpectra } from '../../core/colour/colourFilterSpectra';
-import { loadRoomShapeSupport } from '../../core/model/roomShape/roomShapeSupport';
+import { loadRoomShapeSupport } from '../../core/model/actions/loadRoomShapeSupport';
 
 /** A subcommand: receives the arguments after its name, returns the exit code. */
 export type Command = (args: string[]) => Promise<number>;

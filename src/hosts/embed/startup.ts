@@ -2,7 +2,7 @@ import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
 import { createConfiguration, type Configuration } from '../../core/model/configuration/configuration';
 import { deserializeConfiguration } from '../../core/model/files/sceneFile';
 import { decodeShareString, shareStringText } from '../../core/model/files/shareLink';
-import { sceneTextNeedsLazyModel } from '../../core/model/roomShape/roomShapeSupport';
+import { sceneTextNeedsLazyModel } from '../../core/model/configuration/roomShapeSupport';
 import { codedText, InputError, type CodedText } from '../../core/inputError';
 import { firstImpression } from '../../ui/viewer/firstImpression';
 import type { UiMessage } from '../../core/store/uiStore';

@@ -1,6 +1,6 @@
 import { lazy, Suspense, type ComponentProps } from 'react';
 import type { RoomShapeEditorProps } from './RoomShapeEditor';
-import { loadRoomShapeSupport } from '../../core/model/roomShape/roomShapeSupport';
+import { loadRoomShapeSupport } from '../../core/model/actions/loadRoomShapeSupport';
 
 /**
  * The room-shape editor, a chunk of its own: fetched when the shopper opens the room-shape mode,

@@ -1,5 +1,6 @@
 import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
-import { loadRoomShapeSupport, sceneTextNeedsLazyModel } from '../../core/model/roomShape/roomShapeSupport';
+import { sceneTextNeedsLazyModel } from '../../core/model/configuration/roomShapeSupport';
+import { loadRoomShapeSupport } from '../../core/model/actions/loadRoomShapeSupport';
 import type { Configuration } from '../../core/model/configuration/configuration';
 import { deserializeConfiguration } from '../../core/model/files/sceneFile';
 import { SceneFileError } from '../../core/model/files/sceneFileError';

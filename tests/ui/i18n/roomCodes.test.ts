@@ -11,7 +11,7 @@ import { issueExample } from '../../core/room/roomFixtures';
 import { createConfiguration, type Configuration, type LightSystem, type RoomShape } from '../../../src/core/model/configuration/configuration';
 import { validate } from '../../../src/core/model/validation/validate';
 import { problemText } from '../../../src/core/model/configuration/coding';
-import { RoomShapeSupportMissing } from '../../../src/core/model/roomShape/roomShapeSupport';
+import { RoomShapeSupportMissing } from '../../../src/core/model/configuration/roomShapeSupport';
 import { noticeText } from '../../../src/ui/i18n/noticeText';
 import { catalog, run } from '../../core/model/helpers';
 

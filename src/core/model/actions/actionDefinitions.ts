@@ -10,7 +10,7 @@ import { formatPath } from '../catalogSchema/catalogSchema';
 import type { Configuration } from '../configuration/configuration';
 import { setRoom } from './roomActions';
 import { isRoomShapeActionName, ROOM_SHAPE_ACTION_LABELS, ROOM_SHAPE_ACTION_NAMES, type RoomShapeActionDefinitions } from './roomShapeActionNames';
-import { roomShapeSupport, RoomShapeSupportMissing } from '../roomShape/roomShapeSupport';
+import { roomShapeSupport, RoomShapeSupportMissing } from '../configuration/roomShapeSupport';
 import { setReflectance } from './surfaceActions';
 import { deleteSystem, moveSystem, placePreset, rotateSystem, setMounting, setSuspension } from './systemActions';
 import { addFeed, moveFeed, removeFeed, setFeedDriver } from './feedActions';
@@ -92,7 +92,7 @@ export function isActionName(name: string): name is ActionName {
 
 /**
  * An action's definition by name. A room-shape action needs the room-shape chunk: before it is
- * installed (roomShape/roomShapeSupport.ts) this throws RoomShapeSupportMissing; the UI and the
+ * installed (configuration/roomShapeSupport.ts) this throws RoomShapeSupportMissing; the UI and the
  * embedding API load the chunk before they offer or run one.
  */
 export function actionDefinition(name: string): ActionDefinition<unknown> {
@@ -100,7 +100,7 @@ export function actionDefinition(name: string): ActionDefinition<unknown> {
   if (Object.prototype.hasOwnProperty.call(actionDefinitions, name)) return actionDefinitions[name as keyof typeof actionDefinitions] as ActionDefinition<unknown>;
   const support = roomShapeSupport();
   if (!support) throw new RoomShapeSupportMissing(name);
-  return support.actions[name as keyof RoomShapeActionDefinitions] as ActionDefinition<unknown>;
+  return support.actions[name] as ActionDefinition<unknown>;
 }
 
 /** An action's label, known for every action on the first screen (a room-shape action's before its chunk has loaded too). */

@@ -5,7 +5,7 @@
 import { z } from 'zod';
 import type { ActionDefinition } from './action';
 import { quoting } from '../configuration/coding';
-import { requireRoomShapeSupport } from '../roomShape/roomShapeSupport';
+import { requireRoomShapeSupport } from '../configuration/roomShapeSupport';
 
 const setRoomParams = z.object({ width: z.number(), depth: z.number(), height: z.number() });
 

@@ -1,6 +1,6 @@
 /**
  * The room-shape editor's actions (roomShapeActions.ts) as one table, in the order the registry
- * lists them (roomShapeActionNames.ts). Part of the room-shape chunk (roomShape/roomShapeChunk.ts):
+ * lists them (roomShapeActionNames.ts). Part of the room-shape chunk (actions/roomShapeChunk.ts):
  * the registry finds them there once the chunk is installed.
  */
 import {

@@ -1,7 +1,7 @@
 /**
  * The room-shape actions' names, on the first screen: the registry knows and types them
  * (actionDefinitions.ts) while their definitions stay in the room-shape chunk
- * (roomShapeActionDefinitions.ts, loaded by roomShape/roomShapeSupport.ts). `import type` keeps
+ * (roomShapeActionDefinitions.ts, loaded by configuration/roomShapeSupport.ts). `import type` keeps
  * the chunk out of the first screen's bundle.
  */
 import type { roomShapeActionDefinitions } from './roomShapeActionDefinitions';

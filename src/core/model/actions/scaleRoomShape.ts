@@ -1,7 +1,7 @@
 /**
  * setRoom on a drawn room (issue 29, docs/model.md "Editing the room's shape"): the outline scaled
  * to the new width and depth; openings keep their size and their centre's place along their wall
- * in proportion. Part of the room-shape chunk (roomShape/roomShapeChunk.ts).
+ * in proportion. Part of the room-shape chunk (actions/roomShapeChunk.ts).
  */
 import { InputError } from '../../inputError';
 import type { PlanPoint } from '../../room/planPolygon';

@@ -1,7 +1,7 @@
 /**
  * A configuration file's `room.shape` (version 9, docs/model.md "Room shape"): the outline,
  * slopes and openings with the lighting scene's limits (src/core/room/roomSchema.ts) and the
- * walls' own finishes. Part of the room-shape chunk (roomShape/roomShapeChunk.ts): the file
+ * walls' own finishes. Part of the room-shape chunk (actions/roomShapeChunk.ts): the file
  * schema takes the shape as it comes (sceneFileSchema.ts) and the reader asks readRoomShape.
  */
 import { z } from 'zod';

@@ -21,7 +21,7 @@ import { problemText } from '../configuration/coding';
 import { validate } from '../validation/validate';
 import { migrateSceneFile } from './migrations/migrateSceneFile';
 import { SceneFileError } from './sceneFileError';
-import { roomShapeSupport, RoomShapeSupportMissing } from '../roomShape/roomShapeSupport';
+import { roomShapeSupport, RoomShapeSupportMissing } from '../configuration/roomShapeSupport';
 import { fileSchema, SCENE_FILE_FORMAT, SCENE_FILE_VERSION, type SceneFile } from './sceneFileSchema';
 
 /** Largest scene file text (characters), as for lighting scenes. */

@@ -14,7 +14,7 @@ import { moduleLightColour } from '../modules/moduleFilter';
 import type { LightingLuminaire, LightingObject, LightingScene, Rgb } from '../lightingScene/lightingScene';
 import { objectPlacement } from '../objects/objectGeometry';
 import { moduleHeight } from '../rails/suspensionPoints';
-import { requireRoomShapeSupport } from '../roomShape/roomShapeSupport';
+import { requireRoomShapeSupport } from '../configuration/roomShapeSupport';
 
 /** The mesh reference of a configuration's object in its lighting scene; objectMesh(config, id) resolves it. */
 export const OBJECT_MESH_PREFIX = 'object:';

@@ -14,6 +14,7 @@ import type { Room as ShapedRoom } from '../../room/normaliseRoom';
 import type { PlanPoint } from '../../room/planPolygon';
 import type { Room, RoomShape } from '../configuration/configuration';
 import { shapedRoom, shapeProblems } from '../configuration/roomShape';
+import type { NamedObject } from '../configuration/roomShapeSupport';
 import { fmt, OBJECT_EPS } from './objectGeometry';
 
 /** Convex hull of plan points, counterclockwise (Andrew's monotone chain, Inf. Proc. Letters 9(5), 1979). */
@@ -50,9 +51,6 @@ export function objectMisfit(room: ShapedRoom, mesh: TriangleMesh, placement: Me
   }
   return worst ? { kind: 'ceiling', top: worst.top, ceiling: worst.ceiling } : null;
 }
-
-/** An object's words as objectProblems names it: its name, id and library item. */
-export type NamedObject = { name: string } & Record<string, string | number>;
 
 /**
  * validate()'s sentence for an object that does not fit a configuration's room with a shape

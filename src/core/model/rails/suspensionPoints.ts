@@ -21,7 +21,7 @@ import type { LightSystem, Room } from '../configuration/configuration';
 import { chainCoordinates, chainPoint } from './chainCoordinates';
 import { firstNodeJoints } from './railTree';
 import type { PlanVec } from './geometry';
-import { requireRoomShapeSupport } from '../roomShape/roomShapeSupport';
+import { requireRoomShapeSupport } from '../configuration/roomShapeSupport';
 
 export interface MountingRule {
   /** Largest distance between two points along the chain, metres. */

@@ -4,7 +4,7 @@ import { ROOM_LIMITS, withinRoomLimits, type Configuration } from '../configurat
 import type { Problem } from '../configuration/problem';
 import { SURFACE_NAMES } from '../lightingScene/lightingScene';
 import { reflectanceProblem } from '../lightingScene/reflectance';
-import { requireRoomShapeSupport } from '../roomShape/roomShapeSupport';
+import { requireRoomShapeSupport } from '../configuration/roomShapeSupport';
 
 export function roomProblems(config: Configuration): Problem[] {
   const out: Problem[] = [];

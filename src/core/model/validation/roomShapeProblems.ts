@@ -1,6 +1,6 @@
 /**
  * validate()'s rules for a room's shape (issue 29, docs/model.md "Room shape"); part of the
- * room-shape chunk (roomShape/roomShapeChunk.ts), which validate() asks through roomShapeSupport.
+ * room-shape chunk (actions/roomShapeChunk.ts), which validate() asks through roomShapeSupport.
  */
 import type { Configuration, RoomShape } from '../configuration/configuration';
 import type { Problem } from '../configuration/problem';

@@ -1,4 +1,4 @@
-/** A system's fit in a room of any shape (docs/model.md "Room shape"); part of the room-shape chunk (roomShape/roomShapeChunk.ts). */
+/** A system's fit in a room of any shape (docs/model.md "Room shape"); part of the room-shape chunk (actions/roomShapeChunk.ts). */
 import type { Catalog } from '../catalogSchema/catalogSchema';
 import type { LightSystem, Room, RoomShape } from '../configuration/configuration';
 import type { Problem } from '../configuration/problem';
@@ -6,7 +6,7 @@ import { keyed } from '../configuration/coding';
 import { shapedRoom, shapeProblems } from '../configuration/roomShape';
 import { footprintInsideOutline, lowestCeilingOver } from '../../room/footprintInsideRoom';
 import { photometricDrop } from '../rails/suspensionPoints';
-import { rectCorners, type PlanRect } from '../rails/geometry';
+import type { PlanPoint } from '../../room/planPolygon';
 import { EPS } from './reporting';
 
 /**
@@ -20,10 +20,9 @@ import { EPS } from './reporting';
  * over its whole footprint. A shape that breaks its own rules is the room's problem, not the
  * system's: then only the box is checked.
  */
-export function shapedSystemFit(s: LightSystem, index: number, elements: PlanRect[][], room: Room, catalog: Catalog): Problem | null {
+export function shapedSystemFit(s: LightSystem, index: number, rects: readonly (readonly PlanPoint[])[], room: Room, catalog: Catalog): Problem | null {
   if (!room.shape || shapeProblems(room as Room & { shape: RoomShape }).length > 0) return null;
   const shaped = shapedRoom(room)!;
-  const rects = elements.flat().map(rectCorners);
   if (rects.some((c) => !footprintInsideOutline(shaped.corners, c, EPS))) {
     // Its own sentence key: 'outside-room' alone is the box's sentence, with the room's width and depth.
     return keyed({ code: 'outside-room', path: `systems[${index}]`, message: `system ${s.id} reaches outside the room's outline`, params: { id: s.id } }, 'outsideOutline');

@@ -7,7 +7,7 @@ import { rectCorners, rectsOverlap, systemElementTree, type PlanRect, type Syste
 import { boxesMeet, boxOf, forEachOverlap, type Box } from './planOverlaps';
 import { EPS } from './reporting';
 import { ownProblems } from './systemOwnProblems';
-import { requireRoomShapeSupport } from '../roomShape/roomShapeSupport';
+import { requireRoomShapeSupport } from '../configuration/roomShapeSupport';
 import type { Room } from '../configuration/configuration';
 
 /**
@@ -116,5 +116,5 @@ export function outsideProblem(s: LightSystem, index: number, room: Configuratio
  */
 export function roomFitProblem(s: LightSystem, index: number, elements: PlanRect[][], room: Room, catalog: Catalog): Problem | null {
   if (outsideRoom(elements, room.width, room.depth)) return outsideProblem(s, index, room);
-  return room.shape ? requireRoomShapeSupport().systemFit(s, index, elements, room, catalog) : null;
+  return room.shape ? requireRoomShapeSupport().systemFit(s, index, elements.flat().map(rectCorners), room, catalog) : null;
 }

@@ -4,7 +4,7 @@
  * the first screen, and every reader that may meet such a file loads that chunk first
  * (sceneTextNeedsLazyModel, roomShapeSupport.ts).
  */
-import type { MigrationStep } from './migrateSceneFile';
+import type { MigrationStep } from '../../configuration/roomShapeSupport';
 import { migrateV1ToV2 } from './migrateV1ToV2';
 import { migrateV2ToV3 } from './migrateV2ToV3';
 import { migrateV3ToV4 } from './migrateV3ToV4';

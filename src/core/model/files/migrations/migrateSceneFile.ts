@@ -2,13 +2,10 @@ import type { Catalog } from '../../catalogSchema/catalogSchema';
 import { SCENE_FILE_VERSION } from '../sceneFileSchema';
 import { SceneFileError } from '../sceneFileError';
 import { migrateV8ToV9, refuseV9Fields } from './migrateV8ToV9';
-import { roomShapeSupport, RoomShapeSupportMissing } from '../../roomShape/roomShapeSupport';
+import { roomShapeSupport, RoomShapeSupportMissing, type MigrationStep } from '../../configuration/roomShapeSupport';
 
 /** Versions below this read through the lazy chunk's steps (legacyMigrations.ts). */
 export const LEGACY_BELOW = 8;
-
-/** One version step: a version-n document as version n + 1. */
-export type MigrationStep = (doc: Record<string, unknown>, catalog: Catalog) => Record<string, unknown>;
 
 /**
  * Migration hook: migrations[n] turns a version-n document into version n+1.

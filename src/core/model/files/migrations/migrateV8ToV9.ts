@@ -1,6 +1,6 @@
 /** Scene file version 8 → 9 (what version 9 added; docs/model.md). */
 import { needsVersion } from '../sceneFileError';
-import { sceneDataHasRoomShape } from '../../roomShape/roomShapeSupport';
+import { sceneDataHasRoomShape } from '../../configuration/roomShapeSupport';
 
 /**
  * 8 → 9: version 9 lets a room have a shape (`room.shape`, issue 29); a version 8 room is the box

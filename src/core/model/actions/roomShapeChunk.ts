@@ -6,8 +6,8 @@
  * imports it in the browser (a lazy chunk); Node hosts and the tests import it directly.
  */
 import { ceilingHeightAt } from '../../room/ceilingHeightAt';
-import { roomShapeActionDefinitions } from '../actions/roomShapeActionDefinitions';
-import { scaleRoomShape } from '../actions/scaleRoomShape';
+import { roomShapeActionDefinitions } from './roomShapeActionDefinitions';
+import { scaleRoomShape } from './scaleRoomShape';
 import type { Room, RoomShape } from '../configuration/configuration';
 import { shapedRoom } from '../configuration/roomShape';
 import { readRoomShape } from '../files/roomShapeFileSchema';
@@ -15,7 +15,7 @@ import { legacyMigrations } from '../files/migrations/legacyMigrations';
 import { configurationObjectMisfit } from '../objects/objectInShapedRoom';
 import { roomShapeProblems } from '../validation/roomShapeProblems';
 import { shapedSystemFit } from '../validation/shapedSystemFit';
-import type { RoomShapeSupport } from './roomShapeSupport';
+import type { RoomShapeSupport } from '../configuration/roomShapeSupport';
 
 const shaped = (room: Room) => {
   const found = shapedRoom(room);

@@ -6,26 +6,29 @@
  * room has a `shape`, and every way a shape can come in (a saved or shared configuration, a file,
  * the embedding API, the room-shape button) awaits loadRoomShapeSupport() first. A shape met
  * before that is an error (RoomShapeSupportMissing), never a shape silently dropped or judged as a box.
- * Node hosts and the tests install the chunk statically (installRoomShapeSupport(roomShapeSupportChunk)).
+ * The chunk is actions/roomShapeChunk.ts, fetched by loadRoomShapeSupport (actions/loadRoomShapeSupport.ts);
+ * Node hosts and the tests install it statically (installRoomShapeSupport(roomShapeSupportChunk)).
  */
-import { InputError } from '../../inputError';
-import type { Catalog } from '../catalogSchema/catalogSchema';
-import type { Configuration, LightSystem, Room } from '../configuration/configuration';
-import type { Problem } from '../configuration/problem';
+import { InputError, type CodedText } from '../../inputError';
 import type { MeshPlacement } from '../../mesh/placeMesh';
 import type { TriangleMesh } from '../../mesh/triangleMesh';
 import type { Room as ShapedRoom } from '../../room/normaliseRoom';
-import type { RoomShapeActionDefinitions } from '../actions/roomShapeActionNames';
-import type { PlanRect } from '../rails/geometry';
-import type { NamedObject } from '../objects/objectInShapedRoom';
-import type { CodedText } from '../../inputError';
-import type { MigrationStep } from '../files/migrations/migrateSceneFile';
+import type { PlanPoint } from '../../room/planPolygon';
+import type { Catalog } from '../catalogSchema/catalogSchema';
+import type { Configuration, LightSystem, Room } from './configuration';
+import type { Problem } from './problem';
+
+/** An object's words as validate() names it: its name, id and library item. */
+export type NamedObject = { name: string } & Record<string, string | number>;
+
+/** One version step of the configuration file: a version-n document as version n + 1. */
+export type MigrationStep = (doc: Record<string, unknown>, catalog: Catalog) => Record<string, unknown>;
 
 export interface RoomShapeSupport {
   /** validate()'s rules of `room.shape` (room-*), at room.shape.* paths. */
   problems(room: Room): Problem[];
   /** A system that fits the box: its fit to the outline and under the slopes, or null. */
-  systemFit(system: LightSystem, index: number, elements: PlanRect[][], room: Room, catalog: Catalog): Problem | null;
+  systemFit(system: LightSystem, index: number, rects: readonly (readonly PlanPoint[])[], room: Room, catalog: Catalog): Problem | null;
   /** validate()'s sentence for a placed object outside the outline or above a slope; null when it fits or the shape breaks its own rules. */
   objectMisfit(room: Room, mesh: TriangleMesh, placement: MeshPlacement, named: NamedObject): { message: string; key: string; params: Record<string, string | number> } | null;
   /** The ceiling's height above a plan point of a room with a shape, metres. */
@@ -36,8 +39,8 @@ export interface RoomShapeSupport {
   scale(state: Configuration, size: { width: number; depth: number; height: number }): Configuration;
   /** A configuration file's `room.shape` read: the shape, or the first problem as a coded sentence at its path under `prefix`. */
   readShape(value: unknown, prefix: readonly PropertyKey[]): { shape: Room['shape'] } | { problem: CodedText };
-  /** The room-shape editor's action definitions. */
-  actions: RoomShapeActionDefinitions;
+  /** The room-shape editor's action definitions by name (actions/roomShapeActionDefinitions.ts; typed there, this folder sits below actions). */
+  actions: Readonly<Record<string, unknown>>;
   /** The configuration file's steps from versions before 8 (legacyMigrations.ts): rare files, kept off the first screen with the shape. */
   legacyMigrations: Record<number, MigrationStep>;
 }
@@ -51,7 +54,6 @@ export class RoomShapeSupportMissing extends InputError {
 }
 
 let installed: RoomShapeSupport | null = null;
-let loading: Promise<RoomShapeSupport> | null = null;
 
 export function installRoomShapeSupport(support: RoomShapeSupport): void {
   installed = support;
@@ -66,22 +68,6 @@ export function roomShapeSupport(): RoomShapeSupport | null {
 export function requireRoomShapeSupport(): RoomShapeSupport {
   if (!installed) throw new RoomShapeSupportMissing('room.shape');
   return installed;
-}
-
-/** Fetches and installs the room-shape chunk once; later calls share the same promise. A failed fetch may be tried again. */
-export function loadRoomShapeSupport(): Promise<RoomShapeSupport> {
-  if (installed) return Promise.resolve(installed);
-  loading ??= import('./roomShapeChunk').then(
-    (m) => {
-      installRoomShapeSupport(m.roomShapeSupportChunk);
-      return m.roomShapeSupportChunk;
-    },
-    (e: unknown) => {
-      loading = null;
-      throw e;
-    },
-  );
-  return loading;
 }
 
 /** Whether parsed scene-file JSON (any value) has a room shape: `configuration.room.shape`. */
