@@ -51,3 +51,13 @@ test('a box room never fetches the room-shape chunk', async ({ page }) => {
   await expect(page.getByTestId('plan')).toBeVisible();
   expect(await chunkFetched(page)).toBe(false);
 });
+
+test('a share link of version 1 (its steps ride in the same chunk) opens as the frozen expected file', async ({ page }) => {
+  const link = readFileSync('tests/fixtures/formats/share-link-v1.txt', 'utf8').trim();
+  const expected = JSON.parse(readFileSync('tests/fixtures/formats/expected/share-link-v1.luxbox.json', 'utf8'));
+  await page.goto(`/#c=${link}`);
+  await expect(page.getByTestId('plan')).toBeVisible();
+  await expect.poll(async () => JSON.parse(await page.evaluate(() => window.luxbox!.getConfig())).configuration.systems.length).toBe(expected.configuration.systems.length);
+  expect(JSON.parse(await page.evaluate(() => window.luxbox!.getConfig()))).toEqual(expected);
+  expect(await chunkFetched(page)).toBe(true);
+});
