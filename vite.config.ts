@@ -134,7 +134,7 @@ export default defineConfig(({ command }) => {
     },
     test: {
       include: ['tests/**/*.test.ts', 'tests/**/*.test.tsx'],
-      setupFiles: ['tests/setup/colourFilterSpectra.ts'],
+      setupFiles: ['tests/setup/colourFilterSpectra.ts', 'tests/setup/roomShapeSupport.ts'],
       environment: 'node',
       // headless-gl contexts are per process; forks keep native state isolated.
       pool: 'forks',

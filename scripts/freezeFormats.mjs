@@ -5,12 +5,27 @@
 import { writeFileSync } from 'node:fs';
 import { defaultCatalog } from './src/core/catalog/defaultCatalog';
 import { demoConfiguration } from './src/core/catalog/demoConfiguration';
-import * as sf from './src/core/model/sceneFile';
-import * as defs from './src/core/model/actionDefinitions';
-import { toLightingScene } from './src/core/model/toLightingScene';
+// The model's files moved into domain folders (core/model/files, core/model/actions) after version 8: the first path that exists.
+async function load(...paths) {
+  for (const p of paths) {
+    try {
+      return await import(p);
+    } catch {
+      /* not in this checkout */
+    }
+  }
+  return null;
+}
+const sf = await load('./src/core/model/files/sceneFile', './src/core/model/sceneFile');
+// Share links moved out of the scene file's module (core/model/files/shareLink) too.
+const share = (await load('./src/core/model/files/shareLink')) ?? sf;
+const defs = await load('./src/core/model/actions/actionDefinitions', './src/core/model/actionDefinitions');
+const { toLightingScene } = await load('./src/core/model/files/toLightingScene', './src/core/model/toLightingScene');
+// Version 3 lighting scenes are written through lightingSceneJson (the room as its author wrote it); older ones as the object.
+const sceneJson = (await load('./src/core/model/lightingScene/lightingSceneJson'))?.lightingSceneJson ?? ((scene) => scene);
 const out = process.argv[2];
 let config = demoConfiguration(defaultCatalog);
-const v = sf.SCENE_FILE_VERSION;
+const v = sf.SCENE_FILE_VERSION ?? (await load('./src/core/model/files/sceneFileSchema')).SCENE_FILE_VERSION;
 const mods = () => config.systems.flatMap((s) => (s.rails ?? []).flatMap((r) => r.modules));
 const sys = () => config.systems[0];
 const rails = () => sys().rails;
@@ -41,15 +56,42 @@ run('setAim', { moduleId: mods()[0].id, aim: { rotation: 30, tilt: 20 } });
 run('setModuleOn', { moduleId: mods()[2].id, on: false });
 run('recordScene', { name: 'Evening', fade: 2 });
 run('addBranch', { railId: rails()[rails().length - 1].id, connector: 'tee', turn: 90, length: 1 });
-const share = sf.encodeShareString(config, defaultCatalog);
+// Version 9: a room shape. No action writes one yet (the plan editor of issue 29 will), so the
+// shape is set on the room directly and the file's reader (validate()) judges it below: an L whose
+// notch misses the demo's systems and objects, a slope on its east wall, a door and a window, and
+// its own finish on one wall.
+if (v >= 9) {
+  // Rooms of any shape are a lazy chunk in the browser (roomShapeSupport.ts); here it is loaded before the shape goes in.
+  await (await import('./src/core/model/actions/loadRoomShapeSupport')).loadRoomShapeSupport();
+  const shape = {
+    outline: [
+      [0, 0],
+      [5, 0],
+      [5, 2.5],
+      [4.2, 2.5],
+      [4.2, 4],
+      [0, 4],
+    ],
+    slopes: [{ wall: 1, kneeHeight: 1.9, pitch: 35 }],
+    openings: [
+      { wall: 4, offset: 0.5, width: 0.9, sill: 0, height: 2, kind: 'door' },
+      { wall: 0, offset: 2.5, width: 1.2, sill: 0.9, height: 1.2, kind: 'window' },
+    ],
+    wallReflectance: [0.5, 0.5, [0.6, 0.55, 0.5], 0.5, 0.5, 0.5],
+  };
+  config = { ...config, room: { ...config.room, shape } };
+  sf.deserializeConfiguration(sf.serializeConfiguration(config, defaultCatalog), defaultCatalog, 'the shaped room');
+  console.log('  ok room shape');
+}
+const shareText = share.encodeShareString(config, defaultCatalog);
 if (v >= 3) run('addObject', { source: { kind: 'import', name: 'crate.obj', mesh: cube, units: 'm' }, placement: { on: 'floor', x: 3.8, z: 0.8 } });
 writeFileSync(`${out}/configuration-v${v}.luxbox.json`, sf.serializeConfiguration(config, defaultCatalog) + '\n');
-writeFileSync(`${out}/share-link-v${v}.txt`, share + '\n');
+writeFileSync(`${out}/share-link-v${v}.txt`, shareText + '\n');
 try {
   await (await import('./src/core/colour/colourFilterSpectra')).loadColourFilterSpectra();
 } catch {
   /* older versions load them eagerly */
 }
 const scene = toLightingScene(config, defaultCatalog);
-writeFileSync(`${out}/lighting-scene-v${scene.version}.json`, JSON.stringify(scene, null, 2) + '\n');
+writeFileSync(`${out}/lighting-scene-v${scene.version}.json`, JSON.stringify(sceneJson(scene), null, 2) + '\n');
 console.log('version', v, 'lighting scene', scene.version);

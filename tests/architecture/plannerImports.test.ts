@@ -51,4 +51,32 @@ describe('planner bundle', () => {
   it('the same walk does find three.js behind the lazy 3D view (the check can fail)', () => {
     expect(staticPackages('src/ui/viewer/View3D.tsx').packages).toContain('three');
   });
+
+  /** What rooms of any shape add to the model: the lazy room-shape chunk (roomShapeSupport.ts, docs/architecture.md). */
+  const SHAPE_CHUNK = [
+    'src/core/model/actions/roomShapeChunk.ts',
+    'src/core/model/configuration/roomShape.ts',
+    'src/core/model/actions/roomShapeActions.ts',
+    'src/core/model/actions/roomShapeGeometry.ts',
+    'src/core/model/validation/roomShapeProblems.ts',
+    'src/core/model/validation/shapedSystemFit.ts',
+    'src/core/model/files/roomShapeFileSchema.ts',
+    'src/core/model/files/migrations/legacyMigrations.ts',
+    'src/core/room/roomProblems.ts',
+    'src/core/room/roomSchema.ts',
+    'src/core/room/normaliseRoom.ts',
+  ].map((f) => resolve(f));
+
+  it('neither page reaches the room-shape chunk through static imports: only its hook is on the first screen', () => {
+    for (const entry of ['src/hosts/app/main.tsx', 'src/hosts/embedDemo/main.ts']) {
+      const { files } = staticPackages(entry);
+      expect(files).toContain(resolve('src/core/model/configuration/roomShapeSupport.ts'));
+      expect(SHAPE_CHUNK.filter((f) => files.has(f))).toEqual([]);
+    }
+  });
+
+  it('the same walk from the chunk reaches all of it (the check can fail)', () => {
+    const { files } = staticPackages('src/core/model/actions/roomShapeChunk.ts');
+    expect(SHAPE_CHUNK.filter((f) => !files.has(f))).toEqual([]);
+  });
 });

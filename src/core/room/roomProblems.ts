@@ -53,7 +53,14 @@ export function outlineProblems(outline: readonly PlanPoint[]): RoomProblem[] {
     const b = outline[(i + 1) % n];
     const length = Math.hypot(b[0] - a[0], b[1] - a[1]);
     if (length < minWall - EPS) {
-      out.push(problem('room-wall-short', `room.outline[${i}]`, `wall ${i} (corner ${i} to corner ${(i + 1) % n}) is ${round(length)} m long; each wall must be at least ${minWall} m`, { wall: i, length: round(length), min: minWall }));
+      out.push(
+        problem('room-wall-short', `room.outline[${i}]`, `wall ${i} (corner ${i} to corner ${(i + 1) % n}) is ${round(length)} m long; each wall must be at least ${minWall} m`, {
+          wall: i,
+          to: (i + 1) % n,
+          length: round(length),
+          min: minWall,
+        }),
+      );
     }
   }
   for (let i = 0; i < n; i++) {

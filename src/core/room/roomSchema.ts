@@ -1,13 +1,14 @@
 /**
  * The version-3 `room` object of a lighting scene (issue 29; docs/scene-format.md, "Version 3
- * room (draft)") as a zod schema: the structure and types first (strict: an unknown field is
- * refused), then the room's own rules (roomProblems) as issues at their paths. Not yet wired into
- * the lighting-scene parser.
+ * room") as a zod schema: the structure and types first (strict: an unknown field is
+ * refused), then the room's own rules (roomProblems) as issues at their paths. parseLightingScene
+ * reads version 3 with it; the configuration file's room shape reuses its outline, slope and
+ * opening schemas (sceneFileSchema.ts).
  */
 import { z } from 'zod';
 import { OPENING_KINDS, ROOM_SHAPE_LIMITS } from './roomInput';
 import { roomProblems } from './roomProblems';
-import type { RoomInput } from './roomInput';
+import type { RoomInput, RoomReflectance } from './roomInput';
 
 const show = (v: unknown): string => {
   const text = typeof v === 'number' && !Number.isFinite(v) ? String(v) : (JSON.stringify(v) ?? String(v));
@@ -27,7 +28,8 @@ const index = z
   .int('must be a whole number')
   .min(0, 'must be 0 or more');
 
-const slope = z.strictObject(
+/** One roof slope (exported for the configuration file's room shape, sceneFileSchema.ts). */
+export const roomSlopeSchema = z.strictObject(
   {
     wall: index,
     kneeHeight: finite.refine((v) => v >= 0, { error: (i) => `${show(i.input)} m is below the floor` }),
@@ -37,7 +39,8 @@ const slope = z.strictObject(
   { error: 'must be an object' },
 );
 
-const opening = z.strictObject(
+/** One opening. */
+export const roomOpeningSchema = z.strictObject(
   {
     wall: index,
     offset: finite,
@@ -49,27 +52,45 @@ const opening = z.strictObject(
   { error: 'must be an object' },
 );
 
+/**
+ * `walls`: one reflectance, or a list with one per wall. Told apart by the rule the room model
+ * reads them by (wallReflectances: three bare numbers are [r, g, b]) rather than by a zod union, so
+ * a bad entry of a per-wall list is reported at its own path (`walls[2][0]`), not as the whole list.
+ */
+const wallReflectances = z.custom<unknown>().superRefine((value, ctx) => {
+  const perWall = Array.isArray(value) && !(value.length === 3 && value.every((v) => typeof v === 'number'));
+  const check = (v: unknown, at: number[]) => {
+    const r = reflectance.safeParse(v);
+    if (!r.success) for (const issue of r.error.issues) ctx.addIssue({ code: 'custom', message: issue.message, path: [...at, ...issue.path] as (string | number)[], input: v });
+  };
+  if (!perWall) return check(value, []);
+  const list = value as unknown[];
+  if (list.length > ROOM_SHAPE_LIMITS.maxCorners) ctx.addIssue({ code: 'custom', message: `has more than ${ROOM_SHAPE_LIMITS.maxCorners} entries`, input: value });
+  else list.forEach((v, k) => check(v, [k]));
+}) as unknown as z.ZodType<RoomReflectance | RoomReflectance[]>;
+
+/** The floor outline: 3 to 64 corners [x, z] within ±500 m. */
+export const roomOutlineSchema = z
+  .array(z.tuple([coordinate, coordinate], { error: (i) => `must be [x, z] in metres, got ${show(i.input)}` }), { error: (i) => (i.input === undefined ? 'is missing' : 'must be a list of corners [x, z]') })
+  .min(ROOM_SHAPE_LIMITS.minCorners, `needs at least ${ROOM_SHAPE_LIMITS.minCorners} corners`)
+  .max(ROOM_SHAPE_LIMITS.maxCorners, `has more than ${ROOM_SHAPE_LIMITS.maxCorners} corners`);
+
 const roomShape = z.strictObject(
   {
-    outline: z
-      .array(z.tuple([coordinate, coordinate], { error: (i) => `must be [x, z] in metres, got ${show(i.input)}` }), { error: (i) => (i.input === undefined ? 'is missing' : 'must be a list of corners [x, z]') })
-      .min(ROOM_SHAPE_LIMITS.minCorners, `needs at least ${ROOM_SHAPE_LIMITS.minCorners} corners`)
-      .max(ROOM_SHAPE_LIMITS.maxCorners, `has more than ${ROOM_SHAPE_LIMITS.maxCorners} corners`),
+    outline: roomOutlineSchema,
     height: finite.refine((v) => v >= ROOM_SHAPE_LIMITS.minHeight && v <= ROOM_SHAPE_LIMITS.maxHeight, {
       error: (i) => `${show(i.input)} m is outside ${ROOM_SHAPE_LIMITS.minHeight}..${ROOM_SHAPE_LIMITS.maxHeight} m`,
     }),
-    slopes: z.array(slope, { error: 'must be a list of slopes' }).max(ROOM_SHAPE_LIMITS.maxCorners, `has more than ${ROOM_SHAPE_LIMITS.maxCorners} slopes`).optional(),
+    slopes: z.array(roomSlopeSchema, { error: 'must be a list of slopes' }).max(ROOM_SHAPE_LIMITS.maxCorners, `has more than ${ROOM_SHAPE_LIMITS.maxCorners} slopes`).optional(),
     openings: z
-      .array(opening, { error: 'must be a list of openings' })
+      .array(roomOpeningSchema, { error: 'must be a list of openings' })
       .max(4 * ROOM_SHAPE_LIMITS.maxCorners, `has more than ${4 * ROOM_SHAPE_LIMITS.maxCorners} openings`)
       .optional(),
     reflectance: z.strictObject(
       {
         floor: reflectance,
         ceiling: reflectance,
-        walls: z.union([reflectance, z.array(reflectance).max(ROOM_SHAPE_LIMITS.maxCorners)], {
-          error: (i) => (i.input === undefined ? 'is missing' : `must be a reflectance, [r, g, b], or one per wall, got ${show(i.input)}`),
-        }),
+        walls: wallReflectances,
       },
       { error: (i) => (i.input === undefined ? 'is missing' : 'must be an object with floor, ceiling and walls') },
     ),

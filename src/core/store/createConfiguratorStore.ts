@@ -9,7 +9,7 @@
 import { createStore, type StoreApi } from 'zustand/vanilla';
 import { InputError } from '../inputError';
 import { refuse, type Enablement, type Refusal } from '../model/actions/action';
-import { ACTION_NAMES, actionDefinitions, attemptAction, checkAction, type ActionName } from '../model/actions/actionDefinitions';
+import { ACTION_NAMES, actionLabel, attemptAction, checkAction, type ActionName } from '../model/actions/actionDefinitions';
 import type { Catalog } from '../model/catalogSchema/catalogSchema';
 import { createConfiguration, type Configuration } from '../model/configuration/configuration';
 import { createHistory, pushHistory, redo, undo, type History } from '../model/configuration/history';
@@ -97,7 +97,7 @@ export function createConfiguratorStore(options: ConfiguratorStoreOptions): Conf
         const state = get().config;
         return ACTION_NAMES.map((name) => ({
           name,
-          label: actionDefinitions[name].label,
+          label: actionLabel(name),
           enabled: checkAction(state, name, paramsByName[name] ?? {}, catalog),
         }));
       },

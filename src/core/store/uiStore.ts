@@ -45,6 +45,8 @@ export interface UiState {
   expert: boolean;
   /** Whether the side panel offers the Expert switch (the shop lets the user choose). */
   expertSwitch: boolean;
+  /** The plan's room-shape mode (issue 29, docs/planner.md "Rooms of any shape"): corner handles, wall lengths, the edit sheet. */
+  roomEdit: boolean;
 }
 
 /** The brand in the configurator's header (docs/embedding.md, option `brand`). */
@@ -78,6 +80,7 @@ export function createUiStore(initial: Partial<UiState> = {}): UiStore {
     brand: DEFAULT_BRAND,
     expert: false,
     expertSwitch: false,
+    roomEdit: false,
     ...initial,
   }));
   // One rule for every way a drawer closes (its toggle, a tap beside it, an action that closes it

@@ -1,6 +1,7 @@
 import { InputError } from '../../core/inputError';
 import { oneLine } from '../../core/untrustedJson';
 import { loadColourFilterSpectra } from '../../core/colour/colourFilterSpectra';
+import { loadRoomShapeSupport } from '../../core/model/actions/loadRoomShapeSupport';
 
 /** A subcommand: receives the arguments after its name, returns the exit code. */
 export type Command = (args: string[]) => Promise<number>;
@@ -45,8 +46,9 @@ export async function main(argv: string[]): Promise<number> {
   }
   try {
     // Every command may compute a colour through a filter (a configuration's modules, `filters`):
-    // the spectra load with the command (docs/colour-filters.md, "Two files").
-    const [{ run }] = await Promise.all([load(), loadColourFilterSpectra()]);
+    // the spectra load with the command (docs/colour-filters.md, "Two files"). So does the room-shape
+    // support: any configuration a command reads may have a room of any shape (roomShapeSupport.ts).
+    const [{ run }] = await Promise.all([load(), loadColourFilterSpectra(), loadRoomShapeSupport()]);
     return await run(rest);
   } catch (error) {
     if (error instanceof InputError) {

@@ -3,6 +3,11 @@ import { parseAdaptation } from '../../engines/view/adaptationSetting';
 import { createRoot } from 'react-dom/client';
 import { codedText, InputError } from '../../core/inputError';
 import { isActionName } from '../../core/model/actions/actionDefinitions';
+import { isRoomShapeActionName } from '../../core/model/actions/roomShapeActionNames';
+import { roomShapeSupport, RoomShapeSupportMissing } from '../../core/model/configuration/roomShapeSupport';
+import { loadRoomShapeSupport } from '../../core/model/actions/loadRoomShapeSupport';
+import { createConfiguration } from '../../core/model/configuration/configuration';
+import { createHistory } from '../../core/model/configuration/history';
 import { billOfMaterials, type BillOfMaterials } from '../../core/model/power/billOfMaterials';
 import { installationNeeds } from '../../core/model/power/installationNeeds';
 import { configurationFromData, deserializeConfiguration, serializeConfiguration } from '../../core/model/files/sceneFile';
@@ -11,7 +16,7 @@ import { toLightingScene } from '../../core/model/files/toLightingScene';
 import { createConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import { Configurator } from '../../ui/app/Configurator';
 import { readLocal, writeLocal } from './localStore';
-import { SHARE_HASH_PREFIX, resolveStartup } from './startup';
+import { SHARE_HASH_PREFIX, resolveStartup, startupNeedsRoomShape, type Startup } from './startup';
 import { createUiStore, DEFAULT_BRAND, showStatus, type Brand } from '../../core/store/uiStore';
 import { createFootprintSource } from '../../ui/planner/footprintSource';
 import type { LuxboxInstance, LuxboxOptions } from './types';
@@ -112,7 +117,11 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
 
   const storageKey = options.storageKey || null;
   const saved = storageKey ? readLocal(storageKey) : null;
-  const start = resolveStartup({ catalog, hash: options.shareLinks ? currentHash() : '', saved, room: options.room, demo: options.demo });
+  const startupInput = { catalog, hash: options.shareLinks ? currentHash() : '', saved, room: options.room, demo: options.demo };
+  // A saved or shared room of any shape (or a file before version 8) waits for the room-shape chunk (roomShapeSupport.ts): until
+  // then an empty plan shows and nothing is autosaved, so the user's shaped room is never lost.
+  let shapePending = !roomShapeSupport() && startupNeedsRoomShape(startupInput.hash, saved);
+  const start: Startup = shapePending ? { config: createConfiguration(), phase: 'planner', banner: null, saveNow: false, clearHash: false } : resolveStartup(startupInput);
   let store;
   try {
     store = createConfiguratorStore({ catalog, initial: start.config });
@@ -133,16 +142,20 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
     if (options.apiLanguage === 'en' || language === 'en' || !ready) return bom;
     return { ...bom, lines: bom.lines.map((line) => ({ ...line, name: bomLineName(line, catalog, language, t, format) })) };
   };
-  if (start.clearHash && typeof history !== 'undefined') history.replaceState(null, '', location.pathname + location.search);
-  if (storageKey && start.saveNow) writeLocal(storageKey, serializeConfiguration(start.config, catalog));
+  const settle = (s: Startup) => {
+    if (s.clearHash && typeof history !== 'undefined') history.replaceState(null, '', location.pathname + location.search);
+    if (storageKey && s.saveNow) writeLocal(storageKey, serializeConfiguration(s.config, catalog));
+  };
+  settle(start);
 
   const listeners = new Set<(json: string) => void>();
   if (options.onChange) listeners.add(options.onChange);
   const unsubscribeStore = store.subscribe((s, prev) => {
     if (s.config === prev.config) return;
     const json = serializeConfiguration(s.config, catalog);
-    // Autosave only on changes: opening a broken link (no change) never overwrites the saved work.
-    if (storageKey) writeLocal(storageKey, json);
+    // Autosave only on changes: opening a broken link (no change) never overwrites the saved work,
+    // nor does anything done while a saved or shared room of any shape is still loading.
+    if (storageKey && !shapePending) writeLocal(storageKey, json);
     for (const l of [...listeners]) {
       try {
         l(json);
@@ -155,7 +168,8 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
   // The filters' spectra load when the configuration first uses a filter (not with the first screen).
   const colourData = keepColourFilterSpectra(store);
 
-  const restoreSaved = () => {
+  // A saved room of any shape has its chunk already: startup loaded it (startupNeedsRoomShape looks at the autosave too).
+  const restoreSaved = (): void => {
     const text = storageKey ? readLocal(storageKey) : null;
     if (!text) return;
     try {
@@ -216,6 +230,21 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
   const alive = () => {
     if (destroyed) throw new InputError('this luxbox instance was destroyed');
   };
+  if (shapePending) {
+    // What the configurator would have opened with, once the shape can be read: a fresh history, as at mount.
+    loadRoomShapeSupport().then(
+      () => {
+        if (destroyed) return;
+        const s = resolveStartup(startupInput);
+        store.setState({ history: createHistory(s.config), config: s.config, canUndo: false, canRedo: false, selection: null });
+        shapePending = false;
+        ui.setState({ phase: s.phase, banner: s.banner });
+        settle(s);
+      },
+      // Not fetched (offline): said in the status line; the autosave stays untouched (shapePending).
+      (e: unknown) => showStatus(ui, `rooms of any shape could not be loaded (${String(e)})`, { code: 'roomShapeUnavailable', params: { problem: String(e) } }),
+    );
+  }
 
   return {
     getConfig() {
@@ -224,7 +253,15 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
     },
     setConfig(sceneFile) {
       alive();
-      const config = typeof sceneFile === 'string' ? deserializeConfiguration(sceneFile, catalog, 'setConfig') : configurationFromData(sceneFile, catalog, 'setConfig');
+      let config;
+      try {
+        config = typeof sceneFile === 'string' ? deserializeConfiguration(sceneFile, catalog, 'setConfig') : configurationFromData(sceneFile, catalog, 'setConfig');
+      } catch (e) {
+        // A room of any shape (or a file before version 8) before its chunk: fetch it; whenReady() waits for it (docs/embedding.md).
+        if (!(e instanceof RoomShapeSupportMissing)) throw e;
+        loadRoomShapeSupport().catch(() => undefined);
+        throw new InputError('setConfig: this configuration needs a part of luxbox that is still loading (rooms of any shape, files before version 8); await whenReady() first', { code: 'roomShapeLoading' });
+      }
       const r = store.getState().load(config);
       if (!r.ok) throw new InputError(`setConfig: ${r.reason}`);
       ui.setState({ phase: 'planner', banner: null });
@@ -253,6 +290,11 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
     runAction(name: string, params: unknown = {}) {
       alive();
       if (!isActionName(name)) return { ok: false, reason: `unknown action '${name}'` };
+      if (isRoomShapeActionName(name) && !roomShapeSupport()) {
+        // The room-shape editor's actions come with their chunk: fetch it; whenReady() waits for it.
+        loadRoomShapeSupport().catch(() => undefined);
+        return { ok: false, reason: `${name}: rooms of any shape are still loading; await whenReady() first` };
+      }
       const r = store.getState().dispatch(name, params);
       if (r.ok && ui.getState().phase === 'setup') ui.setState({ phase: 'planner' });
       return r.ok ? { ok: true } : { ok: false, reason: apiText(r) };
@@ -280,7 +322,8 @@ export function mountLuxbox(element: Element, options: LuxboxOptions = {}): Luxb
     },
     whenReady() {
       alive();
-      return Promise.all([colourData.ready(), i18n.ready]).then(() => undefined);
+      // The room-shape chunk too, so that setConfig and runAction take rooms of any shape afterwards.
+      return Promise.all([colourData.ready(), i18n.ready, loadRoomShapeSupport()]).then(() => undefined);
     },
     scenes() {
       alive();

@@ -1,7 +1,8 @@
 import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
 import { createConfiguration, type Configuration } from '../../core/model/configuration/configuration';
 import { deserializeConfiguration } from '../../core/model/files/sceneFile';
-import { decodeShareString } from '../../core/model/files/shareLink';
+import { decodeShareString, shareStringText } from '../../core/model/files/shareLink';
+import { sceneTextNeedsLazyModel } from '../../core/model/configuration/roomShapeSupport';
 import { codedText, InputError, type CodedText } from '../../core/inputError';
 import { firstImpression } from '../../ui/viewer/firstImpression';
 import type { UiMessage } from '../../core/store/uiStore';
@@ -87,4 +88,21 @@ export function resolveStartup({ catalog, hash, saved, room, demo }: StartupInpu
   if (room) return { config: createConfiguration(room), phase: 'planner', banner, saveNow: false, clearHash: false };
   if (demo) return { config: firstImpression(catalog), phase: 'planner', banner, saveNow: false, clearHash: false };
   return { config: createConfiguration(), phase: 'setup', banner, saveNow: false, clearHash: false };
+}
+
+/**
+ * Whether what the configurator opens with (resolveStartup's order: the share link, else the
+ * autosave) has a room of any shape, so that the room-shape chunk must load first
+ * (roomShapeSupport.ts): the user's shaped room then opens shaped, never as a refusal or a box.
+ */
+export function startupNeedsRoomShape(hash: string, saved: string | null): boolean {
+  // The autosave counts even under a link: the link's banner offers to restore it.
+  if (sceneTextNeedsLazyModel(saved)) return true;
+  if (!hash.startsWith(SHARE_HASH_PREFIX)) return false;
+  try {
+    return sceneTextNeedsLazyModel(shareStringText(hash.slice(SHARE_HASH_PREFIX.length)));
+  } catch {
+    // A damaged link opens as an empty room with its message.
+    return false;
+  }
 }

@@ -8,6 +8,10 @@ export { SURFACE_NAMES } from '../../core/model/lightingScene/lightingScene';
 export { parseLightingScene, LightingSceneError, LIGHTING_SCENE_VERSION } from '../../core/model/lightingScene/parseLightingScene';
 export { parseCatalog, CatalogError, type Catalog } from '../../core/model/catalogSchema/catalogSchema';
 export { configurationFromData, deserializeConfiguration, serializeConfiguration } from '../../core/model/files/sceneFile';
+import { installRoomShapeSupport } from '../../core/model/configuration/roomShapeSupport';
+import { roomShapeSupportChunk } from '../../core/model/actions/roomShapeChunk';
+// A headless door has no first screen to keep small: rooms of any shape are read and judged from the start (roomShapeSupport.ts).
+installRoomShapeSupport(roomShapeSupportChunk);
 export { SceneFileError } from '../../core/model/files/sceneFileError';
 export { toLightingScene, type ToLightingSceneOptions } from '../../core/model/files/toLightingScene';
 export type { Configuration } from '../../core/model/configuration/configuration';

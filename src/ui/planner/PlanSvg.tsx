@@ -21,6 +21,7 @@ import { hitStrip, moduleSymbol } from './planHitTest';
 import type { DragPreview } from './dragPreview';
 import type { SelectionPath } from './selection';
 import { useI18n } from '../i18n/useI18n';
+import { LazyRoomShapeDrawing } from './LazyRoomShape';
 
 export interface PlanSvgProps {
   config: Configuration;
@@ -221,7 +222,9 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
   // A dragged module or fixing point: its system drawn as the drag would leave it.
   const moved = drag && 'preview' in drag ? drag : null;
   const systems = moved ? config.systems.map((s) => (s.id === moved.preview.id ? moved.preview : s)) : config.systems;
-  const { width, depth, height } = config.room;
+  const { width, depth, height, shape } = config.room;
+  // A drawn room (issue 29): its outline is the floor and the clip; absent, the box.
+  const floorShape = shape ? <path d={`M${shape.outline.join('L')}Z`} /> : <rect x={0} y={0} width={width} height={depth} />;
   const step = gridStep(view.scale);
   const gridLines: { x1: number; z1: number; x2: number; z2: number; major: boolean }[] = [];
   for (let i = 1; i * step < width - 1e-9; i++) gridLines.push({ x1: i * step, z1: 0, x2: i * step, z2: depth, major: Math.abs(i * step - Math.round(i * step)) < 1e-9 });
@@ -236,15 +239,17 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
       data-footprints={footprintsReady ? 'ready' : 'loading'}
     >
       <defs>
-        <clipPath id={clipId}>
-          <rect x={0} y={0} width={width} height={depth} />
-        </clipPath>
+        <clipPath id={clipId}>{floorShape}</clipPath>
       </defs>
       <g transform={`matrix(${view.scale} 0 0 ${view.scale} ${view.offsetX} ${view.offsetY})`}>
-        <rect x={0} y={0} width={width} height={depth} fill={floorTint(config.room.reflectance.floor, defaultSurfaceFinishes)} data-testid="plan-floor" />
-        {gridLines.map((l, i) => (
-          <line key={i} x1={l.x1} y1={l.z1} x2={l.x2} y2={l.z2} stroke={l.major ? '#d3d8e0' : '#eceff3'} strokeWidth={1} vectorEffect="non-scaling-stroke" />
-        ))}
+        <g fill={floorTint(config.room.reflectance.floor, defaultSurfaceFinishes)} data-testid="plan-floor">
+          {floorShape}
+        </g>
+        <g clipPath={shape && `url(#${clipId})`}>
+          {gridLines.map((l, i) => (
+            <line key={i} x1={l.x1} y1={l.z1} x2={l.x2} y2={l.z2} stroke={l.major ? '#d3d8e0' : '#eceff3'} strokeWidth={1} vectorEffect="non-scaling-stroke" />
+          ))}
+        </g>
         <ObjectShapes config={config} selectedId={selection.objectId} drag={drag} />
         <g clipPath={`url(#${clipId})`} pointerEvents="none">
           {systems.map((s) => {
@@ -276,7 +281,11 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
             );
           })}
         </g>
-        <rect x={0} y={0} width={width} height={depth} fill="none" stroke="#1d2330" strokeWidth={3} vectorEffect="non-scaling-stroke" />
+        {shape ? (
+          <LazyRoomShapeDrawing shape={shape} height={height} clipId={clipId} hatchId={`${clipId}h`} />
+        ) : (
+          <rect x={0} y={0} width={width} height={depth} fill="none" stroke="#1d2330" strokeWidth={3} vectorEffect="non-scaling-stroke" />
+        )}
         {systems.map((s) => {
           const d = systemDrag?.systemId === s.id ? systemDrag.delta : { x: 0, z: 0 };
           const refused = systemDrag?.systemId === s.id && systemDrag.invalid;

@@ -50,6 +50,7 @@ import { PlanAnnouncer } from './PlanAnnouncer';
 import type { Landmarks } from '../shared/landmarks';
 import type { FirstRunOptions } from './FirstRunHint';
 import { LazyGuidance } from './lazyGuidance';
+import { LazyRoomShapeEditor } from './LazyRoomShape';
 
 export interface PlannerProps {
   store: ConfiguratorStore;
@@ -85,6 +86,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
   const shareLink = useStore(ui, (s) => s.shareLink);
   const expert = useStore(ui, (s) => s.expert);
   const expertSwitch = useStore(ui, (s) => s.expertSwitch);
+  const roomEdit = useStore(ui, (s) => s.roomEdit);
 
   const wrapRef = useRef<HTMLDivElement>(null);
   const [viewport, setViewport] = useState<Viewport>(DEFAULT_VIEWPORT);
@@ -99,6 +101,8 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
   const path = selectionPath(config, selection);
   const select = useCallback((sel: Selection) => store.getState().select(sel), [store]);
   const bom = useMemo(() => billOfMaterials(config, catalog), [config, catalog]);
+  // The room-shape mode's bar and sheet cover the plan's edges: the room is fitted between them.
+  const fitBetween = useCallback((top: number, bottom: number) => controller.setFitInsets(top, bottom), [controller]);
   const needs = useMemo(() => installationNeeds(config, catalog), [config, catalog]);
 
   // Fit the room when the plan first gets its size and whenever the room's dimensions change.
@@ -276,7 +280,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
                   ⤢
                 </CommandButton>
               </div>
-              {config.systems.length === 0 && config.objects.length === 0 && firstRun !== false && (
+              {config.systems.length === 0 && config.objects.length === 0 && firstRun !== false && !roomEdit && (
                 <LazyGuidance
                   firstRun={{
                     room: config.room,
@@ -285,6 +289,18 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
                     options: firstRun,
                     onPlaced: placedNew,
                     ui,
+                  }}
+                />
+              )}
+              {roomEdit && (
+                <LazyRoomShapeEditor
+                  config={config}
+                  view={view}
+                  gate={gate}
+                  onInsets={fitBetween}
+                  onDone={() => {
+                    controller.setFitInsets(0, 0);
+                    ui.setState({ roomEdit: false });
                   }}
                 />
               )}
@@ -320,7 +336,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
             <LazyImportPanel onAdd={addImported} />
           </FurniturePanel>
           <ScenePanel store={store} />
-          <SurfacesPanel room={config.room} finishes={defaultSurfaceFinishes} gate={gate} />
+          <SurfacesPanel room={config.room} finishes={defaultSurfaceFinishes} gate={gate} onEditShape={() => ui.setState({ roomEdit: true, mode: '2d', panelOpen: false, optionsOpen: false })} />
           <BomPanel bom={bom} needs={needs} catalog={catalog} />
           <section className="panel-section">
             <div className="setup-actions">

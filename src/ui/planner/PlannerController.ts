@@ -111,10 +111,23 @@ export class PlannerController implements CommandContext, PlannerGestureHost {
   setViewport(viewport: Viewport): void {
     this.currentViewport = viewport;
     const { room } = this.store.getState().config;
-    const key = `${room.width}x${room.depth}@${viewport.width}x${viewport.height}`;
+    const { top, bottom } = this.fitInsets;
+    const key = `${room.width}x${room.depth}@${viewport.width}x${viewport.height}-${top}-${bottom}`;
     if (this.fittedFor === key) return;
     this.fittedFor = key;
-    this.setView(fitRoom(room, viewport), false);
+    // The room fits between what covers the plan's top and bottom edges (the room-shape mode's bar and sheet).
+    const fitted = fitRoom(room, { width: viewport.width, height: Math.max(1, viewport.height - top - bottom) });
+    this.setView({ ...fitted, offsetY: fitted.offsetY + top }, false);
+  }
+
+  private fitInsets = { top: 0, bottom: 0 };
+
+  /** Pixels at the plan's top and bottom that panels cover (0, 0: none): the room is fitted between them, now and at every refit. */
+  setFitInsets(top: number, bottom: number): void {
+    const [t, b] = [Math.round(top), Math.round(bottom)];
+    if (t === this.fitInsets.top && b === this.fitInsets.bottom) return;
+    this.fitInsets = { top: t, bottom: b };
+    this.setViewport(this.currentViewport);
   }
 
   // --- actions and commands -------------------------------------------------------------

@@ -1,4 +1,6 @@
 import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
+import { sceneTextNeedsLazyModel } from '../../core/model/configuration/roomShapeSupport';
+import { loadRoomShapeSupport } from '../../core/model/actions/loadRoomShapeSupport';
 import type { Configuration } from '../../core/model/configuration/configuration';
 import { deserializeConfiguration } from '../../core/model/files/sceneFile';
 import { SceneFileError } from '../../core/model/files/sceneFileError';
@@ -37,5 +39,7 @@ export async function readSceneFile(file: NamedTextFile, catalog: Catalog): Prom
     const problem = e instanceof Error ? e.message : String(e);
     throw new SceneFileError(`${source} could not be read (${problem})`, { code: 'fileUnreadable', params: { name: file.name, problem } });
   }
+  // A room of any shape needs its chunk before the reader can judge it (roomShapeSupport.ts).
+  if (sceneTextNeedsLazyModel(text)) await loadRoomShapeSupport();
   return deserializeConfiguration(text, catalog, source);
 }

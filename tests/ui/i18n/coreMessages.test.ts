@@ -222,6 +222,8 @@ describe('the English catalogue has every code the core emits', () => {
       // `code: 'x'` (refusals, InputErrors, explain's CodedReason), keyed(…, 'x'), quoting(…, 'x', …), `p(…, 'x')` keys and photometry's [re, 'x', …].
       // Whitespace between tokens is \s*, line breaks included: a formatter may wrap any of these calls.
       for (const m of text.matchAll(/\bcode: '([a-z][A-Za-z0-9]*)'/g)) found.add(m[1]);
+      // A sentence key handed back as a value (`key: 'x'`, the room-shape chunk's object sentences).
+      for (const m of text.matchAll(/\bkey: '([a-z][A-Za-z0-9]*)'/g)) found.add(m[1]);
       for (const m of text.matchAll(/\bcode:\s*([^,}]*\?[^,}]*)/g)) for (const l of m[1].matchAll(/'([a-z][A-Za-z0-9]*)'/g)) found.add(l[1]);
       for (const m of text.matchAll(/keyed\([\s\S]*?\},\s*([^)]*?)(?:,\s*\{|\))/g)) for (const l of m[1].matchAll(/'([a-z][A-Za-z0-9]*)'/g)) found.add(l[1]);
       for (const m of text.matchAll(/quoting\([^;]*?`,\s*'([a-z][A-Za-z0-9]*)'/g)) found.add(m[1]);
@@ -237,7 +239,8 @@ describe('the English catalogue has every code the core emits', () => {
     // Sentence codes are camelCase ('keepOneFeed'); kebab-case rule names and zod's own issue codes ('custom') are not.
     const codes = [...found].filter((c) => /[A-Z]/.test(c));
     // The collection finds the codes of every family (guards against a regex that finds nothing).
-    for (const c of ['keepOneFeed', 'fixingOverhangStart', 'objectThroughWall', 'fileTooNew', 'fieldMissing', 'noTiltLine', 'lumensDiffer', 'aimTiltRange', 'roomWidthRange']) expect(codes).toContain(c);
+    for (const c of ['keepOneFeed', 'fixingOverhangStart', 'objectThroughWall', 'fileTooNew', 'fieldMissing', 'noTiltLine', 'lumensDiffer', 'aimTiltRange', 'roomWidthRange', 'objectOutsideOutline', 'underSlopeClips', 'roomShapeLoading'])
+      expect(codes).toContain(c);
     const missing = codes.filter((c) => !known.has(c));
     expect(missing).toEqual([]);
   });

@@ -7,6 +7,7 @@ import panelExtrasEnglish from '../../../src/ui/i18n/messages/en/panelExtras';
 import guidanceEnglish from '../../../src/ui/i18n/messages/en/guidance';
 import scenesEnglish from '../../../src/ui/i18n/messages/en/scenes';
 import a11yEnglish from '../../../src/ui/i18n/messages/en/a11y';
+import roomShapeEnglish from '../../../src/ui/i18n/messages/en/roomShape';
 import type { MessageTree, PluralMessage } from '../../../src/ui/i18n/messageTypes';
 import { hasWord } from './findHardCodedText';
 import defaultCatalog from '../../../src/core/catalog/default-catalog.json';
@@ -52,6 +53,7 @@ const SAME_AS_ENGLISH: Record<string, readonly string[]> = {
   ],
   fr: [
     'common.ok',
+    'roomShape.rectangle',
     'view3d.compareToggle',
     'view3d.compareA',
     'view3d.compareB',
@@ -117,7 +119,7 @@ describe('translations', async () => {
   registerEnglishAreas(optionsPanelEnglish);
   registerEnglishAreas(panelExtrasEnglish);
   registerEnglishAreas({ guidance: guidanceEnglish });
-  registerEnglishAreas({ scenes: scenesEnglish, a11y: a11yEnglish });
+  registerEnglishAreas({ scenes: scenesEnglish, a11y: a11yEnglish, roomShape: roomShapeEnglish });
   // And the English of the core's codes, which comes with the other languages (docs/i18n.md, "Bundles").
   await loadCoreEnglish();
   const en = flatten(await loadMessages('en'));

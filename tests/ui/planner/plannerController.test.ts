@@ -202,3 +202,21 @@ describe('PlannerController: panning and zooming', () => {
     expect(t.view.scale).toBeLessThan(phone.scale);
   });
 });
+
+describe('PlannerController: fit insets (the room-shape mode)', () => {
+  it('fits the room between the covered top and bottom of the plan, and back to the whole plan at 0, 0', () => {
+    const t = new TestPlanner();
+    const whole = t.view;
+    const { depth } = t.config.room;
+    t.controller.setFitInsets(120, 280);
+    const top = t.view.offsetY;
+    const bottom = t.view.offsetY + depth * t.view.scale;
+    // Inside the 400 px left between them, with the fit's own margin (16–48 px) on the limiting side.
+    expect(top).toBeGreaterThanOrEqual(120);
+    expect(bottom).toBeLessThanOrEqual(800 - 280);
+    expect(Math.min(top - 120, 800 - 280 - bottom)).toBeGreaterThanOrEqual(16);
+    expect(t.view.scale).toBeLessThan(whole.scale);
+    t.controller.setFitInsets(0, 0);
+    expect(t.view).toEqual(whole);
+  });
+});

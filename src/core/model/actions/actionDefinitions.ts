@@ -9,6 +9,8 @@ import type { Catalog } from '../catalogSchema/catalogSchema';
 import { formatPath } from '../catalogSchema/catalogSchema';
 import type { Configuration } from '../configuration/configuration';
 import { setRoom } from './roomActions';
+import { isRoomShapeActionName, ROOM_SHAPE_ACTION_LABELS, ROOM_SHAPE_ACTION_NAMES, type RoomShapeActionDefinitions } from './roomShapeActionNames';
+import { roomShapeSupport, RoomShapeSupportMissing } from '../configuration/roomShapeSupport';
 import { setReflectance } from './surfaceActions';
 import { deleteSystem, moveSystem, placePreset, rotateSystem, setMounting, setSuspension } from './systemActions';
 import { addFeed, moveFeed, removeFeed, setFeedDriver } from './feedActions';
@@ -22,6 +24,7 @@ import { setModuleFilter } from './filterActions';
 import { deleteScene, recallScene, recordScene, renameScene, reorderScene, setModuleOn, setSceneFade, updateScene } from './sceneActions';
 import { addObject, moveObject, refinishObject, removeObject, resizeObject, rotateObject } from './objectActions';
 
+/** The actions on the first screen by name; the room-shape editor's come with its chunk (roomShapeActionNames.ts): actionDefinition(name) finds either. */
 export const actionDefinitions = {
   setRoom,
   setReflectance,
@@ -72,9 +75,11 @@ export const actionDefinitions = {
   recallScene,
 } as const;
 
-export type ActionName = keyof typeof actionDefinitions;
-export type ActionParams<N extends ActionName> = (typeof actionDefinitions)[N] extends ActionDefinition<infer P> ? P : never;
-export const ACTION_NAMES = Object.keys(actionDefinitions) as ActionName[];
+type ActionDefinitions = typeof actionDefinitions & RoomShapeActionDefinitions;
+export type ActionName = keyof ActionDefinitions;
+export type ActionParams<N extends ActionName> = ActionDefinitions[N] extends ActionDefinition<infer P> ? P : never;
+// The room's size first, then its shape, then the rest as the table above lists them (docs/embedding.md's table follows this order).
+export const ACTION_NAMES = ['setRoom', ...ROOM_SHAPE_ACTION_NAMES, ...Object.keys(actionDefinitions).filter((n) => n !== 'setRoom')] as ActionName[];
 
 /** Bad action name or parameters (from a host page or the UI): the message names the field. */
 export class ActionParamsError extends InputError {
@@ -82,17 +87,30 @@ export class ActionParamsError extends InputError {
 }
 
 export function isActionName(name: string): name is ActionName {
-  return Object.prototype.hasOwnProperty.call(actionDefinitions, name);
+  return (ACTION_NAMES as readonly string[]).includes(name);
 }
 
-function definition(name: string): ActionDefinition<unknown> {
+/**
+ * An action's definition by name. A room-shape action needs the room-shape chunk: before it is
+ * installed (configuration/roomShapeSupport.ts) this throws RoomShapeSupportMissing; the UI and the
+ * embedding API load the chunk before they offer or run one.
+ */
+export function actionDefinition(name: string): ActionDefinition<unknown> {
   if (!isActionName(name)) throw new ActionParamsError(`unknown action '${name}' (known: ${ACTION_NAMES.join(', ')})`);
-  return actionDefinitions[name] as ActionDefinition<unknown>;
+  if (Object.prototype.hasOwnProperty.call(actionDefinitions, name)) return actionDefinitions[name as keyof typeof actionDefinitions] as ActionDefinition<unknown>;
+  const support = roomShapeSupport();
+  if (!support) throw new RoomShapeSupportMissing(name);
+  return support.actions[name] as ActionDefinition<unknown>;
+}
+
+/** An action's label, known for every action on the first screen (a room-shape action's before its chunk has loaded too). */
+export function actionLabel(name: ActionName): string {
+  return isRoomShapeActionName(name) ? ROOM_SHAPE_ACTION_LABELS[name] : actionDefinitions[name].label;
 }
 
 /** Validates params for an action; throws ActionParamsError naming the bad field. */
 export function parseActionParams(name: string, params: unknown): unknown {
-  const r = definition(name).params.safeParse(params);
+  const r = actionDefinition(name).params.safeParse(params);
   if (!r.success) {
     const issue = r.error.issues[0];
     throw new ActionParamsError(`${name}: ${formatPath(issue.path)}: ${issue.message}`);
@@ -102,7 +120,7 @@ export function parseActionParams(name: string, params: unknown): unknown {
 
 /** An action bound to params and catalog: `{ name, isEnabled(state), perform(state), attempt(state) }`. Throws ActionParamsError for bad params. */
 export function bindAction(name: string, params: unknown, catalog: Catalog): UserAction {
-  return bindDefinition(definition(name), parseActionParams(name, params), catalog);
+  return bindDefinition(actionDefinition(name), parseActionParams(name, params), catalog);
 }
 
 /** How many outcomes are kept for the latest state: more than the planner asks for on one screen. */
@@ -136,7 +154,8 @@ export function attemptAction(state: Configuration, name: string, params: unknow
   try {
     action = bindAction(name, params, catalog);
   } catch (e) {
-    if (e instanceof InputError) return refuse(e.message);
+    // A room-shape action before its chunk has loaded keeps its code (roomShapeLoading), for the UI's words.
+    if (e instanceof InputError) return refuse(e.message, e);
     throw e;
   }
   if (memo?.state !== state || memo.catalog !== catalog) memo = { catalog, state, outcomes: new Map() };

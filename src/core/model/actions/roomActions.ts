@@ -1,10 +1,11 @@
 /**
- * Changing the room. The limits and every placed system's fit (walls, head room)
+ * Changing the room's size (a drawn room is scaled to it). The limits and every placed system's fit (walls, head room)
  * are validate()'s rules, checked on the result where the action is bound.
  */
 import { z } from 'zod';
 import type { ActionDefinition } from './action';
 import { quoting } from '../configuration/coding';
+import { requireRoomShapeSupport } from '../configuration/roomShapeSupport';
 
 const setRoomParams = z.object({ width: z.number(), depth: z.number(), height: z.number() });
 
@@ -13,7 +14,9 @@ export const setRoom: ActionDefinition<z.infer<typeof setRoomParams>> = {
   label: 'Room size',
   params: setRoomParams,
   perform(state, p) {
-    return { ...state, room: { ...state.room, width: p.width, depth: p.depth, height: p.height } };
+    if (!state.room.shape) return { ...state, room: { ...state.room, width: p.width, depth: p.depth, height: p.height } };
+    // A drawn room is scaled to the new size by the room-shape chunk (scaleRoomShape.ts), loaded with the shape.
+    return requireRoomShapeSupport().scale(state, p);
   },
   explain(problem) {
     return problem.path.startsWith('systems') ? quoting(`a placed system would not fit: ${problem.message}`, 'placedSystemWouldNotFit', problem) : problem.message;

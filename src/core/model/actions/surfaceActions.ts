@@ -24,6 +24,12 @@ export const setReflectance: ActionDefinition<z.infer<typeof setReflectanceParam
     const reflectance: Record<SurfaceName, Reflectance> = { ...state.room.reflectance };
     // Copy RGB arrays so the configuration never shares a mutable array with the caller.
     for (const s of targetSurfaces(p.surface)) reflectance[s] = typeof p.value === 'number' ? p.value : [p.value[0], p.value[1], p.value[2]];
+    // All walls at once on a drawn room: its walls' own finishes give way to the one chosen.
+    const own = state.room.shape;
+    if (p.surface === 'walls' && own?.wallReflectance) {
+      const { wallReflectance: _given, ...shape } = own;
+      return { ...state, room: { ...state.room, reflectance, shape } };
+    }
     return { ...state, room: { ...state.room, reflectance } };
   },
   explain(problem, _state, p) {

@@ -21,6 +21,7 @@ import { problemText } from '../configuration/coding';
 import { validate } from '../validation/validate';
 import { migrateSceneFile } from './migrations/migrateSceneFile';
 import { SceneFileError } from './sceneFileError';
+import { roomShapeSupport, RoomShapeSupportMissing } from '../configuration/roomShapeSupport';
 import { fileSchema, SCENE_FILE_FORMAT, SCENE_FILE_VERSION, type SceneFile } from './sceneFileSchema';
 
 /** Largest scene file text (characters), as for lighting scenes. */
@@ -90,13 +91,26 @@ export function configurationFromData(data: unknown, catalog: Catalog, source = 
     const theirs = excerpt(r.data.catalog).replace(/^"|"$/g, "'");
     throw new SceneFileError(`${source} was made for catalog ${theirs}, but this configurator uses '${catalog.id}'`, { code: 'fileOtherCatalog', params: { name, catalog: theirs.replace(/^'|'$/g, ''), ours: catalog.id } });
   }
-  const config = normaliseRoom(r.data.configuration, source);
+  const config = normaliseRoom(withShapeRead(r.data.configuration, source), source);
   const problems = validate(config, catalog, { firstOnly: true });
   if (problems.length > 0) {
     const path = `configuration.${problems[0].path}`;
     throw new SceneFileError(`${source}: ${path}: ${problems[0].message}`, { code: 'fileInvalidAt', params: { name, path }, detail: problemText(problems[0]) });
   }
   return config;
+}
+
+/**
+ * The room's shape read by the room-shape chunk (roomShapeSupport.ts), which every caller that may
+ * meet one has loaded: before that a shape is refused (RoomShapeSupportMissing), never dropped.
+ */
+function withShapeRead(data: SceneFile['configuration'], source: string): SceneFile['configuration'] {
+  if (data.room.shape === undefined) return data;
+  const support = roomShapeSupport();
+  if (!support) throw new RoomShapeSupportMissing(`${source}: configuration.room.shape`);
+  const read = support.readShape(data.room.shape, ['configuration', 'room', 'shape']);
+  if ('problem' in read) throw fileProblem(source, read.problem);
+  return { ...data, room: { ...data.room, shape: read.shape } };
 }
 
 /**

@@ -6,6 +6,8 @@ import { SURFACE_NAMES } from '../lightingScene/lightingScene';
 
 export const SCENE_FILE_FORMAT = 'luxbox-configuration';
 /**
+ * 9: the room may have a shape (`room.shape`: outline, slopes, openings, per-wall finishes),
+ *    docs/model.md "Room shape"; a room without one is the box it always was.
  * 8: a system's rails form a tree: a joint may name the rail it hangs on (`parent`, T and X
  *    connectors), a feed may sit at a branch's free end (`{ end: i }`), docs/model.md "Trees of rails".
  * 7: modules may be switched off (`on`), carry a colour filter (`filter`) and an aim (`aim`); the
@@ -17,13 +19,13 @@ export const SCENE_FILE_FORMAT = 'luxbox-configuration';
  * 3: objects (furniture, imported models) and imported meshes (docs/model.md, "Objects").
  * 2: modules may carry a DMX patch (`dmx`, docs/live-control.md). Older files are migrated on reading.
  */
-export const SCENE_FILE_VERSION = 8;
+export const SCENE_FILE_VERSION = 9;
 /**
  * Read side of a reflectance: [0, 1) as version 1 files have always allowed. Channels above
  * MAX_REFLECTANCE (0.95, src/core/model/lightingScene/reflectance.ts) in files written before that cap are lowered
  * to it on load (normaliseRoom), so old files keep loading; new files never hold them.
  */
-const reflectance = z.union([z.number().min(0).lt(1), z.tuple([z.number().min(0).lt(1), z.number().min(0).lt(1), z.number().min(0).lt(1)])]);
+export const fileReflectanceSchema = z.union([z.number().min(0).lt(1), z.tuple([z.number().min(0).lt(1), z.number().min(0).lt(1), z.number().min(0).lt(1)])]);
 const id = z.string().regex(/^[A-Za-z0-9_-]{1,64}$/, 'must be 1-64 letters, digits, _ or -');
 /** A catalog reference (module type, beam, connector, preset id); validate() checks it exists. */
 const ref = z.string().max(200);
@@ -35,7 +37,10 @@ const configurationSchema = z.strictObject({
     depth: z.number(),
     height: z.number(),
     // Optional per surface and as a whole: a hand-written file may leave out the finishes, which then default.
-    reflectance: z.strictObject(Object.fromEntries(SURFACE_NAMES.map((s) => [s, reflectance.optional()])) as Record<(typeof SURFACE_NAMES)[number], z.ZodOptional<typeof reflectance>>).optional(),
+    reflectance: z.strictObject(Object.fromEntries(SURFACE_NAMES.map((s) => [s, fileReflectanceSchema.optional()])) as Record<(typeof SURFACE_NAMES)[number], z.ZodOptional<typeof fileReflectanceSchema>>).optional(),
+    // Version 9: the room's shape. Its schema is in the room-shape chunk (roomShapeFileSchema.ts), which the
+    // reader asks once this structure has passed (sceneFile.ts); its rules and its fit to width and depth are validate()'s.
+    shape: z.custom<unknown>().optional(),
   }),
   systems: z.array(
     z.strictObject({

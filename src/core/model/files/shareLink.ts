@@ -52,17 +52,20 @@ function encodeShareBytes(json: string): string {
   return btoa(bin).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
 }
 
-export function decodeShareString(s: string, catalog: Catalog): Configuration {
+/** A share string's scene-file text (base64url of UTF-8 JSON); throws SceneFileError when it is damaged. */
+export function shareStringText(s: string): string {
   if (s.length === 0) throw new SceneFileError('share link is empty', { code: 'shareLinkEmpty' });
   if (s.length > MAX_SHARE_STRING) throw new SceneFileError(`share link is too long (${s.length} characters, at most ${MAX_SHARE_STRING})`, { code: 'shareLinkTooLong', params: { length: s.length, max: MAX_SHARE_STRING } });
   if (!/^[A-Za-z0-9_-]+$/.test(s)) throw new SceneFileError('share link is damaged (characters outside base64url)', { code: 'shareLinkCharacters' });
   if (s.length % 4 === 1) throw new SceneFileError('share link is damaged (truncated)', { code: 'shareLinkTruncated' });
   const bin = atob(s.replace(/-/g, '+').replace(/_/g, '/') + '='.repeat((4 - (s.length % 4)) % 4));
-  let text: string;
   try {
-    text = new TextDecoder('utf-8', { fatal: true }).decode(Uint8Array.from(bin, (c) => c.charCodeAt(0)));
+    return new TextDecoder('utf-8', { fatal: true }).decode(Uint8Array.from(bin, (c) => c.charCodeAt(0)));
   } catch {
     throw new SceneFileError('share link is damaged (not UTF-8 text)', { code: 'shareLinkNotUtf8' });
   }
-  return deserializeConfiguration(text, catalog, 'share link');
+}
+
+export function decodeShareString(s: string, catalog: Catalog): Configuration {
+  return deserializeConfiguration(shareStringText(s), catalog, 'share link');
 }

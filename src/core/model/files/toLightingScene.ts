@@ -1,5 +1,6 @@
 /**
- * The configuration as the baker's input (LightingScene v1, or v2 with objects, docs/scene-format.md): one
+ * The configuration as the baker's input (LightingScene v1, v2 with objects, or v3 when the room has
+ * a shape: its normalised room with each wall's finish, wallFinishes; docs/scene-format.md): one
  * luminaire per module, at its photometric centre (plan centre of the module,
  * y = ceiling − suspension, or − the surface mount's drop), turned so C0 runs along its rail (yaw = rail
  * heading) plus the optic's roll from the catalog, then aimed (adjustable modules, aim.ts), coloured by its CCT.
@@ -13,6 +14,7 @@ import { moduleLightColour } from '../modules/moduleFilter';
 import type { LightingLuminaire, LightingObject, LightingScene, Rgb } from '../lightingScene/lightingScene';
 import { objectPlacement } from '../objects/objectGeometry';
 import { moduleHeight } from '../rails/suspensionPoints';
+import { requireRoomShapeSupport } from '../configuration/roomShapeSupport';
 
 /** The mesh reference of a configuration's object in its lighting scene; objectMesh(config, id) resolves it. */
 export const OBJECT_MESH_PREFIX = 'object:';
@@ -51,12 +53,14 @@ export function toLightingScene(config: Configuration, catalog: Catalog, options
     }
   }
   const { width, depth, height, reflectance } = config.room;
-  const room = { width, height, depth, reflectance: { ...reflectance } };
-  if (config.objects.length === 0) return { version: 1, room, luminaires };
+  // A shape (issue 29) makes it version 3; its bounding box is [0, width] × [0, depth] (validate()), so width and depth stay the extents.
+  const shape = config.room.shape ? requireRoomShapeSupport().shapedRoom(config.room) : null;
+  const room = { width, height, depth, reflectance: { ...reflectance }, ...(shape ? { shape } : {}) };
+  if (config.objects.length === 0) return { version: shape ? 3 : 1, room, luminaires };
   // Objects are a version 2 field (docs/scene-format.md); their finishes travel in the mesh (objectMesh), not as a reflectance override.
   const objects: LightingObject[] = config.objects.map((o) => {
     const { position, yaw, scale } = objectPlacement(o, config.room);
     return { mesh: `${OBJECT_MESH_PREFIX}${o.id}`, position: [position[0], position[1], position[2]], yaw, scale, id: o.id };
   });
-  return { version: 2, room, luminaires, objects };
+  return { version: shape ? 3 : 2, room, luminaires, objects };
 }

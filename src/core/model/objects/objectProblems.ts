@@ -11,9 +11,10 @@ import type { TriangleMesh } from '../../mesh/triangleMesh';
 import { OBJECT_SCALE_LIMITS, WALL_NAMES, type Configuration, type ImportedMesh, type ObjectSource } from '../configuration/configuration';
 import { findFurnitureItem } from './furniture/furnitureLibrary';
 import { findObjectFinish } from './furniture/objectFinishes';
-import { fmt, OBJECT_EPS, placedBounds, sourceMesh, sourceName } from './objectGeometry';
+import { fmt, OBJECT_EPS, objectPlacement, placedBounds, sourceMesh, sourceName } from './objectGeometry';
 import { reflectanceProblem } from '../lightingScene/reflectance';
 import type { Problem } from '../configuration/problem';
+import { requireRoomShapeSupport } from '../configuration/roomShapeSupport';
 
 /** Most triangles one imported mesh may have (the importer simplifies to fewer; the baker's BVH stays small). */
 export const MAX_MESH_TRIANGLES = 200_000;
@@ -133,6 +134,9 @@ export function objectProblems(config: Configuration, index: number): Problem[] 
   }
   if (!(b.max[1] <= H + OBJECT_EPS)) p('object-outside', '.placement', `${name} reaches ${fmt(b.max[1])} m, above the ${fmt(H)} m ceiling`, 'objectAboveCeiling', { ...named, top: Number(fmt(b.max[1])), height: Number(fmt(H)) });
   if (!(b.min[1] >= -OBJECT_EPS)) p('object-outside', '.placement', `${name} reaches ${fmt(-b.min[1])} m below the floor`, 'objectBelowFloor', { ...named, depth: Number(fmt(-b.min[1])) });
+  // A room with a shape (issue 29): inside its outline and under every slope too (the room-shape chunk judges it).
+  const misfit = out.length === 0 && config.room.shape ? requireRoomShapeSupport().objectMisfit(config.room, mesh, objectPlacement(o, config.room), named) : null;
+  if (misfit) p('object-outside', '.placement', misfit.message, misfit.key, misfit.params);
   return out;
 }
 

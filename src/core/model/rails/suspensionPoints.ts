@@ -21,6 +21,7 @@ import type { LightSystem, Room } from '../configuration/configuration';
 import { chainCoordinates, chainPoint } from './chainCoordinates';
 import { firstNodeJoints } from './railTree';
 import type { PlanVec } from './geometry';
+import { requireRoomShapeSupport } from '../configuration/roomShapeSupport';
 
 export interface MountingRule {
   /** Largest distance between two points along the chain, metres. */
@@ -89,4 +90,20 @@ export function photometricDrop(system: LightSystem, catalog: Catalog): number {
 /** Height of the modules' photometric centre above the floor (toLightingScene, the head-room rule). */
 export function moduleHeight(system: LightSystem, room: Pick<Room, 'height'>, catalog: Catalog): number {
   return room.height - photometricDrop(system, catalog);
+}
+
+/**
+ * The wire of each fixing point (suspensionPoints order), metres: the ceiling above the point less
+ * the modules' height. In a box every wire is the system's suspension; under a slope (issue 29) the
+ * modules stay level and each wire follows the ceiling above its own point, shorter toward the
+ * slope (validate() keeps every one at least the catalog's suspension.min). Surface-mounted
+ * systems have clips, not wires: 0 each.
+ */
+export function suspensionWireLengths(system: LightSystem, room: Room, catalog: Catalog): number[] {
+  const points = suspensionPoints(system, catalog);
+  if (system.mounting === 'surface') return points.map(() => 0);
+  const modules = moduleHeight(system, room, catalog);
+  if (!room.shape) return points.map(() => room.height - modules);
+  const { ceilingAt } = requireRoomShapeSupport();
+  return points.map((p) => ceilingAt(room, p.plan[0], p.plan[1]) - modules);
 }

@@ -4,6 +4,7 @@ import { ROOM_LIMITS, withinRoomLimits, type Configuration } from '../configurat
 import type { Problem } from '../configuration/problem';
 import { SURFACE_NAMES } from '../lightingScene/lightingScene';
 import { reflectanceProblem } from '../lightingScene/reflectance';
+import { requireRoomShapeSupport } from '../configuration/roomShapeSupport';
 
 export function roomProblems(config: Configuration): Problem[] {
   const out: Problem[] = [];
@@ -19,6 +20,8 @@ export function roomProblems(config: Configuration): Problem[] {
     const problem = reflectanceProblem(reflectance[surface]);
     if (problem) out.push(subProblem('reflectance', `room.reflectance.${surface}`, problem));
   }
+  // A room's shape (issue 29) is judged by the room-shape chunk (roomShapeSupport.ts), loaded before any shape can arrive.
+  if (config.room.shape !== undefined) out.push(...requireRoomShapeSupport().problems(config.room));
   return out;
 }
 
@@ -49,7 +52,7 @@ export function idProblems(config: Configuration): Problem[] {
 const ROOM_KEYS = { width: 'roomWidthRange', depth: 'roomDepthRange', height: 'roomHeightRange' } as const;
 
 /** A problem whose sentence a sub-rule wrote, with that rule's coding (reflectance.ts …). */
-function subProblem(code: string, path: string, found: string | ({ message: string } & Keyed)): Problem {
+export function subProblem(code: string, path: string, found: string | ({ message: string } & Keyed)): Problem {
   if (typeof found === 'string') return { code, path, message: found };
   return found.key ? keyed({ code, path, message: found.message }, found.key, found.params) : { code, path, message: found.message };
 }

@@ -7,6 +7,8 @@ import { rectCorners, rectsOverlap, systemElementTree, type PlanRect, type Syste
 import { boxesMeet, boxOf, forEachOverlap, type Box } from './planOverlaps';
 import { EPS } from './reporting';
 import { ownProblems } from './systemOwnProblems';
+import { requireRoomShapeSupport } from '../configuration/roomShapeSupport';
+import type { Room } from '../configuration/configuration';
 
 /**
  * Problems of one system: its own rules, its fit in the room and clashes with
@@ -20,7 +22,8 @@ export function systemProblems(config: Configuration, index: number, catalog: Ca
   if (out.length > 0) return out; // geometry needs sound references and numbers
   const tree = systemElementTree(s, catalog);
   const elements = tree.elements;
-  if (outsideRoom(elements, config.room.width, config.room.depth)) out.push(outsideProblem(s, index, config.room));
+  const misfit = roomFitProblem(s, index, elements, config.room, catalog);
+  if (misfit) out.push(misfit);
   if (crossesItself(tree)) out.push({ code: 'self-overlap', path: at, message: `system ${s.id} runs into itself`, params: { id: s.id } });
   const mine = footprintOf(s, catalog);
   config.systems.forEach((other, j) => {
@@ -45,7 +48,7 @@ export function systemOwnProblems(s: LightSystem, roomHeight: number, catalog: C
 export function systemFitsAt(config: Configuration, index: number, catalog: Catalog): boolean {
   const s = config.systems[index];
   const tree = systemElementTree(s, catalog);
-  if (outsideRoom(tree.elements, config.room.width, config.room.depth)) return false;
+  if (roomFitProblem(s, index, tree.elements, config.room, catalog)) return false;
   const mine = footprintOf(s, catalog);
   if (config.systems.some((other, j) => j !== index && clashes(mine, other, config.room.height, catalog))) return false;
   return !crossesItself(tree);
@@ -105,4 +108,13 @@ export function outsideRoom(elements: PlanRect[][], width: number, depth: number
 
 export function outsideProblem(s: LightSystem, index: number, room: Configuration['room']): Problem {
   return { code: 'outside-room', path: `systems[${index}]`, message: `system ${s.id} reaches outside the ${room.width} × ${room.depth} m room`, params: { id: s.id, width: room.width, depth: room.depth } };
+}
+
+/**
+ * Whether a sound system fits its room: inside the box, and in a room with a shape (issue 29)
+ * inside its outline and clear of its slopes (shapedSystemFit.ts, in the room-shape chunk).
+ */
+export function roomFitProblem(s: LightSystem, index: number, elements: PlanRect[][], room: Room, catalog: Catalog): Problem | null {
+  if (outsideRoom(elements, room.width, room.depth)) return outsideProblem(s, index, room);
+  return room.shape ? requireRoomShapeSupport().systemFit(s, index, elements.flat().map(rectCorners), room, catalog) : null;
 }

@@ -13,7 +13,7 @@ import { systemElementTree, type PlanRect, type SystemElementTree } from '../rai
 import { patchProblems } from './patchProblems';
 import { forEachOverlap } from './planOverlaps';
 import { idProblems, roomProblems } from './roomProblems';
-import { outsideProblem, outsideRoom } from './systemProblems';
+import { roomFitProblem } from './systemProblems';
 import { ownProblems } from './systemOwnProblems';
 
 export interface ValidateOptions {
@@ -56,7 +56,7 @@ export function validate(config: Configuration, catalog: Catalog, options: Valid
   const elements = trees.map((t) => t?.elements ?? null);
   const outside = config.systems.map((s, i) => {
     const el = elements[i];
-    return el !== null && outsideRoom(el, config.room.width, config.room.depth) ? outsideProblem(s, i, config.room) : null;
+    return el !== null ? roomFitProblem(s, i, el, config.room, catalog) : null;
   });
   if (first) {
     const out = outside.find((p) => p !== null);

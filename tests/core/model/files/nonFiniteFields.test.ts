@@ -13,7 +13,7 @@ import { livingRoom } from '../../../../src/core/catalog/furnishedPresets';
 import { attemptAction } from '../../../../src/core/model/actions/actionDefinitions';
 import { composeParts, boxPart } from '../../../../src/core/model/objects/furniture/meshParts';
 import type { Configuration } from '../../../../src/core/model/configuration/configuration';
-import { lightingSceneSchema, parseLightingScene } from '../../../../src/core/model/lightingScene/parseLightingScene';
+import { lightingSceneSchema, lightingSceneSchemaV3, parseLightingScene } from '../../../../src/core/model/lightingScene/parseLightingScene';
 import { configurationFromData, serializeConfiguration } from '../../../../src/core/model/files/sceneFile';
 import { sceneFileSchema } from '../../../../src/core/model/files/sceneFileSchema';
 import { toLightingScene } from '../../../../src/core/model/files/toLightingScene';
@@ -134,7 +134,7 @@ describe('angles and bounds at the ends of the double range', () => {
 });
 
 describe('non-finite and huge numbers in every numeric field', () => {
-  const sceneSamples = ['tests/fixtures/scenes/small-room.json', 'tests/fixtures/models/furnished-room.json', 'tests/fixtures/bench/living-room.json'];
+  const sceneSamples = ['tests/fixtures/scenes/small-room.json', 'tests/fixtures/models/furnished-room.json', 'tests/fixtures/bench/living-room.json', 'tests/fixtures/scenes/attic-l-room.json'];
 
   it('lighting scenes: each refused naming the field, or finite downstream', async () => {
     // Yaw, pitch and roll are optional: give every luminaire and object all of them so they are walked.
@@ -145,7 +145,7 @@ describe('non-finite and huge numbers in every numeric field', () => {
       return doc;
     });
     const covered = new Set(docs.flatMap((d) => numberPaths(d).map(shape)));
-    expect([...schemaNumberShapes(lightingSceneSchema)].filter((s) => !covered.has(s))).toEqual([]);
+    expect([...schemaNumberShapes(lightingSceneSchema), ...schemaNumberShapes(lightingSceneSchemaV3)].filter((s) => !covered.has(s))).toEqual([]);
     const failures: string[] = [];
     let cases = 0;
     for (const doc of docs) {
@@ -242,5 +242,19 @@ function richConfiguration(): Configuration {
     // Some tries are refused in this room (a fixed module cannot be aimed); the coverage check above says whether enough passed.
     if (outcome.ok) state = outcome.next;
   }
-  return state;
+  // A room shape (version 9) with every numeric field: the room's rectangle with a corner on its north wall, a slope, a door, per-wall finishes.
+  const { width: W, depth: D, height: H } = state.room;
+  const shape = {
+    outline: [
+      [0, 0],
+      [W / 2, 0],
+      [W, 0],
+      [W, D],
+      [0, D],
+    ] as const,
+    slopes: [{ wall: 3, kneeHeight: H, pitch: 30, reflectance: [0.7, 0.7, 0.6] as [number, number, number] }],
+    openings: [{ wall: 2, offset: 0.2, width: 0.9, sill: 0, height: 2, kind: 'door' as const }],
+    wallReflectance: [0.5, 0.5, [0.6, 0.5, 0.4] as [number, number, number], 0.5, 0.5],
+  };
+  return { ...state, room: { ...state.room, shape } };
 }

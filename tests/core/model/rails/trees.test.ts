@@ -19,6 +19,7 @@ import { allowedFeedPositions, feedLoads } from '../../../../src/core/model/powe
 import { fixingProblem } from '../../../../src/core/model/rails/fixingRules';
 import { modulePlacements, railPlacements } from '../../../../src/core/model/rails/geometry';
 import { deserializeConfiguration, serializeConfiguration } from '../../../../src/core/model/files/sceneFile';
+import { SCENE_FILE_VERSION } from '../../../../src/core/model/files/sceneFileSchema';
 import { suspensionPoints } from '../../../../src/core/model/rails/suspensionPoints';
 import { validate } from '../../../../src/core/model/validation/validate';
 import { catalog, enabled, only, run, withPreset } from '../helpers';
@@ -180,7 +181,7 @@ describe('trees of rails', () => {
   it('writes version 8 and reads it back; a version 7 snake reads exactly; branches in a version 7 file are refused', () => {
     const s = tee();
     const text = serializeConfiguration(s, catalog);
-    expect(JSON.parse(text).version).toBe(8);
+    expect(JSON.parse(text).version).toBe(SCENE_FILE_VERSION);
     expect(deserializeConfiguration(text, catalog)).toEqual(s);
     const snake = withPreset('u-shape', 1, 4);
     const v7 = { ...JSON.parse(serializeConfiguration(snake, catalog)), version: 7 };

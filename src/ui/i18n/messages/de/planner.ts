@@ -65,6 +65,7 @@ export default {
   westWall: 'Westwand',
   eastWall: 'Ostwand',
   wallsOneByOne: 'Wände einzeln',
+  editRoomShape: 'Raumform…',
   feedAtStart: 'am Kettenanfang',
   feedAtEnd: 'am Kettenende',
   feedAtConnector: 'an Verbinder {n}',

@@ -63,6 +63,7 @@ export default {
   westWall: 'West wall',
   eastWall: 'East wall',
   wallsOneByOne: 'Walls one by one',
+  editRoomShape: 'Room shape…',
   feedAtStart: 'the chain start',
   feedAtEnd: 'the chain end',
   feedAtConnector: 'connector {n}',

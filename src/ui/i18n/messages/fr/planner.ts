@@ -65,6 +65,7 @@ export default {
   westWall: 'Mur ouest',
   eastWall: 'Mur est',
   wallsOneByOne: 'Murs un par un',
+  editRoomShape: 'Forme de la pièce…',
   feedAtStart: 'au début de la chaîne',
   feedAtEnd: 'à la fin de la chaîne',
   feedAtConnector: 'au connecteur {n}',

@@ -20,6 +20,7 @@ import photometry from './photometry';
 import planner from './planner';
 import refusals from './refusals';
 import rooms from './rooms';
+import roomShape from './roomShape';
 import scenes from './scenes';
 import expert from './expert';
 import sharing from './sharing';
@@ -49,6 +50,7 @@ export default {
   planner,
   refusals,
   rooms,
+  roomShape,
   scenes,
   expert,
   sharing,

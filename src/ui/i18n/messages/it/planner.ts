@@ -65,6 +65,7 @@ export default {
   westWall: 'Parete ovest',
   eastWall: 'Parete est',
   wallsOneByOne: 'Pareti una per una',
+  editRoomShape: 'Forma della stanza…',
   feedAtStart: 'all’inizio della catena',
   feedAtEnd: 'alla fine della catena',
   feedAtConnector: 'al connettore {n}',
