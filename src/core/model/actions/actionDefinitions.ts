@@ -21,6 +21,7 @@ import { autoPatch, clearPatch, setModulePatch } from './patchActions';
 import { setModuleFilter } from './filterActions';
 import { deleteScene, recallScene, recordScene, renameScene, reorderScene, setModuleOn, setSceneFade, updateScene } from './sceneActions';
 import { addObject, moveObject, refinishObject, removeObject, resizeObject, rotateObject } from './objectActions';
+import { safeParseInEnglish } from '../../zodEnglish';
 
 export const actionDefinitions = {
   setRoom,
@@ -92,7 +93,7 @@ function definition(name: string): ActionDefinition<unknown> {
 
 /** Validates params for an action; throws ActionParamsError naming the bad field. */
 export function parseActionParams(name: string, params: unknown): unknown {
-  const r = definition(name).params.safeParse(params);
+  const r = safeParseInEnglish(definition(name).params, params);
   if (!r.success) {
     const issue = r.error.issues[0];
     throw new ActionParamsError(`${name}: ${formatPath(issue.path)}: ${issue.message}`);
