@@ -1,52 +1,6 @@
 /// <reference types="vitest/config" />
-import { readFileSync } from 'node:fs';
-import { fileURLToPath } from 'node:url';
 import { defineConfig, type Plugin } from 'vite';
 import react from '@vitejs/plugin-react';
-
-/**
- * zod 4 "classic" gives every schema a `toJSONSchema()` method and a Standard Schema
- * `jsonSchema` pair, so its JSON Schema generator (core/to-json-schema.js and
- * core/json-schema-processors.js, ~5 KiB gzip) rides along in the first screen although
- * luxbox never generates JSON Schema (it only validates). In the browser build those two
- * modules become stubs with the same exports that throw when called; `aggregateChecks`
- * (the string `format`/`minLength` getters read it) stays the real one. Export names are
- * read from the installed files, so a zod update with new names still builds, and the
- * CLI and Vitest use the untouched package. docs/benchmarks.md, "First screen".
- */
-export function zodWithoutJsonSchema(): Plugin {
-  const STUBBED = /[\\/]zod[\\/]v4[\\/]core[\\/](to-json-schema|json-schema-processors)\.js$/;
-  const KEEP = new Set(['aggregateChecks']);
-  const exportNames = (source: string) =>
-    [
-      ...source.matchAll(/^export (?:function|const|let|class) (\w+)/gm),
-      ...[...source.matchAll(/^export \{([^}]*)\}/gm)].flatMap((m) =>
-        m[1].split(',').map((s) => [
-          s,
-          s
-            .trim()
-            .split(/\s+as\s+/)
-            .pop()!,
-        ]),
-      ),
-    ].map((m) => m[1]);
-  return {
-    name: 'luxbox-zod-without-json-schema',
-    apply: 'build',
-    load(id) {
-      if (!STUBBED.test(id) || id.includes('?')) return null;
-      const names = [...new Set(exportNames(readFileSync(id, 'utf8')))].filter(Boolean);
-      const message = JSON.stringify('zod JSON Schema generation is not part of the luxbox browser build (vite.config.ts)');
-      const lines = names.map((name) =>
-        KEEP.has(name)
-          ? `export { ${name} } from ${JSON.stringify(`${id}?real`)};`
-          : // createStandardJSONSchemaMethod / createToJSONSchemaMethod run when `~standard` is read: hand back a method that throws.
-            `export function ${name}() { if (${JSON.stringify(name)}.startsWith('create')) return () => { throw new Error(${message}); }; throw new Error(${message}); }`,
-      );
-      return lines.join('\n');
-    },
-  };
-}
 
 /**
  * One chunk for the first screen (docs/benchmarks.md, "First screen"). Left to itself Rolldown
@@ -84,13 +38,6 @@ export function firstScreenChunk(): Plugin & { inFirstScreen: (id: string) => bo
 }
 
 /**
- * `zod` → src/core/zodClassicOnMini.ts (classic's API on zod/mini, −10 KiB gzip of the first
- * screen) in the browser build, and in Vitest when LUXBOX_ZOD_MINI=1 (to run the model's tests
- * against it: `LUXBOX_ZOD_MINI=1 npx vitest run tests/core/model`).
- */
-export const zodOnMini = (command: string) => (command === 'build' || process.env.LUXBOX_ZOD_MINI === '1' ? [{ find: /^zod$/, replacement: fileURLToPath(new URL('./src/core/zodClassicOnMini.ts', import.meta.url)) }] : []);
-
-/**
  * React → preact/compat in the browser build only (−55 KiB gzip of the first screen: react-dom's
  * client is 62 KiB, preact with compat and hooks about 7). The code uses createRoot, hooks
  * (useSyncExternalStore, useId, also through zustand), memo, lazy/Suspense and StrictMode, all
@@ -115,8 +62,8 @@ export const reactOnPreact = (command: string) =>
 export default defineConfig(({ command }) => {
   const firstScreen = firstScreenChunk();
   return {
-    plugins: [react(), zodWithoutJsonSchema(), firstScreen],
-    resolve: { alias: [...zodOnMini(command), ...reactOnPreact(command)] },
+    plugins: [react(), firstScreen],
+    resolve: { alias: reactOnPreact(command) },
     server: { port: 5173, strictPort: false, host: true },
     preview: { port: 4173, strictPort: true },
     build: {

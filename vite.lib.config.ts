@@ -3,7 +3,7 @@ import { dirname, resolve, basename } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { defineConfig, type Plugin } from 'vite';
 import react from '@vitejs/plugin-react';
-import { firstScreenChunk, reactOnPreact, zodOnMini, zodWithoutJsonSchema } from './vite.config';
+import { firstScreenChunk, reactOnPreact } from './vite.config';
 
 /**
  * The npm package's builds (docs/package.md), one per UI runtime, chosen by LUXBOX_LIB
@@ -64,11 +64,10 @@ function recordBundledPackages(mode: string): Plugin {
   };
 }
 
-// The packages the library builds leave as imports (package.json dependencies). Bare `zod` is
-// aliased to src/core/zodClassicOnMini.ts (bundled) as in the app's build; its subpaths (`zod/mini`,
-// `zod/v4/core`) stay imports, so the shop's bundle holds one zod.
+// The packages the library builds leave as imports (package.json dependencies), subpaths included
+// (the schemas import `zod/mini`), so the shop's bundle holds one copy of each.
 export const DEPENDENCIES = ['preact', 'three', 'three-mesh-bvh', 'zod', 'fflate'];
-const asImports = (names: string[]) => new RegExp(`^(${names.filter((n) => n !== 'zod').join('|')})(/|$)${names.includes('zod') ? '|^zod/' : ''}`);
+const asImports = (names: string[]) => new RegExp(`^(${names.join('|')})(/|$)`);
 
 export default defineConfig(() => {
   const mode = process.env.LUXBOX_LIB ?? 'preact';
@@ -85,8 +84,8 @@ export default defineConfig(() => {
         : { 'luxbox-element': fromRoot('src/hosts/package/elementScript.ts') };
   const external = mode === 'script' ? [] : [asImports(mode === 'react' ? [...DEPENDENCIES, 'react', 'react-dom'] : DEPENDENCIES)];
   return {
-    plugins: [react(), injectCss(), recordBundledPackages(mode), ...(mode === 'script' ? [zodWithoutJsonSchema()] : []), ...(mode !== 'preact' ? [firstScreen] : [])],
-    resolve: { alias: [...zodOnMini('build'), ...(onPreact ? reactOnPreact('build') : [])] },
+    plugins: [react(), injectCss(), recordBundledPackages(mode), ...(mode !== 'preact' ? [firstScreen] : [])],
+    resolve: { alias: onPreact ? reactOnPreact('build') : [] },
     // Public files (the demo's photometry) are copied by scripts/buildPackage.mjs where each door expects them.
     publicDir: false as const,
     logLevel: 'warn' as const,

@@ -46,6 +46,8 @@ test('window.luxbox: list and run actions, set/get config, subscribe, bill of ma
   expect(result.place).toEqual({ ok: true });
   expect(result.unknown.ok).toBe(false);
   expect(result.badParams.ok).toBe(false);
+  // zod's English sentence, as in Node: the browser parses through safeParseInEnglish too (zod/mini alone says "Invalid input").
+  expect(result.badParams).toMatchObject({ reason: expect.stringContaining('x: Invalid input: expected number, received string') });
   expect(result.changes).toBe(1);
   expect(result.systems).toBe(1);
   expect(result.bomCurrency).toBe('EUR');

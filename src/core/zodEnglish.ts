@@ -1,13 +1,22 @@
 /**
- * zod's English messages (zod/v4/locales/en.js of zod 4.6.7, which the browser build's zod shim
- * used), with the names of string formats cut to those luxbox's schemas check (`url`; `regex` and
- * the prefix checks have sentences of their own): the other 30 names (email, UUID, IBAN, …) named
- * formats no luxbox schema has, and were first-screen bytes (docs/benchmarks.md, "First screen").
- * Every sentence is zod's, character for character; tests/core/zodClassicOnMini.test.ts compares
- * the shim's messages with zod classic's, and tests/core/zodEnglish.test.ts this function with
- * zod's own locale for each issue code.
+ * zod's English messages for luxbox's schemas, and the one way luxbox parses with a schema.
+ *
+ * The schemas are written against `zod/mini` (docs/architecture.md, "Validation"): the same
+ * validation core as classic zod, tree-shakeable, ~10 KiB gzip less of the first screen
+ * (docs/benchmarks.md, "First screen"). Unlike classic, mini loads no locale, so an issue without a
+ * message of the schema's own would read "Invalid input". `safeParseInEnglish` passes
+ * `zodEnglishError` as the parse's error map (zod/v4/core/util.js `finalizeIssue`: a schema's or
+ * check's own message first, then the parse's map, then the global config), so Node, Vitest, the
+ * browser and a shop's bundle word every issue alike, without touching the global zod config a
+ * shop's own schemas may use.
+ *
+ * `zodEnglishError` is zod's English locale (zod/v4/locales/en.js of zod 4.6.7) with the names of
+ * string formats cut to those luxbox's schemas check (`url`; `regex` and the prefix checks have
+ * sentences of their own): the other 30 names (email, UUID, IBAN, …) named formats no luxbox schema
+ * has, and were first-screen bytes. Every sentence is zod's, character for character;
+ * tests/core/zodEnglish.test.ts compares it with zod's own locale for each issue code.
  */
-import { util, type $ZodRawIssue } from 'zod/v4/core';
+import { safeParse, util, type core } from 'zod/mini';
 
 const SIZABLE: Record<string, string> = { string: 'characters', file: 'bytes', array: 'items', set: 'items', map: 'entries' };
 const FORMAT_NAMES: Record<string, string> = { regex: 'input', url: 'URL', template_literal: 'input' };
@@ -17,10 +26,10 @@ function typeName(type: string, input?: unknown): string {
   return type === 'nan' ? 'NaN' : type;
 }
 
-type Issue = $ZodRawIssue & Record<string, never>;
+type Issue = core.$ZodRawIssue & Record<string, never>;
 
 /** zod's English sentence for an issue (the locale's `localeError`). */
-export function zodEnglishError(raw: $ZodRawIssue): string {
+export function zodEnglishError(raw: core.$ZodRawIssue): string {
   const issue = raw as Issue;
   switch (issue.code) {
     case 'invalid_type':
@@ -61,4 +70,9 @@ export function zodEnglishError(raw: $ZodRawIssue): string {
     default:
       return 'Invalid input';
   }
+}
+
+/** `schema.safeParse(data)` with zod's English messages (zod/mini loads no locale: see above). */
+export function safeParseInEnglish<S extends core.$ZodType>(schema: S, data: unknown): ReturnType<typeof safeParse<S>> {
+  return safeParse(schema, data, { error: zodEnglishError });
 }

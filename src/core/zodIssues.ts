@@ -2,7 +2,7 @@
  * Zod issues worded for people (the formats of untrustedJson.ts): `path: problem`, the issue coded
  * for a UI (docs/i18n.md), an unknown field with the known name it most likely misspells.
  */
-import type { z } from 'zod';
+import type { z } from 'zod/mini';
 import type { CodedText } from './inputError';
 import { excerpt, formatPath } from './untrustedJson';
 
@@ -38,7 +38,7 @@ export function unknownFieldMessage(key: string, known: Iterable<string>): strin
 }
 
 /** Every object key a zod schema knows (for suggestions), collected once per schema. */
-export function schemaFieldNames(schema: z.ZodType): Set<string> {
+export function schemaFieldNames(schema: z.ZodMiniType): Set<string> {
   const names = new Set<string>();
   const seen = new Set<unknown>();
   const visit = (s: unknown): void => {

@@ -30,6 +30,8 @@ export interface ImportEdge {
   to: string;
   /** A package import (`react`, `three/examples/…` → `three`), not a file. */
   isPackage: boolean;
+  /** The package import as written (`zod/mini`), where `to` is only the package's name. */
+  spec?: string;
 }
 
 const SPEC = /(?:^|[\n;])\s*(?:import|export)\s+(?:type\s+)?(?:[^'";]*?\s+from\s+)?['"]([^'"]+)['"]|\bimport\(\s*['"]([^'"]+)['"]\s*\)/g;
@@ -66,7 +68,7 @@ export function readImportGraph(root: string): ImportEdge[] {
       const spec = m[1] ?? m[2];
       if (spec.startsWith('node:')) continue;
       if (!spec.startsWith('.')) {
-        edges.push({ from, to: packageName(spec), isPackage: true });
+        edges.push({ from, to: packageName(spec), isPackage: true, spec });
         continue;
       }
       const target = resolveFile(file, spec);

@@ -1,7 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import en from 'zod/v4/locales/en.js';
 import type { $ZodRawIssue } from 'zod/v4/core';
-import { zodEnglishError } from '../../src/core/zodEnglish';
+import { z } from 'zod/mini';
+import { safeParseInEnglish, zodEnglishError } from '../../src/core/zodEnglish';
 
 const zods = en().localeError as (issue: $ZodRawIssue) => string;
 
@@ -58,5 +59,13 @@ describe("zodEnglishError: zod's English sentences, cut to luxbox's formats", ()
     const email = { code: 'invalid_format', format: 'email', input: 'a' } as unknown as $ZodRawIssue;
     expect(zods(email)).toBe('Invalid email address');
     expect(zodEnglishError(email)).toBe('Invalid email');
+  });
+
+  // This file loads no classic zod (whose index sets the English locale for every zod in the process).
+  it('is what safeParseInEnglish words issues with; a bare mini parse has no sentences', () => {
+    const atLeastZero = z.number().check(z.gte(0));
+    expect(atLeastZero.safeParse(-1).error!.issues[0].message).toBe('Invalid input');
+    expect(safeParseInEnglish(atLeastZero, -1).error!.issues[0].message).toBe('Too small: expected number to be >=0');
+    expect(safeParseInEnglish(z.strictObject({ a: z.number() }), { a: 1, b: 2 }).error!.issues[0].message).toBe('Unrecognized key: "b"');
   });
 });

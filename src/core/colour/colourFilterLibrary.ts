@@ -7,9 +7,10 @@
  * filters is all the planner's first screen needs, and the curves are ~10 KiB gzip of its budget.
  * Validated once at load so a broken file fails naming the filter and field.
  */
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import { InputError } from '../inputError';
 import libraryJson from './colour-filters.json';
+import { safeParseInEnglish } from '../zodEnglish';
 
 /** What a filter is for; the picker groups by it. */
 export const FILTER_KINDS = ['cto', 'ctb', 'nd', 'colour'] as const;
@@ -19,16 +20,16 @@ export type FilterKind = (typeof FILTER_KINDS)[number];
 export const FILTER_ID_PATTERN = /^[a-z0-9-]+$/;
 
 const filterSchema = z.strictObject({
-  id: z.string().regex(FILTER_ID_PATTERN),
-  maker: z.string().min(1),
-  number: z.string().min(1),
-  name: z.string().min(1),
+  id: z.string().check(z.regex(FILTER_ID_PATTERN)),
+  maker: z.string().check(z.minLength(1)),
+  number: z.string().check(z.minLength(1)),
+  name: z.string().check(z.minLength(1)),
   kind: z.enum(FILTER_KINDS),
 });
 
 const librarySchema = z.strictObject({
   formatVersion: z.literal(2),
-  filters: z.array(filterSchema).min(1),
+  filters: z.array(filterSchema).check(z.minLength(1)),
 });
 
 export type ColourFilter = z.infer<typeof filterSchema>;
@@ -38,8 +39,8 @@ export type ColourFilterLibrary = z.infer<typeof librarySchema>;
  * Parses one of the library's files with its schema and checks that every id is used once; an
  * InputError names the file and the field (`filters.2.kind: …`) or the repeated id.
  */
-export function parseFilterFile<T>(file: string, schema: z.ZodType<T>, data: unknown, entries: (parsed: T) => readonly { id: string }[]): T {
-  const r = schema.safeParse(data);
+export function parseFilterFile<T>(file: string, schema: z.ZodMiniType<T>, data: unknown, entries: (parsed: T) => readonly { id: string }[]): T {
+  const r = safeParseInEnglish(schema, data);
   if (!r.success) {
     const issue = r.error.issues[0];
     throw new InputError(`${file}: ${issue.path.join('.')}: ${issue.message}`);

@@ -5,7 +5,8 @@
  * reads version 3 with it; the configuration file's room shape reuses its outline, slope and
  * opening schemas (sceneFileSchema.ts).
  */
-import { z } from 'zod';
+import { z } from 'zod/mini';
+import { safeParseInEnglish } from '../zodEnglish';
 import { OPENING_KINDS, ROOM_SHAPE_LIMITS } from './roomInput';
 import { roomProblems } from './roomProblems';
 import type { RoomInput, RoomReflectance } from './roomInput';
@@ -15,26 +16,25 @@ const show = (v: unknown): string => {
   return text.length > 40 ? `${text.slice(0, 37)}...` : text;
 };
 
-const finite = z.number({ error: (i) => (i.input === undefined ? 'is missing' : `must be a number, got ${show(i.input)}`) }).refine(Number.isFinite, 'must be a finite number');
-const coordinate = finite.refine((v) => Math.abs(v) <= ROOM_SHAPE_LIMITS.maxCoordinate, { error: (i) => `${show(i.input)} m is beyond ±${ROOM_SHAPE_LIMITS.maxCoordinate} m` });
-const reflectanceValue = finite.refine((v) => v >= 0 && v < 1, {
-  error: (i) => `reflectance ${show(i.input)} is outside [0, 1) (at 1 a closed room would never lose light)`,
-});
+const finite = z.number({ error: (i) => (i.input === undefined ? 'is missing' : `must be a number, got ${show(i.input)}`) }).check(z.refine(Number.isFinite, 'must be a finite number'));
+const coordinate = finite.check(z.refine((v) => Math.abs(v) <= ROOM_SHAPE_LIMITS.maxCoordinate, { error: (i) => `${show(i.input)} m is beyond ±${ROOM_SHAPE_LIMITS.maxCoordinate} m` }));
+const reflectanceValue = finite.check(
+  z.refine((v) => v >= 0 && v < 1, {
+    error: (i) => `reflectance ${show(i.input)} is outside [0, 1) (at 1 a closed room would never lose light)`,
+  }),
+);
 const reflectance = z.union([reflectanceValue, z.tuple([reflectanceValue, reflectanceValue, reflectanceValue])], {
   error: (i) => (i.input === undefined ? 'is missing' : `must be a number in [0, 1) or [r, g, b], got ${show(i.input)}`),
 });
-const index = z
-  .number({ error: (i) => (i.input === undefined ? 'is missing' : `must be a wall index, got ${show(i.input)}`) })
-  .int('must be a whole number')
-  .min(0, 'must be 0 or more');
+const index = z.number({ error: (i) => (i.input === undefined ? 'is missing' : `must be a wall index, got ${show(i.input)}`) }).check(z.int('must be a whole number'), z.gte(0, 'must be 0 or more'));
 
 /** One roof slope (exported for the configuration file's room shape, sceneFileSchema.ts). */
 export const roomSlopeSchema = z.strictObject(
   {
     wall: index,
-    kneeHeight: finite.refine((v) => v >= 0, { error: (i) => `${show(i.input)} m is below the floor` }),
-    pitch: finite.refine((v) => v > 0 && v < 90, { error: (i) => `${show(i.input)}° is not between 0° and 90°` }),
-    reflectance: reflectance.optional(),
+    kneeHeight: finite.check(z.refine((v) => v >= 0, { error: (i) => `${show(i.input)} m is below the floor` })),
+    pitch: finite.check(z.refine((v) => v > 0 && v < 90, { error: (i) => `${show(i.input)}° is not between 0° and 90°` })),
+    reflectance: z.optional(reflectance),
   },
   { error: 'must be an object' },
 );
@@ -44,9 +44,9 @@ export const roomOpeningSchema = z.strictObject(
   {
     wall: index,
     offset: finite,
-    width: finite.refine((v) => v > 0, { error: (i) => `${show(i.input)} m is not above 0 m` }),
-    sill: finite.refine((v) => v >= 0, { error: (i) => `${show(i.input)} m is below the floor` }),
-    height: finite.refine((v) => v > 0, { error: (i) => `${show(i.input)} m is not above 0 m` }),
+    width: finite.check(z.refine((v) => v > 0, { error: (i) => `${show(i.input)} m is not above 0 m` })),
+    sill: finite.check(z.refine((v) => v >= 0, { error: (i) => `${show(i.input)} m is below the floor` })),
+    height: finite.check(z.refine((v) => v > 0, { error: (i) => `${show(i.input)} m is not above 0 m` })),
     kind: z.enum(OPENING_KINDS, { error: (i) => `must be "door", "window" or "opening", got ${show(i.input)}` }),
   },
   { error: 'must be an object' },
@@ -57,35 +57,35 @@ export const roomOpeningSchema = z.strictObject(
  * reads them by (wallReflectances: three bare numbers are [r, g, b]) rather than by a zod union, so
  * a bad entry of a per-wall list is reported at its own path (`walls[2][0]`), not as the whole list.
  */
-const wallReflectances = z.custom<unknown>().superRefine((value, ctx) => {
-  const perWall = Array.isArray(value) && !(value.length === 3 && value.every((v) => typeof v === 'number'));
-  const check = (v: unknown, at: number[]) => {
-    const r = reflectance.safeParse(v);
-    if (!r.success) for (const issue of r.error.issues) ctx.addIssue({ code: 'custom', message: issue.message, path: [...at, ...issue.path] as (string | number)[], input: v });
-  };
-  if (!perWall) return check(value, []);
-  const list = value as unknown[];
-  if (list.length > ROOM_SHAPE_LIMITS.maxCorners) ctx.addIssue({ code: 'custom', message: `has more than ${ROOM_SHAPE_LIMITS.maxCorners} entries`, input: value });
-  else list.forEach((v, k) => check(v, [k]));
-}) as unknown as z.ZodType<RoomReflectance | RoomReflectance[]>;
+const wallReflectances = z.custom<unknown>().check(
+  z.superRefine((value, ctx) => {
+    const perWall = Array.isArray(value) && !(value.length === 3 && value.every((v) => typeof v === 'number'));
+    const check = (v: unknown, at: number[]) => {
+      const r = safeParseInEnglish(reflectance, v);
+      if (!r.success) for (const issue of r.error.issues) ctx.addIssue({ code: 'custom', message: issue.message, path: [...at, ...issue.path] as (string | number)[], input: v });
+    };
+    if (!perWall) return check(value, []);
+    const list = value as unknown[];
+    if (list.length > ROOM_SHAPE_LIMITS.maxCorners) ctx.addIssue({ code: 'custom', message: `has more than ${ROOM_SHAPE_LIMITS.maxCorners} entries`, input: value });
+    else list.forEach((v, k) => check(v, [k]));
+  }),
+) as unknown as z.ZodMiniType<RoomReflectance | RoomReflectance[]>;
 
 /** The floor outline: 3 to 64 corners [x, z] within ±500 m. */
 export const roomOutlineSchema = z
   .array(z.tuple([coordinate, coordinate], { error: (i) => `must be [x, z] in metres, got ${show(i.input)}` }), { error: (i) => (i.input === undefined ? 'is missing' : 'must be a list of corners [x, z]') })
-  .min(ROOM_SHAPE_LIMITS.minCorners, `needs at least ${ROOM_SHAPE_LIMITS.minCorners} corners`)
-  .max(ROOM_SHAPE_LIMITS.maxCorners, `has more than ${ROOM_SHAPE_LIMITS.maxCorners} corners`);
+  .check(z.minLength(ROOM_SHAPE_LIMITS.minCorners, `needs at least ${ROOM_SHAPE_LIMITS.minCorners} corners`), z.maxLength(ROOM_SHAPE_LIMITS.maxCorners, `has more than ${ROOM_SHAPE_LIMITS.maxCorners} corners`));
 
 const roomShape = z.strictObject(
   {
     outline: roomOutlineSchema,
-    height: finite.refine((v) => v >= ROOM_SHAPE_LIMITS.minHeight && v <= ROOM_SHAPE_LIMITS.maxHeight, {
-      error: (i) => `${show(i.input)} m is outside ${ROOM_SHAPE_LIMITS.minHeight}..${ROOM_SHAPE_LIMITS.maxHeight} m`,
-    }),
-    slopes: z.array(roomSlopeSchema, { error: 'must be a list of slopes' }).max(ROOM_SHAPE_LIMITS.maxCorners, `has more than ${ROOM_SHAPE_LIMITS.maxCorners} slopes`).optional(),
-    openings: z
-      .array(roomOpeningSchema, { error: 'must be a list of openings' })
-      .max(4 * ROOM_SHAPE_LIMITS.maxCorners, `has more than ${4 * ROOM_SHAPE_LIMITS.maxCorners} openings`)
-      .optional(),
+    height: finite.check(
+      z.refine((v) => v >= ROOM_SHAPE_LIMITS.minHeight && v <= ROOM_SHAPE_LIMITS.maxHeight, {
+        error: (i) => `${show(i.input)} m is outside ${ROOM_SHAPE_LIMITS.minHeight}..${ROOM_SHAPE_LIMITS.maxHeight} m`,
+      }),
+    ),
+    slopes: z.optional(z.array(roomSlopeSchema, { error: 'must be a list of slopes' }).check(z.maxLength(ROOM_SHAPE_LIMITS.maxCorners, `has more than ${ROOM_SHAPE_LIMITS.maxCorners} slopes`))),
+    openings: z.optional(z.array(roomOpeningSchema, { error: 'must be a list of openings' }).check(z.maxLength(4 * ROOM_SHAPE_LIMITS.maxCorners, `has more than ${4 * ROOM_SHAPE_LIMITS.maxCorners} openings`))),
     reflectance: z.strictObject(
       {
         floor: reflectance,
@@ -104,13 +104,15 @@ const roomShape = z.strictObject(
  * as issues at the path roomProblems names, relative to the room object (so `outline[3]`, not
  * `room.outline[3]`). The issue's `params.code` carries the problem's code for a UI.
  */
-export const roomSchema = roomShape.superRefine((room, ctx) => {
-  for (const p of roomProblems(room as RoomInput)) {
-    const path = p.path
-      .replace(/^room\.?/, '')
-      .split(/[.[\]]/)
-      .filter((s) => s !== '')
-      .map((s) => (/^\d+$/.test(s) ? Number(s) : s));
-    ctx.addIssue({ code: 'custom', message: p.message, path, params: { code: p.code, ...p.params } });
-  }
-});
+export const roomSchema = roomShape.check(
+  z.superRefine((room, ctx) => {
+    for (const p of roomProblems(room as RoomInput)) {
+      const path = p.path
+        .replace(/^room\.?/, '')
+        .split(/[.[\]]/)
+        .filter((s) => s !== '')
+        .map((s) => (/^\d+$/.test(s) ? Number(s) : s));
+      ctx.addIssue({ code: 'custom', message: p.message, path, params: { code: p.code, ...p.params } });
+    }
+  }),
+);

@@ -1,5 +1,5 @@
 import { basename } from 'node:path';
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import { InputError } from '../../core/inputError';
 import type { Vec3 } from '../../core/model/lightingScene/lightingScene';
 import { nearestSurface } from '../../engines/bake/nearestSurface';
@@ -17,6 +17,7 @@ import type { Room as ShapedRoom } from '../../core/room/normaliseRoom';
 import { roomSurfaces } from '../../core/room/roomSurfaces';
 import { roomSurfaceAt } from '../../core/room/roomSurfaceAt';
 import { pointInsideRoom } from '../../core/room/ceilingHeightAt';
+import { safeParseInEnglish } from '../../core/zodEnglish';
 
 export const probeUsage = 'probe <scene.json> <points.json> [--samples N --bounces N --texel m --gl vulkan|glx|auto --allow <folder>] (points [x, y, z] on a surface or [x, y, z, nx, ny, nz])';
 
@@ -31,7 +32,7 @@ const pointsSchema = z.strictObject({
       .union([z.tuple([z.number(), z.number(), z.number()]), z.tuple([z.number(), z.number(), z.number(), z.number(), z.number(), z.number()])], {
         error: 'must be [x, y, z] (a point on a surface) or [x, y, z, nx, ny, nz] (a point and a normal)',
       })
-      .refine(finiteNumbers, 'must be finite numbers'),
+      .check(z.refine(finiteNumbers, 'must be finite numbers')),
   ),
 });
 
@@ -54,7 +55,7 @@ export async function run(args: string[]): Promise<number> {
     if (!(error instanceof InputError)) throw error;
     throw new InputError(`${source}: cannot read ${pointsPath} (${error.message})`);
   }
-  const parsed = pointsSchema.safeParse(parseJsonText(text, source));
+  const parsed = safeParseInEnglish(pointsSchema, parseJsonText(text, source));
   if (!parsed.success) {
     const issue = parsed.error.issues[0];
     // `points.json: pointz: unknown field 'pointz' (did you mean 'points'?)`, before any "points is missing".

@@ -9,7 +9,7 @@
  * by construction. `perform` is the raw operation: it does not re-check anything,
  * so tests can prove that every refused action really would have broken validate().
  */
-import type { z } from 'zod';
+import type { z } from 'zod/mini';
 import type { Catalog } from '../catalogSchema/catalogSchema';
 import type { CodedText, MessageParams } from '../../inputError';
 import type { Configuration } from '../configuration/configuration';
@@ -66,7 +66,7 @@ export interface ActionDefinition<P> {
   /** Short label for buttons and menus. */
   readonly label: string;
   /** Validates the parameters (from UI, embedding API or a test). */
-  readonly params: z.ZodType<P>;
+  readonly params: z.ZodMiniType<P>;
   /**
    * The action's own reasons to refuse, checked before perform. Leave out what
    * validate() already decides on the result: the binding checks that. Omitted: none.

@@ -23,6 +23,7 @@ import { autoPatch, clearPatch, setModulePatch } from './patchActions';
 import { setModuleFilter } from './filterActions';
 import { deleteScene, recallScene, recordScene, renameScene, reorderScene, setModuleOn, setSceneFade, updateScene } from './sceneActions';
 import { addObject, moveObject, refinishObject, removeObject, resizeObject, rotateObject } from './objectActions';
+import { safeParseInEnglish } from '../../zodEnglish';
 
 /** The actions on the first screen by name; the room-shape editor's come with its chunk (roomShapeActionNames.ts): actionDefinition(name) finds either. */
 export const actionDefinitions = {
@@ -110,7 +111,7 @@ export function actionLabel(name: ActionName): string {
 
 /** Validates params for an action; throws ActionParamsError naming the bad field. */
 export function parseActionParams(name: string, params: unknown): unknown {
-  const r = actionDefinition(name).params.safeParse(params);
+  const r = safeParseInEnglish(actionDefinition(name).params, params);
   if (!r.success) {
     const issue = r.error.issues[0];
     throw new ActionParamsError(`${name}: ${formatPath(issue.path)}: ${issue.message}`);

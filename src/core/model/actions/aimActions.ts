@@ -3,7 +3,7 @@
  * (clampAim), so an aim is always valid: dragging past a limit stops the head there, as the
  * real swivel does. The only refusal is a fixed (non-adjustable) type, with the reason.
  */
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import { InputError } from '../../inputError';
 import type { ActionDefinition } from './action';
 import { aimToward, clampAim } from '../modules/aim';
@@ -20,7 +20,7 @@ function adjustableType(state: Configuration, moduleId: string, catalog: Catalog
   return type as ModuleTypeSpec & { adjustable: NonNullable<ModuleTypeSpec['adjustable']> };
 }
 
-const degrees = z.number().refine(Number.isFinite, 'must be a finite number of degrees');
+const degrees = z.number().check(z.refine(Number.isFinite, 'must be a finite number of degrees'));
 const setAimParams = z.object({ moduleId: z.string(), aim: z.object({ rotation: degrees, tilt: degrees }) });
 
 /** Sets a module's aim; out-of-range values are clamped and snapped to the nearest stop (never refused). */
@@ -34,7 +34,7 @@ export const setAim: ActionDefinition<z.infer<typeof setAimParams>> = {
   },
 };
 
-const metres = z.number().refine(Number.isFinite, 'must be a finite number of metres');
+const metres = z.number().check(z.refine(Number.isFinite, 'must be a finite number of metres'));
 const point = z.tuple([metres, metres, metres]);
 const aimAtParams = z.object({ moduleId: z.string(), point });
 

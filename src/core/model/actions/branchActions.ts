@@ -5,7 +5,7 @@
  * fixing points are validate()'s rules, checked on the result where the action is bound; these
  * definitions build the result and word the refusals.
  */
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import { InputError } from '../../inputError';
 import { refuse, type ActionDefinition, type CodedReason, type Refusal } from './action';
 import { findConnector, type Catalog } from '../catalogSchema/catalogSchema';
@@ -21,10 +21,10 @@ const branchParams = z.object({
   /** The rail at whose END the branch starts (its free end, or the connector already there). */
   railId: z.string(),
   /** Catalog connector id; at an existing connector its own (omitted: that one). */
-  connector: z.string().optional(),
+  connector: z.optional(z.string()),
   /** Degrees, + = left turn: the port (T, X: −angle, 0, +angle). */
   turn: z.number(),
-  length: z.number().optional(),
+  length: z.optional(z.number()),
 });
 type BranchParams = z.infer<typeof branchParams>;
 

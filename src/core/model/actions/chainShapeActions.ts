@@ -4,7 +4,7 @@
  * "Moving fixing points". Range, walls, clashes and the fixing rules are validate()'s, checked
  * on the result where the action is bound; these definitions snap the input and word refusals.
  */
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import { InputError } from '../../inputError';
 import { refuse, type ActionDefinition, type CodedReason } from './action';
 import { quoting } from '../configuration/coding';
@@ -37,7 +37,7 @@ function jointOf(state: Configuration, systemId: string, joint: number, catalog:
   return { si, system, con: findConnector(catalog, j.connector) };
 }
 
-const turnParams = z.object({ systemId: z.string(), joint: z.number().int().min(0), degrees: z.number() });
+const turnParams = z.object({ systemId: z.string(), joint: z.number().check(z.int(), z.gte(0)), degrees: z.number() });
 
 /** Sets the turn of a flexible connector (joints[joint]), snapped to its step. */
 export const setJointTurn: ActionDefinition<z.infer<typeof turnParams>> = {
@@ -66,7 +66,7 @@ export const setJointTurn: ActionDefinition<z.infer<typeof turnParams>> = {
   },
 };
 
-const fixingParams = z.object({ systemId: z.string(), index: z.number().int().min(0), s: z.number() });
+const fixingParams = z.object({ systemId: z.string(), index: z.number().check(z.int(), z.gte(0)), s: z.number() });
 
 /**
  * Moves fixing point `index` (suspension or clip, in chain order) to chain coordinate `s`,

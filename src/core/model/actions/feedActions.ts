@@ -4,7 +4,7 @@
  * Whether every feed's load fits its driver is validate()'s rule (`feed-overload`), checked on
  * the result where the action is bound, so a move that would overload a driver is refused too.
  */
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import type { ActionDefinition, CodedReason } from './action';
 import { findDriver } from '../catalogSchema/catalogSchema';
 import type { FeedAt } from '../configuration/configuration';
@@ -13,7 +13,7 @@ import type { Problem } from '../configuration/problem';
 import { findFeed, replaceSystem, systemIndex, takeId } from './lookup';
 
 /** 'start', 'end', { joint: k } (the connector joints[k] goes through) or { end: i } (rail i's free end, a branch). */
-export const feedAtParams = z.union([z.literal('start'), z.literal('end'), z.strictObject({ joint: z.number().int().nonnegative() }), z.strictObject({ end: z.number().int().nonnegative() })]);
+export const feedAtParams = z.union([z.literal('start'), z.literal('end'), z.strictObject({ joint: z.number().check(z.int(), z.nonnegative()) }), z.strictObject({ end: z.number().check(z.int(), z.nonnegative()) })]);
 
 function positionReason(problem: Problem, at: FeedAt): string | CodedReason {
   if (problem.code === 'feed-duplicate') return { reason: `there is already a feed at ${describeFeedAt(at)}`, code: 'feedAlreadyThere', params: { feedAt: feedAtParam(at) } };
@@ -24,7 +24,7 @@ const addParams = z.object({
   systemId: z.string(),
   at: feedAtParams,
   /** Catalog driver id; default: the catalog's defaultDriver. */
-  driver: z.string().optional(),
+  driver: z.optional(z.string()),
 });
 
 /** A second (third, …) feed: the modules nearer to it than to the other feeds move to it. */

@@ -4,12 +4,12 @@
  * (moduleFilter.ts), checked on the result where the action is bound; the refusal is its message.
  * A filter changes only the module's colour and lumens, so the 3D view relights, never rebakes.
  */
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import type { ActionDefinition } from './action';
 import type { ModuleInstance } from '../configuration/configuration';
 import { findModule, replaceRail } from './lookup';
 
-const filterParams = z.object({ moduleId: z.string(), filter: z.string().nullable() });
+const filterParams = z.object({ moduleId: z.string(), filter: z.nullable(z.string()) });
 
 export const setModuleFilter: ActionDefinition<z.infer<typeof filterParams>> = {
   name: 'setModuleFilter',

@@ -5,7 +5,7 @@
  * offered CCTs and beams, and dimming are validate()'s rules, checked on the
  * result where the action is bound. These definitions word the refusals.
  */
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import { InputError } from '../../inputError';
 import type { ActionDefinition, CodedReason } from './action';
 import { findModuleType, type Catalog } from '../catalogSchema/catalogSchema';
@@ -22,7 +22,7 @@ const addParams = z.object({
   railId: z.string(),
   type: z.string(),
   /** Insert before this position in the rail's module list; default: at the end. */
-  index: z.number().int().nonnegative().optional(),
+  index: z.optional(z.number().check(z.int(), z.nonnegative())),
 });
 
 /** Problems that mean "the modules do not fit": a distribution that cannot hold them, or a free position that breaks a rule. */
@@ -204,7 +204,7 @@ export const setModuleType: ActionDefinition<z.infer<typeof typeParams>> = {
 };
 
 /** A definition that sets fields of one module; whether the values are offered is validate()'s rule. */
-function moduleSetting<P extends { moduleId: string }>(name: string, label: string, params: z.ZodType<P>, patch: (p: P) => Partial<ModuleInstance>): ActionDefinition<P> {
+function moduleSetting<P extends { moduleId: string }>(name: string, label: string, params: z.ZodMiniType<P>, patch: (p: P) => Partial<ModuleInstance>): ActionDefinition<P> {
   return { name, label, params, perform: (state, p) => updateModule(state, p.moduleId, patch(p)) };
 }
 

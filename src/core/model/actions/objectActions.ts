@@ -5,7 +5,7 @@
  * (fitPlacement), so a sofa dropped half through a wall lands against it.
  */
 import { MAX_STORED_MESH_CHARS, storedMeshChars } from '../files/storedMeshSize';
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import { InputError } from '../../inputError';
 import type { TriangleMesh } from '../../mesh/triangleMesh';
 import { refuse, type ActionDefinition } from './action';
@@ -26,7 +26,7 @@ const sourceSchema = z.discriminatedUnion('kind', [
   z.strictObject({ kind: z.literal('library'), item: z.string() }),
   z.strictObject({ kind: z.literal('imported'), mesh: z.string() }),
   /** A freshly imported file: the mesh is stored once in importedMeshes and shared by every object made from it. */
-  z.strictObject({ kind: z.literal('import'), name: z.string().min(1).max(200), mesh: meshSchema, units: z.enum(MESH_UNITS) }),
+  z.strictObject({ kind: z.literal('import'), name: z.string().check(z.minLength(1), z.maxLength(200)), mesh: meshSchema, units: z.enum(MESH_UNITS) }),
 ]);
 
 const finishSchema = z.union([z.string(), z.tuple([z.number(), z.number(), z.number()])]);
@@ -34,9 +34,9 @@ const finishSchema = z.union([z.string(), z.tuple([z.number(), z.number(), z.num
 const addParams = z.strictObject({
   source: sourceSchema,
   /** Where to put it; default: the room centre (floor) or the middle of the north wall at the item's hanging height. */
-  placement: placementSchema.optional(),
-  yaw: z.number().optional(),
-  scale: z.number().optional(),
+  placement: z.optional(placementSchema),
+  yaw: z.optional(z.number()),
+  scale: z.optional(z.number()),
 });
 
 export function findObject(config: Configuration, objectId: string): { index: number; object: RoomObject } {
@@ -120,9 +120,9 @@ export const moveObject: ActionDefinition<z.infer<typeof moveParams>> = {
 const rotateParams = z.strictObject({
   objectId: z.string(),
   /** Degrees, + = counterclockwise seen from above, about the object's origin (a library item's footprint centre). */
-  by: z.number().optional(),
+  by: z.optional(z.number()),
   /** Absolute yaw in degrees; wins over `by`. */
-  yaw: z.number().optional(),
+  yaw: z.optional(z.number()),
 });
 
 export const rotateObject: ActionDefinition<z.infer<typeof rotateParams>> = {
@@ -160,7 +160,7 @@ const refinishParams = z.strictObject({
   /** A material of the object's mesh ('top', 'legs', or the file's material name). */
   material: z.string(),
   /** A finish id (furniture/objectFinishes.ts), linear RGB, or null for the default. */
-  finish: finishSchema.nullable(),
+  finish: z.nullable(finishSchema),
 });
 
 export const refinishObject: ActionDefinition<z.infer<typeof refinishParams>> = {

@@ -5,7 +5,7 @@
  * (dmx-overlap, dmx-range), checked on the result where the action is bound;
  * these definitions word the refusals.
  */
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import { InputError } from '../../inputError';
 import type { ActionDefinition } from './action';
 import { quoting } from '../configuration/coding';
@@ -44,7 +44,7 @@ function mapPatches(config: Configuration, patchOf: (m: ModuleInstance) => DmxPa
   return changed ? { ...config, systems } : config;
 }
 
-const moduleParams = z.object({ moduleId: z.string(), patch: patchSchema.nullable() });
+const moduleParams = z.object({ moduleId: z.string(), patch: z.nullable(patchSchema) });
 
 /** Patches one module (or unpatches it with `patch: null`). */
 export const setModulePatch: ActionDefinition<z.infer<typeof moduleParams>> = {
@@ -61,9 +61,9 @@ export const setModulePatch: ActionDefinition<z.infer<typeof moduleParams>> = {
 };
 
 const autoParams = z.object({
-  universe: z.number().int().min(DMX_UNIVERSE_MIN).max(DMX_UNIVERSE_MAX),
+  universe: z.number().check(z.int(), z.gte(DMX_UNIVERSE_MIN), z.lte(DMX_UNIVERSE_MAX)),
   /** First channel of the first module, 1..512. */
-  address: z.number().int().min(1).max(DMX_CHANNELS),
+  address: z.number().check(z.int(), z.gte(1), z.lte(DMX_CHANNELS)),
   resolution,
   /** A CCT channel for every tunable module. */
   cct: z.boolean(),

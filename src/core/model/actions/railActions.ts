@@ -5,7 +5,7 @@
  * Range, fit, walls and clashes are validate()'s rules, checked on the result
  * where the action is bound; these definitions only word the refusals.
  */
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import type { ActionDefinition } from './action';
 import { quoting } from '../configuration/coding';
 import { findConnector, type Catalog } from '../catalogSchema/catalogSchema';
@@ -82,7 +82,7 @@ const addRailParams = z.object({
   connector: z.string(),
   /** Degrees, + = left turn (counterclockwise seen from above); ±the connector's angle, 0 for straight. */
   turn: z.number(),
-  length: z.number().optional(),
+  length: z.optional(z.number()),
 });
 
 /** Appends an empty rail at the end of the last rail through a connector (addBranch grows any other end or node). */

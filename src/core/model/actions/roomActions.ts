@@ -2,7 +2,7 @@
  * Changing the room's size (a drawn room is scaled to it). The limits and every placed system's fit (walls, head room)
  * are validate()'s rules, checked on the result where the action is bound.
  */
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import type { ActionDefinition } from './action';
 import { quoting } from '../configuration/coding';
 import { requireRoomShapeSupport } from '../configuration/roomShapeSupport';

@@ -7,7 +7,7 @@
  * and depth the extents). What the shape does to rails, modules and objects (outside the room,
  * under a slope) is validate()'s, checked on the result where the action is bound.
  */
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import { InputError } from '../../inputError';
 import type { ActionDefinition } from './action';
 import { ROOM_SHAPE_ACTION_LABELS } from './roomShapeActionNames';
@@ -37,7 +37,7 @@ function checkOpening(shape: RoomShape, opening: number): RoomOpening {
   return o;
 }
 
-const index = z.number().int().min(0);
+const index = z.number().check(z.int(), z.gte(0));
 const metres = z.number();
 
 const presetParams = z.object({ preset: z.enum(SHAPE_PRESETS) });
@@ -89,7 +89,7 @@ export const setRoomWallLength: ActionDefinition<z.infer<typeof lengthParams>> =
   },
 };
 
-const angleParams = z.object({ corner: index, degrees: z.number().gt(0).lt(360) });
+const angleParams = z.object({ corner: index, degrees: z.number().check(z.gt(0), z.lt(360)) });
 export const setRoomCornerAngle: ActionDefinition<z.infer<typeof angleParams>> = {
   name: 'setRoomCornerAngle',
   label: ROOM_SHAPE_ACTION_LABELS.setRoomCornerAngle,
@@ -148,7 +148,7 @@ export const OPENING_DEFAULTS: Record<OpeningKind, { width: number; height: numb
 };
 
 const kind = z.enum(OPENING_KINDS);
-const addOpeningParams = z.object({ wall: index, kind, offset: metres.optional(), width: metres.optional(), sill: metres.optional(), height: metres.optional() });
+const addOpeningParams = z.object({ wall: index, kind, offset: z.optional(metres), width: z.optional(metres), sill: z.optional(metres), height: z.optional(metres) });
 export const addRoomOpening: ActionDefinition<z.infer<typeof addOpeningParams>> = {
   name: 'addRoomOpening',
   label: ROOM_SHAPE_ACTION_LABELS.addRoomOpening,
@@ -165,7 +165,7 @@ export const addRoomOpening: ActionDefinition<z.infer<typeof addOpeningParams>> 
   },
 };
 
-const setOpeningParams = z.object({ opening: index, offset: metres.optional(), width: metres.optional(), sill: metres.optional(), height: metres.optional(), kind: kind.optional() });
+const setOpeningParams = z.object({ opening: index, offset: z.optional(metres), width: z.optional(metres), sill: z.optional(metres), height: z.optional(metres), kind: z.optional(kind) });
 /** Moves an opening along its wall (offset) or resizes it (width, sill, height) or changes its kind; unspecified fields stay. */
 export const setRoomOpening: ActionDefinition<z.infer<typeof setOpeningParams>> = {
   name: 'setRoomOpening',

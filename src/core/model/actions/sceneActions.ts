@@ -3,7 +3,7 @@
  * recall, and switching a module on or off. All undoable like every action; names, fade range
  * and looks are validate()'s rules (lightScenes.ts), checked on the result where the action is bound.
  */
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import { InputError } from '../../inputError';
 import type { ActionDefinition, CodedReason } from './action';
 import type { Configuration, LightScene } from '../configuration/configuration';
@@ -40,7 +40,7 @@ function explainName(problem: Problem, state: Configuration, name: string): stri
 /** The default fade of a new scene, seconds: a calm change, as a console's default cue time (ETC Eos: 5 s; we take 3 s, issue #12's example). */
 export const DEFAULT_FADE = 3;
 
-const recordParams = z.object({ name: z.string(), fade: z.number().optional() });
+const recordParams = z.object({ name: z.string(), fade: z.optional(z.number()) });
 
 /** Stores every module's on/off, level, CCT and filter as a new scene at the end of the list. */
 export const recordScene: ActionDefinition<z.infer<typeof recordParams>> = {
@@ -76,7 +76,7 @@ export const renameScene: ActionDefinition<z.infer<typeof renameParams>> = {
   explain: (problem, state, p) => explainName(problem, { ...state, lightScenes: state.lightScenes?.filter((s) => s.id !== p.sceneId) }, p.name),
 };
 
-const reorderParams = z.object({ sceneId: z.string(), index: z.number().int() });
+const reorderParams = z.object({ sceneId: z.string(), index: z.number().check(z.int()) });
 
 /** Moves a scene to position `index` of the playback order (GO / BACK follow it). */
 export const reorderScene: ActionDefinition<z.infer<typeof reorderParams>> = {

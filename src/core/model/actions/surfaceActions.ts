@@ -4,7 +4,7 @@
  * per channel (validate()'s rule on the result), so any finish from the list (or
  * any sane custom value) is always accepted; geometry is never affected.
  */
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import type { ActionDefinition } from './action';
 import { quoting } from '../configuration/coding';
 import type { Reflectance, SurfaceName } from '../lightingScene/lightingScene';

@@ -3,7 +3,7 @@
  * room and clashes are validate()'s rules, checked on the result where the
  * action is bound; unknown ids and a preset with nowhere to go throw InputError.
  */
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import { InputError } from '../../inputError';
 import type { ActionDefinition } from './action';
 import { quoting } from '../configuration/coding';
@@ -24,9 +24,9 @@ function findPreset(catalog: Catalog, id: string): PresetSpec {
 const placePresetParams = z.object({
   presetId: z.string(),
   /** Anchor (start of the first rail) and heading; omitted: a free spot nearest the room centre is found. */
-  x: z.number().optional(),
-  z: z.number().optional(),
-  rotation: z.number().optional(),
+  x: z.optional(z.number()),
+  z: z.optional(z.number()),
+  rotation: z.optional(z.number()),
 });
 type PlacePresetParams = z.infer<typeof placePresetParams>;
 

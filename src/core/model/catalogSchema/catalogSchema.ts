@@ -3,7 +3,7 @@
  * rail system into the configurator (docs/catalog-format.md). Validated with
  * zod so a broken catalog fails loudly at load time, naming the field.
  */
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import { InputError } from '../../inputError';
 import { colourFilter } from '../../colour/colourFilterLibrary';
 import { formatPath as formatFieldPath, jsonShapeProblem, oneLine, parseUntrustedJson } from '../../untrustedJson';
@@ -14,6 +14,7 @@ import { moduleTypeSchema, type BeamSpec, type ModuleTypeSpec } from './moduleTy
 import { driverSchema, feedSchema, type DriverSpec } from './powerSchema';
 import { presetSchema } from './presetSchema';
 import { connectorSchema, railSchema, surfaceMountSchema, suspensionSchema, type ConnectorSpec } from './railSystemSchema';
+import { safeParseInEnglish } from '../../zodEnglish';
 
 export const catalogSchema = z
   .strictObject({
@@ -21,87 +22,89 @@ export const catalogSchema = z
     id: nonEmpty,
     name: nonEmpty,
     /** ISO 4217 code; every price in the catalog is in this currency. */
-    currency: z.string().regex(/^[A-Z]{3}$/, 'must be an ISO 4217 code such as EUR'),
+    currency: z.string().check(z.regex(/^[A-Z]{3}$/, 'must be an ISO 4217 code such as EUR')),
     rail: railSchema,
-    connectors: z.array(connectorSchema).min(1),
+    connectors: z.array(connectorSchema).check(z.minLength(1)),
     suspension: suspensionSchema,
     /** Mounting the rail directly on the ceiling (setMounting 'surface'): clips instead of suspensions. */
     surfaceMount: surfaceMountSchema,
     /** Where power feeds may sit and the feed kit each one needs (docs/model.md, "Power feeds"). */
     feed: feedSchema,
-    drivers: z.array(driverSchema).min(1),
-    moduleTypes: z.array(moduleTypeSchema).min(1),
+    drivers: z.array(driverSchema).check(z.minLength(1)),
+    moduleTypes: z.array(moduleTypeSchema).check(z.minLength(1)),
     presets: z.array(presetSchema),
     /**
      * Colour filters sold as accessories (docs/colour-filters.md): `id` names a filter of the library
      * (src/core/colour/colour-filters.json); modules of a type with `filterHolder` take one.
      */
-    filters: z.array(z.strictObject({ id: nonEmpty, article: nonEmpty, price, source: z.string().optional() })).optional(),
+    filters: z.optional(z.array(z.strictObject({ id: nonEmpty, article: nonEmpty, price, source: z.optional(z.string()) }))),
   })
-  .superRefine((c, ctx) => {
-    const r = c.rail;
-    if (r.minLength > r.maxLength) ctx.addIssue({ code: 'custom', path: ['rail', 'minLength'], message: 'must not exceed maxLength' });
-    for (const key of ['minLength', 'maxLength', 'defaultLength'] as const) {
-      if (!onGrid(r[key], r.step)) ctx.addIssue({ code: 'custom', path: ['rail', key], message: `must be a multiple of step ${r.step}` });
-    }
-    if (r.defaultLength < r.minLength || r.defaultLength > r.maxLength) ctx.addIssue({ code: 'custom', path: ['rail', 'defaultLength'], message: 'must lie within minLength..maxLength' });
-    const s = c.suspension;
-    if (s.min > s.max) ctx.addIssue({ code: 'custom', path: ['suspension', 'min'], message: 'must not exceed max' });
-    if (s.default < s.min || s.default > s.max) ctx.addIssue({ code: 'custom', path: ['suspension', 'default'], message: 'must lie within min..max' });
-    if (!c.feed.positions.includes('ends')) ctx.addIssue({ code: 'custom', path: ['feed', 'positions'], message: "must include 'ends' (a one-rail system has no joints)" });
-    if (new Set(c.feed.positions).size !== c.feed.positions.length) ctx.addIssue({ code: 'custom', path: ['feed', 'positions'], message: 'must not repeat a position' });
-    if (!c.drivers.some((d) => d.id === c.feed.defaultDriver)) ctx.addIssue({ code: 'custom', path: ['feed', 'defaultDriver'], message: `'${c.feed.defaultDriver}' is not a driver id` });
-    c.drivers.forEach((d, i) => {
-      if (d.output !== c.feed.output) ctx.addIssue({ code: 'custom', path: ['drivers', i, 'output'], message: `'${d.output}' does not match feed.output '${c.feed.output}'` });
-    });
-    if (s.maxOverhang > s.maxSpacing) ctx.addIssue({ code: 'custom', path: ['suspension', 'maxOverhang'], message: 'must not exceed maxSpacing' });
-    if (c.surfaceMount.maxOverhang > c.surfaceMount.spacing) ctx.addIssue({ code: 'custom', path: ['surfaceMount', 'maxOverhang'], message: 'must not exceed spacing' });
-    c.connectors.forEach((con, i) => {
-      if (connectorPorts(con) > 2 && (con.flex || con.angle === 0)) ctx.addIssue({ code: 'custom', path: ['connectors', i, 'ports'], message: 'a T or X connector has a fixed branch angle (angle > 0, no flex)' });
-      if (!con.flex) return;
-      if (!onGrid(con.flex.maxAngle, con.flex.step)) ctx.addIssue({ code: 'custom', path: ['connectors', i, 'flex', 'maxAngle'], message: `must be a multiple of step ${con.flex.step}` });
-      if (!allowedTurn(con, con.angle)) ctx.addIssue({ code: 'custom', path: ['connectors', i, 'angle'], message: `a flexible connector's angle (its default turn) must be a multiple of ${con.flex.step} up to ${con.flex.maxAngle}` });
-    });
-    uniqueIds(c.drivers, ['drivers'], ctx);
-    uniqueIds(c.connectors, ['connectors'], ctx);
-    uniqueIds(c.moduleTypes, ['moduleTypes'], ctx);
-    uniqueIds(c.filters ?? [], ['filters'], ctx);
-    c.filters?.forEach((f, i) => {
-      if (!colourFilter(f.id)) ctx.addIssue({ code: 'custom', path: ['filters', i, 'id'], message: `'${f.id}' is not a filter of the colour-filter library` });
-    });
-    uniqueIds(c.presets, ['presets'], ctx);
-    c.presets.forEach((p, i) => {
-      if (p.joints.length !== p.rails.length - 1) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints'], message: `needs ${p.rails.length - 1} joints for ${p.rails.length} rails` });
-      p.joints.forEach((j, k) => {
-        const con = c.connectors.find((x) => x.id === j.connector);
-        if (!con) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints', k, 'connector'], message: `unknown connector '${j.connector}'` });
-        else if (!allowedTurn(con, j.turn)) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints', k, 'turn'], message: `${turnRange(con)} for connector '${con.id}'` });
-        if (j.parent !== undefined && j.parent > k) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints', k, 'parent'], message: `must be a rail before rail ${k + 2} (at most ${k})` });
-      });
-      if (p.driver !== undefined) {
-        const d = c.drivers.find((x) => x.id === p.driver);
-        // The preset's load: its modules' beams (the type's default beam where none is named), as the feeds count it.
-        let load = 0;
-        for (const m of p.rails.flatMap((r) => r.modules)) {
-          const t = c.moduleTypes.find((x) => x.id === m.type);
-          load += t?.beams.find((b) => b.id === (m.beam ?? t.defaultBeam))?.watts ?? 0;
-        }
-        if (!d) ctx.addIssue({ code: 'custom', path: ['presets', i, 'driver'], message: `'${p.driver}' is not a driver id` });
-        else if (load > d.capacity + 1e-6) ctx.addIssue({ code: 'custom', path: ['presets', i, 'driver'], message: `the ${d.capacity} W '${d.id}' cannot carry the preset's ${Math.round(load * 100) / 100} W` });
+  .check(
+    z.superRefine((c, ctx) => {
+      const r = c.rail;
+      if (r.minLength > r.maxLength) ctx.addIssue({ code: 'custom', path: ['rail', 'minLength'], message: 'must not exceed maxLength' });
+      for (const key of ['minLength', 'maxLength', 'defaultLength'] as const) {
+        if (!onGrid(r[key], r.step)) ctx.addIssue({ code: 'custom', path: ['rail', key], message: `must be a multiple of step ${r.step}` });
       }
-      p.rails.forEach((rail, k) =>
-        rail.modules.forEach((m, n) => {
-          const t = c.moduleTypes.find((x) => x.id === m.type);
-          const at = ['presets', i, 'rails', k, 'modules', n];
-          if (!t) ctx.addIssue({ code: 'custom', path: [...at, 'type'], message: `unknown module type '${m.type}'` });
-          else {
-            if (m.beam !== undefined && !t.beams.some((b) => b.id === m.beam)) ctx.addIssue({ code: 'custom', path: [...at, 'beam'], message: `unknown beam '${m.beam}'` });
-            if (m.cct !== undefined && !t.ccts.includes(m.cct)) ctx.addIssue({ code: 'custom', path: [...at, 'cct'], message: `${m.cct} K not offered` });
+      if (r.defaultLength < r.minLength || r.defaultLength > r.maxLength) ctx.addIssue({ code: 'custom', path: ['rail', 'defaultLength'], message: 'must lie within minLength..maxLength' });
+      const s = c.suspension;
+      if (s.min > s.max) ctx.addIssue({ code: 'custom', path: ['suspension', 'min'], message: 'must not exceed max' });
+      if (s.default < s.min || s.default > s.max) ctx.addIssue({ code: 'custom', path: ['suspension', 'default'], message: 'must lie within min..max' });
+      if (!c.feed.positions.includes('ends')) ctx.addIssue({ code: 'custom', path: ['feed', 'positions'], message: "must include 'ends' (a one-rail system has no joints)" });
+      if (new Set(c.feed.positions).size !== c.feed.positions.length) ctx.addIssue({ code: 'custom', path: ['feed', 'positions'], message: 'must not repeat a position' });
+      if (!c.drivers.some((d) => d.id === c.feed.defaultDriver)) ctx.addIssue({ code: 'custom', path: ['feed', 'defaultDriver'], message: `'${c.feed.defaultDriver}' is not a driver id` });
+      c.drivers.forEach((d, i) => {
+        if (d.output !== c.feed.output) ctx.addIssue({ code: 'custom', path: ['drivers', i, 'output'], message: `'${d.output}' does not match feed.output '${c.feed.output}'` });
+      });
+      if (s.maxOverhang > s.maxSpacing) ctx.addIssue({ code: 'custom', path: ['suspension', 'maxOverhang'], message: 'must not exceed maxSpacing' });
+      if (c.surfaceMount.maxOverhang > c.surfaceMount.spacing) ctx.addIssue({ code: 'custom', path: ['surfaceMount', 'maxOverhang'], message: 'must not exceed spacing' });
+      c.connectors.forEach((con, i) => {
+        if (connectorPorts(con) > 2 && (con.flex || con.angle === 0)) ctx.addIssue({ code: 'custom', path: ['connectors', i, 'ports'], message: 'a T or X connector has a fixed branch angle (angle > 0, no flex)' });
+        if (!con.flex) return;
+        if (!onGrid(con.flex.maxAngle, con.flex.step)) ctx.addIssue({ code: 'custom', path: ['connectors', i, 'flex', 'maxAngle'], message: `must be a multiple of step ${con.flex.step}` });
+        if (!allowedTurn(con, con.angle)) ctx.addIssue({ code: 'custom', path: ['connectors', i, 'angle'], message: `a flexible connector's angle (its default turn) must be a multiple of ${con.flex.step} up to ${con.flex.maxAngle}` });
+      });
+      uniqueIds(c.drivers, ['drivers'], ctx);
+      uniqueIds(c.connectors, ['connectors'], ctx);
+      uniqueIds(c.moduleTypes, ['moduleTypes'], ctx);
+      uniqueIds(c.filters ?? [], ['filters'], ctx);
+      c.filters?.forEach((f, i) => {
+        if (!colourFilter(f.id)) ctx.addIssue({ code: 'custom', path: ['filters', i, 'id'], message: `'${f.id}' is not a filter of the colour-filter library` });
+      });
+      uniqueIds(c.presets, ['presets'], ctx);
+      c.presets.forEach((p, i) => {
+        if (p.joints.length !== p.rails.length - 1) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints'], message: `needs ${p.rails.length - 1} joints for ${p.rails.length} rails` });
+        p.joints.forEach((j, k) => {
+          const con = c.connectors.find((x) => x.id === j.connector);
+          if (!con) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints', k, 'connector'], message: `unknown connector '${j.connector}'` });
+          else if (!allowedTurn(con, j.turn)) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints', k, 'turn'], message: `${turnRange(con)} for connector '${con.id}'` });
+          if (j.parent !== undefined && j.parent > k) ctx.addIssue({ code: 'custom', path: ['presets', i, 'joints', k, 'parent'], message: `must be a rail before rail ${k + 2} (at most ${k})` });
+        });
+        if (p.driver !== undefined) {
+          const d = c.drivers.find((x) => x.id === p.driver);
+          // The preset's load: its modules' beams (the type's default beam where none is named), as the feeds count it.
+          let load = 0;
+          for (const m of p.rails.flatMap((r) => r.modules)) {
+            const t = c.moduleTypes.find((x) => x.id === m.type);
+            load += t?.beams.find((b) => b.id === (m.beam ?? t.defaultBeam))?.watts ?? 0;
           }
-        }),
-      );
-    });
-  });
+          if (!d) ctx.addIssue({ code: 'custom', path: ['presets', i, 'driver'], message: `'${p.driver}' is not a driver id` });
+          else if (load > d.capacity + 1e-6) ctx.addIssue({ code: 'custom', path: ['presets', i, 'driver'], message: `the ${d.capacity} W '${d.id}' cannot carry the preset's ${Math.round(load * 100) / 100} W` });
+        }
+        p.rails.forEach((rail, k) =>
+          rail.modules.forEach((m, n) => {
+            const t = c.moduleTypes.find((x) => x.id === m.type);
+            const at = ['presets', i, 'rails', k, 'modules', n];
+            if (!t) ctx.addIssue({ code: 'custom', path: [...at, 'type'], message: `unknown module type '${m.type}'` });
+            else {
+              if (m.beam !== undefined && !t.beams.some((b) => b.id === m.beam)) ctx.addIssue({ code: 'custom', path: [...at, 'beam'], message: `unknown beam '${m.beam}'` });
+              if (m.cct !== undefined && !t.ccts.includes(m.cct)) ctx.addIssue({ code: 'custom', path: [...at, 'cct'], message: `${m.cct} K not offered` });
+            }
+          }),
+        );
+      });
+    }),
+  );
 
 export type Catalog = z.infer<typeof catalogSchema>;
 
@@ -134,7 +137,7 @@ export function versionedDataProblem(data: unknown, field: string, newest: numbe
 export function parseCatalog(data: unknown, source = 'catalog'): Catalog {
   const problem = versionedDataProblem(data, 'formatVersion', CATALOG_FORMAT_VERSION);
   if (problem) throw new CatalogError(`${source}: ${problem}`);
-  const r = catalogSchema.safeParse(data);
+  const r = safeParseInEnglish(catalogSchema, data);
   if (!r.success) throw new CatalogError(`${source}: ${describeIssues(r.error.issues, CATALOG_FIELDS)}`);
   return r.data;
 }
@@ -152,7 +155,7 @@ export function formatPath(path: readonly PropertyKey[]): string {
   return formatFieldPath(path) || '(root)';
 }
 
-function uniqueIds(items: readonly { id: string }[], path: PropertyKey[], ctx: z.RefinementCtx): void {
+function uniqueIds(items: readonly { id: string }[], path: PropertyKey[], ctx: z.core.$RefinementCtx): void {
   const seen = new Set<string>();
   items.forEach((it, i) => {
     if (seen.has(it.id)) ctx.addIssue({ code: 'custom', path: [...path, i, 'id'], message: `duplicate id '${it.id}'` });

@@ -17,20 +17,20 @@
  *   A dim-to-warm type offers exactly one nominal CCT (its `ccts` is [cctFull]); level 0 is off
  *   (no light, colour irrelevant) and gives cctMin.
  */
-import { z } from 'zod';
+import { z } from 'zod/mini';
 
 export const dimmingCurveSchema = z.discriminatedUnion('curve', [
   z.strictObject({ curve: z.literal('constant-cct') }),
   z.strictObject({
     curve: z.literal('dim-to-warm'),
     /** Kelvin at full level (the type's one offered CCT). */
-    cctFull: z.number().int().min(1000).max(20000),
+    cctFull: z.number().check(z.int(), z.gte(1000), z.lte(20000)),
     /** Kelvin at `levelMin` and below; lower than cctFull. */
-    cctMin: z.number().int().min(1000).max(20000),
+    cctMin: z.number().check(z.int(), z.gte(1000), z.lte(20000)),
     /** Level (0..1, exclusive) at which cctMin is reached, e.g. 0.01 for the data sheets' "1 %". */
-    levelMin: z.number().gt(0).lt(1),
+    levelMin: z.number().check(z.gt(0), z.lt(1)),
     /** Where the two ends come from (a data sheet). */
-    source: z.string().optional(),
+    source: z.optional(z.string()),
   }),
 ]);
 

@@ -1,5 +1,5 @@
 /** The catalog's module types: beams (optics with their photometry), CCTs, filter holder, adjustable heads, dimming curve. */
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import { nonEmpty, onGrid, positive, price, translations } from './catalogFields';
 import { dimmingCurveSchema } from './dimmingCurve';
 
@@ -8,18 +8,18 @@ const beamSchema = z.strictObject({
   label: nonEmpty,
   labels: translations,
   /** Full beam angle (degrees) where the optic has one; omitted for diffusers and washers. */
-  beamAngle: positive.optional(),
+  beamAngle: z.optional(positive),
   article: nonEmpty,
   /** Photometric file, relative to the web root (public/), e.g. 'ies/bega_84693_narrow_spot.ies'. */
-  photometry: z.string().regex(/^[\w./-]+\.(ies|IES|ldt|LDT)$/, 'must be a relative path to an .ies or .ldt file'),
+  photometry: z.string().check(z.regex(/^[\w./-]+\.(ies|IES|ldt|LDT)$/, 'must be a relative path to an .ies or .ldt file')),
   /** Luminaire lumens and input watts as the photometric file states them. */
   lumens: positive,
   watts: positive,
   /** Roll (degrees) that turns the file's frame so the optic sits as intended on the rail (C0 along the rail when 0). */
-  roll: z.number().finite().min(-180).max(180),
+  roll: z.number().check(z.gte(-180), z.lte(180)),
   price,
   /** Where lumens and watts come from (free text). */
-  source: z.string().optional(),
+  source: z.optional(z.string()),
 });
 
 /**
@@ -28,13 +28,15 @@ const beamSchema = z.strictObject({
  * max must lie (and which divide 360 for rotation, so the circle closes on a stop).
  */
 function aimRangeSchema(limit: number) {
-  return z.strictObject({ min: z.number().finite().min(0).lt(limit), max: z.number().finite().min(0).lt(limit), stops: positive.max(90).optional() }).superRefine((r, ctx) => {
-    if (r.min > r.max) ctx.addIssue({ code: 'custom', path: ['min'], message: 'must not exceed max' });
-    if (r.stops !== undefined) {
-      for (const key of ['min', 'max'] as const) if (!onGrid(r[key], r.stops)) ctx.addIssue({ code: 'custom', path: [key], message: `must be a multiple of stops ${r.stops}` });
-      if (limit === 360 && !onGrid(360, r.stops)) ctx.addIssue({ code: 'custom', path: ['stops'], message: 'must divide 360' });
-    }
-  });
+  return z.strictObject({ min: z.number().check(z.gte(0), z.lt(limit)), max: z.number().check(z.gte(0), z.lt(limit)), stops: z.optional(positive.check(z.lte(90))) }).check(
+    z.superRefine((r, ctx) => {
+      if (r.min > r.max) ctx.addIssue({ code: 'custom', path: ['min'], message: 'must not exceed max' });
+      if (r.stops !== undefined) {
+        for (const key of ['min', 'max'] as const) if (!onGrid(r[key], r.stops)) ctx.addIssue({ code: 'custom', path: [key], message: `must be a multiple of stops ${r.stops}` });
+        if (limit === 360 && !onGrid(360, r.stops)) ctx.addIssue({ code: 'custom', path: ['stops'], message: 'must divide 360' });
+      }
+    }),
+  );
 }
 
 export const moduleTypeSchema = z
@@ -44,41 +46,40 @@ export const moduleTypeSchema = z
     names: translations,
     /** Length of rail the module occupies, metres. */
     length: positive,
-    ccts: z.array(z.number().int().min(1000).max(20000)).min(1),
-    defaultCct: z.number().int(),
-    beams: z.array(beamSchema).min(1),
+    ccts: z.array(z.number().check(z.int(), z.gte(1000), z.lte(20000))).check(z.minLength(1)),
+    defaultCct: z.number().check(z.int()),
+    beams: z.array(beamSchema).check(z.minLength(1)),
     defaultBeam: nonEmpty,
     /** Takes a colour filter (gel) from the catalog's `filters` (docs/colour-filters.md); absent: no holder. */
-    filterHolder: z.boolean().optional(),
+    filterHolder: z.optional(z.boolean()),
     /** An adjustable head (docs/aiming.md): how far it turns and tilts, degrees; absent: fixed, straight down. */
-    adjustable: z.strictObject({ tilt: aimRangeSchema(180), rotation: aimRangeSchema(360) }).optional(),
+    adjustable: z.optional(z.strictObject({ tilt: aimRangeSchema(180), rotation: aimRangeSchema(360) })),
     /**
      * The luminaire's L3D geometry (docs/gldf.md "L3D in the 3D view"), relative to the web root like
      * a photometry path, e.g. 'geo/track-spot.l3d': the 3D view draws its body, the plan its outline.
      */
-    model: z
-      .string()
-      .regex(/^[\w./-]+\.(l3d|L3D)$/, 'must be a relative path to an .l3d file')
-      .optional(),
+    model: z.optional(z.string().check(z.regex(/^[\w./-]+\.(l3d|L3D)$/, 'must be a relative path to an .l3d file'))),
     /**
      * The light-emitting object of `model` the photometry belongs to (a GLDF emitter's
      * EmitterObjectExternalName, docs/gldf.md); absent: the model's first one facing down.
      */
-    modelEmitter: z.string().min(1).max(200).optional(),
+    modelEmitter: z.optional(z.string().check(z.minLength(1), z.maxLength(200))),
     /** How the CCT follows the level (dimmingCurve.ts, docs/catalog-format.md "Dimming curve"); omitted: constant-cct. */
-    dimming: dimmingCurveSchema.optional(),
+    dimming: z.optional(dimmingCurveSchema),
   })
-  .superRefine((t, ctx) => {
-    if (t.dimming?.curve === 'dim-to-warm') {
-      const d = t.dimming;
-      if (d.cctMin >= d.cctFull) ctx.addIssue({ code: 'custom', path: ['dimming', 'cctMin'], message: `${d.cctMin} K must be below cctFull (${d.cctFull} K)` });
-      if (t.ccts.length !== 1 || t.ccts[0] !== d.cctFull) ctx.addIssue({ code: 'custom', path: ['ccts'], message: `a dim-to-warm type offers exactly its cctFull (${d.cctFull} K)` });
-    }
-    if (t.modelEmitter !== undefined && t.model === undefined) ctx.addIssue({ code: 'custom', path: ['modelEmitter'], message: 'names an object of `model`, which is absent' });
-    if (!t.ccts.includes(t.defaultCct)) ctx.addIssue({ code: 'custom', path: ['defaultCct'], message: `${t.defaultCct} K is not one of ccts` });
-    if (!t.beams.some((b) => b.id === t.defaultBeam)) ctx.addIssue({ code: 'custom', path: ['defaultBeam'], message: `'${t.defaultBeam}' is not a beam id` });
-    if (new Set(t.beams.map((b) => b.id)).size !== t.beams.length) ctx.addIssue({ code: 'custom', path: ['beams'], message: 'beam ids must be unique' });
-  });
+  .check(
+    z.superRefine((t, ctx) => {
+      if (t.dimming?.curve === 'dim-to-warm') {
+        const d = t.dimming;
+        if (d.cctMin >= d.cctFull) ctx.addIssue({ code: 'custom', path: ['dimming', 'cctMin'], message: `${d.cctMin} K must be below cctFull (${d.cctFull} K)` });
+        if (t.ccts.length !== 1 || t.ccts[0] !== d.cctFull) ctx.addIssue({ code: 'custom', path: ['ccts'], message: `a dim-to-warm type offers exactly its cctFull (${d.cctFull} K)` });
+      }
+      if (t.modelEmitter !== undefined && t.model === undefined) ctx.addIssue({ code: 'custom', path: ['modelEmitter'], message: 'names an object of `model`, which is absent' });
+      if (!t.ccts.includes(t.defaultCct)) ctx.addIssue({ code: 'custom', path: ['defaultCct'], message: `${t.defaultCct} K is not one of ccts` });
+      if (!t.beams.some((b) => b.id === t.defaultBeam)) ctx.addIssue({ code: 'custom', path: ['defaultBeam'], message: `'${t.defaultBeam}' is not a beam id` });
+      if (new Set(t.beams.map((b) => b.id)).size !== t.beams.length) ctx.addIssue({ code: 'custom', path: ['beams'], message: 'beam ids must be unique' });
+    }),
+  );
 
 export type ModuleTypeSpec = z.infer<typeof moduleTypeSchema>;
 export type BeamSpec = ModuleTypeSpec['beams'][number];

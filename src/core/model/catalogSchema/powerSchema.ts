@@ -1,5 +1,5 @@
 /** The catalog's power: where feeds may sit, the feed kit, the drivers (docs/model.md, "Power feeds"). */
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import { nonEmpty, positive, price, translations } from './catalogFields';
 
 /** Where the catalog lets power feeds sit: the chain's two ends, its connectors. */
@@ -12,7 +12,7 @@ export const feedSchema = z.strictObject({
   names: translations,
   price,
   /** 'ends': the chain's start and end; 'joints': any connector. A one-rail system has no joints, so 'ends' is required. */
-  positions: z.array(z.enum(FEED_POSITION_KINDS)).min(1),
+  positions: z.array(z.enum(FEED_POSITION_KINDS)).check(z.minLength(1)),
   /** What the rail takes, e.g. '48 V DC'; every driver must supply it. */
   output: nonEmpty,
   /** Driver id a new system's feed gets. */
@@ -28,7 +28,7 @@ export const driverSchema = z.strictObject({
   /** Output, e.g. '48 V DC'; must equal feed.output. */
   output: nonEmpty,
   price,
-  source: z.string().optional(),
+  source: z.optional(z.string()),
 });
 
 export type DriverSpec = z.infer<typeof driverSchema>;

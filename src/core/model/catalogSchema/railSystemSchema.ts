@@ -1,5 +1,5 @@
 /** The catalog's rail system: the rail, its connectors, how it hangs (suspensions) or sits on the ceiling (clips). */
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import { nonEmpty, positive, price, translations } from './catalogFields';
 
 /** Module distributions along a rail; defined precisely in docs/model.md and src/core/model/rails/distribution.ts. */
@@ -17,7 +17,7 @@ export const railSchema = z.strictObject({
   /** Profile width in plan, metres (for footprints and clash tests). */
   width: positive,
   /** Grid a freely placed module's start snaps to, metres from the rail start (docs/model.md, "Free positions"); default: step. */
-  placementStep: positive.optional(),
+  placementStep: z.optional(positive),
   /** Unit price of a rail of length L: base + perMetre·L, rounded to cents. */
   price: z.strictObject({ base: price, perMetre: price }),
 });
@@ -28,21 +28,21 @@ export const connectorSchema = z.strictObject({
   name: nonEmpty,
   names: translations,
   /** 0 for a straight connector, otherwise the corner angle in degrees (used turning left or right); a flexible connector: the turn a new joint gets. */
-  angle: z.number().finite().min(0).lt(180),
+  angle: z.number().check(z.gte(0), z.lt(180)),
   /** Straight: gap between the joined rail ends. Corner or flexible: distance from each rail end to the hinge (corner) point. Metres. */
-  arm: z.number().finite().nonnegative(),
+  arm: z.number().check(z.nonnegative()),
   price,
   /**
    * A flexible-angle (hinge) connector (docs/catalog-format.md): it turns by any multiple of
    * `step` degrees from −maxAngle to +maxAngle, 0 included; setJointTurn adjusts a joint's turn.
    */
-  flex: z.strictObject({ maxAngle: z.number().finite().positive().lt(180), step: z.number().finite().positive() }).optional(),
+  flex: z.optional(z.strictObject({ maxAngle: z.number().check(z.positive(), z.lt(180)), step: z.number().check(z.positive()) })),
   /**
    * Rail ends it joins (docs/catalog-format.md, "Connectors"): 2 (default) for straight, corner and
    * flexible; 3 for a T, 4 for an X. A node of more than two ports takes branches at −angle, 0 and +angle.
    */
-  ports: z.number().int().min(2).max(4).optional(),
-  source: z.string().optional(),
+  ports: z.optional(z.number().check(z.int(), z.gte(2), z.lte(4))),
+  source: z.optional(z.string()),
 });
 
 export const suspensionSchema = z.strictObject({
@@ -61,7 +61,7 @@ export const suspensionSchema = z.strictObject({
   /** Largest overhang of a free chain end past its last suspension point, metres. */
   maxOverhang: positive,
   /** Where the mounting rules come from (free text). */
-  source: z.string().optional(),
+  source: z.optional(z.string()),
 });
 
 /** Mounting the rail directly on the ceiling (setMounting 'surface'): clips instead of suspensions. */
@@ -76,7 +76,7 @@ export const surfaceMountSchema = z.strictObject({
   maxOverhang: positive,
   /** Ceiling to photometric centre of a surface-mounted system, metres. */
   drop: positive,
-  source: z.string().optional(),
+  source: z.optional(z.string()),
 });
 
 export type RailSpec = z.infer<typeof railSchema>;

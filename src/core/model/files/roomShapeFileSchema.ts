@@ -4,10 +4,11 @@
  * walls' own finishes. Part of the room-shape chunk (actions/roomShapeChunk.ts): the file
  * schema takes the shape as it comes (sceneFileSchema.ts) and the reader asks readRoomShape.
  */
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import type { CodedText } from '../../inputError';
 import { ROOM_SHAPE_LIMITS } from '../../room/roomInput';
 import { roomOpeningSchema, roomOutlineSchema, roomSlopeSchema } from '../../room/roomSchema';
+import { safeParseInEnglish } from '../../zodEnglish';
 import { describeIssueCoded, schemaFieldNames } from '../../zodIssues';
 import type { RoomShape } from '../configuration/configuration';
 import { fileReflectanceSchema } from './sceneFileSchema';
@@ -15,16 +16,16 @@ import { fileReflectanceSchema } from './sceneFileSchema';
 // Strict: an unknown (misspelt, or newer) field is refused, never dropped.
 export const roomShapeFileSchema = z.strictObject({
   outline: roomOutlineSchema,
-  slopes: z.array(roomSlopeSchema).max(ROOM_SHAPE_LIMITS.maxCorners),
-  openings: z.array(roomOpeningSchema).max(4 * ROOM_SHAPE_LIMITS.maxCorners),
-  wallReflectance: z.array(fileReflectanceSchema).max(ROOM_SHAPE_LIMITS.maxCorners).optional(),
+  slopes: z.array(roomSlopeSchema).check(z.maxLength(ROOM_SHAPE_LIMITS.maxCorners)),
+  openings: z.array(roomOpeningSchema).check(z.maxLength(4 * ROOM_SHAPE_LIMITS.maxCorners)),
+  wallReflectance: z.optional(z.array(fileReflectanceSchema).check(z.maxLength(ROOM_SHAPE_LIMITS.maxCorners))),
 });
 
 const FIELD_NAMES = schemaFieldNames(roomShapeFileSchema);
 
 /** The shape as read, or its first problem as a coded sentence at its path under `prefix` (configuration.room.shape). */
 export function readRoomShape(value: unknown, prefix: readonly PropertyKey[]): { shape: RoomShape } | { problem: CodedText } {
-  const r = roomShapeFileSchema.safeParse(value);
+  const r = safeParseInEnglish(roomShapeFileSchema, value);
   if (!r.success) return { problem: describeIssueCoded(r.error.issues, FIELD_NAMES, prefix) };
   return { shape: r.data as RoomShape };
 }

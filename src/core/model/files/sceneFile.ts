@@ -23,6 +23,7 @@ import { migrateSceneFile } from './migrations/migrateSceneFile';
 import { SceneFileError } from './sceneFileError';
 import { roomShapeSupport, RoomShapeSupportMissing } from '../configuration/roomShapeSupport';
 import { fileSchema, SCENE_FILE_FORMAT, SCENE_FILE_VERSION, type SceneFile } from './sceneFileSchema';
+import { safeParseInEnglish } from '../../zodEnglish';
 
 /** Largest scene file text (characters), as for lighting scenes. */
 export const MAX_SCENE_FILE_TEXT = INPUT_LIMITS.maxTextLength;
@@ -85,7 +86,7 @@ export function configurationFromData(data: unknown, catalog: Catalog, source = 
     if (e instanceof SceneFileError) throw fileProblem(source, codedText(e.message, e));
     throw e;
   }
-  const r = fileSchema.safeParse(migrated);
+  const r = safeParseInEnglish(fileSchema, migrated);
   if (!r.success) throw fileProblem(source, describeIssueCoded(r.error.issues, FIELD_NAMES));
   if (r.data.catalog !== catalog.id) {
     const theirs = excerpt(r.data.catalog).replace(/^"|"$/g, "'");

@@ -1,5 +1,5 @@
 /** The scene file's structure, as strict zod (unknown fields refused, naming the field), and its version history. */
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import { DISTRIBUTIONS } from '../catalogSchema/railSystemSchema';
 import { MESH_UNITS, MOUNTINGS, WALL_NAMES } from '../configuration/configuration';
 import { SURFACE_NAMES } from '../lightingScene/lightingScene';
@@ -25,10 +25,10 @@ export const SCENE_FILE_VERSION = 9;
  * MAX_REFLECTANCE (0.95, src/core/model/lightingScene/reflectance.ts) in files written before that cap are lowered
  * to it on load (normaliseRoom), so old files keep loading; new files never hold them.
  */
-export const fileReflectanceSchema = z.union([z.number().min(0).lt(1), z.tuple([z.number().min(0).lt(1), z.number().min(0).lt(1), z.number().min(0).lt(1)])]);
-const id = z.string().regex(/^[A-Za-z0-9_-]{1,64}$/, 'must be 1-64 letters, digits, _ or -');
+export const fileReflectanceSchema = z.union([z.number().check(z.gte(0), z.lt(1)), z.tuple([z.number().check(z.gte(0), z.lt(1)), z.number().check(z.gte(0), z.lt(1)), z.number().check(z.gte(0), z.lt(1))])]);
+const id = z.string().check(z.regex(/^[A-Za-z0-9_-]{1,64}$/, 'must be 1-64 letters, digits, _ or -'));
 /** A catalog reference (module type, beam, connector, preset id); validate() checks it exists. */
-const ref = z.string().max(200);
+const ref = z.string().check(z.maxLength(200));
 
 // Strict objects: an unknown (misspelt, or newer) field is refused, never dropped.
 const configurationSchema = z.strictObject({
@@ -37,15 +37,15 @@ const configurationSchema = z.strictObject({
     depth: z.number(),
     height: z.number(),
     // Optional per surface and as a whole: a hand-written file may leave out the finishes, which then default.
-    reflectance: z.strictObject(Object.fromEntries(SURFACE_NAMES.map((s) => [s, fileReflectanceSchema.optional()])) as Record<(typeof SURFACE_NAMES)[number], z.ZodOptional<typeof fileReflectanceSchema>>).optional(),
+    reflectance: z.optional(z.strictObject(Object.fromEntries(SURFACE_NAMES.map((s) => [s, z.optional(fileReflectanceSchema)])) as Record<(typeof SURFACE_NAMES)[number], z.ZodMiniOptional<typeof fileReflectanceSchema>>)),
     // Version 9: the room's shape. Its schema is in the room-shape chunk (roomShapeFileSchema.ts), which the
     // reader asks once this structure has passed (sceneFile.ts); its rules and its fit to width and depth are validate()'s.
-    shape: z.custom<unknown>().optional(),
+    shape: z.optional(z.custom<unknown>()),
   }),
   systems: z.array(
     z.strictObject({
       id,
-      presetId: ref.optional(),
+      presetId: z.optional(ref),
       x: z.number(),
       z: z.number(),
       rotation: z.number(),
@@ -63,29 +63,29 @@ const configurationSchema = z.strictObject({
               cct: z.number(),
               dimming: z.number(),
               // Ranges, the CCT channel's type and overlaps are validate()'s rules (dmx-range, dmx-overlap).
-              dmx: z.strictObject({ universe: z.number(), address: z.number(), resolution: z.union([z.literal(8), z.literal(16)]), cct: z.boolean() }).optional(),
+              dmx: z.optional(z.strictObject({ universe: z.number(), address: z.number(), resolution: z.union([z.literal(8), z.literal(16)]), cct: z.boolean() })),
               // Version 5: a free position (start, metres from the rail start); its rules are validate()'s (module-past-end, module-overlap).
-              offset: z.number().optional(),
+              offset: z.optional(z.number()),
               // Version 7: on/off, colour filter and aim; their rules are validate()'s.
-              on: z.boolean().optional(),
-              filter: ref.optional(),
-              aim: z.strictObject({ rotation: z.number(), tilt: z.number() }).optional(),
+              on: z.optional(z.boolean()),
+              filter: z.optional(ref),
+              aim: z.optional(z.strictObject({ rotation: z.number(), tilt: z.number() })),
             }),
           ),
         }),
       ),
       // Version 8: `parent`, the rail whose end the joint's connector sits on; tree rules are validate()'s (joint-parent, node-*).
-      joints: z.array(z.strictObject({ connector: ref, turn: z.number(), parent: z.number().optional() })),
+      joints: z.array(z.strictObject({ connector: ref, turn: z.number(), parent: z.optional(z.number()) })),
       // Version 4 (`{ end: i }` version 8). Positions, drivers and loads are validate()'s rules (feed-position, unknown-driver, feed-overload).
       feeds: z.array(z.strictObject({ id, at: z.union([z.literal('start'), z.literal('end'), z.strictObject({ joint: z.number() }), z.strictObject({ end: z.number() })]), driver: ref })),
       mounting: z.enum(MOUNTINGS),
       // Version 6: moved fixing points (chain coordinates); their rules are validate()'s (fixing-*).
-      fixings: z.array(z.number()).optional(),
+      fixings: z.optional(z.array(z.number())),
     }),
   ),
   // Version 3; optional so a hand-written file may leave them out (empty).
-  objects: z
-    .array(
+  objects: z.optional(
+    z.array(
       z.strictObject({
         id,
         source: z.discriminatedUnion('kind', [z.strictObject({ kind: z.literal('library'), item: ref }), z.strictObject({ kind: z.literal('imported'), mesh: id })]),
@@ -93,36 +93,36 @@ const configurationSchema = z.strictObject({
         yaw: z.number(),
         scale: z.number(),
         // Material names and finish ids are checked against the mesh and the finish list by validate().
-        finishes: z.record(z.string().max(200), z.union([ref, z.tuple([z.number(), z.number(), z.number()])])),
+        finishes: z.record(z.string().check(z.maxLength(200)), z.union([ref, z.tuple([z.number(), z.number(), z.number()])])),
       }),
-    )
-    .optional(),
-  importedMeshes: z
-    .record(
+    ),
+  ),
+  importedMeshes: z.optional(
+    z.record(
       id,
       z.strictObject({
-        name: z.string().max(200),
+        name: z.string().check(z.maxLength(200)),
         units: z.enum(MESH_UNITS),
         // base64 of the little-endian typed arrays (meshCodec.ts).
         positions: z.string(),
         indices: z.string(),
         materialOfTriangle: z.string(),
-        materials: z.array(z.strictObject({ name: z.string().max(200), reflectance: z.tuple([z.number().min(0).lt(1), z.number().min(0).lt(1), z.number().min(0).lt(1)]) })),
+        materials: z.array(z.strictObject({ name: z.string().check(z.maxLength(200)), reflectance: z.tuple([z.number().check(z.gte(0), z.lt(1)), z.number().check(z.gte(0), z.lt(1)), z.number().check(z.gte(0), z.lt(1))]) })),
       }),
-    )
-    .optional(),
+    ),
+  ),
   // Version 7: light scenes (cues); names, fades, module ids and looks are validate()'s rules.
-  lightScenes: z
-    .array(
+  lightScenes: z.optional(
+    z.array(
       z.strictObject({
         id,
-        name: z.string().max(200),
+        name: z.string().check(z.maxLength(200)),
         fade: z.number(),
-        looks: z.record(id, z.strictObject({ on: z.boolean(), level: z.number(), cct: z.number(), filter: ref.optional() })),
+        looks: z.record(id, z.strictObject({ on: z.boolean(), level: z.number(), cct: z.number(), filter: z.optional(ref) })),
       }),
-    )
-    .optional(),
-  nextId: z.number().int().positive(),
+    ),
+  ),
+  nextId: z.number().check(z.int(), z.positive()),
 });
 
 /** The typed structure the reader parses with (sceneFileSchema is the same, for walking). */
@@ -134,6 +134,6 @@ export const fileSchema = z.strictObject({
 });
 
 /** The structure zod checks (tests walk it to reach every numeric field). */
-export const sceneFileSchema: z.ZodType = fileSchema;
+export const sceneFileSchema: z.ZodMiniType = fileSchema;
 
 export type SceneFile = z.infer<typeof fileSchema>;

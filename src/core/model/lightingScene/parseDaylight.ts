@@ -14,7 +14,7 @@
  *
  * Every refusal is one line `source: path: problem`, the path as the author wrote it.
  */
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import { CITIES, cityNamed } from '../../daylight/cities';
 import { GLAZING_PRESETS, glazingFrom, type Glazing, type GlazingPreset } from '../../daylight/glazing';
 import { DEFAULT_GROUND_REFLECTANCE } from '../../daylight/skies';
@@ -22,6 +22,7 @@ import { solarPosition } from '../../daylight/solarPosition';
 import { excerpt } from '../../untrustedJson';
 import { describeIssues, schemaFieldNames, suggestField } from '../../zodIssues';
 import { LightingSceneError } from './parseLightingScene';
+import { safeParseInEnglish } from '../../zodEnglish';
 
 export const DAYLIGHT_LIMITS = {
   maxWindows: 100,
@@ -80,25 +81,27 @@ export interface SceneDaylight {
 }
 
 const show = (value: unknown): string => excerpt(value);
-const finite = z.number({ error: (i) => (i.input === undefined ? 'is missing' : `must be a number, got ${show(i.input)}`) }).refine(Number.isFinite, 'must be a finite number');
-const atLeastZero = finite.refine((v) => v >= 0, { error: (i) => `${show(i.input)} m is negative` });
-const positive = finite.refine((v) => v > 0, { error: (i) => `${show(i.input)} m must be greater than 0` });
-const illuminance = finite.refine((v) => v > 0 && v <= DAYLIGHT_LIMITS.maxIlluminance, { error: (i) => `${show(i.input)} lx is outside (0, ${DAYLIGHT_LIMITS.maxIlluminance}] lx` });
+const finite = z.number({ error: (i) => (i.input === undefined ? 'is missing' : `must be a number, got ${show(i.input)}`) }).check(z.refine(Number.isFinite, 'must be a finite number'));
+const atLeastZero = finite.check(z.refine((v) => v >= 0, { error: (i) => `${show(i.input)} m is negative` }));
+const positive = finite.check(z.refine((v) => v > 0, { error: (i) => `${show(i.input)} m must be greater than 0` }));
+const illuminance = finite.check(z.refine((v) => v > 0 && v <= DAYLIGHT_LIMITS.maxIlluminance, { error: (i) => `${show(i.input)} lx is outside (0, ${DAYLIGHT_LIMITS.maxIlluminance}] lx` }));
 const PRESETS = Object.keys(GLAZING_PRESETS) as GlazingPreset[];
-const transmittance = z.union([finite.refine((v) => v >= 0 && v <= 1, { error: (i) => `transmittance ${show(i.input)} is outside 0 … 1 (1 = an open window)` }), z.enum(PRESETS as [GlazingPreset, ...GlazingPreset[]])], {
+const transmittance = z.union([finite.check(z.refine((v) => v >= 0 && v <= 1, { error: (i) => `transmittance ${show(i.input)} is outside 0 … 1 (1 = an open window)` })), z.enum(PRESETS as [GlazingPreset, ...GlazingPreset[]])], {
   error: (i) => `must be a number in 0 … 1 or "single", "double" or "triple", got ${show(i.input)}`,
 });
 
 const windowSchema = z.strictObject(
   {
-    wall: z.string({ error: (i) => (i.input === undefined ? 'is missing' : `must be a wall name, got ${show(i.input)}`) }).refine((w) => (WINDOW_WALLS as readonly string[]).includes(w), {
-      error: (i) => (i.input === 'floor' ? 'a window in the floor sees no sky (ceiling, north, south, west or east)' : `${show(i.input)} is not a wall: ceiling, north, south, west or east`),
-    }),
+    wall: z.string({ error: (i) => (i.input === undefined ? 'is missing' : `must be a wall name, got ${show(i.input)}`) }).check(
+      z.refine((w) => (WINDOW_WALLS as readonly string[]).includes(w), {
+        error: (i) => (i.input === 'floor' ? 'a window in the floor sees no sky (ceiling, north, south, west or east)' : `${show(i.input)} is not a wall: ceiling, north, south, west or east`),
+      }),
+    ),
     u: atLeastZero,
     v: atLeastZero,
     width: positive,
     height: positive,
-    transmittance: transmittance.optional(),
+    transmittance: z.optional(transmittance),
   },
   { error: 'must be an object' },
 );
@@ -109,25 +112,27 @@ const ZONE = /^(?:Z|([+-])(\d{2}):(\d{2}))$/;
 
 const sunSchema = z.strictObject(
   {
-    city: z.string({ error: 'must be a city name' }).optional(),
-    latitude: finite.refine((v) => v >= -90 && v <= 90, { error: (i) => `${show(i.input)}° is outside −90 … 90° (north positive)` }).optional(),
-    longitude: finite.refine((v) => v >= -180 && v <= 180, { error: (i) => `${show(i.input)}° is outside −180 … 180° (east positive)` }).optional(),
-    timeZone: z.string({ error: 'must be an offset like "+01:00" (hours ahead of UTC)' }).optional(),
+    city: z.optional(z.string({ error: 'must be a city name' })),
+    latitude: z.optional(finite.check(z.refine((v) => v >= -90 && v <= 90, { error: (i) => `${show(i.input)}° is outside −90 … 90° (north positive)` }))),
+    longitude: z.optional(finite.check(z.refine((v) => v >= -180 && v <= 180, { error: (i) => `${show(i.input)}° is outside −180 … 180° (east positive)` }))),
+    timeZone: z.optional(z.string({ error: 'must be an offset like "+01:00" (hours ahead of UTC)' })),
     date: z.string({ error: (i) => (i.input === undefined ? 'is missing (YYYY-MM-DD)' : 'must be a date "YYYY-MM-DD"') }),
     time: z.string({ error: (i) => (i.input === undefined ? 'is missing (HH:MM)' : 'must be a clock time "HH:MM" or "HH:MM:SS"') }),
-    horizontalIlluminance: illuminance.optional(),
+    horizontalIlluminance: z.optional(illuminance),
   },
   { error: (i) => (i.input === undefined ? 'is missing' : 'must be an object') },
 );
 
 const skySchema = z.strictObject(
   {
-    type: z.string({ error: (i) => (i.input === undefined ? 'is missing ("uniform", "cie-overcast" or "cie-clear")' : `must be a sky type, got ${show(i.input)}`) }).refine((t) => (SKY_TYPES as readonly string[]).includes(t), {
-      error: (i) => `${show(i.input)} is not a sky type: "uniform", "cie-overcast" or "cie-clear"`,
-    }),
-    horizontalIlluminance: illuminance.optional(),
-    groundReflectance: finite.refine((v) => v >= 0 && v < 1, { error: (i) => `ground reflectance ${show(i.input)} is outside [0, 1)` }).optional(),
-    sun: sunSchema.optional(),
+    type: z.string({ error: (i) => (i.input === undefined ? 'is missing ("uniform", "cie-overcast" or "cie-clear")' : `must be a sky type, got ${show(i.input)}`) }).check(
+      z.refine((t) => (SKY_TYPES as readonly string[]).includes(t), {
+        error: (i) => `${show(i.input)} is not a sky type: "uniform", "cie-overcast" or "cie-clear"`,
+      }),
+    ),
+    horizontalIlluminance: z.optional(illuminance),
+    groundReflectance: z.optional(finite.check(z.refine((v) => v >= 0 && v < 1, { error: (i) => `ground reflectance ${show(i.input)} is outside [0, 1)` }))),
+    sun: z.optional(sunSchema),
   },
   { error: 'must be an object' },
 );
@@ -140,8 +145,8 @@ const refuse = (source: string, path: string, problem: string): never => {
 };
 
 /** Zod's first problem as `source: path: problem`, the path under `prefix`. */
-function parseWith<T>(schema: z.ZodType<T>, json: unknown, source: string, prefix: PropertyKey[]): T {
-  const r = schema.safeParse(json);
+function parseWith<T>(schema: z.ZodMiniType<T>, json: unknown, source: string, prefix: PropertyKey[]): T {
+  const r = safeParseInEnglish(schema, json);
   if (!r.success) throw new LightingSceneError(`${source}: ${describeIssues(r.error.issues, FIELD_NAMES, prefix)}`);
   return r.data;
 }
@@ -293,7 +298,7 @@ export function parseOpeningGlazing(openings: unknown, source: string): Map<numb
       out.set(i, glazingFrom(DEFAULT_TRANSMITTANCE));
       return;
     }
-    const r = transmittance.safeParse(rec.transmittance);
+    const r = safeParseInEnglish(transmittance, rec.transmittance);
     if (!r.success) refuse(source, path, r.error.issues[0].message);
     else out.set(i, glazingFrom(r.data));
   });

@@ -9,7 +9,7 @@
  * `scene.json: luminaires[2].position[1]: 3.1 m is above the ceiling (height 2.8 m)`.
  * Limits are in SCENE_LIMITS and docs/scene-format.md.
  */
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import { InputError } from '../../inputError';
 import { NEAR_FIELD_MODELS, SURFACE_NAMES, type LightingRoom, type LightingScene, type SurfaceName } from './lightingScene';
 import { normaliseRoom, type Room as ShapedRoom } from '../../room/normaliseRoom';
@@ -19,6 +19,7 @@ import { roomSchema } from '../../room/roomSchema';
 import { boxReflectanceOf } from './boxWallFacing';
 import { excerpt, jsonShapeProblem, oneLine } from '../../untrustedJson';
 import { describeIssues, schemaFieldNames } from '../../zodIssues';
+import { safeParseInEnglish } from '../../zodEnglish';
 
 export class LightingSceneError extends InputError {
   override name = 'LightingSceneError';
@@ -52,35 +53,39 @@ export const OBJECT_ROOM_TOLERANCE = 0.01;
 /** A value as the user wrote it (NaN stays NaN, not JSON's null), bounded in length. */
 const show = (value: unknown): string => excerpt(value);
 
-const finite = z.number({ error: (i) => (i.input === undefined ? 'is missing' : `must be a number, got ${show(i.input)}`) }).refine(Number.isFinite, 'must be a finite number');
-const dimension = finite.refine((v) => v >= SCENE_LIMITS.minDimension && v <= SCENE_LIMITS.maxDimension, { error: (i) => `${show(i.input)} m is outside ${SCENE_LIMITS.minDimension}..${SCENE_LIMITS.maxDimension} m` });
-const reflectanceValue = finite.refine((v) => v >= 0 && v < 1, {
-  error: (i) => `reflectance ${show(i.input)} is outside [0, 1) (at 1 a closed room would never lose light)`,
-});
+const finite = z.number({ error: (i) => (i.input === undefined ? 'is missing' : `must be a number, got ${show(i.input)}`) }).check(z.refine(Number.isFinite, 'must be a finite number'));
+const dimension = finite.check(z.refine((v) => v >= SCENE_LIMITS.minDimension && v <= SCENE_LIMITS.maxDimension, { error: (i) => `${show(i.input)} m is outside ${SCENE_LIMITS.minDimension}..${SCENE_LIMITS.maxDimension} m` }));
+const reflectanceValue = finite.check(
+  z.refine((v) => v >= 0 && v < 1, {
+    error: (i) => `reflectance ${show(i.input)} is outside [0, 1) (at 1 a closed room would never lose light)`,
+  }),
+);
 const reflectance = z.union([reflectanceValue, z.tuple([reflectanceValue, reflectanceValue, reflectanceValue])], {
   error: (i) => (i.input === undefined ? 'is missing' : `must be a number in [0, 1) or [r, g, b], got ${show(i.input)}`),
 });
 const vec3 = z.tuple([finite, finite, finite], { error: (i) => `must be [x, y, z] in metres, got ${show(i.input)}` });
-const angle = finite.optional();
+const angle = z.optional(finite);
 
 /** A mesh file luxbox reads, or the configurator's `object:<id>` (docs/scene-format.md, "Objects"). */
 const MESH_REFERENCE = /(\.(obj|gltf|glb)$)|(^object:)/i;
 
 const sceneObject = z.strictObject(
   {
-    mesh: z
-      .string({ error: 'must be a path to an OBJ, glTF or GLB file' })
-      .min(1, 'must not be empty')
-      .refine((p) => MESH_REFERENCE.test(p), { error: (i) => `${show(i.input)} is not an .obj, .gltf or .glb file` }),
+    mesh: z.string({ error: 'must be a path to an OBJ, glTF or GLB file' }).check(
+      z.minLength(1, 'must not be empty'),
+      z.refine((p) => MESH_REFERENCE.test(p), { error: (i) => `${show(i.input)} is not an .obj, .gltf or .glb file` }),
+    ),
     position: vec3,
     yaw: angle,
-    scale: finite
-      .refine((v) => v >= SCENE_LIMITS.minObjectScale && v <= SCENE_LIMITS.maxObjectScale, {
-        error: (i) => `scale ${show(i.input)} is outside ${SCENE_LIMITS.minObjectScale}..${SCENE_LIMITS.maxObjectScale}`,
-      })
-      .optional(),
-    reflectance: reflectance.optional(),
-    id: z.string({ error: 'must be a string' }).optional(),
+    scale: z.optional(
+      finite.check(
+        z.refine((v) => v >= SCENE_LIMITS.minObjectScale && v <= SCENE_LIMITS.maxObjectScale, {
+          error: (i) => `scale ${show(i.input)} is outside ${SCENE_LIMITS.minObjectScale}..${SCENE_LIMITS.maxObjectScale}`,
+        }),
+      ),
+    ),
+    reflectance: z.optional(reflectance),
+    id: z.optional(z.string({ error: 'must be a string' })),
   },
   { error: 'must be an object' },
 );
@@ -88,10 +93,10 @@ const sceneObject = z.strictObject(
 const schema = z.strictObject(
   {
     version: z.union([z.literal(1), z.literal(2)]),
-    nearField: z.enum(NEAR_FIELD_MODELS, { error: (i) => `must be "split" or "point", got ${show(i.input)}` }).optional(),
-    objects: z.array(sceneObject, { error: 'must be an array' }).max(SCENE_LIMITS.maxObjects, `more than ${SCENE_LIMITS.maxObjects} objects`).optional(),
+    nearField: z.optional(z.enum(NEAR_FIELD_MODELS, { error: (i) => `must be "split" or "point", got ${show(i.input)}` })),
+    objects: z.optional(z.array(sceneObject, { error: 'must be an array' }).check(z.maxLength(SCENE_LIMITS.maxObjects, `more than ${SCENE_LIMITS.maxObjects} objects`))),
     // Checked before zod (a clear "not baked yet"); only empty lists reach here.
-    windows: z.array(z.never()).optional(),
+    windows: z.optional(z.array(z.never())),
     room: z.strictObject(
       {
         width: dimension,
@@ -107,34 +112,31 @@ const schema = z.strictObject(
       .array(
         z.strictObject(
           {
-            photometry: z.string({ error: 'must be a path to an IES or LDT file' }).min(1, 'must not be empty'),
+            photometry: z.string({ error: 'must be a path to an IES or LDT file' }).check(z.minLength(1, 'must not be empty')),
             position: vec3,
             yaw: angle,
             pitch: angle,
             roll: angle,
-            dimming: finite.refine((v) => v >= 0 && v <= 1, { error: (i) => `dimming ${show(i.input)} is outside 0..1` }).optional(),
-            color: z
-              .tuple([finite, finite, finite], { error: 'must be [r, g, b]' })
-              .refine((c) => c.every((x) => x >= 0 && x <= SCENE_LIMITS.maxColor), `colour components must lie in 0..${SCENE_LIMITS.maxColor}`)
-              .optional(),
-            id: z.string({ error: 'must be a string' }).optional(),
+            dimming: z.optional(finite.check(z.refine((v) => v >= 0 && v <= 1, { error: (i) => `dimming ${show(i.input)} is outside 0..1` }))),
+            color: z.optional(z.tuple([finite, finite, finite], { error: 'must be [r, g, b]' }).check(z.refine((c) => c.every((x) => x >= 0 && x <= SCENE_LIMITS.maxColor), `colour components must lie in 0..${SCENE_LIMITS.maxColor}`))),
+            id: z.optional(z.string({ error: 'must be a string' })),
           },
           { error: 'must be an object' },
         ),
         { error: (i) => (i.input === undefined ? 'is missing' : 'must be an array') },
       )
-      .max(SCENE_LIMITS.maxLuminaires, `more than ${SCENE_LIMITS.maxLuminaires} luminaires`),
+      .check(z.maxLength(SCENE_LIMITS.maxLuminaires, `more than ${SCENE_LIMITS.maxLuminaires} luminaires`)),
   },
   { error: 'a lighting scene must be a JSON object' },
 );
 
 /** Version 3 (issue 29): a version-2 scene whose room is any shape (roomSchema: outline, height, slopes, openings, reflectance). */
-const schemaV3 = schema.extend({ version: z.literal(3), room: roomSchema });
+const schemaV3 = z.extend(schema, { version: z.literal(3), room: roomSchema });
 
 /** The structure zod checks (tests walk it to reach every numeric field). */
-export const lightingSceneSchema: z.ZodType = schema;
+export const lightingSceneSchema: z.ZodMiniType = schema;
 /** The version-3 structure. */
-export const lightingSceneSchemaV3: z.ZodType = schemaV3;
+export const lightingSceneSchemaV3: z.ZodMiniType = schemaV3;
 
 const FIELD_NAMES = new Set([...schemaFieldNames(schema), ...schemaFieldNames(schemaV3), 'sky']);
 
@@ -185,7 +187,7 @@ export function parseLightingScene(json: unknown, source: string): LightingScene
   const problem = jsonShapeProblem(json) ?? versionProblem(json);
   if (problem) throw new LightingSceneError(`${source}: ${problem}`);
   if ((json as { version: unknown }).version === 3) return parseVersion3(json, source);
-  const result = schema.safeParse(json);
+  const result = safeParseInEnglish(schema, json);
   if (!result.success) {
     // Report the first problem with its field path: one line, as the CLI prints it.
     const described = describeIssues(result.error.issues, FIELD_NAMES);
@@ -272,7 +274,7 @@ const round3 = (v: number): number => Math.round(v * 1000) / 1000;
  * the ceiling and every slope); an object's whole mesh is checked once loaded (resolveBakeScene).
  */
 function parseVersion3(json: unknown, source: string): LightingScene {
-  const result = schemaV3.safeParse(json);
+  const result = safeParseInEnglish(schemaV3, json);
   if (!result.success) throw new LightingSceneError(`${source}: ${describeIssues(result.error.issues, FIELD_NAMES).replace(/^\(root\): /, '')}`);
   const { nearField, room: input, luminaires, objects } = result.data;
   // roomSchema has checked every rule normaliseRoom enforces, so this never throws here.

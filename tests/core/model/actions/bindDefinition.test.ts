@@ -4,7 +4,7 @@
  * deliberately careless definition (its own isEnabled always true) shows it.
  */
 import { describe, expect, it, vi } from 'vitest';
-import { z } from 'zod';
+import { z } from 'zod/mini';
 import { InputError } from '../../../../src/core/inputError';
 import type { ActionDefinition } from '../../../../src/core/model/actions/action';
 import { actionDefinitions } from '../../../../src/core/model/actions/actionDefinitions';

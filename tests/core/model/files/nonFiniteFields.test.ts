@@ -8,7 +8,7 @@
  */
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import type { z } from 'zod';
+import type { z } from 'zod/mini';
 import { livingRoom } from '../../../../src/core/catalog/furnishedPresets';
 import { attemptAction } from '../../../../src/core/model/actions/actionDefinitions';
 import { composeParts, boxPart } from '../../../../src/core/model/objects/furniture/meshParts';
@@ -56,7 +56,7 @@ function withValue(doc: unknown, path: Path, value: number): unknown {
  * The shapes (keys, indices dropped) of every number a zod schema declares, record keys as `*`.
  * Walks the same zod 4 definitions as untrustedJson's schemaFieldNames.
  */
-function schemaNumberShapes(schema: z.ZodType): Set<string> {
+function schemaNumberShapes(schema: z.ZodMiniType): Set<string> {
   const out = new Set<string>();
   const visit = (s: unknown, at: string[], depth: number): void => {
     const def = (s as { _zod?: { def?: Record<string, unknown> } })?._zod?.def;
