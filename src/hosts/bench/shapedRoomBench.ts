@@ -91,7 +91,7 @@ export const SHAPED_SCENES: readonly ShapedBenchScene[] = [
   },
 ];
 
-/** Default samples and bounces at two texel sizes, and 4× the samples (what the first bounce from a hot spot on a chart needs). */
+/** Default samples and bounces at two texel sizes, and 4× the samples (to tell noise from bias). */
 export const SHAPED_LADDER: readonly BenchQuality[] = [
   { texelSize: 0.1, samples: 64, bounces: 4 },
   { texelSize: 0.05, samples: 64, bounces: 4 },
@@ -118,7 +118,8 @@ export interface ShapedBenchScenePart {
   rows: ShapedBenchRow[];
 }
 
-export function runShapedRoomBench(baker: Baker, root: string, log: (line: string) => void): ShapedBenchScenePart[] {
+/** The bench's shaped rooms; `ladder` (default SHAPED_LADDER) is what each is baked at (a shorter one for a quick measurement). */
+export function runShapedRoomBench(baker: Baker, root: string, log: (line: string) => void, ladder: readonly BenchQuality[] = SHAPED_LADDER): ShapedBenchScenePart[] {
   const parts: ShapedBenchScenePart[] = [];
   for (const s of SHAPED_SCENES) {
     const files: Record<string, Photometry> = {};
@@ -136,7 +137,7 @@ export function runShapedRoomBench(baker: Baker, root: string, log: (line: strin
       luminaires: s.luminaires.map((l) => ({ ...l, photometry: files[l.photometry], dimming: 1, color: [1, 1, 1] })),
     };
     const rows: ShapedBenchRow[] = [];
-    for (const quality of SHAPED_LADDER) {
+    for (const quality of ladder) {
       const measure = (brightPatches?: number) => {
         const settings = { ...quality, sourceSpacing: 0.05, ...(brightPatches === undefined ? {} : { brightPatches }) };
         baker.bake(scene, { ...settings, samples: 16, bounces: 1 });
