@@ -35,6 +35,13 @@ import { rectFormFactor } from './rectFormFactor.glsl';
 /** The objects' BVH the shadow rays go through (its texture width), or null: the empty room. */
 export interface BrightPatchOcclusion {
   bvhWidth: number;
+  /**
+   * Patches on the objects' atlas charts too (source index ≥ ATLAS_SOURCE = 6, a shaped room's
+   * surfaces and its furniture): such a patch emits only on its front side (cross(hu, hv) is the
+   * chart's front normal, src/engines/bake/tileFrame.ts), where a wall's patch in the box emits
+   * into the whole box.
+   */
+  charts?: boolean;
 }
 
 /** Form factor dA(p, n) → rectangle, the rectangle clipped to the half-space in front of p (needs rectFormFactor's contourEdge). */
@@ -58,6 +65,10 @@ float clippedRectFormFactor(vec3 p, vec3 n, vec3 centre, vec3 halfU, vec3 halfV)
 }
 `;
 
+/** A chart's patch lights only what lies in front of it (a wall of a shaped room has the outside behind it, a table top the floor under it). */
+const oneSidedCharts = /* glsl */ `    if (a.w > 5.5 && dot(cross(hu, hv), a.xyz - p) >= 0.0) continue;
+`;
+
 /** The GLSL of `brightPatchIrradiance` and what it needs; the BVH samplers are objectTracing's (uBvhNodes, uBvhTriangles). */
 export function brightPatchGather(objects: BrightPatchOcclusion | null): string {
   const nearField = objects ? 'clippedRectFormFactor' : 'rectFormFactor';
@@ -74,7 +85,7 @@ ${objects ? `${objectTracing(objects.bvhWidth)}${clippedRectFormFactor}` : ''}ve
     if (int(a.w + 0.5) == receiver) continue;
     vec3 hu = texelFetch(patches, ivec2(1, k), 0).xyz;
     vec3 hv = texelFetch(patches, ivec2(2, k), 0).xyz;
-    vec3 m = texelFetch(patches, ivec2(3, k), 0).rgb;
+${objects?.charts ? oneSidedCharts : ''}    vec3 m = texelFetch(patches, ivec2(3, k), 0).rgb;
     vec3 toPatch = a.xyz - p;
     float d2 = dot(toPatch, toPatch);
     float size2 = max(dot(hu, hu), dot(hv, hv));

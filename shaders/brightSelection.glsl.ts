@@ -5,10 +5,11 @@
  * reading it back.
  *
  * The surface table `uSurfaces` has one row per reflecting surface, in the CPU selection's order,
- * five texels: 0 (atlas column of its first tile, tiles along u, tiles along v, texels per tile
+ * seven texels: 0 (atlas column of its first tile, tiles along u, tiles along v, texels per tile
  * edge), 1 (width, height in texels, texel edge du, dv in metres), 2 (length u, length v, global
- * index of its first tile, surface index), 3 (ρ.rgb, index of the u axis), 4 (origin.xyz, index of
- * the v axis). A tile's global index g = first + iv·tilesU + iu is the CPU's candidate order
+ * index of its first tile, source index), 3 (ρ.rgb, index of the u axis), 4 (origin.xyz, index of
+ * the v axis), 5 (unit u axis, vSign), 6 (unit v axis, 0); texels 5 and 6 are read only where the
+ * objects' atlas charts are candidates (src/engines/bake/tileFrame.ts). A tile's global index g = first + iv·tilesU + iu is the CPU's candidate order
  * (surfaces in order, tiles row by row), so ranking by (score descending, g ascending) is
  * JavaScript's stable sort by score.
  *
@@ -254,6 +255,30 @@ void main() {
 `,
 );
 
+/** The rectangle of a patch on a room surface of the box: the surface's axes are world axes (texels 3 and 4's w). */
+const boxFrameRectangle = /* glsl */ `      int uAxis = int(rhoU.w);
+      int vAxis = int(originV.w);
+      vec3 centre = originV.xyz;
+      centre[uAxis] = cu;
+      centre[vAxis] = cv;
+      vec3 hu = vec3(0.0);
+      hu[uAxis] = halfU;
+      vec3 hv = vec3(0.0);
+      hv[vAxis] = halfV;
+`;
+
+/**
+ * The same with any frame (a scene whose atlas charts are candidates: docs/baker.md "Rooms of any
+ * shape"): texel 5 = (unit u axis, vSign), texel 6 = (unit v axis, 0); hv along vSign·v so that
+ * cross(hu, hv) is a chart's front normal. On a box surface's row it gives the box's numbers.
+ */
+const chartFrameRectangle = /* glsl */ `      vec4 axisU = surfaceRow(s, 5);
+      vec3 axisV = surfaceRow(s, 6).xyz;
+      vec3 centre = originV.xyz + cu * axisU.xyz + cv * axisV;
+      vec3 hu = halfU * axisU.xyz;
+      vec3 hv = (halfV * axisU.w) * axisV;
+`;
+
 /**
  * The patch table (src/engines/bake/patchTable.ts layout; row k = patch k, texel 1's w = the tile's
  * global index) from the ranked candidate list, by the CPU's loop: take candidates in order while
@@ -263,7 +288,7 @@ void main() {
  * the last patch hold the sentinel (surface index −1); row uRows holds (count, peakedness,
  * residual peakedness, 0) for the report.
  */
-export const patchTablePass = (luminance: readonly [number, number, number]) =>
+export const patchTablePass = (luminance: readonly [number, number, number], charts = false) =>
   fragmentPass(
     {
       uList: 'sampler2D',
@@ -313,16 +338,7 @@ void main() {
       // A uniform rectangle with the same mean and variance has half edge √3·σ; kept in the tile.
       float halfU = max(1e-4, min(min(sqrt(3.0 * varU), cu - e.x), e.z - cu));
       float halfV = max(1e-4, min(min(sqrt(3.0 * varV), cv - e.y), e.w - cv));
-      int uAxis = int(rhoU.w);
-      int vAxis = int(originV.w);
-      vec3 centre = originV.xyz;
-      centre[uAxis] = cu;
-      centre[vAxis] = cv;
-      vec3 hu = vec3(0.0);
-      hu[uAxis] = halfU;
-      vec3 hv = vec3(0.0);
-      hv[vAxis] = halfV;
-      vec3 flux = max(vec3(0.0), sums.rgb) * rhoU.rgb;
+${charts ? chartFrameRectangle : boxFrameRectangle}      vec3 flux = max(vec3(0.0), sums.rgb) * rhoU.rgb;
       float rectArea = 4.0 * halfU * halfV;
       if (p.x == 0) texel = vec4(centre, surfaceRow(s, 2).w);
       else if (p.x == 1) texel = vec4(hu, key.y);

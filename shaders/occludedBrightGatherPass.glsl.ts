@@ -25,13 +25,21 @@ export const occludedBrightGatherUniforms = {
   uNormals: 'sampler2D',
 } as const;
 
-export function occludedBrightGatherPass(bvhWidth: number): FragmentPass<typeof occludedBrightGatherUniforms> {
+/** An atlas texel's own chart as the receiver: source 6 + chart id = 5 + (chart id + 1). */
+const ownChart = `
+    receiver = 5 + int(texelFetch(uNormals, texel, 0).a + 0.5);`;
+
+/**
+ * `charts`: the patch table holds patches on atlas charts (source ATLAS_SOURCE + chart): an atlas
+ * texel skips those of its own chart (normal's a = chart id + 1), as a wall skips its own.
+ */
+export function occludedBrightGatherPass(bvhWidth: number, charts = false): FragmentPass<typeof occludedBrightGatherUniforms> {
   return fragmentPass(
     occludedBrightGatherUniforms,
-    /* glsl */ `${brightPatchGather({ bvhWidth })}out vec4 outColor;
+    /* glsl */ `${brightPatchGather({ bvhWidth, ...(charts ? { charts } : {}) })}out vec4 outColor;
 void main() {
   vec3 p;
-  vec3 normal;
+  vec3 normal;${charts ? '\n  int receiver = uSurface;' : ''}
   if (uFromAtlas == 1) {
     ivec2 texel = ivec2(gl_FragCoord.xy);
     vec4 point = texelFetch(uPoints, texel, 0);
@@ -40,13 +48,13 @@ void main() {
       return;
     }
     p = point.xyz;
-    normal = normalize(texelFetch(uNormals, texel, 0).xyz);
+    normal = normalize(texelFetch(uNormals, texel, 0).xyz);${charts ? ownChart : ''}
   } else {
     vec2 uv = gl_FragCoord.xy / uResolution;
     p = uOrigin + uAxisU * uv.x + uAxisV * uv.y;
     normal = uNormal;
   }
-  outColor = vec4(brightPatchIrradiance(uPatches, uPatchCount, uSurface, p, normal), 1.0);
+  outColor = vec4(brightPatchIrradiance(uPatches, uPatchCount, ${charts ? 'receiver' : 'uSurface'}, p, normal), 1.0);
 }
 `,
   );

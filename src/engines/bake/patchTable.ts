@@ -1,5 +1,4 @@
 import type { BrightPatch } from './selectBrightPatches';
-import { axisVector, type SurfaceLayout } from './surfaceLayout';
 
 /** Texels per patch in the patch table (one row per patch). */
 export const PATCH_TABLE_WIDTH = 4;
@@ -9,12 +8,11 @@ export const PATCH_TABLE_WIDTH = 4;
  * one RGBA row per patch, (centre.xyz, surface index), (half edge along u as a
  * world vector, 0), (half edge along v, 0), (exitance M.rgb, 0).
  */
-export function patchTable(patches: readonly BrightPatch[], layouts: readonly SurfaceLayout[]): Float32Array {
+export function patchTable(patches: readonly BrightPatch[]): Float32Array {
   const data = new Float32Array(patches.length * PATCH_TABLE_WIDTH * 4);
   patches.forEach((p, k) => {
-    const layout = layouts[p.surface];
-    const hu = axisVector(layout.uAxisIndex, p.halfU);
-    const hv = axisVector(layout.vAxisIndex, p.halfV);
+    const hu = p.axisU.map((x) => x * p.halfU);
+    const hv = p.axisV.map((x) => x * p.halfV);
     data.set([...p.centre, p.surface, ...hu, 0, ...hv, 0, ...p.exitance, 0], PATCH_TABLE_WIDTH * 4 * k);
   });
   return data;

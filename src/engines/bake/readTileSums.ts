@@ -1,4 +1,5 @@
 import type { Rgb } from '../../core/model/lightingScene/lightingScene';
+import { chartTileSumPass } from '../../../shaders/chartTileSumPass.glsl';
 import { tileSumPass } from '../../../shaders/tileSumPass.glsl';
 import { LUMINANCE_WEIGHTS } from './bakedMaps';
 import { readRgba, type FloatTarget } from './floatTarget';
@@ -6,19 +7,36 @@ import { runPass, type PassProgram } from './runPass';
 import type { SurfaceTileSums } from './selectBrightPatches';
 import type { SurfaceLayout } from './surfaceLayout';
 import type { TargetPool } from './targetPool';
+import { layoutTileFrame, type TileFrame } from './tileFrame';
 
 /** Texels per tile edge for a target tile size (metres). */
-export function tileTexels(layout: SurfaceLayout, tileSize: number): number {
+export function tileTexels(layout: Pick<SurfaceLayout, 'lengthU' | 'lengthV' | 'width' | 'height'>, tileSize: number): number {
   const texel = Math.max(layout.lengthU / layout.width, layout.lengthV / layout.height);
   return Math.max(1, Math.round(tileSize / texel));
 }
 
 /** The tile-sum pass as compiled for the baker's luminance weights. */
 export const tileSums = tileSumPass(LUMINANCE_WEIGHTS);
+/** The same for a chart of the objects' atlas (its texels' own ρ, coverage and chart id). */
+export const chartTileSums = chartTileSumPass(LUMINANCE_WEIGHTS);
 
-/** One surface's tiles in the tile-sum atlas. */
+/**
+ * The charts of the objects' atlas as candidates of the bright-patch search (a shaped room's
+ * surfaces and its furniture): their frames, the atlas's direct map and G-buffer, and the pass.
+ */
+export interface ChartTileSource {
+  frames: readonly TileFrame[];
+  pass: PassProgram<typeof chartTileSums.uniforms>;
+  direct: WebGLTexture;
+  points: WebGLTexture;
+  normals: WebGLTexture;
+  reflectance: WebGLTexture;
+  texelSize: number;
+}
+
+/** One surface's (or chart's) tiles in the tile-sum atlas. */
 export interface TileGrid {
-  layout: SurfaceLayout;
+  frame: TileFrame;
   /** Texels per tile edge. */
   tile: number;
   tilesU: number;
@@ -46,12 +64,14 @@ export function drawTileSums(
   direct: readonly FloatTarget[],
   tileSize: number,
   targets: Pick<TargetPool, 'acquire' | 'release'>,
+  charts: ChartTileSource | null = null,
 ): TileSumAtlas {
   let column = 0;
-  const grids = surfaces.map((layout): TileGrid => {
-    const tile = tileTexels(layout, tileSize);
-    const tilesU = Math.ceil(layout.width / tile);
-    const grid = { layout, tile, tilesU, tilesV: Math.ceil(layout.height / tile), column };
+  const frames = [...surfaces.map((layout) => layoutTileFrame(layout, reflectance[layout.index])), ...(charts?.frames ?? [])];
+  const grids = frames.map((frame): TileGrid => {
+    const tile = tileTexels(frame, tileSize);
+    const tilesU = Math.ceil(frame.width / tile);
+    const grid = { frame, tile, tilesU, tilesV: Math.ceil(frame.height / tile), column };
     column += tilesU;
     return grid;
   });
@@ -61,20 +81,34 @@ export function drawTileSums(
   for (const g of grids) {
     for (const mode of [0, 1]) {
       const y = mode * rowsPerMode;
-      runPass(
-        gl,
-        pass,
-        atlas,
-        {
-          uMap: direct[g.layout.index].texture,
-          uOffset: [g.column, y],
+      const viewport: [number, number, number, number] = [g.column, y, g.tilesU, g.tilesV];
+      const { frame } = g;
+      if (frame.chart && charts) {
+        const values = {
+          uMap: charts.direct,
+          uPoints: charts.points,
+          uNormals: charts.normals,
+          uRho: charts.reflectance,
+          uOffset: [g.column, y] as const,
+          uChartCorner: [frame.chart.x, frame.chart.y] as const,
+          uChartSize: [frame.width, frame.height] as const,
+          uChartId: frame.chart.id,
           uTile: g.tile,
           uMode: mode,
-          uTexel: [g.layout.lengthU / g.layout.width, g.layout.lengthV / g.layout.height],
-          uRho: reflectance[g.layout.index],
-        },
-        [g.column, y, g.tilesU, g.tilesV],
-      );
+          uTexel: charts.texelSize,
+        };
+        runPass(gl, charts.pass, atlas, values, viewport);
+        continue;
+      }
+      const values = {
+        uMap: direct[frame.index].texture,
+        uOffset: [g.column, y] as const,
+        uTile: g.tile,
+        uMode: mode,
+        uTexel: [frame.lengthU / frame.width, frame.lengthV / frame.height] as const,
+        uRho: frame.reflectance,
+      };
+      runPass(gl, pass, atlas, values, viewport);
     }
   }
   return { atlas, grids, rowsPerMode };
@@ -95,13 +129,14 @@ export function readTileSums(
   tileSize: number,
   targets: Pick<TargetPool, 'acquire' | 'release'>,
   countRead: (bytes: number) => void,
-): SurfaceTileSums[] {
-  const { atlas, grids, rowsPerMode } = drawTileSums(gl, pass, surfaces, reflectance, direct, tileSize, targets);
+  charts: ChartTileSource | null = null,
+): { sums: SurfaceTileSums[]; grids: TileGrid[]; rowsPerMode: number; columns: number } {
+  const { atlas, grids, rowsPerMode } = drawTileSums(gl, pass, surfaces, reflectance, direct, tileSize, targets, charts);
   const atlasWidth = atlas.width;
   const all = readRgba(gl, atlas);
   countRead(all.byteLength);
   targets.release(atlas);
-  return grids.map((g) => {
+  const sums = grids.map((g) => {
     const cut = (mode: number) => {
       const out = new Float32Array(g.tilesU * g.tilesV * 4);
       for (let j = 0; j < g.tilesV; j++) {
@@ -110,6 +145,7 @@ export function readTileSums(
       }
       return out;
     };
-    return { layout: g.layout, tile: g.tile, tilesU: g.tilesU, tilesV: g.tilesV, reflectance: reflectance[g.layout.index], sums: cut(0), moments: cut(1) };
+    return { frame: g.frame, tile: g.tile, tilesU: g.tilesU, tilesV: g.tilesV, sums: cut(0), moments: cut(1) };
   });
+  return { sums, grids, rowsPerMode, columns: atlasWidth };
 }

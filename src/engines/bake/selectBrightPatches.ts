@@ -1,9 +1,10 @@
 import type { Rgb, Vec3 } from '../../core/model/lightingScene/lightingScene';
 import { LUMINANCE_WEIGHTS } from './bakedMaps';
-import type { SurfaceLayout } from './surfaceLayout';
+import type { TileFrame } from './tileFrame';
 
-/** One bright tile as the gather sees it: a uniformly emitting rectangle on a room surface. */
+/** One bright tile as the gather sees it: a uniformly emitting rectangle on a room surface or an atlas chart. */
 export interface BrightPatch {
+  /** Source index: a room surface 0–5, or ATLAS_SOURCE + chart (tileFrame.ts). */
   surface: number;
   /** Tile indices on that surface. */
   tileU: number;
@@ -12,15 +13,18 @@ export interface BrightPatch {
   centre: Vec3;
   halfU: number;
   halfV: number;
+  /** Unit directions of the half edges (v's already times the frame's vSign). */
+  axisU: Vec3;
+  axisV: Vec3;
   /** Reflected flux ρ·Φ per channel, lm, and the exitance M = flux / area of the rectangle. */
   flux: Rgb;
   exitance: Rgb;
 }
 
-/** Per-tile sums of one surface, as the tile pass writes them (4 floats per tile in each array). */
+/** Per-tile sums of one surface or chart, as the tile pass writes them (4 floats per tile in each array). */
 export interface SurfaceTileSums {
-  layout: SurfaceLayout;
-  reflectance: Rgb;
+  /** What was tiled; its reflectance multiplies the sums (1 for a chart, whose sums carry ρ). */
+  frame: TileFrame;
   /** Texels per tile edge. */
   tile: number;
   tilesU: number;
@@ -62,9 +66,11 @@ export function selectBrightPatches(surfaces: SurfaceTileSums[], options: { maxP
   let scoreAll = 0;
   let yAll = 0;
   const yOfTile = (s: SurfaceTileSums, k: number) =>
-    LUMINANCE_WEIGHTS[0] * Math.max(0, s.sums[4 * k]) * s.reflectance[0] + LUMINANCE_WEIGHTS[1] * Math.max(0, s.sums[4 * k + 1]) * s.reflectance[1] + LUMINANCE_WEIGHTS[2] * Math.max(0, s.sums[4 * k + 2]) * s.reflectance[2];
+    LUMINANCE_WEIGHTS[0] * Math.max(0, s.sums[4 * k]) * s.frame.reflectance[0] +
+    LUMINANCE_WEIGHTS[1] * Math.max(0, s.sums[4 * k + 1]) * s.frame.reflectance[1] +
+    LUMINANCE_WEIGHTS[2] * Math.max(0, s.sums[4 * k + 2]) * s.frame.reflectance[2];
   for (const s of surfaces) {
-    area += s.layout.lengthU * s.layout.lengthV;
+    area += s.frame.area;
     for (let k = 0; k < s.tilesU * s.tilesV; k++) {
       const y = yOfTile(s, k);
       const score = Math.max(0, s.sums[4 * k + 3]);
@@ -76,17 +82,17 @@ export function selectBrightPatches(surfaces: SurfaceTileSums[], options: { maxP
   const candidates: Candidate[] = [];
   const meanExitance = yAll / area;
   for (const s of surfaces) {
-    const du = s.layout.lengthU / s.layout.width;
-    const dv = s.layout.lengthV / s.layout.height;
+    const du = s.frame.lengthU / s.frame.width;
+    const dv = s.frame.lengthV / s.frame.height;
     for (let k = 0; k < s.tilesU * s.tilesV; k++) {
       const y = yOfTile(s, k);
       const score = Math.max(0, s.sums[4 * k + 3]);
       // The tile's own area (the last row and column may be partial).
       const iu = k % s.tilesU;
       const iv = Math.floor(k / s.tilesU);
-      const tileArea = (Math.min(s.layout.width, (iu + 1) * s.tile) - iu * s.tile) * du * (Math.min(s.layout.height, (iv + 1) * s.tile) - iv * s.tile) * dv;
+      const tileArea = (Math.min(s.frame.width, (iu + 1) * s.tile) - iu * s.tile) * du * (Math.min(s.frame.height, (iv + 1) * s.tile) - iv * s.tile) * dv;
       if (!(y >= options.minContrast * meanExitance * tileArea) || !Number.isFinite(y) || !Number.isFinite(score)) continue;
-      const flux = [0, 1, 2].map((c) => Math.max(0, s.sums[4 * k + c]) * s.reflectance[c]) as Rgb;
+      const flux = [0, 1, 2].map((c) => Math.max(0, s.sums[4 * k + c]) * s.frame.reflectance[c]) as Rgb;
       candidates.push({ s, k, score, flux, y });
     }
   }
@@ -99,7 +105,7 @@ export function selectBrightPatches(surfaces: SurfaceTileSums[], options: { maxP
   let score = scoreAll;
   for (const c of candidates) {
     if (patches.length >= options.maxPatches || peak(score) <= options.targetPeakedness) break;
-    const { layout, tile } = c.s;
+    const { frame: layout, tile } = c.s;
     const du = layout.lengthU / layout.width;
     const dv = layout.lengthV / layout.height;
     const iu = c.k % c.s.tilesU;
@@ -121,9 +127,8 @@ export function selectBrightPatches(surfaces: SurfaceTileSums[], options: { maxP
     // A uniform rectangle with the same mean and variance has half edge √3·σ; keep it in the tile.
     const halfU = Math.max(1e-4, Math.min(Math.sqrt(3 * varU), cu - u0, u1 - cu));
     const halfV = Math.max(1e-4, Math.min(Math.sqrt(3 * varV), cv - v0, v1 - cv));
-    const centre: Vec3 = [layout.origin[0], layout.origin[1], layout.origin[2]];
-    centre[layout.uAxisIndex] = cu;
-    centre[layout.vAxisIndex] = cv;
+    // On a room surface of the box origin is 0 along u and v and the axes are unit axes: cu, cv to the bit.
+    const centre = [0, 1, 2].map((a) => layout.origin[a] + cu * layout.axisU[a] + cv * layout.axisV[a]) as Vec3;
     const rectArea = 4 * halfU * halfV;
     patches.push({
       surface: layout.index,
@@ -132,6 +137,8 @@ export function selectBrightPatches(surfaces: SurfaceTileSums[], options: { maxP
       centre,
       halfU,
       halfV,
+      axisU: layout.axisU,
+      axisV: layout.axisV.map((x) => x * layout.vSign) as Vec3,
       flux: c.flux,
       exitance: c.flux.map((f) => f / rectArea) as Rgb,
     });

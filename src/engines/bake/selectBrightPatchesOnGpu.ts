@@ -1,4 +1,3 @@
-import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 import { blockSumPass, KEYS_PER_ROUND, patchMaskPass, patchTablePass, tileKeyPass, topBlockPass, topMergePass } from '../../../shaders/brightSelection.glsl';
 import { LUMINANCE_WEIGHTS } from './bakedMaps';
 import type { BrightPatchOptions } from './brightPatchOptions';
@@ -9,6 +8,9 @@ import { PATCH_TABLE_WIDTH } from './patchTable';
 import type { TileSumAtlas } from './readTileSums';
 import { runPass } from './runPass';
 import type { TargetPool } from './targetPool';
+
+/** RGBA texels per row of the surface table. */
+const SURFACE_ROW = 7;
 
 /** Tiles per block edge in the reductions (16 × 16 tiles per fragment). */
 const BLOCK = 16;
@@ -34,6 +36,8 @@ export interface GpuBrightSelection {
 
 export const gpuTileKeys = tileKeyPass(LUMINANCE_WEIGHTS);
 export const gpuPatchTable = patchTablePass(LUMINANCE_WEIGHTS);
+/** The patch table where atlas charts are candidates (any frame, not only world axes). */
+export const gpuChartPatchTable = patchTablePass(LUMINANCE_WEIGHTS, true);
 export const gpuTopBlock = topBlockPass(LUMINANCE_WEIGHTS);
 
 /**
@@ -50,17 +54,11 @@ export const gpuTopBlock = topBlockPass(LUMINANCE_WEIGHTS);
  * 5. the residual mask: the tiles whose index is in the table.
  * No read-back; `readSummary` reads the count and peakedness for the report.
  */
-export function selectBrightPatchesOnGpu(
-  gl: WebGL2RenderingContext,
-  tiles: TileSumAtlas,
-  reflectance: readonly Rgb[],
-  options: BrightPatchOptions,
-  compile: CompilePass,
-  targets: Pick<TargetPool, 'acquire' | 'release'>,
-): GpuBrightSelection {
+export function selectBrightPatchesOnGpu(gl: WebGL2RenderingContext, tiles: TileSumAtlas, options: BrightPatchOptions, compile: CompilePass, targets: Pick<TargetPool, 'acquire' | 'release'>): GpuBrightSelection {
   const { atlas, grids, rowsPerMode } = tiles;
-  const surfaceTable = surfaceTableOf(gl, tiles, reflectance);
-  const area = grids.reduce((a, g) => a + g.layout.lengthU * g.layout.lengthV, 0);
+  const surfaceTable = surfaceTableOf(gl, tiles);
+  const area = grids.reduce((a, g) => a + g.frame.area, 0);
+  const charts = grids.some((g) => g.frame.chart);
   const used: FloatTarget[] = [];
   const pool: PassPool = {
     acquire(w, h) {
@@ -87,7 +85,7 @@ export function selectBrightPatchesOnGpu(
   // 4. The patch table (compaction), and the summary row.
   const rows = options.maxPatches;
   const table = pool.acquire(PATCH_TABLE_WIDTH, rows + 1);
-  runPass(gl, compile(gpuPatchTable, 'bright table'), table, {
+  runPass(gl, compile(charts ? gpuChartPatchTable : gpuPatchTable, 'bright table'), table, {
     uList: list.texture,
     uSums: atlas.texture,
     uTotals: totals.texture,
@@ -131,17 +129,21 @@ interface PassPool {
   done(target: FloatTarget): void;
 }
 
-/** Per surface five RGBA texels: its tile grid, texel size, extent, first global tile, ρ and frame (what the passes read). */
-function surfaceTableOf(gl: WebGL2RenderingContext, { grids }: TileSumAtlas, reflectance: readonly Rgb[]): WebGLTexture {
-  const surfaces = new Float32Array(grids.length * 5 * 4);
+/** Per surface or chart seven RGBA texels: its tile grid, texel size, extent, first global tile, ρ and frame (what the passes read; shaders/brightSelection.glsl.ts). */
+function surfaceTableOf(gl: WebGL2RenderingContext, { grids }: TileSumAtlas): WebGLTexture {
+  const surfaces = new Float32Array(grids.length * SURFACE_ROW * 4);
   let first = 0;
   grids.forEach((g, s) => {
-    const l = g.layout;
-    const rho = reflectance[l.index];
-    surfaces.set([g.column, g.tilesU, g.tilesV, g.tile, l.width, l.height, l.lengthU / l.width, l.lengthV / l.height, l.lengthU, l.lengthV, first, l.index, rho[0], rho[1], rho[2], l.uAxisIndex, ...l.origin, l.vAxisIndex], s * 20);
+    const f = g.frame;
+    const rho = f.reflectance;
+    // World axis indices of a room surface of the box (texels 3 and 4's w; unused for a chart).
+    const uAxis = f.chart ? 0 : f.axisU.indexOf(1);
+    const vAxis = f.chart ? 0 : f.axisV.indexOf(1);
+    const row = [g.column, g.tilesU, g.tilesV, g.tile, f.width, f.height, f.lengthU / f.width, f.lengthV / f.height, f.lengthU, f.lengthV, first, f.index];
+    surfaces.set([...row, rho[0], rho[1], rho[2], uAxis, ...f.origin, vAxis, ...f.axisU, f.vSign, ...f.axisV, 0], s * SURFACE_ROW * 4);
     first += g.tilesU * g.tilesV;
   });
-  return createDataTexture(gl, surfaces, 5, grids.length, 4);
+  return createDataTexture(gl, surfaces, SURFACE_ROW, grids.length, 4);
 }
 
 /** Σ y and Σ score of all tiles: BLOCK × BLOCK sums, level after level, down to one texel. */

@@ -58,7 +58,7 @@ export function startBakeJob(
   const given: GivenDirect | null = directOverride ? { surfaces: directOverride, objects: objectDirectOverride } : null;
 
   const inputs = prepareBakeInputs(gl, scene, settings, directOverride, objectDirectOverride);
-  const views = objectPassViews(inputs.objects);
+  const views = objectPassViews(inputs.objects, inputs.sinks);
   const targets = acquireBakeJobTargets(pool, inputs.layouts, inputs.objects?.prepared.atlas ?? null);
   const plan = planPasses(gl, inputs, settings, given, views.plan);
   const directSkipped = timer.timed('direct', () => runDirectPasses(gl, compile, plan, inputs, views, targets, given));
@@ -92,11 +92,12 @@ export function startBakeJob(
           inputs.layouts,
           inputs.reflectance,
           targets.surfaces.map((st) => st.direct),
-          brightPatchOptions(settings),
+          brightPatchOptions(settings, inputs.sinks),
           compile,
           readbacks.counted,
           pool,
           views.bright,
+          targets.atlas?.direct ?? null,
         ),
       )
     : null;

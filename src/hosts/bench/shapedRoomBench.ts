@@ -3,7 +3,10 @@
  * wall and a spot aimed under the slope, a room with a chimney breast — each baked at every rung
  * of SHAPED_LADDER (after an untimed warm-up bake) and compared with the independent room
  * reference (src/reference/solveRoomReference.ts) at fully covered atlas texels of the room's
- * surfaces (shapedRoomComparison.ts: points within 5 cm of an edge left out and counted).
+ * surfaces (shapedRoomComparison.ts: points within 5 cm of an edge left out and counted). Each rung
+ * is also baked with `brightPatches: 0` in the same run, right after: a shaped room's box surfaces
+ * are black sinks, so that is the bake before bright patches on atlas charts existed, and the ratio
+ * of the two times is what the patches cost (docs/baker.md, "Rooms of any shape").
  */
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
@@ -88,7 +91,7 @@ export const SHAPED_SCENES: readonly ShapedBenchScene[] = [
   },
 ];
 
-/** Default samples and bounces at two texel sizes, and 4× the samples (what the first bounce from a hot spot on a chart needs). */
+/** Default samples and bounces at two texel sizes, and 4× the samples (to tell noise from bias). */
 export const SHAPED_LADDER: readonly BenchQuality[] = [
   { texelSize: 0.1, samples: 64, bounces: 4 },
   { texelSize: 0.05, samples: 64, bounces: 4 },
@@ -104,6 +107,8 @@ export interface ShapedBenchRow {
   directRms: number;
   totalRms: number;
   totalMax: number;
+  /** The same rung with `brightPatches: 0` (no patches on the atlas's charts): its bake time and total errors. */
+  withoutPatches: { bakeMs: number; totalRms: number; totalMax: number };
 }
 
 export interface ShapedBenchScenePart {
@@ -113,7 +118,8 @@ export interface ShapedBenchScenePart {
   rows: ShapedBenchRow[];
 }
 
-export function runShapedRoomBench(baker: Baker, root: string, log: (line: string) => void): ShapedBenchScenePart[] {
+/** The bench's shaped rooms; `ladder` (default SHAPED_LADDER) is what each is baked at (a shorter one for a quick measurement). */
+export function runShapedRoomBench(baker: Baker, root: string, log: (line: string) => void, ladder: readonly BenchQuality[] = SHAPED_LADDER): ShapedBenchScenePart[] {
   const parts: ShapedBenchScenePart[] = [];
   for (const s of SHAPED_SCENES) {
     const files: Record<string, Photometry> = {};
@@ -131,23 +137,28 @@ export function runShapedRoomBench(baker: Baker, root: string, log: (line: strin
       luminaires: s.luminaires.map((l) => ({ ...l, photometry: files[l.photometry], dimming: 1, color: [1, 1, 1] })),
     };
     const rows: ShapedBenchRow[] = [];
-    for (const quality of SHAPED_LADDER) {
-      const settings = { ...quality, sourceSpacing: 0.05 };
-      baker.bake(scene, { ...settings, samples: 16, bounces: 1 });
-      const started = performance.now();
-      const { maps } = baker.bake(scene, settings);
-      const bakeMs = performance.now() - started;
-      const t1 = performance.now();
-      // About one point per 0.1 m × 0.1 m whatever the texel size.
-      const c = compareWithReference(scene, maps, reference, Math.max(1, Math.round(0.1 / quality.texelSize) ** 2));
-      referenceMs += performance.now() - t1;
-      const peak = Math.max(...c.points.map((p) => p.reference.total));
-      const direct = relativeErrors(c.points, 'direct', 0.01 * peak);
-      const total = relativeErrors(c.points, 'total', 0.01 * peak);
-      const row: ShapedBenchRow = { scene: s.name, quality, bakeMs, points: total.n, nearEdge: c.nearEdge, directRms: direct.rms, totalRms: total.rms, totalMax: total.max };
+    for (const quality of ladder) {
+      const measure = (brightPatches?: number) => {
+        const settings = { ...quality, sourceSpacing: 0.05, ...(brightPatches === undefined ? {} : { brightPatches }) };
+        baker.bake(scene, { ...settings, samples: 16, bounces: 1 });
+        const started = performance.now();
+        const { maps } = baker.bake(scene, settings);
+        const bakeMs = performance.now() - started;
+        const t1 = performance.now();
+        // About one point per 0.1 m × 0.1 m whatever the texel size.
+        const c = compareWithReference(scene, maps, reference, Math.max(1, Math.round(0.1 / quality.texelSize) ** 2));
+        referenceMs += performance.now() - t1;
+        const peak = Math.max(...c.points.map((p) => p.reference.total));
+        return { bakeMs, c, direct: relativeErrors(c.points, 'direct', 0.01 * peak), total: relativeErrors(c.points, 'total', 0.01 * peak) };
+      };
+      const { bakeMs, c, direct, total } = measure();
+      const without = measure(0);
+      const withoutPatches = { bakeMs: without.bakeMs, totalRms: without.total.rms, totalMax: without.total.max };
+      const row: ShapedBenchRow = { scene: s.name, quality, bakeMs, points: total.n, nearEdge: c.nearEdge, directRms: direct.rms, totalRms: total.rms, totalMax: total.max, withoutPatches };
       rows.push(row);
       log(
-        `  texel ${quality.texelSize} m, ${quality.samples} samples: bake ${Math.round(bakeMs)} ms; direct RMS ${(100 * row.directRms).toFixed(2)} %, total RMS ${(100 * row.totalRms).toFixed(2)} %, worst ${(100 * row.totalMax).toFixed(1)} % (${row.points} points, ${row.nearEdge} near an edge)`,
+        `  texel ${quality.texelSize} m, ${quality.samples} samples: bake ${Math.round(bakeMs)} ms; direct RMS ${(100 * row.directRms).toFixed(2)} %, total RMS ${(100 * row.totalRms).toFixed(2)} %, worst ${(100 * row.totalMax).toFixed(1)} % (${row.points} points, ${row.nearEdge} near an edge); ` +
+          `without chart patches ${Math.round(without.bakeMs)} ms, total RMS ${(100 * without.total.rms).toFixed(2)} %, worst ${(100 * without.total.max).toFixed(1)} %`,
       );
     }
     parts.push({ scene: s, patches: reference.patches.length, referenceMs, rows });
@@ -163,11 +174,14 @@ export function shapedRoomTables(parts: readonly ShapedBenchScenePart[]): string
   lines.push('|---|---|---|');
   for (const p of parts) lines.push(`| ${p.scene.name}: ${p.scene.description} | ${p.patches} | ${(p.referenceMs / 1000).toFixed(1)} s |`);
   lines.push('');
-  lines.push('| scene | texel | samples | bounces | bake time | points (near an edge, left out) | direct RMS | total RMS | worst point |');
-  lines.push('|---|---|---|---|---|---|---|---|---|');
+  lines.push('| scene | texel | samples | bounces | bake time | points (near an edge, left out) | direct RMS | total RMS | worst point | without chart patches: total RMS / worst | time / without |');
+  lines.push('|---|---|---|---|---|---|---|---|---|---|---|');
   for (const p of parts) {
     for (const r of p.rows) {
-      lines.push(`| ${r.scene} | ${r.quality.texelSize} m | ${r.quality.samples} | ${r.quality.bounces} | ${Math.round(r.bakeMs)} ms | ${r.points} (${r.nearEdge}) | ${pct(r.directRms)} | ${pct(r.totalRms)} | ${pct(r.totalMax)} |`);
+      const w = r.withoutPatches;
+      lines.push(
+        `| ${r.scene} | ${r.quality.texelSize} m | ${r.quality.samples} | ${r.quality.bounces} | ${Math.round(r.bakeMs)} ms | ${r.points} (${r.nearEdge}) | ${pct(r.directRms)} | ${pct(r.totalRms)} | ${pct(r.totalMax)} | ${pct(w.totalRms)} / ${pct(w.totalMax)} | ${(r.bakeMs / w.bakeMs).toFixed(2)} |`,
+      );
     }
   }
   return lines.join('\n');

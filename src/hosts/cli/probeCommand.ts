@@ -13,11 +13,8 @@ import { describeIssues } from '../../core/zodIssues';
 import { ALLOW_FLAG, cliReadableFolders } from '../node/cliReadableFolders';
 import { INPUT_LIMITS } from '../../core/untrustedJson';
 import { readRegularFile } from '../node/readRegularFile';
-import type { Room as ShapedRoom } from '../../core/room/normaliseRoom';
-import { roomSurfaces } from '../../core/room/roomSurfaces';
-import { roomSurfaceAt } from '../../core/room/roomSurfaceAt';
-import { pointInsideRoom } from '../../core/room/ceilingHeightAt';
 import { safeParseInEnglish } from '../../core/zodEnglish';
+import { checkShapedProbePoints, probeShapedRoom, type ShapedProbePoint } from '../node/createShapedRoomProbe';
 
 export const probeUsage = 'probe <scene.json> <points.json> [--samples N --bounces N --texel m --gl vulkan|glx|auto --allow <folder>] (points [x, y, z] on a surface or [x, y, z, nx, ny, nz])';
 
@@ -70,7 +67,7 @@ export async function run(args: string[]): Promise<number> {
   const resolved = resolveBakeSettings(settings);
   const loaded = await loadLightingSceneFileAsync(scenePath, { within: cliReadableFolders(scenePath, options[ALLOW_FLAG]) });
   const room = loaded.scene.room;
-  if (room.shape) shapedRoomPoints(room.shape, parsed.data.points, source);
+  if (room.shape) return probeShapedScene(loaded, room.shape, parsed.data.points, resolved, options['--gl'], source);
   const dims = [room.width, room.height, room.depth];
   const points = parsed.data.points.map((p, i): { point: Vec3; normal?: Vec3 } => {
     const point: Vec3 = [p[0], p[1], p[2]];
@@ -102,24 +99,34 @@ export async function run(args: string[]): Promise<number> {
 }
 
 /**
- * Probe points in a room of any shape (lighting scene version 3): a point [x, y, z] must lie on a
+ * `luxbox probe` in a room of any shape (lighting scene version 3): a point [x, y, z] must lie on a
  * surface of roomSurfaces (within PROBE_TOLERANCE, not in an opening), a point with a normal inside
- * the room (outline, floor to ceiling and slopes). The baker has no charts for such rooms yet, so
- * once the points are sound the probe says so rather than print the bounding box's light.
+ * the room (outline, floor to ceiling and slopes); checked before the bake. Then the room is baked
+ * (its surfaces are atlas charts) and probed there (createShapedRoomProbe.ts).
  */
-function shapedRoomPoints(room: ShapedRoom, points: readonly number[][], source: string): void {
-  const surfaces = roomSurfaces(room);
-  points.forEach((p, i) => {
+function probeShapedScene(
+  loaded: Awaited<ReturnType<typeof loadLightingSceneFileAsync>>,
+  shape: NonNullable<typeof loaded.scene.room.shape>,
+  raw: readonly number[][],
+  resolved: ReturnType<typeof resolveBakeSettings>,
+  gl: string | undefined,
+  source: string,
+): number {
+  const points = raw.map((p): ShapedProbePoint => {
     const point: Vec3 = [p[0], p[1], p[2]];
-    if (p.length === 6) {
-      if (!pointInsideRoom(room, point, PROBE_TOLERANCE)) throw new InputError(`${source}: points[${i}]: [${point.join(', ')}] is outside the room (its outline, floor, ceiling and slopes)`);
-      return;
-    }
-    const at = roomSurfaceAt(room, point, PROBE_TOLERANCE, surfaces);
-    if (at.surface) return;
-    if (at.opening) throw new InputError(`${source}: points[${i}]: [${point.join(', ')}] lies in opening ${at.opening.index} of ${at.opening.surface.id}, where the room has no surface`);
-    const near = at.nearest ? ` (nearest: ${at.nearest.surface.id}, ${at.nearest.distance.toPrecision(3)} m away)` : '';
-    throw new InputError(`${source}: points[${i}]: [${point.join(', ')}] is on no surface of the room${near}; probe points must lie within ${PROBE_TOLERANCE} m of a surface`);
+    if (p.length === 3) return { point };
+    const length = Math.hypot(p[3], p[4], p[5]);
+    return { point, normal: length > 1e-9 ? [p[3] / length, p[4] / length, p[5] / length] : [0, 0, 0] };
   });
-  throw new InputError(`${source}: the points lie on the room's surfaces, but this luxbox does not bake rooms of any shape yet (lighting scene version 3, issue 29)`);
+  points.forEach(({ normal }, i) => {
+    if (normal && normal.every((c) => c === 0)) throw new InputError(`${source}: points[${i}]: the normal [${raw[i].slice(3).join(', ')}] has no direction`);
+  });
+  checkShapedProbePoints(shape, points, PROBE_TOLERANCE, source);
+  const { exit } = prepareGl(gl);
+  if (exit !== null) return exit;
+  const { maps } = bakeLoadedScene(loaded, resolved);
+  const values = probeShapedRoom(loaded.bakeScene, maps, resolved, points, PROBE_TOLERANCE);
+  const result = { total: values.map((v) => v.total), direct: values.map((v) => v.direct), indirect: values.map((v) => v.indirect) };
+  process.stdout.write(JSON.stringify(result) + '\n');
+  return 0;
 }

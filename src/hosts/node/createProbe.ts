@@ -16,6 +16,8 @@ export const PROBE_GATHER_RAYS = 4096;
 export const PROBE_GATHER_SEED = 0x1ab0c5;
 /** Shadow and gather rays start this far off the surface (metres), clear of its own triangles. */
 const RAY_OFFSET = 1e-4;
+/** A face under a probe point is looked for this far above and below the point (metres): the point lies on the face's plane. */
+const FACE_SEARCH = 1e-3;
 
 export interface ProbeResult {
   /** The room surface of a surface point; absent for a point with a normal. */
@@ -30,6 +32,12 @@ export interface Probe {
   atSurface(point: Vec3): ProbeResult;
   /** Illuminance on the plane through `point` with unit normal `normal`, anywhere in the room: direct with occlusion, indirect by a CPU gather over the baked maps. */
   atPlane(point: Vec3, normal: Vec3): ProbeResult;
+  /**
+   * A point on a face of the objects' atlas whose front has unit normal `normal` (a shaped room's
+   * surface: createShapedRoomProbe.ts): direct exactly at the point (objects occluding), indirect
+   * bilinear in the atlas's map at the chart texel under the point (found by a ray along −normal).
+   */
+  atAtlasFace(point: Vec3, normal: Vec3): ProbeResult;
 }
 
 const lux = (rgb: Rgb): number => LUMINANCE_WEIGHTS[0] * rgb[0] + LUMINANCE_WEIGHTS[1] * rgb[1] + LUMINANCE_WEIGHTS[2] * rgb[2];
@@ -108,7 +116,32 @@ export function createProbe(scene: BakeScene, maps: BakedMaps, settingsIn: Parti
     return [rho[0] * e[0], rho[1] * e[1], rho[2] * e[2]];
   };
 
+  /** Bilinear lux of the atlas's indirect map at the face under `p` (charts are two texels apart and their gutters dilated: no other chart enters). */
+  const atlasIndirect = (p: Vec3, n: Vec3): number => {
+    const m = maps.objects;
+    const o: Vec3 = [p[0] + n[0] * FACE_SEARCH, p[1] + n[1] * FACE_SEARCH, p[2] + n[2] * FACE_SEARCH];
+    const hit = caster?.closestHit(o, [-n[0], -n[1], -n[2]], 2 * FACE_SEARCH) ?? null;
+    if (!m || !hit) throw new Error(`probe: no face of the objects' atlas under [${p.join(', ')}]`);
+    const { width, height } = m.atlas;
+    const x = Math.min(width - 1, Math.max(0, hit.atlasUv[0] * width - 0.5));
+    const y = Math.min(height - 1, Math.max(0, hit.atlasUv[1] * height - 0.5));
+    const i0 = Math.floor(x);
+    const j0 = Math.floor(y);
+    const [i1, j1] = [Math.min(width - 1, i0 + 1), Math.min(height - 1, j0 + 1)];
+    const [fx, fy] = [x - i0, y - j0];
+    const at = (i: number, j: number): number => {
+      const k = 3 * (j * width + i);
+      return lux([m.indirect[k], m.indirect[k + 1], m.indirect[k + 2]]);
+    };
+    return (1 - fy) * ((1 - fx) * at(i0, j0) + fx * at(i1, j0)) + fy * ((1 - fx) * at(i0, j1) + fx * at(i1, j1));
+  };
+
   return {
+    atAtlasFace(point, normal) {
+      const direct = lux(directAtPoint(visibleFrom(point, normal), point, normal));
+      const indirect = atlasIndirect(point, normal);
+      return { direct, indirect, total: direct + indirect };
+    },
     atSurface(point) {
       const { surface } = nearestSurface(room, point);
       const m = maps[surface];

@@ -74,26 +74,26 @@ function selectionCase(seed: number, maxPatches: number) {
   });
   const options = { ...brightPatchOptions({ brightPatches: maxPatches }) };
   const reflecting = layouts.filter((l) => reflectance[l.index].some((r) => r > 0));
-  const sums = readTileSums(gl, compile(tileSums, 'tiles'), reflecting, reflectance, direct, options.tileSize, pool, () => {});
+  const { sums } = readTileSums(gl, compile(tileSums, 'tiles'), reflecting, reflectance, direct, options.tileSize, pool, () => {});
   const cpu = selectBrightPatches(sums, options);
   const tiles = drawTileSums(gl, compile(tileSums, 'tiles'), reflecting, reflectance, direct, options.tileSize, pool);
-  const gpu = selectBrightPatchesOnGpu(gl, tiles, reflectance, options, compile, pool);
+  const gpu = selectBrightPatchesOnGpu(gl, tiles, options, compile, pool);
   const table = readRgba(gl, gpu.table);
   const mask = readRgba(gl, gpu.mask);
   const summary = gpu.readSummary(() => {});
   const firstTile = new Map<number, number>();
   let g = 0;
   for (const grid of tiles.grids) {
-    firstTile.set(grid.layout.index, g);
+    firstTile.set(grid.frame.index, g);
     g += grid.tilesU * grid.tilesV;
   }
-  const globalIndex = (p: (typeof cpu.patches)[number]) => firstTile.get(p.surface)! + p.tileV * tiles.grids.find((x) => x.layout.index === p.surface)!.tilesU + p.tileU;
+  const globalIndex = (p: (typeof cpu.patches)[number]) => firstTile.get(p.surface)! + p.tileV * tiles.grids.find((x) => x.frame.index === p.surface)!.tilesU + p.tileU;
   const maskedTiles: number[] = [];
   for (const grid of tiles.grids) {
     for (let iv = 0; iv < grid.tilesV; iv++)
-      for (let iu = 0; iu < grid.tilesU; iu++) if (mask[4 * ((iv * mask.length) / 4 / tiles.rowsPerMode + grid.column + iu)] === 1) maskedTiles.push(firstTile.get(grid.layout.index)! + iv * grid.tilesU + iu);
+      for (let iu = 0; iu < grid.tilesU; iu++) if (mask[4 * ((iv * mask.length) / 4 / tiles.rowsPerMode + grid.column + iu)] === 1) maskedTiles.push(firstTile.get(grid.frame.index)! + iv * grid.tilesU + iu);
   }
-  const result = { cpu, cpuTable: patchTable(cpu.patches, layouts), table, summary, rows: gpu.rows, globalIndex, maskedTiles, tieTile: { north, south } };
+  const result = { cpu, cpuTable: patchTable(cpu.patches), table, summary, rows: gpu.rows, globalIndex, maskedTiles, tieTile: { north, south } };
   gpu.dispose();
   pool.release(tiles.atlas);
   for (const t of direct) pool.release(t);

@@ -11,9 +11,10 @@ import { combineTailPass } from '../../../shaders/combineTailPass.glsl';
 import { fluxRatioPass, reduceSumPass } from '../../../shaders/fluxReduce.glsl';
 import { brightGatherPass } from '../../../shaders/brightGatherPass.glsl';
 import { residualPass } from '../../../shaders/residualPass.glsl';
-import { tileSums } from '../../../src/engines/bake/readTileSums';
+import { chartTileSums, tileSums } from '../../../src/engines/bake/readTileSums';
+import { chartResidualPass } from '../../../shaders/chartTileSumPass.glsl';
 import { blockSumPass, patchMaskPass, topMergePass } from '../../../shaders/brightSelection.glsl';
-import { gpuPatchTable, gpuTileKeys, gpuTopBlock } from '../../../src/engines/bake/selectBrightPatchesOnGpu';
+import { gpuChartPatchTable, gpuPatchTable, gpuTileKeys, gpuTopBlock } from '../../../src/engines/bake/selectBrightPatchesOnGpu';
 import { cachedProgramCount, getProgram } from '../../../src/engines/bake/glResources';
 import { generateDirectShader, generateShadowedDirectShader, type DirectLamp } from '../../../src/engines/bake/generateDirectShader';
 import { generateGatherShader, generateObjectAwareGatherShader, generateObjectGatherShader } from '../../../src/engines/bake/generateGatherShader';
@@ -125,6 +126,8 @@ describe('generated shaders compile', () => {
     compiles(generateObjectDirectShader(lamps, objects.bvhWidth));
     for (const [, rho] of reflectances) compiles(generateObjectGatherShader([3, 2.5, 4], rho, objects));
     compiles(occludedBrightGatherPass(objects.bvhWidth));
+    // Rooms of any shape: patches on the atlas's charts (one-sided, an atlas texel skipping its own chart).
+    compiles(occludedBrightGatherPass(objects.bvhWidth, true));
     for (const pass of [chartBlurPass, chartDilatePass, objectReduceSumPass, objectFluxRatioPass]) compiles(pass);
   });
 
@@ -139,6 +142,8 @@ describe('generated shaders compile', () => {
     compiles(brightGatherPass);
     // The selection on the GPU (selectBrightPatchesOnGpu.ts).
     for (const pass of [gpuTileKeys, blockSumPass, gpuTopBlock, topMergePass, gpuPatchTable, patchMaskPass]) compiles(pass);
+    // Bright patches on the atlas's charts (rooms of any shape): chart tile sums, the table over any frame, the atlas residual.
+    for (const pass of [chartTileSums, gpuChartPatchTable, chartResidualPass]) compiles(pass);
     compiles(blurPass);
   });
 

@@ -19,6 +19,11 @@ import { roomDirectAt } from '../../../src/reference/roomDirect';
 import type { Photometry } from '../../../src/core/photometry/types';
 import type { Vec3 } from '../../../src/core/model/lightingScene/lightingScene';
 import { parseRad } from './radianceSceneEvaluator';
+import { normaliseRoom } from '../../../src/core/room/normaliseRoom';
+import type { RoomInput } from '../../../src/core/room/roomInput';
+import { pointInsideRoom } from '../../../src/core/room/ceilingHeightAt';
+import { clearOfWalls } from '../../../src/engines/view/shapedRoomCamera';
+import { EYE_MARGIN } from '../../../src/engines/view/frameTheLight';
 
 const FIXTURE = 'tests/fixtures/scenes/attic-l-room.json';
 const loaded = loadLightingSceneFile(FIXTURE);
@@ -90,6 +95,57 @@ describe('Radiance export of a room of any shape', () => {
     expect(plan.every(([x, z]) => !(x > 3.5 && z > 3))).toBe(true);
     expect(plan.length).toBeGreaterThan(0);
     expect(plan.length).toBe(24 * 20 - 10 * 8);
+  });
+
+  it('the eye view stands inside the outline, clear of every wall and under the slope; the top and corner views look down from above the ceiling', () => {
+    // The fixture (its light to frame), the same L dark (the eye across the room), and a U whose bounding box centre is in its notch.
+    const u: RoomInput = {
+      outline: [
+        [0, 0],
+        [6, 0],
+        [6, 5],
+        [4, 5],
+        [4, 1.5],
+        [2, 1.5],
+        [2, 5],
+        [0, 5],
+      ],
+      height: 2.5,
+      reflectance: { floor: 0.3, ceiling: 0.8, walls: 0.5 },
+    };
+    const uShape = normaliseRoom(u);
+    const uScene = { room: { width: 6, height: 2.5, depth: 5, reflectance: bakeScene.room.reflectance, shape: uShape }, luminaires: [] };
+    const cases = [
+      { scene: bakeScene, room: shape },
+      { scene: { ...bakeScene, luminaires: [] }, room: shape },
+      { scene: uScene, room: uShape },
+    ];
+    for (const { scene, room } of cases) {
+      const files = exportRadiance(scene);
+      const view = (name: string) => {
+        const text = files.find((f) => f.path === `views/${name}.vf`)!.text;
+        const numbers = (flag: string) =>
+          /-(vp|vd) (\S+) (\S+) (\S+)/g
+            .exec(text.slice(text.indexOf(flag)))!
+            .slice(2)
+            .map(Number);
+        return { eye: fromRadiance(numbers('-vp')), dir: fromRadiance(numbers('-vd')) };
+      };
+      const { eye, dir } = view('eye');
+      expect(pointInsideRoom(room, eye), `eye [${eye.join(', ')}]`).toBe(true);
+      // Clear of every wall by the eye camera's margin (frameTheLight.ts EYE_MARGIN), written to 7 digits.
+      expect(clearOfWalls(room, [eye[0], eye[2]], EYE_MARGIN * 0.999), `eye [${eye.join(', ')}] near a wall`).toBe(true);
+      // Looking into the room: a point a metre ahead is still inside.
+      const ahead: Vec3 = [eye[0] + dir[0], eye[1] + dir[1], eye[2] + dir[2]];
+      expect(pointInsideRoom(room, ahead), `ahead of the eye [${ahead.join(', ')}]`).toBe(true);
+      for (const name of ['top', 'corner']) {
+        const outside = view(name);
+        expect(outside.eye[1]).toBeGreaterThan(room.height);
+        expect(outside.dir[1]).toBeLessThan(0);
+      }
+    }
+    // The U's bounding box centre (3, 2.5) is in its notch: no camera stands there.
+    expect(pointInsideRoom(uShape, [3, 1.6, 2.5])).toBe(false);
   });
 
   const bin = process.env.LUXBOX_RADIANCE_BIN ?? findRadianceBin(join(__dirname, '../../..'));

@@ -1,8 +1,8 @@
-/** `luxbox probe` on a room of any shape (issue 29): every point checked against the room's own surfaces, each refusal naming the point. */
+/** `luxbox probe` on a room of any shape (issue 29): every point checked against the room's own surfaces, each refusal naming the point; sound points are baked and probed. */
 import { mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { describe, expect, it } from 'vitest';
+import { describe, expect, it, vi } from 'vitest';
 import { run } from '../../../src/hosts/cli/probeCommand';
 
 const SCENE = 'tests/fixtures/scenes/attic-l-room.json';
@@ -32,16 +32,29 @@ describe('probe in a room of any shape', () => {
     ).rejects.toThrow(/: points\[1\]: \[5, 1, 4\] is outside the room \(its outline, floor, ceiling and slopes\)$/);
   });
 
-  it('says plainly that it cannot bake the room yet once the points are sound (floor, slope, walls, a plane point)', async () => {
+  it('bakes the room and prints the light at points on the floor, the slope and two walls, and at a plane point', async () => {
     const t = Math.tan((40 * Math.PI) / 180);
-    await expect(
-      probe([
-        [1, 0, 1],
-        [2, 1.2 + 0.5 * t, 0.5],
-        [6, 1, 1],
-        [3.5, 1, 4],
-        [2, 1, 3, 0, 1, 0],
-      ]),
-    ).rejects.toThrow(/does not bake rooms of any shape yet \(lighting scene version 3, issue 29\)$/);
-  });
+    const points = [
+      [1, 0, 1],
+      [2, 1.2 + 0.5 * t, 0.5],
+      [6, 1, 1],
+      [3.5, 1, 4],
+      [2, 1, 3, 0, 1, 0],
+    ];
+    const write = vi.spyOn(process.stdout, 'write').mockImplementation(() => true);
+    try {
+      // Coarse and quick: what is checked here is the command; the accuracy is tests/hosts/node/shapedRoomProbe.test.ts's.
+      await expect(run([SCENE, pointsFile(points), '--texel', '0.2', '--samples', '8', '--bounces', '1'])).resolves.toBe(0);
+      const printed = JSON.parse(String(write.mock.calls.at(-1)![0])) as { total: number[]; direct: number[]; indirect: number[] };
+      expect(Object.keys(printed)).toEqual(['total', 'direct', 'indirect']);
+      for (const key of ['total', 'direct', 'indirect'] as const) expect(printed[key]).toHaveLength(points.length);
+      printed.total.forEach((total, i) => {
+        expect(printed.direct[i]).toBeGreaterThan(0);
+        expect(printed.indirect[i]).toBeGreaterThan(0);
+        expect(total).toBeCloseTo(printed.direct[i] + printed.indirect[i], 6);
+      });
+    } finally {
+      write.mockRestore();
+    }
+  }, 120_000);
 });

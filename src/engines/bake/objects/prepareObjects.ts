@@ -8,6 +8,7 @@ import type { BakeObject } from '../bakeScene';
 import { buildBvhTextures } from './buildBvhTextures';
 import { buildCharts } from './buildCharts';
 import { collectWorldTriangles } from './collectWorldTriangles';
+import { chartFrame } from './chartFrame';
 import { layoutAtlas } from './layoutAtlas';
 import type { PreparedObjects } from './preparedObjects';
 import { rasterizeAtlas } from './rasterizeAtlas';
@@ -47,6 +48,7 @@ export function prepareObjects(objects: BakeObject[], options: PrepareObjectsOpt
       columns: layout.columns[c],
       rows: layout.rows[c],
       triangleCount: chart.triangles.length,
+      frame: chartFrame(chart, tris),
     })),
     triangleCount: tris.count,
     bounds: { min, max },

@@ -5,6 +5,7 @@
  * (shaders/bvhTraversal.glsl.ts). Built by `prepareObjects` (./prepareObjects.ts).
  */
 import type { Bounds3 } from '../../../core/mesh/triangleMesh';
+import type { ChartFrame } from './chartFrame';
 
 /** The objects' light-map atlas: every object's triangles in planar charts packed into one texture. */
 export interface ObjectAtlas {
@@ -49,6 +50,8 @@ export interface ObjectChart {
   columns: number;
   rows: number;
   triangleCount: number;
+  /** The chart's plane in the world (chartFrame.ts): what the bright-patch search tiles. */
+  frame: ChartFrame;
 }
 
 export interface PreparedObjects {
