@@ -126,7 +126,15 @@ const componentProjects = [
 ].map(({ name, runtime, alias }) => ({
   extends: true as const,
   resolve: { alias },
-  test: { name, include: [COMPONENT_TESTS], environment: 'happy-dom', setupFiles: ['tests/setup/touchScreen.ts'], env: { LUXBOX_UI_RUNTIME: runtime } },
+  test: {
+    name,
+    include: [COMPONENT_TESTS],
+    environment: 'happy-dom',
+    setupFiles: ['tests/setup/touchScreen.ts'],
+    env: { LUXBOX_UI_RUNTIME: runtime },
+    // Packages that import React (zustand's hooks, React Spring) go through the aliases too, as in the build.
+    server: { deps: { inline: runtime === 'preact' ? ['zustand', /@react-spring/] : [] } },
+  },
 }));
 
 // One config for the app build and for Vitest (unit + headless-gl tests, component tests on both runtimes).
