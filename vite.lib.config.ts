@@ -10,7 +10,7 @@ import { firstScreenChunk, reactOnPreact, zodOnMini, zodWithoutJsonSchema } from
  * (scripts/buildPackage.mjs runs all three):
  * - `preact`: `luxbox` (mountLuxbox), `luxbox/element` and `luxbox/engine` as ES modules, the UI on
  *   preact/compat exactly as the app's browser build (vite.config.ts); dependencies stay imports
- *   for the shop's bundler except zustand, whose `react` import must become preact's.
+ *   for the shop's bundler except zustand and React Spring, whose `react` imports must become preact's.
  * - `react`: `luxbox/react`, the same UI on the shop's React (react and react-dom are peer
  *   dependencies and stay imports).
  * - `script`: lib/standalone/luxbox-element.js, `<luxbox-configurator>` for a page without a
@@ -67,7 +67,7 @@ function recordBundledPackages(mode: string): Plugin {
 // The packages the library builds leave as imports (package.json dependencies). Bare `zod` is
 // aliased to src/core/zodClassicOnMini.ts (bundled) as in the app's build; its subpaths (`zod/mini`,
 // `zod/v4/core`) stay imports, so the shop's bundle holds one zod.
-export const DEPENDENCIES = ['preact', 'three', 'three-mesh-bvh', 'zod', 'fflate'];
+export const DEPENDENCIES = ['preact', 'three', 'three-mesh-bvh', 'zod', 'fflate', '@use-gesture/vanilla'];
 const asImports = (names: string[]) => new RegExp(`^(${names.filter((n) => n !== 'zod').join('|')})(/|$)${names.includes('zod') ? '|^zod/' : ''}`);
 
 export default defineConfig(() => {
