@@ -1,4 +1,4 @@
-import { mkdirSync, writeFileSync } from 'node:fs';
+import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { dirname, resolve, basename } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { defineConfig, type Plugin } from 'vite';
@@ -38,6 +38,32 @@ function injectCss(): Plugin {
       return [`import css from ${JSON.stringify(`${path}?inline`)};`, `import { injectStyle } from ${JSON.stringify(fromRoot('src/hosts/package/injectStyle.ts'))};`, `injectStyle(${JSON.stringify(basename(path, '.css'))}, css);`].join(
         '\n',
       );
+    },
+  };
+}
+
+/**
+ * Images as files beside the chunks, not base64 in them. Vite's library mode inlines every asset
+ * whatever its size, which put the furniture library's 34 kB sprite sheet
+ * (src/ui/planner/furnitureThumbnails.png) into the first-screen chunk of `luxbox/react` and of the
+ * standalone element as 46 kB of base64 (+35 kB gzip, docs/package.md "Budgets"). Here an image
+ * import becomes `new URL(<file>, import.meta.url)`, which the shop's bundler (Vite, webpack 5,
+ * Rollup, esbuild with its loader) copies and a page without one fetches from the folder.
+ */
+function imagesAsFiles(): Plugin {
+  const PREFIX = '\0luxbox-image:';
+  return {
+    name: 'luxbox-images-as-files',
+    enforce: 'pre',
+    resolveId(source, importer) {
+      if (!importer || !/\.(png|jpe?g|webp|svg)$/.test(source) || importer.startsWith(PREFIX)) return null;
+      return PREFIX + resolve(dirname(importer), source);
+    },
+    load(id) {
+      if (!id.startsWith(PREFIX)) return null;
+      const path = id.slice(PREFIX.length);
+      const ref = this.emitFile({ type: 'asset', name: basename(path), source: readFileSync(path) });
+      return `export default import.meta.ROLLUP_FILE_URL_${ref};`;
     },
   };
 }
@@ -85,10 +111,12 @@ export default defineConfig(() => {
         : { 'luxbox-element': fromRoot('src/hosts/package/elementScript.ts') };
   const external = mode === 'script' ? [] : [asImports(mode === 'react' ? [...DEPENDENCIES, 'react', 'react-dom'] : DEPENDENCIES)];
   return {
-    plugins: [react(), injectCss(), recordBundledPackages(mode), ...(mode === 'script' ? [zodWithoutJsonSchema()] : []), ...(mode !== 'preact' ? [firstScreen] : [])],
+    plugins: [react(), injectCss(), imagesAsFiles(), recordBundledPackages(mode), ...(mode === 'script' ? [zodWithoutJsonSchema()] : []), ...(mode !== 'preact' ? [firstScreen] : [])],
     resolve: { alias: [...zodOnMini('build'), ...(onPreact ? reactOnPreact('build') : [])] },
     // Public files (the demo's photometry) are copied by scripts/buildPackage.mjs where each door expects them.
     publicDir: false as const,
+    // Relative asset URLs (`new URL('../assets/…', import.meta.url)`), so the files are found beside the chunks wherever the folder is served from.
+    base: './',
     logLevel: 'warn' as const,
     build: {
       outDir: fromRoot(mode === 'script' ? 'lib/standalone' : 'lib'),
@@ -103,6 +131,7 @@ export default defineConfig(() => {
         output: {
           entryFileNames: '[name].js',
           chunkFileNames: `chunks/${mode === 'react' ? 'react-' : ''}[name]-[hash].js`,
+          assetFileNames: 'assets/[name]-[hash][extname]',
           ...(mode !== 'preact' ? { codeSplitting: { groups: [{ name: 'first-screen', test: firstScreen.inFirstScreen }] } } : {}),
         },
       },
