@@ -58,7 +58,33 @@ export const reactOnPreact = (command: string) =>
       ]
     : [];
 
-// One config for the app build and for Vitest (unit + headless-gl tests).
+/** Component interaction tests (tests/components, docs/architecture.md "Component tests on both runtimes"). */
+const COMPONENT_TESTS = 'tests/components/**/*.test.tsx';
+
+/**
+ * The component tests run twice, in happy-dom: on React (what `luxbox/react` ships) and on
+ * preact/compat with the browser build's aliases (what the standalone pages and the element
+ * ship). The test files import `@testing-library/react`; on preact that name is
+ * `@testing-library/preact`, whose render, screen, fireEvent, act and cleanup are the same calls.
+ */
+const componentProjects = [
+  { name: 'components-react', runtime: 'react', alias: [] },
+  { name: 'components-preact', runtime: 'preact', alias: [{ find: /^@testing-library\/react$/, replacement: '@testing-library/preact' }, ...reactOnPreact('build')] },
+].map(({ name, runtime, alias }) => ({
+  extends: true as const,
+  resolve: { alias },
+  test: {
+    name,
+    include: [COMPONENT_TESTS],
+    environment: 'happy-dom',
+    setupFiles: ['tests/setup/touchScreen.ts'],
+    env: { LUXBOX_UI_RUNTIME: runtime },
+    // Packages that import React (zustand's hooks, React Spring) go through the aliases too, as in the build.
+    server: { deps: { inline: runtime === 'preact' ? ['zustand', /@react-spring/] : [] } },
+  },
+}));
+
+// One config for the app build and for Vitest (unit + headless-gl tests, component tests on both runtimes).
 export default defineConfig(({ command }) => {
   const firstScreen = firstScreenChunk();
   return {
@@ -80,13 +106,13 @@ export default defineConfig(({ command }) => {
       },
     },
     test: {
-      include: ['tests/**/*.test.ts', 'tests/**/*.test.tsx'],
       setupFiles: ['tests/setup/colourFilterSpectra.ts', 'tests/setup/roomShapeSupport.ts'],
       environment: 'node',
       // headless-gl contexts are per process; forks keep native state isolated.
       pool: 'forks',
       testTimeout: 120_000,
       hookTimeout: 120_000,
+      projects: [{ extends: true, test: { name: 'unit', include: ['tests/**/*.test.ts', 'tests/**/*.test.tsx'], exclude: [COMPONENT_TESTS] } }, ...componentProjects],
     },
   };
 });

@@ -1,4 +1,4 @@
-import { mkdirSync, writeFileSync } from 'node:fs';
+import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { dirname, resolve, basename } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { defineConfig, type Plugin } from 'vite';
@@ -10,7 +10,7 @@ import { firstScreenChunk, reactOnPreact } from './vite.config';
  * (scripts/buildPackage.mjs runs all three):
  * - `preact`: `luxbox` (mountLuxbox), `luxbox/element` and `luxbox/engine` as ES modules, the UI on
  *   preact/compat exactly as the app's browser build (vite.config.ts); dependencies stay imports
- *   for the shop's bundler except zustand, whose `react` import must become preact's.
+ *   for the shop's bundler except zustand and React Spring, whose `react` imports must become preact's.
  * - `react`: `luxbox/react`, the same UI on the shop's React (react and react-dom are peer
  *   dependencies and stay imports).
  * - `script`: lib/standalone/luxbox-element.js, `<luxbox-configurator>` for a page without a
@@ -43,6 +43,32 @@ function injectCss(): Plugin {
 }
 
 /**
+ * Images as files beside the chunks, not base64 in them. Vite's library mode inlines every asset
+ * whatever its size, which put the furniture library's 34 kB sprite sheet
+ * (src/ui/planner/furnitureThumbnails.png) into the first-screen chunk of `luxbox/react` and of the
+ * standalone element as 46 kB of base64 (+35 kB gzip, docs/package.md "Budgets"). Here an image
+ * import becomes `new URL(<file>, import.meta.url)`, which the shop's bundler (Vite, webpack 5,
+ * Rollup, esbuild with its loader) copies and a page without one fetches from the folder.
+ */
+function imagesAsFiles(): Plugin {
+  const PREFIX = '\0luxbox-image:';
+  return {
+    name: 'luxbox-images-as-files',
+    enforce: 'pre',
+    resolveId(source, importer) {
+      if (!importer || !/\.(png|jpe?g|webp|svg)$/.test(source) || importer.startsWith(PREFIX)) return null;
+      return PREFIX + resolve(dirname(importer), source);
+    },
+    load(id) {
+      if (!id.startsWith(PREFIX)) return null;
+      const path = id.slice(PREFIX.length);
+      const ref = this.emitFile({ type: 'asset', name: basename(path), source: readFileSync(path) });
+      return `export default import.meta.ROLLUP_FILE_URL_${ref};`;
+    },
+  };
+}
+
+/**
  * Writes the npm packages this build bundles (rather than leaves as imports) to
  * build/bundled-<mode>.json, for lib/THIRD-PARTY-NOTICES.md (scripts/thirdPartyNotices.mjs).
  */
@@ -66,7 +92,7 @@ function recordBundledPackages(mode: string): Plugin {
 
 // The packages the library builds leave as imports (package.json dependencies), subpaths included
 // (the schemas import `zod/mini`), so the shop's bundle holds one copy of each.
-export const DEPENDENCIES = ['preact', 'three', 'three-mesh-bvh', 'zod', 'fflate'];
+export const DEPENDENCIES = ['preact', 'three', 'three-mesh-bvh', 'zod', 'fflate', '@use-gesture/vanilla'];
 const asImports = (names: string[]) => new RegExp(`^(${names.join('|')})(/|$)`);
 
 export default defineConfig(() => {
@@ -84,10 +110,12 @@ export default defineConfig(() => {
         : { 'luxbox-element': fromRoot('src/hosts/package/elementScript.ts') };
   const external = mode === 'script' ? [] : [asImports(mode === 'react' ? [...DEPENDENCIES, 'react', 'react-dom'] : DEPENDENCIES)];
   return {
-    plugins: [react(), injectCss(), recordBundledPackages(mode), ...(mode !== 'preact' ? [firstScreen] : [])],
+    plugins: [react(), injectCss(), imagesAsFiles(), recordBundledPackages(mode), ...(mode !== 'preact' ? [firstScreen] : [])],
     resolve: { alias: onPreact ? reactOnPreact('build') : [] },
     // Public files (the demo's photometry) are copied by scripts/buildPackage.mjs where each door expects them.
     publicDir: false as const,
+    // Relative asset URLs (`new URL('../assets/…', import.meta.url)`), so the files are found beside the chunks wherever the folder is served from.
+    base: './',
     logLevel: 'warn' as const,
     build: {
       outDir: fromRoot(mode === 'script' ? 'lib/standalone' : 'lib'),
@@ -102,6 +130,7 @@ export default defineConfig(() => {
         output: {
           entryFileNames: '[name].js',
           chunkFileNames: `chunks/${mode === 'react' ? 'react-' : ''}[name]-[hash].js`,
+          assetFileNames: 'assets/[name]-[hash][extname]',
           ...(mode !== 'preact' ? { codeSplitting: { groups: [{ name: 'first-screen', test: firstScreen.inFirstScreen }] } } : {}),
         },
       },

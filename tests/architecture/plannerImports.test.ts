@@ -42,9 +42,10 @@ describe('planner bundle', () => {
     // What the planner does use, so the walk is known to work.
     expect(packages).toContain('react');
     expect(packages).toContain('zustand');
-    // The plan's gestures are written out (planGestureRecognizer.ts): @use-gesture is not in the first download.
+    // The plan's gestures (planGestureListener.ts, @use-gesture) are a lazy chunk that usePlanGestures.ts loads.
+    expect(packages).not.toContain('@use-gesture/vanilla');
     expect(packages).not.toContain('@use-gesture/react');
-    // The plan's zoom spring is written out (viewSpring.ts): React Spring is not in the first download.
+    // The plan's zoom spring (viewSpring.ts, React Spring) is a lazy chunk that usePlanView.ts loads: not in the first download.
     expect(packages).not.toContain('@react-spring/web');
   });
 

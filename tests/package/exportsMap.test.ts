@@ -82,7 +82,7 @@ describe('package.json exports map', () => {
 });
 
 describe('package.json dependencies', () => {
-  const packageOf = (specifier: string) => specifier.split('/')[0];
+  const packageOf = (specifier: string) => (specifier.startsWith('@') ? specifier.split('/').slice(0, 2).join('/') : specifier.split('/')[0]);
 
   it('declares exactly what the library builds leave as imports; React is an optional peer', () => {
     expect(Object.keys(pkg.dependencies).sort()).toEqual([...new Set(DEPENDENCIES.map(packageOf))].sort());
