@@ -2,7 +2,9 @@
  * Lighting scene, versions 1, 2 and 3: the contract between the configurator, the baker
  * and the command line (docs/scene-format.md). Extend, never break.
  */
+import type { Glazing } from '../../daylight/glazing';
 import type { Room as ShapedRoom } from '../../room/normaliseRoom';
+import type { SceneSky, SceneWindow } from './parseDaylight';
 
 export type Rgb = [number, number, number];
 export type Vec3 = [number, number, number];
@@ -84,4 +86,17 @@ export interface LightingScene {
   luminaires: LightingLuminaire[];
   /** Versions 2 and 3; absent or empty: an empty room. */
   objects?: LightingObject[];
+  /** Versions 2 and 3 with `windows` (a box, which then has `room.shape`), window openings or a `sky` (docs/daylight.md, "The contract"). */
+  daylight?: LightingDaylight;
+}
+
+/**
+ * Daylight of a scene (issue 30): the sky as written (absent: no daylight is baked, the windows
+ * only let light out), version 2's windows as written, and the glazing of each window opening of
+ * `room.shape` by its input index (a version-2 window becomes an opening of the box's outline).
+ */
+export interface LightingDaylight {
+  sky?: SceneSky;
+  windows: SceneWindow[];
+  glazing: Record<number, Glazing>;
 }

@@ -21,7 +21,7 @@ import { DEFAULT_GROUND_REFLECTANCE } from '../../daylight/skies';
 import { solarPosition } from '../../daylight/solarPosition';
 import { excerpt } from '../../untrustedJson';
 import { describeIssues, schemaFieldNames, suggestField } from '../../zodIssues';
-import { LightingSceneError } from './parseLightingScene';
+import { LightingSceneError } from './lightingSceneError';
 
 export const DAYLIGHT_LIMITS = {
   maxWindows: 100,
