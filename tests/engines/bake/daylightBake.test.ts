@@ -108,7 +108,9 @@ function compare(name: string, c: Case, stride: number) {
   const peak = Math.max(...cmp.points.map((p) => p.reference.total));
   const direct = relativeErrors(cmp.points, 'direct', 0.01 * peak);
   const total = relativeErrors(cmp.points, 'total', 0.01 * peak);
-  console.info(`${name}: bake ${bake.ms.toFixed(0)} ms (daylight direct ${bake.report.daylight?.directMs.toFixed(0)} ms); ${cmp.points.length} points, ${cmp.nearEdge} near an edge; direct RMS ${pct(direct.rms)} max ${pct(direct.max)}; total RMS ${pct(total.rms)} max ${pct(total.max)}`);
+  console.info(
+    `${name}: bake ${bake.ms.toFixed(0)} ms (daylight direct ${bake.report.daylight?.directMs.toFixed(0)} ms); ${cmp.points.length} points, ${cmp.nearEdge} near an edge; direct RMS ${pct(direct.rms)} max ${pct(direct.max)}; total RMS ${pct(total.rms)} max ${pct(total.max)}`,
+  );
   return { bake, ref, cmp, direct, total };
 }
 
@@ -170,18 +172,20 @@ describe('daylight in the baker vs the daylight reference', () => {
       const inside = x > 1.75 && x < 3.25 && y > 0.9 && y < 2.3;
       // Distance of the texel from the patch's edge, measured on the window: within one texel the centre may fall either side.
       const margin = Math.min(Math.abs(x - 1.75), Math.abs(x - 3.25), Math.abs(y - 0.9), Math.abs(y - 2.3));
-      if (e[k] > 0) {
-        lit++;
-        expect(Math.abs(e[k] / expected - 1)).toBeLessThan(1e-4);
-      }
-      if (inside !== e[k] > 0 && margin > texelSize) wrong++;
+      if (e[k] > 0) lit++;
+      // Beyond a texel from the edge: exactly lit or dark; nearer, a texel mean between 0 and the beam.
+      if (margin > texelSize) {
+        if (inside ? Math.abs(e[k] / expected - 1) > 1e-4 : e[k] !== 0) wrong++;
+      } else expect(e[k]).toBeLessThanOrEqual(expected * (1 + 1e-4));
       patchFlux += e[k] * position[4 * k + 3] * texelSize * texelSize;
     }
     const beam = E_N * glazingTransmittance(glazingFrom('double'), cosW) * cosW * 1.5 * 1.4;
-    console.info(`sun patch: ${lit} floor texels lit, ${wrong} wrong beyond a texel from the edge; floor flux ${patchFlux.toFixed(0)} lm vs beam ${beam.toFixed(0)} lm (${pct(patchFlux / beam - 1)}); report sun flux ${report.daylight?.sunFlux.toFixed(0)}`);
+    console.info(
+      `sun patch: ${lit} floor texels lit, ${wrong} wrong beyond a texel from the edge; floor flux ${patchFlux.toFixed(0)} lm vs beam ${beam.toFixed(0)} lm (${pct(patchFlux / beam - 1)}); report sun flux ${report.daylight?.sunFlux.toFixed(0)}`,
+    );
     expect(lit).toBeGreaterThan(100);
     expect(wrong).toBe(0);
-    expect(Math.abs(patchFlux / beam - 1)).toBeLessThan(0.02);
+    expect(Math.abs(patchFlux / beam - 1)).toBeLessThan(0.005);
   });
 
   it('flux balance: in a black room the direct daylight on the surfaces = the light entering; with reflecting surfaces the bake absorbs what the reference does', () => {
@@ -195,8 +199,10 @@ describe('daylight in the baker vs the daylight reference', () => {
     const ref = reference(reflecting);
     const bakeAbsorbed = atlasFluxes(r.maps, 'total').absorbed;
     const refFluxes = roomFluxes(ref);
-    console.info(`flux: entering ${entering.toFixed(0)} lm, black-room direct ${direct.toFixed(0)} lm (${pct(direct / entering - 1)}); reflecting: absorbed bake ${bakeAbsorbed.toFixed(0)} vs reference ${refFluxes.absorbed.toFixed(0)} lm (${pct(bakeAbsorbed / refFluxes.absorbed - 1)}), reference leaving ${refFluxes.escaped.toFixed(0)} lm`);
-    expect(Math.abs(direct / entering - 1)).toBeLessThan(0.01);
+    console.info(
+      `flux: entering ${entering.toFixed(0)} lm, black-room direct ${direct.toFixed(0)} lm (${pct(direct / entering - 1)}); reflecting: absorbed bake ${bakeAbsorbed.toFixed(0)} vs reference ${refFluxes.absorbed.toFixed(0)} lm (${pct(bakeAbsorbed / refFluxes.absorbed - 1)}), reference leaving ${refFluxes.escaped.toFixed(0)} lm`,
+    );
+    expect(Math.abs(direct / entering - 1)).toBeLessThan(0.005);
     expect(Math.abs(bakeAbsorbed / refFluxes.absorbed - 1)).toBeLessThan(0.01);
     for (const m of [r.maps.objects!.direct, r.maps.objects!.total]) expect(m.every((v) => Number.isFinite(v) && v >= 0)).toBe(true);
   });

@@ -2,9 +2,8 @@
  * Lighting scene, versions 1, 2 and 3: the contract between the configurator, the baker
  * and the command line (docs/scene-format.md). Extend, never break.
  */
-import type { Glazing } from '../../daylight/glazing';
 import type { Room as ShapedRoom } from '../../room/normaliseRoom';
-import type { SceneSky, SceneWindow } from './parseDaylight';
+import type { SceneSky, SceneWindow, TransmittanceValue } from './parseDaylight';
 
 export type Rgb = [number, number, number];
 export type Vec3 = [number, number, number];
@@ -91,12 +90,13 @@ export interface LightingScene {
 }
 
 /**
- * Daylight of a scene (issue 30): the sky as written (absent: no daylight is baked, the windows
- * only let light out), version 2's windows as written, and the glazing of each window opening of
- * `room.shape` by its input index (a version-2 window becomes an opening of the box's outline).
+ * Daylight of a scene (issue 30): the sky (absent: no daylight is baked, the windows only let
+ * light out), version 2's windows as written, and the `transmittance` written on window openings
+ * of `room.shape` by input index (version 2: every window, which becomes opening i of the box's
+ * outline; version 3: those that give one, the others are DEFAULT_TRANSMITTANCE, "double").
  */
 export interface LightingDaylight {
   sky?: SceneSky;
   windows: SceneWindow[];
-  glazing: Record<number, Glazing>;
+  transmittance: Record<number, TransmittanceValue>;
 }

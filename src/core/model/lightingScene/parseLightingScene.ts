@@ -18,7 +18,7 @@ import { roomSchema } from '../../room/roomSchema';
 import { boxReflectanceOf } from './boxWallFacing';
 import { boxRoomInput } from '../../room/boxRoom';
 import { boxWindowsAsOpenings } from './daylightConditions';
-import { parseDaylight, parseOpeningGlazing, parseSky, type SceneDaylight, type SceneWindow } from './parseDaylight';
+import { parseDaylight, parseOpeningTransmittance, parseSky, type SceneDaylight, type SceneWindow, type TransmittanceValue } from './parseDaylight';
 import { excerpt, jsonShapeProblem } from '../../untrustedJson';
 import { LightingSceneError } from './lightingSceneError';
 import { describeIssues, schemaFieldNames } from '../../zodIssues';
@@ -135,7 +135,8 @@ export const lightingSceneSchema: z.ZodType = schema;
 /** The version-3 structure. */
 export const lightingSceneSchemaV3: z.ZodType = schemaV3;
 
-const FIELD_NAMES = new Set([...schemaFieldNames(schema), ...schemaFieldNames(schemaV3)]);
+// `transmittance` is read off a version-3 opening before roomSchema sees it (withoutGlazing): named here so a misspelling gets its suggestion.
+const FIELD_NAMES = new Set([...schemaFieldNames(schema), ...schemaFieldNames(schemaV3), 'transmittance']);
 
 /** Fields of a box room (versions 1 and 2) and of a version-3 room: a file that mixes them is told which version means what. */
 const BOX_ROOM_FIELDS = ['width', 'depth'] as const;
@@ -230,7 +231,7 @@ function boxWithWindows(room: LightingRoom, windows: readonly SceneWindow[], sou
 /** The daylight of a version-2 scene: its sky, its windows and their glazing by opening index (the windows in order, as boxWithWindows makes them openings). */
 function boxDaylight(daylight: SceneDaylight): Pick<LightingScene, 'daylight'> {
   if (daylight.windows.length === 0 && !daylight.sky) return {};
-  return { daylight: { ...(daylight.sky ? { sky: daylight.sky } : {}), windows: daylight.windows, glazing: Object.fromEntries(daylight.windows.map((w, i) => [i, w.glazing])) } };
+  return { daylight: { ...(daylight.sky ? { sky: daylight.sky } : {}), windows: daylight.windows, transmittance: Object.fromEntries(daylight.windows.map((w, i) => [i, w.transmittance])) } };
 }
 
 type ParsedLuminaire = z.infer<typeof schema>['luminaires'][number];
@@ -288,7 +289,7 @@ const round3 = (v: number): number => Math.round(v * 1000) / 1000;
 function parseVersion3(json: unknown, source: string): LightingScene {
   const doc = json as { room?: { openings?: unknown }; sky?: unknown };
   // Glazing first (its own messages), then the room's schema on openings without it.
-  const glazing = parseOpeningGlazing(doc.room?.openings, source);
+  const written = [...parseOpeningTransmittance(doc.room?.openings, source)].filter((e): e is [number, TransmittanceValue] => e[1] !== undefined);
   const sky = doc.sky === undefined ? undefined : parseSky(doc.sky, source);
   const result = schemaV3.safeParse(withoutGlazing(json));
   if (!result.success) throw new LightingSceneError(`${source}: ${describeIssues(result.error.issues, FIELD_NAMES).replace(/^\(root\): /, '')}`);
@@ -312,7 +313,7 @@ function parseVersion3(json: unknown, source: string): LightingScene {
     room,
     luminaires: readLuminaires(luminaires),
     ...readObjects(objects),
-    ...(sky || glazing.size > 0 ? { daylight: { ...(sky ? { sky } : {}), windows: [], glazing: Object.fromEntries(glazing) } } : {}),
+    ...(sky || written.length > 0 ? { daylight: { ...(sky ? { sky } : {}), windows: [], transmittance: Object.fromEntries(written) } } : {}),
   };
 }
 
