@@ -88,9 +88,9 @@ const schema = z.strictObject(
     version: z.union([z.literal(1), z.literal(2)]),
     nearField: z.enum(NEAR_FIELD_MODELS, { error: (i) => `must be "split" or "point", got ${show(i.input)}` }).optional(),
     objects: z.array(sceneObject, { error: 'must be an array' }).max(SCENE_LIMITS.maxObjects, `more than ${SCENE_LIMITS.maxObjects} objects`).optional(),
-    // Read by parseDaylight (parseDaylight.ts), which names every field's problem itself.
-    windows: z.unknown().optional(),
-    sky: z.unknown().optional(),
+    // Read by parseDaylight (parseDaylight.ts), which names every field's problem itself; z.custom, not z.unknown, which the browser build's zod shim lacks.
+    windows: z.custom<unknown>().optional(),
+    sky: z.custom<unknown>().optional(),
     room: z.strictObject(
       {
         width: dimension,
