@@ -42,6 +42,8 @@ export interface BakeReport {
   readbacks: { count: number; bytes: number };
   /** Per object (scenes with objects only; docs/scene-format.md): area, atlas texels, total lux mean/min/max and flux. */
   objects?: ObjectReportEntry[];
+  /** Scenes with daylight through windows only (docs/daylight.md, "The baker"): the windows, the CPU time of the direct daylight and its flux on the room's surfaces and objects (lm, Y) split into sky (with the ground) and sun. */
+  daylight?: { windows: number; directMs: number; skyFlux: number; sunFlux: number };
 }
 
 /** A receiver's maps on the GPU. */

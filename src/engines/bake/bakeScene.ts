@@ -3,6 +3,7 @@ import type { Photometry } from '../../core/photometry/types';
 import type { MeshPlacement } from '../../core/mesh/placeMesh';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
 import type { Room as ShapedRoom } from '../../core/room/normaliseRoom';
+import type { BakeDaylight } from './daylight/bakeDaylight';
 
 /**
  * One luminaire with its photometry already parsed (the baker reads no files):
@@ -38,6 +39,11 @@ export interface BakeScene {
    * baker compiles exactly the shaders of an empty room.
    */
   objects?: BakeObject[];
+  /**
+   * Daylight through the windows of a shaped room (issue 30, docs/daylight.md "The baker"); ignored
+   * for a box room without `shape` and for a room without windows, which bake exactly as before.
+   */
+  daylight?: BakeDaylight;
   /** Near-field model of the luminaires (scene file v2 `nearField`; absent = 'split'); the bake setting `nearField` overrides it. */
   nearField?: NearField;
 }

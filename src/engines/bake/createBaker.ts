@@ -4,6 +4,8 @@ import { resolveBakeSettings, type BakeSettings } from './bakeSettings';
 import type { Baker, GivenObjectDirect } from './bakeJob';
 import { requireFloatTargets } from './floatTarget';
 import { encloseShapedRoom } from './shapedRoom/encloseShapedRoom';
+import { daylightBakeInput } from './daylight/daylightBakeInput';
+import { startDaylightBakeJob } from './daylight/startDaylightBakeJob';
 import { startBakeJob } from './startBakeJob';
 import { createTargetPool } from './targetPool';
 
@@ -15,8 +17,13 @@ export function createBaker(gl: WebGL2RenderingContext): Baker {
   // Render targets outlive a job: the next bake of the same room reuses them (targetPool.ts).
   const pool = createTargetPool(gl, linear);
   // A room of any shape bakes as its enclosure (shapedRoom/encloseShapedRoom.ts); a box scene passes unchanged.
-  const start = (scene: BakeScene, partial: Partial<BakeSettings> | undefined, direct: Record<SurfaceName, Float32Array> | null, objectDirect: Float32Array | null = null) =>
-    startBakeJob(gl, linear, pool, encloseShapedRoom(scene), resolveBakeSettings(partial), direct, objectDirect);
+  const start = (scene: BakeScene, partial: Partial<BakeSettings> | undefined, direct: Record<SurfaceName, Float32Array> | null, objectDirect: Float32Array | null = null) => {
+    const enclosed = encloseShapedRoom(scene);
+    // Windows with a sky or a sun are sources (daylight/startDaylightBakeJob.ts); a room without them bakes exactly as before.
+    const daylight = direct ? null : daylightBakeInput(scene, enclosed);
+    if (daylight) return startDaylightBakeJob(gl, linear, pool, daylight, resolveBakeSettings(partial));
+    return startBakeJob(gl, linear, pool, enclosed, resolveBakeSettings(partial), direct, objectDirect);
+  };
   return {
     dispose: () => pool.dispose(),
     start: (scene, settings) => start(scene, settings, null),

@@ -36,7 +36,8 @@ function distanceToSegment(p: PlanPoint, a: PlanPoint, b: PlanPoint): number {
   return Math.hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dz);
 }
 
-function distanceToEdges(s: RoomSurface, p: Vec3): number {
+/** Distance (m) from a point of the surface to the nearest edge of its polygons or of an opening in it. */
+export function distanceToEdges(s: RoomSurface, p: Vec3): number {
   const d = [p[0] - s.frame.origin[0], p[1] - s.frame.origin[1], p[2] - s.frame.origin[2]];
   const q: PlanPoint = [d[0] * s.frame.u[0] + d[1] * s.frame.u[1] + d[2] * s.frame.u[2], d[0] * s.frame.v[0] + d[1] * s.frame.v[1] + d[2] * s.frame.v[2]];
   let best = Infinity;

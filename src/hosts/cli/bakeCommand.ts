@@ -7,6 +7,7 @@ import { loadLightingSceneFileAsync, type LoadedLightingScene } from '../node/lo
 import { prepareGl } from '../node/prepareGl';
 import { sceneWarnings } from '../node/sceneWarnings';
 import { shapedRoomReport } from '../node/bakeSummary';
+import { daylightReport } from '../node/daylightReport';
 import { writeBakeOutput, type SceneObjectsOutput } from '../node/writeBakeOutput';
 import { resolveBakeSettings } from '../../engines/bake/bakeSettings';
 import { ALLOW_FLAG, cliReadableFolders } from '../node/cliReadableFolders';
@@ -56,6 +57,8 @@ export async function run(args: string[]): Promise<number> {
       const before = sceneBaker.programCount();
       const { maps, report } = sceneBaker.bake(scene, settings);
       const compiled = sceneBaker.programCount() - before;
+      // Windows with a sky: the daylight numbers (daylightReport.ts; its further bakes run after the scene's own is counted).
+      const daylight = daylightReport(scene.scene, scene.bakeScene, maps, report, settings, (s) => sceneBaker.bakeScene(s, settings));
       writeBakeOutput(
         folders[i],
         positional[i],
@@ -67,6 +70,7 @@ export async function run(args: string[]): Promise<number> {
           warnings: warnings[i],
           // A room of any shape: its floor area and surfaces from the geometry (issue 29).
           ...(scene.scene.room.shape ? { room: shapedRoomReport(scene.scene.room.shape) } : {}),
+          ...(daylight ? { daylight } : {}),
         },
         objectsOutput(scene),
       );

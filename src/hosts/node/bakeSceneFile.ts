@@ -1,4 +1,5 @@
 import type { BakedMaps } from '../../engines/bake/bakedMaps';
+import type { BakeScene } from '../../engines/bake/bakeScene';
 import type { BakeSettings } from '../../engines/bake/bakeSettings';
 import { resolveBakeSettings } from '../../engines/bake/bakeSettings';
 import { createBaker, type BakeReport } from '../../engines/bake/createBaker';
@@ -9,6 +10,8 @@ import { loadLightingSceneFile, type LoadedLightingScene } from './loadLightingS
 export interface SceneBaker {
   /** Bake a loaded scene (settings resolved by the baker, or passed on as resolveBakeSettings gave them); programs compiled by earlier bakes of this SceneBaker are reused. */
   bake(loaded: LoadedLightingScene, settings: Partial<BakeSettings>): { loaded: LoadedLightingScene; maps: BakedMaps; report: BakeReport };
+  /** Bake a scene as the baker takes it on the same context (the daylight report's further bakes, daylightReport.ts). */
+  bakeScene(scene: BakeScene, settings: Partial<BakeSettings>): { maps: BakedMaps; report: BakeReport };
   /** Programs compiled so far on this context (a batch compiles each distinct shader once). */
   programCount(): number;
   destroy(): void;
@@ -27,6 +30,7 @@ export function createSceneBaker(): SceneBaker {
       const { maps, report } = baker.bake(loaded.bakeScene, settings);
       return { loaded, maps, report };
     },
+    bakeScene: (scene, settings) => baker.bake(scene, settings),
     programCount: () => cachedProgramCount(gl),
     destroy: () => gl.destroy(),
   };

@@ -3,6 +3,7 @@
  * and the command line (docs/scene-format.md). Extend, never break.
  */
 import type { Room as ShapedRoom } from '../../room/normaliseRoom';
+import type { SceneSky, SceneWindow, TransmittanceValue } from './parseDaylight';
 
 export type Rgb = [number, number, number];
 export type Vec3 = [number, number, number];
@@ -84,4 +85,18 @@ export interface LightingScene {
   luminaires: LightingLuminaire[];
   /** Versions 2 and 3; absent or empty: an empty room. */
   objects?: LightingObject[];
+  /** Versions 2 and 3 with `windows` (a box, which then has `room.shape`), window openings or a `sky` (docs/daylight.md, "The contract"). */
+  daylight?: LightingDaylight;
+}
+
+/**
+ * Daylight of a scene (issue 30): the sky (absent: no daylight is baked, the windows only let
+ * light out), version 2's windows as written, and the `transmittance` written on window openings
+ * of `room.shape` by input index (version 2: every window, which becomes opening i of the box's
+ * outline; version 3: those that give one, the others are DEFAULT_TRANSMITTANCE, "double").
+ */
+export interface LightingDaylight {
+  sky?: SceneSky;
+  windows: SceneWindow[];
+  transmittance: Record<number, TransmittanceValue>;
 }

@@ -6,12 +6,22 @@
  * parseLightingScene(lightingSceneJson(scene)) gives the scene back.
  */
 import { roomInputOf } from '../../room/roomInputOf';
+import { skyJson, windowJson } from './daylightJson';
 import type { LightingScene } from './lightingScene';
 
 export function lightingSceneJson(scene: LightingScene): Record<string, unknown> {
+  if (!scene.room.shape && !scene.daylight) return scene as unknown as Record<string, unknown>;
+  const { daylight, ...rest } = scene;
+  const sky = daylight?.sky ? { sky: skyJson(daylight.sky) } : {};
   const shape = scene.room.shape;
-  if (!shape) return scene as unknown as Record<string, unknown>;
+  // A version-2 box with windows has a shape (the reader's, from the windows): it is written as the box and its windows.
+  if (!shape || scene.version !== 3) {
+    const { shape: _, ...box } = scene.room;
+    const windows = daylight && daylight.windows.length > 0 ? { windows: daylight.windows.map(windowJson) } : {};
+    return { ...rest, room: box, ...windows, ...sky };
+  }
   const { outline, height, slopes, openings, reflectance } = roomInputOf(shape);
-  const room = { outline, height, ...(slopes ? { slopes } : {}), reflectance, ...(openings ? { openings } : {}) };
-  return { ...scene, version: 3, room };
+  const glazed = openings?.map((o, i) => (daylight?.transmittance[i] !== undefined ? { ...o, transmittance: daylight.transmittance[i] } : o));
+  const room = { outline, height, ...(slopes ? { slopes } : {}), reflectance, ...(glazed ? { openings: glazed } : {}) };
+  return { ...rest, version: 3, room, ...sky };
 }

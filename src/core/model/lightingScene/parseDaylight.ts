@@ -21,7 +21,7 @@ import { DEFAULT_GROUND_REFLECTANCE } from '../../daylight/skies';
 import { solarPosition } from '../../daylight/solarPosition';
 import { excerpt } from '../../untrustedJson';
 import { describeIssues, schemaFieldNames, suggestField } from '../../zodIssues';
-import { LightingSceneError } from './parseLightingScene';
+import { LightingSceneError } from './lightingSceneError';
 import { safeParseInEnglish } from '../../zodEnglish';
 
 export const DAYLIGHT_LIMITS = {
@@ -285,6 +285,13 @@ export function parseDaylight(doc: { windows?: unknown; sky?: unknown; room?: un
  */
 export function parseOpeningGlazing(openings: unknown, source: string): Map<number, Glazing> {
   const out = new Map<number, Glazing>();
+  for (const [i, t] of parseOpeningTransmittance(openings, source)) out.set(i, glazingFrom(t ?? DEFAULT_TRANSMITTANCE));
+  return out;
+}
+
+/** `transmittance` as written on each window opening (undefined where a window gives none); refusals as parseOpeningGlazing's. */
+export function parseOpeningTransmittance(openings: unknown, source: string): Map<number, TransmittanceValue | undefined> {
+  const out = new Map<number, TransmittanceValue | undefined>();
   if (!Array.isArray(openings)) return out;
   openings.forEach((o, i) => {
     if (typeof o !== 'object' || o === null) return;
@@ -295,12 +302,12 @@ export function parseOpeningGlazing(openings: unknown, source: string): Map<numb
       return;
     }
     if (!('transmittance' in rec)) {
-      out.set(i, glazingFrom(DEFAULT_TRANSMITTANCE));
+      out.set(i, undefined);
       return;
     }
     const r = safeParseInEnglish(transmittance, rec.transmittance);
     if (!r.success) refuse(source, path, r.error.issues[0].message);
-    else out.set(i, glazingFrom(r.data));
+    else out.set(i, r.data);
   });
   return out;
 }

@@ -10,23 +10,21 @@
  * Limits are in SCENE_LIMITS and docs/scene-format.md.
  */
 import { z } from 'zod/mini';
-import { InputError } from '../../inputError';
 import { NEAR_FIELD_MODELS, SURFACE_NAMES, type LightingRoom, type LightingScene, type SurfaceName } from './lightingScene';
 import { normaliseRoom, type Room as ShapedRoom } from '../../room/normaliseRoom';
 import { pointInsideRoom } from '../../room/ceilingHeightAt';
 import type { RoomInput } from '../../room/roomInput';
 import { roomSchema } from '../../room/roomSchema';
 import { boxReflectanceOf } from './boxWallFacing';
-import { excerpt, jsonShapeProblem, oneLine } from '../../untrustedJson';
+import { boxRoomInput } from '../../room/boxRoom';
+import { boxWindowsAsOpenings } from './daylightConditions';
+import { parseDaylight, parseOpeningTransmittance, parseSky, type SceneDaylight, type SceneWindow, type TransmittanceValue } from './parseDaylight';
+import { excerpt, jsonShapeProblem } from '../../untrustedJson';
+import { LightingSceneError } from './lightingSceneError';
 import { describeIssues, schemaFieldNames } from '../../zodIssues';
 import { safeParseInEnglish } from '../../zodEnglish';
 
-export class LightingSceneError extends InputError {
-  override name = 'LightingSceneError';
-  constructor(message: string) {
-    super(oneLine(message));
-  }
-}
+export { LightingSceneError };
 
 /** Newest lighting scene version this program reads. */
 export const LIGHTING_SCENE_VERSION = 3;
@@ -95,8 +93,9 @@ const schema = z.strictObject(
     version: z.union([z.literal(1), z.literal(2)]),
     nearField: z.optional(z.enum(NEAR_FIELD_MODELS, { error: (i) => `must be "split" or "point", got ${show(i.input)}` })),
     objects: z.optional(z.array(sceneObject, { error: 'must be an array' }).check(z.maxLength(SCENE_LIMITS.maxObjects, `more than ${SCENE_LIMITS.maxObjects} objects`))),
-    // Checked before zod (a clear "not baked yet"); only empty lists reach here.
-    windows: z.optional(z.array(z.never())),
+    // Read by parseDaylight (parseDaylight.ts), which names every field's problem itself.
+    windows: z.optional(z.custom<unknown>()),
+    sky: z.optional(z.custom<unknown>()),
     room: z.strictObject(
       {
         width: dimension,
@@ -138,7 +137,8 @@ export const lightingSceneSchema: z.ZodMiniType = schema;
 /** The version-3 structure. */
 export const lightingSceneSchemaV3: z.ZodMiniType = schemaV3;
 
-const FIELD_NAMES = new Set([...schemaFieldNames(schema), ...schemaFieldNames(schemaV3), 'sky']);
+// `transmittance` is read off a version-3 opening before roomSchema sees it (withoutGlazing): named here so a misspelling gets its suggestion.
+const FIELD_NAMES = new Set([...schemaFieldNames(schema), ...schemaFieldNames(schemaV3), 'transmittance']);
 
 /** Fields of a box room (versions 1 and 2) and of a version-3 room: a file that mixes them is told which version means what. */
 const BOX_ROOM_FIELDS = ['width', 'depth'] as const;
@@ -171,13 +171,7 @@ function versionProblem(json: unknown): string | null {
       if (shaped) return `room.${shaped}: needs "version": 3 (this file says version ${v})`;
     }
   }
-  for (const field of ['windows'] as const) {
-    const list = doc[field];
-    if (list === undefined) continue;
-    if (!Array.isArray(list)) return `${field}: must be an array`;
-    if (list.length > 0) return `${field}: this luxbox does not bake ${field} yet (remove them or use a newer luxbox)`;
-  }
-  if ('sky' in doc) return 'sky: this luxbox does not bake a sky yet (remove it or use a newer luxbox)';
+  if (v === 3 && 'windows' in doc) return 'windows: a version-3 room has its windows in room.openings (kind "window", with "transmittance")';
   return null;
 }
 
@@ -212,13 +206,34 @@ export function parseLightingScene(json: unknown, source: string): LightingScene
       }
     }
   });
+  const daylight = parseDaylight(json as { windows?: unknown; sky?: unknown; room?: unknown }, source);
   return {
     version,
     ...(nearField !== undefined ? { nearField } : {}),
-    room: { width: room.width, height: room.height, depth: room.depth, reflectance: room.reflectance },
+    room: boxWithWindows({ width: room.width, height: room.height, depth: room.depth, reflectance: room.reflectance }, daylight.windows, source),
     luminaires: readLuminaires(luminaires),
     ...readObjects(objects),
+    ...boxDaylight(daylight),
   };
+}
+
+/**
+ * A version-2 box with windows becomes the room of any shape that means the same (boxRoomInput,
+ * boxWindowsAsOpenings): the windows are openings of kind "window" in its walls, baked as the
+ * issue-29 rooms are. A window in the ceiling (a skylight) has no version-3 form yet and is refused.
+ */
+function boxWithWindows(room: LightingRoom, windows: readonly SceneWindow[], source: string): LightingRoom {
+  if (windows.length === 0) return room;
+  const { openings, skylights } = boxWindowsAsOpenings(windows, room);
+  if (skylights.length > 0) throw new LightingSceneError(`${source}: windows[${skylights[0]}].wall: a window in the ceiling (a skylight) is not baked yet; put it in a wall`);
+  const input = boxRoomInput({ width: room.width, height: room.height, depth: room.depth, reflectance: room.reflectance });
+  return { ...room, shape: normaliseRoom({ ...input, openings: openings.map(({ window: _, ...o }) => o) }) };
+}
+
+/** The daylight of a version-2 scene: its sky, its windows and their glazing by opening index (the windows in order, as boxWithWindows makes them openings). */
+function boxDaylight(daylight: SceneDaylight): Pick<LightingScene, 'daylight'> {
+  if (daylight.windows.length === 0 && !daylight.sky) return {};
+  return { daylight: { ...(daylight.sky ? { sky: daylight.sky } : {}), windows: daylight.windows, transmittance: Object.fromEntries(daylight.windows.map((w, i) => [i, w.transmittance])) } };
 }
 
 type ParsedLuminaire = z.infer<typeof schema>['luminaires'][number];
@@ -274,7 +289,11 @@ const round3 = (v: number): number => Math.round(v * 1000) / 1000;
  * the ceiling and every slope); an object's whole mesh is checked once loaded (resolveBakeScene).
  */
 function parseVersion3(json: unknown, source: string): LightingScene {
-  const result = safeParseInEnglish(schemaV3, json);
+  const doc = json as { room?: { openings?: unknown }; sky?: unknown };
+  // Glazing first (its own messages), then the room's schema on openings without it.
+  const written = [...parseOpeningTransmittance(doc.room?.openings, source)].filter((e): e is [number, TransmittanceValue] => e[1] !== undefined);
+  const sky = doc.sky === undefined ? undefined : parseSky(doc.sky, source);
+  const result = safeParseInEnglish(schemaV3, withoutGlazing(json));
   if (!result.success) throw new LightingSceneError(`${source}: ${describeIssues(result.error.issues, FIELD_NAMES).replace(/^\(root\): /, '')}`);
   const { nearField, room: input, luminaires, objects } = result.data;
   // roomSchema has checked every rule normaliseRoom enforces, so this never throws here.
@@ -296,5 +315,19 @@ function parseVersion3(json: unknown, source: string): LightingScene {
     room,
     luminaires: readLuminaires(luminaires),
     ...readObjects(objects),
+    ...(sky || written.length > 0 ? { daylight: { ...(sky ? { sky } : {}), windows: [], transmittance: Object.fromEntries(written) } } : {}),
   };
+}
+
+/** The document with `transmittance` taken off the room's openings (parseOpeningGlazing has read it; roomSchema, shared with configurations, does not know it). */
+function withoutGlazing(json: unknown): unknown {
+  const doc = json as { room?: unknown };
+  const room = doc.room as { openings?: unknown } | undefined;
+  if (typeof room !== 'object' || room === null || !Array.isArray(room.openings)) return json;
+  const openings = room.openings.map((o: unknown) => {
+    if (typeof o !== 'object' || o === null || !('transmittance' in o)) return o;
+    const { transmittance: _, ...rest } = o as Record<string, unknown>;
+    return rest;
+  });
+  return { ...doc, room: { ...room, openings } };
 }

@@ -1,0 +1,95 @@
+/**
+ * report.json's `daylight` (docs/daylight.md, "The report"): for a scene with a sky and windows,
+ * the sky and the sun's position, the daylight entering, the daylight illuminance on the work
+ * plane (WORK_PLANE_HEIGHT, WALL_BAND from the walls) at the scene's date, time and place, and
+ * the daylight factor under the CIE standard overcast sky — on the work plane and on the floor —
+ * with EN 17037's shares (core/daylight/daylightFactor.ts). Daylight alone: a scene with
+ * luminaires is baked once more without them, and once more under the overcast sky unless its
+ * own sky is that sky without a sun.
+ */
+import { daylightFactorStatistics, type DaylightFactorStatistics } from '../../core/daylight/daylightFactor';
+import type { LightingScene, Vec3 } from '../../core/model/lightingScene/lightingScene';
+import type { SceneSky } from '../../core/model/lightingScene/parseDaylight';
+import type { BakeReport } from '../../engines/bake/bakeJob';
+import type { BakeScene } from '../../engines/bake/bakeScene';
+import type { BakeSettings } from '../../engines/bake/bakeSettings';
+import { luxOf, type BakedMaps } from '../../engines/bake/bakedMaps';
+import type { BakeDaylight } from '../../engines/bake/daylight/bakeDaylight';
+import { daylightPointContext } from '../../engines/bake/daylight/daylightAtlasDirect';
+import { daylightWindows } from '../../engines/bake/daylight/daylightWindows';
+import { bakeDaylightFor, bakeDaylightOf } from '../../engines/bake/daylight/sceneDaylight';
+import { WALL_BAND, WORK_PLANE_HEIGHT, WORK_PLANE_SPACING, workPlaneIlluminance, workPlanePoints } from '../../engines/bake/daylight/workPlaneDaylight';
+import { createObjectRayCaster } from '../../engines/bake/objects/createObjectRayCaster';
+import { prepareObjectsCached } from '../../engines/bake/objects/prepareObjectsCached';
+import { encloseShapedRoom } from '../../engines/bake/shapedRoom/encloseShapedRoom';
+
+/** Outdoor horizontal illuminance of the daylight factor's overcast sky, lux (a DF does not depend on it). */
+const DF_SKY_ILLUMINANCE = 10_000;
+
+type Bake = (scene: BakeScene) => { maps: BakedMaps; report: BakeReport };
+
+const round = (v: number, digits = 4): number => Number(v.toPrecision(digits));
+const rounded = (s: DaylightFactorStatistics) => Object.fromEntries(Object.entries(s).map(([k, v]) => [k, typeof v === 'number' ? round(v) : v]));
+
+/** Work-plane illuminance (lux, Y) of a daylight-only bake's maps, at the plane's points. */
+function workPlane(bakeScene: BakeScene, maps: BakedMaps, daylight: BakeDaylight, settings: BakeSettings): { lux: Float64Array; points: number } {
+  const shape = bakeScene.room.shape!;
+  const enclosed = encloseShapedRoom(bakeScene);
+  const offset = enclosed.room.enclosure!.offset;
+  const prepared = prepareObjectsCached(enclosed.objects ?? [], { texelSize: settings.texelSize, maxAtlasSize: settings.maxTextureSize });
+  const ctx = daylightPointContext(prepared, daylight, daylightWindows(shape, offset, daylight.glazing), true);
+  const points = workPlanePoints(shape).map((p): Vec3 => [p[0] + offset[0], p[1] + offset[1], p[2] + offset[2]]);
+  const lux = workPlaneIlluminance(points, ctx, createObjectRayCaster(prepared), maps.objects!.atlas, maps.objects!.total);
+  return { lux, points: points.length };
+}
+
+/** Daylight factors (%) of the floor's atlas texels, weighted by their coverage. */
+function floorDaylightFactor(maps: BakedMaps, outside: number): DaylightFactorStatistics {
+  const o = maps.objects!;
+  const lux = luxOf(o.total);
+  const values: number[] = [];
+  const weights: number[] = [];
+  for (let k = 0; k < lux.length; k++) {
+    // The room's floor is the enclosure's first object (shapedRoom/roomSurfaceObjects.ts).
+    if (o.atlas.reflectance[4 * k + 3] !== 1 || !(o.atlas.position[4 * k + 3] > 0)) continue;
+    values.push((100 * lux[k]) / outside);
+    weights.push(o.atlas.position[4 * k + 3]);
+  }
+  return daylightFactorStatistics(values, weights);
+}
+
+export function daylightReport(scene: LightingScene, bakeScene: BakeScene, maps: BakedMaps, report: BakeReport, settings: BakeSettings, bake: Bake): Record<string, unknown> | null {
+  const own = bakeDaylightOf(scene);
+  const sky = scene.daylight?.sky;
+  if (!own || !sky || !bakeScene.room.shape || !report.daylight) return null;
+  const daylightOnly = bakeScene.luminaires.length === 0 ? maps : bake({ ...bakeScene, luminaires: [] }).maps;
+  const plane = workPlane(bakeScene, daylightOnly, own.daylight, settings);
+  const overcastSky: SceneSky = { type: 'cie-overcast', horizontalIlluminance: DF_SKY_ILLUMINANCE, groundReflectance: sky.groundReflectance };
+  const ownIsOvercast = sky.type === 'cie-overcast';
+  const overcast = ownIsOvercast ? own : bakeDaylightFor(overcastSky, scene);
+  const overcastMaps = ownIsOvercast ? daylightOnly : bake({ ...bakeScene, luminaires: [], daylight: overcast.daylight }).maps;
+  const overcastPlane = ownIsOvercast ? plane : workPlane(bakeScene, overcastMaps, overcast.daylight, settings);
+  const outside = overcast.conditions.skyHorizontalIlluminance;
+  const c = own.conditions;
+  const lux = [...plane.lux];
+  return {
+    sky: sky.type,
+    skyHorizontalIlluminance: round(c.skyHorizontalIlluminance),
+    sunHorizontalIlluminance: round(c.sunHorizontalIlluminance),
+    sun: c.position ? { elevation: round(c.position.elevation, 6), azimuth: round(c.position.azimuth, 6), shining: c.sun !== null } : null,
+    windows: report.daylight.windows,
+    enteringFlux: { sky: round(report.daylight.skyFlux), sun: round(report.daylight.sunFlux) },
+    workPlane: {
+      height: WORK_PLANE_HEIGHT,
+      wallBand: WALL_BAND,
+      spacing: WORK_PLANE_SPACING,
+      points: plane.points,
+      illuminance: lux.length > 0 ? { mean: round(lux.reduce((a, b) => a + b, 0) / lux.length), min: round(Math.min(...lux)), max: round(Math.max(...lux)) } : null,
+    },
+    daylightFactor: {
+      sky: 'cie-overcast',
+      workPlane: overcastPlane.points > 0 ? rounded(daylightFactorStatistics([...overcastPlane.lux].map((e) => (100 * e) / outside))) : null,
+      floor: rounded(floorDaylightFactor(overcastMaps, outside)),
+    },
+  };
+}
