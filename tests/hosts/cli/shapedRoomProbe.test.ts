@@ -44,7 +44,8 @@ describe('probe in a room of any shape', () => {
     const write = vi.spyOn(process.stdout, 'write').mockImplementation(() => true);
     try {
       // Coarse and quick: what is checked here is the command; the accuracy is tests/hosts/node/shapedRoomProbe.test.ts's.
-      await expect(run([SCENE, pointsFile(points), '--texel', '0.2', '--samples', '8', '--bounces', '1'])).resolves.toBe(0);
+      // The fixture's table lies in tests/fixtures/models, beside the scene's folder: named with --allow (docs/scene-format.md).
+      await expect(run([SCENE, pointsFile(points), '--texel', '0.2', '--samples', '8', '--bounces', '1', '--allow', 'tests/fixtures/models'])).resolves.toBe(0);
       const printed = JSON.parse(String(write.mock.calls.at(-1)![0])) as { total: number[]; direct: number[]; indirect: number[] };
       expect(Object.keys(printed)).toEqual(['total', 'direct', 'indirect']);
       for (const key of ['total', 'direct', 'indirect'] as const) expect(printed[key]).toHaveLength(points.length);
