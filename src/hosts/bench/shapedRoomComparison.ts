@@ -47,8 +47,15 @@ export function distanceToEdges(s: RoomSurface, p: Vec3): number {
   return best;
 }
 
-/** Every `stride`-th fully covered atlas texel of the room's surfaces: the bake's direct and total against the reference's at the texel's point. */
-export function compareWithReference(scene: BakeScene, maps: BakedMaps, reference: RoomReferenceResult, stride: number): ShapedComparison {
+/** Light at a point of a room surface, as a reference gives it. */
+export type ReferenceAt = (surface: RoomSurface, point: Vec3) => { direct: number; total: number };
+
+/**
+ * Every `stride`-th fully covered atlas texel of a shaped room's surfaces: the bake's direct and
+ * total against `referenceAt` at the texel's G-buffer point, points within EDGE_BAND of an edge
+ * left out and counted. The electric and the daylight comparisons differ only in the reference.
+ */
+export function compareAtlasWith(scene: BakeScene, maps: BakedMaps, stride: number, referenceAt: ReferenceAt): ShapedComparison {
   const enclosure = encloseShapedRoom(scene).room.enclosure;
   const o = maps.objects;
   if (!enclosure || !o) throw new Error('not a shaped room bake');
@@ -62,16 +69,21 @@ export function compareWithReference(scene: BakeScene, maps: BakedMaps, referenc
     const object = reflectance[4 * k + 3] - 1;
     if (object >= enclosure.surfaces.length) continue;
     if (covered++ % stride !== 0) continue;
-    const id = enclosure.surfaces[object];
+    const surface = surfaces.get(enclosure.surfaces[object])!;
     const p: Vec3 = [position[4 * k] - enclosure.offset[0], position[4 * k + 1] - enclosure.offset[1], position[4 * k + 2] - enclosure.offset[2]];
-    if (distanceToEdges(surfaces.get(id)!, p) < EDGE_BAND) {
+    if (distanceToEdges(surface, p) < EDGE_BAND) {
       out.nearEdge++;
       continue;
     }
-    const r = roomSurfaceIlluminanceAt(reference, id, p);
-    out.points.push({ surface: id, point: p, bake: { direct: direct[k], total: total[k] }, reference: { direct: r.direct, total: r.total } });
+    const r = referenceAt(surface, p);
+    out.points.push({ surface: surface.id, point: p, bake: { direct: direct[k], total: total[k] }, reference: { direct: r.direct, total: r.total } });
   }
   return out;
+}
+
+/** Every `stride`-th fully covered atlas texel of the room's surfaces: the bake's direct and total against the room reference's at the texel's point. */
+export function compareWithReference(scene: BakeScene, maps: BakedMaps, reference: RoomReferenceResult, stride: number): ShapedComparison {
+  return compareAtlasWith(scene, maps, stride, (surface, p) => roomSurfaceIlluminanceAt(reference, surface.id, p));
 }
 
 /** RMS and largest relative error of `kind` over the points whose reference exceeds `floor` lux. */
