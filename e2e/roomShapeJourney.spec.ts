@@ -1,6 +1,7 @@
 import { spawnSync } from 'node:child_process';
 import { mkdirSync } from 'node:fs';
 import { expect, test, type Page } from '@playwright/test';
+import { PNG } from 'pngjs';
 import type { LightingScene } from '../src/core/model/lightingScene/lightingScene';
 import { viewerStatus as status } from './helpers';
 
@@ -109,6 +110,41 @@ async function railUnderTheSlope(page: Page): Promise<{ x: number; z: number }> 
   throw new Error('no spot under the slope was accepted');
 }
 
+/**
+ * The southern spot aimed past the L's inner corner (3.6, 3) into the hidden wing, as a shopper
+ * lights the dining end (the aim action the aiming handles run): its beam meets the inner wall's
+ * edge, so half of its pool lies in the corner's shadow.
+ */
+async function aimPastTheCorner(page: Page) {
+  const modules: { id: string }[] = (await sceneFile(page)).configuration.systems[0].rails[0].modules;
+  const moduleId = modules[modules.length - 1].id;
+  expect(await page.evaluate((id) => window.luxbox!.runAction('aimAt', { moduleId: id, point: [2.2, 0, 3.6] }), moduleId)).toEqual({ ok: true });
+}
+
+/**
+ * Mean luminance (Rec. 709 weights on the sRGB values, 0..255) of the top view's pixels within
+ * 6 px of a floor point. The top camera (src/engines/view/cameraPresets.ts) looks straight down
+ * from H + d above the floor's centre, d = 0.6·max(W, D)/tan 15°, vertical field 30°, north up:
+ * the floor plane maps linearly, (canvas height / 2) / ((H + d)·tan 15°) pixels per metre.
+ */
+function floorPixel(png: PNG, room: { width: number; depth: number; height: number }, point: [number, number]): number {
+  const t = Math.tan((15 * Math.PI) / 180);
+  const d = (0.6 * Math.max(room.width, room.depth)) / t;
+  const perMetre = png.height / 2 / ((room.height + d) * t);
+  const cx = png.width / 2 + (point[0] - room.width / 2) * perMetre;
+  const cy = png.height / 2 + (point[1] - room.depth / 2) * perMetre;
+  let sum = 0;
+  let n = 0;
+  for (let y = Math.round(cy - 6); y <= Math.round(cy + 6); y++)
+    for (let x = Math.round(cx - 6); x <= Math.round(cx + 6); x++) {
+      if ((x - cx) ** 2 + (y - cy) ** 2 > 36) continue;
+      const i = 4 * (y * png.width + x);
+      sum += 0.2126 * png.data[i] + 0.7152 * png.data[i + 1] + 0.0722 * png.data[i + 2];
+      n++;
+    }
+  return sum / n;
+}
+
 test.describe('desktop', () => {
   test.use({ reducedMotion: 'reduce', viewport: { width: 1440, height: 900 } });
 
@@ -145,6 +181,7 @@ test.describe('desktop', () => {
     for (const h of moduleHeights) expect(h).toBeCloseTo(moduleHeights[0], 6);
     expect(Math.max(...wires.map((w) => w.wire)) - Math.min(...wires.map((w) => w.wire))).toBeGreaterThan(0.05);
     expect(Math.min(...wires.map((w) => w.plan[1]))).toBeLessThan(slopeEnd);
+    await aimPastTheCorner(page);
     await page.screenshot({ path: `${OUT}/desktop-plan.png` });
 
     // 3D at the pinned quality: the bake finishes and its floor numbers are real.
@@ -164,13 +201,21 @@ test.describe('desktop', () => {
     const { direct } = nodeSide({ sceneFile: saved, scene, points });
     // A point in the corner's shadow: the room blocks every source exactly (0 lux direct) though the lamps, unshadowed,
     // would give it more than 1 lux there (the wall's shadow, not the beam's edge); a lit one sees them through the open wing.
-    const hidden = direct.filter((d) => d.point[1] >= 3.6);
-    const shadowed = hidden.filter((d) => d.shadowed === 0 && d.unoccluded > 1);
-    const lit = hidden.filter((d) => d.shadowed > 0.2);
-    expect(shadowed.length).toBeGreaterThan(0);
-    expect(lit.length).toBeGreaterThan(0);
-    // The shadow lies next to the inner wall (x = 3.6 m), the lit floor toward the open side of the L.
-    expect(Math.min(...shadowed.map((d) => d.point[0]))).toBeGreaterThan(Math.max(...lit.filter((d) => d.point[1] >= 4.3).map((d) => d.point[0]), 0));
-    console.log(JSON.stringify({ spot, wires, floor: done.floor, shadowed: shadowed.slice(0, 3), lit: lit.slice(-3) }));
+    const hidden = direct.filter((d) => d.point[1] >= 3.3);
+    // The darkest spot the corner makes: the room blocks every source exactly (0 lux direct) where the lamps, unshadowed, give the most.
+    const shadow = hidden.filter((d) => d.shadowed === 0).sort((a, b) => b.unoccluded - a.unoccluded)[0];
+    // The brightest directly lit floor of the hidden wing.
+    const lit = [...hidden].sort((a, b) => b.shadowed - a.shadowed)[0];
+    expect(shadow.unoccluded).toBeGreaterThan(20);
+    expect(lit.shadowed).toBeGreaterThan(20);
+
+    // The same two points in the 3D view's top camera: the lit one brighter on screen than the one in the corner's shadow.
+    await page.getByTestId('camera-top').click();
+    await expect.poll(async () => (await status(page)).done, { timeout: 60_000, intervals: [500] }).toBe(true);
+    const top = await page.getByTestId('view3d-canvas').screenshot({ path: `${OUT}/desktop-3d-top.png` });
+    const png = PNG.sync.read(top);
+    const onScreen = { shadow: floorPixel(png, room, shadow.point), lit: floorPixel(png, room, lit.point) };
+    console.log(JSON.stringify({ spot, wires, floor: done.floor, shadow, lit, onScreen }));
+    expect(onScreen.lit).toBeGreaterThan(onScreen.shadow + 20);
   });
 });
