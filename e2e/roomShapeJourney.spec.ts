@@ -130,7 +130,9 @@ async function aimPastTheCorner(page: Page) {
 function floorPixel(png: PNG, room: { width: number; depth: number; height: number }, point: [number, number]): number {
   const t = Math.tan((15 * Math.PI) / 180);
   const d = (0.6 * Math.max(room.width, room.depth)) / t;
-  const perMetre = png.height / 2 / ((room.height + d) * t);
+  // On a portrait view the camera steps back by 1/aspect (framePreset.ts) so the room's width still fits.
+  const back = Math.max(1, png.height / png.width);
+  const perMetre = png.height / 2 / (back * (room.height + d) * t);
   const cx = png.width / 2 + (point[0] - room.width / 2) * perMetre;
   const cy = png.height / 2 + (point[1] - room.depth / 2) * perMetre;
   let sum = 0;
@@ -145,77 +147,99 @@ function floorPixel(png: PNG, room: { width: number; depth: number; height: numb
   return sum / n;
 }
 
+type Shopper = 'desktop' | 'phone';
+
+/** The room drawn, the sofa and the rail placed and aimed; the shape checked, the wires checked against the slope's plane. */
+async function planTheRoom(page: Page, who: Shopper) {
+  await startRoom(page);
+  await drawTheRoom(page, who === 'phone');
+  // The shape as drawn: the L of a 6.4 × 5 m room, its openings and its slope.
+  const drawn = (await sceneFile(page)).configuration.room;
+  expect(drawn.width).toBe(6.4);
+  expect(drawn.shape.outline).toHaveLength(6);
+  expect(drawn.shape.outline[1]).toEqual([6.4, 0]);
+  expect(drawn.shape.openings.map((o: { wall: number; kind: string }) => [o.wall, o.kind]).sort()).toEqual([
+    [2, 'window'],
+    [4, 'door'],
+    [5, 'window'],
+  ]);
+  expect(drawn.shape.slopes).toEqual([{ wall: 0, kneeHeight: KNEE, pitch: PITCH }]);
+
+  await sofaUnderTheSlope(page);
+  const { room, objects } = (await sceneFile(page)).configuration;
+  const slopeEnd = (room.height - KNEE) / Math.tan((PITCH * Math.PI) / 180);
+  expect(objects[0].placement.z).toBeLessThan(slopeEnd);
+
+  const spot = await railUnderTheSlope(page);
+  const { wires } = nodeSide({ sceneFile: await page.evaluate(() => window.luxbox!.getConfig()) });
+  expect(wires.length).toBeGreaterThanOrEqual(2);
+  // Under the slope the ceiling at plan z is knee + z·tan(pitch) (capped by the flat ceiling): every
+  // wire is that ceiling less one common module height, so the modules hang level and the wires differ.
+  const ceilingAt = (z: number) => Math.min(room.height, KNEE + z * Math.tan((PITCH * Math.PI) / 180));
+  const moduleHeights = wires.map((w) => ceilingAt(w.plan[1]) - w.wire);
+  for (const h of moduleHeights) expect(h).toBeCloseTo(moduleHeights[0], 6);
+  expect(Math.max(...wires.map((w) => w.wire)) - Math.min(...wires.map((w) => w.wire))).toBeGreaterThan(0.05);
+  expect(Math.min(...wires.map((w) => w.plan[1]))).toBeLessThan(slopeEnd);
+  await aimPastTheCorner(page);
+  await page.screenshot({ path: `${OUT}/${who}-plan.png` });
+  return { room, spot, wires };
+}
+
+/** 3D at the pinned quality: the bake finishes and its floor numbers are real. */
+async function seeIn3D(page: Page, who: Shopper) {
+  await page.getByTestId('tool-3d').click();
+  await expect(page.getByTestId('view3d-canvas')).toBeVisible();
+  await expect.poll(async () => (await status(page)).done, { timeout: 110_000, intervals: [500] }).toBe(true);
+  const done = await status(page);
+  expect(done.error).toBeNull();
+  for (const v of [done.floor!.avg, done.floor!.min, done.floor!.max]) expect(Number.isFinite(v) && v > 0).toBe(true);
+  expect(done.floor!.max).toBeGreaterThan(done.floor!.avg);
+  await page.screenshot({ path: `${OUT}/${who}-3d.png` });
+  return done;
+}
+
+/**
+ * The inner corner's shadow on the hidden wing's floor (x < 3.6, z > 3): the reference, on the
+ * scene the app bakes, picks the point the corner darkens most (0 lux direct, exactly, where the
+ * lamps unshadowed give the most) and the most directly lit one; the top camera's pixels there.
+ */
+async function theCornersShadow(page: Page, who: Shopper, room: { width: number; depth: number; height: number }) {
+  const scene = (await page.evaluate(() => window.luxbox!.getLightingScene())) as LightingScene;
+  const points: [number, number][] = [];
+  for (let x = 0.3; x < 3.5; x += 0.2) for (let z = 3.3; z < 4.9; z += 0.2) points.push([Math.round(x * 100) / 100, Math.round(z * 100) / 100]);
+  const { direct } = nodeSide({ sceneFile: await page.evaluate(() => window.luxbox!.getConfig()), scene, points });
+  const shadow = direct.filter((d) => d.shadowed === 0).sort((a, b) => b.unoccluded - a.unoccluded)[0];
+  const lit = [...direct].sort((a, b) => b.shadowed - a.shadowed)[0];
+  // Both in the aimed spot's beam: without the room in the way each would get tens of lux or more.
+  expect(shadow.unoccluded).toBeGreaterThan(20);
+  expect(lit.shadowed).toBeGreaterThan(20);
+  await page.getByTestId('camera-top').click();
+  await expect.poll(async () => (await status(page)).done, { timeout: 60_000, intervals: [500] }).toBe(true);
+  const png = PNG.sync.read(await page.getByTestId('view3d-canvas').screenshot({ path: `${OUT}/${who}-3d-top.png` }));
+  return { shadow, lit, onScreen: { shadow: floorPixel(png, room, shadow.point), lit: floorPixel(png, room, lit.point) } };
+}
+
 test.describe('desktop', () => {
   test.use({ reducedMotion: 'reduce', viewport: { width: 1440, height: 900 } });
 
   test('an L-shaped living room with a door, two windows, a slope over the sofa, a rail under it, and the inner corner’s shadow in 3D', async ({ page }) => {
-    await startRoom(page);
-    await drawTheRoom(page, false);
+    const { room, spot, wires } = await planTheRoom(page, 'desktop');
+    const done = await seeIn3D(page, 'desktop');
+    const corner = await theCornersShadow(page, 'desktop', room);
+    console.log(JSON.stringify({ spot, wires, floor: done.floor, ...corner }));
+    // The lit point shows clearly brighter on screen than the one in the corner's shadow (sRGB levels, 0..255).
+    expect(corner.onScreen.lit).toBeGreaterThan(corner.onScreen.shadow + 20);
+  });
+});
 
-    // The shape as drawn: the L of a 6.4 × 5 m room, its openings and its slope.
-    let room = (await sceneFile(page)).configuration.room;
-    expect(room.width).toBe(6.4);
-    expect(room.shape.outline).toHaveLength(6);
-    expect(room.shape.outline[1]).toEqual([6.4, 0]);
-    expect(room.shape.openings.map((o: { wall: number; kind: string }) => [o.wall, o.kind]).sort()).toEqual([
-      [2, 'window'],
-      [4, 'door'],
-      [5, 'window'],
-    ]);
-    expect(room.shape.slopes).toEqual([{ wall: 0, kneeHeight: KNEE, pitch: PITCH }]);
+test.describe('phone', () => {
+  test.use({ reducedMotion: 'reduce', viewport: { width: 390, height: 844 }, hasTouch: true, isMobile: true });
 
-    await sofaUnderTheSlope(page);
-    const sofa = (await sceneFile(page)).configuration.objects[0];
-    room = (await sceneFile(page)).configuration.room;
-    const slopeEnd = (room.height - KNEE) / Math.tan((PITCH * Math.PI) / 180);
-    expect(sofa.placement.z).toBeLessThan(slopeEnd);
-
-    const spot = await railUnderTheSlope(page);
-    const saved = await page.evaluate(() => window.luxbox!.getConfig());
-    const { wires } = nodeSide({ sceneFile: saved });
-    expect(wires.length).toBeGreaterThanOrEqual(2);
-    // Under the slope the ceiling at plan z is knee + z·tan(pitch) (capped by the flat ceiling): every
-    // wire is that ceiling less one common module height, so the modules hang level and the wires differ.
-    const ceilingAt = (z: number) => Math.min(room.height, KNEE + z * Math.tan((PITCH * Math.PI) / 180));
-    const moduleHeights = wires.map((w) => ceilingAt(w.plan[1]) - w.wire);
-    for (const h of moduleHeights) expect(h).toBeCloseTo(moduleHeights[0], 6);
-    expect(Math.max(...wires.map((w) => w.wire)) - Math.min(...wires.map((w) => w.wire))).toBeGreaterThan(0.05);
-    expect(Math.min(...wires.map((w) => w.plan[1]))).toBeLessThan(slopeEnd);
-    await aimPastTheCorner(page);
-    await page.screenshot({ path: `${OUT}/desktop-plan.png` });
-
-    // 3D at the pinned quality: the bake finishes and its floor numbers are real.
-    await page.getByTestId('tool-3d').click();
-    await expect(page.getByTestId('view3d-canvas')).toBeVisible();
-    await expect.poll(async () => (await status(page)).done, { timeout: 110_000, intervals: [500] }).toBe(true);
-    const done = await status(page);
-    expect(done.error).toBeNull();
-    for (const v of [done.floor!.avg, done.floor!.min, done.floor!.max]) expect(Number.isFinite(v) && v > 0).toBe(true);
-    expect(done.floor!.max).toBeGreaterThan(done.floor!.avg);
-    await page.screenshot({ path: `${OUT}/desktop-3d.png` });
-
-    // The inner corner's shadow on the hidden wing's floor (x < 3.6, z > 3), by the reference on the scene the app bakes.
-    const scene = (await page.evaluate(() => window.luxbox!.getLightingScene())) as LightingScene;
-    const points: [number, number][] = [];
-    for (let x = 0.3; x < 3.5; x += 0.2) for (let z = 3.2; z < 4.9; z += 0.2) points.push([Math.round(x * 100) / 100, Math.round(z * 100) / 100]);
-    const { direct } = nodeSide({ sceneFile: saved, scene, points });
-    // A point in the corner's shadow: the room blocks every source exactly (0 lux direct) though the lamps, unshadowed,
-    // would give it more than 1 lux there (the wall's shadow, not the beam's edge); a lit one sees them through the open wing.
-    const hidden = direct.filter((d) => d.point[1] >= 3.3);
-    // The darkest spot the corner makes: the room blocks every source exactly (0 lux direct) where the lamps, unshadowed, give the most.
-    const shadow = hidden.filter((d) => d.shadowed === 0).sort((a, b) => b.unoccluded - a.unoccluded)[0];
-    // The brightest directly lit floor of the hidden wing.
-    const lit = [...hidden].sort((a, b) => b.shadowed - a.shadowed)[0];
-    expect(shadow.unoccluded).toBeGreaterThan(20);
-    expect(lit.shadowed).toBeGreaterThan(20);
-
-    // The same two points in the 3D view's top camera: the lit one brighter on screen than the one in the corner's shadow.
-    await page.getByTestId('camera-top').click();
-    await expect.poll(async () => (await status(page)).done, { timeout: 60_000, intervals: [500] }).toBe(true);
-    const top = await page.getByTestId('view3d-canvas').screenshot({ path: `${OUT}/desktop-3d-top.png` });
-    const png = PNG.sync.read(top);
-    const onScreen = { shadow: floorPixel(png, room, shadow.point), lit: floorPixel(png, room, lit.point) };
-    console.log(JSON.stringify({ spot, wires, floor: done.floor, shadow, lit, onScreen }));
-    expect(onScreen.lit).toBeGreaterThan(onScreen.shadow + 20);
+  test('the same room on a phone: drawn by taps, baked, the corner’s shadow on screen', async ({ page }) => {
+    const { room } = await planTheRoom(page, 'phone');
+    await seeIn3D(page, 'phone');
+    const corner = await theCornersShadow(page, 'phone', room);
+    console.log(JSON.stringify(corner));
+    expect(corner.onScreen.lit).toBeGreaterThan(corner.onScreen.shadow + 20);
   });
 });
