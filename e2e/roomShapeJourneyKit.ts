@@ -57,6 +57,7 @@ function referenceFloorDirect(scene: LightingScene, points: readonly [number, nu
   const room = scene.room.shape!;
   const xs = room.corners.map((c) => c[0]);
   const zs = room.corners.map((c) => c[1]);
+  // The box the point sources are expanded in: the outline's bounding box, which starts at the origin for the app's shapes (they span 0 to width and depth).
   const box: LightingScene = {
     version: 1,
     room: { width: Math.max(...xs), height: room.height, depth: Math.max(...zs), reflectance: { floor: 0, ceiling: 0, north: 0, south: 0, west: 0, east: 0 } },
@@ -67,7 +68,10 @@ function referenceFloorDirect(scene: LightingScene, points: readonly [number, nu
   return points.map(([x, z]) => {
     const q: Vec3 = [x, 0, z];
     const shadowed = luminanceOf(roomDirectAt(sources, { convex: room.convex, corners: room.corners }, q, up), 0);
-    const unoccluded = luminanceOf(visibleDirectAt(sources, q, up, () => true, [0, 0, 0]), 0);
+    const unoccluded = luminanceOf(
+      visibleDirectAt(sources, q, up, () => true, [0, 0, 0]),
+      0,
+    );
     return { point: [x, z], shadowed, unoccluded };
   });
 }
