@@ -32,6 +32,14 @@ export function staticClosure(root, entries) {
   return [...seen];
 }
 
+/** The budgets a measurement exceeds, one sentence each (none: within both). `reactAdds` and `standalone` are gzip bytes. */
+export function budgetFailures({ reactAdds, standalone }) {
+  const failures = [];
+  if (reactAdds > REACT_DOOR_BUDGET_BYTES) failures.push(`luxbox/react adds ${reactAdds} B, over ${REACT_DOOR_BUDGET_BYTES} B`);
+  if (standalone > STANDALONE_BUDGET_BYTES) failures.push(`the single-file element's first screen is ${standalone} B, over ${STANDALONE_BUDGET_BYTES} B`);
+  return failures;
+}
+
 export function gzipBytes(root, files) {
   return files.reduce((sum, f) => sum + gzip(readFileSync(join(root, f))), 0);
 }
