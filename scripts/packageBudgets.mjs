@@ -4,18 +4,15 @@
 // kB = 1000 bytes.
 //   - the single-file element (lib/standalone/luxbox-element.js): at most 150 kB;
 //   - what `luxbox/react` adds to a React app: the consumer page with <Luxbox> minus the same
-//     shop page without it (React itself not counted). The issue asks for at most 110 kB; on
-//     2026-11-27 it is 112.2 kB (the planner UI itself, which the app's pages carry too: embed.html
-//     is 116.9 kB with preact's 4 kB), so the check holds it at 113 kB: lower it as the UI shrinks,
-//     never raise it.
+//     shop page without it (React itself not counted): at most 110 kB, as the issue asks (112.4 kB
+//     until the bundled demo catalog became a lazy chunk of the package doors, 2026-11-27).
 import { readFileSync } from 'node:fs';
 import { dirname, join, normalize } from 'node:path';
 import { gzipSync } from 'node:zlib';
 import { firstScreenScripts } from './firstScreenBudget.mjs';
 
 export const STANDALONE_BUDGET_BYTES = 150_000;
-export const REACT_DOOR_BUDGET_BYTES = 113_000;
-export const REACT_DOOR_TARGET_BYTES = 110_000;
+export const REACT_DOOR_BUDGET_BYTES = 110_000;
 
 const gzip = (buffer) => gzipSync(buffer, { level: 9 }).length;
 
@@ -33,6 +30,14 @@ export function staticClosure(root, entries) {
     }
   }
   return [...seen];
+}
+
+/** The budgets a measurement exceeds, one sentence each (none: within both). `reactAdds` and `standalone` are gzip bytes. */
+export function budgetFailures({ reactAdds, standalone }) {
+  const failures = [];
+  if (reactAdds > REACT_DOOR_BUDGET_BYTES) failures.push(`luxbox/react adds ${reactAdds} B, over ${REACT_DOOR_BUDGET_BYTES} B`);
+  if (standalone > STANDALONE_BUDGET_BYTES) failures.push(`the single-file element's first screen is ${standalone} B, over ${STANDALONE_BUDGET_BYTES} B`);
+  return failures;
 }
 
 export function gzipBytes(root, files) {

@@ -1,4 +1,4 @@
-import { mountLuxbox } from '../embed/mountLuxbox';
+import { mountConfigurator } from '../embed/mountConfigurator';
 import type { LuxboxInstance, LuxboxOptions } from '../embed/types';
 import { loadCatalogFromUrl } from './loadCatalogFromUrl';
 
@@ -48,7 +48,10 @@ export function createMountController(element: HTMLElement, handlers: { onMount:
         } else if (request.catalog !== undefined) {
           catalogOptions = { catalog: request.catalog };
         }
-        const next = mountLuxbox(element, { ...request.options, ...catalogOptions });
+        // The bundled demo catalog (26 kB of JSON, 5 kB gzip) is a lazy chunk here: a shop that passes its own never loads it (docs/package.md, "Budgets").
+        const bundled = catalogOptions.catalog === undefined ? (await import('../../core/catalog/defaultCatalog')).defaultCatalog : undefined;
+        if (mine !== generation) return;
+        const next = mountConfigurator(element, { ...request.options, ...catalogOptions }, bundled);
         initialConfig = next.getConfig();
         if (carried) next.setConfig(carried);
         instance = next;

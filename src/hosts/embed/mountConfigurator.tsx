@@ -20,6 +20,7 @@ import { SHARE_HASH_PREFIX, resolveStartup, startupNeedsRoomShape, type Startup 
 import { createUiStore, DEFAULT_BRAND, showStatus, type Brand } from '../../core/store/uiStore';
 import { createFootprintSource } from '../../ui/planner/footprintSource';
 import type { LuxboxInstance, LuxboxOptions } from './types';
+import type { Catalog } from '../../core/model/catalogSchema/catalogSchema';
 import { isQualityLevel, QUALITY_LEVEL_NAMES } from '../../engines/relight/qualityLevels';
 import { EV100_MAX, EV100_MIN, isEv100 } from '../../engines/view/photographicExposure';
 import { EmbedOptionsError, resolveCatalog } from './resolveCatalog';
@@ -84,12 +85,14 @@ function currentHash(): string {
 }
 
 /**
- * Mounts the configurator into `element` and returns its API (docs/embedding.md). Throws an
- * InputError subclass for bad options before touching the element.
+ * mountLuxbox (mountLuxbox.ts) with the catalog used when options.catalog is absent passed in, so
+ * this module does not import the bundled demo catalog: the package's React and element doors
+ * load that catalog only when a page gives none (createMountController.ts; docs/package.md, "Budgets").
+ * Throws an InputError subclass for bad options before touching the element.
  */
-export function mountLuxbox(element: Element, options: LuxboxOptions = {}): LuxboxInstance {
+export function mountConfigurator(element: Element, options: LuxboxOptions, bundledCatalog: Catalog | undefined): LuxboxInstance {
   if (typeof Element === 'undefined' || !(element instanceof Element)) throw new EmbedOptionsError('mountLuxbox needs a DOM element to mount into');
-  const catalog = resolveCatalog(options);
+  const catalog = resolveCatalog(options, bundledCatalog);
   if (options.quality !== undefined && !isQualityLevel(options.quality)) throw new EmbedOptionsError(`options.quality: '${String(options.quality)}' is not a quality level (expected ${QUALITY_LEVEL_NAMES.join(', ')})`);
   const quality = options.quality;
   if (options.exposure !== undefined && options.exposure !== 'auto' && !isEv100(options.exposure)) {
