@@ -1,13 +1,14 @@
 import * as THREE from 'three';
 import { SURFACE_NAMES, type SurfaceName } from '../../core/model/lightingScene/lightingScene';
 import type { FloatTarget } from '../bake/floatTarget';
-import { createGpuRelight, type BasisPrecision, type GpuRelight, type ReadbackCounter } from '../relight/createGpuRelight';
+import { createGpuRelight, type BasisPrecision, type GpuRelight, type GridPart, type ReadbackCounter } from '../relight/createGpuRelight';
 import type { RelightParts } from '../relight/RelightEngine';
 import { createGpuStats, type GpuStats, type PendingStats } from './createGpuStats';
 import { programsReady, startPrograms } from '../bake/glResources';
 import { relightCombinePass } from '../../../shaders/relightCombine.glsl';
 import { statsBlockPass, statsMergePass } from '../../../shaders/statsReduce.glsl';
 import { lowMemoryDevice } from './lowMemoryDevice';
+import type { WorkPlaneBases } from './workPlaneBases';
 
 /**
  * Texture memory the view's GPU relight may hold on a low-memory device (`navigator.deviceMemory`
@@ -57,6 +58,13 @@ export interface ViewRelight {
   relight(parts: RelightParts): ViewRelightMaps;
   /** Ē, Emin, Emax, U0 of the floor's total (texels `covered` left out), read once the GPU is done (createGpuStats.ts). */
   floorStats(maps: ViewRelightMaps, covered: Uint8Array | null): PendingStats;
+  /**
+   * Ē, Emin, Emax, U0 of the work plane at the parts' weights: the per-part grids of `plane`
+   * (workPlaneBases.ts) combined on the GPU with the weights and scales of the display maps, then
+   * reduced like the floor (its points inside furniture left out); null when a basis does not carry
+   * its luminaires (its work-plane light cannot be formed).
+   */
+  workPlaneStats(parts: RelightParts, plane: WorkPlaneBases): PendingStats | null;
   readonly counters: ViewRelightCounters;
   /** GPU texture memory held now. */
   textureBytes(): number;
@@ -124,17 +132,20 @@ export function createViewRelight(renderer: THREE.WebGLRenderer, precision: Basi
       return { surfaces, objects: maps.objects ? textureOf(maps.objects.total) : null, floor: maps.floor.total };
     },
     floorStats(maps, covered) {
-      stats ??= createGpuStats(gl);
-      counters.statsReadbacks = stats.readbacks;
-      const pending = stats.request(maps.floor, covered);
+      return requestStats(maps.floor, covered);
+    },
+    workPlaneStats(parts, plane) {
+      const direct: GridPart[] = [];
+      for (const { basis, weight } of parts.parts) {
+        const map = plane.direct(basis);
+        if (!map) return null;
+        direct.push({ map, weight });
+      }
+      const indirect = parts.terms.map(({ solution, scale }): GridPart => ({ map: plane.indirect(solution, parts.layouts.floor), weight: scale }));
+      const { nx, nz, covered } = plane.grid;
+      const maps = gpuRelight().relightGrid('workPlane', nx, nz, direct, indirect);
       renderer.resetState();
-      return {
-        poll() {
-          const result = pending.poll();
-          renderer.resetState();
-          return result;
-        },
-      };
+      return requestStats(maps.total, covered);
     },
     get counters() {
       return counters;
@@ -150,4 +161,18 @@ export function createViewRelight(renderer: THREE.WebGLRenderer, precision: Basi
       renderer.resetState();
     },
   };
+
+  function requestStats(map: FloatTarget, covered: Uint8Array | null): PendingStats {
+    stats ??= createGpuStats(gl);
+    counters.statsReadbacks = stats.readbacks;
+    const pending = stats.request(map, covered);
+    renderer.resetState();
+    return {
+      poll() {
+        const result = pending.poll();
+        renderer.resetState();
+        return result;
+      },
+    };
+  }
 }
