@@ -71,6 +71,27 @@ export interface ViewRelight {
   dispose(): void;
 }
 
+/** Texture bytes the relight would hold for these parts: every basis and solution map at `precision`, and the display targets. */
+function relightBytes(parts: RelightParts, precision: BasisPrecision): number {
+  let texels = 0;
+  for (const n of SURFACE_NAMES) texels += parts.layouts[n].width * parts.layouts[n].height;
+  const atlas = parts.atlas ? parts.atlas.width * parts.atlas.height : 0;
+  const maps = parts.parts.length + parts.terms.length;
+  return maps * (texels + atlas) * BASIS_BYTES[precision] + (texels + atlas) * DISPLAY_BYTES;
+}
+
+/** The work plane's grids of these parts with their weights and scales (workPlaneBases.ts), or null when a basis does not carry its luminaires. */
+function workPlaneGridParts(parts: RelightParts, plane: WorkPlaneBases): { direct: GridPart[]; indirect: GridPart[] } | null {
+  const direct: GridPart[] = [];
+  for (const { basis, weight } of parts.parts) {
+    const map = plane.direct(basis);
+    if (!map) return null;
+    direct.push({ map, weight });
+  }
+  const indirect = parts.terms.map(({ solution, scale }): GridPart => ({ map: plane.indirect(solution, parts.layouts.floor), weight: scale }));
+  return { direct, indirect };
+}
+
 /**
  * Bases are sampled with texelFetch only, which WebGL2 allows for RGBA16F on every device; half
  * floats err at most 2⁻¹¹ of a value (0.026 % of the peak measured, docs/viewer.md "Half floats"),
@@ -116,14 +137,7 @@ export function createViewRelight(renderer: THREE.WebGLRenderer, precision: Basi
   return {
     precision,
     ready: () => programsReady(gl, VIEW_RELIGHT_PROGRAMS),
-    fits(parts) {
-      if (budget === null) return true;
-      let texels = 0;
-      for (const n of SURFACE_NAMES) texels += parts.layouts[n].width * parts.layouts[n].height;
-      const atlas = parts.atlas ? parts.atlas.width * parts.atlas.height : 0;
-      const maps = parts.parts.length + parts.terms.length;
-      return maps * (texels + atlas) * BASIS_BYTES[precision] + (texels + atlas) * DISPLAY_BYTES <= budget;
-    },
+    fits: (parts) => budget === null || relightBytes(parts, precision) <= budget,
     relight(parts) {
       const maps = gpuRelight().relight(parts.parts, parts.terms, parts.layouts, parts.atlas);
       renderer.resetState();
@@ -135,15 +149,10 @@ export function createViewRelight(renderer: THREE.WebGLRenderer, precision: Basi
       return requestStats(maps.floor, covered);
     },
     workPlaneStats(parts, plane) {
-      const direct: GridPart[] = [];
-      for (const { basis, weight } of parts.parts) {
-        const map = plane.direct(basis);
-        if (!map) return null;
-        direct.push({ map, weight });
-      }
-      const indirect = parts.terms.map(({ solution, scale }): GridPart => ({ map: plane.indirect(solution, parts.layouts.floor), weight: scale }));
+      const grids = workPlaneGridParts(parts, plane);
+      if (!grids) return null;
       const { nx, nz, covered } = plane.grid;
-      const maps = gpuRelight().relightGrid('workPlane', nx, nz, direct, indirect);
+      const maps = gpuRelight().relightGrid('workPlane', nx, nz, grids.direct, grids.indirect);
       renderer.resetState();
       return requestStats(maps.total, covered);
     },
