@@ -41,6 +41,23 @@ test('a crossfade and a dimming drag are relit on the GPU: no map read back, flo
   await expect.poll(async () => (await status(page)).floor!.avg, { timeout: 10_000 }).toBeLessThan(day.floor!.avg * 0.8);
   expect((await status(page)).gpu!.textureBytes).toBeGreaterThan(0);
 
+  // The work plane on: its statistics from the CPU formula on the settled maps first.
+  await page.getByTestId('plane-on').check();
+  await expect.poll(async () => (await status(page)).plane?.source, { timeout: 30_000 }).toBe('cpu');
+  const planeBefore = (await status(page)).plane!;
+  // Every work-plane report seen from now on (sampled each animation frame in the page): the drag's come from the GPU reduction.
+  await page.evaluate(() => {
+    const w = window as unknown as { planeSeen: { source: string; avg: number; mapReadbacks: number }[] };
+    w.planeSeen = [];
+    const sample = () => {
+      const s = window.luxbox!.view3d() as { plane: { source: string; avg: number } | null; gpu: { mapReadbacks: number } | null };
+      const last = w.planeSeen[w.planeSeen.length - 1];
+      if (s.plane && (!last || last.source !== s.plane.source || last.avg !== s.plane.avg)) w.planeSeen.push({ source: s.plane.source, avg: s.plane.avg, mapReadbacks: s.gpu?.mapReadbacks ?? -1 });
+      if (w.planeSeen.length < 1000) requestAnimationFrame(sample);
+    };
+    requestAnimationFrame(sample);
+  });
+
   // A dimming drag: ten steps, each committed (a relight each), none read back.
   const beforeDrag = await status(page);
   await page.getByText(/Dimming \(/).click();
@@ -55,4 +72,10 @@ test('a crossfade and a dimming drag are relit on the GPU: no map read back, flo
   await expect.poll(async () => (await status(page)).gpu!.statsReadbacks, { timeout: 10_000 }).toBeGreaterThan(beforeDrag.gpu!.statsReadbacks);
   await expect.poll(async () => (await status(page)).floor!.avg, { timeout: 10_000 }).toBeGreaterThan(beforeDrag.floor!.avg * 1.05);
   expect((await status(page)).gpu!.mapReadbacks).toBe(0);
+  // The work plane's statistics during the drag came from the GPU (no map read back), brighter than before it.
+  const seen = await page.evaluate(() => (window as unknown as { planeSeen: { source: string; avg: number; mapReadbacks: number }[] }).planeSeen);
+  const fromGpu = seen.filter((p) => p.source === 'gpu');
+  expect(fromGpu.length).toBeGreaterThan(0);
+  expect(fromGpu.every((p) => p.mapReadbacks === 0)).toBe(true);
+  expect(Math.max(...fromGpu.map((p) => p.avg))).toBeGreaterThan(planeBefore.avg * 1.02);
 });

@@ -28,6 +28,13 @@ export interface ReadbackCounter {
 export interface GpuRelight {
   /** The display maps for these weighted bases and indirect terms, combined on the GPU (no read-back). */
   relight(parts: readonly WeightedBasis[], terms: readonly IndirectTerm[], layouts: Readonly<Record<SurfaceName, SurfaceLayout>>, atlas: ObjectAtlas | null): GpuLitMaps;
+  /**
+   * A grid of any size combined like a receiver: Σ weight ⊙ map over `direct`, then plus Σ scale ⊙ map
+   * over `indirect` (RGB per texel, row-major, `width` × `height`). The work plane's statistics use it
+   * (workPlaneBases.ts). Its maps are uploaded once as RGBA32F whatever the precision (they are small,
+   * and the statistics keep float accuracy) and kept while the next grid relight uses them.
+   */
+  relightGrid(key: string, width: number, height: number, direct: readonly GridPart[], indirect: readonly GridPart[]): GpuDirectTotal;
   /** One display map read back as RGB floats (3 per texel): counted in `readbacks`. Statistics and tests only. */
   read(target: FloatTarget): Float32Array;
   readonly readbacks: ReadbackCounter;
@@ -38,6 +45,12 @@ export interface GpuRelight {
   /** Bytes of GPU texture memory held now: basis/indirect textures at their precision, display targets at 16 B/texel. */
   textureBytes(): number;
   dispose(): void;
+}
+
+/** One map of a grid relight and its per-channel factor. */
+export interface GridPart {
+  map: Float32Array;
+  weight: Rgb;
 }
 
 /** A basis or indirect map uploaded once as a texture (sampled with texelFetch: no filtering needed). */
@@ -70,13 +83,16 @@ export function createGpuRelight(gl: WebGL2RenderingContext, precision: BasisPre
   // Zero textures of each size: the accumulator of a direct map. Cleared on creation (createFloatTarget).
   const zeros = new Map<string, FloatTarget>();
 
-  const upload = (data: Float32Array, width: number, height: number): WebGLTexture => {
+  // The maps the last grid relight used: kept by the receivers' prune.
+  let gridInUse = new Set<Float32Array>();
+
+  const upload = (data: Float32Array, width: number, height: number, float = false): WebGLTexture => {
     const known = uploads.get(data);
     if (known) return known.texture;
     if (data.length !== width * height * 3) throw new Error(`GPU relight: a map has ${data.length / 3} texels, its receiver ${width * height}`);
     let peak = 0;
     for (let i = 0; i < data.length; i++) peak = Math.max(peak, Math.abs(data[i]));
-    const half = precision === 'half' && peak <= HALF_MAX;
+    const half = !float && precision === 'half' && peak <= HALF_MAX;
     const rgba = half ? new Uint16Array(width * height * 4) : new Float32Array(width * height * 4);
     const convert = half ? halfBits : (v: number) => v;
     for (let i = 0, j = 0; i < data.length; i += 3, j += 4) {
@@ -163,10 +179,37 @@ export function createGpuRelight(gl: WebGL2RenderingContext, precision: BasisPre
     return { direct: o.direct, total: o.total };
   };
 
+  const relightReceivers = (parts: readonly WeightedBasis[], terms: readonly IndirectTerm[], layouts: Readonly<Record<SurfaceName, SurfaceLayout>>, atlas: ObjectAtlas | null): GpuLitMaps => {
+    const maps = {} as GpuLitMaps;
+    for (const name of SURFACE_NAMES) {
+      const l = layouts[name];
+      maps[name] = receiver(
+        name,
+        l.width,
+        l.height,
+        parts,
+        (b) => b.surfaces[name],
+        terms,
+        (s) => s.surfaces[name],
+      );
+    }
+    if (atlas)
+      maps.objects = receiver(
+        'objects',
+        atlas.width,
+        atlas.height,
+        parts,
+        (b) => b.objects?.shown,
+        terms,
+        (s) => s.objects,
+      );
+    return maps;
+  };
+
   /** Textures of maps no longer in use (a dropped basis, a replaced preview) are freed. */
   const prune = (inUse: Set<Float32Array>) => {
     for (const [data, u] of uploads) {
-      if (inUse.has(data)) continue;
+      if (inUse.has(data) || gridInUse.has(data)) continue;
       gl.deleteTexture(u.texture);
       uploads.delete(data);
     }
@@ -184,30 +227,22 @@ export function createGpuRelight(gl: WebGL2RenderingContext, precision: BasisPre
         if (solution.objects) inUse.add(solution.objects);
       }
       prune(inUse);
-      const maps = {} as GpuLitMaps;
-      for (const name of SURFACE_NAMES) {
-        const l = layouts[name];
-        maps[name] = receiver(
-          name,
-          l.width,
-          l.height,
-          parts,
-          (b) => b.surfaces[name],
-          terms,
-          (s) => s.surfaces[name],
-        );
+      return relightReceivers(parts, terms, layouts, atlas);
+    },
+    relightGrid(key, width, height, direct, indirect) {
+      const previous = gridInUse;
+      gridInUse = new Set([...direct, ...indirect].map((p) => p.map));
+      for (const data of previous) {
+        const u = uploads.get(data);
+        if (gridInUse.has(data) || !u) continue;
+        gl.deleteTexture(u.texture);
+        uploads.delete(data);
       }
-      if (atlas)
-        maps.objects = receiver(
-          'objects',
-          atlas.width,
-          atlas.height,
-          parts,
-          (b) => b.objects?.shown,
-          terms,
-          (s) => s.objects,
-        );
-      return maps;
+      const o = outputFor(`grid:${key}`, width, height);
+      const upload32 = (parts: readonly GridPart[]) => parts.filter((p) => p.weight.some((w) => w !== 0)).map((p) => ({ texture: upload(p.map, width, height, true), weight: p.weight }));
+      combine(o.direct, o.scratch, zeroOf(width, height).texture, upload32(direct));
+      combine(o.total, o.scratch, o.direct.texture, upload32(indirect));
+      return { direct: o.direct, total: o.total };
     },
     read(target) {
       readbacks.count++;
@@ -227,6 +262,7 @@ export function createGpuRelight(gl: WebGL2RenderingContext, precision: BasisPre
       return bytes;
     },
     dispose() {
+      gridInUse = new Set();
       prune(new Set());
       for (const o of outputs.values()) for (const t of [o.direct, o.total, o.scratch]) deleteTarget(gl, t);
       outputs.clear();

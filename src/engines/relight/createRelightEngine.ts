@@ -72,7 +72,7 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
     (st, d) => {
       atlas = d.objects?.atlas ?? null;
       const flux = reflectedFlux(d.surfaces, layouts, reflectanceRgb(scene!.room), atlas, d.objects?.emitted ?? null);
-      st.basis = { ...d, flux };
+      st.basis = { ...d, flux, luminaires: st.group.basis };
       version++;
     },
   );

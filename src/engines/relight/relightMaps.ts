@@ -1,5 +1,6 @@
 import { SURFACE_NAMES, type Rgb, type SurfaceName } from '../../core/model/lightingScene/lightingScene';
 import type { DirectMaps } from '../bake/bakeJob';
+import type { BakeLuminaire } from '../bake/bakeScene';
 import type { SurfaceLayout } from '../bake/surfaceLayout';
 import type { ObjectAtlas } from '../bake/objects/preparedObjects';
 
@@ -21,6 +22,8 @@ export interface ObjectDirectTotal extends DirectTotal {
  */
 export interface DirectBasis extends DirectMaps {
   flux: Rgb;
+  /** The group's luminaires at unit dimming and white colour, as the basis was baked (the work plane's per-basis direct light, workPlaneBases.ts). */
+  luminaires?: readonly BakeLuminaire[];
 }
 
 /**

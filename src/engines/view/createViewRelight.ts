@@ -1,13 +1,14 @@
 import * as THREE from 'three';
 import { SURFACE_NAMES, type SurfaceName } from '../../core/model/lightingScene/lightingScene';
 import type { FloatTarget } from '../bake/floatTarget';
-import { createGpuRelight, type BasisPrecision, type GpuRelight, type ReadbackCounter } from '../relight/createGpuRelight';
+import { createGpuRelight, type BasisPrecision, type GpuRelight, type GridPart, type ReadbackCounter } from '../relight/createGpuRelight';
 import type { RelightParts } from '../relight/RelightEngine';
 import { createGpuStats, type GpuStats, type PendingStats } from './createGpuStats';
 import { programsReady, startPrograms } from '../bake/glResources';
 import { relightCombinePass } from '../../../shaders/relightCombine.glsl';
 import { statsBlockPass, statsMergePass } from '../../../shaders/statsReduce.glsl';
 import { lowMemoryDevice } from './lowMemoryDevice';
+import type { WorkPlaneBases } from './workPlaneBases';
 
 /**
  * Texture memory the view's GPU relight may hold on a low-memory device (`navigator.deviceMemory`
@@ -57,10 +58,38 @@ export interface ViewRelight {
   relight(parts: RelightParts): ViewRelightMaps;
   /** Ē, Emin, Emax, U0 of the floor's total (texels `covered` left out), read once the GPU is done (createGpuStats.ts). */
   floorStats(maps: ViewRelightMaps, covered: Uint8Array | null): PendingStats;
+  /**
+   * Ē, Emin, Emax, U0 of the work plane at the parts' weights: the per-part grids of `plane`
+   * (workPlaneBases.ts) combined on the GPU with the weights and scales of the display maps, then
+   * reduced like the floor (its points inside furniture left out); null when a basis does not carry
+   * its luminaires (its work-plane light cannot be formed).
+   */
+  workPlaneStats(parts: RelightParts, plane: WorkPlaneBases): PendingStats | null;
   readonly counters: ViewRelightCounters;
   /** GPU texture memory held now. */
   textureBytes(): number;
   dispose(): void;
+}
+
+/** Texture bytes the relight would hold for these parts: every basis and solution map at `precision`, and the display targets. */
+function relightBytes(parts: RelightParts, precision: BasisPrecision): number {
+  let texels = 0;
+  for (const n of SURFACE_NAMES) texels += parts.layouts[n].width * parts.layouts[n].height;
+  const atlas = parts.atlas ? parts.atlas.width * parts.atlas.height : 0;
+  const maps = parts.parts.length + parts.terms.length;
+  return maps * (texels + atlas) * BASIS_BYTES[precision] + (texels + atlas) * DISPLAY_BYTES;
+}
+
+/** The work plane's grids of these parts with their weights and scales (workPlaneBases.ts), or null when a basis does not carry its luminaires. */
+function workPlaneGridParts(parts: RelightParts, plane: WorkPlaneBases): { direct: GridPart[]; indirect: GridPart[] } | null {
+  const direct: GridPart[] = [];
+  for (const { basis, weight } of parts.parts) {
+    const map = plane.direct(basis);
+    if (!map) return null;
+    direct.push({ map, weight });
+  }
+  const indirect = parts.terms.map(({ solution, scale }): GridPart => ({ map: plane.indirect(solution, parts.layouts.floor), weight: scale }));
+  return { direct, indirect };
 }
 
 /**
@@ -108,14 +137,7 @@ export function createViewRelight(renderer: THREE.WebGLRenderer, precision: Basi
   return {
     precision,
     ready: () => programsReady(gl, VIEW_RELIGHT_PROGRAMS),
-    fits(parts) {
-      if (budget === null) return true;
-      let texels = 0;
-      for (const n of SURFACE_NAMES) texels += parts.layouts[n].width * parts.layouts[n].height;
-      const atlas = parts.atlas ? parts.atlas.width * parts.atlas.height : 0;
-      const maps = parts.parts.length + parts.terms.length;
-      return maps * (texels + atlas) * BASIS_BYTES[precision] + (texels + atlas) * DISPLAY_BYTES <= budget;
-    },
+    fits: (parts) => budget === null || relightBytes(parts, precision) <= budget,
     relight(parts) {
       const maps = gpuRelight().relight(parts.parts, parts.terms, parts.layouts, parts.atlas);
       renderer.resetState();
@@ -124,17 +146,15 @@ export function createViewRelight(renderer: THREE.WebGLRenderer, precision: Basi
       return { surfaces, objects: maps.objects ? textureOf(maps.objects.total) : null, floor: maps.floor.total };
     },
     floorStats(maps, covered) {
-      stats ??= createGpuStats(gl);
-      counters.statsReadbacks = stats.readbacks;
-      const pending = stats.request(maps.floor, covered);
+      return requestStats(maps.floor, covered);
+    },
+    workPlaneStats(parts, plane) {
+      const grids = workPlaneGridParts(parts, plane);
+      if (!grids) return null;
+      const { nx, nz, covered } = plane.grid;
+      const maps = gpuRelight().relightGrid('workPlane', nx, nz, grids.direct, grids.indirect);
       renderer.resetState();
-      return {
-        poll() {
-          const result = pending.poll();
-          renderer.resetState();
-          return result;
-        },
-      };
+      return requestStats(maps.total, covered);
     },
     get counters() {
       return counters;
@@ -150,4 +170,18 @@ export function createViewRelight(renderer: THREE.WebGLRenderer, precision: Basi
       renderer.resetState();
     },
   };
+
+  function requestStats(map: FloatTarget, covered: Uint8Array | null): PendingStats {
+    stats ??= createGpuStats(gl);
+    counters.statsReadbacks = stats.readbacks;
+    const pending = stats.request(map, covered);
+    renderer.resetState();
+    return {
+      poll() {
+        const result = pending.poll();
+        renderer.resetState();
+        return result;
+      },
+    };
+  }
 }

@@ -57,6 +57,10 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
     ...viewerCompareApi(v),
     /** Read-backs, uploads and texture memory of the view's relight (`view3d().gpu`). */
     gpuStatus: () => gpuViewStatus(v.gpu),
+    /** The work plane whose statistics follow each GPU relight (onWorkPlaneStats), or null: off. */
+    setWorkPlane(height: number | null) {
+      v.gpu.workPlaneHeight = height;
+    },
     /** Frees the display only: the service keeps its engine, maps and pending work. */
     dispose() {
       v.compareView?.dispose();

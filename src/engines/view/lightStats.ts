@@ -150,6 +150,42 @@ export function floorStats(lit: LitMaps, objects: PreparedObjects | null = null)
 }
 
 /**
+ * The direct illuminance (RGB lux, 3 floats per point, row-major) of `luminaires` on the box room's
+ * work-plane grid of nx × nz cell centres at `height`: E = Σ I(γ,C)·cosθ/d² from the baker's point
+ * sources (directAtPoint, CIE 171:2006 §5.2), each source counted only where a shadow ray from the
+ * point reaches it past every object. Light adds, so the sum of this over a partition of the
+ * luminaires (the relight's groups, workPlaneBases.ts) is this over all of them.
+ */
+export function workPlaneDirect(scene: BakeScene, luminaires: readonly BakeScene['luminaires'][number][], height: number, nx: number, nz: number, settings: Partial<BakeSettings> = {}, objects: PreparedObjects | null = null): Float32Array {
+  const { width, depth } = scene.room;
+  const lamps = scenePointSources({ ...scene, luminaires: [...luminaires] }, resolveBakeSettings(settings));
+  const caster = objects && objects.triangleCount > 0 ? createObjectRayCaster(objects) : null;
+  /** The lamps with only the point sources a point of the plane sees. */
+  const visibleFrom = (p: Vec3): typeof lamps => {
+    if (!caster) return lamps;
+    const o: Vec3 = [p[0], p[1] + SHADOW_RAY_OFFSET, p[2]];
+    return lamps.map((lamp) => {
+      const keep = lamp.sources.map((src) => {
+        const d: Vec3 = [src[0] - o[0], src[1] - o[1], src[2] - o[2]];
+        const dist = Math.hypot(d[0], d[1], d[2]);
+        return !(dist > 0) || !caster.anyHit(o, [d[0] / dist, d[1] / dist, d[2] / dist], dist * (1 - 1e-6));
+      });
+      return { ...lamp, sources: lamp.sources.filter((_, k) => keep[k]), sides: lamp.sides.filter((_, k) => keep[k]) };
+    });
+  };
+  const out = new Float32Array(nx * nz * 3);
+  const up: Vec3 = [0, 1, 0];
+  for (let k = 0; k < nz; k++) {
+    for (let i = 0; i < nx; i++) {
+      const x = ((i + 0.5) / nx) * width;
+      const z = ((k + 0.5) / nz) * depth;
+      out.set(directAtPoint(visibleFrom([x, height, z]), [x, height, z], up), (k * nx + i) * 3);
+    }
+  }
+  return out;
+}
+
+/**
  * Illuminance on a horizontal work plane at `height` metres, on a grid of
  * `spacing` metres (cell centres) over the room.
  *
@@ -180,36 +216,21 @@ export function workPlaneStats(
   // A room of any shape: the grid over its outline, shadows of its own corners, indirect light from the atlas floor.
   if (scene.room.shape) return shapedWorkPlaneStats(scene, lit, height, spacing, settings, objects);
   const { width, depth } = scene.room;
-  const lamps = scenePointSources(scene, resolveBakeSettings(settings));
-  const caster = objects && objects.triangleCount > 0 ? createObjectRayCaster(objects) : null;
-  /** The lamps with only the point sources a point of the plane sees. */
-  const visibleFrom = (p: Vec3): typeof lamps => {
-    if (!caster) return lamps;
-    const o: Vec3 = [p[0], p[1] + SHADOW_RAY_OFFSET, p[2]];
-    return lamps.map((lamp) => {
-      const keep = lamp.sources.map((src) => {
-        const d: Vec3 = [src[0] - o[0], src[1] - o[1], src[2] - o[2]];
-        const dist = Math.hypot(d[0], d[1], d[2]);
-        return !(dist > 0) || !caster.anyHit(o, [d[0] / dist, d[1] / dist, d[2] / dist], dist * (1 - 1e-6));
-      });
-      return { ...lamp, sources: lamp.sources.filter((_, k) => keep[k]), sides: lamp.sides.filter((_, k) => keep[k]) };
-    });
-  };
   const nx = Math.max(1, Math.round(width / spacing));
   const nz = Math.max(1, Math.round(depth / spacing));
+  const direct = workPlaneDirect(scene, scene.luminaires, height, nx, nz, settings, objects);
   const values = new Float32Array(nx * nz);
   const floor = lit.layouts.floor;
-  const direct = lit.maps.floor.direct;
+  const floorDirect = lit.maps.floor.direct;
   const total = lit.maps.floor.total;
-  const up: Vec3 = [0, 1, 0];
   for (let k = 0; k < nz; k++) {
     for (let i = 0; i < nx; i++) {
       const x = ((i + 0.5) / nx) * width;
       const z = ((k + 0.5) / nz) * depth;
-      const e = directAtPoint(visibleFrom([x, height, z]), [x, height, z], up);
+      const p = (k * nx + i) * 3;
       const t = bilinearRgb(floor, total, x, z);
-      const d = bilinearRgb(floor, direct, x, z);
-      values[k * nx + i] = Y(e[0], e[1], e[2]) + Math.max(0, Y(t[0] - d[0], t[1] - d[1], t[2] - d[2]));
+      const d = bilinearRgb(floor, floorDirect, x, z);
+      values[k * nx + i] = Y(direct[p], direct[p + 1], direct[p + 2]) + Math.max(0, Y(t[0] - d[0], t[1] - d[1], t[2] - d[2]));
     }
   }
   const covered = workPlaneUnderObjects(scene.room, nx, nz, height, objects);

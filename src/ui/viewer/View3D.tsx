@@ -70,6 +70,7 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true, 
   const [levels, setLevels] = useState<number[]>([]);
   const [floor, setFloor] = useState<IlluminanceStats | null>(null);
   const [plane, setPlane] = useState<WorkPlane>({ on: false, height: 0.75 });
+  const [planeStats, setPlaneStats] = useState<IlluminanceStats | null>(null);
   const [lost, setLost] = useState(false);
   const [photometryNotes, setPhotometryNotes] = useState<PhotometryNote[]>([]);
   const litRef = useRef<LitMaps | null>(null);
@@ -85,11 +86,11 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true, 
     setError(message);
     publish({ error: message });
   });
-  const shown = { setProgress, setLevels, setFloor, setMapsVersion, setLost, setError, setControllerVersion, setPhotometryNotes, setQuality };
+  const shown = { setProgress, setLevels, setFloor, setPlaneStats, setMapsVersion, setLost, setError, setControllerVersion, setPhotometryNotes, setQuality };
   useViewerController({ feed, store, host, canvasRef, wrapRef, controllerRef: ctrl, sceneRef, litRef, glareRef, record, shown });
 
   useSelectionHighlight(ctrl, selection, feed);
-  const planeStats = useWorkPlaneStats(plane, mapsVersion, progress.done, sceneRef, litRef, ctrl);
+  useWorkPlaneStats({ plane, mapsVersion, done: progress.done, sceneRef, litRef, controllerRef: ctrl, controllerVersion, setPlaneStats, publish });
 
   return (
     <section className="viewer3d" aria-label={t('view3d.view')} data-testid="view3d" hidden={!visible}>

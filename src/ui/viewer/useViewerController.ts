@@ -19,6 +19,7 @@ export interface ViewerShown {
   setProgress(p: { fraction: number; done: boolean; lit: boolean }): void;
   setLevels(levels: number[]): void;
   setFloor(floor: IlluminanceStats | null): void;
+  setPlaneStats(stats: IlluminanceStats | null): void;
   setMapsVersion: Dispatch<SetStateAction<number>>;
   setLost(lost: boolean): void;
   setError(message: string | null): void;
@@ -68,6 +69,10 @@ function viewerEvents({ store, controllerRef, litRef, record, shown }: ViewerCon
     onFloorStats: (f) => {
       shown.setFloor(f);
       publish({ floor: { avg: f.avg, min: f.min, max: f.max, u0: f.u0 }, gpu: controllerRef.current?.gpuStatus() ?? null });
+    },
+    onWorkPlaneStats: (p) => {
+      shown.setPlaneStats(p);
+      publish({ plane: { height: p.height, avg: p.avg, min: p.min, max: p.max, u0: p.u0, source: 'gpu' }, gpu: controllerRef.current?.gpuStatus() ?? null });
     },
     onFrame: (frames) => {
       const patch: Partial<ViewerStatus> = { frames, compare: controllerRef.current?.compareState() ?? null, gpu: controllerRef.current?.gpuStatus() ?? null };

@@ -37,6 +37,13 @@ export interface ViewerStatus {
   /** Floor statistics in lux (null until lit). */
   floor: { avg: number; min: number; max: number; u0: number } | null;
   /**
+   * Work-plane statistics in lux while the work plane is on (null: off, or not computed yet), and
+   * where they came from: `gpu`, the reduction that follows each GPU relight (a crossfade, a dimming
+   * drag, a DMX stream; docs/viewer.md "Work-plane statistics on the GPU"), or `cpu`, the formula
+   * on the settled maps.
+   */
+  plane: { height: number; avg: number; min: number; max: number; u0: number; source: 'gpu' | 'cpu' } | null;
+  /**
    * Live control (docs/live-control.md), null while off: the bridge connection, frames
    * received, and overlays applied to the view (at most one per animation frame, only when
    * the levels changed).
@@ -84,6 +91,7 @@ export const CLOSED_STATUS: ViewerStatus = {
   contextLosses: 0,
   error: null,
   floor: null,
+  plane: null,
   live: null,
   compare: null,
   objects: null,

@@ -5,9 +5,12 @@ import type { RelightEngine } from '../../relight/RelightEngine';
 import type { LitMaps } from '../../relight/relightMaps';
 import { createViewRelight, type ViewRelight } from '../createViewRelight';
 import type { PendingStats } from '../createGpuStats';
+import type { IlluminanceStats } from '../lightStats';
 import { floorUnderObjects } from '../lightStats';
 import { sceneGeometryKey } from '../sceneGeometryKey';
 import type { Viewer } from './viewer';
+import { createWorkPlaneBases, type WorkPlaneBases } from '../workPlaneBases';
+import type { BakeScene } from '../../bake/bakeScene';
 
 /**
  * After the last GPU relight of a stream (a crossfade, a dimming drag, a DMX stream) has stood this
@@ -57,6 +60,11 @@ export interface ViewerGpu {
   settle: ReturnType<typeof setTimeout> | null;
   mask: { layout: SurfaceLayout; prepared: PreparedObjects | null; covered: Uint8Array } | null;
   pending: PendingStats | null;
+  /** The work plane's height the host shows statistics for (setWorkPlane), or null: off. */
+  workPlaneHeight: number | null;
+  /** The work plane's part grids for the room, objects and height in force (workPlaneBases.ts). */
+  plane: { room: BakeScene['room']; prepared: PreparedObjects | null; bases: WorkPlaneBases } | null;
+  planePending: PendingStats | null;
   /** Counts at the previous frame (for the per-frame numbers). */
   lastTotals: { readbacks: number; readbackBytes: number; uploadBytes: number };
   frame: GpuViewStatus['frame'];
@@ -74,6 +82,9 @@ export function createViewerGpu(v: Pick<Viewer, 'renderer'>): ViewerGpu {
     settle: null,
     mask: null,
     pending: null,
+    workPlaneHeight: null,
+    plane: null,
+    planePending: null,
     lastTotals: { readbacks: 0, readbackBytes: 0, uploadBytes: 0 },
     frame: { readbacks: 0, readbackBytes: 0, uploadBytes: 0 },
     disposed: false,
@@ -118,6 +129,7 @@ export function showRelightOnGpu(v: Viewer, engine: RelightEngine, showOnCpu: ()
   if (!parts.layouts.floor.sink) {
     g.pending = g.relight.floorStats(maps, floorMask(g, parts.layouts.floor, v.prepared));
     pollFloorStats(v, g.pending);
+    requestWorkPlaneStats(v, parts);
   }
   if (g.settle) clearTimeout(g.settle);
   g.settle = setTimeout(() => {
@@ -127,12 +139,58 @@ export function showRelightOnGpu(v: Viewer, engine: RelightEngine, showOnCpu: ()
   return true;
 }
 
+/** The work plane's part grids for the scene's room, the prepared objects and the height asked for (made anew when one of them changes). */
+function workPlaneBasesOf(g: ViewerGpu, scene: BakeScene, prepared: PreparedObjects | null, height: number): WorkPlaneBases {
+  const p = g.plane;
+  if (!p || p.room !== scene.room || p.prepared !== prepared || p.bases.grid.height !== height) g.plane = { room: scene.room, prepared, bases: createWorkPlaneBases(scene, height, WORK_PLANE_SPACING, prepared) };
+  return g.plane!.bases;
+}
+
+/** The work-plane grid spacing of the statistics (metres), as the CPU's (useWorkPlaneStats). */
+export const WORK_PLANE_SPACING = 0.1;
+
+/**
+ * The work plane's statistics of this GPU relight (box rooms, the plane on): its part grids combined
+ * with the same weights and reduced (createViewRelight workPlaneStats), reported by onWorkPlaneStats
+ * once read. Nothing is requested when a basis lacks its luminaires.
+ */
+function requestWorkPlaneStats(v: Viewer, parts: NonNullable<ReturnType<RelightEngine['relightParts']>>): void {
+  const g = v.gpu;
+  const height = g.workPlaneHeight;
+  if (height === null || !v.scene || v.scene.room.shape) return;
+  const pending = g.relight.workPlaneStats(parts, workPlaneBasesOf(g, v.scene, v.prepared, height));
+  if (!pending) return;
+  g.planePending = pending;
+  pollStats(
+    v,
+    pending,
+    () => g.planePending === pending,
+    (stats) => {
+      g.planePending = null;
+      v.events.onWorkPlaneStats?.({ ...stats, height });
+    },
+  );
+}
+
 /**
  * Poll a floor statistics request once per animation frame until the GPU has finished it (never
  * waits). A request superseded by a newer one is still polled to its end (that frees its fence and
  * texel) but not reported.
  */
 function pollFloorStats(v: Viewer, pending: PendingStats): void {
+  pollStats(
+    v,
+    pending,
+    () => v.gpu.pending === pending,
+    (stats) => {
+      v.gpu.pending = null;
+      v.events.onFloorStats?.(stats);
+    },
+  );
+}
+
+/** Poll a statistics request once per animation frame until it is read; `report` it unless `current` says a newer one superseded it. */
+function pollStats(v: Viewer, pending: PendingStats, current: () => boolean, report: (stats: IlluminanceStats) => void): void {
   const gpu = v.gpu;
   const relight = gpu.relight;
   const tick = () => {
@@ -143,9 +201,7 @@ function pollFloorStats(v: Viewer, pending: PendingStats): void {
       requestAnimationFrame(tick);
       return;
     }
-    if (gpu.pending !== pending) return;
-    gpu.pending = null;
-    v.events.onFloorStats?.(stats);
+    if (current()) report(stats);
   };
   requestAnimationFrame(tick);
 }
@@ -155,6 +211,7 @@ export function cancelSettle(g: ViewerGpu): void {
   if (g.settle) clearTimeout(g.settle);
   g.settle = null;
   g.pending = null;
+  g.planePending = null;
 }
 
 /** The counters of `view3d().gpu`, with the per-frame numbers of the last drawn frame. */
@@ -192,5 +249,5 @@ export function disposeViewerGpu(g: ViewerGpu): void {
 export function resetViewerGpu(v: Viewer): void {
   cancelSettle(v.gpu);
   v.gpu.relight.dispose();
-  Object.assign(v.gpu, createViewerGpu(v), { cpuRelights: v.gpu.cpuRelights, cpuUploadBytes: v.gpu.cpuUploadBytes });
+  Object.assign(v.gpu, createViewerGpu(v), { cpuRelights: v.gpu.cpuRelights, cpuUploadBytes: v.gpu.cpuUploadBytes, workPlaneHeight: v.gpu.workPlaneHeight });
 }

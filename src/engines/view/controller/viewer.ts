@@ -32,6 +32,8 @@ export interface ViewerEvents {
   onGpuRelight?(info: { relightMs: number }): void;
   /** The floor's statistics of the GPU relight on screen, once its reduction is read (createGpuStats.ts). */
   onFloorStats?(stats: IlluminanceStats): void;
+  /** The work plane's statistics (at `height`, set by setWorkPlane) of the GPU relight on screen, once its reduction is read. */
+  onWorkPlaneStats?(stats: IlluminanceStats & { height: number }): void;
   onFrame(frames: number): void;
   onContext(state: 'lost' | 'restored'): void;
   onError(message: string): void;
