@@ -26,6 +26,14 @@ const pkg = JSON.parse(readFileSync(join(root, 'package.json'), 'utf8'));
 step('build the package (lib/) and compare its API with docs/api/');
 run('node', ['scripts/buildPackage.mjs']);
 
+// The single-file element finds the demo's photometry beside itself (its default asset base): a
+// `data:` URL there means the bundler inlined a module for `new URL(…, import.meta.url)` instead.
+const elementScript = readFileSync(join(root, 'lib/standalone/luxbox-element.js'), 'utf8');
+if (/new URL\(\s*["'`]data:/.test(elementScript)) {
+  console.error('checkPackage: lib/standalone/luxbox-element.js builds a URL from an inlined data: URL (its default asset base would not be its folder)');
+  process.exit(1);
+}
+
 step('npm pack');
 const packDir = join(root, 'build/pack');
 rmSync(packDir, { recursive: true, force: true });
