@@ -6,25 +6,20 @@
  * a fade to a new end state solves that state once.
  */
 import { describe, expect, it } from 'vitest';
-import type { Rgb } from '../../../src/core/model/lightingScene/lightingScene';
 import { SURFACE_NAMES } from '../../../src/core/model/lightingScene/lightingScene';
 import type { BakeScene } from '../../../src/engines/bake/bakeScene';
 import { createRelightEngine } from '../../../src/engines/relight/createRelightEngine';
 import type { RelightEngine } from '../../../src/engines/relight/RelightEngine';
 import { SOLUTION_CACHE_SIZE } from '../../../src/engines/relight/solutionCache';
 import type { LitMaps } from '../../../src/engines/relight/relightMaps';
-import { spot } from '../bake/bakeTestKit';
 import { withHeadlessGL } from '../bake/withHeadlessGL';
+import { relightTestRoom, relightTestSettings, threeLampScenes } from './threeLampScenes';
 
 const gl = withHeadlessGL();
-const SETTINGS = { texelSize: 0.2, maxTextureSize: 32, samples: 16, bounces: 2, samplesPerDraw: 8, blurRadius: 1, seed: 5 };
-const room: BakeScene['room'] = { width: 4, height: 2.6, depth: 3, reflectance: { floor: 0.3, ceiling: 0.8, north: [0.7, 0.5, 0.3], south: 0.6, west: 0.5, east: 0.4 } };
-const photometries = Array.from({ length: 3 }, (_, k) => spot(1000 + 300 * k, 30, 15, 2));
-/** Three lamps with per-lamp dimming and colour (a light scene's look as toLightingScene hands it over). */
-const scene = (looks: [number, Rgb][]): BakeScene => ({
-  room,
-  luminaires: looks.map(([dimming, color], k) => ({ photometry: photometries[k], position: [0.8 + 1.2 * k, 2.3, 0.9 + 0.5 * k] as [number, number, number], yaw: 0, pitch: 15 * k, roll: 0, dimming, color })),
-});
+const SETTINGS = relightTestSettings(5);
+const room = relightTestRoom;
+/** Three spots with per-lamp dimming and colour (a light scene's look as toLightingScene hands it over). */
+const scene = threeLampScenes({ flux: [1000, 300], beamDegrees: 30, pitchStep: 15, x: [0.8, 1.2], z: [0.9, 0.5] });
 const A = scene([
   [1, [1, 0.8, 0.6]],
   [0.3, [1, 1, 1]],

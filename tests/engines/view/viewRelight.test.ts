@@ -9,16 +9,14 @@
  */
 import * as THREE from 'three';
 import { describe, expect, it } from 'vitest';
-import type { Rgb } from '../../../src/core/model/lightingScene/lightingScene';
-import type { BakeScene } from '../../../src/engines/bake/bakeScene';
 import { reflectanceRgb } from '../../../src/engines/bake/bakeScene';
 import { readRgb } from '../../../src/engines/bake/floatTarget';
 import { createRelightEngine } from '../../../src/engines/relight/createRelightEngine';
 import { createRoomSurfaces } from '../../../src/engines/view/createRoomSurfaces';
 import { createViewRelight, LOW_MEMORY_RELIGHT_BYTES } from '../../../src/engines/view/createViewRelight';
 import { floorStats, type IlluminanceStats } from '../../../src/engines/view/lightStats';
-import { spot } from '../bake/bakeTestKit';
 import { withHeadlessGL } from '../bake/withHeadlessGL';
+import { relightTestRoom, relightTestSettings, threeLampScenes } from '../relight/threeLampScenes';
 import { COMPLETION_STATUS_KHR } from '../../../src/engines/bake/glResources';
 import { headlessRenderer } from './headlessRenderer';
 
@@ -26,13 +24,10 @@ const bakeGl = withHeadlessGL();
 const W = 96;
 const renderer = headlessRenderer(W, W);
 const viewGl = renderer.getContext() as WebGL2RenderingContext;
-const SETTINGS = { texelSize: 0.2, maxTextureSize: 32, samples: 16, bounces: 2, samplesPerDraw: 8, blurRadius: 1, seed: 9 };
-const room: BakeScene['room'] = { width: 4, height: 2.6, depth: 3, reflectance: { floor: 0.3, ceiling: 0.8, north: [0.7, 0.5, 0.3], south: 0.6, west: 0.5, east: 0.4 } };
-const photometries = Array.from({ length: 3 }, (_, k) => spot(1200 + 300 * k, 35, 15, 2));
-const scene = (looks: [number, Rgb][]): BakeScene => ({
-  room,
-  luminaires: looks.map(([dimming, color], k) => ({ photometry: photometries[k], position: [0.8 + 1.2 * k, 2.3, 0.9 + 0.5 * k] as [number, number, number], yaw: 0, pitch: 10 * k, roll: 0, dimming, color })),
-});
+const SETTINGS = relightTestSettings(9);
+const room = relightTestRoom;
+/** Three spots with per-lamp dimming and colour (a light scene's look as toLightingScene hands it over). */
+const scene = threeLampScenes({ flux: [1200, 300], beamDegrees: 35, pitchStep: 10, x: [0.8, 1.2], z: [0.9, 0.5] });
 const A = scene([
   [1, [1, 0.8, 0.6]],
   [0.3, [1, 1, 1]],

@@ -6,7 +6,6 @@
  * Headless-gl on both sides: the engine bakes on one context, the view relights on three's.
  */
 import { describe, expect, it } from 'vitest';
-import type { Rgb } from '../../../src/core/model/lightingScene/lightingScene';
 import type { BakeScene } from '../../../src/engines/bake/bakeScene';
 import { createRelightEngine } from '../../../src/engines/relight/createRelightEngine';
 import { groupLuminaires, groupWeight } from '../../../src/engines/relight/luminaireGroups';
@@ -14,19 +13,15 @@ import { createViewRelight } from '../../../src/engines/view/createViewRelight';
 import { workPlaneStats, type IlluminanceStats } from '../../../src/engines/view/lightStats';
 import { createWorkPlaneBases } from '../../../src/engines/view/workPlaneBases';
 import { blendWeights } from '../../../src/engines/relight/groupState';
-import { spot } from '../bake/bakeTestKit';
 import { withHeadlessGL } from '../bake/withHeadlessGL';
+import { relightTestSettings, threeLampScenes } from '../relight/threeLampScenes';
 import { headlessRenderer } from './headlessRenderer';
 
 const bakeGl = withHeadlessGL();
 const renderer = headlessRenderer(16, 16);
-const SETTINGS = { texelSize: 0.2, maxTextureSize: 32, samples: 16, bounces: 2, samplesPerDraw: 8, blurRadius: 1, seed: 5 };
-const room: BakeScene['room'] = { width: 4, height: 2.6, depth: 3, reflectance: { floor: 0.3, ceiling: 0.8, north: [0.7, 0.5, 0.3], south: 0.6, west: 0.5, east: 0.4 } };
-const photometries = Array.from({ length: 3 }, (_, k) => spot(1500 + 400 * k, 40, 15, 2));
-const scene = (looks: [number, Rgb][]): BakeScene => ({
-  room,
-  luminaires: looks.map(([dimming, color], k) => ({ photometry: photometries[k], position: [0.7 + 1.3 * k, 2.3, 0.8 + 0.6 * k] as [number, number, number], yaw: 0, pitch: 12 * k, roll: 0, dimming, color })),
-});
+const SETTINGS = relightTestSettings(5);
+/** Three spots with per-lamp dimming and colour (a light scene's look as toLightingScene hands it over). */
+const scene = threeLampScenes({ flux: [1500, 400], beamDegrees: 40, pitchStep: 12, x: [0.7, 1.3], z: [0.8, 0.6] });
 const A = scene([
   [1, [1, 0.8, 0.6]],
   [0.3, [1, 1, 1]],
