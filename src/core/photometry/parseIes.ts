@@ -54,7 +54,7 @@ export function parseIes(text: string, fileName: string, options: ParseIesOption
     statedLumensSource,
     absolute,
     inputWatts: watts > 0 && watts <= MAX_WATTS ? watts : null,
-    luminousOpening: luminousOpening(width * unit, length * unit, height * unit),
+    luminousOpening: iesOpeningInLuminaireFrame(luminousOpening(width * unit, length * unit, height * unit)),
     warnings,
     tilt,
     fileGrid: {
@@ -118,4 +118,16 @@ function readIesGrid(
 
   const grid: ExpandedGrid = typeC ? expandTypeC(fileName, { verticalAngles, horizontalAngles, candela }, anglesLine, warnings) : convertTypeAB(fileName, photometricType, { verticalAngles, horizontalAngles, candela }, anglesLine);
   return { grid, scale, verticalAngles, horizontalAngles };
+}
+
+/**
+ * LM-63-2002 §5.10 names the opening's side along the 0°–180° photometric plane its *length* and
+ * the side along 90°–270° its *width* (the example file of LM-63-1995, Ledalite's 251602SN, states
+ * "[ALGN] 0 degree plane parallel to lamps" with a length of 4.04 ft for 4 ft T8 lamps; Radiance's
+ * ies2rad also lays the length along x, the 0° direction). Photometry.luminousOpening uses
+ * EULUMDAT's names instead (width b along C0–C180 = local x, length along C90–C270 = local z), so
+ * the two sides swap here; a circle or a sphere is the same either way.
+ */
+function iesOpeningInLuminaireFrame(o: Photometry['luminousOpening']): Photometry['luminousOpening'] {
+  return { ...o, width: o.length, length: o.width };
 }

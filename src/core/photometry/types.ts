@@ -47,10 +47,13 @@ export interface Photometry {
   inputWatts: number | null;
   /**
    * Luminous opening in metres (converted from feet where needed), magnitudes,
-   * in the luminaire frame. LM-63-2002 §5.10 and EULUMDAT agree: length runs
-   * along the C0–C180 axis (local x), width along the C90–C270 axis (local z),
-   * height along y. `shape` follows LM-63-2002 Table 1 sign conventions
-   * (negative width = circular/…) decoded into a name.
+   * in the luminaire frame, under EULUMDAT's names: width along the C0–C180 axis
+   * (local x), length along the C90–C270 axis (local z), height along y. LM-63-2002
+   * §5.10 names the two sides the other way round (its length runs along 0°–180°),
+   * so the IES parser swaps them (parseIes.ts, iesOpeningInLuminaireFrame); the
+   * baker's point sources, the reference and the drawn models all read width as x.
+   * `shape` follows LM-63-2002 Table 1 sign conventions (negative width =
+   * circular/…) decoded into a name.
    */
   luminousOpening: { width: number; length: number; height: number; shape: 'point' | 'rectangular' | 'circular' | 'elliptical' | 'cylindrical' | 'spherical' | 'other' };
   /** Non-fatal problems found while reading (cap applied, lumens mismatch, …). */

@@ -159,7 +159,8 @@ describe('TILT, multipliers, versions, units', () => {
     expect(ph.statedLumens).toBe(1000);
     expect(ph.absolute).toBe(false);
     expect(integrateFlux(ph)).toBeCloseTo(4 * Math.PI * 50, 6);
-    expect(ph.luminousOpening).toEqual({ width: 0.3, length: 0.6, height: 0, shape: 'rectangular' });
+    // The file says width 0.3, length 0.6: LM-63's length runs along 0°–180°, stored as width (local x).
+    expect(ph.luminousOpening).toEqual({ width: 0.6, length: 0.3, height: 0, shape: 'rectangular' });
   });
 
   it('all five LM-63 versions give the same model', () => {
