@@ -1,14 +1,7 @@
 import type { EngineProgress, RelightEngine } from '../relight/RelightEngine';
-import { bakeSlice, FIRST_MS_PER_SAMPLE, pacedMsPerSample } from './bakeSlice';
+import { initialSlicerState, queueSlice, runSlice } from './slicer/bakeSlicerSteps';
 
-/** How often a slice's fence is polled, ms (browsers clamp nested timeouts to about 4 ms anyway). */
-export const FENCE_POLL_MS = 2;
-/**
- * Longest wait for a slice's fence, ms: then the slice counts as finished and the bake goes on. A
- * fence that never signals (a driver that drops it; WebGL 2 §5.27 promises no bound) must not stall
- * the bake; one slice's GPU work is at most a few seconds even on a software rasteriser.
- */
-export const FENCE_TIMEOUT_MS = 10_000;
+export { FENCE_POLL_MS, FENCE_TIMEOUT_MS } from './slicer/bakeSlicerSteps';
 
 /** A GPU fence after a slice's commands: signalled once the GPU has executed them. */
 export interface GpuFence {
@@ -87,6 +80,8 @@ export function glTimer(gl: WebGL2RenderingContext): GpuTimer | null {
  * Liveness (issue 32): until the engine reports done, every slice steps at least once (bakeSlice),
  * is followed by another slice or a fence poll, and a fence is waited for at most FENCE_TIMEOUT_MS;
  * so an unpaused slicer with an unfinished bake always has a slice queued or in flight.
+ *
+ * The steps (slicer/bakeSlicerSteps.ts) share one SlicerState: run, step the engine, poll the fence, queue.
  */
 export interface BakeSlicer {
   /** One slice now (a new scene), or right after the slice in flight; nothing while paused (it runs on resume). */
@@ -126,120 +121,30 @@ export interface BakeSlicerOptions {
   holdMs?: () => number;
 }
 
-export function createBakeSlicer({ engine, onSlice, onError, defer = (f, ms) => setTimeout(f, ms), now = () => performance.now(), fence, timer, holdMs }: BakeSlicerOptions): BakeSlicer {
-  let msPerSample = FIRST_MS_PER_SAMPLE;
-  let queued = false;
-  let stopped = false;
-  let paused = false;
-  /** The slice whose fence has not signalled. */
-  let flight: { fence: GpuFence; timer: GpuTimer | null; start: number; samples: number } | null = null;
-  /** A run was asked for while a slice was in flight or the slicer paused. */
-  let again = false;
-
-  const slice = () => {
-    queued = false;
-    if (stopped) return;
-    if (paused || flight) {
-      again = true;
-      return;
-    }
-    again = false;
-    const e = engine();
-    if (!e) return;
-    const hold = holdMs?.() ?? 0;
-    if (hold > 0 && !e.progress.done) {
-      onSlice(e, e.progress, 0);
-      queued = true;
-      defer(slice, hold);
-      return;
-    }
-    const start = now();
-    const fenced = fence !== undefined;
-    const gpuTimer = fenced ? (timer?.() ?? null) : null;
-    let r: ReturnType<typeof bakeSlice>;
-    try {
-      gpuTimer?.begin();
-      r = bakeSlice(e, msPerSample, now, fenced);
-      gpuTimer?.end();
-    } catch (error) {
-      gpuTimer?.dispose();
-      onError(`Baking failed: ${(error as Error).message}`);
-      return;
-    }
-    onSlice(e, r.progress, r.samples);
-    // Done is what the engine says, never "the slice issued nothing" (issue 32: a slice that lost its
-    // time to a loaded machine issued nothing and the bake stopped at 59.7 %). bakeSlice steps at
-    // least once, so nothing issued means done; if not, the bake goes on.
-    if (r.samples === 0) {
-      gpuTimer?.dispose();
-      if (!r.progress.done) queue();
-      return;
-    }
-    const f = fenced ? fence() : null;
-    if (!f) {
-      gpuTimer?.dispose();
-      if (fenced) msPerSample = 0.7 * msPerSample + (0.3 * r.ms) / r.samples;
-      else msPerSample = r.msPerSample;
-      if (!r.progress.done) queue();
-      return;
-    }
-    flight = { fence: f, timer: gpuTimer, start, samples: r.samples };
-    poll();
-  };
-
-  const poll = () =>
-    defer(() => {
-      if (!flight) return;
-      if (stopped) {
-        flight.fence.dispose();
-        flight.timer?.dispose();
-        flight = null;
-        return;
-      }
-      if (!flight.fence.signalled() && now() - flight.start < FENCE_TIMEOUT_MS) {
-        poll();
-        return;
-      }
-      msPerSample = pacedMsPerSample(msPerSample, flight.samples, { fenceMs: now() - flight.start, gpuMs: flight.timer?.elapsedMs() ?? null });
-      flight.fence.dispose();
-      flight.timer?.dispose();
-      flight = null;
-      const e = engine();
-      if (again || (e && !e.progress.done)) queue();
-    }, FENCE_POLL_MS);
-
-  const queue = () => {
-    if (queued || stopped) return;
-    if (flight || paused) {
-      again = true;
-      return;
-    }
-    queued = true;
-    defer(slice, 0);
-  };
-
+export function createBakeSlicer({ defer = (f, ms) => setTimeout(f, ms), now = () => performance.now(), ...rest }: BakeSlicerOptions): BakeSlicer {
+  const s = initialSlicerState({ ...rest, defer, now });
   return {
-    run: slice,
-    queue,
+    run: () => runSlice(s),
+    queue: () => queueSlice(s),
     setPaused(p) {
-      if (p === paused) return;
-      paused = p;
-      if (!paused && (again || engine()?.progress.done === false)) queue();
+      if (p === s.paused) return;
+      s.paused = p;
+      if (!s.paused && (s.again || s.options.engine()?.progress.done === false)) queueSlice(s);
     },
     get paused() {
-      return paused;
+      return s.paused;
     },
     get busy() {
-      return queued || flight !== null;
+      return s.queued || s.flight !== null;
     },
     get inFlight() {
-      return flight ? 1 : 0;
+      return s.flight ? 1 : 0;
     },
     get msPerSample() {
-      return msPerSample;
+      return s.msPerSample;
     },
     stop() {
-      stopped = true;
+      s.stopped = true;
     },
   };
 }

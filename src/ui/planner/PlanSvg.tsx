@@ -194,12 +194,69 @@ const ObjectShapes = memo(function ObjectShapes({ config, selectedId, drag }: { 
   );
 });
 
+/** A system dragged as a whole: its offset, and whether it may be dropped there. */
+type SystemDrag = Extract<DragPreview, { systemId: string }> | null;
+/** A module or fixing point dragged: its system as the drag would leave it. */
+type MovedSystem = Extract<DragPreview, { preview: LightSystem }> | null;
+type Levels = ReadonlyMap<string, number> | null | undefined;
+
+/** Each module's floor footprint (measured polygon or ellipse), tinted with its light and faded with its level, clipped to the room. */
+function footprintLayer(systems: readonly LightSystem[], systemDrag: SystemDrag, catalog: Catalog, levels: Levels, config: Configuration, footprints: FootprintSource, clipId: string) {
+  return (
+    <g clipPath={`url(#${clipId})`} pointerEvents="none">
+      {systems.map((s) => {
+        const d = systemDrag?.systemId === s.id ? systemDrag.delta : { x: 0, z: 0 };
+        // Where the modules really are: the suspension, or the surface mount's drop below the ceiling.
+        const h = moduleHeight(s, { height: config.room.height }, catalog);
+        return (
+          <g key={s.id} transform={`translate(${d.x} ${d.z})`}>
+            {modulePlacements(s, catalog).map((m) => {
+              const module = s.rails.flatMap((r) => r.modules).find((x) => x.id === m.moduleId);
+              if (!module) return null;
+              const path = modulePhotometryPath(module, catalog);
+              const f = moduleFootprint(m, module, catalog, h, path ? footprints.get(path) : null, config.room);
+              if (!f) return null;
+              const paint = {
+                fill: moduleTint(module),
+                fillOpacity: 0.2 * shownLevel(levels, module),
+                stroke: '#c98a1c',
+                strokeOpacity: 0.7,
+                strokeWidth: 1,
+                vectorEffect: 'non-scaling-stroke' as const,
+                'data-footprint-for': m.moduleId,
+              };
+              if (f.kind === 'polygon') return <polygon key={m.moduleId} points={f.points.map((p) => `${p.x},${p.z}`).join(' ')} {...paint} />;
+              const e = f.ellipse;
+              return <ellipse key={m.moduleId} cx={e.center.x} cy={e.center.z} rx={Math.max(e.rx, 1e-3)} ry={Math.max(e.ry, 1e-3)} transform={`rotate(${e.rotationDeg} ${e.center.x} ${e.center.z})`} {...paint} />;
+            })}
+          </g>
+        );
+      })}
+    </g>
+  );
+}
+
+/** The systems' rails, connectors, module symbols, fixings and feeds, each system offset by its drag and faded where it may not be dropped. */
+function systemLayer(systems: readonly LightSystem[], systemDrag: SystemDrag, catalog: Catalog, levels: Levels, moved: MovedSystem, view: PlanView, selection: SelectionPath, footprints: FootprintSource) {
+  return systems.map((s) => {
+    const d = systemDrag?.systemId === s.id ? systemDrag.delta : { x: 0, z: 0 };
+    const refused = systemDrag?.systemId === s.id && systemDrag.invalid;
+    const moduleRefused = moved?.preview.id === s.id && moved.invalid;
+    const own = selection.systemId === s.id;
+    return (
+      <g key={s.id} transform={`translate(${d.x} ${d.z})`} opacity={refused ? 0.4 : 1} data-drop-refused={refused || undefined} data-module-drag-refused={moduleRefused || undefined}>
+        <SystemShape system={s} catalog={catalog} scale={view.scale} selected={own} selectedRailId={own ? selection.railId : undefined} selectedModuleId={own ? selection.moduleId : undefined} levels={levels} outline={footprints.outline} />
+      </g>
+    );
+  });
+}
+
 /**
  * The room drawn from above as SVG (plan x = world x, plan y = world z). Geometry is drawn in
  * metres inside one group whose transform is the view, with non-scaling strokes, so lines keep
  * their on-screen width at every zoom; the constant-size controls live in PlanControls. It
  * only draws: what a pointer hits is found from the same shapes by planHitTest, and input goes
- * to the PlannerController.
+ * to the PlannerController. Its objects, footprints and systems are drawn by ObjectShapes, footprintLayer and systemLayer.
  */
 export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection, drag, footprints, levels }: PlanSvgProps) {
   const clipId = useId();
@@ -251,60 +308,13 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
           ))}
         </g>
         <ObjectShapes config={config} selectedId={selection.objectId} drag={drag} />
-        <g clipPath={`url(#${clipId})`} pointerEvents="none">
-          {systems.map((s) => {
-            const d = systemDrag?.systemId === s.id ? systemDrag.delta : { x: 0, z: 0 };
-            // Where the modules really are: the suspension, or the surface mount's drop below the ceiling.
-            const h = moduleHeight(s, { height }, catalog);
-            return (
-              <g key={s.id} transform={`translate(${d.x} ${d.z})`}>
-                {modulePlacements(s, catalog).map((m) => {
-                  const module = s.rails.flatMap((r) => r.modules).find((x) => x.id === m.moduleId);
-                  if (!module) return null;
-                  const path = modulePhotometryPath(module, catalog);
-                  const f = moduleFootprint(m, module, catalog, h, path ? footprints.get(path) : null, config.room);
-                  if (!f) return null;
-                  const paint = {
-                    fill: moduleTint(module),
-                    fillOpacity: 0.2 * shownLevel(levels, module),
-                    stroke: '#c98a1c',
-                    strokeOpacity: 0.7,
-                    strokeWidth: 1,
-                    vectorEffect: 'non-scaling-stroke' as const,
-                    'data-footprint-for': m.moduleId,
-                  };
-                  if (f.kind === 'polygon') return <polygon key={m.moduleId} points={f.points.map((p) => `${p.x},${p.z}`).join(' ')} {...paint} />;
-                  const e = f.ellipse;
-                  return <ellipse key={m.moduleId} cx={e.center.x} cy={e.center.z} rx={Math.max(e.rx, 1e-3)} ry={Math.max(e.ry, 1e-3)} transform={`rotate(${e.rotationDeg} ${e.center.x} ${e.center.z})`} {...paint} />;
-                })}
-              </g>
-            );
-          })}
-        </g>
+        {footprintLayer(systems, systemDrag, catalog, levels, config, footprints, clipId)}
         {shape ? (
           <LazyRoomShapeDrawing shape={shape} height={height} clipId={clipId} hatchId={`${clipId}h`} />
         ) : (
           <rect x={0} y={0} width={width} height={depth} fill="none" stroke="#1d2330" strokeWidth={3} vectorEffect="non-scaling-stroke" />
         )}
-        {systems.map((s) => {
-          const d = systemDrag?.systemId === s.id ? systemDrag.delta : { x: 0, z: 0 };
-          const refused = systemDrag?.systemId === s.id && systemDrag.invalid;
-          const moduleRefused = moved?.preview.id === s.id && moved.invalid;
-          return (
-            <g key={s.id} transform={`translate(${d.x} ${d.z})`} opacity={refused ? 0.4 : 1} data-drop-refused={refused || undefined} data-module-drag-refused={moduleRefused || undefined}>
-              <SystemShape
-                system={s}
-                catalog={catalog}
-                scale={view.scale}
-                selected={selection.systemId === s.id}
-                selectedRailId={selection.systemId === s.id ? selection.railId : undefined}
-                selectedModuleId={selection.systemId === s.id ? selection.moduleId : undefined}
-                levels={levels}
-                outline={footprints.outline}
-              />
-            </g>
-          );
-        })}
+        {systemLayer(systems, systemDrag, catalog, levels, moved, view, selection, footprints)}
       </g>
     </svg>
   );
