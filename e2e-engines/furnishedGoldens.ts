@@ -1,0 +1,41 @@
+import { defaultCatalog } from '../src/core/catalog/defaultCatalog';
+import { FURNISHED_PRESETS } from '../src/core/catalog/furnishedPresets';
+import { serializeConfiguration } from '../src/core/model/files/sceneFile';
+import type { QualityLevel } from '../src/engines/relight/qualityLevels';
+import type { CameraPresetName } from '../src/engines/view/cameraPresets';
+import type { GoldenTolerance } from './imageDifference';
+
+/**
+ * The furnished goldens (docs/viewer.md, "Furnished goldens"): each furnished room at eye height
+ * and from the corner, baked at one quality level. The same definitions serve the three browser
+ * engines (furnishedGoldens.engines.ts) and `luxbox render` (tests/hosts/cli/renderFurnishedGoldens.test.ts),
+ * so both sides draw the same configuration, camera and bake settings.
+ */
+export const GOLDEN_ROOMS = ['living-room', 'dining-room', 'shop-window'] as const;
+export type GoldenRoom = (typeof GOLDEN_ROOMS)[number];
+
+export const GOLDEN_CAMERAS = ['eye', 'corner'] as const satisfies readonly CameraPresetName[];
+export type GoldenCamera = (typeof GOLDEN_CAMERAS)[number];
+
+/** The bake quality of the goldens: fixed texel size, samples and bounces (QUALITY_LEVELS.fast), seed 1. */
+export const GOLDEN_QUALITY: QualityLevel = 'fast';
+
+/** The goldens' folder (beside the CLI's render goldens) and file name of one view. */
+export const GOLDENS_DIR = 'tests/goldens';
+export const goldenFile = (room: GoldenRoom, camera: GoldenCamera) => `furnished-${room}-${camera}.png`;
+
+/**
+ * The largest difference allowed between any engine's picture, or `luxbox render`'s, and the
+ * reviewed golden of a view (per pixel the largest channel difference, 0–255). Set from the
+ * differences measured between the engines and the CLI (docs/viewer.md, "Furnished goldens"):
+ * edges differ by anti-aliasing and rasterisation (p99 up to tens of levels), the picture as a
+ * whole by at most a few levels.
+ */
+export const GOLDEN_TOLERANCE: GoldenTolerance = { mean: 3, p90: 6 };
+
+/** The scene file of a furnished room as the app writes it (default catalog). */
+export function furnishedSceneFile(room: GoldenRoom): string {
+  const preset = FURNISHED_PRESETS.find((p) => p.id === room);
+  if (!preset) throw new Error(`no furnished preset "${room}"`);
+  return serializeConfiguration(preset.build(defaultCatalog), defaultCatalog);
+}
