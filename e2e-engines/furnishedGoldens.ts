@@ -17,6 +17,19 @@ export type GoldenRoom = (typeof GOLDEN_ROOMS)[number];
 export const GOLDEN_CAMERAS = ['eye', 'corner'] as const satisfies readonly CameraPresetName[];
 export type GoldenCamera = (typeof GOLDEN_CAMERAS)[number];
 
+/**
+ * The rooms a run compares: LUXBOX_GOLDEN_ROOMS, a comma list of rooms or `all`; by default the
+ * living room alone, which keeps the suites short on the 2-core CI machine (each furnished bake
+ * takes 0.5–2 min on software GL; docs/viewer.md, "Furnished goldens").
+ */
+export function goldenRoomsToRun(value = process.env.LUXBOX_GOLDEN_ROOMS): GoldenRoom[] {
+  if (value === undefined || value.trim() === '') return ['living-room'];
+  if (value.trim() === 'all') return [...GOLDEN_ROOMS];
+  const rooms = value.split(',').map((r) => r.trim());
+  for (const r of rooms) if (!(GOLDEN_ROOMS as readonly string[]).includes(r)) throw new Error(`LUXBOX_GOLDEN_ROOMS: unknown room "${r}" (${GOLDEN_ROOMS.join(', ')} or all)`);
+  return rooms as GoldenRoom[];
+}
+
 /** The bake quality of the goldens: fixed texel size, samples and bounces (QUALITY_LEVELS.fast), seed 1. */
 export const GOLDEN_QUALITY: QualityLevel = 'fast';
 

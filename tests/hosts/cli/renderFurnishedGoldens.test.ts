@@ -4,7 +4,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { PNG } from 'pngjs';
 import { describe, expect, it } from 'vitest';
-import { furnishedSceneFile, GOLDEN_CAMERAS, GOLDEN_QUALITY, GOLDEN_ROOMS, GOLDEN_TOLERANCE, GOLDENS_DIR, goldenFile } from '../../../e2e-engines/furnishedGoldens';
+import { furnishedSceneFile, GOLDEN_CAMERAS, GOLDEN_QUALITY, GOLDEN_TOLERANCE, GOLDENS_DIR, goldenFile, goldenRoomsToRun } from '../../../e2e-engines/furnishedGoldens';
 import { formatDifference, imageDifference, withinTolerance } from '../../../e2e-engines/imageDifference';
 import { QUALITY_LEVELS } from '../../../src/engines/relight/qualityLevels';
 import { VIEWER_BAKE_SETTINGS } from '../../../src/engines/relight/createRelightEngine';
@@ -19,6 +19,8 @@ import { VIEWER_BAKE_SETTINGS } from '../../../src/engines/relight/createRelight
  */
 const ROOT = join(__dirname, '../../..');
 const OUT = mkdtempSync(join(tmpdir(), 'luxbox-furnished-'));
+/** The living room by default (one bake); LUXBOX_GOLDEN_ROOMS=all adds the dining room and the shop window. */
+const ROOMS = goldenRoomsToRun();
 
 /** The browser's quality level as `luxbox render` flags (one definition: QUALITY_LEVELS). */
 function qualityFlags(): string[] {
@@ -31,9 +33,9 @@ describe('luxbox render of the furnished goldens', () => {
     expect(QUALITY_LEVELS[GOLDEN_QUALITY].samplesPerDraw).toBe(VIEWER_BAKE_SETTINGS.samplesPerDraw);
   });
 
-  it('draws the living room, dining room and shop window at eye height and from the corner as the browser does (within the golden tolerance)', { timeout: 600_000 }, () => {
+  it(`draws ${ROOMS.join(', ')} at eye height and from the corner as the browser does (within the golden tolerance)`, { timeout: 600_000 }, () => {
     const size = PNG.sync.read(readFileSync(join(ROOT, GOLDENS_DIR, goldenFile('living-room', 'eye'))));
-    const files = GOLDEN_ROOMS.map((room) => {
+    const files = ROOMS.map((room) => {
       const file = join(OUT, `${room}.luxbox.json`);
       writeFileSync(file, furnishedSceneFile(room));
       return file;
@@ -43,7 +45,7 @@ describe('luxbox render of the furnished goldens', () => {
     const run = spawnSync(process.execPath, [join(ROOT, 'bin/luxbox.js'), ...args], { cwd: ROOT, encoding: 'utf8', timeout: 580_000 });
     expect(run.status, run.stderr).toBe(0);
     const failures: string[] = [];
-    for (const room of GOLDEN_ROOMS) {
+    for (const room of ROOMS) {
       for (const camera of GOLDEN_CAMERAS) {
         const name = goldenFile(room, camera);
         const actual = PNG.sync.read(readFileSync(join(out, `${room}-${camera}.png`)));
