@@ -1,6 +1,7 @@
 import { mkdir, readFile, writeFile } from 'node:fs/promises';
 import { join } from 'node:path';
 import { PNG } from 'pngjs';
+import { until } from './crossEngineScenario';
 import type { EngineDriver } from './engineDriver';
 import { furnishedSceneFile, GOLDEN_CAMERAS, GOLDEN_QUALITY, type GoldenCamera, type GoldenRoom } from './furnishedGoldens';
 import { cropImage } from './imageDifference';
@@ -19,16 +20,6 @@ export interface FurnishedView {
 type Status = { done: boolean; error: string | null; frames: number; bake: { groupBakes: number } };
 
 const sleep = (ms: number) => new Promise((r) => setTimeout(r, ms));
-
-async function until<T>(what: string, read: () => Promise<T>, ok: (v: T) => boolean, timeoutMs: number, intervalMs = 250): Promise<T> {
-  const end = Date.now() + timeoutMs;
-  for (;;) {
-    const last = await read();
-    if (ok(last)) return last;
-    if (Date.now() > end) throw new Error(`${what}: not reached within ${timeoutMs} ms (last: ${JSON.stringify(last)})`);
-    await sleep(intervalMs);
-  }
-}
 
 /**
  * Frames are drawn on demand, and while the eye adaptation moves after a camera cut (at most
