@@ -59,7 +59,7 @@ type SceneFile = { configuration: { room: { width: number; depth: number; height
 const sel = (testId: string) => `[data-testid="${testId}"]`;
 
 /** Polls `read` until `ok` holds or the time is up; the error names what was awaited and the last value. */
-async function until<T>(what: string, read: () => Promise<T>, ok: (v: T) => boolean, timeoutMs = 30_000, intervalMs = 250): Promise<T> {
+export async function until<T>(what: string, read: () => Promise<T>, ok: (v: T) => boolean, timeoutMs = 30_000, intervalMs = 250): Promise<T> {
   const end = Date.now() + timeoutMs;
   let last: T | undefined;
   for (;;) {
