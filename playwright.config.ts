@@ -13,8 +13,13 @@ export default defineConfig({
   snapshotPathTemplate: '{testDir}/__screenshots__/{testFilePath}/{arg}{ext}',
   timeout: 120_000,
   expect: { timeout: 30_000 },
-  fullyParallel: false,
-  workers: 1,
+  // Two workers, test by test (each test has its own browser context, its own files and free
+  // ports): SwiftShader rasterises on one thread per core but the page's JavaScript, the GPU
+  // process's command thread and the test's Node side run between its draws, so a second browser
+  // fills the cores one leaves idle (docs/benchmarks.md, "Test suite time"). `--workers=1` runs
+  // them one after another as before.
+  fullyParallel: true,
+  workers: 2,
   retries: 0,
   reporter: [['list']],
   use: {

@@ -56,7 +56,7 @@ for (const [name, viewport] of Object.entries(SIZES)) {
     await page.screenshot({ path: `test-results/furniture/${name}-plan.png` });
     await page.getByTestId('tool-3d').click();
     await expect(page.getByTestId('view3d-canvas')).toBeVisible();
-    await expect.poll(async () => (await status(page)).done, { timeout: 360_000, intervals: [2000] }).toBe(true);
+    await expect.poll(async () => (await status(page)).done, { timeout: 360_000, intervals: [250] }).toBe(true);
     await page.screenshot({ path: `test-results/furniture/${name}-3d.png` });
     await page.getByTestId('camera-eye').click();
     await expect.poll(async () => (await status(page)).frames).toBeGreaterThan(0);
@@ -73,7 +73,7 @@ test('the furnished dining room in 3D at desktop size (for review: chairs, table
   await expect.poll(async () => JSON.parse(await page.evaluate(() => window.luxbox!.getConfig())).configuration.room.width).toBe(5);
   await page.getByTestId('tool-3d').click();
   await expect(page.getByTestId('view3d-canvas')).toBeVisible();
-  await expect.poll(async () => (await status(page)).done, { timeout: 360_000, intervals: [2000] }).toBe(true);
+  await expect.poll(async () => (await status(page)).done, { timeout: 360_000, intervals: [250] }).toBe(true);
   mkdirSync('test-results/furniture', { recursive: true });
   await page.screenshot({ path: 'test-results/furniture/dining-desktop-3d.png' });
   await page.getByTestId('camera-eye').click();

@@ -58,7 +58,8 @@ for (const device of ['phone', 'desktop'] as const) {
     const text = TEXT[locale];
 
     test(`${device}, ${locale}: a type change keeps the beam, or sets the nearest and says so`, async ({ browser }) => {
-      const page = await open(browser, device, locale, '/?demo');
+      // `fast`: this test stays in 2D, so the demo's background bake need not hold the cores (docs/benchmarks.md, "Test suite time").
+      const page = await open(browser, device, locale, '/?demo&quality=fast');
       const tap = press(device);
       await footprintsReady(page);
       await zoomToModuleLevel(page);

@@ -36,7 +36,10 @@ const TEXT = {
 } as const;
 type Locale = keyof typeof TEXT;
 
-async function open(browser: Browser, device: Device, locale: Locale, path = '/?demo'): Promise<Page> {
+// The demo at a pinned `fast` level: the tests that stay in 2D would otherwise share the cores with the
+// always-ready service baking the furnished living room in the background at the calibrated level
+// (docs/viewer.md, "Always ready: the bake service"; docs/benchmarks.md, "Test suite time").
+async function open(browser: Browser, device: Device, locale: Locale, path = '/?demo&quality=fast'): Promise<Page> {
   const context = await browser.newContext({ ...DEVICES[device], locale, reducedMotion: 'reduce' });
   const page = await context.newPage();
   await page.goto(path);

@@ -3,9 +3,10 @@ import { trackCanvases, type CanvasTracking, viewerStatus as status, meanLevel }
 
 test.use({ reducedMotion: 'reduce', viewport: { width: 1280, height: 800 } });
 
-async function openCornerL(page: Page): Promise<void> {
+/** `balanced` where a golden image is compared (the goldens were drawn at it); `fast` where the test compares the bake with itself. */
+async function openCornerL(page: Page, quality: 'fast' | 'balanced' = 'balanced'): Promise<void> {
   // Configure in 2D through the UI: default room, then the L-corner preset from the side panel.
-  await page.goto('/?quality=balanced'); // lux values at a fixed bake quality (docs/viewer.md, "Quality levels")
+  await page.goto(`/?quality=${quality}`); // lux values at a fixed bake quality (docs/viewer.md, "Quality levels")
   await page.getByRole('button', { name: 'Start planning' }).click();
   await page.getByTestId('preset-corner-l').click();
   await expect.poll(async () => JSON.parse(await page.evaluate(() => window.luxbox!.getConfig())).configuration.systems.length).toBe(1);
@@ -84,7 +85,7 @@ test('lux mode shows a legend and floor statistics; context loss recovers withou
 
 test('losing the bake context rebakes every group after the restore; the configuration is untouched', async ({ page }) => {
   await trackCanvases(page);
-  await openCornerL(page);
+  await openCornerL(page, 'fast');
   const config = await page.evaluate(() => window.luxbox!.getConfig());
   const before = await status(page);
   const lost = await page.evaluate(() => {

@@ -4,8 +4,18 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
+# The type check runs beside the lint: each is one thread, so the two share the 2-core CI machine's cores
+# (docs/benchmarks.md, "Test suite time"); its output is printed under its own heading once the lint is through.
+typecheckLog=$(mktemp)
+node_modules/.bin/tsc --noEmit >"$typecheckLog" 2>&1 &
+typecheckPid=$!
+trap 'kill "$typecheckPid" 2>/dev/null || true; rm -f "$typecheckLog"' EXIT
 echo "== lint";       npx eslint . && npx prettier --check .
-echo "== typecheck";  npx tsc --noEmit
+echo "== typecheck"
+typecheckStatus=0
+wait "$typecheckPid" || typecheckStatus=$?
+cat "$typecheckLog"
+[ "$typecheckStatus" -eq 0 ]
 echo "== unit + headless WebGL (vitest under xvfb)"
 # Issue 11's bar: 10 000 seeded random action sequences in the always-valid property test (about
 # 3 ms each since the model caches its derived data; docs/benchmarks.md, "Test suite time").
