@@ -4,6 +4,7 @@ import type { BasisPrecision } from '../../relight/createGpuRelight';
 import type { RelightEngine } from '../../relight/RelightEngine';
 import type { LitMaps } from '../../relight/relightMaps';
 import { createViewRelight, type ViewRelight } from '../createViewRelight';
+import type { CompileCounters } from '../createCompileGate';
 import type { PendingStats } from '../createGpuStats';
 import type { IlluminanceStats } from '../lightStats';
 import { floorUnderObjects } from '../lightStats';
@@ -47,6 +48,8 @@ export interface GpuViewStatus {
   frame: { readbacks: number; readbackBytes: number; uploadBytes: number };
   /** GPU texture memory the relight holds (bases, solutions, display targets). */
   textureBytes: number;
+  /** Three's programs compiled before a frame draws them, without blocking (createCompileGate.ts): compiles started and finished, frames held for them, compiles finished when the first frame was drawn. */
+  compiles: CompileCounters;
 }
 
 /** The GPU side of the viewer: the view's relight, what the CPU path showed last, the settle timer and the floor mask. */
@@ -215,7 +218,7 @@ export function cancelSettle(g: ViewerGpu): void {
 }
 
 /** The counters of `view3d().gpu`, with the per-frame numbers of the last drawn frame. */
-export function gpuViewStatus(g: ViewerGpu): GpuViewStatus {
+export function gpuViewStatus(g: ViewerGpu, compiles: CompileCounters): GpuViewStatus {
   const c = g.relight.counters;
   return {
     precision: g.relight.precision,
@@ -227,6 +230,7 @@ export function gpuViewStatus(g: ViewerGpu): GpuViewStatus {
     uploadBytes: c.uploads.bytes + g.cpuUploadBytes,
     frame: { ...g.frame },
     textureBytes: g.relight.textureBytes(),
+    compiles: { ...compiles },
   };
 }
 
