@@ -32,7 +32,6 @@ const ALLOWED: ReadonlyMap<string, string> = new Map([
   ['src/engines/bake/objects/rasterizeAtlas.ts:<charts.forEach callback>', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
   ['src/engines/meshImport/collectTriangles.ts:collectTriangles', 'walks the loaded scene graph once: to be split by primitive kind'],
   ['src/engines/bake/objects/collectWorldTriangles.ts:collectWorldTriangles', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
-  ['src/engines/view/createGpuStats.ts:createGpuStats', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/engines/bake/createBakeJobHandle.ts:createBakeJobHandle', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
   ['src/engines/bake/startBakeJob.ts:startBakeJob', 'already a sequence of named steps (issue 28): 88 lines of step calls and their comments'],
   ['src/ui/viewer/startBakeFeed.ts:startBakeFeed', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
