@@ -6,7 +6,9 @@ import { sceneFile, viewerStatus as status } from './helpers';
  * configuration is done and the eye holds, a light-scene crossfade and a dimming drag (one relight
  * per committed step) are combined in the view's WebGL context: `view3d().gpu` counts GPU relights,
  * no map is read back, and the CPU relight runs at most once, after the stream has settled. The
- * floor's statistics follow from the GPU reduction. (The DMX stream: e2e/liveControl.spec.ts.)
+ * floor's statistics follow from the GPU reduction, in a box room and in an L (its floor in the atlas,
+ * weighed by coverage); three's programs are compiled (compileAsync) before the first frame.
+ * (The DMX stream: e2e/liveControl.spec.ts.)
  */
 test.use({ viewport: { width: 1280, height: 800 } });
 
@@ -30,6 +32,10 @@ test('a crossfade and a dimming drag are relit on the GPU: no map read back, flo
   await expect.poll(async () => (await status(page)).gpu?.cpuRelights ?? 0).toBeGreaterThan(0);
   const day = await status(page);
   expect(day.gpu).toMatchObject({ precision: 'half', mapReadbacks: 0 });
+  // three's programs were compiled by compileAsync before the first frame was drawn (createCompileGate.ts).
+  expect(day.gpu!.compiles.started).toBeGreaterThan(0);
+  expect(day.gpu!.compiles.finishedAtFirstFrame).toBeGreaterThanOrEqual(1);
+  expect(day.frames).toBeGreaterThan(0);
 
   // The crossfade (2 s): a relight per frame, each on the GPU but the last (the final look, shown on the CPU with its statistics).
   expect(await page.evaluate(() => window.luxbox!.recall('Evening', { fade: 2 }))).toEqual({ ok: true });
@@ -78,4 +84,27 @@ test('a crossfade and a dimming drag are relit on the GPU: no map read back, flo
   expect(fromGpu.length).toBeGreaterThan(0);
   expect(fromGpu.every((p) => p.mapReadbacks === 0)).toBe(true);
   expect(Math.max(...fromGpu.map((p) => p.avg))).toBeGreaterThan(planeBefore.avg * 1.02);
+});
+
+test('a room of any shape: a dimming drag is relit on the GPU, its floor statistics from the atlas reduction, no map read back', async ({ page }) => {
+  await page.goto('/?quality=fast');
+  await page.getByRole('button', { name: 'Start planning' }).click();
+  await page.getByTestId('edit-room-shape').click();
+  await page.getByTestId('room-preset-L').click();
+  await page.getByTestId('room-shape-done').click();
+  expect(await page.evaluate(() => window.luxbox!.runAction('placePreset', { presetId: 'single', x: 1.5, z: 1.5, rotation: 0 }))).toEqual({ ok: true });
+  const ids = (await sceneFile(page)).configuration.systems.flatMap((s) => s.rails.flatMap((r) => r.modules.map((m) => m.id)));
+  await page.getByTestId('tool-3d').click();
+  await expect.poll(async () => (await status(page)).done, BAKE).toBe(true);
+  await expect.poll(async () => (await status(page)).gpu?.cpuRelights ?? 0).toBeGreaterThan(0);
+  const before = await status(page);
+  await page.getByText(/Dimming \(/).click();
+  const dimmer = page.getByTestId(`dim-${ids[0]}`);
+  await dimmer.focus();
+  for (let i = 0; i < 10; i++) await page.keyboard.press('ArrowLeft');
+  await expect.poll(async () => (await status(page)).gpu!.gpuRelights, { timeout: 10_000 }).toBeGreaterThan(before.gpu!.gpuRelights + 2);
+  // The floor in the atlas: its statistics of the drag's relights from the GPU reduction (16 bytes after a fence), none of a map.
+  await expect.poll(async () => (await status(page)).gpu!.statsReadbacks, { timeout: 10_000 }).toBeGreaterThan(before.gpu!.statsReadbacks);
+  await expect.poll(async () => (await status(page)).floor!.avg, { timeout: 10_000 }).toBeLessThan(before.floor!.avg * 0.95);
+  expect((await status(page)).gpu!.mapReadbacks).toBe(0);
 });

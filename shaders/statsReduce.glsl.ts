@@ -1,9 +1,11 @@
 /**
  * The illuminance statistics on the GPU (docs/viewer.md, "Statistics on the GPU"): a map is reduced
- * to (ΣY, count, Ymin, Ymax) of its counted texels, Y = photometric luminance weights · RGB lux (the
+ * to (Σ w·Y, Σ w, Ymin, Ymax) of its counted texels, Y = photometric luminance weights · RGB lux (the
  * same LUMINANCE_WEIGHTS as lightStats.ts), in two passes as fluxReduce.glsl.ts does: blocks of
  * uBlock² texels to at most STATS_GRID² partials, then the partials to one texel. A texel counts
- * where the mask's red channel is 1 (the floor under furniture is left out, floorUnderObjects).
+ * with the weight w in the mask's red channel where it is above 0: 1 or 0 on a box room's floor (the
+ * floor under furniture is left out, floorUnderObjects), a texel's coverage on a shaped room's floor
+ * in the atlas (roomSurfaceStats.ts weighs each texel so); w·Y is Y to the bit where w is 1.
  */
 import { fragmentPass } from './fragmentPass.glsl';
 
@@ -23,9 +25,10 @@ void main() {
   vec4 s = vec4(0.0, 0.0, ${FLOAT_BIG}, -${FLOAT_BIG});
   for (int j = base.y; j < end.y; j++) {
     for (int i = base.x; i < end.x; i++) {
-      if (texelFetch(uMask, ivec2(i, j), 0).r < 0.5) continue;
+      float w = texelFetch(uMask, ivec2(i, j), 0).r;
+      if (!(w > 0.0)) continue;
       float y = dot(texelFetch(uSource, ivec2(i, j), 0).rgb, uLuminance);
-      s.xy += vec2(y, 1.0);
+      s.xy += vec2(y * w, w);
       s.z = min(s.z, y);
       s.w = max(s.w, y);
     }

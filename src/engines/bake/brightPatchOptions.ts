@@ -30,7 +30,28 @@ export interface BrightPatchOptions {
  */
 export const CHART_MIN_CONTRAST = 10;
 
-/** The pass's options for given bake settings; `charts`: the candidates are the atlas's charts (a room of any shape). */
-export function brightPatchOptions(settings: { brightPatches: number; brightSelection?: 'gpu' | 'cpu' }, charts = false): BrightPatchOptions {
-  return { maxPatches: settings.brightPatches, tileSize: BRIGHT_TILE_SIZE, targetPeakedness: 1, minContrast: charts ? CHART_MIN_CONTRAST : 3, onGpu: settings.brightSelection !== 'cpu' };
+/**
+ * Where the patches are chosen: as the settings say, and unset on the GPU except on a software
+ * renderer (softwareRenderer.ts). There the GPU selection's passes, and the residual copy and bright
+ * gather it must run on every surface because the CPU does not know which hold patches, cost more
+ * than the read-back they save, which on a software rasteriser is a memcpy with no pipeline to
+ * wait for: measured 0.98–1.19× the CPU path's whole bakes on llvmpipe (docs/benchmarks.md
+ * "Bright patches selected on the GPU").
+ */
+export function selectOnGpu(brightSelection: 'gpu' | 'cpu' | undefined, softwareGl: boolean): boolean {
+  return brightSelection === undefined ? !softwareGl : brightSelection === 'gpu';
+}
+
+/**
+ * The pass's options for given bake settings; `charts`: the candidates are the atlas's charts (a
+ * room of any shape); `softwareGl`: the context draws on the CPU (selectOnGpu).
+ */
+export function brightPatchOptions(settings: { brightPatches: number; brightSelection?: 'gpu' | 'cpu' }, charts = false, softwareGl = false): BrightPatchOptions {
+  return {
+    maxPatches: settings.brightPatches,
+    tileSize: BRIGHT_TILE_SIZE,
+    targetPeakedness: 1,
+    minContrast: charts ? CHART_MIN_CONTRAST : 3,
+    onGpu: selectOnGpu(settings.brightSelection, softwareGl),
+  };
 }

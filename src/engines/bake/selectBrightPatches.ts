@@ -42,6 +42,102 @@ export interface BrightSelection {
   residualPeakedness: number;
 }
 
+/** A tile bright enough to qualify: its Σ y²·a score, reflected flux ρ·Φ per channel and Y of it. */
+interface Candidate {
+  s: SurfaceTileSums;
+  k: number;
+  score: number;
+  flux: Rgb;
+  y: number;
+}
+
+/** Y of tile `k`'s reflected flux, lm (negative sums clamped: float noise of an unlit tile). */
+function yOfTile(s: SurfaceTileSums, k: number): number {
+  return (
+    LUMINANCE_WEIGHTS[0] * Math.max(0, s.sums[4 * k]) * s.frame.reflectance[0] + LUMINANCE_WEIGHTS[1] * Math.max(0, s.sums[4 * k + 1]) * s.frame.reflectance[1] + LUMINANCE_WEIGHTS[2] * Math.max(0, s.sums[4 * k + 2]) * s.frame.reflectance[2]
+  );
+}
+
+/** The area of all surfaces, Σ score and Σ y over all lit tiles (no allocation per tile: a 20 m corridor has ~25 000 tiles). */
+function roomTotals(surfaces: SurfaceTileSums[]): { area: number; scoreAll: number; yAll: number } {
+  let area = 0;
+  let scoreAll = 0;
+  let yAll = 0;
+  for (const s of surfaces) {
+    area += s.frame.area;
+    for (let k = 0; k < s.tilesU * s.tilesV; k++) {
+      const y = yOfTile(s, k);
+      const score = Math.max(0, s.sums[4 * k + 3]);
+      if (!(y > 0) || !Number.isFinite(y) || !Number.isFinite(score)) continue;
+      scoreAll += score;
+      yAll += y;
+    }
+  }
+  return { area, scoreAll, yAll };
+}
+
+/** The tiles whose mean exitance is at least `minContrast` × the room mean, unsorted. */
+function candidatesOf(surfaces: SurfaceTileSums[], minContrast: number, meanExitance: number): Candidate[] {
+  const candidates: Candidate[] = [];
+  for (const s of surfaces) {
+    const du = s.frame.lengthU / s.frame.width;
+    const dv = s.frame.lengthV / s.frame.height;
+    for (let k = 0; k < s.tilesU * s.tilesV; k++) {
+      const y = yOfTile(s, k);
+      const score = Math.max(0, s.sums[4 * k + 3]);
+      // The tile's own area (the last row and column may be partial).
+      const iu = k % s.tilesU;
+      const iv = Math.floor(k / s.tilesU);
+      const tileArea = (Math.min(s.frame.width, (iu + 1) * s.tile) - iu * s.tile) * du * (Math.min(s.frame.height, (iv + 1) * s.tile) - iv * s.tile) * dv;
+      if (!(y >= minContrast * meanExitance * tileArea) || !Number.isFinite(y) || !Number.isFinite(score)) continue;
+      const flux = [0, 1, 2].map((c) => Math.max(0, s.sums[4 * k + c]) * s.frame.reflectance[c]) as Rgb;
+      candidates.push({ s, k, score, flux, y });
+    }
+  }
+  return candidates;
+}
+
+/** The candidate as a moment-matched rectangle, or null where its mean exitance over the tile's clipped extent is under the contrast. */
+function patchOf(c: Candidate, minContrast: number, meanExitance: number): BrightPatch | null {
+  const { frame: layout, tile } = c.s;
+  const du = layout.lengthU / layout.width;
+  const dv = layout.lengthV / layout.height;
+  const iu = c.k % c.s.tilesU;
+  const iv = Math.floor(c.k / c.s.tilesU);
+  // Tile extent (the last row/column may be partial).
+  const u0 = iu * tile * du;
+  const v0 = iv * tile * dv;
+  const u1 = Math.min(layout.lengthU, (iu + 1) * tile * du);
+  const v1 = Math.min(layout.lengthV, (iv + 1) * tile * dv);
+  if (c.y / ((u1 - u0) * (v1 - v0)) < minContrast * meanExitance) return null;
+  const m = c.s.moments.subarray(4 * c.k, 4 * c.k + 4);
+  // Flux centroid and spread of the tile's exitance (plus the spread inside a texel).
+  const mu = m[0] / c.y;
+  const mv = m[1] / c.y;
+  const varU = Math.max(0, m[2] / c.y - mu * mu) + (du * du) / 12;
+  const varV = Math.max(0, m[3] / c.y - mv * mv) + (dv * dv) / 12;
+  const cu = u0 + Math.min(Math.max(mu, 0), u1 - u0);
+  const cv = v0 + Math.min(Math.max(mv, 0), v1 - v0);
+  // A uniform rectangle with the same mean and variance has half edge √3·σ; keep it in the tile.
+  const halfU = Math.max(1e-4, Math.min(Math.sqrt(3 * varU), cu - u0, u1 - cu));
+  const halfV = Math.max(1e-4, Math.min(Math.sqrt(3 * varV), cv - v0, v1 - cv));
+  // On a room surface of the box origin is 0 along u and v and the axes are unit axes: cu, cv to the bit.
+  const centre = [0, 1, 2].map((a) => layout.origin[a] + cu * layout.axisU[a] + cv * layout.axisV[a]) as Vec3;
+  const rectArea = 4 * halfU * halfV;
+  return {
+    surface: layout.index,
+    tileU: iu,
+    tileV: iv,
+    centre,
+    halfU,
+    halfV,
+    axisU: layout.axisU,
+    axisV: layout.axisV.map((x) => x * layout.vSign) as Vec3,
+    flux: c.flux,
+    exitance: c.flux.map((f) => f / rectArea) as Rgb,
+  };
+}
+
 /**
  * Which tiles to gather deterministically. The variance of the cosine-sampled
  * gather of bounce 1 is, up to geometry, Σ M²·A over what it samples; for a
@@ -53,49 +149,10 @@ export interface BrightSelection {
  * nothing).
  */
 export function selectBrightPatches(surfaces: SurfaceTileSums[], options: { maxPatches: number; targetPeakedness: number; minContrast: number }): BrightSelection {
-  interface Candidate {
-    s: SurfaceTileSums;
-    k: number;
-    score: number;
-    flux: Rgb;
-    y: number;
-  }
-  // Totals first (no allocation per tile: a 20 m corridor has ~25 000 tiles), then
-  // only the tiles bright enough to qualify become candidates and are sorted.
-  let area = 0;
-  let scoreAll = 0;
-  let yAll = 0;
-  const yOfTile = (s: SurfaceTileSums, k: number) =>
-    LUMINANCE_WEIGHTS[0] * Math.max(0, s.sums[4 * k]) * s.frame.reflectance[0] +
-    LUMINANCE_WEIGHTS[1] * Math.max(0, s.sums[4 * k + 1]) * s.frame.reflectance[1] +
-    LUMINANCE_WEIGHTS[2] * Math.max(0, s.sums[4 * k + 2]) * s.frame.reflectance[2];
-  for (const s of surfaces) {
-    area += s.frame.area;
-    for (let k = 0; k < s.tilesU * s.tilesV; k++) {
-      const y = yOfTile(s, k);
-      const score = Math.max(0, s.sums[4 * k + 3]);
-      if (!(y > 0) || !Number.isFinite(y) || !Number.isFinite(score)) continue;
-      scoreAll += score;
-      yAll += y;
-    }
-  }
-  const candidates: Candidate[] = [];
+  // Totals first, then only the tiles bright enough to qualify become candidates and are sorted.
+  const { area, scoreAll, yAll } = roomTotals(surfaces);
   const meanExitance = yAll / area;
-  for (const s of surfaces) {
-    const du = s.frame.lengthU / s.frame.width;
-    const dv = s.frame.lengthV / s.frame.height;
-    for (let k = 0; k < s.tilesU * s.tilesV; k++) {
-      const y = yOfTile(s, k);
-      const score = Math.max(0, s.sums[4 * k + 3]);
-      // The tile's own area (the last row and column may be partial).
-      const iu = k % s.tilesU;
-      const iv = Math.floor(k / s.tilesU);
-      const tileArea = (Math.min(s.frame.width, (iu + 1) * s.tile) - iu * s.tile) * du * (Math.min(s.frame.height, (iv + 1) * s.tile) - iv * s.tile) * dv;
-      if (!(y >= options.minContrast * meanExitance * tileArea) || !Number.isFinite(y) || !Number.isFinite(score)) continue;
-      const flux = [0, 1, 2].map((c) => Math.max(0, s.sums[4 * k + c]) * s.frame.reflectance[c]) as Rgb;
-      candidates.push({ s, k, score, flux, y });
-    }
-  }
+  const candidates = candidatesOf(surfaces, options.minContrast, meanExitance);
   // Relative to all of the exitance: the residual's noise against the whole signal.
   const peak = (score: number) => (yAll > 0 ? (area * score) / (yAll * yAll) : 1);
   const peakedness = peak(scoreAll);
@@ -105,43 +162,9 @@ export function selectBrightPatches(surfaces: SurfaceTileSums[], options: { maxP
   let score = scoreAll;
   for (const c of candidates) {
     if (patches.length >= options.maxPatches || peak(score) <= options.targetPeakedness) break;
-    const { frame: layout, tile } = c.s;
-    const du = layout.lengthU / layout.width;
-    const dv = layout.lengthV / layout.height;
-    const iu = c.k % c.s.tilesU;
-    const iv = Math.floor(c.k / c.s.tilesU);
-    // Tile extent (the last row/column may be partial).
-    const u0 = iu * tile * du;
-    const v0 = iv * tile * dv;
-    const u1 = Math.min(layout.lengthU, (iu + 1) * tile * du);
-    const v1 = Math.min(layout.lengthV, (iv + 1) * tile * dv);
-    if (c.y / ((u1 - u0) * (v1 - v0)) < options.minContrast * meanExitance) continue;
-    const m = c.s.moments.subarray(4 * c.k, 4 * c.k + 4);
-    // Flux centroid and spread of the tile's exitance (plus the spread inside a texel).
-    const mu = m[0] / c.y;
-    const mv = m[1] / c.y;
-    const varU = Math.max(0, m[2] / c.y - mu * mu) + (du * du) / 12;
-    const varV = Math.max(0, m[3] / c.y - mv * mv) + (dv * dv) / 12;
-    const cu = u0 + Math.min(Math.max(mu, 0), u1 - u0);
-    const cv = v0 + Math.min(Math.max(mv, 0), v1 - v0);
-    // A uniform rectangle with the same mean and variance has half edge √3·σ; keep it in the tile.
-    const halfU = Math.max(1e-4, Math.min(Math.sqrt(3 * varU), cu - u0, u1 - cu));
-    const halfV = Math.max(1e-4, Math.min(Math.sqrt(3 * varV), cv - v0, v1 - cv));
-    // On a room surface of the box origin is 0 along u and v and the axes are unit axes: cu, cv to the bit.
-    const centre = [0, 1, 2].map((a) => layout.origin[a] + cu * layout.axisU[a] + cv * layout.axisV[a]) as Vec3;
-    const rectArea = 4 * halfU * halfV;
-    patches.push({
-      surface: layout.index,
-      tileU: iu,
-      tileV: iv,
-      centre,
-      halfU,
-      halfV,
-      axisU: layout.axisU,
-      axisV: layout.axisV.map((x) => x * layout.vSign) as Vec3,
-      flux: c.flux,
-      exitance: c.flux.map((f) => f / rectArea) as Rgb,
-    });
+    const patch = patchOf(c, options.minContrast, meanExitance);
+    if (!patch) continue;
+    patches.push(patch);
     score -= c.score;
   }
   return { patches, peakedness, residualPeakedness: peak(Math.max(0, score)) };

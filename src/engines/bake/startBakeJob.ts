@@ -8,6 +8,7 @@ import type { BakeJob } from './bakeJob';
 import { acquireBakeJobTargets, type BakeJobTargets } from './bakeJobTargets';
 import type { BakeScene } from './bakeScene';
 import type { BakeSettings } from './bakeSettings';
+import { softwareRenderer } from './softwareRenderer';
 import { brightPatchOptions } from './brightPatchOptions';
 import { createBakeJobHandle } from './createBakeJobHandle';
 import { createBakeTimer } from './createBakeTimer';
@@ -92,7 +93,7 @@ export function startBakeJob(
           inputs.layouts,
           inputs.reflectance,
           targets.surfaces.map((st) => st.direct),
-          brightPatchOptions(settings, inputs.sinks),
+          brightPatchOptions(settings, inputs.sinks, softwareRenderer(gl)),
           compile,
           readbacks.counted,
           pool,

@@ -3,7 +3,7 @@ import { SURFACE_NAMES, type SurfaceName } from '../../core/model/lightingScene/
 import type { FloatTarget } from '../bake/floatTarget';
 import { createGpuRelight, type BasisPrecision, type GpuRelight, type GridPart, type ReadbackCounter } from '../relight/createGpuRelight';
 import type { RelightParts } from '../relight/RelightEngine';
-import { createGpuStats, type GpuStats, type PendingStats } from './createGpuStats';
+import { createGpuStats, type GpuStats, type PendingStats, type StatsMask } from './createGpuStats';
 import { programsReady, startPrograms } from '../bake/glResources';
 import { relightCombinePass } from '../../../shaders/relightCombine.glsl';
 import { statsBlockPass, statsMergePass } from '../../../shaders/statsReduce.glsl';
@@ -27,6 +27,8 @@ export interface ViewRelightMaps {
   surfaces: Record<SurfaceName, THREE.Texture>;
   objects: THREE.Texture | null;
   floor: FloatTarget;
+  /** The objects' atlas total (a shaped room's floor is in it), null without objects. */
+  atlas: FloatTarget | null;
 }
 
 /** The counters `view3d().gpu` reports (docs/viewer.md, "Relighting on the GPU"). */
@@ -58,6 +60,8 @@ export interface ViewRelight {
   relight(parts: RelightParts): ViewRelightMaps;
   /** Ē, Emin, Emax, U0 of the floor's total (texels `covered` left out), read once the GPU is done (createGpuStats.ts). */
   floorStats(maps: ViewRelightMaps, covered: Uint8Array | null): PendingStats;
+  /** The same of a shaped room's floor in the atlas, each texel weighed by `weights` (shapedFloorWeights.ts); null without an atlas. */
+  shapedFloorStats(maps: ViewRelightMaps, weights: Float32Array): PendingStats | null;
   /**
    * Ē, Emin, Emax, U0 of the work plane at the parts' weights: the per-part grids of `plane`
    * (workPlaneBases.ts) combined on the GPU with the weights and scales of the display maps, then
@@ -143,10 +147,13 @@ export function createViewRelight(renderer: THREE.WebGLRenderer, precision: Basi
       renderer.resetState();
       counters.relights++;
       const surfaces = Object.fromEntries(SURFACE_NAMES.map((n) => [n, textureOf(maps[n].total)])) as Record<SurfaceName, THREE.Texture>;
-      return { surfaces, objects: maps.objects ? textureOf(maps.objects.total) : null, floor: maps.floor.total };
+      return { surfaces, objects: maps.objects ? textureOf(maps.objects.total) : null, floor: maps.floor.total, atlas: maps.objects?.total ?? null };
     },
     floorStats(maps, covered) {
       return requestStats(maps.floor, covered);
+    },
+    shapedFloorStats(maps, weights) {
+      return maps.atlas ? requestStats(maps.atlas, weights) : null;
     },
     workPlaneStats(parts, plane) {
       const grids = workPlaneGridParts(parts, plane);
@@ -171,7 +178,7 @@ export function createViewRelight(renderer: THREE.WebGLRenderer, precision: Basi
     },
   };
 
-  function requestStats(map: FloatTarget, covered: Uint8Array | null): PendingStats {
+  function requestStats(map: FloatTarget, covered: StatsMask): PendingStats {
     stats ??= createGpuStats(gl);
     counters.statsReadbacks = stats.readbacks;
     const pending = stats.request(map, covered);

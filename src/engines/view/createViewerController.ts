@@ -2,6 +2,7 @@ import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import type { BakeService } from './createBakeService';
 import { createCameraRig } from './createCameraRig';
+import { createCompileGate } from './createCompileGate';
 import { createFrameScheduler } from './createFrameScheduler';
 import { createMapDisplay } from './createMapDisplay';
 import { createRoomView } from './roomView';
@@ -39,7 +40,20 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
   controls.screenSpacePanning = true;
 
   const display = watchContextLoss(canvas, { lost: () => events.onContext('lost'), restored: () => restoreViewer(v) });
-  const frames = createFrameScheduler({ draw: () => drawViewerFrame(v), canDraw: () => v.active && !display.lost, onFrame: events.onFrame });
+  // Three's programs compile before a frame draws them, without blocking (createCompileGate.ts): the frame waits, the page does not.
+  const compiles = createCompileGate({
+    key: () => (v.compare && v.compareView ? `${v.view.materialsKey()}|${v.compareView.materialsKey()}` : v.view.materialsKey()),
+    compile: () => Promise.all([v.view.compileAsync(renderer), ...(v.compare && v.compareView ? [v.compareView.compileAsync(renderer)] : [])]),
+    onReady: () => frames.request(),
+  });
+  const frames = createFrameScheduler({
+    draw: () => {
+      drawViewerFrame(v);
+      compiles.drawn();
+    },
+    canDraw: () => v.active && !display.lost && compiles.ready(),
+    onFrame: events.onFrame,
+  });
   controls.addEventListener('change', frames.request);
   const camera = createCameraRig(controls, state.view);
   const stopTaps = watchTaps(canvas, (x, y) => tapViewer(v, x, y));
@@ -55,8 +69,8 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
     ...viewerSceneApi(v),
     ...viewerDisplayApi(v),
     ...viewerCompareApi(v),
-    /** Read-backs, uploads and texture memory of the view's relight (`view3d().gpu`). */
-    gpuStatus: () => gpuViewStatus(v.gpu),
+    /** Read-backs, uploads and texture memory of the view's relight, and its asynchronous compiles (`view3d().gpu`). */
+    gpuStatus: () => gpuViewStatus(v.gpu, compiles.counters),
     /** The work plane whose statistics follow each GPU relight (onWorkPlaneStats), or null: off. */
     setWorkPlane(height: number | null) {
       v.gpu.workPlaneHeight = height;
@@ -67,6 +81,7 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
       unsubscribe();
       if (v.live) service.setOverlay(null);
       frames.stop();
+      compiles.dispose();
       stopTaps();
       spotlight.dispose();
       controls.dispose();

@@ -7,13 +7,13 @@ import type { PreparedObjects } from '../bake/objects/preparedObjects';
 import { createRoomHardware } from './createRoomHardware';
 import type { Room as ShapedRoom } from '../../core/room/normaliseRoom';
 import { applyRoomShape, firstSeenHit } from './shapedRoomView';
-import { createRoomObjects, OBJECTS_MESH_NAME } from './createRoomObjects';
+import { createRoomObjects, OBJECTS_MESH_NAME, type RoomObjects } from './createRoomObjects';
 import { createRoomSurfaces, type SharedDisplayUniforms, type ViewMode } from './createRoomSurfaces';
 import type { Fixtures } from './fixtures';
 import { meanIlluminance } from './meanIlluminance';
 import type { ObjectLight } from './objectLight';
 import type { SpotPreviewUniforms } from './spotPreview';
-import { canRenderGlare, createGlarePass, type GlarePass } from './glare/createGlarePass';
+import { createRoomViewRender, materialsKey } from './roomViewRender';
 
 export type { ViewMode } from './createRoomSurfaces';
 
@@ -68,32 +68,54 @@ export interface RoomView {
   /** Whether the last render went through the glare pass. */
   glareShown(): boolean;
   render(renderer: THREE.WebGLRenderer): void;
+  /** A key of the materials the next render draws: a new key needs a compile (roomViewRender.ts materialsKey). */
+  materialsKey(): string;
+  /** Compile the next render's materials without blocking (three's compileAsync; createCompileGate.ts). */
+  compileAsync(renderer: THREE.WebGLRenderer): Promise<unknown>;
   dispose(): void;
 }
 
-/** The view's background (sRGB bytes 0x1d2126), as three shows THREE.Color(0x1d2126) on the canvas. */
-const BACKGROUND = 0x1d2126;
+/** Picks against the room: world matrices are brought up to date by a render, and a pick may come before the first one. */
+function createRoomPicker(scene: THREE.Scene, camera: THREE.PerspectiveCamera, hardware: ReturnType<typeof createRoomHardware>, objects: RoomObjects): Pick<RoomView, 'pick' | 'pickPoint'> {
+  const raycaster = new THREE.Raycaster();
+  const aim = (ndcX: number, ndcY: number) => {
+    scene.updateMatrixWorld();
+    camera.updateMatrixWorld();
+    raycaster.setFromCamera(new THREE.Vector2(ndcX, ndcY), camera);
+  };
+  const walls = () => scene.children.filter((c) => (SURFACE_NAMES as readonly string[]).includes(c.name));
+  const shownObjects = () => objects.group.children.filter((c) => c.name === OBJECTS_MESH_NAME && c.visible);
+  return {
+    pick(ndcX, ndcY) {
+      aim(ndcX, ndcY);
+      // The room's surfaces are no targets, but they hide what lies behind them. They are front-side
+      // materials, which the raycaster honours: the walls the corner view looks through (back faces) do not block.
+      const hit = firstSeenHit(raycaster.intersectObjects([...walls(), ...hardware.moduleMeshes(), ...shownObjects()], false), objects, raycaster.ray);
+      if (!hit) return null;
+      if (hit.object.name === OBJECTS_MESH_NAME) {
+        const id = hit.faceIndex != null ? objects.objectAt(hit.faceIndex) : null;
+        return id ? { kind: 'object', id } : null;
+      }
+      return hit.object.name.startsWith('module:') ? { kind: 'module', id: hit.object.name.slice('module:'.length) } : null;
+    },
+    pickPoint(ndcX, ndcY) {
+      aim(ndcX, ndcY);
+      const hit = firstSeenHit(raycaster.intersectObjects([...walls(), ...shownObjects()], false), objects, raycaster.ray);
+      return hit ? [hit.point.x, hit.point.y, hit.point.z] : null;
+    },
+  };
+}
 
 export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
   const scene = new THREE.Scene();
-  const background = new THREE.Color(BACKGROUND);
-  scene.background = background;
-  // The glare pass's HDR target is cleared to 0 (no light); its composite shows this display colour there.
-  const backgroundDisplay: [number, number, number] = [((BACKGROUND >> 16) & 255) / 255, ((BACKGROUND >> 8) & 255) / 255, (BACKGROUND & 255) / 255];
-  const black = new THREE.Color(0, 0, 0);
-  let glareOn = false;
-  let glare: GlarePass | null = null;
-  let glareShown = false;
-  const bufferSize = new THREE.Vector2();
-  const clearColor = new THREE.Color();
   const camera = new THREE.PerspectiveCamera(60, 1, 0.05, 500);
   const surfaces = createRoomSurfaces(scene, renderer);
+  const drawing = createRoomViewRender(scene, camera, surfaces.display);
   // The luminaires share the surfaces' display uniforms: one exposure, adaptation and mode for the room and its glow.
   const hardware = createRoomHardware(surfaces.display);
   scene.add(hardware.group);
   const objects = createRoomObjects(surfaces.display, renderer);
   scene.add(objects.group);
-  const raycaster = new THREE.Raycaster();
   return {
     scene,
     camera,
@@ -120,32 +142,8 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
     setObjectLight: objects.setLight,
     setSelectedObject: objects.setSelected,
     setSelectedModule: hardware.setSelectedModule,
-    pick(ndcX, ndcY) {
-      // World matrices are brought up to date by a render; a pick may come before the first one.
-      scene.updateMatrixWorld();
-      camera.updateMatrixWorld();
-      raycaster.setFromCamera(new THREE.Vector2(ndcX, ndcY), camera);
-      // The room's surfaces are no targets, but they hide what lies behind them. They are front-side
-      // materials, which the raycaster honours: the walls the corner view looks through (back faces) do not block.
-      const walls = scene.children.filter((c) => (SURFACE_NAMES as readonly string[]).includes(c.name));
-      const targets = [...walls, ...hardware.moduleMeshes(), ...objects.group.children.filter((c) => c.name === OBJECTS_MESH_NAME && c.visible)];
-      const hit = firstSeenHit(raycaster.intersectObjects(targets, false), objects, raycaster.ray);
-      if (!hit) return null;
-      if (hit.object.name === OBJECTS_MESH_NAME) {
-        const id = hit.faceIndex != null ? objects.objectAt(hit.faceIndex) : null;
-        return id ? { kind: 'object', id } : null;
-      }
-      return hit.object.name.startsWith('module:') ? { kind: 'module', id: hit.object.name.slice('module:'.length) } : null;
-    },
+    ...createRoomPicker(scene, camera, hardware, objects),
     preview: surfaces.preview,
-    pickPoint(ndcX, ndcY) {
-      scene.updateMatrixWorld();
-      camera.updateMatrixWorld();
-      raycaster.setFromCamera(new THREE.Vector2(ndcX, ndcY), camera);
-      const targets = [...scene.children.filter((c) => (SURFACE_NAMES as readonly string[]).includes(c.name)), ...objects.group.children.filter((c) => c.name === OBJECTS_MESH_NAME && c.visible)];
-      const hit = firstSeenHit(raycaster.intersectObjects(targets, false), objects, raycaster.ray);
-      return hit ? [hit.point.x, hit.point.y, hit.point.z] : null;
-    },
     setCamera(pose, aspect) {
       camera.fov = pose.fov;
       camera.aspect = aspect;
@@ -154,37 +152,13 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
       camera.lookAt(new THREE.Vector3(...pose.target));
       camera.updateProjectionMatrix();
     },
-    setGlare(on) {
-      glareOn = on;
-    },
-    glareShown: () => glareShown,
-    render(renderer) {
-      glareShown = glareOn && surfaces.display.uMode.value === 0 && canRenderGlare(renderer);
-      if (!glareShown) {
-        renderer.render(scene, camera);
-        return;
-      }
-      renderer.getDrawingBufferSize(bufferSize);
-      // Multisampled like the canvas (antialias) when it is.
-      glare ??= createGlarePass({ samples: renderer.getContext().getContextAttributes()?.antialias ? 4 : 0, background: backgroundDisplay });
-      glare.setSize(bufferSize.x, bufferSize.y);
-      const mode = surfaces.display.uMode;
-      renderer.getClearColor(clearColor);
-      const clearAlpha = renderer.getClearAlpha();
-      mode.value = 2;
-      scene.background = null;
-      renderer.setClearColor(black, 0);
-      renderer.setRenderTarget(glare.target);
-      renderer.clear();
-      renderer.render(scene, camera);
-      renderer.setRenderTarget(null);
-      mode.value = 0;
-      scene.background = background;
-      renderer.setClearColor(clearColor, clearAlpha);
-      glare.finish(renderer, camera.fov / bufferSize.y, null);
-    },
+    setGlare: drawing.setGlare,
+    glareShown: drawing.glareShown,
+    render: drawing.render,
+    materialsKey: () => materialsKey(scene),
+    compileAsync: drawing.compileAsync,
     dispose() {
-      glare?.dispose();
+      drawing.dispose();
       hardware.dispose();
       objects.dispose();
       surfaces.dispose();

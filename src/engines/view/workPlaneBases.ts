@@ -4,8 +4,9 @@ import type { PreparedObjects } from '../bake/objects/preparedObjects';
 import type { SurfaceLayout } from '../bake/surfaceLayout';
 import type { DirectBasis, IndirectSolution } from '../relight/relightMaps';
 import { workPlaneDirect, workPlaneUnderObjects } from './lightStats';
+import { shapedWorkPlaneDirect, shapedWorkPlaneGrid } from './shapedWorkPlaneStats';
 
-/** The work plane of a box room as the statistics take it: nx × nz cell centres at `height`, and the points left out (workPlaneUnderObjects). */
+/** The work plane as the statistics take it: nx × nz cell centres at `height`, and the points left out (a box room: workPlaneUnderObjects; a shaped room: outside its outline). */
 export interface WorkPlaneGrid {
   height: number;
   nx: number;
@@ -36,9 +37,44 @@ export interface WorkPlaneBases {
   indirect(solution: IndirectSolution, floor: SurfaceLayout): Float32Array;
 }
 
-/** Work-plane part grids for a box room (`scene.room.shape` unset: a shaped room's plane follows its outline, shapedWorkPlaneStats.ts). */
+/**
+ * A room of any shape: the grid over its outline (shapedWorkPlaneGrid), each basis's direct light
+ * (its luminaires in the enclosure's coordinates, as the engine baked them) with the shadows of the room's own surfaces and the objects, each solution's indirect light from
+ * the atlas texel under the point: the atlas's total − direct is Σ_k s_k ⊙ objects_k (relightMaps.ts),
+ * so the CPU's max(0, Y(total − direct)) at that texel is Σ_k s_k ⊙ this grid, as on the box's floor.
+ * `objects`: the enclosure's prepared objects (the room's surfaces first), as the atlas was laid out.
+ */
+function createShapedWorkPlaneBases(scene: BakeScene, height: number, spacing: number, objects: PreparedObjects | null): WorkPlaneBases {
+  const grid = shapedWorkPlaneGrid(scene, height, spacing, objects);
+  const directs = new WeakMap<DirectBasis, Float32Array>();
+  const indirects = new WeakMap<IndirectSolution, Float32Array>();
+  return {
+    grid,
+    direct(basis) {
+      if (!basis.luminaires) return null;
+      let d = directs.get(basis);
+      if (!d) directs.set(basis, (d = shapedWorkPlaneDirect(scene, grid, basis.luminaires, true)));
+      return d;
+    },
+    indirect(solution) {
+      let d = indirects.get(solution);
+      if (!d) {
+        d = new Float32Array(grid.nx * grid.nz * 3);
+        const atlas = solution.objects;
+        for (let n = 0; atlas && n < grid.nx * grid.nz; n++) {
+          const t = grid.floorTexel[n];
+          if (t >= 0 && !grid.covered[n]) d.set(atlas.subarray(3 * t, 3 * t + 3), 3 * n);
+        }
+        indirects.set(solution, d);
+      }
+      return d;
+    },
+  };
+}
+
+/** Work-plane part grids for a box room, or for a room of any shape over its outline (createShapedWorkPlaneBases). */
 export function createWorkPlaneBases(scene: BakeScene, height: number, spacing = 0.1, objects: PreparedObjects | null = null): WorkPlaneBases {
-  if (scene.room.shape) throw new Error('work-plane bases: a shaped room has its work plane over its outline (shapedWorkPlaneStats)');
+  if (scene.room.shape) return createShapedWorkPlaneBases(scene, height, spacing, objects);
   const { width, depth } = scene.room;
   const nx = Math.max(1, Math.round(width / spacing));
   const nz = Math.max(1, Math.round(depth / spacing));

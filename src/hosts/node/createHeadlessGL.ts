@@ -26,9 +26,36 @@ export function createHeadlessGL(): WebGL2RenderingContext & { destroy(): void }
     throw new NoWebGLError(noContextMessage('a headless WebGL2 context'));
   }
   const gl2 = gl as WebGL2RenderingContext & ReturnType<typeof createGL>;
+  offerRendererInfo(gl2);
   return Object.assign(gl2, {
     destroy() {
       gl2.getExtension('STACKGL_destroy_context')?.destroy();
+    },
+  });
+}
+
+/** WEBGL_debug_renderer_info's enums (the WebGL extension registry). */
+const UNMASKED_VENDOR_WEBGL = 0x9245;
+const UNMASKED_RENDERER_WEBGL = 0x9246;
+
+/**
+ * headless-gl answers RENDERER with a bare "ANGLE" and offers no WEBGL_debug_renderer_info, so
+ * nothing could tell llvmpipe from a GPU (softwareRenderer.ts). Offer the extension as browsers
+ * do, its two enums answered with ANGLE's own strings (headless-gl's `_getParameterDirect` asks
+ * the native context, e.g. "ANGLE (Mesa/X.org, llvmpipe (LLVM 15.0.6 256 bits), OpenGL 4.5)").
+ */
+function offerRendererInfo(gl: WebGL2RenderingContext): void {
+  const direct = (gl as unknown as { _getParameterDirect?: (pname: number) => unknown })._getParameterDirect;
+  if (typeof direct !== 'function') return;
+  const getExtension = gl.getExtension.bind(gl);
+  const getParameter = gl.getParameter.bind(gl);
+  const info = Object.freeze({ UNMASKED_VENDOR_WEBGL, UNMASKED_RENDERER_WEBGL });
+  Object.assign(gl, {
+    getExtension: (name: string) => (name === 'WEBGL_debug_renderer_info' ? info : getExtension(name)),
+    getParameter: (pname: number) => {
+      if (pname === UNMASKED_RENDERER_WEBGL) return direct.call(gl, gl.RENDERER);
+      if (pname === UNMASKED_VENDOR_WEBGL) return direct.call(gl, gl.VENDOR);
+      return getParameter(pname);
     },
   });
 }

@@ -12,6 +12,7 @@ export type { BillOfMaterials } from '../../core/model/power/billOfMaterials';
 export type { InstallationNeeds } from '../../core/model/power/installationNeeds';
 export type { ViewerStatus } from '../../ui/viewer/viewerStatus';
 export type { GpuViewStatus } from '../../engines/view/controller/gpuRelightFrame';
+export type { CompileCounters } from '../../engines/view/createCompileGate';
 export type { QualityLevel } from '../../engines/relight/qualityLevels';
 export type { Language } from '../../ui/i18n/languages';
 export type { LightingScene } from '../../core/model/lightingScene/lightingScene';

@@ -13,6 +13,7 @@ import { createPassCompiler } from '../../../src/engines/bake/createPassCompiler
 import { readRgba, requireFloatTargets, uploadRgb } from '../../../src/engines/bake/floatTarget';
 import { patchTable, PATCH_TABLE_WIDTH } from '../../../src/engines/bake/patchTable';
 import { readBacks } from '../../../src/engines/bake/readBackCounter';
+import { softwareRenderer } from '../../../src/engines/bake/softwareRenderer';
 import { drawTileSums, readTileSums, tileSums } from '../../../src/engines/bake/readTileSums';
 import { selectBrightPatches } from '../../../src/engines/bake/selectBrightPatches';
 import { selectBrightPatchesOnGpu } from '../../../src/engines/bake/selectBrightPatchesOnGpu';
@@ -221,7 +222,8 @@ describe('read-backs of a bake that outputs no maps', () => {
 
   it('bright patches chosen on the GPU: the context counts 0 read-backs through the whole bake; the report then reads its stats row and the patch summary', () => {
     const before = { ...readBacks(gl) };
-    const job = baker.start(bakeScene, settings);
+    // Forced: unset, this software context selects on the CPU (the test below).
+    const job = baker.start(bakeScene, { ...settings, brightSelection: 'gpu' });
     job.run();
     job.finalize();
     expect(readBacks(gl).count - before.count).toBe(0);
@@ -244,6 +246,17 @@ describe('read-backs of a bake that outputs no maps', () => {
     expect(readBacks(gl).count - before.count).toBe(2);
     expect(report.readbacks.count).toBe(2);
     expect(readBacks(gl).bytes - before.bytes).toBe(report.readbacks.bytes);
+    job.dispose();
+  });
+
+  it('unset, the selection follows the renderer: this context is llvmpipe (software), so the CPU path and its one read-back of the tile sums', () => {
+    expect(softwareRenderer(gl)).toBe(true);
+    const before = { ...readBacks(gl) };
+    const job = baker.start(bakeScene, settings);
+    job.run();
+    job.finalize();
+    expect(readBacks(gl).count - before.count).toBe(1);
+    expect(job.report().brightPatches?.count ?? 0).toBeGreaterThan(0);
     job.dispose();
   });
 });

@@ -33,7 +33,9 @@ const luminaires: BakeScene['luminaires'] = [
   { photometry: isotropic(150), position: [2.5, 1.0, 0.3], yaw: 0, pitch: 0, roll: 0, color: [1, 0.8, 0.6] },
   { photometry: basePhotometry({ verticalAngles: [0, 90, 180], candela: [[0, 0, 300]] }), position: [0.5, 2.3, 1.8], yaw: 0, pitch: 0, roll: 0 },
 ];
-const settings = { texelSize: 0.2, samples: 32, bounces: 2, samplesPerDraw: 16 };
+// The selection forced onto the GPU: unset it follows the renderer (the CPU on this llvmpipe, the
+// GPU's passes elsewhere), and the pinned shader set must be the same on every back end.
+const settings = { texelSize: 0.2, samples: 32, bounces: 2, samplesPerDraw: 16, brightSelection: 'gpu' as const };
 
 const sha = (s: string) => createHash('sha256').update(s).digest('hex').slice(0, 16);
 

@@ -107,8 +107,8 @@ describe('read-backs of a bake', () => {
     expect(report.readbacks.count).toBe(19);
   });
 
-  it('bright patches chosen on the GPU (default) add no read-back to the bake; the report reads their summary (one texel) besides its stats row', () => {
-    const job = createBaker(gl).start(scene, { ...settings, brightPatches: 64 });
+  it("bright patches chosen on the GPU (brightSelection 'gpu', the default on a hardware renderer) add no read-back to the bake; the report reads their summary (one texel) besides its stats row", () => {
+    const job = createBaker(gl).start(scene, { ...settings, brightPatches: 64, brightSelection: 'gpu' });
     job.run();
     const report = job.report();
     expect(report.brightPatches?.count ?? 0).toBeGreaterThan(0);

@@ -3,7 +3,9 @@ import type { PreparedObjects } from '../../bake/objects/preparedObjects';
 import type { BasisPrecision } from '../../relight/createGpuRelight';
 import type { RelightEngine } from '../../relight/RelightEngine';
 import type { LitMaps } from '../../relight/relightMaps';
-import { createViewRelight, type ViewRelight } from '../createViewRelight';
+import { createViewRelight, type ViewRelight, type ViewRelightMaps } from '../createViewRelight';
+import { shapedFloorWeights } from '../shapedFloorWeights';
+import type { CompileCounters } from '../createCompileGate';
 import type { PendingStats } from '../createGpuStats';
 import type { IlluminanceStats } from '../lightStats';
 import { floorUnderObjects } from '../lightStats';
@@ -47,6 +49,8 @@ export interface GpuViewStatus {
   frame: { readbacks: number; readbackBytes: number; uploadBytes: number };
   /** GPU texture memory the relight holds (bases, solutions, display targets). */
   textureBytes: number;
+  /** Three's programs compiled before a frame draws them, without blocking (createCompileGate.ts): compiles started and finished, frames held for them, compiles finished when the first frame was drawn. */
+  compiles: CompileCounters;
 }
 
 /** The GPU side of the viewer: the view's relight, what the CPU path showed last, the settle timer and the floor mask. */
@@ -59,6 +63,8 @@ export interface ViewerGpu {
   cpuUploadBytes: number;
   settle: ReturnType<typeof setTimeout> | null;
   mask: { layout: SurfaceLayout; prepared: PreparedObjects | null; covered: Uint8Array } | null;
+  /** A shaped room's floor weights in the atlas for the prepared objects in force (shapedFloorWeights.ts). */
+  floorWeights: { prepared: PreparedObjects; weights: Float32Array | null } | null;
   pending: PendingStats | null;
   /** The work plane's height the host shows statistics for (setWorkPlane), or null: off. */
   workPlaneHeight: number | null;
@@ -81,6 +87,7 @@ export function createViewerGpu(v: Pick<Viewer, 'renderer'>): ViewerGpu {
     cpuUploadBytes: 0,
     settle: null,
     mask: null,
+    floorWeights: null,
     pending: null,
     workPlaneHeight: null,
     plane: null,
@@ -97,6 +104,14 @@ export function noteCpuShow(g: ViewerGpu, lit: LitMaps, key: string): void {
   g.key = key;
   g.cpuRelights++;
   g.cpuUploadBytes += displayUploadBytes(lit);
+}
+
+/** A shaped room's floor statistics from the atlas (shapedFloorWeights.ts), or null without the atlas or its floor. */
+function shapedFloorStats(g: ViewerGpu, maps: ViewRelightMaps, prepared: PreparedObjects | null): PendingStats | null {
+  if (!prepared) return null;
+  if (!g.floorWeights || g.floorWeights.prepared !== prepared) g.floorWeights = { prepared, weights: shapedFloorWeights(prepared) };
+  const { weights } = g.floorWeights;
+  return weights ? g.relight.shapedFloorStats(maps, weights) : null;
 }
 
 function floorMask(g: ViewerGpu, layout: SurfaceLayout, prepared: PreparedObjects | null): Uint8Array {
@@ -125,12 +140,10 @@ export function showRelightOnGpu(v: Viewer, engine: RelightEngine, showOnCpu: ()
   const maps = g.relight.relight(parts);
   v.view.setLightTextures(maps.surfaces, maps.objects);
   v.events.onGpuRelight?.({ relightMs: performance.now() - t0 });
-  // A room of any shape has its floor in the atlas: its statistics wait for the settled CPU relight.
-  if (!parts.layouts.floor.sink) {
-    g.pending = g.relight.floorStats(maps, floorMask(g, parts.layouts.floor, v.prepared));
-    pollFloorStats(v, g.pending);
-    requestWorkPlaneStats(v, parts);
-  }
+  // A room of any shape has its floor in the atlas: its texels there, each weighed by its coverage.
+  g.pending = parts.layouts.floor.sink ? shapedFloorStats(g, maps, v.prepared) : g.relight.floorStats(maps, floorMask(g, parts.layouts.floor, v.prepared));
+  if (g.pending) pollFloorStats(v, g.pending);
+  requestWorkPlaneStats(v, parts);
   if (g.settle) clearTimeout(g.settle);
   g.settle = setTimeout(() => {
     g.settle = null;
@@ -150,14 +163,14 @@ function workPlaneBasesOf(g: ViewerGpu, scene: BakeScene, prepared: PreparedObje
 export const WORK_PLANE_SPACING = 0.1;
 
 /**
- * The work plane's statistics of this GPU relight (box rooms, the plane on): its part grids combined
+ * The work plane's statistics of this GPU relight (the plane on; a box room or one of any shape): its part grids combined
  * with the same weights and reduced (createViewRelight workPlaneStats), reported by onWorkPlaneStats
  * once read. Nothing is requested when a basis lacks its luminaires.
  */
 function requestWorkPlaneStats(v: Viewer, parts: NonNullable<ReturnType<RelightEngine['relightParts']>>): void {
   const g = v.gpu;
   const height = g.workPlaneHeight;
-  if (height === null || !v.scene || v.scene.room.shape) return;
+  if (height === null || !v.scene) return;
   const pending = g.relight.workPlaneStats(parts, workPlaneBasesOf(g, v.scene, v.prepared, height));
   if (!pending) return;
   g.planePending = pending;
@@ -215,7 +228,7 @@ export function cancelSettle(g: ViewerGpu): void {
 }
 
 /** The counters of `view3d().gpu`, with the per-frame numbers of the last drawn frame. */
-export function gpuViewStatus(g: ViewerGpu): GpuViewStatus {
+export function gpuViewStatus(g: ViewerGpu, compiles: CompileCounters): GpuViewStatus {
   const c = g.relight.counters;
   return {
     precision: g.relight.precision,
@@ -227,6 +240,7 @@ export function gpuViewStatus(g: ViewerGpu): GpuViewStatus {
     uploadBytes: c.uploads.bytes + g.cpuUploadBytes,
     frame: { ...g.frame },
     textureBytes: g.relight.textureBytes(),
+    compiles: { ...compiles },
   };
 }
 
