@@ -23,8 +23,6 @@ const ALLOWED: ReadonlyMap<string, string> = new Map([
   ['src/engines/bake/objects/rasterizeAtlas.ts:rasterizeAtlas', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
   ['src/hosts/bench/runBench.ts:runBench', "a command's steps in order: to be split into named steps, as startBakeJob was"],
   ['src/engines/view/createBakeSlicer.ts:createBakeSlicer', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
-  ['src/ui/planner/RoomShapeEditor.tsx:RoomShapeEditor', "a component whose markup is most of it (issue 29's editor, merged back): its bar and handles become components, as View3D's did"],
-  ['src/ui/planner/RoomShapeEditor.tsx:Sheet', "a component whose markup is most of it (issue 29's edit sheet): its wall, corner and opening forms become components"],
   ['src/engines/view/roomView.ts:createRoomView', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's; shaped rooms (issue 29) add hooks to the viewer today"],
   ['src/hosts/node/createProbe.ts:createProbe', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/core/gldf/exportGldfProduct.ts:exportGldfProduct', 'writes product.xml section by section: to be split by section'],
