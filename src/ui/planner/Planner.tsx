@@ -18,6 +18,7 @@ import type { MeshUnits } from '../../core/model/configuration/configuration';
 import type { TriangleMesh } from '../../core/mesh/triangleMesh';
 import { FilePanel } from './FilePanel';
 import { SurfacesPanel } from './SurfacesPanel';
+import { LazyDaylightSection } from './LazyDaylightSection';
 import { defaultSurfaceFinishes } from '../../core/catalog/surfaceFinishes';
 import { LazyView3D } from '../viewer/LazyView3D';
 
@@ -337,6 +338,7 @@ export function Planner({ store, ui, languageSwitch = false, onNewRoom, onShare,
           </FurniturePanel>
           <ScenePanel store={store} />
           <SurfacesPanel room={config.room} finishes={defaultSurfaceFinishes} gate={gate} onEditShape={() => ui.setState({ roomEdit: true, mode: '2d', panelOpen: false, optionsOpen: false })} />
+          <LazyDaylightSection config={config} gate={gate} />
           <BomPanel bom={bom} needs={needs} catalog={catalog} />
           <section className="panel-section">
             <div className="setup-actions">
