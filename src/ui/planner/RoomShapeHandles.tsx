@@ -1,3 +1,4 @@
+import './registerRoomShapeEnglish';
 import type { RoomShape } from '../../core/model/configuration/configuration';
 import type { PlanPoint } from '../../core/room/planPolygon';
 import type { ActionGate } from './actionGate';

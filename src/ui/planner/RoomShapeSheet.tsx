@@ -1,3 +1,4 @@
+import './registerRoomShapeEnglish';
 import type { Configuration, RoomShape } from '../../core/model/configuration/configuration';
 import { cornerAngle, currentShape, wallFinishes, wallLength } from '../../core/model/actions/roomShapeGeometry';
 import type { ActionGate } from './actionGate';

@@ -1,3 +1,4 @@
+import './registerRoomShapeEnglish';
 import { GLAZING_PRESETS, type GlazingPreset } from '../../core/daylight/glazing';
 import type { TransmittanceValue } from '../../core/model/configuration/daylightSettings';
 import { DEFAULT_TRANSMITTANCE } from '../../core/model/lightingScene/parseDaylight';
