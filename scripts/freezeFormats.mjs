@@ -37,6 +37,13 @@ function run(name, params) {
   if (!config) throw new Error('outcome shape ' + Object.keys(o));
   console.log('  ok', name);
 }
+// The room-shape chunk's actions (version 10's daylight among them) are not in the first screen's table.
+function runChunk(name, params) {
+  const o = defs.attemptAction(config, name, params, defaultCatalog);
+  if (o.ok === false) throw new Error(`${name} refused: ${o.reason}`);
+  config = o.next;
+  console.log('  ok', name);
+}
 const cube = {
   positions: new Float32Array([0, 0, 0, 0.4, 0, 0, 0.4, 0, 0.4, 0, 0, 0.4, 0, 0.4, 0, 0.4, 0.4, 0, 0.4, 0.4, 0.4, 0, 0.4, 0.4]),
   indices: new Uint32Array([0, 1, 2, 0, 2, 3, 4, 6, 5, 4, 7, 6, 0, 4, 5, 0, 5, 1, 1, 5, 6, 1, 6, 2, 2, 6, 7, 2, 7, 3, 3, 7, 4, 3, 4, 0]),
@@ -82,6 +89,11 @@ if (v >= 9) {
   config = { ...config, room: { ...config.room, shape } };
   sf.deserializeConfiguration(sf.serializeConfiguration(config, defaultCatalog), defaultCatalog, 'the shaped room');
   console.log('  ok room shape');
+}
+// Version 10: daylight (a clear day in Zurich, 17:00 on 21 December: the sun has set) and the window's glazing, through their actions.
+if (v >= 10) {
+  runChunk('setDaylight', { on: true, city: 'Zurich', date: '2026-12-21', time: '17:00', sky: 'cie-clear', groundReflectance: 0.25 });
+  runChunk('setWindowGlazing', { opening: 1, transmittance: 'triple' });
 }
 const shareText = share.encodeShareString(config, defaultCatalog);
 if (v >= 3) run('addObject', { source: { kind: 'import', name: 'crate.obj', mesh: cube, units: 'm' }, placement: { on: 'floor', x: 3.8, z: 0.8 } });

@@ -17,8 +17,6 @@ const ALLOWED: ReadonlyMap<string, string> = new Map([
   ['src/engines/view/createRoomSurfaces.ts:createRoomSurfaces', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/engines/bake/objects/rasterizeAtlas.ts:rasterizeAtlas', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
   ['src/hosts/bench/runBench.ts:runBench', "a command's steps in order: to be split into named steps, as startBakeJob was"],
-  ['src/ui/planner/RoomShapeEditor.tsx:RoomShapeEditor', "a component whose markup is most of it (issue 29's editor, merged back): its bar and handles become components, as View3D's did"],
-  ['src/ui/planner/RoomShapeEditor.tsx:Sheet', "a component whose markup is most of it (issue 29's edit sheet): its wall, corner and opening forms become components"],
   ['src/hosts/node/createProbe.ts:createProbe', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/core/gldf/exportGldfProduct.ts:exportGldfProduct', 'writes product.xml section by section: to be split by section'],
   ['src/hosts/cli/renderCommand.ts:run', "a command's steps in order: to be split into named steps, as startBakeJob was"],

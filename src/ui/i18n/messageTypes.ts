@@ -7,6 +7,7 @@ import type enGuidance from './messages/en/guidance';
 import type enScenes from './messages/en/scenes';
 import type enA11y from './messages/en/a11y';
 import type enRoomShape from './messages/en/roomShape';
+import type enDaylight from './messages/en/daylight';
 
 /**
  * A message that depends on a count: the CLDR plural category of `params.count` picks the text
@@ -29,9 +30,14 @@ export interface PluralMessage {
  * its core-code areas (messages/en/core.ts) with the first other language loaded, the planner's
  * guidance (messages/en/guidance.ts: first run, remedies) with the guidance chunk, the light scenes'
  * (messages/en/scenes.ts) with the scene panel's and the 3D view's chunks, the screen-reader
- * announcements' (messages/en/a11y.ts) with theirs, the room-shape editor's (messages/en/roomShape.ts) with its chunk.
+ * announcements' (messages/en/a11y.ts) with theirs, the room-shape editor's (messages/en/roomShape.ts) with its chunk, the daylight panel's
+ * (messages/en/daylight.ts) with its chunk.
  */
-export type SourceMessages = typeof en & typeof enLazy & typeof enOptionsPanel & typeof enCore & typeof enPanelExtras & { guidance: typeof enGuidance; scenes: typeof enScenes; a11y: typeof enA11y; roomShape: typeof enRoomShape };
+export type SourceMessages = typeof en &
+  typeof enLazy &
+  typeof enOptionsPanel &
+  typeof enCore &
+  typeof enPanelExtras & { guidance: typeof enGuidance; scenes: typeof enScenes; a11y: typeof enA11y; roomShape: typeof enRoomShape; daylight: typeof enDaylight };
 
 export type Area = keyof SourceMessages & string;
 

@@ -14,6 +14,7 @@ import { LazyOptionsPanel as OptionsPanel } from './LazyOptionsPanel';
 import type { PlannerScope } from './plannerScope';
 import { PresetPanel } from './PresetPanel';
 import { SurfacesPanel } from './SurfacesPanel';
+import { LazyDaylightSection } from './LazyDaylightSection';
 
 // The share link's copy and share buttons load once a link is made (not with the first screen).
 const ShareLinkField = lazy(() => import('./ShareLinkField'));
@@ -60,6 +61,7 @@ export function PlannerSidePanel({ p }: { p: PlannerScope }) {
       </FurniturePanel>
       <ScenePanel store={store} />
       <SurfacesPanel room={config.room} finishes={defaultSurfaceFinishes} gate={gate} onEditShape={() => ui.setState({ roomEdit: true, mode: '2d', panelOpen: false, optionsOpen: false })} />
+      <LazyDaylightSection config={config} gate={gate} />
       <BomPanel bom={p.bom} needs={p.needs} catalog={catalog} />
       <section className="panel-section">
         <div className="setup-actions">

@@ -8,6 +8,7 @@ import guidanceEnglish from '../../../src/ui/i18n/messages/en/guidance';
 import scenesEnglish from '../../../src/ui/i18n/messages/en/scenes';
 import a11yEnglish from '../../../src/ui/i18n/messages/en/a11y';
 import roomShapeEnglish from '../../../src/ui/i18n/messages/en/roomShape';
+import daylightEnglish from '../../../src/ui/i18n/messages/en/daylight';
 import type { MessageTree, PluralMessage } from '../../../src/ui/i18n/messageTypes';
 import { hasWord } from './findHardCodedText';
 import defaultCatalog from '../../../src/core/catalog/default-catalog.json';
@@ -119,7 +120,7 @@ describe('translations', async () => {
   registerEnglishAreas(optionsPanelEnglish);
   registerEnglishAreas(panelExtrasEnglish);
   registerEnglishAreas({ guidance: guidanceEnglish });
-  registerEnglishAreas({ scenes: scenesEnglish, a11y: a11yEnglish, roomShape: roomShapeEnglish });
+  registerEnglishAreas({ scenes: scenesEnglish, a11y: a11yEnglish, roomShape: roomShapeEnglish, daylight: daylightEnglish });
   // And the English of the core's codes, which comes with the other languages (docs/i18n.md, "Bundles").
   await loadCoreEnglish();
   const en = flatten(await loadMessages('en'));

@@ -17,6 +17,7 @@ import {
   setWallFinish,
   splitRoomWall,
 } from './roomShapeActions';
+import { setDaylight, setWindowGlazing } from './daylightActions';
 
 export const roomShapeActionDefinitions = {
   setRoomShapePreset,
@@ -31,4 +32,6 @@ export const roomShapeActionDefinitions = {
   setRoomOpening,
   removeRoomOpening,
   setWallFinish,
+  setDaylight,
+  setWindowGlazing,
 } as const;

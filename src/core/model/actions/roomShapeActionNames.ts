@@ -23,6 +23,8 @@ export const ROOM_SHAPE_ACTION_LABELS: Record<RoomShapeActionName, string> = {
   setRoomOpening: 'Opening',
   removeRoomOpening: 'Remove opening',
   setWallFinish: 'Wall finish',
+  setDaylight: 'Daylight',
+  setWindowGlazing: 'Window glazing',
 };
 
 /** In the registry's order (docs/embedding.md's action table); a Record above, so none can be missing. */

@@ -11,7 +11,7 @@ import { z } from 'zod/mini';
 import { InputError } from '../../inputError';
 import type { ActionDefinition } from './action';
 import { ROOM_SHAPE_ACTION_LABELS } from './roomShapeActionNames';
-import type { Configuration, RoomShape } from '../configuration/configuration';
+import type { Configuration, RoomShape, ShapeOpening } from '../configuration/configuration';
 import type { Reflectance } from '../lightingScene/lightingScene';
 import { roomProblems } from '../../room/roomProblems';
 import { OPENING_KINDS, type OpeningKind, type RoomOpening } from '../../room/roomInput';
@@ -174,7 +174,10 @@ export const setRoomOpening: ActionDefinition<z.infer<typeof setOpeningParams>> 
   perform(state, p) {
     const shape = currentShape(state.room);
     const o = checkOpening(shape, p.opening);
-    const changed: RoomOpening = { ...o, offset: p.offset ?? o.offset, width: p.width ?? o.width, sill: p.sill ?? o.sill, height: p.height ?? o.height, kind: p.kind ?? o.kind };
+    const moved: ShapeOpening = { ...o, offset: p.offset ?? o.offset, width: p.width ?? o.width, sill: p.sill ?? o.sill, height: p.height ?? o.height, kind: p.kind ?? o.kind };
+    // Only a window has glazing: a window made a door or an opening leaves its glazing behind.
+    const { transmittance, ...unglazed } = moved;
+    const changed: ShapeOpening = moved.kind === 'window' || transmittance === undefined ? moved : unglazed;
     return withShape(state, { ...shape, openings: shape.openings.map((x, i) => (i === p.opening ? changed : x)) });
   },
 };

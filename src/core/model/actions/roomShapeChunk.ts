@@ -1,7 +1,8 @@
 /**
  * The room-shape chunk (roomShapeSupport.ts): everything rooms of any shape add to the model —
  * the shape's rules and geometry (src/core/room), validate()'s rules for the shape and for what is
- * placed in it, the file schema of `room.shape`, the editor's actions; and the configuration
+ * placed in it, the file schema of `room.shape`, the editor's actions; daylight through the
+ * windows (its rules, file schema, actions and the lighting scene's sky, issue 30); and the configuration
  * file's steps from versions before 8 (legacyMigrations.ts), as rare as a shape on a first visit. Only loadRoomShapeSupport()
  * imports it in the browser (a lazy chunk); Node hosts and the tests import it directly.
  */
@@ -16,6 +17,9 @@ import { configurationObjectMisfit } from '../objects/objectInShapedRoom';
 import { roomShapeProblems } from '../validation/roomShapeProblems';
 import { shapedSystemFit } from '../validation/shapedSystemFit';
 import type { RoomShapeSupport } from '../configuration/roomShapeSupport';
+import { configurationDaylightProblems } from '../validation/daylightProblems';
+import { readDaylight } from '../files/daylightFileSchema';
+import { lightingDaylight } from '../files/lightingDaylight';
 
 const shaped = (room: Room) => {
   const found = shapedRoom(room);
@@ -32,5 +36,8 @@ export const roomShapeSupportChunk: RoomShapeSupport = {
   scale: scaleRoomShape,
   readShape: readRoomShape,
   actions: roomShapeActionDefinitions,
+  daylightProblems: configurationDaylightProblems,
+  readDaylight,
+  lightingDaylight,
   legacyMigrations,
 };

@@ -9,6 +9,7 @@ import type { Reflectance, Rgb, SurfaceName } from '../lightingScene/lightingSce
 import type { TriangleMesh } from '../../mesh/triangleMesh';
 import type { PlanPoint } from '../../room/planPolygon';
 import type { RoomOpening, RoomSlope } from '../../room/roomInput';
+import type { DaylightSettings, TransmittanceValue } from './daylightSettings';
 
 export type { Distribution };
 
@@ -35,13 +36,19 @@ export interface RoomShape {
   /** Corners [x, z], metres, either orientation; wall i runs from corner i to corner i + 1. */
   readonly outline: readonly PlanPoint[];
   readonly slopes: readonly RoomSlope[];
-  readonly openings: readonly RoomOpening[];
+  readonly openings: readonly ShapeOpening[];
   /**
    * One finish per wall in outline order. Absent: each wall takes the box wall (north, east,
    * south, west) whose inward normal is nearest its own, so a rectangle keeps today's finishes.
    */
   readonly wallReflectance?: readonly Reflectance[];
 }
+
+/**
+ * An opening of the room's shape; a window may carry its glazing (scene file version 10,
+ * docs/daylight.md): a preset or the normal-incidence transmittance 0 … 1; absent: "double".
+ */
+export type ShapeOpening = RoomOpening & { readonly transmittance?: TransmittanceValue };
 
 /** The DMX patch of a module (docs/live-control.md); its rules are in core/model/modules/dmxPatch.ts. */
 export type DmxResolution = 8 | 16;
@@ -253,6 +260,8 @@ export interface Configuration {
   readonly importedMeshes: Readonly<Record<string, ImportedMesh>>;
   /** Light scenes in playback order (scene file version 7); absent or empty: none recorded. */
   readonly lightScenes?: readonly LightScene[];
+  /** The sky and the sun through the room's windows (scene file version 10, docs/daylight.md); absent: never switched on. */
+  readonly daylight?: DaylightSettings;
   /** Next number for generated ids ('s7', 'r8', 'm9', 'o10', 'i11', feeds 'f12'); keeps ids unique and deterministic. */
   readonly nextId: number;
 }

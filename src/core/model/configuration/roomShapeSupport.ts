@@ -17,6 +17,8 @@ import type { PlanPoint } from '../../room/planPolygon';
 import type { Catalog } from '../catalogSchema/catalogSchema';
 import type { Configuration, LightSystem, Room } from './configuration';
 import type { Problem } from './problem';
+import type { DaylightSettings } from './daylightSettings';
+import type { LightingDaylight } from '../lightingScene/lightingScene';
 
 /** An object's words as validate() names it: its name, id and library item. */
 export type NamedObject = { name: string } & Record<string, string | number>;
@@ -41,6 +43,12 @@ export interface RoomShapeSupport {
   readShape(value: unknown, prefix: readonly PropertyKey[]): { shape: Room['shape'] } | { problem: CodedText };
   /** The room-shape editor's action definitions by name (actions/roomShapeActionDefinitions.ts; typed there, this folder sits below actions). */
   actions: Readonly<Record<string, unknown>>;
+  /** validate()'s rules of the daylight and the windows' glazing (daylight-*, window-glazing, glazing-not-window). */
+  daylightProblems(config: Configuration): Problem[];
+  /** A configuration file's `daylight` read (version 10), as readShape. */
+  readDaylight(value: unknown, prefix: readonly PropertyKey[]): { daylight: DaylightSettings } | { problem: CodedText };
+  /** The lighting scene's daylight of a configuration with a shape: the sky (none while off or at night) and each window's glazing; null when there is nothing to say. */
+  lightingDaylight(config: Configuration): LightingDaylight | null;
   /** The configuration file's steps from versions before 8 (legacyMigrations.ts): rare files, kept off the first screen with the shape. */
   legacyMigrations: Record<number, MigrationStep>;
 }
@@ -70,6 +78,12 @@ export function requireRoomShapeSupport(): RoomShapeSupport {
   return installed;
 }
 
+/** Whether parsed scene-file JSON (any value) has daylight (version 10), which the chunk reads too. */
+export function sceneDataHasDaylight(data: unknown): boolean {
+  const c = typeof data === 'object' && data !== null ? (data as Record<string, unknown>).configuration : undefined;
+  return typeof c === 'object' && c !== null && 'daylight' in c;
+}
+
 /** Whether parsed scene-file JSON (any value) has a room shape: `configuration.room.shape`. */
 export function sceneDataHasRoomShape(data: unknown): boolean {
   const c = typeof data === 'object' && data !== null ? (data as Record<string, unknown>).configuration : undefined;
@@ -78,14 +92,14 @@ export function sceneDataHasRoomShape(data: unknown): boolean {
 }
 
 /**
- * Whether reading a scene file's text needs this chunk: a room shape, or a version before 8
+ * Whether reading a scene file's text needs this chunk: a room shape, daylight, or a version before 8
  * (LEGACY_BELOW, whose steps are in the chunk). False for text that is not JSON: the reader then says what is wrong.
  */
 export function sceneTextNeedsLazyModel(text: string | null | undefined): boolean {
   if (!text) return false;
   try {
     const data = JSON.parse(text) as { version?: unknown };
-    return sceneDataHasRoomShape(data) || (typeof data?.version === 'number' && data.version < 8);
+    return sceneDataHasRoomShape(data) || sceneDataHasDaylight(data) || (typeof data?.version === 'number' && data.version < 8);
   } catch {
     return false;
   }

@@ -12,12 +12,16 @@ import { safeParseInEnglish } from '../../zodEnglish';
 import { describeIssueCoded, schemaFieldNames } from '../../zodIssues';
 import type { RoomShape } from '../configuration/configuration';
 import { fileReflectanceSchema } from './sceneFileSchema';
+import { transmittanceFileSchema } from './daylightFileSchema';
+
+/** An opening as the room model has it, and a window's glazing (version 10; validate() refuses it on a door or opening). */
+const shapeOpeningSchema = z.extend(roomOpeningSchema, { transmittance: z.optional(transmittanceFileSchema) });
 
 // Strict: an unknown (misspelt, or newer) field is refused, never dropped.
 export const roomShapeFileSchema = z.strictObject({
   outline: roomOutlineSchema,
   slopes: z.array(roomSlopeSchema).check(z.maxLength(ROOM_SHAPE_LIMITS.maxCorners)),
-  openings: z.array(roomOpeningSchema).check(z.maxLength(4 * ROOM_SHAPE_LIMITS.maxCorners)),
+  openings: z.array(shapeOpeningSchema).check(z.maxLength(4 * ROOM_SHAPE_LIMITS.maxCorners)),
   wallReflectance: z.optional(z.array(fileReflectanceSchema).check(z.maxLength(ROOM_SHAPE_LIMITS.maxCorners))),
 });
 

@@ -44,6 +44,7 @@ export function toSceneFile(config: Configuration, catalog: Catalog): SceneFile 
     ...(config.objects.length > 0 ? { objects: config.objects } : {}),
     ...(Object.keys(importedMeshes).length > 0 ? { importedMeshes } : {}),
     ...(config.lightScenes && config.lightScenes.length > 0 ? { lightScenes: config.lightScenes } : {}),
+    ...(config.daylight ? { daylight: config.daylight } : {}),
     nextId: config.nextId,
   };
   return { format: SCENE_FILE_FORMAT, version: SCENE_FILE_VERSION, catalog: catalog.id, configuration: configuration as SceneFile['configuration'] };
@@ -102,16 +103,26 @@ export function configurationFromData(data: unknown, catalog: Catalog, source = 
 }
 
 /**
- * The room's shape read by the room-shape chunk (roomShapeSupport.ts), which every caller that may
- * meet one has loaded: before that a shape is refused (RoomShapeSupportMissing), never dropped.
+ * The room's shape and the daylight (version 10) read by the room-shape chunk (roomShapeSupport.ts),
+ * which every caller that may meet one has loaded: before that either is refused
+ * (RoomShapeSupportMissing), never dropped.
  */
 function withShapeRead(data: SceneFile['configuration'], source: string): SceneFile['configuration'] {
-  if (data.room.shape === undefined) return data;
+  if (data.room.shape === undefined && data.daylight === undefined) return data;
   const support = roomShapeSupport();
-  if (!support) throw new RoomShapeSupportMissing(`${source}: configuration.room.shape`);
-  const read = support.readShape(data.room.shape, ['configuration', 'room', 'shape']);
-  if ('problem' in read) throw fileProblem(source, read.problem);
-  return { ...data, room: { ...data.room, shape: read.shape } };
+  if (!support) throw new RoomShapeSupportMissing(`${source}: configuration.${data.room.shape === undefined ? 'daylight' : 'room.shape'}`);
+  let out = data;
+  if (data.room.shape !== undefined) {
+    const read = support.readShape(data.room.shape, ['configuration', 'room', 'shape']);
+    if ('problem' in read) throw fileProblem(source, read.problem);
+    out = { ...out, room: { ...out.room, shape: read.shape } };
+  }
+  if (data.daylight !== undefined) {
+    const read = support.readDaylight(data.daylight, ['configuration', 'daylight']);
+    if ('problem' in read) throw fileProblem(source, read.problem);
+    out = { ...out, daylight: read.daylight };
+  }
+  return out;
 }
 
 /**

@@ -6,6 +6,8 @@ import { SURFACE_NAMES } from '../lightingScene/lightingScene';
 
 export const SCENE_FILE_FORMAT = 'luxbox-configuration';
 /**
+ * 10: daylight (`daylight`: on, place, date, time, sky, ground reflectance) and a window's glazing
+ *    (`transmittance` on a window of `room.shape.openings`), docs/daylight.md "The shopper's daylight".
  * 9: the room may have a shape (`room.shape`: outline, slopes, openings, per-wall finishes),
  *    docs/model.md "Room shape"; a room without one is the box it always was.
  * 8: a system's rails form a tree: a joint may name the rail it hangs on (`parent`, T and X
@@ -19,7 +21,7 @@ export const SCENE_FILE_FORMAT = 'luxbox-configuration';
  * 3: objects (furniture, imported models) and imported meshes (docs/model.md, "Objects").
  * 2: modules may carry a DMX patch (`dmx`, docs/live-control.md). Older files are migrated on reading.
  */
-export const SCENE_FILE_VERSION = 9;
+export const SCENE_FILE_VERSION = 10;
 /**
  * Read side of a reflectance: [0, 1) as version 1 files have always allowed. Channels above
  * MAX_REFLECTANCE (0.95, src/core/model/lightingScene/reflectance.ts) in files written before that cap are lowered
@@ -122,6 +124,8 @@ const configurationSchema = z.strictObject({
       }),
     ),
   ),
+  // Version 10: daylight. Its schema is in the room-shape chunk (daylightFileSchema.ts), read as the room's shape is (sceneFile.ts); its rules are validate()'s.
+  daylight: z.optional(z.custom<unknown>()),
   nextId: z.number().check(z.int(), z.positive()),
 });
 

@@ -56,11 +56,14 @@ export function toLightingScene(config: Configuration, catalog: Catalog, options
   // A shape (issue 29) makes it version 3; its bounding box is [0, width] × [0, depth] (validate()), so width and depth stay the extents.
   const shape = config.room.shape ? requireRoomShapeSupport().shapedRoom(config.room) : null;
   const room = { width, height, depth, reflectance: { ...reflectance }, ...(shape ? { shape } : {}) };
-  if (config.objects.length === 0) return { version: shape ? 3 : 1, room, luminaires };
+  // Daylight comes in through windows, which only a room with a shape has (files/lightingDaylight.ts).
+  const found = shape ? requireRoomShapeSupport().lightingDaylight(config) : null;
+  const daylight = found ? { daylight: found } : {};
+  if (config.objects.length === 0) return { version: shape ? 3 : 1, room, luminaires, ...daylight };
   // Objects are a version 2 field (docs/scene-format.md); their finishes travel in the mesh (objectMesh), not as a reflectance override.
   const objects: LightingObject[] = config.objects.map((o) => {
     const { position, yaw, scale } = objectPlacement(o, config.room);
     return { mesh: `${OBJECT_MESH_PREFIX}${o.id}`, position: [position[0], position[1], position[2]], yaw, scale, id: o.id };
   });
-  return { version: shape ? 3 : 2, room, luminaires, objects };
+  return { version: shape ? 3 : 2, room, luminaires, objects, ...daylight };
 }

@@ -22,6 +22,8 @@ export function roomProblems(config: Configuration): Problem[] {
   }
   // A room's shape (issue 29) is judged by the room-shape chunk (roomShapeSupport.ts), loaded before any shape can arrive.
   if (config.room.shape !== undefined) out.push(...requireRoomShapeSupport().problems(config.room));
+  // Daylight and the windows' glazing (issue 30) are judged by the same chunk.
+  if (out.length === 0 && (config.room.shape !== undefined || config.daylight !== undefined)) out.push(...requireRoomShapeSupport().daylightProblems(config));
   return out;
 }
 

@@ -2,6 +2,7 @@ import type { Catalog } from '../../catalogSchema/catalogSchema';
 import { SCENE_FILE_VERSION } from '../sceneFileSchema';
 import { SceneFileError } from '../sceneFileError';
 import { migrateV8ToV9, refuseV9Fields } from './migrateV8ToV9';
+import { migrateV9ToV10, refuseV10Fields } from './migrateV9ToV10';
 import { roomShapeSupport, RoomShapeSupportMissing, type MigrationStep } from '../../configuration/roomShapeSupport';
 
 /** Versions below this read through the lazy chunk's steps (legacyMigrations.ts). */
@@ -15,12 +16,14 @@ export const LEGACY_BELOW = 8;
  */
 export const migrations: Record<number, MigrationStep> = {
   8: migrateV8ToV9,
+  9: migrateV9ToV10,
 };
 
 export function migrateSceneFile(doc: Record<string, unknown>, catalog: Catalog): Record<string, unknown> {
   let d = doc;
   // A room shape in any older file is refused naming the version the file says (the steps before 8 → 9 do not look at the room).
   if (typeof d.version === 'number' && d.version < 9) refuseV9Fields(d, d.version);
+  if (typeof d.version === 'number' && d.version < 10) refuseV10Fields(d, d.version);
   while (typeof d.version === 'number' && d.version < SCENE_FILE_VERSION) {
     if (d.version < LEGACY_BELOW && !roomShapeSupport()) throw new RoomShapeSupportMissing(`configuration version ${d.version}`);
     const step = migrations[d.version] ?? roomShapeSupport()?.legacyMigrations[d.version];

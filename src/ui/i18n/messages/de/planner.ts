@@ -66,6 +66,7 @@ export default {
   eastWall: 'Ostwand',
   wallsOneByOne: 'Wände einzeln',
   editRoomShape: 'Raumform…',
+  daylight: 'Tageslicht',
   feedAtStart: 'am Kettenanfang',
   feedAtEnd: 'am Kettenende',
   feedAtConnector: 'an Verbinder {n}',

@@ -202,4 +202,16 @@ export default {
   'room-shape': 'die Raumform braucht Listen von Ecken, Dachschrägen und Öffnungen',
   roomShapeLoading: 'dieser Teil von luxbox wird noch geladen; bitte gleich noch einmal versuchen',
   roomShapeUnavailable: 'Räume beliebiger Form konnten nicht geladen werden ({problem})',
+  // Tageslicht und Verglasung (Issue 30).
+  'daylight-city': '«{city}» ist keine Stadt der Liste; bitte Breite, Länge und Zeitzone angeben',
+  'daylight-latitude': 'die geografische Breite muss zwischen {min} und {max} ° liegen (erhalten: {value})',
+  'daylight-longitude': 'die geografische Länge muss zwischen {min} und {max} ° liegen (erhalten: {value})',
+  'daylight-time-zone': 'die Zeitzone muss zwischen {min} und {max} h liegen (erhalten: {value})',
+  'daylight-date': '«{date}» ist kein Tag zwischen {min} und {max} in der Form JJJJ-MM-TT',
+  'daylight-time': '«{time}» ist keine Uhrzeit zwischen 00:00 und 23:59',
+  'daylight-sky': '«{sky}» ist kein Himmel: gleichförmig, CIE bedeckt oder CIE klar',
+  'daylight-ground': 'der Reflexionsgrad des Bodens muss mindestens 0 und kleiner als 1 sein (erhalten: {value})',
+  'glazing-not-window': 'Öffnung {opening} ist keine Fensteröffnung ({kind}); nur ein Fenster hat eine Verglasung',
+  'window-glazing': 'die Verglasung von Fenster {opening} muss einfach, doppelt, dreifach oder ein Transmissionsgrad von 0 bis 1 sein (erhalten: {value})',
+  daylightPlaceTwice: 'bitte entweder eine Stadt oder Koordinaten angeben, nicht beides',
 } satisfies AreaMessages<typeof en>;

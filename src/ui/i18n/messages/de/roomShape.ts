@@ -35,4 +35,10 @@ export default {
   wallButton: 'Wand {wall}: {length} m',
   openingHandle: '{kind} in Wand {wall}: entlang der Wand ziehen, antippen zum Bearbeiten',
   showLengths: 'Wandlängen',
+  glazing: 'Verglasung',
+  glazingSingle: 'Einfach (τ {tau})',
+  glazingDouble: 'Doppelt (τ {tau})',
+  glazingTriple: 'Dreifach (τ {tau})',
+  glazingNumber: 'Transmissionsgrad als Zahl',
+  transmittance: 'Transmissionsgrad τ (1 = offen)',
 } satisfies AreaMessages<typeof en>;

@@ -64,6 +64,7 @@ export default {
   eastWall: 'East wall',
   wallsOneByOne: 'Walls one by one',
   editRoomShape: 'Room shape…',
+  daylight: 'Daylight',
   feedAtStart: 'the chain start',
   feedAtEnd: 'the chain end',
   feedAtConnector: 'connector {n}',

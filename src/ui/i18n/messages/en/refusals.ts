@@ -211,4 +211,16 @@ export default {
   'room-shape': "the room's shape needs lists of corners, slopes and openings",
   roomShapeLoading: 'this part of luxbox is still loading; try again in a moment',
   roomShapeUnavailable: 'rooms of any shape could not be loaded ({problem})',
+  // Daylight and glazing (issue 30, docs/daylight.md "The shopper's daylight"; validation/daylightProblems.ts).
+  'daylight-city': "'{city}' is not a city of the list; give latitude, longitude and time zone instead",
+  'daylight-latitude': 'the latitude must be between {min} and {max} ° (got {value})',
+  'daylight-longitude': 'the longitude must be between {min} and {max} ° (got {value})',
+  'daylight-time-zone': 'the time zone must be between {min} and {max} h (got {value})',
+  'daylight-date': "'{date}' is not a day between {min} and {max} written YYYY-MM-DD",
+  'daylight-time': "'{time}' is not a clock time 00:00 to 23:59",
+  'daylight-sky': "'{sky}' is not a sky: uniform, cie-overcast or cie-clear",
+  'daylight-ground': "the ground's reflectance must be at least 0 and below 1 (got {value})",
+  'glazing-not-window': 'opening {opening} is a {kind}; only a window has glazing',
+  'window-glazing': 'the glazing of window {opening} must be single, double, triple or a transmittance from 0 to 1 (got {value})',
+  daylightPlaceTwice: 'give either a city or coordinates, not both',
 };

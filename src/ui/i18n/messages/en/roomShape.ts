@@ -34,4 +34,10 @@ export default {
   wallButton: 'Wall {wall}: {length} m',
   openingHandle: '{kind} in wall {wall}: drag along the wall, tap to edit',
   showLengths: 'Wall lengths',
+  glazing: 'Glazing',
+  glazingSingle: 'Single (τ {tau})',
+  glazingDouble: 'Double (τ {tau})',
+  glazingTriple: 'Triple (τ {tau})',
+  glazingNumber: 'Transmittance as a number',
+  transmittance: 'Transmittance τ (1 = open)',
 };

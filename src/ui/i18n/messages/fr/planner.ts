@@ -66,6 +66,7 @@ export default {
   eastWall: 'Mur est',
   wallsOneByOne: 'Murs un par un',
   editRoomShape: 'Forme de la pièce…',
+  daylight: 'Lumière du jour',
   feedAtStart: 'au début de la chaîne',
   feedAtEnd: 'à la fin de la chaîne',
   feedAtConnector: 'au connecteur {n}',

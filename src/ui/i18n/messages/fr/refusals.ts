@@ -202,4 +202,16 @@ export default {
   'room-shape': 'la forme de la pièce demande des listes de coins, de rampants et d’ouvertures',
   roomShapeLoading: 'cette partie de luxbox est encore en cours de chargement ; réessayez dans un instant',
   roomShapeUnavailable: 'les pièces de toute forme n’ont pas pu être chargées ({problem})',
+  // Lumière du jour et vitrage (issue 30).
+  'daylight-city': '« {city} » n’est pas une ville de la liste ; indiquez plutôt latitude, longitude et fuseau horaire',
+  'daylight-latitude': 'la latitude doit être comprise entre {min} et {max} ° (reçu {value})',
+  'daylight-longitude': 'la longitude doit être comprise entre {min} et {max} ° (reçu {value})',
+  'daylight-time-zone': 'le fuseau horaire doit être compris entre {min} et {max} h (reçu {value})',
+  'daylight-date': '« {date} » n’est pas un jour entre {min} et {max} écrit AAAA-MM-JJ',
+  'daylight-time': '« {time} » n’est pas une heure entre 00:00 et 23:59',
+  'daylight-sky': '« {sky} » n’est pas un ciel : uniforme, CIE couvert ou CIE clair',
+  'daylight-ground': 'la réflectance du sol doit être d’au moins 0 et inférieure à 1 (reçu {value})',
+  'glazing-not-window': 'l’ouverture {opening} n’est pas une fenêtre ({kind}) ; seule une fenêtre a un vitrage',
+  'window-glazing': 'le vitrage de la fenêtre {opening} doit être simple, double, triple ou une transmittance de 0 à 1 (reçu {value})',
+  daylightPlaceTwice: 'indiquez soit une ville, soit des coordonnées, pas les deux',
 } satisfies AreaMessages<typeof en>;

@@ -35,4 +35,10 @@ export default {
   wallButton: 'Mur {wall}\u00a0: {length} m',
   openingHandle: '{kind} dans le mur {wall}\u00a0: faites glisser le long du mur, touchez pour modifier',
   showLengths: 'Longueurs des murs',
+  glazing: 'Vitrage',
+  glazingSingle: 'Simple vitrage (τ {tau})',
+  glazingDouble: 'Double vitrage (τ {tau})',
+  glazingTriple: 'Triple vitrage (τ {tau})',
+  glazingNumber: 'Transmittance en nombre',
+  transmittance: 'Transmittance τ (1 = ouvert)',
 } satisfies AreaMessages<typeof en>;

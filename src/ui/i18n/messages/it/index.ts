@@ -21,6 +21,7 @@ import planner from './planner';
 import refusals from './refusals';
 import rooms from './rooms';
 import roomShape from './roomShape';
+import daylight from './daylight';
 import scenes from './scenes';
 import expert from './expert';
 import sharing from './sharing';
@@ -51,6 +52,7 @@ export default {
   refusals,
   rooms,
   roomShape,
+  daylight,
   scenes,
   expert,
   sharing,

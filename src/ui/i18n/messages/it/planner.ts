@@ -66,6 +66,7 @@ export default {
   eastWall: 'Parete est',
   wallsOneByOne: 'Pareti una per una',
   editRoomShape: 'Forma della stanza…',
+  daylight: 'Luce diurna',
   feedAtStart: 'all’inizio della catena',
   feedAtEnd: 'alla fine della catena',
   feedAtConnector: 'al connettore {n}',

@@ -202,4 +202,16 @@ export default {
   'room-shape': 'la forma della stanza richiede elenchi di angoli, falde e aperture',
   roomShapeLoading: 'questa parte di luxbox si sta ancora caricando; riprova tra un momento',
   roomShapeUnavailable: 'non è stato possibile caricare le stanze di qualsiasi forma ({problem})',
+  // Luce diurna e vetratura (issue 30).
+  'daylight-city': '«{city}» non è una città dell’elenco; indicare latitudine, longitudine e fuso orario',
+  'daylight-latitude': 'la latitudine deve essere tra {min} e {max} ° (ricevuto {value})',
+  'daylight-longitude': 'la longitudine deve essere tra {min} e {max} ° (ricevuto {value})',
+  'daylight-time-zone': 'il fuso orario deve essere tra {min} e {max} h (ricevuto {value})',
+  'daylight-date': '«{date}» non è un giorno tra {min} e {max} scritto AAAA-MM-GG',
+  'daylight-time': '«{time}» non è un orario tra 00:00 e 23:59',
+  'daylight-sky': '«{sky}» non è un cielo: uniforme, CIE coperto o CIE sereno',
+  'daylight-ground': 'la riflettanza del terreno deve essere almeno 0 e inferiore a 1 (ricevuto {value})',
+  'glazing-not-window': 'l’apertura {opening} non è una finestra ({kind}); solo una finestra ha una vetratura',
+  'window-glazing': 'la vetratura della finestra {opening} deve essere singola, doppia, tripla o una trasmittanza da 0 a 1 (ricevuto {value})',
+  daylightPlaceTwice: 'indicare una città o delle coordinate, non entrambe',
 } satisfies AreaMessages<typeof en>;

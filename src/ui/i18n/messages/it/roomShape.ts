@@ -35,4 +35,10 @@ export default {
   wallButton: 'Parete {wall}: {length} m',
   openingHandle: '{kind} nella parete {wall}: trascina lungo la parete, tocca per modificare',
   showLengths: 'Lunghezze delle pareti',
+  glazing: 'Vetratura',
+  glazingSingle: 'Singola (τ {tau})',
+  glazingDouble: 'Doppia (τ {tau})',
+  glazingTriple: 'Tripla (τ {tau})',
+  glazingNumber: 'Trasmittanza come numero',
+  transmittance: 'Trasmittanza τ (1 = aperta)',
 } satisfies AreaMessages<typeof en>;

@@ -1,0 +1,26 @@
+// The daylight panel's texts (issue 30, docs/daylight.md "The shopper's daylight"): English ships in its lazy chunk
+// (src/ui/planner/registerDaylightEnglish.ts), the other languages with their language chunks.
+export default {
+  on: 'Sky and sun through the windows',
+  noWindows: 'Add windows in the room shape to let daylight in.',
+  place: 'Place',
+  coordinates: 'Coordinates…',
+  latitude: 'Latitude (°, north +)',
+  longitude: 'Longitude (°, east +)',
+  timeZone: 'Time zone (h ahead of UTC)',
+  date: 'Date',
+  june: '21 June',
+  december: '21 December',
+  time: 'Time of day',
+  timeValue: '{time}',
+  sky: 'Sky',
+  skyClear: 'Clear with sun',
+  skyOvercast: 'Overcast',
+  skyUniform: 'Uniform (test)',
+  sunUp: 'Sun {elevation}° above the horizon, {azimuth}° from north',
+  sunDown: 'The sun is below the horizon: no daylight at this time',
+  sources: 'Show',
+  electric: 'Electric light',
+  daylight: 'Daylight',
+  both: 'Both',
+};
