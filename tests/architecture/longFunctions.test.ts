@@ -17,7 +17,6 @@ const ALLOWED: ReadonlyMap<string, string> = new Map([
   ['src/engines/relight/createGpuRelight.ts:createGpuRelight', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/core/gldf/gldfToModuleType.ts:gldfToModuleType', 'reads one format top to bottom: to be split by section of the format'],
   ['src/engines/view/createRoomObjects.ts:createRoomObjects', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
-  ['src/engines/relight/createRelightEngine.ts:createRelightEngine', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's (its solve cache is apart already)"],
   ['src/engines/view/createRoomSurfaces.ts:createRoomSurfaces', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/engines/view/createRoomHardware.ts:createRoomHardware', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/engines/bake/objects/rasterizeAtlas.ts:rasterizeAtlas', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
