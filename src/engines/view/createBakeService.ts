@@ -7,7 +7,7 @@ import { createStallWatch } from './service/createStallWatch';
 import { levelSettingsMemo } from './service/levelSettingsMemo';
 import { fadedWeights } from './service/serviceFade';
 import { lightEngine, litScene, reportError, type ServiceCore, type ServiceState } from './service/serviceCore';
-import { disposeService, restartService, serviceStatus, setServiceFade, setServiceOverlay, setServiceQuality, setServiceScene } from './service/serviceMethods';
+import { disposeService, restartService, serviceStatus, setServiceFade, setServiceLightSources, setServiceOverlay, setServiceQuality, setServiceScene } from './service/serviceMethods';
 import { watchUserInput } from './service/watchUserInput';
 
 export type { BakeEvent, BakeService, BakeServiceOptions, BakeStatus, VisibilitySource } from './bakeService';
@@ -43,7 +43,7 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
   const quality = options.quality ?? 'balanced';
   // The state first: the context reports a failure to make its engine while it is created.
   const lowMemory = options.lowMemory ?? lowMemoryDevice();
-  const state: ServiceState = { quality, scene: null, overlay: null, fade: null, error: null, disposed: false, prepared: null, trimmedAt: -1, lowMemory, emit, listeners, levelSettings, prepareFor: createObjectsMemo() };
+  const state: ServiceState = { quality, scene: null, overlay: null, fade: null, lightSources: 'both', error: null, disposed: false, prepared: null, trimmedAt: -1, lowMemory, emit, listeners, levelSettings, prepareFor: createObjectsMemo() };
   const context = createBakeContext(
     {
       onLost: () => emit({ type: 'context', state: 'lost' }),
@@ -88,6 +88,10 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
     luminaireWeights: () => (c.scene ? fadedWeights(litScene(c, c.scene), c.fade) : null),
     setOverlay: (next) => setServiceOverlay(c, next),
     setFade: (next) => setServiceFade(c, next),
+    setLightSources: (sources) => setServiceLightSources(c, sources),
+    get lightSources() {
+      return c.lightSources;
+    },
     setQuality: (level) => setServiceQuality(c, level),
     get quality() {
       return c.quality;
