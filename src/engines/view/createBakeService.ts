@@ -43,7 +43,22 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
   const quality = options.quality ?? 'balanced';
   // The state first: the context reports a failure to make its engine while it is created.
   const lowMemory = options.lowMemory ?? lowMemoryDevice();
-  const state: ServiceState = { quality, scene: null, overlay: null, fade: null, lightSources: 'both', error: null, disposed: false, prepared: null, trimmedAt: -1, lowMemory, emit, listeners, levelSettings, prepareFor: createObjectsMemo() };
+  const state: ServiceState = {
+    quality,
+    scene: null,
+    overlay: null,
+    fade: null,
+    lightSources: 'both',
+    error: null,
+    disposed: false,
+    prepared: null,
+    trimmedAt: -1,
+    lowMemory,
+    emit,
+    listeners,
+    levelSettings,
+    prepareFor: createObjectsMemo(),
+  };
   const context = createBakeContext(
     {
       onLost: () => emit({ type: 'context', state: 'lost' }),
