@@ -1,4 +1,6 @@
 import * as THREE from 'three';
+import { createWindowPanes } from './createWindowPanes';
+import type { BakeDaylight } from '../bake/daylight/bakeDaylight';
 import type { Mat3 } from './colourMatrices';
 import { SURFACE_NAMES, type Rgb, type SurfaceName, type Vec3 } from '../../core/model/lightingScene/lightingScene';
 import type { LitMaps } from '../relight/relightMaps';
@@ -38,6 +40,8 @@ export interface RoomView {
   setObjects(prepared: PreparedObjects | null): void;
   /** A room of any shape (null: the box): its own surfaces are drawn from the atlas, the box's hidden (shapedRoomView.ts). */
   setRoomShape(shape: ShapedRoom | null): void;
+  /** A shaped room's window panes and what they show: the scene's daylight, or null for the night sky (createWindowPanes.ts). */
+  setWindows(shape: ShapedRoom | null, daylight: BakeDaylight | null, glazing: BakeDaylight['glazing']): void;
   /** The objects' relit light (null: not yet, they stay hidden). */
   setObjectLight(light: ObjectLight | null): void;
   /** Highlight an object by id (null: none). */
@@ -93,6 +97,8 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
   scene.add(hardware.group);
   const objects = createRoomObjects(surfaces.display, renderer);
   scene.add(objects.group);
+  const windows = createWindowPanes(surfaces.display);
+  scene.add(windows.group);
   const raycaster = new THREE.Raycaster();
   return {
     scene,
@@ -117,6 +123,7 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
     setModuleWeights: hardware.setModuleWeights,
     setObjects: objects.setGeometry,
     setRoomShape: (shape) => applyRoomShape(objects, shape),
+    setWindows: windows.set,
     setObjectLight: objects.setLight,
     setSelectedObject: objects.setSelected,
     setSelectedModule: hardware.setSelectedModule,
@@ -184,6 +191,7 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
       glare.finish(renderer, camera.fov / bufferSize.y, null);
     },
     dispose() {
+      windows.dispose();
       glare?.dispose();
       hardware.dispose();
       objects.dispose();

@@ -3,6 +3,7 @@ import type { AdaptationSetting } from '../adaptationSetting';
 import type { CameraPresetName } from '../cameraPresets';
 import type { ViewMode } from '../roomView';
 import { syncGlare, type Viewer } from './viewer';
+import { syncWindows } from './viewerSceneApi';
 
 /** The viewer controller's methods for how it is shown: exposure, adaptation, mode, glare, camera, size, on or off screen. */
 export function viewerDisplayApi(v: Viewer) {
@@ -41,6 +42,7 @@ export function viewerDisplayApi(v: Viewer) {
      */
     setLightSources(sources: LightSources) {
       v.service.setLightSources(sources);
+      syncWindows(v);
     },
     lightSources(): LightSources {
       return v.service.lightSources;
