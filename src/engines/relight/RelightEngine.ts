@@ -88,8 +88,9 @@ export interface RelightEngine {
   setFade(fade: EngineFade | null): void;
   /**
    * Which light the maps show (docs/daylight.md, "Daylight in the relight engine"): 'electric' (the
-   * luminaire groups), 'daylight' (the sky and sun bases) or 'both' (default). Weights only: no
-   * basis is rebaked; the indirect light is re-solved for the new weights (Φ-scaled meanwhile, or
+   * luminaire groups), 'daylight' (the sky and sun bases), 'both' (default) or 'daylight-factor'
+   * (the windows under the CIE overcast sky of DAYLIGHT_FACTOR_SKY_ILLUMINANCE alone: lux / 100 is
+   * the DF in %; its basis is baked when first asked for). Otherwise weights only: no basis is rebaked; the indirect light is re-solved for the new weights (Φ-scaled meanwhile, or
    * at once from the solution cache when that choice was solved before). Throws on another value.
    */
   setLightSources(sources: LightSources): void;

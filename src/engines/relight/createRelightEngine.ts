@@ -75,6 +75,7 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
     solver: createIndirectSolver(cache, settings),
     bases: basisQueue(baker, settings, () => st),
     counters: { groupBakes: 0, daylightBakes: 0, relightsOnly: 0, relights: 0, indirectSolves: 0 },
+    given: null,
     scene: null,
     room: '',
     layouts: [],
@@ -100,7 +101,13 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
     setLightSources(sources) {
       if (!LIGHT_SOURCES.includes(sources)) throw new Error(`setLightSources: '${String(sources)}' is not one of ${LIGHT_SOURCES.join(', ')}`);
       if (sources === st.sources) return;
+      const factorChanges = (sources === 'daylight-factor') !== (st.sources === 'daylight-factor');
       st.sources = sources;
+      // The daylight factor's overcast basis joins or leaves the groups: the scene again (no other basis changes).
+      if (factorChanges && st.given) {
+        setEngineScene(st, st.given);
+        return;
+      }
       // The solve under way is for the weights shown before; the cached solves of each choice stay.
       st.solver.dropUnless(targetKey(st));
       st.version++;

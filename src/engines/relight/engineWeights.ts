@@ -23,10 +23,14 @@ export const electricOrderKeys = (order: readonly GroupState[]): string =>
 /**
  * A group's weight with the luminaires of `luminaires` under the sources shown: a luminaire group
  * Σ dimming·colour of its members, a daylight group 1 (its basis is the daylight itself); 0 for
- * the light the sources leave out ('electric': daylight off, 'daylight': luminaires off).
+ * the light the sources leave out ('electric': daylight off, 'daylight': luminaires off,
+ * 'daylight-factor': everything but the overcast basis off).
  */
 function sourceWeight(st: RelightEngineState, s: GroupState, luminaires: BakeScene['luminaires']): Rgb {
-  if (s.group.daylight) return st.sources === 'electric' ? OFF : WHITE;
+  const daylight = s.group.daylight;
+  // The daylight factor's overcast basis alone, or never.
+  if (st.sources === 'daylight-factor') return daylight?.kind === 'overcast' ? WHITE : OFF;
+  if (daylight) return st.sources === 'electric' || daylight.kind === 'overcast' ? OFF : WHITE;
   return st.sources === 'daylight' ? OFF : groupWeight(s.group, luminaires);
 }
 

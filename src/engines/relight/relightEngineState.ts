@@ -23,6 +23,8 @@ export interface RelightEngineState {
   readonly cache: SolutionCache;
   readonly solver: IndirectSolver;
   readonly bases: DirectBasisQueue;
+  /** The scene as last given (setLightSources sets it again when the daylight factor's basis comes or goes). */
+  given: BakeScene | null;
   /** The scene as baked (a shaped room enclosed). */
   scene: BakeScene | null;
   /** The room's and objects' key: another one drops every basis. */

@@ -43,7 +43,8 @@ export function setEngineScene(st: RelightEngineState, given: BakeScene): SetSce
   if (nextRoom !== st.room) changeRoom(st, next, nextRoom);
   st.scene = next;
   const electric = groupLuminaires(next.luminaires);
-  const groups = [...electric, ...daylightGroups(given, next)];
+  st.given = given;
+  const groups = [...electric, ...daylightGroups(given, next, st.sources === 'daylight-factor')];
   const reconciled = reconcileGroups(st.states, groups);
   st.states = reconciled.states;
   st.order = reconciled.order;

@@ -55,8 +55,8 @@ export interface BakeService {
   setFade(fade: ServiceFade | null): void;
   /**
    * Which light the view shows (issue 30, docs/daylight.md "Daylight in the relight engine"):
-   * 'electric' (the luminaires), 'daylight' (the sky and the sun through the windows) or 'both'
-   * (default). Weights of the engine's bases: never a bake; kept across quality changes and a
+   * 'electric' (the luminaires), 'daylight' (the sky and the sun through the windows), 'both'
+   * (default) or 'daylight-factor' (the windows under a 10 klx CIE overcast sky: lux / 100 = DF %). Weights of the engine's bases: never a bake; kept across quality changes and a
    * restored context. Throws on another value.
    */
   setLightSources(sources: LightSources): void;

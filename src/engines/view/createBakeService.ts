@@ -95,6 +95,24 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
   const c: ServiceCore = Object.assign(state, { context, slicer, stall: createStallWatch(STALL_SLICES), userInput });
   const stopVisibility = followVisibility(c, visibility);
 
+  return serviceApi(c, listeners, stopVisibility);
+}
+
+/** The slicer pauses while the page is hidden (and says so); returns the stop. */
+function followVisibility(c: ServiceCore, visibility: BakeServiceOptions['visibility']): () => void {
+  if (!visibility) return () => undefined;
+  const onVisibility = () => {
+    c.slicer.setPaused(visibility.hidden);
+    c.emit({ type: 'status' });
+  };
+  visibility.addEventListener('visibilitychange', onVisibility);
+  c.slicer.setPaused(visibility.hidden);
+  return () => visibility.removeEventListener('visibilitychange', onVisibility);
+}
+
+/** The service's methods over its core (what createBakeService returns). */
+function serviceApi(c: ServiceCore, listeners: Set<(event: BakeEvent) => void>, stopVisibility: () => void): BakeService {
+  const context = c.context;
   return {
     setScene: (next) => setServiceScene(c, next),
     get scene() {
@@ -125,16 +143,4 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
     },
     dispose: () => disposeService(c, stopVisibility),
   };
-}
-
-/** The slicer pauses while the page is hidden (and says so); returns the stop. */
-function followVisibility(c: ServiceCore, visibility: BakeServiceOptions['visibility']): () => void {
-  if (!visibility) return () => undefined;
-  const onVisibility = () => {
-    c.slicer.setPaused(visibility.hidden);
-    c.emit({ type: 'status' });
-  };
-  visibility.addEventListener('visibilitychange', onVisibility);
-  c.slicer.setPaused(visibility.hidden);
-  return () => visibility.removeEventListener('visibilitychange', onVisibility);
 }

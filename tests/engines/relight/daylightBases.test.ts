@@ -6,7 +6,8 @@
  */
 import { afterAll, describe, expect, it } from 'vitest';
 import { glazingFrom } from '../../../src/core/daylight/glazing';
-import { cieGeneralSky, CIE_CLEAR_SKY_TYPE, groundLuminance } from '../../../src/core/daylight/skies';
+import { DAYLIGHT_FACTOR_SKY_ILLUMINANCE } from '../../../src/core/daylight/daylightFactor';
+import { cieGeneralSky, cieOvercastSky, CIE_CLEAR_SKY_TYPE, groundLuminance } from '../../../src/core/daylight/skies';
 import { sunDirection } from '../../../src/core/daylight/solarPosition';
 import { SURFACE_NAMES, type Vec3 } from '../../../src/core/model/lightingScene/lightingScene';
 import type { BakeScene } from '../../../src/engines/bake/bakeScene';
@@ -191,6 +192,31 @@ describe('daylight as relight bases', () => {
       }
     } finally {
       gpu.dispose();
+      engine.dispose();
+    }
+  });
+
+  it("the daylight factor's sources: one overcast basis baked on demand (no other), its maps the full bake under the CIE overcast sky of 10 klx", () => {
+    const engine = createRelightEngine(gl, SETTINGS);
+    try {
+      engine.setScene(sceneWith(noon));
+      engine.finish();
+      const before = { ...engine.counters };
+      engine.setLightSources('daylight-factor');
+      engine.finish();
+      expect(engine.counters).toMatchObject({ groupBakes: before.groupBakes, daylightBakes: before.daylightBakes + 1 });
+      expect(engine.relightParts()!.parts.filter((p) => p.weight.some((w) => w > 0))).toHaveLength(1);
+      // The same windows and ground (ρ_g 0.2) under the overcast sky, no lamp, no sun: the report's daylight-factor bake.
+      const overcast: BakeDaylight = { sky: cieOvercastSky(DAYLIGHT_FACTOR_SKY_ILLUMINANCE), sun: null, groundLuminance: groundLuminance(DAYLIGHT_FACTOR_SKY_ILLUMINANCE, 0, 0.2), glazing };
+      const { peak, direct, total } = compareWithBake(engine.maps(), baker.bake({ room, luminaires: [], daylight: overcast }, SETTINGS).maps);
+      console.log(`daylight factor basis vs the overcast bake: |Δ direct| ${direct.toExponential(2)}, |Δ total| ${total.toExponential(2)} of peak ${peak.toFixed(1)} lx (DF ${(peak / 100).toFixed(1)} %)`);
+      expect(peak).toBeGreaterThan(100);
+      expect(total).toBeLessThanOrEqual(1e-4 * peak);
+      // Back to the scene's light: the overcast basis leaves, nothing is baked, the cached solve shows at once.
+      engine.setLightSources('both');
+      expect(engine.progress.done).toBe(true);
+      expect(engine.counters).toMatchObject({ groupBakes: before.groupBakes, daylightBakes: before.daylightBakes + 1 });
+    } finally {
       engine.dispose();
     }
   });

@@ -36,8 +36,8 @@ export function viewerDisplayApi(v: Viewer) {
       return v.maps.held();
     },
     /**
-     * Which light the view shows: 'electric', 'daylight' (the sky and the sun through the windows)
-     * or 'both' (issue 30, docs/daylight.md "Daylight in the relight engine"). The bake service's
+     * Which light the view shows: 'electric', 'daylight' (the sky and the sun through the windows),
+     * 'both' or 'daylight-factor' (lux / 100 = DF %) (issue 30, docs/daylight.md "Daylight in the relight engine"). The bake service's
      * engine re-weights its bases (never a bake); the view draws the relight it announces.
      */
     setLightSources(sources: LightSources) {
