@@ -13,7 +13,6 @@ const ALLOWED: ReadonlyMap<string, string> = new Map([
   ['src/core/model/validation/systemOwnProblems.ts:computeOwnProblems', 'another helper is editing systemOwnProblems today; split after that merge'],
   ['src/core/room/roomProblems.ts:roomProblems', 'the version-3 room rules (issue 29), one after another: to be split by rule kind'],
   ['src/core/gldf/gldfToModuleType.ts:gldfToModuleType', 'reads one format top to bottom: to be split by section of the format'],
-  ['src/engines/relight/createRelightEngine.ts:createRelightEngine', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's (its solve cache is apart already)"],
   ['src/engines/view/createRoomSurfaces.ts:createRoomSurfaces', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/engines/bake/objects/rasterizeAtlas.ts:rasterizeAtlas', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
   ['src/hosts/bench/runBench.ts:runBench', "a command's steps in order: to be split into named steps, as startBakeJob was"],

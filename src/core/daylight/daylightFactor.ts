@@ -1,3 +1,6 @@
+/** Outdoor horizontal illuminance of the overcast sky a daylight factor is computed under, lux (a DF does not depend on it; the report and the 3D view bake at this one). */
+export const DAYLIGHT_FACTOR_SKY_ILLUMINANCE = 10_000;
+
 /**
  * The daylight factor and its statistics. DF = 100 % × E_inside / E_outside, with E_outside the
  * horizontal illuminance on an unobstructed plane under the same (CIE standard overcast) sky

@@ -47,6 +47,11 @@ export interface UiState {
   expertSwitch: boolean;
   /** The plan's room-shape mode (issue 29, docs/planner.md "Rooms of any shape"): corner handles, wall lengths, the edit sheet. */
   roomEdit: boolean;
+  /**
+   * Which light the 3D view shows (issue 30, docs/daylight.md "The shopper's daylight"): the
+   * luminaires, the daylight through the windows, or both (the relight engine's weights, no bake).
+   */
+  lightSources: 'electric' | 'daylight' | 'both';
 }
 
 /** The brand in the configurator's header (docs/embedding.md, option `brand`). */
@@ -81,6 +86,7 @@ export function createUiStore(initial: Partial<UiState> = {}): UiStore {
     expert: false,
     expertSwitch: false,
     roomEdit: false,
+    lightSources: 'both',
     ...initial,
   }));
   // One rule for every way a drawer closes (its toggle, a tap beside it, an action that closes it

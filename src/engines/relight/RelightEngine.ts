@@ -4,6 +4,7 @@ import type { SurfaceName } from '../../core/model/lightingScene/lightingScene';
 import type { ObjectAtlas } from '../bake/objects/preparedObjects';
 import type { SurfaceLayout } from '../bake/surfaceLayout';
 import type { IndirectTerm, LitMaps, WeightedBasis } from './relightMaps';
+import type { LightSources } from './daylightGroups';
 
 export interface EngineProgress {
   /** Groups whose direct basis is baked. */
@@ -20,8 +21,10 @@ export interface EngineProgress {
 }
 
 export interface EngineCounters {
-  /** Direct bases baked (a new or moved group counts once), since the engine was made. */
+  /** Direct bases of luminaire groups baked (a new or moved group counts once), since the engine was made. */
   groupBakes: number;
+  /** Direct bases of daylight baked (the sky's and the sun's: a new time of day, date or sky counts each once), since the engine was made. */
+  daylightBakes: number;
   /** Scene updates that needed no group bake (dimming, colour, on/off, removed groups only). */
   relightsOnly: number;
   /** Weighted sums computed. */
@@ -46,8 +49,10 @@ export interface RelightParts {
 }
 
 export interface SetSceneResult {
-  /** Groups whose direct basis will be (re)baked. */
+  /** Groups whose direct basis will be (re)baked (luminaire and daylight groups). */
   bake: number;
+  /** Of those, the daylight groups (the sky, the sun); present only when the scene has daylight groups. */
+  daylightBake?: number;
   /** Groups whose basis was kept. */
   reused: number;
 }
@@ -62,7 +67,7 @@ export interface EngineFade {
 
 /**
  * Relighting by one shared indirect solve (docs/viewer.md, "Relighting without rebaking"). Each
- * luminaire group gets a direct basis only (direct maps at unit weight, no bounces); the
+ * luminaire group, and the daylight's sky and sun (daylightGroups.ts), gets a direct basis only (direct maps at unit weight, no bounces); the
  * indirect light of the whole scene is one solve from Σ_g w_g · direct_g (the gather reads only
  * the direct maps, and it is linear in them). A change of dimming or colour, or an added, moved
  * or removed group, shows the exact direct light at once and the last solve's indirect light
@@ -81,6 +86,15 @@ export interface RelightEngine {
    * the fade) are ever solved. Throws when `from` has other luminaires than the scene.
    */
   setFade(fade: EngineFade | null): void;
+  /**
+   * Which light the maps show (docs/daylight.md, "Daylight in the relight engine"): 'electric' (the
+   * luminaire groups), 'daylight' (the sky and sun bases), 'both' (default) or 'daylight-factor'
+   * (the windows under the CIE overcast sky of DAYLIGHT_FACTOR_SKY_ILLUMINANCE alone: lux / 100 is
+   * the DF in %; its basis is baked when first asked for). Otherwise weights only: no basis is rebaked; the indirect light is re-solved for the new weights (Φ-scaled meanwhile, or
+   * at once from the solution cache when that choice was solved before). Throws on another value.
+   */
+  setLightSources(sources: LightSources): void;
+  readonly lightSources: LightSources;
   /**
    * Advance pending work by one direct basis or up to `samples` indirect samples per texel; returns the progress.
    * With `preview` (default) the first solve of a room is read back and shown at most every PREVIEW_MS

@@ -3,6 +3,7 @@ import type { BakeSettings } from '../bake/bakeSettings';
 import type { BakeJob, Baker, DirectMaps } from '../bake/createBaker';
 import type { GroupState } from './groupState';
 import type { LuminaireGroup } from './luminaireGroups';
+import { startDaylightBasisJob } from './startDaylightBasisJob';
 
 /** The direct bases still to bake, one group at a time in two steps (issue, then read back). */
 export interface DirectBasisQueue {
@@ -27,10 +28,11 @@ export function groupScene(scene: BakeScene, group: LuminaireGroup): BakeScene {
  * the GPU work (draws return at once: in a browser the GPU process runs them), the second reads the
  * maps back. The caller's slicer fences between steps (createBakeSlicer), so the read-back finds
  * the work done instead of blocking the page while a software GPU runs a furnished room's
- * shadowed direct passes (seconds on SwiftShader). `onStart` counts each basis started;
+ * shadowed direct passes (seconds on SwiftShader). A daylight group (daylightGroups.ts) computes
+ * its direct daylight on the CPU in the first step (startDaylightBasisJob.ts). `onStart` counts each basis started;
  * `onBasis` receives the maps of a group that still wants them.
  */
-export function createDirectBasisQueue(baker: Baker, basisSettings: BakeSettings, onStart: () => void, onBasis: (state: GroupState, direct: DirectMaps) => void): DirectBasisQueue {
+export function createDirectBasisQueue(baker: Baker, basisSettings: BakeSettings, onStart: (group: LuminaireGroup) => void, onBasis: (state: GroupState, direct: DirectMaps) => void): DirectBasisQueue {
   /** A direct basis whose passes are issued but not read back yet. */
   let pending: { key: string; job: BakeJob } | null = null;
   const drop = () => {
@@ -55,8 +57,9 @@ export function createDirectBasisQueue(baker: Baker, basisSettings: BakeSettings
       }
       const st = order.find((s) => !s.basis);
       if (!st) return false;
-      onStart();
-      const job = baker.start(groupScene(scene, st.group), basisSettings);
+      onStart(st.group);
+      const { daylight } = st.group;
+      const job = daylight ? startDaylightBasisJob(baker, scene, daylight, basisSettings) : baker.start(groupScene(scene, st.group), basisSettings);
       try {
         // Everything up to the read-back (objects: chart dilation of the atlas) is issued now.
         job.finalize();

@@ -1,6 +1,7 @@
 import type { BakeLuminaire, BakeScene } from '../bake/bakeScene';
 import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 import type { Photometry } from '../../core/photometry/types';
+import type { DaylightPart } from './daylightGroups';
 
 /**
  * A relighting group: luminaires that share photometry, position set and
@@ -20,6 +21,8 @@ export interface LuminaireGroup {
   members: number[];
   /** The group's luminaires at unit dimming and white colour: what its basis is baked from. */
   basis: BakeLuminaire[];
+  /** A daylight group (daylightGroups.ts: the sky or the sun through the windows; no members, no luminaires). */
+  daylight?: DaylightPart;
 }
 
 const photometryIds = new WeakMap<Photometry, number>();

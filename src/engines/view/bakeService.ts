@@ -3,6 +3,7 @@ import type { Rgb } from '../../core/model/lightingScene/lightingScene';
 import type { PreparedObjects } from '../bake/objects/preparedObjects';
 import type { EngineProgress, RelightEngine } from '../relight/RelightEngine';
 import type { QualityLevel } from '../relight/qualityLevels';
+import type { LightSources } from '../relight/daylightGroups';
 import type { BakeCanvas } from './createBakeContext';
 import type { GpuFence } from './createBakeSlicer';
 import type { ServiceFade } from './service/serviceFade';
@@ -52,6 +53,14 @@ export interface BakeService {
    * in the same frame.
    */
   setFade(fade: ServiceFade | null): void;
+  /**
+   * Which light the view shows (issue 30, docs/daylight.md "Daylight in the relight engine"):
+   * 'electric' (the luminaires), 'daylight' (the sky and the sun through the windows), 'both'
+   * (default) or 'daylight-factor' (the windows under a 10 klx CIE overcast sky: lux / 100 = DF %). Weights of the engine's bases: never a bake; kept across quality changes and a
+   * restored context. Throws on another value.
+   */
+  setLightSources(sources: LightSources): void;
+  readonly lightSources: LightSources;
   /**
    * Each luminaire's weight (dimming × colour, linear RGB) in the light shown now: the scene with the
    * overlay and, during a crossfade, (1 − e)·from + e·scene, as the engine mixes the bases. Null: no scene.

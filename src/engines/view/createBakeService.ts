@@ -7,7 +7,7 @@ import { createStallWatch } from './service/createStallWatch';
 import { levelSettingsMemo } from './service/levelSettingsMemo';
 import { fadedWeights } from './service/serviceFade';
 import { lightEngine, litScene, reportError, type ServiceCore, type ServiceState } from './service/serviceCore';
-import { disposeService, restartService, serviceStatus, setServiceFade, setServiceOverlay, setServiceQuality, setServiceScene } from './service/serviceMethods';
+import { disposeService, restartService, serviceStatus, setServiceFade, setServiceLightSources, setServiceOverlay, setServiceQuality, setServiceScene } from './service/serviceMethods';
 import { watchUserInput } from './service/watchUserInput';
 
 export type { BakeEvent, BakeService, BakeServiceOptions, BakeStatus, VisibilitySource } from './bakeService';
@@ -43,7 +43,22 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
   const quality = options.quality ?? 'balanced';
   // The state first: the context reports a failure to make its engine while it is created.
   const lowMemory = options.lowMemory ?? lowMemoryDevice();
-  const state: ServiceState = { quality, scene: null, overlay: null, fade: null, error: null, disposed: false, prepared: null, trimmedAt: -1, lowMemory, emit, listeners, levelSettings, prepareFor: createObjectsMemo() };
+  const state: ServiceState = {
+    quality,
+    scene: null,
+    overlay: null,
+    fade: null,
+    lightSources: 'both',
+    error: null,
+    disposed: false,
+    prepared: null,
+    trimmedAt: -1,
+    lowMemory,
+    emit,
+    listeners,
+    levelSettings,
+    prepareFor: createObjectsMemo(),
+  };
   const context = createBakeContext(
     {
       onLost: () => emit({ type: 'context', state: 'lost' }),
@@ -80,6 +95,24 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
   const c: ServiceCore = Object.assign(state, { context, slicer, stall: createStallWatch(STALL_SLICES), userInput });
   const stopVisibility = followVisibility(c, visibility);
 
+  return serviceApi(c, listeners, stopVisibility);
+}
+
+/** The slicer pauses while the page is hidden (and says so); returns the stop. */
+function followVisibility(c: ServiceCore, visibility: BakeServiceOptions['visibility']): () => void {
+  if (!visibility) return () => undefined;
+  const onVisibility = () => {
+    c.slicer.setPaused(visibility.hidden);
+    c.emit({ type: 'status' });
+  };
+  visibility.addEventListener('visibilitychange', onVisibility);
+  c.slicer.setPaused(visibility.hidden);
+  return () => visibility.removeEventListener('visibilitychange', onVisibility);
+}
+
+/** The service's methods over its core (what createBakeService returns). */
+function serviceApi(c: ServiceCore, listeners: Set<(event: BakeEvent) => void>, stopVisibility: () => void): BakeService {
+  const context = c.context;
   return {
     setScene: (next) => setServiceScene(c, next),
     get scene() {
@@ -88,6 +121,10 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
     luminaireWeights: () => (c.scene ? fadedWeights(litScene(c, c.scene), c.fade) : null),
     setOverlay: (next) => setServiceOverlay(c, next),
     setFade: (next) => setServiceFade(c, next),
+    setLightSources: (sources) => setServiceLightSources(c, sources),
+    get lightSources() {
+      return c.lightSources;
+    },
     setQuality: (level) => setServiceQuality(c, level),
     get quality() {
       return c.quality;
@@ -106,16 +143,4 @@ export function createBakeService(options: BakeServiceOptions = {}): BakeService
     },
     dispose: () => disposeService(c, stopVisibility),
   };
-}
-
-/** The slicer pauses while the page is hidden (and says so); returns the stop. */
-function followVisibility(c: ServiceCore, visibility: BakeServiceOptions['visibility']): () => void {
-  if (!visibility) return () => undefined;
-  const onVisibility = () => {
-    c.slicer.setPaused(visibility.hidden);
-    c.emit({ type: 'status' });
-  };
-  visibility.addEventListener('visibilitychange', onVisibility);
-  c.slicer.setPaused(visibility.hidden);
-  return () => visibility.removeEventListener('visibilitychange', onVisibility);
 }

@@ -1,4 +1,6 @@
 import * as THREE from 'three';
+import { createWindowPanes } from './createWindowPanes';
+import type { BakeDaylight } from '../bake/daylight/bakeDaylight';
 import type { Mat3 } from './colourMatrices';
 import { SURFACE_NAMES, type Rgb, type SurfaceName, type Vec3 } from '../../core/model/lightingScene/lightingScene';
 import type { LitMaps } from '../relight/relightMaps';
@@ -38,6 +40,8 @@ export interface RoomView {
   setObjects(prepared: PreparedObjects | null): void;
   /** A room of any shape (null: the box): its own surfaces are drawn from the atlas, the box's hidden (shapedRoomView.ts). */
   setRoomShape(shape: ShapedRoom | null): void;
+  /** A shaped room's window panes and what they show: the scene's daylight, or null for the night sky (createWindowPanes.ts). */
+  setWindows(shape: ShapedRoom | null, daylight: BakeDaylight | null, glazing: BakeDaylight['glazing']): void;
   /** The objects' relit light (null: not yet, they stay hidden). */
   setObjectLight(light: ObjectLight | null): void;
   /** Highlight an object by id (null: none). */
@@ -116,6 +120,8 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
   scene.add(hardware.group);
   const objects = createRoomObjects(surfaces.display, renderer);
   scene.add(objects.group);
+  const windows = createWindowPanes(surfaces.display);
+  scene.add(windows.group);
   return {
     scene,
     camera,
@@ -139,6 +145,7 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
     setModuleWeights: hardware.setModuleWeights,
     setObjects: objects.setGeometry,
     setRoomShape: (shape) => applyRoomShape(objects, shape),
+    setWindows: windows.set,
     setObjectLight: objects.setLight,
     setSelectedObject: objects.setSelected,
     setSelectedModule: hardware.setSelectedModule,
@@ -158,6 +165,7 @@ export function createRoomView(renderer: THREE.WebGLRenderer): RoomView {
     materialsKey: () => materialsKey(scene),
     compileAsync: drawing.compileAsync,
     dispose() {
+      windows.dispose();
       drawing.dispose();
       hardware.dispose();
       objects.dispose();

@@ -7,6 +7,7 @@
  * luminaires is baked once more without them, and once more under the overcast sky unless its
  * own sky is that sky without a sun.
  */
+import { DAYLIGHT_FACTOR_SKY_ILLUMINANCE } from '../../core/daylight/daylightFactor';
 import { daylightFactorStatistics, type DaylightFactorStatistics } from '../../core/daylight/daylightFactor';
 import type { LightingScene, Vec3 } from '../../core/model/lightingScene/lightingScene';
 import type { SceneSky } from '../../core/model/lightingScene/parseDaylight';
@@ -22,9 +23,6 @@ import { WALL_BAND, WORK_PLANE_HEIGHT, WORK_PLANE_SPACING, workPlaneIlluminance,
 import { createObjectRayCaster } from '../../engines/bake/objects/createObjectRayCaster';
 import { prepareObjectsCached } from '../../engines/bake/objects/prepareObjectsCached';
 import { encloseShapedRoom } from '../../engines/bake/shapedRoom/encloseShapedRoom';
-
-/** Outdoor horizontal illuminance of the daylight factor's overcast sky, lux (a DF does not depend on it). */
-const DF_SKY_ILLUMINANCE = 10_000;
 
 type Bake = (scene: BakeScene) => { maps: BakedMaps; report: BakeReport };
 
@@ -64,7 +62,7 @@ export function daylightReport(scene: LightingScene, bakeScene: BakeScene, maps:
   if (!own || !sky || !bakeScene.room.shape || !report.daylight) return null;
   const daylightOnly = bakeScene.luminaires.length === 0 ? maps : bake({ ...bakeScene, luminaires: [] }).maps;
   const plane = workPlane(bakeScene, daylightOnly, own.daylight, settings);
-  const overcastSky: SceneSky = { type: 'cie-overcast', horizontalIlluminance: DF_SKY_ILLUMINANCE, groundReflectance: sky.groundReflectance };
+  const overcastSky: SceneSky = { type: 'cie-overcast', horizontalIlluminance: DAYLIGHT_FACTOR_SKY_ILLUMINANCE, groundReflectance: sky.groundReflectance };
   const ownIsOvercast = sky.type === 'cie-overcast';
   const overcast = ownIsOvercast ? own : bakeDaylightFor(overcastSky, scene);
   const overcastMaps = ownIsOvercast ? daylightOnly : bake({ ...bakeScene, luminaires: [], daylight: overcast.daylight }).maps;

@@ -23,4 +23,5 @@ export { DEFAULT_BAKE_SETTINGS, resolveBakeSettings, type BakeSettings } from '.
 export { luxOf, combineMaps, LUMINANCE_WEIGHTS, type BakedMaps, type SurfaceMaps, type ObjectMaps } from '../../engines/bake/bakedMaps';
 export { createRelightEngine, VIEWER_BAKE_SETTINGS } from '../../engines/relight/createRelightEngine';
 export type { RelightEngine, EngineProgress, EngineCounters, EngineFade, RelightParts, SetSceneResult } from '../../engines/relight/RelightEngine';
+export type { LightSources } from '../../engines/relight/daylightGroups';
 export type { TriangleMesh } from '../../core/mesh/triangleMesh';

@@ -116,7 +116,7 @@ export function Planner(props: PlannerProps) {
         <WorkArea className="stage">
           {u.mode === '2d' ? <PlanPane p={p} /> : null}
           {/* One place in the tree, so the view survives the 2D plan: kept hidden once opened (keep3d), shown again at the next toggle. */}
-          {(u.mode === '3d' || keep3d) && <LazyView3D store={store} loadPhotometry={footprints.loadPhotometry} onBack={() => ui.setState({ mode: '2d' })} visible={u.mode === '3d'} expert={u.expert} />}
+          {(u.mode === '3d' || keep3d) && <LazyView3D store={store} loadPhotometry={footprints.loadPhotometry} onBack={() => ui.setState({ mode: '2d' })} visible={u.mode === '3d'} expert={u.expert} lightSources={u.lightSources} />}
           <BottomBar controller={controller} mode={u.mode} />
         </WorkArea>
         {/* The veil beside the open drawer: a press there closes the drawer and goes on to what is under it (useDrawer). Keyboard users have the header's toggle. */}

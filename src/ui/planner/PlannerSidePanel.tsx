@@ -61,7 +61,7 @@ export function PlannerSidePanel({ p }: { p: PlannerScope }) {
       </FurniturePanel>
       <ScenePanel store={store} />
       <SurfacesPanel room={config.room} finishes={defaultSurfaceFinishes} gate={gate} onEditShape={() => ui.setState({ roomEdit: true, mode: '2d', panelOpen: false, optionsOpen: false })} />
-      <LazyDaylightSection config={config} gate={gate} />
+      <LazyDaylightSection config={config} gate={gate} lightSources={{ value: p.lightSources, set: (lightSources) => p.ui.setState({ lightSources }) }} />
       <BomPanel bom={p.bom} needs={p.needs} catalog={catalog} />
       <section className="panel-section">
         <div className="setup-actions">

@@ -21,6 +21,8 @@ export interface LazyView3DProps {
   visible?: boolean;
   /** Show the expert tools (DMX live control, the photometric files' data notes; docs/embedding.md, option `expert`). */
   expert?: boolean;
+  /** Which light the view shows: luminaires, daylight or both (the Daylight panel's buttons; default both). */
+  lightSources?: 'electric' | 'daylight' | 'both';
 }
 
 function Message({ text, onBack, testId }: { text: string; onBack: () => void; testId: string }) {
@@ -55,7 +57,7 @@ class ViewerBoundary extends Component<{ onBack: () => void; visible: boolean; c
 }
 
 /** What the 2D/3D toggle shows in 3D: a support check, then the lazily loaded viewer. */
-export function LazyView3D({ store, loadPhotometry, onBack, visible = true, expert = false }: LazyView3DProps) {
+export function LazyView3D({ store, loadPhotometry, onBack, visible = true, expert = false, lightSources = 'both' }: LazyView3DProps) {
   const { t } = useI18n();
   const issue = useMemo(() => webglSupportIssue(), []);
   if (issue) {
@@ -65,7 +67,7 @@ export function LazyView3D({ store, loadPhotometry, onBack, visible = true, expe
   return (
     <ViewerBoundary onBack={onBack} visible={visible}>
       <Suspense fallback={visible ? <Message text={t('viewer.loading')} onBack={onBack} testId="view3d-loading" /> : null}>
-        <View3D store={store} loadPhotometry={loadPhotometry} onBack={onBack} visible={visible} expert={expert} />
+        <View3D store={store} loadPhotometry={loadPhotometry} onBack={onBack} visible={visible} expert={expert} lightSources={lightSources} />
       </Suspense>
     </ViewerBoundary>
   );

@@ -1,4 +1,4 @@
-import { useMemo, useRef, useState } from 'react';
+import { useEffect, useMemo, useRef, useState } from 'react';
 import { useStore } from 'zustand';
 import type { Photometry } from '../../core/photometry/types';
 import type { BakeScene } from '../../engines/bake/bakeScene';
@@ -43,6 +43,8 @@ export interface View3DProps {
   visible?: boolean;
   /** Show the expert tools: DMX live control and the photometric files' data notes (docs/embedding.md, option `expert`). */
   expert?: boolean;
+  /** Which light the view shows (LazyView3D): the controller re-weights the engine's bases and redraws the window panes, no bake. */
+  lightSources?: 'electric' | 'daylight' | 'both';
 }
 
 /**
@@ -53,7 +55,7 @@ export interface View3DProps {
  * live in useViewerController, the status for hosts in useViewerStatus; the panel's parts are
  * components of their own.
  */
-export default function View3D({ store, loadPhotometry, onBack, visible = true, expert = false }: View3DProps) {
+export default function View3D({ store, loadPhotometry, onBack, visible = true, expert = false, lightSources = 'both' }: View3DProps) {
   const { t } = useI18n();
   const config = useStore(store, (s) => s.config);
   const host = useMemo(() => bakeHostFor(store, loadPhotometry), [store, loadPhotometry]);
@@ -90,6 +92,8 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true, 
   useViewerController({ feed, store, host, canvasRef, wrapRef, controllerRef: ctrl, sceneRef, litRef, glareRef, record, shown });
 
   useSelectionHighlight(ctrl, selection, feed);
+  // A new controller starts from the service's choice; the panel's choice wins (weights only, never a bake).
+  useEffect(() => ctrl.current?.setLightSources(lightSources), [lightSources, controllerVersion]);
   useWorkPlaneStats({ plane, mapsVersion, done: progress.done, sceneRef, litRef, controllerRef: ctrl, controllerVersion, setPlaneStats, publish });
 
   return (

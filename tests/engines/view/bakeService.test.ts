@@ -331,6 +331,38 @@ describe('createBakeService on a real engine (headless-gl)', () => {
     }
   });
 
+  it('light sources: the engine shows what the service was told (a relight, announced at once, no bake), also after a quality change', () => {
+    const page = fakePage();
+    const q = manualQueue(true);
+    const { s, dispose } = service(page, q);
+    const events: string[] = [];
+    s.subscribe((e) => events.push(e.type));
+    try {
+      s.setScene(scene);
+      q.drain();
+      const before = s.status();
+      events.length = 0;
+      s.setLightSources('daylight');
+      expect(events).toEqual(['slice']);
+      expect(s.lightSources).toBe('daylight');
+      expect(s.engine!.lightSources).toBe('daylight');
+      q.drain();
+      // No daylight in this scene: the luminaires are off, nothing is baked, the dark weights are solved at once (no light, no solve).
+      expect(s.status().groupBakes).toBe(before.groupBakes);
+      const lit = s.engine!.maps().maps.floor.total.reduce((a, b) => a + b, 0);
+      expect(lit).toBe(0);
+      expect(() => s.setLightSources('moon' as never)).toThrow(/not one of/);
+      expect(s.lightSources).toBe('daylight');
+      s.setQuality('balanced');
+      expect(s.engine!.lightSources).toBe('daylight');
+      s.setLightSources('both');
+      q.drain();
+      expect(s.engine!.maps().maps.floor.total.reduce((a, b) => a + b, 0)).toBeGreaterThan(0);
+    } finally {
+      dispose();
+    }
+  });
+
   it('on a low-memory device the baker pooled targets are freed once per finished bake, and the next bake still works', () => {
     for (const lowMemory of [true, false]) {
       const q = manualQueue(true);

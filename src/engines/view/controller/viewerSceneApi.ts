@@ -7,6 +7,14 @@ import { bakeCounters, showMaps, syncObjects, syncWeights } from './showViewerMa
 import { applyOverlay, syncSpotlight } from './viewerOverlay';
 import type { Viewer } from './viewer';
 
+/** The windows of the scene on screen: its daylight unless the view shows electric light only (then, as without daylight, the night sky). */
+export function syncWindows(v: Viewer): void {
+  const scene = v.scene;
+  const daylight = scene?.daylight && v.service.lightSources !== 'electric' ? scene.daylight : null;
+  v.view.setWindows(scene?.room.shape ?? null, daylight, scene?.daylight?.glazing ?? new Map());
+  v.frames.request();
+}
+
 /** The viewer controller's methods for what is shown: the scene, live levels, selection, the spotlight view, aim-at. */
 export function viewerSceneApi(v: Viewer) {
   return {
@@ -19,6 +27,7 @@ export function viewerSceneApi(v: Viewer) {
       v.compareView?.setFixtures(nextFixtures);
       v.view.setRoomShape(next.room.shape ?? null);
       v.compareView?.setRoomShape(next.room.shape ?? null);
+      syncWindows(v);
       syncWeights(v);
       syncObjects(v);
       v.camera.setScene(next);

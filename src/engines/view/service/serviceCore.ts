@@ -2,6 +2,7 @@ import type { BakeSettings } from '../../bake/bakeSettings';
 import type { BakeScene } from '../../bake/bakeScene';
 import type { PreparedObjects } from '../../bake/objects/preparedObjects';
 import type { RelightEngine } from '../../relight/RelightEngine';
+import type { LightSources } from '../../relight/daylightGroups';
 import type { QualityLevel } from '../../relight/qualityLevels';
 import type { BakeContext } from '../createBakeContext';
 import type { BakeSlicer } from '../createBakeSlicer';
@@ -19,6 +20,8 @@ export interface ServiceCore {
   /** Live control's levels over the scene (a relight), or null. */
   overlay: ((s: BakeScene) => BakeScene) | null;
   fade: ServiceFade | null;
+  /** Which light the engine shows (RelightEngine.setLightSources); kept for every engine the service makes. */
+  lightSources: LightSources;
   error: string | null;
   disposed: boolean;
   prepared: PreparedObjects | null;
@@ -47,6 +50,7 @@ export function litScene(c: ServiceCore, s: BakeScene): BakeScene {
 export function lightEngine(c: ServiceCore, engine: RelightEngine | null, s: BakeScene): void {
   if (!engine) return;
   const shown = litScene(c, s);
+  engine.setLightSources(c.lightSources);
   engine.setScene(shown);
   if (!c.fade) return;
   c.fade = applyFade(engine, shown, c.fade);

@@ -1,5 +1,6 @@
 import type { BakeScene } from '../../bake/bakeScene';
 import type { QualityLevel } from '../../relight/qualityLevels';
+import type { LightSources } from '../../relight/daylightGroups';
 import type { BakeStatus } from '../bakeService';
 import { applyFade, type ServiceFade } from './serviceFade';
 import { currentSettings, lightEngine, litScene, type ServiceCore } from './serviceCore';
@@ -32,6 +33,21 @@ export function setServiceFade(c: ServiceCore, next: ServiceFade | null): void {
   if (!c.fade) engine.setFade(null);
   else c.fade = applyFade(engine, litScene(c, c.scene), c.fade);
   // Drawn now (a relight), not after the input-quiet hold of bake work; the end state's solve, if new, is queued.
+  c.emit({ type: 'slice', engine, progress: engine.progress });
+  c.slicer.queue();
+}
+
+/**
+ * Which light is shown: 'electric', 'daylight' or 'both' (RelightEngine.setLightSources: weights,
+ * no basis rebaked); a relight announced as a slice at once, the re-solve (if new) queued.
+ */
+export function setServiceLightSources(c: ServiceCore, sources: LightSources): void {
+  if (c.disposed || sources === c.lightSources) return;
+  const engine = c.context.engine;
+  // The engine checks the value first (it throws on an unknown one), so the service never keeps a wrong one.
+  engine?.setLightSources(sources);
+  c.lightSources = sources;
+  if (!engine || !c.scene) return;
   c.emit({ type: 'slice', engine, progress: engine.progress });
   c.slicer.queue();
 }
