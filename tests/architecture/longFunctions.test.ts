@@ -21,14 +21,11 @@ const ALLOWED: ReadonlyMap<string, string> = new Map([
   ['src/engines/view/createRoomSurfaces.ts:createRoomSurfaces', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/engines/view/createRoomHardware.ts:createRoomHardware', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/engines/bake/objects/rasterizeAtlas.ts:rasterizeAtlas', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
-  ['src/hosts/bench/runBench.ts:runBench', "a command's steps in order: to be split into named steps, as startBakeJob was"],
   ['src/engines/view/createBakeSlicer.ts:createBakeSlicer', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/ui/planner/RoomShapeEditor.tsx:RoomShapeEditor', "a component whose markup is most of it (issue 29's editor, merged back): its bar and handles become components, as View3D's did"],
   ['src/ui/planner/RoomShapeEditor.tsx:Sheet', "a component whose markup is most of it (issue 29's edit sheet): its wall, corner and opening forms become components"],
   ['src/engines/view/roomView.ts:createRoomView', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's; shaped rooms (issue 29) add hooks to the viewer today"],
-  ['src/hosts/node/createProbe.ts:createProbe', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/core/gldf/exportGldfProduct.ts:exportGldfProduct', 'writes product.xml section by section: to be split by section'],
-  ['src/hosts/cli/renderCommand.ts:run', "a command's steps in order: to be split into named steps, as startBakeJob was"],
   ['src/ui/planner/PlanSvg.tsx:PlanSvg', "a component whose markup is most of it: its groups become components, as View3D's did"],
   ['src/engines/bake/objects/rasterizeAtlas.ts:<charts.forEach callback>', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
   ['src/engines/meshImport/collectTriangles.ts:collectTriangles', 'walks the loaded scene graph once: to be split by primitive kind'],
@@ -42,7 +39,6 @@ const ALLOWED: ReadonlyMap<string, string> = new Map([
   ['src/reference/pointSources.ts:referencePointSources', "the reference's luminaire expansion (cells, rotation, dimming, colour): to be split by step"],
   ['src/engines/bake/createBounceIteration.ts:createBounceIteration', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
   ['src/hosts/bench/furnishedBench.ts:runFurnishedBench', "a command's steps in order: to be split into named steps, as startBakeJob was"],
-  ['src/hosts/node/renderImage.ts:createRenderSession', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/engines/bake/profileTable.ts:buildProfileTable', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
 ]);
 
