@@ -43,7 +43,7 @@ export function withDaylightTime<T extends { scene: LightingScene; bakeScene: Ba
   if (!sky?.sun) throw new InputError(`${command}: ${flags}: ${file} has no sun to move (give its sky a "sun" with the place, date and time: docs/daylight.md)`);
   const json = skyJson(sky);
   const sun = { ...(json.sun as Record<string, unknown>), ...(when.date !== undefined ? { date: when.date } : {}), ...(when.time !== undefined ? { time: when.time } : {}) };
-  const moved = parseSky({ ...json, sun }, `${command} ${flags} (${file})`);
+  const moved = parseSky({ ...json, sun }, `${flags} (${file})`);
   const scene: LightingScene = { ...input.scene, daylight: { ...input.scene.daylight!, sky: moved } };
   const daylight = bakeDaylightOf(scene);
   return { ...input, scene, bakeScene: { ...input.bakeScene, ...(daylight ? { daylight: daylight.daylight } : {}) } };

@@ -99,8 +99,8 @@ describe('luxbox render with daylight', () => {
       write.mockRestore();
     }
     // A clear sky needs the sun above the horizon (the contract's own rule, read again).
-    await expect(run([SCENE, '--out', '/tmp/never.png', '--time', '23:30'])).rejects.toThrow(/render --time 23:30 \(daylight-room\.json\): sky\.sun\.time: the sun is below the horizon then \(elevation -\d+\.\d°\)/);
-    await expect(run([SCENE, '--out', '/tmp/never.png', '--date', '2026-02-30'])).rejects.toThrow(/render --date 2026-02-30 \(daylight-room\.json\): sky\.sun\.date: /);
+    await expect(run([SCENE, '--out', '/tmp/never.png', '--time', '23:30'])).rejects.toThrow(/^--time 23:30 \(daylight-room\.json\): sky\.sun\.time: the sun is below the horizon then \(elevation -\d+\.\d°\)/);
+    await expect(run([SCENE, '--out', '/tmp/never.png', '--date', '2026-02-30'])).rejects.toThrow(/^--date 2026-02-30 \(daylight-room\.json\): sky\.sun\.date: /);
     // A scene without a sun has nothing to move.
     await expect(run([join(ROOT, 'tests/fixtures/scenes/small-room.json'), '--out', '/tmp/never.png', '--time', '10:00'])).rejects.toThrow(/render: --time 10:00: small-room\.json has no sun to move/);
   });
