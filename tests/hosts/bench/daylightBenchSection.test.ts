@@ -9,7 +9,7 @@ const parts: DaylightBenchScenePart[] = DAYLIGHT_SCENES.map((scene, i) => ({
   scene,
   patches: 1000 + i,
   referenceMs: 5000,
-  rows: DAYLIGHT_LADDER.map((quality, k) => ({ scene: scene.name, quality, bakeMs: 100 * (k + 1), directMs: 10, points: 300, nearEdge: 5, directRms: 0.004, directMax: 0.01, totalRms: 0.015 + k / 1000, totalMax: 0.1 })),
+  rows: DAYLIGHT_LADDER.map((quality, k) => ({ scene: scene.name, quality, bakeMs: 100 * (k + 1), directMs: 10, points: 300, nearEdge: 5, sunEdge: 2, directRms: 0.004, directMax: 0.01, totalRms: 0.015 + k / 1000, totalMax: 0.1 })),
 }));
 
 describe('bench --daylight section', () => {
@@ -17,7 +17,7 @@ describe('bench --daylight section', () => {
     const section = daylightSection(parts, machine);
     const rows = section.split('\n').filter((l) => /^\| (box-overcast|box-sun|l-overcast) \|/.test(l));
     expect(rows).toHaveLength(DAYLIGHT_SCENES.length * DAYLIGHT_LADDER.length);
-    expect(rows[1]).toBe('| box-overcast | 0.1 m | 64 | 4 | 200 ms | 10 ms | 300 (5) | 0.40 % / 1.00 % | 1.60 % | 10.00 % |');
+    expect(rows[1]).toBe('| box-overcast | 0.1 m | 64 | 4 | 200 ms | 10 ms | 300 (5, 2) | 0.40 % / 1.00 % | 1.60 % | 10.00 % |');
     expect(section).toContain('Machine: Test CPU, 2 cores, 8 GiB');
     expect(section).toContain('2026-11-27 17:00 UTC');
     const doc = `# Benchmarks\n\nother text\n\n${DAYLIGHT_MARKERS[0]}\nold\n${DAYLIGHT_MARKERS[1]}\n\ntail\n`;
