@@ -15,10 +15,7 @@ const ALLOWED: ReadonlyMap<string, string> = new Map([
   ['src/core/gldf/gldfToModuleType.ts:gldfToModuleType', 'reads one format top to bottom: to be split by section of the format'],
   ['src/engines/view/createRoomSurfaces.ts:createRoomSurfaces', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/engines/bake/objects/rasterizeAtlas.ts:rasterizeAtlas', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
-  ['src/hosts/bench/runBench.ts:runBench', "a command's steps in order: to be split into named steps, as startBakeJob was"],
-  ['src/hosts/node/createProbe.ts:createProbe', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/core/gldf/exportGldfProduct.ts:exportGldfProduct', 'writes product.xml section by section: to be split by section'],
-  ['src/hosts/cli/renderCommand.ts:run', "a command's steps in order: to be split into named steps, as startBakeJob was"],
   ['src/engines/bake/objects/rasterizeAtlas.ts:<charts.forEach callback>', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
   ['src/engines/meshImport/collectTriangles.ts:collectTriangles', 'walks the loaded scene graph once: to be split by primitive kind'],
   ['src/engines/bake/objects/collectWorldTriangles.ts:collectWorldTriangles', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
@@ -28,7 +25,6 @@ const ALLOWED: ReadonlyMap<string, string> = new Map([
   ['src/reference/pointSources.ts:referencePointSources', "the reference's luminaire expansion (cells, rotation, dimming, colour): to be split by step"],
   ['src/engines/bake/createBounceIteration.ts:createBounceIteration', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
   ['src/hosts/bench/furnishedBench.ts:runFurnishedBench', "a command's steps in order: to be split into named steps, as startBakeJob was"],
-  ['src/hosts/node/renderImage.ts:createRenderSession', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/engines/bake/profileTable.ts:buildProfileTable', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
 ]);
 

@@ -1,5 +1,6 @@
 import { furnishedTables } from './furnishedBench';
 import { shapedRoomTables } from './shapedRoomBench';
+import { daylightTables } from './daylightBench';
 import type { BenchResult } from './runBench';
 
 const pct = (e: number): string => (100 * e < 0.1 ? (100 * e).toFixed(3) : (100 * e).toFixed(2));
@@ -76,6 +77,12 @@ export function benchTables(r: BenchResult, svgName: string | null): string {
     lines.push('#### Rooms of any shape (the room reference; issue 29)');
     lines.push('');
     lines.push(shapedRoomTables(r.shaped));
+    lines.push('');
+  }
+  if (r.daylight && r.daylight.length > 0) {
+    lines.push('#### Daylight (the daylight reference; issue 30)');
+    lines.push('');
+    lines.push(daylightTables(r.daylight));
     lines.push('');
   }
   return lines.join('\n');

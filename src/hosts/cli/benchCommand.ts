@@ -6,13 +6,49 @@ import { BENCH_DOC_INTRO, BENCH_DOC_OUTRO, BENCH_MARKERS } from '../bench/benchD
 import { errorTimeSvg } from '../bench/errorTimeSvg';
 import { directSourcesExperiment, drawOverheadMs, gpuBenchTable, profileLookupExperiment, runGpuBench, statsRecordMs } from '../bench/gpuBench';
 import { runBench } from '../bench/runBench';
+import { DAYLIGHT_MARKERS, daylightSection, runDaylightBench } from '../bench/daylightBench';
+import { machineInfo } from '../bench/machineInfo';
+import { createBaker } from '../../engines/bake/createBaker';
+import { createHeadlessGL } from '../node/createHeadlessGL';
 import { peerTables, runRadiancePeerBench } from '../bench/radianceBench';
 import { RADIANCE_DOC_INTRO, RADIANCE_MARKERS } from '../bench/radianceDocText';
 import { InputError } from '../../core/inputError';
 import { prepareGl } from '../node/prepareGl';
 
-const usage = 'bench [--quick] [--out <dir>] [--gl vulkan|glx|auto] | bench --gpu [--repeats N] [--gl …] | bench --radiance [--out <dir>]';
+const usage = 'bench [--quick] [--out <dir>] [--gl vulkan|glx|auto] | bench --gpu [--repeats N] [--gl …] | bench --radiance [--out <dir>] | bench --daylight [--out <dir>]';
 const SVG = 'benchmarks-error-vs-time.svg';
+
+interface BenchArgs {
+  quick: boolean;
+  out: string | null;
+  gl: string | undefined;
+  gpu: boolean;
+  radiance: boolean;
+  daylight: boolean;
+  repeats: number;
+}
+
+function parseBenchArgs(args: string[]): BenchArgs {
+  const b: BenchArgs = { quick: false, out: null, gl: undefined, gpu: false, radiance: false, daylight: false, repeats: 10 };
+  for (let i = 0; i < args.length; i++) {
+    const a = args[i];
+    if (a === '--quick') b.quick = true;
+    else if (a === '--gpu') b.gpu = true;
+    else if (a === '--radiance') b.radiance = true;
+    else if (a === '--daylight') b.daylight = true;
+    else if (a === '--repeats') {
+      b.repeats = Number(args[++i]);
+      if (!Number.isInteger(b.repeats) || b.repeats < 1 || b.repeats > 1000) throw new InputError(`--repeats must be an integer in 1..1000 (usage: luxbox ${usage})`);
+    } else if (a === '--out') {
+      b.out = args[++i] ?? null;
+      if (!b.out) throw new InputError(`--out needs a folder (usage: luxbox ${usage})`);
+    } else if (a === '--gl') {
+      b.gl = args[++i];
+      if (!b.gl) throw new InputError(`--gl needs vulkan, glx or auto (usage: luxbox ${usage})`);
+    } else throw new InputError(`unknown argument "${a}" (usage: luxbox ${usage})`);
+  }
+  return b;
+}
 
 /**
  * `luxbox bench`: error against run time of the GPU baker on the named scenes,
@@ -21,28 +57,9 @@ const SVG = 'benchmarks-error-vs-time.svg';
  * is a smoke run that prints its tables and writes files only with --out.
  */
 export async function run(args: string[]): Promise<number> {
-  let quick = false;
-  let out: string | null = null;
-  let gl: string | undefined;
-  let gpu = false;
-  let radiance = false;
-  let repeats = 10;
-  for (let i = 0; i < args.length; i++) {
-    const a = args[i];
-    if (a === '--quick') quick = true;
-    else if (a === '--gpu') gpu = true;
-    else if (a === '--radiance') radiance = true;
-    else if (a === '--repeats') {
-      repeats = Number(args[++i]);
-      if (!Number.isInteger(repeats) || repeats < 1 || repeats > 1000) throw new InputError(`--repeats must be an integer in 1..1000 (usage: luxbox ${usage})`);
-    } else if (a === '--out') {
-      out = args[++i] ?? null;
-      if (!out) throw new InputError(`--out needs a folder (usage: luxbox ${usage})`);
-    } else if (a === '--gl') {
-      gl = args[++i];
-      if (!gl) throw new InputError(`--gl needs vulkan, glx or auto (usage: luxbox ${usage})`);
-    } else throw new InputError(`unknown argument "${a}" (usage: luxbox ${usage})`);
-  }
+  const parsed = parseBenchArgs(args);
+  const { quick, gl, gpu, radiance, daylight, repeats } = parsed;
+  let out = parsed.out;
   const { exit, backend } = prepareGl(gl);
   if (exit !== null) return exit;
   if (gpu) {
@@ -70,6 +87,14 @@ export async function run(args: string[]): Promise<number> {
     process.stdout.write(tables + `\n\nwrote ${docPath}\n`);
     return 0;
   }
+  if (daylight) {
+    const docPath = join(out ?? join(root, 'docs'), 'benchmarks.md');
+    const section = daylightBenchSection((line) => process.stderr.write(line + '\n'));
+    const doc = existsSync(docPath) ? readFileSync(docPath, 'utf8') : '';
+    writeFileSync(docPath, spliceSection(doc, section, DAYLIGHT_MARKERS));
+    process.stdout.write(section + `\nwrote ${docPath}\n`);
+    return 0;
+  }
   const result = runBench({ quick, root, log: (line) => process.stderr.write(line + '\n') });
   const tables = benchTables(result, out ? SVG : null);
   if (out) {
@@ -91,4 +116,15 @@ export async function run(args: string[]): Promise<number> {
   }
   process.stdout.write(tables + '\n');
   return 0;
+}
+
+/** The daylit rooms alone (daylightBench.ts) on a fresh context: docs/benchmarks.md's daylight section. */
+function daylightBenchSection(log: (line: string) => void): string {
+  const gl = createHeadlessGL();
+  try {
+    const machine = machineInfo(gl);
+    return daylightSection(runDaylightBench(createBaker(gl), log), machine);
+  } finally {
+    gl.destroy();
+  }
 }

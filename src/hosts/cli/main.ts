@@ -24,9 +24,9 @@ const usage = `usage: luxbox <command> [...]
 commands:
   ies info <file.ies|file.ldt> [--json]   describe a photometric file
   bake <scene.json> --out <dir> [--samples N --bounces N --texel m]   bake light maps (docs/baker.md)
-  probe <scene.json> <points.json> [--samples N --bounces N --texel m]   lux at surface points, or [x,y,z,nx,ny,nz] planes
-  render <config-or-scene.json> [more.json …] --out image.png|dir/ [--camera eye|top|corner|json (repeatable) --cameras file --width --height --ev EV100 | --exposure stops --mode light|lux --glare on|off]   3D images, batches (docs/viewer.md)
-  bench [--quick] [--out <dir>]   bake error vs time against the CPU reference (docs/benchmarks.md)
+  probe <scene.json> <points.json> [--samples N --bounces N --texel m --date YYYY-MM-DD --time HH:MM]   lux at surface points, or [x,y,z,nx,ny,nz] planes (daylight: a daylight block)
+  render <config-or-scene.json> [more.json …] --out image.png|dir/ [--camera eye|top|corner|json (repeatable) --cameras file --width --height --ev EV100 | --exposure stops --mode light|lux --glare on|off --date YYYY-MM-DD --time HH:MM]   3D images, batches, daylight at a time of day (render --help)
+  bench [--quick] [--out <dir>] [--daylight]   bake error vs time against the CPU reference (docs/benchmarks.md)
   export radiance <config-or-scene.json> --out <dir> [--near-field split|point]   Radiance scene folder (docs/radiance.md)
   dmx [--artnet] [--sacn] [--port N] [--bind ADDR] [--universes 1-4]   Art-Net/sACN → WebSocket bridge for live control (docs/dmx.md)
   filters [--json] [--cct K]   colour-filter library: x, y, transmission (CCT, Duv near white) for a K source (docs/colour-filters.md)

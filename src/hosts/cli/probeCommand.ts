@@ -5,7 +5,7 @@ import type { Vec3 } from '../../core/model/lightingScene/lightingScene';
 import { nearestSurface } from '../../engines/bake/nearestSurface';
 import { parseBakeCli } from '../node/bakeCliOptions';
 import { createProbe } from '../node/createProbe';
-import { bakeLoadedScene } from '../node/bakeSceneFile';
+import { bakeLoadedScene, createSceneBaker } from '../node/bakeSceneFile';
 import { resolveBakeSettings } from '../../engines/bake/bakeSettings';
 import { prepareGl } from '../node/prepareGl';
 import { loadLightingSceneFileAsync, parseJsonText } from '../node/loadLightingSceneFile';
@@ -14,9 +14,14 @@ import { ALLOW_FLAG, cliReadableFolders } from '../node/cliReadableFolders';
 import { INPUT_LIMITS } from '../../core/untrustedJson';
 import { readRegularFile } from '../node/readRegularFile';
 import { safeParseInEnglish } from '../../core/zodEnglish';
-import { checkShapedProbePoints, probeShapedRoom, type ShapedProbePoint } from '../node/createShapedRoomProbe';
+import { checkShapedProbePoints, probeShapedRoom, type ShapedProbePoint, type ShapedProbeResult } from '../node/createShapedRoomProbe';
+import { DATE_FLAG, daylightTimeOptions, TIME_FLAG, withDaylightTime } from '../node/daylightTimeOverride';
+import { daylightBakeInput } from '../../engines/bake/daylight/daylightBakeInput';
+import { encloseShapedRoom } from '../../engines/bake/shapedRoom/encloseShapedRoom';
+import type { BakeScene } from '../../engines/bake/bakeScene';
 
-export const probeUsage = 'probe <scene.json> <points.json> [--samples N --bounces N --texel m --gl vulkan|glx|auto --allow <folder>] (points [x, y, z] on a surface or [x, y, z, nx, ny, nz])';
+export const probeUsage =
+  'probe <scene.json> <points.json> [--samples N --bounces N --texel m --gl vulkan|glx|auto --allow <folder>] [--date YYYY-MM-DD --time HH:MM (daylight: the sun at another day or time)] (points [x, y, z] on a surface or [x, y, z, nx, ny, nz])';
 
 /** Probe points must lie on a surface (or, with a normal, inside the room), within this distance (metres). */
 export const PROBE_TOLERANCE = 0.01;
@@ -41,7 +46,7 @@ const AXES = ['x', 'y', 'z'];
  * (docs/scene-format.md, "Probe points").
  */
 export async function run(args: string[]): Promise<number> {
-  const { positional, settings, options } = parseBakeCli('probe', args, ['--gl', ALLOW_FLAG]);
+  const { positional, settings, options } = parseBakeCli('probe', args, ['--gl', ALLOW_FLAG, DATE_FLAG, TIME_FLAG]);
   if (positional.length !== 2) throw new InputError(`expected a scene file and a points file (usage: luxbox ${probeUsage})`);
   const [scenePath, pointsPath] = positional;
   const source = basename(pointsPath);
@@ -65,7 +70,7 @@ export async function run(args: string[]): Promise<number> {
   }
   // Checked before the scene file is read, and passed on resolved to the bake and the probe.
   const resolved = resolveBakeSettings(settings);
-  const loaded = await loadLightingSceneFileAsync(scenePath, { within: cliReadableFolders(scenePath, options[ALLOW_FLAG]) });
+  const loaded = withDaylightTime(await loadLightingSceneFileAsync(scenePath, { within: cliReadableFolders(scenePath, options[ALLOW_FLAG]) }), daylightTimeOptions(options), 'probe', basename(scenePath));
   const room = loaded.scene.room;
   if (room.shape) return probeShapedScene(loaded, room.shape, parsed.data.points, resolved, options['--gl'], source);
   const dims = [room.width, room.height, room.depth];
@@ -93,8 +98,7 @@ export async function run(args: string[]): Promise<number> {
   // Direct light exactly at each point (CPU, objects occluding); indirect from the maps, or gathered from them at a point with a normal.
   const probe = createProbe(loaded.bakeScene, maps, resolved);
   const values = points.map(({ point, normal }) => (normal ? probe.atPlane(point, normal) : probe.atSurface(point)));
-  const result = { total: values.map((v) => v.total), direct: values.map((v) => v.direct), indirect: values.map((v) => v.indirect) };
-  process.stdout.write(JSON.stringify(result) + '\n');
+  process.stdout.write(JSON.stringify(columns(values)) + '\n');
   return 0;
 }
 
@@ -124,9 +128,23 @@ function probeShapedScene(
   checkShapedProbePoints(shape, points, PROBE_TOLERANCE, source);
   const { exit } = prepareGl(gl);
   if (exit !== null) return exit;
-  const { maps } = bakeLoadedScene(loaded, resolved);
-  const values = probeShapedRoom(loaded.bakeScene, maps, resolved, points, PROBE_TOLERANCE);
-  const result = { total: values.map((v) => v.total), direct: values.map((v) => v.direct), indirect: values.map((v) => v.indirect) };
-  process.stdout.write(JSON.stringify(result) + '\n');
+  const sceneBaker = createSceneBaker();
+  try {
+    const probeScene = (scene: BakeScene): ShapedProbeResult[] => probeShapedRoom(scene, sceneBaker.bakeScene(scene, resolved).maps, resolved, points, PROBE_TOLERANCE);
+    const values = probeScene(loaded.bakeScene);
+    const result: Record<string, unknown> = columns(values);
+    // Windows with a sky or a sun: the daylight alone too (the scene baked again without its luminaires, when it has any).
+    if (daylightBakeInput(loaded.bakeScene, encloseShapedRoom(loaded.bakeScene))) {
+      result.daylight = columns(loaded.bakeScene.luminaires.length === 0 ? values : probeScene({ ...loaded.bakeScene, luminaires: [] }));
+    }
+    process.stdout.write(JSON.stringify(result) + '\n');
+  } finally {
+    sceneBaker.destroy();
+  }
   return 0;
+}
+
+/** Per-point results as the output's columns. */
+function columns(values: readonly { total: number; direct: number; indirect: number }[]): { total: number[]; direct: number[]; indirect: number[] } {
+  return { total: values.map((v) => v.total), direct: values.map((v) => v.direct), indirect: values.map((v) => v.indirect) };
 }

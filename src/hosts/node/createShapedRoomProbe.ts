@@ -9,6 +9,10 @@
  *   indirect light is bilinear in the atlas map of that surface's chart;
  * - a point with a normal is createProbe's `atPlane`: direct with occlusion, indirect gathered over
  *   the baked maps (rays that leave through an opening reach the enclosure's black sinks: no light).
+ * With daylight (windows and a sky, docs/daylight.md), the direct light adds the sky, the ground
+ * and the sun through the windows exactly at the point (daylightAtPoint.ts, the baker's own
+ * per-texel computation, sight lines through the room's BVH where they can be blocked); the
+ * indirect daylight is in the baked maps.
  */
 import { InputError } from '../../core/inputError';
 import type { Vec3 } from '../../core/model/lightingScene/lightingScene';
@@ -18,9 +22,13 @@ import { roomSurfaceAt } from '../../core/room/roomSurfaceAt';
 import { roomSurfaces } from '../../core/room/roomSurfaces';
 import type { BakedMaps } from '../../engines/bake/bakedMaps';
 import type { BakeScene } from '../../engines/bake/bakeScene';
-import type { BakeSettings } from '../../engines/bake/bakeSettings';
+import { resolveBakeSettings, type BakeSettings } from '../../engines/bake/bakeSettings';
+import { daylightPointContext } from '../../engines/bake/daylight/daylightAtlasDirect';
+import { skyDaylightAt, sunDaylightAt } from '../../engines/bake/daylight/daylightAtPoint';
+import { daylightBakeInput } from '../../engines/bake/daylight/daylightBakeInput';
+import { prepareObjectsCached } from '../../engines/bake/objects/prepareObjectsCached';
 import { encloseShapedRoom } from '../../engines/bake/shapedRoom/encloseShapedRoom';
-import { createProbe } from './createProbe';
+import { createProbe, type ProbeOptions } from './createProbe';
 
 export interface ShapedProbeResult {
   /** The room surface's id (`floor`, `slope-0`, `wall-3`, …) of a surface point; absent for a point with a normal. */
@@ -57,7 +65,7 @@ export function probeShapedRoom(scene: BakeScene, maps: BakedMaps, settings: Par
   if (!room) throw new Error('probeShapedRoom: the scene has no room of any shape');
   const enclosed = encloseShapedRoom(scene);
   const offset = enclosed.room.enclosure!.offset;
-  const probe = createProbe(enclosed, maps, settings);
+  const probe = createProbe(enclosed, maps, settings, daylightProbeOptions(scene, enclosed, settings));
   const surfaces = roomSurfaces(room);
   const move = (p: readonly number[]): Vec3 => [p[0] + offset[0], p[1] + offset[1], p[2] + offset[2]];
   return points.map(({ point, normal }) => {
@@ -71,4 +79,14 @@ export function probeShapedRoom(scene: BakeScene, maps: BakedMaps, settings: Par
     const onPlane = move([point[0] - h * n[0], point[1] - h * n[1], point[2] - h * n[2]]);
     return { surface: surface.id, ...probe.atAtlasFace(onPlane, [n[0], n[1], n[2]]) };
   });
+}
+
+/** The daylight's direct light at a point of the enclosed scene (bake coordinates), when the scene bakes daylight. */
+function daylightProbeOptions(scene: BakeScene, enclosed: BakeScene, settingsIn: Partial<BakeSettings>): ProbeOptions {
+  const day = daylightBakeInput(scene, enclosed);
+  if (!day) return {};
+  const settings = resolveBakeSettings(settingsIn);
+  const prepared = prepareObjectsCached(enclosed.objects ?? [], { texelSize: settings.texelSize, maxAtlasSize: settings.maxTextureSize });
+  const ctx = daylightPointContext(prepared, day.daylight, day.windows, day.needsRays);
+  return { extraDirect: (p, n) => skyDaylightAt(ctx, p, n) + sunDaylightAt(ctx, p, n) };
 }
