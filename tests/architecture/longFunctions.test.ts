@@ -20,7 +20,6 @@ const ALLOWED: ReadonlyMap<string, string> = new Map([
   ['src/engines/relight/createRelightEngine.ts:createRelightEngine', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's (its solve cache is apart already)"],
   ['src/engines/view/createRoomSurfaces.ts:createRoomSurfaces', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/engines/view/createRoomHardware.ts:createRoomHardware', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
-  ['src/engines/bake/objects/rasterizeAtlas.ts:rasterizeAtlas', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
   ['src/hosts/bench/runBench.ts:runBench', "a command's steps in order: to be split into named steps, as startBakeJob was"],
   ['src/engines/view/createBakeSlicer.ts:createBakeSlicer', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/ui/planner/RoomShapeEditor.tsx:RoomShapeEditor', "a component whose markup is most of it (issue 29's editor, merged back): its bar and handles become components, as View3D's did"],
@@ -30,20 +29,14 @@ const ALLOWED: ReadonlyMap<string, string> = new Map([
   ['src/core/gldf/exportGldfProduct.ts:exportGldfProduct', 'writes product.xml section by section: to be split by section'],
   ['src/hosts/cli/renderCommand.ts:run', "a command's steps in order: to be split into named steps, as startBakeJob was"],
   ['src/ui/planner/PlanSvg.tsx:PlanSvg', "a component whose markup is most of it: its groups become components, as View3D's did"],
-  ['src/engines/bake/objects/rasterizeAtlas.ts:<charts.forEach callback>', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
   ['src/engines/meshImport/collectTriangles.ts:collectTriangles', 'walks the loaded scene graph once: to be split by primitive kind'],
-  ['src/engines/bake/objects/collectWorldTriangles.ts:collectWorldTriangles', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
   ['src/engines/view/createGpuStats.ts:createGpuStats', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
-  ['src/engines/bake/createBakeJobHandle.ts:createBakeJobHandle', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
   ['src/engines/bake/selectBrightPatches.ts:selectBrightPatches', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
-  ['src/engines/bake/startBakeJob.ts:startBakeJob', 'already a sequence of named steps (issue 28): 88 lines of step calls and their comments'],
   ['src/ui/viewer/startBakeFeed.ts:startBakeFeed', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/core/mesh/orientMesh.ts:orientMesh', 'one mesh pass (winding, normals, outward test): to be split by step'],
   ['src/reference/pointSources.ts:referencePointSources', "the reference's luminaire expansion (cells, rotation, dimming, colour): to be split by step"],
-  ['src/engines/bake/createBounceIteration.ts:createBounceIteration', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
   ['src/hosts/bench/furnishedBench.ts:runFurnishedBench', "a command's steps in order: to be split into named steps, as startBakeJob was"],
   ['src/hosts/node/renderImage.ts:createRenderSession', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
-  ['src/engines/bake/profileTable.ts:buildProfileTable', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
 ]);
 
 describe('long functions', () => {
