@@ -13,7 +13,6 @@ const ALLOWED: ReadonlyMap<string, string> = new Map([
   ['src/ui/planner/Planner.tsx:Planner', 'another helper is editing Planner today; split after that merge'],
   ['src/hosts/embed/mountConfigurator.tsx:mountConfigurator', 'another helper is editing mountLuxbox today; split after that merge'],
   ['src/core/model/validation/systemOwnProblems.ts:computeOwnProblems', 'another helper is editing systemOwnProblems today; split after that merge'],
-  ['src/core/room/roomProblems.ts:roomProblems', 'the version-3 room rules (issue 29), one after another: to be split by rule kind'],
   ['src/engines/relight/createGpuRelight.ts:createGpuRelight', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/core/gldf/gldfToModuleType.ts:gldfToModuleType', 'reads one format top to bottom: to be split by section of the format'],
   ['src/engines/view/createRoomObjects.ts:createRoomObjects', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
