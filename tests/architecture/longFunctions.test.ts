@@ -29,7 +29,6 @@ const ALLOWED: ReadonlyMap<string, string> = new Map([
   ['src/engines/view/createGpuStats.ts:createGpuStats', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/engines/bake/selectBrightPatches.ts:selectBrightPatches', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
   ['src/ui/viewer/startBakeFeed.ts:startBakeFeed', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
-  ['src/reference/pointSources.ts:referencePointSources', "the reference's luminaire expansion (cells, rotation, dimming, colour): to be split by step"],
   ['src/hosts/bench/furnishedBench.ts:runFurnishedBench', "a command's steps in order: to be split into named steps, as startBakeJob was"],
   ['src/hosts/node/renderImage.ts:createRenderSession', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
 ]);
