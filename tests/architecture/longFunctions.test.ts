@@ -12,7 +12,6 @@ const LIMIT = 80;
 const ALLOWED: ReadonlyMap<string, string> = new Map([
   ['src/ui/planner/Planner.tsx:Planner', 'another helper is editing Planner today; split after that merge'],
   ['src/hosts/embed/mountConfigurator.tsx:mountConfigurator', 'another helper is editing mountLuxbox today; split after that merge'],
-  ['src/core/model/validation/systemOwnProblems.ts:computeOwnProblems', 'another helper is editing systemOwnProblems today; split after that merge'],
   ['src/engines/relight/createGpuRelight.ts:createGpuRelight', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/engines/view/createRoomObjects.ts:createRoomObjects', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
   ['src/engines/relight/createRelightEngine.ts:createRelightEngine', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's (its solve cache is apart already)"],
