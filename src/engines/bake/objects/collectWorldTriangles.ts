@@ -59,14 +59,8 @@ function checkObject(object: BakeObject, k: number): string {
   return name;
 }
 
-/** The growing output: arrays sized for every input triangle, `n` of them filled so far. */
-interface TriangleSink {
-  positions: Float64Array;
-  normals: Float64Array;
-  areas: Float64Array;
-  reflectance: Float32Array;
-  objectOfTriangle: Uint32Array;
-  vertexIds: Uint32Array;
+/** The growing output: the arrays of WorldTriangles sized for every input triangle, `n` of them filled so far. */
+interface TriangleSink extends Omit<WorldTriangles, 'count' | 'objects'> {
   n: number;
   nextVertexId: number;
 }
