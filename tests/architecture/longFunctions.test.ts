@@ -10,22 +10,8 @@ const LIMIT = 80;
  * below, so the list only shrinks.
  */
 const ALLOWED: ReadonlyMap<string, string> = new Map([
-  ['src/core/model/validation/systemOwnProblems.ts:computeOwnProblems', 'another helper is editing systemOwnProblems today; split after that merge'],
-  ['src/core/room/roomProblems.ts:roomProblems', 'the version-3 room rules (issue 29), one after another: to be split by rule kind'],
-  ['src/core/gldf/gldfToModuleType.ts:gldfToModuleType', 'reads one format top to bottom: to be split by section of the format'],
   ['src/engines/view/createRoomSurfaces.ts:createRoomSurfaces', "a closure factory: its state into one object its parts share, methods by concern, as createViewerController's"],
-  ['src/engines/bake/objects/rasterizeAtlas.ts:rasterizeAtlas', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
-  ['src/core/gldf/exportGldfProduct.ts:exportGldfProduct', 'writes product.xml section by section: to be split by section'],
-  ['src/engines/bake/objects/rasterizeAtlas.ts:<charts.forEach callback>', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
-  ['src/engines/meshImport/collectTriangles.ts:collectTriangles', 'walks the loaded scene graph once: to be split by primitive kind'],
-  ['src/engines/bake/objects/collectWorldTriangles.ts:collectWorldTriangles', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
-  ['src/engines/bake/createBakeJobHandle.ts:createBakeJobHandle', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
-  ['src/engines/bake/startBakeJob.ts:startBakeJob', 'already a sequence of named steps (issue 28): 88 lines of step calls and their comments'],
-  ['src/core/mesh/orientMesh.ts:orientMesh', 'one mesh pass (winding, normals, outward test): to be split by step'],
-  ['src/reference/pointSources.ts:referencePointSources', "the reference's luminaire expansion (cells, rotation, dimming, colour): to be split by step"],
-  ['src/engines/bake/createBounceIteration.ts:createBounceIteration', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
   ['src/hosts/bench/furnishedBench.ts:runFurnishedBench', "a command's steps in order: to be split into named steps, as startBakeJob was"],
-  ['src/engines/bake/profileTable.ts:buildProfileTable', "baker code: a split must keep the pinned scenes' maps bit-identical, so it waits for a run of the bake tests"],
 ]);
 
 describe('long functions', () => {

@@ -76,7 +76,7 @@ export interface OrientedMesh {
  * the existing ones.
  */
 export function orientMesh(mesh: TriangleMesh, twoSided: (triangle: number) => boolean): OrientedMesh {
-  const { positions, indices } = mesh;
+  const { indices } = mesh;
   const count = indices.length / 3;
   const all = meshEdges(mesh);
   const pairs = coincidentPairs(mesh, all.vertexId);
@@ -85,82 +85,90 @@ export function orientMesh(mesh: TriangleMesh, twoSided: (triangle: number) => b
   const isGlued = (t: number) => glued[t] === 1;
   const adjacency = pairs.length > 0 ? meshEdges(mesh, isGlued) : all;
   const parts = connectedParts(mesh, adjacency, isGlued);
-  const out = Uint32Array.from(indices);
-  const summary: OrientationSummary = {
-    parts: parts.length,
-    closed: 0,
-    turnedOutward: 0,
-    trianglesReversed: 0,
-    twoSided: 0,
-    oneSided: 0,
-    undecided: 0,
-    enclosedFaces: 0,
-    droppedCopies: 0,
-    backTriangles: 0,
-  };
-  const back: BackPart[] = [];
-  const inClosed = new Uint8Array(count);
-  const turnPart = (part: ConnectedPart, turn: boolean): number => {
-    let reversed = 0;
-    part.triangles.forEach((t, k) => {
-      if (part.flip![k] !== turn) {
-        reverse(out, t);
-        reversed++;
-      }
-    });
-    return reversed;
-  };
-  for (const part of parts) {
+  const state: OrientState = { mesh, vertexId: all.vertexId, out: Uint32Array.from(indices), summary: emptySummary(parts.length), back: [], inClosed: new Uint8Array(count) };
+  for (const part of parts) orientPart(state, part, twoSided);
+  const drop = new Uint8Array(count);
+  if (pairs.length > 0) orientSheets(state, orientCoincidentPairs(mesh, state.out, pairs, all, state.inClosed, drop, state.summary));
+  const { summary } = state;
+  const result = assemble(mesh, state.out, drop, state.back);
+  summary.backTriangles = result.indices.length / 3 - (count - summary.droppedCopies);
+  return { mesh: result, summary };
+}
+
+/** What the steps share: the mesh, its welded vertex ids, the indices being rewound, the summary, the parts to give back sides, and which triangles are in closed parts. */
+interface OrientState {
+  mesh: TriangleMesh;
+  vertexId: MeshEdges['vertexId'];
+  out: Uint32Array;
+  summary: OrientationSummary;
+  back: BackPart[];
+  inClosed: Uint8Array;
+}
+
+function emptySummary(parts: number): OrientationSummary {
+  return { parts, closed: 0, turnedOutward: 0, trianglesReversed: 0, twoSided: 0, oneSided: 0, undecided: 0, enclosedFaces: 0, droppedCopies: 0, backTriangles: 0 };
+}
+
+/** Make a part's winding consistent (flip[k] is relative to its first triangle), turned as a whole when `turn`; returns the triangles reversed. */
+function turnPart(state: OrientState, part: ConnectedPart, turn: boolean): number {
+  let reversed = 0;
+  part.triangles.forEach((t, k) => {
+    if (part.flip![k] !== turn) {
+      reverse(state.out, t);
+      reversed++;
+    }
+  });
+  return reversed;
+}
+
+/** One edge-connected part: undecided (two-sided, per-triangle back), closed (turned outward), open two-sided (canonical turn, smooth back) or open one-sided (as the file winds it). */
+function orientPart(state: OrientState, part: ConnectedPart, twoSided: (triangle: number) => boolean): void {
+  const { summary, back } = state;
+  const { positions, indices } = state.mesh;
+  if (part.flip === null) {
+    summary.undecided++;
+    back.push({ part, smooth: false });
+    return;
+  }
+  if (part.closed) {
+    const volume = signedVolume(positions, indices, part);
+    if (!(Math.abs(volume) > FLAT_VOLUME_FRACTION * boxVolume(positions, indices, part)) || partSelfIntersects(positions, indices, state.vertexId, part)) {
+      summary.undecided++;
+      back.push({ part, smooth: false });
+      return;
+    }
+    // flip[k] is relative to the part's first triangle; turn the whole part when that orientation encloses negative volume.
+    const reversed = turnPart(state, part, volume < 0);
+    for (const t of part.triangles) state.inClosed[t] = 1;
+    summary.closed++;
+    if (reversed > 0) summary.turnedOutward++;
+    summary.trianglesReversed += reversed;
+    return;
+  }
+  if (!part.triangles.some((t) => twoSided(t))) {
+    summary.oneSided++;
+    return;
+  }
+  summary.trianglesReversed += turnPart(state, part, canonicalTurn(positions, indices, part));
+  summary.twoSided++;
+  back.push({ part, smooth: true });
+}
+
+/** The sheets a file made two-sided by repeating triangles (one copy each left): their own parts, each two-sided like an open part, or undecided. */
+function orientSheets(state: OrientState, sheets: Set<number>): void {
+  const { mesh, summary, back } = state;
+  const notSheet = (t: number) => !sheets.has(t);
+  for (const part of connectedParts(mesh, meshEdges(mesh, notSheet), notSheet)) {
+    summary.parts++;
     if (part.flip === null) {
       summary.undecided++;
       back.push({ part, smooth: false });
-      continue;
-    }
-    if (part.closed) {
-      const volume = signedVolume(positions, indices, part);
-      if (!(Math.abs(volume) > FLAT_VOLUME_FRACTION * boxVolume(positions, indices, part)) || partSelfIntersects(positions, indices, all.vertexId, part)) {
-        summary.undecided++;
-        back.push({ part, smooth: false });
-        continue;
-      }
-      // flip[k] is relative to the part's first triangle; turn the whole part when that orientation encloses negative volume.
-      const reversed = turnPart(part, volume < 0);
-      for (const t of part.triangles) inClosed[t] = 1;
-      summary.closed++;
-      if (reversed > 0) summary.turnedOutward++;
-      summary.trianglesReversed += reversed;
-      continue;
-    }
-    if (!part.triangles.some((t) => twoSided(t))) {
-      summary.oneSided++;
-      continue;
-    }
-    summary.trianglesReversed += turnPart(part, canonicalTurn(positions, indices, part));
-    summary.twoSided++;
-    back.push({ part, smooth: true });
-  }
-  const drop = new Uint8Array(count);
-  if (pairs.length > 0) {
-    const sheets = orientCoincidentPairs(mesh, out, pairs, all, inClosed, drop, summary);
-    for (const part of connectedParts(
-      mesh,
-      meshEdges(mesh, (t) => !sheets.has(t)),
-      (t) => !sheets.has(t),
-    )) {
-      summary.parts++;
-      if (part.flip === null) {
-        summary.undecided++;
-        back.push({ part, smooth: false });
-      } else {
-        summary.trianglesReversed += turnPart(part, canonicalTurn(positions, indices, part));
-        summary.twoSided++;
-        back.push({ part, smooth: true });
-      }
+    } else {
+      summary.trianglesReversed += turnPart(state, part, canonicalTurn(mesh.positions, mesh.indices, part));
+      summary.twoSided++;
+      back.push({ part, smooth: true });
     }
   }
-  const result = assemble(mesh, out, drop, back);
-  summary.backTriangles = result.indices.length / 3 - (count - summary.droppedCopies);
-  return { mesh: result, summary };
 }
 
 /**

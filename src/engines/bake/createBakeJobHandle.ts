@@ -38,101 +38,125 @@ export interface StartedBake {
   bounces: BounceIteration | null;
 }
 
+/** What the job's methods share: the started bake, and the job's own state (finalized, disposed, the report's cached read-backs). */
+interface JobState {
+  b: StartedBake;
+  prepared: PreparedObjects | null;
+  finalized: boolean;
+  disposed: boolean;
+  records: FluxRecord[] | null;
+  objectEntries: ObjectReportEntry[] | null;
+}
+
 /**
  * The last step of startBakeJob: the job a caller drives. `step` runs the bounces, `finalize`
  * builds indirect and total maps from the current state, the read-backs finalize first when
  * needed, and `report` reads the flux statistics once (never between bounces).
  */
 export function createBakeJobHandle(b: StartedBake): BakeJob {
-  const { gl, settings, timer, targets, statistics, bounces } = b;
-  const { atlasShown } = targets;
-  const prepared = b.inputs.objects?.prepared ?? null;
-  let finalized = false;
-  let disposed = false;
-  let records: FluxRecord[] | null = null;
-  let objectEntries: ObjectReportEntry[] | null = null;
-  const progress = (): BakeProgress => ({
+  const { settings, timer, targets } = b;
+  const job: JobState = { b, prepared: b.inputs.objects?.prepared ?? null, finalized: false, disposed: false, records: null, objectEntries: null };
+  const read = (t: FloatTarget) => readCounted(b, t);
+  return {
+    layouts: b.inputs.layouts,
+    get progress() {
+      return progress(b);
+    },
+    step: (maxSamples = settings.samplesPerDraw) => step(job, maxSamples),
+    run() {
+      while (!progress(b).done) step(job, settings.samples);
+      finalize(job);
+    },
+    finalize: () => finalize(job),
+    textures: () => jobTextures(targets),
+    readDirect() {
+      ensureFinalized(job);
+      return timer.timed('readback', () => readDirectMaps(targets, job.prepared, read));
+    },
+    readMaps() {
+      ensureFinalized(job);
+      return timer.timed('readback', () => {
+        const maps = readAllMaps(targets, job.prepared, read);
+        if (job.prepared && maps.objects) job.objectEntries = objectReport(job.prepared, maps.objects.total);
+        return maps;
+      });
+    },
+    report: () => jobReport(job),
+    dispose: () => disposeJob(job),
+  };
+}
+
+function progress({ bounces, settings }: StartedBake): BakeProgress {
+  return {
     bounce: bounces?.bounce ?? 0,
     bounces: bounces ? settings.bounces : 0,
     samplesDone: bounces?.samplesDone ?? 0,
     samplesPerBounce: settings.samples,
     done: !bounces || bounces.bounce >= settings.bounces,
-  });
-  const step = (maxSamples = settings.samplesPerDraw): BakeProgress => {
-    if (bounces?.step(maxSamples)) finalized = false;
-    return progress();
   };
-  const finalize = () => {
-    finalizeMaps(gl, targets.receivers, b.passes, bounces, statistics, settings, timer, b.finalObjects);
-    finalized = true;
-  };
-  const ensureFinalized = () => {
-    if (!finalized) finalize();
-  };
-  const read = (t: FloatTarget) => {
-    b.readbacks.counted(t.width * t.height * 16);
-    return readRgb(gl, t);
-  };
-  return {
+}
+
+/** Up to `maxSamples` more samples; a step that gathered any makes the finalized maps stale. */
+function step(job: JobState, maxSamples: number): BakeProgress {
+  if (job.b.bounces?.step(maxSamples)) job.finalized = false;
+  return progress(job.b);
+}
+
+function finalize(job: JobState): void {
+  const { b } = job;
+  finalizeMaps(b.gl, b.targets.receivers, b.passes, b.bounces, b.statistics, b.settings, b.timer, b.finalObjects);
+  job.finalized = true;
+}
+
+function ensureFinalized(job: JobState): void {
+  if (!job.finalized) finalize(job);
+}
+
+/** One read-back of a target, counted for the report. */
+function readCounted(b: StartedBake, t: FloatTarget): Float32Array {
+  b.readbacks.counted(t.width * t.height * 16);
+  return readRgb(b.gl, t);
+}
+
+/** The report: the flux records read once per bounce count, the objects' entries read once (finalizing first). */
+function jobReport(job: JobState): BakeReport {
+  const { b, prepared } = job;
+  const { timer, targets, statistics, settings } = b;
+  const bouncesComputed = b.bounces?.bounce ?? 0;
+  b.recordDirect();
+  // One read-back of the stats row, only now (never between bounces).
+  if (!job.records || job.records.length !== bouncesComputed + 1) job.records = timer.timed('readback', () => statistics.read(bouncesComputed + 1));
+  const shown = targets.atlasShown;
+  if (prepared && shown && !job.objectEntries) {
+    ensureFinalized(job);
+    job.objectEntries = timer.timed('readback', () => objectReport(prepared, readCounted(b, shown.total)));
+  }
+  timer.timings.total = performance.now() - b.startedAt;
+  return bakeReport({
+    settings,
     layouts: b.inputs.layouts,
-    get progress() {
-      return progress();
-    },
-    step,
-    run() {
-      while (!progress().done) step(settings.samples);
-      finalize();
-    },
-    finalize,
-    textures: () => jobTextures(targets),
-    readDirect() {
-      ensureFinalized();
-      return timer.timed('readback', () => readDirectMaps(targets, prepared, read));
-    },
-    readMaps() {
-      ensureFinalized();
-      return timer.timed('readback', () => {
-        const maps = readAllMaps(targets, prepared, read);
-        if (prepared && maps.objects) objectEntries = objectReport(prepared, maps.objects.total);
-        return maps;
-      });
-    },
-    report() {
-      const bouncesComputed = bounces?.bounce ?? 0;
-      b.recordDirect();
-      // One read-back of the stats row, only now (never between bounces).
-      if (!records || records.length !== bouncesComputed + 1) records = timer.timed('readback', () => statistics.read(bouncesComputed + 1));
-      if (prepared && atlasShown && !objectEntries) {
-        ensureFinalized();
-        objectEntries = timer.timed('readback', () => objectReport(prepared, read(atlasShown.total)));
-      }
-      timer.timings.total = performance.now() - b.startedAt;
-      return bakeReport({
-        settings,
-        layouts: b.inputs.layouts,
-        luminaires: b.luminaires,
-        pointSources: b.inputs.lamps.pointSources,
-        directSkipped: b.directSkipped,
-        indirectEnabled: b.indirectEnabled,
-        brightSelection: b.brightPass?.summary() ?? null,
-        bouncesComputed,
-        records,
-        linearFiltering: b.linear,
-        shaders: b.shaders,
-        timings: timer.timings,
-        readbacks: { count: b.readbacks.count, bytes: b.readbacks.bytes },
-        ...(objectEntries ? { objects: objectEntries } : {}),
-      });
-    },
-    dispose() {
-      if (disposed) return;
-      disposed = true;
-      targets.release();
-      b.inputs.dispose();
-      statistics.dispose();
-      b.brightPass?.dispose();
-    },
-  };
+    luminaires: b.luminaires,
+    pointSources: b.inputs.lamps.pointSources,
+    directSkipped: b.directSkipped,
+    indirectEnabled: b.indirectEnabled,
+    brightSelection: b.brightPass?.summary() ?? null,
+    bouncesComputed,
+    records: job.records,
+    linearFiltering: b.linear,
+    shaders: b.shaders,
+    timings: timer.timings,
+    readbacks: { count: b.readbacks.count, bytes: b.readbacks.bytes },
+    ...(job.objectEntries ? { objects: job.objectEntries } : {}),
+  });
+}
+
+function disposeJob(job: JobState): void {
+  if (job.disposed) return;
+  job.disposed = true;
+  job.b.targets.release();
+  job.b.inputs.dispose();
+  job.b.statistics.dispose();
+  job.b.brightPass?.dispose();
 }
 
 /** The current maps on the GPU: per surface, and the atlas as shown. */

@@ -39,86 +39,113 @@ export interface BounceIteration {
 export function createBounceIteration(
   gl: WebGL2RenderingContext,
   surfaces: BounceTargets[],
-  passes: { gather: PassProgram<typeof gatherUniforms>[]; combine: PassProgram<typeof combinePass.uniforms> },
+  passes: BouncePasses,
   statistics: FluxStatistics,
   brightPass: BrightPatchPass | null,
   settings: BakeSettings,
   timer: BakeTimer,
   objectSamplers: ObjectGatherSamplers | null = null,
 ): BounceIteration {
-  let bounce = 0;
-  let samplesDone = 0;
-  // What receiver s emits into this bounce: the direct map (or its residual) for bounce 1, else the previous bounce.
-  // Receivers 0–5 are the room surfaces, 6 the objects' atlas when the scene has objects.
-  const source = (s: number) => (bounce === 0 ? (brightPass?.residual[s] ?? surfaces[s].direct) : surfaces[s].previous).texture;
-
-  const gatherDraw = (st: BounceTargets, index: number, first: number, count: number) => {
-    const bright = bounce === 0 ? brightPass?.bright[index] : null;
-    const values = {
-      uSource0: source(0),
-      uSource1: source(1),
-      uSource2: source(2),
-      uSource3: source(3),
-      uSource4: source(4),
-      uSource5: source(5),
-      uAccumulated: st.samples.read.texture,
-      uBright: (bright ?? st.samples.read).texture,
-      uBrightWeight: bright ? 1 : 0,
-      uFirstSample: first,
-      uSampleCount: count,
-      // The previous bounce is stored as the sum of its S samples: read it as lux.
-      uInputScale: bounce === 0 ? 1 : 1 / settings.samples,
-      uSeed: mixSeed(settings.seed, index, bounce) | 0,
-      // The object-aware passes (generateGatherShader.ts objectGatherUniforms) also read the atlas and the BVH.
-      ...(objectSamplers ? { ...objectSamplers, uSource6: source(6) } : {}),
-    };
-    runPass(gl, passes.gather[index], st.samples.write, values);
-    st.samples.swap();
-  };
-
-  const finishBounce = () => {
-    const inv = 1 / settings.samples;
-    timer.timed('blend', () => {
-      for (const st of surfaces) {
-        runPass(gl, passes.combine, st.sum.write, { uA: st.sum.read.texture, uB: st.samples.read.texture, uScaleA: [1, 1, 1], uScaleB: [inv, inv, inv] });
-        st.sum.swap();
-      }
-    });
-    timer.timed('blend', () =>
-      statistics.record(
-        bounce + 1,
-        surfaces.map((st) => st.samples.read),
-        inv,
-      ),
-    );
-    bounce++;
-    for (const st of surfaces) {
-      // The finished bounce becomes the input; the old input, cleared, collects the next bounce.
-      st.previous = st.samples.exchange(st.previous);
-      clearTarget(gl, st.samples.read);
-    }
-    samplesDone = 0;
-  };
-
+  const state: BounceState = { gl, surfaces, passes, statistics, brightPass, settings, timer, objectSamplers, bounce: 0, samplesDone: 0 };
   return {
     get bounce() {
-      return bounce;
+      return state.bounce;
     },
     get samplesDone() {
-      return samplesDone;
+      return state.samplesDone;
     },
     step(maxSamples) {
       let remaining = maxSamples;
       timer.timed('indirect', () => {
-        while (remaining > 0 && bounce < settings.bounces) {
-          const n = Math.min(remaining, settings.samplesPerDraw, settings.samples - samplesDone);
-          surfaces.forEach((st, index) => gatherDraw(st, index, samplesDone, n));
-          samplesDone += n;
+        while (remaining > 0 && state.bounce < settings.bounces) {
+          const n = Math.min(remaining, settings.samplesPerDraw, settings.samples - state.samplesDone);
+          surfaces.forEach((st, index) => gatherDraw(state, st, index, state.samplesDone, n));
+          state.samplesDone += n;
           remaining -= n;
-          if (samplesDone >= settings.samples) finishBounce();
+          if (state.samplesDone >= settings.samples) finishBounce(state);
         }
       });
       return remaining < maxSamples;
     },
   };
+}
+
+interface BouncePasses {
+  gather: PassProgram<typeof gatherUniforms>[];
+  combine: PassProgram<typeof combinePass.uniforms>;
+}
+
+/** What the iteration's steps share: its inputs, and where it stands (bounces finished, samples of the current one). */
+interface BounceState {
+  gl: WebGL2RenderingContext;
+  surfaces: BounceTargets[];
+  passes: BouncePasses;
+  statistics: FluxStatistics;
+  brightPass: BrightPatchPass | null;
+  settings: BakeSettings;
+  timer: BakeTimer;
+  objectSamplers: ObjectGatherSamplers | null;
+  bounce: number;
+  samplesDone: number;
+}
+
+/**
+ * What receiver s emits into this bounce: the direct map (or its residual) for bounce 1, else the
+ * previous bounce. Receivers 0–5 are the room surfaces, 6 the objects' atlas when the scene has objects.
+ */
+function source(state: BounceState, s: number): WebGLTexture {
+  const { bounce, brightPass, surfaces } = state;
+  return (bounce === 0 ? (brightPass?.residual[s] ?? surfaces[s].direct) : surfaces[s].previous).texture;
+}
+
+/** `count` more samples (from sample `first` on) of receiver `index`'s current bounce into its sample ping-pong pair. */
+function gatherDraw(state: BounceState, st: BounceTargets, index: number, first: number, count: number): void {
+  const { bounce, brightPass, settings, objectSamplers } = state;
+  const bright = bounce === 0 ? brightPass?.bright[index] : null;
+  const values = {
+    uSource0: source(state, 0),
+    uSource1: source(state, 1),
+    uSource2: source(state, 2),
+    uSource3: source(state, 3),
+    uSource4: source(state, 4),
+    uSource5: source(state, 5),
+    uAccumulated: st.samples.read.texture,
+    uBright: (bright ?? st.samples.read).texture,
+    uBrightWeight: bright ? 1 : 0,
+    uFirstSample: first,
+    uSampleCount: count,
+    // The previous bounce is stored as the sum of its S samples: read it as lux.
+    uInputScale: bounce === 0 ? 1 : 1 / settings.samples,
+    uSeed: mixSeed(settings.seed, index, bounce) | 0,
+    // The object-aware passes (generateGatherShader.ts objectGatherUniforms) also read the atlas and the BVH.
+    ...(objectSamplers ? { ...objectSamplers, uSource6: source(state, 6) } : {}),
+  };
+  runPass(state.gl, state.passes.gather[index], st.samples.write, values);
+  st.samples.swap();
+}
+
+/** A bounce is complete: added to the running sum as E_k, its flux recorded, and made the next bounce's input. */
+function finishBounce(state: BounceState): void {
+  const { gl, surfaces, settings, timer, passes, statistics } = state;
+  const inv = 1 / settings.samples;
+  timer.timed('blend', () => {
+    for (const st of surfaces) {
+      runPass(gl, passes.combine, st.sum.write, { uA: st.sum.read.texture, uB: st.samples.read.texture, uScaleA: [1, 1, 1], uScaleB: [inv, inv, inv] });
+      st.sum.swap();
+    }
+  });
+  timer.timed('blend', () =>
+    statistics.record(
+      state.bounce + 1,
+      surfaces.map((st) => st.samples.read),
+      inv,
+    ),
+  );
+  state.bounce++;
+  for (const st of surfaces) {
+    // The finished bounce becomes the input; the old input, cleared, collects the next bounce.
+    st.previous = st.samples.exchange(st.previous);
+    clearTarget(gl, st.samples.read);
+  }
+  state.samplesDone = 0;
 }

@@ -89,83 +89,94 @@ function isUniform(angles: number[]): boolean {
 /** Pack the given profiles (each once, in order) into one float table. */
 export function buildProfileTable(profiles: Photometry[], mode: ProfileLookupMode = 'dense'): ProfileTable {
   const values: number[] = [];
-  const layouts: ProfileLayout[] = [];
-  const push = (xs: ArrayLike<number>): number => {
-    const offset = values.length;
-    for (let i = 0; i < xs.length; i++) values.push(xs[i]);
-    return offset;
-  };
-  const axis = (angles: number[]): AxisLayout => {
-    const count = angles.length;
-    const first = angles[0];
-    const last = angles[count - 1];
-    const anglesOffset = push(angles);
-    if (count < 2 || isUniform(angles)) {
-      return { count, first, last, anglesOffset, uniform: true, invStep: count < 2 ? 0 : (count - 1) / (last - first), mapOffset: 0, mapSize: 0, minStep: count < 2 ? 0 : (last - first) / (count - 1) };
-    }
-    let minStep = Infinity;
-    for (let i = 1; i < count; i++) minStep = Math.min(minStep, angles[i] - angles[i - 1]);
-    const span = last - first;
-    const mapSize = Math.min(MAX_MAP_SIZE, Math.ceil(span / minStep) + 1);
-    const binsPerDegree = mapSize / span;
-    const map = new Float32Array(mapSize);
-    let k = 0;
-    for (let b = 0; b < mapSize; b++) {
-      const start = first + b / binsPerDegree;
-      while (k < count - 2 && angles[k + 1] <= start) k++;
-      map[b] = k;
-    }
-    return { count, first, last, anglesOffset, uniform: false, invStep: binsPerDegree, mapOffset: push(map), mapSize, minStep };
-  };
-
-  profiles.forEach((ph, id) => {
+  const layouts = profiles.map((ph, id): ProfileLayout => {
     // A single vertical angle cannot be interpolated: treat it as a flat profile over 0..180.
     const vAngles = ph.verticalAngles.length >= 2 ? ph.verticalAngles : [0, 180];
     const planes = ph.candela.map((row) => (ph.verticalAngles.length >= 2 ? row : [row[0], row[0]]));
     const rotational = ph.horizontalAngles.length < 2;
     const usedPlanes = rotational ? planes.slice(0, 1) : planes;
-    let lookup: MeasuredLookup | DenseLookup;
-    if (mode === 'measured') {
-      const vertical = axis(vAngles);
-      const horizontal = rotational ? null : axis(ph.horizontalAngles);
-      const candelaOffset = values.length;
-      for (const row of usedPlanes) for (const cd of row) values.push(Number.isFinite(cd) && cd > 0 ? cd : 0);
-      lookup = { kind: 'measured', vertical, horizontal, candelaOffset };
-    } else {
-      const grid = resampleProfile(ph);
-      lookup = { kind: 'dense', gamma: grid.gamma, c: grid.c, fold: grid.fold, offset: push(grid.values) };
-    }
-    let peak = 0;
-    let firstNonZero = vAngles.length;
-    let lastNonZero = -1;
-    for (const row of usedPlanes) {
-      row.forEach((cd, v) => {
-        const safe = Number.isFinite(cd) && cd > 0 ? cd : 0;
-        if (safe > 0) {
-          peak = Math.max(peak, safe);
-          firstNonZero = Math.min(firstNonZero, v);
-          lastNonZero = Math.max(lastNonZero, v);
-        }
-      });
-    }
-    // Interpolation reaches zero only at the neighbouring grid angle.
-    const gammaMax = lastNonZero < 0 ? 0 : vAngles[Math.min(vAngles.length - 1, lastNonZero + 1)];
-    const gammaMin = lastNonZero < 0 ? 180 : vAngles[Math.max(0, firstNonZero - 1)];
-    let steepest = 0;
-    for (const row of usedPlanes) {
-      for (let v = 1; v < row.length; v++) {
-        const step = vAngles[v] - vAngles[v - 1];
-        const a = Number.isFinite(row[v]) && row[v] > 0 ? row[v] : 0;
-        const b = Number.isFinite(row[v - 1]) && row[v - 1] > 0 ? row[v - 1] : 0;
-        if (step > 0) steepest = Math.max(steepest, Math.abs(a - b) / step);
-      }
-    }
-    const featureAngle = steepest > 0 ? peak / steepest : Infinity;
-    layouts.push({ id, lookup, gammaMax: lastNonZero === vAngles.length - 1 ? 180 : gammaMax, gammaMin: firstNonZero === 0 ? 0 : gammaMin, peakCandela: peak, featureAngle });
+    const lookup = mode === 'measured' ? measuredLookup(ph, vAngles, usedPlanes, rotational, values) : denseLookup(ph, values);
+    return { id, lookup, ...profileExtent(vAngles, usedPlanes) };
   });
-
   const rows = Math.max(1, Math.ceil(values.length / DATA_TEXTURE_WIDTH));
   const data = new Float32Array(rows * DATA_TEXTURE_WIDTH);
   data.set(values);
   return { layouts, data, rows };
+}
+
+/** Appends `xs` to the table; returns where they start. */
+function push(values: number[], xs: ArrayLike<number>): number {
+  const offset = values.length;
+  for (let i = 0; i < xs.length; i++) values.push(xs[i]);
+  return offset;
+}
+
+/** Candela below zero or not finite count as none. */
+const safeCandela = (cd: number): number => (Number.isFinite(cd) && cd > 0 ? cd : 0);
+
+/** The file's grid: vertical axis, horizontal axis (none when rotational), then the candela, appended in that order. */
+function measuredLookup(ph: Photometry, vAngles: number[], usedPlanes: number[][], rotational: boolean, values: number[]): MeasuredLookup {
+  const vertical = axisLayout(vAngles, values);
+  const horizontal = rotational ? null : axisLayout(ph.horizontalAngles, values);
+  const candelaOffset = values.length;
+  for (const row of usedPlanes) for (const cd of row) values.push(safeCandela(cd));
+  return { kind: 'measured', vertical, horizontal, candelaOffset };
+}
+
+function denseLookup(ph: Photometry, values: number[]): DenseLookup {
+  const grid = resampleProfile(ph);
+  return { kind: 'dense', gamma: grid.gamma, c: grid.c, fold: grid.fold, offset: push(values, grid.values) };
+}
+
+/** One measured axis: its angles appended, and for non-uniform steps the bin table that finds a cell (see AxisLayout). */
+function axisLayout(angles: number[], values: number[]): AxisLayout {
+  const count = angles.length;
+  const first = angles[0];
+  const last = angles[count - 1];
+  const anglesOffset = push(values, angles);
+  if (count < 2 || isUniform(angles)) {
+    return { count, first, last, anglesOffset, uniform: true, invStep: count < 2 ? 0 : (count - 1) / (last - first), mapOffset: 0, mapSize: 0, minStep: count < 2 ? 0 : (last - first) / (count - 1) };
+  }
+  let minStep = Infinity;
+  for (let i = 1; i < count; i++) minStep = Math.min(minStep, angles[i] - angles[i - 1]);
+  const span = last - first;
+  const mapSize = Math.min(MAX_MAP_SIZE, Math.ceil(span / minStep) + 1);
+  const binsPerDegree = mapSize / span;
+  const map = new Float32Array(mapSize);
+  let k = 0;
+  for (let b = 0; b < mapSize; b++) {
+    const start = first + b / binsPerDegree;
+    while (k < count - 2 && angles[k + 1] <= start) k++;
+    map[b] = k;
+  }
+  return { count, first, last, anglesOffset, uniform: false, invStep: binsPerDegree, mapOffset: push(values, map), mapSize, minStep };
+}
+
+/** Where a profile can be non-zero (γ range), its peak, and its angular feature scale (see ProfileLayout). */
+function profileExtent(vAngles: number[], usedPlanes: number[][]): Pick<ProfileLayout, 'gammaMax' | 'gammaMin' | 'peakCandela' | 'featureAngle'> {
+  let peak = 0;
+  let firstNonZero = vAngles.length;
+  let lastNonZero = -1;
+  for (const row of usedPlanes) {
+    row.forEach((cd, v) => {
+      const safe = safeCandela(cd);
+      if (safe > 0) {
+        peak = Math.max(peak, safe);
+        firstNonZero = Math.min(firstNonZero, v);
+        lastNonZero = Math.max(lastNonZero, v);
+      }
+    });
+  }
+  // Interpolation reaches zero only at the neighbouring grid angle.
+  const gammaMax = lastNonZero < 0 ? 0 : vAngles[Math.min(vAngles.length - 1, lastNonZero + 1)];
+  const gammaMin = lastNonZero < 0 ? 180 : vAngles[Math.max(0, firstNonZero - 1)];
+  let steepest = 0;
+  for (const row of usedPlanes) {
+    for (let v = 1; v < row.length; v++) {
+      const step = vAngles[v] - vAngles[v - 1];
+      if (step > 0) steepest = Math.max(steepest, Math.abs(safeCandela(row[v]) - safeCandela(row[v - 1])) / step);
+    }
+  }
+  const featureAngle = steepest > 0 ? peak / steepest : Infinity;
+  return { gammaMax: lastNonZero === vAngles.length - 1 ? 180 : gammaMax, gammaMin: firstNonZero === 0 ? 0 : gammaMin, peakCandela: peak, featureAngle };
 }

@@ -10,7 +10,7 @@ import type { BakeScene } from './bakeScene';
 import type { BakeSettings } from './bakeSettings';
 import { softwareRenderer } from './softwareRenderer';
 import { brightPatchOptions } from './brightPatchOptions';
-import { createBakeJobHandle } from './createBakeJobHandle';
+import { createBakeJobHandle, type StartedBake } from './createBakeJobHandle';
 import { createBakeTimer } from './createBakeTimer';
 import { createBounceIteration } from './createBounceIteration';
 import { createPassCompiler, type CompilePass } from './createPassCompiler';
@@ -48,14 +48,7 @@ export function startBakeJob(
   const startedAt = performance.now();
   const timer = createBakeTimer(gl, settings.syncTimings);
   const { compile, shaders } = createPassCompiler(gl, timer.timings);
-  const readbacks = {
-    count: 0,
-    bytes: 0,
-    counted(bytes: number) {
-      readbacks.count++;
-      readbacks.bytes += bytes;
-    },
-  };
+  const readbacks = createReadbackCounter();
   const given: GivenDirect | null = directOverride ? { surfaces: directOverride, objects: objectDirectOverride } : null;
 
   const inputs = prepareBakeInputs(gl, scene, settings, directOverride, objectDirectOverride);
@@ -68,22 +61,18 @@ export function startBakeJob(
   const statistics = createFluxStatistics(gl, pool, inputs.layouts, inputs.reflectance, settings.bounces + 1, readbacks.counted, views.flux);
   // Record 0 (the direct light) feeds the tail of bounce 1; a bake without indirect light (a
   // relighting basis: bounces 0) needs it only for its report, so it is recorded then, lazily.
-  let directRecorded = false;
-  const recordDirect = () => {
-    if (directRecorded) return;
-    directRecorded = true;
+  const recordDirect = once(() =>
     timer.timed('blend', () =>
       statistics.record(
         0,
         targets.receivers.map((st) => st.direct),
         1,
       ),
-    );
-  };
+    ),
+  );
   if (plan.indirectEnabled) recordDirect();
   const passes = compileFinalPasses(compile, plan);
-  const gather = plan.gather.map((pass, s) => compile(pass, 'gather', inputs.layouts[s].name));
-  if (plan.objectGather) gather.push(compile(plan.objectGather, 'gather objects'));
+  const gather = compileGatherPasses(compile, plan, inputs);
 
   // Bounce 1 from the brightest tiles of the direct maps, exactly (runBrightPatchPass.ts).
   const brightPass = plan.indirectEnabled
@@ -124,6 +113,36 @@ export function startBakeJob(
     brightPass,
     bounces,
   });
+}
+
+/** Counts the job's read-backs (count and bytes) for the report. */
+function createReadbackCounter(): StartedBake['readbacks'] {
+  const readbacks = {
+    count: 0,
+    bytes: 0,
+    counted(bytes: number) {
+      readbacks.count++;
+      readbacks.bytes += bytes;
+    },
+  };
+  return readbacks;
+}
+
+/** `run` the first time it is called, nothing after. */
+function once(run: () => void): () => void {
+  let done = false;
+  return () => {
+    if (done) return;
+    done = true;
+    run();
+  };
+}
+
+/** One gather pass per room surface, and the objects' atlas last when the scene has objects. */
+function compileGatherPasses(compile: CompilePass, plan: BakePlan, inputs: BakeInputs) {
+  const gather = plan.gather.map((pass, s) => compile(pass, 'gather', inputs.layouts[s].name));
+  if (plan.objectGather) gather.push(compile(plan.objectGather, 'gather objects'));
+  return gather;
 }
 
 /** Step 3: the plan, and every program it names compiling at once. Given direct maps with objects decide with the atlas's map whether any light enters. */

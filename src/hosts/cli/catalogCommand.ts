@@ -4,7 +4,7 @@ import { InputError } from '../../core/inputError';
 import { formatImportReport } from '../../core/gldf/gldfImportReport';
 import { parseGldfMapping, type GldfMapping } from '../../core/gldf/gldfMapping';
 import { exportGldfProduct, type GldfExport } from '../../core/gldf/exportGldfProduct';
-import { catalogSlug } from '../../core/gldf/gldfToModuleType';
+import { catalogSlug } from '../../core/gldf/gldfDefaults';
 import { importGldfCatalog, type GldfInput } from '../../core/gldf/importGldfCatalog';
 import { UPLOAD_LIMITS } from '../../core/gldf/uploadLimits';
 import { parseCatalogText } from '../../core/model/catalogSchema/catalogSchema';

@@ -1,8 +1,10 @@
 /**
  * A system's own rules, whatever its place in the plan: how it hangs, its joints and tree, its rails
  * and modules, its feeds (feedProblems.ts), its moved fixing points — in that order, each stage only
- * where the ones before it let the next make sense. One function, not one per domain: the planner's
- * first screen carries it, and each call between them cost bytes of its gzip budget.
+ * where the ones before it let the next make sense. One step per domain (hangingProblems,
+ * jointProblems, railProblems with moduleProblems, overloadProblems). The planner's first screen
+ * carries them: the split cost 52 B of its gzip on index.html and 50 B on embed.html (issue 28,
+ * measured with scripts/firstScreenBudget.mjs against the one-function version).
  */
 import { findModuleType, type Catalog } from '../catalogSchema/catalogSchema';
 import { keyed, type Keyed } from '../configuration/coding';
@@ -42,13 +44,37 @@ export function ownProblems(s: LightSystem, at: string, roomHeight: number, cata
   return list.map((q) => ({ ...q, path: `${at}${q.path}` }));
 }
 
+/** Reports a problem (ReportProblem) and a sub-rule's problem (fixing points, free positions, the tree, aim, filter, patch) with its own coding. */
+interface OwnReport {
+  p: ReportProblem;
+  sub: (code: string, path: string, found: { message: string } & Keyed) => void;
+}
+
 function computeOwnProblems(s: LightSystem, roomHeight: number, catalog: Catalog): Problem[] {
-  const at = '';
   const out: Problem[] = [];
   // `key`: the sentence's own code where the rule has several (docs/i18n.md); its params then travel non-enumerable.
-  const p: ReportProblem = (code, path, message, params, key) => out.push(key ? keyed({ code, path: `${at}${path}`, message }, key, params) : { code, path: `${at}${path}`, message, ...(params ? { params } : {}) });
-  // A sub-rule's problem (fixing points, free positions, the tree, aim, filter, patch) with its own coding.
-  const sub = (code: string, path: string, found: { message: string } & Keyed) => p(code, path, found.message, found.params, found.key);
+  const p: ReportProblem = (code, path, message, params, key) => out.push(key ? keyed({ code, path, message }, key, params) : { code, path, message, ...(params ? { params } : {}) });
+  const report: OwnReport = { p, sub: (code, path, found) => p(code, path, found.message, found.params, found.key) };
+  hangingProblems(s, roomHeight, catalog, p);
+  jointProblems(s, catalog, p);
+  if (out.length === 0) {
+    // The tree (railTree.ts): parents before children, one connector per node, its ports.
+    const t = treeProblem(s, catalog);
+    if (t) report.sub(t.code, `.joints[${t.joint}].${t.field}`, t);
+  }
+  s.rails.forEach((r, k) => railProblems(r, `.rails[${k}]`, catalog, report));
+  feedProblems(s, catalog, p);
+  if (out.length === 0) overloadProblems(s, catalog, p);
+  // Moved fixing points (fixingRules.ts), once the chain itself is sound.
+  if (out.length === 0 && s.fixings !== undefined) {
+    const f = Array.isArray(s.fixings) ? fixingProblem(s, s.fixings, catalog) : keyed({ code: 'fixing-order', index: 0, message: 'fixings must be a list of chain coordinates' }, 'fixingsNotList');
+    if (f) report.sub(f.code, `.fixings[${f.index}]`, f);
+  }
+  return out;
+}
+
+/** Position and rotation, suspension range, mounting, and the head room under the modules. */
+function hangingProblems(s: LightSystem, roomHeight: number, catalog: Catalog, p: ReportProblem): void {
   if (![s.x, s.z, s.rotation].every(Number.isFinite)) p('position', '', `system ${s.id} has a non-finite position or rotation`, { id: s.id }, 'systemPosition');
   else if (s.rotation < 0 || s.rotation >= 360) p('rotation', '.rotation', `rotation must be in [0, 360) degrees (got ${s.rotation})`, { value: s.rotation }, 'rotationRange');
   const susp = catalog.suspension;
@@ -64,6 +90,10 @@ function computeOwnProblems(s: LightSystem, roomHeight: number, catalog: Catalog
     if (surface) p('suspension-floor', '.mounting', message, { hang: Number(hang), min: susp.minHeightAboveFloor }, 'suspensionFloorSurface');
     else p('suspension-floor', '.suspension', message, { hang: Number(hang), min: susp.minHeightAboveFloor });
   }
+}
+
+/** Rails present, one joint fewer than rails, each joint's connector known and its turn allowed. */
+function jointProblems(s: LightSystem, catalog: Catalog, p: ReportProblem): void {
   if (s.rails.length === 0) p('no-rails', '.rails', `system ${s.id} has no rails`, { id: s.id }, 'noRails');
   if (s.joints.length !== Math.max(0, s.rails.length - 1))
     p('joint-count', '.joints', `${s.rails.length} rails need ${Math.max(0, s.rails.length - 1)} joints, found ${s.joints.length}`, { rails: s.rails.length, needed: Math.max(0, s.rails.length - 1), found: s.joints.length }, 'jointCount');
@@ -82,66 +112,65 @@ function computeOwnProblems(s: LightSystem, roomHeight: number, catalog: Catalog
       else p('bad-turn', `.joints[${i}].turn`, `connector '${con.id}' turns by ±${con.angle}°, not ${j.turn}°`, { id: con.id, connectorId: con.id, angle: con.angle, turn: j.turn }, 'badTurn');
     }
   });
-  if (out.length === 0) {
-    // The tree (railTree.ts): parents before children, one connector per node, its ports.
-    const t = treeProblem(s, catalog);
-    if (t) sub(t.code, `.joints[${t.joint}].${t.field}`, t);
-  }
+}
+
+type Rail = LightSystem['rails'][number];
+
+/** A rail's length (range, grid), its modules, and where they sit (free positions, or the distribution's fit). */
+function railProblems(r: Rail, rp: string, catalog: Catalog, report: OwnReport): void {
+  const { p, sub } = report;
   const rail = catalog.rail;
-  s.rails.forEach((r, k) => {
-    const rp = `.rails[${k}]`;
-    if (!Number.isFinite(r.length) || r.length < rail.minLength - EPS || r.length > rail.maxLength + EPS) {
-      p('rail-length-range', `${rp}.length`, `rail length must be between ${rail.minLength} and ${rail.maxLength} m (got ${r.length})`, { min: rail.minLength, max: rail.maxLength, value: r.length });
-    } else if (!onGrid(r.length, rail.step)) p('rail-length-grid', `${rp}.length`, `rail length must be a multiple of ${rail.step} m (got ${r.length})`, { step: rail.step, value: r.length });
-    let refsOk = true;
-    r.modules.forEach((m, n) => {
-      const mp = `${rp}.modules[${n}]`;
-      const type = catalog.moduleTypes.find((t) => t.id === m.type);
-      if (!type) {
-        refsOk = false;
-        p('unknown-module-type', `${mp}.type`, `unknown module type '${m.type}'`, { id: m.type }, 'unknownModuleType');
-        return;
-      }
-      const named = { name: type.name, typeId: type.id };
-      if (!type.beams.some((b) => b.id === m.beam)) p('unknown-beam', `${mp}.beam`, `${type.name} has no beam '${m.beam}'`, { ...named, beam: m.beam }, 'unknownBeam');
-      if (!type.ccts.includes(m.cct)) p('cct', `${mp}.cct`, `${type.name} is not available in ${m.cct} K (offered: ${type.ccts.join(', ')} K)`, { ...named, cct: String(m.cct), ccts: type.ccts.join(', ') }, 'cctNotOffered');
-      if (!Number.isFinite(m.dimming) || m.dimming < 0 || m.dimming > 1) p('dimming', `${mp}.dimming`, `dimming must be between 0 and 1 (got ${m.dimming})`, { value: m.dimming }, 'dimmingRange');
-      const filter = m.filter !== undefined ? moduleFilterProblem(type, m.filter, catalog) : null;
-      if (filter) sub(filter.code, `${mp}.filter`, filter);
-      const aim = m.aim !== undefined ? aimProblem(m.aim, type) : null;
-      if (aim) sub(aim.field === 'aim' ? 'aim-fixed' : 'aim-range', `${mp}.${aim.field}`, aim);
-      const patch = m.dmx ? patchRangeIssue(m.dmx, type) : null;
-      if (patch) sub('dmx-range', `${mp}.dmx`, patch);
-    });
-    const free =
-      refsOk && Number.isFinite(r.length) && isFreeRail(r)
-        ? freeRailProblem(
-            r,
-            r.modules.map((m) => findModuleType(catalog, m.type).length),
-          )
-        : null;
-    if (free) sub(free.code, `${rp}.modules[${free.index}].offset`, free);
-    else if (refsOk && Number.isFinite(r.length) && !railModuleOffsets(r, catalog)) {
-      p('modules-do-not-fit', `${rp}.modules`, `the modules of rail ${r.id} do not fit its ${fmt(r.length)} m with distribution '${r.distribution}'`, { rail: r.id, length: Number(fmt(r.length)), distribution: r.distribution });
-    }
+  if (!Number.isFinite(r.length) || r.length < rail.minLength - EPS || r.length > rail.maxLength + EPS) {
+    p('rail-length-range', `${rp}.length`, `rail length must be between ${rail.minLength} and ${rail.maxLength} m (got ${r.length})`, { min: rail.minLength, max: rail.maxLength, value: r.length });
+  } else if (!onGrid(r.length, rail.step)) p('rail-length-grid', `${rp}.length`, `rail length must be a multiple of ${rail.step} m (got ${r.length})`, { step: rail.step, value: r.length });
+  let refsOk = true;
+  r.modules.forEach((m, n) => {
+    if (!moduleProblems(m, `${rp}.modules[${n}]`, catalog, report)) refsOk = false;
   });
-  feedProblems(s, catalog, p);
-  if (out.length === 0) {
-    for (const l of feedLoads(s, catalog)) {
-      if (isOverloaded(l))
-        p(
-          'feed-overload',
-          `.feeds[${l.index}]`,
-          `${feedLabel(l.index)} carries ${formatWatts(l.load)} W, more than its ${formatWatts(l.capacity)} W driver (${l.driver.name})`,
-          { n: l.index + 1, load: Number(formatWatts(l.load)), capacity: Number(formatWatts(l.capacity)), driver: l.driver.name, driverId: l.driver.id },
-          'feedCarries',
-        );
-    }
+  const free =
+    refsOk && Number.isFinite(r.length) && isFreeRail(r)
+      ? freeRailProblem(
+          r,
+          r.modules.map((m) => findModuleType(catalog, m.type).length),
+        )
+      : null;
+  if (free) sub(free.code, `${rp}.modules[${free.index}].offset`, free);
+  else if (refsOk && Number.isFinite(r.length) && !railModuleOffsets(r, catalog)) {
+    p('modules-do-not-fit', `${rp}.modules`, `the modules of rail ${r.id} do not fit its ${fmt(r.length)} m with distribution '${r.distribution}'`, { rail: r.id, length: Number(fmt(r.length)), distribution: r.distribution });
   }
-  // Moved fixing points (fixingRules.ts), once the chain itself is sound.
-  if (out.length === 0 && s.fixings !== undefined) {
-    const f = Array.isArray(s.fixings) ? fixingProblem(s, s.fixings, catalog) : keyed({ code: 'fixing-order', index: 0, message: 'fixings must be a list of chain coordinates' }, 'fixingsNotList');
-    if (f) sub(f.code, `.fixings[${f.index}]`, f);
+}
+
+/** A module's type, beam, CCT, dimming, filter, aim and DMX patch; false when its type is unknown (nothing else is checked then). */
+function moduleProblems(m: Rail['modules'][number], mp: string, catalog: Catalog, report: OwnReport): boolean {
+  const { p, sub } = report;
+  const type = catalog.moduleTypes.find((t) => t.id === m.type);
+  if (!type) {
+    p('unknown-module-type', `${mp}.type`, `unknown module type '${m.type}'`, { id: m.type }, 'unknownModuleType');
+    return false;
   }
-  return out;
+  const named = { name: type.name, typeId: type.id };
+  if (!type.beams.some((b) => b.id === m.beam)) p('unknown-beam', `${mp}.beam`, `${type.name} has no beam '${m.beam}'`, { ...named, beam: m.beam }, 'unknownBeam');
+  if (!type.ccts.includes(m.cct)) p('cct', `${mp}.cct`, `${type.name} is not available in ${m.cct} K (offered: ${type.ccts.join(', ')} K)`, { ...named, cct: String(m.cct), ccts: type.ccts.join(', ') }, 'cctNotOffered');
+  if (!Number.isFinite(m.dimming) || m.dimming < 0 || m.dimming > 1) p('dimming', `${mp}.dimming`, `dimming must be between 0 and 1 (got ${m.dimming})`, { value: m.dimming }, 'dimmingRange');
+  const filter = m.filter !== undefined ? moduleFilterProblem(type, m.filter, catalog) : null;
+  if (filter) sub(filter.code, `${mp}.filter`, filter);
+  const aim = m.aim !== undefined ? aimProblem(m.aim, type) : null;
+  if (aim) sub(aim.field === 'aim' ? 'aim-fixed' : 'aim-range', `${mp}.${aim.field}`, aim);
+  const patch = m.dmx ? patchRangeIssue(m.dmx, type) : null;
+  if (patch) sub('dmx-range', `${mp}.dmx`, patch);
+  return true;
+}
+
+/** Every feed whose load exceeds its driver. */
+function overloadProblems(s: LightSystem, catalog: Catalog, p: ReportProblem): void {
+  for (const l of feedLoads(s, catalog)) {
+    if (isOverloaded(l))
+      p(
+        'feed-overload',
+        `.feeds[${l.index}]`,
+        `${feedLabel(l.index)} carries ${formatWatts(l.load)} W, more than its ${formatWatts(l.capacity)} W driver (${l.driver.name})`,
+        { n: l.index + 1, load: Number(formatWatts(l.load)), capacity: Number(formatWatts(l.capacity)), driver: l.driver.name, driverId: l.driver.id },
+        'feedCarries',
+      );
+  }
 }
