@@ -84,6 +84,114 @@ export interface FurnishedBenchScenePart {
   rows: FurnishedBenchRow[];
 }
 
+/** Bake values and reference values at the same points, direct and total. */
+interface Samples {
+  d: number[];
+  rd: number[];
+  t: number[];
+  rt: number[];
+}
+
+const noSamples = (): Samples => ({ d: [], rd: [], t: [], rt: [] });
+type FurnishedReference = ReturnType<typeof solveFurnishedReference>;
+type BakedMaps = ReturnType<Baker['bake']>['maps'];
+
+function push(out: Samples, d: number, t: number, r: { direct: number; total: number }) {
+  out.d.push(d);
+  out.rd.push(r.direct);
+  out.t.push(t);
+  out.rt.push(r.total);
+}
+
+/** The room's six surfaces at texel centres every 0.2 m, against the reference there. */
+function wallSamples(maps: BakedMaps, reference: FurnishedReference, texelSize: number): Samples {
+  const wall = noSamples();
+  const stride = Math.max(1, Math.round(0.2 / texelSize));
+  for (const name of SURFACE_NAMES as readonly SurfaceName[]) {
+    const m = maps[name];
+    const [d, t] = [luxOf(m.direct), luxOf(m.total)];
+    for (let j = 0; j < m.layout.height; j += stride) {
+      for (let i = 0; i < m.layout.width; i += stride) {
+        const k = j * m.layout.width + i;
+        push(wall, d[k], t[k], furnishedIlluminanceAt(reference, texelCentre(m.layout, i, j), m.layout.normal));
+      }
+    }
+  }
+  return wall;
+}
+
+/** Every fully covered atlas texel (about one per 0.1 m), at its G-buffer point and normal, against the reference; and the atlas's Σ E·A. */
+function atlasSamples(maps: BakedMaps, reference: FurnishedReference, texelSize: number): { atlas: Samples; flux: number } {
+  const atlas = noSamples();
+  let flux = 0;
+  const o = maps.objects;
+  if (!o) return { atlas, flux };
+  const [d, t] = [luxOf(o.direct), luxOf(o.total)];
+  const { position, normal } = o.atlas;
+  const every = Math.max(1, Math.round(0.1 / texelSize) ** 2);
+  let covered = 0;
+  for (let k = 0; k < d.length; k++) {
+    flux += t[k] * position[4 * k + 3] * o.atlas.texelSize ** 2;
+    if (position[4 * k + 3] < 0.999 || covered++ % every !== 0) continue;
+    push(atlas, d[k], t[k], furnishedIlluminanceAt(reference, [position[4 * k], position[4 * k + 1], position[4 * k + 2]], [normal[4 * k], normal[4 * k + 1], normal[4 * k + 2]]));
+  }
+  return { atlas, flux };
+}
+
+/** Σ E·A of the total light on the room's six surfaces. */
+function surfaceFlux(maps: BakedMaps): number {
+  let flux = 0;
+  for (const name of SURFACE_NAMES as readonly SurfaceName[]) {
+    const m = maps[name];
+    const a = (m.layout.lengthU / m.layout.width) * (m.layout.lengthV / m.layout.height);
+    for (const e of luxOf(m.total)) flux += e * a;
+  }
+  return flux;
+}
+
+/** Σ E·A of the reference's total light over its patches. */
+function referenceFlux(reference: FurnishedReference): number {
+  let flux = 0;
+  reference.patches.forEach((p, i) => {
+    flux += p.area * (luminanceAt(reference.directRgb, 3 * i) + luminanceAt(reference.indirectRgb, 3 * i));
+  });
+  return flux;
+}
+
+function rowLine(row: FurnishedBenchRow): string {
+  const pct = (e: number) => `${(100 * e).toFixed(2)} %`;
+  return `  texel ${row.quality.texelSize} m: bake ${Math.round(row.bakeMs)} ms; RMS walls direct ${pct(row.wallsDirect)} total ${pct(row.wallsTotal)}, objects direct ${pct(row.atlasDirect)} total ${pct(row.atlasTotal)}, flux ${pct(row.fluxError)}`;
+}
+
+/** One rung: an untimed warm-up bake, the timed bake, and its errors against the reference. */
+function benchRung(baker: Baker, s: FurnishedBenchScene, bakeScene: Parameters<Baker['bake']>[0], reference: FurnishedReference, quality: BenchQuality): { row: FurnishedBenchRow; queryMs: number } {
+  const settings = { ...quality, sourceSpacing: 0.05, texelSupersampling: 1 };
+  baker.bake(bakeScene, { ...settings, samples: 16, bounces: 1 });
+  const started = performance.now();
+  const { maps } = baker.bake(bakeScene, settings);
+  const bakeMs = performance.now() - started;
+  const t1 = performance.now();
+  const wall = wallSamples(maps, reference, quality.texelSize);
+  const { atlas, flux } = atlasSamples(maps, reference, quality.texelSize);
+  const fluxError = (flux + surfaceFlux(maps)) / referenceFlux(reference) - 1;
+  const queryMs = performance.now() - t1;
+  const peak = Math.max(...wall.rt, ...atlas.rt);
+  const rms = (bake: number[], ref: number[]) => relativeErrors(bake, ref, 0.01 * peak).rms;
+  const row: FurnishedBenchRow = {
+    scene: s.name,
+    quality,
+    bakeMs,
+    wallPoints: wall.d.length,
+    atlasTexels: atlas.d.length,
+    wallsDirect: rms(wall.d, wall.rd),
+    wallsTotal: rms(wall.t, wall.rt),
+    atlasDirect: rms(atlas.d, atlas.rd),
+    atlasTotal: rms(atlas.t, atlas.rt),
+    fluxError,
+  };
+  return { row, queryMs };
+}
+
 /**
  * The furnished rows of `luxbox bench`: each scene baked at each rung (after an untimed
  * warm-up bake) and compared with the furnished CPU reference (src/reference) at wall texel
@@ -102,73 +210,10 @@ export function runFurnishedBench(baker: Baker, root: string, log: (line: string
     const rows: FurnishedBenchRow[] = [];
     let queryMs = 0;
     for (const quality of FURNISHED_LADDER) {
-      const settings = { ...quality, sourceSpacing: 0.05, texelSupersampling: 1 };
-      baker.bake(bakeScene, { ...settings, samples: 16, bounces: 1 });
-      const started = performance.now();
-      const { maps } = baker.bake(bakeScene, settings);
-      const bakeMs = performance.now() - started;
-      const t1 = performance.now();
-      const wall = { d: [] as number[], rd: [] as number[], t: [] as number[], rt: [] as number[] };
-      const stride = Math.max(1, Math.round(0.2 / quality.texelSize));
-      for (const name of SURFACE_NAMES as readonly SurfaceName[]) {
-        const m = maps[name];
-        const [d, t] = [luxOf(m.direct), luxOf(m.total)];
-        for (let j = 0; j < m.layout.height; j += stride) {
-          for (let i = 0; i < m.layout.width; i += stride) {
-            const r = furnishedIlluminanceAt(reference, texelCentre(m.layout, i, j), m.layout.normal);
-            const k = j * m.layout.width + i;
-            wall.d.push(d[k]);
-            wall.rd.push(r.direct);
-            wall.t.push(t[k]);
-            wall.rt.push(r.total);
-          }
-        }
-      }
-      const atlas = { d: [] as number[], rd: [] as number[], t: [] as number[], rt: [] as number[] };
-      let bakeFlux = 0;
-      const o = maps.objects;
-      if (o) {
-        const [d, t] = [luxOf(o.direct), luxOf(o.total)];
-        const { position, normal } = o.atlas;
-        const every = Math.max(1, Math.round(0.1 / quality.texelSize) ** 2);
-        let covered = 0;
-        for (let k = 0; k < d.length; k++) {
-          bakeFlux += t[k] * position[4 * k + 3] * o.atlas.texelSize ** 2;
-          if (position[4 * k + 3] < 0.999 || covered++ % every !== 0) continue;
-          const r = furnishedIlluminanceAt(reference, [position[4 * k], position[4 * k + 1], position[4 * k + 2]], [normal[4 * k], normal[4 * k + 1], normal[4 * k + 2]]);
-          atlas.d.push(d[k]);
-          atlas.rd.push(r.direct);
-          atlas.t.push(t[k]);
-          atlas.rt.push(r.total);
-        }
-      }
-      for (const name of SURFACE_NAMES as readonly SurfaceName[]) {
-        const m = maps[name];
-        const a = (m.layout.lengthU / m.layout.width) * (m.layout.lengthV / m.layout.height);
-        for (const e of luxOf(m.total)) bakeFlux += e * a;
-      }
-      let refFlux = 0;
-      reference.patches.forEach((p, i) => {
-        refFlux += p.area * (luminanceAt(reference.directRgb, 3 * i) + luminanceAt(reference.indirectRgb, 3 * i));
-      });
-      queryMs += performance.now() - t1;
-      const peak = Math.max(...wall.rt, ...atlas.rt);
-      const row: FurnishedBenchRow = {
-        scene: s.name,
-        quality,
-        bakeMs,
-        wallPoints: wall.d.length,
-        atlasTexels: atlas.d.length,
-        wallsDirect: relativeErrors(wall.d, wall.rd, 0.01 * peak).rms,
-        wallsTotal: relativeErrors(wall.t, wall.rt, 0.01 * peak).rms,
-        atlasDirect: relativeErrors(atlas.d, atlas.rd, 0.01 * peak).rms,
-        atlasTotal: relativeErrors(atlas.t, atlas.rt, 0.01 * peak).rms,
-        fluxError: bakeFlux / refFlux - 1,
-      };
-      rows.push(row);
-      log(
-        `  texel ${quality.texelSize} m: bake ${Math.round(bakeMs)} ms; RMS walls direct ${(100 * row.wallsDirect).toFixed(2)} % total ${(100 * row.wallsTotal).toFixed(2)} %, objects direct ${(100 * row.atlasDirect).toFixed(2)} % total ${(100 * row.atlasTotal).toFixed(2)} %, flux ${(100 * row.fluxError).toFixed(2)} %`,
-      );
+      const rung = benchRung(baker, s, bakeScene, reference, quality);
+      rows.push(rung.row);
+      queryMs += rung.queryMs;
+      log(rowLine(rung.row));
     }
     parts.push({ scene: s, patches: reference.patches.length, sweeps: reference.sweeps, referenceMs: solveMs + queryMs, rows });
   }
