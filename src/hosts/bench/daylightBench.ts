@@ -22,6 +22,7 @@ import type { BenchQuality } from './benchScenes';
 import { compareDaylightWithReference } from './daylightComparison';
 import type { MachineInfo } from './machineInfo';
 import { relativeErrors } from './shapedRoomComparison';
+import { DAYLIGHT_BOX_FINISHES, daylightBox } from './daylightBox';
 
 export interface DaylightBenchScene {
   name: string;
@@ -31,18 +32,7 @@ export interface DaylightBenchScene {
   sun: { direction: Vec3; normalIlluminance: number } | null;
 }
 
-const finishes = { floor: 0.3, ceiling: 0.8, walls: 0.5 };
-const box = (): RoomInput => ({
-  outline: [
-    [0, 0],
-    [5, 0],
-    [5, 4],
-    [0, 4],
-  ],
-  height: 2.8,
-  openings: [{ wall: 2, offset: 1.75, width: 1.5, sill: 0.9, height: 1.4, kind: 'window' }],
-  reflectance: finishes,
-});
+const box = (): RoomInput => daylightBox();
 const SUN = sunDirection(35, 200) as Vec3;
 
 export const DAYLIGHT_SCENES: readonly DaylightBenchScene[] = [
@@ -74,7 +64,7 @@ export const DAYLIGHT_SCENES: readonly DaylightBenchScene[] = [
       ],
       height: 2.6,
       openings: [{ wall: 4, offset: 0.5, width: 2, sill: 0.5, height: 1.8, kind: 'window' }],
-      reflectance: finishes,
+      reflectance: DAYLIGHT_BOX_FINISHES,
     },
     sky: cieOvercastSky(10_000),
     sun: null,

@@ -22,6 +22,7 @@ import { roomFluxes } from '../../../src/reference/solveRoomReference';
 import { solveDaylightReference, type DaylightReferenceResult } from '../../../src/reference/solveDaylightReference';
 import { shapedBakeRoom } from './shapedRoomKit';
 import { withHeadlessGL } from './withHeadlessGL';
+import { daylightBox } from '../../../src/hosts/bench/daylightBox';
 
 const gl = withHeadlessGL();
 const baker = createBaker(gl);
@@ -30,17 +31,7 @@ const pct = (x: number) => `${(100 * x).toFixed(2)} %`;
 
 // The reference tests' room: 5 × 4 m, 2.8 m high, a 1.5 × 1.4 m window in the south wall (wall 2) at sill 0.9 m.
 const box = (reflectance: RoomInput['reflectance'], transmittance = true): { input: RoomInput; glazing: Map<number, Glazing> } => ({
-  input: {
-    outline: [
-      [0, 0],
-      [5, 0],
-      [5, 4],
-      [0, 4],
-    ],
-    height: 2.8,
-    openings: [{ wall: 2, offset: 1.75, width: 1.5, sill: 0.9, height: 1.4, kind: 'window' }],
-    reflectance,
-  },
+  input: daylightBox(reflectance),
   glazing: new Map(transmittance ? [[0, glazingFrom('double')]] : []),
 });
 // An L whose west wing's south wall (wall 4) has a 2 × 1.8 m window; the inner corner hides part of it from the east wing.

@@ -26,12 +26,13 @@ import { roomFluxes } from '../../../src/reference/solveRoomReference';
 import { solveDaylightReference, type DaylightReferenceResult } from '../../../src/reference/solveDaylightReference';
 import { shapedBakeRoom } from './shapedRoomKit';
 import { withHeadlessGL } from './withHeadlessGL';
+import { DAYLIGHT_BOX_WINDOW } from '../../../src/hosts/bench/daylightBox';
 
 const gl = withHeadlessGL();
 const baker = createBaker(gl);
 const SETTINGS = { texelSize: 0.1 };
 const pct = (x: number) => `${(100 * x).toFixed(2)} %`;
-const SOUTH_WINDOW: RoomOpening = { wall: 2, offset: 1.75, width: 1.5, sill: 0.9, height: 1.4, kind: 'window' };
+const SOUTH_WINDOW: RoomOpening = DAYLIGHT_BOX_WINDOW;
 const BLACK = { floor: 0, ceiling: 0, walls: 0 };
 const FINISHES = { floor: 0.3, ceiling: 0.8, walls: 0.5 };
 

@@ -20,6 +20,7 @@ import { spot } from '../bake/bakeTestKit';
 import { shapedBakeRoom } from '../bake/shapedRoomKit';
 import { withHeadlessGL } from '../bake/withHeadlessGL';
 import { compareWithBake } from './relightTestKit';
+import { daylightBox } from '../../../src/hosts/bench/daylightBox';
 
 const gl = withHeadlessGL();
 const SETTINGS = { texelSize: 0.2, maxTextureSize: 64, samples: 16, bounces: 2, samplesPerDraw: 8, blurRadius: 1, seed: 30 };
@@ -27,17 +28,7 @@ const baker = createBaker(gl);
 afterAll(() => baker.dispose());
 
 // The daylight tests' box: 5 × 4 m, 2.8 m high, a 1.5 × 1.4 m double-glazed window in the south wall at sill 0.9 m.
-const room = shapedBakeRoom({
-  outline: [
-    [0, 0],
-    [5, 0],
-    [5, 4],
-    [0, 4],
-  ],
-  height: 2.8,
-  openings: [{ wall: 2, offset: 1.75, width: 1.5, sill: 0.9, height: 1.4, kind: 'window' }],
-  reflectance: { floor: 0.3, ceiling: 0.8, walls: 0.5 },
-});
+const room = shapedBakeRoom(daylightBox());
 const glazing = new Map([[0, glazingFrom('double')]]);
 const lamp = spot(800, 30, 15, 2);
 

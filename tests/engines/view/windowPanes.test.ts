@@ -16,6 +16,7 @@ import type { SharedDisplayUniforms } from '../../../src/engines/view/createRoom
 import { NIGHT_SKY_LUMINANCE, WINDOW_FRAME_WIDTH } from '../../../src/engines/view/windowPaneUniforms';
 import { shapedBakeRoom } from '../bake/shapedRoomKit';
 import { headlessRenderer } from './headlessRenderer';
+import { daylightBox } from '../../../src/hosts/bench/daylightBox';
 
 const W = 96;
 const H = 96;
@@ -23,17 +24,7 @@ const renderer = headlessRenderer(W, H);
 const EXPOSURE = 0.01;
 
 // 5 × 4 m, a 1.5 × 1.4 m window in the south wall (z = 4) from x = 1.75 to 3.25, sill 0.9 m.
-const room = shapedBakeRoom({
-  outline: [
-    [0, 0],
-    [5, 0],
-    [5, 4],
-    [0, 4],
-  ],
-  height: 2.8,
-  openings: [{ wall: 2, offset: 1.75, width: 1.5, sill: 0.9, height: 1.4, kind: 'window' }],
-  reflectance: { floor: 0.3, ceiling: 0.8, walls: 0.5 },
-});
+const room = shapedBakeRoom(daylightBox());
 const WINDOW = { x: [1.75, 3.25], y: [0.9, 2.3], z: 4 };
 
 function display(): SharedDisplayUniforms {

@@ -19,6 +19,7 @@ import type { RoomInput } from '../../../src/core/room/roomInput';
 import { workPlanePoints } from '../../../src/engines/bake/daylight/workPlaneDaylight';
 import { normaliseRoom } from '../../../src/core/room/normaliseRoom';
 import { daylightIlluminanceAt, solveDaylightReference } from '../../../src/reference/solveDaylightReference';
+import { daylightBox } from '../../../src/hosts/bench/daylightBox';
 
 const root = join(__dirname, '../../..');
 const scene = join(root, 'tests/fixtures/scenes/daylight-room.json');
@@ -28,18 +29,8 @@ function luxbox(args: string[]) {
   return { status: r.status, stdout: r.stdout, stderr: r.stderr };
 }
 
-const ROOM: RoomInput = {
-  outline: [
-    [0, 0],
-    [5, 0],
-    [5, 4],
-    [0, 4],
-  ],
-  height: 2.8,
-  // The fixture's window: south wall, u = 1.75 m from x = 0, so 1.75 m from the wall's first corner (5, 4) too.
-  openings: [{ wall: 2, offset: 1.75, width: 1.5, sill: 0.9, height: 1.4, kind: 'window' }],
-  reflectance: { floor: 0.3, ceiling: 0.8, walls: 0.5 },
-};
+// The daylight box: its south window's u = 1.75 m from x = 0, so 1.75 m from the wall's first corner (5, 4) too.
+const ROOM: RoomInput = daylightBox();
 
 describe('luxbox bake: daylight in report.json', () => {
   it('reports the sun where NOAA puts it and work-plane daylight factors within 3 % of the reference', () => {

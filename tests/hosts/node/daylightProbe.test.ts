@@ -23,20 +23,11 @@ import { parseLightingScene } from '../../../src/core/model/lightingScene/parseL
 import type { RoomInput } from '../../../src/core/room/roomInput';
 import { run } from '../../../src/hosts/cli/probeCommand';
 import { daylightIlluminanceAt, solveDaylightReference } from '../../../src/reference/solveDaylightReference';
+import { daylightBox } from '../../../src/hosts/bench/daylightBox';
 
 const FIXTURE = 'tests/fixtures/scenes/daylight-room.json';
 const dir = mkdtempSync(join(tmpdir(), 'luxbox-daylight-probe-'));
-const ROOM: RoomInput = {
-  outline: [
-    [0, 0],
-    [5, 0],
-    [5, 4],
-    [0, 4],
-  ],
-  height: 2.8,
-  openings: [{ wall: 2, offset: 1.75, width: 1.5, sill: 0.9, height: 1.4, kind: 'window' }],
-  reflectance: { floor: 0.3, ceiling: 0.8, walls: 0.5 },
-};
+const ROOM: RoomInput = daylightBox();
 
 type Columns = { total: number[]; direct: number[]; indirect: number[] };
 type Printed = Columns & { daylight?: Columns };
