@@ -134,7 +134,7 @@ function toText(i: IesInfo): string {
     `beam (50 %):       C0 ${i.beam.c0}°, C90 ${i.beam.c90}°`,
     `field (10 %):      C0 ${i.field.c0}°, C90 ${i.field.c90}°`,
     `input watts:       ${i.inputWatts === null ? '—' : `${i.inputWatts} W`}`,
-    `luminous opening:  ${o.shape}${o.shape === 'point' ? '' : `, length ${m(o.length)} (C0) × width ${m(o.width)} (C90) × height ${m(o.height)}`}`,
+    `luminous opening:  ${o.shape}${o.shape === 'point' ? '' : `, ${m(o.width)} along C0–C180 × ${m(o.length)} along C90–C270 × height ${m(o.height)}`}`,
     `warnings:          ${i.warnings.length ? i.warnings.join('\n                   ') : 'none'}`,
   ];
   return lines.join('\n') + '\n';

@@ -21,7 +21,8 @@ describe('luxbox ies info', () => {
       angles: { file: { vertical: 37, horizontal: 37, horizontalRange: [90, 270] }, expanded: { vertical: 39, horizontal: 73 } },
       statedLumens: 9600,
       inputWatts: 68,
-      luminousOpening: { shape: 'rectangular', width: 0.24, length: 0.27 },
+      // The file's width 0.24 m runs along C90, its length 0.27 m along C0 (LM-63 §5.10); stored under EULUMDAT's names (width = along C0).
+      luminousOpening: { shape: 'rectangular', width: 0.27, length: 0.24 },
       warnings: [],
     });
     expect(Math.abs(info.lumensRatio - 1)).toBeLessThan(0.01);
@@ -39,6 +40,8 @@ describe('luxbox ies info', () => {
     const text = luxbox('ies', 'info', 'public/ies/zumtobel_sloin_linear_isym4.ldt');
     expect(text.stdout).toContain('integrated lumens:');
     expect(text.stdout).toContain('beam (50 %):');
+    // The opening by the planes it lies along (EULUMDAT: width b along C0–C180, length along C90–C270).
+    expect(text.stdout).toContain('luminous opening:  rectangular, 0.072 m along C0–C180 × 2 m along C90–C270');
   });
 
   it('warnings appear in the text output and in --json', () => {
