@@ -47,6 +47,11 @@ export function viewerDisplayApi(v: Viewer) {
     lightSources(): LightSources {
       return v.service.lightSources;
     },
+    /** Fixed false-colour levels in lux (the daylight-factor view's, core/daylight/daylightFactor.ts), or null: levels from the maps again. */
+    setLuxLevels(levels: readonly number[] | null) {
+      v.maps.setFixedLevels(levels);
+      v.frames.request();
+    },
     setMode(m: ViewMode) {
       v.maps.setMode(m);
       v.frames.request();
