@@ -36,6 +36,11 @@ function workPlane(bakeScene: BakeScene, maps: BakedMaps, daylight: BakeDaylight
   return { lux, points: lux.length };
 }
 
+/** The work plane's DF statistics (unrounded) from a daylight-only bake under an overcast sky of horizontal illuminance `outside`, null without points. */
+export function workPlaneDaylightFactorOfBake(bakeScene: BakeScene, maps: BakedMaps, daylight: BakeDaylight, settings: BakeSettings, outside: number): DaylightFactorStatistics | null {
+  return workPlaneDaylightFactorStatistics(workPlane(bakeScene, maps, daylight, settings).lux, outside);
+}
+
 /** Daylight factors (%) of the floor's atlas texels, weighted by their coverage. */
 function floorDaylightFactor(maps: BakedMaps, outside: number): DaylightFactorStatistics {
   const o = maps.objects!;

@@ -2,6 +2,7 @@ import { useEffect, useState, type RefObject } from 'react';
 import { DAYLIGHT_FACTOR_SKY_ILLUMINANCE, daylightFactorLuxLevels } from '../../core/daylight/daylightFactor';
 import type { BakeScene } from '../../engines/bake/bakeScene';
 import { daylightFactorDaylight, workPlaneDaylight, workPlaneDaylightFactorStatistics } from '../../engines/bake/daylight/workPlaneDaylightFactor';
+import type { PreparedObjects } from '../../engines/bake/objects/preparedObjects';
 import type { LightSources } from '../../engines/relight/daylightGroups';
 import type { LitMaps } from '../../engines/relight/relightMaps';
 import type { ViewerController } from '../../engines/view/createViewerController';
@@ -26,10 +27,9 @@ export interface DaylightFactorViewSetup {
 /**
  * The work plane's DF from the maps on screen (the overcast basis alone, lux under
  * DAYLIGHT_FACTOR_SKY_ILLUMINANCE) with the report's own functions, or null when the scene has
- * no daylight or the maps have no atlas.
+ * no daylight or the maps have no atlas; `prepared`: the enclosed scene's objects the maps were baked on (the service's).
  */
-export function daylightFactorOfView(scene: BakeScene, lit: LitMaps, controller: ViewerController): DaylightFactorValues | null {
-  const prepared = controller.objects();
+export function daylightFactorOfView(scene: BakeScene, lit: LitMaps, prepared: PreparedObjects | null): DaylightFactorValues | null {
   const light = lit.maps.objects;
   if (!scene.daylight || !prepared || !light || light.total.length === 0) return null;
   const lux = workPlaneDaylight(scene, prepared, light, daylightFactorDaylight(scene.daylight));
@@ -62,7 +62,7 @@ export function useDaylightFactorView(setup: DaylightFactorViewSetup) {
       publish({ daylightFactor: null });
       return;
     }
-    const v = daylightFactorOfView(sceneRef.current, litRef.current, controllerRef.current);
+    const v = daylightFactorOfView(sceneRef.current, litRef.current, controllerRef.current.objects());
     setValues(v);
     publish({ daylightFactor: v });
     // publish is made anew each render; the values follow the maps, not the record.
