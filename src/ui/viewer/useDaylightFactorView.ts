@@ -1,4 +1,4 @@
-import { useEffect, useState, type RefObject } from 'react';
+import { useEffect, useRef, useState, type RefObject } from 'react';
 import { DAYLIGHT_FACTOR_SKY_ILLUMINANCE, daylightFactorLuxLevels } from '../../core/daylight/daylightFactor';
 import type { BakeScene } from '../../engines/bake/bakeScene';
 import { daylightFactorDaylight, workPlaneDaylight, workPlaneDaylightFactorStatistics } from '../../engines/bake/daylight/workPlaneDaylightFactor';
@@ -7,6 +7,9 @@ import type { LightSources } from '../../engines/relight/daylightGroups';
 import type { LitMaps } from '../../engines/relight/relightMaps';
 import type { ViewerController } from '../../engines/view/createViewerController';
 import type { ViewerStatus } from './viewerStatus';
+
+/** How often the mode looks for settled light (ms): a basis bake takes a fraction of a second to seconds. */
+const SETTLE_POLL_MS = 300;
 
 export type DaylightFactorValues = NonNullable<ViewerStatus['daylightFactor']>;
 
@@ -18,9 +21,6 @@ export interface DaylightFactorViewSetup {
   controllerRef: RefObject<ViewerController | null>;
   controllerVersion: number;
   sceneRef: RefObject<BakeScene | null>;
-  litRef: RefObject<LitMaps | null>;
-  mapsVersion: number;
-  done: boolean;
   publish(patch: Partial<ViewerStatus>): void;
 }
 
@@ -45,10 +45,15 @@ export function daylightFactorOfView(scene: BakeScene, lit: LitMaps, prepared: P
  * DF is computed when the maps settle.
  */
 export function useDaylightFactorView(setup: DaylightFactorViewSetup) {
-  const { available, lightSources, controllerRef, controllerVersion, sceneRef, litRef, mapsVersion, done, publish } = setup;
+  const { available, lightSources, controllerRef, controllerVersion, sceneRef, publish } = setup;
   const [chosen, setChosen] = useState(false);
   const [values, setValues] = useState<DaylightFactorValues | null>(null);
   const on = chosen && available;
+  // The status record's publish is made anew each render: read through a ref, so it does not restart the poll.
+  const publishRef = useRef(publish);
+  useEffect(() => {
+    publishRef.current = publish;
+  });
   useEffect(() => {
     const c = controllerRef.current;
     if (!c) return;
@@ -56,17 +61,31 @@ export function useDaylightFactorView(setup: DaylightFactorViewSetup) {
     c.setLightSources(sources);
     c.setLuxLevels(on ? daylightFactorLuxLevels() : null);
   }, [on, lightSources, controllerRef, controllerVersion]);
+  // The work plane's DF once the overcast basis is baked and solved: the engine's settled version is
+  // polled (a GPU relight shows new light without new CPU maps), and its maps are summed once per version.
   useEffect(() => {
-    if (!on || !done || !sceneRef.current || !litRef.current || !controllerRef.current) {
-      setValues(null);
-      publish({ daylightFactor: null });
+    if (!on) {
+      publishRef.current({ daylightFactor: null });
       return;
     }
-    const v = daylightFactorOfView(sceneRef.current, litRef.current, controllerRef.current.objects());
-    setValues(v);
-    publish({ daylightFactor: v });
-    // publish is made anew each render; the values follow the maps, not the record.
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [on, done, mapsVersion, sceneRef, litRef, controllerRef]);
-  return { on, values, choose: setChosen };
+    let computed: number | null = null;
+    const poll = () => {
+      const c = controllerRef.current;
+      const version = c?.settledVersion() ?? null;
+      if (!c || version === null || version === computed || !sceneRef.current) return;
+      const lit = c.settledMaps();
+      if (!lit) return;
+      computed = version;
+      const v = daylightFactorOfView(sceneRef.current, lit, c.objects());
+      setValues(v);
+      publishRef.current({ daylightFactor: v });
+    };
+    poll();
+    const timer = setInterval(poll, SETTLE_POLL_MS);
+    return () => {
+      clearInterval(timer);
+      setValues(null);
+    };
+  }, [on, sceneRef, controllerRef, controllerVersion]);
+  return { on, values: on ? values : null, choose: setChosen };
 }

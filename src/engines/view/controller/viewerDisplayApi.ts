@@ -1,4 +1,5 @@
 import type { LightSources } from '../../relight/daylightGroups';
+import type { LitMaps } from '../../relight/relightMaps';
 import type { AdaptationSetting } from '../adaptationSetting';
 import type { CameraPresetName } from '../cameraPresets';
 import type { ViewMode } from '../roomView';
@@ -43,6 +44,15 @@ export function viewerDisplayApi(v: Viewer) {
     setLightSources(sources: LightSources) {
       v.service.setLightSources(sources);
       syncWindows(v);
+    },
+    /** The engine's version once its light has settled (every basis baked, the solve done), else null: when a reader of `settledMaps` has something new. */
+    settledVersion(): number | null {
+      const engine = v.service.engine;
+      return engine && engine.progress.done ? engine.version : null;
+    },
+    /** The engine's maps at the weights shown, summed on the CPU (null without an engine): for statistics that read the atlas (the daylight factor's work plane). */
+    settledMaps(): LitMaps | null {
+      return v.service.engine?.maps() ?? null;
     },
     lightSources(): LightSources {
       return v.service.lightSources;
