@@ -1,10 +1,7 @@
-import type { LightSources } from '../../relight/daylightGroups';
-import type { LitMaps } from '../../relight/relightMaps';
 import type { AdaptationSetting } from '../adaptationSetting';
 import type { CameraPresetName } from '../cameraPresets';
 import type { ViewMode } from '../roomView';
 import { syncGlare, type Viewer } from './viewer';
-import { syncWindows } from './viewerSceneApi';
 
 /** The viewer controller's methods for how it is shown: exposure, adaptation, mode, glare, camera, size, on or off screen. */
 export function viewerDisplayApi(v: Viewer) {
@@ -35,32 +32,6 @@ export function viewerDisplayApi(v: Viewer) {
     /** Whether the automatic exposure is held (relights keep it; a new room, a camera preset or reAdapt adapt again). */
     exposureHeld(): boolean {
       return v.maps.held();
-    },
-    /**
-     * Which light the view shows: 'electric', 'daylight' (the sky and the sun through the windows),
-     * 'both' or 'daylight-factor' (lux / 100 = DF %) (issue 30, docs/daylight.md "Daylight in the relight engine"). The bake service's
-     * engine re-weights its bases (never a bake); the view draws the relight it announces.
-     */
-    setLightSources(sources: LightSources) {
-      v.service.setLightSources(sources);
-      syncWindows(v);
-    },
-    /** The engine's version once its light has settled (every basis baked, the solve done), else null: when a reader of `settledMaps` has something new. */
-    settledVersion(): number | null {
-      const engine = v.service.engine;
-      return engine && engine.progress.done ? engine.version : null;
-    },
-    /** The engine's maps at the weights shown, summed on the CPU (null without an engine): for statistics that read the atlas (the daylight factor's work plane). */
-    settledMaps(): LitMaps | null {
-      return v.service.engine?.maps() ?? null;
-    },
-    lightSources(): LightSources {
-      return v.service.lightSources;
-    },
-    /** Fixed false-colour levels in lux (the daylight-factor view's, core/daylight/daylightFactor.ts), or null: levels from the maps again. */
-    setLuxLevels(levels: readonly number[] | null) {
-      v.maps.setFixedLevels(levels);
-      v.frames.request();
     },
     setMode(m: ViewMode) {
       v.maps.setMode(m);
