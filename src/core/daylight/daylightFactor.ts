@@ -103,3 +103,15 @@ export function daylightFactorStatistics(values: ArrayLike<number>, weights?: Ar
     median,
   };
 }
+
+/**
+ * The daylight-factor map's legend levels, %: EN 17037's D_TM (about 0.7 %) and D_T (2 %) fall
+ * between and on them, and 5 % is where BS 8206-2 calls a room well daylit. The one definition the
+ * 3D view's DF mode and its legend read.
+ */
+export const DAYLIGHT_FACTOR_LEVELS: readonly number[] = [0.5, 1, 2, 3, 5, 10];
+
+/** The DF levels as illuminance under the overcast sky of DAYLIGHT_FACTOR_SKY_ILLUMINANCE (lux): what the false-colour shader compares the maps with. */
+export function daylightFactorLuxLevels(levels: readonly number[] = DAYLIGHT_FACTOR_LEVELS): number[] {
+  return levels.map((df) => (df * DAYLIGHT_FACTOR_SKY_ILLUMINANCE) / 100);
+}

@@ -8,11 +8,10 @@
  * glazing), never a luminaire: a change of the electric light keeps them, a change of the time
  * of day, the date or the sky rebakes them and keeps every luminaire group.
  */
-import { DAYLIGHT_FACTOR_SKY_ILLUMINANCE } from '../../core/daylight/daylightFactor';
-import { cieOvercastSky, DEFAULT_GROUND_REFLECTANCE, groundLuminance } from '../../core/daylight/skies';
 import type { BakeScene } from '../bake/bakeScene';
 import type { BakeDaylight } from '../bake/daylight/bakeDaylight';
 import { daylightBakeInput } from '../bake/daylight/daylightBakeInput';
+import { daylightFactorDaylight, groundReflectanceOf } from '../bake/daylight/workPlaneDaylightFactor';
 import type { DaylightBakeInput } from '../bake/daylight/startDaylightBakeJob';
 import type { LuminaireGroup } from './luminaireGroups';
 
@@ -53,19 +52,10 @@ function partDaylight(daylight: BakeDaylight, kind: 'sky' | 'sun'): BakeDaylight
   return kind === 'sky' ? { ...daylight, sun: null } : { ...daylight, sky: null, groundLuminance: 0 };
 }
 
-/**
- * The ground's reflectance behind a BakeDaylight (its luminance is ρ_g (E_sky,h + E_sun,h) / π,
- * skies.ts groundLuminance), for the overcast sky of the daylight factor; the default without light.
- */
-function groundReflectanceOf(d: BakeDaylight): number {
-  const outside = (d.sky?.horizontalIlluminance ?? 0) + (d.sun ? d.sun.normalIlluminance * Math.max(0, d.sun.direction[1]) : 0);
-  return outside > 0 ? (d.groundLuminance * Math.PI) / outside : DEFAULT_GROUND_REFLECTANCE;
-}
-
 /** The daylight factor's group: the same windows under the CIE overcast sky of DAYLIGHT_FACTOR_SKY_ILLUMINANCE, no sun, the same ground. */
 function overcastGroup(input: DaylightBakeInput, windows: string): LuminaireGroup {
   const rho = groundReflectanceOf(input.daylight);
-  const daylight: BakeDaylight = { sky: cieOvercastSky(DAYLIGHT_FACTOR_SKY_ILLUMINANCE), sun: null, groundLuminance: groundLuminance(DAYLIGHT_FACTOR_SKY_ILLUMINANCE, 0, rho), glazing: input.daylight.glazing };
+  const daylight = daylightFactorDaylight(input.daylight);
   return { key: `daylight:overcast|ground ${num(rho)}|${windows}`, members: [], basis: [], daylight: { kind: 'overcast', input: { ...input, daylight } } };
 }
 

@@ -37,6 +37,8 @@ export interface MapDisplay {
   setAdaptation(setting: AdaptationSetting): void;
   /** Adapt to the maps on screen again (camera cut, the Re-adapt button). */
   reAdapt(): void;
+  /** Fixed legend levels in lux (the daylight-factor view), or null: the maps' own levels again with the next maps shown. */
+  setFixedLevels(levels: readonly number[] | null): void;
   /** Move the adaptation to `nowMs`; true while it still moves. */
   advance(nowMs: number): boolean;
   /** Whether the automatic exposure is held (the configuration's light was done; relights keep it). */
@@ -49,6 +51,7 @@ export function createMapDisplay(view: () => RoomView, onMaps: MapsListener, now
   let mode: ViewMode = 'light';
   let adaptation: AdaptationSetting = DEFAULT_ADAPTATION;
   let levels: number[] = [1];
+  let fixedLevels: readonly number[] | null = null;
   let lastLit: LitMaps | null = null;
   let shown: AdaptationState = { auto: 1, white: null };
   const eye = createEyeAdaptation();
@@ -63,6 +66,7 @@ export function createMapDisplay(view: () => RoomView, onMaps: MapsListener, now
       const presented = presentMaps(view(), lit, reflectance, {
         ...settings(),
         mode,
+        levels: fixedLevels,
         white: context.white,
         adapt(target) {
           eye.update(target, context.key, context.done, t);
@@ -88,6 +92,14 @@ export function createMapDisplay(view: () => RoomView, onMaps: MapsListener, now
     setMode(m) {
       mode = m;
       view().setMode(m, levels);
+    },
+    setFixedLevels(next) {
+      fixedLevels = next;
+      if (next) levels = [...next];
+      view().setMode(mode, levels);
+      // The legend follows at once; maps computed levels come back with the next maps shown.
+      const exposure = appliedExposure(shown.auto, settings());
+      if (lastLit) onMaps(lastLit, { exposure, ev100: ev100FromExposure(exposure), levels, relightMs: 0 });
     },
     setAdaptation(setting) {
       adaptation = setting;

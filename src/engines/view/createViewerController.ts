@@ -14,6 +14,7 @@ import { viewerSpotlightDeps } from './controller/viewerOverlay';
 import { drawViewerFrame, followBakeService, restoreViewer, tapViewer } from './controller/viewerLifecycle';
 import { viewerSceneApi } from './controller/viewerSceneApi';
 import { viewerDisplayApi } from './controller/viewerDisplayApi';
+import { viewerLightApi } from './controller/viewerLightApi';
 import { viewerCompareApi } from './controller/viewerCompareApi';
 import { createViewerGpu, disposeViewerGpu, gpuViewStatus } from './controller/gpuRelightFrame';
 
@@ -68,6 +69,7 @@ export function createViewerController(canvas: HTMLCanvasElement, service: BakeS
   return {
     ...viewerSceneApi(v),
     ...viewerDisplayApi(v),
+    ...viewerLightApi(v),
     ...viewerCompareApi(v),
     /** Read-backs, uploads and texture memory of the view's relight, and its asynchronous compiles (`view3d().gpu`). */
     gpuStatus: () => gpuViewStatus(v.gpu, compiles.counters),

@@ -25,6 +25,8 @@ export interface DisplaySettings {
   white?: Vec3 | null;
   /** Given these maps' own target, the state to show (the browser's held or moving eye, eyeAdaptation.ts); absent: the target itself. */
   adapt?: (target: AdaptationState) => AdaptationState;
+  /** Fixed legend levels in lux (the daylight-factor view's, core/daylight/daylightFactor.ts); absent: from the maps' 99th percentile. */
+  levels?: readonly number[] | null;
 }
 
 /** What presentMaps derived from the maps: their own adaptation target, the state shown, the exposure applied, its EV100, the adaptation, the legend levels. */
@@ -73,7 +75,7 @@ export function presentMaps(view: RoomView, lit: LitMaps, reflectance: Record<Su
   const auto = limitAutoExposure(autoExposure(lit, reflectance, objects));
   const target: AdaptationState = { auto, white: display.white ?? null };
   const { exposure, adaptation } = applyAdaptationState(view, display.adapt ? display.adapt(target) : target, display);
-  const levels = luxLevels(luxScaleTop(lit, 0.99, objects));
+  const levels = display.levels ? [...display.levels] : luxLevels(luxScaleTop(lit, 0.99, objects));
   view.setMode(display.mode, levels);
   return { autoExposure: auto, target, exposure, ev100: ev100FromExposure(exposure), adaptation, levels };
 }

@@ -9,18 +9,16 @@
  */
 import { DAYLIGHT_FACTOR_SKY_ILLUMINANCE } from '../../core/daylight/daylightFactor';
 import { daylightFactorStatistics, type DaylightFactorStatistics } from '../../core/daylight/daylightFactor';
-import type { LightingScene, Vec3 } from '../../core/model/lightingScene/lightingScene';
+import type { LightingScene } from '../../core/model/lightingScene/lightingScene';
 import type { SceneSky } from '../../core/model/lightingScene/parseDaylight';
 import type { BakeReport } from '../../engines/bake/bakeJob';
 import type { BakeScene } from '../../engines/bake/bakeScene';
 import type { BakeSettings } from '../../engines/bake/bakeSettings';
 import { luxOf, type BakedMaps } from '../../engines/bake/bakedMaps';
 import type { BakeDaylight } from '../../engines/bake/daylight/bakeDaylight';
-import { daylightPointContext } from '../../engines/bake/daylight/daylightAtlasDirect';
-import { daylightWindows } from '../../engines/bake/daylight/daylightWindows';
 import { bakeDaylightFor, bakeDaylightOf } from '../../engines/bake/daylight/sceneDaylight';
-import { WALL_BAND, WORK_PLANE_HEIGHT, WORK_PLANE_SPACING, workPlaneIlluminance, workPlanePoints } from '../../engines/bake/daylight/workPlaneDaylight';
-import { createObjectRayCaster } from '../../engines/bake/objects/createObjectRayCaster';
+import { WALL_BAND, WORK_PLANE_HEIGHT, WORK_PLANE_SPACING } from '../../engines/bake/daylight/workPlaneDaylight';
+import { workPlaneDaylight, workPlaneDaylightFactorStatistics } from '../../engines/bake/daylight/workPlaneDaylightFactor';
 import { prepareObjectsCached } from '../../engines/bake/objects/prepareObjectsCached';
 import { encloseShapedRoom } from '../../engines/bake/shapedRoom/encloseShapedRoom';
 
@@ -28,17 +26,19 @@ type Bake = (scene: BakeScene) => { maps: BakedMaps; report: BakeReport };
 
 const round = (v: number, digits = 4): number => Number(v.toPrecision(digits));
 const rounded = (s: DaylightFactorStatistics) => Object.fromEntries(Object.entries(s).map(([k, v]) => [k, typeof v === 'number' ? round(v) : v]));
+const roundedOrNull = (s: DaylightFactorStatistics | null) => (s ? rounded(s) : null);
 
-/** Work-plane illuminance (lux, Y) of a daylight-only bake's maps, at the plane's points. */
+/** Work-plane illuminance (lux, Y) of a daylight-only bake's maps, at the plane's points (workPlaneDaylightFactor.ts: the 3D view's DF mode calls the same). */
 function workPlane(bakeScene: BakeScene, maps: BakedMaps, daylight: BakeDaylight, settings: BakeSettings): { lux: Float64Array; points: number } {
-  const shape = bakeScene.room.shape!;
   const enclosed = encloseShapedRoom(bakeScene);
-  const offset = enclosed.room.enclosure!.offset;
   const prepared = prepareObjectsCached(enclosed.objects ?? [], { texelSize: settings.texelSize, maxAtlasSize: settings.maxTextureSize });
-  const ctx = daylightPointContext(prepared, daylight, daylightWindows(shape, offset, daylight.glazing), true);
-  const points = workPlanePoints(shape).map((p): Vec3 => [p[0] + offset[0], p[1] + offset[1], p[2] + offset[2]]);
-  const lux = workPlaneIlluminance(points, ctx, createObjectRayCaster(prepared), maps.objects!.atlas, maps.objects!.total);
-  return { lux, points: points.length };
+  const lux = workPlaneDaylight(bakeScene, prepared, maps.objects!, daylight);
+  return { lux, points: lux.length };
+}
+
+/** The work plane's DF statistics (unrounded) from a daylight-only bake under an overcast sky of horizontal illuminance `outside`, null without points. */
+export function workPlaneDaylightFactorOfBake(bakeScene: BakeScene, maps: BakedMaps, daylight: BakeDaylight, settings: BakeSettings, outside: number): DaylightFactorStatistics | null {
+  return workPlaneDaylightFactorStatistics(workPlane(bakeScene, maps, daylight, settings).lux, outside);
 }
 
 /** Daylight factors (%) of the floor's atlas texels, weighted by their coverage. */
@@ -86,7 +86,7 @@ export function daylightReport(scene: LightingScene, bakeScene: BakeScene, maps:
     },
     daylightFactor: {
       sky: 'cie-overcast',
-      workPlane: overcastPlane.points > 0 ? rounded(daylightFactorStatistics([...overcastPlane.lux].map((e) => (100 * e) / outside))) : null,
+      workPlane: roundedOrNull(workPlaneDaylightFactorStatistics(overcastPlane.lux, outside)),
       floor: rounded(floorDaylightFactor(overcastMaps, outside)),
     },
   };

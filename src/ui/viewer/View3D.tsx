@@ -1,4 +1,4 @@
-import { useEffect, useMemo, useRef, useState } from 'react';
+import { useMemo, useRef, useState } from 'react';
 import { useStore } from 'zustand';
 import type { Photometry } from '../../core/photometry/types';
 import type { BakeScene } from '../../engines/bake/bakeScene';
@@ -24,6 +24,9 @@ import { useViewerStatus } from './useViewerStatus';
 import { useFeedStart } from './useFeedStart';
 import { useViewerController } from './useViewerController';
 import { useWorkPlaneStats } from './useWorkPlaneStats';
+import { useDaylightFactorView } from './useDaylightFactorView';
+import { DaylightFactorTable } from './DaylightFactorTable';
+import { DAYLIGHT_FACTOR_SKY_ILLUMINANCE } from '../../core/daylight/daylightFactor';
 import { ViewerNotes } from './ViewerNotes';
 import { CameraPresetButtons } from './CameraPresetButtons';
 import { ViewModeButtons } from './ViewModeButtons';
@@ -92,8 +95,9 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true, 
   useViewerController({ feed, store, host, canvasRef, wrapRef, controllerRef: ctrl, sceneRef, litRef, glareRef, record, shown });
 
   useSelectionHighlight(ctrl, selection, feed);
-  // A new controller starts from the service's choice; the panel's choice wins (weights only, never a bake).
-  useEffect(() => ctrl.current?.setLightSources(lightSources), [lightSources, controllerVersion]);
+  // A new controller starts from the service's choice; the panel's choice wins (weights only, never a bake), unless the daylight-factor mode is on.
+  const daylightAvailable = config.daylight?.on === true && (config.room.shape?.openings ?? []).some((o) => o.kind === 'window');
+  const df = useDaylightFactorView({ available: daylightAvailable, lightSources, controllerRef: ctrl, controllerVersion, sceneRef, publish });
   useWorkPlaneStats({ plane, mapsVersion, done: progress.done, sceneRef, litRef, controllerRef: ctrl, controllerVersion, setPlaneStats, publish });
 
   return (
@@ -101,18 +105,18 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true, 
       <div className="viewer3d-canvas-wrap" ref={wrapRef}>
         <canvas ref={canvasRef} className="viewer3d-canvas" data-testid="view3d-canvas" />
         <CompareWipe choice={compare} update={updateCompare} scenes={compareScenes} />
-        <ViewerNotes progress={progress} error={error} lost={lost} mode={mode} levels={levels} liveState={liveState} onBack={onBack} />
+        <ViewerNotes progress={progress} error={error} lost={lost} mode={mode} levels={levels} percentOf={df.on ? DAYLIGHT_FACTOR_SKY_ILLUMINANCE : undefined} liveState={liveState} onBack={onBack} />
       </div>
       <div className="viewer3d-panel">
         <CameraPresetButtons camera={camera} onPreset={choosePreset} />
-        <ViewModeButtons mode={mode} glare={glare} onMode={chooseMode} onGlare={switchGlare} />
+        <ViewModeButtons mode={mode} glare={glare} onMode={chooseMode} onGlare={switchGlare} daylightFactor={daylightAvailable ? { on: df.on, choose: df.choose } : undefined} />
         <QualityButtons quality={quality} onChoose={(level) => (setQuality(level), host.setQuality(level))} />
         <ExposureControl initial={host.exposure} target={() => ctrl.current} />
         <AdaptationControl initial={host.adaptation} target={() => ctrl.current} />
         <CompareControl choice={compare} update={updateCompare} scenes={compareScenes} />
         <SelectionNote store={store} />
         <SpotlightControls store={store} controllerRef={ctrl} ready={controllerVersion} spotlight={camera.spotlight} onCameraMode={cameraEvent} />
-        <IlluminanceTable floor={floor} plane={plane.on ? { height: plane.height, stats: planeStats } : null} />
+        {df.on ? <DaylightFactorTable values={df.values} /> : <IlluminanceTable floor={floor} plane={plane.on ? { height: plane.height, stats: planeStats } : null} />}
         <WorkPlaneField plane={plane} maxHeight={config.room.height - 0.1} onChange={setPlane} />
         {expert && <PhotometryWarnings notes={photometryNotes} testId="view3d-photometry-warnings" collapsed />}
         <ModuleDimmers store={store} />

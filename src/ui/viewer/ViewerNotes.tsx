@@ -12,12 +12,14 @@ export interface ViewerNotesProps {
   mode: ViewMode;
   /** The lux legend's levels (lux mode). */
   levels: number[];
+  /** In the daylight-factor view, the outdoor illuminance the levels are a share of (the legend in %). */
+  percentOf?: number;
   liveState: NonNullable<ViewerStatus['live']>['state'] | null;
   onBack: () => void;
 }
 
 /** What the 3D view shows over its canvas: the light calculation's progress, a lost context, an error, the lux legend, live control's trouble. */
-export function ViewerNotes({ progress, error, lost, mode, levels, liveState, onBack }: ViewerNotesProps) {
+export function ViewerNotes({ progress, error, lost, mode, levels, percentOf, liveState, onBack }: ViewerNotesProps) {
   const { t, format } = useI18n();
   return (
     <>
@@ -40,7 +42,7 @@ export function ViewerNotes({ progress, error, lost, mode, levels, liveState, on
           </button>
         </div>
       )}
-      {mode === 'lux' && levels.length > 1 && <LuxLegend levels={levels} />}
+      {mode === 'lux' && levels.length > 1 && <LuxLegend levels={levels} percentOf={percentOf} />}
       {(liveState === 'lost' || liveState === 'no-bridge') && (
         <div className="viewer3d-note viewer3d-live-note" role="status" data-testid="live-note">
           {liveState === 'lost' ? t('view3d.liveLost') : t('view3d.liveNoBridge')}

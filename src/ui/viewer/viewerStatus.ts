@@ -44,6 +44,13 @@ export interface ViewerStatus {
    */
   plane: { height: number; avg: number; min: number; max: number; u0: number; source: 'gpu' | 'cpu' } | null;
   /**
+   * The work plane's daylight factor (%) in the daylight-factor view, null elsewhere or before the
+   * maps settle: mean, min, U0 = min / mean, median and EN 17037's shares (0 … 1) of the plane at
+   * DF ≥ 2 % (300 lx at 15 klx) and ≥ 0.7 %, as `luxbox bake`'s report computes them
+   * (engines/bake/daylight/workPlaneDaylightFactor.ts; docs/daylight.md).
+   */
+  daylightFactor: { mean: number; min: number; max: number; u0: number; median: number; shareAbove2: number; shareAbove07: number; points: number } | null;
+  /**
    * Live control (docs/live-control.md), null while off: the bridge connection, frames
    * received, and overlays applied to the view (at most one per animation frame, only when
    * the levels changed).
@@ -92,6 +99,7 @@ export const CLOSED_STATUS: ViewerStatus = {
   error: null,
   floor: null,
   plane: null,
+  daylightFactor: null,
   live: null,
   compare: null,
   objects: null,

@@ -1,9 +1,7 @@
-import type { LightSources } from '../../relight/daylightGroups';
 import type { AdaptationSetting } from '../adaptationSetting';
 import type { CameraPresetName } from '../cameraPresets';
 import type { ViewMode } from '../roomView';
 import { syncGlare, type Viewer } from './viewer';
-import { syncWindows } from './viewerSceneApi';
 
 /** The viewer controller's methods for how it is shown: exposure, adaptation, mode, glare, camera, size, on or off screen. */
 export function viewerDisplayApi(v: Viewer) {
@@ -34,18 +32,6 @@ export function viewerDisplayApi(v: Viewer) {
     /** Whether the automatic exposure is held (relights keep it; a new room, a camera preset or reAdapt adapt again). */
     exposureHeld(): boolean {
       return v.maps.held();
-    },
-    /**
-     * Which light the view shows: 'electric', 'daylight' (the sky and the sun through the windows),
-     * 'both' or 'daylight-factor' (lux / 100 = DF %) (issue 30, docs/daylight.md "Daylight in the relight engine"). The bake service's
-     * engine re-weights its bases (never a bake); the view draws the relight it announces.
-     */
-    setLightSources(sources: LightSources) {
-      v.service.setLightSources(sources);
-      syncWindows(v);
-    },
-    lightSources(): LightSources {
-      return v.service.lightSources;
     },
     setMode(m: ViewMode) {
       v.maps.setMode(m);

@@ -49,9 +49,12 @@ export function litScene(c: ServiceCore, s: BakeScene): BakeScene {
 /** The engine's scene and, during a fade, its fade; a fade whose scenes no longer match (a module added meanwhile) ends. */
 export function lightEngine(c: ServiceCore, engine: RelightEngine | null, s: BakeScene): void {
   if (!engine) return;
-  const shown = litScene(c, s);
+  const given = c.overlay ? c.overlay(s) : s;
   engine.setLightSources(c.lightSources);
-  engine.setScene(shown);
+  // The scene as given: the engine encloses a shaped room itself (the same remembered enclosure),
+  // and its daylight groups need the room's shape and `daylight`, which the enclosed scene drops.
+  engine.setScene(given);
+  const shown = encloseShapedRoom(given);
   if (!c.fade) return;
   c.fade = applyFade(engine, shown, c.fade);
 }
