@@ -146,7 +146,7 @@ test('a console dims a module through the real bridge: the 3D view relights live
   const patched = JSON.parse(patchedText);
   const modules = patched.configuration.systems[0].rails.flatMap((r: { modules: { id: string; dmx: unknown }[] }) => r.modules);
   expect(modules.map((m: { dmx: unknown }) => m.dmx)).toEqual([1, 3, 5, 7, 9, 11].map((address) => ({ universe: 1, address, resolution: 8, cct: true })));
-  expect(patched.version).toBe(9); // scene file version 9 (rooms of any shape) still carries the DMX patch of version 2
+  expect(patched.version).toBe(10); // scene file version 10 (daylight) still carries the DMX patch of version 2
   // The patch is part of the configuration, but only a relight (nothing about the light changed).
   await expect.poll(async () => (await status(page)).relightsOnly).toBeGreaterThan(baked.relightsOnly);
   expect((await status(page)).groupBakes).toBe(6);
