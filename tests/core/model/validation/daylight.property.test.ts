@@ -10,11 +10,10 @@
  */
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { bindAction } from '../../../../src/core/model/actions/actionDefinitions';
 import { createConfiguration, type Configuration } from '../../../../src/core/model/configuration/configuration';
-import { validate } from '../../../../src/core/model/validation/validate';
 import { CITIES } from '../../../../src/core/daylight/cities';
-import { catalog, run } from '../helpers';
+import { run } from '../helpers';
+import { alwaysValidStep } from './alwaysValidStep';
 
 const RUNS = Number(process.env.DAYLIGHT_RUNS ?? 200);
 const step = fc.record({ kind: fc.nat(5), i: fc.nat(40), j: fc.nat(40), a: fc.noBias(fc.integer({ min: 0, max: 1000 })).map((n) => -0.5 + n / 500) });
@@ -75,23 +74,7 @@ describe('always valid with daylight and glazing', () => {
         let s = start();
         for (const st of steps) {
           const [name, params] = toAction(s, st);
-          const action = bindAction(name, params, catalog);
-          const e = action.isEnabled(s);
-          if (e === true) {
-            tally.enabled++;
-            s = action.perform(s);
-            const problems = validate(s, catalog);
-            if (problems.length) throw new Error(`${name} ${JSON.stringify(params)} was enabled but left: ${problems[0].path}: ${problems[0].message}`);
-          } else {
-            tally.refused++;
-            let broken: Configuration;
-            try {
-              broken = action.perform(s);
-            } catch {
-              continue;
-            }
-            if (validate(broken, catalog).length === 0) throw new Error(`${name} ${JSON.stringify(params)} was refused (${e.reason}) but would have been valid`);
-          }
+          s = alwaysValidStep(s, name, params, tally);
         }
         const wrong = independentlyValid(s);
         if (wrong) throw new Error(`reached an invalid state: ${wrong}`);

@@ -10,7 +10,6 @@
  */
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { bindAction } from '../../../../src/core/model/actions/actionDefinitions';
 import { createConfiguration, WALL_NAMES, type Configuration } from '../../../../src/core/model/configuration/configuration';
 import { validate } from '../../../../src/core/model/validation/validate';
 import { rectCorners, systemElementTree } from '../../../../src/core/model/rails/geometry';
@@ -19,6 +18,7 @@ import { objectMesh, objectPlacement } from '../../../../src/core/model/objects/
 import { placedPositions } from '../../../../src/core/mesh/placeMesh';
 import { FURNITURE_LIBRARY } from '../../../../src/core/model/objects/furniture/furnitureLibrary';
 import { catalog } from '../helpers';
+import { alwaysValidStep } from './alwaysValidStep';
 
 const RUNS = Number(process.env.ROOM_SHAPE_RUNS ?? 300);
 const unit = fc.noBias(fc.integer({ min: 0, max: 999_999 })).map((n) => n / 1_000_000);
@@ -112,23 +112,7 @@ describe('always valid in a room with a shape', () => {
         if (validate(s, catalog).length > 0) throw new Error('the attic L is valid');
         for (const st of steps) {
           const [name, params] = toAction(s, st);
-          const action = bindAction(name, params, catalog);
-          const e = action.isEnabled(s);
-          if (e === true) {
-            tally.enabled++;
-            s = action.perform(s);
-            const problems = validate(s, catalog);
-            if (problems.length) throw new Error(`${name} ${JSON.stringify(params)} was enabled but left: ${problems[0].path}: ${problems[0].message}`);
-          } else {
-            tally.refused++;
-            let broken: Configuration;
-            try {
-              broken = action.perform(s);
-            } catch {
-              continue;
-            }
-            if (validate(broken, catalog).length === 0) throw new Error(`${name} ${JSON.stringify(params)} was refused (${e.reason}) but would have been valid`);
-          }
+          s = alwaysValidStep(s, name, params, tally);
         }
         const outline = s.room.shape!.outline;
         for (const sys of s.systems) {
