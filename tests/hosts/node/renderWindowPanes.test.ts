@@ -15,13 +15,15 @@ import { cityNamed } from '../../../src/core/daylight/cities';
 import { glazingFrom, glazingTransmittance, type Glazing } from '../../../src/core/daylight/glazing';
 import { solarPosition, sunDirection } from '../../../src/core/daylight/solarPosition';
 import type { Vec3 } from '../../../src/core/model/lightingScene/lightingScene';
-import { WINDOW_FRAME_WIDTH } from '../../../src/engines/view/windowPaneUniforms';
+import { NIGHT_SKY_LUMINANCE, WINDOW_FRAME_WIDTH } from '../../../src/engines/view/windowPaneUniforms';
 import { withDaylightTime } from '../../../src/hosts/node/daylightTimeOverride';
 import { createRenderSession, type RenderOptions, type RenderResult } from '../../../src/hosts/node/renderImage';
 import { loadRenderInputAsync, type RenderInput } from '../../../src/hosts/node/renderInput';
 
 const ROOT = join(__dirname, '../../..');
 const SCENE = join(ROOT, 'tests/fixtures/scenes/daylight-room.json');
+/** A version-10 configuration: an L-shaped room, a triple-glazed window in its north wall, daylight on in Zurich at 17:00 on 21 December (after sunset). */
+const NIGHT_CONFIGURATION = join(ROOT, 'tests/fixtures/formats/configuration-v10.luxbox.json');
 const [W, H] = [96, 96];
 const FAST = { texelSize: 0.2, samples: 8, bounces: 1 };
 
@@ -32,8 +34,9 @@ interface WindowRect {
   z: number;
 }
 
-/** daylight-room.json's south window (z = 4, 1.5 × 1.4 m at sill 0.9 m from x = 1.75). */
+/** daylight-room.json's south window (z = 4, 1.5 × 1.4 m at sill 0.9 m from x = 1.75); the configuration's north window (wall 0, offset 2.5, 1.2 × 1.2 m at sill 0.9 m). */
 const SOUTH_WINDOW: WindowRect = { x: [1.75, 3.25], y: [0.9, 2.3], z: 4 };
+const NORTH_WINDOW: WindowRect = { x: [2.5, 3.7], y: [0.9, 2.1], z: 0 };
 
 /** The sun in Zurich on `date` at `hours` of the clock at `zone` hours ahead of UTC (NOAA, solarPosition.ts). */
 function zurichSun(month: number, day: number, hours: number, zone: number): Vec3 {
@@ -112,4 +115,17 @@ describe('luxbox render draws the windows as the browser does', () => {
       expect(r.worst).toBeLessThan(0.01);
     }, 120_000);
   }
+  it('the shopper’s configuration after sunset (17:00 on 21 December in Zurich): the panes show the night sky through the triple glazing, and nothing is NaN', async () => {
+    const input = await loadRenderInputAsync(NIGHT_CONFIGURATION);
+    // The sun is down: the scene the baker gets lets no daylight in (its windows keep their glazing), as in the browser.
+    expect(zurichSun(12, 21, 17, 1)[1]).toBeLessThan(0);
+    expect(input.bakeScene.daylight).toMatchObject({ sky: null, sun: null, groundLuminance: 0 });
+    const night = { position: [3.1, 1.4, 2.2] as Vec3, target: [3.1, 1.5, 0] as Vec3, fov: 70 };
+    const result = render(input, night);
+    for (const v of result.hdr!) expect(Number.isFinite(v)).toBe(true);
+    const r = comparePanes(result, night, NORTH_WINDOW, glazingFrom('triple'), () => NIGHT_SKY_LUMINANCE);
+    console.info(`render, night: ${r.sky + r.ground} pane pixels, worst ${(100 * r.worst).toFixed(3)} %`);
+    expect(r.sky + r.ground).toBeGreaterThan(300);
+    expect(r.worst).toBeLessThan(0.01);
+  }, 120_000);
 });
