@@ -17,6 +17,7 @@ import { solarPosition, sunDirection } from '../../../src/core/daylight/solarPos
 import type { Vec3 } from '../../../src/core/model/lightingScene/lightingScene';
 import { NIGHT_SKY_LUMINANCE, WINDOW_FRAME_WIDTH } from '../../../src/engines/view/windowPaneUniforms';
 import { withDaylightTime } from '../../../src/hosts/node/daylightTimeOverride';
+import { renderInputAtTime } from '../../../src/hosts/node/renderDaylightTime';
 import { createRenderSession, type RenderOptions, type RenderResult } from '../../../src/hosts/node/renderImage';
 import { loadRenderInputAsync, type RenderInput } from '../../../src/hosts/node/renderInput';
 
@@ -128,4 +129,29 @@ describe('luxbox render draws the windows as the browser does', () => {
     expect(r.sky + r.ground).toBeGreaterThan(300);
     expect(r.worst).toBeLessThan(0.01);
   }, 120_000);
+  it('a configuration moved by --date/--time as the Daylight panel moves it: 10:00 on 21 June in Zurich (summer time) shows the sky through the triple glazing', async () => {
+    const input = renderInputAtTime(await loadRenderInputAsync(NIGHT_CONFIGURATION), { date: '2026-06-21', time: '10:00' }, basename(NIGHT_CONFIGURATION));
+    const daylight = input.bakeScene.daylight!;
+    // The clock of Zurich in June is UTC+2 (clockOffset.ts): NOAA's sun at 08:00 UTC.
+    const s = daylight.sky!.sunDirection!;
+    const expected = zurichSun(6, 21, 10, 2);
+    for (let k = 0; k < 3; k++) expect(s[k]).toBeCloseTo(expected[k], 9);
+    expect(daylight.groundReflectance).toBe(0.25);
+    const camera = { position: [3.1, 1.4, 2.2] as Vec3, target: [3.1, 1.5, 0] as Vec3, fov: 70 };
+    const result = render(input, camera);
+    const r = comparePanes(result, camera, NORTH_WINDOW, glazingFrom('triple'), (d) => (d[1] > 0 ? daylight.sky!.luminance(d) : daylight.groundLuminance));
+    console.info(`render, configuration at 10:00 in June: ${r.sky} sky and ${r.ground} ground pixels, worst ${(100 * r.worst).toFixed(3)} %`);
+    expect(r.sky).toBeGreaterThan(100);
+    expect(r.ground).toBeGreaterThan(50);
+    expect(r.worst).toBeLessThan(0.01);
+  }, 120_000);
+
+  it('refuses a configuration time the Daylight panel cannot take, naming the flag', async () => {
+    const input = await loadRenderInputAsync(NIGHT_CONFIGURATION);
+    const file = basename(NIGHT_CONFIGURATION);
+    expect(() => renderInputAtTime(input, { time: '10:00:30' }, file)).toThrow(/^render: --time 10:00:30 \(configuration-v10\.luxbox\.json\): a configuration's time is HH:MM/);
+    expect(() => renderInputAtTime(input, { date: '2026-02-30' }, file)).toThrow(/^render: --date 2026-02-30 \(configuration-v10\.luxbox\.json\): a configuration's date is YYYY-MM-DD/);
+    const off = { ...input, configuration: { ...input.configuration!, daylight: undefined } };
+    expect(() => renderInputAtTime(off, { time: '10:00' }, file)).toThrow(/has no daylight to move/);
+  });
 });
