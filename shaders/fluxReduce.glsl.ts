@@ -112,8 +112,6 @@ void main() {
 }
 
 export const fluxRatioPass = fragmentPass(fluxRatioUniforms, fluxRatioSource({ flux: 'vec3(0.0)', reflected: 'vec3(0.0)' }));
-/** fluxRatioPass writing the reflected flux (R_R, R_G, R_B, Φ_Y): a room with openings (seriesRatioPass). */
-export const reflectedFluxPass = fragmentPass(fluxRatioUniforms, fluxRatioSource({ flux: 'vec3(0.0)', reflected: 'vec3(0.0)' }, 'reflected'));
 
 /**
  * The tail's ratio in a room with openings (docs/baker.md, "Tail for ρ → 1"): there part of each
