@@ -1,0 +1,90 @@
+import './registerDaylightPlanEnglish';
+import './daylightFactorOverlay.css';
+import { useEffect, useMemo, useSyncExternalStore } from 'react';
+import { DAYLIGHT_FACTOR_SKY_ILLUMINANCE, daylightFactorLuxLevels } from '../../core/daylight/daylightFactor';
+import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
+import { useI18n } from '../i18n/useI18n';
+import { DaylightFactorTable } from '../viewer/DaylightFactorTable';
+import { LuxLegend } from '../viewer/LuxLegend';
+import { daylightFactorImage, type DaylightFactorGrid } from './daylightFactorGrid';
+import { daylightFactorOverlayOf } from './daylightFactorOverlay';
+
+function useOverlay(store: ConfiguratorStore) {
+  const overlay = daylightFactorOverlayOf(store);
+  const snapshot = useSyncExternalStore(overlay.subscribe, overlay.snapshot);
+  return { overlay, snapshot };
+}
+
+/** The grid as a PNG data URL, one pixel a point (drawn scaled up with crisp pixels: each is a 0.25 m cell of the plane). */
+function gridPicture(grid: DaylightFactorGrid) {
+  const image = daylightFactorImage(grid);
+  const canvas = document.createElement('canvas');
+  canvas.width = image.columns;
+  canvas.height = image.rows;
+  const context = canvas.getContext('2d');
+  if (!context) return null;
+  context.putImageData(new ImageData(image.rgba, image.columns, image.rows), 0, 0);
+  const half = grid.spacing / 2;
+  return { href: canvas.toDataURL('image/png'), x: image.x0 - half, y: image.z0 - half, width: image.columns * grid.spacing, height: image.rows * grid.spacing };
+}
+
+/**
+ * The false-colour layer inside the plan's SVG (metres, under the room outline, windows, rails and
+ * modules): the work plane's DF at each grid point in the 3D view's daylight-factor colours; faded
+ * while a new grid is being computed.
+ */
+export function DaylightFactorLayer({ store }: { store: ConfiguratorStore }) {
+  const { snapshot } = useOverlay(store);
+  const grid = snapshot.on ? snapshot.grid : null;
+  const picture = useMemo(() => (grid ? gridPicture(grid) : null), [grid]);
+  if (!picture) return null;
+  return (
+    <image
+      href={picture.href}
+      x={picture.x}
+      y={picture.y}
+      width={picture.width}
+      height={picture.height}
+      preserveAspectRatio="none"
+      opacity={snapshot.phase === 'ready' ? 1 : 0.4}
+      className="df-plan-layer"
+      pointerEvents="none"
+      data-testid="df-plan-layer"
+      data-x={picture.x}
+      data-y={picture.y}
+      data-width={picture.width}
+      data-height={picture.height}
+    />
+  );
+}
+
+/**
+ * The overlay's controls on the plan: the toggle and, when on, the legend in % (the 3D view's
+ * LuxLegend at DAYLIGHT_FACTOR_LEVELS), the statistics (the 3D view's table, the report's function)
+ * and what is being done. Mounted while the plan is shown: the overlay asks the bake service for
+ * the daylight factor only then.
+ */
+export function DaylightFactorControls({ store, hidden = false }: { store: ConfiguratorStore; hidden?: boolean }) {
+  const { t } = useI18n();
+  const { overlay, snapshot } = useOverlay(store);
+  useEffect(() => overlay.attach(), [overlay]);
+  const { on, phase, grid } = snapshot;
+  const note = phase === 'computing' ? t('daylightPlan.computing') : phase === 'no-sky' ? t('daylightPlan.noSky') : phase === 'unavailable' ? t('daylightPlan.unavailable') : null;
+  return (
+    <div className="df-plan" data-plan-control data-testid="df-plan" data-phase={phase} hidden={hidden}>
+      <button type="button" className="action-button df-plan-toggle" aria-pressed={on} title={t('daylightPlan.hint')} onClick={() => overlay.setOn(!on)} data-testid="df-plan-toggle">
+        {t('daylightPlan.toggle')}
+      </button>
+      {on && (
+        <div className="df-plan-card" data-testid="df-plan-card">
+          <p className="df-plan-note" role="status" data-testid="df-plan-note">
+            {note}
+          </p>
+          <LuxLegend levels={daylightFactorLuxLevels()} percentOf={DAYLIGHT_FACTOR_SKY_ILLUMINANCE} />
+          {phase !== 'no-sky' && phase !== 'unavailable' && <DaylightFactorTable values={grid?.statistics ?? null} />}
+          <p className="df-plan-band">{t('daylightPlan.band')}</p>
+        </div>
+      )}
+    </div>
+  );
+}
