@@ -1,10 +1,11 @@
 import './registerDaylightPlanEnglish';
 import './daylightFactorOverlay.css';
-import { useEffect, useMemo, useSyncExternalStore } from 'react';
+import { useEffect, useLayoutEffect, useMemo, useRef, useSyncExternalStore } from 'react';
 import { DAYLIGHT_FACTOR_SKY_ILLUMINANCE, daylightFactorLuxLevels } from '../../core/daylight/daylightFactor';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 import { useI18n } from '../i18n/useI18n';
-import { DaylightFactorTable } from '../viewer/DaylightFactorTable';
+import type { MessageKey } from '../i18n/messageTypes';
+import type { DaylightFactorValues } from '../viewer/useDaylightFactorView';
 import { LuxLegend } from '../viewer/LuxLegend';
 import { daylightFactorImage, type DaylightFactorGrid } from './daylightFactorGrid';
 import { daylightFactorOverlayOf } from './daylightFactorOverlay';
@@ -58,20 +59,73 @@ export function DaylightFactorLayer({ store }: { store: ConfiguratorStore }) {
   );
 }
 
+/** The figures: mean, lowest, U₀ and EN 17037's share at DF ≥ 2 % (the 3D view's table's rows and words, two a line so the card stays small on a phone). */
+const FIGURES: { key: 'mean' | 'min' | 'u0' | 'shareAbove2'; label: MessageKey }[] = [
+  { key: 'mean', label: 'view3d.statsAverage' },
+  { key: 'min', label: 'view3d.statsMin' },
+  { key: 'u0', label: 'view3d.statsUniformity' },
+  { key: 'shareAbove2', label: 'view3d.dfShareAbove2' },
+];
+
+function DaylightFactorFigures({ values }: { values: DaylightFactorValues | null }) {
+  const { t, format } = useI18n();
+  const value = (key: (typeof FIGURES)[number]['key']) => {
+    if (!values) return '–';
+    if (key === 'shareAbove2') return format.number(100 * values.shareAbove2, { maximumFractionDigits: 0 }) + ' %';
+    return format.number(values[key], { minimumFractionDigits: 2, maximumFractionDigits: 2 });
+  };
+  return (
+    <figure className="df-plan-figures" data-testid="df-stats">
+      <figcaption>{t('view3d.dfCaption')}</figcaption>
+      <dl>
+        {FIGURES.map((f) => (
+          <div key={f.key}>
+            {/* A number and its unit stay on one line ("300 lx", "2 %") when a label wraps on a phone. */}
+            <dt>{t(f.label).replace(/(\d) (lx|%)/g, '$1\u00a0$2')}</dt>
+            <dd data-testid={`df-${f.key}`}>{value(f.key)}</dd>
+          </div>
+        ))}
+      </dl>
+    </figure>
+  );
+}
+
+/**
+ * Tells the planner how much of the plan's top the open card covers, so the room is fitted below
+ * it (as under the room-shape editor's bar); nothing while hidden (the editor's insets apply then).
+ */
+function useCardInsets(on: boolean, hidden: boolean, onInsets?: (top: number, bottom: number) => void) {
+  const rootRef = useRef<HTMLDivElement>(null);
+  useLayoutEffect(() => {
+    const root = rootRef.current;
+    if (!root || hidden || !on || !onInsets) return;
+    const measure = () => onInsets(root.offsetTop + root.offsetHeight, 0);
+    measure();
+    const ro = new ResizeObserver(measure);
+    ro.observe(root);
+    return () => {
+      ro.disconnect();
+      onInsets(0, 0);
+    };
+  }, [on, hidden, onInsets]);
+  return rootRef;
+}
+
 /**
  * The overlay's controls on the plan: the toggle and, when on, the legend in % (the 3D view's
- * LuxLegend at DAYLIGHT_FACTOR_LEVELS), the statistics (the 3D view's table, the report's function)
- * and what is being done. Mounted while the plan is shown: the overlay asks the bake service for
- * the daylight factor only then.
+ * LuxLegend at DAYLIGHT_FACTOR_LEVELS), the figures (the report's function, as the 3D view's
+ * table) and what is being done. Mounted while the plan is shown: the overlay asks the bake
+ * service for the daylight factor only then.
  */
-export function DaylightFactorControls({ store, hidden = false }: { store: ConfiguratorStore; hidden?: boolean }) {
+export function DaylightFactorControls({ store, hidden = false, onInsets }: { store: ConfiguratorStore; hidden?: boolean; onInsets?: (top: number, bottom: number) => void }) {
   const { t } = useI18n();
   const { overlay, snapshot } = useOverlay(store);
   useEffect(() => overlay.attach(), [overlay]);
   const { on, phase, grid } = snapshot;
+  const rootRef = useCardInsets(on, hidden, onInsets);
   const note = phase === 'computing' ? t('daylightPlan.computing') : phase === 'no-sky' ? t('daylightPlan.noSky') : phase === 'unavailable' ? t('daylightPlan.unavailable') : null;
   return (
-    <div className="df-plan" data-plan-control data-testid="df-plan" data-phase={phase} hidden={hidden}>
+    <div className="df-plan" ref={rootRef} data-plan-control data-testid="df-plan" data-phase={phase} hidden={hidden}>
       <button type="button" className="action-button df-plan-toggle" aria-pressed={on} title={t('daylightPlan.hint')} onClick={() => overlay.setOn(!on)} data-testid="df-plan-toggle">
         {t('daylightPlan.toggle')}
       </button>
@@ -81,7 +135,7 @@ export function DaylightFactorControls({ store, hidden = false }: { store: Confi
             {note}
           </p>
           <LuxLegend levels={daylightFactorLuxLevels()} percentOf={DAYLIGHT_FACTOR_SKY_ILLUMINANCE} />
-          {phase !== 'no-sky' && phase !== 'unavailable' && <DaylightFactorTable values={grid?.statistics ?? null} />}
+          {phase !== 'no-sky' && phase !== 'unavailable' && <DaylightFactorFigures values={grid?.statistics ?? null} />}
           <p className="df-plan-band">{t('daylightPlan.band')}</p>
         </div>
       )}

@@ -21,11 +21,11 @@ export function LazyDaylightFactorLayer({ store }: { store: ConfiguratorStore })
   );
 }
 
-/** The toggle, legend and statistics on the plan (DaylightFactorOverlay.tsx), loaded on demand; `hidden` while the room-shape editor covers the plan (the map keeps following the edits). */
-export function LazyDaylightFactorControls({ store, hidden }: { store: ConfiguratorStore; hidden: boolean }) {
+/** The toggle, legend and statistics on the plan (DaylightFactorOverlay.tsx), loaded on demand; the room is fitted below its card (`onInsets`); `hidden` while the room-shape editor covers the plan (the map keeps following the edits). */
+export function LazyDaylightFactorControls(props: { store: ConfiguratorStore; hidden: boolean; onInsets: (top: number, bottom: number) => void }) {
   return (
     <Suspense fallback={null}>
-      <Controls store={store} hidden={hidden} />
+      <Controls {...props} />
     </Suspense>
   );
 }

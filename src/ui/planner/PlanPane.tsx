@@ -57,7 +57,7 @@ export function PlanPane({ p }: { p: PlannerScope }) {
           ⤢
         </CommandButton>
       </div>
-      {dfOffered && <LazyDaylightFactorControls store={store} hidden={roomEdit} />}
+      {dfOffered && <LazyDaylightFactorControls store={store} hidden={roomEdit} onInsets={fitBetween} />}
       {config.systems.length === 0 && config.objects.length === 0 && firstRun !== false && !roomEdit && <LazyGuidance firstRun={{ room: config.room, catalog, gate, options: firstRun, onPlaced: p.placedNew, ui }} />}
       {roomEdit && (
         <LazyRoomShapeEditor
