@@ -60,11 +60,11 @@ export function DaylightFactorLayer({ store }: { store: ConfiguratorStore }) {
 }
 
 /** The figures: mean, lowest, U₀ and EN 17037's share at DF ≥ 2 % (the 3D view's table's rows and words, two a line so the card stays small on a phone). */
-const FIGURES: { key: 'mean' | 'min' | 'u0' | 'shareAbove2'; label: MessageKey }[] = [
-  { key: 'mean', label: 'view3d.statsAverage' },
-  { key: 'min', label: 'view3d.statsMin' },
-  { key: 'u0', label: 'view3d.statsUniformity' },
-  { key: 'shareAbove2', label: 'view3d.dfShareAbove2' },
+const FIGURES: { key: 'mean' | 'min' | 'u0' | 'shareAbove2'; messageKey: MessageKey }[] = [
+  { key: 'mean', messageKey: 'view3d.statsAverage' },
+  { key: 'min', messageKey: 'view3d.statsMin' },
+  { key: 'u0', messageKey: 'view3d.statsUniformity' },
+  { key: 'shareAbove2', messageKey: 'view3d.dfShareAbove2' },
 ];
 
 function DaylightFactorFigures({ values }: { values: DaylightFactorValues | null }) {
@@ -81,7 +81,7 @@ function DaylightFactorFigures({ values }: { values: DaylightFactorValues | null
         {FIGURES.map((f) => (
           <div key={f.key}>
             {/* A number and its unit stay on one line ("300 lx", "2 %") when a label wraps on a phone. */}
-            <dt>{t(f.label).replace(/(\d) (lx|%)/g, '$1\u00a0$2')}</dt>
+            <dt>{t(f.messageKey).replace(/(\d) (lx|%)/g, '$1\u00a0$2')}</dt>
             <dd data-testid={`df-${f.key}`}>{value(f.key)}</dd>
           </div>
         ))}
