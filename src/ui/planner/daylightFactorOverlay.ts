@@ -37,13 +37,14 @@ const overlays = new WeakMap<ConfiguratorStore, DaylightFactorOverlay>();
 export function daylightFactorOverlayOf(store: ConfiguratorStore): DaylightFactorOverlay {
   let overlay = overlays.get(store);
   if (!overlay) {
-    overlay = createDaylightFactorOverlay(store, () => bakeHostOf(store)?.get() ?? null);
+    // No WebGL 2 or float targets: no bake service to ask (the card says why).
+    overlay = createDaylightFactorOverlay(store, () => (webglSupportProblem() ? null : (bakeHostOf(store)?.get() ?? null)));
     overlays.set(store, overlay);
   }
   return overlay;
 }
 
-/** Test seams: the feed (null: no bake host), the timer and the slice scheduler. */
+/** Test seams: the timer and the slice scheduler. */
 export interface OverlayOptions {
   schedule?: SliceScheduler;
   delay?: (callback: () => void, ms: number) => () => void;
@@ -55,6 +56,7 @@ const timeout = (callback: () => void, ms: number) => {
 };
 
 /**
+ * `feedOf` gives the store's bake feed (null: none can be made: no bake host, no WebGL 2).
  * The overlay's state: while on and attached it asks the store's bake service (the one the 3D view
  * draws from) for the 'daylight-factor' light, and lights the work-plane grid from its maps once
  * the engine has settled (debounced); off or detached, it gives the service back the light it had.
@@ -160,8 +162,7 @@ function startSession(
     cancelWait = delay(light, GRID_DEBOUNCE_MS);
   };
 
-  const problem = webglSupportProblem();
-  const loading = problem ? null : feedOf();
+  const loading = feedOf();
   if (!loading) set({ phase: 'unavailable' });
   loading?.then(
     (f) => {
