@@ -142,3 +142,10 @@ export function DaylightFactorControls({ store, hidden = false, onInsets }: { st
     </div>
   );
 }
+
+/** Which part the plan draws where (LazyDaylightFactor.tsx): one lazy component for both keeps the first screen small. */
+export type DaylightFactorPartProps = { store: ConfiguratorStore } & ({ part: 'layer' } | { part: 'controls'; hidden: boolean; onInsets: (top: number, bottom: number) => void });
+
+export default function DaylightFactorPart(props: DaylightFactorPartProps) {
+  return props.part === 'layer' ? <DaylightFactorLayer store={props.store} /> : <DaylightFactorControls store={props.store} hidden={props.hidden} onInsets={props.onInsets} />;
+}

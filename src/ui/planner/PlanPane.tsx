@@ -9,7 +9,7 @@ import { detailLevel } from './detailLevel';
 import { FURNITURE_DRAG_TYPE } from './FurniturePanel';
 import { LazyRoomShapeEditor } from './LazyRoomShape';
 import { LazyGuidance } from './lazyGuidance';
-import { daylightFactorOffered, LazyDaylightFactorControls } from './LazyDaylightFactor';
+import { daylightFactorOffered, LazyDaylightFactor } from './LazyDaylightFactor';
 import { PlanControls } from './PlanControls';
 import type { PlannerScope } from './plannerScope';
 import { PlanSvg } from './PlanSvg';
@@ -57,7 +57,7 @@ export function PlanPane({ p }: { p: PlannerScope }) {
           ⤢
         </CommandButton>
       </div>
-      {dfOffered && <LazyDaylightFactorControls store={store} hidden={roomEdit} onInsets={fitBetween} />}
+      {dfOffered && <LazyDaylightFactor part="controls" store={store} hidden={roomEdit} onInsets={fitBetween} />}
       {config.systems.length === 0 && config.objects.length === 0 && firstRun !== false && !roomEdit && <LazyGuidance firstRun={{ room: config.room, catalog, gate, options: firstRun, onPlaced: p.placedNew, ui }} />}
       {roomEdit && (
         <LazyRoomShapeEditor

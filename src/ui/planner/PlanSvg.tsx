@@ -22,7 +22,7 @@ import type { DragPreview } from './dragPreview';
 import type { SelectionPath } from './selection';
 import { useI18n } from '../i18n/useI18n';
 import { LazyRoomShapeDrawing } from './LazyRoomShape';
-import { LazyDaylightFactorLayer } from './LazyDaylightFactor';
+import { LazyDaylightFactor } from './LazyDaylightFactor';
 import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 
 export interface PlanSvgProps {
@@ -311,7 +311,7 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
             <line key={i} x1={l.x1} y1={l.z1} x2={l.x2} y2={l.z2} stroke={l.major ? '#d3d8e0' : '#eceff3'} strokeWidth={1} vectorEffect="non-scaling-stroke" />
           ))}
         </g>
-        {daylightFactorOf && <LazyDaylightFactorLayer store={daylightFactorOf} />}
+        {daylightFactorOf && <LazyDaylightFactor part="layer" store={daylightFactorOf} />}
         <ObjectShapes config={config} selectedId={selection.objectId} drag={drag} />
         {footprintLayer(systems, systemDrag, catalog, levels, config, footprints, clipId)}
         {shape ? (
