@@ -110,6 +110,20 @@ test('the daylight-factor map on the plan: legend in %, statistics, brighter by 
   console.info(`DF plan: mean ${mean} %, legend position by the window ${near}, in the far corner ${corner}`);
   expect(near).toBeGreaterThan(corner);
 
+  // A window twice as wide, set in the room-shape editor (the card hidden meanwhile): the map follows, a brighter room, fitted below the card again.
+  await page.getByTestId('edit-room-shape').click();
+  await expect(overlay).toBeHidden();
+  await page.getByTestId('room-opening-0').click();
+  await page.getByTestId('room-opening-width').fill('3');
+  await page.getByTestId('room-opening-width').press('Enter');
+  await page.getByTestId('room-shape-done').click();
+  await expect(overlay).toBeVisible();
+  await expect.poll(async () => Number(await overlay.getByTestId('df-mean').textContent()), { timeout: 25_000, intervals: [250] }).toBeGreaterThan(1.3 * mean);
+  await expect(overlay).toHaveAttribute('data-phase', 'ready');
+  console.info(`DF plan, the window 3 m wide: mean ${await overlay.getByTestId('df-mean').textContent()} %`);
+  const card = (await page.getByTestId('df-plan-card').boundingBox())!;
+  expect((await layer.boundingBox())!.y).toBeGreaterThanOrEqual(card.y + card.height);
+
   // Off: the layer and the card go, the plan stays.
   await dfToggle.click();
   await expect(layer).toHaveCount(0);
