@@ -8,6 +8,7 @@ import type enScenes from './messages/en/scenes';
 import type enA11y from './messages/en/a11y';
 import type enRoomShape from './messages/en/roomShape';
 import type enDaylight from './messages/en/daylight';
+import type enDaylightPlan from './messages/en/daylightPlan';
 
 /**
  * A message that depends on a count: the CLDR plural category of `params.count` picks the text
@@ -31,13 +32,13 @@ export interface PluralMessage {
  * guidance (messages/en/guidance.ts: first run, remedies) with the guidance chunk, the light scenes'
  * (messages/en/scenes.ts) with the scene panel's and the 3D view's chunks, the screen-reader
  * announcements' (messages/en/a11y.ts) with theirs, the room-shape editor's (messages/en/roomShape.ts) with its chunk, the daylight panel's
- * (messages/en/daylight.ts) with its chunk.
+ * (messages/en/daylight.ts) with its chunk, the plan's daylight-factor overlay's (messages/en/daylightPlan.ts) with its.
  */
 export type SourceMessages = typeof en &
   typeof enLazy &
   typeof enOptionsPanel &
   typeof enCore &
-  typeof enPanelExtras & { guidance: typeof enGuidance; scenes: typeof enScenes; a11y: typeof enA11y; roomShape: typeof enRoomShape; daylight: typeof enDaylight };
+  typeof enPanelExtras & { guidance: typeof enGuidance; scenes: typeof enScenes; a11y: typeof enA11y; roomShape: typeof enRoomShape; daylight: typeof enDaylight; daylightPlan: typeof enDaylightPlan };
 
 export type Area = keyof SourceMessages & string;
 

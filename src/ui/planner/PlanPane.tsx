@@ -9,6 +9,7 @@ import { detailLevel } from './detailLevel';
 import { FURNITURE_DRAG_TYPE } from './FurniturePanel';
 import { LazyRoomShapeEditor } from './LazyRoomShape';
 import { LazyGuidance } from './lazyGuidance';
+import { daylightFactorOffered, LazyDaylightFactor } from './LazyDaylightFactor';
 import { PlanControls } from './PlanControls';
 import type { PlannerScope } from './plannerScope';
 import { PlanSvg } from './PlanSvg';
@@ -28,6 +29,8 @@ export function PlanPane({ p }: { p: PlannerScope }) {
   const fading = useSyncExternalStore(player.subscribe, () => player.getState().fading);
   const fadeLevelsShown = useMemo(() => (fading ? mixLevels(fading.fromLevels, outputLevels(fading.to), fading.e) : null), [fading]);
   const level = detailLevel(view.scale);
+  // The daylight-factor overlay (issue 30): offered when daylight comes in through a window; its code loads then.
+  const dfOffered = daylightFactorOffered(config);
   // The room-shape mode's bar and sheet cover the plan's edges: the room is fitted between them (a stable callback: the editor's effect depends on it).
   const fitBetween = useCallback((top: number, bottom: number) => controller.setFitInsets(top, bottom), [controller]);
   // A library item dropped on the plan lands where it was dropped.
@@ -41,7 +44,7 @@ export function PlanPane({ p }: { p: PlannerScope }) {
   };
   return (
     <div className="plan-wrap" ref={wrapRef} data-testid="plan" data-scale={view.scale.toFixed(3)} data-level={level} onDragOver={dragOver} onDrop={drop}>
-      <PlanSvg config={config} catalog={catalog} view={view} selection={path} drag={drag} footprints={p.footprints} levels={fadeLevelsShown} />
+      <PlanSvg config={config} catalog={catalog} view={view} selection={path} drag={drag} footprints={p.footprints} levels={fadeLevelsShown} daylightFactorOf={dfOffered ? store : null} />
       <PlanControls config={config} catalog={catalog} view={view} viewport={viewport} level={level} selection={path} gate={gate} onSelect={p.select} onOpenOptions={() => ui.setState({ optionsOpen: true, panelOpen: true })} drag={drag} />
       <div className="zoom-controls" data-plan-control>
         <CommandButton controller={controller} id="zoom-in" testId="zoom-in">
@@ -54,6 +57,7 @@ export function PlanPane({ p }: { p: PlannerScope }) {
           ⤢
         </CommandButton>
       </div>
+      {dfOffered && <LazyDaylightFactor part="controls" store={store} hidden={roomEdit} onInsets={fitBetween} />}
       {config.systems.length === 0 && config.objects.length === 0 && firstRun !== false && !roomEdit && <LazyGuidance firstRun={{ room: config.room, catalog, gate, options: firstRun, onPlaced: p.placedNew, ui }} />}
       {roomEdit && (
         <LazyRoomShapeEditor

@@ -22,6 +22,8 @@ import type { DragPreview } from './dragPreview';
 import type { SelectionPath } from './selection';
 import { useI18n } from '../i18n/useI18n';
 import { LazyRoomShapeDrawing } from './LazyRoomShape';
+import { LazyDaylightFactor } from './LazyDaylightFactor';
+import type { ConfiguratorStore } from '../../core/store/createConfiguratorStore';
 
 export interface PlanSvgProps {
   config: Configuration;
@@ -34,6 +36,8 @@ export interface PlanSvgProps {
   footprints: FootprintSource;
   /** Each module's level shown during a light-scene crossfade (scene player; off = 0); absent: the configuration's. */
   levels?: ReadonlyMap<string, number> | null;
+  /** The configurator whose daylight-factor overlay is drawn under the plan (issue 30); absent: none. */
+  daylightFactorOf?: ConfiguratorStore | null;
 }
 
 /** A module's shown level: the fade's, else its own (0 when switched off). */
@@ -258,7 +262,7 @@ function systemLayer(systems: readonly LightSystem[], systemDrag: SystemDrag, ca
  * only draws: what a pointer hits is found from the same shapes by planHitTest, and input goes
  * to the PlannerController. Its objects, footprints and systems are drawn by ObjectShapes, footprintLayer and systemLayer.
  */
-export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection, drag, footprints, levels }: PlanSvgProps) {
+export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection, drag, footprints, levels, daylightFactorOf }: PlanSvgProps) {
   const clipId = useId();
   const { t } = useI18n();
   // Re-render when a photometric file arrives.
@@ -307,6 +311,7 @@ export const PlanSvg = memo(function PlanSvg({ config, catalog, view, selection,
             <line key={i} x1={l.x1} y1={l.z1} x2={l.x2} y2={l.z2} stroke={l.major ? '#d3d8e0' : '#eceff3'} strokeWidth={1} vectorEffect="non-scaling-stroke" />
           ))}
         </g>
+        {daylightFactorOf && <LazyDaylightFactor part="layer" store={daylightFactorOf} />}
         <ObjectShapes config={config} selectedId={selection.objectId} drag={drag} />
         {footprintLayer(systems, systemDrag, catalog, levels, config, footprints, clipId)}
         {shape ? (

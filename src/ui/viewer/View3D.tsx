@@ -97,7 +97,7 @@ export default function View3D({ store, loadPhotometry, onBack, visible = true, 
   useSelectionHighlight(ctrl, selection, feed);
   // A new controller starts from the service's choice; the panel's choice wins (weights only, never a bake), unless the daylight-factor mode is on.
   const daylightAvailable = config.daylight?.on === true && (config.room.shape?.openings ?? []).some((o) => o.kind === 'window');
-  const df = useDaylightFactorView({ available: daylightAvailable, lightSources, controllerRef: ctrl, controllerVersion, sceneRef, publish });
+  const df = useDaylightFactorView({ available: daylightAvailable, visible, lightSources, controllerRef: ctrl, controllerVersion, sceneRef, publish });
   useWorkPlaneStats({ plane, mapsVersion, done: progress.done, sceneRef, litRef, controllerRef: ctrl, controllerVersion, setPlaneStats, publish });
 
   return (

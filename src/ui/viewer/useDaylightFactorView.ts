@@ -16,6 +16,11 @@ export type DaylightFactorValues = NonNullable<ViewerStatus['daylightFactor']>;
 export interface DaylightFactorViewSetup {
   /** Whether the mode may be chosen: daylight on and a window in the room. */
   available: boolean;
+  /**
+   * The view is on screen: only then does it hand its light sources to the shared bake service (the
+   * plan's daylight-factor overlay hands its own while the plan is shown); shown again, it hands them again.
+   */
+  visible: boolean;
   /** The panel's choice, shown again when the mode is left. */
   lightSources: 'electric' | 'daylight' | 'both';
   controllerRef: RefObject<ViewerController | null>;
@@ -32,7 +37,11 @@ export interface DaylightFactorViewSetup {
 export function daylightFactorOfView(scene: BakeScene, lit: LitMaps, prepared: PreparedObjects | null): DaylightFactorValues | null {
   const light = lit.maps.objects;
   if (!scene.daylight || !prepared || !light || light.total.length === 0) return null;
-  const lux = workPlaneDaylight(scene, prepared, light, daylightFactorDaylight(scene.daylight));
+  return daylightFactorValuesOf(workPlaneDaylight(scene, prepared, light, daylightFactorDaylight(scene.daylight)));
+}
+
+/** The DF statistics shown (the 3D view's table, the plan's overlay) of work-plane lux under the overcast sky of DAYLIGHT_FACTOR_SKY_ILLUMINANCE; null without points. */
+export function daylightFactorValuesOf(lux: ArrayLike<number>): DaylightFactorValues | null {
   const s = workPlaneDaylightFactorStatistics(lux, DAYLIGHT_FACTOR_SKY_ILLUMINANCE);
   if (!s) return null;
   return { mean: s.average, min: s.minimum, max: s.maximum, u0: s.uniformity, median: s.median, shareAbove2: s.shareAtTarget, shareAbove07: s.shareAtMinimumTarget, points: lux.length };
@@ -45,7 +54,7 @@ export function daylightFactorOfView(scene: BakeScene, lit: LitMaps, prepared: P
  * DF is computed when the maps settle.
  */
 export function useDaylightFactorView(setup: DaylightFactorViewSetup) {
-  const { available, lightSources, controllerRef, controllerVersion, sceneRef, publish } = setup;
+  const { available, visible, lightSources, controllerRef, controllerVersion, sceneRef, publish } = setup;
   const [chosen, setChosen] = useState(false);
   const [values, setValues] = useState<DaylightFactorValues | null>(null);
   const on = chosen && available;
@@ -56,11 +65,11 @@ export function useDaylightFactorView(setup: DaylightFactorViewSetup) {
   });
   useEffect(() => {
     const c = controllerRef.current;
-    if (!c) return;
+    if (!c || !visible) return;
     const sources: LightSources = on ? 'daylight-factor' : lightSources;
     c.setLightSources(sources);
     c.setLuxLevels(on ? daylightFactorLuxLevels() : null);
-  }, [on, lightSources, controllerRef, controllerVersion]);
+  }, [on, visible, lightSources, controllerRef, controllerVersion]);
   // The work plane's DF once the overcast basis is baked and solved: the engine's settled version is
   // polled (a GPU relight shows new light without new CPU maps), and its maps are summed once per version.
   useEffect(() => {

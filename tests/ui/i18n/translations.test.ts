@@ -9,6 +9,7 @@ import scenesEnglish from '../../../src/ui/i18n/messages/en/scenes';
 import a11yEnglish from '../../../src/ui/i18n/messages/en/a11y';
 import roomShapeEnglish from '../../../src/ui/i18n/messages/en/roomShape';
 import daylightEnglish from '../../../src/ui/i18n/messages/en/daylight';
+import daylightPlanEnglish from '../../../src/ui/i18n/messages/en/daylightPlan';
 import type { MessageTree, PluralMessage } from '../../../src/ui/i18n/messageTypes';
 import { hasWord } from './findHardCodedText';
 import defaultCatalog from '../../../src/core/catalog/default-catalog.json';
@@ -120,7 +121,7 @@ describe('translations', async () => {
   registerEnglishAreas(optionsPanelEnglish);
   registerEnglishAreas(panelExtrasEnglish);
   registerEnglishAreas({ guidance: guidanceEnglish });
-  registerEnglishAreas({ scenes: scenesEnglish, a11y: a11yEnglish, roomShape: roomShapeEnglish, daylight: daylightEnglish });
+  registerEnglishAreas({ scenes: scenesEnglish, a11y: a11yEnglish, roomShape: roomShapeEnglish, daylight: daylightEnglish, daylightPlan: daylightPlanEnglish });
   // And the English of the core's codes, which comes with the other languages (docs/i18n.md, "Bundles").
   await loadCoreEnglish();
   const en = flatten(await loadMessages('en'));

@@ -24,18 +24,41 @@ export interface AtlasLight {
   total: Float32Array;
 }
 
+/** The work plane of a shaped room ready to be lit point by point (workPlaneDaylightRun). */
+export interface WorkPlaneDaylightRun {
+  /** The grid's points in the room's own (plan) coordinates: x, the work plane's height, z. */
+  points: readonly Vec3[];
+  /**
+   * Y illuminance (lux) at points [from, to): each point's value depends on that point alone, so a
+   * caller may light the plane in slices (the plan's daylight-factor overlay does, between frames)
+   * and get exactly what one call over all points gives.
+   */
+  illuminance(from: number, to: number): Float64Array;
+}
+
+/**
+ * The work plane of a shaped room (`scene` as given, not yet enclosed) lit by `daylight` alone;
+ * `prepared` are the enclosed scene's objects the maps were baked on. Null when the room has no shape.
+ */
+export function workPlaneDaylightRun(scene: BakeScene, prepared: PreparedObjects, light: AtlasLight, daylight: BakeDaylight): WorkPlaneDaylightRun | null {
+  const shape = scene.room.shape;
+  if (!shape) return null;
+  const offset = encloseShapedRoom(scene).room.enclosure!.offset;
+  const ctx = daylightPointContext(prepared, daylight, daylightWindows(shape, offset, daylight.glazing), true);
+  const points = workPlanePoints(shape);
+  const baked = points.map((p): Vec3 => [p[0] + offset[0], p[1] + offset[1], p[2] + offset[2]]);
+  const caster = createObjectRayCaster(prepared);
+  return { points, illuminance: (from, to) => workPlaneIlluminance(baked.slice(from, to), ctx, caster, light.atlas, light.total) };
+}
+
 /**
  * Y illuminance (lux) at the work plane's points of a shaped room (`scene` as given, not yet
  * enclosed), lit by `daylight` alone; `prepared` are the enclosed scene's objects the maps were
  * baked on. Empty when the room has no shape.
  */
 export function workPlaneDaylight(scene: BakeScene, prepared: PreparedObjects, light: AtlasLight, daylight: BakeDaylight): Float64Array {
-  const shape = scene.room.shape;
-  if (!shape) return new Float64Array(0);
-  const offset = encloseShapedRoom(scene).room.enclosure!.offset;
-  const ctx = daylightPointContext(prepared, daylight, daylightWindows(shape, offset, daylight.glazing), true);
-  const points = workPlanePoints(shape).map((p): Vec3 => [p[0] + offset[0], p[1] + offset[1], p[2] + offset[2]]);
-  return workPlaneIlluminance(points, ctx, createObjectRayCaster(prepared), light.atlas, light.total);
+  const run = workPlaneDaylightRun(scene, prepared, light, daylight);
+  return run ? run.illuminance(0, run.points.length) : new Float64Array(0);
 }
 
 /** DF statistics of work-plane illuminances under an overcast sky of horizontal illuminance `outside` (lux); null without points. */

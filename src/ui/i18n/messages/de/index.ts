@@ -22,6 +22,7 @@ import refusals from './refusals';
 import rooms from './rooms';
 import roomShape from './roomShape';
 import daylight from './daylight';
+import daylightPlan from './daylightPlan';
 import scenes from './scenes';
 import expert from './expert';
 import sharing from './sharing';
@@ -53,6 +54,7 @@ export default {
   rooms,
   roomShape,
   daylight,
+  daylightPlan,
   scenes,
   expert,
   sharing,
