@@ -7,8 +7,17 @@ import * as THREE from 'three';
 import type { Vec3 } from '../../../src/core/model/lightingScene/lightingScene';
 import { createRoomHardware } from '../../../src/engines/view/createRoomHardware';
 import type { SharedDisplayUniforms } from '../../../src/engines/view/createRoomSurfaces';
-import type { Fixtures } from '../../../src/engines/view/fixtures';
+import type { FixtureModule, Fixtures } from '../../../src/engines/view/fixtures';
 import { createRoomView } from '../../../src/engines/view/roomView';
+
+/**
+ * The hardware of one luminaire hanging level at 2 m (centre [0, 2, 0], 0.15 m long, no rails),
+ * switched on or off: `which` names it, its kind, its light and, for a GLDF luminaire, its body.
+ */
+export function oneLuminaire(which: Pick<FixtureModule, 'id' | 'kind' | 'light' | 'body'>): (on: boolean) => Fixtures {
+  const module = (on: boolean): FixtureModule => ({ centre: [0, 2, 0], heading: 0, length: 0.15, on, orientation: { yaw: 0, pitch: 0, roll: 0 }, mount: 0, ...which });
+  return (on) => ({ rails: [], railWidth: 0, connectors: [], cables: [], modules: [module(on)] });
+}
 
 export interface GlowPose {
   position: Vec3;

@@ -13,7 +13,6 @@ import { describe, expect, it } from 'vitest';
 import type { Rgb, Vec3 } from '../../../src/core/model/lightingScene/lightingScene';
 import { parsePhotometry } from '../../../src/core/photometry/parsePhotometry';
 import { intensity } from '../../../src/core/photometry/intensity';
-import type { FixtureModule, Fixtures } from '../../../src/engines/view/fixtures';
 import { hemisphereFlux } from '../../../src/engines/view/luminaires/emitterLuminance';
 import { l3dOpening } from '../../../src/engines/view/luminaires/l3dOpening';
 import { readL3dBody } from '../../../src/engines/view/luminaires/readL3dBody';
@@ -21,7 +20,7 @@ import { displayColor } from '../../../src/engines/view/toneMap';
 import { panelL3d } from '../../core/gldf/buildL3dPanel';
 import { spotL3d } from '../../core/gldf/buildL3dSpot';
 import { headlessRenderer } from './headlessRenderer';
-import { centreViewPixel, linearHardwareShot } from './glowShots';
+import { centreViewPixel, linearHardwareShot, oneLuminaire } from './glowShots';
 
 const W = 16;
 const H = 16;
@@ -45,19 +44,7 @@ describe.each([
   const body = readL3dBody(bytes, 'test.l3d');
   const ph = parsePhotometry(readFileSync('public/ies/bega_50975_downlight_lm1995_crlf.ies'), 'bega.ies');
   const weight: Rgb = [0.5 * 1.2, 0.5 * 1.0, 0.5 * 0.7];
-  const module = (on: boolean): FixtureModule => ({
-    id: 's1',
-    centre: [0, 2, 0],
-    heading: 0,
-    length: 0.15,
-    on,
-    kind: 'spot',
-    orientation: { yaw: 0, pitch: 0, roll: 0 },
-    mount: 0,
-    light: { opening: l3dOpening(body, 0), flux: hemisphereFlux(ph), weight },
-    body,
-  });
-  const fixtures = (on: boolean): Fixtures => ({ rails: [], railWidth: 0, connectors: [], cables: [], modules: [module(on)] });
+  const fixtures = oneLuminaire({ id: 's1', kind: 'spot', light: { opening: l3dOpening(body, 0), flux: hemisphereFlux(ph), weight }, body });
   const L = downwardFlux(ph) / (Math.PI * area);
   // 10 cm under the lens (beyond the view's near plane) with a 20° field: the view's half-width there is 17.6 mm, inside the 25 mm radius.
   const pose = { position: [0, 1.9, 0.0005] as Vec3, target: [0, 2, 0] as Vec3, fov: 20 };

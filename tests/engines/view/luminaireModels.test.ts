@@ -9,7 +9,7 @@ import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import * as THREE from 'three';
 import { headlessRenderer } from './headlessRenderer';
-import { centreViewPixel, linearHardwareShot } from './glowShots';
+import { centreViewPixel, linearHardwareShot, oneLuminaire } from './glowShots';
 import { describe, expect, it } from 'vitest';
 import { defaultCatalog } from '../../../src/core/catalog/defaultCatalog';
 import { aimAxis } from '../../../src/core/model/modules/aim';
@@ -18,7 +18,6 @@ import { integrateFlux } from '../../../src/core/photometry/flux';
 import { parsePhotometry } from '../../../src/core/photometry/parsePhotometry';
 import type { Photometry } from '../../../src/core/photometry/types';
 import { frameMatrix } from '../../../src/engines/view/createRoomHardware';
-import type { FixtureModule, Fixtures } from '../../../src/engines/view/fixtures';
 import { buildLuminaireModel } from '../../../src/engines/view/luminaires/buildLuminaireModel';
 import { modelHeight } from '../../../src/engines/view/luminaires/luminaireDimensions';
 import { emitterLuminance, hemisphereFlux } from '../../../src/engines/view/luminaires/emitterLuminance';
@@ -173,18 +172,7 @@ describe('the emitter on screen (three.js on headless-gl)', () => {
   // A downlight (the BEGA 50975 file: 321 lm through a Ø 80 mm opening) at 2 m, seen from 10 cm below: the face fills the view.
   const ph = load('ies/bega_50975_downlight_lm1995_crlf.ies');
   const weight: Rgb = [0.5 * 1.2, 0.5 * 1.0, 0.5 * 0.7];
-  const module = (on: boolean): FixtureModule => ({
-    id: 'd1',
-    centre: [0, 2, 0],
-    heading: 0,
-    length: 0.15,
-    on,
-    kind: 'downlight',
-    orientation: { yaw: 0, pitch: 0, roll: 0 },
-    mount: 0,
-    light: { opening: ph.luminousOpening, flux: hemisphereFlux(ph), weight },
-  });
-  const fixtures = (on: boolean): Fixtures => ({ rails: [], railWidth: 0, connectors: [], cables: [], modules: [module(on)] });
+  const fixtures = oneLuminaire({ id: 'd1', kind: 'downlight', light: { opening: ph.luminousOpening, flux: hemisphereFlux(ph), weight } });
   const L = hemisphereFlux(ph).down / (Math.PI * openingArea(ph.luminousOpening));
   const pose = { position: [0, 1.9, 0.002] as Vec3, target: [0, 2, 0] as Vec3, fov: 30 };
 
