@@ -7,7 +7,8 @@ import { expect, test, type Page } from '@playwright/test';
  * with summer time; where the sun's beam through the south window lands on the floor at 10:00 in
  * June (inside the room, worked out here from the sun's position the panel shows and the window's
  * rectangle, parallel rays); and no sky after sunset in December, so no sun patch at all. The city
- * and the date in the UI language (München, 21. Juni). Then the panel and the 3D view's mode buttons
+ * and the date in the UI language (München, 21. Juni); day, month and year each one action (31
+ * December → February: the 28th). Then the panel and the 3D view's mode buttons
  * on a 360 px phone, a tablet and a desktop, in English, German, French and Italian, nothing wider
  * than the panel (screenshots for looking at, written under test-results/daylight).
  */
@@ -149,7 +150,18 @@ test.describe('languages', () => {
       expect(await page.getByTestId('daylight-month').evaluate((s: HTMLSelectElement) => s.selectedOptions[0].textContent)).toBe(month);
     }
     // The stored city is the list's key whatever the language shows.
-    expect(JSON.parse(await page.evaluate(() => window.luxbox!.getConfig())).configuration.daylight.place).toEqual({ city: 'Munich' });
+    const daylight = async () => JSON.parse(await page.evaluate(() => window.luxbox!.getConfig())).configuration.daylight;
+    expect((await daylight()).place).toEqual({ city: 'Munich' });
+    // Day, month and year each one action: 31 December, then February keeps the month's last day, then another year.
+    await page.getByTestId('daylight-december').click();
+    await page.getByTestId('daylight-day').selectOption('31');
+    await expect.poll(async () => (await daylight()).date).toBe('2026-12-31');
+    await page.getByTestId('daylight-month').selectOption('2');
+    await expect.poll(async () => (await daylight()).date).toBe('2026-02-28');
+    await expect(date).toContainText('28 febbraio 2026');
+    await page.getByTestId('daylight-year').fill('2030');
+    await page.getByTestId('daylight-year').press('Enter');
+    await expect.poll(async () => (await daylight()).date).toBe('2030-02-28');
   });
 });
 
