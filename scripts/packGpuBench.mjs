@@ -23,19 +23,29 @@ const sh = (cmd, args, opts = {}) => execFileSync(cmd, args, { stdio: ['ignore',
 rmSync(out, { recursive: true, force: true });
 mkdirSync(join(out, 'node_modules'), { recursive: true });
 
-// 1. The CLI in one file.
-sh(join(root, 'node_modules/.bin/esbuild'), [
-  join(root, 'src/hosts/cli/bundleEntry.ts'),
-  '--bundle',
-  '--platform=node',
-  '--format=esm',
-  '--target=node20',
-  '--external:gl',
-  `--outfile=${join(out, 'luxbox.mjs')}`,
-  // Bundled CommonJS dependencies call require(): give the ES module one.
-  "--banner:js=import { createRequire as __luxboxRequire } from 'node:module'; const require = __luxboxRequire(import.meta.url);",
-  '--log-level=warning',
-]);
+// 1. The CLI in one file, and the two device measurements that are scripts, not CLI commands
+// (docs/benchmarks.md "GPU": the bright-patch selection and the per-frame relight).
+const bundle = (entry, outfile, input) =>
+  sh(
+    join(root, 'node_modules/.bin/esbuild'),
+    [
+      ...(entry ? [entry] : ['--sourcefile=entry.ts', '--loader=ts']),
+      '--bundle',
+      '--platform=node',
+      '--format=esm',
+      '--target=node20',
+      '--external:gl',
+      `--outfile=${join(out, outfile)}`,
+      // Bundled CommonJS dependencies call require(): give the ES module one.
+      "--banner:js=import { createRequire as __luxboxRequire } from 'node:module'; const require = __luxboxRequire(import.meta.url);",
+      '--log-level=warning',
+    ],
+    { cwd: root, ...(input ? { input, stdio: ['pipe', 'pipe', 'inherit'] } : {}) },
+  );
+bundle(join(root, 'src/hosts/cli/bundleEntry.ts'), 'luxbox.mjs');
+// The bundle sits in gpu-pack/, so its import.meta.dirname + '../tests/fixtures' is the repository's.
+bundle(join(root, 'scripts/measureBrightSelection.ts'), 'measureBrightSelection.mjs');
+bundle(null, 'benchGpuRelight.mjs', "import { benchGpuRelight } from './scripts/bench/benchGpuRelight';\nconsole.log(JSON.stringify(benchGpuRelight(), null, 2));\n");
 
 // 2. headless-gl's runtime and its runtime dependencies (build-time ones left out).
 const BUILD_ONLY = new Set(['nan', 'node-gyp', 'prebuild-install']);
@@ -77,7 +87,8 @@ writeFileSync(join(out, 'node.xz'), sh('xz', ['-9', '-T0', '-c', process.execPat
 writeFileSync(
   join(out, 'run.sh'),
   `#!/usr/bin/env bash
-# luxbox on a bare GPU server: Vulkan back end, no X display. Usage: run.sh <luxbox args…>
+# luxbox on a bare GPU server: Vulkan back end, no X display.
+# Usage: run.sh <luxbox args…>   or   run.sh --script <bundled script>.mjs <its args…>
 set -euo pipefail
 HERE="$(cd "$(dirname "$0")" && pwd)"
 [ -x "$HERE/node" ] || { xz -d -k -c "$HERE/node.xz" > "$HERE/node.tmp" && chmod +x "$HERE/node.tmp" && mv "$HERE/node.tmp" "$HERE/node"; }
@@ -89,6 +100,11 @@ if [ -z "\${VK_DRIVER_FILES:-}\${VK_ICD_FILENAMES:-}" ]; then
   done
 fi
 export LUXBOX_GL="\${LUXBOX_GL:-vulkan}"
+if [ "\${1:-}" = --script ]; then
+  # Scripts make their context with createHeadlessGL directly: ANGLE reads its platform from here.
+  export ANGLE_DEFAULT_PLATFORM=vulkan
+  exec "$HERE/node" "$HERE/$2" "\${@:3}"
+fi
 exec "$HERE/node" "$HERE/luxbox.mjs" "$@"
 `,
 );

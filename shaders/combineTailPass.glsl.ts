@@ -1,7 +1,8 @@
 /**
  * out = a·scaleA + b·(uOffsetB + uTailB·f), f = r/(1−r) per channel with r
  * read from the flux-statistics row at uStatsIndex (fluxReduce.glsl.ts): the
- * tail of the bounce series applied without the CPU ever seeing r. The same
+ * tail of the bounce series applied without the CPU ever seeing r (in a room
+ * with openings r is the measured R_k/R_{k−1}, seriesRatioPass; the same here). The same
  * factor on the CPU, with its derivation: src/engines/bake/tailFactor.ts.
  */
 import { fragmentPass } from './fragmentPass.glsl';

@@ -70,8 +70,18 @@ export const fluxRatioUniforms = {
 /**
  * The flux-ratio pass's GLSL, the six surfaces' sums added to `start` (the atlas's flux and
  * reflected flux for a scene with objects, zero otherwise): one formula for both passes.
+ * `output` 'ratio' writes (r_R, r_G, r_B, Φ_Y); 'reflected' writes the reflected flux itself
+ * (R_R, R_G, R_B, Φ_Y), which a room with openings keeps per bounce for seriesRatioPass.
  */
-export function fluxRatioSource(start: { flux: string; reflected: string }): string {
+export function fluxRatioSource(start: { flux: string; reflected: string }, output: 'ratio' | 'reflected' = 'ratio'): string {
+  const write =
+    output === 'ratio'
+      ? /* glsl */ `vec3 ratio = vec3(0.0);
+  for (int c = 0; c < 3; c++) {
+    if (flux[c] > 0.0) ratio[c] = clamp(reflected[c] / flux[c], 0.0, uMaxRatio);
+  }
+  outColor = vec4(ratio, dot(flux, uLuminance));`
+      : /* glsl */ `outColor = vec4(reflected, dot(flux, uLuminance));`;
   return /* glsl */ `out vec4 outColor;
 vec3 total(sampler2D partial) {
   ivec2 size = textureSize(partial, 0);
@@ -96,13 +106,32 @@ void main() {
     flux += f;
     reflected += f * uRho[s];
   }
-  vec3 ratio = vec3(0.0);
-  for (int c = 0; c < 3; c++) {
-    if (flux[c] > 0.0) ratio[c] = clamp(reflected[c] / flux[c], 0.0, uMaxRatio);
-  }
-  outColor = vec4(ratio, dot(flux, uLuminance));
+  ${write}
 }
 `;
 }
 
 export const fluxRatioPass = fragmentPass(fluxRatioUniforms, fluxRatioSource({ flux: 'vec3(0.0)', reflected: 'vec3(0.0)' }));
+
+/**
+ * The tail's ratio in a room with openings (docs/baker.md, "Tail for ρ → 1"): there part of each
+ * bounce's reflected flux leaves through the openings, so the flux-weighted reflectance
+ * overestimates the next bounce; the measured ratio of successive reflected fluxes does not:
+ *   r_c = R_c,k / R_c,k−1,  R_c,k = Σ ρ·E_k·A over the room's surfaces (bounce k),
+ * clamped to [0, uMaxRatio], read from the 'reflected' row (fluxRatioSource) at uIndex and
+ * uIndex − 1 and written with that record's Φ_Y. The same on the CPU: src/engines/bake/fluxRecord.ts.
+ */
+export const seriesRatioPass = fragmentPass(
+  { uReflected: 'sampler2D', uIndex: 'int', uMaxRatio: 'float' },
+  /* glsl */ `out vec4 outColor;
+void main() {
+  vec4 now = texelFetch(uReflected, ivec2(uIndex, 0), 0);
+  vec3 before = texelFetch(uReflected, ivec2(uIndex - 1, 0), 0).rgb;
+  vec3 ratio = vec3(0.0);
+  for (int c = 0; c < 3; c++) {
+    if (before[c] > 0.0) ratio[c] = clamp(now[c] / before[c], 0.0, uMaxRatio);
+  }
+  outColor = vec4(ratio, now.a);
+}
+`,
+);

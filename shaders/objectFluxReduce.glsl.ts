@@ -20,4 +20,8 @@ export const objectReduceSumPass = blockSumPass(
 );
 
 /** fluxRatioPass with the atlas: uSum6 = Σ E·c, uSum7 = Σ ρ·E·c (partial sums), uObjectArea = texel² × input scale. */
-export const objectFluxRatioPass = fragmentPass({ ...fluxRatioUniforms, uSum6: 'sampler2D', uSum7: 'sampler2D', uObjectArea: 'float' }, fluxRatioSource({ flux: 'total(uSum6) * uObjectArea', reflected: 'total(uSum7) * uObjectArea' }));
+const objectFluxUniforms = { ...fluxRatioUniforms, uSum6: 'sampler2D', uSum7: 'sampler2D', uObjectArea: 'float' } as const;
+const atlasStart = { flux: 'total(uSum6) * uObjectArea', reflected: 'total(uSum7) * uObjectArea' };
+export const objectFluxRatioPass = fragmentPass(objectFluxUniforms, fluxRatioSource(atlasStart));
+/** The same sums written as the reflected flux (R_R, R_G, R_B, Φ_Y): a room with openings (fluxReduce.glsl.ts seriesRatioPass). */
+export const objectReflectedFluxPass = fragmentPass(objectFluxUniforms, fluxRatioSource(atlasStart, 'reflected'));

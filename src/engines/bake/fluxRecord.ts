@@ -45,3 +45,22 @@ export function fluxRecord(surfaces: readonly SurfaceFlux[], maxRatio: number): 
   const ratio = flux.map((f, c) => (f > 0 ? Math.min(Math.max(reflected[c] / f, 0), maxRatio) : 0)) as Rgb;
   return { ratio, fluxY: flux.reduce((y, f, c) => y + f * LUMINANCE_WEIGHTS[c], 0) };
 }
+
+/**
+ * The record of a room with openings (fluxStatistics.ts with `openings`; the enclosure's sinks are
+ * not among `surfaces`). Part of what bounce k reflects leaves through the openings, so Φ_{k+1} <
+ * R_k = Σ ρ·E_k·A and the flux-weighted reflectance overestimates the next bounce. The ratio of
+ * successive reflected fluxes does not: with the escape share e_k of bounce k's reflected light,
+ * R_k / R_{k−1} = ρ̄_k · Φ_k / R_{k−1} = ρ̄_k (1 − e_{k−1}), the series ratio of the integrating
+ * sphere with a port, ρ(1 − f), measured. Record 0 (no bounce before it) keeps the reflectance.
+ */
+export function openRoomRecord(surfaces: readonly SurfaceFlux[], before: readonly SurfaceFlux[] | null, maxRatio: number): FluxRecord {
+  const record = fluxRecord(surfaces, maxRatio);
+  if (!before) return record;
+  const reflected = (list: readonly SurfaceFlux[], c: number) => list.reduce((sum, s) => sum + s.sum[c] * s.texelArea * s.reflectance[c], 0);
+  const ratio = [0, 1, 2].map((c) => {
+    const r0 = reflected(before, c);
+    return r0 > 0 ? Math.min(Math.max(reflected(surfaces, c) / r0, 0), maxRatio) : 0;
+  }) as Rgb;
+  return { ratio, fluxY: record.fluxY };
+}

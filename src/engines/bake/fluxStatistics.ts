@@ -1,6 +1,6 @@
 import type { Rgb } from '../../core/model/lightingScene/lightingScene';
-import { fluxRatioPass, reduceSumPass, REDUCE_GRID } from '../../../shaders/fluxReduce.glsl';
-import { objectFluxRatioPass, objectReduceSumPass } from '../../../shaders/objectFluxReduce.glsl';
+import { fluxRatioPass, reduceSumPass, seriesRatioPass, REDUCE_GRID } from '../../../shaders/fluxReduce.glsl';
+import { objectFluxRatioPass, objectReduceSumPass, objectReflectedFluxPass } from '../../../shaders/objectFluxReduce.glsl';
 import { LUMINANCE_WEIGHTS } from './bakedMaps';
 import { maxFluxRatio, type FluxRecord } from './fluxRecord';
 import { readRgba, type FloatTarget } from './floatTarget';
@@ -43,7 +43,26 @@ export interface FluxObjects {
   maxReflectance: number;
 }
 
-export function createFluxStatistics(gl: WebGL2RenderingContext, pool: TargetPool, layouts: SurfaceLayout[], reflectance: Rgb[], capacity: number, onRead: (bytes: number) => void, objects: FluxObjects | null = null): FluxStatistics {
+/**
+ * `openings`: the room lets light out — a shaped room with an opening, whose surfaces are the
+ * objects' atlas and whose six box surfaces are the enclosure's black sinks. Then the sinks are
+ * left out of Φ (they are no surfaces: one texel's E times a whole face is not the flux through the
+ * openings; it counted the escape 8× in the daylight box), record 0 is the flux-weighted
+ * reflectance of the room's surfaces, and record k ≥ 1 the ratio of successive reflected fluxes
+ * R_k / R_{k−1} (shaders/fluxReduce.glsl.ts seriesRatioPass; R per record kept in a second row),
+ * which contains what leaves through the openings (fluxRecord.ts, openRoomRecord). Without
+ * openings every pass is as it was.
+ */
+export function createFluxStatistics(
+  gl: WebGL2RenderingContext,
+  pool: TargetPool,
+  layouts: SurfaceLayout[],
+  reflectance: Rgb[],
+  capacity: number,
+  onRead: (bytes: number) => void,
+  objects: FluxObjects | null = null,
+  openings = false,
+): FluxStatistics {
   const maxRatio = Math.min(Math.max(maxFluxRatio(reflectance), objects ? objects.maxReflectance : 0), 0.9999);
   // First level per surface: blocks of block² texels, at most REDUCE_GRID² of them.
   const levels = layouts.map((l) => {
@@ -53,7 +72,9 @@ export function createFluxStatistics(gl: WebGL2RenderingContext, pool: TargetPoo
   const stats = pool.acquire(Math.max(1, capacity), 1);
   const reduce = passProgram(gl, reduceSumPass);
   const ratio = passProgram(gl, fluxRatioPass);
-  const areas = new Float32Array(layouts.map(texelArea));
+  if (openings && !objects) throw new Error('flux statistics: a room with openings has its surfaces in the objects’ atlas');
+  const areas = new Float32Array(layouts.map((l) => (openings ? 0 : texelArea(l))));
+  const series = openings ? { row: pool.acquire(Math.max(1, capacity), 1), ratio: passProgram(gl, seriesRatioPass), reflected: passProgram(gl, objectReflectedFluxPass) } : null;
   const rho = new Float32Array(reflectance.flat());
   const sum = (s: number) => levels[s].target.texture;
   // The atlas: two weighted first levels (Σ E·c and Σ ρ·E·c).
@@ -93,7 +114,10 @@ export function createFluxStatistics(gl: WebGL2RenderingContext, pool: TargetPoo
         runPass(gl, objectReduce, objectLevels.reflected, { ...common, uReflected: 1 });
         const atlas = { uSum6: objectLevels.flux.texture, uSum7: objectLevels.reflected.texture, uObjectArea: objects.texelSize * objects.texelSize * scale };
         runPass(gl, objectRatio, stats, { ...walls, ...atlas }, texel);
+        if (series) runPass(gl, series.reflected, series.row, { ...walls, ...atlas }, texel);
       } else runPass(gl, ratio, stats, walls, texel);
+      // A room with openings: record k ≥ 1 is R_k / R_{k−1}, over the flux-weighted reflectance just written.
+      if (series && index > 0) runPass(gl, series.ratio, stats, { uReflected: series.row.texture, uIndex: index, uMaxRatio: maxRatio }, texel);
     },
     read(count) {
       const rgba = readRgba(gl, stats);
@@ -104,7 +128,7 @@ export function createFluxStatistics(gl: WebGL2RenderingContext, pool: TargetPoo
       }));
     },
     dispose() {
-      for (const t of [...levels.map((l) => l.target), stats]) pool.release(t);
+      for (const t of [...levels.map((l) => l.target), stats, ...(series ? [series.row] : [])]) pool.release(t);
       if (objectLevels) for (const t of [objectLevels.flux, objectLevels.reflected]) pool.release(t);
     },
   };

@@ -6,7 +6,7 @@ import { positionBounds } from '../../core/mesh/triangleMesh';
 import { firstNonFiniteVertex, placedPositions } from '../../core/mesh/placeMesh';
 import { OBJECT_ROOM_TOLERANCE } from '../../core/model/lightingScene/parseLightingScene';
 import type { BakeLuminaire, BakeObject, BakeScene } from './bakeScene';
-import { bakeDaylightOf } from './daylight/sceneDaylight';
+import { bakeDaylightOf, darkWindowsOf } from './daylight/sceneDaylight';
 
 /** Loads an object's mesh by the path the scene gives (Node: an OBJ/glTF file relative to the scene file; the app: `object:<id>`). */
 export type LoadMesh = (path: string) => TriangleMesh | Promise<TriangleMesh>;
@@ -114,8 +114,9 @@ function firstUses(scene: LightingScene): Map<string, number> {
 function buildBakeScene(scene: LightingScene, byPath: ReadonlyMap<string, Photometry>, meshes: ReadonlyMap<string, TriangleMesh>): BakeScene {
   const luminaires = scene.luminaires.map((l): BakeLuminaire => ({ photometry: byPath.get(l.photometry)!, position: l.position, yaw: l.yaw, pitch: l.pitch, roll: l.roll, dimming: l.dimming ?? 1, color: l.color ?? [1, 1, 1] }));
   const objects = buildObjects(scene, meshes);
-  const daylight = bakeDaylightOf(scene);
-  return { room: scene.room, luminaires, ...(objects.length > 0 ? { objects } : {}), ...(scene.nearField ? { nearField: scene.nearField } : {}), ...(daylight ? { daylight: daylight.daylight } : {}) };
+  // Windows without a sky still carry their glazing and ground (the panes at night, the daylight factor after sunset).
+  const daylight = bakeDaylightOf(scene)?.daylight ?? darkWindowsOf(scene);
+  return { room: scene.room, luminaires, ...(objects.length > 0 ? { objects } : {}), ...(scene.nearField ? { nearField: scene.nearField } : {}), ...(daylight ? { daylight } : {}) };
 }
 
 function requireLoader(scene: LightingScene, loadMesh: LoadMesh | undefined): LoadMesh {

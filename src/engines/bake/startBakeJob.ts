@@ -58,7 +58,9 @@ export function startBakeJob(
   const directSkipped = timer.timed('direct', () => runDirectPasses(gl, compile, plan, inputs, views, targets, given));
 
   // Flux statistics per bounce (for the tail and the report) stay on the GPU: record 0 is the direct light, record k bounce k.
-  const statistics = createFluxStatistics(gl, pool, inputs.layouts, inputs.reflectance, settings.bounces + 1, readbacks.counted, views.flux);
+  // A room with openings lets light out: its tail ratio is measured bounce over bounce (fluxStatistics.ts).
+  const openings = (scene.room.enclosure?.shape.openings.length ?? 0) > 0;
+  const statistics = createFluxStatistics(gl, pool, inputs.layouts, inputs.reflectance, settings.bounces + 1, readbacks.counted, views.flux, openings);
   // Record 0 (the direct light) feeds the tail of bounce 1; a bake without indirect light (a
   // relighting basis: bounces 0) needs it only for its report, so it is recorded then, lazily.
   const recordDirect = once(() =>

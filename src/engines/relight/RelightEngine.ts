@@ -48,6 +48,14 @@ export interface RelightParts {
   fade: number | null;
 }
 
+/** The relight engine's kept daylight bases (RelightEngine.daylightCache). */
+export interface DaylightCacheStatus {
+  readonly size: number;
+  readonly bytes: number;
+  readonly budget: number;
+  readonly evictions: number;
+}
+
 export interface SetSceneResult {
   /** Groups whose direct basis will be (re)baked (luminaire and daylight groups). */
   bake: number;
@@ -111,6 +119,11 @@ export interface RelightEngine {
   /** Monotonic: bumps whenever `maps()` would return new values. */
   readonly version: number;
   readonly counters: EngineCounters;
+  /**
+   * The daylight bases kept out of the scene (daylightBasisCache.ts): how many, their bytes, the
+   * budget (bytes) and the bases dropped for it so far. A room or objects change empties it.
+   */
+  readonly daylightCache: DaylightCacheStatus;
   readonly settings: BakeSettings;
   /**
    * Free the baker's pooled render targets (kept only to speed up the next bake; jobs under way

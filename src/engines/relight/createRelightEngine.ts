@@ -4,6 +4,7 @@ import { resolveBakeSettings } from '../bake/bakeSettings';
 import { createBaker, type Baker } from '../bake/createBaker';
 import { encloseShapedRoom } from '../bake/shapedRoom/encloseShapedRoom';
 import { composeMaps, relightPartsOf } from './composeRelight';
+import { createDaylightBasisCache, DAYLIGHT_BASIS_CACHE_BYTES } from './daylightBasisCache';
 import { LIGHT_SOURCES } from './daylightGroups';
 import { createDirectBasisQueue, type DirectBasisQueue } from './directBasisQueue';
 import { progressOf, stepEngine } from './engineSolve';
@@ -52,10 +53,17 @@ function disposeEngine(st: RelightEngineState): void {
   st.solver.reset();
   st.bases.drop();
   st.cache.clear();
+  st.daylightCache.clear();
   st.fade = null;
   st.states.clear();
   st.order = [];
   st.baker.dispose();
+}
+
+/** Options of createRelightEngine. */
+export interface RelightEngineOptions {
+  /** Bytes the daylight bases kept out of the scene may hold (daylightBasisCache.ts); default DAYLIGHT_BASIS_CACHE_BYTES, 16 MiB. */
+  daylightCacheBytes?: number;
 }
 
 /**
@@ -64,7 +72,7 @@ function disposeEngine(st: RelightEngineState): void {
  * the shared indirect solve (engineSolve.ts, indirectSolver.ts; solutionCache.ts keeps the
  * finished ones) and the relit maps composed from them on demand (composeRelight.ts).
  */
-export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial<BakeSettings> = VIEWER_BAKE_SETTINGS): RelightEngine {
+export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial<BakeSettings> = VIEWER_BAKE_SETTINGS, options: RelightEngineOptions = {}): RelightEngine {
   const settings = resolveBakeSettings(partial);
   const cache = createSolutionCache();
   const baker = createBaker(gl);
@@ -74,6 +82,7 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
     cache,
     solver: createIndirectSolver(cache, settings),
     bases: basisQueue(baker, settings, () => st),
+    daylightCache: createDaylightBasisCache(options.daylightCacheBytes ?? DAYLIGHT_BASIS_CACHE_BYTES),
     counters: { groupBakes: 0, daylightBakes: 0, relightsOnly: 0, relights: 0, indirectSolves: 0 },
     given: null,
     scene: null,
@@ -128,6 +137,7 @@ export function createRelightEngine(gl: WebGL2RenderingContext, partial: Partial
       return st.version;
     },
     counters: st.counters,
+    daylightCache: st.daylightCache,
     settings,
     releaseTargets: () => st.baker.dispose(),
     dispose: () => disposeEngine(st),

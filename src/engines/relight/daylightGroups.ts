@@ -10,7 +10,7 @@
  */
 import type { BakeScene } from '../bake/bakeScene';
 import type { BakeDaylight } from '../bake/daylight/bakeDaylight';
-import { daylightBakeInput } from '../bake/daylight/daylightBakeInput';
+import { daylightBakeInput, daylightWindowsInput } from '../bake/daylight/daylightBakeInput';
 import { daylightFactorDaylight, groundReflectanceOf } from '../bake/daylight/workPlaneDaylightFactor';
 import type { DaylightBakeInput } from '../bake/daylight/startDaylightBakeJob';
 import type { LuminaireGroup } from './luminaireGroups';
@@ -66,7 +66,8 @@ function overcastGroup(input: DaylightBakeInput, windows: string): LuminaireGrou
  * members are empty and their basis luminaires none.
  */
 export function daylightGroups(given: BakeScene, enclosed: BakeScene, withDaylightFactor = false): LuminaireGroup[] {
-  const input = daylightBakeInput(given, enclosed);
+  // The daylight factor's sky needs no sun: after sunset (a scene with windows and no sky) it has the windows alone.
+  const input = withDaylightFactor ? daylightWindowsInput(given, enclosed) : daylightBakeInput(given, enclosed);
   if (!input) return [];
   const windows = windowsKey(input);
   const { daylight } = input;

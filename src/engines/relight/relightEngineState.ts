@@ -3,6 +3,7 @@ import type { BakeSettings } from '../bake/bakeSettings';
 import type { Baker } from '../bake/createBaker';
 import type { ObjectAtlas } from '../bake/objects/preparedObjects';
 import type { SurfaceLayout } from '../bake/surfaceLayout';
+import type { DaylightBasisCache } from './daylightBasisCache';
 import type { LightSources } from './daylightGroups';
 import type { DirectBasisQueue } from './directBasisQueue';
 import type { GroupState } from './groupState';
@@ -23,6 +24,8 @@ export interface RelightEngineState {
   readonly cache: SolutionCache;
   readonly solver: IndirectSolver;
   readonly bases: DirectBasisQueue;
+  /** Daylight bases of groups that left the scene, kept for their return (daylightBasisCache.ts). */
+  readonly daylightCache: DaylightBasisCache;
   /** The scene as last given (setLightSources sets it again when the daylight factor's basis comes or goes). */
   given: BakeScene | null;
   /** The scene as baked (a shaped room enclosed). */

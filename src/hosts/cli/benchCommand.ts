@@ -1,5 +1,5 @@
 import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
-import { join, resolve } from 'node:path';
+import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { benchTables, spliceSection } from '../bench/benchMarkdown';
 import { BENCH_DOC_INTRO, BENCH_DOC_OUTRO, BENCH_MARKERS } from '../bench/benchDocText';
@@ -82,6 +82,7 @@ export async function run(args: string[]): Promise<number> {
   if (radiance) {
     const tables = peerTables(runRadiancePeerBench(root, (line) => process.stderr.write(line + '\n')));
     const docPath = join(out ?? join(root, 'docs'), 'benchmarks.md');
+    mkdirSync(dirname(docPath), { recursive: true });
     const doc = existsSync(docPath) ? readFileSync(docPath, 'utf8') : '';
     writeFileSync(docPath, spliceSection(doc, `${RADIANCE_DOC_INTRO}\n${tables}\n`, RADIANCE_MARKERS));
     process.stdout.write(tables + `\n\nwrote ${docPath}\n`);
@@ -90,6 +91,7 @@ export async function run(args: string[]): Promise<number> {
   if (daylight) {
     const docPath = join(out ?? join(root, 'docs'), 'benchmarks.md');
     const section = daylightBenchSection((line) => process.stderr.write(line + '\n'));
+    mkdirSync(dirname(docPath), { recursive: true });
     const doc = existsSync(docPath) ? readFileSync(docPath, 'utf8') : '';
     writeFileSync(docPath, spliceSection(doc, section, DAYLIGHT_MARKERS));
     process.stdout.write(section + `\nwrote ${docPath}\n`);

@@ -12,7 +12,8 @@ import { prepareGl } from '../node/prepareGl';
 import { takeRenderCameras } from '../node/renderCameras';
 import { createRenderSession, type RenderResult, type RenderSession } from '../node/renderImage';
 import { loadRenderInputAsync, type RenderInput } from '../node/renderInput';
-import { DATE_FLAG, daylightTimeOptions, TIME_FLAG, withDaylightTime, type DaylightTime } from '../node/daylightTimeOverride';
+import { DATE_FLAG, daylightTimeOptions, TIME_FLAG, type DaylightTime } from '../node/daylightTimeOverride';
+import { renderInputAtTime } from '../node/renderDaylightTime';
 import { RENDER_SUMMARY_FORMAT, type RenderSummary, type RenderSummaryImage } from '../node/renderSummary';
 import { ALLOW_FLAG, cliReadableFolders } from '../node/cliReadableFolders';
 
@@ -60,7 +61,9 @@ const renderHelp = `luxbox ${renderUsage}
   --mode, --glare          light (default) or lux false colour; veiling glare on (default) or off
   --date YYYY-MM-DD        daylight scenes (windows and a sky with a sun, docs/daylight.md): the sun on that day
   --time HH:MM[:SS]        ... and at that clock time of the sun's time zone (shop images at a time of day);
-                           the rest of the scene's sky (place, zone, type) stays; a clear sky needs the sun up
+                           the rest of the scene's sky (place, zone, type) stays; a clear sky needs the sun up;
+                           a configuration's daylight is moved as the Daylight panel moves it (HH:MM; its
+                           city's summer time; after sunset the windows show the night sky)
   --samples, --bounces, --texel, --gl, --allow   as for bake`;
 
 /** Everything `luxbox render` reads from its flags, checked before any scene is read. */
@@ -114,7 +117,7 @@ function parseRenderCli(args: string[]): RenderCli {
 /** A scene as `render` draws it: read, its sun moved by --date/--time. */
 async function loadForRender(cli: RenderCli, path: string): Promise<RenderInput> {
   const input = await loadRenderInputAsync(path, { within: cliReadableFolders(path, cli.allow) });
-  return withDaylightTime(input, cli.when, 'render', basename(path));
+  return renderInputAtTime(input, cli.when, basename(path));
 }
 
 /** What a batch collects while it renders. */

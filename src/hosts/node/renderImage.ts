@@ -1,10 +1,8 @@
 import createGL from 'gl';
 import { PNG } from 'pngjs';
 import * as THREE from 'three';
-import { resolveBakeSettings, type BakeSettings } from '../../engines/bake/bakeSettings';
+import type { BakeSettings } from '../../engines/bake/bakeSettings';
 import { reflectanceRgb, type BakeScene } from '../../engines/bake/bakeScene';
-import { createBaker } from '../../engines/bake/createBaker';
-import { daylightBakeInput } from '../../engines/bake/daylight/daylightBakeInput';
 import type { LitMaps } from '../../engines/relight/relightMaps';
 import { prepareObjects } from '../../engines/bake/objects/prepareObjects';
 import { encloseShapedRoom } from '../../engines/bake/shapedRoom/encloseShapedRoom';
@@ -18,7 +16,6 @@ import { createRoomView, type RoomView, type ViewMode } from '../../engines/view
 import { fullscreenVertex } from '../../../shaders/fullscreen.glsl';
 import { noContextMessage, NoWebGLError } from './createHeadlessGL';
 import type { RenderInput } from './renderInput';
-import { bakedAsLitMaps } from './bakedAsLitMaps';
 
 export interface RenderOptions {
   width: number;
@@ -33,6 +30,8 @@ export interface RenderOptions {
   adaptation?: AdaptationSetting;
   /** Veiling glare round bright sources in light mode (glare/createGlarePass.ts); default on. */
   glare?: boolean;
+  /** Also read the exposed linear value before the tone curve (the glare pass's HDR input, uMode 2) into RenderResult.hdr. */
+  hdr?: boolean;
   settings: Partial<BakeSettings>;
 }
 
@@ -45,6 +44,8 @@ export interface RenderResult {
   ev100: number;
   floor: IlluminanceStats;
   timings_ms: { bake: number; render: number };
+  /** With options.hdr: RGBA floats, top row first, luminance × exposure after the chromatic adaptation and before the tone curve (0 where nothing is drawn). */
+  hdr?: Float32Array;
 }
 
 export interface ProgramsLinked {
@@ -98,24 +99,12 @@ interface ViewBake {
 }
 
 /**
- * Bake a scene for the view. Electric light: the relight engine, as the browser viewer bakes.
- * Daylight through windows (docs/daylight.md): the relight engine keeps no sky or sun basis yet,
- * so the scene is baked whole by the baker (sky, ground and sun through the windows, then the
- * bounces, with the viewer's quality settings) and its maps shown as they are.
+ * Bake a scene for the view with the relight engine, as the browser viewer bakes: the luminaire
+ * groups and, for a room whose windows see a sky or a sun, the daylight's sky and sun bases
+ * (docs/daylight.md, "Daylight in the relight engine"), bounced in the one shared solve.
  */
 function bakeForView(gl: WebGL2RenderingContext, scene: BakeScene, given: Partial<BakeSettings>): ViewBake {
-  const settings = resolveBakeSettings({ ...VIEWER_BAKE_SETTINGS, ...given });
   const t0 = performance.now();
-  if (daylightBakeInput(scene, encloseShapedRoom(scene))) {
-    const baker = createBaker(gl);
-    try {
-      const { maps } = baker.bake(scene, settings);
-      return { lit: bakedAsLitMaps(maps), settings, ms: performance.now() - t0, dispose: () => baker.dispose() };
-    } catch (error) {
-      baker.dispose();
-      throw error;
-    }
-  }
   const engine = createRelightEngine(gl, { ...VIEWER_BAKE_SETTINGS, ...given });
   try {
     engine.setScene(scene);
@@ -140,6 +129,38 @@ function readImage(gl: WebGL2RenderingContext, width: number, height: number): {
   return { pixels, png: PNG.sync.write(png) };
 }
 
+/**
+ * The view's exposed linear value before the tone curve, as the glare pass receives it (uMode 2:
+ * luminance × exposure, adapted), drawn into a float target and read back top row first.
+ */
+function readHdr(renderer: THREE.WebGLRenderer, view: RoomView, width: number, height: number): Float32Array {
+  const target = new THREE.WebGLRenderTarget(width, height, { type: THREE.FloatType });
+  const mode = view.display.uMode.value;
+  const background = view.scene.background;
+  const clearColor = renderer.getClearColor(new THREE.Color());
+  const clearAlpha = renderer.getClearAlpha();
+  try {
+    view.display.uMode.value = 2;
+    view.scene.background = null;
+    renderer.setRenderTarget(target);
+    renderer.setClearColor(0x000000, 0);
+    renderer.clear();
+    renderer.render(view.scene, view.camera);
+    const raw = new Float32Array(width * height * 4);
+    renderer.readRenderTargetPixels(target, 0, 0, width, height, raw);
+    const rows = new Float32Array(raw.length);
+    const row = width * 4;
+    for (let y = 0; y < height; y++) rows.set(raw.subarray((height - 1 - y) * row, (height - y) * row), y * row);
+    return rows;
+  } finally {
+    renderer.setRenderTarget(null);
+    view.display.uMode.value = mode;
+    view.scene.background = background;
+    renderer.setClearColor(clearColor, clearAlpha);
+    target.dispose();
+  }
+}
+
 /** The room view of a baked scene: geometry on the atlas the baker lit, maps, exposure, fixtures and glare set. */
 function composeView(renderer: THREE.WebGLRenderer, input: RenderInput, bake: ViewBake, options: RenderOptions): { view: RoomView; exposure: number; ev100: number; floor: IlluminanceStats } {
   const view = createRoomView(renderer);
@@ -157,6 +178,9 @@ function composeView(renderer: THREE.WebGLRenderer, input: RenderInput, bake: Vi
     white: adoptedWhite(input.bakeScene.luminaires),
   });
   view.setFixtures(input.fixtures);
+  // The windows as the browser shows them with both light sources (viewerSceneApi.ts syncWindows): the scene's daylight, or the night sky without one.
+  const daylight = input.bakeScene.daylight ?? null;
+  view.setWindows(input.bakeScene.room.shape ?? null, daylight, daylight?.glazing ?? new Map());
   view.setGlare(options.glare ?? true);
   // The floor a person sees: texels under furniture standing on it left out (docs/viewer.md).
   return { view, exposure, ev100, floor: floorStats(bake.lit, prepared) };
@@ -196,7 +220,8 @@ export function createRenderSession(width: number, height: number): RenderSessio
           view.setCamera(camera, width / height);
           view.render(three);
           const image = readImage(gl, width, height);
-          return { ...image, exposure, ev100, floor, timings_ms: { bake: bake.ms, render: performance.now() - t2 } };
+          const hdr = options.hdr ? { hdr: readHdr(three, view, width, height) } : {};
+          return { ...image, ...hdr, exposure, ev100, floor, timings_ms: { bake: bake.ms, render: performance.now() - t2 } };
         });
         previousView?.dispose();
         previousView = view;

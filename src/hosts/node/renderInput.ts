@@ -4,6 +4,7 @@ import { fileURLToPath } from 'node:url';
 import type { BakeScene } from '../../engines/bake/bakeScene';
 import { defaultCatalog } from '../../core/catalog/defaultCatalog';
 import { LightingSceneError } from '../../core/model/lightingScene/parseLightingScene';
+import type { Configuration } from '../../core/model/configuration/configuration';
 import { deserializeConfiguration } from '../../core/model/files/sceneFile';
 import { SCENE_FILE_FORMAT } from '../../core/model/files/sceneFileSchema';
 import { toLightingScene } from '../../core/model/files/toLightingScene';
@@ -22,6 +23,10 @@ export interface RenderInput {
   bakeScene: BakeScene;
   fixtures: Fixtures;
   kind: 'configuration' | 'lighting-scene';
+  /** The configuration read (kind 'configuration'): its daylight settings are what --date/--time move (renderDaylightTime.ts). */
+  configuration?: Configuration;
+  /** The file's name, for messages. */
+  source?: string;
 }
 
 /**
@@ -75,7 +80,11 @@ function lightingSceneInput(loaded: LoadedLightingScene): RenderInput {
 }
 
 function configurationInput(text: string, source: string): RenderInput {
-  const config = deserializeConfiguration(text, defaultCatalog, source);
+  return configurationRenderInput(deserializeConfiguration(text, defaultCatalog, source), source);
+}
+
+/** A configuration as `render` draws it: its lighting scene (as the app hands the baker), photometry from public/, its objects' meshes, its hardware. */
+export function configurationRenderInput(config: Configuration, source: string): RenderInput {
   const scene = toLightingScene(config, defaultCatalog);
   // Photometry from public/ (the scene file's loader and messages); the objects' meshes from the configuration itself (`object:<id>`).
   const { bakeScene } = resolveSceneFiles({ ...scene, objects: [] }, PUBLIC_DIR, source);
@@ -96,5 +105,7 @@ function configurationInput(text: string, source: string): RenderInput {
     bakeScene: objects ? { ...bakeScene, objects } : bakeScene,
     fixtures: fixturesFromConfiguration(config, defaultCatalog, new Map(scene.luminaires.map((l, i) => [l.id ?? '', bakeScene.luminaires[i]]))),
     kind: 'configuration',
+    configuration: config,
+    source,
   };
 }

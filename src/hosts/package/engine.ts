@@ -21,7 +21,7 @@ export type { BakeScene, BakeLuminaire, BakeObject } from '../../engines/bake/ba
 export { resolveBakeScene, resolveBakeSceneSync, LuminairePhotometryError, SceneObjectError, type LoadMesh } from '../../engines/bake/resolveBakeScene';
 export { DEFAULT_BAKE_SETTINGS, resolveBakeSettings, type BakeSettings } from '../../engines/bake/bakeSettings';
 export { luxOf, combineMaps, LUMINANCE_WEIGHTS, type BakedMaps, type SurfaceMaps, type ObjectMaps } from '../../engines/bake/bakedMaps';
-export { createRelightEngine, VIEWER_BAKE_SETTINGS } from '../../engines/relight/createRelightEngine';
-export type { RelightEngine, EngineProgress, EngineCounters, EngineFade, RelightParts, SetSceneResult } from '../../engines/relight/RelightEngine';
+export { createRelightEngine, VIEWER_BAKE_SETTINGS, type RelightEngineOptions } from '../../engines/relight/createRelightEngine';
+export type { RelightEngine, EngineProgress, EngineCounters, EngineFade, RelightParts, SetSceneResult, DaylightCacheStatus } from '../../engines/relight/RelightEngine';
 export type { LightSources } from '../../engines/relight/daylightGroups';
 export type { TriangleMesh } from '../../core/mesh/triangleMesh';

@@ -9,6 +9,8 @@ import { describe, expect, it } from 'vitest';
 import { createBaker } from '../../../src/engines/bake/createBaker';
 import { createFloatTarget, requireFloatTargets, uploadRgb } from '../../../src/engines/bake/floatTarget';
 import { createFluxStatistics } from '../../../src/engines/bake/fluxStatistics';
+import { createDataTexture } from '../../../src/engines/bake/createDataTexture';
+import { openRoomRecord, type SurfaceFlux } from '../../../src/engines/bake/fluxRecord';
 import { createTargetPool } from '../../../src/engines/bake/targetPool';
 import { LUMINANCE_WEIGHTS } from '../../../src/engines/bake/bakedMaps';
 import { surfaceLayouts, texelArea } from '../../../src/engines/bake/surfaceLayout';
@@ -75,6 +77,54 @@ describe('GPU flux reduction', () => {
       expect(Math.abs(r0.ratio[c] - ratio)).toBeLessThan(1e-5);
       expect(Math.abs(r2.ratio[c] - ratio)).toBeLessThan(1e-5);
     }
+    stats.dispose();
+  });
+});
+
+describe('GPU flux reduction in a room with openings (issue 30)', () => {
+  it('leaves the six sinks out and writes R_k / R_{k−1} of the atlas for k ≥ 1, the reflectance for k = 0: as openRoomRecord in float64, 1e-5', () => {
+    const layouts = surfaceLayouts({ width: 0.3, height: 0.2, depth: 0.1 }, 0.1, 512);
+    const [width, height, texel] = [37, 23, 0.1];
+    const next = random(11);
+    const coverage = Array.from({ length: width * height }, () => (next() < 0.1 ? 0 : next() < 0.3 ? next() : 1));
+    const rho = Array.from({ length: width * height }, () => [next() * 0.95, next() * 0.95, next() * 0.95]);
+    const points = new Float32Array(4 * width * height);
+    const reflectance = new Float32Array(4 * width * height);
+    coverage.forEach((c, k) => {
+      points[4 * k + 3] = c;
+      reflectance.set([...rho[k], 1], 4 * k);
+    });
+    const objects = { width, height, texelSize: texel, points: createDataTexture(gl, points, width, height, 4), reflectance: createDataTexture(gl, reflectance, width, height, 4), maxReflectance: 0.95 };
+    const stats = createFluxStatistics(
+      gl,
+      createTargetPool(gl, false),
+      layouts,
+      layouts.map((): Rgb => [0, 0, 0]),
+      3,
+      () => undefined,
+      objects,
+      true,
+    );
+    // Three records of different maps; the sinks' maps are bright and must not count.
+    const records = [1, 0.125, 0.125].map((scale, index) => {
+      const atlas = new Float32Array(3 * width * height).map(() => next() * 10 * (1 - 0.3 * index));
+      const sinks = layouts.map((l) => new Float32Array(3 * l.width * l.height).fill(1e4));
+      const maps = [...sinks, atlas].map((data, s) => {
+        const t = s < layouts.length ? createFloatTarget(gl, layouts[s].width, layouts[s].height, false) : createFloatTarget(gl, width, height, false);
+        uploadRgb(gl, t, data);
+        return t;
+      });
+      stats.record(index, maps, scale);
+      return coverage.map((c, k): SurfaceFlux => ({ sum: [atlas[3 * k] * c, atlas[3 * k + 1] * c, atlas[3 * k + 2] * c], texelArea: texel * texel * scale, reflectance: rho[k] as Rgb }));
+    });
+    const gpu = stats.read(3);
+    records.forEach((surfaces, k) => {
+      const cpu = openRoomRecord(surfaces, k > 0 ? records[k - 1] : null, 0.95);
+      expect(Math.abs(gpu[k].fluxY / cpu.fluxY - 1)).toBeLessThan(1e-5);
+      for (let c = 0; c < 3; c++) expect(Math.abs(gpu[k].ratio[c] - cpu.ratio[c])).toBeLessThan(1e-5);
+    });
+    // The series ratio is not the reflectance: the third record's maps are dimmer (0.4 of the first's, 0.7 of the second's at equal scale).
+    expect(Math.abs(gpu[2].ratio[1] - 4 / 7)).toBeLessThan(0.05);
     stats.dispose();
   });
 });

@@ -8,7 +8,7 @@ import { SURFACE_NAMES, type Rgb } from '../../../src/core/model/lightingScene/l
 import { blurPass } from '../../../shaders/blurPass.glsl';
 import { combinePass } from '../../../shaders/combinePass.glsl';
 import { combineTailPass } from '../../../shaders/combineTailPass.glsl';
-import { fluxRatioPass, reduceSumPass } from '../../../shaders/fluxReduce.glsl';
+import { fluxRatioPass, reduceSumPass, seriesRatioPass } from '../../../shaders/fluxReduce.glsl';
 import { brightGatherPass } from '../../../shaders/brightGatherPass.glsl';
 import { residualPass } from '../../../shaders/residualPass.glsl';
 import { chartTileSums, tileSums } from '../../../src/engines/bake/readTileSums';
@@ -22,7 +22,7 @@ import { generateObjectDirectShader } from '../../../src/engines/bake/objects/ob
 import { occludedBrightGatherPass } from '../../../shaders/occludedBrightGatherPass.glsl';
 import { chartBlurPass } from '../../../shaders/chartBlurPass.glsl';
 import { chartDilatePass } from '../../../shaders/chartDilatePass.glsl';
-import { objectFluxRatioPass, objectReduceSumPass } from '../../../shaders/objectFluxReduce.glsl';
+import { objectFluxRatioPass, objectReduceSumPass, objectReflectedFluxPass } from '../../../shaders/objectFluxReduce.glsl';
 import { buildProfileTable } from '../../../src/engines/bake/profileTable';
 import { luminaireRotation } from '../../../src/engines/bake/luminaireRotation';
 import { surfaceLayouts } from '../../../src/engines/bake/surfaceLayout';
@@ -128,7 +128,7 @@ describe('generated shaders compile', () => {
     compiles(occludedBrightGatherPass(objects.bvhWidth));
     // Rooms of any shape: patches on the atlas's charts (one-sided, an atlas texel skipping its own chart).
     compiles(occludedBrightGatherPass(objects.bvhWidth, true));
-    for (const pass of [chartBlurPass, chartDilatePass, objectReduceSumPass, objectFluxRatioPass]) compiles(pass);
+    for (const pass of [chartBlurPass, chartDilatePass, objectReduceSumPass, objectFluxRatioPass, objectReflectedFluxPass]) compiles(pass);
   });
 
   it('fixed passes: combine, tail, flux reduction, blur', () => {
@@ -136,6 +136,8 @@ describe('generated shaders compile', () => {
     compiles(combineTailPass);
     compiles(reduceSumPass);
     compiles(fluxRatioPass);
+    // A room with openings: the tail's ratio of successive reflected fluxes (issue 30).
+    compiles(seriesRatioPass);
     // Bright-patch passes (runBrightPatchPass.ts).
     compiles(tileSums);
     compiles(residualPass);

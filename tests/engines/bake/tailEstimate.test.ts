@@ -6,7 +6,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import { SURFACE_NAMES, type Rgb } from '../../../src/core/model/lightingScene/lightingScene';
-import { fluxRecord, maxFluxRatio, type SurfaceFlux } from '../../../src/engines/bake/fluxRecord';
+import { fluxRecord, maxFluxRatio, openRoomRecord, type SurfaceFlux } from '../../../src/engines/bake/fluxRecord';
 import { tailFactor } from '../../../src/engines/bake/tailFactor';
 import { surfaceLayouts, texelArea } from '../../../src/engines/bake/surfaceLayout';
 
@@ -40,6 +40,29 @@ describe('fluxRecord', () => {
       ]),
     ).toBe(0.5);
     expect(maxFluxRatio([[1, 1, 1]])).toBe(0.9999);
+  });
+});
+
+describe('openRoomRecord (a room with openings, issue 30)', () => {
+  it('an integrating sphere with a port: each bounce loses the share f, so r = R_k/R_{k−1} = ρ(1 − f) and the tail gives Φ_in/(S(1 − ρ(1 − f)))', () => {
+    // S = 10 m² of ρ 0.9 behind a port taking f = 0.05 of what is reflected; the bounces: E_k = E_0·(ρ(1 − f))^k, uniform.
+    const [area, rho, f, e0] = [10, 0.9, 0.05, 100];
+    const bounce = (k: number): SurfaceFlux[] => [{ sum: Array(3).fill(e0 * (rho * (1 - f)) ** k) as Rgb, texelArea: area, reflectance: [rho, rho, rho] }];
+    const first = openRoomRecord(bounce(0), null, 0.9999);
+    [0, 1, 2].forEach((c) => close(first.ratio[c], rho));
+    const record = openRoomRecord(bounce(3), bounce(2), 0.9999);
+    [0, 1, 2].forEach((c) => close(record.ratio[c], rho * (1 - f)));
+    // The flux-weighted reflectance (fluxRecord) would say ρ and overshoot: the tail with it adds ρ/(1−ρ) = 9 E_B instead of 5.9 E_B.
+    close(fluxRecord(bounce(3), 0.9999).ratio[1], rho);
+    // E_0 + E_1 + E_2 + E_3 + E_3·r/(1−r) is the port formula's mean illuminance E_0/(1 − ρ(1 − f)).
+    const sum = [0, 1, 2, 3].reduce((s, k) => s + bounce(k)[0].sum[1], 0) + bounce(3)[0].sum[1] * tailFactor(record.ratio)[1];
+    close(sum, e0 / (1 - rho * (1 - f)), 1e-12);
+  });
+
+  it('clamps to maxRatio and gives 0 where the bounce before reflected nothing', () => {
+    const before: SurfaceFlux[] = [{ sum: [1, 0, 1], texelArea: 1, reflectance: [0.5, 0.5, 0.5] }];
+    const now: SurfaceFlux[] = [{ sum: [4, 1, 0.5], texelArea: 1, reflectance: [0.5, 0.5, 0.5] }];
+    expect(openRoomRecord(now, before, 0.9).ratio).toEqual([0.9, 0, 0.5]);
   });
 });
 

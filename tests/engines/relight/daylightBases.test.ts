@@ -109,10 +109,10 @@ describe('daylight as relight bases', () => {
       expect(engine.counters).toMatchObject({ groupBakes: 2, daylightBakes: 4 });
       // The same scene without daylight: the daylight groups are gone, nothing is baked.
       expect(engine.setScene(sceneWith(undefined, 1.5, 0.5))).toEqual({ bake: 0, reused: 1 });
-      // Daylight back: its bases went with it (as a removed luminaire's do) and are baked again, the lamp's is kept.
-      expect(engine.setScene(sceneWith(afternoon, 1.5, 0.5))).toEqual({ bake: 2, reused: 1, daylightBake: 2 });
+      // Daylight back: its bases were kept when it left (daylightBasisCache.ts) and come back unbaked, as the lamp's stayed.
+      expect(engine.setScene(sceneWith(afternoon, 1.5, 0.5))).toEqual({ bake: 0, reused: 3, daylightBake: 0 });
       engine.finish();
-      expect(engine.counters).toMatchObject({ groupBakes: 2, daylightBakes: 6 });
+      expect(engine.counters).toMatchObject({ groupBakes: 2, daylightBakes: 4 });
       // The afternoon's maps equal a full bake of the lamp and the afternoon's daylight together.
       const { peak, total } = compareWithBake(engine.maps(), baker.bake(sceneWith(afternoon, 1.5, 0.5), SETTINGS).maps);
       console.log(`afternoon, lamp moved and dimmed: |Δ total| ${total.toExponential(2)} of peak ${peak.toFixed(1)} lx`);
@@ -203,10 +203,17 @@ describe('daylight as relight bases', () => {
       console.log(`daylight factor basis vs the overcast bake: |Δ direct| ${direct.toExponential(2)}, |Δ total| ${total.toExponential(2)} of peak ${peak.toFixed(1)} lx (DF ${(peak / 100).toFixed(1)} %)`);
       expect(peak).toBeGreaterThan(100);
       expect(total).toBeLessThanOrEqual(1e-4 * peak);
-      // Back to the scene's light: the overcast basis leaves, nothing is baked, the cached solve shows at once.
+      // Back to the scene's light: the overcast basis leaves (kept), nothing is baked, the cached solve shows at once.
       engine.setLightSources('both');
       expect(engine.progress.done).toBe(true);
       expect(engine.counters).toMatchObject({ groupBakes: before.groupBakes, daylightBakes: before.daylightBakes + 1 });
+      expect(engine.daylightCache.size).toBe(1);
+      // The mode again: its kept basis and its cached solve, nothing baked or solved.
+      const solves = engine.counters.indirectSolves;
+      engine.setLightSources('daylight-factor');
+      expect(engine.progress.done).toBe(true);
+      engine.finish();
+      expect(engine.counters).toMatchObject({ daylightBakes: before.daylightBakes + 1, indirectSolves: solves });
     } finally {
       engine.dispose();
     }

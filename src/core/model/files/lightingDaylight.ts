@@ -5,7 +5,8 @@
  *
  * A city's clock keeps its summer time (clockOffset.ts: 10:00 in Zurich on 21 June is 08:00 UTC).
  * While daylight is off, or the sun is below the horizon at that time, there is no sky: nothing of
- * daylight is baked (the windows still let light out), as at night.
+ * daylight is baked (the windows still let light out), as at night; with daylight on, the ground's
+ * reflectance stays for the daylight factor.
  */
 import { cityNamed } from '../../daylight/cities';
 import { clockOffsetHours } from '../../daylight/clockOffset';
@@ -36,13 +37,18 @@ export function daylightSky(daylight: DaylightSettings): SceneSky | null {
   return { type: daylight.sky, groundReflectance: daylight.groundReflectance, sun };
 }
 
-/** The lighting scene's daylight of a configuration: its sky and the glazing written on its windows; null when it has neither. */
+/**
+ * The lighting scene's daylight of a configuration: its sky and the glazing written on its windows;
+ * with daylight on while the sun is down, no sky and the ground's reflectance (the daylight factor's
+ * overcast sky needs no sun); null when it has none of these.
+ */
 export function lightingDaylight(config: Configuration): LightingDaylight | null {
   const transmittance: Record<number, TransmittanceValue> = {};
   (config.room.shape?.openings ?? []).forEach((o, i) => {
     if (o.kind === 'window' && o.transmittance !== undefined) transmittance[i] = o.transmittance;
   });
   const sky = config.daylight ? daylightSky(config.daylight) : null;
-  if (!sky && Object.keys(transmittance).length === 0) return null;
-  return { ...(sky ? { sky } : {}), windows: [], transmittance };
+  const night = !sky && config.daylight?.on === true ? { groundReflectance: config.daylight.groundReflectance } : {};
+  if (!sky && !('groundReflectance' in night) && Object.keys(transmittance).length === 0) return null;
+  return { ...(sky ? { sky } : {}), windows: [], transmittance, ...night };
 }

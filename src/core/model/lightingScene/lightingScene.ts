@@ -99,4 +99,10 @@ export interface LightingDaylight {
   sky?: SceneSky;
   windows: SceneWindow[];
   transmittance: Record<number, TransmittanceValue>;
+  /**
+   * Without a sky: the ground's reflectance of a configuration's daylight that is on while the sun
+   * is down (files/lightingDaylight.ts), kept for the daylight factor, whose overcast sky needs no
+   * sun (docs/daylight.md, "The shopper's daylight"). Not part of the scene format.
+   */
+  groundReflectance?: number;
 }

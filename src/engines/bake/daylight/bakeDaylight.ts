@@ -23,4 +23,6 @@ export interface BakeDaylight {
   groundLuminance: number;
   /** Glazing by the opening's input index; a window not listed is an open hole (τ = 1). */
   glazing: ReadonlyMap<number, Glazing>;
+  /** The ground's reflectance ρ_g behind groundLuminance (absent: recovered from it, workPlaneDaylightFactor.ts groundReflectanceOf); the daylight factor's ground. */
+  groundReflectance?: number;
 }

@@ -45,10 +45,11 @@ export function workPlaneDaylightFactorStatistics(lux: ArrayLike<number>, outsid
 }
 
 /**
- * The ground's reflectance behind a BakeDaylight (its luminance is ρ_g (E_sky,h + E_sun,h) / π,
- * skies.ts groundLuminance); the default where nothing lights the ground.
+ * The ground's reflectance behind a BakeDaylight: as given, else from its luminance (ρ_g (E_sky,h +
+ * E_sun,h) / π, skies.ts groundLuminance); the default where nothing lights the ground.
  */
 export function groundReflectanceOf(d: BakeDaylight): number {
+  if (d.groundReflectance !== undefined) return d.groundReflectance;
   const outside = (d.sky?.horizontalIlluminance ?? 0) + (d.sun ? d.sun.normalIlluminance * Math.max(0, d.sun.direction[1]) : 0);
   return outside > 0 ? (d.groundLuminance * Math.PI) / outside : DEFAULT_GROUND_REFLECTANCE;
 }
@@ -56,5 +57,5 @@ export function groundReflectanceOf(d: BakeDaylight): number {
 /** The daylight factor's daylight: the same windows and glazing under the CIE overcast sky of DAYLIGHT_FACTOR_SKY_ILLUMINANCE, no sun, the same ground. */
 export function daylightFactorDaylight(d: BakeDaylight): BakeDaylight {
   const rho = groundReflectanceOf(d);
-  return { sky: cieOvercastSky(DAYLIGHT_FACTOR_SKY_ILLUMINANCE), sun: null, groundLuminance: groundLuminance(DAYLIGHT_FACTOR_SKY_ILLUMINANCE, 0, rho), glazing: d.glazing };
+  return { sky: cieOvercastSky(DAYLIGHT_FACTOR_SKY_ILLUMINANCE), sun: null, groundLuminance: groundLuminance(DAYLIGHT_FACTOR_SKY_ILLUMINANCE, 0, rho), glazing: d.glazing, groundReflectance: rho };
 }

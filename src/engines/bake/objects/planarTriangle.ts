@@ -19,6 +19,38 @@ export function overlapWithTexel(tri: Triangle2, x0: number, y0: number): number
     // Wholly inside the texel (the common case for small triangles): no clipping.
     return Math.abs((tri[2] - tri[0]) * (tri[5] - tri[1]) - (tri[4] - tri[0]) * (tri[3] - tri[1])) / 2;
   }
+  const poly = clipToTexel(tri, x0, y0);
+  if (!poly) return 0;
+  let twice = 0;
+  const n = poly.length / 2;
+  for (let i = 0; i < n; i++) {
+    const j = (i + 1) % n;
+    twice += poly[2 * i] * poly[2 * j + 1] - poly[2 * j] * poly[2 * i + 1];
+  }
+  return Math.abs(twice) / 2;
+}
+
+/**
+ * Area and centroid of triangle ∩ [x0, x0 + 1] × [y0, y0 + 1] (area 0 and the texel centre when
+ * they do not meet): the shoelace formula's centroid, C = Σ (p_i + p_j)(p_i × p_j) / (3 · Σ p_i × p_j).
+ */
+export function overlapCentroidWithTexel(tri: Triangle2, x0: number, y0: number): { area: number; x: number; y: number } {
+  const poly = clipToTexel(tri, x0, y0);
+  let [twice, cx, cy] = [0, 0, 0];
+  const n = poly ? poly.length / 2 : 0;
+  for (let i = 0; i < n; i++) {
+    const j = (i + 1) % n;
+    const cross = poly![2 * i] * poly![2 * j + 1] - poly![2 * j] * poly![2 * i + 1];
+    twice += cross;
+    cx += (poly![2 * i] + poly![2 * j]) * cross;
+    cy += (poly![2 * i + 1] + poly![2 * j + 1]) * cross;
+  }
+  if (twice === 0) return { area: 0, x: x0 + 0.5, y: y0 + 0.5 };
+  return { area: Math.abs(twice) / 2, x: cx / (3 * twice), y: cy / (3 * twice) };
+}
+
+/** The triangle clipped to the texel square (Sutherland–Hodgman), or null when less than a triangle is left. */
+function clipToTexel(tri: Triangle2, x0: number, y0: number): number[] | null {
   let poly: number[] = [tri[0], tri[1], tri[2], tri[3], tri[4], tri[5]];
   // Clip against x ≥ x0, x ≤ x0+1, y ≥ y0, y ≤ y0+1 in turn: [axis, sign, limit] means sign·coordinate ≥ limit.
   const planes: [number, number, number][] = [
@@ -45,15 +77,9 @@ export function overlapWithTexel(tri: Triangle2, x0: number, y0: number): number
       }
     }
     poly = out;
-    if (poly.length < 6) return 0;
+    if (poly.length < 6) return null;
   }
-  let twice = 0;
-  const n = poly.length / 2;
-  for (let i = 0; i < n; i++) {
-    const j = (i + 1) % n;
-    twice += poly[2 * i] * poly[2 * j + 1] - poly[2 * j] * poly[2 * i + 1];
-  }
-  return Math.abs(twice) / 2;
+  return poly;
 }
 
 /** Barycentric weights [wa, wb, wc] of the point (px, py) in the triangle's plane (any point, inside or not). */

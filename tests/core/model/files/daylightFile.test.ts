@@ -95,12 +95,13 @@ describe('the lighting scene and the bake of a configuration with daylight', () 
     expect(read.daylight!.transmittance).toEqual({ 1: 'triple' });
   });
 
-  it('17:00 on 21 December (after sunset), or daylight off: no sky, the glazing stays', () => {
+  it('17:00 on 21 December (after sunset), or daylight off: no sky, the glazing stays (and after sunset the ground, for the daylight factor)', () => {
     const dusk = toLightingScene(config, defaultCatalog);
-    expect(dusk.daylight).toEqual({ windows: [], transmittance: { 1: 'triple' } });
+    expect(dusk.daylight).toEqual({ windows: [], transmittance: { 1: 'triple' }, groundReflectance: 0.25 });
     expect(bakeDaylightOf(dusk)).toBeNull();
     const off = toLightingScene(withDaylight(config, { on: false, date: '2026-06-21', time: '10:00' }), defaultCatalog);
     expect(off.daylight!.sky).toBeUndefined();
+    expect(off.daylight!.groundReflectance).toBeUndefined();
   });
 
   it('coordinates keep their fixed offset; an overcast sky has no direct sun', () => {
