@@ -7,10 +7,10 @@
  * wait for them; CPU upload of the bases is once, before the timed frames.
  */
 import type { Rgb } from '../../src/core/model/lightingScene/lightingScene';
-import { surfaceLayouts } from '../../src/engines/bake/surfaceLayout';
+import { surfaceLayouts, type SurfaceLayout } from '../../src/engines/bake/surfaceLayout';
 import { createGpuRelight, type BasisPrecision } from '../../src/engines/relight/createGpuRelight';
 import { VIEWER_BAKE_SETTINGS } from '../../src/engines/relight/createRelightEngine';
-import { emptyLitMaps, relightMaps, type DirectBasis, type IndirectSolution, type WeightedBasis } from '../../src/engines/relight/relightMaps';
+import { emptyLitMaps, relightMaps, type DirectBasis, type IndirectSolution, type LitMaps, type WeightedBasis } from '../../src/engines/relight/relightMaps';
 import { createHeadlessGL } from '../../src/hosts/node/createHeadlessGL';
 import createGL from 'gl';
 import * as THREE from 'three';
@@ -54,26 +54,32 @@ function headlessThree(): { renderer: THREE.WebGLRenderer; destroy(): void } {
   };
 }
 
+const median = (xs: number[]) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
+
+/** The median of `frames` timed calls of `frame(k)`, milliseconds (each call timed alone, performance.now() around it). */
+function medianFrameMs(frames: number, frame: (k: number) => void): number {
+  const times: number[] = [];
+  for (let k = 0; k < frames; k++) {
+    const s = performance.now();
+    frame(k);
+    times.push(performance.now() - s);
+  }
+  return median(times);
+}
+
 /**
- * The view's frame both ways, in one run: today's (relightMaps, the RGBA32F upload, floorStats on the
- * CPU) and the GPU path (createViewRelight's combine, the floor's statistics reduced on the GPU and
- * read after the fence), with what each reads back and uploads per frame.
+ * What the view does today with the CPU relight's result (createRoomSurfaces.ts): one RGBA32F
+ * texture per wall, and per frame each wall's total RGB → RGBA and a texSubImage2D.
  */
-function benchViewFrames(frames: number, parts: (k: number) => RelightParts, out: ReturnType<typeof emptyLitMaps>, texels: number) {
-  const three = headlessThree();
-  const gl = three.renderer.getContext() as WebGL2RenderingContext;
-  try {
-    const shown = Object.values(out.layouts).map((l) => {
-      const texture = gl.createTexture()!;
-      gl.bindTexture(gl.TEXTURE_2D, texture);
-      gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, l.width, l.height, 0, gl.RGBA, gl.FLOAT, null);
-      return { layout: l, texture, rgba: new Float32Array(l.width * l.height * 4) };
-    });
-    const cpu: number[] = [];
-    for (let k = 0; k < frames; k++) {
-      const s = performance.now();
-      const p = parts(k);
-      relightMaps(p.parts, p.terms, null, out);
+function wallUploads(gl: WebGL2RenderingContext, layouts: readonly SurfaceLayout[]) {
+  const shown = layouts.map((l) => {
+    const texture = gl.createTexture()!;
+    gl.bindTexture(gl.TEXTURE_2D, texture);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, l.width, l.height, 0, gl.RGBA, gl.FLOAT, null);
+    return { layout: l, texture, rgba: new Float32Array(l.width * l.height * 4) };
+  });
+  return {
+    upload(out: LitMaps) {
       for (const { layout, texture, rgba } of shown) {
         const total = out.maps[layout.name].total;
         for (let i = 0, j = 0; i < total.length; i += 3, j += 4) {
@@ -85,11 +91,31 @@ function benchViewFrames(frames: number, parts: (k: number) => RelightParts, out
         gl.bindTexture(gl.TEXTURE_2D, texture);
         gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, layout.width, layout.height, gl.RGBA, gl.FLOAT, rgba);
       }
+    },
+    dispose() {
+      for (const { texture } of shown) gl.deleteTexture(texture);
+    },
+  };
+}
+
+/**
+ * The view's frame both ways, in one run: today's (relightMaps, the RGBA32F upload, floorStats on the
+ * CPU) and the GPU path (createViewRelight's combine, the floor's statistics reduced on the GPU and
+ * read after the fence), with what each reads back and uploads per frame.
+ */
+function benchViewFrames(frames: number, parts: (k: number) => RelightParts, out: ReturnType<typeof emptyLitMaps>, texels: number) {
+  const three = headlessThree();
+  const gl = three.renderer.getContext() as WebGL2RenderingContext;
+  try {
+    const walls = wallUploads(gl, Object.values(out.layouts));
+    const cpuViewMs = medianFrameMs(frames, (k) => {
+      const p = parts(k);
+      relightMaps(p.parts, p.terms, null, out);
+      walls.upload(out);
       floorStats(out);
       gl.finish();
-      cpu.push(performance.now() - s);
-    }
-    for (const { texture } of shown) gl.deleteTexture(texture);
+    });
+    walls.dispose();
     const view = createViewRelight(three.renderer, 'half', null);
     // The one transfer into the view's context: every basis and the solution uploaded by the first relight (its programs compiled by then too).
     const first = performance.now();
@@ -98,27 +124,22 @@ function benchViewFrames(frames: number, parts: (k: number) => RelightParts, out
     const firstRelightMs = performance.now() - first;
     const transferBytes = view.counters.uploads.bytes;
     const before = { uploads: view.counters.uploads.bytes, readbacks: view.counters.mapReadbacks.count };
-    const gpu: number[] = [];
-    for (let k = 0; k < frames; k++) {
-      const s = performance.now();
+    const gpuViewMs = medianFrameMs(frames, (k) => {
       const maps = view.relight(parts(k));
       const pending = view.floorStats(maps, null);
       gl.finish();
       if (!pending.poll()) throw new Error('the statistics fence had not signalled after gl.finish()');
-      gpu.push(performance.now() - s);
-    }
+    });
     const perFrame = {
       cpu: { mapReadbacks: 0, readbackBytes: 0, uploadBytes: texels * 16 },
       gpu: { mapReadbacks: (view.counters.mapReadbacks.count - before.readbacks) / frames, readbackBytes: view.counters.statsReadbacks.bytes / frames, uploadBytes: (view.counters.uploads.bytes - before.uploads) / frames },
     };
     view.dispose();
-    return { cpuViewMs: median(cpu), gpuViewMs: median(gpu), perFrame, firstRelightMs, transferBytes };
+    return { cpuViewMs, gpuViewMs, perFrame, firstRelightMs, transferBytes };
   } finally {
     three.destroy();
   }
 }
-
-const median = (xs: number[]) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
 
 export function benchGpuRelight(modules = 12, frames = 41): GpuRelightBench {
   const layouts = surfaceLayouts({ width: 5, height: 2.7, depth: 4 }, VIEWER_BAKE_SETTINGS.texelSize!, VIEWER_BAKE_SETTINGS.maxTextureSize!);
@@ -134,39 +155,16 @@ export function benchGpuRelight(modules = 12, frames = 41): GpuRelightBench {
   const weightsAt = (k: number): WeightedBasis[] => bases.map((basis, i) => ({ basis, weight: [0.5 + 0.4 * Math.sin(k + i), 0.5, 0.5 + 0.4 * Math.cos(k + i)] }));
 
   const out = emptyLitMaps(layouts);
-  const cpu: number[] = [];
-  for (let k = 0; k < frames; k++) {
-    const s = performance.now();
-    relightMaps(weightsAt(k), terms, null, out);
-    cpu.push(performance.now() - s);
-  }
+  const cpuMs = medianFrameMs(frames, (k) => relightMaps(weightsAt(k), terms, null, out));
 
   const gl = createHeadlessGL();
-  const shown = layouts.map((l) => {
-    const texture = gl.createTexture()!;
-    gl.bindTexture(gl.TEXTURE_2D, texture);
-    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, l.width, l.height, 0, gl.RGBA, gl.FLOAT, null);
-    return { layout: l, texture, rgba: new Float32Array(l.width * l.height * 4) };
-  });
-  const cpuUpload: number[] = [];
-  for (let k = 0; k < frames; k++) {
-    const s = performance.now();
+  const walls = wallUploads(gl, layouts);
+  const cpuUploadMs = medianFrameMs(frames, (k) => {
     relightMaps(weightsAt(k), terms, null, out);
-    for (const { layout, texture, rgba } of shown) {
-      const total = out.maps[layout.name].total;
-      for (let i = 0, j = 0; i < total.length; i += 3, j += 4) {
-        rgba[j] = total[i];
-        rgba[j + 1] = total[i + 1];
-        rgba[j + 2] = total[i + 2];
-        rgba[j + 3] = 1;
-      }
-      gl.bindTexture(gl.TEXTURE_2D, texture);
-      gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, layout.width, layout.height, gl.RGBA, gl.FLOAT, rgba);
-    }
+    walls.upload(out);
     gl.finish();
-    cpuUpload.push(performance.now() - s);
-  }
-  for (const { texture } of shown) gl.deleteTexture(texture);
+  });
+  walls.dispose();
   const gpuMs = {} as Record<BasisPrecision, number>;
   const textureMiB = {} as Record<BasisPrecision, number>;
   let readbacks = 0;
@@ -175,14 +173,10 @@ export function benchGpuRelight(modules = 12, frames = 41): GpuRelightBench {
       const gpu = createGpuRelight(gl, precision);
       gpu.relight(weightsAt(-1), terms, byName, null);
       gl.finish();
-      const times: number[] = [];
-      for (let k = 0; k < frames; k++) {
-        const s = performance.now();
+      gpuMs[precision] = medianFrameMs(frames, (k) => {
         gpu.relight(weightsAt(k), terms, byName, null);
         gl.finish();
-        times.push(performance.now() - s);
-      }
-      gpuMs[precision] = median(times);
+      });
       textureMiB[precision] = gpu.textureBytes() / 2 ** 20;
       readbacks += gpu.readbacks.count;
       gpu.dispose();
@@ -192,5 +186,5 @@ export function benchGpuRelight(modules = 12, frames = 41): GpuRelightBench {
   }
   const partsAt = (k: number): RelightParts => ({ parts: weightsAt(k), terms, layouts: byName, atlas: null, version: k, fade: null });
   const view = benchViewFrames(frames, partsAt, out, texels);
-  return { modules, texels, frames, cpuMs: median(cpu), cpuUploadMs: median(cpuUpload), gpuMs, readbacks, textureMiB, ...view };
+  return { modules, texels, frames, cpuMs, cpuUploadMs, gpuMs, readbacks, textureMiB, ...view };
 }

@@ -23,6 +23,7 @@ import { compareDaylightWithReference } from './daylightComparison';
 import type { MachineInfo } from './machineInfo';
 import { relativeErrors } from './shapedRoomComparison';
 import { DAYLIGHT_BOX_FINISHES, daylightBox } from './daylightBox';
+import { percentCell, referenceSceneTable } from './referenceSceneTable';
 
 export interface DaylightBenchScene {
   name: string;
@@ -199,18 +200,13 @@ export function runDaylightBench(baker: Baker, log: (line: string) => void, ladd
 
 /** The daylight rows as markdown (docs/benchmarks.md, "Daylight"). */
 export function daylightTables(parts: readonly DaylightBenchScenePart[]): string {
-  const pct = (e: number): string => `${(100 * e).toFixed(2)} %`;
-  const lines: string[] = [];
-  lines.push('| scene | reference patches | reference time (solve + queries) |');
-  lines.push('|---|---|---|');
-  for (const p of parts) lines.push(`| ${p.scene.name}: ${p.scene.description} | ${p.patches} | ${(p.referenceMs / 1000).toFixed(1)} s |`);
-  lines.push('');
+  const lines = referenceSceneTable(parts);
   lines.push('| scene | texel | samples | bounces | bake time | of which direct daylight (CPU) | points (left out: near an edge, at the sun patch edge) | direct RMS / worst | total RMS | worst point |');
   lines.push('|---|---|---|---|---|---|---|---|---|---|');
   for (const p of parts) {
     for (const r of p.rows) {
       lines.push(
-        `| ${r.scene} | ${r.quality.texelSize} m | ${r.quality.samples} | ${r.quality.bounces} | ${Math.round(r.bakeMs)} ms | ${Math.round(r.directMs)} ms | ${r.points} (${r.nearEdge}, ${r.sunEdge}) | ${pct(r.directRms)} / ${pct(r.directMax)} | ${pct(r.totalRms)} | ${pct(r.totalMax)} |`,
+        `| ${r.scene} | ${r.quality.texelSize} m | ${r.quality.samples} | ${r.quality.bounces} | ${Math.round(r.bakeMs)} ms | ${Math.round(r.directMs)} ms | ${r.points} (${r.nearEdge}, ${r.sunEdge}) | ${percentCell(r.directRms)} / ${percentCell(r.directMax)} | ${percentCell(r.totalRms)} | ${percentCell(r.totalMax)} |`,
       );
     }
   }

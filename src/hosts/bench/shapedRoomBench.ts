@@ -20,6 +20,7 @@ import type { Baker } from '../../engines/bake/createBaker';
 import { solveRoomReference } from '../../reference/solveRoomReference';
 import type { BenchQuality } from './benchScenes';
 import { compareWithReference, relativeErrors } from './shapedRoomComparison';
+import { percentCell, referenceSceneTable } from './referenceSceneTable';
 
 export interface ShapedBenchScene {
   name: string;
@@ -168,19 +169,14 @@ export function runShapedRoomBench(baker: Baker, root: string, log: (line: strin
 
 /** The shaped-room rows as markdown (docs/benchmarks.md, "Rooms of any shape"). */
 export function shapedRoomTables(parts: readonly ShapedBenchScenePart[]): string {
-  const pct = (e: number): string => `${(100 * e).toFixed(2)} %`;
-  const lines: string[] = [];
-  lines.push('| scene | reference patches | reference time (solve + queries) |');
-  lines.push('|---|---|---|');
-  for (const p of parts) lines.push(`| ${p.scene.name}: ${p.scene.description} | ${p.patches} | ${(p.referenceMs / 1000).toFixed(1)} s |`);
-  lines.push('');
+  const lines = referenceSceneTable(parts);
   lines.push('| scene | texel | samples | bounces | bake time | points (near an edge, left out) | direct RMS | total RMS | worst point | without chart patches: total RMS / worst | time / without |');
   lines.push('|---|---|---|---|---|---|---|---|---|---|---|');
   for (const p of parts) {
     for (const r of p.rows) {
       const w = r.withoutPatches;
       lines.push(
-        `| ${r.scene} | ${r.quality.texelSize} m | ${r.quality.samples} | ${r.quality.bounces} | ${Math.round(r.bakeMs)} ms | ${r.points} (${r.nearEdge}) | ${pct(r.directRms)} | ${pct(r.totalRms)} | ${pct(r.totalMax)} | ${pct(w.totalRms)} / ${pct(w.totalMax)} | ${(r.bakeMs / w.bakeMs).toFixed(2)} |`,
+        `| ${r.scene} | ${r.quality.texelSize} m | ${r.quality.samples} | ${r.quality.bounces} | ${Math.round(r.bakeMs)} ms | ${r.points} (${r.nearEdge}) | ${percentCell(r.directRms)} | ${percentCell(r.totalRms)} | ${percentCell(r.totalMax)} | ${percentCell(w.totalRms)} / ${percentCell(w.totalMax)} | ${(r.bakeMs / w.bakeMs).toFixed(2)} |`,
       );
     }
   }

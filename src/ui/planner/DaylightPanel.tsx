@@ -2,6 +2,9 @@ import './registerDaylightEnglish';
 import './daylight.css';
 import { useEffect, useRef, useState } from 'react';
 import { CITIES, cityNamed } from '../../core/daylight/cities';
+import { citiesInOrder } from './daylightCityNames';
+import { DaylightDatePicker } from './DaylightDatePicker';
+import { wallClockInstant } from './daylightDate';
 import { solarPosition } from '../../core/daylight/solarPosition';
 import type { Configuration } from '../../core/model/configuration/configuration';
 import { DEFAULT_DAYLIGHT, isCityPlace, type DaylightSettings, type SkyType } from '../../core/model/configuration/daylightSettings';
@@ -32,7 +35,7 @@ const minutesOf = (time: string) => Number(time.slice(0, 2)) * 60 + Number(time.
 
 /** A city of the list or coordinates (three fields). */
 function PlacePicker({ daylight, gate }: { daylight: DaylightSettings; gate: ActionGate }) {
-  const { t } = useI18n();
+  const { t, language, locale } = useI18n();
   const place = daylight.place;
   const run = (params: Parameters<typeof gate.attempt<'setDaylight'>>[1]) => gate.attempt('setDaylight', params);
   return (
@@ -49,9 +52,9 @@ function PlacePicker({ daylight, gate }: { daylight: DaylightSettings; gate: Act
             if (refused) gate.explain(refused);
           }}
         >
-          {CITIES.map((c) => (
-            <option key={c.name} value={c.name}>
-              {c.name}
+          {citiesInOrder(CITIES, language, locale).map(({ city, label }) => (
+            <option key={city.name} value={city.name}>
+              {label}
             </option>
           ))}
           <option value={COORDINATES}>{t('daylight.coordinates')}</option>
@@ -68,39 +71,17 @@ function PlacePicker({ daylight, gate }: { daylight: DaylightSettings; gate: Act
   );
 }
 
-/** The date, with the two days a shopper compares: the longest and the shortest (their year kept). */
-function DatePicker({ daylight, gate }: { daylight: DaylightSettings; gate: ActionGate }) {
-  const { t } = useI18n();
-  const year = daylight.date.slice(0, 4);
-  const set = (date: string) => {
-    const refused = gate.attempt('setDaylight', { date });
-    if (refused) gate.explain(refused);
-  };
-  return (
-    <div className="daylight-field daylight-date">
-      <label>
-        <span>{t('daylight.date')}</span>
-        <input type="date" value={daylight.date} min="1901-01-01" max="2099-12-31" data-testid="daylight-date" onChange={(e) => e.currentTarget.value && set(e.currentTarget.value)} />
-      </label>
-      <button type="button" className="btn" data-testid="daylight-june" aria-pressed={daylight.date === `${year}-06-21`} onClick={() => set(`${year}-06-21`)}>
-        {t('daylight.june')}
-      </button>
-      <button type="button" className="btn" data-testid="daylight-december" aria-pressed={daylight.date === `${year}-12-21`} onClick={() => set(`${year}-12-21`)}>
-        {t('daylight.december')}
-      </button>
-    </div>
-  );
-}
-
 /**
  * The time of day in 15-minute steps: the label follows the thumb, the action runs once when it is
  * let go (the input's native `change`), so a drag is one undo step and one rebake, not dozens.
  */
 function TimeSlider({ daylight, gate }: { daylight: DaylightSettings; gate: ActionGate }) {
-  const { t } = useI18n();
+  const { t, format } = useI18n();
   const [draft, setDraft] = useState<number | null>(null);
   const ref = useRef<HTMLInputElement>(null);
   const shown = draft ?? minutesOf(daylight.time);
+  // The place's clock time in the UI locale's way ("10:00", "10:00 AM"), not the browser's zone: its fields are the instant's UTC ones.
+  const text = t('daylight.timeValue', { time: format.date(wallClockInstant(daylight.date, clock(shown)), { timeZone: 'UTC', hour: '2-digit', minute: '2-digit' }) });
   useEffect(() => {
     const input = ref.current;
     if (!input) return;
@@ -115,18 +96,10 @@ function TimeSlider({ daylight, gate }: { daylight: DaylightSettings; gate: Acti
   return (
     <label className="daylight-field daylight-time">
       <span>{t('daylight.time')}</span>
-      <input
-        ref={ref}
-        type="range"
-        min={0}
-        max={24 * 60 - STEP_MINUTES}
-        step={STEP_MINUTES}
-        value={shown}
-        data-testid="daylight-time"
-        aria-valuetext={t('daylight.timeValue', { time: clock(shown) })}
-        onInput={(e) => setDraft(Number(e.currentTarget.value))}
-      />
-      <output data-testid="daylight-time-value">{t('daylight.timeValue', { time: clock(shown) })}</output>
+      <input ref={ref} type="range" min={0} max={24 * 60 - STEP_MINUTES} step={STEP_MINUTES} value={shown} data-testid="daylight-time" aria-valuetext={text} onInput={(e) => setDraft(Number(e.currentTarget.value))} />
+      <output data-testid="daylight-time-value" data-time={clock(shown)}>
+        {text}
+      </output>
     </label>
   );
 }
@@ -179,7 +152,7 @@ export default function DaylightPanel({ config, gate, lightSources }: DaylightPa
       </label>
       {windows === 0 && <p className="daylight-hint">{t('daylight.noWindows')}</p>}
       <PlacePicker daylight={daylight} gate={gate} />
-      <DatePicker daylight={daylight} gate={gate} />
+      <DaylightDatePicker daylight={daylight} gate={gate} />
       <TimeSlider daylight={daylight} gate={gate} />
       <label className="daylight-field">
         <span>{t('daylight.sky')}</span>

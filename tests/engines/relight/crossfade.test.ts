@@ -13,23 +13,14 @@ import type { RelightEngine } from '../../../src/engines/relight/RelightEngine';
 import { SOLUTION_CACHE_SIZE } from '../../../src/engines/relight/solutionCache';
 import type { LitMaps } from '../../../src/engines/relight/relightMaps';
 import { withHeadlessGL } from '../bake/withHeadlessGL';
-import { relightTestRoom, relightTestSettings, threeLampScenes } from './threeLampScenes';
+import { relightTestRoom, relightTestSettings, threeLampScenes, fadeScenes } from './threeLampScenes';
 
 const gl = withHeadlessGL();
 const SETTINGS = relightTestSettings(5);
 const room = relightTestRoom;
 /** Three spots with per-lamp dimming and colour (a light scene's look as toLightingScene hands it over). */
 const scene = threeLampScenes({ flux: [1000, 300], beamDegrees: 30, pitchStep: 15, x: [0.8, 1.2], z: [0.9, 0.5] });
-const A = scene([
-  [1, [1, 0.8, 0.6]],
-  [0.3, [1, 1, 1]],
-  [0, [1, 1, 1]],
-]);
-const B = scene([
-  [0.2, [1, 0.8, 0.6]],
-  [1, [0.9, 0.95, 1]],
-  [0.8, [1, 0.7, 0.4]],
-]);
+const { A, B } = fadeScenes(scene);
 const C = scene([
   [0.5, [1, 1, 1]],
   [0, [1, 1, 1]],

@@ -36,3 +36,21 @@ export function threeLampScenes(lamps: ThreeLamps): (looks: [number, Rgb][]) => 
     })),
   });
 }
+
+/**
+ * The two light scenes the relight tests fade between: in A lamp 0 warm at full, lamp 1 white at
+ * 30 %, lamp 2 off; in B lamp 0 warm at 20 %, lamp 1 cool at full, lamp 2 warmer at `lastDimming`.
+ */
+export function fadeScenes(scene: (looks: [number, Rgb][]) => BakeScene, lastDimming = 0.8): { A: BakeScene; B: BakeScene } {
+  const A = scene([
+    [1, [1, 0.8, 0.6]],
+    [0.3, [1, 1, 1]],
+    [0, [1, 1, 1]],
+  ]);
+  const B = scene([
+    [0.2, [1, 0.8, 0.6]],
+    [1, [0.9, 0.95, 1]],
+    [lastDimming, [1, 0.7, 0.4]],
+  ]);
+  return { A, B };
+}

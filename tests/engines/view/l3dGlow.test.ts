@@ -9,22 +9,18 @@
  * on screen it is the room's display transform of that (displayColor), within one 8-bit step.
  */
 import { readFileSync } from 'node:fs';
-import * as THREE from 'three';
 import { describe, expect, it } from 'vitest';
 import type { Rgb, Vec3 } from '../../../src/core/model/lightingScene/lightingScene';
 import { parsePhotometry } from '../../../src/core/photometry/parsePhotometry';
 import { intensity } from '../../../src/core/photometry/intensity';
-import { createRoomHardware } from '../../../src/engines/view/createRoomHardware';
-import type { SharedDisplayUniforms } from '../../../src/engines/view/createRoomSurfaces';
-import type { FixtureModule, Fixtures } from '../../../src/engines/view/fixtures';
 import { hemisphereFlux } from '../../../src/engines/view/luminaires/emitterLuminance';
 import { l3dOpening } from '../../../src/engines/view/luminaires/l3dOpening';
 import { readL3dBody } from '../../../src/engines/view/luminaires/readL3dBody';
-import { createRoomView } from '../../../src/engines/view/roomView';
 import { displayColor } from '../../../src/engines/view/toneMap';
 import { panelL3d } from '../../core/gldf/buildL3dPanel';
 import { spotL3d } from '../../core/gldf/buildL3dSpot';
 import { headlessRenderer } from './headlessRenderer';
+import { centreViewPixel, linearHardwareShot, oneLuminaire } from './glowShots';
 
 const W = 16;
 const H = 16;
@@ -45,23 +41,10 @@ describe.each([
   { what: 'the panel’s LightEmittingSurface (the housing’s 0.62 × 0.32 m bottom, not its 0.6 × 0.3 m object)', bytes: panelL3d({ surfaces: true }), area: 0.62 * 0.32 },
 ])('$what on screen (three.js on headless-gl)', ({ bytes, area }) => {
   const renderer = headlessRenderer(W, H);
-  const gl = renderer.getContext();
   const body = readL3dBody(bytes, 'test.l3d');
   const ph = parsePhotometry(readFileSync('public/ies/bega_50975_downlight_lm1995_crlf.ies'), 'bega.ies');
   const weight: Rgb = [0.5 * 1.2, 0.5 * 1.0, 0.5 * 0.7];
-  const module = (on: boolean): FixtureModule => ({
-    id: 's1',
-    centre: [0, 2, 0],
-    heading: 0,
-    length: 0.15,
-    on,
-    kind: 'spot',
-    orientation: { yaw: 0, pitch: 0, roll: 0 },
-    mount: 0,
-    light: { opening: l3dOpening(body, 0), flux: hemisphereFlux(ph), weight },
-    body,
-  });
-  const fixtures = (on: boolean): Fixtures => ({ rails: [], railWidth: 0, connectors: [], cables: [], modules: [module(on)] });
+  const fixtures = oneLuminaire({ id: 's1', kind: 'spot', light: { opening: l3dOpening(body, 0), flux: hemisphereFlux(ph), weight }, body });
   const L = downwardFlux(ph) / (Math.PI * area);
   // 10 cm under the lens (beyond the view's near plane) with a 20° field: the view's half-width there is 17.6 mm, inside the 25 mm radius.
   const pose = { position: [0, 1.9, 0.0005] as Vec3, target: [0, 2, 0] as Vec3, fov: 20 };
@@ -70,39 +53,20 @@ describe.each([
     // The independent sum and the flux the view is given agree (the file's ≈ 321 lm, all downward).
     expect(Math.abs(downwardFlux(ph) / hemisphereFlux(ph).down - 1)).toBeLessThan(0.005);
     expect(downwardFlux(ph)).toBeGreaterThan(300);
-    const display: SharedDisplayUniforms = { uExposure: { value: 2.5e-5 }, uAdapt: { value: new THREE.Matrix3() }, uMode: { value: 0 }, uLevels: { value: [] }, uLevelCount: { value: 0 } };
-    const hardware = createRoomHardware(display, { linear: true });
-    hardware.setFixtures(fixtures(true));
-    const scene = new THREE.Scene();
-    scene.add(hardware.group);
-    const camera = new THREE.PerspectiveCamera(pose.fov, 1, 0.001, 10);
-    camera.position.set(...pose.position);
-    camera.lookAt(new THREE.Vector3(...pose.target));
-    const target = new THREE.WebGLRenderTarget(W, H, { type: THREE.FloatType });
-    renderer.setRenderTarget(target);
-    renderer.render(scene, camera);
-    const px = new Float32Array(W * H * 4);
-    renderer.readRenderTargetPixels(target, 0, 0, W, H, px);
-    renderer.setRenderTarget(null);
+    const shot = linearHardwareShot(renderer, fixtures(true), pose, 0.001, W, H, 2.5e-5);
+    const px = shot.render();
     // Every pixel sees the lens.
     for (let i = 0; i < W * H; i++) {
       for (let k = 0; k < 3; k++) expect(Math.abs(px[i * 4 + k] / (L * weight[k] * 2.5e-5) - 1)).toBeLessThan(0.005);
     }
-    target.dispose();
-    hardware.dispose();
+    shot.dispose();
   });
 
-  function centrePixel(on: boolean, exposure: number): number[] {
-    const view = createRoomView(renderer);
-    view.setFixtures(fixtures(on));
-    view.setExposure(exposure);
-    view.setCamera(pose, W / H);
-    view.render(renderer);
-    const px = new Uint8Array(4);
-    gl.readPixels(W / 2, H / 2, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
-    view.dispose();
-    return [px[0], px[1], px[2]];
-  }
+  const centrePixel = (on: boolean, exposure: number) =>
+    centreViewPixel(renderer, pose, W, H, (view) => {
+      view.setFixtures(fixtures(on));
+      view.setExposure(exposure);
+    });
 
   it("on screen: the room's display transform of L × weight; switched off it is dark", () => {
     const exposure = 0.3 / (L * weight[1]);

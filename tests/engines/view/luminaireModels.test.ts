@@ -9,6 +9,7 @@ import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import * as THREE from 'three';
 import { headlessRenderer } from './headlessRenderer';
+import { centreViewPixel, linearHardwareShot, oneLuminaire } from './glowShots';
 import { describe, expect, it } from 'vitest';
 import { defaultCatalog } from '../../../src/core/catalog/defaultCatalog';
 import { aimAxis } from '../../../src/core/model/modules/aim';
@@ -16,15 +17,12 @@ import type { Rgb, Vec3 } from '../../../src/core/model/lightingScene/lightingSc
 import { integrateFlux } from '../../../src/core/photometry/flux';
 import { parsePhotometry } from '../../../src/core/photometry/parsePhotometry';
 import type { Photometry } from '../../../src/core/photometry/types';
-import { createRoomHardware, frameMatrix } from '../../../src/engines/view/createRoomHardware';
-import type { SharedDisplayUniforms } from '../../../src/engines/view/createRoomSurfaces';
-import type { FixtureModule, Fixtures } from '../../../src/engines/view/fixtures';
+import { frameMatrix } from '../../../src/engines/view/createRoomHardware';
 import { buildLuminaireModel } from '../../../src/engines/view/luminaires/buildLuminaireModel';
 import { modelHeight } from '../../../src/engines/view/luminaires/luminaireDimensions';
 import { emitterLuminance, hemisphereFlux } from '../../../src/engines/view/luminaires/emitterLuminance';
 import { kindOfModuleType, LUMINAIRE_KINDS } from '../../../src/engines/view/luminaires/luminaireKind';
 import { partArea, triangleCount, type LuminaireModel } from '../../../src/engines/view/luminaires/luminaireModel';
-import { createRoomView } from '../../../src/engines/view/roomView';
 import { displayColor } from '../../../src/engines/view/toneMap';
 
 const photometry = new Map<string, Photometry>();
@@ -170,65 +168,28 @@ describe('the emitter on screen (three.js on headless-gl)', () => {
   const W = 16;
   const H = 16;
   const renderer = headlessRenderer(W, H);
-  const gl = renderer.getContext();
 
   // A downlight (the BEGA 50975 file: 321 lm through a Ø 80 mm opening) at 2 m, seen from 10 cm below: the face fills the view.
   const ph = load('ies/bega_50975_downlight_lm1995_crlf.ies');
   const weight: Rgb = [0.5 * 1.2, 0.5 * 1.0, 0.5 * 0.7];
-  const module = (on: boolean): FixtureModule => ({
-    id: 'd1',
-    centre: [0, 2, 0],
-    heading: 0,
-    length: 0.15,
-    on,
-    kind: 'downlight',
-    orientation: { yaw: 0, pitch: 0, roll: 0 },
-    mount: 0,
-    light: { opening: ph.luminousOpening, flux: hemisphereFlux(ph), weight },
-  });
-  const fixtures = (on: boolean): Fixtures => ({ rails: [], railWidth: 0, connectors: [], cables: [], modules: [module(on)] });
+  const fixtures = oneLuminaire({ id: 'd1', kind: 'downlight', light: { opening: ph.luminousOpening, flux: hemisphereFlux(ph), weight } });
   const L = hemisphereFlux(ph).down / (Math.PI * openingArea(ph.luminousOpening));
   const pose = { position: [0, 1.9, 0.002] as Vec3, target: [0, 2, 0] as Vec3, fov: 30 };
 
   it('before the tone curve: the pixel is L × weight × exposure (float target, identity adaptation)', () => {
     expect(L).toBeCloseTo(321.25 / (Math.PI * Math.PI * 0.04 ** 2), -1);
-    const display: SharedDisplayUniforms = { uExposure: { value: 2.5e-5 }, uAdapt: { value: new THREE.Matrix3() }, uMode: { value: 0 }, uLevels: { value: [] }, uLevelCount: { value: 0 } };
-    const hardware = createRoomHardware(display, { linear: true });
-    hardware.setFixtures(fixtures(true));
-    const scene = new THREE.Scene();
-    scene.add(hardware.group);
-    const camera = new THREE.PerspectiveCamera(pose.fov, 1, 0.01, 10);
-    camera.position.set(...pose.position);
-    camera.lookAt(new THREE.Vector3(...pose.target));
-    const target = new THREE.WebGLRenderTarget(W, H, { type: THREE.FloatType });
-    renderer.setRenderTarget(target);
-    renderer.render(scene, camera);
-    const px = new Float32Array(W * H * 4);
-    renderer.readRenderTargetPixels(target, 0, 0, W, H, px);
-    renderer.setRenderTarget(null);
+    const shot = linearHardwareShot(renderer, fixtures(true), pose, 0.01, W, H, 2.5e-5);
+    const px = shot.render();
     const centre = ((H / 2) * W + W / 2) * 4;
     for (let k = 0; k < 3; k++) expect(px[centre + k] / (L * weight[k] * 2.5e-5)).toBeCloseTo(1, 5);
     // Dimmed to 0 by a relight: black, not NaN.
-    hardware.setModuleWeights(new Map([['d1', [0, 0, 0]]]));
-    renderer.setRenderTarget(target);
-    renderer.render(scene, camera);
-    renderer.readRenderTargetPixels(target, 0, 0, W, H, px);
-    renderer.setRenderTarget(null);
-    expect([px[centre], px[centre + 1], px[centre + 2]]).toEqual([0, 0, 0]);
-    target.dispose();
-    hardware.dispose();
+    shot.hardware.setModuleWeights(new Map([['d1', [0, 0, 0]]]));
+    const dimmed = shot.render();
+    expect([dimmed[centre], dimmed[centre + 1], dimmed[centre + 2]]).toEqual([0, 0, 0]);
+    shot.dispose();
   });
 
-  function centrePixel(setup: (view: ReturnType<typeof createRoomView>) => void): number[] {
-    const view = createRoomView(renderer);
-    setup(view);
-    view.setCamera(pose, W / H);
-    view.render(renderer);
-    const px = new Uint8Array(4);
-    gl.readPixels(W / 2, H / 2, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
-    view.dispose();
-    return [px[0], px[1], px[2]];
-  }
+  const centrePixel = (setup: Parameters<typeof centreViewPixel>[4]) => centreViewPixel(renderer, pose, W, H, setup);
 
   it("on screen: the room's display transform of that (exposure from the shared uniforms); off and in lux mode it does not glow", () => {
     // An exposure that puts the face at linear 0.3 in green: on the curve's shoulder-free part.

@@ -16,7 +16,7 @@ import { createRoomSurfaces } from '../../../src/engines/view/createRoomSurfaces
 import { createViewRelight, LOW_MEMORY_RELIGHT_BYTES } from '../../../src/engines/view/createViewRelight';
 import { floorStats, type IlluminanceStats } from '../../../src/engines/view/lightStats';
 import { withHeadlessGL } from '../bake/withHeadlessGL';
-import { relightTestRoom, relightTestSettings, threeLampScenes } from '../relight/threeLampScenes';
+import { relightTestRoom, relightTestSettings, threeLampScenes, fadeScenes } from '../relight/threeLampScenes';
 import { COMPLETION_STATUS_KHR } from '../../../src/engines/bake/glResources';
 import { headlessRenderer } from './headlessRenderer';
 
@@ -28,16 +28,7 @@ const SETTINGS = relightTestSettings(9);
 const room = relightTestRoom;
 /** Three spots with per-lamp dimming and colour (a light scene's look as toLightingScene hands it over). */
 const scene = threeLampScenes({ flux: [1200, 300], beamDegrees: 35, pitchStep: 10, x: [0.8, 1.2], z: [0.9, 0.5] });
-const A = scene([
-  [1, [1, 0.8, 0.6]],
-  [0.3, [1, 1, 1]],
-  [0, [1, 1, 1]],
-]);
-const B = scene([
-  [0.2, [1, 0.8, 0.6]],
-  [1, [0.9, 0.95, 1]],
-  [0.8, [1, 0.7, 0.4]],
-]);
+const { A, B } = fadeScenes(scene);
 
 /** The floor seen straight down by an orthographic camera framing it exactly, drawn as exposed linear radiance (mode 2, before the tone curve). */
 function drawFloor(surfaces: ReturnType<typeof createRoomSurfaces>, scene3: THREE.Scene): Float32Array {

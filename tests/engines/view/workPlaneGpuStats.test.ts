@@ -14,7 +14,7 @@ import { workPlaneStats, type IlluminanceStats } from '../../../src/engines/view
 import { createWorkPlaneBases } from '../../../src/engines/view/workPlaneBases';
 import { blendWeights } from '../../../src/engines/relight/groupState';
 import { withHeadlessGL } from '../bake/withHeadlessGL';
-import { relightTestSettings, threeLampScenes } from '../relight/threeLampScenes';
+import { relightTestSettings, threeLampScenes, fadeScenes } from '../relight/threeLampScenes';
 import { headlessRenderer } from './headlessRenderer';
 
 const bakeGl = withHeadlessGL();
@@ -22,16 +22,7 @@ const renderer = headlessRenderer(16, 16);
 const SETTINGS = relightTestSettings(5);
 /** Three spots with per-lamp dimming and colour (a light scene's look as toLightingScene hands it over). */
 const scene = threeLampScenes({ flux: [1500, 400], beamDegrees: 40, pitchStep: 12, x: [0.7, 1.3], z: [0.8, 0.6] });
-const A = scene([
-  [1, [1, 0.8, 0.6]],
-  [0.3, [1, 1, 1]],
-  [0, [1, 1, 1]],
-]);
-const B = scene([
-  [0.2, [1, 0.8, 0.6]],
-  [1, [0.9, 0.95, 1]],
-  [0.7, [1, 0.7, 0.4]],
-]);
+const { A, B } = fadeScenes(scene, 0.7);
 const HEIGHT = 0.8;
 
 /** The scene at fade fraction e from `from` to `to`, as the CPU formula's point sources see it: each luminaire at dimming 1 with its blended group weight as colour. */

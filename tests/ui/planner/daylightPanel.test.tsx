@@ -8,6 +8,9 @@ import { createActionGate } from '../../../src/ui/planner/actionGate';
 import DaylightPanel from '../../../src/ui/planner/DaylightPanel';
 import { WindowGlazing } from '../../../src/ui/planner/WindowGlazing';
 import { run } from '../../core/model/helpers';
+import { createI18n } from '../../../src/ui/i18n/createI18n';
+import { I18nProvider } from '../../../src/ui/i18n/I18nProvider';
+import type { Language } from '../../../src/ui/i18n/languages';
 
 const gate = (config: Configuration) =>
   createActionGate(
@@ -35,7 +38,12 @@ describe('DaylightPanel', () => {
     const html = renderToStaticMarkup(<DaylightPanel config={config} gate={gate(config)} />);
     expect(chosen(html, 'daylight-city')).toBe('Rome');
     expect(chosen(html, 'daylight-sky')).toBe('Clear with sun');
-    expect(html).toContain('>10:00</output>');
+    // The clock and the date in the UI locale (English outside a provider, 'en': a 12-hour clock), the model's value beside.
+    expect(html).toContain('data-time="10:00">10:00 AM</output>');
+    expect(html).toContain('>Sunday, June 21, 2026</output>');
+    expect(chosen(html, 'daylight-month')).toBe('June');
+    expect(chosen(html, 'daylight-day')).toBe('21');
+    expect(html).toMatch(/data-testid="daylight-june"[^>]*>June 21<\/button>/);
     const p = solarPosition({ latitude: 41.9, longitude: 12.5, timeZone: 0 }, { year: 2026, month: 6, day: 21, hours: 8 });
     expect(html).toContain(`data-elevation="${p.elevation.toFixed(2)}"`);
     expect(html).toContain(`Sun ${Math.round(p.elevation)}° above the horizon, ${Math.round(p.azimuth)}° from north`);
@@ -59,6 +67,34 @@ describe('DaylightPanel', () => {
     expect(chosen(html, 'daylight-city')).toBe('Coordinates…');
     for (const f of ['latitude', 'longitude', 'timeZone']) expect(html).toContain(`data-testid="daylight-${f}"`);
   });
+});
+
+describe('DaylightPanel in four languages', () => {
+  // Each language's names and dates, written out here (not asked of the code under test): the city, the month, the whole date
+  // (a pattern: CLDR versions differ on the comma after an English weekday), the clock, the June button.
+  const EXPECTED: Record<Language, { locale: string; city: string; month: string; date: string; time: string; june: string }> = {
+    en: { locale: 'en-GB', city: 'Munich', month: 'June', date: 'Sunday,? 21 June 2026', time: '10:00', june: '21 June' },
+    de: { locale: 'de-DE', city: 'München', month: 'Juni', date: 'Sonntag, 21. Juni 2026', time: '10:00 Uhr', june: '21. Juni' },
+    fr: { locale: 'fr-FR', city: 'Munich', month: 'juin', date: 'dimanche 21 juin 2026', time: '10:00 h', june: '21 juin' },
+    it: { locale: 'it-IT', city: 'Monaco di Baviera', month: 'giugno', date: 'domenica 21 giugno 2026', time: 'ore 10:00', june: '21 giugno' },
+  };
+  for (const [language, want] of Object.entries(EXPECTED)) {
+    it(`${language}: ${want.city}, ${want.date}, ${want.time}`, async () => {
+      const i18n = createI18n({ locale: want.locale, currency: 'EUR' });
+      await i18n.ready;
+      const config = run(withWindow(), 'setDaylight', { on: true, city: 'Munich', date: '2026-06-21', time: '10:00' });
+      const html = renderToStaticMarkup(
+        <I18nProvider i18n={i18n}>
+          <DaylightPanel config={config} gate={gate(config)} />
+        </I18nProvider>,
+      );
+      expect(chosen(html, 'daylight-city')).toBe(want.city);
+      expect(chosen(html, 'daylight-month')).toBe(want.month);
+      expect(html).toMatch(new RegExp(`>${want.date}</output>`));
+      expect(html).toContain(`data-time="10:00">${want.time}</output>`);
+      expect(html).toMatch(new RegExp(`data-testid="daylight-june"[^>]*>${want.june}</button>`));
+    });
+  }
 });
 
 describe('WindowGlazing', () => {

@@ -38,8 +38,10 @@ export function setServiceFade(c: ServiceCore, next: ServiceFade | null): void {
 }
 
 /**
- * Which light is shown: 'electric', 'daylight' or 'both' (RelightEngine.setLightSources: weights,
- * no basis rebaked); a relight announced as a slice at once, the re-solve (if new) queued.
+ * Which light is shown: 'electric', 'daylight', 'both' (RelightEngine.setLightSources: weights, no
+ * basis rebaked) or 'daylight-factor' (the overcast basis alone, baked when first asked for;
+ * docs/daylight.md, "The daylight factor's light"); a relight announced as a slice at once, the
+ * re-solve or the overcast basis's bake (if new) queued.
  */
 export function setServiceLightSources(c: ServiceCore, sources: LightSources): void {
   if (c.disposed || sources === c.lightSources) return;
