@@ -10,7 +10,7 @@ import { createRelightEngine, VIEWER_BAKE_SETTINGS } from '../../engines/relight
 import type { CameraPose } from '../../engines/view/cameraPresets';
 import { floorStats, type IlluminanceStats } from '../../engines/view/lightStats';
 import { presentMaps } from '../../engines/view/presentMaps';
-import { adoptedWhite } from '../../engines/view/adoptedWhite';
+import { sceneAdoptedWhite } from '../../engines/view/adoptedWhite';
 import type { AdaptationSetting } from '../../engines/view/adaptationSetting';
 import { createRoomView, type RoomView, type ViewMode } from '../../engines/view/roomView';
 import { fullscreenVertex } from '../../../shaders/fullscreen.glsl';
@@ -175,7 +175,7 @@ function composeView(renderer: THREE.WebGLRenderer, input: RenderInput, bake: Vi
     ev100: options.ev100,
     mode: options.mode,
     adaptation: options.adaptation,
-    white: adoptedWhite(input.bakeScene.luminaires),
+    white: sceneAdoptedWhite(input.bakeScene),
   });
   view.setFixtures(input.fixtures);
   // The windows as the browser shows them with both light sources (viewerSceneApi.ts syncWindows): the scene's daylight, or the night sky without one.

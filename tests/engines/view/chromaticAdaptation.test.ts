@@ -3,7 +3,10 @@ import { loadColourFilterSpectra } from '../../../src/core/colour/colourFilterSp
 import { moduleColour } from '../../../src/core/colour/moduleColour';
 import { cctToLinearRgb } from '../../../src/core/photometry/cct';
 import type { BakeLuminaire } from '../../../src/engines/bake/bakeScene';
-import { adoptedWhite, isWhiteLight } from '../../../src/engines/view/adoptedWhite';
+import { adoptedWhite, isWhiteLight, sceneAdoptedWhite } from '../../../src/engines/view/adoptedWhite';
+import { daylightEnteringFlux } from '../../../src/engines/bake/daylight/daylightEnteringFlux';
+import { daylightWindows } from '../../../src/engines/bake/daylight/daylightWindows';
+import { loadRenderInputAsync } from '../../../src/hosts/node/renderInput';
 import { cat16LinearSrgb, cat16Xyz, degreeOfAdaptation, IDENTITY3, M16, M16_INV } from '../../../src/engines/view/cat16';
 import { adaptationFor, adaptingLuminance } from '../../../src/engines/view/chromaticAdaptation';
 import { formatAdaptation, parseAdaptation } from '../../../src/engines/view/adaptationSetting';
@@ -87,6 +90,29 @@ describe('the scene adopted white', () => {
     cctToLinearRgb(3000).forEach((v, k) => expect(mixed[k]).toBeCloseTo(v, 10));
     // Eye adaptation with no white: nothing to adapt to.
     expect(adaptationFor({ kind: 'eye' }, null, 50)).toEqual({ matrix: IDENTITY3, d: 0, white: null });
+  });
+});
+
+describe('the adopted white of a daylit room', () => {
+  it("weighs daylight by the lumens entering through the windows (white: equal RGB) against the lamps' lumens; Electric, Daylight and Both each adapt to what is shown", async () => {
+    // daylight-room.json: a clear June morning through a south window; one 2000 lm 2700 K lamp added.
+    const input = await loadRenderInputAsync(new URL('../../fixtures/scenes/daylight-room.json', import.meta.url).pathname);
+    const warm = cctToLinearRgb(2700);
+    const scene = { ...input.bakeScene, luminaires: [lamp(2000, warm)] };
+    const d = scene.daylight!;
+    const lumens = daylightEnteringFlux(d, daylightWindows(scene.room.shape!, [0, 0, 0], d.glazing));
+    // A clear sky with the sun brings far more light in than one lamp: tens of thousands of lumens.
+    expect(lumens).toBeGreaterThan(10 * 2000);
+    const both = sceneAdoptedWhite(scene, 'both')!;
+    for (let k = 0; k < 3; k++) expect(both[k]).toBeCloseTo((lumens + 2000 * warm[k]) / (lumens + 2000 * lum(warm)), 10);
+    // So by day the eye adapts close to daylight's white (the lamp then looks warm, as it does by day).
+    expect(both[0] / both[2]).toBeLessThan(1.2);
+    expect(both[0] / both[2]).toBeLessThan(0.5 * (warm[0] / warm[2]));
+    console.log(`daylight-room.json, 10:00 on 21 June: ${lumens.toFixed(0)} lm through the window; adopted white R/B ${(both[0] / both[2]).toFixed(3)} (the 2700 K lamp alone ${(warm[0] / warm[2]).toFixed(3)})`);
+    expect(sceneAdoptedWhite(scene, 'daylight')).toEqual([1, 1, 1]);
+    sceneAdoptedWhite(scene, 'electric')!.forEach((v, k) => expect(v).toBeCloseTo(warm[k] / lum(warm), 10));
+    // A room without daylight: the lamps alone, as before.
+    expect(sceneAdoptedWhite({ ...scene, daylight: undefined }, 'both')).toEqual(adoptedWhite([lamp(2000, warm)]));
   });
 });
 

@@ -1,6 +1,6 @@
 import { reflectanceRgb } from '../../bake/bakeScene';
 import type { RelightEngine } from '../../relight/RelightEngine';
-import { adoptedWhite } from '../adoptedWhite';
+import { sceneAdoptedWhite } from '../adoptedWhite';
 import { applyLiveLevels } from '../applyLiveLevels';
 import { sceneGeometryKey } from '../sceneGeometryKey';
 import { showCompare } from './compareSides';
@@ -31,7 +31,7 @@ function showOnCpu(v: Viewer, engine: RelightEngine): void {
   const t0 = performance.now();
   const lit = engine.maps();
   const key = sceneGeometryKey(v.scene);
-  v.maps.show(lit, reflectanceRgb(v.scene.room), t0, { white: adoptedWhite(v.scene.luminaires), key, done: engine.progress.done });
+  v.maps.show(lit, reflectanceRgb(v.scene.room), t0, { white: sceneAdoptedWhite(v.scene, v.service.lightSources), key, done: engine.progress.done });
   noteCpuShow(v.gpu, lit, key);
   v.frames.request();
 }
