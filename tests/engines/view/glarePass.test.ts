@@ -14,7 +14,7 @@ import { parsePhotometry } from '../../../src/core/photometry/parsePhotometry';
 import type { FixtureModule, Fixtures } from '../../../src/engines/view/fixtures';
 import { createGlarePass } from '../../../src/engines/view/glare/createGlarePass';
 import { annulusShare, cieGlarePsf, glareLevels, glareWeights } from '../../../src/engines/view/glare/veilingGlarePsf';
-import { hemisphereFlux } from '../../../src/engines/view/luminaires/emitterLuminance';
+import { hemisphereFlux } from '../../../src/engines/view/luminaires/hemisphereFlux';
 import { createRoomView } from '../../../src/engines/view/roomView';
 import { displayColor } from '../../../src/engines/view/toneMap';
 import { headlessRenderer } from './headlessRenderer';
@@ -186,7 +186,7 @@ describe('the glare pass (three.js on headless-gl)', () => {
       kind: 'downlight',
       orientation: { yaw: 0, pitch: 0, roll: 0 },
       mount: 0,
-      light: { opening: ph.luminousOpening, flux: hemisphereFlux(ph), weight },
+      light: { photometry: ph, opening: ph.luminousOpening, flux: hemisphereFlux(ph), weight },
     };
     const fixtures: Fixtures = { rails: [], railWidth: 0, connectors: [], cables: [], modules: [module] };
     const pose = { position: [0, 1.0, 0.01] as Vec3, target: [0, 2, 0] as Vec3, fov: 40 };
