@@ -9,12 +9,42 @@ import { toneMapGlsl } from './toneMap.glsl';
  * emitters. Up: from the coarsest level, each level's sum = its own level × its PSF weight + the
  * coarser sum through a 3×3 tent; the composite adds the finest sum to core × the image and applies
  * the display transform. Every filter's weights sum to 1, so light is moved, never made.
+ *
+ * Only the light **above the exposure's white** scatters (glareExcessGlsl): the linear value 1 is
+ * the luminance L_max that the exposure maps to the display's top (photographicExposure.ts), and up
+ * to it the display shows the light, so the viewer's own eye already scatters it from the screen;
+ * a veil drawn from it as well would count that scatter twice and fog the whole picture. Beyond
+ * L_max the display cannot show the light (the tone curve compresses it), and the veil is how the
+ * eye would still see it (docs/viewer.md, "Glare").
  */
 export const glareVertex = /* glsl */ `
 out vec2 vUv;
 void main() {
   vUv = uv;
   gl_Position = vec4(position.xy, 0.0, 1.0);
+}
+`;
+
+/**
+ * The part of a pixel of the HDR image that scatters: a light pixel (alpha > ½) scaled by
+ * max(0, 1 − 1/m), m = max(R, G, B), i.e. the colour above the white m = 1 with its hue kept; a flat
+ * display colour (alpha ¼) and the cleared background (0) scatter nothing.
+ */
+const glareExcessGlsl = /* glsl */ `
+vec3 glareExcess(vec4 p) {
+  float m = max(max(p.r, p.g), p.b);
+  return p.a > 0.5 && m > 1.0 ? p.rgb * (1.0 - 1.0 / m) : vec3(0.0);
+}
+`;
+
+/** The light above white of each pixel of the HDR image, at full size: what the pyramid scatters. */
+export const glareExcessFragment = /* glsl */ `
+precision highp float;
+uniform sampler2D uHdr;
+out vec4 fragColor;
+${glareExcessGlsl}
+void main() {
+  fragColor = vec4(glareExcess(texelFetch(uHdr, ivec2(gl_FragCoord.xy), 0)), 1.0);
 }
 `;
 
@@ -25,9 +55,6 @@ in vec2 vUv;
 uniform sampler2D uSource;
 uniform vec2 uTexel;
 out vec4 fragColor;
-// A flat pixel of the HDR image (alpha ¼: a selected module) enters with its display value as if it were
-// light: at most ~1, it scatters nothing visible next to emitters hundreds of times brighter. The cleared
-// background is 0: no light.
 vec3 tap(vec2 o) {
   return texture(uSource, vUv + o * uTexel).rgb;
 }
@@ -71,7 +98,8 @@ void main() {
 `;
 
 /**
- * The composite: core × the pixel + the scattered light, then the display transform (gamut map,
+ * The composite: the pixel less the share of its excess it scatters, (1 − core) × excess, plus the
+ * scattered light, then the display transform (gamut map,
  * AgX on max(R,G,B), sRGB: toneMap.glsl.ts, as the room's shaders do without glare). Alpha tells
  * what a pixel of the HDR image holds: 1 light, ¼ a flat display colour (a selected module in the
  * accent blue) that keeps its colour, 0 nothing drawn (cleared), which shows uBackground (display
@@ -91,17 +119,19 @@ uniform vec3 uBackground;
 out vec4 fragColor;
 ${toneMapGlsl}
 ${tentGlsl}
+${glareExcessGlsl}
 vec3 display(vec3 c) {
   return luxLinearToSrgb(luxAgxMaxRgb(luxGamutMap(c)));
 }
 void main() {
   vec4 pixel = texelFetch(uHdr, ivec2(gl_FragCoord.xy), 0);
   vec3 scattered = uHasScattered == 1 ? tent(uScattered, vUv, uScatteredTexel) : vec3(0.0);
+  vec3 kept = pixel.rgb - (1.0 - uCore) * glareExcess(pixel);
   if (uLinear == 1) {
-    fragColor = vec4(uCore * pixel.rgb + scattered, 1.0);
+    fragColor = vec4(kept + scattered, 1.0);
     return;
   }
-  if (pixel.a > 0.5) fragColor = vec4(display(uCore * pixel.rgb + scattered), 1.0);
+  if (pixel.a > 0.5) fragColor = vec4(display(kept + scattered), 1.0);
   else fragColor = vec4(min((pixel.a > 0.125 ? pixel.rgb : uBackground) + display(scattered), vec3(1.0)), 1.0);
 }
 `;

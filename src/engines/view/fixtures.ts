@@ -7,13 +7,18 @@ import { moduleHeight, suspensionPoints } from '../../core/model/rails/suspensio
 import type { Photometry } from '../../core/photometry/types';
 import type { BakeLuminaire } from '../bake/bakeScene';
 import { modelHeight } from './luminaires/luminaireDimensions';
-import { hemisphereFlux } from './luminaires/emitterLuminance';
+import { hemisphereFlux } from './luminaires/hemisphereFlux';
 import { kindOfLuminaire, kindOfModuleType, type LuminaireKind } from './luminaires/luminaireKind';
 import type { L3dBody } from './luminaires/l3dBody';
 import { modelBodyKey } from './luminaires/modelBodyKey';
 
-/** A module's light as the view's glow needs it: its opening, its flux per hemisphere (lm, full power), its weight now (dimming × colour). */
+/**
+ * A module's light as the view's glow needs it: its photometry (the baker's: the face's luminance
+ * toward the eye comes from it, luminaires/viewLuminance.ts), its opening, its flux per hemisphere
+ * (lm, full power; what tells a lighting scene's luminaire's kind), its weight now (dimming × colour).
+ */
 export interface ModuleLight {
+  photometry: Photometry;
   opening: Photometry['luminousOpening'];
   flux: { down: number; up: number };
   weight: Rgb;
@@ -63,7 +68,7 @@ export function moduleLight(l: BakeLuminaire | undefined): ModuleLight | null {
   if (!l) return null;
   const d = Math.max(0, l.dimming ?? 1);
   const c = l.color ?? [1, 1, 1];
-  return { opening: l.photometry.luminousOpening, flux: hemisphereFlux(l.photometry), weight: [d * c[0], d * c[1], d * c[2]] };
+  return { photometry: l.photometry, opening: l.photometry.luminousOpening, flux: hemisphereFlux(l.photometry), weight: [d * c[0], d * c[1], d * c[2]] };
 }
 
 /**

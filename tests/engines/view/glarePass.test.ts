@@ -14,7 +14,7 @@ import { parsePhotometry } from '../../../src/core/photometry/parsePhotometry';
 import type { FixtureModule, Fixtures } from '../../../src/engines/view/fixtures';
 import { createGlarePass } from '../../../src/engines/view/glare/createGlarePass';
 import { annulusShare, cieGlarePsf, glareLevels, glareWeights } from '../../../src/engines/view/glare/veilingGlarePsf';
-import { hemisphereFlux } from '../../../src/engines/view/luminaires/emitterLuminance';
+import { hemisphereFlux } from '../../../src/engines/view/luminaires/hemisphereFlux';
 import { createRoomView } from '../../../src/engines/view/roomView';
 import { displayColor } from '../../../src/engines/view/toneMap';
 import { headlessRenderer } from './headlessRenderer';
@@ -160,6 +160,26 @@ describe('the glare pass (three.js on headless-gl)', () => {
     expect(at(out, source.x, source.y)).toBeGreaterThan(value * core);
   });
 
+  it('only the light above white (linear 1) scatters: a picture within the display range is unchanged, a source veils by its excess', () => {
+    // Every pixel ≤ 1 (a lit room inside the exposure's range, with a 3 × 3 patch at 0.95): unchanged to half-float precision.
+    const inRange = imageWith(0.95);
+    const same = glare(inRange, true) as Float32Array;
+    for (const [x, y] of [
+      [source.x, source.y],
+      [source.x + 4, source.y],
+      [100, 100],
+    ])
+      expect(Math.abs(at(same, x, y) / at(inRange, x, y) - 1)).toBeLessThan(0.002);
+    // A source of 20 (grey, m = 20) scatters its 19 above white and the background at 0.05 nothing: the
+    // lift beside it equals the veil of the same source on black (within 1 %: the HDR target is half
+    // float, so 16 px away the lift is below its precision over the background).
+    const lit = glare(imageWith(20), true) as Float32Array;
+    const onBlack = new Float32Array(W * H * 4);
+    for (let dy = -1; dy <= 1; dy++) for (let dx = -1; dx <= 1; dx++) onBlack.set([20, 20, 20, 1], ((source.y + dy) * W + source.x + dx) * 4);
+    const alone = glare(onBlack, true) as Float32Array;
+    for (const d of [2, 4, 8]) expect(Math.abs((at(lit, source.x + d, source.y) - background) / at(alone, source.x + d, source.y) - 1)).toBeLessThan(0.01);
+  });
+
   it('a uniform image stays uniform and gets the display transform of its value (1/255)', () => {
     const flat = new Float32Array(W * H * 4);
     for (let i = 0; i < W * H; i++) flat.set([0.18, 0.12, 0.3, 1], i * 4);
@@ -186,7 +206,7 @@ describe('the glare pass (three.js on headless-gl)', () => {
       kind: 'downlight',
       orientation: { yaw: 0, pitch: 0, roll: 0 },
       mount: 0,
-      light: { opening: ph.luminousOpening, flux: hemisphereFlux(ph), weight },
+      light: { photometry: ph, opening: ph.luminousOpening, flux: hemisphereFlux(ph), weight },
     };
     const fixtures: Fixtures = { rails: [], railWidth: 0, connectors: [], cables: [], modules: [module] };
     const pose = { position: [0, 1.0, 0.01] as Vec3, target: [0, 2, 0] as Vec3, fov: 40 };

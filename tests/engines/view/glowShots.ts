@@ -27,10 +27,10 @@ export interface GlowPose {
 
 /**
  * The room hardware (createRoomHardware, linear output, identity adaptation, exposure `exposure`)
- * with `fixtures`, seen from `pose` (near plane `near`) on a `width` × `height` float target:
+ * with `fixtures`, seen from `pose` (near plane `near`, camera up `up`) on a `width` × `height` float target:
  * `render()` draws it again and returns the RGBA pixels.
  */
-export function linearHardwareShot(renderer: THREE.WebGLRenderer, fixtures: Fixtures, pose: GlowPose, near: number, width: number, height: number, exposure: number) {
+export function linearHardwareShot(renderer: THREE.WebGLRenderer, fixtures: Fixtures, pose: GlowPose, near: number, width: number, height: number, exposure: number, up: Vec3 = [0, 1, 0]) {
   const display: SharedDisplayUniforms = { uExposure: { value: exposure }, uAdapt: { value: new THREE.Matrix3() }, uMode: { value: 0 }, uLevels: { value: [] }, uLevelCount: { value: 0 } };
   const hardware = createRoomHardware(display, { linear: true });
   hardware.setFixtures(fixtures);
@@ -38,6 +38,7 @@ export function linearHardwareShot(renderer: THREE.WebGLRenderer, fixtures: Fixt
   scene.add(hardware.group);
   const camera = new THREE.PerspectiveCamera(pose.fov, 1, near, 10);
   camera.position.set(...pose.position);
+  camera.up.set(...up);
   camera.lookAt(new THREE.Vector3(...pose.target));
   const target = new THREE.WebGLRenderTarget(width, height, { type: THREE.FloatType });
   const px = new Float32Array(width * height * 4);

@@ -15,7 +15,6 @@ import { positionBounds } from '../../../src/core/mesh/triangleMesh';
 import { aimAxis, aimedOrientation } from '../../../src/core/model/modules/aim';
 import type { ModuleAim } from '../../../src/core/model/configuration/configuration';
 import { readL3dMeshes } from '../../../src/engines/meshImport/readL3dMeshes';
-import { emitterLuminance } from '../../../src/engines/view/luminaires/emitterLuminance';
 import { l3dBody, poseL3dBody, type L3dBody } from '../../../src/engines/view/luminaires/l3dBody';
 import { l3dLuminaireModel } from '../../../src/engines/view/luminaires/l3dLuminaireModel';
 import { PROUD } from '../../../src/engines/view/luminaires/luminaireDimensions';
@@ -102,8 +101,6 @@ describe('an L3D track spot as the module’s body', () => {
     expect(body.emitterArea).toEqual({ down: area, up: 0 });
     expect(partArea(model, 'emitter') / area).toBeCloseTo(1, 6);
     expect(model.emitterArea).toBe(area);
-    // 758 lm (the medium spot's) all downward from a Ø 50 mm lens: 758 / (π · 0.0019635) cd/m².
-    expect(emitterLuminance({ down: 758, up: 0 }, model.emitterArea).down).toBeCloseTo(758 / (Math.PI * area), 6);
   });
 
   const aims: { heading: number; aim: ModuleAim; swivel: number }[] = [

@@ -3,17 +3,18 @@
  * view"): the hand-made track spot (buildL3dSpot.ts: a Ø 50 mm lens) drawn by the room's hardware on
  * headless-gl, seen from 10 cm below the lens so its face fills the view, and the same for the panel
  * (buildL3dPanel.ts) whose LightEmittingSurface (the housing's bottom faces) glows. Before the tone
- * curve the pixel is L × weight × exposure with L = Φ↓/(π·A), A the area worked out by hand
- * (π·(0.05 m)²/4 for the lens, 0.62 × 0.32 m for the faces) and Φ↓ the
- * downward flux integrated from the photometry (an independent sum, not the code's emitterLuminance);
- * on screen it is the room's display transform of that (displayColor), within one 8-bit step.
+ * curve the pixel is L × weight × exposure with L = I(γ)/(A·cos γ) toward the eye (the same rule as
+ * the built models, luminaires/viewLuminance.ts), A the area worked out by hand (π·(0.05 m)²/4 for
+ * the lens, 0.62 × 0.32 m for the faces) and I the file's intensity toward the eye, 0.3° off the
+ * axis; on screen it is the room's display transform of that (displayColor), within one 8-bit step.
+ * The downward flux integrated independently checks the view is given the file's light.
  */
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import type { Rgb, Vec3 } from '../../../src/core/model/lightingScene/lightingScene';
 import { parsePhotometry } from '../../../src/core/photometry/parsePhotometry';
 import { intensity } from '../../../src/core/photometry/intensity';
-import { hemisphereFlux } from '../../../src/engines/view/luminaires/emitterLuminance';
+import { hemisphereFlux } from '../../../src/engines/view/luminaires/hemisphereFlux';
 import { l3dOpening } from '../../../src/engines/view/luminaires/l3dOpening';
 import { readL3dBody } from '../../../src/engines/view/luminaires/readL3dBody';
 import { displayColor } from '../../../src/engines/view/toneMap';
@@ -44,12 +45,13 @@ describe.each([
   const body = readL3dBody(bytes, 'test.l3d');
   const ph = parsePhotometry(readFileSync('public/ies/bega_50975_downlight_lm1995_crlf.ies'), 'bega.ies');
   const weight: Rgb = [0.5 * 1.2, 0.5 * 1.0, 0.5 * 0.7];
-  const fixtures = oneLuminaire({ id: 's1', kind: 'spot', light: { opening: l3dOpening(body, 0), flux: hemisphereFlux(ph), weight }, body });
-  const L = downwardFlux(ph) / (Math.PI * area);
+  const fixtures = oneLuminaire({ id: 's1', kind: 'spot', light: { photometry: ph, opening: l3dOpening(body, 0), flux: hemisphereFlux(ph), weight }, body });
   // 10 cm under the lens (beyond the view's near plane) with a 20° field: the view's half-width there is 17.6 mm, inside the 25 mm radius.
   const pose = { position: [0, 1.9, 0.0005] as Vec3, target: [0, 2, 0] as Vec3, fov: 20 };
+  const gammaEye = Math.atan2(0.0005, 0.1);
+  const L = intensity(ph, (gammaEye * 180) / Math.PI, 90) / (area * Math.cos(gammaEye));
 
-  it('before the tone curve: the pixel is Φ↓/(π·A) × weight × exposure within 0.5 %', () => {
+  it('before the tone curve: the pixel is I(γ)/(A·cos γ) × weight × exposure within 0.5 %', () => {
     // The independent sum and the flux the view is given agree (the file's ≈ 321 lm, all downward).
     expect(Math.abs(downwardFlux(ph) / hemisphereFlux(ph).down - 1)).toBeLessThan(0.005);
     expect(downwardFlux(ph)).toBeGreaterThan(300);

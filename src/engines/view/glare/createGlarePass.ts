@@ -1,13 +1,14 @@
 import * as THREE from 'three';
-import { glareCompositeFragment, glareDownFragment, glareUpFragment, glareVertex } from '../../../../shaders/glarePass.glsl';
+import { glareCompositeFragment, glareDownFragment, glareExcessFragment, glareUpFragment, glareVertex } from '../../../../shaders/glarePass.glsl';
 import { glareLevels, glareWeights } from './veilingGlarePsf';
 
 /**
  * The veiling-glare post pass (docs/viewer.md, "Glare"): the caller draws the room into the pass's
  * linear HDR target (half float: exposed, adapted light before the display curve), then `finish`
  * convolves it with the eye's PSF (veilingGlarePsf.ts) through a pyramid of 2×-smaller levels and
- * writes the display image to `output` (null: the canvas). Cost per frame: one full-size
- * composite plus the levels' passes, each a quarter of the previous (about ⅓ of a full-size
+ * writes the display image to `output` (null: the canvas). Only the light above the exposure's
+ * white scatters (glarePass.glsl.ts). Cost per frame: two full-size passes (the light above white,
+ * the composite) plus the levels' passes, each a quarter of the previous (about ⅓ of a full-size
  * pass in all, twice): cheap enough for phones, where a direct convolution with a 100-pixel PSF is not.
  */
 export interface GlarePass {
@@ -47,12 +48,15 @@ const HDR_OPTIONS = {
 /** What the pass's parts share: the targets of the pyramid, the full-screen quad and the three materials. */
 interface GlareCore {
   readonly target: THREE.WebGLRenderTarget;
+  /** The light above white of each pixel (full size, single-sampled): the pyramid's input. */
+  readonly excess: THREE.WebGLRenderTarget;
   down: THREE.WebGLRenderTarget[];
   up: THREE.WebGLRenderTarget[];
   size: { width: number; height: number };
   readonly camera: THREE.OrthographicCamera;
   readonly quad: THREE.Mesh;
   readonly scene: THREE.Scene;
+  readonly excessMaterial: THREE.ShaderMaterial;
   readonly downMaterial: THREE.ShaderMaterial;
   readonly upMaterial: THREE.ShaderMaterial;
   readonly compositeMaterial: THREE.ShaderMaterial;
@@ -75,6 +79,7 @@ function resize(core: GlareCore, width: number, height: number) {
   if (width === core.size.width && height === core.size.height) return;
   core.size = { width, height };
   core.target.setSize(width, height);
+  core.excess.setSize(width, height);
   disposeLevels(core);
   const n = glareLevels(width, height);
   for (let k = 1; k <= n; k++) {
@@ -85,10 +90,13 @@ function resize(core: GlareCore, width: number, height: number) {
   }
 }
 
-/** The scattered light: down the pyramid from the HDR image, then up from the coarsest level, each adding its share of the PSF. */
+/** The scattered light: the HDR image's light above white, down the pyramid from it, then up from the coarsest level, each adding its share of the PSF. */
 function scatter(core: GlareCore, renderer: THREE.WebGLRenderer, levelWeights: readonly number[]) {
   const { down, up, downMaterial, upMaterial } = core;
-  let source: THREE.WebGLRenderTarget = core.target;
+  // Per pixel before any filtering, so the light subtracted in the composite is exactly the light scattered.
+  core.excessMaterial.uniforms.uHdr.value = core.target.texture;
+  draw(core, renderer, core.excessMaterial, core.excess);
+  let source: THREE.WebGLRenderTarget = core.excess;
   down.forEach((level) => {
     downMaterial.uniforms.uSource.value = source.texture;
     downMaterial.uniforms.uTexel.value.set(1 / source.width, 1 / source.height);
@@ -127,12 +135,14 @@ export function createGlarePass(options: { samples?: number; background?: [numbe
   scene.add(quad);
   const core: GlareCore = {
     target: new THREE.WebGLRenderTarget(1, 1, { ...HDR_OPTIONS, depthBuffer: true, samples: options.samples ?? 0 }),
+    excess: new THREE.WebGLRenderTarget(1, 1, HDR_OPTIONS),
     down: [],
     up: [],
     size: { width: 0, height: 0 },
     camera: new THREE.OrthographicCamera(-1, 1, 1, -1, 0, 1),
     quad,
     scene,
+    excessMaterial: material(glareExcessFragment, { uHdr: { value: null } }),
     downMaterial: material(glareDownFragment, { uSource: { value: null }, uTexel: { value: new THREE.Vector2() } }),
     upMaterial: material(glareUpFragment, { uLevel: { value: null }, uCoarser: { value: null }, uCoarserTexel: { value: new THREE.Vector2() }, uWeight: { value: 0 }, uHasCoarser: { value: 0 } }),
     compositeMaterial: material(glareCompositeFragment, {
@@ -159,7 +169,9 @@ export function createGlarePass(options: { samples?: number; background?: [numbe
     dispose() {
       disposeLevels(core);
       core.target.dispose();
+      core.excess.dispose();
       quad.geometry.dispose();
+      core.excessMaterial.dispose();
       core.downMaterial.dispose();
       core.upMaterial.dispose();
       core.compositeMaterial.dispose();

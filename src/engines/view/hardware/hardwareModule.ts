@@ -1,11 +1,11 @@
 import * as THREE from 'three';
 import type { Fixtures, FixtureModule } from '../fixtures';
 import { buildLuminaireModel } from '../luminaires/buildLuminaireModel';
-import { emitterLuminance } from '../luminaires/emitterLuminance';
 import { l3dLuminaireModel } from '../luminaires/l3dLuminaireModel';
 import type { LuminaireModel, LuminairePart, PartFrame } from '../luminaires/luminaireModel';
 import { trackPieces } from '../luminaires/trackParts';
-import { HOUSING, hardwareMaterial, setEmitterWeight, type HardwareState, type ModuleEntry } from './hardwareState';
+import { emitterPhotometry } from '../luminaires/viewLuminance';
+import { HOUSING, glowToward, hardwareMaterial, setEmitterWeight, type Emitter, type HardwareState, type ModuleEntry } from './hardwareState';
 
 const DEG = Math.PI / 180;
 
@@ -55,11 +55,35 @@ export function addTrack(s: HardwareState, fixtures: Fixtures): void {
   }
 }
 
-/** A module's luminaire model (its L3D body, else the built one) and its emitters' luminance at full flux per side. */
-function moduleModel(m: FixtureModule): { model: LuminaireModel; lum: { down: number; up: number } } {
-  const model = m.body ? l3dLuminaireModel(m.body, m).model : buildLuminaireModel({ kind: m.kind, opening: m.light?.opening ?? null, length: m.length, mount: m.mount, ...(m.stand ? { stand: m.stand } : {}) });
-  const lum = m.light ? { down: emitterLuminance(m.light.flux, model.emitterArea).down, up: emitterLuminance(m.light.flux, model.emitterAreaUp ?? model.emitterArea).up } : { down: 0, up: 0 };
-  return { model, lum };
+/** A module's luminaire model: its L3D body, else the built one. */
+function moduleModel(m: FixtureModule): LuminaireModel {
+  return m.body ? l3dLuminaireModel(m.body, m).model : buildLuminaireModel({ kind: m.kind, opening: m.light?.opening ?? null, length: m.length, mount: m.mount, ...(m.stand ? { stand: m.stand } : {}) });
+}
+
+/**
+ * The centre of a part's bounding box (its frame's coordinates): where the eye's direction is taken
+ * from. Not the mean of its vertices: a fan-triangulated disc repeats its first rim vertex, which
+ * would pull the mean 1/(n+2) of the radius toward it.
+ */
+function partCentre(p: LuminairePart): THREE.Vector3 {
+  return p.positions.length > 0 ? new THREE.Box3().setFromArray(p.positions).getCenter(new THREE.Vector3()) : new THREE.Vector3();
+}
+
+/**
+ * An emitter face of a module: its own material (its glow is the module's), the photometry it
+ * shows toward the eye (luminaires/viewLuminance.ts) and the area of its side's luminous surface;
+ * its luminance is set before each draw from the camera drawing it.
+ */
+function emitterOf(s: HardwareState, m: FixtureModule, model: LuminaireModel, part: LuminairePart, mesh: THREE.Mesh): Emitter {
+  // An emitter in lux mode (and off) shows the housing's colour.
+  const material = hardwareMaterial(s, { flat: HOUSING.flat, reflectance: HOUSING.reflectance, emitter: true });
+  s.emitterMaterials.push(material);
+  const side = part.side ?? -1;
+  const area = side === 1 ? (model.emitterAreaUp ?? model.emitterArea) : model.emitterArea;
+  const emitter: Emitter = { material, photometry: m.light ? emitterPhotometry(m.light.photometry, m.orientation) : null, side, area, centre: partCentre(part), weight: [0, 0, 0], luminance: 0 };
+  mesh.material = material;
+  mesh.onBeforeRender = (_renderer, _scene, camera) => glowToward(emitter, mesh, camera);
+  return emitter;
 }
 
 /** The group of a part's frame for this module, made on first use. */
@@ -77,24 +101,18 @@ function frameGroup(s: HardwareState, frames: Map<PartFrame, THREE.Group>, frame
 
 /** One luminaire module's parts in their frames, its emitters at the module's weight, entered for picks and selection. */
 export function addModule(s: HardwareState, m: FixtureModule): void {
-  const { model, lum } = moduleModel(m);
+  const model = moduleModel(m);
   const entry: ModuleEntry = { meshes: [], all: [], emitters: [] };
   const frames = new Map<PartFrame, THREE.Group>();
   for (const part of model.parts) {
     const frame = frameGroup(s, frames, part.frame, m, model);
-    let mat: THREE.ShaderMaterial;
-    if (part.role === 'emitter') {
-      // An emitter in lux mode (and off) shows the housing's colour.
-      mat = hardwareMaterial(s, { flat: HOUSING.flat, reflectance: HOUSING.reflectance, emitter: true });
-      s.emitterMaterials.push(mat);
-      entry.emitters.push({ material: mat, luminance: part.side === 1 ? lum.up : lum.down });
-    } else mat = part.role === 'cable' ? s.cable : s.housing;
-    const mesh = new THREE.Mesh(partGeometry(part), mat);
+    const mesh = new THREE.Mesh(partGeometry(part), part.role === 'cable' ? s.cable : s.housing);
     mesh.name = `module:${m.id}`;
     frame.add(mesh);
     entry.all.push(mesh);
-    if (part.role !== 'emitter') {
-      mesh.userData.material = mat;
+    if (part.role === 'emitter') entry.emitters.push(emitterOf(s, m, model, part, mesh));
+    else {
+      mesh.userData.material = mesh.material;
       entry.meshes.push(mesh);
     }
   }

@@ -2,6 +2,7 @@ import * as THREE from 'three';
 import type { Rgb } from '../../../core/model/lightingScene/lightingScene';
 import { luminaireFragment, luminaireVertex } from '../../../../shaders/luminaireShading.glsl';
 import type { SharedDisplayUniforms } from '../createRoomSurfaces';
+import { luminanceToward, type EmitterPhotometry } from '../luminaires/viewLuminance';
 
 /**
  * Finishes (docs/viewer.md, "Luminaires"): housings, rails and connectors a dark matte grey
@@ -13,9 +14,18 @@ export const CABLE = { reflectance: 0.4, flat: [0.3, 0.3, 0.3] as Rgb };
 /** The UI's accent blue (the plan's selection colour), for the selected module. */
 const SELECTED: Rgb = [0.16, 0.56, 0.98];
 
-/** An emitter's material and its luminance at full weight (its side's). */
+/**
+ * A glowing face: its material, the module's photometry and which hemisphere it emits (side, area),
+ * its centre in its mesh's frame, the module's weight now and its luminance toward the last eye it
+ * was drawn for (cd/m², full power; luminaires/viewLuminance.ts).
+ */
 export interface Emitter {
   material: THREE.ShaderMaterial;
+  photometry: EmitterPhotometry | null;
+  side: -1 | 1;
+  area: number;
+  centre: THREE.Vector3;
+  weight: Rgb;
   luminance: number;
 }
 
@@ -89,9 +99,32 @@ export function paintSelection(s: HardwareState): void {
   for (const [id, m] of s.modules) for (const mesh of m.meshes) mesh.material = id === s.selected ? s.selectedMaterial : (mesh.userData.material as THREE.ShaderMaterial);
 }
 
-/** The emitters' luminance for a module weight (dimming × colour, linear RGB); not finite or negative: dark. */
-export function setEmitterWeight(emitters: readonly Emitter[], w: Rgb): void {
-  for (const e of emitters) (e.material.uniforms.uLuminance.value as THREE.Vector3).set(...(w.map((c) => (Number.isFinite(c) && c > 0 ? c * e.luminance : 0)) as Rgb));
+function showGlow(e: Emitter): void {
+  (e.material.uniforms.uLuminance.value as THREE.Vector3).set(e.weight[0] * e.luminance, e.weight[1] * e.luminance, e.weight[2] * e.luminance);
+}
+
+/** The emitters' module weight (dimming × colour, linear RGB); not finite or negative: dark. */
+export function setEmitterWeight(emitters: Emitter[], w: Rgb): void {
+  for (const e of emitters) {
+    e.weight = w.map((c) => (Number.isFinite(c) && c > 0 ? c : 0)) as Rgb;
+    showGlow(e);
+  }
+}
+
+const eye = new THREE.Vector3();
+const faceCentre = new THREE.Vector3();
+
+/**
+ * The face's luminance toward the camera drawing it, set just before its draw (the mesh's
+ * onBeforeRender, so every view, the glare pass's HDR target and the A/B compare's second view
+ * included, shows the face as seen from its own camera): one bilinear look-up in the photometry
+ * per face and frame.
+ */
+export function glowToward(e: Emitter, mesh: THREE.Object3D, camera: THREE.Camera): void {
+  eye.setFromMatrixPosition(camera.matrixWorld);
+  faceCentre.copy(e.centre).applyMatrix4(mesh.matrixWorld);
+  e.luminance = e.photometry ? luminanceToward(e.photometry, e.side, e.area, [eye.x - faceCentre.x, eye.y - faceCentre.y, eye.z - faceCentre.z]) : 0;
+  showGlow(e);
 }
 
 /** Everything drawn removed: geometries and emitter materials freed (the shared materials stay). */

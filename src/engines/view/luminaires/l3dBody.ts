@@ -18,8 +18,8 @@
  *   joint beside the emitter's chain, a joint without axes); a driven axis takes the aim's angle.
  * - **Emitters.** Each light-emitting object is drawn as its Rectangle or Circle (a 48-gon of the
  *   circle's area), 0.5 mm proud of its plane along its normal; one facing up in the reference pose
- *   emits the upper hemisphere. Its area is the emitting area the glow divides the flux by
- *   (L = Φ/(π·A), emitterLuminance.ts). The LightEmittingSurfaces' OBJ faces are not drawn glowing:
+ *   emits the upper hemisphere. Its area is the emitting area the glow divides the intensity toward
+ *   the eye by (L = I/(A·cos θ), viewLuminance.ts). The LightEmittingSurfaces' OBJ faces are not drawn glowing:
  *   the objects are what the L3D declares as the luminous opening.
  */
 import { GldfError } from '../../../core/gldf/GldfError';
