@@ -1,5 +1,5 @@
 import { expect, test, type Page } from '@playwright/test';
-import { viewerStatus as status } from './helpers';
+import { startFiveByFourRoom, viewerStatus as status } from './helpers';
 
 /**
  * The 3D view's daylight-factor mode (issue 30; docs/viewer.md "Daylight factor"): a 5 × 4 m room
@@ -10,12 +10,7 @@ import { viewerStatus as status } from './helpers';
  * under test-results/daylight-factor.
  */
 async function daylitRoom(page: Page) {
-  await page.goto('/?quality=fast');
-  await page.evaluate(() => localStorage.clear());
-  await page.reload();
-  await page.locator('input[name=width]').fill('5');
-  await page.locator('input[name=depth]').fill('4');
-  await page.getByRole('button', { name: 'Start planning' }).click();
+  await startFiveByFourRoom(page);
   const toggle = page.getByTestId('panel-toggle');
   if ((await toggle.isVisible()) && !(await page.getByRole('complementary').isVisible())) await toggle.click();
   await page.getByTestId('edit-room-shape').click();

@@ -1,6 +1,7 @@
 import { expect, test, type Page } from '@playwright/test';
 import { PNG } from 'pngjs';
 import { turbo } from '../src/engines/view/falseColorScale';
+import { startFiveByFourRoom } from './helpers';
 
 /**
  * The daylight-factor map on the 2D plan (issue 30; docs/daylight.md "The daylight-factor map on
@@ -11,12 +12,7 @@ import { turbo } from '../src/engines/view/falseColorScale';
  * desktop under test-results/daylight-plan for looking at.
  */
 async function daylitRoom(page: Page) {
-  await page.goto('/?quality=fast');
-  await page.evaluate(() => localStorage.clear());
-  await page.reload();
-  await page.locator('input[name=width]').fill('5');
-  await page.locator('input[name=depth]').fill('4');
-  await page.getByRole('button', { name: 'Start planning' }).click();
+  await startFiveByFourRoom(page);
   const toggle = page.getByTestId('panel-toggle');
   const openPanel = async () => {
     if ((await toggle.isVisible()) && !(await page.getByRole('complementary').isVisible())) await toggle.click();

@@ -66,3 +66,13 @@ export function meanLevel(png: Buffer): number {
   for (let i = 0; i < img.data.length; i += 4) sum += (img.data[i] + img.data[i + 1] + img.data[i + 2]) / 3;
   return sum / (img.width * img.height);
 }
+
+/** A fresh start (`?quality=fast`, nothing stored) on a 5 × 4 m room: the daylight specs' room before its window is drawn. */
+export async function startFiveByFourRoom(page: Page): Promise<void> {
+  await page.goto('/?quality=fast');
+  await page.evaluate(() => localStorage.clear());
+  await page.reload();
+  await page.locator('input[name=width]').fill('5');
+  await page.locator('input[name=depth]').fill('4');
+  await page.getByRole('button', { name: 'Start planning' }).click();
+}

@@ -10,6 +10,7 @@ import { cieGeneralSky, cieOvercastSky, uniformSky, type Sky } from '../../src/c
 import { sunDirection } from '../../src/core/daylight/solarPosition';
 import type { Vec3 } from '../../src/core/model/lightingScene/lightingScene';
 import type { RoomInput } from '../../src/core/room/roomInput';
+import { daylightL } from '../../src/hosts/bench/daylightBox';
 import { skyThroughWindow, sunThroughWindow } from '../../src/reference/daylightDirect';
 import { pointToPolygonFormFactor } from '../../src/reference/pointToPolygonFormFactor';
 import { daylightIlluminanceAt, solveDaylightReference, type DaylightReferenceInput } from '../../src/reference/solveDaylightReference';
@@ -232,20 +233,7 @@ describe('daylight reference: the sun', () => {
 
   it('in an L, the room itself shadows the sun and hides part of the sky: none behind the inner corner', () => {
     // An L: the window in the south wall of the west wing; the east wing's floor behind the corner stays dark.
-    const L: RoomInput = {
-      outline: [
-        [0, 0],
-        [6, 0],
-        [6, 3],
-        [3, 3],
-        [3, 6],
-        [0, 6],
-      ],
-      height: 2.6,
-      // Wall 4 runs from (3, 6) to (0, 6): the west wing's south wall.
-      openings: [{ wall: 4, offset: 0.5, width: 2, sill: 0.5, height: 1.8, kind: 'window' }],
-      reflectance: uniform(0),
-    };
+    const L: RoomInput = daylightL(uniform(0));
     // A sun from the south-south-west lights the west wing's floor through the window …
     const sun = sunDirection(20, 200) as Vec3;
     const r = solveDaylightReference(L, daylight(null, { sun: { direction: sun, normalIlluminance: E_N }, groundReflectance: 0 }), { patchSize: 0.5 });

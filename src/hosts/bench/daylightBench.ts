@@ -22,7 +22,7 @@ import type { BenchQuality } from './benchScenes';
 import { compareDaylightWithReference } from './daylightComparison';
 import type { MachineInfo } from './machineInfo';
 import { relativeErrors } from './shapedRoomComparison';
-import { DAYLIGHT_BOX_FINISHES, daylightBox } from './daylightBox';
+import { daylightBox, daylightL } from './daylightBox';
 import { percentCell, referenceSceneTable } from './referenceSceneTable';
 
 export interface DaylightBenchScene {
@@ -54,19 +54,7 @@ export const DAYLIGHT_SCENES: readonly DaylightBenchScene[] = [
   {
     name: 'l-overcast',
     description: 'L 6 × 6 m (3 × 3 m notch), 2.6 m, a 2 × 1.8 m double-glazed window in the west wing partly hidden from the east wing by the inner corner; CIE overcast',
-    room: {
-      outline: [
-        [0, 0],
-        [6, 0],
-        [6, 3],
-        [3, 3],
-        [3, 6],
-        [0, 6],
-      ],
-      height: 2.6,
-      openings: [{ wall: 4, offset: 0.5, width: 2, sill: 0.5, height: 1.8, kind: 'window' }],
-      reflectance: DAYLIGHT_BOX_FINISHES,
-    },
+    room: daylightL(),
     sky: cieOvercastSky(10_000),
     sun: null,
   },

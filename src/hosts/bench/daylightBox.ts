@@ -23,3 +23,24 @@ export function daylightBox(reflectance: RoomInput['reflectance'] = DAYLIGHT_BOX
     reflectance,
   };
 }
+
+/**
+ * The daylight L of the bench and the tests (baker, reference, plan overlay): 6 × 6 m with a 3 × 3 m
+ * notch, 2.6 m high; the west wing's south wall (wall 4, from (3, 6) to (0, 6)) has a 2 × 1.8 m window
+ * at sill 0.5 m, partly hidden from the east wing by the inner corner.
+ */
+export function daylightL(reflectance: RoomInput['reflectance'] = DAYLIGHT_BOX_FINISHES): RoomInput {
+  return {
+    outline: [
+      [0, 0],
+      [6, 0],
+      [6, 3],
+      [3, 3],
+      [3, 6],
+      [0, 6],
+    ],
+    height: 2.6,
+    openings: [{ wall: 4, offset: 0.5, width: 2, sill: 0.5, height: 1.8, kind: 'window' }],
+    reflectance,
+  };
+}

@@ -22,7 +22,7 @@ import { roomFluxes } from '../../../src/reference/solveRoomReference';
 import { solveDaylightReference, type DaylightReferenceResult } from '../../../src/reference/solveDaylightReference';
 import { shapedBakeRoom } from './shapedRoomKit';
 import { withHeadlessGL } from './withHeadlessGL';
-import { daylightBox } from '../../../src/hosts/bench/daylightBox';
+import { daylightBox, daylightL } from '../../../src/hosts/bench/daylightBox';
 
 const gl = withHeadlessGL();
 const baker = createBaker(gl);
@@ -36,19 +36,7 @@ const box = (reflectance: RoomInput['reflectance'], transmittance = true): { inp
 });
 // An L whose west wing's south wall (wall 4) has a 2 × 1.8 m window; the inner corner hides part of it from the east wing.
 const lRoom = (reflectance: RoomInput['reflectance']): { input: RoomInput; glazing: Map<number, Glazing> } => ({
-  input: {
-    outline: [
-      [0, 0],
-      [6, 0],
-      [6, 3],
-      [3, 3],
-      [3, 6],
-      [0, 6],
-    ],
-    height: 2.6,
-    openings: [{ wall: 4, offset: 0.5, width: 2, sill: 0.5, height: 1.8, kind: 'window' }],
-    reflectance,
-  },
+  input: daylightL(reflectance),
   glazing: new Map([[0, glazingFrom('double')]]),
 });
 const FINISHES = { floor: 0.3, ceiling: 0.8, walls: 0.5 };

@@ -14,6 +14,7 @@ import { cieGeneralSky, CIE_CLEAR_SKY_TYPE, cieOvercastSky, groundLuminance } fr
 import { sunDirection } from '../../../src/core/daylight/solarPosition';
 import type { Vec3 } from '../../../src/core/model/lightingScene/lightingScene';
 import type { RoomInput } from '../../../src/core/room/roomInput';
+import { daylightBox } from '../../../src/hosts/bench/daylightBox';
 import type { BakeScene } from '../../../src/engines/bake/bakeScene';
 import { resolveBakeSettings } from '../../../src/engines/bake/bakeSettings';
 import { createBaker } from '../../../src/engines/bake/createBaker';
@@ -34,17 +35,7 @@ const baker = createBaker(gl);
 afterAll(() => baker.dispose());
 
 // The daylight tests' box: 5 × 4 m, 2.8 m high, a 1.5 × 1.4 m double-glazed window in the south wall at sill 0.9 m.
-const ROOM: RoomInput = {
-  outline: [
-    [0, 0],
-    [5, 0],
-    [5, 4],
-    [0, 4],
-  ],
-  height: 2.8,
-  openings: [{ wall: 2, offset: 1.75, width: 1.5, sill: 0.9, height: 1.4, kind: 'window' }],
-  reflectance: { floor: 0.3, ceiling: 0.8, walls: 0.5 },
-};
+const ROOM: RoomInput = daylightBox();
 const room = shapedBakeRoom(ROOM);
 const glazing = new Map([[0, glazingFrom('double')]]);
 

@@ -21,6 +21,7 @@ import { sunDirection } from '../../../src/core/daylight/solarPosition';
 import type { Vec3 } from '../../../src/core/model/lightingScene/lightingScene';
 import { pointInsideRoom } from '../../../src/core/room/ceilingHeightAt';
 import type { RoomInput } from '../../../src/core/room/roomInput';
+import { daylightBox, daylightL } from '../../../src/hosts/bench/daylightBox';
 import type { BakeScene } from '../../../src/engines/bake/bakeScene';
 import { resolveBakeSettings } from '../../../src/engines/bake/bakeSettings';
 import { createBaker } from '../../../src/engines/bake/createBaker';
@@ -42,32 +43,9 @@ const SETTINGS = { texelSize: 0.1, maxTextureSize: 128, samples: 32, bounces: 4,
 const baker = createBaker(gl);
 afterAll(() => baker.dispose());
 
-// The daylight tests' box: 5 × 4 m, 2.8 m high, a 1.5 × 1.4 m double-glazed window in the south wall at sill 0.9 m.
-const BOX: RoomInput = {
-  outline: [
-    [0, 0],
-    [5, 0],
-    [5, 4],
-    [0, 4],
-  ],
-  height: 2.8,
-  openings: [{ wall: 2, offset: 1.75, width: 1.5, sill: 0.9, height: 1.4, kind: 'window' }],
-  reflectance: { floor: 0.3, ceiling: 0.8, walls: 0.5 },
-};
-// The daylight bake test's L: the west wing's south wall (wall 4) has a 2 × 1.8 m window.
-const L_ROOM: RoomInput = {
-  outline: [
-    [0, 0],
-    [6, 0],
-    [6, 3],
-    [3, 3],
-    [3, 6],
-    [0, 6],
-  ],
-  height: 2.6,
-  openings: [{ wall: 4, offset: 0.5, width: 2, sill: 0.5, height: 1.8, kind: 'window' }],
-  reflectance: { floor: 0.3, ceiling: 0.8, walls: 0.5 },
-};
+// The daylight tests' box (daylightBox.ts), double-glazed, and their L.
+const BOX: RoomInput = daylightBox();
+const L_ROOM: RoomInput = daylightL();
 const glazing = new Map([[0, glazingFrom('double')]]);
 
 /** The scene's own daylight: a clear sky with the sun at 40° / 200° (the daylight factor must not depend on it), ground ρ 0.2. */

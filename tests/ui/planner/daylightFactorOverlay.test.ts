@@ -23,19 +23,11 @@ import { createBakeService, type VisibilitySource } from '../../../src/engines/v
 import { createHeadlessGL } from '../../../src/hosts/node/createHeadlessGL';
 import { createDaylightFactorOverlay, GRID_DEBOUNCE_MS } from '../../../src/ui/planner/daylightFactorOverlay';
 import type { BakeFeed } from '../../../src/ui/viewer/startBakeFeed';
+import { DAYLIGHT_BOX_WINDOW, daylightBox } from '../../../src/hosts/bench/daylightBox';
 import { shapedBakeRoom } from '../../engines/bake/shapedRoomKit';
 
-const room = (offset: number): RoomInput => ({
-  outline: [
-    [0, 0],
-    [5, 0],
-    [5, 4],
-    [0, 4],
-  ],
-  height: 2.8,
-  openings: [{ wall: 2, offset, width: 1.5, sill: 0.9, height: 1.4, kind: 'window' }],
-  reflectance: { floor: 0.3, ceiling: 0.8, walls: 0.5 },
-});
+// The daylight box with its window moved along the south wall.
+const room = (offset: number): RoomInput => ({ ...daylightBox(), openings: [{ ...DAYLIGHT_BOX_WINDOW, offset }] });
 
 function daylight(): BakeDaylight {
   const s = sunDirection(40, 200) as Vec3;
