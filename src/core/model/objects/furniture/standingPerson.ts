@@ -144,7 +144,7 @@ function head(): MeshPart[] {
       ],
       1,
     ),
-    ellipsoid('hair', 0, PERSON_STATURE - 0.085, -0.015, 0.085, 0.085, 0.103, 2, 1),
+    ellipsoid('hair', 0, PERSON_STATURE - 0.06, -0.01, 0.082, 0.06, 0.103, 2, 1),
   ];
 }
 
