@@ -17,10 +17,13 @@ export interface ObjectPassViews {
 
 /**
  * One place that says which of the objects' textures and sizes each pass reads (docs/baker.md,
- * "Objects: passes"). `chartPatches`: the bright-patch search takes candidates on the atlas's
- * charts too (a shaped room, whose surfaces are charts; docs/baker.md "Rooms of any shape").
+ * "Objects: passes"). The bright-patch search takes candidates on the atlas's charts as well as on
+ * the room's surfaces: a shaped room's surfaces are charts (docs/baker.md "Rooms of any shape"),
+ * and in a furnished box room the brightest patches are often on furniture (a spot's pool on a
+ * table top), whose first bounce the Monte Carlo gather alone finds too rarely (docs/baker.md
+ * "Noise of the indirect light").
  */
-export function objectPassViews(objects: BakeInputs['objects'], chartPatches = false): ObjectPassViews {
+export function objectPassViews(objects: BakeInputs['objects']): ObjectPassViews {
   if (!objects) return { plan: null, directSamplers: {}, flux: null, bright: null, gather: null };
   const { prepared, inputs } = objects;
   const { atlas } = prepared;
@@ -43,7 +46,7 @@ export function objectPassViews(objects: BakeInputs['objects'], chartPatches = f
       ...bvh,
       uPoints: inputs.points,
       uNormals: inputs.normals,
-      charts: chartPatches ? { frames: chartTileFrames(prepared), reflectance: inputs.reflectance, texelSize: atlas.texelSize } : null,
+      charts: { frames: chartTileFrames(prepared), reflectance: inputs.reflectance, texelSize: atlas.texelSize },
     },
     gather: { uObjectRho: inputs.reflectance, ...bvh, uPoints: inputs.points, uNormals: inputs.normals },
   };

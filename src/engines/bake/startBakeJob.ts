@@ -52,7 +52,7 @@ export function startBakeJob(
   const given: GivenDirect | null = directOverride ? { surfaces: directOverride, objects: objectDirectOverride } : null;
 
   const inputs = prepareBakeInputs(gl, scene, settings, directOverride, objectDirectOverride);
-  const views = objectPassViews(inputs.objects, inputs.sinks);
+  const views = objectPassViews(inputs.objects);
   const targets = acquireBakeJobTargets(pool, inputs.layouts, inputs.objects?.prepared.atlas ?? null);
   const plan = planPasses(gl, inputs, settings, given, views.plan);
   const directSkipped = timer.timed('direct', () => runDirectPasses(gl, compile, plan, inputs, views, targets, given));

@@ -3,6 +3,7 @@ import { positionBounds } from '../../../../src/core/mesh/triangleMesh';
 import { FURNITURE_LIBRARY, furnitureMesh } from '../../../../src/core/model/objects/furniture/furnitureLibrary';
 import { OBJECT_FINISHES, objectFinishRgb } from '../../../../src/core/model/objects/furniture/objectFinishes';
 import type { MeshPart } from '../../../../src/core/model/objects/furniture/meshParts';
+import { PERSON_HEAD, PERSON_STATURE, standingPersonParts } from '../../../../src/core/model/objects/furniture/standingPerson';
 import { reflectanceProblem } from '../../../../src/core/model/lightingScene/reflectance';
 
 /** Signed volume by the divergence theorem: Σ v0 · (v1 × v2) / 6 over the triangles (positive for outward CCW winding). */
@@ -99,6 +100,35 @@ describe('furniture library', () => {
 
   it('the standing person is 1.75 m', () => {
     expect(positionBounds(furnitureMesh('person').positions).max[1]).toBeCloseTo(1.75, 6);
+  });
+
+  it('the standing person has human proportions (Tilley; the head 1/7.5 of the stature)', () => {
+    const parts = standingPersonParts();
+    const bounds = parts.map((p) => ({ material: p.material, ...positionBounds(p.positions) }));
+    // the head: the skin part that reaches highest; chin to crown H/7.5 within 1 cm, narrower than long
+    const head = bounds.filter((b) => b.material === 'skin').reduce((a, b) => (b.max[1] > a.max[1] ? b : a));
+    expect(Math.abs(head.max[1] - head.min[1] - PERSON_STATURE / 7.5)).toBeLessThan(0.01);
+    expect(head.max[1]).toBeCloseTo(PERSON_HEAD.crown, 6);
+    const headWidth = head.max[0] - head.min[0];
+    expect(headWidth).toBeGreaterThan(0.14);
+    expect(headWidth).toBeLessThan(head.max[2] - head.min[2]);
+    // the hair crowns the head at the stature
+    const hair = bounds.find((b) => b.material === 'hair')!;
+    expect(hair.max[1]).toBeCloseTo(PERSON_STATURE, 6);
+    // widest at the shoulders (1.3-1.45 m, NASA-STD-3000: acromion 0.82 H), a neck narrower than the head
+    const widest = bounds.reduce((a, b) => (b.max[0] > a.max[0] ? b : a));
+    expect(widest.max[0]).toBeCloseTo(0.25, 6);
+    expect(widest.max[1]).toBeGreaterThan(1.3);
+    expect(widest.max[1]).toBeLessThan(1.45);
+    // two legs, two arms and two hands: mirrored pairs of trouser and skin parts
+    const left = bounds.filter((b) => b.max[0] < 0).length;
+    const right = bounds.filter((b) => b.min[0] > 0).length;
+    expect(left).toBe(right);
+    expect(left).toBeGreaterThanOrEqual(4);
+    // fingertips at 0.39 H, crotch about 0.47 H (Tilley): the hands end between 0.6 and 0.75 m
+    const hands = bounds.filter((b) => b.material === 'skin' && b.min[1] < 0.8);
+    expect(hands.length).toBe(2);
+    for (const h of hands) expect(h.min[1] / PERSON_STATURE).toBeCloseTo(0.39, 1);
   });
 
   it('object finishes are valid reflectances with sRGB display colours that encode them', () => {

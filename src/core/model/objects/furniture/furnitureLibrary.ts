@@ -10,6 +10,7 @@
 import type { TriangleMesh } from '../../../mesh/triangleMesh';
 import { boxPart, composeParts, ellipsoidRings, frustumPart, ringedPart, slabRings, type MeshPart } from './meshParts';
 import { objectFinishRgb } from './objectFinishes';
+import { standingPersonParts } from './standingPerson';
 
 export interface FurnitureItem {
   readonly id: string;
@@ -302,47 +303,9 @@ export const FURNITURE_LIBRARY: readonly FurnitureItem[] = [
     width: 0.5,
     depth: 0.3,
     height: 1.75,
-    finishes: { shoes: 'black-metal', trousers: 'denim', shirt: 'mid-grey-paint', skin: 'skin' },
-    source: 'DIN 33402-2: adult stature about 1.75 m (men 50th percentile), shoulder width about 45-50 cm',
-    parts: () => [
-      ...mirrored((s) => cushion('shoes', s * 0.095 - 0.05, s * 0.095 + 0.05, 0, 0.085, -0.11, 0.15, 0.03)),
-      ...mirrored((s) => frustumPart('trousers', s * 0.095, -0.005, 0.05, 0.53, 0.045, 0.058, 8)),
-      ...mirrored((s) => frustumPart('trousers', s * 0.095, 0, 0.5, 0.92, 0.06, 0.085, 8)),
-      cushion('trousers', -0.175, 0.175, 0.8, 1.02, -0.15, 0.09, 0.06, 0.05),
-      ringedPart(
-        'shirt',
-        0,
-        -0.025,
-        [
-          [0.95, 0.165, 0.105, 0.09],
-          [1.3, 0.19, 0.125, 0.1],
-          [1.42, 0.195, 0.115, 0.1],
-          [1.485, 0.14, 0.08, 0.07],
-        ],
-        2,
-        0.95,
-        1.49,
-      ),
-      // upper arms (sleeves), rounded over the shoulder
-      ...mirrored((s) =>
-        ringedPart(
-          'shirt',
-          s * 0.205,
-          -0.03,
-          [
-            [1.07, 0.04, 0.04, 0.04],
-            [1.38, 0.045, 0.045, 0.045],
-            [1.44, 0.03, 0.03, 0.03],
-          ],
-          2,
-          1.07,
-          1.46,
-        ),
-      ),
-      ...mirrored((s) => frustumPart('skin', s * 0.21, -0.01, 0.7, 1.1, 0.026, 0.036, 8)),
-      frustumPart('skin', 0, -0.02, 1.44, 1.58, 0.055, 0.052, 8),
-      blob('skin', 0, 1.64, -0.005, 0.078, 0.11, 0.098, 3),
-    ],
+    finishes: { shoes: 'black-metal', trousers: 'denim', shirt: 'mid-grey-paint', skin: 'skin', hair: 'walnut-veneer' },
+    source: 'DIN 33402-2 and Tilley, The Measure of Man and Woman: stature 1.75 m (men 50th percentile), head 1/7.5 of it, shoulders 50 cm over the deltoids (standingPerson.ts)',
+    parts: standingPersonParts,
   },
 ];
 
