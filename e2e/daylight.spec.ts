@@ -29,7 +29,7 @@ const scene = async (page: Page): Promise<Scene> => (await page.evaluate(() => w
 const openings = async (page: Page): Promise<Opening[]> => JSON.parse(await page.evaluate(() => window.luxbox!.getConfig())).configuration.room.shape.openings;
 
 async function livingRoom(page: Page) {
-  await page.goto('/');
+  await page.goto('/?quality=fast');
   await page.evaluate(() => localStorage.clear());
   await page.reload();
   await page.locator('input[name=width]').fill('5');
