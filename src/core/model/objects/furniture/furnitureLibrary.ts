@@ -25,8 +25,6 @@ export interface FurnitureItem {
   readonly hangHeight?: number;
   /** Default finish (src/core/model/objects/furniture/objectFinishes.ts) per material. */
   readonly finishes: Readonly<Record<string, string>>;
-  /** Where the dimensions come from. */
-  readonly source: string;
   /** The closed solids it is made of. */
   readonly parts: () => MeshPart[];
 }
@@ -120,7 +118,7 @@ export const FURNITURE_LIBRARY: readonly FurnitureItem[] = [
     depth: 0.9,
     height: 0.75,
     finishes: { top: 'oak-veneer', legs: 'oak-veneer' },
-    source: 'Neufert (table height 72-76 cm; 60 cm of table edge per person: 180 × 90 cm seats six)',
+    // Dimensions: Neufert (table height 72-76 cm; 60 cm of table edge per person: 180 × 90 cm seats six)
     parts: () => table(1.8, 0.9, 0.75, 0.04, 0.06, 0.05),
   },
   {
@@ -131,7 +129,7 @@ export const FURNITURE_LIBRARY: readonly FurnitureItem[] = [
     depth: 0.6,
     height: 0.45,
     finishes: { top: 'walnut-veneer', legs: 'black-metal' },
-    source: 'common sizes 100-130 × 50-70 cm, 40-45 cm high (about sofa seat height)',
+    // Dimensions: common sizes 100-130 × 50-70 cm, 40-45 cm high (about sofa seat height)
     parts: () => [cushion('top', -0.6, 0.6, 0.42, 0.45, -0.3, 0.3, 0.01), ...roundFeet('legs', 1.2, 0.6, 0.018, 0.05, 0.43)],
   },
   {
@@ -142,7 +140,7 @@ export const FURNITURE_LIBRARY: readonly FurnitureItem[] = [
     depth: 0.52,
     height: 0.9,
     finishes: { seat: 'oak-veneer', back: 'oak-veneer', legs: 'oak-veneer' },
-    source: 'Neufert / EN 1729 adult chair: seat height 45 cm, seat 40-45 cm wide and deep, backrest to 85-90 cm',
+    // Dimensions: Neufert / EN 1729 adult chair: seat height 45 cm, seat 40-45 cm wide and deep, backrest to 85-90 cm
     parts: () => [
       cushion('seat', -0.225, 0.225, 0.42, 0.46, -0.24, 0.26, 0.012),
       ...mirrored((s) => frustumPart('legs', s * 0.19, 0.215, 0, 0.44, 0.015, 0.019, 8)),
@@ -165,7 +163,7 @@ export const FURNITURE_LIBRARY: readonly FurnitureItem[] = [
     depth: 0.9,
     height: 0.85,
     finishes: { frame: 'grey-fabric', cushions: 'grey-fabric', legs: 'walnut-veneer' },
-    source: 'common three-seat sofas 200-230 × 85-100 cm, 80-90 cm high, seat 42-45 cm (Neufert: 60-70 cm per seat)',
+    // Dimensions: common three-seat sofas 200-230 × 85-100 cm, 80-90 cm high, seat 42-45 cm (Neufert: 60-70 cm per seat)
     parts: () => seating(2.1, 0.9, 0.85, 3),
   },
   {
@@ -176,7 +174,7 @@ export const FURNITURE_LIBRARY: readonly FurnitureItem[] = [
     depth: 0.85,
     height: 0.9,
     finishes: { frame: 'beige-linen', cushions: 'beige-linen', legs: 'walnut-veneer' },
-    source: 'common armchairs 75-90 cm wide and deep, 85-100 cm high, seat about 44 cm',
+    // Dimensions: common armchairs 75-90 cm wide and deep, 85-100 cm high, seat about 44 cm
     parts: () => seating(0.85, 0.85, 0.9, 1),
   },
   {
@@ -187,7 +185,7 @@ export const FURNITURE_LIBRARY: readonly FurnitureItem[] = [
     depth: 0.45,
     height: 0.8,
     finishes: { body: 'white-lacquer', fronts: 'white-lacquer', top: 'oak-veneer', legs: 'black-metal' },
-    source: 'common sideboards 160-200 × 40-50 cm, 75-85 cm high',
+    // Dimensions: common sideboards 160-200 × 40-50 cm, 75-85 cm high
     parts: () => [
       ...fourLegs('legs', 1.8, 0.45, 0.03, 0.04, 0.12),
       box('body', [-0.9, 0.12, -0.225], [0.9, 0.78, 0.205]),
@@ -203,7 +201,7 @@ export const FURNITURE_LIBRARY: readonly FurnitureItem[] = [
     depth: 0.35,
     height: 2,
     finishes: { frame: 'white-lacquer', books: 'book-spines' },
-    source: 'common bookcases 80-100 cm wide, 30-40 cm deep, 180-220 cm high; Neufert: 30-35 cm shelf spacing for books',
+    // Dimensions: common bookcases 80-100 cm wide, 30-40 cm deep, 180-220 cm high; Neufert: 30-35 cm shelf spacing for books
     parts: () => {
       const boards = [0.04, 0.5, 0.86, 1.22, 1.58, 1.98];
       return [
@@ -222,7 +220,7 @@ export const FURNITURE_LIBRARY: readonly FurnitureItem[] = [
     depth: 2.15,
     height: 1,
     finishes: { frame: 'oak-veneer', legs: 'oak-veneer', mattress: 'white-linen', bedding: 'white-linen' },
-    source: 'DIN 68880 / Neufert: mattress 160 × 200 cm, about 45-55 cm top height; frame adds 5 cm each side; headboard about 1 m',
+    // Dimensions: DIN 68880 / Neufert: mattress 160 × 200 cm, about 45-55 cm top height; frame adds 5 cm each side; headboard about 1 m
     parts: () => [
       cushion('frame', -0.85, 0.85, 0.12, 1, -1.075, -0.995, 0.03),
       ...[-0.96, 1.02].flatMap((z) => mirrored((s) => frustumPart('legs', s * 0.79, z, 0, 0.14, 0.03, 0.03, 8))),
@@ -241,7 +239,7 @@ export const FURNITURE_LIBRARY: readonly FurnitureItem[] = [
     depth: 0.7,
     height: 0.75,
     finishes: { top: 'white-lacquer', frame: 'black-metal' },
-    source: 'EN 527-1 work desks: 72-75 cm high; Neufert: at least 120-160 × 70-80 cm',
+    // Dimensions: EN 527-1 work desks: 72-75 cm high; Neufert: at least 120-160 × 70-80 cm
     parts: () => [box('top', [-0.7, 0.725, -0.35], [0.7, 0.75, 0.35]), box('frame', [-0.68, 0, -0.32], [-0.64, 0.725, 0.32]), box('frame', [0.64, 0, -0.32], [0.68, 0.725, 0.32]), box('frame', [-0.64, 0.35, -0.32], [0.64, 0.7, -0.3])],
   },
   {
@@ -252,7 +250,7 @@ export const FURNITURE_LIBRARY: readonly FurnitureItem[] = [
     depth: 0.9,
     height: 0.91,
     finishes: { worktop: 'stone-worktop', cabinet: 'white-lacquer', fronts: 'white-lacquer', plinth: 'black-metal' },
-    source: 'DIN EN 1116 / Neufert: worktop 85-95 cm high (91 cm here), cabinets 60 cm deep (two rows back to back: 90 cm with overhang), plinth 10 cm',
+    // Dimensions: DIN EN 1116 / Neufert: worktop 85-95 cm high (91 cm here), cabinets 60 cm deep (two rows back to back: 90 cm with overhang), plinth 10 cm
     parts: () => [
       box('plinth', [-0.85, 0, -0.38], [0.85, 0.1, 0.38]),
       box('cabinet', [-0.88, 0.1, -0.42], [0.88, 0.87, 0.4]),
@@ -269,7 +267,7 @@ export const FURNITURE_LIBRARY: readonly FurnitureItem[] = [
     height: 0.6,
     hangHeight: 1.55,
     finishes: { frame: 'black-metal', canvas: 'canvas-print' },
-    source: 'common frame size 80 × 60 cm; hung with its centre at eye height, about 1.5-1.6 m',
+    // Dimensions: common frame size 80 × 60 cm; hung with its centre at eye height, about 1.5-1.6 m
     parts: () => [
       box('frame', [-0.4, -0.3, 0], [0.4, -0.255, 0.03]),
       box('frame', [-0.4, 0.255, 0], [0.4, 0.3, 0.03]),
@@ -286,7 +284,7 @@ export const FURNITURE_LIBRARY: readonly FurnitureItem[] = [
     depth: 0.6,
     height: 1.5,
     finishes: { pot: 'terracotta', stem: 'walnut-veneer', leaves: 'leaf-green' },
-    source: 'a large indoor plant (e.g. Ficus) 1.2-1.8 m high in a 30-40 cm pot',
+    // Dimensions: a large indoor plant (e.g. Ficus) 1.2-1.8 m high in a 30-40 cm pot
     parts: () => [
       frustumPart('pot', 0, 0, 0, 0.38, 0.14, 0.18, 12),
       frustumPart('stem', 0, 0, 0.36, 0.95, 0.022, 0.014, 8),
@@ -304,7 +302,7 @@ export const FURNITURE_LIBRARY: readonly FurnitureItem[] = [
     depth: 0.3,
     height: 1.75,
     finishes: { shoes: 'black-metal', trousers: 'denim', shirt: 'mid-grey-paint', skin: 'skin', hair: 'walnut-veneer' },
-    source: 'DIN 33402-2 and Tilley, The Measure of Man and Woman: stature 1.75 m (men 50th percentile), head 1/7.5 of it, shoulders 50 cm over the deltoids (standingPerson.ts)',
+    // Dimensions: DIN 33402-2 and Tilley, The Measure of Man and Woman: stature 1.75 m (men 50th percentile), head 1/7.5 of it, shoulders 50 cm over the deltoids (standingPerson.ts)
     parts: standingPersonParts,
   },
 ];
