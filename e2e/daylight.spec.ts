@@ -1,4 +1,5 @@
 import { expect, test, type Page } from '@playwright/test';
+import { startFiveByFourRoom } from './helpers';
 
 /**
  * Daylight for the shopper (issue 30, docs/daylight.md "The shopper's daylight"): two windows in a
@@ -29,12 +30,7 @@ const scene = async (page: Page): Promise<Scene> => (await page.evaluate(() => w
 const openings = async (page: Page): Promise<Opening[]> => JSON.parse(await page.evaluate(() => window.luxbox!.getConfig())).configuration.room.shape.openings;
 
 async function livingRoom(page: Page) {
-  await page.goto('/?quality=fast');
-  await page.evaluate(() => localStorage.clear());
-  await page.reload();
-  await page.locator('input[name=width]').fill('5');
-  await page.locator('input[name=depth]').fill('4');
-  await page.getByRole('button', { name: 'Start planning' }).click();
+  await startFiveByFourRoom(page);
   await openDrawer(page);
   await page.getByTestId('edit-room-shape').click();
   await page.getByTestId('room-preset-rectangle').click();
