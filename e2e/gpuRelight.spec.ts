@@ -69,7 +69,13 @@ test('a crossfade and a dimming drag are relit on the GPU: no map read back, flo
   await page.getByText(/Dimming \(/).click();
   const dimmer = page.getByTestId(`dim-${ids[0]}`);
   await dimmer.focus();
-  for (let i = 0; i < 10; i++) await page.keyboard.press('ArrowRight');
+  // A hand's pace: each step waits for its relight to be drawn, so the page's sampler sees the work
+  // plane's GPU statistics of the drag (ten presses in one burst could settle before a frame showed them).
+  for (let i = 0; i < 10; i++) {
+    const relit = (await status(page)).gpu!.gpuRelights;
+    await page.keyboard.press('ArrowRight');
+    await expect.poll(async () => (await status(page)).gpu!.gpuRelights, { timeout: 10_000 }).toBeGreaterThan(relit);
+  }
   await expect.poll(async () => (await status(page)).gpu!.gpuRelights, { timeout: 10_000 }).toBeGreaterThan(beforeDrag.gpu!.gpuRelights + 2);
   const dragged = await status(page);
   expect(dragged.gpu!.mapReadbacks).toBe(0);
